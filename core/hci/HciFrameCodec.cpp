@@ -1,0 +1,179 @@
+#include "HciFrameCodec.h"
+
+#include "HciMessageTypes.h"
+
+#include <google/protobuf/message.h>
+
+#include <cstring>
+
+namespace sortie::hci {
+
+const char *toString(HciDropReason reason)
+{
+    switch (reason) {
+    case HciDropReason::BadSignature: return "bad signature";
+    case HciDropReason::BadVersion: return "unsupported version";
+    case HciDropReason::UnknownType: return "unknown message type";
+    case HciDropReason::InvalidPayload: return "invalid protobuf payload";
+    case HciDropReason::MissingRequired: return "missing required fields";
+    case HciDropReason::BadLength: return "bad length";
+    }
+    return "unknown";
+}
+
+bool HciFrameHeader::plausible() const
+{
+    return signature == kHciSignature && version == kHciVersion && length >= 0 && length <= kHciMaxPayload
+        && HciMessageTypes::prototype(type) != nullptr;
+}
+
+bool appendHciFrame(std::string &out, int32_t instanceId, const google::protobuf::Message &message)
+{
+    const auto type = HciMessageTypes::number(message.GetDescriptor());
+    if (!type || !message.IsInitialized())
+        return false;
+    const size_t size = message.ByteSizeLong();
+    if (size > size_t(kHciMaxPayload))
+        return false;
+    const size_t start = out.size();
+    out.resize(start + kHciHeaderSize + size);
+    HciFrameHeader{kHciSignature, kHciVersion, instanceId, *type, int32_t(size)}.write(out.data() + start);
+    message.SerializeWithCachedSizesToArray(reinterpret_cast<uint8_t *>(out.data() + start + kHciHeaderSize));
+    return true;
+}
+
+std::optional<std::string> encodeHciFrame(int32_t instanceId, const google::protobuf::Message &message)
+{
+    std::string out;
+    if (!appendHciFrame(out, instanceId, message))
+        return std::nullopt;
+    return out;
+}
+
+std::string encodeRawHciFrame(int32_t instanceId, int32_t type, std::string_view payload, uint16_t signature,
+                              uint16_t version)
+{
+    std::string out(kHciHeaderSize, '\0');
+    HciFrameHeader{signature, version, instanceId, type, int32_t(payload.size())}.write(out.data());
+    out.append(payload);
+    return out;
+}
+
+void HciFrameDecoder::feed(std::string_view bytes)
+{
+    // Drop consumed bytes before growing: amortised O(1) per byte, and the buffer never holds
+    // more than one partial frame plus the newest chunk.
+    if (m_pos > 0 && m_pos >= m_buffer.size() / 2) {
+        m_buffer.erase(0, m_pos);
+        m_pos = 0;
+    }
+    m_buffer.append(bytes);
+}
+
+void HciFrameDecoder::reset()
+{
+    m_buffer.clear();
+    m_pos = 0;
+    m_offset = 0;
+    m_resyncing = false;
+}
+
+HciDroppedFrame HciFrameDecoder::drop(const HciFrameHeader &header, HciDropReason reason, std::string detail)
+{
+    ++m_dropped;
+    return HciDroppedFrame{m_offset, header, reason, std::move(detail), 0};
+}
+
+// Scans for the next offset whose 16 bytes form a plausible header. Consumes everything before it.
+// Returns false when more bytes are needed; keeps the last 15 bytes, which may start a header.
+bool HciFrameDecoder::resynchronise()
+{
+    const char *data = m_buffer.data();
+    size_t i = m_pos;
+    const size_t end = m_buffer.size();
+    while (i + kHciHeaderSize <= end) {
+        const void *hit = std::memchr(data + i, 0x48, end - i);
+        if (!hit) {
+            i = end;
+            break;
+        }
+        i = size_t(static_cast<const char *>(hit) - data);
+        if (i + kHciHeaderSize > end)
+            break;
+        if (HciFrameHeader::read(data + i).plausible()) {
+            const size_t skipped = i - m_pos;
+            m_discarded += skipped;
+            m_offset += skipped;
+            m_pos = i;
+            m_resyncing = false;
+            return true;
+        }
+        ++i;
+    }
+    const size_t keep = std::min<size_t>(end - m_pos, kHciHeaderSize - 1);
+    const size_t skipped = (end - m_pos) - keep;
+    m_discarded += skipped;
+    m_offset += skipped;
+    m_pos += skipped;
+    return false;
+}
+
+std::optional<HciFrameDecoder::Result> HciFrameDecoder::next()
+{
+    if (m_resyncing && !resynchronise())
+        return std::nullopt;
+    if (buffered() < kHciHeaderSize)
+        return std::nullopt;
+
+    const char *at = m_buffer.data() + m_pos;
+    const HciFrameHeader header = HciFrameHeader::read(at);
+    if (header.length < 0 || header.length > kHciMaxPayload) {
+        auto dropped = drop(header, HciDropReason::BadLength,
+                            "length " + std::to_string(header.length)
+                                + " is outside 0..67108864; scanning for the next header");
+        // Skip one byte, not the whole header: the next real header may start inside it.
+        ++m_pos;
+        ++m_offset;
+        ++m_discarded;
+        dropped.bytesDiscarded = 1;
+        m_resyncing = true;
+        return dropped;
+    }
+    const size_t frameSize = kHciHeaderSize + size_t(header.length);
+    if (buffered() < frameSize)
+        return std::nullopt;
+
+    // The whole frame is here: from now on it is consumed whatever its fate.
+    const char *payload = at + kHciHeaderSize;
+    std::optional<Result> result;
+    const google::protobuf::Message *prototype = nullptr;
+    if (header.signature != kHciSignature) {
+        result = drop(header, HciDropReason::BadSignature, "signature 0x" + [&] {
+            char hex[5];
+            std::snprintf(hex, sizeof hex, "%04x", header.signature);
+            return std::string(hex);
+        }());
+    } else if (header.version != kHciVersion) {
+        result = drop(header, HciDropReason::BadVersion, "version " + std::to_string(header.version));
+    } else if (!(prototype = HciMessageTypes::prototype(header.type))) {
+        result = drop(header, HciDropReason::UnknownType, "type " + std::to_string(header.type) + " is not mapped");
+    } else {
+        std::unique_ptr<google::protobuf::Message> message(prototype->New());
+        if (!message->ParsePartialFromArray(payload, header.length)) {
+            result = drop(header, HciDropReason::InvalidPayload,
+                          std::string(message->GetDescriptor()->name()) + " payload does not parse");
+        } else if (!message->IsInitialized()) {
+            result = drop(header, HciDropReason::MissingRequired,
+                          std::string(message->GetDescriptor()->name()) + " lacks "
+                              + message->InitializationErrorString());
+        } else {
+            ++m_decoded;
+            result = HciFrame{m_offset, header, std::move(message)};
+        }
+    }
+    m_pos += frameSize;
+    m_offset += frameSize;
+    return result;
+}
+
+} // namespace sortie::hci
