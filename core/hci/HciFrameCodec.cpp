@@ -78,6 +78,28 @@ void HciFrameDecoder::reset()
     m_resyncing = false;
 }
 
+void HciFrameDecoder::recycle(std::unique_ptr<google::protobuf::Message> message)
+{
+    if (!message)
+        return;
+    if (m_spares.size() == kSpares)
+        m_spares.erase(m_spares.begin());
+    m_spares.push_back(std::move(message));
+}
+
+std::unique_ptr<google::protobuf::Message> HciFrameDecoder::take(const google::protobuf::Message &prototype)
+{
+    const auto *descriptor = prototype.GetDescriptor();
+    for (auto it = m_spares.rbegin(); it != m_spares.rend(); ++it) {
+        if ((*it)->GetDescriptor() == descriptor) {
+            auto message = std::move(*it);
+            m_spares.erase(std::next(it).base());
+            return message; // ParsePartialFromArray clears it first
+        }
+    }
+    return std::unique_ptr<google::protobuf::Message>(prototype.New());
+}
+
 HciDroppedFrame HciFrameDecoder::drop(const HciFrameHeader &header, HciDropReason reason, std::string detail)
 {
     ++m_dropped;
@@ -158,7 +180,7 @@ std::optional<HciFrameDecoder::Result> HciFrameDecoder::next()
     } else if (!(prototype = HciMessageTypes::prototype(header.type))) {
         result = drop(header, HciDropReason::UnknownType, "type " + std::to_string(header.type) + " is not mapped");
     } else {
-        std::unique_ptr<google::protobuf::Message> message(prototype->New());
+        std::unique_ptr<google::protobuf::Message> message = take(*prototype);
         if (!message->ParsePartialFromArray(payload, header.length)) {
             result = drop(header, HciDropReason::InvalidPayload,
                           std::string(message->GetDescriptor()->name()) + " payload does not parse");
