@@ -59,6 +59,11 @@ std::string encodeRawHciFrame(int32_t instanceId, int32_t type, std::string_view
     return out;
 }
 
+HciFrameDecoder::HciFrameDecoder() = default;
+HciFrameDecoder::~HciFrameDecoder() = default;
+HciFrameDecoder::HciFrameDecoder(HciFrameDecoder &&) noexcept = default;
+HciFrameDecoder &HciFrameDecoder::operator=(HciFrameDecoder &&) noexcept = default;
+
 void HciFrameDecoder::feed(std::string_view bytes)
 {
     // Drop consumed bytes before growing: amortised O(1) per byte, and the buffer never holds

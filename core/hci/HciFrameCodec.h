@@ -30,6 +30,11 @@ class HciFrameDecoder
 public:
     using Result = std::variant<HciFrame, HciDroppedFrame>;
 
+    HciFrameDecoder();
+    ~HciFrameDecoder(); // out of line: the spare messages are of a type this header only declares
+    HciFrameDecoder(HciFrameDecoder &&) noexcept;
+    HciFrameDecoder &operator=(HciFrameDecoder &&) noexcept;
+
     void feed(std::string_view bytes);
     // The next frame, decoded or dropped, or nullopt when more bytes are needed.
     std::optional<Result> next();
@@ -38,6 +43,8 @@ public:
     void recycle(std::unique_ptr<google::protobuf::Message> message);
 
     size_t buffered() const { return m_buffer.size() - m_pos; }
+    // The bytes fed but not yet consumed (an incomplete frame), e.g. to report a truncated capture.
+    std::string_view pending() const { return std::string_view(m_buffer).substr(m_pos); }
     uint64_t streamOffset() const { return m_offset; }
     uint64_t framesDecoded() const { return m_decoded; }
     uint64_t framesDropped() const { return m_dropped; }

@@ -35,6 +35,13 @@ std::optional<HciObjectType> objectTypeFromName(const QString &name)
     return std::nullopt;
 }
 
+bool isObjectType(const QString &name)
+{
+    const auto *type = google::protobuf::DescriptorPool::generated_pool()->FindMessageTypeByName(
+        "com.ugcs.ucs.proto." + name.toStdString());
+    return type && wrapperFieldFor(type);
+}
+
 bool wrapObject(const google::protobuf::Message &object, pb::DomainObjectWrapper *wrapper)
 {
     const auto *field = wrapperFieldFor(object.GetDescriptor());

@@ -15,6 +15,8 @@ enum class HciObjectType { Vehicle, Route, Mission, VehicleProfile, User, Traver
 QString objectTypeName(HciObjectType type);
 std::optional<HciObjectType> objectTypeFromName(const QString &name);
 
+// True when `name` is a domain object type a DomainObjectWrapper can carry ("Route", "Platform"...).
+bool isObjectType(const QString &name);
 // Wraps any domain object (Route, Vehicle, ...) in a DomainObjectWrapper. Returns false when the wrapper
 // has no field of the object's type.
 bool wrapObject(const google::protobuf::Message &object, pb::DomainObjectWrapper *wrapper);
