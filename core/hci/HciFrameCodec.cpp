@@ -7,6 +7,7 @@
 #include <google/protobuf/message.h>
 
 #include <cstring>
+#include <typeinfo>
 
 namespace sortie::hci {
 namespace {
@@ -99,12 +100,13 @@ void HciFrameDecoder::recycle(std::unique_ptr<google::protobuf::Message> message
 
 std::unique_ptr<google::protobuf::Message> HciFrameDecoder::take(const google::protobuf::Message &prototype)
 {
-    const auto *descriptor = prototype.GetDescriptor();
+    // typeid, not GetDescriptor(): this runs for every frame, and the descriptor lookup is not free.
+    const std::type_info &type = typeid(prototype);
     for (auto it = m_spares.rbegin(); it != m_spares.rend(); ++it) {
-        if ((*it)->GetDescriptor() == descriptor) {
+        if (typeid(**it) == type) {
             auto message = std::move(*it);
             m_spares.erase(std::next(it).base());
-            return message; // ParsePartialFromArray clears it first
+            return message; // the parsers clear it first
         }
     }
     return std::unique_ptr<google::protobuf::Message>(prototype.New());
