@@ -40,4 +40,12 @@ double footprintAlongMeters(const AreaScanParameters &p)
     return p.camera.focalLengthMm > 0 ? scanAltitude(p) * p.camera.sensorHeightMm / p.camera.focalLengthMm : 0.0;
 }
 
+void syncDerivedFields(AreaScanParameters &p)
+{
+    if (p.heightMode == ScanHeightMode::Altitude)
+        p.groundSampleDistanceCm = scanGroundSampleDistanceCm(p);
+    else
+        p.altitude = scanAltitude(p);
+}
+
 } // namespace sortie::mission

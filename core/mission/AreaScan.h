@@ -48,6 +48,9 @@ double scanGroundSampleDistanceCm(const AreaScanParameters &p);
 // Ground footprint of one image at the scan altitude, metres across and along the flight line.
 double footprintAcrossMeters(const AreaScanParameters &p);
 double footprintAlongMeters(const AreaScanParameters &p);
+// Sets the field the height mode does not use (altitude in GSD mode, GSD in altitude mode) to the
+// value derived from the other, so that what is shown, saved and compared is consistent.
+void syncDerivedFields(AreaScanParameters &p);
 
 // An area-scan segment: a polygon (degrees, not closed: the last vertex connects to the first)
 // and the parameters the lawnmower path is generated from.

@@ -127,6 +127,7 @@ void RouteEditor::setAltitude(const QList<int> &rows, double altitude)
             auto &p = std::get<AreaScan>(s).parameters;
             p.heightMode = ScanHeightMode::Altitude;
             p.altitude = altitude;
+            syncDerivedFields(p);
         }
     }, QStringLiteral("Set altitude to %1 m").arg(altitude));
 }
@@ -207,12 +208,16 @@ int RouteEditor::addAreaScan(const QVariantList &polygon)
     if (scan.polygon.size() < 3)
         return -1;
     scan.parameters.altitude = std::max(m_model->settings().safeAltitude, std::min(60.0, m_model->settings().maxAltitude));
+    scan.parameters.speed = m_model->settings().initialSpeed;
+    syncDerivedFields(scan.parameters);
     return insertSegments(m_model->count(), {std::move(scan)}, QStringLiteral("Add area scan"));
 }
 
 void RouteEditor::setScanParameters(int row, const AreaScanParameters &parameters)
 {
-    editSegments({row}, [&parameters](Segment &s) { if (AreaScan *a = asAreaScan(s)) a->parameters = parameters; },
+    AreaScanParameters synced = parameters;
+    syncDerivedFields(synced);
+    editSegments({row}, [&synced](Segment &s) { if (AreaScan *a = asAreaScan(s)) a->parameters = synced; },
                  QStringLiteral("Edit area scan %1").arg(row + 1));
 }
 

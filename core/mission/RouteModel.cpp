@@ -41,6 +41,7 @@ std::optional<std::function<void(Segment &)>> editFor(int role, const QVariant &
             auto &p = std::get<AreaScan>(s).parameters;
             p.heightMode = ScanHeightMode::Altitude;
             p.altitude = v;
+            syncDerivedFields(p);
         };
     }
     case RouteModel::AltitudeTypeRole: {
