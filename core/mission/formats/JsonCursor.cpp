@@ -1,5 +1,7 @@
 #include "JsonCursor.h"
 
+#include <QRegularExpression>
+
 #include <cmath>
 
 namespace sortie::mission::formats {
@@ -131,10 +133,13 @@ Result<Json> parseJson(const QByteArray &data)
             if (data[i] == '\n') { ++line; column = 1; }
             else ++column;
         }
+        // "[json.exception...] parse error at line L, column C: <what>; last read: '<text>'; <expected>"
         QString what = QString::fromUtf8(e.what());
-        const int colon = what.lastIndexOf(QStringLiteral(": "));
+        const qsizetype colon = what.indexOf(QStringLiteral(": "));
         if (colon >= 0)
             what = what.mid(colon + 2);
+        static const QRegularExpression lastRead(QStringLiteral("; last read: '.*'"), QRegularExpression::DotMatchesEverythingOption);
+        what.remove(lastRead);
         return MissionError{QStringLiteral("not valid JSON: %1").arg(what), {}, line, column, {}};
     }
 }

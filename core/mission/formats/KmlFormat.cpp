@@ -60,12 +60,12 @@ QString altitudeMode(AltitudeType t) { return t == AltitudeType::Agl ? QStringLi
 
 Result<ImportedPolygon> readKmlPolygon(const QByteArray &data)
 {
+    struct Shape { bool polygon; bool closed; int line; std::vector<GeoPoint> points; QString name; };
+    std::vector<Shape> shapes;
     QXmlStreamReader xml(data);
-    ImportedPolygon out;
     QString placemarkName;
     int placemarkLine = 0;
-    int found = 0;
-    QString context;  // "Polygon-outer", "LineString" or empty: where a <coordinates> counts
+    QString context;  // "Polygon" or "LineString": where a <coordinates> counts
     int depthInOuter = 0;
     bool inPlacemark = false;
     bool placemarkHasGeometry = false;
@@ -95,21 +95,16 @@ Result<ImportedPolygon> readKmlPolygon(const QByteArray &data)
                 const QString text = xml.readElementText();
                 if (xml.hasError())
                     break;
-                if (++found > 1)
-                    continue;
                 Result<std::vector<GeoPoint>> pts = parseCoordinates(text, line);
                 if (!pts)
                     return pts.error();
                 std::vector<GeoPoint> ring = std::move(pts).value();
                 const bool closed = ring.size() > 1 && ring.front() == ring.back();
-                if (context == QLatin1String("LineString") && !closed)
-                    return xmlError(line, 0, QStringLiteral("this LineString is open, so it encloses no area; close it (last point = first) to use it as a boundary"));
                 if (closed)
                     ring.pop_back();
-                if (ring.size() < 3)
+                if (ring.size() < 3 && (closed || context == QLatin1String("Polygon")))
                     return xmlError(line, 0, QStringLiteral("a boundary needs at least 3 distinct points, found %1").arg(ring.size()));
-                out.polygon = std::move(ring);
-                out.name = placemarkName;
+                shapes.push_back({context == QLatin1String("Polygon"), closed, line, std::move(ring), placemarkName});
                 context.clear();
             }
         } else if (xml.isEndElement()) {
@@ -127,13 +122,28 @@ Result<ImportedPolygon> readKmlPolygon(const QByteArray &data)
     }
     if (xml.hasError())
         return xmlError(int(xml.lineNumber()), int(xml.columnNumber()), QStringLiteral("not valid KML: %1").arg(xml.errorString()));
-    if (found == 0) {
+    // A Polygon first; else a closed LineString.
+    const Shape *chosen = nullptr;
+    int usable = 0;
+    for (const Shape &sh : shapes) {
+        if (!sh.polygon && !sh.closed)
+            continue;
+        ++usable;
+        if (!chosen || (sh.polygon && !chosen->polygon))
+            chosen = &sh;
+    }
+    if (!chosen) {
+        for (const Shape &sh : shapes)
+            return xmlError(sh.line, 0, QStringLiteral("this LineString is open, so it encloses no area; close it (last point = first) to use it as a boundary"));
         if (firstBarePlacemarkLine)
             return xmlError(firstBarePlacemarkLine, 0, QStringLiteral("this Placemark has no Polygon (with an outerBoundaryIs LinearRing) or closed LineString"));
         return xmlError(int(xml.lineNumber()), 0, QStringLiteral("the document has no Polygon or closed LineString"));
     }
-    if (found > 1)
-        out.notices << QStringLiteral("The file holds %1 shapes; the first was imported.").arg(found);
+    ImportedPolygon out;
+    out.name = chosen->name;
+    out.polygon = chosen->points;
+    if (usable > 1)
+        out.notices << QStringLiteral("The file holds %1 closed shapes; the one at line %2 was imported.").arg(usable).arg(chosen->line);
     return out;
 }
 

@@ -105,7 +105,7 @@ Json surveyToJson(const AreaScan &scan, const AreaScanPlan &plan, int firstJumpI
     const Json camera{
         {"AdjustedFootprintFrontal", along * (1 - p.frontOverlapPercent / 100.0)},
         {"AdjustedFootprintSide", across * (1 - p.sideOverlapPercent / 100.0)},
-        {"CameraName", "Custom Camera"}, {"DistanceToSurface", plan.altitude},
+        {"CameraName", p.camera.name.toStdString()}, {"DistanceToSurface", plan.altitude},
         {"DistanceToSurfaceRelative", p.altitudeType == AltitudeType::Agl}, {"FixedOrientation", false},
         {"FocalLength", p.camera.focalLengthMm}, {"FrontalOverlap", p.frontOverlapPercent}, {"ImageDensity", plan.groundSampleDistanceCm},
         {"ImageHeight", p.camera.imageHeightPx}, {"ImageWidth", p.camera.imageWidthPx}, {"Landscape", true}, {"MinTriggerInterval", 0},
