@@ -140,6 +140,17 @@ GeodesicDirect geodesicDirect(const GeoPoint &p1, double azimuthDeg1, double dis
 
 double geodesicDistance(const GeoPoint &p1, const GeoPoint &p2, const Ellipsoid &e)
 {
+    const double dLat = p2.latitude - p1.latitude;
+    const double dLon = normalizeLongitude(p2.longitude - p1.longitude);
+    if (std::abs(dLat) <= kShortLegDegrees && std::abs(dLon) <= kShortLegDegrees) {
+        // Short leg: the ellipsoid's meridian and prime-vertical radii at the mid-latitude. Agrees
+        // with Vincenty to 10 µm within 0.01° (tests/mission/tst_geodesy), at a tenth of the cost.
+        const double e2 = e.f * (2 - e.f);
+        const double mid = (p1.latitude + dLat / 2) * kDeg;
+        const double s = std::sin(mid), w = 1 - e2 * s * s;
+        const double m = e.a * (1 - e2) / (w * std::sqrt(w)), n = e.a / std::sqrt(w);
+        return std::hypot(m * dLat * kDeg, n * std::cos(mid) * dLon * kDeg);
+    }
     if (auto g = geodesicInverse(p1, p2, e))
         return g->distance;
     // Nearly antipodal: great-circle distance on the sphere of the same mean radius.

@@ -34,8 +34,10 @@ std::optional<GeodesicInverse> geodesicInverse(const GeoPoint &p1, const GeoPoin
                                                const Ellipsoid &e = Ellipsoid::wgs84());
 GeodesicDirect geodesicDirect(const GeoPoint &p1, double azimuthDeg, double distance,
                               const Ellipsoid &e = Ellipsoid::wgs84());
-// Distance only; falls back to the spherical distance for nearly antipodal points (documented error
-// < 0.5 %).
+// Distance only. Legs within kShortLegDegrees in latitude and longitude (about 1 km) use the
+// ellipsoidal mid-latitude formula, within 10 µm of Vincenty; nearly antipodal points fall back
+// to the great circle on the mean sphere (error < 0.5 %).
+constexpr double kShortLegDegrees = 0.01;
 double geodesicDistance(const GeoPoint &p1, const GeoPoint &p2, const Ellipsoid &e = Ellipsoid::wgs84());
 
 // Earth-centred, earth-fixed coordinates on WGS-84 (metres).

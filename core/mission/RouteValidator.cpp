@@ -103,13 +103,13 @@ private:
                 return false;
             agl = altitude - rs.home->altitudeAmsl;  // above the take-off point
         }
-        const QString shown = QStringLiteral("%1 m %2").arg(num(altitude), altitudeTypeName(type));
+        auto shown = [&] { return QStringLiteral("%1 m %2").arg(num(altitude), altitudeTypeName(type)); };
         if (agl > rs.maxAltitude)
             add(Severity::Error, "altitude-above-max", row, QStringLiteral("%1: altitude %2 is above the route's maximum of %3 m.")
-                .arg(label(row), shown, num(rs.maxAltitude)));
+                .arg(label(row), shown(), num(rs.maxAltitude)));
         else if (agl < rs.safeAltitude && role == WaypointRole::Pass)
             add(Severity::Warning, "altitude-below-safe", row, QStringLiteral("%1: altitude %2 is below the route's safe altitude of %3 m.")
-                .arg(label(row), shown, num(rs.safeAltitude)));
+                .arg(label(row), shown(), num(rs.safeAltitude)));
         return true;
     }
 

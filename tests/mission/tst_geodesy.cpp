@@ -6,7 +6,9 @@
 
 #include <QtTest>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 
 using namespace sortie::mission;
 
@@ -83,6 +85,22 @@ private slots:
         // Over the pole: two meridians 180° apart.
         const double overPole = geodesicDistance({89.99, 0}, {89.99, 180});
         QVERIFY(std::abs(overPole - 2 * (10001965.7293 - geodesicDistance({0, 0}, {89.99, 0}))) < 0.01);
+    }
+    void shortLegsAgreeWithVincenty()
+    {
+        // The fast path for legs within 0.01°, everywhere on the globe.
+        std::mt19937 rng(7);
+        std::uniform_real_distribution<double> u(0, 1);
+        double worst = 0;
+        for (int i = 0; i < 50000; ++i) {
+            const GeoPoint a{-89.99 + u(rng) * 179.98, -180 + u(rng) * 360};
+            const GeoPoint b{std::clamp(a.latitude + (u(rng) * 2 - 1) * kShortLegDegrees, -90.0, 90.0),
+                             normalizeLongitude(a.longitude + (u(rng) * 2 - 1) * kShortLegDegrees)};
+            const auto exact = geodesicInverse(a, b);
+            QVERIFY(exact.has_value());
+            worst = std::max(worst, std::abs(geodesicDistance(a, b) - exact->distance));
+        }
+        QVERIFY2(worst < 1e-5, qPrintable(QString::number(worst)));
     }
     void nearlyAntipodalFallsBack()
     {

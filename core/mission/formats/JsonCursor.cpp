@@ -65,20 +65,46 @@ JsonCursor JsonCursor::at(size_t index) const
     return JsonCursor((*m_value)[index], m_path + "/" + std::to_string(index));
 }
 
+const Json *JsonCursor::member(const char *key) const
+{
+    requireObject();
+    const auto it = m_value->find(key);
+    return it == m_value->end() ? nullptr : &*it;
+}
+
+void JsonCursor::failAt(const char *key, const QString &message) const
+{
+    throw JsonPathError{m_path + "/" + escapeToken(key), message};
+}
+
+double JsonCursor::toNumber(const Json &v, const JsonCursor &where, const char *key)
+{
+    auto fail = [&](const QString &m) { key ? where.failAt(key, m) : where.fail(m); };
+    if (!v.is_number())
+        fail(QStringLiteral("expected a number, found %1").arg(QLatin1String(typeName(v))));
+    const double d = v.get<double>();
+    if (!std::isfinite(d))
+        fail(QStringLiteral("the number is not finite"));
+    return d;
+}
+
 double JsonCursor::number() const
 {
-    if (!m_value->is_number())
-        fail(QStringLiteral("expected a number, found %1").arg(QLatin1String(typeName(*m_value))));
-    const double v = m_value->get<double>();
-    if (!std::isfinite(v))
-        fail(QStringLiteral("the number is not finite"));
-    return v;
+    return toNumber(*m_value, *this, nullptr);
+}
+
+double JsonCursor::number(const char *key) const
+{
+    const Json *v = member(key);
+    if (!v)
+        failAt(key, QStringLiteral("missing required key \"%1\"").arg(QLatin1String(key)));
+    return toNumber(*v, *this, key);
 }
 
 double JsonCursor::numberOr(const char *key, double fallback) const
 {
-    const auto c = find(key);
-    return c && !c->isNull() ? c->number() : fallback;
+    const Json *v = member(key);
+    return v && !v->is_null() ? toNumber(*v, *this, key) : fallback;
 }
 
 int JsonCursor::integer() const
@@ -104,8 +130,22 @@ bool JsonCursor::boolean() const
 
 bool JsonCursor::booleanOr(const char *key, bool fallback) const
 {
-    const auto c = find(key);
-    return c && !c->isNull() ? c->boolean() : fallback;
+    const Json *v = member(key);
+    if (!v || v->is_null())
+        return fallback;
+    if (!v->is_boolean())
+        failAt(key, QStringLiteral("expected true or false, found %1").arg(QLatin1String(typeName(*v))));
+    return v->get<bool>();
+}
+
+const std::string &JsonCursor::text(const char *key, const std::string &fallback) const
+{
+    const Json *v = member(key);
+    if (!v || v->is_null())
+        return fallback;
+    if (!v->is_string())
+        failAt(key, QStringLiteral("expected a string, found %1").arg(QLatin1String(typeName(*v))));
+    return v->get_ref<const std::string &>();
 }
 
 QString JsonCursor::string() const
@@ -117,8 +157,12 @@ QString JsonCursor::string() const
 
 QString JsonCursor::stringOr(const char *key, const QString &fallback) const
 {
-    const auto c = find(key);
-    return c && !c->isNull() ? c->string() : fallback;
+    const Json *v = member(key);
+    if (!v || v->is_null())
+        return fallback;
+    if (!v->is_string())
+        failAt(key, QStringLiteral("expected a string, found %1").arg(QLatin1String(typeName(*v))));
+    return QString::fromStdString(v->get_ref<const std::string &>());
 }
 
 Result<Json> parseJson(const QByteArray &data)

@@ -39,7 +39,7 @@ public:
     void requireObject() const;
 
     double number() const;                             // finite numbers only
-    double number(const char *key) const { return at(key).number(); }
+    double number(const char *key) const;
     double numberOr(const char *key, double fallback) const;
     int integer() const;
     int integerOr(const char *key, int fallback) const;
@@ -47,11 +47,18 @@ public:
     bool booleanOr(const char *key, bool fallback) const;
     QString string() const;
     QString stringOr(const char *key, const QString &fallback) const;
+    // A member string without conversion (for enum names); fallback when absent.
+    const std::string &text(const char *key, const std::string &fallback) const;
     bool isNull() const { return m_value->is_null(); }
 
     [[noreturn]] void fail(const QString &message) const;
+    [[noreturn]] void failAt(const char *key, const QString &message) const;
 
 private:
+    // Scalar members are read without building a child path: it is only needed for an error.
+    const Json *member(const char *key) const;
+    static double toNumber(const Json &v, const JsonCursor &where, const char *key);
+
     const Json *m_value;
     std::string m_path;
 };

@@ -115,14 +115,35 @@ WaypointAction readAction(const JsonCursor &c)
     c.at("type").fail(QStringLiteral("unknown action type \"%1\"").arg(type));
 }
 
+const std::string kNone;
+
 AltitudeType altitudeTypeAt(const JsonCursor &c, const char *key)
 {
-    AltitudeType t;
-    const JsonCursor v = c.at(key);
-    if (!parseAltitudeType(v.string(), &t))
-        v.fail(QStringLiteral("expected \"AGL\" or \"AMSL\""));
-    return t;
+    const std::string &v = c.text(key, kNone);
+    if (v == "AGL")
+        return AltitudeType::Agl;
+    if (v == "AMSL")
+        return AltitudeType::Amsl;
+    c.failAt(key, v.empty() ? QStringLiteral("missing \"AGL\" or \"AMSL\"") : QStringLiteral("expected \"AGL\" or \"AMSL\""));
 }
+
+// Enum names are compared as UTF-8 bytes: no QString per field on the hot path of a big file.
+template<typename E, size_t N>
+E enumAt(const JsonCursor &c, const char *key, const char *fallback, const std::pair<const char *, E> (&names)[N])
+{
+    static const std::string none;
+    const std::string &v = c.text(key, none);
+    const std::string_view s = v.empty() && !c.find(key) ? std::string_view(fallback) : std::string_view(v);
+    for (const auto &[name, value] : names)
+        if (s == name)
+            return value;
+    c.failAt(key, QStringLiteral("unknown value \"%1\"").arg(QString::fromStdString(v)));
+}
+
+constexpr std::pair<const char *, WaypointRole> kRoles[] = {
+    {"waypoint", WaypointRole::Pass}, {"takeoff", WaypointRole::Takeoff}, {"land", WaypointRole::Land}};
+constexpr std::pair<const char *, TurnType> kTurns[] = {
+    {"StopAndTurn", TurnType::StopAndTurn}, {"Straight", TurnType::Straight}, {"Spline", TurnType::Spline}, {"BankTurn", TurnType::BankTurn}};
 
 Json segmentJson(const Segment &s)
 {
@@ -158,19 +179,19 @@ Json segmentJson(const Segment &s)
 Segment readSegment(const JsonCursor &c)
 {
     c.requireObject();
-    const QString type = c.at("type").string();
-    if (type == QLatin1String("waypoint")) {
+    const std::string &type = c.text("type", kNone);
+    if (type == "waypoint") {
         Waypoint w;
-        if (!parseRole(c.stringOr("role", QStringLiteral("waypoint")), &w.role))
-            c.at("role").fail(QStringLiteral("expected \"waypoint\", \"takeoff\" or \"land\""));
+        w.role = enumAt(c, "role", "waypoint", kRoles);
         w.position = {c.number("latitude"), c.number("longitude")};
+        if (!(w.position.latitude >= -90 && w.position.latitude <= 90))
+            c.failAt("latitude", QStringLiteral("latitude out of range"));
         if (!w.position.isValid())
-            c.at("latitude").fail(QStringLiteral("latitude/longitude out of range"));
+            c.failAt("longitude", QStringLiteral("longitude out of range"));
         w.altitude = c.number("altitude");
         w.altitudeType = altitudeTypeAt(c, "altitudeType");
         w.speed = c.number("speed");
-        if (!parseTurnType(c.stringOr("turnType", QStringLiteral("StopAndTurn")), &w.turnType))
-            c.at("turnType").fail(QStringLiteral("unknown turn type"));
+        w.turnType = enumAt(c, "turnType", "StopAndTurn", kTurns);
         w.acceptanceRadius = c.numberOr("acceptanceRadius", 0);
         if (const auto actions = c.find("actions"))
             for (size_t i = 0; i < actions->arraySize(); ++i)
@@ -178,7 +199,7 @@ Segment readSegment(const JsonCursor &c)
         w.origin.message = takeOrigin<pb::SegmentDefinition>(c);
         return w;
     }
-    if (type == QLatin1String("areaScan")) {
+    if (type == "areaScan") {
         AreaScan s;
         const JsonCursor polygon = c.at("polygon");
         for (size_t i = 0; i < polygon.arraySize(); ++i) {
@@ -211,7 +232,7 @@ Segment readSegment(const JsonCursor &c)
         s.origin.message = takeOrigin<pb::SegmentDefinition>(c);
         return s;
     }
-    c.at("type").fail(QStringLiteral("unknown segment type \"%1\"").arg(type));
+    c.failAt("type", QStringLiteral("unknown segment type \"%1\"").arg(QString::fromStdString(type)));
 }
 
 Json routeJson(const Route &r)
