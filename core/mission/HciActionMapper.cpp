@@ -1,6 +1,7 @@
 #include "HciActionMapper.h"
 
 #include "Domain.pb.h"
+#include "HciText.h"
 
 #include <numbers>
 
@@ -15,8 +16,11 @@ template<class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Set a field only when the decoded value differs: keeps the server's bytes when nothing changed.
+template<typename T> bool changed(T a, T b) { return a != b; }
+inline bool changed(double a, double b) { return differs(a, b); }
+
 #define SORTIE_MERGE(msg, field, value) \
-    do { if (!(msg).has_##field() || (msg).field() != (value)) (msg).set_##field(value); } while (0)
+    do { if (!(msg).has_##field() || changed((msg).field(), (value))) (msg).set_##field(value); } while (0)
 }
 
 WaypointAction actionFromHci(const pb::ActionDefinition &d)
@@ -72,16 +76,16 @@ void actionToHci(const WaypointAction &action, pb::ActionDefinition &def)
         },
         [&](const HeadingAction &a) {
             auto *h = def.mutable_headingdefinition();
-            if (h->heading() / kDeg != a.headingDeg || !h->has_heading())
+            if (!h->has_heading() || differs(h->heading() / kDeg, a.headingDeg))
                 h->set_heading(a.headingDeg * kDeg);
             SORTIE_MERGE(*h, relativetonextwaypoint, a.relativeToNextWaypoint);
         },
         [&](const PoiAction &a) {
             auto *p = def.mutable_poidefinition();
             SORTIE_MERGE(*p, mode, pb::PM_LOCATION);
-            if (!p->has_latitude() || p->latitude() / kDeg != a.position.latitude)
+            if (!p->has_latitude() || differs(p->latitude() / kDeg, a.position.latitude))
                 p->set_latitude(a.position.latitude * kDeg);
-            if (!p->has_longitude() || p->longitude() / kDeg != a.position.longitude)
+            if (!p->has_longitude() || differs(p->longitude() / kDeg, a.position.longitude))
                 p->set_longitude(a.position.longitude * kDeg);
             const pb::AltitudeType t = a.altitudeType == AltitudeType::Amsl ? pb::AT_WGS84 : pb::AT_AGL;
             SORTIE_MERGE(*p, altitudetype, t);
@@ -109,11 +113,11 @@ void actionToHci(const WaypointAction &action, pb::ActionDefinition &def)
         },
         [&](const PanoramaAction &a) {
             auto *p = def.mutable_panoramadefinition();
-            if (!p->has_angle() || p->angle() / kDeg != a.angleDeg) p->set_angle(a.angleDeg * kDeg);
-            if (!p->has_stepangle() || p->stepangle() / kDeg != a.stepAngleDeg) p->set_stepangle(a.stepAngleDeg * kDeg);
+            if (!p->has_angle() || differs(p->angle() / kDeg, a.angleDeg)) p->set_angle(a.angleDeg * kDeg);
+            if (!p->has_stepangle() || differs(p->stepangle() / kDeg, a.stepAngleDeg)) p->set_stepangle(a.stepAngleDeg * kDeg);
             SORTIE_MERGE(*p, stepdelay, a.stepDelaySeconds);
             SORTIE_MERGE(*p, rotationdirection, a.direction == RotationDirection::Clockwise ? pb::RD_CLOCKWISE : pb::RD_COUNTERCLOCKWISE);
-            if (!p->has_rotationspeed() || p->rotationspeed() / kDeg != a.rotationSpeedDegPerSecond)
+            if (!p->has_rotationspeed() || differs(p->rotationspeed() / kDeg, a.rotationSpeedDegPerSecond))
                 p->set_rotationspeed(a.rotationSpeedDegPerSecond * kDeg);
             SORTIE_MERGE(*p, panoramamode, a.mode == PanoramaMode::Video ? pb::PM_VIDEO : pb::PM_PHOTO);
         },

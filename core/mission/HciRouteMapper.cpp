@@ -2,6 +2,7 @@
 
 #include "Domain.pb.h"
 #include "HciSegmentMapper.h"
+#include "HciText.h"
 
 namespace sortie::mission {
 
@@ -61,12 +62,12 @@ void setProfileParameter(pb::VehicleProfile &vp, pb::VehicleParameterType type, 
 void settingsToHci(const RouteSettings &s, const RouteSettings *before, pb::Route &r)
 {
     if (!before || before->name != s.name) r.set_name(s.name.toStdString());
-    if (!before || before->safeAltitude != s.safeAltitude) r.set_safealtitude(s.safeAltitude);
-    if (!before || before->maxAltitude != s.maxAltitude) r.set_maxaltitude(s.maxAltitude);
-    if (!before || before->initialSpeed != s.initialSpeed) r.set_initialspeed(s.initialSpeed);
-    if (!before || before->maxSpeed != s.maxSpeed) r.set_maxspeed(s.maxSpeed);
-    if ((!before && s.cornerRadius != 0) || (before && before->cornerRadius != s.cornerRadius)) r.set_cornerradius(s.cornerRadius);
-    if ((!before && s.takeoffHeight != 0) || (before && before->takeoffHeight != s.takeoffHeight)) r.set_takeoffheight(s.takeoffHeight);
+    if (!before || differs(before->safeAltitude, s.safeAltitude)) r.set_safealtitude(s.safeAltitude);
+    if (!before || differs(before->maxAltitude, s.maxAltitude)) r.set_maxaltitude(s.maxAltitude);
+    if (!before || differs(before->initialSpeed, s.initialSpeed)) r.set_initialspeed(s.initialSpeed);
+    if (!before || differs(before->maxSpeed, s.maxSpeed)) r.set_maxspeed(s.maxSpeed);
+    if ((!before && s.cornerRadius != 0) || (before && differs(before->cornerRadius, s.cornerRadius))) r.set_cornerradius(s.cornerRadius);
+    if ((!before && s.takeoffHeight != 0) || (before && differs(before->takeoffHeight, s.takeoffHeight))) r.set_takeoffheight(s.takeoffHeight);
     if (!before || before->failsafes != s.failsafes) {
         auto *list = r.mutable_failsafes();
         while (list->size() > int(s.failsafes.size()))
@@ -153,9 +154,9 @@ pb::Mission missionToHci(const Mission &mission)
     pb::Mission out;
     if (mission.origin.message)
         out = *mission.origin.message;
-    if (!mission.origin.message || out.name() != mission.name.toStdString())
+    if (!mission.origin.message || QString::fromStdString(out.name()) != mission.name)
         out.set_name(mission.name.toStdString());
-    if (!mission.origin.message || out.description() != mission.description.toStdString())
+    if (!mission.origin.message || QString::fromStdString(out.description()) != mission.description)
         out.set_description(mission.description.toStdString());
     out.clear_routes();
     for (const Route &r : mission.routes)
