@@ -78,7 +78,19 @@ void RouteEditor::moveWaypoint(int row, double latitude, double longitude)
     const GeoPoint p{latitude, longitude};
     if (row < 0 || row >= m_model->count() || !isWaypoint(m_model->segment(row)) || !p.isValid())
         return;
-    m_stack->push(new MoveWaypointCommand(m_model, row, p));
+    m_stack->push(new MoveWaypointCommand(m_model, row, p, m_gesture));
+}
+
+QList<int> RouteEditor::rowsOf(const QItemSelectionModel *selection) const
+{
+    QList<int> rows;
+    if (!selection || selection->model() != m_model)
+        return rows;
+    for (const QModelIndex &i : selection->selectedIndexes())
+        rows << i.row();
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    return rows;
 }
 
 void RouteEditor::removeRows(const QList<int> &rows)

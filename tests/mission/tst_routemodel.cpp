@@ -5,6 +5,7 @@
 #include "RouteModel.h"
 
 #include <QAbstractItemModelTester>
+#include <QItemSelectionModel>
 #include <QSignalSpy>
 #include <QUndoStack>
 #include <QtTest>
@@ -110,9 +111,34 @@ private slots:
         QCOMPARE(wp(f.model, 2).position.latitude, 56.9 + 30 * 1e-4);
         f.editor.moveWaypoint(3, 56.0, 24.0);  // another point: a new step
         QCOMPARE(f.stack.count(), 2);
+        f.editor.endMove();
+        f.editor.moveWaypoint(3, 56.1, 24.0);  // the same point, a new drag: a new step
+        f.editor.moveWaypoint(3, 56.2, 24.0);
+        QCOMPARE(f.stack.count(), 3);
+        f.stack.undo();
+        QCOMPARE(wp(f.model, 3).position.latitude, 56.0);
         f.stack.undo();
         f.stack.undo();
         QVERIFY(wp(f.model, 2).position == origin);
+        // Typed coordinates never merge.
+        QVERIFY(f.model.setData(f.model.index(1), 57.0, RouteModel::LatitudeRole));
+        QVERIFY(f.model.setData(f.model.index(1), 57.1, RouteModel::LatitudeRole));
+        QCOMPARE(f.stack.count(), 2);
+    }
+
+    void selectionModelGivesTheRows()
+    {
+        Fixture f(6);
+        QItemSelectionModel selection(&f.model);
+        selection.select(f.model.index(4), QItemSelectionModel::Select);
+        selection.select(f.model.index(1), QItemSelectionModel::Select);
+        const QList<int> rows = f.editor.rowsOf(&selection);
+        QCOMPARE(rows, (QList<int>{1, 4}));
+        f.editor.setSpeed(rows, 9);
+        QCOMPARE(wp(f.model, 4).speed, 9.0);
+        QCOMPARE(wp(f.model, 2).speed, 5.0);
+        QItemSelectionModel other;
+        QVERIFY(f.editor.rowsOf(&other).isEmpty());
     }
 
     void setDataGoesThroughTheUndoStack()
