@@ -173,6 +173,35 @@ private slots:
         QCOMPARE(s2.uuid(), original.segments(2).uuid());
     }
 
+    void untouchedActionsKeepTheirBytes()
+    {
+        // Found by fuzz_hci_route: an opaque action made every action list look edited, and an
+        // absent field was then written as its default.
+        pb::Route original = savedRoute();
+        pb::SegmentDefinition *s = original.mutable_segments(1);
+        s->mutable_actiondefinitions(0)->mutable_waitdefinition()->clear_interval();
+        auto *servo = s->add_actiondefinitions();
+        servo->set_id(77);
+        servo->mutable_setservodefinition()->set_servoid(3);
+        servo->mutable_setservodefinition()->set_pwm(1900);
+        RouteModel model;
+        QUndoStack stack;
+        RouteEditor editor(&model, &stack);
+        editor.replaceRoute(imported(original), QStringLiteral("Load"));
+        const auto &w = std::get<Waypoint>(model.segment(1));
+        QCOMPARE(int(w.actions.size()), 2);
+        QCOMPARE(std::get<OpaqueAction>(w.actions[1]).description, QStringLiteral("SetServo"));
+        QCOMPARE(routeToHci(model.route()).SerializeAsString(), original.SerializeAsString());
+        editor.setAltitude({1}, 95);
+        editor.addAction({1}, {{"kind", "wait"}, {"seconds", 2}});
+        const pb::SegmentDefinition sent = routeToHci(model.route()).segments(1);
+        QCOMPARE(sent.actiondefinitions_size(), 3);
+        QCOMPARE(sent.actiondefinitions(0).SerializeAsString(), s->actiondefinitions(0).SerializeAsString());
+        QCOMPARE(sent.actiondefinitions(1).SerializeAsString(), s->actiondefinitions(1).SerializeAsString());
+        QCOMPARE(sent.actiondefinitions(2).waitdefinition().interval(), 2.0);
+        QCOMPARE(sent.figure().points(0).aglaltitude(), 95.0);
+    }
+
     void newRouteEncodesLikeTheSdkSample()
     {
         const pb::Route sdk = payloadOf<pb::CreateOrUpdateObjectRequest>("019-CreateOrUpdateObjectRequest.bin").object().route();

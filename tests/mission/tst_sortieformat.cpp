@@ -128,6 +128,16 @@ private slots:
         QVERIFY(m.error().column > 0);
     }
 
+    void numberOverflowIsAnErrorWithItsLine()
+    {
+        // Found by fuzz_sortie_reader: nlohmann-json reports this one as out_of_range, not parse_error.
+        const Result<Mission> m = readSortie("{\n \"format\": \"sortie-mission\",\n \"schemaVersion\": 1e999\n}");
+        QVERIFY(!m.ok());
+        QCOMPARE(m.error().line, 3);
+        QCOMPARE(m.error().column, 19);
+        QVERIFY(m.error().message.contains(QStringLiteral("overflow")));
+    }
+
     void semanticErrorsNameTheJsonPath_data()
     {
         QTest::addColumn<QByteArray>("key");
