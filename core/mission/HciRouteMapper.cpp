@@ -45,11 +45,14 @@ RouteSettings settingsFromHci(const pb::Route &r)
     return s;
 }
 
+// Sets the last parameter of the type: the one settingsFromHci reads when there are several.
 void setProfileParameter(pb::VehicleProfile &vp, pb::VehicleParameterType type, double value)
 {
-    for (auto &p : *vp.mutable_parameters()) {
+    auto *params = vp.mutable_parameters();
+    for (int i = params->size() - 1; i >= 0; --i) {
+        pb::VehicleParameter &p = *params->Mutable(i);
         if (p.type() == type) {
-            if (p.value() != value)
+            if (differs(p.value(), value))
                 p.set_value(value);
             return;
         }
@@ -80,13 +83,13 @@ void settingsToHci(const RouteSettings &s, const RouteSettings *before, pb::Rout
                 f->set_action(pb::FailsafeAction(int(s.failsafes[i].action)));
         }
     }
-    if (before && !(before->profile == s.profile)) {
-        pb::VehicleProfile *vp = r.mutable_vehicleprofile();
-        if (before->profile.name != s.profile.name) vp->set_name(s.profile.name.toStdString());
-        if (before->profile.maxHorizontalSpeed != s.profile.maxHorizontalSpeed)
-            setProfileParameter(*vp, pb::VPT_MAX_HORIZONTAL_SPEED, s.profile.maxHorizontalSpeed);
-        if (before->profile.climbRate != s.profile.climbRate) setProfileParameter(*vp, pb::VPT_DEFAULT_CLIMB_RATE, s.profile.climbRate);
-        if (before->profile.descentRate != s.profile.descentRate) setProfileParameter(*vp, pb::VPT_DEFAULT_DESCENT_RATE, s.profile.descentRate);
+    if (before) {
+        const VehicleProfile &b = before->profile, &p = s.profile;
+        if (b.name != p.name) r.mutable_vehicleprofile()->set_name(p.name.toStdString());
+        if (differs(b.maxHorizontalSpeed, p.maxHorizontalSpeed))
+            setProfileParameter(*r.mutable_vehicleprofile(), pb::VPT_MAX_HORIZONTAL_SPEED, p.maxHorizontalSpeed);
+        if (differs(b.climbRate, p.climbRate)) setProfileParameter(*r.mutable_vehicleprofile(), pb::VPT_DEFAULT_CLIMB_RATE, p.climbRate);
+        if (differs(b.descentRate, p.descentRate)) setProfileParameter(*r.mutable_vehicleprofile(), pb::VPT_DEFAULT_DESCENT_RATE, p.descentRate);
     }
 }
 }

@@ -17,6 +17,7 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include <limits>
 #include <numbers>
 
 using namespace sortie::mission;
@@ -95,7 +96,13 @@ private slots:
 
     void unchangedRouteGoesBackByteForByte()
     {
-        for (const pb::Route &original : {storedRoute(), savedRoute()}) {
+        // Also a profile with a parameter given twice, the second NaN (found by fuzz_hci_route).
+        pb::Route odd = savedRoute();
+        auto *twice = odd.mutable_vehicleprofile()->add_parameters();
+        twice->set_type(pb::VPT_MAX_CLIMB_RATE);
+        twice->set_value(std::numeric_limits<double>::quiet_NaN());
+        odd.mutable_segments(0)->mutable_figure()->mutable_points(0)->set_aglaltitude(std::numeric_limits<double>::quiet_NaN());
+        for (const pb::Route &original : {storedRoute(), savedRoute(), odd}) {
             const pb::Route back = routeToHci(imported(original));
             QCOMPARE(back.SerializeAsString(), original.SerializeAsString());
         }
