@@ -49,9 +49,13 @@ public:
     Q_INVOKABLE void setAcceptanceRadius(const QList<int> &rows, double meters);
     Q_INVOKABLE bool addAction(const QList<int> &rows, const QVariantMap &action);
     Q_INVOKABLE void removeAction(const QList<int> &rows, int actionIndex);
+    // Replaces the action at actionIndex (in every selected waypoint that has one there).
+    Q_INVOKABLE bool setAction(const QList<int> &rows, int actionIndex, const QVariantMap &action);
     Q_INVOKABLE void clearActions(const QList<int> &rows);
     // polygon: list of {latitude, longitude}. Returns the new row, or -1 for a bad polygon.
     Q_INVOKABLE int addAreaScan(const QVariantList &polygon);
+    // Changes the keys given (see ScanVariants.h); false for a bad value or a row that is no scan.
+    Q_INVOKABLE bool setScanProperties(int row, const QVariantMap &parameters);
     Q_INVOKABLE bool setRouteProperty(const QString &name, const QVariant &value);
     // The rows a view's selection covers, sorted, for the bulk edits above.
     Q_INVOKABLE QList<int> rowsOf(const QItemSelectionModel *selection) const;

@@ -126,6 +126,52 @@ private slots:
         QCOMPARE(f.stack.count(), 2);
     }
 
+    void areaScanToolEditsThroughMaps()
+    {
+        Fixture f(2);
+        const int row = f.editor.addAreaScan({QVariantMap{{"latitude", 56.90}, {"longitude", 24.10}},
+                                              QVariantMap{{"latitude", 56.90}, {"longitude", 24.11}},
+                                              QVariantMap{{"latitude", 56.905}, {"longitude", 24.11}}});
+        QCOMPARE(row, 2);
+        const QModelIndex i = f.model.index(row);
+        QCOMPARE(i.data(RouteModel::KindRole).toString(), QStringLiteral("areaScan"));
+        QCOMPARE(i.data(RouteModel::PolygonRole).toList().size(), 3);
+        QVariantMap plan = i.data(RouteModel::ScanPlanRole).toMap();
+        QVERIFY(plan.value("ok").toBool());
+        const int photosBefore = plan.value("photoCount").toInt();
+        QVERIFY(photosBefore > 0);
+        QCOMPARE(plan.value("path").toList().size(), 4 * plan.value("transects").toInt());
+
+        QVERIFY(f.editor.setScanProperties(row, {{"byGroundSampleDistance", true}, {"groundSampleDistanceCm", 1.0},
+                                                 {"frontOverlapPercent", 80}}));
+        const QVariantMap params = i.data(RouteModel::ScanParametersRole).toMap();
+        QCOMPARE(params.value("groundSampleDistanceCm").toDouble(), 1.0);
+        QVERIFY(params.value("altitude").toDouble() < 40);  // 1 cm/px needs to fly lower than 60 m
+        plan = i.data(RouteModel::ScanPlanRole).toMap();
+        QVERIFY(plan.value("photoCount").toInt() > photosBefore);
+        QVERIFY(!f.editor.setScanProperties(row, {{"sideOverlapPercent", "lots"}}));
+        QVERIFY(!f.editor.setScanProperties(0, {{"sideOverlapPercent", 50}}));  // a waypoint
+        QVERIFY(f.editor.setScanProperties(row, {{"sideOverlapPercent", 99}}));
+        plan = i.data(RouteModel::ScanPlanRole).toMap();
+        QVERIFY(!plan.value("ok").toBool());
+        QVERIFY(plan.value("message").toString().contains(QStringLiteral("Overlap")));
+        f.stack.undo();
+        f.stack.undo();
+        QCOMPARE(i.data(RouteModel::ScanPlanRole).toMap().value("photoCount").toInt(), photosBefore);
+    }
+
+    void editAnActionOfASelection()
+    {
+        Fixture f(4);
+        QVERIFY(f.editor.addAction({0, 1, 2}, {{"kind", "wait"}, {"seconds", 3}}));
+        QVERIFY(f.editor.setAction({1, 2, 3}, 0, {{"kind", "cameraSeriesByTime"}, {"intervalSeconds", 2}}));
+        QVERIFY(std::holds_alternative<WaitAction>(wp(f.model, 0).actions[0]));
+        QCOMPARE(std::get<CameraSeriesByTimeAction>(wp(f.model, 2).actions[0]).intervalSeconds, 2.0);
+        QVERIFY(wp(f.model, 3).actions.empty());  // had no action 0
+        QVERIFY(!f.editor.setAction({1}, 0, {{"kind", "teleport"}}));
+        QCOMPARE(f.model.index(2).data(RouteModel::ActionsSummaryRole).toString(), QStringLiteral("Photo every 2 s"));
+    }
+
     void selectionModelGivesTheRows()
     {
         Fixture f(6);
