@@ -1,0 +1,502 @@
+#include "VciJsonReader.h"
+
+#include <charconv>
+#include <cstdio>
+
+namespace sortie::vci {
+namespace {
+
+using nlohmann::json;
+
+inline bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+inline bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+std::string describe(char c)
+{
+    const auto u = static_cast<unsigned char>(c);
+    char buf[16];
+    if (u >= 0x20 && u < 0x7f)
+        std::snprintf(buf, sizeof buf, "'%c'", c);
+    else
+        std::snprintf(buf, sizeof buf, "byte 0x%02X", u);
+    return buf;
+}
+
+// Number grammar states: which characters may follow, and where the number may end.
+constexpr uint8_t NStart = 0, NMinus = 1, NZero = 2, NInt = 3, NDot = 4, NFrac = 5, NExp = 6, NExpSign = 7, NExpDigits = 8;
+inline bool numberMayEnd(uint8_t s) { return s == NZero || s == NInt || s == NFrac || s == NExpDigits; }
+
+constexpr uint8_t kEnd = 254, kBad = 255;
+
+inline uint8_t numberStep(uint8_t s, char c)
+{
+    switch (s) {
+    case NStart: return c == '-' ? NMinus : c == '0' ? NZero : isDigit(c) ? NInt : kBad;
+    case NMinus: return c == '0' ? NZero : isDigit(c) ? NInt : kBad;
+    case NZero: return c == '.' ? NDot : (c == 'e' || c == 'E') ? NExp : isDigit(c) ? kBad : kEnd;
+    case NInt: return isDigit(c) ? NInt : c == '.' ? NDot : (c == 'e' || c == 'E') ? NExp : kEnd;
+    case NDot: return isDigit(c) ? NFrac : kBad;
+    case NFrac: return isDigit(c) ? NFrac : (c == 'e' || c == 'E') ? NExp : kEnd;
+    case NExp: return (c == '+' || c == '-') ? NExpSign : isDigit(c) ? NExpDigits : kBad;
+    case NExpSign: return isDigit(c) ? NExpDigits : kBad;
+    case NExpDigits: return isDigit(c) ? NExpDigits : kEnd;
+    }
+    return kBad;
+}
+
+int hexValue(char c)
+{
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+} // namespace
+
+VciJsonReader::VciJsonReader(size_t maxDepth, size_t maxBytes, size_t maxNumberLength)
+    : m_maxDepth(maxDepth), m_maxBytes(maxBytes), m_maxNumber(maxNumberLength)
+{
+    m_text.reserve(64);
+    m_key.reserve(32);
+    m_stack.reserve(16);
+}
+
+void VciJsonReader::reset()
+{
+    m_status = Status::NeedMore;
+    m_state = State::Value;
+    m_closeAllowed = false;
+    m_stringIsKey = false;
+    m_escape = Escape::None;
+    m_high = 0;
+    m_utf8Need = 0;
+    m_consumed = 0;
+    m_errorOffset = 0;
+    m_error.clear();
+    m_text.clear();
+    m_key.clear();
+    m_stack.clear();
+    m_root = nullptr;
+}
+
+nlohmann::json VciJsonReader::takeValue()
+{
+    json v = std::move(m_root);
+    m_root = nullptr;
+    return v;
+}
+
+bool VciJsonReader::fail(const char *at, std::string message)
+{
+    m_errorOffset = at ? m_feedBase + uint64_t(at - m_feedData) : m_consumed;
+    m_error = "invalid JSON at body byte " + std::to_string(m_errorOffset) + ": " + std::move(message);
+    m_status = Status::Error;
+    m_state = State::Error;
+    return false;
+}
+
+bool VciJsonReader::unexpected(const char *at, const char *expected)
+{
+    return fail(at, std::string("expected ") + expected + ", found " + describe(*at));
+}
+
+json *VciJsonReader::place(json &&v)
+{
+    if (m_stack.empty()) {
+        m_root = std::move(v);
+        return &m_root;
+    }
+    json *top = m_stack.back();
+    if (top->is_array()) {
+        auto &array = top->get_ref<json::array_t &>();
+        array.push_back(std::move(v));
+        return &array.back();
+    }
+    auto &object = top->get_ref<json::object_t &>();
+    return &object.insert_or_assign(std::move(m_key), std::move(v)).first->second;
+}
+
+void VciJsonReader::valueDone()
+{
+    if (m_stack.empty()) {
+        m_state = State::Done;
+        m_status = Status::Done;
+    } else {
+        m_state = State::AfterValue;
+    }
+}
+
+bool VciJsonReader::openContainer(const char *at, bool object)
+{
+    if (m_stack.size() >= m_maxDepth)
+        return fail(at, "nested deeper than " + std::to_string(m_maxDepth) + " arrays and objects");
+    m_stack.push_back(place(object ? json::object() : json::array()));
+    m_closeAllowed = true;
+    m_state = object ? State::Key : State::Value;
+    return true;
+}
+
+bool VciJsonReader::closeContainer(const char *at)
+{
+    const bool object = m_stack.back()->is_object();
+    if ((*at == '}') != object)
+        return unexpected(at, object ? "',' or '}'" : "',' or ']'");
+    m_stack.pop_back();
+    valueDone();
+    return true;
+}
+
+void VciJsonReader::appendCodePoint(uint32_t cp)
+{
+    std::string &out = m_stringIsKey ? m_key : m_text;
+    if (cp < 0x80) {
+        out.push_back(char(cp));
+    } else if (cp < 0x800) {
+        out.push_back(char(0xC0 | (cp >> 6)));
+        out.push_back(char(0x80 | (cp & 0x3F)));
+    } else if (cp < 0x10000) {
+        out.push_back(char(0xE0 | (cp >> 12)));
+        out.push_back(char(0x80 | ((cp >> 6) & 0x3F)));
+        out.push_back(char(0x80 | (cp & 0x3F)));
+    } else {
+        out.push_back(char(0xF0 | (cp >> 18)));
+        out.push_back(char(0x80 | ((cp >> 12) & 0x3F)));
+        out.push_back(char(0x80 | ((cp >> 6) & 0x3F)));
+        out.push_back(char(0x80 | (cp & 0x3F)));
+    }
+}
+
+bool VciJsonReader::readEscape(const char *at)
+{
+    const char c = *at;
+    std::string &out = m_stringIsKey ? m_key : m_text;
+    switch (m_escape) {
+    case Escape::Backslash:
+        switch (c) {
+        case '"': out.push_back('"'); break;
+        case '\\': out.push_back('\\'); break;
+        case '/': out.push_back('/'); break;
+        case 'b': out.push_back('\b'); break;
+        case 'f': out.push_back('\f'); break;
+        case 'n': out.push_back('\n'); break;
+        case 'r': out.push_back('\r'); break;
+        case 't': out.push_back('\t'); break;
+        case 'u':
+            m_escape = Escape::Hex;
+            m_hexDigits = 0;
+            m_hex = 0;
+            return true;
+        default:
+            return fail(at, "invalid escape \\" + std::string(1, c) + " in a string");
+        }
+        m_escape = Escape::None;
+        return true;
+    case Escape::Hex:
+    case Escape::LowHex: {
+        const int d = hexValue(c);
+        if (d < 0)
+            return unexpected(at, "a hexadecimal digit in \\u escape");
+        m_hex = m_hex * 16 + uint32_t(d);
+        if (++m_hexDigits < 4)
+            return true;
+        if (m_escape == Escape::LowHex) {
+            if (m_hex < 0xDC00 || m_hex > 0xDFFF)
+                return fail(at, "a \\u high surrogate must be followed by a low surrogate");
+            appendCodePoint(0x10000 + ((m_high - 0xD800) << 10) + (m_hex - 0xDC00));
+            m_high = 0;
+            m_escape = Escape::None;
+        } else if (m_hex >= 0xD800 && m_hex <= 0xDBFF) {
+            m_high = m_hex;
+            m_escape = Escape::NeedLowBackslash;
+        } else if (m_hex >= 0xDC00 && m_hex <= 0xDFFF) {
+            return fail(at, "a \\u low surrogate without a high surrogate before it");
+        } else {
+            appendCodePoint(m_hex);
+            m_escape = Escape::None;
+        }
+        return true;
+    }
+    case Escape::NeedLowBackslash:
+        if (c != '\\')
+            return fail(at, "a \\u high surrogate must be followed by a low surrogate");
+        m_escape = Escape::NeedLowU;
+        return true;
+    case Escape::NeedLowU:
+        if (c != 'u')
+            return fail(at, "a \\u high surrogate must be followed by a low surrogate");
+        m_escape = Escape::LowHex;
+        m_hexDigits = 0;
+        m_hex = 0;
+        return true;
+    case Escape::None:
+        break;
+    }
+    return true;
+}
+
+const char *VciJsonReader::readString(const char *p, const char *end)
+{
+    std::string &out = m_stringIsKey ? m_key : m_text;
+    while (p < end) {
+        if (m_escape != Escape::None) {
+            if (!readEscape(p))
+                return p;
+            ++p;
+            continue;
+        }
+        if (m_utf8Need) {
+            const auto u = static_cast<unsigned char>(*p);
+            if (u < m_utf8Lo || u > m_utf8Hi)
+                return fail(p, "invalid UTF-8 in a string"), p;
+            out.push_back(*p++);
+            --m_utf8Need;
+            m_utf8Lo = 0x80;
+            m_utf8Hi = 0xBF;
+            continue;
+        }
+        // The common case: a run of printable ASCII, appended at once.
+        const char *run = p;
+        while (p < end) {
+            const auto u = static_cast<unsigned char>(*p);
+            if (u < 0x20 || u == '"' || u == '\\' || u >= 0x80)
+                break;
+            ++p;
+        }
+        out.append(run, size_t(p - run));
+        if (p == end)
+            break;
+        const auto u = static_cast<unsigned char>(*p);
+        if (u == '"') {
+            ++p;
+            if (m_stringIsKey) {
+                m_state = State::Colon;
+            } else {
+                place(json(std::move(m_text)));
+                m_text.clear();
+                valueDone();
+            }
+            return p;
+        }
+        if (u == '\\') {
+            m_escape = Escape::Backslash;
+            ++p;
+            continue;
+        }
+        if (u < 0x20)
+            return fail(p, "control character " + describe(*p) + " in a string (escape it)"), p;
+        if (u >= 0xC2 && u <= 0xDF) {
+            m_utf8Need = 1;
+        } else if (u >= 0xE0 && u <= 0xEF) {
+            m_utf8Need = 2;
+            m_utf8Lo = u == 0xE0 ? 0xA0 : 0x80;
+            m_utf8Hi = u == 0xED ? 0x9F : 0xBF;
+        } else if (u >= 0xF0 && u <= 0xF4) {
+            m_utf8Need = 3;
+            m_utf8Lo = u == 0xF0 ? 0x90 : 0x80;
+            m_utf8Hi = u == 0xF4 ? 0x8F : 0xBF;
+        } else {
+            return fail(p, "invalid UTF-8 in a string"), p;
+        }
+        out.push_back(*p++);
+    }
+    return p;
+}
+
+const char *VciJsonReader::readNumber(const char *p, const char *end)
+{
+    while (p < end) {
+        const uint8_t next = numberStep(m_numState, *p);
+        if (next == kEnd) {
+            const bool topLevel = m_stack.empty();
+            if (topLevel && !isSpace(*p))
+                return unexpected(p, "a whitespace character after a top-level number"), p;
+            if (!completeNumber(p))
+                return p;
+            return topLevel ? p + 1 : p; // the whitespace that ends a top-level number is the body's
+        }
+        if (next == kBad)
+            return unexpected(p, m_numState == NDot ? "a digit after '.'" : "a digit"), p;
+        if (m_text.size() >= m_maxNumber)
+            return fail(p, "a number longer than " + std::to_string(m_maxNumber) + " characters"), p;
+        m_numState = next;
+        m_text.push_back(*p++);
+    }
+    return p;
+}
+
+bool VciJsonReader::completeNumber(const char *at)
+{
+    const char *b = m_text.data();
+    const char *e = b + m_text.size();
+    if (m_numState == NZero || m_numState == NInt) {
+        if (*b == '-') {
+            int64_t v = 0;
+            const auto r = std::from_chars(b, e, v);
+            if (r.ec == std::errc() && r.ptr == e) {
+                place(json(v));
+                valueDone();
+                return true;
+            }
+        } else {
+            uint64_t v = 0;
+            const auto r = std::from_chars(b, e, v);
+            if (r.ec == std::errc() && r.ptr == e) {
+                place(json(v));
+                valueDone();
+                return true;
+            }
+        }
+    }
+    double d = 0;
+    const auto r = std::from_chars(b, e, d);
+    if (r.ec == std::errc::result_out_of_range) {
+        // Underflow reads as zero; overflow has no JSON value to become.
+        const bool tiny = m_text.find("e-") != std::string::npos || m_text.find("E-") != std::string::npos;
+        if (!tiny)
+            return fail(at, "number " + m_text + " is out of range");
+        d = *b == '-' ? -0.0 : 0.0;
+    } else if (r.ec != std::errc() || r.ptr != e) {
+        return fail(at, "number " + m_text + " cannot be read");
+    }
+    place(json(d));
+    valueDone();
+    return true;
+}
+
+size_t VciJsonReader::feed(const char *data, size_t size)
+{
+    if (m_status != Status::NeedMore)
+        return 0;
+    const size_t room = m_maxBytes - m_consumed;
+    const bool capped = size > room;
+    if (capped)
+        size = room;
+    m_feedData = data;
+    m_feedBase = m_consumed;
+    const char *p = data;
+    const char *end = data + size;
+    while (p < end && m_status == Status::NeedMore) {
+        switch (m_state) {
+        case State::Value: {
+            const char c = *p;
+            if (isSpace(c)) {
+                ++p;
+            } else if (c == '{' || c == '[') {
+                if (openContainer(p, c == '{'))
+                    ++p;
+            } else if (c == ']' && m_closeAllowed) {
+                if (closeContainer(p))
+                    ++p;
+            } else if (c == '"') {
+                ++p;
+                m_state = State::String;
+                m_stringIsKey = false;
+                m_text.clear();
+            } else if (c == '-' || isDigit(c)) {
+                m_state = State::Number;
+                m_numState = NStart;
+                m_text.clear();
+            } else if (c == 't' || c == 'f' || c == 'n') {
+                m_literal = c == 't' ? "true" : c == 'f' ? "false" : "null";
+                m_literalPos = 0;
+                m_state = State::Literal;
+            } else {
+                unexpected(p, "a JSON value");
+            }
+            break;
+        }
+        case State::String:
+            p = readString(p, end);
+            break;
+        case State::Number:
+            p = readNumber(p, end);
+            break;
+        case State::Literal:
+            if (*p != m_literal[m_literalPos]) {
+                unexpected(p, (std::string("'") + m_literal[m_literalPos] + "' of " + m_literal).c_str());
+                break;
+            }
+            ++p;
+            if (m_literal[++m_literalPos] == 0) {
+                place(m_literal[0] == 'n' ? json(nullptr) : json(m_literal[0] == 't'));
+                valueDone();
+            }
+            break;
+        case State::AfterValue: {
+            const char c = *p;
+            if (isSpace(c)) {
+                ++p;
+            } else if (c == ',') {
+                ++p;
+                m_closeAllowed = false;
+                m_state = m_stack.back()->is_object() ? State::Key : State::Value;
+            } else if (c == '}' || c == ']') {
+                if (closeContainer(p))
+                    ++p;
+            } else {
+                unexpected(p, m_stack.back()->is_object() ? "',' or '}'" : "',' or ']'");
+            }
+            break;
+        }
+        case State::Key: {
+            const char c = *p;
+            if (isSpace(c)) {
+                ++p;
+            } else if (c == '"') {
+                ++p;
+                m_state = State::String;
+                m_stringIsKey = true;
+                m_key.clear();
+            } else if (c == '}' && m_closeAllowed) {
+                if (closeContainer(p))
+                    ++p;
+            } else {
+                unexpected(p, m_closeAllowed ? "a key or '}'" : "a key");
+            }
+            break;
+        }
+        case State::Colon:
+            if (isSpace(*p)) {
+                ++p;
+            } else if (*p == ':') {
+                ++p;
+                m_closeAllowed = false;
+                m_state = State::Value;
+            } else {
+                unexpected(p, "':'");
+            }
+            break;
+        case State::Done:
+        case State::Error:
+            break;
+        }
+    }
+    const size_t n = size_t(p - data);
+    m_consumed += n;
+    if (capped && m_status == Status::NeedMore) {
+        m_errorOffset = m_consumed;
+        m_error = "body larger than the limit of " + std::to_string(m_maxBytes) + " bytes";
+        m_status = Status::Error;
+        m_state = State::Error;
+    }
+    return n;
+}
+
+VciJsonReader::Status VciJsonReader::finish()
+{
+    if (m_status != Status::NeedMore)
+        return m_status;
+    m_feedData = nullptr;
+    if (m_state == State::Number && m_stack.empty() && numberMayEnd(m_numState)) {
+        completeNumber(nullptr);
+        return m_status;
+    }
+    if (m_state == State::Value && m_stack.empty())
+        fail(nullptr, "the body holds no JSON value");
+    else
+        fail(nullptr, "the body ends inside a JSON value");
+    return m_status;
+}
+
+} // namespace sortie::vci
