@@ -305,8 +305,24 @@ const char *VciJsonReader::readString(const char *p, const char *end)
 
 const char *VciJsonReader::readNumber(const char *p, const char *end)
 {
+    const char *run = p; // characters accepted but not yet copied into m_text
+    auto flush = [&] {
+        m_text.append(run, size_t(p - run));
+        run = p;
+    };
     while (p < end) {
+        if ((m_numState == NInt || m_numState == NFrac || m_numState == NExpDigits) && isDigit(*p)
+            && m_text.size() + size_t(p - run) < m_maxNumber) {
+            ++p; // the common case: more digits in a state that takes them
+            continue;
+        }
         const uint8_t next = numberStep(m_numState, *p);
+        if (next < kEnd && m_text.size() + size_t(p - run) < m_maxNumber) {
+            m_numState = next;
+            ++p;
+            continue;
+        }
+        flush();
         if (next == kEnd) {
             const bool topLevel = m_stack.empty();
             if (topLevel && !isSpace(*p))
@@ -317,11 +333,9 @@ const char *VciJsonReader::readNumber(const char *p, const char *end)
         }
         if (next == kBad)
             return unexpected(p, m_numState == NDot ? "a digit after '.'" : "a digit"), p;
-        if (m_text.size() >= m_maxNumber)
-            return fail(p, "a number longer than " + std::to_string(m_maxNumber) + " characters"), p;
-        m_numState = next;
-        m_text.push_back(*p++);
+        return fail(p, "a number longer than " + std::to_string(m_maxNumber) + " characters"), p;
     }
+    flush();
     return p;
 }
 

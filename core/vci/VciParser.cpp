@@ -153,6 +153,7 @@ void VciParser::beginMessage(uint64_t offset)
 {
     m_msg = VciMessage{};
     m_msg.offset = offset;
+    m_msg.headers.reserve(4);
     m_bad = false;
     m_msgKindKnown = false;
     m_verbText.clear();
