@@ -44,14 +44,6 @@ inline uint8_t numberStep(uint8_t s, char c)
     return kBad;
 }
 
-int hexValue(char c)
-{
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-}
-
 } // namespace
 
 VciJsonReader::VciJsonReader(size_t maxDepth, size_t maxBytes, size_t maxNumberLength)
@@ -68,9 +60,7 @@ void VciJsonReader::reset()
     m_state = State::Value;
     m_closeAllowed = false;
     m_stringIsKey = false;
-    m_escape = Escape::None;
-    m_high = 0;
-    m_utf8Need = 0;
+    m_string.reset();
     m_consumed = 0;
     m_errorOffset = 0;
     m_error.clear();
@@ -147,158 +137,20 @@ bool VciJsonReader::closeContainer(const char *at)
     return true;
 }
 
-void VciJsonReader::appendCodePoint(uint32_t cp)
-{
-    std::string &out = m_stringIsKey ? m_key : m_text;
-    if (cp < 0x80) {
-        out.push_back(char(cp));
-    } else if (cp < 0x800) {
-        out.push_back(char(0xC0 | (cp >> 6)));
-        out.push_back(char(0x80 | (cp & 0x3F)));
-    } else if (cp < 0x10000) {
-        out.push_back(char(0xE0 | (cp >> 12)));
-        out.push_back(char(0x80 | ((cp >> 6) & 0x3F)));
-        out.push_back(char(0x80 | (cp & 0x3F)));
-    } else {
-        out.push_back(char(0xF0 | (cp >> 18)));
-        out.push_back(char(0x80 | ((cp >> 12) & 0x3F)));
-        out.push_back(char(0x80 | ((cp >> 6) & 0x3F)));
-        out.push_back(char(0x80 | (cp & 0x3F)));
-    }
-}
-
-bool VciJsonReader::readEscape(const char *at)
-{
-    const char c = *at;
-    std::string &out = m_stringIsKey ? m_key : m_text;
-    switch (m_escape) {
-    case Escape::Backslash:
-        switch (c) {
-        case '"': out.push_back('"'); break;
-        case '\\': out.push_back('\\'); break;
-        case '/': out.push_back('/'); break;
-        case 'b': out.push_back('\b'); break;
-        case 'f': out.push_back('\f'); break;
-        case 'n': out.push_back('\n'); break;
-        case 'r': out.push_back('\r'); break;
-        case 't': out.push_back('\t'); break;
-        case 'u':
-            m_escape = Escape::Hex;
-            m_hexDigits = 0;
-            m_hex = 0;
-            return true;
-        default:
-            return fail(at, "invalid escape \\" + std::string(1, c) + " in a string");
-        }
-        m_escape = Escape::None;
-        return true;
-    case Escape::Hex:
-    case Escape::LowHex: {
-        const int d = hexValue(c);
-        if (d < 0)
-            return unexpected(at, "a hexadecimal digit in \\u escape");
-        m_hex = m_hex * 16 + uint32_t(d);
-        if (++m_hexDigits < 4)
-            return true;
-        if (m_escape == Escape::LowHex) {
-            if (m_hex < 0xDC00 || m_hex > 0xDFFF)
-                return fail(at, "a \\u high surrogate must be followed by a low surrogate");
-            appendCodePoint(0x10000 + ((m_high - 0xD800) << 10) + (m_hex - 0xDC00));
-            m_high = 0;
-            m_escape = Escape::None;
-        } else if (m_hex >= 0xD800 && m_hex <= 0xDBFF) {
-            m_high = m_hex;
-            m_escape = Escape::NeedLowBackslash;
-        } else if (m_hex >= 0xDC00 && m_hex <= 0xDFFF) {
-            return fail(at, "a \\u low surrogate without a high surrogate before it");
-        } else {
-            appendCodePoint(m_hex);
-            m_escape = Escape::None;
-        }
-        return true;
-    }
-    case Escape::NeedLowBackslash:
-        if (c != '\\')
-            return fail(at, "a \\u high surrogate must be followed by a low surrogate");
-        m_escape = Escape::NeedLowU;
-        return true;
-    case Escape::NeedLowU:
-        if (c != 'u')
-            return fail(at, "a \\u high surrogate must be followed by a low surrogate");
-        m_escape = Escape::LowHex;
-        m_hexDigits = 0;
-        m_hex = 0;
-        return true;
-    case Escape::None:
-        break;
-    }
-    return true;
-}
-
 const char *VciJsonReader::readString(const char *p, const char *end)
 {
-    std::string &out = m_stringIsKey ? m_key : m_text;
-    while (p < end) {
-        if (m_escape != Escape::None) {
-            if (!readEscape(p))
-                return p;
-            ++p;
-            continue;
-        }
-        if (m_utf8Need) {
-            const auto u = static_cast<unsigned char>(*p);
-            if (u < m_utf8Lo || u > m_utf8Hi)
-                return fail(p, "invalid UTF-8 in a string"), p;
-            out.push_back(*p++);
-            --m_utf8Need;
-            m_utf8Lo = 0x80;
-            m_utf8Hi = 0xBF;
-            continue;
-        }
-        // The common case: a run of printable ASCII, appended at once.
-        const char *run = p;
-        while (p < end) {
-            const auto u = static_cast<unsigned char>(*p);
-            if (u < 0x20 || u == '"' || u == '\\' || u >= 0x80)
-                break;
-            ++p;
-        }
-        out.append(run, size_t(p - run));
-        if (p == end)
-            break;
-        const auto u = static_cast<unsigned char>(*p);
-        if (u == '"') {
-            ++p;
-            if (m_stringIsKey) {
-                m_state = State::Colon;
-            } else {
-                place(json(std::move(m_text)));
-                m_text.clear();
-                valueDone();
-            }
-            return p;
-        }
-        if (u == '\\') {
-            m_escape = Escape::Backslash;
-            ++p;
-            continue;
-        }
-        if (u < 0x20)
-            return fail(p, "control character " + describe(*p) + " in a string (escape it)"), p;
-        if (u >= 0xC2 && u <= 0xDF) {
-            m_utf8Need = 1;
-        } else if (u >= 0xE0 && u <= 0xEF) {
-            m_utf8Need = 2;
-            m_utf8Lo = u == 0xE0 ? 0xA0 : 0x80;
-            m_utf8Hi = u == 0xED ? 0x9F : 0xBF;
-        } else if (u >= 0xF0 && u <= 0xF4) {
-            m_utf8Need = 3;
-            m_utf8Lo = u == 0xF0 ? 0x90 : 0x80;
-            m_utf8Hi = u == 0xF4 ? 0x8F : 0xBF;
+    VciJsonString::Status status;
+    p = m_string.decode(p, end, m_stringIsKey ? m_key : m_text, &status);
+    if (status == VciJsonString::Status::Error) {
+        fail(p, m_string.error());
+    } else if (status == VciJsonString::Status::Closed) {
+        if (m_stringIsKey) {
+            m_state = State::Colon;
         } else {
-            return fail(p, "invalid UTF-8 in a string"), p;
+            place(json(std::move(m_text)));
+            m_text.clear();
+            valueDone();
         }
-        out.push_back(*p++);
     }
     return p;
 }
@@ -406,6 +258,7 @@ size_t VciJsonReader::feed(const char *data, size_t size)
                 ++p;
                 m_state = State::String;
                 m_stringIsKey = false;
+                m_string.reset();
                 m_text.clear();
             } else if (c == '-' || isDigit(c)) {
                 m_state = State::Number;
@@ -461,6 +314,7 @@ size_t VciJsonReader::feed(const char *data, size_t size)
                 ++p;
                 m_state = State::String;
                 m_stringIsKey = true;
+                m_string.reset();
                 m_key.clear();
             } else if (c == '}' && m_closeAllowed) {
                 if (closeContainer(p))

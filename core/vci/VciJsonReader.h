@@ -1,5 +1,7 @@
 #pragma once
 
+#include "VciJsonString.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cstddef>
@@ -38,11 +40,9 @@ public:
 
 private:
     enum class State : uint8_t { Value, String, Number, Literal, AfterValue, Key, Colon, Done, Error };
-    enum class Escape : uint8_t { None, Backslash, Hex, NeedLowBackslash, NeedLowU, LowHex };
 
     const char *readString(const char *p, const char *end);
     const char *readNumber(const char *p, const char *end);
-    bool readEscape(const char *at);
     bool completeNumber(const char *at);
     bool openContainer(const char *at, bool object);
     bool closeContainer(const char *at);
@@ -50,18 +50,13 @@ private:
     void valueDone();
     bool fail(const char *at, std::string message); // at == nullptr: at the end of the input
     bool unexpected(const char *at, const char *expected);
-    void appendCodePoint(uint32_t cp);
 
     size_t m_maxDepth, m_maxBytes, m_maxNumber;
     Status m_status = Status::NeedMore;
     State m_state = State::Value;
     bool m_closeAllowed = false;   // ']' or '}' may close the container (right after it opened)
     bool m_stringIsKey = false;
-    Escape m_escape = Escape::None;
-    uint8_t m_hexDigits = 0;
-    uint32_t m_hex = 0, m_high = 0;
-    uint8_t m_utf8Need = 0;        // continuation bytes still due in a multi-byte UTF-8 character
-    uint8_t m_utf8Lo = 0x80, m_utf8Hi = 0xBF;
+    VciJsonString m_string;        // the string being read
     uint8_t m_numState = 0;
     const char *m_literal = nullptr;
     uint8_t m_literalPos = 0;
