@@ -40,6 +40,10 @@ public:
     uint64_t messagesParsed() const { return m_messages; }
     uint64_t errors() const { return m_errors; }
     uint64_t bytesDiscarded() const { return m_discarded; } // skipped while looking for a start line
+    // Whether a message has begun and not ended (its start line is read), and where it began.
+    bool midMessage() const { return m_state == State::Headers || m_state == State::BodyLength || m_state == State::BodyJson; }
+    uint64_t messageOffset() const { return midMessage() ? m_msg.offset : streamOffset(); }
+    bool resyncing() const { return m_state == State::Resync; } // skipping to the next start line
     void reset();
 
 private:

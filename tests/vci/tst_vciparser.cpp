@@ -1,8 +1,11 @@
 // VciParser: every message kind, both body framings, every chunk split point.
+#include "VciDumpWriter.h"
 #include "VciTestStreams.h"
 #include "VciWriter.h"
 
 #include <QtTest>
+
+#include <sstream>
 
 using nlohmann::json;
 using namespace sortie::vci;
@@ -49,6 +52,7 @@ private slots:
     void writerRoundTrip_data();
     void writerRoundTrip();
     void dumpLines();
+    void dumpWriter();
 };
 
 void TstVciParser::everyMessageKind()
@@ -252,6 +256,29 @@ void TstVciParser::dumpLines()
     QCOMPARE(e["verb"], json("FETCH"));
     QCOMPARE(e["reply"], json(501));
     QCOMPARE(e["offset"], m["size"]);
+}
+
+void TstVciParser::dumpWriter()
+{
+    std::ostringstream out;
+    VciDumpWriter writer(out);
+    const std::string stream = mixedStream() + "PUT /x VCI/1.0\r\nContent-Type: application/json\r\n\r\n[1,]\r\n"
+                               + "NOTIFY /cut VCI/1.0\r\nContent-Type: application/json\r\n\r\n{\"a\":";
+    for (size_t i = 0; i < stream.size(); i += 13)
+        writer.feed(std::string_view(stream).substr(i, 13));
+    writer.finish();
+    std::vector<json> lines;
+    std::istringstream in(out.str());
+    for (std::string line; std::getline(in, line);)
+        lines.push_back(json::parse(line));
+    QCOMPARE(lines.size(), size_t(12)); // 10 messages, the bad PUT, the cut NOTIFY
+    QCOMPARE(lines[3]["verb"], json("NOTIFY"));
+    QCOMPARE(lines[10]["kind"], json("error"));
+    QCOMPARE(lines[10]["error"], json("bad JSON"));
+    QCOMPARE(lines[11]["error"], json("truncated"));
+    QCOMPARE(lines[11]["offset"], json(stream.find("NOTIFY /cut")));
+    QCOMPARE(writer.messages(), uint64_t(10));
+    QCOMPARE(writer.errors(), uint64_t(2));
 }
 
 QTEST_GUILESS_MAIN(TstVciParser)
