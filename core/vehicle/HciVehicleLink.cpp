@@ -27,6 +27,10 @@ HciVehicleLink::HciVehicleLink(hci::HciClient *client, const pb::Vehicle &vehicl
     m_identity.autopilot = QString::fromStdString(vehicle.platform().name().empty() ? vehicle.platform().code() : vehicle.platform().name());
     m_identity.protocol = protocol();
     connect(client->session(), &hci::HciSession::stateChanged, this, &HciVehicleLink::updateState);
+    connect(client->session(), &hci::HciSession::errorOccurred, this, [this](const hci::HciError &error) {
+        if (m_started)
+            emit errorOccurred(error.message());
+    });
 }
 
 HciVehicleLink::~HciVehicleLink()

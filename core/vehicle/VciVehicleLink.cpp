@@ -40,6 +40,12 @@ VciVehicleLink::VciVehicleLink(const vci::VciEndpoint &endpoint, QObject *parent
         if (!m_stopping)
             setState(State::Lost); // the transport is already trying again
     });
+    connect(&m_transport, &vci::VciTransport::attemptFailed, this, &VehicleLink::errorOccurred);
+    connect(&m_transport, &vci::VciTransport::lost, this, [this](const QString &why) {
+        if (!m_stopping)
+            emit errorOccurred(QStringLiteral("connection to %1 lost: %2").arg(m_identity.name, why));
+    });
+    connect(&m_connection, &vci::VciConnection::protocolError, this, &VehicleLink::errorOccurred);
     connect(&m_connection, &vci::VciConnection::attached, this, &VciVehicleLink::onAttached);
     connect(&m_connection, &vci::VciConnection::notified, this, &VciVehicleLink::onNotified);
 }

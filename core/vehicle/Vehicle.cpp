@@ -23,7 +23,19 @@ Vehicle::Vehicle(VehicleLink *link, QObject *parent, size_t historyCapacity)
     if (!link)
         return;
     connect(link, &VehicleLink::telemetryReceived, this, &Vehicle::ingest);
-    connect(link, &VehicleLink::stateChanged, this, &Vehicle::linkStateChanged);
+    connect(link, &VehicleLink::stateChanged, this, [this](VehicleLink::State state) {
+        if (state == VehicleLink::State::Connected && !m_lastError.isEmpty()) {
+            m_lastError.clear();
+            emit lastErrorChanged();
+        }
+        emit linkStateChanged();
+    });
+    connect(link, &VehicleLink::errorOccurred, this, [this](const QString &message) {
+        if (message == m_lastError)
+            return;
+        m_lastError = message;
+        emit lastErrorChanged();
+    });
     connect(link, &VehicleLink::identityChanged, this, [this](const VehicleIdentity &identity) {
         if (identity == m_identity)
             return;

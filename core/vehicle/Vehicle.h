@@ -31,6 +31,7 @@ class Vehicle : public QObject
     Q_PROPERTY(sortie::vehicle::VehicleLink::State linkState READ linkState NOTIFY linkStateChanged)
     Q_PROPERTY(bool connected READ isConnected NOTIFY linkStateChanged)
     Q_PROPERTY(bool stale READ isStale NOTIFY staleChanged)
+    Q_PROPERTY(QString lastError READ lastError NOTIFY lastErrorChanged)
     Q_PROPERTY(QGeoCoordinate position READ position NOTIFY telemetryChanged)
     Q_PROPERTY(QGeoCoordinate home READ home NOTIFY telemetryChanged)
     Q_PROPERTY(double altitudeAmsl READ altitudeAmsl NOTIFY telemetryChanged)
@@ -61,6 +62,8 @@ public:
     VehicleIdentity identity() const { return m_identity; }
     VehicleLink::State linkState() const { return m_link ? m_link->state() : VehicleLink::State::Disconnected; }
     bool isConnected() const { return linkState() == VehicleLink::State::Connected; }
+    // The link's last problem, for the operator; cleared when the link connects.
+    QString lastError() const { return m_lastError; }
 
     // The last value of a field with the vehicle's time, or nullopt before the first.
     std::optional<TelemetrySample> last(TelemetryField field) const;
@@ -109,6 +112,7 @@ signals:
     void telemetryChanged();
     void staleChanged();
     void linkStateChanged();
+    void lastErrorChanged();
     void identityChanged();
     void notifyIntervalChanged();
     void commandFinished(const QString &command, bool ok, const QString &message);
@@ -128,6 +132,7 @@ private:
     QPointer<VehicleLink> m_link;
     QString m_protocol;
     VehicleIdentity m_identity;
+    QString m_lastError;
     TelemetryStore m_history;
     std::array<Last, kTelemetryFieldCount> m_last;
     std::bitset<kTelemetryFieldCount> m_staleFields;

@@ -62,6 +62,9 @@ signals:
     void identityChanged(const sortie::vehicle::VehicleIdentity &identity);
     // The mission on board changed (an upload, or another station's).
     void missionChanged();
+    // Something the operator should know about the link: a failed connection attempt, a lost line,
+    // unreadable data. The link keeps trying; this is information, not an end.
+    void errorOccurred(const QString &message);
 };
 
 } // namespace sortie::vehicle

@@ -42,6 +42,7 @@ private slots:
     void missionUploadDownloadAndFlight();
     void parametersAndGoTo();
     void lostAndReconnected();
+    void unreachableVehicleSaysWhy();
 
 private:
     void startLink(const QString &url);
@@ -239,6 +240,28 @@ void TstVciVehicleLink::lostAndReconnected()
     QTRY_COMPARE(m_listener->sessions().size(), 1);
     m_link->stop();
     QCOMPARE(m_vehicle->linkState(), VehicleLink::State::Disconnected);
+}
+
+void TstVciVehicleLink::unreachableVehicleSaysWhy()
+{
+    const auto endpoint = vci::VciEndpoint::parse(QStringLiteral("serial:/dev/sortie-no-such-port?baud=57600"));
+    QVERIFY(endpoint);
+    VciVehicleLink link(*endpoint);
+    link.transport()->setRetryDelays(20, 100);
+    Vehicle v(&link);
+    link.start();
+    QTRY_VERIFY(!v.lastError().isEmpty());
+    QVERIFY2(v.lastError().contains(QLatin1String("/dev/sortie-no-such-port")), qPrintable(v.lastError()));
+    QCOMPARE(v.linkState(), VehicleLink::State::Connecting); // and it keeps trying
+
+    // Once it connects, the error is cleared.
+    startLink(QStringLiteral("tcp://127.0.0.1:%1").arg(m_listener->port()));
+    QSignalSpy errors(m_vehicle.get(), &Vehicle::lastErrorChanged);
+    m_listener->dropConnections();
+    QTRY_VERIFY(m_vehicle->lastError().contains(QLatin1String("lost")));
+    QTRY_VERIFY(m_vehicle->isConnected());
+    QVERIFY(m_vehicle->lastError().isEmpty());
+    QCOMPARE(errors.count(), 2);
 }
 
 QTEST_GUILESS_MAIN(TstVciVehicleLink)
