@@ -1,0 +1,82 @@
+// sortie: wires the pieces together. Parses the command line, restores the settings, loads the
+// Sortie.Ui main window.
+#include "AppSettings.h"
+#include "LaunchOptions.h"
+#include "SortieUi.h"
+#include "WindowGeometry.h"
+
+#include <QGuiApplication>
+#include <QIcon>
+#include <QQmlApplicationEngine>
+#include <QQuickStyle>
+#include <QQuickWindow>
+#include <QSettings>
+#include <QtQml/qqmlextensionplugin.h>
+
+#include <cstdio>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+namespace {
+
+void describeApplication()
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("Sortie"));
+    QCoreApplication::setApplicationName(QStringLiteral("sortie"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(SORTIE_VERSION));
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    // The command line is read before any window system is touched, so --help, --version and
+    // a mistyped option work without a display.
+    std::variant<sortie::app::LaunchOptions, QString> parsed;
+    {
+        QCoreApplication reader(argc, argv);
+        describeApplication();
+        parsed = sortie::app::LaunchOptions::parse(QCoreApplication::arguments());
+    }
+    if (const auto *error = std::get_if<QString>(&parsed)) {
+        std::fprintf(stderr, "sortie: %s\n", qPrintable(*error));
+        return 2;
+    }
+    const auto options = std::get<sortie::app::LaunchOptions>(parsed);
+    if (options.exitNow) {
+        std::fputs(qPrintable(options.output), stdout);
+        return 0;
+    }
+
+    QGuiApplication app(argc, argv);
+    describeApplication();
+    QGuiApplication::setApplicationDisplayName(QStringLiteral("Sortie"));
+    QGuiApplication::setDesktopFileName(QStringLiteral("sortie"));
+    QGuiApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("sortie")));
+
+    // A fixed style makes every machine (and the offscreen tests) draw the same controls;
+    // Fusion takes its colours from the system palette, light or dark.
+    QQuickStyle::setStyle(QStringLiteral("Fusion"));
+
+    QSettings storage;
+    sortie::ui::AppSettings settings(&storage);
+    if (options.server)
+        settings.setLastServer(options.server->toString());
+    if (!options.user.isEmpty())
+        settings.setLastUser(options.user);
+
+    QQmlApplicationEngine engine;
+    sortie::ui::addImportPaths(engine);
+    engine.setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(&settings)}});
+    engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));
+    if (engine.rootObjects().isEmpty())
+        return 1;
+    auto *window = qobject_cast<QQuickWindow *>(engine.rootObjects().constFirst());
+    if (!window)
+        return 1;
+    sortie::app::restoreWindowGeometry(*window, settings);
+    QObject::connect(&app, &QGuiApplication::aboutToQuit, &app,
+                     [window, &settings] { sortie::app::saveWindowGeometry(*window, settings); });
+    window->show();
+    return QGuiApplication::exec();
+}
