@@ -12,7 +12,7 @@ Output, zlib-compressed in Qt's qCompress framing (4-byte big-endian length, the
                  (longitude, latitude) in 1e-5 degrees, the first absolute, the rest deltas
 All integers little-endian. The first ring of a polygon is its outline, the others its holes.
 Longitudes are unwrapped so that no ring jumps across the antimeridian (a ring may reach past
-+-180); a ring around a pole (Antarctica) is closed along the map's edge at +-89.999 degrees,
++-180, but its middle lies within it, and its holes lie inside it); a ring around a pole (Antarctica) is closed along the map's edge at +-89.999 degrees,
 and the spherical hole that marks the pole itself is dropped.
 """
 import json
@@ -80,7 +80,16 @@ def main():
                 points, travelled = unwrap(ring_points(ring, arcs))
                 if index > 0 and travelled != 0:
                     continue  # a hole around the pole: on a flat map it is the map's bottom edge
-                rings.append(close_around_pole(points, travelled))
+                points = close_around_pole(points, travelled)
+                # The outline's middle goes within -180..180; each hole goes into its outline.
+                lons = [lon for lon, _ in points]
+                centre = (min(lons) + max(lons)) / 2
+                anchor = 0.0 if index == 0 else outline_centre
+                turns = round((centre - anchor) / 360) if index > 0 else (centre + 180) // 360
+                points = [(lon - 360 * turns, lat) for lon, lat in points]
+                if index == 0:
+                    outline_centre = centre - 360 * turns
+                rings.append(points)
             polygons.append(rings)
 
     body = bytearray(b"SLAND001")

@@ -146,15 +146,17 @@ QList<TileKey> MbTilesTileSource::cancelPending()
 void MbTilesTileSource::serveQueue()
 {
     m_serveScheduled = false;
+    if (!isValid()) {
+        const QList<TileKey> failed = cancelPending();
+        for (const TileKey &key : failed)
+            emit tileFailed(key, errorString());
+        return;
+    }
     QSqlDatabase db = QSqlDatabase::database(m_connection, false);
     QSqlQuery query(db);
     query.prepare(QStringLiteral("SELECT tile_data FROM tiles WHERE zoom_level = ? AND tile_column = ? AND tile_row = ?"));
     for (int served = 0; served < kTilesPerBatch && !m_queue.isEmpty(); ++served) {
         const TileKey key = m_queue.takeLast();
-        if (!isValid()) {
-            emit tileFailed(key, errorString());
-            continue;
-        }
         query.addBindValue(key.z);
         query.addBindValue(key.x);
         query.addBindValue((1 << key.z) - 1 - key.y);

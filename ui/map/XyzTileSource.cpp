@@ -41,7 +41,11 @@ QString XyzTileSource::validateTemplate(const QString &urlTemplate)
 {
     if (urlTemplate.trimmed().isEmpty())
         return tr("No tile URL template is set.");
-    const QUrl url(urlTemplate, QUrl::TolerantMode);
+    QString sample = urlTemplate;
+    for (const char *field : {"{z}", "{x}", "{y}", "{-y}"})
+        sample.replace(QLatin1String(field), QLatin1String("0"));
+    sample.replace(QLatin1String("{s}"), QLatin1String("a"));
+    const QUrl url(sample, QUrl::StrictMode);
     if (!url.isValid())
         return tr("The tile URL template is not a valid URL: %1").arg(url.errorString());
     const QString scheme = url.scheme().toLower();
@@ -59,8 +63,7 @@ void XyzTileSource::setUrlTemplate(const QString &urlTemplate)
         return;
     m_template = urlTemplate;
     const QString problem = validateTemplate(m_template);
-    if (problem.isEmpty() && name() == tr("Web tiles"))
-        setName(QUrl(m_template, QUrl::TolerantMode).host());
+    updateName();
     m_nextProbe = QDeadlineTimer(0);
     m_probing = false;
     setReachable(problem.isEmpty(), problem);
@@ -68,11 +71,21 @@ void XyzTileSource::setUrlTemplate(const QString &urlTemplate)
     emit urlTemplateChanged();
 }
 
+void XyzTileSource::updateName()
+{
+    // Named after the server unless someone named it.
+    if (name() != m_autoName && name() != tr("Web tiles"))
+        return;
+    m_autoName = tileUrl({0, 0, 0}).host();
+    setName(m_autoName.isEmpty() ? tr("Web tiles") : m_autoName);
+}
+
 void XyzTileSource::setSubdomains(const QString &subdomains)
 {
     if (subdomains == m_subdomains)
         return;
     m_subdomains = subdomains;
+    updateName();
     invalidateAll();
     emit urlTemplateChanged();
 }
@@ -204,12 +217,13 @@ void XyzTileSource::finished(QNetworkReply *reply)
 
 void XyzTileSource::networkFailed(const TileKey &key, const QString &reason)
 {
-    qCInfo(lcTiles) << "tile server unreachable:" << reason;
+    if (isReachable())
+        qCInfo(lcTiles) << "tile server unreachable:" << reason;
     m_probing = false;
     m_nextProbe = QDeadlineTimer(m_retryMs);
     setReachable(false, tr("Tile server unreachable (%1).").arg(reason));
     // What the disk cache holds is still good for an operator without a network.
-    m_queue.append(key);
+    start(key, Mode::CacheOnly);
 }
 
 void XyzTileSource::invalidateAll()

@@ -64,11 +64,13 @@ private:
     void finished(QNetworkReply *reply);
     void networkFailed(const TileKey &key, const QString &reason);
     void invalidateAll();
+    void updateName();
 
     QNetworkAccessManager *m_network;
     QNetworkDiskCache *m_diskCache;
     QString m_template;
-    QString m_subdomains;
+    QString m_subdomains = QStringLiteral("abc");
+    QString m_autoName;
     QString m_cacheDirectory;
     int m_maxConcurrent = 6;
     int m_retryMs = 15000;
