@@ -115,7 +115,6 @@ RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
             visible.push_back(int(i));
     }
     frame.visibleWaypoints = int(visible.size());
-    const bool dense = frame.visibleWaypoints > input.denseLimit;
     LabelGrid grid(viewport.size(), input.markerRadius * 1.6);
     std::vector<Marker> onTop;
     // Selected and current markers claim their label space first.
@@ -135,7 +134,7 @@ RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
         if (isSelected(size_t(row)) || row == input.current)
             continue;
         const Marker marker{screen[size_t(row)], row, 0};
-        if (!dense && grid.claim(marker.position))
+        if (grid.claim(marker.position))
             labelled.push_back({marker.position, row, Labelled});
         else
             frame.markers.push_back(marker);

@@ -35,7 +35,6 @@ struct RouteFrame
         std::vector<int> draggedRows;                 // drawn displaced by dragOffset
         QPointF dragOffset;                           // normalised
         double markerRadius = 9.0;
-        int denseLimit = 2000; // more markers than this on screen: dots only
     };
     static RouteFrame build(const Input &input, const MapViewport &viewport);
 };
