@@ -26,6 +26,8 @@ std::variant<ServerAddress, QString> ServerAddress::parse(const QString &text)
     const QString trimmed = text.trimmed();
     if (trimmed.isEmpty())
         return QStringLiteral("the server address is empty (expected host:port)");
+    if (trimmed.contains(QLatin1String("://")))
+        return QStringLiteral("\"%1\" is a URL: give the server as host:port, e.g. localhost:3334").arg(trimmed);
     ServerAddress address;
     QString portText;
     if (trimmed.startsWith(QLatin1Char('['))) {

@@ -188,7 +188,37 @@ private slots:
         input.dragOffset = QPointF(10.0 / view.scale(), 0);
         frame = RouteFrame::build(input, view);
         const QPointF expected = view.toScreen(points[500]) + QPointF(10, 0);
-        QVERIFY(std::abs(frame.markers.back().position.x() - expected.x()) < 1e-6);
+        QCOMPARE(int(frame.movingMarkers.size()), 1);
+        QVERIFY(std::abs(frame.movingMarkers.front().position.x() - expected.x()) < 1e-6);
+        QCOMPARE(int(frame.movingLegs.size()), 2); // 499-500 and 500-501 move with it
+        for (const RouteFrame::Marker &marker : frame.markers)
+            QVERIFY(marker.row != 500);
+        // A further move rebuilds the moving part only.
+        const std::vector<QPolygonF> stillLegs = frame.legs;
+        input.dragOffset = QPointF(25.0 / view.scale(), 5.0 / view.scale());
+        frame.updateMoving(input, view);
+        QVERIFY((frame.movingMarkers.front().position - (view.toScreen(points[500]) + QPointF(25, 5))).manhattanLength() < 1e-6);
+        QCOMPARE(frame.legs, stillLegs);
+        QCOMPARE(frame.movingLegs.front().last(), frame.movingMarkers.front().position);
+    }
+
+    void routeFrameSimplifiesStraightRuns()
+    {
+        // 500 waypoints on a straight line, then 500 back on a parallel one: legs of 2 + 2 points.
+        std::vector<QPointF> points;
+        for (int i = 0; i < 500; ++i)
+            points.push_back(WebMercator::project(56.95, 24.0 + i * 1e-4));
+        for (int i = 499; i >= 0; --i)
+            points.push_back(WebMercator::project(56.951, 24.0 + i * 1e-4));
+        RouteFrame::Input input;
+        input.points = &points;
+        const MapViewport view(WebMercator::project(56.9505, 24.025), 12, QSizeF(1000, 600));
+        const RouteFrame frame = RouteFrame::build(input, view);
+        QCOMPARE(int(frame.legs.size()), 1);
+        QCOMPARE(frame.legs.front().size(), 4);
+        QCOMPARE(frame.legs.front().first(), view.toScreen(points.front()));
+        QCOMPARE(frame.legs.front().last(), view.toScreen(points.back()));
+        QCOMPARE(frame.visibleWaypoints, 1000); // every waypoint keeps its marker
     }
 
     void routeFrameAcrossTheAntimeridian()

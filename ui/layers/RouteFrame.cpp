@@ -43,6 +43,58 @@ private:
     std::vector<bool> m_used;
 };
 
+// Douglas-Peucker: keeps the points a polyline needs to stay within `tolerance` pixels of
+// itself. A survey line of a hundred waypoints is drawn as one segment, which looks the same
+// and costs far less.
+QPolygonF simplify(const QPolygonF &in, double tolerance)
+{
+    const qsizetype n = in.size();
+    if (n < 3)
+        return in;
+    std::vector<bool> keep(size_t(n), false);
+    keep.front() = keep.back() = true;
+    std::vector<std::pair<qsizetype, qsizetype>> stack{{0, n - 1}};
+    const double tolerance2 = tolerance * tolerance;
+    while (!stack.empty()) {
+        const auto [first, last] = stack.back();
+        stack.pop_back();
+        const QPointF a = in[first];
+        const QPointF ab = in[last] - a;
+        const double length2 = QPointF::dotProduct(ab, ab);
+        double worst = -1;
+        qsizetype worstIndex = -1;
+        for (qsizetype i = first + 1; i < last; ++i) {
+            const QPointF ap = in[i] - a;
+            double d2;
+            const double t = length2 > 0 ? QPointF::dotProduct(ap, ab) / length2 : 0.0;
+            if (t <= 0) {
+                d2 = QPointF::dotProduct(ap, ap);
+            } else if (t >= 1) {
+                const QPointF bp = in[i] - in[last];
+                d2 = QPointF::dotProduct(bp, bp);
+            } else {
+                const double cross = ab.x() * ap.y() - ab.y() * ap.x();
+                d2 = cross * cross / length2;
+            }
+            if (d2 > worst) {
+                worst = d2;
+                worstIndex = i;
+            }
+        }
+        if (worst > tolerance2) {
+            keep[size_t(worstIndex)] = true;
+            stack.emplace_back(first, worstIndex);
+            stack.emplace_back(worstIndex, last);
+        }
+    }
+    QPolygonF out;
+    for (qsizetype i = 0; i < n; ++i) {
+        if (keep[size_t(i)])
+            out.append(in[i]);
+    }
+    return out;
+}
+
 } // namespace
 
 RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
@@ -52,11 +104,11 @@ RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
         return frame;
     const std::vector<QPointF> &points = *input.points;
     const size_t n = points.size();
-    const std::unordered_set<int> dragged(input.draggedRows.begin(), input.draggedRows.end());
-    auto normalisedAt = [&](size_t i) {
-        const QPointF p = points[i];
-        return dragged.count(int(i)) ? p + input.dragOffset : p;
-    };
+    std::vector<bool> moving(n, false);
+    for (int row : input.draggedRows) {
+        if (row >= 0 && size_t(row) < n)
+            moving[size_t(row)] = true;
+    }
     auto isSelected = [&](size_t i) { return input.selected && i < input.selected->size() && (*input.selected)[i]; };
 
     // Screen positions, each leg taking the copy of the world nearest its previous point.
@@ -65,18 +117,17 @@ RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
     QPointF previous;
     bool havePrevious = false;
     for (size_t i = 0; i < n; ++i) {
-        const QPointF p = normalisedAt(i);
+        const QPointF p = points[i];
         if (std::isnan(p.x())) {
             havePrevious = false;
             continue;
         }
-        const QPointF unwrapped = havePrevious ? nearestCopy(previous, p) : p;
-        screen[i] = havePrevious ? viewport.toScreenUnwrapped(unwrapped) : viewport.toScreen(p);
-        if (!havePrevious) {
-            // Re-anchor the chain on the copy toScreen picked.
-            previous = viewport.toNormalised(screen[i]);
+        if (havePrevious) {
+            previous = nearestCopy(previous, p);
+            screen[i] = viewport.toScreenUnwrapped(previous);
         } else {
-            previous = unwrapped;
+            screen[i] = viewport.toScreen(p);
+            previous = viewport.toNormalised(screen[i]); // the copy toScreen picked
         }
         havePrevious = true;
         valid[i] = true;
@@ -88,11 +139,11 @@ RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
     QPolygonF run;
     auto flush = [&] {
         if (run.size() >= 2)
-            frame.legs.push_back(run);
+            frame.legs.push_back(simplify(run, 0.3));
         run.clear();
     };
     for (size_t i = 1; i < n; ++i) {
-        if (!valid[i - 1] || !valid[i]) {
+        if (!valid[i - 1] || !valid[i] || moving[i - 1] || moving[i]) {
             flush();
             continue;
         }
@@ -111,10 +162,9 @@ RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
 
     std::vector<int> visible;
     for (size_t i = 0; i < n; ++i) {
-        if (valid[i] && view.contains(screen[i]))
+        if (valid[i] && !moving[i] && view.contains(screen[i]))
             visible.push_back(int(i));
     }
-    frame.visibleWaypoints = int(visible.size());
     LabelGrid grid(viewport.size(), input.markerRadius * 1.6);
     std::vector<Marker> onTop;
     // Selected and current markers claim their label space first.
@@ -143,7 +193,45 @@ RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
     frame.markers.insert(frame.markers.end(), onTop.begin(), onTop.end());
     for (const Marker &marker : frame.markers)
         frame.labelledWaypoints += (marker.flags & Labelled) ? 1 : 0;
+    frame.visibleWaypoints = int(visible.size());
+    frame.updateMoving(input, viewport);
     return frame;
+}
+
+void RouteFrame::updateMoving(const Input &input, const MapViewport &viewport)
+{
+    const int movingVisibleBefore = int(movingMarkers.size());
+    movingLegs.clear();
+    movingMarkers.clear();
+    if (!input.points || input.draggedRows.empty()) {
+        visibleWaypoints -= movingVisibleBefore;
+        return;
+    }
+    const std::vector<QPointF> &points = *input.points;
+    const int n = int(points.size());
+    const std::unordered_set<int> moving(input.draggedRows.begin(), input.draggedRows.end());
+    auto at = [&](int row) { return moving.count(row) ? points[size_t(row)] + input.dragOffset : points[size_t(row)]; };
+    auto isSelected = [&](int i) { return input.selected && size_t(i) < input.selected->size() && (*input.selected)[size_t(i)]; };
+    // Each leg with a moving end, once.
+    for (int row : input.draggedRows) {
+        for (int first : {row - 1, row}) {
+            const int second = first + 1;
+            if (first < 0 || second >= n || (first == row - 1 && moving.count(first)))
+                continue;
+            if (std::isnan(points[size_t(first)].x()) || std::isnan(points[size_t(second)].x()))
+                continue;
+            const QPointF a = viewport.toScreen(at(first));
+            const QPointF b = viewport.toScreenUnwrapped(nearestCopy(viewport.toNormalised(a), at(second)));
+            movingLegs.push_back(QPolygonF{a, b});
+        }
+    }
+    for (int row : input.draggedRows) {
+        if (row < 0 || row >= n || std::isnan(points[size_t(row)].x()))
+            continue;
+        const quint8 flags = quint8(Labelled | (isSelected(row) ? Selected : 0) | (row == input.current ? Current : 0));
+        movingMarkers.push_back({viewport.toScreen(at(row)), row, flags});
+    }
+    visibleWaypoints += int(movingMarkers.size()) - movingVisibleBefore;
 }
 
 } // namespace sortie::ui

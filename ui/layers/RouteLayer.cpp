@@ -102,8 +102,15 @@ void RouteLayer::reloadSelection()
         }
         m_current = m_selection->currentIndex().isValid() ? m_selection->currentIndex().row() : -1;
     }
+    m_frameStale = true;
     polish();
     update();
+}
+
+void RouteLayer::onViewportChanged()
+{
+    m_frameStale = true;
+    MapLayer::onViewportChanged();
 }
 
 void RouteLayer::updatePolish()
@@ -117,7 +124,13 @@ void RouteLayer::updatePolish()
         input.draggedRows = m_dragRows;
         input.dragOffset = m_dragOffset;
     }
-    m_frame = RouteFrame::build(input, viewport());
+    if (m_frameStale || !m_dragging) {
+        m_frame = RouteFrame::build(input, viewport());
+        m_frame.revision = ++m_revision;
+        m_frameStale = false;
+    } else {
+        m_frame.updateMoving(input, viewport());
+    }
     emit frameChanged();
 }
 
@@ -293,6 +306,7 @@ void RouteLayer::mouseMoveEvent(QMouseEvent *event)
             m_dragRows.push_back(m_pressRow);
         }
         setDragging(true);
+        m_frameStale = true; // the dragged rows leave the still part
     }
     m_dragOffset = normalisedAt(event->position()) - normalisedAt(m_pressPos);
     polish();

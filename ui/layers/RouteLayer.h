@@ -77,6 +77,7 @@ signals:
     void waypointsMoved(const QVariantList &rows, const QVariantList &coordinates);
 
 protected:
+    void onViewportChanged() override;
     void updatePolish() override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
@@ -98,6 +99,8 @@ private:
     RoutePainter::Style m_style;
     RoutePainter m_painter;
     RouteFrame m_frame;
+    quint64 m_revision = 0;
+    bool m_frameStale = true; // more than the drag offset changed since the last build
 
     int m_pressRow = -1;
     int m_pressLeg = -1;

@@ -240,19 +240,51 @@ void MapView::paint(QPainter *painter)
 {
     const MapPalette palette = m_tiles.baseMap().palette();
     painter->fillRect(QRectF(0, 0, width(), height()), palette.sea);
+    // While the zoom stays (panning), tiles are scaled once and then only blitted.
+    const bool steadyZoom = m_viewport.zoom() == m_scaledZoom;
+    if (!steadyZoom) {
+        m_scaledTiles.clear();
+        m_scaledZoom = m_viewport.zoom();
+    }
     for (const PlacedTile &tile : std::as_const(m_placed)) {
         const TileManager::Image image = m_tiles.best(tile.key);
         if (!image.image)
             continue;
-        const QRectF target(tile.target.topLeft(), tile.target.size() + QSize(1, 1));
-        const bool exact = std::abs(target.width() - image.sourceRect.width()) < 0.5;
-        painter->setRenderHint(QPainter::SmoothPixmapTransform, !exact);
-        painter->drawImage(target, *image.image, image.sourceRect);
+        const QRect target(tile.target.topLeft(), tile.target.size() + QSize(1, 1));
+        const bool exact = std::abs(target.width() - image.sourceRect.width()) < 0.5
+                           && std::abs(target.height() - image.sourceRect.height()) < 0.5;
+        if (exact) {
+            painter->drawImage(target.topLeft(), *image.image, image.sourceRect);
+        } else if (steadyZoom) {
+            painter->drawImage(target.topLeft(), scaledTile(image, target.size()));
+        } else {
+            painter->setRenderHint(QPainter::SmoothPixmapTransform, true);
+            painter->drawImage(QRectF(target), *image.image, image.sourceRect);
+        }
     }
     if (m_graticule) {
         painter->setRenderHint(QPainter::Antialiasing, false);
         Graticule::paint(*painter, m_viewport, palette);
     }
+}
+
+const QImage &MapView::scaledTile(const TileManager::Image &image, QSize size)
+{
+    const QString key = QStringLiteral("%1/%2,%3,%4/%5x%6")
+                            .arg(image.image->cacheKey())
+                            .arg(image.sourceRect.x())
+                            .arg(image.sourceRect.y())
+                            .arg(image.sourceRect.width())
+                            .arg(size.width())
+                            .arg(size.height());
+    auto it = m_scaledTiles.find(key);
+    if (it == m_scaledTiles.end()) {
+        if (m_scaledTiles.size() > kMaxTilesOnScreen)
+            m_scaledTiles.clear();
+        const QImage source = image.image->copy(image.sourceRect.toAlignedRect());
+        it = m_scaledTiles.insert(key, source.scaled(size, Qt::IgnoreAspectRatio, Qt::SmoothTransformation));
+    }
+    return it.value();
 }
 
 void MapView::setGesture(Gesture gesture)

@@ -118,12 +118,15 @@ private:
         QRect target;
     };
     void changeViewport(const MapViewport &viewport);
+    const QImage &scaledTile(const TileManager::Image &image, QSize size);
     void setGesture(Gesture gesture);
     void setSelectionRect(const QRectF &rect);
 
     MapViewport m_viewport;
     TileManager m_tiles;
     QList<PlacedTile> m_placed; // laid out in updatePolish, drawn in paint
+    QHash<QString, QImage> m_scaledTiles; // paint's own: tiles resampled for the current zoom
+    double m_scaledZoom = -1;
     double m_minZoom = 1.0;
     double m_maxZoom = 20.0;
     bool m_graticule = true;

@@ -51,7 +51,7 @@ QtObject {
         },
         Shortcut {
             property string help: qsTr("Quit")
-            sequence: StandardKey.Quit
+            sequence: "Ctrl+Q"
             onActivated: Qt.quit()
         }
     ]
