@@ -1,6 +1,7 @@
 #include "VehicleLayer.h"
 
 #include "ModelCoordinates.h"
+#include "Polyline.h"
 #include "WebMercator.h"
 
 #include <QAbstractItemModel>
@@ -252,12 +253,12 @@ void VehicleLayer::updatePolish()
             if (keep) {
                 run.append(points[i]);
             } else if (!run.isEmpty()) {
-                drawn.trails.push_back(run);
+                drawn.trails.push_back(simplifyPolyline(run, 0.4));
                 run.clear();
             }
         }
         if (run.size() > 1)
-            drawn.trails.push_back(run);
+            drawn.trails.push_back(simplifyPolyline(run, 0.4));
     }
 }
 
