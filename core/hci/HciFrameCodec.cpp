@@ -59,6 +59,11 @@ std::string encodeRawHciFrame(int32_t instanceId, int32_t type, std::string_view
     return out;
 }
 
+HciFrameDecoder::HciFrameDecoder() = default;
+HciFrameDecoder::~HciFrameDecoder() = default;
+HciFrameDecoder::HciFrameDecoder(HciFrameDecoder &&) noexcept = default;
+HciFrameDecoder &HciFrameDecoder::operator=(HciFrameDecoder &&) noexcept = default;
+
 void HciFrameDecoder::feed(std::string_view bytes)
 {
     // Drop consumed bytes before growing: amortised O(1) per byte, and the buffer never holds
@@ -76,6 +81,28 @@ void HciFrameDecoder::reset()
     m_pos = 0;
     m_offset = 0;
     m_resyncing = false;
+}
+
+void HciFrameDecoder::recycle(std::unique_ptr<google::protobuf::Message> message)
+{
+    if (!message)
+        return;
+    if (m_spares.size() == kSpares)
+        m_spares.erase(m_spares.begin());
+    m_spares.push_back(std::move(message));
+}
+
+std::unique_ptr<google::protobuf::Message> HciFrameDecoder::take(const google::protobuf::Message &prototype)
+{
+    const auto *descriptor = prototype.GetDescriptor();
+    for (auto it = m_spares.rbegin(); it != m_spares.rend(); ++it) {
+        if ((*it)->GetDescriptor() == descriptor) {
+            auto message = std::move(*it);
+            m_spares.erase(std::next(it).base());
+            return message; // ParsePartialFromArray clears it first
+        }
+    }
+    return std::unique_ptr<google::protobuf::Message>(prototype.New());
 }
 
 HciDroppedFrame HciFrameDecoder::drop(const HciFrameHeader &header, HciDropReason reason, std::string detail)
@@ -158,7 +185,7 @@ std::optional<HciFrameDecoder::Result> HciFrameDecoder::next()
     } else if (!(prototype = HciMessageTypes::prototype(header.type))) {
         result = drop(header, HciDropReason::UnknownType, "type " + std::to_string(header.type) + " is not mapped");
     } else {
-        std::unique_ptr<google::protobuf::Message> message(prototype->New());
+        std::unique_ptr<google::protobuf::Message> message = take(*prototype);
         if (!message->ParsePartialFromArray(payload, header.length)) {
             result = drop(header, HciDropReason::InvalidPayload,
                           std::string(message->GetDescriptor()->name()) + " payload does not parse");

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 #include <variant>
+#include <vector>
 
 namespace sortie::hci {
 
@@ -29,11 +30,21 @@ class HciFrameDecoder
 public:
     using Result = std::variant<HciFrame, HciDroppedFrame>;
 
+    HciFrameDecoder();
+    ~HciFrameDecoder(); // out of line: the spare messages are of a type this header only declares
+    HciFrameDecoder(HciFrameDecoder &&) noexcept;
+    HciFrameDecoder &operator=(HciFrameDecoder &&) noexcept;
+
     void feed(std::string_view bytes);
     // The next frame, decoded or dropped, or nullopt when more bytes are needed.
     std::optional<Result> next();
+    // Hands a decoded message back for reuse: the next frame of the same type is parsed into it, which
+    // keeps its sub-messages and string capacity (telemetry arrives at thousands of frames a second).
+    void recycle(std::unique_ptr<google::protobuf::Message> message);
 
     size_t buffered() const { return m_buffer.size() - m_pos; }
+    // The bytes fed but not yet consumed (an incomplete frame), e.g. to report a truncated capture.
+    std::string_view pending() const { return std::string_view(m_buffer).substr(m_pos); }
     uint64_t streamOffset() const { return m_offset; }
     uint64_t framesDecoded() const { return m_decoded; }
     uint64_t framesDropped() const { return m_dropped; }
@@ -43,6 +54,8 @@ public:
 
 private:
     bool resynchronise();
+    std::unique_ptr<google::protobuf::Message> take(const google::protobuf::Message &prototype);
+
     HciDroppedFrame drop(const HciFrameHeader &header, HciDropReason reason, std::string detail);
 
     std::string m_buffer;
@@ -52,6 +65,9 @@ private:
     uint64_t m_decoded = 0;
     uint64_t m_dropped = 0;
     uint64_t m_discarded = 0;
+    // A few spare messages, at most kSpares, most recently recycled last.
+    static constexpr size_t kSpares = 4;
+    std::vector<std::unique_ptr<google::protobuf::Message>> m_spares;
 };
 
 } // namespace sortie::hci

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <string>
 #include <unordered_map>
 
 namespace sortie::hci {
@@ -251,6 +252,29 @@ std::string_view HciMessageTypes::name(int32_t number)
 {
     const auto *p = prototype(number);
     return p ? std::string_view(p->GetDescriptor()->name()) : std::string_view();
+}
+
+std::optional<int32_t> HciMessageTypes::numberOf(std::string_view name)
+{
+    static const std::unordered_map<std::string_view, int32_t> byName = [] {
+        std::unordered_map<std::string_view, int32_t> map;
+        for (const Entry &e : kTable)
+            map.emplace(e.prototype->GetDescriptor()->name(), e.number);
+        return map;
+    }();
+    const auto it = byName.find(name);
+    return it != byName.end() ? std::optional(it->second) : std::nullopt;
+}
+
+std::optional<int32_t> HciMessageTypes::responseFor(int32_t requestNumber)
+{
+    constexpr std::string_view suffix = "Request";
+    const std::string_view request = name(requestNumber);
+    if (request.size() <= suffix.size() || request.substr(request.size() - suffix.size()) != suffix)
+        return std::nullopt;
+    std::string response(request.substr(0, request.size() - suffix.size()));
+    response += "Response";
+    return numberOf(response);
 }
 
 size_t HciMessageTypes::count()

@@ -1,0 +1,221 @@
+#include "PlanCommands.h"
+
+#include "AreaScanPlanner.h"
+#include "MissionFiles.h"
+#include "ReportJson.h"
+#include "RouteStatistics.h"
+#include "RouteValidator.h"
+#include "ScanPlanCache.h"
+
+#include <QCommandLineParser>
+#include <QFileInfo>
+
+namespace sortie::plan {
+
+using namespace sortie::mission;
+using namespace sortie::mission::formats;
+
+namespace {
+bool parse(QCommandLineParser &p, const QStringList &args, int positional, Streams io)
+{
+    p.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    if (!p.parse(QStringList{QStringLiteral("sortie-plan")} + args)) {
+        io.err << "sortie-plan: " << p.errorText() << "\n";
+        return false;
+    }
+    if (p.positionalArguments().size() != positional) {
+        io.err << "sortie-plan: expected " << positional << " file argument(s), got " << p.positionalArguments().size() << "\n";
+        return false;
+    }
+    return true;
+}
+
+void printNotices(const QStringList &notices, Streams io)
+{
+    for (const QString &n : notices)
+        io.err << "note: " << n << "\n";
+}
+
+QString duration(double seconds)
+{
+    const qint64 s = qRound64(seconds);
+    return QStringLiteral("%1:%2:%3").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
+}
+
+int saveWithGate(const Mission &mission, const QString &path, int route, bool force, Streams io)
+{
+    const Result<QStringList> saved = saveMission(mission, path, {route, force ? ValidationOverride::AcceptErrors : ValidationOverride::None});
+    if (!saved) {
+        io.err << "sortie-plan: " << saved.error().toString() << "\n";
+        return saved.error().message.contains(QStringLiteral("validation error")) ? ValidationErrors : Failure;
+    }
+    printNotices(*saved, io);
+    return Ok;
+}
+}
+
+int runConvert(const QStringList &args, Streams io)
+{
+    QCommandLineParser p;
+    p.addOption({QStringLiteral("route"), QStringLiteral("Route to write (1-based) for single-route formats."), QStringLiteral("N"), QStringLiteral("1")});
+    p.addOption({QStringLiteral("force"), QStringLiteral("Write even with validation errors.")});
+    if (!parse(p, args, 2, io))
+        return Failure;
+    const QString in = p.positionalArguments().at(0), out = p.positionalArguments().at(1);
+    const Result<LoadedMission> loaded = loadMission(in);
+    if (!loaded) {
+        io.err << "sortie-plan: " << loaded.error().toString() << "\n";
+        return Failure;
+    }
+    printNotices(loaded->notices, io);
+    bool ok = false;
+    const int route = p.value(QStringLiteral("route")).toInt(&ok) - 1;
+    if (!ok) {
+        io.err << "sortie-plan: --route needs a number\n";
+        return Failure;
+    }
+    const int rc = saveWithGate(loaded->mission, out, route, p.isSet(QStringLiteral("force")), io);
+    if (rc == Ok)
+        io.out << "wrote " << out << "\n";
+    return rc;
+}
+
+int runStats(const QStringList &args, Streams io)
+{
+    QCommandLineParser p;
+    p.addOption({QStringLiteral("json"), QStringLiteral("Machine-readable output.")});
+    if (!parse(p, args, 1, io))
+        return Failure;
+    const QString file = p.positionalArguments().at(0);
+    const Result<LoadedMission> loaded = loadMission(file);
+    if (!loaded) {
+        io.err << "sortie-plan: " << loaded.error().toString() << "\n";
+        return Failure;
+    }
+    ScanPlanCache cache;
+    bool errors = false;
+    Json routes = Json::array();
+    for (const Route &r : loaded->mission.routes) {
+        const RouteStatistics st = computeStatistics(r, &cache);
+        const ValidationReport report = validateRoute(r, &cache);
+        errors |= report.hasErrors();
+        if (p.isSet(QStringLiteral("json"))) {
+            routes.push_back({{"name", r.settings.name.toStdString()}, {"statistics", statisticsJson(st)}, {"validation", validationJson(report)}});
+            continue;
+        }
+        io.out << "Route \"" << r.settings.name << "\"\n"
+               << "  waypoints " << st.waypointCount << ", area scans " << st.areaScanCount << "\n"
+               << "  length " << QString::number(st.lengthMeters, 'f', 1) << " m (WGS-84 geodesic)\n"
+               << "  flight time " << duration(st.flightTimeSeconds) << " (estimate)\n"
+               << "  climb " << QString::number(st.climbMeters, 'f', 1) << " m, descent " << QString::number(st.descentMeters, 'f', 1) << " m\n"
+               << "  photos " << st.photoCount << "\n";
+        if (!st.boundingBox.empty)
+            io.out << "  bounds " << st.boundingBox.south << ", " << st.boundingBox.west << " .. " << st.boundingBox.north << ", "
+                   << st.boundingBox.east << "\n";
+        io.out << "  " << report.errorCount() << " error(s), " << report.warningCount() << " warning(s)\n";
+        for (const ValidationIssue &i : report.issues)
+            io.out << "    " << (i.severity == Severity::Error ? "error" : "warning") << " [" << i.rule << "] " << i.message << "\n";
+    }
+    if (p.isSet(QStringLiteral("json"))) {
+        Json notices = Json::array();
+        for (const QString &n : loaded->notices)
+            notices.push_back(n.toStdString());
+        const Json doc{{"file", file.toStdString()}, {"routes", std::move(routes)}, {"notices", std::move(notices)}};
+        io.out << QString::fromStdString(doc.dump(2)) << "\n";
+    } else {
+        printNotices(loaded->notices, io);
+    }
+    return errors ? ValidationErrors : Ok;
+}
+
+int runScan(const QStringList &args, Streams io)
+{
+    QCommandLineParser p;
+    const QString number = QStringLiteral("number");
+    p.addOption({QStringLiteral("altitude"), QStringLiteral("Flight altitude, m."), number});
+    p.addOption({QStringLiteral("gsd"), QStringLiteral("Ground sample distance, cm/px (instead of --altitude)."), number});
+    p.addOption({QStringLiteral("front"), QStringLiteral("Front overlap, %."), number, QStringLiteral("75")});
+    p.addOption({QStringLiteral("side"), QStringLiteral("Side overlap, %."), number, QStringLiteral("65")});
+    p.addOption({QStringLiteral("angle"), QStringLiteral("Transect bearing, degrees."), number, QStringLiteral("0")});
+    p.addOption({QStringLiteral("turnaround"), QStringLiteral("Turnaround distance, m."), number, QStringLiteral("10")});
+    p.addOption({QStringLiteral("speed"), QStringLiteral("Speed, m/s."), number, QStringLiteral("8")});
+    p.addOption({QStringLiteral("camera"), QStringLiteral("NAME,SENSOR_W_MM,SENSOR_H_MM,FOCAL_MM,IMAGE_W_PX,IMAGE_H_PX"), QStringLiteral("spec")});
+    p.addOption({QStringLiteral("amsl"), QStringLiteral("The altitude is above mean sea level (default: above ground).")});
+    p.addOption({QStringLiteral("json"), QStringLiteral("Machine-readable summary.")});
+    p.addOption({QStringLiteral("force"), QStringLiteral("Write even with validation errors.")});
+    if (!parse(p, args, 2, io))
+        return Failure;
+    const Result<ImportedPolygon> polygon = loadPolygon(p.positionalArguments().at(0));
+    if (!polygon) {
+        io.err << "sortie-plan: " << polygon.error().toString() << "\n";
+        return Failure;
+    }
+    AreaScan scan;
+    scan.polygon = polygon->polygon;
+    AreaScanParameters &sp = scan.parameters;
+    auto num = [&](const char *name, double *target) {
+        const QString text = p.value(QLatin1String(name));  // the default when not given
+        if (text.isEmpty())
+            return true;
+        bool ok = false;
+        *target = text.toDouble(&ok);
+        if (!ok)
+            io.err << "sortie-plan: --" << name << " needs a number\n";
+        return ok;
+    };
+    if (p.isSet(QStringLiteral("gsd"))) {
+        sp.heightMode = ScanHeightMode::GroundSampleDistance;
+        if (!num("gsd", &sp.groundSampleDistanceCm)) return Failure;
+    }
+    if (!num("altitude", &sp.altitude) || !num("front", &sp.frontOverlapPercent) || !num("side", &sp.sideOverlapPercent)
+        || !num("angle", &sp.directionDeg) || !num("turnaround", &sp.turnaroundMeters) || !num("speed", &sp.speed))
+        return Failure;
+    if (p.isSet(QStringLiteral("camera"))) {
+        const QStringList c = p.value(QStringLiteral("camera")).split(QLatin1Char(','));
+        bool ok = c.size() == 6;
+        if (ok) {
+            bool a, b, d, e, f;
+            sp.camera = {c[0], c[1].toDouble(&a), c[2].toDouble(&b), c[3].toDouble(&d), c[4].toInt(&e), c[5].toInt(&f)};
+            ok = a && b && d && e && f;
+        }
+        if (!ok) {
+            io.err << "sortie-plan: --camera needs NAME,SENSOR_W_MM,SENSOR_H_MM,FOCAL_MM,IMAGE_W_PX,IMAGE_H_PX\n";
+            return Failure;
+        }
+    }
+    sp.altitudeType = p.isSet(QStringLiteral("amsl")) ? AltitudeType::Amsl : AltitudeType::Agl;
+    syncDerivedFields(sp);
+    const AreaScanOutcome outcome = planAreaScan(scan);
+    if (!outcome.ok()) {
+        io.err << "sortie-plan: " << p.positionalArguments().at(0) << ": " << outcome.message << "\n";
+        return Failure;
+    }
+    Mission mission;
+    mission.name = QFileInfo(p.positionalArguments().at(1)).completeBaseName();
+    Route route;
+    route.settings.name = polygon->name.isEmpty() ? mission.name : polygon->name;
+    route.settings.initialSpeed = sp.speed;
+    route.settings.maxAltitude = std::max(route.settings.maxAltitude, outcome.plan->altitude);
+    route.settings.safeAltitude = std::min(route.settings.safeAltitude, outcome.plan->altitude);
+    route.segments.push_back(scan);
+    mission.routes.push_back(route);
+    printNotices(polygon->notices, io);
+    const int rc = saveWithGate(mission, p.positionalArguments().at(1), 0, p.isSet(QStringLiteral("force")), io);
+    if (rc != Ok)
+        return rc;
+    const AreaScanPlan &plan = *outcome.plan;
+    if (p.isSet(QStringLiteral("json"))) {
+        io.out << QString::fromStdString(scanPlanJson(plan).dump(2)) << "\n";
+    } else {
+        io.out << "area " << QString::number(plan.areaSquareMeters / 1e4, 'f', 2) << " ha, " << plan.transects.size() << " transects ("
+               << plan.cells << " cell(s)), spacing " << QString::number(plan.transectSpacing, 'f', 1) << " m\n"
+               << "altitude " << QString::number(plan.altitude, 'f', 1) << " m " << altitudeTypeName(sp.altitudeType) << ", GSD "
+               << QString::number(plan.groundSampleDistanceCm, 'f', 2) << " cm/px\n"
+               << "trigger every " << QString::number(plan.triggerDistance, 'f', 1) << " m, " << plan.photoCount << " photos, path "
+               << QString::number(plan.pathLength, 'f', 0) << " m\n"
+               << "wrote " << p.positionalArguments().at(1) << "\n";
+    }
+    return Ok;
+}
+
+} // namespace sortie::plan

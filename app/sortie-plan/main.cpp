@@ -1,0 +1,48 @@
+// sortie-plan: convert mission files between formats, print statistics and validation, and
+// generate area scans, for scripts and batch work. See docs/missions.md.
+#include "PlanCommands.h"
+
+#include <QCoreApplication>
+#include <QLoggingCategory>
+
+#include <cstdio>
+
+namespace {
+const char *const kUsage =
+    "usage: sortie-plan <command> [options]\n"
+    "\n"
+    "  convert IN OUT [--route N] [--force]\n"
+    "      Convert between .sortie, .plan (QGroundControl), .waypoints (QGC WPL 110) and .kml (export only).\n"
+    "  stats FILE [--json]\n"
+    "      Print each route's statistics and validation results. Exit 2 when a route has errors.\n"
+    "  scan POLYGON.kml OUT [--altitude M | --gsd CM] [--front PCT] [--side PCT] [--angle DEG]\n"
+    "       [--turnaround M] [--speed M/S] [--amsl] [--camera NAME,SENSOR_W_MM,SENSOR_H_MM,FOCAL_MM,IMAGE_W_PX,IMAGE_H_PX]\n"
+    "       [--json] [--force]\n"
+    "      Generate an area scan over a KML polygon and save it as a route.\n"
+    "\n"
+    "--force writes a route even when it has validation errors.\n";
+}
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("sortie-plan"));
+    // The tool reports for itself; the library's progress logging stays quiet unless asked for.
+    QLoggingCategory::setFilterRules(QStringLiteral("sortie.*.info=false\nsortie.*.debug=false"));
+    QTextStream out(stdout), err(stderr);
+    QStringList args = app.arguments().mid(1);
+    if (args.isEmpty() || args.first() == QLatin1String("--help") || args.first() == QLatin1String("-h")) {
+        (args.isEmpty() ? err : out) << kUsage;
+        return args.isEmpty() ? sortie::plan::Failure : sortie::plan::Ok;
+    }
+    const QString command = args.takeFirst();
+    const sortie::plan::Streams io{out, err};
+    if (command == QLatin1String("convert"))
+        return sortie::plan::runConvert(args, io);
+    if (command == QLatin1String("stats"))
+        return sortie::plan::runStats(args, io);
+    if (command == QLatin1String("scan"))
+        return sortie::plan::runScan(args, io);
+    err << "sortie-plan: unknown command \"" << command << "\"\n\n" << kUsage;
+    return sortie::plan::Failure;
+}

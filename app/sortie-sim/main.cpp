@@ -1,0 +1,67 @@
+// sortie-sim: the simulated UgCS server as a program. Wiring only: options -> world -> servers.
+#include "HciServer.h"
+#include "HciSimOptions.h"
+#include "SimWorld.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QSocketNotifier>
+
+#include <csignal>
+#include <cstdio>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace {
+int g_signalPipe[2] = {-1, -1};
+
+// Ctrl-C and SIGTERM quit through the event loop, so the store is saved: the handler only writes a byte.
+void quitOnSignals(QCoreApplication &app)
+{
+    if (::socketpair(AF_UNIX, SOCK_STREAM, 0, g_signalPipe) != 0)
+        return;
+    auto *notifier = new QSocketNotifier(g_signalPipe[1], QSocketNotifier::Read, &app);
+    QObject::connect(notifier, &QSocketNotifier::activated, &app, &QCoreApplication::quit);
+    const auto handler = [](int) {
+        const char byte = 1;
+        [[maybe_unused]] auto n = ::write(g_signalPipe[0], &byte, 1);
+    };
+    std::signal(SIGINT, handler);
+    std::signal(SIGTERM, handler);
+}
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("sortie-sim"));
+    quitOnSignals(app);
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral("Simulated UgCS server: HCI on 127.0.0.1, emulator vehicles near Riga."));
+    parser.addHelpOption();
+    sortie::sim::HciSimOptions hci;
+    hci.addTo(parser);
+    parser.process(app);
+
+    QString error;
+    if (!hci.read(parser, &error)) {
+        std::fprintf(stderr, "sortie-sim: %s\n", qPrintable(error));
+        return 2;
+    }
+
+    sortie::sim::SimWorld world(hci.world);
+    sortie::sim::HciServer server(world);
+    server.sessions().setExpiry(hci.sessionExpiryMs);
+    server.faults() = hci.faults;
+    if (!server.listen(hci.address, hci.port)) {
+        std::fprintf(stderr, "sortie-sim: %s\n", qPrintable(server.errorString()));
+        return 1;
+    }
+    std::printf("sortie-sim: HCI on %s:%u, %d vehicles, telemetry %.0f Hz\n", qPrintable(hci.address.toString()),
+                unsigned(server.port()), int(world.vehicles().size()), hci.world.telemetryRateHz);
+    std::fflush(stdout);
+    const int code = app.exec();
+    world.saveStore();
+    return code;
+}

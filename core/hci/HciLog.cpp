@@ -1,0 +1,3 @@
+#include "HciLog.h"
+
+Q_LOGGING_CATEGORY(lcHci, "sortie.hci", QtInfoMsg)

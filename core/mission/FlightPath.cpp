@@ -1,0 +1,37 @@
+#include "FlightPath.h"
+
+#include "ScanPlanCache.h"
+
+namespace sortie::mission {
+
+std::vector<PathPoint> flightPath(const Route &route, ScanPlanCache *cache)
+{
+    std::vector<PathPoint> path;
+    path.reserve(route.segments.size());
+    for (size_t i = 0; i < route.segments.size(); ++i) {
+        const Segment &s = route.segments[i];
+        if (const Waypoint *w = asWaypoint(s)) {
+            PathPoint p{w->position, w->altitude, w->altitudeType, w->speed, 0.0, w->role, int(i)};
+            for (const auto &a : w->actions)
+                if (const auto *wait = std::get_if<WaitAction>(&a))
+                    p.holdSeconds += wait->seconds;
+            path.push_back(p);
+            continue;
+        }
+        const AreaScan &scan = std::get<AreaScan>(s);
+        AreaScanOutcome scratch;
+        const AreaScanOutcome &o = scanOutcome(scan, cache, scratch);
+        const double speed = scan.parameters.speed;
+        if (!o.ok()) {
+            if (!scan.polygon.empty())
+                path.push_back({scan.polygon.front(), scanAltitude(scan.parameters), scan.parameters.altitudeType, speed, 0.0,
+                                WaypointRole::Pass, int(i)});
+            continue;
+        }
+        for (const GeoPoint &g : o.plan->path)
+            path.push_back({g, o.plan->altitude, scan.parameters.altitudeType, speed, 0.0, WaypointRole::Pass, int(i)});
+    }
+    return path;
+}
+
+} // namespace sortie::mission

@@ -1,0 +1,166 @@
+#include "HciRouteMapper.h"
+
+#include "Domain.pb.h"
+#include "HciSegmentMapper.h"
+
+namespace sortie::mission {
+
+namespace pb = com::ugcs::ucs::proto;
+
+namespace {
+RouteSettings settingsFromHci(const pb::Route &r)
+{
+    RouteSettings s;
+    s.name = QString::fromStdString(r.name());
+    if (r.has_safealtitude()) s.safeAltitude = r.safealtitude();
+    if (r.has_maxaltitude()) s.maxAltitude = r.maxaltitude();
+    if (r.has_initialspeed()) s.initialSpeed = r.initialspeed();
+    if (r.has_maxspeed()) s.maxSpeed = r.maxspeed();
+    s.cornerRadius = r.cornerradius();
+    s.takeoffHeight = r.takeoffheight();
+    for (const auto &f : r.failsafes())
+        s.failsafes.push_back({FailsafeReason(int(f.reason())), FailsafeAction(int(f.action()))});
+    const pb::VehicleProfile &vp = r.vehicleprofile();
+    s.profile.name = QString::fromStdString(vp.name());
+    double maxClimb = 0, maxDescent = 0;
+    for (const auto &p : vp.parameters()) {
+        switch (p.type()) {
+        case pb::VPT_MAX_HORIZONTAL_SPEED: s.profile.maxHorizontalSpeed = p.value(); break;
+        case pb::VPT_DEFAULT_CLIMB_RATE: s.profile.climbRate = p.value(); break;
+        case pb::VPT_DEFAULT_DESCENT_RATE: s.profile.descentRate = p.value(); break;
+        case pb::VPT_MAX_CLIMB_RATE: maxClimb = p.value(); break;
+        case pb::VPT_MAX_DESCENT_RATE: maxDescent = p.value(); break;
+        default: break;
+        }
+    }
+    // Without default rates the maximum rates are the best estimate for flight time.
+    bool hasDefaultClimb = false, hasDefaultDescent = false;
+    for (const auto &p : vp.parameters()) {
+        hasDefaultClimb |= p.type() == pb::VPT_DEFAULT_CLIMB_RATE;
+        hasDefaultDescent |= p.type() == pb::VPT_DEFAULT_DESCENT_RATE;
+    }
+    if (!hasDefaultClimb && maxClimb > 0) s.profile.climbRate = maxClimb;
+    if (!hasDefaultDescent && maxDescent > 0) s.profile.descentRate = maxDescent;
+    return s;
+}
+
+void setProfileParameter(pb::VehicleProfile &vp, pb::VehicleParameterType type, double value)
+{
+    for (auto &p : *vp.mutable_parameters()) {
+        if (p.type() == type) {
+            if (p.value() != value)
+                p.set_value(value);
+            return;
+        }
+    }
+    auto *p = vp.add_parameters();
+    p->set_type(type);
+    p->set_value(value);
+}
+
+void settingsToHci(const RouteSettings &s, const RouteSettings *before, pb::Route &r)
+{
+    if (!before || before->name != s.name) r.set_name(s.name.toStdString());
+    if (!before || before->safeAltitude != s.safeAltitude) r.set_safealtitude(s.safeAltitude);
+    if (!before || before->maxAltitude != s.maxAltitude) r.set_maxaltitude(s.maxAltitude);
+    if (!before || before->initialSpeed != s.initialSpeed) r.set_initialspeed(s.initialSpeed);
+    if (!before || before->maxSpeed != s.maxSpeed) r.set_maxspeed(s.maxSpeed);
+    if ((!before && s.cornerRadius != 0) || (before && before->cornerRadius != s.cornerRadius)) r.set_cornerradius(s.cornerRadius);
+    if ((!before && s.takeoffHeight != 0) || (before && before->takeoffHeight != s.takeoffHeight)) r.set_takeoffheight(s.takeoffHeight);
+    if (!before || before->failsafes != s.failsafes) {
+        auto *list = r.mutable_failsafes();
+        while (list->size() > int(s.failsafes.size()))
+            list->RemoveLast();
+        for (size_t i = 0; i < s.failsafes.size(); ++i) {
+            pb::Failsafe *f = int(i) < list->size() ? list->Mutable(int(i)) : r.add_failsafes();
+            if (!f->has_reason() || int(f->reason()) != int(s.failsafes[i].reason))
+                f->set_reason(pb::FailsafeReason(int(s.failsafes[i].reason)));
+            if (!f->has_action() || int(f->action()) != int(s.failsafes[i].action))
+                f->set_action(pb::FailsafeAction(int(s.failsafes[i].action)));
+        }
+    }
+    if (before && !(before->profile == s.profile)) {
+        pb::VehicleProfile *vp = r.mutable_vehicleprofile();
+        if (before->profile.name != s.profile.name) vp->set_name(s.profile.name.toStdString());
+        if (before->profile.maxHorizontalSpeed != s.profile.maxHorizontalSpeed)
+            setProfileParameter(*vp, pb::VPT_MAX_HORIZONTAL_SPEED, s.profile.maxHorizontalSpeed);
+        if (before->profile.climbRate != s.profile.climbRate) setProfileParameter(*vp, pb::VPT_DEFAULT_CLIMB_RATE, s.profile.climbRate);
+        if (before->profile.descentRate != s.profile.descentRate) setProfileParameter(*vp, pb::VPT_DEFAULT_DESCENT_RATE, s.profile.descentRate);
+    }
+}
+}
+
+Result<HciRouteImport> routeFromHci(const pb::Route &route)
+{
+    HciRouteImport out;
+    out.route.settings = settingsFromHci(route);
+    const HciSegmentContext ctx{out.route.settings.initialSpeed, route.has_vehicleprofile() ? &route.vehicleprofile() : nullptr};
+    for (int i = 0; i < route.segments_size(); ++i) {
+        Result<Segment> s = segmentFromHci(route.segments(i), ctx, &out.notices);
+        if (!s) {
+            MissionError e = s.error();
+            e.message = QStringLiteral("Route \"%1\", segment %2: %3").arg(out.route.settings.name).arg(i + 1).arg(e.message);
+            return e;
+        }
+        out.route.segments.push_back(std::move(s).value());
+    }
+    auto origin = std::make_shared<pb::Route>(route);
+    origin->clear_segments();  // segments keep their own origins
+    out.route.origin.message = std::move(origin);
+    return out;
+}
+
+pb::Route routeToHci(const Route &route)
+{
+    pb::Route out;
+    std::optional<RouteSettings> before;
+    if (route.origin.message) {
+        out = *route.origin.message;
+        before = settingsFromHci(*route.origin.message);
+    }
+    settingsToHci(route.settings, before ? &*before : nullptr, out);
+    // Segments are decoded against the original route's context, so "unchanged" means unchanged.
+    const pb::Route &contextRoute = route.origin.message ? *route.origin.message : out;
+    const HciSegmentContext ctx{before ? before->initialSpeed : route.settings.initialSpeed,
+                                contextRoute.has_vehicleprofile() ? &contextRoute.vehicleprofile() : nullptr};
+    out.clear_segments();
+    for (const Segment &s : route.segments)
+        *out.add_segments() = segmentToHci(s, ctx);
+    return out;
+}
+
+Result<Mission> missionFromHci(const pb::Mission &mission, QStringList *notices)
+{
+    Mission out;
+    out.name = QString::fromStdString(mission.name());
+    out.description = QString::fromStdString(mission.description());
+    for (const pb::Route &r : mission.routes()) {
+        Result<HciRouteImport> route = routeFromHci(r);
+        if (!route)
+            return route.error();
+        if (notices)
+            *notices << route->notices;
+        out.routes.push_back(std::move(route).value().route);
+    }
+    auto origin = std::make_shared<pb::Mission>(mission);
+    origin->clear_routes();
+    out.origin.message = std::move(origin);
+    return out;
+}
+
+pb::Mission missionToHci(const Mission &mission)
+{
+    pb::Mission out;
+    if (mission.origin.message)
+        out = *mission.origin.message;
+    if (!mission.origin.message || out.name() != mission.name.toStdString())
+        out.set_name(mission.name.toStdString());
+    if (!mission.origin.message || out.description() != mission.description.toStdString())
+        out.set_description(mission.description.toStdString());
+    out.clear_routes();
+    for (const Route &r : mission.routes)
+        *out.add_routes() = routeToHci(r);
+    return out;
+}
+
+} // namespace sortie::mission

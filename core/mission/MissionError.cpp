@@ -1,0 +1,25 @@
+#include "MissionError.h"
+
+namespace sortie::mission {
+
+QString MissionError::toString() const
+{
+    QString where = file;
+    if (line > 0) {
+        where += QStringLiteral(":%1").arg(line);
+        if (column > 0)
+            where += QStringLiteral(":%1").arg(column);
+    }
+    if (!jsonPath.isEmpty())
+        where += (where.isEmpty() ? QString() : QStringLiteral(" ")) + QStringLiteral("(at %1)").arg(jsonPath);
+    return where.isEmpty() ? message : where + QStringLiteral(": ") + message;
+}
+
+MissionError MissionError::withFile(const QString &name) const
+{
+    MissionError e = *this;
+    e.file = name;
+    return e;
+}
+
+} // namespace sortie::mission

@@ -1,0 +1,3 @@
+#include "MissionLog.h"
+
+Q_LOGGING_CATEGORY(lcMission, "sortie.mission")

@@ -1,0 +1,68 @@
+#pragma once
+
+#include "HciOrigin.h"
+#include "Segment.h"
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace sortie::mission {
+
+// The limits of the vehicle a route is planned for. 0 means "unknown": the rule is not checked.
+struct VehicleProfile
+{
+    QString name;
+    double maxHorizontalSpeed = 0.0;  // m/s
+    double climbRate = 3.0;           // m/s, used to estimate flight time
+    double descentRate = 2.0;         // m/s
+    bool operator==(const VehicleProfile &) const = default;
+};
+
+enum class FailsafeReason { RcLost, GpsLost, LowBattery, DatalinkLost };
+enum class FailsafeAction { GoHome, Land, Wait, Continue, NotAvailable };
+
+struct Failsafe
+{
+    FailsafeReason reason = FailsafeReason::RcLost;
+    FailsafeAction action = FailsafeAction::GoHome;
+    bool operator==(const Failsafe &) const = default;
+};
+
+// Where the vehicle starts (QGroundControl's planned home, a WPL file's first line). Altitude AMSL.
+struct HomePosition
+{
+    GeoPoint position;
+    double altitudeAmsl = 0.0;
+    bool operator==(const HomePosition &) const = default;
+};
+
+enum class EndAction { None, ReturnHome };
+
+// Everything about a route except its segments: what a route-settings edit changes.
+struct RouteSettings
+{
+    QString name;
+    VehicleProfile profile;
+    double safeAltitude = 20.0;   // metres AGL: the lowest altitude a waypoint should use
+    double maxAltitude = 120.0;   // metres AGL: no waypoint may be higher
+    double initialSpeed = 5.0;    // m/s
+    double maxSpeed = 10.0;       // m/s
+    double cornerRadius = 0.0;    // metres; 0 = none
+    double takeoffHeight = 0.0;   // metres
+    std::vector<Failsafe> failsafes;
+    std::optional<HomePosition> home;
+    EndAction endAction = EndAction::None;
+    bool operator==(const RouteSettings &) const = default;
+};
+
+struct Route
+{
+    RouteSettings settings;
+    std::vector<Segment> segments;
+    RouteOrigin origin;
+    bool operator==(const Route &) const = default;
+};
+
+} // namespace sortie::mission

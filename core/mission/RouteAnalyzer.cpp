@@ -1,0 +1,53 @@
+#include "RouteAnalyzer.h"
+
+#include "RouteModel.h"
+#include "ValidationIssueModel.h"
+
+namespace sortie::mission {
+
+RouteAnalyzer::RouteAnalyzer(const RouteModel *model, QObject *parent)
+    : QObject(parent), m_model(model), m_issues(new ValidationIssueModel(this))
+{
+    m_timer.setSingleShot(true);
+    m_timer.setInterval(50);
+    connect(&m_timer, &QTimer::timeout, this, &RouteAnalyzer::recomputeNow);
+    connect(model, &RouteModel::routeEdited, this, &RouteAnalyzer::schedule);
+    recomputeNow();
+}
+
+void RouteAnalyzer::setDelay(int milliseconds)
+{
+    m_timer.setInterval(milliseconds);
+}
+
+void RouteAnalyzer::schedule()
+{
+    if (m_timer.isActive())
+        return;  // already due: this edit will be included
+    m_timer.start();
+    emit pendingChanged();
+}
+
+void RouteAnalyzer::recomputeNow()
+{
+    const bool wasPending = m_timer.isActive();
+    m_timer.stop();
+    ++m_recomputes;
+    RouteStatistics st = computeStatistics(m_model->route(), &m_scans);
+    ValidationReport report = validateRoute(m_model->route(), &m_scans);
+    m_scans.retainRecentlyUsed();
+    const bool statsChanged = !(st == m_statistics);
+    const bool validationDiffers = !(report == m_validation);
+    m_statistics = std::move(st);
+    m_validation = std::move(report);
+    m_issues->setReport(m_validation);
+    if (statsChanged)
+        emit statisticsChanged();
+    if (validationDiffers)
+        emit validationChanged();
+    if (wasPending)
+        emit pendingChanged();
+    emit recomputed();
+}
+
+} // namespace sortie::mission

@@ -1,0 +1,71 @@
+#pragma once
+
+#include "Route.h"
+
+#include <QList>
+#include <QObject>
+#include <QUndoStack>
+#include <QVariantList>
+#include <QVariantMap>
+
+#include <functional>
+
+namespace sortie::mission {
+
+class RouteModel;
+
+// Every edit of a route as one undoable step, for QML (Q_INVOKABLE, rows as lists of ints: the
+// view's selection) and C++ alike. Holds no state of its own besides the model and the stack.
+class RouteEditor : public QObject
+{
+    Q_OBJECT
+    Q_PROPERTY(QUndoStack *undoStack READ undoStack CONSTANT)
+
+public:
+    RouteEditor(RouteModel *model, QUndoStack *stack, QObject *parent = nullptr);
+
+    QUndoStack *undoStack() const { return m_stack; }
+    RouteModel *model() const { return m_model; }
+
+    // A new waypoint takes its altitude, type, speed and turn from the one before it (or from the
+    // route's settings). Returns the new row.
+    Q_INVOKABLE int addWaypoint(double latitude, double longitude);
+    Q_INVOKABLE int insertWaypoint(int row, double latitude, double longitude);
+    Q_INVOKABLE void moveWaypoint(int row, double latitude, double longitude);
+    Q_INVOKABLE void removeRows(const QList<int> &rows);
+    Q_INVOKABLE void moveRows(const QList<int> &rows, int destination);
+    // Reverses the span from the first to the last selected row; the whole route when empty.
+    Q_INVOKABLE void reverse(const QList<int> &rows = {});
+
+    // Bulk edits of a selection; each is one undo step. Rows that an edit does not apply to
+    // (turn type on an area scan) are left alone.
+    Q_INVOKABLE void setAltitude(const QList<int> &rows, double altitude);
+    Q_INVOKABLE bool setAltitudeType(const QList<int> &rows, const QString &type);
+    Q_INVOKABLE void setSpeed(const QList<int> &rows, double speed);
+    Q_INVOKABLE bool setTurnType(const QList<int> &rows, const QString &type);
+    Q_INVOKABLE void setAcceptanceRadius(const QList<int> &rows, double meters);
+    Q_INVOKABLE bool addAction(const QList<int> &rows, const QVariantMap &action);
+    Q_INVOKABLE void removeAction(const QList<int> &rows, int actionIndex);
+    Q_INVOKABLE void clearActions(const QList<int> &rows);
+    // polygon: list of {latitude, longitude}. Returns the new row, or -1 for a bad polygon.
+    Q_INVOKABLE int addAreaScan(const QVariantList &polygon);
+    Q_INVOKABLE bool setRouteProperty(const QString &name, const QVariant &value);
+
+    // C++ side of the same operations.
+    int insertSegments(int row, std::vector<Segment> segments, const QString &text);
+    void editSegments(const QList<int> &rows, const std::function<void(Segment &)> &edit, const QString &text);
+    void setSettings(const RouteSettings &settings, const QString &text);
+    void replaceRoute(Route route, const QString &text);
+    void setScanParameters(int row, const AreaScanParameters &parameters);
+    void setScanPolygon(int row, std::vector<GeoPoint> polygon);
+
+    Waypoint newWaypointAt(int row, const GeoPoint &position) const;
+
+private:
+    std::vector<int> validRows(const QList<int> &rows) const;
+
+    RouteModel *m_model;
+    QUndoStack *m_stack;
+};
+
+} // namespace sortie::mission

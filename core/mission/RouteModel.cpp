@@ -1,0 +1,339 @@
+#include "RouteModel.h"
+
+#include "ActionVariants.h"
+#include "EditSegmentsCommand.h"
+#include "MoveWaypointCommand.h"
+
+#include <QUndoStack>
+
+#include <algorithm>
+
+namespace sortie::mission {
+
+namespace {
+// Beyond this many separate runs a removal or restore resets the model instead of signalling
+// each run: one O(n) pass beats thousands of O(n) erases.
+constexpr size_t kMaxRunsSignalled = 16;
+
+QVariantMap scanParametersToVariant(const AreaScanParameters &p)
+{
+    return {
+        {"cameraName", p.camera.name}, {"sensorWidthMm", p.camera.sensorWidthMm}, {"sensorHeightMm", p.camera.sensorHeightMm},
+        {"focalLengthMm", p.camera.focalLengthMm}, {"imageWidthPx", p.camera.imageWidthPx}, {"imageHeightPx", p.camera.imageHeightPx},
+        {"byGroundSampleDistance", p.heightMode == ScanHeightMode::GroundSampleDistance},
+        {"altitude", scanAltitude(p)}, {"groundSampleDistanceCm", scanGroundSampleDistanceCm(p)},
+        {"altitudeType", altitudeTypeName(p.altitudeType)}, {"frontOverlapPercent", p.frontOverlapPercent},
+        {"sideOverlapPercent", p.sideOverlapPercent}, {"directionDeg", p.directionDeg},
+        {"turnaroundMeters", p.turnaroundMeters}, {"speed", p.speed},
+    };
+}
+
+// The edit a setData call asks for, or nullopt when the role is not editable or the value is bad.
+std::optional<std::function<void(Segment &)>> editFor(int role, const QVariant &value)
+{
+    bool ok = false;
+    switch (role) {
+    case RouteModel::AltitudeRole: {
+        const double v = value.toDouble(&ok);
+        if (!ok) return std::nullopt;
+        return [v](Segment &s) {
+            if (Waypoint *w = asWaypoint(s)) { w->altitude = v; return; }
+            auto &p = std::get<AreaScan>(s).parameters;
+            p.heightMode = ScanHeightMode::Altitude;
+            p.altitude = v;
+            syncDerivedFields(p);
+        };
+    }
+    case RouteModel::AltitudeTypeRole: {
+        AltitudeType t;
+        if (!parseAltitudeType(value.toString(), &t)) return std::nullopt;
+        return [t](Segment &s) {
+            if (Waypoint *w = asWaypoint(s)) w->altitudeType = t;
+            else std::get<AreaScan>(s).parameters.altitudeType = t;
+        };
+    }
+    case RouteModel::SpeedRole: {
+        const double v = value.toDouble(&ok);
+        if (!ok) return std::nullopt;
+        return [v](Segment &s) {
+            if (Waypoint *w = asWaypoint(s)) w->speed = v;
+            else std::get<AreaScan>(s).parameters.speed = v;
+        };
+    }
+    case RouteModel::TurnTypeRole: {
+        TurnType t;
+        if (!parseTurnType(value.toString(), &t)) return std::nullopt;
+        return [t](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->turnType = t; };
+    }
+    case RouteModel::AcceptanceRadiusRole: {
+        const double v = value.toDouble(&ok);
+        if (!ok) return std::nullopt;
+        return [v](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->acceptanceRadius = v; };
+    }
+    default:
+        return std::nullopt;
+    }
+}
+}
+
+std::vector<std::pair<int, int>> contiguousRuns(const std::vector<int> &rows)
+{
+    std::vector<std::pair<int, int>> runs;
+    for (int r : rows) {
+        if (!runs.empty() && runs.back().second + 1 == r)
+            runs.back().second = r;
+        else
+            runs.emplace_back(r, r);
+    }
+    return runs;
+}
+
+RouteModel::RouteModel(QObject *parent) : QAbstractListModel(parent) {}
+
+int RouteModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : count();
+}
+
+QHash<int, QByteArray> RouteModel::roleNames() const
+{
+    return {
+        {KindRole, "kind"}, {SequenceRole, "sequence"}, {LatitudeRole, "latitude"}, {LongitudeRole, "longitude"},
+        {AltitudeRole, "altitude"}, {AltitudeTypeRole, "altitudeType"}, {SpeedRole, "speed"}, {TurnTypeRole, "turnType"},
+        {AcceptanceRadiusRole, "acceptanceRadius"}, {ActionCountRole, "actionCount"}, {ActionsSummaryRole, "actionsSummary"},
+        {ActionsRole, "actions"}, {PolygonRole, "polygon"}, {ScanParametersRole, "scanParameters"},
+        {Qt::DisplayRole, "display"},
+    };
+}
+
+QVariant RouteModel::data(const QModelIndex &index, int role) const
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+        return {};
+    const Segment &s = segment(index.row());
+    const Waypoint *w = asWaypoint(s);
+    const AreaScan *scan = asAreaScan(s);
+    switch (role) {
+    case Qt::DisplayRole:  // no row number in it: rows are renumbered by inserts, their text is not
+        return QStringLiteral("%1 %2, %3 · %4 m %5").arg(w ? roleName(w->role) : QStringLiteral("areaScan"))
+            .arg(anchorOf(s).latitude, 0, 'f', 6).arg(anchorOf(s).longitude, 0, 'f', 6)
+            .arg(altitudeOf(s)).arg(altitudeTypeName(altitudeTypeOf(s)));
+    case KindRole: return w ? roleName(w->role) : QStringLiteral("areaScan");
+    case SequenceRole: return index.row() + 1;
+    case LatitudeRole: return anchorOf(s).latitude;
+    case LongitudeRole: return anchorOf(s).longitude;
+    case AltitudeRole: return altitudeOf(s);
+    case AltitudeTypeRole: return altitudeTypeName(altitudeTypeOf(s));
+    case SpeedRole: return speedOf(s);
+    case TurnTypeRole: return w ? turnTypeName(w->turnType) : QVariant();
+    case AcceptanceRadiusRole: return w ? w->acceptanceRadius : QVariant();
+    case ActionCountRole: return w ? int(w->actions.size()) : 0;
+    case ActionsSummaryRole: return w ? describeActions(w->actions) : QString();
+    case ActionsRole: {
+        QVariantList list;
+        if (w)
+            for (const auto &a : w->actions)
+                list << actionToVariant(a);
+        return list;
+    }
+    case PolygonRole: {
+        QVariantList list;
+        if (scan)
+            for (const GeoPoint &g : scan->polygon)
+                list << QVariantMap{{"latitude", g.latitude}, {"longitude", g.longitude}};
+        return list;
+    }
+    case ScanParametersRole: return scan ? scanParametersToVariant(scan->parameters) : QVariant();
+    default: return {};
+    }
+}
+
+QString RouteModel::segmentLabelFor(int row, const Segment &s)
+{
+    return (isWaypoint(s) ? QStringLiteral("Waypoint %1") : QStringLiteral("Area scan %1")).arg(row + 1);
+}
+
+Qt::ItemFlags RouteModel::flags(const QModelIndex &index) const
+{
+    return QAbstractListModel::flags(index) | (index.isValid() ? Qt::ItemIsEditable : Qt::NoItemFlags);
+}
+
+bool RouteModel::setData(const QModelIndex &index, const QVariant &value, int role)
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+        return false;
+    const int row = index.row();
+    if (role == LatitudeRole || role == LongitudeRole) {
+        const Waypoint *w = asWaypoint(segment(row));
+        bool ok = false;
+        const double v = value.toDouble(&ok);
+        if (!w || !ok)
+            return false;
+        GeoPoint to = w->position;
+        (role == LatitudeRole ? to.latitude : to.longitude) = v;
+        if (!to.isValid())
+            return false;
+        if (m_undoStack)
+            m_undoStack->push(new MoveWaypointCommand(this, row, to));
+        else
+            setWaypointPosition(row, to);
+        return true;
+    }
+    const auto edit = editFor(role, value);
+    if (!edit)
+        return false;
+    if (m_undoStack) {
+        m_undoStack->push(new EditSegmentsCommand(this, {row}, *edit, QStringLiteral("Edit %1").arg(QString::fromLatin1(roleNames().value(role)))));
+    } else {
+        Segment s = segment(row);
+        (*edit)(s);
+        replaceSegments({row}, {s});
+    }
+    return true;
+}
+
+void RouteModel::setUndoStack(QUndoStack *stack)
+{
+    m_undoStack = stack;
+}
+
+void RouteModel::insertSegments(int row, std::vector<Segment> segments)
+{
+    if (segments.empty())
+        return;
+    beginInsertRows({}, row, row + int(segments.size()) - 1);
+    m_route.segments.insert(m_route.segments.begin() + row, std::make_move_iterator(segments.begin()),
+                            std::make_move_iterator(segments.end()));
+    endInsertRows();
+    if (row + int(segments.size()) < count())  // rows after the insertion were renumbered
+        emit dataChanged(index(row + int(segments.size())), index(count() - 1), {SequenceRole});
+    emit countChanged();
+    emit routeEdited();
+}
+
+std::vector<Segment> RouteModel::takeSegments(const std::vector<int> &rows)
+{
+    std::vector<Segment> taken;
+    taken.reserve(rows.size());
+    for (int r : rows)
+        taken.push_back(std::move(m_route.segments[size_t(r)]));
+    const auto runs = contiguousRuns(rows);
+    auto compact = [&] {
+        size_t out = 0, next = 0;
+        for (size_t i = 0; i < m_route.segments.size(); ++i) {
+            if (next < rows.size() && int(i) == rows[next]) { ++next; continue; }
+            if (out != i) m_route.segments[out] = std::move(m_route.segments[i]);
+            ++out;
+        }
+        m_route.segments.resize(out);
+    };
+    if (runs.size() > kMaxRunsSignalled) {
+        beginResetModel();
+        compact();
+        endResetModel();
+    } else {
+        for (auto it = runs.rbegin(); it != runs.rend(); ++it) {
+            beginRemoveRows({}, it->first, it->second);
+            m_route.segments.erase(m_route.segments.begin() + it->first, m_route.segments.begin() + it->second + 1);
+            endRemoveRows();
+        }
+        if (!rows.empty() && rows.front() < count())
+            emit dataChanged(index(rows.front()), index(count() - 1), {SequenceRole});
+    }
+    emit countChanged();
+    emit routeEdited();
+    return taken;
+}
+
+void RouteModel::restoreSegments(const std::vector<int> &rows, std::vector<Segment> segments)
+{
+    const auto runs = contiguousRuns(rows);
+    if (runs.size() > kMaxRunsSignalled) {
+        beginResetModel();
+        std::vector<Segment> merged;
+        merged.reserve(m_route.segments.size() + segments.size());
+        size_t old = 0, next = 0;
+        for (size_t i = 0; i < m_route.segments.size() + segments.size(); ++i) {
+            if (next < rows.size() && int(i) == rows[next])
+                merged.push_back(std::move(segments[next++]));
+            else
+                merged.push_back(std::move(m_route.segments[old++]));
+        }
+        m_route.segments = std::move(merged);
+        endResetModel();
+        emit countChanged();
+        emit routeEdited();
+        return;
+    }
+    size_t k = 0;
+    for (const auto &[first, last] : runs) {
+        std::vector<Segment> part;
+        for (int r = first; r <= last; ++r)
+            part.push_back(std::move(segments[k++]));
+        insertSegments(first, std::move(part));
+    }
+}
+
+void RouteModel::replaceSegments(const std::vector<int> &rows, const std::vector<Segment> &values)
+{
+    for (size_t i = 0; i < rows.size(); ++i)
+        m_route.segments[size_t(rows[i])] = values[i];
+    emitChanged(rows, {});
+}
+
+void RouteModel::setWaypointPosition(int row, const GeoPoint &position)
+{
+    std::get<Waypoint>(m_route.segments[size_t(row)]).position = position;
+    const QModelIndex i = index(row);
+    emit dataChanged(i, i, {LatitudeRole, LongitudeRole});
+    emit routeEdited();
+}
+
+void RouteModel::permute(const std::vector<int> &order)
+{
+    emit layoutAboutToBeChanged({}, QAbstractItemModel::NoLayoutChangeHint);
+    std::vector<Segment> next;
+    next.reserve(order.size());
+    std::vector<int> whereNow(order.size());
+    for (size_t i = 0; i < order.size(); ++i) {
+        next.push_back(std::move(m_route.segments[size_t(order[i])]));
+        whereNow[size_t(order[i])] = int(i);
+    }
+    m_route.segments = std::move(next);
+    const QModelIndexList persistent = persistentIndexList();
+    QModelIndexList moved;
+    moved.reserve(persistent.size());
+    for (const QModelIndex &p : persistent)
+        moved << index(whereNow[size_t(p.row())]);
+    changePersistentIndexList(persistent, moved);
+    emit layoutChanged({}, QAbstractItemModel::NoLayoutChangeHint);
+    emit routeEdited();
+}
+
+void RouteModel::setSettings(const RouteSettings &settings)
+{
+    m_route.settings = settings;
+    emit settingsChanged();
+    emit routeEdited();
+}
+
+void RouteModel::resetRoute(Route route)
+{
+    const int before = count();
+    beginResetModel();
+    m_route = std::move(route);
+    endResetModel();
+    if (before != count())
+        emit countChanged();
+    emit settingsChanged();
+    emit routeEdited();
+}
+
+void RouteModel::emitChanged(const std::vector<int> &rows, const QList<int> &roles)
+{
+    for (const auto &[first, last] : contiguousRuns(rows))
+        emit dataChanged(index(first), index(last), roles);
+    emit routeEdited();
+}
+
+} // namespace sortie::mission

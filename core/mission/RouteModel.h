@@ -1,0 +1,96 @@
+#pragma once
+
+#include "Route.h"
+
+#include <QAbstractListModel>
+#include <QPointer>
+#include <QUndoStack>
+
+#include <vector>
+
+namespace sortie::mission {
+
+// The route being edited, one row per segment (waypoint or area scan), as plain values: no QObject
+// per waypoint, so 10,000+ rows stay cheap. Views read it through roles; edits go through
+// RouteEditor (or setData, which pushes the same undoable commands when an undo stack is set).
+// The mutators below are the primitives the undo commands use; they are not undoable themselves.
+class RouteModel : public QAbstractListModel
+{
+    Q_OBJECT
+    Q_PROPERTY(int count READ count NOTIFY countChanged)
+    Q_PROPERTY(QString name READ name NOTIFY settingsChanged)
+    Q_PROPERTY(double safeAltitude READ safeAltitude NOTIFY settingsChanged)
+    Q_PROPERTY(double maxAltitude READ maxAltitude NOTIFY settingsChanged)
+    Q_PROPERTY(double initialSpeed READ initialSpeed NOTIFY settingsChanged)
+    Q_PROPERTY(double maxSpeed READ maxSpeed NOTIFY settingsChanged)
+
+public:
+    enum Roles {
+        KindRole = Qt::UserRole + 1,  // "waypoint", "takeoff", "land", "areaScan"
+        SequenceRole,                 // 1-based row number
+        LatitudeRole,                 // degrees (a scan: its first vertex)
+        LongitudeRole,
+        AltitudeRole,                 // metres (a scan: its flight altitude)
+        AltitudeTypeRole,             // "AGL" / "AMSL"
+        SpeedRole,                    // m/s
+        TurnTypeRole,                 // "StopAndTurn", "Straight", "Spline", "BankTurn"
+        AcceptanceRadiusRole,         // metres, 0 = vehicle default
+        ActionCountRole,
+        ActionsSummaryRole,           // "Wait 5 s · Photo every 20 m"
+        ActionsRole,                  // list of maps, see ActionVariants.h
+        PolygonRole,                  // a scan's vertices: list of {latitude, longitude}
+        ScanParametersRole,           // a scan's parameters as a map
+    };
+    Q_ENUM(Roles)
+
+    explicit RouteModel(QObject *parent = nullptr);
+
+    int rowCount(const QModelIndex &parent = QModelIndex()) const override;
+    QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
+    bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
+    Qt::ItemFlags flags(const QModelIndex &index) const override;
+    QHash<int, QByteArray> roleNames() const override;
+
+    const Route &route() const { return m_route; }
+    const RouteSettings &settings() const { return m_route.settings; }
+    const Segment &segment(int row) const { return m_route.segments[size_t(row)]; }
+    int count() const { return int(m_route.segments.size()); }
+    QString name() const { return m_route.settings.name; }
+    double safeAltitude() const { return m_route.settings.safeAltitude; }
+    double maxAltitude() const { return m_route.settings.maxAltitude; }
+    double initialSpeed() const { return m_route.settings.initialSpeed; }
+    double maxSpeed() const { return m_route.settings.maxSpeed; }
+
+    // Where setData pushes its commands. Without one, setData edits directly.
+    void setUndoStack(QUndoStack *stack);
+    QUndoStack *undoStack() const { return m_undoStack; }
+
+    // Primitives for the undo commands. Rows are sorted ascending and valid.
+    void insertSegments(int row, std::vector<Segment> segments);
+    std::vector<Segment> takeSegments(const std::vector<int> &rows);
+    void restoreSegments(const std::vector<int> &rows, std::vector<Segment> segments);  // inverse of takeSegments
+    void replaceSegments(const std::vector<int> &rows, const std::vector<Segment> &values);
+    void setWaypointPosition(int row, const GeoPoint &position);
+    void permute(const std::vector<int> &order);  // new row i holds old row order[i]
+    void setSettings(const RouteSettings &settings);
+    void resetRoute(Route route);
+
+    static QString segmentLabelFor(int row, const Segment &s);  // "Waypoint 12", "Area scan 4"
+
+signals:
+    void countChanged();
+    void settingsChanged();
+    // After every change of content, whatever its kind: what analyzers listen to.
+    void routeEdited();
+
+private:
+    void emitChanged(const std::vector<int> &rows, const QList<int> &roles);
+
+    Route m_route;
+    QPointer<QUndoStack> m_undoStack;
+};
+
+// Contiguous runs [first, last] of sorted rows.
+std::vector<std::pair<int, int>> contiguousRuns(const std::vector<int> &sortedRows);
+
+} // namespace sortie::mission

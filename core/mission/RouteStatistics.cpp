@@ -1,0 +1,111 @@
+#include "RouteStatistics.h"
+
+#include "FlightPath.h"
+#include "Geodesy.h"
+#include "ScanPlanCache.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sortie::mission {
+
+GeoBox boundingBoxOf(const std::vector<GeoPoint> &points)
+{
+    GeoBox box;
+    if (points.empty())
+        return box;
+    box.empty = false;
+    box.south = box.north = points.front().latitude;
+    double west = points.front().longitude, east = west;
+    for (const GeoPoint &p : points) {
+        box.south = std::min(box.south, p.latitude);
+        box.north = std::max(box.north, p.latitude);
+        west = std::min(west, p.longitude);
+        east = std::max(east, p.longitude);
+    }
+    box.west = west;
+    box.east = east;
+    if (east - west <= 180.0)
+        return box;
+    // Wide in longitude: the box is the complement of the largest gap between longitudes, which
+    // may be the one across the antimeridian.
+    std::vector<double> lons;
+    lons.reserve(points.size());
+    for (const GeoPoint &p : points)
+        lons.push_back(p.longitude);
+    std::sort(lons.begin(), lons.end());
+    double gap = lons.front() + 360.0 - lons.back();
+    box.west = lons.front();
+    box.east = lons.back();
+    for (size_t i = 1; i < lons.size(); ++i) {
+        if (lons[i] - lons[i - 1] > gap) {
+            gap = lons[i] - lons[i - 1];
+            box.west = lons[i];
+            box.east = lons[i - 1];
+        }
+    }
+    return box;
+}
+
+RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
+{
+    RouteStatistics st;
+    for (const Segment &s : route.segments) {
+        if (isWaypoint(s)) {
+            ++st.waypointCount;
+        } else {
+            ++st.areaScanCount;
+            AreaScanOutcome scratch;
+            const AreaScanOutcome &o = scanOutcome(std::get<AreaScan>(s), cache, scratch);
+            if (o.ok())
+                st.photoCount += o.plan->photoCount;
+        }
+    }
+    const std::vector<PathPoint> path = flightPath(route, cache);
+    st.pathPointCount = int(path.size());
+    const VehicleProfile &profile = route.settings.profile;
+    auto verticalTime = [&](double dh) {
+        if (dh > 0)
+            return profile.climbRate > 0 ? dh / profile.climbRate : 0.0;
+        return profile.descentRate > 0 ? -dh / profile.descentRate : 0.0;
+    };
+
+    std::vector<GeoPoint> positions;
+    positions.reserve(path.size() + 1);
+    for (size_t i = 0; i < path.size(); ++i) {
+        const PathPoint &p = path[i];
+        positions.push_back(p.position);
+        st.flightTimeSeconds += p.holdSeconds;
+        if (p.role == WaypointRole::Takeoff && p.altitudeType == AltitudeType::Agl)
+            st.flightTimeSeconds += verticalTime(p.altitude), st.climbMeters += std::max(0.0, p.altitude);
+        if (p.role == WaypointRole::Land && p.altitudeType == AltitudeType::Agl)
+            st.flightTimeSeconds += verticalTime(-p.altitude), st.descentMeters += std::max(0.0, p.altitude);
+        if (i == 0)
+            continue;
+        const PathPoint &q = path[i - 1];
+        const double d = geodesicDistance(q.position, p.position);
+        st.lengthMeters += d;
+        double dh = 0.0;
+        if (p.altitudeType == q.altitudeType) {
+            dh = p.altitude - q.altitude;
+            (dh > 0 ? st.climbMeters : st.descentMeters) += std::abs(dh);
+        }
+        const double horizontal = p.speed > 0 ? d / p.speed : 0.0;
+        st.flightTimeSeconds += std::max(horizontal, verticalTime(dh));
+    }
+    const RouteSettings &rs = route.settings;
+    if (rs.endAction == EndAction::ReturnHome && rs.home && !path.empty()) {
+        // Fly home at the last leg's speed, then descend from the last AGL altitude.
+        const PathPoint &last = path.back();
+        const double d = geodesicDistance(last.position, rs.home->position);
+        st.lengthMeters += d;
+        st.flightTimeSeconds += last.speed > 0 ? d / last.speed : 0.0;
+        if (last.altitudeType == AltitudeType::Agl)
+            st.flightTimeSeconds += verticalTime(-last.altitude), st.descentMeters += std::max(0.0, last.altitude);
+        positions.push_back(rs.home->position);
+    }
+    st.boundingBox = boundingBoxOf(positions);
+    return st;
+}
+
+} // namespace sortie::mission

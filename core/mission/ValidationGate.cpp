@@ -1,0 +1,25 @@
+#include "ValidationGate.h"
+
+#include <QStringList>
+
+namespace sortie::mission {
+
+Result<void> permitRelease(const ValidationReport &report, ValidationOverride override, const QString &what)
+{
+    if (!report.hasErrors() || override == ValidationOverride::AcceptErrors)
+        return {};
+    QStringList first;
+    for (const ValidationIssue &i : report.issues) {
+        if (i.severity != Severity::Error)
+            continue;
+        if (first.size() == 3) {
+            first << QStringLiteral("...");
+            break;
+        }
+        first << i.message;
+    }
+    return MissionError{QStringLiteral("%1 refused: the route has %2 validation error(s). %3 Fix them, or override explicitly.")
+                            .arg(what).arg(report.errorCount()).arg(first.join(QLatin1Char(' '))), {}, 0, 0, {}};
+}
+
+} // namespace sortie::mission

@@ -1,0 +1,97 @@
+#pragma once
+
+#include "GeoPoint.h"
+
+#include <QString>
+
+#include <memory>
+#include <variant>
+#include <vector>
+
+namespace com::ugcs::ucs::proto { class ActionDefinition; }
+
+namespace sortie::mission {
+
+enum class AltitudeType { Agl, Amsl };  // above ground level / above mean sea level
+
+// Actions performed at a waypoint, in order. Units: seconds, metres, degrees (clockwise from north).
+struct WaitAction
+{
+    double seconds = 0.0;
+    bool waitForOperator = false;
+    bool operator==(const WaitAction &) const = default;
+};
+
+struct HeadingAction
+{
+    double headingDeg = 0.0;        // yaw; relative to north unless relativeToNextWaypoint
+    bool relativeToNextWaypoint = false;
+    bool operator==(const HeadingAction &) const = default;
+};
+
+struct PoiAction
+{
+    GeoPoint position;
+    double altitude = 0.0;
+    AltitudeType altitudeType = AltitudeType::Agl;
+    bool operator==(const PoiAction &) const = default;
+};
+
+enum class TriggerState { SingleShot, StartRecording, StopRecording, ToggleRecording };
+
+struct CameraTriggerAction
+{
+    TriggerState state = TriggerState::SingleShot;
+    bool operator==(const CameraTriggerAction &) const = default;
+};
+
+struct CameraSeriesByTimeAction
+{
+    double intervalSeconds = 1.0;
+    int shots = 0;  // 0: until the next camera action
+    double startDelaySeconds = 0.0;
+    bool operator==(const CameraSeriesByTimeAction &) const = default;
+};
+
+struct CameraSeriesByDistanceAction
+{
+    double intervalMeters = 10.0;  // 0 stops a running series
+    int shots = 0;                 // 0: until the next camera action
+    double startDelaySeconds = 0.0;
+    bool operator==(const CameraSeriesByDistanceAction &) const = default;
+};
+
+enum class RotationDirection { Clockwise, CounterClockwise };
+enum class PanoramaMode { Photo, Video };
+
+struct PanoramaAction
+{
+    double angleDeg = 360.0;
+    double stepAngleDeg = 45.0;
+    double stepDelaySeconds = 1.0;
+    RotationDirection direction = RotationDirection::Clockwise;
+    double rotationSpeedDegPerSecond = 30.0;
+    PanoramaMode mode = PanoramaMode::Photo;
+    bool operator==(const PanoramaAction &) const = default;
+};
+
+// An action a server sent that Sortie does not model (servo, lidar, drop, ...). It is kept
+// verbatim so that saving the route sends it back unchanged.
+struct OpaqueAction
+{
+    QString description;
+    std::shared_ptr<const com::ugcs::ucs::proto::ActionDefinition> definition;
+    bool operator==(const OpaqueAction &o) const { return description == o.description && definition == o.definition; }
+};
+
+using WaypointAction = std::variant<WaitAction, HeadingAction, PoiAction, CameraTriggerAction,
+                                    CameraSeriesByTimeAction, CameraSeriesByDistanceAction, PanoramaAction,
+                                    OpaqueAction>;
+
+QString altitudeTypeName(AltitudeType type);                 // "AGL" / "AMSL"
+bool parseAltitudeType(const QString &name, AltitudeType *out);
+QString actionKindName(const WaypointAction &action);        // "wait", "heading", ...
+QString describeAction(const WaypointAction &action);        // "Wait 5 s", "Camera every 20 m", ...
+QString describeActions(const std::vector<WaypointAction> &actions);
+
+} // namespace sortie::mission

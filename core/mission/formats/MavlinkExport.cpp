@@ -1,0 +1,183 @@
+#include "MavlinkMission.h"
+
+#include "ScanPlanCache.h"
+
+#include <QSet>
+
+namespace sortie::mission::formats {
+
+namespace {
+template<class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };
+template<class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
+
+MavlinkItem command(int cmd, double p1 = 0, double p2 = 0, double p3 = 0, double p4 = 0)
+{
+    MavlinkItem i;
+    i.command = cmd;
+    i.frame = mav::Mission;
+    i.param[0] = p1; i.param[1] = p2; i.param[2] = p3; i.param[3] = p4;
+    return i;
+}
+
+int frameOf(AltitudeType t) { return t == AltitudeType::Amsl ? mav::Global : mav::GlobalRelativeAlt; }
+
+class Exporter
+{
+public:
+    Exporter(double startSpeed, ScanPlanCache *cache, bool keepScans) : m_speed(startSpeed), m_cache(cache), m_keepScans(keepScans) {}
+
+    MavlinkExport run(const Route &route)
+    {
+        for (size_t i = 0; i < route.segments.size(); ++i) {
+            const Segment &s = route.segments[i];
+            if (const Waypoint *w = asWaypoint(s))
+                waypoint(*w, int(i));
+            else
+                scan(std::get<AreaScan>(s), int(i));
+        }
+        if (route.settings.endAction == EndAction::ReturnHome)
+            m_out.items.push_back(command(mav::NavReturnToLaunch));
+        for (const QString &n : m_once)
+            m_out.notices << n;
+        return std::move(m_out);
+    }
+
+private:
+    void speed(double v)
+    {
+        if (v == m_speed || !(v > 0))
+            return;
+        m_out.items.push_back(command(mav::DoChangeSpeed, 1, v, -1, 0));  // ground speed, throttle unchanged
+        m_speed = v;
+    }
+
+    void waypoint(const Waypoint &w, int row)
+    {
+        speed(w.speed);
+        MavlinkItem nav;
+        nav.frame = frameOf(w.altitudeType);
+        nav.latitude = w.position.latitude;
+        nav.longitude = w.position.longitude;
+        nav.altitude = w.altitude;
+        size_t firstAction = 0;
+        switch (w.role) {
+        case WaypointRole::Takeoff: nav.command = mav::NavTakeoff; break;
+        case WaypointRole::Land: nav.command = mav::NavLand; break;
+        case WaypointRole::Pass:
+            nav.command = w.turnType == TurnType::Spline ? mav::NavSplineWaypoint : mav::NavWaypoint;
+            if (w.turnType == TurnType::StopAndTurn || w.turnType == TurnType::BankTurn)
+                m_once.insert(QStringLiteral("MAVLink has no stop-and-turn or bank-turn waypoints: they were written as plain waypoints."));
+            // A leading wait is the waypoint's own hold time.
+            if (!w.actions.empty())
+                if (const auto *wait = std::get_if<WaitAction>(&w.actions.front()); wait && !wait->waitForOperator && wait->seconds > 0) {
+                    nav.param[0] = wait->seconds;
+                    firstAction = 1;
+                }
+            if (nav.command == mav::NavWaypoint)
+                nav.param[1] = w.acceptanceRadius;
+            break;
+        }
+        m_out.items.push_back(nav);
+        for (size_t i = firstAction; i < w.actions.size(); ++i)
+            action(w.actions[i], row);
+    }
+
+    void skipped(int row, const QString &what)
+    {
+        m_out.notices << QStringLiteral("Waypoint %1: %2 has no MAVLink equivalent and was left out.").arg(row + 1).arg(what);
+    }
+
+    void action(const WaypointAction &a, int row)
+    {
+        std::visit(Overloaded{
+            [&](const WaitAction &x) {
+                if (x.waitForOperator) skipped(row, QStringLiteral("waiting for the operator"));
+                else m_out.items.push_back(command(mav::NavDelay, x.seconds, -1, -1, -1));
+            },
+            [&](const HeadingAction &x) {
+                if (x.relativeToNextWaypoint) skipped(row, QStringLiteral("a heading relative to the course"));
+                else m_out.items.push_back(command(mav::ConditionYaw, x.headingDeg, 0, 0, 0));
+            },
+            [&](const PoiAction &x) {
+                MavlinkItem i = command(mav::DoSetRoiLocation);
+                i.frame = frameOf(x.altitudeType);
+                i.latitude = x.position.latitude;
+                i.longitude = x.position.longitude;
+                i.altitude = x.altitude;
+                m_out.items.push_back(i);
+            },
+            [&](const CameraTriggerAction &x) {
+                switch (x.state) {
+                case TriggerState::SingleShot: m_out.items.push_back(command(mav::ImageStartCapture, 0, 0, 1, 0)); break;
+                case TriggerState::StartRecording: m_out.items.push_back(command(mav::VideoStartCapture)); break;
+                case TriggerState::StopRecording: m_out.items.push_back(command(mav::VideoStopCapture)); break;
+                case TriggerState::ToggleRecording: skipped(row, QStringLiteral("toggling video")); break;
+                }
+            },
+            [&](const CameraSeriesByTimeAction &x) {
+                if (x.startDelaySeconds != 0) skipped(row, QStringLiteral("the series' start delay"));
+                m_out.items.push_back(command(mav::ImageStartCapture, 0, x.intervalSeconds, x.shots, 0));
+            },
+            [&](const CameraSeriesByDistanceAction &x) {
+                if (x.shots != 0 || x.startDelaySeconds != 0) skipped(row, QStringLiteral("the series' shot count and start delay"));
+                m_out.items.push_back(command(mav::DoSetCamTriggDist, x.intervalMeters, 0, 0, 0));
+            },
+            [&](const PanoramaAction &) { skipped(row, QStringLiteral("a panorama")); },
+            [&](const OpaqueAction &x) { skipped(row, x.description); },
+        }, a);
+    }
+
+    void scan(const AreaScan &s, int row)
+    {
+        if (m_keepScans) {
+            speed(s.parameters.speed);
+            MavlinkItem i;
+            i.scan = std::make_shared<const AreaScan>(s);
+            m_out.items.push_back(i);
+            return;
+        }
+        AreaScanOutcome scratch;
+        const AreaScanOutcome &o = scanOutcome(s, m_cache, scratch);
+        if (!o.ok()) {
+            m_out.notices << QStringLiteral("Area scan %1 was left out: %2").arg(row + 1).arg(o.message);
+            return;
+        }
+        speed(s.parameters.speed);
+        const int frame = frameOf(s.parameters.altitudeType);
+        auto point = [&](const GeoPoint &g) {
+            MavlinkItem i;
+            i.command = mav::NavWaypoint;
+            i.frame = frame;
+            i.latitude = g.latitude;
+            i.longitude = g.longitude;
+            i.altitude = o.plan->altitude;
+            m_out.items.push_back(i);
+        };
+        const bool turnarounds = s.parameters.turnaroundMeters > 0;
+        size_t k = 0;
+        for (const Transect &t : o.plan->transects) {
+            if (turnarounds) point(o.plan->path[k++]);
+            point(o.plan->path[k++]);
+            m_out.items.push_back(command(mav::DoSetCamTriggDist, o.plan->triggerDistance, 0, 1, 0));
+            point(o.plan->path[k++]);
+            m_out.items.push_back(command(mav::DoSetCamTriggDist, 0, 0, 0, 0));
+            if (turnarounds) point(o.plan->path[k++]);
+            Q_UNUSED(t);
+        }
+        m_out.notices << QStringLiteral("Area scan %1 was written as %2 waypoints with distance triggering.").arg(row + 1).arg(o.plan->path.size());
+    }
+
+    double m_speed;
+    ScanPlanCache *m_cache;
+    bool m_keepScans;
+    MavlinkExport m_out;
+    QSet<QString> m_once;
+};
+}
+
+MavlinkExport routeToMavlink(const Route &route, double startSpeed, ScanPlanCache *cache, bool keepScans)
+{
+    return Exporter(startSpeed, cache, keepScans).run(route);
+}
+
+} // namespace sortie::mission::formats

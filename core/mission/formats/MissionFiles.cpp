@@ -1,0 +1,145 @@
+#include "MissionFiles.h"
+
+#include "MissionLog.h"
+#include "QgcPlanFormat.h"
+#include "RouteValidator.h"
+#include "ScanPlanCache.h"
+#include "SortieFormat.h"
+#include "WplFormat.h"
+
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+
+namespace sortie::mission::formats {
+
+namespace {
+constexpr qint64 kMaxFileBytes = 256 * 1024 * 1024;
+
+Result<QByteArray> readAll(const QString &path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return MissionError{QStringLiteral("cannot open: %1").arg(f.errorString()), path, 0, 0, {}};
+    if (f.size() > kMaxFileBytes)
+        return MissionError{QStringLiteral("the file is larger than 256 MiB"), path, 0, 0, {}};
+    return f.readAll();
+}
+
+Result<FileFormat> formatOf(const QString &path)
+{
+    if (const auto f = formatForPath(path))
+        return *f;
+    return MissionError{QStringLiteral("unknown file type: use .sortie, .plan, .waypoints or .kml"), path, 0, 0, {}};
+}
+
+Mission missionOf(Route route, const QString &path)
+{
+    const QString name = QFileInfo(path).completeBaseName();
+    if (route.settings.name.isEmpty())
+        route.settings.name = name;
+    Mission m;
+    m.name = name;
+    m.routes.push_back(std::move(route));
+    return m;
+}
+}
+
+std::optional<FileFormat> formatForPath(const QString &path)
+{
+    const QString suffix = QFileInfo(path).suffix().toLower();
+    if (suffix == QLatin1String("sortie")) return FileFormat::Sortie;
+    if (suffix == QLatin1String("plan")) return FileFormat::QgcPlan;
+    if (suffix == QLatin1String("waypoints") || suffix == QLatin1String("wpl") || suffix == QLatin1String("txt")) return FileFormat::Wpl;
+    if (suffix == QLatin1String("kml")) return FileFormat::Kml;
+    return std::nullopt;
+}
+
+QString formatName(FileFormat format)
+{
+    switch (format) {
+    case FileFormat::Sortie: return QStringLiteral("Sortie mission");
+    case FileFormat::QgcPlan: return QStringLiteral("QGroundControl plan");
+    case FileFormat::Wpl: return QStringLiteral("QGC WPL 110 waypoints");
+    case FileFormat::Kml: return QStringLiteral("KML");
+    }
+    return {};
+}
+
+Result<LoadedMission> loadMission(const QString &path)
+{
+    const Result<FileFormat> format = formatOf(path);
+    if (!format)
+        return format.error();
+    const Result<QByteArray> data = readAll(path);
+    if (!data)
+        return data.error();
+    switch (*format) {
+    case FileFormat::Sortie: {
+        Result<Mission> m = readSortie(*data);
+        if (!m)
+            return m.error().withFile(path);
+        return LoadedMission{std::move(m).value(), {}};
+    }
+    case FileFormat::QgcPlan:
+    case FileFormat::Wpl: {
+        Result<ImportedRoute> r = *format == FileFormat::Wpl ? readWpl(*data) : readQgcPlan(*data);
+        if (!r)
+            return r.error().withFile(path);
+        ImportedRoute imported = std::move(r).value();
+        return LoadedMission{missionOf(std::move(imported.route), path), imported.notices};
+    }
+    case FileFormat::Kml:
+        return MissionError{QStringLiteral("a KML file holds a polygon, not a mission: import it as an area-scan boundary"), path, 0, 0, {}};
+    }
+    return MissionError{QStringLiteral("unreachable"), path, 0, 0, {}};
+}
+
+Result<ImportedPolygon> loadPolygon(const QString &path)
+{
+    const Result<QByteArray> data = readAll(path);
+    if (!data)
+        return data.error();
+    Result<ImportedPolygon> p = readKmlPolygon(*data);
+    if (!p)
+        return p.error().withFile(path);
+    return p;
+}
+
+Result<QStringList> saveMission(const Mission &mission, const QString &path, const SaveOptions &options)
+{
+    const Result<FileFormat> format = formatOf(path);
+    if (!format)
+        return format.error();
+    ScanPlanCache cache;
+    std::vector<const Route *> routes;
+    if (*format == FileFormat::Sortie) {
+        for (const Route &r : mission.routes)
+            routes.push_back(&r);
+    } else {
+        if (options.routeIndex < 0 || options.routeIndex >= int(mission.routes.size()))
+            return MissionError{QStringLiteral("the mission has no route %1 (it has %2)").arg(options.routeIndex + 1).arg(mission.routes.size()), path, 0, 0, {}};
+        routes.push_back(&mission.routes[size_t(options.routeIndex)]);
+    }
+    for (const Route *r : routes) {
+        const Result<void> gate = permitRelease(validateRoute(*r, &cache), options.override,
+                                                QStringLiteral("Saving route \"%1\"").arg(r->settings.name));
+        if (!gate)
+            return gate.error().withFile(path);
+    }
+    QStringList notices;
+    QByteArray bytes;
+    switch (*format) {
+    case FileFormat::Sortie: bytes = writeSortie(mission); break;
+    case FileFormat::QgcPlan: bytes = writeQgcPlan(*routes.front(), &notices, &cache); break;
+    case FileFormat::Wpl: bytes = writeWpl(*routes.front(), &notices, &cache); break;
+    case FileFormat::Kml: bytes = writeKmlRoute(*routes.front(), &cache); break;
+    }
+    QSaveFile f(path);
+    if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit())
+        return MissionError{QStringLiteral("cannot write: %1").arg(f.errorString()), path, 0, 0, {}};
+    qCInfo(lcMission) << "saved" << path << "as" << formatName(*format);
+    return notices;
+}
+
+} // namespace sortie::mission::formats

@@ -1,0 +1,43 @@
+#pragma once
+
+#include "KmlFormat.h"
+#include "Mission.h"
+#include "MissionError.h"
+#include "ValidationGate.h"
+
+#include <QStringList>
+
+#include <optional>
+
+namespace sortie::mission::formats {
+
+enum class FileFormat { Sortie, QgcPlan, Wpl, Kml };
+
+// By extension: .sortie, .plan, .waypoints / .wpl / .txt (QGC WPL), .kml.
+std::optional<FileFormat> formatForPath(const QString &path);
+QString formatName(FileFormat format);
+
+struct LoadedMission
+{
+    Mission mission;
+    QStringList notices;
+};
+
+// Reads a mission from any importable format. Every error names the file and its line or JSON
+// path; nothing is returned half-read, so a failed import leaves the caller's plan as it was.
+// Single-route formats give a mission with one route named after the file.
+Result<LoadedMission> loadMission(const QString &path);
+// A KML polygon, for an area-scan boundary.
+Result<ImportedPolygon> loadPolygon(const QString &path);
+
+struct SaveOptions
+{
+    int routeIndex = 0;  // which route, for formats that hold one (.plan, WPL, KML)
+    ValidationOverride override = ValidationOverride::None;
+};
+
+// Validates the route(s) being written (the gate refuses errors unless overridden), encodes, and
+// replaces the file atomically. Returns what the format could not represent.
+Result<QStringList> saveMission(const Mission &mission, const QString &path, const SaveOptions &options = {});
+
+} // namespace sortie::mission::formats

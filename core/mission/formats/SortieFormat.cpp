@@ -1,0 +1,342 @@
+#include "SortieFormat.h"
+
+#include "Domain.pb.h"
+#include "JsonCursor.h"
+#include "SortieMigrations.h"
+
+namespace sortie::mission::formats {
+
+namespace pb = com::ugcs::ucs::proto;
+
+namespace {
+template<class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };
+template<class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
+
+std::string str(const QString &s) { return s.toStdString(); }
+
+const char *const kReasons[] = {"rcLost", "gpsLost", "lowBattery", "datalinkLost"};
+const char *const kActions[] = {"goHome", "land", "wait", "continue", "notAvailable"};
+const char *const kTriggers[] = {"singleShot", "startRecording", "stopRecording", "toggleRecording"};
+
+template<size_t N>
+int indexOf(const char *const (&names)[N], const JsonCursor &c)
+{
+    const std::string s = c.string().toStdString();
+    for (size_t i = 0; i < N; ++i)
+        if (s == names[i])
+            return int(i);
+    c.fail(QStringLiteral("unknown value \"%1\"").arg(QString::fromStdString(s)));
+}
+
+template<typename Message>
+void putOrigin(Json &j, const std::shared_ptr<const Message> &m)
+{
+    if (m)
+        j["hci"] = QByteArray::fromStdString(m->SerializeAsString()).toBase64().toStdString();
+}
+
+template<typename Message>
+std::shared_ptr<const Message> takeOrigin(const JsonCursor &c)
+{
+    const auto h = c.find("hci");
+    if (!h)
+        return nullptr;
+    auto m = std::make_shared<Message>();
+    const QByteArray bytes = QByteArray::fromBase64(h->string().toLatin1(), QByteArray::AbortOnBase64DecodingErrors);
+    if (bytes.isEmpty() || !m->ParseFromArray(bytes.constData(), int(bytes.size())))
+        h->fail(QStringLiteral("not a valid UgCS %1").arg(QString::fromStdString(Message::descriptor()->name())));
+    return m;
+}
+
+Json actionJson(const WaypointAction &action)
+{
+    return std::visit(Overloaded{
+        [](const WaitAction &a) { return Json{{"type", "wait"}, {"seconds", a.seconds}, {"waitForOperator", a.waitForOperator}}; },
+        [](const HeadingAction &a) { return Json{{"type", "heading"}, {"headingDeg", a.headingDeg}, {"relativeToNextWaypoint", a.relativeToNextWaypoint}}; },
+        [](const PoiAction &a) {
+            return Json{{"type", "poi"}, {"latitude", a.position.latitude}, {"longitude", a.position.longitude},
+                        {"altitude", a.altitude}, {"altitudeType", str(altitudeTypeName(a.altitudeType))}};
+        },
+        [](const CameraTriggerAction &a) { return Json{{"type", "cameraTrigger"}, {"state", kTriggers[int(a.state)]}}; },
+        [](const CameraSeriesByTimeAction &a) {
+            return Json{{"type", "cameraSeriesByTime"}, {"intervalSeconds", a.intervalSeconds}, {"shots", a.shots}, {"startDelaySeconds", a.startDelaySeconds}};
+        },
+        [](const CameraSeriesByDistanceAction &a) {
+            return Json{{"type", "cameraSeriesByDistance"}, {"intervalMeters", a.intervalMeters}, {"shots", a.shots}, {"startDelaySeconds", a.startDelaySeconds}};
+        },
+        [](const PanoramaAction &a) {
+            return Json{{"type", "panorama"}, {"angleDeg", a.angleDeg}, {"stepAngleDeg", a.stepAngleDeg}, {"stepDelaySeconds", a.stepDelaySeconds},
+                        {"clockwise", a.direction == RotationDirection::Clockwise}, {"rotationSpeedDegPerSecond", a.rotationSpeedDegPerSecond},
+                        {"video", a.mode == PanoramaMode::Video}};
+        },
+        [](const OpaqueAction &a) {
+            Json j{{"type", "opaque"}, {"description", str(a.description)}};
+            putOrigin(j, a.definition);
+            return j;
+        },
+    }, action);
+}
+
+WaypointAction readAction(const JsonCursor &c)
+{
+    const QString type = c.at("type").string();
+    if (type == QLatin1String("wait"))
+        return WaitAction{c.number("seconds"), c.booleanOr("waitForOperator", false)};
+    if (type == QLatin1String("heading"))
+        return HeadingAction{c.number("headingDeg"), c.booleanOr("relativeToNextWaypoint", false)};
+    if (type == QLatin1String("poi")) {
+        PoiAction a{{c.number("latitude"), c.number("longitude")}, c.number("altitude"), AltitudeType::Agl};
+        if (!parseAltitudeType(c.at("altitudeType").string(), &a.altitudeType))
+            c.at("altitudeType").fail(QStringLiteral("expected \"AGL\" or \"AMSL\""));
+        return a;
+    }
+    if (type == QLatin1String("cameraTrigger"))
+        return CameraTriggerAction{TriggerState(indexOf(kTriggers, c.at("state")))};
+    if (type == QLatin1String("cameraSeriesByTime"))
+        return CameraSeriesByTimeAction{c.number("intervalSeconds"), c.integerOr("shots", 0), c.numberOr("startDelaySeconds", 0)};
+    if (type == QLatin1String("cameraSeriesByDistance"))
+        return CameraSeriesByDistanceAction{c.number("intervalMeters"), c.integerOr("shots", 0), c.numberOr("startDelaySeconds", 0)};
+    if (type == QLatin1String("panorama")) {
+        PanoramaAction a;
+        a.angleDeg = c.number("angleDeg");
+        a.stepAngleDeg = c.numberOr("stepAngleDeg", a.stepAngleDeg);
+        a.stepDelaySeconds = c.numberOr("stepDelaySeconds", a.stepDelaySeconds);
+        a.direction = c.booleanOr("clockwise", true) ? RotationDirection::Clockwise : RotationDirection::CounterClockwise;
+        a.rotationSpeedDegPerSecond = c.numberOr("rotationSpeedDegPerSecond", a.rotationSpeedDegPerSecond);
+        a.mode = c.booleanOr("video", false) ? PanoramaMode::Video : PanoramaMode::Photo;
+        return a;
+    }
+    if (type == QLatin1String("opaque")) {
+        auto def = takeOrigin<pb::ActionDefinition>(c);
+        if (!def)
+            c.fail(QStringLiteral("an opaque action needs its \"hci\" definition"));
+        return OpaqueAction{c.stringOr("description", QStringLiteral("Action")), std::move(def)};
+    }
+    c.at("type").fail(QStringLiteral("unknown action type \"%1\"").arg(type));
+}
+
+const std::string kNone;
+
+AltitudeType altitudeTypeAt(const JsonCursor &c, const char *key)
+{
+    const std::string &v = c.text(key, kNone);
+    if (v == "AGL")
+        return AltitudeType::Agl;
+    if (v == "AMSL")
+        return AltitudeType::Amsl;
+    c.failAt(key, v.empty() ? QStringLiteral("missing \"AGL\" or \"AMSL\"") : QStringLiteral("expected \"AGL\" or \"AMSL\""));
+}
+
+// Enum names are compared as UTF-8 bytes: no QString per field on the hot path of a big file.
+template<typename E, size_t N>
+E enumAt(const JsonCursor &c, const char *key, const char *fallback, const std::pair<const char *, E> (&names)[N])
+{
+    static const std::string none;
+    const std::string &v = c.text(key, none);
+    const std::string_view s = v.empty() && !c.find(key) ? std::string_view(fallback) : std::string_view(v);
+    for (const auto &[name, value] : names)
+        if (s == name)
+            return value;
+    c.failAt(key, QStringLiteral("unknown value \"%1\"").arg(QString::fromStdString(v)));
+}
+
+constexpr std::pair<const char *, WaypointRole> kRoles[] = {
+    {"waypoint", WaypointRole::Pass}, {"takeoff", WaypointRole::Takeoff}, {"land", WaypointRole::Land}};
+constexpr std::pair<const char *, TurnType> kTurns[] = {
+    {"StopAndTurn", TurnType::StopAndTurn}, {"Straight", TurnType::Straight}, {"Spline", TurnType::Spline}, {"BankTurn", TurnType::BankTurn}};
+
+Json segmentJson(const Segment &s)
+{
+    if (const Waypoint *w = asWaypoint(s)) {
+        Json j{{"type", "waypoint"}, {"role", str(roleName(w->role))}, {"latitude", w->position.latitude},
+               {"longitude", w->position.longitude}, {"altitude", w->altitude}, {"altitudeType", str(altitudeTypeName(w->altitudeType))},
+               {"speed", w->speed}, {"turnType", str(turnTypeName(w->turnType))}, {"acceptanceRadius", w->acceptanceRadius}};
+        if (!w->actions.empty()) {
+            Json actions = Json::array();
+            for (const auto &a : w->actions)
+                actions.push_back(actionJson(a));
+            j["actions"] = std::move(actions);
+        }
+        putOrigin(j, w->origin.message);
+        return j;
+    }
+    const AreaScan &scan = std::get<AreaScan>(s);
+    const AreaScanParameters &p = scan.parameters;
+    Json polygon = Json::array();
+    for (const GeoPoint &g : scan.polygon)
+        polygon.push_back({g.latitude, g.longitude});
+    Json j{{"type", "areaScan"}, {"polygon", std::move(polygon)},
+           {"camera", {{"name", str(p.camera.name)}, {"sensorWidthMm", p.camera.sensorWidthMm}, {"sensorHeightMm", p.camera.sensorHeightMm},
+                       {"focalLengthMm", p.camera.focalLengthMm}, {"imageWidthPx", p.camera.imageWidthPx}, {"imageHeightPx", p.camera.imageHeightPx}}},
+           {"heightMode", p.heightMode == ScanHeightMode::Altitude ? "altitude" : "groundSampleDistance"},
+           {"altitude", p.altitude}, {"groundSampleDistanceCm", p.groundSampleDistanceCm}, {"altitudeType", str(altitudeTypeName(p.altitudeType))},
+           {"frontOverlapPercent", p.frontOverlapPercent}, {"sideOverlapPercent", p.sideOverlapPercent}, {"directionDeg", p.directionDeg},
+           {"turnaroundMeters", p.turnaroundMeters}, {"speed", p.speed}};
+    putOrigin(j, scan.origin.message);
+    return j;
+}
+
+Segment readSegment(const JsonCursor &c)
+{
+    c.requireObject();
+    const std::string &type = c.text("type", kNone);
+    if (type == "waypoint") {
+        Waypoint w;
+        w.role = enumAt(c, "role", "waypoint", kRoles);
+        w.position = {c.number("latitude"), c.number("longitude")};
+        if (!(w.position.latitude >= -90 && w.position.latitude <= 90))
+            c.failAt("latitude", QStringLiteral("latitude out of range"));
+        if (!w.position.isValid())
+            c.failAt("longitude", QStringLiteral("longitude out of range"));
+        w.altitude = c.number("altitude");
+        w.altitudeType = altitudeTypeAt(c, "altitudeType");
+        w.speed = c.number("speed");
+        w.turnType = enumAt(c, "turnType", "StopAndTurn", kTurns);
+        w.acceptanceRadius = c.numberOr("acceptanceRadius", 0);
+        if (const auto actions = c.find("actions"))
+            for (size_t i = 0; i < actions->arraySize(); ++i)
+                w.actions.push_back(readAction(actions->at(i)));
+        w.origin.message = takeOrigin<pb::SegmentDefinition>(c);
+        return w;
+    }
+    if (type == "areaScan") {
+        AreaScan s;
+        const JsonCursor polygon = c.at("polygon");
+        for (size_t i = 0; i < polygon.arraySize(); ++i) {
+            const JsonCursor v = polygon.at(i);
+            const GeoPoint g{v.at(size_t(0)).number(), v.at(size_t(1)).number()};
+            if (!g.isValid())
+                v.fail(QStringLiteral("latitude/longitude out of range"));
+            s.polygon.push_back(g);
+        }
+        AreaScanParameters &p = s.parameters;
+        const JsonCursor cam = c.at("camera");
+        p.camera.name = cam.stringOr("name", QString());
+        p.camera.sensorWidthMm = cam.number("sensorWidthMm");
+        p.camera.sensorHeightMm = cam.number("sensorHeightMm");
+        p.camera.focalLengthMm = cam.number("focalLengthMm");
+        p.camera.imageWidthPx = cam.at("imageWidthPx").integer();
+        p.camera.imageHeightPx = cam.at("imageHeightPx").integer();
+        const QString mode = c.stringOr("heightMode", QStringLiteral("altitude"));
+        if (mode != QLatin1String("altitude") && mode != QLatin1String("groundSampleDistance"))
+            c.at("heightMode").fail(QStringLiteral("expected \"altitude\" or \"groundSampleDistance\""));
+        p.heightMode = mode == QLatin1String("altitude") ? ScanHeightMode::Altitude : ScanHeightMode::GroundSampleDistance;
+        p.altitude = c.number("altitude");
+        p.groundSampleDistanceCm = c.numberOr("groundSampleDistanceCm", p.groundSampleDistanceCm);
+        p.altitudeType = altitudeTypeAt(c, "altitudeType");
+        p.frontOverlapPercent = c.number("frontOverlapPercent");
+        p.sideOverlapPercent = c.number("sideOverlapPercent");
+        p.directionDeg = c.numberOr("directionDeg", 0);
+        p.turnaroundMeters = c.numberOr("turnaroundMeters", 0);
+        p.speed = c.number("speed");
+        s.origin.message = takeOrigin<pb::SegmentDefinition>(c);
+        return s;
+    }
+    c.failAt("type", QStringLiteral("unknown segment type \"%1\"").arg(QString::fromStdString(type)));
+}
+
+Json routeJson(const Route &r)
+{
+    const RouteSettings &s = r.settings;
+    Json failsafes = Json::array();
+    for (const Failsafe &f : s.failsafes)
+        failsafes.push_back({{"reason", kReasons[int(f.reason)]}, {"action", kActions[int(f.action)]}});
+    Json j{{"name", str(s.name)},
+           {"vehicleProfile", {{"name", str(s.profile.name)}, {"maxHorizontalSpeed", s.profile.maxHorizontalSpeed},
+                               {"climbRate", s.profile.climbRate}, {"descentRate", s.profile.descentRate}}},
+           {"safeAltitude", s.safeAltitude}, {"maxAltitude", s.maxAltitude}, {"initialSpeed", s.initialSpeed},
+           {"maxSpeed", s.maxSpeed}, {"cornerRadius", s.cornerRadius}, {"takeoffHeight", s.takeoffHeight},
+           {"failsafes", std::move(failsafes)}, {"endAction", s.endAction == EndAction::ReturnHome ? "returnHome" : "none"}};
+    if (s.home)
+        j["home"] = {{"latitude", s.home->position.latitude}, {"longitude", s.home->position.longitude}, {"altitudeAmsl", s.home->altitudeAmsl}};
+    putOrigin(j, r.origin.message);
+    Json segments = Json::array();
+    for (const Segment &seg : r.segments)
+        segments.push_back(segmentJson(seg));
+    j["segments"] = std::move(segments);
+    return j;
+}
+
+Route readRoute(const JsonCursor &c)
+{
+    c.requireObject();
+    Route r;
+    RouteSettings &s = r.settings;
+    s.name = c.stringOr("name", QString());
+    if (const auto p = c.find("vehicleProfile")) {
+        s.profile.name = p->stringOr("name", QString());
+        s.profile.maxHorizontalSpeed = p->numberOr("maxHorizontalSpeed", 0);
+        s.profile.climbRate = p->numberOr("climbRate", s.profile.climbRate);
+        s.profile.descentRate = p->numberOr("descentRate", s.profile.descentRate);
+    }
+    s.safeAltitude = c.numberOr("safeAltitude", s.safeAltitude);
+    s.maxAltitude = c.numberOr("maxAltitude", s.maxAltitude);
+    s.initialSpeed = c.numberOr("initialSpeed", s.initialSpeed);
+    s.maxSpeed = c.numberOr("maxSpeed", s.maxSpeed);
+    s.cornerRadius = c.numberOr("cornerRadius", 0);
+    s.takeoffHeight = c.numberOr("takeoffHeight", 0);
+    if (const auto f = c.find("failsafes"))
+        for (size_t i = 0; i < f->arraySize(); ++i)
+            s.failsafes.push_back({FailsafeReason(indexOf(kReasons, f->at(i).at("reason"))), FailsafeAction(indexOf(kActions, f->at(i).at("action")))});
+    const QString end = c.stringOr("endAction", QStringLiteral("none"));
+    if (end != QLatin1String("none") && end != QLatin1String("returnHome"))
+        c.at("endAction").fail(QStringLiteral("expected \"none\" or \"returnHome\""));
+    s.endAction = end == QLatin1String("returnHome") ? EndAction::ReturnHome : EndAction::None;
+    if (const auto h = c.find("home"))
+        s.home = HomePosition{{h->number("latitude"), h->number("longitude")}, h->number("altitudeAmsl")};
+    r.origin.message = takeOrigin<pb::Route>(c);
+    const JsonCursor segments = c.at("segments");
+    const size_t n = segments.arraySize();
+    r.segments.reserve(n);
+    for (size_t i = 0; i < n; ++i)
+        r.segments.push_back(readSegment(segments.at(i)));
+    return r;
+}
+}
+
+QByteArray writeSortie(const Mission &mission)
+{
+    Json routes = Json::array();
+    for (const Route &r : mission.routes)
+        routes.push_back(routeJson(r));
+    Json m{{"name", str(mission.name)}, {"description", str(mission.description)}};
+    putOrigin(m, mission.origin.message);
+    m["routes"] = std::move(routes);
+    const Json doc{{"format", "sortie-mission"}, {"schemaVersion", kSortieSchemaVersion}, {"mission", std::move(m)}};
+    return QByteArray::fromStdString(doc.dump(1)) + '\n';
+}
+
+Result<Mission> readSortie(const QByteArray &data)
+{
+    Result<Json> parsed = parseJson(data);
+    if (!parsed)
+        return parsed.error();
+    Json doc = std::move(parsed).value();
+    try {
+        const JsonCursor root(doc);
+        root.requireObject();
+        if (root.stringOr("format", QString()) != QLatin1String("sortie-mission"))
+            root.fail(QStringLiteral("not a Sortie mission file (\"format\" is not \"sortie-mission\")"));
+        const int version = root.at("schemaVersion").integer();
+        if (version < 1)
+            root.at("schemaVersion").fail(QStringLiteral("schema version %1 does not exist").arg(version));
+        if (version > kSortieSchemaVersion)
+            root.at("schemaVersion").fail(QStringLiteral("written by a newer Sortie (schema %1); this one reads up to schema %2")
+                                             .arg(version).arg(kSortieSchemaVersion));
+        if (version < kSortieSchemaVersion)
+            migrateSortie(doc, version);
+        const JsonCursor m = JsonCursor(doc).at("mission");
+        Mission mission;
+        mission.name = m.stringOr("name", QString());
+        mission.description = m.stringOr("description", QString());
+        mission.origin.message = takeOrigin<pb::Mission>(m);
+        const JsonCursor routes = m.at("routes");
+        for (size_t i = 0; i < routes.arraySize(); ++i)
+            mission.routes.push_back(readRoute(routes.at(i)));
+        return mission;
+    } catch (const JsonPathError &e) {
+        return errorAt(e);
+    }
+}
+
+} // namespace sortie::mission::formats

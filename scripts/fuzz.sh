@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Builds every libFuzzer target (tests/fuzz/fuzz_*.cpp) with clang under ASan and UBSan and runs each
+# for a bounded time on its seed corpus. Usage: scripts/fuzz.sh [seconds per target, default 30]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds="${1:-30}"
+build="${SORTIE_FUZZ_BUILD_DIR:-build-fuzz}"
+CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DSORTIE_FUZZ=ON -DSORTIE_SANITIZE=ON -DSORTIE_BUILD_UI=OFF -DBUILD_TESTING=ON \
+  -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link" >/dev/null
+targets=$(find tests/fuzz -maxdepth 1 -name 'fuzz_*.cpp' -printf '%f\n' | sed 's/\.cpp$//' | sort)
+cmake --build "$build" --target $targets
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+failed=0
+for t in $targets; do
+  corpus="tests/fuzz/${t#fuzz_}-corpus"
+  work=$(mktemp -d)
+  [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
+  echo "== $t: ${seconds}s on $(ls "$work" | wc -l) seeds"
+  if "$build/tests/fuzz/$t" -max_total_time="$seconds" -print_final_stats=1 -max_len=65536 "$work" \
+       > "$work.log" 2>&1; then
+    grep -E 'stat::number_of_executed_units|Done' "$work.log" | tail -2
+  else
+    failed=1
+    tail -40 "$work.log"
+  fi
+  rm -rf "$work" "$work.log"
+done
+[ "$failed" = 0 ] && echo "fuzz: all targets clean" || { echo "fuzz: a target failed"; exit 1; }

@@ -1,0 +1,107 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace sortie::sim {
+
+// A simulated multicopter: enough physics for a ground station to watch it arm, climb, fly a route,
+// hold, land and come home. Pure C++ (no Qt, no I/O): the HCI server and the VCI vehicles tick it and
+// translate its state into their own telemetry. Angles in degrees here; protocols convert at their edge.
+class FlightModel
+{
+public:
+    enum class Mode { Manual, Hold, Takeoff, Auto, Guided, Land, ReturnHome };
+
+    struct Waypoint
+    {
+        double latitude = 0;   // degrees
+        double longitude = 0;  // degrees
+        double altitudeAgl = 0;// metres above the home point
+        double speed = 0;      // m/s; 0 means the model's cruise speed
+    };
+
+    struct State
+    {
+        double latitude = 0, longitude = 0; // degrees
+        double altitudeAgl = 0;             // metres above home ground
+        double groundElevation = 0;         // metres AMSL of the home ground
+        double heading = 0;                 // degrees, 0 = north, clockwise
+        double groundSpeed = 0, verticalSpeed = 0; // m/s, vertical positive up
+        double roll = 0, pitch = 0;         // degrees
+        double batteryVoltage = 0;          // volts
+        double batteryRemaining = 1;        // 0..1
+        int satellites = 0;
+        int gpsFix = 0;                     // 0 none, 2 2D, 3 3D
+        bool armed = false;
+        Mode mode = Mode::Manual;
+        int currentWaypoint = -1;           // index in the mission while flying it, else -1
+        double homeLatitude = 0, homeLongitude = 0;
+        double altitudeAmsl() const { return groundElevation + altitudeAgl; }
+        bool airborne() const { return altitudeAgl > 0.2; }
+    };
+
+    // Why a command was refused; empty when it was accepted.
+    using Refusal = std::string;
+
+    struct Limits
+    {
+        double cruiseSpeed = 8;      // m/s
+        double maxSpeed = 15;        // m/s
+        double climbRate = 3;        // m/s
+        double descentRate = 2;      // m/s
+        double yawRate = 90;         // deg/s
+        double acceptanceRadius = 2; // m
+        double takeoffAltitude = 20; // m AGL when none is given
+        double returnAltitude = 40;  // m AGL for return-home
+        double batteryEndurance = 1500; // s of armed time from full to empty
+    };
+
+    FlightModel(double homeLatitude, double homeLongitude, double groundElevation);
+    FlightModel(double homeLatitude, double homeLongitude, double groundElevation, Limits limits);
+
+    const State &state() const { return m_state; }
+    const Limits &limits() const { return m_limits; }
+    const std::vector<Waypoint> &mission() const { return m_mission; }
+    uint64_t missionVersion() const { return m_missionVersion; }
+
+    Refusal arm();
+    Refusal disarm();
+    Refusal takeoff(double altitudeAgl = 0);
+    Refusal setMission(std::vector<Waypoint> waypoints);
+    Refusal startMission();   // Auto: fly the mission from its first waypoint
+    Refusal pause();          // Hold where it is
+    Refusal resume();         // back to Auto from the waypoint it was flying to
+    Refusal land();
+    Refusal returnHome();
+    Refusal goTo(double latitude, double longitude, double altitudeAgl, double speed = 0); // click-and-go
+    Refusal manual();
+    Refusal setMode(Mode mode); // generic entry used by protocols that set a mode by name
+
+    // Advances the simulation by dt seconds (any step; smaller is smoother).
+    void tick(double dt);
+
+    static const char *modeName(Mode mode);
+    static bool modeFromName(const std::string &name, Mode *mode);
+
+private:
+    bool flyTowards(double lat, double lon, double altAgl, double speed, double dt); // true when arrived
+    void climbTo(double altAgl, double dt);
+    void turnTowards(double bearing, double dt);
+
+    Limits m_limits;
+    State m_state;
+    std::vector<Waypoint> m_mission;
+    uint64_t m_missionVersion = 0;
+    Waypoint m_target; // Guided target or Takeoff altitude
+    double m_armedSeconds = 0;
+};
+
+// Spherical-earth helpers good to a few metres over a simulated flight (the mission model has the
+// WGS-84 geodesics the planner needs).
+double sphericalDistance(double lat1, double lon1, double lat2, double lon2);       // metres
+double sphericalBearing(double lat1, double lon1, double lat2, double lon2);        // degrees
+void sphericalDestination(double lat, double lon, double bearing, double distance, double *outLat, double *outLon);
+
+} // namespace sortie::sim

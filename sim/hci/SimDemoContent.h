@@ -1,0 +1,30 @@
+#pragma once
+
+#include <QList>
+#include <QString>
+
+namespace sortie::sim {
+
+class SimObjectStore;
+class SimUsers;
+
+// The objects a fresh simulator offers, named like UgCS's emulator: the "EMU Copter" profile, vehicles
+// EMU-101, EMU-102, EMU-103 near Riga, the Waypoint traverse algorithm, the users, and a demo mission
+// with one route. Objects already in the store (loaded from a file) are kept, matched by name.
+class SimDemoContent
+{
+public:
+    struct VehicleHome
+    {
+        QString name;
+        double latitude;  // degrees
+        double longitude; // degrees
+    };
+    static QList<VehicleHome> vehicleHomes(int count);
+
+    // Returns the object ids of the vehicles, in order.
+    static QList<int> seed(SimObjectStore &store, const SimUsers &users, int vehicleCount, double groundElevation,
+                           bool demoMission, qint64 nowMs);
+};
+
+} // namespace sortie::sim

@@ -1,0 +1,64 @@
+#include "SimVehicle.h"
+
+#include "Messages.pb.h"
+#include "SimCommands.h"
+#include "SimRouteProcessor.h"
+
+namespace sortie::sim {
+
+SimVehicle::SimVehicle(const pb::Vehicle &vehicle, FlightModel model, double telemetryRateHz)
+    : m_vehicle(std::make_unique<pb::Vehicle>(vehicle))
+    , m_reference(std::make_unique<pb::Vehicle>())
+    , m_model(std::move(model))
+    , m_telemetry(telemetryRateHz)
+{
+    m_reference->set_id(vehicle.id());
+    m_reference->set_name(vehicle.name());
+    m_reference->set_tailnumber(vehicle.tailnumber());
+    m_availability = SimCommands::availability(m_model);
+}
+
+SimVehicle::~SimVehicle() = default;
+
+int SimVehicle::id() const
+{
+    return m_vehicle->id();
+}
+
+bool SimVehicle::tick(double dt, qint64 nowMs, pb::TelemetryEvent *event)
+{
+    m_model.tick(dt);
+    *event->mutable_vehicle() = *m_reference;
+    m_telemetry.record(nowMs, m_model.state(), event);
+    const quint32 availability = SimCommands::availability(m_model);
+    return std::exchange(m_availability, availability) != availability;
+}
+
+std::vector<pb::CommandDefinition> SimVehicle::commands() const
+{
+    return SimCommands::definitions(*m_reference, m_model);
+}
+
+pb::VehicleCommandResultDto SimVehicle::execute(const pb::Command &command)
+{
+    pb::VehicleCommandResultDto result;
+    *result.mutable_vehicle() = *m_reference;
+    const auto outcome = SimCommands::execute(m_model, command);
+    result.set_commandstatus(pb::CommandStatus(outcome.status));
+    if (!outcome.error.isEmpty())
+        result.set_errormessage(outcome.error.toStdString());
+    return result;
+}
+
+QString SimVehicle::upload(const pb::ProcessedRoute &route)
+{
+    QString error;
+    auto plan = SimRouteProcessor::flightPlan(route, m_model.state().groundElevation, &error);
+    if (plan.empty())
+        return error;
+    const auto refusal = m_model.setMission(std::move(plan));
+    return refusal.empty() ? QString() : QStringLiteral("%1 refused the route: %2")
+                                             .arg(QString::fromStdString(m_vehicle->name()), QString::fromStdString(refusal));
+}
+
+} // namespace sortie::sim

@@ -1,0 +1,151 @@
+#include "SimVehicleService.h"
+
+#include "HciRequestDispatcher.h"
+#include "HciServerConnection.h"
+#include "Messages.pb.h"
+#include "SimRouteProcessor.h"
+#include "SimSessionTable.h"
+#include "SimVehicle.h"
+#include "SimWorld.h"
+
+#include <QTimer>
+
+namespace sortie::sim {
+
+SimVehicleService::SimVehicleService(SimServices services)
+    : m_s(services)
+{
+}
+
+void SimVehicleService::install(HciRequestDispatcher &d)
+{
+    using A = HciRequestDispatcher::Access;
+    d.add(pb::SendCommandRequest::default_instance(), A::LoggedIn, [this](SimCall &c) { sendCommand(c); });
+    d.add(pb::UploadRouteRequest::default_instance(), A::LoggedIn, [this](SimCall &c) { uploadRoute(c); });
+    d.add(pb::ProcessRouteRequest::default_instance(), A::LoggedIn, [this](SimCall &c) { processRoute(c); });
+    d.add(pb::GetTelemetryRequest::default_instance(), A::LoggedIn, [this](SimCall &c) { telemetry(c); });
+}
+
+QString SimVehicleService::lockedBy(const SimCall &call, int vehicleId) const
+{
+    const auto owner = m_s.world.locks().holder(QStringLiteral("Vehicle"), vehicleId);
+    if (!owner || owner->clientId == call.session->clientId)
+        return {};
+    return owner->login;
+}
+
+void SimVehicleService::sendCommand(SimCall &call)
+{
+    const auto &r = static_cast<const pb::SendCommandRequest &>(call.request);
+    // Either one command for a list of vehicles, or a list of commands per vehicle.
+    std::vector<std::pair<int, std::vector<const pb::Command *>>> work;
+    if (r.has_command())
+        for (const auto &v : r.vehicles())
+            work.push_back({v.id(), {&r.command()}});
+    for (const auto &dto : r.commands()) {
+        std::vector<const pb::Command *> commands;
+        for (const auto &c : dto.commands())
+            commands.push_back(&c);
+        work.push_back({dto.vehicle().id(), std::move(commands)});
+    }
+    if (work.empty()) {
+        call.respond.error(QStringLiteral("SendCommandRequest names no command or no vehicle"));
+        return;
+    }
+    for (const auto &[id, commands] : work)
+        if (!m_s.world.vehicle(id)) {
+            call.respond.error(QStringLiteral("Vehicle %1 does not exist").arg(id));
+            return;
+        }
+
+    pb::SendCommandResponse response;
+    for (const auto &[id, commands] : work) {
+        SimVehicle *vehicle = m_s.world.vehicle(id);
+        pb::VehicleCommandResultDto result;
+        if (const QString owner = lockedBy(call, id); !owner.isEmpty()) {
+            *result.mutable_vehicle() = vehicle->reference();
+            result.set_commandstatus(pb::CS_REJECTED);
+            result.set_errormessage(QStringLiteral("%1 is locked by user '%2' in another session")
+                                        .arg(QString::fromStdString(vehicle->vehicle().name()), owner).toStdString());
+        } else {
+            for (const pb::Command *command : commands) {
+                result = vehicle->execute(*command);
+                if (result.commandstatus() != pb::CS_SUCCEEDED)
+                    break;
+            }
+        }
+        *response.add_commandresults() = std::move(result);
+    }
+    call.respond.reply(response);
+}
+
+void SimVehicleService::uploadRoute(SimCall &call)
+{
+    const auto &r = static_cast<const pb::UploadRouteRequest &>(call.request);
+    SimVehicle *vehicle = m_s.world.vehicle(r.vehicle().id());
+    if (!vehicle) {
+        call.respond.error(QStringLiteral("Vehicle %1 does not exist").arg(r.vehicle().id()));
+        return;
+    }
+    if (const QString owner = lockedBy(call, vehicle->id()); !owner.isEmpty()) {
+        call.respond.error(QStringLiteral("%1 is locked by user '%2' in another session")
+                               .arg(QString::fromStdString(vehicle->vehicle().name()), owner));
+        return;
+    }
+    QString error;
+    const auto plan = SimRouteProcessor::flightPlan(r.processedroute(), vehicle->model().state().groundElevation, &error);
+    if (plan.empty()) {
+        call.respond.error(error);
+        return;
+    }
+    // The transfer takes a while, as to a real autopilot: one progress report per step, then the answer.
+    const int steps = std::clamp(int(plan.size()), 4, 20);
+    const QString title = QStringLiteral("Uploading route to %1").arg(QString::fromStdString(vehicle->vehicle().name()));
+    const int vehicleId = vehicle->id();
+    auto route = std::make_shared<pb::ProcessedRoute>(r.processedroute());
+    const SimResponder respond = call.respond;
+    SimWorld &world = m_s.world;
+    for (int step = 0; step <= steps; ++step) {
+        QTimer::singleShot(m_uploadStepMs * step, &call.connection, [=, &world] {
+            respond.progress(title, step, steps);
+            if (step < steps)
+                return;
+            SimVehicle *target = world.vehicle(vehicleId);
+            const QString refusal = target ? target->upload(*route) : QStringLiteral("The vehicle is gone");
+            if (refusal.isEmpty())
+                respond.reply(pb::UploadRouteResponse());
+            else
+                respond.error(refusal);
+        });
+    }
+}
+
+void SimVehicleService::processRoute(SimCall &call)
+{
+    const auto &r = static_cast<const pb::ProcessRouteRequest &>(call.request);
+    const auto &route = r.route();
+    SimRouteLimits limits;
+    if (route.vehicleprofile().parameters_size() > 0)
+        limits = SimRouteLimits::of(route.vehicleprofile());
+    else if (const auto *stored = m_s.world.store().find(QStringLiteral("VehicleProfile"), route.vehicleprofile().id()))
+        limits = SimRouteLimits::of(stored->vehicleprofile());
+    pb::ProcessRouteResponse response;
+    *response.mutable_processedroute() = SimRouteProcessor::process(route, limits, m_s.world.groundElevation());
+    response.set_hash(SimRouteProcessor::hash(route));
+    call.respond.reply(response);
+}
+
+void SimVehicleService::telemetry(SimCall &call)
+{
+    const auto &r = static_cast<const pb::GetTelemetryRequest &>(call.request);
+    const SimVehicle *vehicle = m_s.world.vehicle(r.vehicle().id());
+    if (!vehicle) {
+        call.respond.error(QStringLiteral("Vehicle %1 does not exist").arg(r.vehicle().id()));
+        return;
+    }
+    pb::GetTelemetryResponse response;
+    vehicle->telemetry().history(r.fromtime(), r.has_totime() ? r.totime() : SimWorld::now(), std::max(1, r.limit()), &response);
+    call.respond.reply(response);
+}
+
+} // namespace sortie::sim

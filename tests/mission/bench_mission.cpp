@@ -1,0 +1,141 @@
+// Mission benchmark: a 10,000-waypoint route saved and loaded as .sortie, its statistics and
+// validation, one waypoint move and its undo, and a 1 km² area scan. Prints each figure with its
+// target; exits 1 if a target is missed. Run: build/tests/mission/bench_mission
+#include "AreaScanPlanner.h"
+#include "LocalTangentPlane.h"
+#include "MissionFiles.h"
+#include "RouteAnalyzer.h"
+#include "RouteEditor.h"
+#include "RouteModel.h"
+#include "RouteStatistics.h"
+#include "RouteValidator.h"
+#include "SortieFormat.h"
+
+#include <QCoreApplication>
+#include <QElapsedTimer>
+#include <QTemporaryDir>
+#include <QUndoStack>
+
+#include <algorithm>
+#include <cstdio>
+#include <functional>
+#include <vector>
+
+using namespace sortie::mission;
+using namespace sortie::mission::formats;
+
+namespace {
+// Median wall time of `runs` runs, in milliseconds.
+double medianMs(int runs, const std::function<void()> &work)
+{
+    std::vector<double> t;
+    for (int i = 0; i < runs; ++i) {
+        QElapsedTimer timer;
+        timer.start();
+        work();
+        t.push_back(timer.nsecsElapsed() / 1e6);
+    }
+    std::sort(t.begin(), t.end());
+    return t[t.size() / 2];
+}
+
+bool report(const char *what, double ms, double targetMs)
+{
+    const bool ok = targetMs <= 0 || ms < targetMs;
+    if (targetMs > 0)
+        std::printf("%-44s %10.4f ms   (target < %g ms)%s\n", what, ms, targetMs, ok ? "" : "  MISSED");
+    else
+        std::printf("%-44s %10.4f ms\n", what, ms);
+    return ok;
+}
+
+Route bigRoute(int n)
+{
+    Route r;
+    r.settings.name = QStringLiteral("bench");
+    r.settings.maxAltitude = 200;
+    r.settings.profile.maxHorizontalSpeed = 15;
+    r.segments.reserve(size_t(n));
+    const LocalTangentPlane plane({56.95, 24.1});
+    for (int i = 0; i < n; ++i) {
+        // A lawnmower over ~5 x 5 km: 100 rows of 100 points, 50 m apart.
+        const int row = i / 100, col = (row % 2) ? 99 - i % 100 : i % 100;
+        Waypoint w;
+        w.position = plane.unproject({col * 50.0 - 2500, row * 50.0 - 2500});
+        w.altitude = 60 + (i % 7);
+        w.speed = 8;
+        w.turnType = TurnType::Straight;
+        if (i % 50 == 0)
+            w.actions = {WaitAction{2, false}, CameraSeriesByDistanceAction{20, 0, 0}};
+        r.segments.push_back(std::move(w));
+    }
+    return r;
+}
+}
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    constexpr int kWaypoints = 10000;
+    bool ok = true;
+    std::printf("Sortie mission benchmark (%d waypoints; median of repeated runs)\n", kWaypoints);
+
+    Route route;
+    report("build the route", medianMs(5, [&] { route = bigRoute(kWaypoints); }), 0);
+    Mission mission;
+    mission.routes.push_back(route);
+
+    QByteArray bytes;
+    report("encode .sortie", medianMs(5, [&] { bytes = writeSortie(mission); }), 0);
+    std::printf("%-44s %10.2f MB\n", ".sortie size", bytes.size() / 1e6);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("bench.sortie"));
+    report("save .sortie (validate, encode, write)", medianMs(5, [&] {
+        if (!saveMission(mission, path).ok()) std::abort();
+    }), 0);
+    Mission loaded;
+    ok &= report("load .sortie (read, parse, decode)", medianMs(9, [&] {
+        Result<LoadedMission> m = loadMission(path);
+        if (!m) std::abort();
+        loaded = std::move(m).value().mission;
+    }), 100);
+    if (!(loaded.routes.at(0).segments == route.segments))
+        std::printf("load did not give the route back\n"), ok = false;
+
+    ScanPlanCache cache;
+    RouteStatistics st;
+    ok &= report("statistics", medianMs(21, [&] { st = computeStatistics(route, &cache); }), 5);
+    std::printf("%-44s %10.1f km, %.0f s\n", "  length, flight time", st.lengthMeters / 1000, st.flightTimeSeconds);
+    ValidationReport vr;
+    ok &= report("validation", medianMs(21, [&] { vr = validateRoute(route, &cache); }), 5);
+    std::printf("%-44s %10d errors, %d warnings\n", "  result", vr.errorCount(), vr.warningCount());
+
+    RouteModel model;
+    QUndoStack stack;
+    RouteEditor editor(&model, &stack);
+    model.resetRoute(route);
+    RouteAnalyzer analyzer(&model);  // attached, as in the client: edits only schedule it
+    const int moves = 20000;
+    QElapsedTimer t;
+    t.start();
+    for (int i = 0; i < moves; ++i) {
+        const int row = (i * 7919) % kWaypoints;
+        const GeoPoint p = std::get<Waypoint>(model.segment(row)).position;
+        editor.moveWaypoint(row, p.latitude + 1e-5, p.longitude);
+        stack.undo();
+    }
+    ok &= report("move one waypoint and undo it", t.nsecsElapsed() / 1e6 / moves, 0.1);
+    if (!(model.route().segments == route.segments))
+        std::printf("undo did not restore the route\n"), ok = false;
+
+    AreaScan scan;
+    const LocalTangentPlane plane({56.95, 24.1});
+    for (const PlanePoint p : {PlanePoint{-500, -500}, PlanePoint{500, -500}, PlanePoint{500, 500}, PlanePoint{-500, 500}})
+        scan.polygon.push_back(plane.unproject(p));
+    scan.parameters.altitude = 60;
+    AreaScanOutcome outcome;
+    ok &= report("1 km² area scan", medianMs(21, [&] { outcome = planAreaScan(scan); }), 10);
+    std::printf("%-44s %10zu transects, %d photos\n", "  result", outcome.plan->transects.size(), outcome.plan->photoCount);
+    std::printf(ok ? "all targets met\n" : "TARGETS MISSED\n");
+    return ok ? 0 : 1;
+}

@@ -1,0 +1,247 @@
+// QGC WPL 110 and QGroundControl .plan: every sample from QGroundControl's test data imports,
+// round trips come back identical, and malformed files fail with the line or JSON path.
+#include "AreaScanPlanner.h"
+#include "MissionFiles.h"
+#include "MissionSamples.h"
+#include "QgcPlanFormat.h"
+#include "WplFormat.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace sortie::mission;
+using namespace sortie::mission::formats;
+using namespace sortie::mission::test;
+
+namespace {
+int countRole(const Route &r, WaypointRole role)
+{
+    int n = 0;
+    for (const auto &s : r.segments)
+        if (const Waypoint *w = asWaypoint(s); w && w->role == role)
+            ++n;
+    return n;
+}
+
+QString describe(const MissionError &e) { return e.toString(); }
+
+// WPL carries no route settings except home and the return: compare what it carries.
+Route wplView(Route r)
+{
+    RouteSettings s;
+    s.home = r.settings.home;
+    s.endAction = r.settings.endAction;
+    s.initialSpeed = kWplDefaultSpeed;
+    r.settings = s;
+    return r;
+}
+
+Route planView(Route r)
+{
+    RouteSettings s;
+    s.home = r.settings.home;
+    s.endAction = r.settings.endAction;
+    s.initialSpeed = r.settings.initialSpeed;
+    r.settings = s;
+    return r;
+}
+}
+
+class TestQgcFormats : public QObject
+{
+    Q_OBJECT
+private slots:
+    void samplesImport_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("segments");
+        QTest::addColumn<int>("takeoffs");
+        QTest::addColumn<int>("landings");
+        QTest::addColumn<bool>("returnsHome");
+        QTest::addColumn<int>("notices");
+        QTest::newRow("Mission Planner") << "MissionPlanner.waypoints" << 5 << 0 << 0 << false << 1;
+        QTest::newRow("Mission Planner, many commands") << "MissionPlanner.waypoints.txt" << 11 << 1 << 1 << false << 4;
+        QTest::newRow("100 waypoints") << "100Waypoints.waypoints.txt" << 98 << 1 << 0 << false << 1;
+        QTest::newRow("800 waypoints") << "800Waypoints.waypoints.txt" << 825 << 1 << 0 << true << 1;
+        QTest::newRow("plan") << "SectionTest.plan" << 4 << 1 << 0 << false << 2;
+    }
+    void samplesImport()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, segments);
+        QFETCH(int, takeoffs);
+        QFETCH(int, landings);
+        QFETCH(bool, returnsHome);
+        QFETCH(int, notices);
+        const Result<LoadedMission> m = loadMission(samplePath(file));
+        QVERIFY2(m.ok(), m.ok() ? "" : qPrintable(describe(m.error())));
+        const Route &r = m->mission.routes.at(0);
+        QCOMPARE(int(r.segments.size()), segments);
+        QCOMPARE(countRole(r, WaypointRole::Takeoff), takeoffs);
+        QCOMPARE(countRole(r, WaypointRole::Land), landings);
+        QCOMPARE(r.settings.endAction == EndAction::ReturnHome, returnsHome);
+        QVERIFY(r.settings.home.has_value());
+        QCOMPARE(m->notices.size(), notices);
+        QCOMPARE(r.settings.name, QFileInfo(file).completeBaseName());
+        // Import -> export -> import gives the same route.
+        const bool plan = file.endsWith(QStringLiteral(".plan"));
+        const QByteArray again = plan ? writeQgcPlan(r) : writeWpl(r);
+        const Result<ImportedRoute> back = plan ? readQgcPlan(again) : readWpl(again);
+        QVERIFY2(back.ok(), back.ok() ? "" : qPrintable(describe(back.error())));
+        QVERIFY(plan ? planView(back->route) == planView(r) : wplView(back->route) == wplView(r));
+    }
+
+    void missionPlannerDetails()
+    {
+        const Result<ImportedRoute> r = readWpl(readSample(QStringLiteral("MissionPlanner.waypoints.txt")));
+        QVERIFY(r.ok());
+        const Route &route = r->route;
+        QCOMPARE(route.settings.home->altitudeAmsl, 1543.079956);
+        const auto &takeoff = std::get<Waypoint>(route.segments[0]);
+        QCOMPARE(takeoff.role, WaypointRole::Takeoff);
+        QVERIFY(takeoff.position == route.settings.home->position);  // 0,0 means here
+        QCOMPARE(takeoff.altitude, 30.0);
+        // DO_CHANGE_SPEED 15 m/s (line 12) applies to the waypoints after it.
+        QCOMPARE(std::get<Waypoint>(route.segments[7]).speed, 5.0);
+        QCOMPARE(std::get<Waypoint>(route.segments[8]).speed, 15.0);
+        QVERIFY(r->notices.join(' ').contains(QStringLiteral("line 9: DO_JUMP is not supported")));
+        QVERIFY(r->notices.join(' ').contains(QStringLiteral("line 13: DO_LAND_START")));
+        QVERIFY(r->notices.join(' ').contains(QStringLiteral("NAV_LOITER_TURNS was imported as a plain waypoint")));
+    }
+
+    void planDetails()
+    {
+        const Result<ImportedRoute> r = readQgcPlan(readSample(QStringLiteral("SectionTest.plan")));
+        QVERIFY(r.ok());
+        QCOMPARE(r->route.settings.initialSpeed, 5.0);  // hoverSpeed of a multirotor
+        QCOMPARE(r->route.settings.home->position.latitude, 47.633389756176875);
+        const auto &w = std::get<Waypoint>(r->route.segments[1]);
+        QCOMPARE(w.position.latitude, 47.63369112);
+        QCOMPARE(w.altitude, 20.0);
+        QCOMPARE(w.altitudeType, AltitudeType::Agl);
+        QVERIFY(r->notices.join(' ').contains(QStringLiteral("/mission/items/3: command 205 is not supported")));
+    }
+
+    void wplRoundTripIsIdentical()
+    {
+        const Route r = mavlinkRoute();
+        QStringList notices;
+        const QByteArray text = writeWpl(r, &notices);
+        const Result<ImportedRoute> back = readWpl(text);
+        QVERIFY2(back.ok(), back.ok() ? "" : qPrintable(describe(back.error())));
+        QVERIFY(wplView(back->route) == wplView(r));
+        QCOMPARE(writeWpl(back->route), text);
+        QVERIFY(text.startsWith("QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t56.9512345678901\t24.1023456789012\t12.5\t1\n"));
+    }
+
+    void planRoundTripIsIdentical()
+    {
+        Route r = mavlinkRoute();
+        r.segments.insert(r.segments.begin() + 3, squareScan({56.953, 24.11}, 400, 55));
+        AreaScan gsd = squareScan({56.956, 24.12}, 300);
+        gsd.parameters.heightMode = ScanHeightMode::GroundSampleDistance;
+        gsd.parameters.groundSampleDistanceCm = 1.5;
+        gsd.parameters.directionDeg = 33;
+        gsd.parameters.altitudeType = AltitudeType::Amsl;
+        gsd.parameters.speed = 5;
+        syncDerivedFields(gsd.parameters);
+        r.segments.push_back(gsd);
+        r.settings.endAction = EndAction::ReturnHome;
+        QStringList notices;
+        const QByteArray text = writeQgcPlan(r, &notices);
+        const Result<ImportedRoute> back = readQgcPlan(text);
+        QVERIFY2(back.ok(), back.ok() ? "" : qPrintable(describe(back.error())));
+        QVERIFY(planView(back->route) == planView(r));
+        QCOMPARE(writeQgcPlan(back->route), text);
+    }
+
+    void wplExpandsScans()
+    {
+        Route r = mavlinkRoute();
+        r.segments.insert(r.segments.begin() + 2, squareScan({56.953, 24.11}, 300, 55));
+        QStringList notices;
+        const Result<ImportedRoute> back = readWpl(writeWpl(r, &notices));
+        QVERIFY(back.ok());
+        const AreaScanOutcome o = planAreaScan(std::get<AreaScan>(r.segments[2]));
+        QCOMPARE(int(back->route.segments.size()), int(r.segments.size()) - 1 + int(o.plan->path.size()));
+        QVERIFY(notices.join(' ').contains(QStringLiteral("Area scan 3 was written as")));
+    }
+
+    void brokenWplNamesTheLine_data()
+    {
+        QTest::addColumn<QByteArray>("text");
+        QTest::addColumn<int>("line");
+        QTest::addColumn<QString>("words");
+        const QByteArray home = "0\t1\t0\t16\t0\t0\t0\t0\t47.1\t8.5\t400\t1\n";
+        QTest::newRow("header") << QByteArray("QGC WPL 100\n") << 1 << "unsupported";
+        QTest::newRow("not wpl") << QByteArray("hello\n") << 1 << "not a waypoint file";
+        QTest::newRow("fields") << QByteArray("QGC WPL 110\n" + home + "1\t0\t3\t16\t0\t0\t0\n") << 3 << "12 tab-separated";
+        QTest::newRow("number") << QByteArray("QGC WPL 110\n" + home + "1\t0\t3\t16\t0\t0\t0\t0\t47.2\tabc\t50\t1\n") << 3 << "longitude";
+        QTest::newRow("sequence") << QByteArray("QGC WPL 110\n" + home + "2\t0\t3\t16\t0\t0\t0\t0\t47.2\t8.6\t50\t1\n") << 3 << "item 2 where item 1";
+        QTest::newRow("frame") << QByteArray("QGC WPL 110\n" + home + "1\t0\t7\t16\t0\t0\t0\t0\t47.2\t8.6\t50\t1\n") << 3 << "frame 7";
+        QTest::newRow("no position") << QByteArray("QGC WPL 110\n" + home + "1\t0\t3\t16\t0\t0\t0\t0\t0\t0\t50\t1\n") << 3 << "no position";
+        QTest::newRow("after rtl") << QByteArray("QGC WPL 110\n" + home + "1\t0\t3\t20\t0\t0\t0\t0\t0\t0\t0\t1\n2\t0\t3\t16\t0\t0\t0\t0\t47.2\t8.6\t50\t1\n") << 4 << "after RETURN_TO_LAUNCH";
+        QTest::newRow("range") << QByteArray("QGC WPL 110\r\n" + home + "1\t0\t3\t16\t0\t0\t0\t0\t147.2\t8.6\t50\t1\r\n") << 3 << "not a position";
+    }
+    void brokenWplNamesTheLine()
+    {
+        QFETCH(QByteArray, text);
+        QFETCH(int, line);
+        QFETCH(QString, words);
+        const Result<ImportedRoute> r = readWpl(text);
+        QVERIFY(!r.ok());
+        QCOMPARE(r.error().line, line);
+        QVERIFY2(r.error().message.contains(words), qPrintable(r.error().message));
+    }
+
+    void brokenPlanNamesThePath_data()
+    {
+        QTest::addColumn<QByteArray>("from");
+        QTest::addColumn<QByteArray>("to");
+        QTest::addColumn<QString>("path");
+        QTest::newRow("file type") << QByteArray("\"fileType\": \"Plan\"") << QByteArray("\"fileType\": \"Fence\"") << "/fileType";
+        QTest::newRow("params") << QByteArray("\"params\": [\n                    0,\n                    0,\n                    0,\n                    null\n                ],\n                \"type\": \"SimpleItem\"\n            },\n            {\n                \"autoContinue\": true,\n                \"command\": 16")
+                                << QByteArray("\"params\": [0, 0],\n                \"type\": \"SimpleItem\"\n            },\n            {\n                \"autoContinue\": true,\n                \"command\": 16") << "/mission/items/0/params";
+        QTest::newRow("complex") << QByteArray("\"type\": \"SimpleItem\"\n            }\n        ],") << QByteArray("\"type\": \"SimpleItem\"\n            },\n {\"type\": \"ComplexItem\", \"complexItemType\": \"CorridorScan\"}        ],") << "/mission/items/5/complexItemType";
+        QTest::newRow("command type") << QByteArray("\"command\": 22") << QByteArray("\"command\": \"takeoff\"") << "/mission/items/0/command";
+        QTest::newRow("mission version") << QByteArray("\"version\": 2") << QByteArray("\"version\": 3") << "/mission/version";
+    }
+    void brokenPlanNamesThePath()
+    {
+        QFETCH(QByteArray, from);
+        QFETCH(QByteArray, to);
+        QFETCH(QString, path);
+        QByteArray text = readSample(QStringLiteral("SectionTest.plan"));
+        QVERIFY2(text.contains(from), "test edit does not apply");
+        text.replace(text.indexOf(from), from.size(), to);
+        const Result<ImportedRoute> r = readQgcPlan(text);
+        QVERIFY(!r.ok());
+        QCOMPARE(r.error().jsonPath, path);
+    }
+
+    void planSyntaxErrorNamesTheLine()
+    {
+        QByteArray text = readSample(QStringLiteral("SectionTest.plan"));
+        text.replace(text.indexOf("\"groundStation\""), 1, "");
+        const Result<ImportedRoute> r = readQgcPlan(text);
+        QVERIFY(!r.ok());
+        QVERIFY2(r.error().line == 8 && r.error().column == 5, qPrintable(r.error().toString()));
+        QVERIFY(!r.error().message.contains(QStringLiteral("last read")));
+    }
+
+    void importFailureLeavesTheFileAlone()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("route.waypoints"));
+        Mission m;
+        m.routes.push_back(mavlinkRoute());
+        QVERIFY(saveMission(m, path).ok());
+        const Result<LoadedMission> loaded = loadMission(path);
+        QVERIFY(loaded.ok());
+        QVERIFY(wplView(loaded->mission.routes[0]) == wplView(m.routes[0]));
+        QVERIFY(!saveMission(m, path, {3, ValidationOverride::None}).ok());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestQgcFormats)
+#include "tst_qgcformats.moc"

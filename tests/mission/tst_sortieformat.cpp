@@ -1,0 +1,198 @@
+// The native .sortie format: exact round trip of everything in the model (HCI provenance
+// included), migration from schema 1, refusal of newer schemas, and errors that name the line,
+// column or JSON path.
+#include "Domain.pb.h"
+#include "MissionFiles.h"
+#include "MissionSamples.h"
+#include "SortieFormat.h"
+
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace sortie::mission;
+using namespace sortie::mission::formats;
+using namespace sortie::mission::test;
+namespace pb = com::ugcs::ucs::proto;
+
+namespace {
+Mission fullMission()
+{
+    Mission m;
+    m.name = QStringLiteral("Port survey — north pier");
+    m.description = QStringLiteral("Quay inspection\nline two, \"quoted\"");
+    Route r = mavlinkRoute();
+    r.settings.profile = {QStringLiteral("EMU Copter"), 12, 4, 3};
+    r.settings.failsafes = {{FailsafeReason::GpsLost, FailsafeAction::Wait}, {FailsafeReason::LowBattery, FailsafeAction::Land}};
+    r.settings.cornerRadius = 2;
+    r.settings.takeoffHeight = 1.5;
+    r.settings.endAction = EndAction::ReturnHome;
+    auto &b = std::get<Waypoint>(r.segments[2]);
+    b.turnType = TurnType::BankTurn;
+    b.actions.push_back(PanoramaAction{270, 30, 2, RotationDirection::CounterClockwise, 15, PanoramaMode::Video});
+    b.actions.push_back(WaitAction{0, true});
+    b.actions.push_back(HeadingAction{10, true});
+    b.actions.push_back(CameraTriggerAction{TriggerState::ToggleRecording});
+    auto def = std::make_shared<pb::ActionDefinition>();
+    def->mutable_setservodefinition()->set_servoid(7);
+    def->mutable_setservodefinition()->set_pwm(1500);
+    b.actions.push_back(OpaqueAction{QStringLiteral("Set servo"), def});
+    auto origin = std::make_shared<pb::SegmentDefinition>();
+    origin->set_uuid("d1e2f3a4-b5c6-4d7e-8f90-a1b2c3d4e5f6");
+    origin->mutable_unknown_fields()->AddVarint(999, 42);
+    b.origin.message = origin;
+    AreaScan gsd = squareScan({56.96, 24.11}, 300);
+    gsd.parameters.heightMode = ScanHeightMode::GroundSampleDistance;
+    gsd.parameters.groundSampleDistanceCm = 1.7;
+    gsd.parameters.camera = {QStringLiteral("Tiny"), 6.17, 4.55, 4.5, 4000, 3000};
+    syncDerivedFields(gsd.parameters);
+    r.segments.insert(r.segments.begin() + 3, gsd);
+    r.segments.push_back(squareScan({56.97, 24.12}, 200, 70));
+    m.routes = {r, mavlinkRoute()};
+    return m;
+}
+
+bool sameOrigins(const Mission &a, const Mission &b)
+{
+    const auto &wa = std::get<Waypoint>(a.routes[0].segments[2]);
+    const auto &wb = std::get<Waypoint>(b.routes[0].segments[2]);
+    if (!wa.origin.message || !wb.origin.message)
+        return false;
+    const auto &oa = std::get<OpaqueAction>(wa.actions.back());
+    const auto &ob = std::get<OpaqueAction>(wb.actions.back());
+    return wa.origin.message->SerializeAsString() == wb.origin.message->SerializeAsString()
+        && oa.definition->SerializeAsString() == ob.definition->SerializeAsString();
+}
+
+bool sameIgnoringOpaquePointers(Mission a, Mission b)
+{
+    // Opaque actions compare by pointer; after a file round trip the objects are new.
+    for (Mission *m : {&a, &b})
+        for (Route &r : m->routes)
+            for (Segment &s : r.segments)
+                if (Waypoint *w = asWaypoint(s))
+                    for (auto &act : w->actions)
+                        if (auto *o = std::get_if<OpaqueAction>(&act))
+                            o->definition.reset();
+    return a == b;
+}
+}
+
+class TestSortieFormat : public QObject
+{
+    Q_OBJECT
+private slots:
+    void roundTripIsExact()
+    {
+        const Mission m = fullMission();
+        const QByteArray bytes = writeSortie(m);
+        const Result<Mission> back = readSortie(bytes);
+        QVERIFY2(back.ok(), back.ok() ? "" : qPrintable(back.error().toString()));
+        QVERIFY(sameIgnoringOpaquePointers(*back, m));
+        QVERIFY(sameOrigins(*back, m));
+        QCOMPARE(writeSortie(*back), bytes);  // and the bytes are stable
+    }
+
+    void migratesSchemaOne()
+    {
+        const QByteArray v1 = R"({"format": "sortie-mission", "schemaVersion": 1,
+            "mission": {"name": "old", "routes": [{"name": "r", "speed": 6.5, "safeAltitude": 30,
+              "waypoints": [{"lat": 56.9, "lon": 24.1, "alt": 40}, {"lat": 56.91, "lon": 24.11, "alt": 50, "altitudeType": "AMSL"}]}]}})";
+        const Result<Mission> m = readSortie(v1);
+        QVERIFY2(m.ok(), m.ok() ? "" : qPrintable(m.error().toString()));
+        const Route &r = m->routes.at(0);
+        QCOMPARE(r.settings.initialSpeed, 6.5);
+        QCOMPARE(r.settings.safeAltitude, 30.0);
+        QCOMPARE(int(r.segments.size()), 2);
+        const auto &w = std::get<Waypoint>(r.segments[1]);
+        QCOMPARE(w.altitudeType, AltitudeType::Amsl);
+        QCOMPARE(w.speed, 6.5);
+        QCOMPARE(w.position.longitude, 24.11);
+        const QByteArray broken = R"({"format": "sortie-mission", "schemaVersion": 1, "mission": {"routes": [{"waypoints": [{"lat": 1}]}]}})";
+        QCOMPARE(readSortie(broken).error().jsonPath, QStringLiteral("/mission/routes/0/waypoints/0"));
+    }
+
+    void refusesNewerSchema()
+    {
+        const Result<Mission> m = readSortie(R"({"format": "sortie-mission", "schemaVersion": 3, "mission": {"routes": []}})");
+        QVERIFY(!m.ok());
+        QCOMPARE(m.error().jsonPath, QStringLiteral("/schemaVersion"));
+        QVERIFY(m.error().message.contains(QStringLiteral("newer")));
+    }
+
+    void syntaxErrorNamesLineAndColumn()
+    {
+        const QByteArray text = "{\n \"format\": \"sortie-mission\",\n \"schemaVersion\": 2\n \"mission\": {}\n}\n";
+        const Result<Mission> m = readSortie(text);
+        QVERIFY(!m.ok());
+        QCOMPARE(m.error().line, 4);
+        QVERIFY(m.error().column > 0);
+    }
+
+    void semanticErrorsNameTheJsonPath_data()
+    {
+        QTest::addColumn<QByteArray>("edit");
+        QTest::addColumn<QString>("path");
+        QTest::newRow("latitude out of range") << QByteArray("\"latitude\": 95,") << QStringLiteral("/mission/routes/0/segments/1/latitude");
+        QTest::newRow("altitude not a number") << QByteArray("\"altitude\": \"high\",") << QStringLiteral("/mission/routes/0/segments/1/altitude");
+        QTest::newRow("unknown altitude type") << QByteArray("\"altitudeType\": \"ASL\",") << QStringLiteral("/mission/routes/0/segments/1/altitudeType");
+    }
+    void semanticErrorsNameTheJsonPath()
+    {
+        QFETCH(QByteArray, edit);
+        QFETCH(QString, path);
+        Mission m;
+        m.routes.push_back(mavlinkRoute());
+        QByteArray text = writeSortie(m);
+        // Replace the field in the second segment only.
+        const QByteArray key = edit.left(edit.indexOf(':') + 1);
+        const qsizetype seg = text.indexOf("\"type\": \"waypoint\"", text.indexOf("\"type\": \"waypoint\"") + 1);
+        const qsizetype at = text.indexOf(key, seg);
+        const qsizetype end = text.indexOf('\n', at);
+        text.replace(at, end - at, edit);
+        const Result<Mission> r = readSortie(text);
+        QVERIFY(!r.ok());
+        QCOMPARE(r.error().jsonPath, path);
+    }
+
+    void notASortieFile()
+    {
+        QVERIFY(readSortie(R"({"fileType": "Plan"})").error().message.contains(QStringLiteral("not a Sortie mission")));
+        QVERIFY(!readSortie("").ok());
+        QVERIFY(!readSortie("[1, 2]").ok());
+    }
+
+    void filesAreAtomicAndGated()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("m.sortie"));
+        Mission m = fullMission();
+        const Result<QStringList> saved = saveMission(m, path);
+        QVERIFY2(saved.ok(), saved.ok() ? "" : qPrintable(saved.error().toString()));
+        const Result<LoadedMission> loaded = loadMission(path);
+        QVERIFY(loaded.ok());
+        QVERIFY(sameIgnoringOpaquePointers(loaded->mission, m));
+
+        // A route with a validation error is refused, and the file on disk stays as it was.
+        std::get<Waypoint>(m.routes[1].segments[1]).altitude = 500;
+        const Result<QStringList> refused = saveMission(m, path);
+        QVERIFY(!refused.ok());
+        QCOMPARE(refused.error().file, path);
+        QVERIFY(refused.error().message.contains(QStringLiteral("Waypoint 2")));
+        QVERIFY(sameIgnoringOpaquePointers(loadMission(path)->mission, fullMission()));
+        QVERIFY(saveMission(m, path, {0, ValidationOverride::AcceptErrors}).ok());
+
+        // Errors name the file.
+        QFile bad(dir.filePath(QStringLiteral("bad.sortie")));
+        QVERIFY(bad.open(QIODevice::WriteOnly));
+        bad.write("{\"format\": \"sortie-mission\",\n\"schemaVersion\": 2,\n\"mission\": {\"routes\": [}\n}");
+        bad.close();
+        const Result<LoadedMission> failed = loadMission(bad.fileName());
+        QVERIFY(!failed.ok());
+        QVERIFY(failed.error().toString().startsWith(bad.fileName() + QStringLiteral(":3:")));
+        QVERIFY(!loadMission(dir.filePath(QStringLiteral("missing.sortie"))).ok());
+        QVERIFY(!loadMission(dir.filePath(QStringLiteral("x.docx"))).ok());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestSortieFormat)
+#include "tst_sortieformat.moc"

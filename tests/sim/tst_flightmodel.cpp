@@ -1,0 +1,116 @@
+// The simulated vehicle's flight model: refusals a real autopilot gives, and a mission flown in order.
+#include "FlightModel.h"
+
+#include <QtTest>
+
+using sortie::sim::FlightModel;
+
+namespace {
+constexpr double kRigaLat = 56.9496, kRigaLon = 24.1052;
+
+void run(FlightModel &m, double seconds, double dt = 0.1)
+{
+    for (double t = 0; t < seconds; t += dt)
+        m.tick(dt);
+}
+} // namespace
+
+class TestFlightModel : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void refusesWhatAnAutopilotRefuses()
+    {
+        FlightModel m(kRigaLat, kRigaLon, 10);
+        QCOMPARE(QString::fromStdString(m.takeoff()), QStringLiteral("arm before take-off"));
+        QVERIFY(!m.startMission().empty());
+        QVERIFY(!m.land().empty());
+        QVERIFY(m.arm().empty());
+        QVERIFY(!m.arm().empty()); // twice
+        QVERIFY(m.takeoff(30).empty());
+        run(m, 2);
+        QVERIFY(m.state().airborne());
+        QCOMPARE(QString::fromStdString(m.disarm()), QStringLiteral("cannot disarm in flight; land first"));
+    }
+
+    void takeoffClimbsToAltitudeAndHolds()
+    {
+        FlightModel m(kRigaLat, kRigaLon, 10);
+        m.arm();
+        m.takeoff(30);
+        run(m, 5);
+        QVERIFY(m.state().verticalSpeed > 0);
+        run(m, 20);
+        QCOMPARE(m.state().mode, FlightModel::Mode::Hold);
+        QVERIFY(qAbs(m.state().altitudeAgl - 30) < 0.5);
+        QVERIFY(qAbs(m.state().altitudeAmsl() - 40) < 0.5);
+        QVERIFY(m.state().batteryRemaining < 1.0);
+    }
+
+    void flysTheMissionInOrderThenHolds()
+    {
+        FlightModel m(kRigaLat, kRigaLon, 10);
+        double lat1, lon1, lat2, lon2;
+        sortie::sim::sphericalDestination(kRigaLat, kRigaLon, 90, 100, &lat1, &lon1);
+        sortie::sim::sphericalDestination(lat1, lon1, 0, 100, &lat2, &lon2);
+        QVERIFY(m.setMission({{lat1, lon1, 25, 10}, {lat2, lon2, 35, 10}}).empty());
+        m.arm();
+        QVERIFY(m.startMission().empty());
+        int seenFirst = -1;
+        for (int i = 0; i < 600 && m.state().mode == FlightModel::Mode::Auto; ++i) {
+            m.tick(0.1);
+            if (m.state().currentWaypoint == 1 && seenFirst < 0)
+                seenFirst = i;
+        }
+        QVERIFY(seenFirst > 0);
+        QCOMPARE(m.state().mode, FlightModel::Mode::Hold);
+        QVERIFY(sortie::sim::sphericalDistance(m.state().latitude, m.state().longitude, lat2, lon2) < 2.5);
+        QVERIFY(qAbs(m.state().altitudeAgl - 35) < 0.6);
+    }
+
+    void pauseHoldsAndResumeContinues()
+    {
+        FlightModel m(kRigaLat, kRigaLon, 0);
+        double lat, lon;
+        sortie::sim::sphericalDestination(kRigaLat, kRigaLon, 45, 300, &lat, &lon);
+        m.setMission({{lat, lon, 20, 8}});
+        m.arm();
+        m.startMission();
+        run(m, 10);
+        QVERIFY(m.pause().empty());
+        const double held = sortie::sim::sphericalDistance(m.state().latitude, m.state().longitude, lat, lon);
+        run(m, 5);
+        QCOMPARE(sortie::sim::sphericalDistance(m.state().latitude, m.state().longitude, lat, lon), held);
+        QVERIFY(m.resume().empty());
+        run(m, 5);
+        QVERIFY(sortie::sim::sphericalDistance(m.state().latitude, m.state().longitude, lat, lon) < held - 20);
+    }
+
+    void returnHomeLandsAndDisarms()
+    {
+        FlightModel m(kRigaLat, kRigaLon, 0);
+        m.arm();
+        double lat, lon;
+        sortie::sim::sphericalDestination(kRigaLat, kRigaLon, 180, 150, &lat, &lon);
+        QVERIFY(m.goTo(lat, lon, 15).empty());
+        run(m, 40);
+        QCOMPARE(m.state().mode, FlightModel::Mode::Hold);
+        QVERIFY(m.returnHome().empty());
+        run(m, 120);
+        QVERIFY(!m.state().armed);
+        QVERIFY(!m.state().airborne());
+        QVERIFY(sortie::sim::sphericalDistance(m.state().latitude, m.state().longitude, kRigaLat, kRigaLon) < 2.5);
+    }
+
+    void modesByName()
+    {
+        FlightModel::Mode mode;
+        QVERIFY(FlightModel::modeFromName("return_home", &mode));
+        QCOMPARE(mode, FlightModel::Mode::ReturnHome);
+        QVERIFY(!FlightModel::modeFromName("loiter-ish", &mode));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestFlightModel)
+#include "tst_flightmodel.moc"
