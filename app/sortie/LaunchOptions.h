@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ServerAddress.h"
+
 #include <QString>
 #include <QStringList>
 
@@ -8,15 +10,7 @@
 
 namespace sortie::app {
 
-// host:port of a UgCS server ([v6:address]:port for IPv6; port 3334 when left out).
-struct ServerAddress
-{
-    QString host;
-    quint16 port = 3334;
-
-    static std::variant<ServerAddress, QString> parse(const QString &text);
-    QString toString() const;
-};
+using client::ServerAddress;
 
 // Where a VCI vehicle is: tcp://host:port or serial:///dev/ttyX?baud=57600.
 struct VciEndpoint

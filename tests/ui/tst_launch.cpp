@@ -9,6 +9,7 @@
 #include <QTest>
 
 using namespace sortie::app;
+using sortie::client::ServerAddress;
 using sortie::ui::AppSettings;
 
 namespace {
