@@ -1,6 +1,9 @@
 // sortie: wires the pieces together. Parses the command line, restores the settings, loads the
 // Sortie.Ui main window.
 #include "AppSettings.h"
+#include "ConnectionController.h"
+#include "DemoServer.h"
+#include "HciSession.h"
 #include "LaunchOptions.h"
 #include "SortieUi.h"
 #include "WindowGeometry.h"
@@ -65,9 +68,21 @@ int main(int argc, char *argv[])
     if (!options.user.isEmpty())
         settings.setLastUser(options.user);
 
+    sortie::hci::HciSession session;
+    sortie::client::ConnectionController connection(&session);
+    sortie::app::DemoServer demo;
+    if (options.demo) {
+        QString error;
+        if (!demo.start(&error)) {
+            std::fprintf(stderr, "sortie: the demo simulator could not start: %s\n", qPrintable(error));
+            return 1;
+        }
+    }
+
     QQmlApplicationEngine engine;
     sortie::ui::addImportPaths(engine);
-    engine.setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(&settings)}});
+    engine.setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(&settings)},
+                                 {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&connection)}});
     engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));
     if (engine.rootObjects().isEmpty())
         return 1;
@@ -75,8 +90,12 @@ int main(int argc, char *argv[])
     if (!window)
         return 1;
     sortie::app::restoreWindowGeometry(*window, settings);
-    QObject::connect(&app, &QGuiApplication::aboutToQuit, &app,
-                     [window, &settings] { sortie::app::saveWindowGeometry(*window, settings); });
+    QObject::connect(&app, &QGuiApplication::aboutToQuit, &app, [window, &settings, &session] {
+        sortie::app::saveWindowGeometry(*window, settings);
+        session.close();
+    });
     window->show();
+    if (options.demo)
+        connection.connectToServer(demo.address(), sortie::app::DemoServer::user(), sortie::app::DemoServer::password());
     return QGuiApplication::exec();
 }

@@ -13,7 +13,13 @@ Page {
     property alias userField: user
     property alias passwordField: password
 
+    readonly property bool connected: connection !== null && connection.state !== "Disconnected"
+
     signal connectRequested(string server, string user, string password)
+    onConnectRequested: (server, user, password) => {
+        if (page.connection)
+            page.connection.connectToServer(server, user, password)
+    }
 
     Frame {
         anchors.centerIn: parent
@@ -32,6 +38,7 @@ Page {
                 id: server
                 objectName: "serverField"
                 Layout.fillWidth: true
+                enabled: !page.connected
                 text: page.appSettings.lastServer
                 placeholderText: "localhost:3334"
                 selectByMouse: true
@@ -43,6 +50,7 @@ Page {
                 id: user
                 objectName: "userField"
                 Layout.fillWidth: true
+                enabled: !page.connected
                 text: page.appSettings.lastUser
                 selectByMouse: true
             }
@@ -51,6 +59,7 @@ Page {
                 id: password
                 objectName: "passwordField"
                 Layout.fillWidth: true
+                enabled: !page.connected
                 echoMode: TextInput.Password
                 text: page.appSettings.rememberPassword ? page.appSettings.password : ""
                 onAccepted: connectButton.clicked()
@@ -67,6 +76,7 @@ Page {
                 Button {
                     id: connectButton
                     objectName: "connectButton"
+                    visible: !page.connected
                     text: qsTr("Connect")
                     highlighted: true
                     enabled: page.connection !== null && server.text.length > 0 && user.text.length > 0
@@ -77,6 +87,14 @@ Page {
                             page.appSettings.password = password.text
                         page.connectRequested(server.text, user.text, password.text)
                     }
+                    ToolTip.visible: hovered
+                    ToolTip.text: qsTr("Log in (Enter in the password field)")
+                }
+                Button {
+                    objectName: "disconnectButton"
+                    visible: page.connected
+                    text: qsTr("Disconnect")
+                    onClicked: page.connection.disconnectFromServer()
                 }
                 BusyIndicator {
                     objectName: "busyIndicator"
@@ -88,12 +106,21 @@ Page {
                 Item { Layout.fillWidth: true }
             }
             Label {
+                objectName: "loginStatus"
+                Layout.fillWidth: true
+                wrapMode: Text.Wrap
+                visible: page.connected
+                text: page.connection && page.connection.ready
+                      ? qsTr("Logged in as %1 at %2.").arg(page.connection.user).arg(page.connection.server)
+                      : page.connection ? qsTr("%1…").arg(page.connection.state) : ""
+            }
+            Label {
                 objectName: "loginMessage"
                 Layout.fillWidth: true
                 wrapMode: Text.Wrap
                 color: "#e53935"
-                text: page.connection === null ? qsTr("This build has no client layer: the form cannot connect yet.")
-                                               : (page.connection.errorString || "")
+                text: page.connection === null ? qsTr("No connection controller: this window cannot log in.")
+                                               : page.connection.errorString
                 visible: text.length > 0
             }
         }

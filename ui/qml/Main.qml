@@ -8,9 +8,12 @@ import Sortie.Ui
 ApplicationWindow {
     id: window
     required property AppSettings appSettings
-    property string connectionState: "Disconnected"
-    property string connectionDetail: ""
     property var connection: null
+    property string connectionState: connection ? connection.state : "Disconnected"
+    property string connectionDetail: !connection ? ""
+                                      : connection.detail.length > 0 ? connection.detail
+                                      : connection.ready ? qsTr("%1 at %2").arg(connection.user).arg(connection.server) : ""
+
     property alias currentPage: tabs.currentIndex
     property alias loginPage: loginPage
     property alias missionPage: missionPage
@@ -30,6 +33,11 @@ ApplicationWindow {
     function openMapSource() { mapSourceDialog.open() }
     function focusMap() { window.activeMap.forceActiveFocus() }
     function toggleFullScreen() { window.visibility = window.visibility === Window.FullScreen ? Window.Windowed : Window.FullScreen }
+
+    Connections {
+        target: window.connection
+        function onReady() { tabs.currentIndex = 1 }
+    }
 
     DisplayUnits {
         id: units

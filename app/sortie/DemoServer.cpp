@@ -1,0 +1,29 @@
+#include "DemoServer.h"
+
+#include "HciServer.h"
+#include "SimWorld.h"
+
+namespace sortie::app {
+
+DemoServer::DemoServer() = default;
+DemoServer::~DemoServer() = default;
+
+bool DemoServer::start(QString *error)
+{
+    sim::SimWorld::Config config;
+    config.users = {{0, user(), password(), true}};
+    m_world = std::make_unique<sim::SimWorld>(config);
+    m_server = std::make_unique<sim::HciServer>(*m_world);
+    if (!m_server->listen(QHostAddress::LocalHost, 0)) {
+        *error = m_server->errorString();
+        return false;
+    }
+    return true;
+}
+
+QString DemoServer::address() const
+{
+    return m_server ? QStringLiteral("127.0.0.1:%1").arg(m_server->port()) : QString();
+}
+
+} // namespace sortie::app

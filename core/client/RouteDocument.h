@@ -1,0 +1,88 @@
+#pragma once
+
+#include "RouteAnalyzer.h"
+#include "RouteEditor.h"
+#include "RouteModel.h"
+
+#include <QItemSelectionModel>
+#include <QObject>
+#include <QUndoStack>
+#include <QUrl>
+
+namespace sortie::client {
+
+// The route open for editing, with nothing of the network in it: the model the map and the table
+// both show, its undo stack, editor, selection and analysis (statistics, validation), the gestures
+// of the map turned into undoable edits, and import/export of files.
+class RouteDocument : public QObject
+{
+    Q_OBJECT
+    Q_PROPERTY(sortie::mission::RouteModel *model READ model CONSTANT)
+    Q_PROPERTY(sortie::mission::RouteEditor *editor READ editor CONSTANT)
+    Q_PROPERTY(QUndoStack *undoStack READ undoStack CONSTANT)
+    Q_PROPERTY(QItemSelectionModel *selection READ selection CONSTANT)
+    Q_PROPERTY(sortie::mission::RouteAnalyzer *analyzer READ analyzer CONSTANT)
+    Q_PROPERTY(bool modified READ isModified NOTIFY modifiedChanged)
+    Q_PROPERTY(bool canUndo READ canUndo NOTIFY undoChanged)
+    Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoChanged)
+    Q_PROPERTY(QString undoText READ undoText NOTIFY undoChanged)
+    Q_PROPERTY(QString redoText READ redoText NOTIFY undoChanged)
+    Q_PROPERTY(QList<int> selectedRows READ selectedRows NOTIFY selectedRowsChanged)
+    Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+
+public:
+    explicit RouteDocument(QObject *parent = nullptr);
+
+    mission::RouteModel *model() { return &m_model; }
+    mission::RouteEditor *editor() { return &m_editor; }
+    QUndoStack *undoStack() { return &m_undo; }
+    QItemSelectionModel *selection() { return &m_selection; }
+    mission::RouteAnalyzer *analyzer() { return &m_analyzer; }
+    const mission::Route &route() const { return m_model.route(); }
+
+    bool isModified() const { return !m_undo.isClean(); }
+    bool canUndo() const { return m_undo.canUndo(); }
+    bool canRedo() const { return m_undo.canRedo(); }
+    QString undoText() const { return m_undo.undoText(); }
+    QString redoText() const { return m_undo.redoText(); }
+    QList<int> selectedRows() const;
+    QString message() const { return m_message; }
+
+    // Replaces the whole route (opened from the server or reloaded): not undoable, marks clean.
+    void load(mission::Route route);
+    void markSaved() { m_undo.setClean(); }
+
+    // Map gestures, each one undo step; the new or moved rows become the selection.
+    Q_INVOKABLE int addWaypoint(double latitude, double longitude);
+    // A click on the leg from row `leg` to `leg + 1` inserts a waypoint between them.
+    Q_INVOKABLE int insertWaypoint(int leg, double latitude, double longitude);
+    // rows (ints) and coordinates (QGeoCoordinate) as RouteLayer::waypointsMoved gives them.
+    Q_INVOKABLE void moveWaypoints(const QVariantList &rows, const QVariantList &coordinates);
+    Q_INVOKABLE void removeSelected();
+    Q_INVOKABLE void selectRows(const QList<int> &rows);
+    Q_INVOKABLE void undo() { m_undo.undo(); }
+    Q_INVOKABLE void redo() { m_undo.redo(); }
+
+    // Files: .sortie, .plan, WPL (.waypoints/.txt), KML. An import is one undo step and keeps the
+    // route's server identity, so saving it updates the route that is open.
+    Q_INVOKABLE bool importFile(const QUrl &file);
+    Q_INVOKABLE bool exportFile(const QUrl &file);
+
+signals:
+    void modifiedChanged();
+    void undoChanged();
+    void selectedRowsChanged();
+    void messageChanged();
+
+private:
+    void setMessage(const QString &message);
+
+    mission::RouteModel m_model;
+    QUndoStack m_undo;
+    mission::RouteEditor m_editor;
+    QItemSelectionModel m_selection;
+    mission::RouteAnalyzer m_analyzer;
+    QString m_message;
+};
+
+} // namespace sortie::client
