@@ -1,5 +1,6 @@
 #include "RouteDocument.h"
 
+#include "AreaScanPlanner.h"
 #include "MissionFiles.h"
 
 #include <QFileInfo>
@@ -22,6 +23,118 @@ RouteDocument::RouteDocument(QObject *parent)
     connect(&m_undo, &QUndoStack::canRedoChanged, this, &RouteDocument::undoChanged);
     connect(&m_selection, &QItemSelectionModel::selectionChanged, this, &RouteDocument::selectedRowsChanged);
     connect(&m_model, &QAbstractItemModel::modelReset, this, &RouteDocument::selectedRowsChanged);
+    connect(&m_selection, &QItemSelectionModel::currentChanged, this, &RouteDocument::currentChanged);
+    connect(&m_model, &RouteModel::routeEdited, this, &RouteDocument::currentChanged);
+}
+
+int RouteDocument::currentRow() const
+{
+    const QModelIndex current = m_selection.currentIndex();
+    return current.isValid() && current.row() < m_model.count() ? current.row() : -1;
+}
+
+namespace {
+
+const AreaScan *scanAt(const RouteModel &model, int row)
+{
+    return row >= 0 && row < model.count() ? std::get_if<AreaScan>(&model.segment(row)) : nullptr;
+}
+
+QVariantList coordinates(const std::vector<GeoPoint> &points)
+{
+    QVariantList list;
+    for (const GeoPoint &p : points)
+        list.append(QVariant::fromValue(QGeoCoordinate(p.latitude, p.longitude)));
+    return list;
+}
+
+} // namespace
+
+QVariantList RouteDocument::scanPolygon() const
+{
+    const AreaScan *scan = scanAt(m_model, currentRow());
+    return scan ? coordinates(scan->polygon) : QVariantList();
+}
+
+QVariantList RouteDocument::scanPath() const
+{
+    const AreaScan *scan = scanAt(m_model, currentRow());
+    if (!scan)
+        return {};
+    const AreaScanOutcome outcome = planAreaScan(*scan);
+    return outcome.ok() ? coordinates(outcome.plan->path) : QVariantList();
+}
+
+QVariantMap RouteDocument::scanParameters() const
+{
+    const int row = currentRow();
+    return scanAt(m_model, row) ? m_model.index(row).data(RouteModel::ScanParametersRole).toMap() : QVariantMap();
+}
+
+QString RouteDocument::scanProblem() const
+{
+    const AreaScan *scan = scanAt(m_model, currentRow());
+    return scan ? planAreaScan(*scan).message : QString();
+}
+
+int RouteDocument::addAreaScan(const QVariantList &polygon)
+{
+    QVariantList vertices;
+    for (const QVariant &v : polygon) {
+        if (v.canConvert<QGeoCoordinate>() && v.metaType() == QMetaType::fromType<QGeoCoordinate>()) {
+            const QGeoCoordinate c = v.value<QGeoCoordinate>();
+            vertices.append(QVariantMap{{QStringLiteral("latitude"), c.latitude()}, {QStringLiteral("longitude"), c.longitude()}});
+        } else {
+            vertices.append(v);
+        }
+    }
+    const int row = m_editor.addAreaScan(vertices);
+    if (row < 0)
+        setMessage(tr("An area scan needs at least three corners that enclose an area."));
+    else
+        selectRows({row});
+    return row;
+}
+
+bool RouteDocument::setScanParameters(int row, const QVariantMap &parameters)
+{
+    const AreaScan *scan = scanAt(m_model, row);
+    if (!scan)
+        return false;
+    AreaScanParameters p = scan->parameters;
+    auto number = [&](const char *key, double &field) {
+        const QVariant v = parameters.value(QLatin1String(key));
+        bool ok = false;
+        const double d = v.toDouble(&ok);
+        if (v.isValid() && ok)
+            field = d;
+    };
+    number("altitude", p.altitude);
+    number("frontOverlapPercent", p.frontOverlapPercent);
+    number("sideOverlapPercent", p.sideOverlapPercent);
+    number("directionDeg", p.directionDeg);
+    number("turnaroundMeters", p.turnaroundMeters);
+    number("speed", p.speed);
+    number("groundSampleDistanceCm", p.groundSampleDistanceCm);
+    number("sensorWidthMm", p.camera.sensorWidthMm);
+    number("sensorHeightMm", p.camera.sensorHeightMm);
+    number("focalLengthMm", p.camera.focalLengthMm);
+    if (parameters.contains(QStringLiteral("imageWidthPx")))
+        p.camera.imageWidthPx = parameters.value(QStringLiteral("imageWidthPx")).toInt();
+    if (parameters.contains(QStringLiteral("imageHeightPx")))
+        p.camera.imageHeightPx = parameters.value(QStringLiteral("imageHeightPx")).toInt();
+    if (parameters.contains(QStringLiteral("cameraName")))
+        p.camera.name = parameters.value(QStringLiteral("cameraName")).toString();
+    if (parameters.contains(QStringLiteral("byGroundSampleDistance")))
+        p.heightMode = parameters.value(QStringLiteral("byGroundSampleDistance")).toBool() ? ScanHeightMode::GroundSampleDistance
+                                                                                         : ScanHeightMode::Altitude;
+    if (p.frontOverlapPercent < 0 || p.frontOverlapPercent >= 100 || p.sideOverlapPercent < 0 || p.sideOverlapPercent >= 100) {
+        setMessage(tr("Overlaps are percentages from 0 to below 100."));
+        return false;
+    }
+    syncDerivedFields(p);
+    m_editor.setScanParameters(row, p);
+    return true;
 }
 
 QList<int> RouteDocument::selectedRows() const

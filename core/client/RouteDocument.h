@@ -29,6 +29,13 @@ class RouteDocument : public QObject
     Q_PROPERTY(QString redoText READ redoText NOTIFY undoChanged)
     Q_PROPERTY(QList<int> selectedRows READ selectedRows NOTIFY selectedRowsChanged)
     Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+    Q_PROPERTY(int currentRow READ currentRow NOTIFY currentChanged)
+    // The current row's area scan, when it is one: its polygon, the path the planner made of it
+    // (transects and turnarounds, QGeoCoordinates) and its parameters; empty otherwise.
+    Q_PROPERTY(QVariantList scanPolygon READ scanPolygon NOTIFY currentChanged)
+    Q_PROPERTY(QVariantList scanPath READ scanPath NOTIFY currentChanged)
+    Q_PROPERTY(QVariantMap scanParameters READ scanParameters NOTIFY currentChanged)
+    Q_PROPERTY(QString scanProblem READ scanProblem NOTIFY currentChanged)
 
 public:
     explicit RouteDocument(QObject *parent = nullptr);
@@ -47,6 +54,11 @@ public:
     QString redoText() const { return m_undo.redoText(); }
     QList<int> selectedRows() const;
     QString message() const { return m_message; }
+    int currentRow() const;
+    QVariantList scanPolygon() const;
+    QVariantList scanPath() const;
+    QVariantMap scanParameters() const;
+    QString scanProblem() const;
 
     // Replaces the whole route (opened from the server or reloaded): not undoable, marks clean.
     void load(mission::Route route);
@@ -60,6 +72,11 @@ public:
     Q_INVOKABLE void moveWaypoints(const QVariantList &rows, const QVariantList &coordinates);
     Q_INVOKABLE void removeSelected();
     Q_INVOKABLE void selectRows(const QList<int> &rows);
+    // polygon: QGeoCoordinates (or {latitude, longitude} maps). Returns the new row or -1.
+    Q_INVOKABLE int addAreaScan(const QVariantList &polygon);
+    // Camera, overlaps, altitude, direction... of the scan at `row`, as one undo step. Keys as in
+    // scanParameters; keys left out keep their value.
+    Q_INVOKABLE bool setScanParameters(int row, const QVariantMap &parameters);
     Q_INVOKABLE void undo() { m_undo.undo(); }
     Q_INVOKABLE void redo() { m_undo.redo(); }
 
@@ -73,6 +90,7 @@ signals:
     void undoChanged();
     void selectedRowsChanged();
     void messageChanged();
+    void currentChanged();
 
 private:
     void setMessage(const QString &message);

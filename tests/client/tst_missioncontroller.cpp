@@ -223,6 +223,46 @@ private slots:
         QVERIFY(!doc->isModified());
     }
 
+    void areaScan()
+    {
+        const int id = openDemoRoute(*m_alice);
+        QVERIFY(id > 0);
+        client::RouteDocument *doc = m_alice->missions.document();
+        const QVariantList corners{QVariant::fromValue(QGeoCoordinate(56.9740, 24.0800)), QVariant::fromValue(QGeoCoordinate(56.9770, 24.0800)),
+                                   QVariant::fromValue(QGeoCoordinate(56.9770, 24.0870)), QVariant::fromValue(QGeoCoordinate(56.9740, 24.0870))};
+        QCOMPARE(doc->addAreaScan(corners.mid(0, 2)), -1); // two corners enclose nothing
+        QVERIFY(!doc->message().isEmpty());
+        const int row = doc->addAreaScan(corners);
+        QCOMPARE(row, 4);
+        QCOMPARE(doc->currentRow(), 4);
+        QCOMPARE(doc->scanPolygon().size(), 4);
+        const int pathBefore = int(doc->scanPath().size());
+        QVERIFY2(pathBefore >= 4, qPrintable(QString::number(pathBefore)));
+        QVERIFY(doc->scanProblem().isEmpty());
+        QCOMPARE(doc->scanParameters().value(QStringLiteral("sideOverlapPercent")).toDouble(), 65.0);
+
+        // More side overlap: transects closer together, so more of them.
+        QVERIFY(doc->setScanParameters(row, {{QStringLiteral("sideOverlapPercent"), 85.0}}));
+        QCOMPARE(doc->scanParameters().value(QStringLiteral("sideOverlapPercent")).toDouble(), 85.0);
+        QVERIFY(doc->scanPath().size() > pathBefore);
+        QVERIFY(!doc->setScanParameters(row, {{QStringLiteral("frontOverlapPercent"), 120.0}}));
+        doc->undo();
+        QCOMPARE(int(doc->scanPath().size()), pathBefore);
+        doc->redo();
+
+        QSignalSpy saved(&m_alice->missions, &MissionController::saved);
+        m_alice->missions.save();
+        QVERIFY(saved.wait(10000));
+        Operator bob(m_sim->address(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
+        QVERIFY(bob.ok);
+        const pb::Route theirs = call<pb::GetObjectResponse>(bob.client.getObject(hci::HciObjectType::Route, id)).object().route();
+        QCOMPARE(theirs.segments_size(), 5);
+        const auto route = mission::routeFromHci(theirs);
+        QVERIFY(route);
+        QVERIFY(std::holds_alternative<mission::AreaScan>(route->route.segments[4]));
+        QCOMPARE(std::get<mission::AreaScan>(route->route.segments[4]).parameters.sideOverlapPercent, 85.0);
+    }
+
     void processAndUploadWithProgress()
     {
         QVERIFY(openDemoRoute(*m_alice) > 0);
