@@ -3,7 +3,9 @@
 #include "AppSettings.h"
 #include "ConnectionController.h"
 #include "DemoServer.h"
+#include "HciClient.h"
 #include "HciSession.h"
+#include "MissionController.h"
 #include "LaunchOptions.h"
 #include "SortieUi.h"
 #include "WindowGeometry.h"
@@ -69,7 +71,9 @@ int main(int argc, char *argv[])
         settings.setLastUser(options.user);
 
     sortie::hci::HciSession session;
+    sortie::hci::HciClient hciClient(&session);
     sortie::client::ConnectionController connection(&session);
+    sortie::client::MissionController missions(&hciClient);
     sortie::app::DemoServer demo;
     if (options.demo) {
         QString error;
@@ -82,7 +86,8 @@ int main(int argc, char *argv[])
     QQmlApplicationEngine engine;
     sortie::ui::addImportPaths(engine);
     engine.setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(&settings)},
-                                 {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&connection)}});
+                                 {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&connection)},
+                                 {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&missions)}});
     engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));
     if (engine.rootObjects().isEmpty())
         return 1;

@@ -96,6 +96,7 @@ void MissionController::openRoute(int routeId)
             text += QLatin1Char(' ') + imported->notices.join(QLatin1Char(' '));
         setMessage(text);
         emit routeChanged();
+        emit routeOpened();
     });
 }
 

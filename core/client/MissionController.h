@@ -75,6 +75,8 @@ public:
 
 signals:
     void routeChanged();
+    // A route was opened from the server (not saved, not edited): views frame it.
+    void routeOpened();
     void conflictChanged();
     void activityChanged();
     void progressChanged();

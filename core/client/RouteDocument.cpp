@@ -210,6 +210,24 @@ void RouteDocument::selectRows(const QList<int> &rows)
         m_selection.setCurrentIndex(m_model.index(rows.last()), QItemSelectionModel::NoUpdate);
 }
 
+void RouteDocument::clickRow(int row, int modifiers)
+{
+    if (row < 0 || row >= m_model.count())
+        return;
+    const QModelIndex index = m_model.index(row);
+    const auto mods = Qt::KeyboardModifiers(modifiers);
+    if (mods & Qt::ControlModifier) {
+        m_selection.setCurrentIndex(index, QItemSelectionModel::Toggle | QItemSelectionModel::Rows);
+    } else if ((mods & Qt::ShiftModifier) && currentRow() >= 0) {
+        const int from = currentRow();
+        m_selection.select(QItemSelection(m_model.index(std::min(from, row)), m_model.index(std::max(from, row))),
+                           QItemSelectionModel::Select | QItemSelectionModel::Rows);
+        m_selection.setCurrentIndex(index, QItemSelectionModel::NoUpdate);
+    } else {
+        selectRows({row});
+    }
+}
+
 bool RouteDocument::importFile(const QUrl &file)
 {
     const QString path = file.isLocalFile() ? file.toLocalFile() : file.toString();

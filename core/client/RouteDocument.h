@@ -72,6 +72,8 @@ public:
     Q_INVOKABLE void moveWaypoints(const QVariantList &rows, const QVariantList &coordinates);
     Q_INVOKABLE void removeSelected();
     Q_INVOKABLE void selectRows(const QList<int> &rows);
+    // A click on a row of the table: selects it; Ctrl toggles it, Shift extends from the current row.
+    Q_INVOKABLE void clickRow(int row, int modifiers);
     // polygon: QGeoCoordinates (or {latitude, longitude} maps). Returns the new row or -1.
     Q_INVOKABLE int addAreaScan(const QVariantList &polygon);
     // Camera, overlaps, altitude, direction... of the scan at `row`, as one undo step. Keys as in

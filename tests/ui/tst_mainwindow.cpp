@@ -240,7 +240,7 @@ private slots:
         verifyShown("scaleBar");
         QTRY_VERIFY(!find<QObject>("cursorLabel")->property("text").toString().isEmpty());
         QTest::qWait(100); // let the base-map tiles land
-        save(QStringLiteral("mission.png"));
+        save(QStringLiteral("layers.png"));
 
         // Live telemetry
         QStandardItemModel vehicles;

@@ -39,6 +39,35 @@ void AreaScanLayer::setTransectModel(QAbstractItemModel *model)
     emit modelsChanged();
 }
 
+namespace {
+std::vector<QGeoCoordinate> toCoordinates(const QVariantList &list)
+{
+    std::vector<QGeoCoordinate> out;
+    for (const QVariant &v : list) {
+        const QGeoCoordinate c = v.value<QGeoCoordinate>();
+        if (c.isValid())
+            out.push_back(c);
+    }
+    return out;
+}
+} // namespace
+
+void AreaScanLayer::setPolygon(const QVariantList &coordinates)
+{
+    m_polygonList = coordinates;
+    m_ownPolygon.assign(toCoordinates(coordinates));
+    m_polygon.setModel(&m_ownPolygon);
+    emit modelsChanged();
+}
+
+void AreaScanLayer::setPath(const QVariantList &coordinates)
+{
+    m_pathList = coordinates;
+    m_ownPath.assign(toCoordinates(coordinates));
+    m_transects.setModel(&m_ownPath);
+    emit modelsChanged();
+}
+
 void AreaScanLayer::setEditable(bool editable)
 {
     if (editable == m_editable)

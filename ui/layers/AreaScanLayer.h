@@ -1,6 +1,7 @@
 #pragma once
 
 #include "MapLayer.h"
+#include "CoordinateListModel.h"
 #include "ModelCoordinates.h"
 
 #include <QColor>
@@ -20,6 +21,9 @@ class AreaScanLayer : public MapLayer
     QML_ELEMENT
     Q_PROPERTY(QAbstractItemModel *polygonModel READ polygonModel WRITE setPolygonModel NOTIFY modelsChanged)
     Q_PROPERTY(QAbstractItemModel *transectModel READ transectModel WRITE setTransectModel NOTIFY modelsChanged)
+    // Instead of models: lists of QGeoCoordinates (what RouteDocument gives for its current scan).
+    Q_PROPERTY(QVariantList polygon READ polygon WRITE setPolygon NOTIFY modelsChanged)
+    Q_PROPERTY(QVariantList path READ path WRITE setPath NOTIFY modelsChanged)
     Q_PROPERTY(bool editable READ isEditable WRITE setEditable NOTIFY editableChanged)
     Q_PROPERTY(QColor color READ color WRITE setColor NOTIFY colorChanged)
     Q_PROPERTY(int vertexCount READ vertexCount NOTIFY modelsChanged)
@@ -32,6 +36,10 @@ public:
     void setPolygonModel(QAbstractItemModel *model);
     QAbstractItemModel *transectModel() const { return m_transects.model(); }
     void setTransectModel(QAbstractItemModel *model);
+    QVariantList polygon() const { return m_polygonList; }
+    void setPolygon(const QVariantList &coordinates);
+    QVariantList path() const { return m_pathList; }
+    void setPath(const QVariantList &coordinates);
     bool isEditable() const { return m_editable; }
     void setEditable(bool editable);
     QColor color() const { return m_color; }
@@ -62,6 +70,10 @@ protected:
 private:
     QPolygonF project(const std::vector<QPointF> &points, int displaced, QPointF offset) const;
 
+    CoordinateListModel m_ownPolygon; // behind the list properties
+    CoordinateListModel m_ownPath;
+    QVariantList m_polygonList;
+    QVariantList m_pathList;
     ModelCoordinates m_polygon;
     ModelCoordinates m_transects;
     bool m_editable = false;

@@ -109,6 +109,14 @@ QGeoCoordinate CoordinateListModel::get(int row) const
     return row >= 0 && row < count() ? m_points[size_t(row)] : QGeoCoordinate();
 }
 
+QVariantList CoordinateListModel::coordinates() const
+{
+    QVariantList list;
+    for (const QGeoCoordinate &point : m_points)
+        list.append(QVariant::fromValue(point));
+    return list;
+}
+
 void CoordinateListModel::assign(std::vector<QGeoCoordinate> points)
 {
     beginResetModel();

@@ -39,7 +39,8 @@ Page {
                 objectName: "serverField"
                 Layout.fillWidth: true
                 enabled: !page.connected
-                text: page.appSettings.lastServer
+                // Filled once: a binding would overwrite what the operator typed whenever a setting changes.
+                Component.onCompleted: text = page.appSettings.lastServer
                 placeholderText: "localhost:3334"
                 selectByMouse: true
                 ToolTip.visible: hovered
@@ -51,7 +52,7 @@ Page {
                 objectName: "userField"
                 Layout.fillWidth: true
                 enabled: !page.connected
-                text: page.appSettings.lastUser
+                Component.onCompleted: text = page.appSettings.lastUser
                 selectByMouse: true
             }
             Label { text: qsTr("Password") }
@@ -61,7 +62,7 @@ Page {
                 Layout.fillWidth: true
                 enabled: !page.connected
                 echoMode: TextInput.Password
-                text: page.appSettings.rememberPassword ? page.appSettings.password : ""
+                Component.onCompleted: text = page.appSettings.rememberPassword ? page.appSettings.password : ""
                 onAccepted: connectButton.clicked()
             }
             CheckBox {

@@ -9,6 +9,7 @@ ApplicationWindow {
     id: window
     required property AppSettings appSettings
     property var connection: null
+    property var missions: null
     property string connectionState: connection ? connection.state : "Disconnected"
     property string connectionDetail: !connection ? ""
                                       : connection.detail.length > 0 ? connection.detail
@@ -32,6 +33,11 @@ ApplicationWindow {
     function toggleHelp() { help.opened ? help.close() : help.open() }
     function openMapSource() { mapSourceDialog.open() }
     function focusMap() { window.activeMap.forceActiveFocus() }
+    function saveRoute() { if (missions) { showPage(1); missions.save() } }
+    function undo() { if (missions) missions.document.undo() }
+    function redo() { if (missions) missions.document.redo() }
+    function deleteSelection() { if (missions && currentPage === 1) missions.document.removeSelected() }
+    function processRoute() { if (missions) missions.process() }
     function toggleFullScreen() { window.visibility = window.visibility === Window.FullScreen ? Window.Windowed : Window.FullScreen }
 
     Connections {
@@ -90,6 +96,7 @@ ApplicationWindow {
         MissionPage {
             id: missionPage
             objectName: "missionPage"
+            missions: window.missions
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource

@@ -3,24 +3,43 @@ import QtQuick.Controls
 import QtQuick.Layouts
 import Sortie.Ui
 
-// Mission edit: the route on the map beside its table. `routeModel` is any list model with
-// latitude and longitude roles; `selectionModel` selects its rows.
+// Mission edit: the route on the map beside its panel and table. With `missions` (the client's
+// MissionController) every gesture becomes an undoable edit of its document; without one the
+// page shows whatever list model `routeModel` is.
 Page {
     id: page
     property alias map: pane.map
     property alias routeLayer: routeLayer
     property alias areaLayer: areaLayer
     property alias pane: pane
-    property var routeModel: null
-    property var selectionModel: null
+    property alias panel: panel
+    property var missions: null
+    readonly property var doc: missions ? missions.document : null
+    property var routeModel: doc ? doc.model : null
+    property var selectionModel: doc ? doc.selection : null
     property var areaPolygonModel: null
     property var areaTransectModel: null
-    property bool editable: false
+    property bool editable: doc !== null
+    property string tool: ""               // "" or "scan" (drawing an area-scan polygon)
     property DisplayUnits units
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
     property bool dark: false
+
+    function finishScan() {
+        if (page.doc && scanDraft.count >= 3)
+            page.doc.addAreaScan(scanDraft.coordinates())
+        scanDraft.clear()
+        page.tool = ""
+    }
+
+    CoordinateListModel { id: scanDraft }
+
+    Connections {
+        target: page.missions
+        function onRouteOpened() { if (routeLayer.count > 0) routeLayer.fitToMap(60) }
+    }
 
     SplitView {
         anchors.fill: parent
@@ -39,7 +58,17 @@ Page {
                 map: pane.map
                 polygonModel: page.areaPolygonModel
                 transectModel: page.areaTransectModel
-                editable: page.editable
+                polygon: page.doc ? page.doc.scanPolygon : []
+                path: page.doc ? page.doc.scanPath : []
+            }
+            AreaScanLayer {
+                objectName: "scanDraftLayer"
+                anchors.fill: parent
+                map: pane.map
+                polygonModel: scanDraft
+                color: "#ef6c00"
+                editable: page.tool === "scan"
+                onVertexMoved: (index, coordinate) => scanDraft.setCoordinate(index, coordinate.latitude, coordinate.longitude)
             }
             RouteLayer {
                 id: routeLayer
@@ -48,41 +77,47 @@ Page {
                 map: pane.map
                 model: page.routeModel
                 selectionModel: page.selectionModel
-                editable: page.editable
+                editable: page.editable && page.tool === ""
+                onWaypointsMoved: (rows, coordinates) => page.doc.moveWaypoints(rows, coordinates)
+                onLegClicked: (leg, coordinate, modifiers) => page.doc.insertWaypoint(leg, coordinate.latitude, coordinate.longitude)
+            }
+            Connections {
+                target: pane.map
+                function onClicked(coordinate, modifiers) {
+                    if (!page.doc || modifiers !== Qt.NoModifier)
+                        return
+                    if (page.tool === "scan")
+                        scanDraft.append(coordinate.latitude, coordinate.longitude)
+                    else
+                        page.doc.addWaypoint(coordinate.latitude, coordinate.longitude)
+                }
+                function onAreaSelected(rect, modifiers) { routeLayer.selectInRect(rect, modifiers) }
+            }
+            Frame {
+                visible: page.tool === "scan"
+                anchors.top: parent.top
+                anchors.horizontalCenter: parent.horizontalCenter
+                anchors.topMargin: 10
+                RowLayout {
+                    Label { text: qsTr("Click the corners of the area (%1 so far)").arg(scanDraft.count) }
+                    Button {
+                        objectName: "finishScanButton"
+                        text: qsTr("Create scan")
+                        enabled: scanDraft.count >= 3
+                        onClicked: page.finishScan()
+                    }
+                    Button {
+                        text: qsTr("Cancel")
+                        onClicked: { scanDraft.clear(); page.tool = "" }
+                    }
+                }
             }
         }
-        Pane {
-            SplitView.preferredWidth: 340
-            SplitView.minimumWidth: 220
-            ColumnLayout {
-                anchors.fill: parent
-                Label {
-                    text: qsTr("Route")
-                    font.bold: true
-                    font.pixelSize: 16
-                }
-                Label {
-                    objectName: "routeSummary"
-                    text: page.routeModel ? qsTr("%n waypoint(s)", "", routeLayer.count) : qsTr("No route open. Log in to open a mission.")
-                    wrapMode: Text.Wrap
-                    Layout.fillWidth: true
-                }
-                ListView {
-                    objectName: "waypointList"
-                    Layout.fillWidth: true
-                    Layout.fillHeight: true
-                    clip: true
-                    model: page.routeModel
-                    delegate: ItemDelegate {
-                        required property int index
-                        required property double latitude
-                        required property double longitude
-                        width: ListView.view.width
-                        text: (index + 1) + "  " + (page.units ? page.units.formatLatLon(latitude, longitude) : "")
-                    }
-                    ScrollBar.vertical: ScrollBar {}
-                }
-            }
+        RoutePanel {
+            id: panel
+            SplitView.preferredWidth: 460
+            SplitView.minimumWidth: 320
+            page: page
         }
     }
 }

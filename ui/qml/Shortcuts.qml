@@ -10,7 +10,9 @@ QtObject {
         { keys: "← ↑ → ↓", help: qsTr("Pan the map (Shift: faster)") },
         { keys: "+ / −", help: qsTr("Zoom in / out (also the mouse wheel and pinch)") },
         { keys: qsTr("Drag"), help: qsTr("Pan the map") },
-        { keys: qsTr("Shift+Drag"), help: qsTr("Select waypoints in a rectangle (Ctrl+Shift adds)") }
+        { keys: qsTr("Shift+Drag"), help: qsTr("Select waypoints in a rectangle (Ctrl+Shift adds)") },
+        { keys: qsTr("Click"), help: qsTr("Add a waypoint; on a leg: insert one; on a waypoint: select (Ctrl toggles, Shift extends)") },
+        { keys: qsTr("Drag a waypoint"), help: qsTr("Move it, or the whole selection") }
     ]
 
     property list<Shortcut> entries: [
@@ -33,6 +35,31 @@ QtObject {
             property string help: qsTr("Live telemetry page")
             sequence: "Ctrl+3"
             onActivated: root.window.showPage(2)
+        },
+        Shortcut {
+            property string help: qsTr("Save the route on the server")
+            sequence: "Ctrl+S"
+            onActivated: root.window.saveRoute()
+        },
+        Shortcut {
+            property string help: qsTr("Undo")
+            sequence: "Ctrl+Z"
+            onActivated: root.window.undo()
+        },
+        Shortcut {
+            property string help: qsTr("Redo")
+            sequences: ["Ctrl+Shift+Z", "Ctrl+Y"]
+            onActivated: root.window.redo()
+        },
+        Shortcut {
+            property string help: qsTr("Delete the selected waypoints")
+            sequence: "Del"
+            onActivated: root.window.deleteSelection()
+        },
+        Shortcut {
+            property string help: qsTr("Process the route on the server")
+            sequence: "Ctrl+P"
+            onActivated: root.window.processRoute()
         },
         Shortcut {
             property string help: qsTr("Choose the map source")
