@@ -1,6 +1,7 @@
 // sortie-sim: the simulated UgCS server as a program. Wiring only: options -> world -> servers.
 #include "HciServer.h"
 #include "HciSimOptions.h"
+#include "SimVciFleet.h"
 #include "SimWorld.h"
 
 #include <QCommandLineParser>
@@ -38,14 +39,16 @@ int main(int argc, char **argv)
     quitOnSignals(app);
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(QStringLiteral("Simulated UgCS server: HCI on 127.0.0.1, emulator vehicles near Riga."));
+    parser.setApplicationDescription(QStringLiteral("Simulated UgCS server: HCI on 127.0.0.1, emulator vehicles near Riga; and VCI vehicles (--vci) on their own ports."));
     parser.addHelpOption();
     sortie::sim::HciSimOptions hci;
     hci.addTo(parser);
+    sortie::sim::SimVciFleetOptions vci;
+    vci.addTo(parser);
     parser.process(app);
 
     QString error;
-    if (!hci.read(parser, &error)) {
+    if (!hci.read(parser, &error) || !vci.read(parser, &error)) {
         std::fprintf(stderr, "sortie-sim: %s\n", qPrintable(error));
         return 2;
     }
@@ -60,6 +63,13 @@ int main(int argc, char **argv)
     }
     std::printf("sortie-sim: HCI on %s:%u, %d vehicles, telemetry %.0f Hz\n", qPrintable(hci.address.toString()),
                 unsigned(server.port()), int(world.vehicles().size()), hci.world.telemetryRateHz);
+    sortie::sim::SimVciFleet fleet(vci);
+    if (!fleet.start(&error)) {
+        std::fprintf(stderr, "sortie-sim: %s\n", qPrintable(error));
+        return 1;
+    }
+    for (const QString &line : fleet.describe())
+        std::printf("sortie-sim: VCI %s\n", qPrintable(line));
     std::fflush(stdout);
     const int code = app.exec();
     world.saveStore();

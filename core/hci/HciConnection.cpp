@@ -243,11 +243,13 @@ void HciConnection::dispatch(HciFrame &frame)
     const int32_t type = frame.header.type;
     const int32_t id = frame.header.instanceId;
     if (id == kHciNotificationInstance) {
+        QPointer<HciConnection> self(this);
         if (type == kNotificationType)
             dispatchNotification(frame);
         else
             dropFrame(QStringLiteral("%1 with instance id -1 is not a notification").arg(typeName(type)));
-        m_decoder.recycle(std::move(frame.message));
+        if (self) // a subscriber may have deleted us
+            m_decoder.recycle(std::move(frame.message));
         return;
     }
     const QPointer<HciReply> reply = m_pending.value(id);

@@ -1,12 +1,18 @@
 #include "HciFrameCodec.h"
 
 #include "HciMessageTypes.h"
+#include "HciTelemetryFastPath.h"
+#include "Messages.pb.h"
 
 #include <google/protobuf/message.h>
 
 #include <cstring>
+#include <typeinfo>
 
 namespace sortie::hci {
+namespace {
+constexpr int32_t kNotificationType = 1;
+} // namespace
 
 const char *toString(HciDropReason reason)
 {
@@ -94,12 +100,13 @@ void HciFrameDecoder::recycle(std::unique_ptr<google::protobuf::Message> message
 
 std::unique_ptr<google::protobuf::Message> HciFrameDecoder::take(const google::protobuf::Message &prototype)
 {
-    const auto *descriptor = prototype.GetDescriptor();
+    // typeid, not GetDescriptor(): this runs for every frame, and the descriptor lookup is not free.
+    const std::type_info &type = typeid(prototype);
     for (auto it = m_spares.rbegin(); it != m_spares.rend(); ++it) {
-        if ((*it)->GetDescriptor() == descriptor) {
+        if (typeid(**it) == type) {
             auto message = std::move(*it);
             m_spares.erase(std::next(it).base());
-            return message; // ParsePartialFromArray clears it first
+            return message; // the parsers clear it first
         }
     }
     return std::unique_ptr<google::protobuf::Message>(prototype.New());
@@ -186,7 +193,13 @@ std::optional<HciFrameDecoder::Result> HciFrameDecoder::next()
         result = drop(header, HciDropReason::UnknownType, "type " + std::to_string(header.type) + " is not mapped");
     } else {
         std::unique_ptr<google::protobuf::Message> message = take(*prototype);
-        if (!message->ParsePartialFromArray(payload, header.length)) {
+        if (header.type == kNotificationType && m_fastPath
+            && HciTelemetryFastPath::parse(std::string_view(payload, size_t(header.length)),
+                                           static_cast<com::ugcs::ucs::proto::Notification *>(message.get()))) {
+            // Telemetry, parsed directly: complete by construction, identical to the general parse.
+            ++m_decoded;
+            result = HciFrame{m_offset, header, std::move(message)};
+        } else if (!message->ParsePartialFromArray(payload, header.length)) {
             result = drop(header, HciDropReason::InvalidPayload,
                           std::string(message->GetDescriptor()->name()) + " payload does not parse");
         } else if (!message->IsInitialized()) {

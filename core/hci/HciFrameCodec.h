@@ -51,6 +51,9 @@ public:
     // Bytes skipped while resynchronising after a bad length (the bad header itself included).
     uint64_t bytesDiscarded() const { return m_discarded; }
     void reset();
+    // Telemetry notifications take a direct parser (HciTelemetryFastPath) unless this is off; the
+    // result is the same either way. Off is for comparing the two.
+    void setFastPath(bool enabled) { m_fastPath = enabled; }
 
 private:
     bool resynchronise();
@@ -65,6 +68,7 @@ private:
     uint64_t m_decoded = 0;
     uint64_t m_dropped = 0;
     uint64_t m_discarded = 0;
+    bool m_fastPath = true;
     // A few spare messages, at most kSpares, most recently recycled last.
     static constexpr size_t kSpares = 4;
     std::vector<std::unique_ptr<google::protobuf::Message>> m_spares;

@@ -230,9 +230,14 @@ const std::array kTable = {
 
 const google::protobuf::Message *HciMessageTypes::prototype(int32_t number)
 {
-    const auto it = std::lower_bound(kTable.begin(), kTable.end(), number,
-                                     [](const Entry &e, int32_t n) { return e.number < n; });
-    return it != kTable.end() && it->number == number ? it->prototype : nullptr;
+    // A direct table over 0..500 (the decoder asks for every frame), built once from kTable.
+    static const auto byNumber = [] {
+        std::array<const google::protobuf::Message *, 501> table{};
+        for (const Entry &e : kTable)
+            table[size_t(e.number)] = e.prototype;
+        return table;
+    }();
+    return number >= 0 && size_t(number) < byNumber.size() ? byNumber[size_t(number)] : nullptr;
 }
 
 std::optional<int32_t> HciMessageTypes::number(const google::protobuf::Descriptor *descriptor)

@@ -53,6 +53,7 @@ void HciSession::open(const QString &host, quint16 port, const QString &login, c
         setState(State::Disconnected); // so the close below is not taken for a drop
         m_connection->disconnectFromServer();
     }
+    forgetServerIds();
     m_host = host;
     m_port = port;
     m_login = login;
@@ -96,14 +97,20 @@ void HciSession::finishClose()
     m_reattachId = -1;
     m_handshake = nullptr;
     m_password.clear();
-    for (auto it = m_subscriptions.begin(); it != m_subscriptions.end(); ++it) {
-        it.value() = -1;
-        it.key()->setServerId(-1);
-    }
+    forgetServerIds();
     setState(State::Disconnected);
     setClientId(-1);
     m_connection->disconnectFromServer();
     qCInfo(lcHci) << "session closed";
+}
+
+// Server subscription ids belong to one connection's session: without it they mean nothing.
+void HciSession::forgetServerIds()
+{
+    for (auto it = m_subscriptions.begin(); it != m_subscriptions.end(); ++it) {
+        it.value() = -1;
+        it.key()->setServerId(-1);
+    }
 }
 
 void HciSession::setState(State state)
@@ -286,10 +293,7 @@ void HciSession::fail(const HciError &error)
     m_closing = false;
     m_handshake = nullptr;
     m_lastError = error;
-    for (auto it = m_subscriptions.begin(); it != m_subscriptions.end(); ++it) {
-        it.value() = -1;
-        it.key()->setServerId(-1);
-    }
+    forgetServerIds();
     setState(State::Disconnected); // before closing, so the close is not taken for a drop
     setClientId(-1);
     m_connection->disconnectFromServer();

@@ -92,6 +92,7 @@ private:
     void finishClose();
     void establish(HciSubscription *subscription);
     void forget(HciSubscription *subscription);
+    void forgetServerIds();
     void setState(State state);
     void setClientId(int32_t id);
     HciReply *failedReply(const google::protobuf::Message &request, const HciError &error);

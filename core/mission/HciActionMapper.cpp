@@ -1,8 +1,10 @@
 #include "HciActionMapper.h"
 
 #include "Domain.pb.h"
+#include "HciText.h"
 
 #include <numbers>
+#include <optional>
 
 namespace sortie::mission {
 
@@ -15,8 +17,6 @@ template<class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 // Set a field only when the decoded value differs: keeps the server's bytes when nothing changed.
-#define SORTIE_MERGE(msg, field, value) \
-    do { if (!(msg).has_##field() || (msg).field() != (value)) (msg).set_##field(value); } while (0)
 }
 
 WaypointAction actionFromHci(const pb::ActionDefinition &d)
@@ -64,63 +64,80 @@ WaypointAction actionFromHci(const pb::ActionDefinition &d)
 
 void actionToHci(const WaypointAction &action, pb::ActionDefinition &def)
 {
+    if (const auto *o = std::get_if<OpaqueAction>(&action)) {
+        if (o->definition)
+            def = *o->definition;
+        return;
+    }
+    // Compare with what def already says (decoded: an absent field reads as its meaning, not
+    // its protobuf default) and write only the differences; a new definition gets every field.
+    std::optional<WaypointAction> decoded;
+    if (def.ByteSizeLong() > 0)
+        decoded = actionFromHci(def);
+    if (decoded && decoded->index() != action.index()) {
+        def.Clear();  // another kind of action: nothing of the old one applies
+        decoded.reset();
+    }
+    const bool fresh = !decoded;
     std::visit(Overloaded{
         [&](const WaitAction &a) {
+            const WaitAction *b = fresh ? nullptr : &std::get<WaitAction>(*decoded);
             auto *w = def.mutable_waitdefinition();
-            SORTIE_MERGE(*w, interval, a.seconds);
-            SORTIE_MERGE(*w, waitforoperator, a.waitForOperator);
+            if (!b || differs(b->seconds, a.seconds)) w->set_interval(a.seconds);
+            if (!b || b->waitForOperator != a.waitForOperator) w->set_waitforoperator(a.waitForOperator);
         },
         [&](const HeadingAction &a) {
+            const HeadingAction *b = fresh ? nullptr : &std::get<HeadingAction>(*decoded);
             auto *h = def.mutable_headingdefinition();
-            if (h->heading() / kDeg != a.headingDeg || !h->has_heading())
-                h->set_heading(a.headingDeg * kDeg);
-            SORTIE_MERGE(*h, relativetonextwaypoint, a.relativeToNextWaypoint);
+            if (!b || differs(b->headingDeg, a.headingDeg)) h->set_heading(a.headingDeg * kDeg);
+            if (!b || b->relativeToNextWaypoint != a.relativeToNextWaypoint) h->set_relativetonextwaypoint(a.relativeToNextWaypoint);
         },
         [&](const PoiAction &a) {
+            const PoiAction *b = fresh ? nullptr : &std::get<PoiAction>(*decoded);
             auto *p = def.mutable_poidefinition();
-            SORTIE_MERGE(*p, mode, pb::PM_LOCATION);
-            if (!p->has_latitude() || p->latitude() / kDeg != a.position.latitude)
-                p->set_latitude(a.position.latitude * kDeg);
-            if (!p->has_longitude() || p->longitude() / kDeg != a.position.longitude)
-                p->set_longitude(a.position.longitude * kDeg);
-            const pb::AltitudeType t = a.altitudeType == AltitudeType::Amsl ? pb::AT_WGS84 : pb::AT_AGL;
-            SORTIE_MERGE(*p, altitudetype, t);
-            if (a.altitudeType == AltitudeType::Amsl)
-                SORTIE_MERGE(*p, wgs84altitude, a.altitude);
-            else
-                SORTIE_MERGE(*p, aglaltitude, a.altitude);
+            if (!b) p->set_mode(pb::PM_LOCATION);
+            if (!b || differs(b->position.latitude, a.position.latitude)) p->set_latitude(a.position.latitude * kDeg);
+            if (!b || differs(b->position.longitude, a.position.longitude)) p->set_longitude(a.position.longitude * kDeg);
+            const bool typeChanged = !b || b->altitudeType != a.altitudeType;
+            if (typeChanged) p->set_altitudetype(a.altitudeType == AltitudeType::Amsl ? pb::AT_WGS84 : pb::AT_AGL);
+            if (typeChanged || differs(b->altitude, a.altitude)) {
+                if (a.altitudeType == AltitudeType::Amsl) p->set_wgs84altitude(a.altitude);
+                else p->set_aglaltitude(a.altitude);
+            }
         },
         [&](const CameraTriggerAction &a) {
-            SORTIE_MERGE(*def.mutable_cameratriggerdefinition(), state, pb::TriggerState(int(a.state)));
+            const CameraTriggerAction *b = fresh ? nullptr : &std::get<CameraTriggerAction>(*decoded);
+            auto *c = def.mutable_cameratriggerdefinition();
+            if (!b || b->state != a.state) c->set_state(pb::TriggerState(int(a.state)));
         },
         [&](const CameraSeriesByTimeAction &a) {
+            const CameraSeriesByTimeAction *b = fresh ? nullptr : &std::get<CameraSeriesByTimeAction>(*decoded);
             auto *c = def.mutable_cameraseriesbytimedefinition();
-            SORTIE_MERGE(*c, interval, a.intervalSeconds);
-            SORTIE_MERGE(*c, shotsnumber, a.shots);
-            SORTIE_MERGE(*c, startdelay, a.startDelaySeconds);
-            if (!c->has_autocalc()) c->set_autocalc(false);
+            if (!b || differs(b->intervalSeconds, a.intervalSeconds)) c->set_interval(a.intervalSeconds);
+            if (!b || b->shots != a.shots) c->set_shotsnumber(a.shots);
+            if (!b || differs(b->startDelaySeconds, a.startDelaySeconds)) c->set_startdelay(a.startDelaySeconds);
+            if (!b) c->set_autocalc(false);
         },
         [&](const CameraSeriesByDistanceAction &a) {
+            const CameraSeriesByDistanceAction *b = fresh ? nullptr : &std::get<CameraSeriesByDistanceAction>(*decoded);
             auto *c = def.mutable_cameraseriesbydistancedefinition();
-            SORTIE_MERGE(*c, interval, a.intervalMeters);
-            SORTIE_MERGE(*c, shotsnumber, a.shots);
-            SORTIE_MERGE(*c, startdelay, a.startDelaySeconds);
-            if (!c->has_autocalc()) c->set_autocalc(false);
+            if (!b || differs(b->intervalMeters, a.intervalMeters)) c->set_interval(a.intervalMeters);
+            if (!b || b->shots != a.shots) c->set_shotsnumber(a.shots);
+            if (!b || differs(b->startDelaySeconds, a.startDelaySeconds)) c->set_startdelay(a.startDelaySeconds);
+            if (!b) c->set_autocalc(false);
         },
         [&](const PanoramaAction &a) {
+            const PanoramaAction *b = fresh ? nullptr : &std::get<PanoramaAction>(*decoded);
             auto *p = def.mutable_panoramadefinition();
-            if (!p->has_angle() || p->angle() / kDeg != a.angleDeg) p->set_angle(a.angleDeg * kDeg);
-            if (!p->has_stepangle() || p->stepangle() / kDeg != a.stepAngleDeg) p->set_stepangle(a.stepAngleDeg * kDeg);
-            SORTIE_MERGE(*p, stepdelay, a.stepDelaySeconds);
-            SORTIE_MERGE(*p, rotationdirection, a.direction == RotationDirection::Clockwise ? pb::RD_CLOCKWISE : pb::RD_COUNTERCLOCKWISE);
-            if (!p->has_rotationspeed() || p->rotationspeed() / kDeg != a.rotationSpeedDegPerSecond)
-                p->set_rotationspeed(a.rotationSpeedDegPerSecond * kDeg);
-            SORTIE_MERGE(*p, panoramamode, a.mode == PanoramaMode::Video ? pb::PM_VIDEO : pb::PM_PHOTO);
+            if (!b || differs(b->angleDeg, a.angleDeg)) p->set_angle(a.angleDeg * kDeg);
+            if (!b || differs(b->stepAngleDeg, a.stepAngleDeg)) p->set_stepangle(a.stepAngleDeg * kDeg);
+            if (!b || differs(b->stepDelaySeconds, a.stepDelaySeconds)) p->set_stepdelay(a.stepDelaySeconds);
+            if (!b || b->direction != a.direction)
+                p->set_rotationdirection(a.direction == RotationDirection::Clockwise ? pb::RD_CLOCKWISE : pb::RD_COUNTERCLOCKWISE);
+            if (!b || differs(b->rotationSpeedDegPerSecond, a.rotationSpeedDegPerSecond)) p->set_rotationspeed(a.rotationSpeedDegPerSecond * kDeg);
+            if (!b || b->mode != a.mode) p->set_panoramamode(a.mode == PanoramaMode::Video ? pb::PM_VIDEO : pb::PM_PHOTO);
         },
-        [&](const OpaqueAction &a) {
-            if (a.definition)
-                def = *a.definition;
-        },
+        [&](const OpaqueAction &) {},
     }, action);
 }
 

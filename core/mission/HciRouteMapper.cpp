@@ -2,6 +2,7 @@
 
 #include "Domain.pb.h"
 #include "HciSegmentMapper.h"
+#include "HciText.h"
 
 namespace sortie::mission {
 
@@ -44,11 +45,14 @@ RouteSettings settingsFromHci(const pb::Route &r)
     return s;
 }
 
+// Sets the last parameter of the type: the one settingsFromHci reads when there are several.
 void setProfileParameter(pb::VehicleProfile &vp, pb::VehicleParameterType type, double value)
 {
-    for (auto &p : *vp.mutable_parameters()) {
+    auto *params = vp.mutable_parameters();
+    for (int i = params->size() - 1; i >= 0; --i) {
+        pb::VehicleParameter &p = *params->Mutable(i);
         if (p.type() == type) {
-            if (p.value() != value)
+            if (differs(p.value(), value))
                 p.set_value(value);
             return;
         }
@@ -61,12 +65,12 @@ void setProfileParameter(pb::VehicleProfile &vp, pb::VehicleParameterType type, 
 void settingsToHci(const RouteSettings &s, const RouteSettings *before, pb::Route &r)
 {
     if (!before || before->name != s.name) r.set_name(s.name.toStdString());
-    if (!before || before->safeAltitude != s.safeAltitude) r.set_safealtitude(s.safeAltitude);
-    if (!before || before->maxAltitude != s.maxAltitude) r.set_maxaltitude(s.maxAltitude);
-    if (!before || before->initialSpeed != s.initialSpeed) r.set_initialspeed(s.initialSpeed);
-    if (!before || before->maxSpeed != s.maxSpeed) r.set_maxspeed(s.maxSpeed);
-    if ((!before && s.cornerRadius != 0) || (before && before->cornerRadius != s.cornerRadius)) r.set_cornerradius(s.cornerRadius);
-    if ((!before && s.takeoffHeight != 0) || (before && before->takeoffHeight != s.takeoffHeight)) r.set_takeoffheight(s.takeoffHeight);
+    if (!before || differs(before->safeAltitude, s.safeAltitude)) r.set_safealtitude(s.safeAltitude);
+    if (!before || differs(before->maxAltitude, s.maxAltitude)) r.set_maxaltitude(s.maxAltitude);
+    if (!before || differs(before->initialSpeed, s.initialSpeed)) r.set_initialspeed(s.initialSpeed);
+    if (!before || differs(before->maxSpeed, s.maxSpeed)) r.set_maxspeed(s.maxSpeed);
+    if ((!before && s.cornerRadius != 0) || (before && differs(before->cornerRadius, s.cornerRadius))) r.set_cornerradius(s.cornerRadius);
+    if ((!before && s.takeoffHeight != 0) || (before && differs(before->takeoffHeight, s.takeoffHeight))) r.set_takeoffheight(s.takeoffHeight);
     if (!before || before->failsafes != s.failsafes) {
         auto *list = r.mutable_failsafes();
         while (list->size() > int(s.failsafes.size()))
@@ -79,13 +83,13 @@ void settingsToHci(const RouteSettings &s, const RouteSettings *before, pb::Rout
                 f->set_action(pb::FailsafeAction(int(s.failsafes[i].action)));
         }
     }
-    if (before && !(before->profile == s.profile)) {
-        pb::VehicleProfile *vp = r.mutable_vehicleprofile();
-        if (before->profile.name != s.profile.name) vp->set_name(s.profile.name.toStdString());
-        if (before->profile.maxHorizontalSpeed != s.profile.maxHorizontalSpeed)
-            setProfileParameter(*vp, pb::VPT_MAX_HORIZONTAL_SPEED, s.profile.maxHorizontalSpeed);
-        if (before->profile.climbRate != s.profile.climbRate) setProfileParameter(*vp, pb::VPT_DEFAULT_CLIMB_RATE, s.profile.climbRate);
-        if (before->profile.descentRate != s.profile.descentRate) setProfileParameter(*vp, pb::VPT_DEFAULT_DESCENT_RATE, s.profile.descentRate);
+    if (before) {
+        const VehicleProfile &b = before->profile, &p = s.profile;
+        if (b.name != p.name) r.mutable_vehicleprofile()->set_name(p.name.toStdString());
+        if (differs(b.maxHorizontalSpeed, p.maxHorizontalSpeed))
+            setProfileParameter(*r.mutable_vehicleprofile(), pb::VPT_MAX_HORIZONTAL_SPEED, p.maxHorizontalSpeed);
+        if (differs(b.climbRate, p.climbRate)) setProfileParameter(*r.mutable_vehicleprofile(), pb::VPT_DEFAULT_CLIMB_RATE, p.climbRate);
+        if (differs(b.descentRate, p.descentRate)) setProfileParameter(*r.mutable_vehicleprofile(), pb::VPT_DEFAULT_DESCENT_RATE, p.descentRate);
     }
 }
 }
@@ -153,9 +157,9 @@ pb::Mission missionToHci(const Mission &mission)
     pb::Mission out;
     if (mission.origin.message)
         out = *mission.origin.message;
-    if (!mission.origin.message || out.name() != mission.name.toStdString())
+    if (!mission.origin.message || QString::fromStdString(out.name()) != mission.name)
         out.set_name(mission.name.toStdString());
-    if (!mission.origin.message || out.description() != mission.description.toStdString())
+    if (!mission.origin.message || QString::fromStdString(out.description()) != mission.description)
         out.set_description(mission.description.toStdString());
     out.clear_routes();
     for (const Route &r : mission.routes)

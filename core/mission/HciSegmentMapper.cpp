@@ -160,21 +160,21 @@ void waypointToHci(const Waypoint &w, const Waypoint *before, pb::SegmentDefinit
                                      : w.role == WaypointRole::Land ? pb::FT_LANDING_POINT : pb::FT_POINT);
     }
     pb::FigurePoint *p = s.mutable_figure()->points_size() > 0 ? s.mutable_figure()->mutable_points(0) : s.mutable_figure()->add_points();
-    if (fresh || before->position.latitude != w.position.latitude)
+    if (fresh || differs(before->position.latitude, w.position.latitude))
         p->set_latitude(w.position.latitude * kDeg);
-    if (fresh || before->position.longitude != w.position.longitude)
+    if (fresh || differs(before->position.longitude, w.position.longitude))
         p->set_longitude(w.position.longitude * kDeg);
     const bool typeChanged = fresh || before->altitudeType != w.altitudeType;
     if (typeChanged) {
         p->set_altitudetype(w.altitudeType == AltitudeType::Amsl ? pb::AT_WGS84 : pb::AT_AGL);
     }
-    if (typeChanged || before->altitude != w.altitude) {
+    if (typeChanged || differs(before->altitude, w.altitude)) {
         if (w.altitudeType == AltitudeType::Amsl)
             p->set_wgs84altitude(w.altitude);
         else
             p->set_aglaltitude(w.altitude);
     }
-    if (fresh || before->speed != w.speed)
+    if (fresh || differs(before->speed, w.speed))
         setNumber(s, "speed", w.speed);
     if (fresh || before->turnType != w.turnType)
         setParam(s, "wpTurnType", turnName(w.turnType));
@@ -184,7 +184,7 @@ void waypointToHci(const Waypoint &w, const Waypoint *before, pb::SegmentDefinit
     }
     if (typeChanged)
         setParam(s, "altitudeType", w.altitudeType == AltitudeType::Amsl ? "AMSL" : "AGL");
-    if ((fresh && w.acceptanceRadius != 0) || (!fresh && before->acceptanceRadius != w.acceptanceRadius))
+    if ((fresh && w.acceptanceRadius != 0) || (!fresh && differs(before->acceptanceRadius, w.acceptanceRadius)))
         setNumber(s, "acceptanceRadius", w.acceptanceRadius);
     if (fresh || before->actions != w.actions) {
         // Merge by position: an action of the same kind at the same index keeps its definition's ids.
@@ -214,22 +214,22 @@ void scanToHci(const AreaScan &a, const AreaScan *before, pb::SegmentDefinition 
             points->RemoveLast();
         for (size_t i = 0; i < a.polygon.size(); ++i) {
             pb::FigurePoint *p = int(i) < points->size() ? points->Mutable(int(i)) : s.mutable_figure()->add_points();
-            if (fresh || i >= before->polygon.size() || before->polygon[i].latitude != a.polygon[i].latitude)
+            if (fresh || i >= before->polygon.size() || differs(before->polygon[i].latitude, a.polygon[i].latitude))
                 p->set_latitude(a.polygon[i].latitude * kDeg);
-            if (fresh || i >= before->polygon.size() || before->polygon[i].longitude != a.polygon[i].longitude)
+            if (fresh || i >= before->polygon.size() || differs(before->polygon[i].longitude, a.polygon[i].longitude))
                 p->set_longitude(a.polygon[i].longitude * kDeg);
         }
     }
     const AreaScanParameters &p = a.parameters;
     const AreaScanParameters *b = before ? &before->parameters : nullptr;
-    if (!b || scanAltitude(*b) != scanAltitude(p)) setNumber(s, "height", scanAltitude(p));
+    if (!b || differs(scanAltitude(*b), scanAltitude(p))) setNumber(s, "height", scanAltitude(p));
     if (!b || b->altitudeType != p.altitudeType) setParam(s, "altitudeType", p.altitudeType == AltitudeType::Amsl ? "AMSL" : "AGL");
-    if (!b || b->sideOverlapPercent != p.sideOverlapPercent) setNumber(s, "sideOverlap", p.sideOverlapPercent);
-    if (!b || b->frontOverlapPercent != p.frontOverlapPercent) setNumber(s, "forwardOverlap", p.frontOverlapPercent);
-    if (!b || b->directionDeg != p.directionDeg) setNumber(s, "directionAngle", p.directionDeg);
-    if (!b || b->turnaroundMeters != p.turnaroundMeters) setNumber(s, "overshoot", p.turnaroundMeters);
-    if (!b || b->speed != p.speed) setNumber(s, "speed", p.speed);
-    if (!b || b->heightMode != p.heightMode || b->groundSampleDistanceCm != p.groundSampleDistanceCm) {
+    if (!b || differs(b->sideOverlapPercent, p.sideOverlapPercent)) setNumber(s, "sideOverlap", p.sideOverlapPercent);
+    if (!b || differs(b->frontOverlapPercent, p.frontOverlapPercent)) setNumber(s, "forwardOverlap", p.frontOverlapPercent);
+    if (!b || differs(b->directionDeg, p.directionDeg)) setNumber(s, "directionAngle", p.directionDeg);
+    if (!b || differs(b->turnaroundMeters, p.turnaroundMeters)) setNumber(s, "overshoot", p.turnaroundMeters);
+    if (!b || differs(b->speed, p.speed)) setNumber(s, "speed", p.speed);
+    if (!b || b->heightMode != p.heightMode || differs(b->groundSampleDistanceCm, p.groundSampleDistanceCm)) {
         if (p.heightMode == ScanHeightMode::GroundSampleDistance) {
             setNumber(s, "groundSampleDistance", p.groundSampleDistanceCm);
         } else {

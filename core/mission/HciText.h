@@ -13,4 +13,7 @@ namespace sortie::mission {
 std::string javaDoubleString(double v);
 std::optional<double> parseHciDouble(const std::string &text);
 
+// Whether a value changed, counting NaN as equal to NaN: a server's NaN left alone stays its NaN.
+inline bool differs(double a, double b) { return !(a == b || (a != a && b != b)); }
+
 } // namespace sortie::mission

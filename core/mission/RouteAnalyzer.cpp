@@ -15,6 +15,14 @@ RouteAnalyzer::RouteAnalyzer(const RouteModel *model, QObject *parent)
     recomputeNow();
 }
 
+QVariantMap RouteAnalyzer::boundingBox() const
+{
+    const GeoBox &b = m_statistics.boundingBox;
+    if (b.empty)
+        return {};
+    return {{"south", b.south}, {"west", b.west}, {"north", b.north}, {"east", b.east}};
+}
+
 void RouteAnalyzer::setDelay(int milliseconds)
 {
     m_timer.setInterval(milliseconds);

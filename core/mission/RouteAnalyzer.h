@@ -7,6 +7,7 @@
 
 #include <QObject>
 #include <QTimer>
+#include <QVariantMap>
 
 namespace sortie::mission {
 
@@ -22,6 +23,11 @@ class RouteAnalyzer : public QObject
     Q_PROPERTY(double flightTimeSeconds READ flightTimeSeconds NOTIFY statisticsChanged)
     Q_PROPERTY(int photoCount READ photoCount NOTIFY statisticsChanged)
     Q_PROPERTY(int waypointCount READ waypointCount NOTIFY statisticsChanged)
+    Q_PROPERTY(int areaScanCount READ areaScanCount NOTIFY statisticsChanged)
+    Q_PROPERTY(double climbMeters READ climbMeters NOTIFY statisticsChanged)
+    Q_PROPERTY(double descentMeters READ descentMeters NOTIFY statisticsChanged)
+    // {south, west, north, east} in degrees (west > east across the antimeridian); empty without points.
+    Q_PROPERTY(QVariantMap boundingBox READ boundingBox NOTIFY statisticsChanged)
     Q_PROPERTY(int errorCount READ errorCount NOTIFY validationChanged)
     Q_PROPERTY(int warningCount READ warningCount NOTIFY validationChanged)
     Q_PROPERTY(sortie::mission::ValidationIssueModel *issues READ issues CONSTANT)
@@ -40,6 +46,10 @@ public:
     double flightTimeSeconds() const { return m_statistics.flightTimeSeconds; }
     int photoCount() const { return m_statistics.photoCount; }
     int waypointCount() const { return m_statistics.waypointCount; }
+    int areaScanCount() const { return m_statistics.areaScanCount; }
+    double climbMeters() const { return m_statistics.climbMeters; }
+    double descentMeters() const { return m_statistics.descentMeters; }
+    QVariantMap boundingBox() const;
     int errorCount() const { return m_validation.errorCount(); }
     int warningCount() const { return m_validation.warningCount(); }
     bool isPending() const { return m_timer.isActive(); }

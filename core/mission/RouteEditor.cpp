@@ -9,6 +9,7 @@
 #include "ReorderSegmentsCommand.h"
 #include "ReplaceRouteCommand.h"
 #include "RouteModel.h"
+#include "ScanVariants.h"
 #include "SetRouteSettingsCommand.h"
 
 #include <QUndoStack>
@@ -78,7 +79,19 @@ void RouteEditor::moveWaypoint(int row, double latitude, double longitude)
     const GeoPoint p{latitude, longitude};
     if (row < 0 || row >= m_model->count() || !isWaypoint(m_model->segment(row)) || !p.isValid())
         return;
-    m_stack->push(new MoveWaypointCommand(m_model, row, p));
+    m_stack->push(new MoveWaypointCommand(m_model, row, p, m_gesture));
+}
+
+QList<int> RouteEditor::rowsOf(const QItemSelectionModel *selection) const
+{
+    QList<int> rows;
+    if (!selection || selection->model() != m_model)
+        return rows;
+    for (const QModelIndex &i : selection->selectedIndexes())
+        rows << i.row();
+    std::sort(rows.begin(), rows.end());
+    rows.erase(std::unique(rows.begin(), rows.end()), rows.end());
+    return rows;
 }
 
 void RouteEditor::removeRows(const QList<int> &rows)
@@ -187,6 +200,29 @@ void RouteEditor::removeAction(const QList<int> &rows, int actionIndex)
         if (Waypoint *w = asWaypoint(s); w && actionIndex >= 0 && actionIndex < int(w->actions.size()))
             w->actions.erase(w->actions.begin() + actionIndex);
     }, QStringLiteral("Remove action"));
+}
+
+bool RouteEditor::setAction(const QList<int> &rows, int actionIndex, const QVariantMap &action)
+{
+    const auto a = actionFromVariant(action);
+    if (!a)
+        return false;
+    editSegments(rows, [&a, actionIndex](Segment &s) {
+        if (Waypoint *w = asWaypoint(s); w && actionIndex >= 0 && actionIndex < int(w->actions.size()))
+            w->actions[size_t(actionIndex)] = *a;
+    }, QStringLiteral("Edit action: %1").arg(describeAction(*a)));
+    return true;
+}
+
+bool RouteEditor::setScanProperties(int row, const QVariantMap &parameters)
+{
+    if (row < 0 || row >= m_model->count() || !isAreaScan(m_model->segment(row)))
+        return false;
+    AreaScanParameters p = std::get<AreaScan>(m_model->segment(row)).parameters;
+    if (!applyScanVariant(p, parameters))
+        return false;
+    setScanParameters(row, p);
+    return true;
 }
 
 void RouteEditor::clearActions(const QList<int> &rows)

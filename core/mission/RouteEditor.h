@@ -2,6 +2,7 @@
 
 #include "Route.h"
 
+#include <QItemSelectionModel>
 #include <QList>
 #include <QObject>
 #include <QUndoStack>
@@ -31,7 +32,9 @@ public:
     // route's settings). Returns the new row.
     Q_INVOKABLE int addWaypoint(double latitude, double longitude);
     Q_INVOKABLE int insertWaypoint(int row, double latitude, double longitude);
+    // Moves within one gesture (a drag) merge into one undo step; endMove() closes the gesture.
     Q_INVOKABLE void moveWaypoint(int row, double latitude, double longitude);
+    Q_INVOKABLE void endMove() { ++m_gesture; }
     Q_INVOKABLE void removeRows(const QList<int> &rows);
     Q_INVOKABLE void moveRows(const QList<int> &rows, int destination);
     // Reverses the span from the first to the last selected row; the whole route when empty.
@@ -46,10 +49,16 @@ public:
     Q_INVOKABLE void setAcceptanceRadius(const QList<int> &rows, double meters);
     Q_INVOKABLE bool addAction(const QList<int> &rows, const QVariantMap &action);
     Q_INVOKABLE void removeAction(const QList<int> &rows, int actionIndex);
+    // Replaces the action at actionIndex (in every selected waypoint that has one there).
+    Q_INVOKABLE bool setAction(const QList<int> &rows, int actionIndex, const QVariantMap &action);
     Q_INVOKABLE void clearActions(const QList<int> &rows);
     // polygon: list of {latitude, longitude}. Returns the new row, or -1 for a bad polygon.
     Q_INVOKABLE int addAreaScan(const QVariantList &polygon);
+    // Changes the keys given (see ScanVariants.h); false for a bad value or a row that is no scan.
+    Q_INVOKABLE bool setScanProperties(int row, const QVariantMap &parameters);
     Q_INVOKABLE bool setRouteProperty(const QString &name, const QVariant &value);
+    // The rows a view's selection covers, sorted, for the bulk edits above.
+    Q_INVOKABLE QList<int> rowsOf(const QItemSelectionModel *selection) const;
 
     // C++ side of the same operations.
     int insertSegments(int row, std::vector<Segment> segments, const QString &text);
@@ -66,6 +75,7 @@ private:
 
     RouteModel *m_model;
     QUndoStack *m_stack;
+    int m_gesture = 0;
 };
 
 } // namespace sortie::mission

@@ -3,6 +3,7 @@
 #include "ActionVariants.h"
 #include "EditSegmentsCommand.h"
 #include "MoveWaypointCommand.h"
+#include "ScanVariants.h"
 
 #include <QUndoStack>
 
@@ -14,19 +15,6 @@ namespace {
 // Beyond this many separate runs a removal or restore resets the model instead of signalling
 // each run: one O(n) pass beats thousands of O(n) erases.
 constexpr size_t kMaxRunsSignalled = 16;
-
-QVariantMap scanParametersToVariant(const AreaScanParameters &p)
-{
-    return {
-        {"cameraName", p.camera.name}, {"sensorWidthMm", p.camera.sensorWidthMm}, {"sensorHeightMm", p.camera.sensorHeightMm},
-        {"focalLengthMm", p.camera.focalLengthMm}, {"imageWidthPx", p.camera.imageWidthPx}, {"imageHeightPx", p.camera.imageHeightPx},
-        {"byGroundSampleDistance", p.heightMode == ScanHeightMode::GroundSampleDistance},
-        {"altitude", scanAltitude(p)}, {"groundSampleDistanceCm", scanGroundSampleDistanceCm(p)},
-        {"altitudeType", altitudeTypeName(p.altitudeType)}, {"frontOverlapPercent", p.frontOverlapPercent},
-        {"sideOverlapPercent", p.sideOverlapPercent}, {"directionDeg", p.directionDeg},
-        {"turnaroundMeters", p.turnaroundMeters}, {"speed", p.speed},
-    };
-}
 
 // The edit a setData call asks for, or nullopt when the role is not editable or the value is bad.
 std::optional<std::function<void(Segment &)>> editFor(int role, const QVariant &value)
@@ -101,7 +89,7 @@ QHash<int, QByteArray> RouteModel::roleNames() const
         {KindRole, "kind"}, {SequenceRole, "sequence"}, {LatitudeRole, "latitude"}, {LongitudeRole, "longitude"},
         {AltitudeRole, "altitude"}, {AltitudeTypeRole, "altitudeType"}, {SpeedRole, "speed"}, {TurnTypeRole, "turnType"},
         {AcceptanceRadiusRole, "acceptanceRadius"}, {ActionCountRole, "actionCount"}, {ActionsSummaryRole, "actionsSummary"},
-        {ActionsRole, "actions"}, {PolygonRole, "polygon"}, {ScanParametersRole, "scanParameters"},
+        {ActionsRole, "actions"}, {PolygonRole, "polygon"}, {ScanParametersRole, "scanParameters"}, {ScanPlanRole, "scanPlan"},
         {Qt::DisplayRole, "display"},
     };
 }
@@ -144,6 +132,7 @@ QVariant RouteModel::data(const QModelIndex &index, int role) const
         return list;
     }
     case ScanParametersRole: return scan ? scanParametersToVariant(scan->parameters) : QVariant();
+    case ScanPlanRole: return scan ? scanPlanToVariant(m_scanPlans.outcome(*scan)) : QVariant();
     default: return {};
     }
 }

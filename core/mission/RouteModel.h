@@ -1,6 +1,7 @@
 #pragma once
 
 #include "Route.h"
+#include "ScanPlanCache.h"
 
 #include <QAbstractListModel>
 #include <QPointer>
@@ -39,7 +40,8 @@ public:
         ActionsSummaryRole,           // "Wait 5 s · Photo every 20 m"
         ActionsRole,                  // list of maps, see ActionVariants.h
         PolygonRole,                  // a scan's vertices: list of {latitude, longitude}
-        ScanParametersRole,           // a scan's parameters as a map
+        ScanParametersRole,           // a scan's parameters as a map (ScanVariants.h)
+        ScanPlanRole,                 // a scan's generated plan: path, transects, photos (ScanVariants.h)
     };
     Q_ENUM(Roles)
 
@@ -88,6 +90,7 @@ private:
 
     Route m_route;
     QPointer<QUndoStack> m_undoStack;
+    mutable ScanPlanCache m_scanPlans;  // plans shown through ScanPlanRole
 };
 
 // Contiguous runs [first, last] of sorted rows.

@@ -12,6 +12,8 @@ const AreaScanOutcome &ScanPlanCache::outcome(const AreaScan &scan)
             return e.outcome;
         }
     }
+    if (m_entries.size() >= kMaxEntries)
+        m_entries.erase(m_entries.begin());  // the oldest; a cache used without retainRecentlyUsed stays bounded
     m_entries.push_back({scan, planAreaScan(scan), true});
     return m_entries.back().outcome;
 }

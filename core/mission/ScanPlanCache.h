@@ -15,6 +15,7 @@ public:
     // Forget the scans not asked for since the previous call.
     void retainRecentlyUsed();
     size_t size() const { return m_entries.size(); }
+    static constexpr size_t kMaxEntries = 64;
 
 private:
     struct Entry { AreaScan scan; AreaScanOutcome outcome; bool used; };

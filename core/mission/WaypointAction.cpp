@@ -1,5 +1,7 @@
 #include "WaypointAction.h"
 
+#include "Domain.pb.h"
+
 #include <QStringList>
 
 namespace sortie::mission {
@@ -9,6 +11,15 @@ template<class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };
 template<class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
 
 QString number(double v) { return QString::number(v, 'g', 10); }
+}
+
+bool OpaqueAction::operator==(const OpaqueAction &o) const
+{
+    if (description != o.description)
+        return false;
+    if (definition == o.definition)
+        return true;
+    return definition && o.definition && definition->SerializeAsString() == o.definition->SerializeAsString();
 }
 
 QString altitudeTypeName(AltitudeType type)

@@ -81,7 +81,8 @@ struct OpaqueAction
 {
     QString description;
     std::shared_ptr<const com::ugcs::ucs::proto::ActionDefinition> definition;
-    bool operator==(const OpaqueAction &o) const { return description == o.description && definition == o.definition; }
+    // Equal when they hold the same definition (same object, or the same bytes).
+    bool operator==(const OpaqueAction &o) const;
 };
 
 using WaypointAction = std::variant<WaitAction, HeadingAction, PoiAction, CameraTriggerAction,

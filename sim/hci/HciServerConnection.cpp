@@ -134,6 +134,11 @@ void HciServerConnection::sendProgress(int32_t instanceId, const google::protobu
 
 void HciServerConnection::sendNotification(const pb::Notification &notification)
 {
+    // A client that stopped reading must not make the server buffer without bound: past a few
+    // megabytes of unsent data, events for it are dropped (answers still queue).
+    constexpr qint64 kMaxBacklog = 8 * 1024 * 1024;
+    if (m_socket->bytesToWrite() > kMaxBacklog)
+        return;
     std::string bytes;
     if (hci::appendHciFrame(bytes, hci::kHciNotificationInstance, notification))
         write(bytes);

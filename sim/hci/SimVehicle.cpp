@@ -12,10 +12,17 @@ SimVehicle::SimVehicle(const pb::Vehicle &vehicle, FlightModel model, double tel
     , m_model(std::move(model))
     , m_telemetry(telemetryRateHz)
 {
+    setVehicle(vehicle);
+    m_availability = SimCommands::availability(m_model);
+}
+
+void SimVehicle::setVehicle(const pb::Vehicle &vehicle)
+{
+    *m_vehicle = vehicle;
+    m_reference->Clear();
     m_reference->set_id(vehicle.id());
     m_reference->set_name(vehicle.name());
     m_reference->set_tailnumber(vehicle.tailnumber());
-    m_availability = SimCommands::availability(m_model);
 }
 
 SimVehicle::~SimVehicle() = default;

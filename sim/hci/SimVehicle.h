@@ -29,6 +29,8 @@ public:
     // {id, name, tailNumber}: how events and results refer to the vehicle.
     const pb::Vehicle &reference() const { return *m_reference; }
     const FlightModel &model() const { return m_model; }
+    // The Vehicle object changed in the store (renamed, new profile...).
+    void setVehicle(const pb::Vehicle &vehicle);
     const SimTelemetry &telemetry() const { return m_telemetry; }
 
     // Advances the flight by dt seconds and fills `event` with the telemetry batch. Returns true when

@@ -60,6 +60,12 @@ bool SimWorld::start(QString *error)
         FlightModel model(homes[i].latitude, homes[i].longitude, m_config.groundElevation);
         m_vehicles.push_back(std::make_unique<SimVehicle>(object->vehicle(), std::move(model), m_config.telemetryRateHz));
     }
+    connect(&m_store, &SimObjectStore::changed, this,
+            [this](int type, const QString &objectType, int id, const pb::DomainObjectWrapper &object) {
+                if (objectType == QLatin1String("Vehicle") && type == pb::MT_UPDATE)
+                    if (SimVehicle *v = vehicle(id))
+                        v->setVehicle(object.vehicle());
+            });
     if (!m_config.storePath.isEmpty()) {
         connect(&m_store, &SimObjectStore::changed, this, [this] { m_saveTimer.start(); });
         saveStore();

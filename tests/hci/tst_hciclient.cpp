@@ -149,6 +149,12 @@ private slots:
                                  "return_to_home", "waypoint", "manual"})
             QVERIFY2(codes.contains(QLatin1String(code)), code);
 
+        // A renamed vehicle is renamed in its telemetry too.
+        pb::Vehicle renamed = vehicles.objects(2).vehicle();
+        renamed.set_name("EMU-103 (north pier)");
+        QCOMPARE(call<pb::CreateOrUpdateObjectResponse>(a.client.createOrUpdate(renamed)).object().vehicle().version(), 2);
+        QCOMPARE(sim.world.vehicle(renamed.id())->reference().name(), renamed.name());
+
         HciError error;
         call<pb::GetObjectResponse>(a.client.getObject(HciObjectType::Route, 99999), &error);
         QCOMPARE(error.kind(), HciError::Kind::Server);

@@ -221,6 +221,19 @@ private slots:
         QCOMPARE(session.state(), HciSession::State::Disconnected);
     }
 
+    void aSubscriberMayDeleteTheSessionFromAnEvent()
+    {
+        test::SimServer sim;
+        auto *session = new HciSession;
+        session->open(QStringLiteral("127.0.0.1"), sim.port(), QStringLiteral("admin"), QStringLiteral("admin"));
+        QVERIFY(test::reaches(*session, HciSession::State::Ready));
+        QPointer<HciSession> watch(session);
+        auto *telemetry = session->subscribe(telemetrySubscription());
+        connect(telemetry, &hci::HciSubscription::received, this, [session] { delete session; });
+        QTRY_VERIFY(!watch); // deleted mid-delivery, and the decoding loop noticed
+        QTRY_COMPARE(sim.server.connectionCount(), 0);
+    }
+
     void logoutCarriesTheClientId()
     {
         test::SimServer sim;

@@ -17,6 +17,7 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include <limits>
 #include <numbers>
 
 using namespace sortie::mission;
@@ -95,7 +96,13 @@ private slots:
 
     void unchangedRouteGoesBackByteForByte()
     {
-        for (const pb::Route &original : {storedRoute(), savedRoute()}) {
+        // Also a profile with a parameter given twice, the second NaN (found by fuzz_hci_route).
+        pb::Route odd = savedRoute();
+        auto *twice = odd.mutable_vehicleprofile()->add_parameters();
+        twice->set_type(pb::VPT_MAX_CLIMB_RATE);
+        twice->set_value(std::numeric_limits<double>::quiet_NaN());
+        odd.mutable_segments(0)->mutable_figure()->mutable_points(0)->set_aglaltitude(std::numeric_limits<double>::quiet_NaN());
+        for (const pb::Route &original : {storedRoute(), savedRoute(), odd}) {
             const pb::Route back = routeToHci(imported(original));
             QCOMPARE(back.SerializeAsString(), original.SerializeAsString());
         }
@@ -171,6 +178,35 @@ private slots:
                 typeParam = p.value() == "AMSL";
         QVERIFY(typeParam);
         QCOMPARE(s2.uuid(), original.segments(2).uuid());
+    }
+
+    void untouchedActionsKeepTheirBytes()
+    {
+        // Found by fuzz_hci_route: an opaque action made every action list look edited, and an
+        // absent field was then written as its default.
+        pb::Route original = savedRoute();
+        pb::SegmentDefinition *s = original.mutable_segments(1);
+        s->mutable_actiondefinitions(0)->mutable_waitdefinition()->clear_interval();
+        auto *servo = s->add_actiondefinitions();
+        servo->set_id(77);
+        servo->mutable_setservodefinition()->set_servoid(3);
+        servo->mutable_setservodefinition()->set_pwm(1900);
+        RouteModel model;
+        QUndoStack stack;
+        RouteEditor editor(&model, &stack);
+        editor.replaceRoute(imported(original), QStringLiteral("Load"));
+        const auto &w = std::get<Waypoint>(model.segment(1));
+        QCOMPARE(int(w.actions.size()), 2);
+        QCOMPARE(std::get<OpaqueAction>(w.actions[1]).description, QStringLiteral("SetServo"));
+        QCOMPARE(routeToHci(model.route()).SerializeAsString(), original.SerializeAsString());
+        editor.setAltitude({1}, 95);
+        editor.addAction({1}, {{"kind", "wait"}, {"seconds", 2}});
+        const pb::SegmentDefinition sent = routeToHci(model.route()).segments(1);
+        QCOMPARE(sent.actiondefinitions_size(), 3);
+        QCOMPARE(sent.actiondefinitions(0).SerializeAsString(), s->actiondefinitions(0).SerializeAsString());
+        QCOMPARE(sent.actiondefinitions(1).SerializeAsString(), s->actiondefinitions(1).SerializeAsString());
+        QCOMPARE(sent.actiondefinitions(2).waitdefinition().interval(), 2.0);
+        QCOMPARE(sent.figure().points(0).aglaltitude(), 95.0);
     }
 
     void newRouteEncodesLikeTheSdkSample()

@@ -4,9 +4,12 @@
 #include "MissionFiles.h"
 #include "MissionSamples.h"
 #include "QgcPlanFormat.h"
+#include "RouteEditor.h"
+#include "RouteModel.h"
 #include "WplFormat.h"
 
 #include <QTemporaryDir>
+#include <QUndoStack>
 #include <QtTest>
 
 using namespace sortie::mission;
@@ -227,6 +230,40 @@ private slots:
         QVERIFY(!r.ok());
         QVERIFY2(r.error().line == 8 && r.error().column == 5, qPrintable(r.error().toString()));
         QVERIFY(!r.error().message.contains(QStringLiteral("last read")));
+    }
+
+    void failedImportLosesNothingInThePlan()
+    {
+        // The editing flow: load a file, and only on success replace the route as one undo step.
+        RouteModel model;
+        QUndoStack stack;
+        RouteEditor editor(&model, &stack);
+        editor.replaceRoute(mavlinkRoute(), QStringLiteral("Open"));
+        editor.setAltitude({1, 2}, 70);
+        const Route before = model.route();
+        for (const char *bad : {"PolygonBadXml.kml", "PolygonMissingNode.kml"}) {
+            const Result<LoadedMission> m = loadMission(samplePath(QLatin1String(bad)));
+            QVERIFY(!m.ok());
+            QCOMPARE(m.error().file, samplePath(QLatin1String(bad)));
+        }
+        QByteArray broken = readSample(QStringLiteral("MissionPlanner.waypoints.txt"));
+        broken.replace("40.120796", "40.12x796");  // line 10 of 16
+        QTemporaryDir dir;
+        QFile f(dir.filePath(QStringLiteral("broken.waypoints")));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(broken);
+        f.close();
+        const Result<LoadedMission> m = loadMission(f.fileName());
+        QVERIFY(!m.ok());
+        QCOMPARE(m.error().line, 11);
+        QVERIFY(model.route() == before);
+        QCOMPARE(stack.count(), 2);
+        const Result<LoadedMission> good = loadMission(samplePath(QStringLiteral("MissionPlanner.waypoints")));
+        QVERIFY(good.ok());
+        editor.replaceRoute(good->mission.routes[0], QStringLiteral("Open"));
+        QCOMPARE(model.count(), 5);
+        stack.undo();
+        QVERIFY(model.route() == before);
     }
 
     void importFailureLeavesTheFileAlone()

@@ -5,6 +5,7 @@
 #include "RouteModel.h"
 
 #include <QAbstractItemModelTester>
+#include <QItemSelectionModel>
 #include <QSignalSpy>
 #include <QUndoStack>
 #include <QtTest>
@@ -110,9 +111,80 @@ private slots:
         QCOMPARE(wp(f.model, 2).position.latitude, 56.9 + 30 * 1e-4);
         f.editor.moveWaypoint(3, 56.0, 24.0);  // another point: a new step
         QCOMPARE(f.stack.count(), 2);
+        f.editor.endMove();
+        f.editor.moveWaypoint(3, 56.1, 24.0);  // the same point, a new drag: a new step
+        f.editor.moveWaypoint(3, 56.2, 24.0);
+        QCOMPARE(f.stack.count(), 3);
+        f.stack.undo();
+        QCOMPARE(wp(f.model, 3).position.latitude, 56.0);
         f.stack.undo();
         f.stack.undo();
         QVERIFY(wp(f.model, 2).position == origin);
+        // Typed coordinates never merge.
+        QVERIFY(f.model.setData(f.model.index(1), 57.0, RouteModel::LatitudeRole));
+        QVERIFY(f.model.setData(f.model.index(1), 57.1, RouteModel::LatitudeRole));
+        QCOMPARE(f.stack.count(), 2);
+    }
+
+    void areaScanToolEditsThroughMaps()
+    {
+        Fixture f(2);
+        const int row = f.editor.addAreaScan({QVariantMap{{"latitude", 56.90}, {"longitude", 24.10}},
+                                              QVariantMap{{"latitude", 56.90}, {"longitude", 24.11}},
+                                              QVariantMap{{"latitude", 56.905}, {"longitude", 24.11}}});
+        QCOMPARE(row, 2);
+        const QModelIndex i = f.model.index(row);
+        QCOMPARE(i.data(RouteModel::KindRole).toString(), QStringLiteral("areaScan"));
+        QCOMPARE(i.data(RouteModel::PolygonRole).toList().size(), 3);
+        QVariantMap plan = i.data(RouteModel::ScanPlanRole).toMap();
+        QVERIFY(plan.value("ok").toBool());
+        const int photosBefore = plan.value("photoCount").toInt();
+        QVERIFY(photosBefore > 0);
+        QCOMPARE(plan.value("path").toList().size(), 4 * plan.value("transects").toInt());
+
+        QVERIFY(f.editor.setScanProperties(row, {{"byGroundSampleDistance", true}, {"groundSampleDistanceCm", 1.0},
+                                                 {"frontOverlapPercent", 80}}));
+        const QVariantMap params = i.data(RouteModel::ScanParametersRole).toMap();
+        QCOMPARE(params.value("groundSampleDistanceCm").toDouble(), 1.0);
+        QVERIFY(params.value("altitude").toDouble() < 40);  // 1 cm/px needs to fly lower than 60 m
+        plan = i.data(RouteModel::ScanPlanRole).toMap();
+        QVERIFY(plan.value("photoCount").toInt() > photosBefore);
+        QVERIFY(!f.editor.setScanProperties(row, {{"sideOverlapPercent", "lots"}}));
+        QVERIFY(!f.editor.setScanProperties(0, {{"sideOverlapPercent", 50}}));  // a waypoint
+        QVERIFY(f.editor.setScanProperties(row, {{"sideOverlapPercent", 99}}));
+        plan = i.data(RouteModel::ScanPlanRole).toMap();
+        QVERIFY(!plan.value("ok").toBool());
+        QVERIFY(plan.value("message").toString().contains(QStringLiteral("Overlap")));
+        f.stack.undo();
+        f.stack.undo();
+        QCOMPARE(i.data(RouteModel::ScanPlanRole).toMap().value("photoCount").toInt(), photosBefore);
+    }
+
+    void editAnActionOfASelection()
+    {
+        Fixture f(4);
+        QVERIFY(f.editor.addAction({0, 1, 2}, {{"kind", "wait"}, {"seconds", 3}}));
+        QVERIFY(f.editor.setAction({1, 2, 3}, 0, {{"kind", "cameraSeriesByTime"}, {"intervalSeconds", 2}}));
+        QVERIFY(std::holds_alternative<WaitAction>(wp(f.model, 0).actions[0]));
+        QCOMPARE(std::get<CameraSeriesByTimeAction>(wp(f.model, 2).actions[0]).intervalSeconds, 2.0);
+        QVERIFY(wp(f.model, 3).actions.empty());  // had no action 0
+        QVERIFY(!f.editor.setAction({1}, 0, {{"kind", "teleport"}}));
+        QCOMPARE(f.model.index(2).data(RouteModel::ActionsSummaryRole).toString(), QStringLiteral("Photo every 2 s"));
+    }
+
+    void selectionModelGivesTheRows()
+    {
+        Fixture f(6);
+        QItemSelectionModel selection(&f.model);
+        selection.select(f.model.index(4), QItemSelectionModel::Select);
+        selection.select(f.model.index(1), QItemSelectionModel::Select);
+        const QList<int> rows = f.editor.rowsOf(&selection);
+        QCOMPARE(rows, (QList<int>{1, 4}));
+        f.editor.setSpeed(rows, 9);
+        QCOMPARE(wp(f.model, 4).speed, 9.0);
+        QCOMPARE(wp(f.model, 2).speed, 5.0);
+        QItemSelectionModel other;
+        QVERIFY(f.editor.rowsOf(&other).isEmpty());
     }
 
     void setDataGoesThroughTheUndoStack()

@@ -128,30 +128,56 @@ private slots:
         QVERIFY(m.error().column > 0);
     }
 
+    void numberOverflowIsAnErrorWithItsLine()
+    {
+        // Found by fuzz_sortie_reader: nlohmann-json reports this one as out_of_range, not parse_error.
+        const Result<Mission> m = readSortie("{\n \"format\": \"sortie-mission\",\n \"schemaVersion\": 1e999\n}");
+        QVERIFY(!m.ok());
+        QCOMPARE(m.error().line, 3);
+        QCOMPARE(m.error().column, 19);
+        QVERIFY(m.error().message.contains(QStringLiteral("overflow")));
+    }
+
     void semanticErrorsNameTheJsonPath_data()
     {
-        QTest::addColumn<QByteArray>("edit");
+        QTest::addColumn<QByteArray>("key");
+        QTest::addColumn<QByteArray>("value");
         QTest::addColumn<QString>("path");
-        QTest::newRow("latitude out of range") << QByteArray("\"latitude\": 95,") << QStringLiteral("/mission/routes/0/segments/1/latitude");
-        QTest::newRow("altitude not a number") << QByteArray("\"altitude\": \"high\",") << QStringLiteral("/mission/routes/0/segments/1/altitude");
-        QTest::newRow("unknown altitude type") << QByteArray("\"altitudeType\": \"ASL\",") << QStringLiteral("/mission/routes/0/segments/1/altitudeType");
+        QTest::newRow("latitude out of range") << QByteArray("latitude") << QByteArray("95") << QStringLiteral("/mission/routes/0/segments/1/latitude");
+        QTest::newRow("altitude not a number") << QByteArray("altitude") << QByteArray("\"high\"") << QStringLiteral("/mission/routes/0/segments/1/altitude");
+        QTest::newRow("unknown altitude type") << QByteArray("altitudeType") << QByteArray("\"ASL\"") << QStringLiteral("/mission/routes/0/segments/1/altitudeType");
+        QTest::newRow("unknown turn type") << QByteArray("turnType") << QByteArray("\"Loop\"") << QStringLiteral("/mission/routes/0/segments/1/turnType");
     }
     void semanticErrorsNameTheJsonPath()
     {
-        QFETCH(QByteArray, edit);
+        QFETCH(QByteArray, key);
+        QFETCH(QByteArray, value);
         QFETCH(QString, path);
         Mission m;
         m.routes.push_back(mavlinkRoute());
         QByteArray text = writeSortie(m);
-        // Replace the field in the second segment only.
-        const QByteArray key = edit.left(edit.indexOf(':') + 1);
-        const qsizetype seg = text.indexOf("\"type\": \"waypoint\"", text.indexOf("\"type\": \"waypoint\"") + 1);
-        const qsizetype at = text.indexOf(key, seg);
-        const qsizetype end = text.indexOf('\n', at);
-        text.replace(at, end - at, edit);
+        QVERIFY(readSortie(text).ok());
+        // Replace the value in the second segment (one segment per line).
+        const qsizetype seg = text.indexOf("{\"type\":\"waypoint\"", text.indexOf("{\"type\":\"waypoint\"") + 1);
+        const qsizetype at = text.indexOf("\"" + key + "\":", seg) + key.size() + 3;
+        qsizetype end = at;
+        while (text[end] != ',' && text[end] != '}')
+            ++end;
+        text.replace(at, end - at, value);
         const Result<Mission> r = readSortie(text);
         QVERIFY(!r.ok());
         QCOMPARE(r.error().jsonPath, path);
+    }
+
+    void oneSegmentPerLine()
+    {
+        Mission m;
+        m.routes.push_back(mavlinkRoute());
+        const QList<QByteArray> lines = writeSortie(m).split('\n');
+        int segmentLines = 0;
+        for (const QByteArray &l : lines)
+            segmentLines += l.trimmed().startsWith("{\"type\":\"waypoint\"");
+        QCOMPARE(segmentLines, int(m.routes[0].segments.size()));
     }
 
     void notASortieFile()

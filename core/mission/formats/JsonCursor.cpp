@@ -165,18 +165,23 @@ QString JsonCursor::stringOr(const char *key, const QString &fallback) const
     return QString::fromStdString(v->get_ref<const std::string &>());
 }
 
+namespace {
+MissionError syntaxError(const QByteArray &data, qsizetype byte, QString what)
+{
+    int line = 1, column = 1;
+    for (qsizetype i = 0; i < qBound<qsizetype>(0, byte, data.size()); ++i) {
+        if (data[i] == '\n') { ++line; column = 1; }
+        else ++column;
+    }
+    return MissionError{QStringLiteral("not valid JSON: %1").arg(what), {}, line, column, {}};
+}
+}
+
 Result<Json> parseJson(const QByteArray &data)
 {
     try {
         return Json::parse(data.constBegin(), data.constEnd());
     } catch (const Json::parse_error &e) {
-        // e.byte is 1-based and points just past the offending character.
-        const qsizetype byte = qBound<qsizetype>(0, qsizetype(e.byte) - 1, data.size());
-        int line = 1, column = 1;
-        for (qsizetype i = 0; i < byte; ++i) {
-            if (data[i] == '\n') { ++line; column = 1; }
-            else ++column;
-        }
         // "[json.exception...] parse error at line L, column C: <what>; last read: '<text>'; <expected>"
         QString what = QString::fromUtf8(e.what());
         const qsizetype colon = what.indexOf(QStringLiteral(": "));
@@ -184,7 +189,16 @@ Result<Json> parseJson(const QByteArray &data)
             what = what.mid(colon + 2);
         static const QRegularExpression lastRead(QStringLiteral("; last read: '.*'"), QRegularExpression::DotMatchesEverythingOption);
         what.remove(lastRead);
-        return MissionError{QStringLiteral("not valid JSON: %1").arg(what), {}, line, column, {}};
+        return syntaxError(data, qsizetype(e.byte) - 1, what);  // e.byte is 1-based, just past the error
+    } catch (const Json::exception &e) {
+        // A number too large for a double: "number overflow parsing '<token>'". Locate the token.
+        QString what = QString::fromUtf8(e.what());
+        what.remove(QRegularExpression(QStringLiteral("^\\[[^]]*\\] ")));
+        const qsizetype open = what.indexOf(QLatin1Char('\'')), close = what.lastIndexOf(QLatin1Char('\''));
+        qsizetype at = -1;
+        if (open >= 0 && close > open)
+            at = data.indexOf(what.mid(open + 1, close - open - 1).toUtf8());
+        return syntaxError(data, at < 0 ? 0 : at, what);
     }
 }
 

@@ -154,15 +154,15 @@ private:
             m_out.items.push_back(i);
         };
         const bool turnarounds = s.parameters.turnaroundMeters > 0;
+        // The path holds, per transect: [turnaround], start, end, [turnaround]. Photos on the transect only.
         size_t k = 0;
-        for (const Transect &t : o.plan->transects) {
+        for (size_t n = 0; n < o.plan->transects.size(); ++n) {
             if (turnarounds) point(o.plan->path[k++]);
             point(o.plan->path[k++]);
             m_out.items.push_back(command(mav::DoSetCamTriggDist, o.plan->triggerDistance, 0, 1, 0));
             point(o.plan->path[k++]);
             m_out.items.push_back(command(mav::DoSetCamTriggDist, 0, 0, 0, 0));
             if (turnarounds) point(o.plan->path[k++]);
-            Q_UNUSED(t);
         }
         m_out.notices << QStringLiteral("Area scan %1 was written as %2 waypoints with distance triggering.").arg(row + 1).arg(o.plan->path.size());
     }

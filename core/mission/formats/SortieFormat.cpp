@@ -294,6 +294,38 @@ Route readRoute(const JsonCursor &c)
 }
 }
 
+namespace {
+// Pretty-printed, except that each segment is one compact line: diffs show the waypoints that
+// changed, and the file is a third smaller (and faster to read) than fully indented JSON.
+void writePretty(std::string &out, const Json &v, int depth, bool compactChildren)
+{
+    const std::string pad(size_t(depth + 1), ' '), closePad(size_t(depth), ' ');
+    if (v.is_object() && !v.empty()) {
+        out += "{\n";
+        size_t i = 0;
+        for (auto it = v.begin(); it != v.end(); ++it, ++i) {
+            out += pad + Json(it.key()).dump() + ": ";
+            writePretty(out, it.value(), depth + 1, it.key() == "segments");
+            out += i + 1 < v.size() ? ",\n" : "\n";
+        }
+        out += closePad + "}";
+    } else if (v.is_array() && !v.empty() && (compactChildren || v.front().is_object())) {
+        out += "[\n";
+        for (size_t i = 0; i < v.size(); ++i) {
+            out += pad;
+            if (compactChildren)
+                out += v[i].dump();
+            else
+                writePretty(out, v[i], depth + 1, false);
+            out += i + 1 < v.size() ? ",\n" : "\n";
+        }
+        out += closePad + "]";
+    } else {
+        out += v.dump();
+    }
+}
+}
+
 QByteArray writeSortie(const Mission &mission)
 {
     Json routes = Json::array();
@@ -303,7 +335,10 @@ QByteArray writeSortie(const Mission &mission)
     putOrigin(m, mission.origin.message);
     m["routes"] = std::move(routes);
     const Json doc{{"format", "sortie-mission"}, {"schemaVersion", kSortieSchemaVersion}, {"mission", std::move(m)}};
-    return QByteArray::fromStdString(doc.dump(1)) + '\n';
+    std::string out;
+    writePretty(out, doc, 0, false);
+    out += '\n';
+    return QByteArray::fromStdString(out);
 }
 
 Result<Mission> readSortie(const QByteArray &data)

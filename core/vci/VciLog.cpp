@@ -1,0 +1,3 @@
+#include "VciLog.h"
+
+Q_LOGGING_CATEGORY(lcVci, "sortie.vci")

@@ -1,0 +1,22 @@
+#pragma once
+
+#include "TelemetrySample.h"
+
+namespace com::ugcs::ucs::proto {
+class Telemetry;
+class TelemetryEvent;
+} // namespace com::ugcs::ucs::proto
+
+namespace sortie::vehicle {
+
+// Turns an HCI TelemetryEvent into normalised telemetry. Flight-controller fields only (a gimbal's
+// roll is not the vehicle's), chosen by their Semantic, with the field code where the semantic is
+// generic (S_BOOL "is_armed"). HCI already sends SI units and radians; S_CAPACITY_LEVEL (percent) is
+// divided by 100 and S_FLIGHT_MODE names ("RTL", "LOITER", ...) become a FlightMode. Values without a
+// number (or a string for the mode) are skipped; S_CONTROL_MODE (manual/auto/guided as a coarse
+// number) is left out because S_FLIGHT_MODE says the same more precisely. A value without a time
+// gets `now` (ms since the epoch).
+TelemetryBatch hciTelemetry(const com::ugcs::ucs::proto::TelemetryEvent &event, int64_t now);
+void appendHciTelemetry(const com::ugcs::ucs::proto::Telemetry &telemetry, int64_t now, TelemetryBatch &out);
+
+} // namespace sortie::vehicle

@@ -1,0 +1,72 @@
+#include "VciTelemetryMapper.h"
+
+#include "VciProfile.h"
+
+#include <array>
+#include <utility>
+
+namespace sortie::vehicle {
+namespace {
+
+namespace profile = vci::profile;
+using F = TelemetryField;
+
+struct Mapping
+{
+    std::string_view uri;
+    std::array<std::pair<const char *, TelemetryField>, 4> fields;
+    size_t count;
+};
+
+const std::array<Mapping, 6> kObjects = {{
+    {profile::kPosition, {{{"latitude", F::Latitude}, {"longitude", F::Longitude}, {"altitudeAmsl", F::AltitudeAmsl}, {"altitudeAgl", F::AltitudeAgl}}}, 4},
+    {profile::kAttitude, {{{"roll", F::Roll}, {"pitch", F::Pitch}, {"yaw", F::Heading}, {"", F::Count_}}}, 3},
+    {profile::kSpeed, {{{"ground", F::GroundSpeed}, {"air", F::AirSpeed}, {"vertical", F::VerticalSpeed}, {"course", F::Course}}}, 4},
+    {profile::kBattery, {{{"voltage", F::BatteryVoltage}, {"current", F::BatteryCurrent}, {"remaining", F::BatteryRemaining}, {"", F::Count_}}}, 3},
+    {profile::kGps, {{{"fix", F::GpsFix}, {"satellites", F::Satellites}, {"hdop", F::Hdop}, {"", F::Count_}}}, 3},
+    {profile::kHome, {{{"latitude", F::HomeLatitude}, {"longitude", F::HomeLongitude}, {"altitudeAmsl", F::HomeAltitudeAmsl}, {"", F::Count_}}}, 3},
+}};
+
+} // namespace
+
+TelemetryBatch vciTelemetry(std::string_view uri, const nlohmann::json &body, int64_t now)
+{
+    TelemetryBatch out;
+    int64_t time = now;
+    if (body.is_object()) {
+        const auto t = body.find("time");
+        if (t != body.end() && t->is_number())
+            time = t->get<int64_t>();
+    }
+    for (const Mapping &m : kObjects) {
+        if (m.uri != uri)
+            continue;
+        if (!body.is_object())
+            return out;
+        for (size_t i = 0; i < m.count; ++i) {
+            const auto it = body.find(m.fields[i].first);
+            if (it != body.end() && it->is_number())
+                out.push_back({m.fields[i].second, it->get<double>(), time});
+        }
+        return out;
+    }
+    if (uri == profile::kArmed && body.is_boolean()) {
+        out.push_back({F::Armed, body.get<bool>() ? 1.0 : 0.0, time});
+    } else if (uri == profile::kMode && body.is_string()) {
+        out.push_back({F::Mode, double(modeFromName(body.get<std::string>())), time});
+    } else if (uri == profile::kMissionProgress && body.is_object()) {
+        const auto state = body.find("state");
+        if (state != body.end() && state->is_string()) {
+            if (const auto s = missionStateFromName(state->get<std::string>()))
+                out.push_back({F::MissionState, double(*s), time});
+        }
+        for (const auto &[key, field] : {std::pair{"current", F::MissionCurrent}, {"reached", F::MissionReached}, {"count", F::MissionCount}}) {
+            const auto it = body.find(key);
+            if (it != body.end() && it->is_number())
+                out.push_back({field, it->get<double>(), time});
+        }
+    }
+    return out;
+}
+
+} // namespace sortie::vehicle

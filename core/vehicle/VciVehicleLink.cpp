@@ -1,0 +1,226 @@
+#include "VciVehicleLink.h"
+
+#include "VciProfile.h"
+#include "VciTelemetryMapper.h"
+
+#include <QDateTime>
+#include <QRegularExpression>
+
+namespace sortie::vehicle {
+namespace {
+
+namespace profile = vci::profile;
+using nlohmann::json;
+
+QString q(std::string_view s)
+{
+    return QString::fromUtf8(s.data(), qsizetype(s.size()));
+}
+
+QString stringField(const json &body, const char *key)
+{
+    const auto it = body.find(key);
+    return it != body.end() && it->is_string() ? QString::fromStdString(it->get<std::string>()) : QString();
+}
+
+} // namespace
+
+VciVehicleLink::VciVehicleLink(const vci::VciEndpoint &endpoint, QObject *parent)
+    : VehicleLink(parent)
+    , m_endpoint(endpoint)
+    , m_transport(endpoint)
+{
+    m_identity.id = endpoint.toString();
+    m_identity.name = endpoint.kind == vci::VciEndpoint::Kind::Tcp ? QStringLiteral("%1:%2").arg(endpoint.host).arg(endpoint.port)
+                                                                    : endpoint.device;
+    m_identity.protocol = protocol();
+    connect(&m_transport, &vci::VciTransport::opened, this, [this](QIODevice *device) { m_connection.setDevice(device); });
+    connect(&m_transport, &vci::VciTransport::lost, this, [this](const QString &why) {
+        m_connection.setDevice(nullptr, why);
+        if (!m_stopping)
+            setState(State::Lost); // the transport is already trying again
+    });
+    connect(&m_transport, &vci::VciTransport::attemptFailed, this, &VehicleLink::errorOccurred);
+    connect(&m_transport, &vci::VciTransport::lost, this, [this](const QString &why) {
+        if (!m_stopping)
+            emit errorOccurred(QStringLiteral("connection to %1 lost: %2").arg(m_identity.name, why));
+    });
+    connect(&m_connection, &vci::VciConnection::protocolError, this, &VehicleLink::errorOccurred);
+    connect(&m_connection, &vci::VciConnection::attached, this, &VciVehicleLink::onAttached);
+    connect(&m_connection, &vci::VciConnection::notified, this, &VciVehicleLink::onNotified);
+}
+
+VciVehicleLink::~VciVehicleLink()
+{
+    m_connection.setDevice(nullptr);
+}
+
+void VciVehicleLink::setState(State state)
+{
+    if (state == m_state)
+        return;
+    m_state = state;
+    emit stateChanged(state);
+}
+
+void VciVehicleLink::start()
+{
+    if (m_state != State::Disconnected)
+        return;
+    // Remembered now, sent by the connection on every attach, the first one included.
+    for (std::string_view uri : profile::kTelemetry)
+        m_connection.subscribe(q(uri));
+    for (std::string_view uri : profile::kState)
+        m_connection.subscribe(q(uri));
+    setState(State::Connecting);
+    m_transport.open();
+}
+
+void VciVehicleLink::stop()
+{
+    m_stopping = true;
+    m_transport.close();
+    m_stopping = false;
+    m_connection.setDevice(nullptr, QStringLiteral("disconnected by the operator"));
+    m_connection.unsubscribe(QStringLiteral("*")); // forgets them; there is no line to send it on
+    setState(State::Disconnected);
+}
+
+void VciVehicleLink::onAttached()
+{
+    setState(State::Connected);
+    m_connection.get(q(profile::kVehicle), this, [this](const vci::VciResult &r) {
+        if (!r.ok() || !r.body.is_object())
+            return;
+        VehicleIdentity id = m_identity;
+        const QString vehicleId = stringField(r.body, "id");
+        if (!vehicleId.isEmpty())
+            id.id = vehicleId;
+        const QString name = stringField(r.body, "name");
+        if (!name.isEmpty())
+            id.name = name;
+        id.type = stringField(r.body, "type");
+        id.autopilot = stringField(r.body, "autopilot");
+        if (id == m_identity)
+            return;
+        m_identity = id;
+        emit identityChanged(m_identity);
+    });
+}
+
+void VciVehicleLink::onNotified(const QString &uri, const nlohmann::json &body)
+{
+    const std::string u = uri.toStdString();
+    if (u == profile::kMission) {
+        emit missionChanged();
+        return;
+    }
+    TelemetryBatch batch = vciTelemetry(u, body, QDateTime::currentMSecsSinceEpoch());
+    if (!batch.empty())
+        emit telemetryReceived(batch);
+}
+
+CommandResult VciVehicleLink::toCommandResult(const vci::VciResult &result)
+{
+    return result.ok() ? CommandResult::success() : CommandResult::failure(result.message);
+}
+
+void VciVehicleLink::put(std::string_view uri, const json &body, Done done)
+{
+    m_connection.put(q(uri), body, this, [done = std::move(done)](const vci::VciResult &r) {
+        if (done)
+            done(toCommandResult(r));
+    });
+}
+
+void VciVehicleLink::arm(bool armed, Done done)
+{
+    put(profile::kArmed, armed, std::move(done));
+}
+
+void VciVehicleLink::setMode(FlightMode mode, Done done)
+{
+    put(profile::kMode, std::string(modeName(mode)), std::move(done));
+}
+
+void VciVehicleLink::takeoff(double altitude, Done done)
+{
+    put(profile::kTakeoff, json{{"altitude", altitude}}, std::move(done));
+}
+
+void VciVehicleLink::land(Done done)
+{
+    put(profile::kLand, json::object(), std::move(done));
+}
+
+void VciVehicleLink::returnHome(Done done)
+{
+    put(profile::kReturnHome, json::object(), std::move(done));
+}
+
+void VciVehicleLink::goTo(double latitude, double longitude, double altitude, double speed, Done done)
+{
+    put(profile::kGoto, json{{"latitude", latitude}, {"longitude", longitude}, {"altitude", altitude}, {"speed", speed}}, std::move(done));
+}
+
+void VciVehicleLink::uploadMission(const std::vector<MissionItem> &items, Done done)
+{
+    std::vector<profile::Waypoint> waypoints;
+    waypoints.reserve(items.size());
+    for (const MissionItem &i : items)
+        waypoints.push_back({i.latitude, i.longitude, i.altitude, i.speed});
+    put(profile::kMission, profile::encodeMission(waypoints), std::move(done));
+}
+
+void VciVehicleLink::downloadMission(MissionDone done)
+{
+    m_connection.get(q(profile::kMission), this, [done = std::move(done)](const vci::VciResult &r) {
+        std::vector<MissionItem> items;
+        if (!r.ok()) {
+            done(toCommandResult(r), items);
+            return;
+        }
+        std::string error;
+        const auto waypoints = profile::decodeMission(r.body, &error);
+        if (!waypoints) {
+            done(CommandResult::failure(QStringLiteral("the vehicle's mission cannot be read: %1").arg(QString::fromStdString(error))), items);
+            return;
+        }
+        for (const auto &w : *waypoints)
+            items.push_back({w.latitude, w.longitude, w.altitude, w.speed});
+        done(CommandResult::success(), items);
+    });
+}
+
+void VciVehicleLink::readParameters(ParametersDone done)
+{
+    m_connection.get(q(profile::kParameters), this, [done = std::move(done)](const vci::VciResult &r) {
+        QVariantMap values;
+        if (r.ok() && r.body.is_object()) {
+            for (const auto &[name, value] : r.body.items()) {
+                if (value.is_number())
+                    values.insert(QString::fromStdString(name), value.get<double>());
+                else if (value.is_string())
+                    values.insert(QString::fromStdString(name), QString::fromStdString(value.get<std::string>()));
+                else if (value.is_boolean())
+                    values.insert(QString::fromStdString(name), value.get<bool>());
+            }
+        }
+        done(r.ok() ? CommandResult::success() : toCommandResult(r), values);
+    });
+}
+
+void VciVehicleLink::setParameter(const QString &name, double value, Done done)
+{
+    static const QRegularExpression valid(QStringLiteral("^[A-Za-z0-9_.-]+$"));
+    if (!valid.match(name).hasMatch()) {
+        QMetaObject::invokeMethod(this, [done, name] {
+            if (done)
+                done(CommandResult::failure(QStringLiteral("\"%1\" is not a parameter name").arg(name)));
+        }, Qt::QueuedConnection);
+        return;
+    }
+    put(std::string(profile::kParameterPrefix) + name.toStdString(), value, std::move(done));
+}
+
+} // namespace sortie::vehicle

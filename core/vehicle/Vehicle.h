@@ -1,0 +1,150 @@
+#pragma once
+
+#include "TelemetryStore.h"
+#include "VehicleLink.h"
+
+#include <QElapsedTimer>
+#include <QGeoCoordinate>
+#include <QObject>
+#include <QPointer>
+#include <QTimer>
+
+#include <array>
+#include <bitset>
+
+namespace sortie::vehicle {
+
+// One vehicle as the rest of the client sees it, whichever protocol feeds it: identity, link state,
+// the last value and time of every telemetry field, which fields have gone stale, and the history
+// (TelemetryStore). Fed by one VehicleLink (not owned).
+//
+// For QML the telemetry properties share one notification, telemetryChanged(), emitted at most once
+// per notifyInterval (100 ms by default) however fast telemetry arrives: the first change goes out at
+// once, later ones are gathered until the interval has passed. Values are SI and radians; `position`
+// and `home` are QGeoCoordinates (degrees, as QtPositioning defines them).
+class Vehicle : public QObject
+{
+    Q_OBJECT
+    Q_PROPERTY(QString id READ id NOTIFY identityChanged)
+    Q_PROPERTY(QString name READ name NOTIFY identityChanged)
+    Q_PROPERTY(QString protocol READ protocol CONSTANT)
+    Q_PROPERTY(sortie::vehicle::VehicleLink::State linkState READ linkState NOTIFY linkStateChanged)
+    Q_PROPERTY(bool connected READ isConnected NOTIFY linkStateChanged)
+    Q_PROPERTY(bool stale READ isStale NOTIFY staleChanged)
+    Q_PROPERTY(QString lastError READ lastError NOTIFY lastErrorChanged)
+    Q_PROPERTY(QGeoCoordinate position READ position NOTIFY telemetryChanged)
+    Q_PROPERTY(QGeoCoordinate home READ home NOTIFY telemetryChanged)
+    Q_PROPERTY(double altitudeAmsl READ altitudeAmsl NOTIFY telemetryChanged)
+    Q_PROPERTY(double altitudeAgl READ altitudeAgl NOTIFY telemetryChanged)
+    Q_PROPERTY(double heading READ heading NOTIFY telemetryChanged)
+    Q_PROPERTY(double groundSpeed READ groundSpeed NOTIFY telemetryChanged)
+    Q_PROPERTY(double verticalSpeed READ verticalSpeed NOTIFY telemetryChanged)
+    Q_PROPERTY(double batteryVoltage READ batteryVoltage NOTIFY telemetryChanged)
+    Q_PROPERTY(double batteryRemaining READ batteryRemaining NOTIFY telemetryChanged)
+    Q_PROPERTY(int satellites READ satellites NOTIFY telemetryChanged)
+    Q_PROPERTY(int gpsFix READ gpsFix NOTIFY telemetryChanged)
+    Q_PROPERTY(bool armed READ armed NOTIFY telemetryChanged)
+    Q_PROPERTY(QString mode READ mode NOTIFY telemetryChanged)
+    Q_PROPERTY(QString missionState READ missionState NOTIFY telemetryChanged)
+    Q_PROPERTY(int missionCurrent READ missionCurrent NOTIFY telemetryChanged)
+    Q_PROPERTY(int missionCount READ missionCount NOTIFY telemetryChanged)
+    Q_PROPERTY(int notifyInterval READ notifyInterval WRITE setNotifyInterval NOTIFY notifyIntervalChanged)
+
+public:
+    explicit Vehicle(VehicleLink *link, QObject *parent = nullptr, size_t historyCapacity = TelemetryStore::kDefaultCapacity);
+
+    VehicleLink *link() const { return m_link; }
+    const TelemetryStore &history() const { return m_history; }
+
+    QString id() const { return m_identity.id; }
+    QString name() const { return m_identity.name.isEmpty() ? m_identity.id : m_identity.name; }
+    QString protocol() const { return m_protocol; }
+    VehicleIdentity identity() const { return m_identity; }
+    VehicleLink::State linkState() const { return m_link ? m_link->state() : VehicleLink::State::Disconnected; }
+    bool isConnected() const { return linkState() == VehicleLink::State::Connected; }
+    // The link's last problem, for the operator; cleared when the link connects.
+    QString lastError() const { return m_lastError; }
+
+    // The last value of a field with the vehicle's time, or nullopt before the first.
+    std::optional<TelemetrySample> last(TelemetryField field) const;
+    double value(TelemetryField field, double fallback = qQNaN()) const;
+    bool isStale(TelemetryField field) const; // never received, or not for staleAfter
+    bool isStale() const { return m_stale; }  // nothing at all for staleAfter
+    Q_INVOKABLE double value(const QString &field) const;
+    Q_INVOKABLE bool isFieldStale(const QString &field) const;
+
+    QGeoCoordinate position() const;
+    QGeoCoordinate home() const;
+    double altitudeAmsl() const { return value(TelemetryField::AltitudeAmsl); }
+    double altitudeAgl() const { return value(TelemetryField::AltitudeAgl); }
+    double heading() const { return value(TelemetryField::Heading); }
+    double groundSpeed() const { return value(TelemetryField::GroundSpeed); }
+    double verticalSpeed() const { return value(TelemetryField::VerticalSpeed); }
+    double batteryVoltage() const { return value(TelemetryField::BatteryVoltage); }
+    double batteryRemaining() const { return value(TelemetryField::BatteryRemaining); }
+    int satellites() const { return int(value(TelemetryField::Satellites, 0)); }
+    int gpsFix() const { return int(value(TelemetryField::GpsFix, 0)); }
+    bool armed() const { return value(TelemetryField::Armed, 0) != 0; }
+    FlightMode flightMode() const { return FlightMode(int(value(TelemetryField::Mode, 0))); }
+    QString mode() const;
+    QString missionState() const;
+    int missionCurrent() const { return int(value(TelemetryField::MissionCurrent, -1)); }
+    int missionCount() const { return int(value(TelemetryField::MissionCount, 0)); }
+
+    int notifyInterval() const { return m_notifyInterval; }
+    void setNotifyInterval(int ms);
+    int staleAfter() const { return m_staleAfter; }
+    void setStaleAfter(int ms);
+    quint64 telemetryNotifications() const { return m_notifications; }
+
+    // Applies a batch as if the link had sent it (the link's signal is connected to this).
+    void ingest(const TelemetryBatch &batch);
+
+    // Commands for QML; each ends with commandFinished(command, ok, message).
+    Q_INVOKABLE void arm();
+    Q_INVOKABLE void disarm();
+    Q_INVOKABLE void setMode(const QString &mode);
+    Q_INVOKABLE void takeoff(double altitude);
+    Q_INVOKABLE void land();
+    Q_INVOKABLE void returnHome();
+
+signals:
+    void telemetryChanged();
+    void staleChanged();
+    void linkStateChanged();
+    void lastErrorChanged();
+    void identityChanged();
+    void notifyIntervalChanged();
+    void commandFinished(const QString &command, bool ok, const QString &message);
+
+private:
+    struct Last
+    {
+        TelemetrySample sample;
+        qint64 receivedAt = -1; // m_clock ms; -1: never
+    };
+
+    void scheduleNotify();
+    void emitNotify();
+    void checkStale();
+    VehicleLink::Done finisher(const QString &command);
+
+    QPointer<VehicleLink> m_link;
+    QString m_protocol;
+    VehicleIdentity m_identity;
+    QString m_lastError;
+    TelemetryStore m_history;
+    std::array<Last, kTelemetryFieldCount> m_last;
+    std::bitset<kTelemetryFieldCount> m_staleFields;
+    bool m_stale = true;
+    qint64 m_lastReceivedAt = -1;
+    QElapsedTimer m_clock;
+    QTimer m_notifyTimer, m_staleTimer;
+    int m_notifyInterval = 100;
+    int m_staleAfter = 3000;
+    qint64 m_lastNotifyAt = -1000000;
+    bool m_dirty = false, m_staleDirty = false;
+    quint64 m_notifications = 0;
+};
+
+} // namespace sortie::vehicle

@@ -1,0 +1,73 @@
+#pragma once
+
+#include "TelemetryField.h"
+#include "TelemetrySample.h"
+#include "VehicleTypes.h"
+
+#include <QObject>
+#include <QVariantMap>
+
+#include <functional>
+#include <vector>
+
+namespace sortie::vehicle {
+
+// How the client reaches one vehicle, whatever the protocol: telemetry comes out normalised
+// (TelemetryField names and units), commands go in as calls with a result callback. Two
+// implementations: VciVehicleLink (direct, over TCP or serial) and HciVehicleLink (through a UgCS
+// server). Callbacks run later, never inside the call; a link drops them when destroyed.
+class VehicleLink : public QObject
+{
+    Q_OBJECT
+public:
+    enum class State { Disconnected, Connecting, Connected, Lost };
+    Q_ENUM(State)
+
+    // What a link can do beyond the commands every link has.
+    enum Capability {
+        MissionDownload = 1 << 0,
+        Parameters = 1 << 1,
+        GoTo = 1 << 2,
+    };
+    Q_DECLARE_FLAGS(Capabilities, Capability)
+
+    using Done = std::function<void(const CommandResult &)>;
+    using MissionDone = std::function<void(const CommandResult &, const std::vector<MissionItem> &)>;
+    using ParametersDone = std::function<void(const CommandResult &, const QVariantMap &)>;
+
+    using QObject::QObject;
+
+    virtual QString protocol() const = 0; // "VCI" or "HCI"
+    virtual VehicleIdentity identity() const = 0;
+    virtual State state() const = 0;
+    virtual Capabilities capabilities() const = 0;
+
+    virtual void start() = 0; // connect (if needed) and begin receiving telemetry
+    virtual void stop() = 0;
+
+    virtual void arm(bool armed, Done done) = 0;
+    virtual void setMode(FlightMode mode, Done done) = 0;
+    virtual void takeoff(double altitude, Done done) = 0; // m above home
+    virtual void land(Done done) = 0;
+    virtual void returnHome(Done done) = 0;
+    virtual void goTo(double latitude, double longitude, double altitude, double speed, Done done) = 0;
+    virtual void uploadMission(const std::vector<MissionItem> &items, Done done) = 0;
+    virtual void downloadMission(MissionDone done) = 0;
+    virtual void readParameters(ParametersDone done) = 0;
+    virtual void setParameter(const QString &name, double value, Done done) = 0;
+
+signals:
+    void telemetryReceived(const sortie::vehicle::TelemetryBatch &batch);
+    void stateChanged(sortie::vehicle::VehicleLink::State state);
+    void identityChanged(const sortie::vehicle::VehicleIdentity &identity);
+    // The mission on board changed (an upload, or another station's).
+    void missionChanged();
+    // Something the operator should know about the link: a failed connection attempt, a lost line,
+    // unreadable data. The link keeps trying; this is information, not an end.
+    void errorOccurred(const QString &message);
+};
+
+} // namespace sortie::vehicle
+
+Q_DECLARE_OPERATORS_FOR_FLAGS(sortie::vehicle::VehicleLink::Capabilities)
+Q_DECLARE_METATYPE(sortie::vehicle::TelemetryBatch)

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "VciWriter.h"
+
+#include <QString>
+
+namespace sortie::sim {
+
+// One simulated VCI vehicle's settings, with the test knobs that make it misbehave on purpose.
+struct SimVciOptions
+{
+    QString id = QStringLiteral("vci-1");
+    QString name = QStringLiteral("Sim VCI 1");
+    double homeLatitude = 56.9496;   // degrees
+    double homeLongitude = 24.1052;  // degrees
+    double groundElevation = 12;     // metres AMSL
+    double telemetryRate = 10;       // NOTIFYs per second per subscribed telemetry resource
+    double timeScale = 1;            // simulated seconds per real second (tests fly missions faster)
+    vci::VciFraming framing = vci::VciFraming::JsonOnly; // how its bodies are delimited
+
+    // Test knobs.
+    int answerDelayMs = 0;   // slow answers: each answer waits this long
+    int malformedEvery = 0;  // every Nth NOTIFY goes out broken (0: never)
+    int dropAfter = 0;       // close the connection after sending this many messages (0: never)
+};
+
+} // namespace sortie::sim

@@ -1,0 +1,264 @@
+#include "SimVciVehicle.h"
+
+#include "VciProfile.h"
+
+#include <QDateTime>
+
+#include <cmath>
+
+namespace sortie::sim {
+namespace {
+
+namespace profile = vci::profile;
+using nlohmann::json;
+
+constexpr double kRad = 3.14159265358979323846 / 180.0;
+constexpr int kTickMs = 20;
+
+int64_t now() { return QDateTime::currentMSecsSinceEpoch(); }
+
+bool is(const std::string &uri, std::string_view name) { return uri == name; }
+
+} // namespace
+
+SimVciVehicle::SimVciVehicle(const SimVciOptions &options, QObject *parent)
+    : QObject(parent)
+    , m_options(options)
+    , m_model(options.homeLatitude, options.homeLongitude, options.groundElevation)
+{
+    m_parameters["telemetry_rate"] = options.telemetryRate;
+    m_parameters["takeoff_altitude"] = m_model.limits().takeoffAltitude;
+    m_parameters["mission_speed"] = m_model.limits().cruiseSpeed;
+    m_clock.start();
+    m_tick.setTimerType(Qt::PreciseTimer);
+    connect(&m_tick, &QTimer::timeout, this, &SimVciVehicle::tick);
+    m_tick.start(kTickMs);
+    for (std::string_view uri : profile::kState)
+        m_lastState[std::string(uri)] = *resource(std::string(uri));
+}
+
+void SimVciVehicle::tick()
+{
+    const double dt = double(m_clock.restart()) / 1000.0 * m_options.timeScale;
+    const FlightModel::Mode before = m_model.state().mode;
+    m_model.tick(dt);
+    // Auto becomes Hold inside tick() only when the last waypoint has been reached.
+    if (before == FlightModel::Mode::Auto && m_model.state().mode == FlightModel::Mode::Hold)
+        m_missionComplete = true;
+    checkChanges();
+}
+
+void SimVciVehicle::checkChanges()
+{
+    for (auto &[uri, last] : m_lastState) {
+        json current = *resource(uri);
+        if (current != last) {
+            last = std::move(current);
+            emit changed(QString::fromStdString(uri));
+        }
+    }
+}
+
+bool SimVciVehicle::isPeriodic(const std::string &uri) const
+{
+    for (std::string_view t : profile::kTelemetry) {
+        if (uri == t)
+            return true;
+    }
+    return false;
+}
+
+bool SimVciVehicle::isSubscribable(const std::string &uri) const
+{
+    if (isPeriodic(uri))
+        return true;
+    for (std::string_view s : profile::kState) {
+        if (uri == s)
+            return true;
+    }
+    return uri.rfind(profile::kParameterPrefix, 0) == 0 && resource(uri).has_value();
+}
+
+json SimVciVehicle::progress() const
+{
+    const auto &s = m_model.state();
+    const int count = int(m_model.mission().size());
+    std::string state = "idle";
+    int reached = 0;
+    if (count > 0 && m_missionComplete) {
+        state = "complete";
+        reached = count;
+    } else if (count > 0 && s.mode == FlightModel::Mode::Auto) {
+        state = "active";
+        reached = std::max(0, s.currentWaypoint);
+    } else if (count > 0 && s.currentWaypoint >= 0) {
+        state = "paused";
+        reached = s.currentWaypoint;
+    }
+    return {{"state", state}, {"current", m_missionComplete ? -1 : s.currentWaypoint}, {"reached", reached}, {"count", count}};
+}
+
+json SimVciVehicle::parameters() const
+{
+    const auto &l = m_model.limits();
+    json p = {{"cruise_speed", l.cruiseSpeed}, {"max_speed", l.maxSpeed}, {"climb_rate", l.climbRate},
+              {"descent_rate", l.descentRate}, {"acceptance_radius", l.acceptanceRadius}, {"return_altitude", l.returnAltitude}};
+    for (const auto &[name, value] : m_parameters)
+        p[name] = value;
+    return p;
+}
+
+std::optional<json> SimVciVehicle::resource(const std::string &uri) const
+{
+    const auto &s = m_model.state();
+    if (is(uri, profile::kVehicle))
+        return json{{"id", m_options.id.toStdString()}, {"name", m_options.name.toStdString()}, {"type", "multicopter"},
+                    {"autopilot", "sortie-sim"}, {"firmware", "1.0"}, {"profile", "sortie-vci/1"}};
+    if (is(uri, profile::kPosition))
+        return json{{"latitude", s.latitude * kRad}, {"longitude", s.longitude * kRad}, {"altitudeAmsl", s.altitudeAmsl()},
+                    {"altitudeAgl", s.altitudeAgl}, {"time", now()}};
+    if (is(uri, profile::kAttitude))
+        return json{{"roll", s.roll * kRad}, {"pitch", s.pitch * kRad}, {"yaw", s.heading * kRad}, {"time", now()}};
+    if (is(uri, profile::kSpeed))
+        return json{{"ground", s.groundSpeed}, {"air", s.groundSpeed}, {"vertical", s.verticalSpeed},
+                    {"course", s.heading * kRad}, {"time", now()}};
+    if (is(uri, profile::kBattery)) {
+        const double current = s.armed ? 8.0 + 1.5 * s.groundSpeed + 4.0 * std::max(0.0, s.verticalSpeed) : 0.4;
+        return json{{"voltage", s.batteryVoltage}, {"current", current}, {"remaining", s.batteryRemaining}, {"time", now()}};
+    }
+    if (is(uri, profile::kGps))
+        return json{{"fix", s.gpsFix}, {"satellites", s.satellites}, {"hdop", 0.8}, {"time", now()}};
+    if (is(uri, profile::kHome))
+        return json{{"latitude", s.homeLatitude * kRad}, {"longitude", s.homeLongitude * kRad},
+                    {"altitudeAmsl", s.groundElevation}, {"time", now()}};
+    if (is(uri, profile::kArmed))
+        return json(s.armed);
+    if (is(uri, profile::kMode))
+        return json(FlightModel::modeName(s.mode));
+    if (is(uri, profile::kMission)) {
+        std::vector<vci::profile::Waypoint> list;
+        for (const auto &w : m_model.mission())
+            list.push_back({w.latitude * kRad, w.longitude * kRad, w.altitudeAgl, w.speed});
+        json m = profile::encodeMission(list);
+        m["version"] = m_model.missionVersion();
+        return m;
+    }
+    if (is(uri, profile::kMissionProgress))
+        return progress();
+    if (is(uri, profile::kParameters))
+        return parameters();
+    if (uri.rfind(profile::kParameterPrefix, 0) == 0) {
+        const json all = parameters();
+        const auto it = all.find(uri.substr(profile::kParameterPrefix.size()));
+        if (it != all.end())
+            return *it;
+    }
+    return std::nullopt;
+}
+
+SimVciReply SimVciVehicle::handle(const vci::VciMessage &request)
+{
+    const std::string &uri = request.uri;
+    if (request.verb == vci::VciVerb::Get) {
+        if (auto value = resource(uri))
+            return SimVciReply::ok(std::move(*value));
+        return SimVciReply::error(501, "this vehicle has no resource " + uri);
+    }
+    if (request.verb == vci::VciVerb::Put) {
+        if (request.hasBody && !request.jsonBody)
+            return SimVciReply::error(400, "PUT bodies must be JSON");
+        SimVciReply reply = put(uri, request);
+        checkChanges(); // subscribers hear about it at once, not at the next tick
+        return reply;
+    }
+    return SimVciReply::error(501, "this vehicle does not serve " + std::string(vci::toString(request.verb)));
+}
+
+SimVciReply SimVciVehicle::refusedOrOk(const FlightModel::Refusal &refusal, json value)
+{
+    if (!refusal.empty())
+        return SimVciReply::error(400, refusal);
+    return SimVciReply::ok(std::move(value));
+}
+
+SimVciReply SimVciVehicle::put(const std::string &uri, const vci::VciMessage &request)
+{
+    const json &body = request.body;
+    if (is(uri, profile::kArmed)) {
+        if (!body.is_boolean())
+            return SimVciReply::error(400, "/state/armed takes true or false");
+        return refusedOrOk(body.get<bool>() ? m_model.arm() : m_model.disarm(), body);
+    }
+    if (is(uri, profile::kMode)) {
+        FlightModel::Mode mode;
+        if (!body.is_string() || !FlightModel::modeFromName(body.get<std::string>(), &mode))
+            return SimVciReply::error(400, "/state/mode takes one of manual, hold, takeoff, auto, guided, land, return_home");
+        if (mode == FlightModel::Mode::Auto && (m_missionComplete || m_model.state().currentWaypoint < 0)) {
+            const FlightModel::Refusal refusal = m_model.startMission(); // from the first waypoint again
+            if (refusal.empty())
+                m_missionComplete = false;
+            return refusedOrOk(refusal, body);
+        }
+        if (mode == FlightModel::Mode::Takeoff)
+            return refusedOrOk(m_model.takeoff(m_parameters["takeoff_altitude"]), body);
+        return refusedOrOk(m_model.setMode(mode), body);
+    }
+    if (is(uri, profile::kTakeoff)) {
+        double altitude = m_parameters["takeoff_altitude"];
+        if (body.is_number())
+            altitude = body.get<double>();
+        else if (auto a = profile::number(body, "altitude"))
+            altitude = *a;
+        else if (!body.is_null() && !(body.is_object() && body.empty()))
+            return SimVciReply::error(400, "/command/takeoff takes {\"altitude\": metres} or nothing");
+        if (!(altitude > 0) || altitude > 500)
+            return SimVciReply::error(400, "take-off altitude must be between 0 and 500 m");
+        return refusedOrOk(m_model.takeoff(altitude), json{{"altitude", altitude}});
+    }
+    if (is(uri, profile::kLand))
+        return refusedOrOk(m_model.land(), nullptr);
+    if (is(uri, profile::kReturnHome))
+        return refusedOrOk(m_model.returnHome(), nullptr);
+    if (is(uri, profile::kGoto)) {
+        const auto lat = profile::number(body, "latitude"), lon = profile::number(body, "longitude");
+        const auto alt = profile::number(body, "altitude");
+        if (!lat || !lon || !alt)
+            return SimVciReply::error(400, "/command/goto takes {\"latitude\", \"longitude\" (radians), \"altitude\" (m)}");
+        return refusedOrOk(m_model.goTo(*lat / kRad, *lon / kRad, *alt, profile::number(body, "speed").value_or(0)), body);
+    }
+    if (is(uri, profile::kMission)) {
+        std::string error;
+        const auto waypoints = profile::decodeMission(body, &error);
+        if (!waypoints)
+            return SimVciReply::error(400, error);
+        std::vector<FlightModel::Waypoint> mission;
+        for (const auto &w : *waypoints)
+            mission.push_back({w.latitude / kRad, w.longitude / kRad, w.altitude, w.speed > 0 ? w.speed : m_parameters["mission_speed"]});
+        const FlightModel::Refusal refusal = m_model.setMission(std::move(mission));
+        if (refusal.empty())
+            m_missionComplete = false;
+        return refusedOrOk(refusal, *resource(std::string(profile::kMission)));
+    }
+    if (uri.rfind(profile::kParameterPrefix, 0) == 0)
+        return putParameter(uri.substr(profile::kParameterPrefix.size()), request);
+    if (resource(uri))
+        return SimVciReply::error(501, uri + " is read-only");
+    return SimVciReply::error(501, "this vehicle has no resource " + uri);
+}
+
+SimVciReply SimVciVehicle::putParameter(const std::string &name, const vci::VciMessage &request)
+{
+    const auto it = m_parameters.find(name);
+    if (it == m_parameters.end()) {
+        if (parameters().contains(name))
+            return SimVciReply::error(400, "parameter " + name + " is read-only on this vehicle");
+        return SimVciReply::error(501, "this vehicle has no parameter " + name);
+    }
+    if (!request.body.is_number() || !(request.body.get<double>() > 0))
+        return SimVciReply::error(400, "parameter " + name + " takes a number above 0");
+    it->second = request.body.get<double>();
+    emit changed(QString::fromStdString(std::string(profile::kParameterPrefix) + name));
+    return SimVciReply::ok(request.body);
+}
+
+} // namespace sortie::sim

@@ -1,0 +1,196 @@
+// The telemetry fast path gives exactly what the general protobuf parser gives: on the SDK's telemetry
+// vector, on notifications with every kind of value, and on tens of thousands of mutated payloads
+// (it may decline any of them, but what it accepts must equal ParseFromArray's result, byte for byte).
+#include "HciFrameCodec.h"
+#include "HciTelemetryFastPath.h"
+#include "Messages.pb.h"
+
+#include <google/protobuf/util/message_differencer.h>
+
+#include <QtTest>
+
+#include <fstream>
+#include <random>
+#include <sstream>
+
+using sortie::hci::HciTelemetryFastPath;
+namespace pb = com::ugcs::ucs::proto;
+
+namespace {
+
+std::string payloadOf(const std::string &file)
+{
+    std::ifstream in(std::string(SORTIE_TEST_DATA) + "/hci-vectors/" + file, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str().substr(16);
+}
+
+pb::Notification everyValueKind()
+{
+    pb::Notification n;
+    n.set_subscriptionid(-7);
+    auto *e = n.mutable_event()->mutable_telemetryevent();
+    e->mutable_vehicle()->set_id(12);
+    e->mutable_vehicle()->set_version(3);
+    e->mutable_vehicle()->set_name("EMU-101");
+    auto add = [e](const char *code) {
+        auto *t = e->add_telemetry();
+        t->set_time(-1); // a ten-byte varint
+        t->mutable_telemetryfield()->set_code(code);
+        t->mutable_telemetryfield()->set_id(4);
+        t->mutable_telemetryfield()->set_semantic(pb::S_ANY);
+        t->mutable_telemetryfield()->set_subsystem(pb::S_GIMBAL);
+        t->mutable_telemetryfield()->set_subsystemid(2);
+        return t->mutable_value();
+    };
+    add("b")->set_boolvalue(true);
+    add("i")->set_intvalue(-123456);
+    add("l")->set_longvalue(INT64_MIN);
+    add("f")->set_floatvalue(-0.0f);
+    add("d")->set_doublevalue(std::numeric_limits<double>::quiet_NaN());
+    add("s")->set_stringvalue("AUTO");
+    add("x")->set_bytesvalue(std::string("\0\xff\x01", 3));
+    auto *v = add("t");
+    v->set_id(1);
+    v->set_version(2);
+    v->set_tag("tagged");
+    e->add_telemetry(); // an empty Telemetry
+    return n;
+}
+
+// Parses `payload` both ways; the fast path may decline, but must never disagree.
+bool agree(const std::string &payload, pb::Notification &reused, bool *accepted)
+{
+    pb::Notification general;
+    // ParseFromArray, without its log line for each incomplete message.
+    const bool generalOk = general.ParsePartialFromArray(payload.data(), int(payload.size())) && general.IsInitialized();
+    *accepted = HciTelemetryFastPath::parse(payload, &reused);
+    if (!*accepted)
+        return true;
+    if (!generalOk)
+        return false;
+    // Same presence, same values, same order: the same bytes (NaN included, which == would not equal).
+    return reused.SerializeAsString() == general.SerializeAsString();
+}
+
+} // namespace
+
+class TestHciFastPath : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void takesTheSdkTelemetryVector()
+    {
+        const std::string payload = payloadOf("029-Notification.bin");
+        pb::Notification fast, general;
+        QVERIFY(HciTelemetryFastPath::parse(payload, &fast));
+        QVERIFY(general.ParseFromString(payload));
+        QVERIFY(google::protobuf::util::MessageDifferencer::Equals(fast, general));
+        QCOMPARE(fast.SerializeAsString(), payload); // and it round-trips byte for byte
+    }
+
+    void takesEveryKindOfValue()
+    {
+        const pb::Notification n = everyValueKind();
+        const std::string payload = n.SerializeAsString();
+        pb::Notification fast;
+        QVERIFY(HciTelemetryFastPath::parse(payload, &fast));
+        QCOMPARE(fast.SerializeAsString(), payload);
+        QVERIFY(std::isnan(fast.event().telemetryevent().telemetry(4).value().doublevalue()));
+        QCOMPARE(fast.event().telemetryevent().telemetry(0).time(), int64_t(-1));
+    }
+
+    void declinesWhatItDoesNotKnow()
+    {
+        pb::Notification fast;
+        QVERIFY(!HciTelemetryFastPath::parse(payloadOf("030-Notification.bin"), &fast)); // a CommandEvent
+        QVERIFY(!HciTelemetryFastPath::parse(payloadOf("042-Notification.bin"), &fast)); // an object event
+        pb::Notification n = everyValueKind();
+        n.mutable_event()->mutable_telemetryevent()->mutable_telemetry(0)->mutable_value()->add_listvalue()->set_intvalue(1);
+        QVERIFY(!HciTelemetryFastPath::parse(n.SerializeAsString(), &fast));
+        n = everyValueKind();
+        n.mutable_event()->mutable_telemetryevent()->mutable_vehicle()->set_serialnumber("S1"); // a full Vehicle
+        QVERIFY(!HciTelemetryFastPath::parse(n.SerializeAsString(), &fast));
+        n = everyValueKind();
+        n.mutable_event()->mutable_telemetryevent()->mutable_vehicle()->mutable_unknown_fields()->AddVarint(100, 1);
+        QVERIFY(!HciTelemetryFastPath::parse(n.SerializeAsString(), &fast)); // unknown field 100
+        // A sub-message twice is merged by protobuf: left to it.
+        const std::string twice = everyValueKind().SerializeAsString() + pb::Notification(everyValueKind()).SerializeAsString();
+        QVERIFY(!HciTelemetryFastPath::parse(twice, &fast));
+        // An unknown enum value is kept as an unknown field by proto2: left to it.
+        std::string payload = payloadOf("029-Notification.bin");
+        const auto at = payload.find(std::string("\x18\x02", 2)); // semantic S_LATITUDE
+        QVERIFY(at != std::string::npos);
+        payload[at + 1] = 0x63; // 99: no such Semantic
+        QVERIFY(!HciTelemetryFastPath::parse(payload, &fast));
+        // No subscriptionId: incomplete, so the decoder drops it as the general path would.
+        n = everyValueKind();
+        n.clear_subscriptionid();
+        QVERIFY(!HciTelemetryFastPath::parse(n.SerializePartialAsString(), &fast));
+    }
+
+    void neverDisagreesOnMutatedPayloads()
+    {
+        const std::vector<std::string> seeds = {payloadOf("029-Notification.bin"), everyValueKind().SerializeAsString()};
+        std::mt19937 random(20240611);
+        pb::Notification reused; // reused across cases, as the decoder does
+        int accepted = 0, cases = 0;
+        for (const std::string &seed : seeds) {
+            for (int i = 0; i < 20000; ++i) {
+                std::string p = seed;
+                const int edits = 1 + int(random() % 3);
+                for (int k = 0; k < edits && !p.empty(); ++k) {
+                    const size_t at = random() % p.size();
+                    switch (random() % 4) {
+                    case 0: p[at] = char(random()); break;                       // any byte
+                    case 1: p[at] = char(p[at] ^ (1 << (random() % 8))); break;  // one bit
+                    case 2: p.erase(at, 1 + random() % 4); break;                // lose bytes
+                    default: p.insert(at, 1, char(random())); break;             // gain one
+                    }
+                }
+                if (random() % 8 == 0)
+                    p = p.substr(0, random() % (p.size() + 1)); // truncated
+                bool took = false;
+                QVERIFY2(agree(p, reused, &took), QByteArray::fromStdString(p).toHex().constData());
+                accepted += took;
+                ++cases;
+            }
+        }
+        // Many mutations stay well-formed telemetry: the comparison above really ran.
+        qInfo("the fast path took %d of %d mutated payloads", accepted, cases);
+        QVERIFY(accepted > cases / 20);
+    }
+
+    void theDecoderGivesTheSameFramesEitherWay()
+    {
+        std::string stream;
+        for (int i = 0; i < 50; ++i)
+            sortie::hci::appendHciFrame(stream, -1, everyValueKind());
+        std::string vector;
+        std::ifstream in(std::string(SORTIE_TEST_DATA) + "/hci-vectors/stream-bad-frames.bin", std::ios::binary);
+        std::stringstream s;
+        s << in.rdbuf();
+        stream += s.str();
+        auto run = [&](bool fast) {
+            sortie::hci::HciFrameDecoder decoder;
+            decoder.setFastPath(fast);
+            decoder.feed(stream);
+            std::string out;
+            while (auto r = decoder.next()) {
+                if (auto *f = std::get_if<sortie::hci::HciFrame>(&*r)) {
+                    out += std::to_string(f->offset) + ':' + f->message->SerializeAsString() + ';';
+                    decoder.recycle(std::move(f->message));
+                } else {
+                    out += std::to_string(std::get<sortie::hci::HciDroppedFrame>(*r).offset) + "X;";
+                }
+            }
+            return out;
+        };
+        QCOMPARE(run(true), run(false));
+    }
+};
+
+QTEST_APPLESS_MAIN(TestHciFastPath)
+#include "tst_hcifastpath.moc"

@@ -1,0 +1,277 @@
+// HciVehicleLink + Vehicle against the simulated UgCS server: telemetry, commands under the vehicle
+// lock, mission upload through route processing, another operator's lock; the HCI telemetry mapping;
+// and one model for both protocols (the same fields filled, in the same units, by HCI and by VCI).
+#include "HciClient.h"
+#include "HciReply.h"
+#include "HciServer.h"
+#include "HciSession.h"
+#include "HciTelemetryMapper.h"
+#include "HciVehicleLink.h"
+#include "Messages.pb.h"
+#include "SimVciListener.h"
+#include "SimVciVehicle.h"
+#include "SimVehicle.h"
+#include "SimWorld.h"
+#include "VciVehicleLink.h"
+#include "Vehicle.h"
+
+#include <QSignalSpy>
+#include <QtTest>
+
+using namespace sortie;
+using namespace sortie::vehicle;
+namespace pb = com::ugcs::ucs::proto;
+
+namespace {
+
+constexpr double kRad = 3.14159265358979323846 / 180;
+
+struct Server
+{
+    Server()
+        : world(config())
+        , server(world)
+    {
+        server.setUploadStepMs(5);
+        if (!server.listen(QHostAddress::LocalHost, 0))
+            qFatal("cannot start the simulator: %s", qPrintable(server.errorString()));
+    }
+    static sim::SimWorld::Config config()
+    {
+        sim::SimWorld::Config c;
+        c.telemetryRateHz = 20;
+        c.users = {{0, QStringLiteral("admin"), QStringLiteral("admin"), true}, {0, QStringLiteral("bob"), QStringLiteral("bob-pw"), false}};
+        return c;
+    }
+    sim::SimWorld world;
+    sim::HciServer server;
+};
+
+struct Operator
+{
+    Operator(quint16 port, const char *login, const char *password)
+        : client(&session)
+    {
+        session.open(QStringLiteral("127.0.0.1"), port, QString::fromLatin1(login), QString::fromLatin1(password));
+    }
+    pb::Vehicle vehicle(const std::string &name)
+    {
+        auto *reply = client.listObjects(hci::HciObjectType::Vehicle);
+        reply->setAutoDelete(false);
+        QSignalSpy done(reply, &hci::HciReply::finished);
+        if (!reply->isFinished())
+            done.wait(10000);
+        pb::Vehicle found;
+        for (const auto &w : reply->response<pb::GetObjectListResponse>().objects())
+            if (w.vehicle().name() == name)
+                found = w.vehicle();
+        delete reply;
+        return found;
+    }
+    hci::HciSession session;
+    hci::HciClient client;
+};
+
+struct Result
+{
+    bool done = false;
+    CommandResult result;
+    VehicleLink::Done callback()
+    {
+        return [this](const CommandResult &r) {
+            done = true;
+            result = r;
+        };
+    }
+};
+
+pb::Telemetry telemetry(const char *code, pb::Semantic semantic, pb::Subsystem subsystem = pb::S_FLIGHT_CONTROLLER)
+{
+    pb::Telemetry t;
+    t.set_time(5000);
+    t.mutable_telemetryfield()->set_code(code);
+    t.mutable_telemetryfield()->set_semantic(semantic);
+    t.mutable_telemetryfield()->set_subsystem(subsystem);
+    return t;
+}
+
+} // namespace
+
+class TstHciVehicleLink : public QObject
+{
+    Q_OBJECT
+private slots:
+    void mapping();
+    void telemetryAndCommands();
+    void missionUpload();
+    void anotherOperatorsLock();
+    void oneModelForBothProtocols();
+};
+
+void TstHciVehicleLink::mapping()
+{
+    pb::TelemetryEvent e;
+    auto add = [&](pb::Telemetry t) { *e.add_telemetry() = std::move(t); };
+    auto lat = telemetry("latitude", pb::S_LATITUDE);
+    lat.mutable_value()->set_doublevalue(0.99);
+    add(lat);
+    auto gimbal = telemetry("roll", pb::S_ROLL, pb::S_GIMBAL);
+    gimbal.mutable_value()->set_floatvalue(1.0f);
+    add(gimbal);
+    auto capacity = telemetry("battery_level", pb::S_CAPACITY_LEVEL);
+    capacity.mutable_value()->set_intvalue(80);
+    add(capacity);
+    auto mode = telemetry("flight_mode", pb::S_FLIGHT_MODE);
+    mode.mutable_value()->set_stringvalue("RTL");
+    add(mode);
+    auto armed = telemetry("is_armed", pb::S_BOOL);
+    armed.mutable_value()->set_boolvalue(true);
+    add(armed);
+    auto other = telemetry("payload_ok", pb::S_BOOL);
+    other.mutable_value()->set_boolvalue(true);
+    add(other);
+    auto unavailable = telemetry("ground_speed", pb::S_GROUND_SPEED);
+    unavailable.mutable_value();
+    add(unavailable);
+    auto untimed = telemetry("satellite_count", pb::S_SATELLITE_COUNT);
+    untimed.clear_time();
+    untimed.mutable_value()->set_intvalue(9);
+    add(untimed);
+    const TelemetryBatch b = hciTelemetry(e, 777);
+    QCOMPARE(b.size(), size_t(5));
+    QVERIFY(b[0].field == TelemetryField::Latitude && b[0].value == 0.99 && b[0].time == 5000);
+    QVERIFY(b[1].field == TelemetryField::BatteryRemaining && b[1].value == 0.8);
+    QVERIFY(b[2].field == TelemetryField::Mode && b[2].value == double(FlightMode::ReturnHome));
+    QVERIFY(b[3].field == TelemetryField::Armed && b[3].value == 1.0);
+    QVERIFY(b[4].field == TelemetryField::Satellites && b[4].time == 777);
+}
+
+void TstHciVehicleLink::telemetryAndCommands()
+{
+    Server sim;
+    Operator op(sim.server.port(), "admin", "admin");
+    QTRY_VERIFY(op.session.isReady());
+    const pb::Vehicle emu = op.vehicle("EMU-101");
+    QVERIFY(emu.id() > 0);
+    HciVehicleLink link(&op.client, emu);
+    Vehicle v(&link);
+    QCOMPARE(v.protocol(), QStringLiteral("HCI"));
+    QCOMPARE(v.name(), QStringLiteral("EMU-101"));
+    QCOMPARE(v.linkState(), VehicleLink::State::Disconnected);
+    link.start();
+    QTRY_VERIFY(v.isConnected());
+    QTRY_VERIFY(v.position().isValid());
+    QTRY_COMPARE(v.mode(), QStringLiteral("manual"));
+    QTRY_COMPARE(v.gpsFix(), 3);
+    QVERIFY(!v.armed());
+
+    QSignalSpy finished(&v, &Vehicle::commandFinished);
+    v.arm();
+    QTRY_COMPARE(finished.count(), 1);
+    QVERIFY2(finished.at(0).at(1).toBool(), qPrintable(finished.at(0).at(2).toString()));
+    QTRY_VERIFY(v.armed());
+    Result takeoff, disarm, land;
+    link.takeoff(4, takeoff.callback());
+    QTRY_VERIFY(takeoff.done);
+    QVERIFY2(takeoff.result.ok, qPrintable(takeoff.result.message));
+    QTRY_VERIFY_WITH_TIMEOUT(v.altitudeAgl() > 3.5, 15000);
+    link.arm(false, disarm.callback()); // refused in the air, with the server's reason
+    QTRY_VERIFY(disarm.done);
+    QVERIFY(!disarm.result.ok);
+    QVERIFY2(disarm.result.message.startsWith(QLatin1String("disarm: ")), qPrintable(disarm.result.message));
+    link.land(land.callback());
+    QTRY_VERIFY(land.done);
+    QVERIFY(land.result.ok);
+    QTRY_VERIFY_WITH_TIMEOUT(!v.armed(), 15000);
+    QVERIFY(!sim.world.locks().holder(QStringLiteral("Vehicle"), emu.id())); // every lock released
+
+    link.stop();
+    QCOMPARE(v.linkState(), VehicleLink::State::Disconnected);
+}
+
+void TstHciVehicleLink::missionUpload()
+{
+    Server sim;
+    Operator op(sim.server.port(), "admin", "admin");
+    QTRY_VERIFY(op.session.isReady());
+    HciVehicleLink link(&op.client, op.vehicle("EMU-102"));
+    link.start();
+    QSignalSpy missionChanged(&link, &VehicleLink::missionChanged);
+    Result upload, bad, download;
+    link.uploadMission({{56.9499 * kRad, 24.1052 * kRad, 20, 6}, {56.9501 * kRad, 24.1056 * kRad, 25, 0}}, upload.callback());
+    QTRY_VERIFY_WITH_TIMEOUT(upload.done, 15000);
+    QVERIFY2(upload.result.ok, qPrintable(upload.result.message));
+    QCOMPARE(missionChanged.count(), 1);
+    const sim::SimVehicle *emu = sim.world.vehicle(link.vehicleObjectId());
+    QCOMPARE(emu->model().mission().size(), size_t(2));
+    QVERIFY(std::abs(emu->model().mission()[1].longitude - 24.1056) < 1e-9);
+    QCOMPARE(emu->model().mission()[0].speed, 6.0);
+
+    link.uploadMission({{56.95 * kRad, 24.1 * kRad, -30, 0}}, bad.callback());
+    QTRY_VERIFY_WITH_TIMEOUT(bad.done, 15000);
+    QVERIFY(!bad.result.ok);
+    QVERIFY2(bad.result.message.startsWith(QLatin1String("Waypoint 1: ")), qPrintable(bad.result.message));
+    QVERIFY2(bad.result.message.contains(QLatin1String("below the ground")), qPrintable(bad.result.message));
+
+    bool refused = false;
+    link.downloadMission([&](const CommandResult &r, const std::vector<MissionItem> &) { refused = !r.ok; });
+    QTRY_VERIFY(refused);
+    QVERIFY(!(link.capabilities() & VehicleLink::MissionDownload));
+    QVariantMap params;
+    link.readParameters([&](const CommandResult &, const QVariantMap &p) { params = p; });
+    QTRY_VERIFY(!params.isEmpty());
+}
+
+void TstHciVehicleLink::anotherOperatorsLock()
+{
+    Server sim;
+    Operator admin(sim.server.port(), "admin", "admin"), bob(sim.server.port(), "bob", "bob-pw");
+    QTRY_VERIFY(admin.session.isReady() && bob.session.isReady());
+    const pb::Vehicle emu = admin.vehicle("EMU-103");
+    auto *lock = bob.client.acquireLock(hci::HciObjectType::Vehicle, emu.id());
+    QSignalSpy locked(lock, &hci::HciReply::finished);
+    QVERIFY(locked.wait(10000));
+    HciVehicleLink link(&admin.client, emu);
+    Result arm;
+    link.arm(true, arm.callback());
+    QTRY_VERIFY(arm.done);
+    QVERIFY(!arm.result.ok);
+    QVERIFY2(arm.result.message.contains(QLatin1String("bob")), qPrintable(arm.result.message));
+    QVERIFY(!sim.world.vehicle(emu.id())->model().state().armed);
+}
+
+void TstHciVehicleLink::oneModelForBothProtocols()
+{
+    Server hciSim;
+    Operator op(hciSim.server.port(), "admin", "admin");
+    QTRY_VERIFY(op.session.isReady());
+    HciVehicleLink hciLink(&op.client, op.vehicle("EMU-101"));
+    sim::SimVciVehicle vciSim(sim::SimVciOptions{});
+    sim::SimVciListener listener(&vciSim);
+    QVERIFY(listener.listen(0));
+    VciVehicleLink vciLink(*vci::VciEndpoint::parse(QStringLiteral("tcp://127.0.0.1:%1").arg(listener.port())));
+    Vehicle viaHci(&hciLink), viaVci(&vciLink);
+    hciLink.start();
+    vciLink.start();
+    const TelemetryField common[] = {TelemetryField::Latitude, TelemetryField::Longitude, TelemetryField::AltitudeAmsl,
+                                     TelemetryField::AltitudeAgl, TelemetryField::Roll, TelemetryField::Pitch,
+                                     TelemetryField::Heading, TelemetryField::GroundSpeed, TelemetryField::VerticalSpeed,
+                                     TelemetryField::BatteryVoltage, TelemetryField::GpsFix, TelemetryField::Satellites,
+                                     TelemetryField::Armed, TelemetryField::Mode};
+    for (TelemetryField f : common) {
+        QTRY_VERIFY2(viaHci.last(f).has_value(), fieldName(f).data());
+        QTRY_VERIFY2(viaVci.last(f).has_value(), fieldName(f).data());
+    }
+    // Same places near Riga, in degrees on the map and radians in the fields, from either protocol.
+    QVERIFY(std::abs(viaHci.position().latitude() - 56.95) < 0.05);
+    QVERIFY(std::abs(viaVci.position().latitude() - 56.95) < 0.05);
+    QVERIFY(std::abs(viaHci.value(TelemetryField::Latitude) - viaVci.value(TelemetryField::Latitude)) < 0.001);
+    QCOMPARE(viaHci.mode(), viaVci.mode());
+    QCOMPARE(viaHci.gpsFix(), viaVci.gpsFix());
+    QVERIFY(viaHci.batteryVoltage() > 14 && viaVci.batteryVoltage() > 14);
+    QCOMPARE(viaHci.protocol(), QStringLiteral("HCI"));
+    QCOMPARE(viaVci.protocol(), QStringLiteral("VCI"));
+}
+
+QTEST_GUILESS_MAIN(TstHciVehicleLink)
+#include "tst_hcivehiclelink.moc"

@@ -1,0 +1,136 @@
+// Vehicle: last values, coalesced notifications for QML, stale detection, history; and the VCI
+// telemetry mapping that feeds it.
+#include "Vehicle.h"
+#include "VciTelemetryMapper.h"
+
+#include <QSignalSpy>
+#include <QtTest>
+
+using nlohmann::json;
+using namespace sortie::vehicle;
+
+class TstVehicle : public QObject
+{
+    Q_OBJECT
+private slots:
+    void lastValuesAndProperties();
+    void notificationsAreCoalesced();
+    void staleDetection();
+    void historyIsFilled();
+    void vciMapping();
+};
+
+void TstVehicle::lastValuesAndProperties()
+{
+    Vehicle v(nullptr);
+    QVERIFY(!v.position().isValid());
+    QVERIFY(std::isnan(v.groundSpeed()));
+    QCOMPARE(v.mode(), QStringLiteral("unknown"));
+    const double rad = 3.14159265358979323846 / 180;
+    v.ingest({{TelemetryField::Latitude, 56.95 * rad, 1000}, {TelemetryField::Longitude, 24.1 * rad, 1000},
+              {TelemetryField::AltitudeAmsl, 120, 1000}, {TelemetryField::GroundSpeed, 7.5, 1000},
+              {TelemetryField::Armed, 1, 1000}, {TelemetryField::Mode, double(FlightMode::ReturnHome), 1000},
+              {TelemetryField::MissionState, double(MissionState::Paused), 1000}, {TelemetryField::Satellites, 12, 1000}});
+    QVERIFY(std::abs(v.position().latitude() - 56.95) < 1e-9);
+    QCOMPARE(v.position().altitude(), 120.0);
+    QCOMPARE(v.groundSpeed(), 7.5);
+    QVERIFY(v.armed());
+    QCOMPARE(v.mode(), QStringLiteral("return_home"));
+    QCOMPARE(v.missionState(), QStringLiteral("paused"));
+    QCOMPARE(v.satellites(), 12);
+    QCOMPARE(v.value(QStringLiteral("groundSpeed")), 7.5);
+    QVERIFY(std::isnan(v.value(QStringLiteral("nonsense"))));
+    QCOMPARE(v.last(TelemetryField::GroundSpeed)->time, int64_t(1000));
+    // The QML-facing property names resolve through the meta-object.
+    QCOMPARE(v.property("groundSpeed").toDouble(), 7.5);
+    QCOMPARE(v.property("mode").toString(), QStringLiteral("return_home"));
+    QVERIFY(v.property("position").value<QGeoCoordinate>().isValid());
+}
+
+void TstVehicle::notificationsAreCoalesced()
+{
+    Vehicle v(nullptr);
+    v.setNotifyInterval(50);
+    QSignalSpy changed(&v, &Vehicle::telemetryChanged);
+    for (int i = 0; i < 1000; ++i) // 1,000 batches without the event loop running in between
+        v.ingest({{TelemetryField::GroundSpeed, double(i), 1000 + i}});
+    QCOMPARE(changed.count(), 1); // the first at once
+    QCOMPARE(v.groundSpeed(), 999.0); // the values themselves are always current
+    QTRY_COMPARE(changed.count(), 2); // the rest gathered into one
+    QTest::qWait(120);
+    QCOMPARE(changed.count(), 2); // nothing new, nothing sent
+    QCOMPARE(v.telemetryNotifications(), quint64(2));
+}
+
+void TstVehicle::staleDetection()
+{
+    Vehicle v(nullptr);
+    v.setStaleAfter(100);
+    QVERIFY(v.isStale());
+    QVERIFY(v.isStale(TelemetryField::Latitude));
+    QSignalSpy staleChanged(&v, &Vehicle::staleChanged);
+    v.ingest({{TelemetryField::Latitude, 1, 1}});
+    QVERIFY(!v.isStale());
+    QVERIFY(!v.isStale(TelemetryField::Latitude));
+    QVERIFY(v.isStale(TelemetryField::Longitude)); // never received
+    QVERIFY(!v.isFieldStale(QStringLiteral("latitude")));
+    QTRY_VERIFY(staleChanged.count() >= 1);
+    QTRY_VERIFY(v.isStale());
+    QVERIFY(v.isStale(TelemetryField::Latitude));
+    QVERIFY(v.isFieldStale(QStringLiteral("latitude")));
+    const qsizetype before = staleChanged.count();
+    v.ingest({{TelemetryField::Latitude, 2, 2}});
+    QVERIFY(!v.isStale());
+    QTRY_VERIFY(staleChanged.count() > before);
+}
+
+void TstVehicle::historyIsFilled()
+{
+    Vehicle v(nullptr, nullptr, 100);
+    for (int i = 0; i < 150; ++i)
+        v.ingest({{TelemetryField::AltitudeAgl, double(i), 10 * i}, {TelemetryField::Roll, 0.1, 10 * i}});
+    QCOMPARE(v.history().series(TelemetryField::AltitudeAgl).size(), size_t(100));
+    QCOMPARE(v.history().last(TelemetryField::AltitudeAgl)->value, 149.0);
+    std::vector<TelemetrySample> window;
+    QCOMPARE(v.history().copyBetween(TelemetryField::AltitudeAgl, 1400, 1490, window), size_t(10));
+}
+
+void TstVehicle::vciMapping()
+{
+    auto find = [](const TelemetryBatch &b, TelemetryField f) -> std::optional<TelemetryUpdate> {
+        for (const auto &u : b) {
+            if (u.field == f)
+                return u;
+        }
+        return std::nullopt;
+    };
+    auto b = vciTelemetry("/telemetry/position", json{{"latitude", 0.99}, {"longitude", 0.42}, {"altitudeAmsl", 100}, {"time", 1234}}, 9);
+    QCOMPARE(b.size(), size_t(3));
+    QCOMPARE(find(b, TelemetryField::Latitude)->value, 0.99);
+    QCOMPARE(find(b, TelemetryField::Latitude)->time, int64_t(1234));
+    b = vciTelemetry("/telemetry/attitude", json{{"roll", 0.1}, {"pitch", "bad"}, {"yaw", 3.0}}, 9);
+    QCOMPARE(b.size(), size_t(2)); // a field of the wrong type is skipped
+    QCOMPARE(find(b, TelemetryField::Heading)->value, 3.0);
+    QCOMPARE(find(b, TelemetryField::Heading)->time, int64_t(9)); // no "time": when it arrived
+    b = vciTelemetry("/telemetry/speed", json{{"ground", 5}, {"air", 6}, {"vertical", -1}, {"course", 1.5}}, 9);
+    QCOMPARE(b.size(), size_t(4));
+    b = vciTelemetry("/telemetry/battery", json{{"voltage", 15.2}, {"current", 9}, {"remaining", 0.8}}, 9);
+    QCOMPARE(find(b, TelemetryField::BatteryRemaining)->value, 0.8);
+    b = vciTelemetry("/telemetry/gps", json{{"fix", 3}, {"satellites", 14}, {"hdop", 0.8}}, 9);
+    QCOMPARE(find(b, TelemetryField::Satellites)->value, 14.0);
+    b = vciTelemetry("/telemetry/home", json{{"latitude", 0.5}, {"longitude", 0.6}, {"altitudeAmsl", 12}}, 9);
+    QCOMPARE(find(b, TelemetryField::HomeAltitudeAmsl)->value, 12.0);
+    b = vciTelemetry("/state/armed", json(true), 9);
+    QCOMPARE(find(b, TelemetryField::Armed)->value, 1.0);
+    b = vciTelemetry("/state/mode", json("loiter"), 9);
+    QCOMPARE(find(b, TelemetryField::Mode)->value, double(FlightMode::Hold));
+    b = vciTelemetry("/mission/progress", json{{"state", "active"}, {"current", 2}, {"reached", 2}, {"count", 5}}, 9);
+    QCOMPARE(b.size(), size_t(4));
+    QCOMPARE(find(b, TelemetryField::MissionState)->value, double(MissionState::Active));
+    QVERIFY(vciTelemetry("/telemetry/position", json::array({1, 2}), 9).empty());
+    QVERIFY(vciTelemetry("/vehicle", json{{"id", "x"}}, 9).empty());
+    QVERIFY(vciTelemetry("/state/armed", json("yes"), 9).empty());
+}
+
+QTEST_GUILESS_MAIN(TstVehicle)
+#include "tst_vehicle.moc"
