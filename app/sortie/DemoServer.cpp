@@ -1,6 +1,8 @@
 #include "DemoServer.h"
 
 #include "HciServer.h"
+#include "SimVciFleet.h"
+#include "SimVciListener.h"
 #include "SimWorld.h"
 
 namespace sortie::app {
@@ -18,7 +20,21 @@ bool DemoServer::start(QString *error)
         *error = m_server->errorString();
         return false;
     }
-    return true;
+    sim::SimVciFleetOptions vci;
+    vci.count = 1;
+    vci.firstPort = 0; // any free port
+    m_vci = std::make_unique<sim::SimVciFleet>(vci);
+    return m_vci->start(error);
+}
+
+QStringList DemoServer::vciAddresses() const
+{
+    QStringList addresses;
+    if (m_vci) {
+        for (const auto &listener : m_vci->listeners())
+            addresses.append(QStringLiteral("tcp://127.0.0.1:%1").arg(listener->port()));
+    }
+    return addresses;
 }
 
 QString DemoServer::address() const

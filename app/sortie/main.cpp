@@ -6,6 +6,7 @@
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "VehicleFleet.h"
 #include "LaunchOptions.h"
 #include "SortieUi.h"
 #include "WindowGeometry.h"
@@ -74,6 +75,7 @@ int main(int argc, char *argv[])
     sortie::hci::HciClient hciClient(&session);
     sortie::client::ConnectionController connection(&session);
     sortie::client::MissionController missions(&hciClient);
+    sortie::client::VehicleFleet fleet(&hciClient);
     sortie::app::DemoServer demo;
     if (options.demo) {
         QString error;
@@ -87,7 +89,8 @@ int main(int argc, char *argv[])
     sortie::ui::addImportPaths(engine);
     engine.setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(&settings)},
                                  {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&connection)},
-                                 {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&missions)}});
+                                 {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&missions)},
+                                 {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&fleet)}});
     engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));
     if (engine.rootObjects().isEmpty())
         return 1;
@@ -100,7 +103,12 @@ int main(int argc, char *argv[])
         session.close();
     });
     window->show();
-    if (options.demo)
+    if (options.demo) {
         connection.connectToServer(demo.address(), sortie::app::DemoServer::user(), sortie::app::DemoServer::password());
+        for (const QString &vehicle : demo.vciAddresses())
+            fleet.addVciVehicle(vehicle);
+    }
+    if (options.vci)
+        fleet.addVciVehicle(options.vci->toString());
     return QGuiApplication::exec();
 }

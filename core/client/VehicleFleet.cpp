@@ -37,7 +37,15 @@ VehicleFleet::VehicleFleet(hci::HciClient *client, QObject *parent)
     });
 }
 
-VehicleFleet::~VehicleFleet() = default;
+VehicleFleet::~VehicleFleet()
+{
+    // Vehicles first (they watch their links), then the links, with nothing reaching back here.
+    for (Entry &entry : m_entries) {
+        disconnect(entry.vehicle.get(), nullptr, this, nullptr);
+        entry.vehicle.reset();
+        entry.link.reset();
+    }
+}
 
 int VehicleFleet::rowCount(const QModelIndex &parent) const
 {
@@ -88,7 +96,8 @@ Vehicle *VehicleFleet::vehicleAt(int row) const
 
 void VehicleFleet::add(std::unique_ptr<VehicleLink> link)
 {
-    auto vehicle = std::make_unique<Vehicle>(link.get());
+    // Parented, so that QML, which receives it from vehicleAt(), never takes it over and deletes it.
+    auto vehicle = std::make_unique<Vehicle>(link.get(), this);
     Vehicle *raw = vehicle.get();
     connect(raw, &Vehicle::telemetryChanged, this, [this, raw] { rowChanged(raw); });
     connect(raw, &Vehicle::staleChanged, this, [this, raw] { rowChanged(raw); });
@@ -138,8 +147,12 @@ void VehicleFleet::dropHciVehicles()
         if (m_entries[size_t(row)].vehicle->protocol() != QLatin1String("HCI"))
             continue;
         beginRemoveRows({}, row, row);
+        Entry gone = std::move(m_entries[size_t(row)]);
         m_entries.erase(m_entries.begin() + row);
         endRemoveRows();
+        disconnect(gone.vehicle.get(), nullptr, this, nullptr);
+        gone.vehicle.reset();
+        gone.link.reset();
     }
     emit countChanged();
 }

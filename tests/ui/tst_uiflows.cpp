@@ -12,7 +12,12 @@
 #include "MissionController.h"
 #include "QuickScene.h"
 #include "RouteLayer.h"
+#include "SimVciFleet.h"
+#include "SimVciListener.h"
 #include "SimWorld.h"
+#include "VehicleFleet.h"
+#include "VehicleLayer.h"
+#include "TelemetryPlot.h"
 #include "SortieUi.h"
 
 #include <QDir>
@@ -56,6 +61,8 @@ class TestUiFlows : public QObject
     std::unique_ptr<hci::HciClient> m_client;
     std::unique_ptr<client::ConnectionController> m_connection;
     std::unique_ptr<client::MissionController> m_missions;
+    std::unique_ptr<client::VehicleFleet> m_fleet;
+    std::unique_ptr<sim::SimVciFleet> m_vci;
     std::unique_ptr<QQmlApplicationEngine> m_engine;
     QQuickWindow *m_window = nullptr;
 
@@ -82,6 +89,7 @@ class TestUiFlows : public QObject
     {
         QQuickItem *item = find(field);
         QVERIFY(item);
+        QTRY_VERIFY2(item->isVisible() && item->width() > 0 && QRect(QPoint(), m_window->size()).contains(centreOf(item)), field);
         QTest::mouseClick(m_window, Qt::LeftButton, {}, centreOf(item));
         QTRY_VERIFY(item->hasActiveFocus());
         QTest::keyClick(m_window, Qt::Key_A, Qt::ControlModifier);
@@ -106,13 +114,18 @@ class TestUiFlows : public QObject
         QTRY_COMPARE(m_window->property("currentPage").toInt(), 1);
         QObject *picker = find<QObject>("routePicker");
         QTRY_VERIFY(picker->property("count").toInt() > 0);
+        QTRY_VERIFY(!m_missions->isBusy()); // the lists have arrived and will not be reset under us
         // The keyboard way: focus the picker, Down picks the first route.
         find("routePicker")->forceActiveFocus(Qt::TabFocusReason);
         QTRY_VERIFY(find("routePicker")->hasActiveFocus());
         QTest::keyClick(m_window, Qt::Key_Down);
         QTRY_COMPARE(picker->property("currentIndex").toInt(), 0);
-        click("openRouteButton");
-        QTRY_COMPARE(routeLayer()->count(), 4);
+        // Tab to the Open button and press it with the space bar.
+        QTest::keyClick(m_window, Qt::Key_Tab);
+        QTRY_VERIFY(find("openRouteButton")->hasActiveFocus());
+        QTest::keyClick(m_window, Qt::Key_Space);
+        QTRY_VERIFY2(routeLayer()->count() == 4, qPrintable(m_missions->message() + QStringLiteral(" / picker value ")
+                                                             + picker->property("currentValue").toString()));
         QTRY_COMPARE(routeLayer()->visibleWaypointCount(), 4); // fitted to the map
     }
 
@@ -153,11 +166,19 @@ private slots:
         m_client = std::make_unique<hci::HciClient>(m_session.get());
         m_connection = std::make_unique<client::ConnectionController>(m_session.get());
         m_missions = std::make_unique<client::MissionController>(m_client.get());
+        m_fleet = std::make_unique<client::VehicleFleet>(m_client.get());
+        sim::SimVciFleetOptions vci;
+        vci.count = 1;
+        vci.firstPort = 0;
+        m_vci = std::make_unique<sim::SimVciFleet>(vci);
+        QString vciError;
+        QVERIFY2(m_vci->start(&vciError), qPrintable(vciError));
         m_engine = std::make_unique<QQmlApplicationEngine>();
         ui::addImportPaths(*m_engine);
         m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())},
                                         {QStringLiteral("connection"), QVariant::fromValue<QObject *>(m_connection.get())},
-                                        {QStringLiteral("missions"), QVariant::fromValue<QObject *>(m_missions.get())}});
+                                        {QStringLiteral("missions"), QVariant::fromValue<QObject *>(m_missions.get())},
+                                        {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(m_fleet.get())}});
         m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
         QVERIFY(!m_engine->rootObjects().isEmpty());
         m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
@@ -171,6 +192,8 @@ private slots:
     void cleanup()
     {
         m_engine.reset();
+        m_fleet.reset();
+        m_vci.reset();
         m_missions.reset();
         m_connection.reset();
         m_client.reset();
@@ -303,6 +326,58 @@ private slots:
         QVERIFY2(values.size() >= 3, qPrintable(QString::number(values.size())));
         QVERIFY(values.last() > values.first());
         QTRY_COMPARE(text("missionMessage"), QStringLiteral("Uploaded to EMU-101."));
+    }
+    void liveTelemetryAndCommands()
+    {
+        logIn(QStringLiteral("admin"));
+        QTRY_COMPARE(m_window->property("currentPage").toInt(), 1);
+        QTest::keyClick(m_window, Qt::Key_3, Qt::ControlModifier);
+        auto *layer = find<ui::VehicleLayer>("vehicleLayer");
+        QTRY_COMPARE_WITH_TIMEOUT(layer->count(), 3, 10000);
+
+        // A VCI vehicle, added by its address, beside the server's.
+        type("vciAddressField", QStringLiteral("tcp://127.0.0.1:%1").arg(m_vci->listeners().front()->port()));
+        click("vciConnectButton");
+        QTRY_COMPARE(layer->count(), 4);
+        QCOMPARE(m_fleet->index(3).data(client::VehicleFleet::ProtocolRole).toString(), QStringLiteral("VCI"));
+        QTRY_COMPARE_WITH_TIMEOUT(m_fleet->index(3).data(client::VehicleFleet::LinkStateRole).toString(), QStringLiteral("Connected"), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!layer->vehiclePosition(3).isNull(), 10000);
+
+        // Choose EMU-101 on the map; its instruments fill in.
+        MapView *map = m_window->property("telemetryPage").value<QObject *>()->property("map").value<MapView *>();
+        QTRY_VERIFY_WITH_TIMEOUT(!layer->vehiclePosition(0).isNull(), 10000);
+        map->setCenter(m_fleet->vehicleAt(0)->position());
+        map->setZoomLevel(17); // EMU-101 on its own under the cursor
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, map->mapToScene(layer->vehiclePosition(0)).toPoint());
+        QTRY_COMPARE(layer->currentIndex(), 0);
+        QTRY_VERIFY(text("value_altitudeAgl") != QStringLiteral("—"));
+        QVERIFY(find("instrument_altitudeAgl")->opacity() > 0.9);
+
+        // Arm asks first; then take off, and the altitude climbs on the instruments and the plot.
+        auto confirmYes = [this] {
+            QObject *dialog = find<QObject>("commandConfirmDialog");
+            QTRY_VERIFY(dialog->property("opened").toBool());
+            QMetaObject::invokeMethod(dialog, "accept");
+        };
+        click("armButton");
+        QObject *dialog = find<QObject>("commandConfirmDialog");
+        QTRY_VERIFY(dialog->property("opened").toBool());
+        QVERIFY(dialog->property("text").toString().contains(QStringLiteral("EMU-101")));
+        QTest::keyClick(m_window, Qt::Key_Escape); // "no": nothing is sent
+        QTRY_VERIFY(!dialog->property("opened").toBool());
+        QVERIFY(!m_fleet->vehicleAt(0)->armed());
+        click("armButton");
+        confirmYes();
+        QTRY_VERIFY_WITH_TIMEOUT(m_fleet->vehicleAt(0)->armed(), 10000);
+        QTRY_VERIFY(text("commandResult").contains(QStringLiteral("done")));
+        QTRY_COMPARE(text("value_armed"), QStringLiteral("ARMED")); // at the vehicle's notify rate
+        click("takeoffButton");
+        confirmYes();
+        QTRY_VERIFY_WITH_TIMEOUT(m_fleet->vehicleAt(0)->altitudeAgl() > 3, 20000);
+        auto *plot = find<ui::TelemetryPlot>("telemetryPlot");
+        QTRY_VERIFY(plot->sampleCount() > 5);
+        QTest::qWait(200);
+        m_window->grabWindow().save(QDir(qEnvironmentVariable("SORTIE_SCREENSHOT_DIR", QStringLiteral(SORTIE_SCREENSHOT_DEFAULT_DIR))).filePath(QStringLiteral("telemetry-live.png")));
     }
 };
 

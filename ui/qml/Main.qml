@@ -10,6 +10,7 @@ ApplicationWindow {
     required property AppSettings appSettings
     property var connection: null
     property var missions: null
+    property var fleet: null
     property string connectionState: connection ? connection.state : "Disconnected"
     property string connectionDetail: !connection ? ""
                                       : connection.detail.length > 0 ? connection.detail
@@ -106,6 +107,7 @@ ApplicationWindow {
         TelemetryPage {
             id: telemetryPage
             objectName: "telemetryPage"
+            fleet: window.fleet
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource

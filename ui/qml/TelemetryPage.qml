@@ -3,14 +3,17 @@ import QtQuick.Controls
 import QtQuick.Layouts
 import Sortie.Ui
 
-// Live telemetry: vehicles on the map, turned to their heading, with trails and homes.
-// `vehicleModel` is any list model with the roles VehicleLayer reads.
+// Live telemetry: every vehicle (HCI and VCI side by side) on the map, turned to its heading,
+// with its trail and home; the chosen one's instruments, plot and command bar.
 Page {
     id: page
     property alias map: pane.map
     property alias vehicleLayer: vehicleLayer
     property alias pane: pane
-    property var vehicleModel: null
+    property var fleet: null
+    property var vehicleModel: fleet
+    readonly property var current: fleet && vehicleLayer.currentIndex >= 0 ? fleet.vehicleAt(vehicleLayer.currentIndex) : null
+    property bool goMode: false
     property DisplayUnits units
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
@@ -20,15 +23,12 @@ Page {
     SplitView {
         anchors.fill: parent
         Pane {
-            SplitView.preferredWidth: 260
+            SplitView.preferredWidth: 250
             SplitView.minimumWidth: 180
+            contentWidth: availableWidth
             ColumnLayout {
                 anchors.fill: parent
-                Label {
-                    text: qsTr("Vehicles")
-                    font.bold: true
-                    font.pixelSize: 16
-                }
+                Label { text: qsTr("Vehicles"); font.bold: true; font.pixelSize: 16 }
                 Label {
                     objectName: "vehicleSummary"
                     visible: vehicleLayer.count === 0
@@ -47,27 +47,108 @@ Page {
                         required property int index
                         required property var model
                         width: ListView.view.width
-                        highlighted: ListView.isCurrentItem
-                        text: model.name !== undefined ? model.name : qsTr("Vehicle %1").arg(index + 1)
+                        highlighted: index === vehicleLayer.currentIndex
+                        text: (model.name !== undefined ? model.name : qsTr("Vehicle %1").arg(index + 1))
+                              + (model.protocol !== undefined ? "  ·  " + model.protocol + "  ·  " + model.linkState : "")
+                        opacity: model.stale === true ? 0.5 : 1
                         onClicked: vehicleLayer.currentIndex = index
                     }
                 }
+                RowLayout {
+                    visible: page.fleet !== null
+                    Layout.fillWidth: true
+                    TextField {
+                        id: vciAddress
+                        objectName: "vciAddressField"
+                        Layout.fillWidth: true
+                        placeholderText: "tcp://host:5760"
+                        selectByMouse: true
+                        ToolTip.visible: hovered
+                        ToolTip.text: qsTr("A vehicle reached directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600")
+                    }
+                    Button {
+                        objectName: "vciConnectButton"
+                        text: qsTr("Add")
+                        enabled: vciAddress.text.length > 0
+                        onClicked: if (page.fleet.addVciVehicle(vciAddress.text)) vciAddress.text = ""
+                    }
+                }
+                Label {
+                    visible: page.fleet !== null && page.fleet.message.length > 0
+                    text: page.fleet ? page.fleet.message : ""
+                    color: "#e53935"
+                    wrapMode: Text.Wrap
+                    Layout.fillWidth: true
+                }
             }
         }
-        MapPane {
-            id: pane
+        ColumnLayout {
             SplitView.fillWidth: true
-            units: page.units
-            mapSource: page.mapSource
-            tileUrlTemplate: page.tileUrlTemplate
-            mbtilesFile: page.mbtilesFile
-            dark: page.dark
-            VehicleLayer {
-                id: vehicleLayer
-                objectName: "vehicleLayer"
-                anchors.fill: parent
-                map: pane.map
-                model: page.vehicleModel
+            spacing: 0
+            MapPane {
+                id: pane
+                Layout.fillWidth: true
+                Layout.fillHeight: true
+                units: page.units
+                mapSource: page.mapSource
+                tileUrlTemplate: page.tileUrlTemplate
+                mbtilesFile: page.mbtilesFile
+                dark: page.dark
+                VehicleLayer {
+                    id: vehicleLayer
+                    objectName: "vehicleLayer"
+                    anchors.fill: parent
+                    map: pane.map
+                    model: page.vehicleModel
+                }
+                Connections {
+                    target: pane.map
+                    function onClicked(coordinate, modifiers) {
+                        if (page.goMode && page.current)
+                            commands.confirm(qsTr("Fly %1 to %2?").arg(page.current.name).arg(page.units.formatCoordinate(coordinate)),
+                                             () => { page.fleet.goTo(vehicleLayer.currentIndex, coordinate.latitude, coordinate.longitude); page.goMode = false })
+                    }
+                }
+            }
+            CommandBar {
+                id: commands
+                Layout.fillWidth: true
+                page: page
+            }
+        }
+        ColumnLayout {
+            SplitView.preferredWidth: 300
+            SplitView.minimumWidth: 220
+            InstrumentPanel {
+                Layout.fillWidth: true
+                vehicle: page.current
+                units: page.units
+            }
+            RowLayout {
+                Layout.fillWidth: true
+                ComboBox {
+                    id: fieldPicker
+                    objectName: "plotFieldPicker"
+                    Layout.fillWidth: true
+                    model: plot.availableFields()
+                    currentIndex: Math.max(0, model.indexOf("altitudeAgl"))
+                }
+                ComboBox {
+                    id: windowPicker
+                    model: [qsTr("1 min"), qsTr("5 min"), qsTr("30 min")]
+                    currentIndex: 1
+                }
+            }
+            TelemetryPlot {
+                id: plot
+                objectName: "telemetryPlot"
+                Layout.fillWidth: true
+                Layout.fillHeight: true
+                Layout.minimumHeight: 160
+                vehicle: page.current
+                fields: [fieldPicker.currentText]
+                windowSeconds: [60, 300, 1800][windowPicker.currentIndex]
+                textColor: page.palette.windowText
             }
         }
     }
