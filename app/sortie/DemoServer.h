@@ -1,0 +1,36 @@
+#pragma once
+
+#include <QString>
+#include <QStringList>
+
+#include <memory>
+
+namespace sortie::sim {
+class HciServer;
+class SimVciFleet;
+class SimWorld;
+} // namespace sortie::sim
+
+namespace sortie::app {
+
+// --demo: the simulated UgCS server (with its vehicles) and a simulated VCI vehicle running inside
+// the client on free loopback ports, so the first launch has something real to talk to.
+class DemoServer
+{
+public:
+    DemoServer();
+    ~DemoServer();
+
+    bool start(QString *error);
+    QString address() const;       // "127.0.0.1:<port>"
+    QStringList vciAddresses() const; // "tcp://127.0.0.1:<port>", one per VCI vehicle
+    static QString user() { return QStringLiteral("admin"); }
+    static QString password() { return QStringLiteral("admin"); }
+
+private:
+    std::unique_ptr<sim::SimWorld> m_world;
+    std::unique_ptr<sim::HciServer> m_server;
+    std::unique_ptr<sim::SimVciFleet> m_vci;
+};
+
+} // namespace sortie::app

@@ -1,0 +1,111 @@
+#include "LaunchOptions.h"
+
+#include <QCommandLineParser>
+#include <QCoreApplication>
+#include <QUrl>
+#include <QUrlQuery>
+
+namespace sortie::app {
+
+
+std::variant<VciEndpoint, QString> VciEndpoint::parse(const QString &text)
+{
+    const QUrl url(text.trimmed(), QUrl::StrictMode);
+    if (!url.isValid() || url.scheme().isEmpty())
+        return QStringLiteral("\"%1\" is not a VCI address (expected tcp://host:port or serial:///dev/ttyX?baud=57600)")
+            .arg(text);
+    VciEndpoint endpoint;
+    if (url.scheme() == QLatin1String("tcp")) {
+        endpoint.kind = Kind::Tcp;
+        endpoint.host = url.host();
+        if (endpoint.host.isEmpty())
+            return QStringLiteral("\"%1\" has no host (expected tcp://host:port)").arg(text);
+        if (url.port() <= 0)
+            return QStringLiteral("\"%1\" has no port (expected tcp://host:port)").arg(text);
+        endpoint.port = quint16(url.port());
+        return endpoint;
+    }
+    if (url.scheme() == QLatin1String("serial")) {
+        endpoint.kind = Kind::Serial;
+        endpoint.device = url.path();
+        if (endpoint.device.isEmpty() || endpoint.device == QLatin1String("/"))
+            return QStringLiteral("\"%1\" names no serial device (expected serial:///dev/ttyUSB0?baud=57600)").arg(text);
+        const QUrlQuery query(url);
+        for (const auto &item : query.queryItems()) {
+            if (item.first != QLatin1String("baud"))
+                return QStringLiteral("\"%1\": unknown serial option \"%2\" (only baud is known)").arg(text, item.first);
+        }
+        if (query.hasQueryItem(QStringLiteral("baud"))) {
+            bool ok = false;
+            const int baud = query.queryItemValue(QStringLiteral("baud")).toInt(&ok);
+            if (!ok || baud <= 0)
+                return QStringLiteral("\"%1\": the baud rate must be a positive number").arg(text);
+            endpoint.baud = baud;
+        }
+        return endpoint;
+    }
+    return QStringLiteral("\"%1\": VCI addresses start with tcp:// or serial://").arg(text);
+}
+
+QString VciEndpoint::toString() const
+{
+    if (kind == Kind::Tcp)
+        return QStringLiteral("tcp://%1:%2").arg(host.contains(QLatin1Char(':')) ? QStringLiteral("[%1]").arg(host) : host)
+            .arg(port);
+    return QStringLiteral("serial://%1?baud=%2").arg(device).arg(baud);
+}
+
+std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arguments)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        QCoreApplication::translate("sortie", "Sortie: mission planning and live telemetry for UgCS servers and VCI vehicles."));
+    const QCommandLineOption help = parser.addHelpOption();
+    const QCommandLineOption version = parser.addVersionOption();
+    const QCommandLineOption demo(QStringLiteral("demo"),
+                                  QCoreApplication::translate("sortie", "Start the built-in simulator on this computer and connect to it."));
+    const QCommandLineOption server(QStringLiteral("server"),
+                                    QCoreApplication::translate("sortie", "UgCS server to connect to."), QStringLiteral("host:port"));
+    const QCommandLineOption user(QStringLiteral("user"), QCoreApplication::translate("sortie", "User name to log in with."),
+                                  QStringLiteral("name"));
+    const QCommandLineOption vci(QStringLiteral("vci"),
+                                 QCoreApplication::translate("sortie", "Connect a vehicle directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600."),
+                                 QStringLiteral("address"));
+    parser.addOptions({demo, server, user, vci});
+
+    if (!parser.parse(arguments))
+        return parser.errorText();
+    if (!parser.positionalArguments().isEmpty())
+        return QStringLiteral("unexpected argument \"%1\" (see --help)").arg(parser.positionalArguments().first());
+
+    LaunchOptions options;
+    if (parser.isSet(help) || parser.isSet(QStringLiteral("help-all"))) {
+        options.exitNow = true;
+        options.output = parser.helpText();
+        return options;
+    }
+    if (parser.isSet(version)) {
+        options.exitNow = true;
+        options.output = QStringLiteral("%1 %2\n").arg(QCoreApplication::applicationName(), QCoreApplication::applicationVersion());
+        return options;
+    }
+    options.demo = parser.isSet(demo);
+    if (parser.isSet(server)) {
+        auto parsed = ServerAddress::parse(parser.value(server));
+        if (auto *error = std::get_if<QString>(&parsed))
+            return QStringLiteral("--server: %1").arg(*error);
+        options.server = std::get<ServerAddress>(parsed);
+    }
+    if (options.demo && options.server)
+        return QStringLiteral("--demo starts its own server: leave out --server");
+    options.user = parser.value(user);
+    if (parser.isSet(vci)) {
+        auto parsed = VciEndpoint::parse(parser.value(vci));
+        if (auto *error = std::get_if<QString>(&parsed))
+            return QStringLiteral("--vci: %1").arg(*error);
+        options.vci = std::get<VciEndpoint>(parsed);
+    }
+    return options;
+}
+
+} // namespace sortie::app

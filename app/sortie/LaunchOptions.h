@@ -1,0 +1,45 @@
+#pragma once
+
+#include "ServerAddress.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+#include <variant>
+
+namespace sortie::app {
+
+using client::ServerAddress;
+
+// Where a VCI vehicle is: tcp://host:port or serial:///dev/ttyX?baud=57600.
+struct VciEndpoint
+{
+    enum class Kind { Tcp, Serial };
+    Kind kind = Kind::Tcp;
+    QString host;       // Tcp
+    quint16 port = 0;   // Tcp
+    QString device;     // Serial
+    qint32 baud = 57600; // Serial
+
+    static std::variant<VciEndpoint, QString> parse(const QString &text);
+    QString toString() const;
+};
+
+// What the command line asked for. --help and --version are answered by parse() through
+// `output` (the text to print) with `exitNow` set.
+struct LaunchOptions
+{
+    bool demo = false;
+    std::optional<ServerAddress> server;
+    QString user;
+    std::optional<VciEndpoint> vci;
+
+    bool exitNow = false;
+    QString output;
+
+    // Errors come back as one line an operator understands.
+    static std::variant<LaunchOptions, QString> parse(const QStringList &arguments);
+};
+
+} // namespace sortie::app

@@ -1,0 +1,114 @@
+// sortie: wires the pieces together. Parses the command line, restores the settings, loads the
+// Sortie.Ui main window.
+#include "AppSettings.h"
+#include "ConnectionController.h"
+#include "DemoServer.h"
+#include "HciClient.h"
+#include "HciSession.h"
+#include "MissionController.h"
+#include "VehicleFleet.h"
+#include "LaunchOptions.h"
+#include "SortieUi.h"
+#include "WindowGeometry.h"
+
+#include <QGuiApplication>
+#include <QIcon>
+#include <QQmlApplicationEngine>
+#include <QQuickStyle>
+#include <QQuickWindow>
+#include <QSettings>
+#include <QtQml/qqmlextensionplugin.h>
+
+#include <cstdio>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+namespace {
+
+void describeApplication()
+{
+    QCoreApplication::setOrganizationName(QStringLiteral("Sortie"));
+    QCoreApplication::setApplicationName(QStringLiteral("sortie"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(SORTIE_VERSION));
+}
+
+} // namespace
+
+int main(int argc, char *argv[])
+{
+    // The command line is read before any window system is touched, so --help, --version and
+    // a mistyped option work without a display.
+    std::variant<sortie::app::LaunchOptions, QString> parsed;
+    {
+        QCoreApplication reader(argc, argv);
+        describeApplication();
+        parsed = sortie::app::LaunchOptions::parse(QCoreApplication::arguments());
+    }
+    if (const auto *error = std::get_if<QString>(&parsed)) {
+        std::fprintf(stderr, "sortie: %s\n", qPrintable(*error));
+        return 2;
+    }
+    const auto options = std::get<sortie::app::LaunchOptions>(parsed);
+    if (options.exitNow) {
+        std::fputs(qPrintable(options.output), stdout);
+        return 0;
+    }
+
+    QGuiApplication app(argc, argv);
+    describeApplication();
+    QGuiApplication::setApplicationDisplayName(QStringLiteral("Sortie"));
+    QGuiApplication::setDesktopFileName(QStringLiteral("sortie"));
+    QGuiApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("sortie")));
+
+    // A fixed style makes every machine (and the offscreen tests) draw the same controls;
+    // Fusion takes its colours from the system palette, light or dark.
+    QQuickStyle::setStyle(QStringLiteral("Fusion"));
+
+    QSettings storage;
+    sortie::ui::AppSettings settings(&storage);
+    if (options.server)
+        settings.setLastServer(options.server->toString());
+    if (!options.user.isEmpty())
+        settings.setLastUser(options.user);
+
+    sortie::hci::HciSession session;
+    sortie::hci::HciClient hciClient(&session);
+    sortie::client::ConnectionController connection(&session);
+    sortie::client::MissionController missions(&hciClient);
+    sortie::client::VehicleFleet fleet(&hciClient);
+    sortie::app::DemoServer demo;
+    if (options.demo) {
+        QString error;
+        if (!demo.start(&error)) {
+            std::fprintf(stderr, "sortie: the demo simulator could not start: %s\n", qPrintable(error));
+            return 1;
+        }
+    }
+
+    QQmlApplicationEngine engine;
+    sortie::ui::addImportPaths(engine);
+    engine.setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(&settings)},
+                                 {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&connection)},
+                                 {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&missions)},
+                                 {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&fleet)}});
+    engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));
+    if (engine.rootObjects().isEmpty())
+        return 1;
+    auto *window = qobject_cast<QQuickWindow *>(engine.rootObjects().constFirst());
+    if (!window)
+        return 1;
+    sortie::app::restoreWindowGeometry(*window, settings);
+    QObject::connect(&app, &QGuiApplication::aboutToQuit, &app, [window, &settings, &session] {
+        sortie::app::saveWindowGeometry(*window, settings);
+        session.close();
+    });
+    window->show();
+    if (options.demo) {
+        connection.connectToServer(demo.address(), sortie::app::DemoServer::user(), sortie::app::DemoServer::password());
+        for (const QString &vehicle : demo.vciAddresses())
+            fleet.addVciVehicle(vehicle);
+    }
+    if (options.vci)
+        fleet.addVciVehicle(options.vci->toString());
+    return QGuiApplication::exec();
+}

@@ -1,0 +1,315 @@
+#include "MissionController.h"
+
+#include "HciClient.h"
+#include "HciReply.h"
+#include "HciRouteMapper.h"
+#include "HciSession.h"
+#include "HciSubscription.h"
+#include "Messages.pb.h"
+
+namespace sortie::client {
+
+using namespace sortie::mission;
+namespace pb = com::ugcs::ucs::proto;
+using hci::HciObjectType;
+using hci::HciReply;
+
+MissionController::MissionController(hci::HciClient *client, QObject *parent)
+    : QObject(parent)
+    , m_client(client)
+{
+    hci::HciSession *session = client->session();
+    connect(session, &hci::HciSession::ready, this, &MissionController::refresh);
+    m_routeEvents = client->subscribeObjectChanges(HciObjectType::Route);
+    connect(m_routeEvents, &hci::HciSubscription::received, this, &MissionController::routeEvent);
+    connect(m_document.undoStack(), &QUndoStack::indexChanged, this, &MissionController::routeChanged);
+}
+
+MissionController::~MissionController() = default;
+
+int MissionController::routeId() const
+{
+    const auto &origin = m_document.route().origin;
+    return origin && origin.message->has_id() ? origin.message->id() : -1;
+}
+
+template<typename Done>
+void MissionController::request(HciReply *reply, const QString &activity, Done done)
+{
+    setActivity(activity);
+    setProgress(0, 0);
+    connect(reply, &HciReply::progress, this, [this](const QString &, int value, int maximum) { setProgress(value, maximum); });
+    connect(reply, &HciReply::finished, this, [this, reply, done] {
+        setActivity({});
+        done(reply);
+    });
+}
+
+void MissionController::refresh()
+{
+    if (!m_client || !m_client->session()->isReady())
+        return;
+    request(m_client->listObjects(HciObjectType::Route), tr("Reading the server's routes"), [this](HciReply *reply) {
+        if (!reply->isOk())
+            return setMessage(tr("The server's routes could not be read: %1").arg(reply->error().message()));
+        std::vector<ServerObjectListModel::Entry> entries;
+        for (const pb::DomainObjectWrapper &object : reply->response<pb::GetObjectListResponse>().objects()) {
+            const pb::Route &route = object.route();
+            const QString mission = QString::fromStdString(route.mission().name());
+            entries.push_back({route.id(), QString::fromStdString(route.name()),
+                               tr("%1%n segment(s)", nullptr, route.segments_size())
+                                   .arg(mission.isEmpty() ? QString() : mission + QStringLiteral(" · "))});
+        }
+        std::sort(entries.begin(), entries.end(), [](const auto &a, const auto &b) { return a.name < b.name; });
+        m_routes.setEntries(std::move(entries));
+    });
+    request(m_client->listObjects(HciObjectType::Vehicle), tr("Reading the server's vehicles"), [this](HciReply *reply) {
+        if (!reply->isOk())
+            return;
+        std::vector<ServerObjectListModel::Entry> entries;
+        m_vehicleObjects.clear();
+        for (const pb::DomainObjectWrapper &object : reply->response<pb::GetObjectListResponse>().objects()) {
+            const pb::Vehicle &vehicle = object.vehicle();
+            entries.push_back({vehicle.id(), QString::fromStdString(vehicle.name()), QString::fromStdString(vehicle.serialnumber())});
+            m_vehicleObjects[vehicle.id()] = std::make_unique<pb::Vehicle>(vehicle);
+        }
+        m_vehicles.setEntries(std::move(entries));
+    });
+}
+
+void MissionController::openRoute(int routeId)
+{
+    if (!m_client)
+        return;
+    request(m_client->getObject(HciObjectType::Route, routeId), tr("Opening the route"), [this](HciReply *reply) {
+        if (!reply->isOk())
+            return setMessage(tr("The route could not be opened: %1").arg(reply->error().message()));
+        auto imported = routeFromHci(reply->response<pb::GetObjectResponse>().object().route());
+        if (!imported)
+            return setMessage(tr("The route cannot be edited here: %1").arg(imported.error().toString()));
+        setConflict(nullptr, {});
+        m_processed.setPlan({});
+        m_processedRoute.reset();
+        m_document.load(imported->route);
+        QString text = tr("Opened %1 (version %2).").arg(routeName()).arg(reply->response<pb::GetObjectResponse>().object().route().version());
+        if (!imported->notices.isEmpty())
+            text += QLatin1Char(' ') + imported->notices.join(QLatin1Char(' '));
+        setMessage(text);
+        emit routeChanged();
+        emit routeOpened();
+    });
+}
+
+void MissionController::save()
+{
+    if (!m_client || !m_client->session()->isReady())
+        return setMessage(tr("Not connected: your edits are kept; save again when the connection is back."));
+    if (isBusy())
+        return setMessage(tr("Wait until %1 is done.").arg(m_activity.toLower()));
+    const int id = routeId();
+    if (id < 0)
+        return writeRoute(routeToHci(m_document.route()), false);
+    request(m_client->acquireLock(HciObjectType::Route, id), tr("Locking the route"), [this, id](HciReply *reply) {
+        if (!reply->isOk())
+            return setMessage(tr("Not saved: the route is locked (%1).").arg(reply->error().message()));
+        if (id != routeId())
+            return releaseRouteLock(id);
+        writeRoute(routeToHci(m_document.route()), true);
+    });
+}
+
+void MissionController::writeRoute(const pb::Route &route, bool locked)
+{
+    const int id = route.has_id() ? route.id() : -1;
+    m_saving = true;
+    request(m_client->createOrUpdate(route), tr("Saving"), [this, id, locked](HciReply *reply) {
+        m_saving = false;
+        if (locked)
+            releaseRouteLock(id);
+        if (!reply->isOk()) {
+            if (id < 0 || reply->error().kind() != hci::HciError::Kind::Server)
+                return setMessage(tr("Not saved: %1").arg(reply->error().message()));
+            // Refused: find out whether someone else saved a newer version meanwhile.
+            const QString refusal = reply->error().message();
+            request(m_client->getObject(HciObjectType::Route, id), tr("Reading the server's copy"), [this, refusal](HciReply *check) {
+                const pb::Route &theirs = check->response<pb::GetObjectResponse>().object().route();
+                const auto &origin = m_document.route().origin;
+                if (check->isOk() && origin && theirs.version() > origin.message->version())
+                    return setConflict(&theirs, tr("Someone else saved this route on the server (version %1) after you opened it (version %2).")
+                                                    .arg(theirs.version()).arg(origin.message->version()));
+                setMessage(tr("Not saved: %1").arg(refusal));
+            });
+            return;
+        }
+        const pb::Route &stored = reply->response<pb::CreateOrUpdateObjectResponse>().object().route();
+        auto imported = routeFromHci(stored);
+        if (!imported)
+            return setMessage(tr("Saved, but the server's answer cannot be read back: %1").arg(imported.error().toString()));
+        m_document.load(imported->route);
+        setConflict(nullptr, {});
+        setMessage(tr("Saved %1 (version %2).").arg(routeName()).arg(stored.version()));
+        emit routeChanged();
+        emit saved(stored.version());
+        refresh();
+    });
+}
+
+void MissionController::keepMine()
+{
+    if (!m_conflict)
+        return;
+    const int theirVersion = m_conflict->version();
+    const int id = routeId();
+    setConflict(nullptr, {});
+    request(m_client->acquireLock(HciObjectType::Route, id), tr("Locking the route"), [this, id, theirVersion](HciReply *reply) {
+        if (!reply->isOk())
+            return setMessage(tr("Not saved: the route is locked (%1).").arg(reply->error().message()));
+        pb::Route mine = routeToHci(m_document.route());
+        mine.set_version(theirVersion); // ours replaces theirs, knowingly
+        writeRoute(mine, true);
+    });
+}
+
+void MissionController::takeTheirs()
+{
+    if (!m_conflict)
+        return;
+    auto imported = routeFromHci(*m_conflict);
+    setConflict(nullptr, {});
+    if (!imported)
+        return setMessage(tr("The server's copy cannot be edited here: %1").arg(imported.error().toString()));
+    m_document.load(imported->route);
+    setMessage(tr("Your edits were dropped; this is the server's copy."));
+    emit routeChanged();
+}
+
+void MissionController::releaseRouteLock(int routeId)
+{
+    if (m_client && routeId >= 0)
+        m_client->releaseLock(HciObjectType::Route, routeId);
+}
+
+void MissionController::routeEvent(const pb::EventWrapper &event)
+{
+    const pb::ObjectModificationEvent &change = event.objectmodificationevent();
+    refresh();
+    const auto &origin = m_document.route().origin;
+    if (m_saving || !origin || change.objectid() != routeId())
+        return;
+    if (change.modificationtype() == pb::MT_DELETE) {
+        setMessage(tr("This route was deleted on the server. Your copy stays open."));
+        return;
+    }
+    const pb::Route &theirs = change.object().route();
+    if (!change.object().has_route() || theirs.version() <= origin.message->version())
+        return;
+    if (!m_document.isModified()) {
+        // Nothing of ours to lose: follow the server.
+        if (auto imported = routeFromHci(theirs)) {
+            m_document.load(imported->route);
+            setMessage(tr("Updated from the server (version %1).").arg(theirs.version()));
+            emit routeChanged();
+        }
+        return;
+    }
+    setConflict(&theirs, tr("Someone else saved this route on the server (version %1) while you were editing it.")
+                             .arg(theirs.version()));
+}
+
+void MissionController::process()
+{
+    processThen({});
+}
+
+void MissionController::processThen(std::function<void()> next)
+{
+    if (!m_client || !m_client->session()->isReady())
+        return setMessage(tr("Not connected: the server processes routes."));
+    const int undoIndex = m_document.undoStack()->index();
+    request(m_client->processRoute(routeToHci(m_document.route())), tr("Processing on the server"),
+            [this, undoIndex, next](HciReply *reply) {
+        if (!reply->isOk())
+            return setMessage(tr("Processing failed: %1").arg(reply->error().message()));
+        const pb::ProcessedRoute &processed = reply->response<pb::ProcessRouteResponse>().processedroute();
+        ProcessedPlan plan = processedPlanFromHci(processed, &m_document.route());
+        setServerMessages(plan);
+        m_processedRoute = std::make_unique<pb::ProcessedRoute>(processed);
+        m_processedAt = undoIndex;
+        const bool flyable = plan.flyable();
+        m_processed.setPlan(std::move(plan));
+        setMessage(flyable ? tr("Processed: %1 waypoints to fly.").arg(m_processed.count())
+                           : tr("The server found problems in the route: see its messages."));
+        if (next)
+            next();
+    });
+}
+
+void MissionController::upload(int vehicleId)
+{
+    if (!m_vehicleObjects.count(vehicleId))
+        return setMessage(tr("Choose a vehicle to upload to."));
+    if (m_processedRoute && m_processedAt == m_document.undoStack()->index())
+        return startUpload(vehicleId);
+    // Process what is on screen first, then upload that.
+    processThen([this, vehicleId] { startUpload(vehicleId); });
+}
+
+void MissionController::startUpload(int vehicleId)
+{
+    if (!m_processed.flyable())
+        return setMessage(tr("Not uploaded: the server found problems in the route."));
+    const pb::Vehicle vehicle = *m_vehicleObjects.at(vehicleId);
+    const QString name = QString::fromStdString(vehicle.name());
+    request(m_client->acquireLock(HciObjectType::Vehicle, vehicleId), tr("Locking %1").arg(name), [this, vehicle, name](HciReply *lock) {
+        if (!lock->isOk())
+            return setMessage(tr("Not uploaded: %1 is locked (%2).").arg(name, lock->error().message()));
+        request(m_client->uploadRoute(vehicle, *m_processedRoute), tr("Uploading to %1").arg(name), [this, vehicle, name](HciReply *reply) {
+            m_client->releaseLock(HciObjectType::Vehicle, vehicle.id());
+            if (!reply->isOk())
+                return setMessage(tr("Upload to %1 failed: %2").arg(name, reply->error().message()));
+            setMessage(tr("Uploaded to %1.").arg(name));
+            emit uploaded(vehicle.id());
+        });
+    });
+}
+
+void MissionController::setServerMessages(const ProcessedPlan &plan)
+{
+    QStringList messages;
+    for (size_t i = 0; i < plan.segments.size(); ++i) {
+        for (const ProcessedMessage &m : plan.segments[i].messages)
+            messages.append(tr("Segment %1: %2%3").arg(i + 1).arg(m.error ? tr("error: ") : QString(), m.text));
+    }
+    m_serverMessages = messages;
+    emit serverMessagesChanged();
+}
+
+void MissionController::setActivity(const QString &activity)
+{
+    if (activity == m_activity)
+        return;
+    m_activity = activity;
+    emit activityChanged();
+}
+
+void MissionController::setProgress(int value, int maximum)
+{
+    m_progressValue = value;
+    m_progressMaximum = maximum;
+    emit progressChanged();
+}
+
+void MissionController::setMessage(const QString &message)
+{
+    m_message = message;
+    emit messageChanged();
+}
+
+void MissionController::setConflict(const pb::Route *theirs, const QString &text)
+{
+    m_conflict = theirs ? std::make_unique<pb::Route>(*theirs) : nullptr;
+    m_conflictText = text;
+    emit conflictChanged();
+}
+
+} // namespace sortie::client

@@ -1,0 +1,121 @@
+#pragma once
+
+#include "HciProto.h"
+#include "ProcessedPlanModel.h"
+#include "RouteDocument.h"
+#include "ServerObjectListModel.h"
+
+#include <QObject>
+#include <QPointer>
+
+#include <functional>
+#include <map>
+#include <memory>
+
+namespace sortie::hci {
+class HciClient;
+class HciReply;
+class HciSubscription;
+} // namespace sortie::hci
+
+namespace sortie::client {
+
+// Routes on the server: the list to pick from, the one open for editing (a RouteDocument), saving
+// it under a lock, noticing when someone else changed it meanwhile (and offering a clear choice:
+// keep ours or take theirs), processing it on the server and uploading it to a vehicle with
+// progress. Edits stay in the document whatever the connection does.
+class MissionController : public QObject
+{
+    Q_OBJECT
+    Q_PROPERTY(sortie::client::ServerObjectListModel *routes READ routes CONSTANT)
+    Q_PROPERTY(sortie::client::ServerObjectListModel *vehicles READ vehicles CONSTANT)
+    Q_PROPERTY(sortie::client::RouteDocument *document READ document CONSTANT)
+    Q_PROPERTY(sortie::mission::ProcessedPlanModel *processed READ processed CONSTANT)
+    Q_PROPERTY(int routeId READ routeId NOTIFY routeChanged)
+    Q_PROPERTY(QString routeName READ routeName NOTIFY routeChanged)
+    Q_PROPERTY(bool conflict READ hasConflict NOTIFY conflictChanged)
+    Q_PROPERTY(QString conflictText READ conflictText NOTIFY conflictChanged)
+    Q_PROPERTY(bool busy READ isBusy NOTIFY activityChanged)
+    Q_PROPERTY(QString activity READ activity NOTIFY activityChanged)
+    Q_PROPERTY(int progressValue READ progressValue NOTIFY progressChanged)
+    Q_PROPERTY(int progressMaximum READ progressMaximum NOTIFY progressChanged)
+    Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+    Q_PROPERTY(QStringList serverMessages READ serverMessages NOTIFY serverMessagesChanged)
+
+public:
+    explicit MissionController(hci::HciClient *client, QObject *parent = nullptr);
+    ~MissionController() override;
+
+    ServerObjectListModel *routes() { return &m_routes; }
+    ServerObjectListModel *vehicles() { return &m_vehicles; }
+    RouteDocument *document() { return &m_document; }
+    mission::ProcessedPlanModel *processed() { return &m_processed; }
+    int routeId() const;
+    QString routeName() const { return m_document.route().settings.name; }
+    bool hasConflict() const { return bool(m_conflict); }
+    QString conflictText() const { return m_conflictText; }
+    bool isBusy() const { return !m_activity.isEmpty(); }
+    QString activity() const { return m_activity; }
+    int progressValue() const { return m_progressValue; }
+    int progressMaximum() const { return m_progressMaximum; }
+    QString message() const { return m_message; }
+    QStringList serverMessages() const { return m_serverMessages; }
+
+    // Reads the server's routes and vehicles (done by itself whenever the session becomes ready).
+    Q_INVOKABLE void refresh();
+    Q_INVOKABLE void openRoute(int routeId);
+    // Saves under the route's lock. When the server's copy changed since it was opened, nothing
+    // is overwritten: `conflict` says so and keepMine() or takeTheirs() decides.
+    Q_INVOKABLE void save();
+    Q_INVOKABLE void keepMine();
+    Q_INVOKABLE void takeTheirs();
+    Q_INVOKABLE void process();
+    // Processes if needed, then uploads under the vehicle's lock, with progress.
+    Q_INVOKABLE void upload(int vehicleId);
+
+signals:
+    void routeChanged();
+    // A route was opened from the server (not saved, not edited): views frame it.
+    void routeOpened();
+    void conflictChanged();
+    void activityChanged();
+    void progressChanged();
+    void messageChanged();
+    void serverMessagesChanged();
+    void saved(int version);
+    void uploaded(int vehicleId);
+
+private:
+    template<typename Done>
+    void request(hci::HciReply *reply, const QString &activity, Done done);
+    void setActivity(const QString &activity);
+    void setProgress(int value, int maximum);
+    void setMessage(const QString &message);
+    void setConflict(const com::ugcs::ucs::proto::Route *theirs, const QString &text);
+    void writeRoute(const com::ugcs::ucs::proto::Route &route, bool locked);
+    void releaseRouteLock(int routeId);
+    void routeEvent(const com::ugcs::ucs::proto::EventWrapper &event);
+    void startUpload(int vehicleId);
+    void processThen(std::function<void()> next);
+    void setServerMessages(const mission::ProcessedPlan &plan);
+
+    QPointer<hci::HciClient> m_client;
+    ServerObjectListModel m_routes;
+    ServerObjectListModel m_vehicles;
+    std::map<int, std::unique_ptr<com::ugcs::ucs::proto::Vehicle>> m_vehicleObjects;
+    RouteDocument m_document;
+    mission::ProcessedPlanModel m_processed;
+    std::unique_ptr<com::ugcs::ucs::proto::ProcessedRoute> m_processedRoute;
+    int m_processedAt = -1; // undo index the processed plan belongs to
+    std::unique_ptr<com::ugcs::ucs::proto::Route> m_conflict; // the server's copy, when it differs
+    QString m_conflictText;
+    QString m_activity;
+    int m_progressValue = 0;
+    int m_progressMaximum = 0;
+    QString m_message;
+    QStringList m_serverMessages;
+    hci::HciSubscription *m_routeEvents = nullptr;
+    bool m_saving = false; // our own save's change event is not someone else's
+};
+
+} // namespace sortie::client

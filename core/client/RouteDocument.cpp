@@ -1,0 +1,280 @@
+#include "RouteDocument.h"
+
+#include "AreaScanPlanner.h"
+#include "MissionFiles.h"
+
+#include <QFileInfo>
+#include <QGeoCoordinate>
+
+namespace sortie::client {
+
+using namespace sortie::mission;
+
+RouteDocument::RouteDocument(QObject *parent)
+    : QObject(parent)
+    , m_editor(&m_model, &m_undo)
+    , m_selection(&m_model)
+    , m_analyzer(&m_model)
+{
+    m_model.setUndoStack(&m_undo);
+    connect(&m_undo, &QUndoStack::cleanChanged, this, &RouteDocument::modifiedChanged);
+    connect(&m_undo, &QUndoStack::indexChanged, this, &RouteDocument::undoChanged);
+    connect(&m_undo, &QUndoStack::canUndoChanged, this, &RouteDocument::undoChanged);
+    connect(&m_undo, &QUndoStack::canRedoChanged, this, &RouteDocument::undoChanged);
+    connect(&m_selection, &QItemSelectionModel::selectionChanged, this, &RouteDocument::selectedRowsChanged);
+    connect(&m_model, &QAbstractItemModel::modelReset, this, &RouteDocument::selectedRowsChanged);
+    connect(&m_selection, &QItemSelectionModel::currentChanged, this, &RouteDocument::currentChanged);
+    connect(&m_model, &RouteModel::routeEdited, this, &RouteDocument::currentChanged);
+}
+
+int RouteDocument::currentRow() const
+{
+    const QModelIndex current = m_selection.currentIndex();
+    return current.isValid() && current.row() < m_model.count() ? current.row() : -1;
+}
+
+namespace {
+
+const AreaScan *scanAt(const RouteModel &model, int row)
+{
+    return row >= 0 && row < model.count() ? std::get_if<AreaScan>(&model.segment(row)) : nullptr;
+}
+
+QVariantList coordinates(const std::vector<GeoPoint> &points)
+{
+    QVariantList list;
+    for (const GeoPoint &p : points)
+        list.append(QVariant::fromValue(QGeoCoordinate(p.latitude, p.longitude)));
+    return list;
+}
+
+} // namespace
+
+QVariantList RouteDocument::scanPolygon() const
+{
+    const AreaScan *scan = scanAt(m_model, currentRow());
+    return scan ? coordinates(scan->polygon) : QVariantList();
+}
+
+QVariantList RouteDocument::scanPath() const
+{
+    const AreaScan *scan = scanAt(m_model, currentRow());
+    if (!scan)
+        return {};
+    const AreaScanOutcome outcome = planAreaScan(*scan);
+    return outcome.ok() ? coordinates(outcome.plan->path) : QVariantList();
+}
+
+QVariantMap RouteDocument::scanParameters() const
+{
+    const int row = currentRow();
+    return scanAt(m_model, row) ? m_model.index(row).data(RouteModel::ScanParametersRole).toMap() : QVariantMap();
+}
+
+QString RouteDocument::scanProblem() const
+{
+    const AreaScan *scan = scanAt(m_model, currentRow());
+    return scan ? planAreaScan(*scan).message : QString();
+}
+
+int RouteDocument::addAreaScan(const QVariantList &polygon)
+{
+    QVariantList vertices;
+    for (const QVariant &v : polygon) {
+        if (v.canConvert<QGeoCoordinate>() && v.metaType() == QMetaType::fromType<QGeoCoordinate>()) {
+            const QGeoCoordinate c = v.value<QGeoCoordinate>();
+            vertices.append(QVariantMap{{QStringLiteral("latitude"), c.latitude()}, {QStringLiteral("longitude"), c.longitude()}});
+        } else {
+            vertices.append(v);
+        }
+    }
+    const int row = m_editor.addAreaScan(vertices);
+    if (row < 0)
+        setMessage(tr("An area scan needs at least three corners that enclose an area."));
+    else
+        selectRows({row});
+    return row;
+}
+
+bool RouteDocument::setScanParameters(int row, const QVariantMap &parameters)
+{
+    const AreaScan *scan = scanAt(m_model, row);
+    if (!scan)
+        return false;
+    AreaScanParameters p = scan->parameters;
+    auto number = [&](const char *key, double &field) {
+        const QVariant v = parameters.value(QLatin1String(key));
+        bool ok = false;
+        const double d = v.toDouble(&ok);
+        if (v.isValid() && ok)
+            field = d;
+    };
+    number("altitude", p.altitude);
+    number("frontOverlapPercent", p.frontOverlapPercent);
+    number("sideOverlapPercent", p.sideOverlapPercent);
+    number("directionDeg", p.directionDeg);
+    number("turnaroundMeters", p.turnaroundMeters);
+    number("speed", p.speed);
+    number("groundSampleDistanceCm", p.groundSampleDistanceCm);
+    number("sensorWidthMm", p.camera.sensorWidthMm);
+    number("sensorHeightMm", p.camera.sensorHeightMm);
+    number("focalLengthMm", p.camera.focalLengthMm);
+    if (parameters.contains(QStringLiteral("imageWidthPx")))
+        p.camera.imageWidthPx = parameters.value(QStringLiteral("imageWidthPx")).toInt();
+    if (parameters.contains(QStringLiteral("imageHeightPx")))
+        p.camera.imageHeightPx = parameters.value(QStringLiteral("imageHeightPx")).toInt();
+    if (parameters.contains(QStringLiteral("cameraName")))
+        p.camera.name = parameters.value(QStringLiteral("cameraName")).toString();
+    if (parameters.contains(QStringLiteral("byGroundSampleDistance")))
+        p.heightMode = parameters.value(QStringLiteral("byGroundSampleDistance")).toBool() ? ScanHeightMode::GroundSampleDistance
+                                                                                         : ScanHeightMode::Altitude;
+    if (p.frontOverlapPercent < 0 || p.frontOverlapPercent >= 100 || p.sideOverlapPercent < 0 || p.sideOverlapPercent >= 100) {
+        setMessage(tr("Overlaps are percentages from 0 to below 100."));
+        return false;
+    }
+    syncDerivedFields(p);
+    m_editor.setScanParameters(row, p);
+    return true;
+}
+
+QList<int> RouteDocument::selectedRows() const
+{
+    QList<int> rows;
+    for (const QModelIndex &index : m_selection.selectedRows())
+        rows.append(index.row());
+    std::sort(rows.begin(), rows.end());
+    return rows;
+}
+
+void RouteDocument::load(Route route)
+{
+    m_selection.clear();
+    m_model.resetRoute(std::move(route));
+    m_undo.clear();
+    m_undo.setClean();
+    m_analyzer.recomputeNow();
+    emit modifiedChanged();
+    emit undoChanged();
+}
+
+int RouteDocument::addWaypoint(double latitude, double longitude)
+{
+    const int row = m_editor.addWaypoint(latitude, longitude);
+    if (row >= 0)
+        selectRows({row});
+    return row;
+}
+
+int RouteDocument::insertWaypoint(int leg, double latitude, double longitude)
+{
+    if (leg < 0 || leg + 1 > m_model.count())
+        return -1;
+    const int row = m_editor.insertWaypoint(leg + 1, latitude, longitude);
+    if (row >= 0)
+        selectRows({row});
+    return row;
+}
+
+void RouteDocument::moveWaypoints(const QVariantList &rows, const QVariantList &coordinates)
+{
+    if (rows.size() != coordinates.size() || rows.isEmpty())
+        return;
+    m_undo.beginMacro(rows.size() == 1 ? tr("Move waypoint %1").arg(rows.first().toInt() + 1)
+                                       : tr("Move %n waypoint(s)", nullptr, int(rows.size())));
+    for (qsizetype i = 0; i < rows.size(); ++i) {
+        const QGeoCoordinate c = coordinates[i].value<QGeoCoordinate>();
+        if (c.isValid())
+            m_editor.moveWaypoint(rows[i].toInt(), c.latitude(), c.longitude());
+    }
+    m_undo.endMacro();
+}
+
+void RouteDocument::removeSelected()
+{
+    const QList<int> rows = selectedRows();
+    if (rows.isEmpty())
+        return;
+    m_selection.clear();
+    m_editor.removeRows(rows);
+}
+
+void RouteDocument::selectRows(const QList<int> &rows)
+{
+    QItemSelection selection;
+    for (int row : rows) {
+        if (row >= 0 && row < m_model.count())
+            selection.select(m_model.index(row), m_model.index(row));
+    }
+    m_selection.select(selection, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    if (!rows.isEmpty() && rows.last() >= 0 && rows.last() < m_model.count())
+        m_selection.setCurrentIndex(m_model.index(rows.last()), QItemSelectionModel::NoUpdate);
+}
+
+void RouteDocument::clickRow(int row, int modifiers)
+{
+    if (row < 0 || row >= m_model.count())
+        return;
+    const QModelIndex index = m_model.index(row);
+    const auto mods = Qt::KeyboardModifiers(modifiers);
+    if (mods & Qt::ControlModifier) {
+        m_selection.setCurrentIndex(index, QItemSelectionModel::Toggle | QItemSelectionModel::Rows);
+    } else if ((mods & Qt::ShiftModifier) && currentRow() >= 0) {
+        const int from = currentRow();
+        m_selection.select(QItemSelection(m_model.index(std::min(from, row)), m_model.index(std::max(from, row))),
+                           QItemSelectionModel::Select | QItemSelectionModel::Rows);
+        m_selection.setCurrentIndex(index, QItemSelectionModel::NoUpdate);
+    } else {
+        selectRows({row});
+    }
+}
+
+bool RouteDocument::importFile(const QUrl &file)
+{
+    const QString path = file.isLocalFile() ? file.toLocalFile() : file.toString();
+    auto loaded = formats::loadMission(path);
+    if (!loaded) {
+        setMessage(tr("Import failed: %1").arg(loaded.error().toString()));
+        return false;
+    }
+    if (loaded->mission.routes.empty()) {
+        setMessage(tr("Import failed: %1 holds no route.").arg(QFileInfo(path).fileName()));
+        return false;
+    }
+    Route route = loaded->mission.routes.front();
+    route.origin = m_model.route().origin; // saving updates the route that is open
+    if (!m_model.route().settings.name.isEmpty())
+        route.settings.name = m_model.route().settings.name;
+    m_selection.clear();
+    m_editor.replaceRoute(std::move(route), tr("Import %1").arg(QFileInfo(path).fileName()));
+    QString text = tr("Imported %n segment(s) from %1.", nullptr, m_model.count()).arg(QFileInfo(path).fileName());
+    if (!loaded->notices.isEmpty())
+        text += QLatin1Char(' ') + loaded->notices.join(QLatin1Char(' '));
+    setMessage(text);
+    return true;
+}
+
+bool RouteDocument::exportFile(const QUrl &file)
+{
+    const QString path = file.isLocalFile() ? file.toLocalFile() : file.toString();
+    Mission mission;
+    mission.name = m_model.route().settings.name;
+    mission.routes.push_back(m_model.route());
+    auto saved = formats::saveMission(mission, path);
+    if (!saved) {
+        setMessage(tr("Export failed: %1").arg(saved.error().toString()));
+        return false;
+    }
+    QString text = tr("Exported to %1.").arg(QFileInfo(path).fileName());
+    if (!saved->isEmpty())
+        text += QLatin1Char(' ') + tr("Not representable there: %1").arg(saved->join(QStringLiteral("; ")));
+    setMessage(text);
+    return true;
+}
+
+void RouteDocument::setMessage(const QString &message)
+{
+    m_message = message;
+    emit messageChanged();
+}
+
+} // namespace sortie::client

@@ -1,0 +1,108 @@
+#pragma once
+
+#include "RouteAnalyzer.h"
+#include "RouteEditor.h"
+#include "RouteModel.h"
+
+#include <QItemSelectionModel>
+#include <QObject>
+#include <QUndoStack>
+#include <QUrl>
+
+namespace sortie::client {
+
+// The route open for editing, with nothing of the network in it: the model the map and the table
+// both show, its undo stack, editor, selection and analysis (statistics, validation), the gestures
+// of the map turned into undoable edits, and import/export of files.
+class RouteDocument : public QObject
+{
+    Q_OBJECT
+    Q_PROPERTY(sortie::mission::RouteModel *model READ model CONSTANT)
+    Q_PROPERTY(sortie::mission::RouteEditor *editor READ editor CONSTANT)
+    Q_PROPERTY(QUndoStack *undoStack READ undoStack CONSTANT)
+    Q_PROPERTY(QItemSelectionModel *selection READ selection CONSTANT)
+    Q_PROPERTY(sortie::mission::RouteAnalyzer *analyzer READ analyzer CONSTANT)
+    Q_PROPERTY(bool modified READ isModified NOTIFY modifiedChanged)
+    Q_PROPERTY(bool canUndo READ canUndo NOTIFY undoChanged)
+    Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoChanged)
+    Q_PROPERTY(QString undoText READ undoText NOTIFY undoChanged)
+    Q_PROPERTY(QString redoText READ redoText NOTIFY undoChanged)
+    Q_PROPERTY(QList<int> selectedRows READ selectedRows NOTIFY selectedRowsChanged)
+    Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+    Q_PROPERTY(int currentRow READ currentRow NOTIFY currentChanged)
+    // The current row's area scan, when it is one: its polygon, the path the planner made of it
+    // (transects and turnarounds, QGeoCoordinates) and its parameters; empty otherwise.
+    Q_PROPERTY(QVariantList scanPolygon READ scanPolygon NOTIFY currentChanged)
+    Q_PROPERTY(QVariantList scanPath READ scanPath NOTIFY currentChanged)
+    Q_PROPERTY(QVariantMap scanParameters READ scanParameters NOTIFY currentChanged)
+    Q_PROPERTY(QString scanProblem READ scanProblem NOTIFY currentChanged)
+
+public:
+    explicit RouteDocument(QObject *parent = nullptr);
+
+    mission::RouteModel *model() { return &m_model; }
+    mission::RouteEditor *editor() { return &m_editor; }
+    QUndoStack *undoStack() { return &m_undo; }
+    QItemSelectionModel *selection() { return &m_selection; }
+    mission::RouteAnalyzer *analyzer() { return &m_analyzer; }
+    const mission::Route &route() const { return m_model.route(); }
+
+    bool isModified() const { return !m_undo.isClean(); }
+    bool canUndo() const { return m_undo.canUndo(); }
+    bool canRedo() const { return m_undo.canRedo(); }
+    QString undoText() const { return m_undo.undoText(); }
+    QString redoText() const { return m_undo.redoText(); }
+    QList<int> selectedRows() const;
+    QString message() const { return m_message; }
+    int currentRow() const;
+    QVariantList scanPolygon() const;
+    QVariantList scanPath() const;
+    QVariantMap scanParameters() const;
+    QString scanProblem() const;
+
+    // Replaces the whole route (opened from the server or reloaded): not undoable, marks clean.
+    void load(mission::Route route);
+    void markSaved() { m_undo.setClean(); }
+
+    // Map gestures, each one undo step; the new or moved rows become the selection.
+    Q_INVOKABLE int addWaypoint(double latitude, double longitude);
+    // A click on the leg from row `leg` to `leg + 1` inserts a waypoint between them.
+    Q_INVOKABLE int insertWaypoint(int leg, double latitude, double longitude);
+    // rows (ints) and coordinates (QGeoCoordinate) as RouteLayer::waypointsMoved gives them.
+    Q_INVOKABLE void moveWaypoints(const QVariantList &rows, const QVariantList &coordinates);
+    Q_INVOKABLE void removeSelected();
+    Q_INVOKABLE void selectRows(const QList<int> &rows);
+    // A click on a row of the table: selects it; Ctrl toggles it, Shift extends from the current row.
+    Q_INVOKABLE void clickRow(int row, int modifiers);
+    // polygon: QGeoCoordinates (or {latitude, longitude} maps). Returns the new row or -1.
+    Q_INVOKABLE int addAreaScan(const QVariantList &polygon);
+    // Camera, overlaps, altitude, direction... of the scan at `row`, as one undo step. Keys as in
+    // scanParameters; keys left out keep their value.
+    Q_INVOKABLE bool setScanParameters(int row, const QVariantMap &parameters);
+    Q_INVOKABLE void undo() { m_undo.undo(); }
+    Q_INVOKABLE void redo() { m_undo.redo(); }
+
+    // Files: .sortie, .plan, WPL (.waypoints/.txt), KML. An import is one undo step and keeps the
+    // route's server identity, so saving it updates the route that is open.
+    Q_INVOKABLE bool importFile(const QUrl &file);
+    Q_INVOKABLE bool exportFile(const QUrl &file);
+
+signals:
+    void modifiedChanged();
+    void undoChanged();
+    void selectedRowsChanged();
+    void messageChanged();
+    void currentChanged();
+
+private:
+    void setMessage(const QString &message);
+
+    mission::RouteModel m_model;
+    QUndoStack m_undo;
+    mission::RouteEditor m_editor;
+    QItemSelectionModel m_selection;
+    mission::RouteAnalyzer m_analyzer;
+    QString m_message;
+};
+
+} // namespace sortie::client

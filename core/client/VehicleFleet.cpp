@@ -1,0 +1,193 @@
+#include "VehicleFleet.h"
+
+#include "HciClient.h"
+#include "HciReply.h"
+#include "HciSession.h"
+#include "HciVehicleLink.h"
+#include "Messages.pb.h"
+#include "VciEndpoint.h"
+#include "VciVehicleLink.h"
+
+#include <QMetaEnum>
+
+#include <cmath>
+#include <numbers>
+
+namespace sortie::client {
+
+namespace pb = com::ugcs::ucs::proto;
+using vehicle::Vehicle;
+using vehicle::VehicleLink;
+
+namespace {
+double degrees(double radians)
+{
+    return radians * 180.0 / std::numbers::pi;
+}
+} // namespace
+
+VehicleFleet::VehicleFleet(hci::HciClient *client, QObject *parent)
+    : QAbstractListModel(parent)
+    , m_client(client)
+{
+    connect(client->session(), &hci::HciSession::ready, this, &VehicleFleet::discoverHciVehicles);
+    connect(client->session(), &hci::HciSession::stateChanged, this, [this](hci::HciSession::State state) {
+        if (state == hci::HciSession::State::Disconnected)
+            dropHciVehicles();
+    });
+}
+
+VehicleFleet::~VehicleFleet()
+{
+    // Vehicles first (they watch their links), then the links, with nothing reaching back here.
+    for (Entry &entry : m_entries) {
+        disconnect(entry.vehicle.get(), nullptr, this, nullptr);
+        entry.vehicle.reset();
+        entry.link.reset();
+    }
+}
+
+int VehicleFleet::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : count();
+}
+
+QHash<int, QByteArray> VehicleFleet::roleNames() const
+{
+    return {{VehicleIdRole, "vehicleId"}, {NameRole, "name"}, {ProtocolRole, "protocol"}, {LinkStateRole, "linkState"},
+            {StaleRole, "stale"}, {LatitudeRole, "latitude"}, {LongitudeRole, "longitude"}, {HeadingRole, "heading"},
+            {HomeLatitudeRole, "homeLatitude"}, {HomeLongitudeRole, "homeLongitude"}, {AltitudeAglRole, "altitudeAgl"},
+            {GroundSpeedRole, "groundSpeed"}, {ModeRole, "mode"}, {ArmedRole, "armed"}, {BatteryRole, "battery"},
+            {VehicleRole, "vehicle"}};
+}
+
+QVariant VehicleFleet::data(const QModelIndex &index, int role) const
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid))
+        return {};
+    const Vehicle &v = *m_entries[size_t(index.row())].vehicle;
+    auto finite = [](double value) { return std::isfinite(value) ? QVariant(value) : QVariant(); };
+    switch (role) {
+    case VehicleIdRole: return v.protocol() + QLatin1Char(':') + v.id();
+    case NameRole:
+    case Qt::DisplayRole: return v.name();
+    case ProtocolRole: return v.protocol();
+    case LinkStateRole: return QString::fromLatin1(QMetaEnum::fromType<VehicleLink::State>().valueToKey(int(v.linkState())));
+    case StaleRole: return v.isStale() || !v.isConnected();
+    case LatitudeRole: return v.position().isValid() ? QVariant(v.position().latitude()) : QVariant();
+    case LongitudeRole: return v.position().isValid() ? QVariant(v.position().longitude()) : QVariant();
+    case HeadingRole: return finite(degrees(v.heading()));
+    case HomeLatitudeRole: return v.home().isValid() ? QVariant(v.home().latitude()) : QVariant();
+    case HomeLongitudeRole: return v.home().isValid() ? QVariant(v.home().longitude()) : QVariant();
+    case AltitudeAglRole: return finite(v.altitudeAgl());
+    case GroundSpeedRole: return finite(v.groundSpeed());
+    case ModeRole: return v.mode();
+    case ArmedRole: return v.armed();
+    case BatteryRole: return finite(v.batteryRemaining());
+    case VehicleRole: return QVariant::fromValue(static_cast<QObject *>(m_entries[size_t(index.row())].vehicle.get()));
+    default: return {};
+    }
+}
+
+Vehicle *VehicleFleet::vehicleAt(int row) const
+{
+    return row >= 0 && row < count() ? m_entries[size_t(row)].vehicle.get() : nullptr;
+}
+
+void VehicleFleet::add(std::unique_ptr<VehicleLink> link)
+{
+    // Parented, so that QML, which receives it from vehicleAt(), never takes it over and deletes it.
+    auto vehicle = std::make_unique<Vehicle>(link.get(), this);
+    Vehicle *raw = vehicle.get();
+    connect(raw, &Vehicle::telemetryChanged, this, [this, raw] { rowChanged(raw); });
+    connect(raw, &Vehicle::staleChanged, this, [this, raw] { rowChanged(raw); });
+    connect(raw, &Vehicle::linkStateChanged, this, [this, raw] { rowChanged(raw); });
+    connect(raw, &Vehicle::identityChanged, this, [this, raw] { rowChanged(raw); });
+    connect(raw, &Vehicle::commandFinished, this, [this, raw](const QString &command, bool ok, const QString &message) {
+        setCommandResult(ok ? tr("%1: %2 done.").arg(raw->name(), command)
+                            : tr("%1: %2 failed: %3").arg(raw->name(), command, message));
+    });
+    beginInsertRows({}, count(), count());
+    link->start();
+    m_entries.push_back({std::move(link), std::move(vehicle)});
+    endInsertRows();
+    emit countChanged();
+}
+
+void VehicleFleet::rowChanged(const Vehicle *vehicle)
+{
+    for (size_t row = 0; row < m_entries.size(); ++row) {
+        if (m_entries[row].vehicle.get() == vehicle) {
+            emit dataChanged(index(int(row)), index(int(row)));
+            return;
+        }
+    }
+}
+
+void VehicleFleet::discoverHciVehicles()
+{
+    if (!m_client)
+        return;
+    hci::HciReply *reply = m_client->listObjects(hci::HciObjectType::Vehicle);
+    connect(reply, &hci::HciReply::finished, this, [this, reply] {
+        if (!reply->isOk()) {
+            m_message = tr("The server's vehicles could not be read: %1").arg(reply->error().message());
+            emit messageChanged();
+            return;
+        }
+        dropHciVehicles();
+        for (const pb::DomainObjectWrapper &object : reply->response<pb::GetObjectListResponse>().objects())
+            add(std::make_unique<vehicle::HciVehicleLink>(m_client, object.vehicle()));
+    });
+}
+
+void VehicleFleet::dropHciVehicles()
+{
+    for (int row = count() - 1; row >= 0; --row) {
+        if (m_entries[size_t(row)].vehicle->protocol() != QLatin1String("HCI"))
+            continue;
+        beginRemoveRows({}, row, row);
+        Entry gone = std::move(m_entries[size_t(row)]);
+        m_entries.erase(m_entries.begin() + row);
+        endRemoveRows();
+        disconnect(gone.vehicle.get(), nullptr, this, nullptr);
+        gone.vehicle.reset();
+        gone.link.reset();
+    }
+    emit countChanged();
+}
+
+bool VehicleFleet::addVciVehicle(const QString &text)
+{
+    QString error;
+    const auto endpoint = vci::VciEndpoint::parse(text, &error);
+    if (!endpoint) {
+        m_message = tr("Not a VCI address: %1").arg(error);
+        emit messageChanged();
+        return false;
+    }
+    add(std::make_unique<vehicle::VciVehicleLink>(*endpoint));
+    return true;
+}
+
+void VehicleFleet::goTo(int row, double latitude, double longitude)
+{
+    Vehicle *v = vehicleAt(row);
+    if (!v || !v->link())
+        return;
+    const double agl = v->altitudeAgl();
+    const double altitude = std::isfinite(agl) && agl > 2 ? agl : 20.0;
+    const QString name = v->name();
+    v->link()->goTo(latitude, longitude, altitude, 5.0, [this, name](const vehicle::CommandResult &result) {
+        setCommandResult(result.ok ? tr("%1: flying to the clicked point.").arg(name)
+                                   : tr("%1: go-to failed: %2").arg(name, result.message));
+    });
+}
+
+void VehicleFleet::setCommandResult(const QString &text)
+{
+    m_commandResult = text;
+    emit commandResultChanged();
+}
+
+} // namespace sortie::client

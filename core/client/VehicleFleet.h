@@ -1,0 +1,77 @@
+#pragma once
+
+#include "Vehicle.h"
+
+#include <QAbstractListModel>
+#include <QPointer>
+
+#include <memory>
+#include <vector>
+
+namespace sortie::hci {
+class HciClient;
+}
+
+namespace sortie::client {
+
+// Every vehicle the operator can see, whichever protocol reaches it: the server's vehicles over
+// HCI (found when the session becomes ready) and vehicles connected directly over VCI. One row per
+// vehicle with what the map and the list show (position and heading in degrees for the map layer,
+// protocol and link state); the Vehicle itself (instruments, history, commands) is `vehicle`.
+// Rows change at most at the vehicles' notify rate (100 ms), never per telemetry message.
+class VehicleFleet : public QAbstractListModel
+{
+    Q_OBJECT
+    Q_PROPERTY(int count READ count NOTIFY countChanged)
+    Q_PROPERTY(QString commandResult READ commandResult NOTIFY commandResultChanged)
+    Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+
+public:
+    enum Roles {
+        VehicleIdRole = Qt::UserRole + 1, NameRole, ProtocolRole, LinkStateRole, StaleRole,
+        LatitudeRole, LongitudeRole, HeadingRole, HomeLatitudeRole, HomeLongitudeRole,
+        AltitudeAglRole, GroundSpeedRole, ModeRole, ArmedRole, BatteryRole, VehicleRole,
+    };
+
+    explicit VehicleFleet(hci::HciClient *client, QObject *parent = nullptr);
+    ~VehicleFleet() override;
+
+    int rowCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role) const override;
+    QHash<int, QByteArray> roleNames() const override;
+
+    int count() const { return int(m_entries.size()); }
+    QString commandResult() const { return m_commandResult; }
+    QString message() const { return m_message; }
+    Q_INVOKABLE sortie::vehicle::Vehicle *vehicleAt(int row) const;
+
+    // Connects a vehicle over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600.
+    Q_INVOKABLE bool addVciVehicle(const QString &endpoint);
+    // Click-and-go: flies the vehicle to a point at its present altitude above ground (20 m when
+    // unknown), 5 m/s. The result comes as commandResult.
+    Q_INVOKABLE void goTo(int row, double latitude, double longitude);
+
+signals:
+    void countChanged();
+    void commandResultChanged();
+    void messageChanged();
+
+private:
+    struct Entry
+    {
+        std::unique_ptr<vehicle::VehicleLink> link;
+        std::unique_ptr<vehicle::Vehicle> vehicle;
+    };
+    void add(std::unique_ptr<vehicle::VehicleLink> link);
+    void dropHciVehicles();
+    void discoverHciVehicles();
+    void rowChanged(const vehicle::Vehicle *vehicle);
+    void setCommandResult(const QString &text);
+
+    QPointer<hci::HciClient> m_client;
+    std::vector<Entry> m_entries;
+    QString m_commandResult;
+    QString m_message;
+};
+
+} // namespace sortie::client

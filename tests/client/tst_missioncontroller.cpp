@@ -1,0 +1,343 @@
+// MissionController and RouteDocument against the simulated server: open a route, edit it, undo,
+// save under a lock and see the change from a second session, a conflicting save, processing and
+// uploading with progress, files.
+#include "ConnectionController.h"
+#include "HciClient.h"
+#include "HciReply.h"
+#include "HciRouteMapper.h"
+#include "Messages.pb.h"
+#include "MissionController.h"
+#include "SimFixture.h"
+#include "SimVehicle.h"
+
+#include <QGeoCoordinate>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace sortie;
+using client::MissionController;
+namespace pb = com::ugcs::ucs::proto;
+
+namespace {
+
+// One logged-in operator: session, client and the controllers.
+struct Operator
+{
+    Operator(const QString &address, const QString &user, const QString &password)
+        : client(&session)
+        , connection(&session)
+        , missions(&client)
+    {
+        QSignalSpy ready(&connection, &client::ConnectionController::ready);
+        connection.connectToServer(address, user, password);
+        ok = ready.wait(10000);
+    }
+    hci::HciSession session;
+    hci::HciClient client;
+    client::ConnectionController connection;
+    MissionController missions;
+    bool ok = false;
+};
+
+template<typename T>
+T call(hci::HciReply *reply)
+{
+    reply->setAutoDelete(false);
+    if (!reply->isFinished()) {
+        QSignalSpy done(reply, &hci::HciReply::finished);
+        done.wait(10000);
+    }
+    T response = reply->response<T>();
+    delete reply;
+    return response;
+}
+
+int routeRow(const client::ServerObjectListModel &routes, const QString &name)
+{
+    for (int row = 0; row < routes.count(); ++row) {
+        if (routes.nameAt(row) == name)
+            return row;
+    }
+    return -1;
+}
+
+const QString kDemoRoute = QStringLiteral("Riga port - 4 WP");
+
+} // namespace
+
+class TestMissionController : public QObject
+{
+    Q_OBJECT
+
+    std::unique_ptr<test::SimFixture> m_sim;
+    std::unique_ptr<Operator> m_alice;
+
+    // The demo route's id once it is open, or -1.
+    int openDemoRoute(Operator &op)
+    {
+        QDeadlineTimer deadline(10000);
+        while (routeRow(*op.missions.routes(), kDemoRoute) < 0 && !deadline.hasExpired())
+            QTest::qWait(10);
+        const int id = op.missions.routes()->objectIdAt(routeRow(*op.missions.routes(), kDemoRoute));
+        if (id < 0)
+            return -1;
+        op.missions.openRoute(id);
+        while (op.missions.routeId() != id && !deadline.hasExpired())
+            QTest::qWait(10);
+        return op.missions.routeId() == id ? id : -1;
+    }
+
+private slots:
+    void init()
+    {
+        m_sim = std::make_unique<test::SimFixture>();
+        m_alice = std::make_unique<Operator>(m_sim->address(), QStringLiteral("admin"), QStringLiteral("admin"));
+        QVERIFY(m_alice->ok);
+    }
+
+    void cleanup()
+    {
+        m_alice.reset();
+        m_sim.reset();
+    }
+
+    void listsRoutesAndVehicles()
+    {
+        QTRY_VERIFY(routeRow(*m_alice->missions.routes(), kDemoRoute) >= 0);
+        QTRY_COMPARE(m_alice->missions.vehicles()->count(), 3);
+        QCOMPARE(m_alice->missions.vehicles()->nameAt(0), QStringLiteral("EMU-101"));
+    }
+
+    void editUndoSaveAndSeeItFromASecondSession()
+    {
+        const int id = openDemoRoute(*m_alice);
+        QVERIFY(id > 0);
+        client::RouteDocument *doc = m_alice->missions.document();
+        QCOMPARE(doc->model()->count(), 4);
+        QCOMPARE(m_alice->missions.routeName(), kDemoRoute);
+        QVERIFY(!doc->isModified());
+
+        QCOMPARE(doc->addWaypoint(56.9790, 24.0820), 4);
+        QCOMPARE(doc->selectedRows(), QList<int>{4});
+        QCOMPARE(doc->insertWaypoint(0, 56.9770, 24.0745), 1);
+        doc->moveWaypoints({2}, {QVariant::fromValue(QGeoCoordinate(56.9785, 24.0770))});
+        QCOMPARE(doc->model()->count(), 6);
+        doc->selectRows({5});
+        doc->removeSelected();
+        QCOMPARE(doc->model()->count(), 5);
+        QVERIFY(doc->isModified());
+        doc->undo(); // the removal
+        QCOMPARE(doc->model()->count(), 6);
+        doc->undo(); // the move
+        QVERIFY(std::abs(doc->model()->index(2).data(mission::RouteModel::LatitudeRole).toDouble() - 56.97800) < 1e-9);
+        doc->redo();
+        QVERIFY(std::abs(doc->model()->index(2).data(mission::RouteModel::LatitudeRole).toDouble() - 56.9785) < 1e-9);
+
+        QSignalSpy saved(&m_alice->missions, &MissionController::saved);
+        m_alice->missions.save();
+        QVERIFY(saved.wait(10000));
+        QCOMPARE(saved.first().first().toInt(), 2);
+        QVERIFY(!doc->isModified());
+        QVERIFY2(m_alice->missions.message().startsWith(QStringLiteral("Saved")), qPrintable(m_alice->missions.message()));
+
+        // Bob sees Alice's route as she saved it.
+        Operator bob(m_sim->address(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
+        QVERIFY(bob.ok);
+        const pb::Route theirs = call<pb::GetObjectResponse>(bob.client.getObject(hci::HciObjectType::Route, id)).object().route();
+        QCOMPARE(theirs.version(), 2);
+        QCOMPARE(theirs.segments_size(), 6);
+        const auto route = mission::routeFromHci(theirs);
+        QVERIFY(route);
+        QVERIFY(std::abs(std::get<mission::Waypoint>(route->route.segments[2]).position.latitude - 56.9785) < 1e-9);
+        // The lock was released after the save: Bob can take it.
+        auto *lock = bob.client.acquireLock(hci::HciObjectType::Route, id);
+        lock->setAutoDelete(false);
+        QSignalSpy locked(lock, &hci::HciReply::finished);
+        QVERIFY(lock->isFinished() || locked.wait(10000));
+        QVERIFY2(lock->isOk(), qPrintable(lock->error().message()));
+        delete lock;
+    }
+
+    void followsTheServerWhenNothingIsEdited()
+    {
+        const int id = openDemoRoute(*m_alice);
+        QVERIFY(id > 0);
+        Operator bob(m_sim->address(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
+        QVERIFY(bob.ok);
+        pb::Route theirs = call<pb::GetObjectResponse>(bob.client.getObject(hci::HciObjectType::Route, id)).object().route();
+        theirs.set_name("Renamed by Bob");
+        call<pb::CreateOrUpdateObjectResponse>(bob.client.createOrUpdate(theirs));
+        QTRY_COMPARE(m_alice->missions.routeName(), QStringLiteral("Renamed by Bob"));
+        QVERIFY(!m_alice->missions.hasConflict());
+    }
+
+    void conflictingSaveOffersAChoice()
+    {
+        const int id = openDemoRoute(*m_alice);
+        QVERIFY(id > 0);
+        client::RouteDocument *doc = m_alice->missions.document();
+        doc->addWaypoint(56.9790, 24.0820);
+
+        Operator bob(m_sim->address(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
+        QVERIFY(bob.ok);
+        pb::Route theirs = call<pb::GetObjectResponse>(bob.client.getObject(hci::HciObjectType::Route, id)).object().route();
+        theirs.set_safealtitude(45);
+        call<pb::CreateOrUpdateObjectResponse>(bob.client.createOrUpdate(theirs));
+
+        // Alice learns of it at once, and her edits are still there.
+        QTRY_VERIFY(m_alice->missions.hasConflict());
+        QVERIFY2(m_alice->missions.conflictText().contains(QStringLiteral("version 2")), qPrintable(m_alice->missions.conflictText()));
+        QCOMPARE(doc->model()->count(), 5);
+
+        // Saving does not overwrite Bob's copy behind anyone's back...
+        m_alice->missions.save();
+        QTRY_VERIFY(!m_alice->missions.isBusy());
+        QCOMPARE(call<pb::GetObjectResponse>(bob.client.getObject(hci::HciObjectType::Route, id)).object().route().segments_size(), 4);
+        // ...until she chooses to keep hers.
+        QSignalSpy saved(&m_alice->missions, &MissionController::saved);
+        m_alice->missions.keepMine();
+        QVERIFY(saved.wait(10000));
+        QVERIFY(!m_alice->missions.hasConflict());
+        const pb::Route now = call<pb::GetObjectResponse>(bob.client.getObject(hci::HciObjectType::Route, id)).object().route();
+        QCOMPARE(now.segments_size(), 5);
+        QCOMPARE(now.version(), 3);
+    }
+
+    void takeTheirsDropsOurEdits()
+    {
+        const int id = openDemoRoute(*m_alice);
+        QVERIFY(id > 0);
+        client::RouteDocument *doc = m_alice->missions.document();
+        doc->addWaypoint(56.9790, 24.0820);
+        Operator bob(m_sim->address(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
+        QVERIFY(bob.ok);
+        pb::Route theirs = call<pb::GetObjectResponse>(bob.client.getObject(hci::HciObjectType::Route, id)).object().route();
+        theirs.set_name("Bob's");
+        call<pb::CreateOrUpdateObjectResponse>(bob.client.createOrUpdate(theirs));
+        QTRY_VERIFY(m_alice->missions.hasConflict());
+        m_alice->missions.takeTheirs();
+        QVERIFY(!m_alice->missions.hasConflict());
+        QCOMPARE(doc->model()->count(), 4);
+        QCOMPARE(m_alice->missions.routeName(), QStringLiteral("Bob's"));
+        QVERIFY(!doc->isModified());
+    }
+
+    void areaScan()
+    {
+        const int id = openDemoRoute(*m_alice);
+        QVERIFY(id > 0);
+        client::RouteDocument *doc = m_alice->missions.document();
+        const QVariantList corners{QVariant::fromValue(QGeoCoordinate(56.9740, 24.0800)), QVariant::fromValue(QGeoCoordinate(56.9770, 24.0800)),
+                                   QVariant::fromValue(QGeoCoordinate(56.9770, 24.0870)), QVariant::fromValue(QGeoCoordinate(56.9740, 24.0870))};
+        QCOMPARE(doc->addAreaScan(corners.mid(0, 2)), -1); // two corners enclose nothing
+        QVERIFY(!doc->message().isEmpty());
+        const int row = doc->addAreaScan(corners);
+        QCOMPARE(row, 4);
+        QCOMPARE(doc->currentRow(), 4);
+        QCOMPARE(doc->scanPolygon().size(), 4);
+        const int pathBefore = int(doc->scanPath().size());
+        QVERIFY2(pathBefore >= 4, qPrintable(QString::number(pathBefore)));
+        QVERIFY(doc->scanProblem().isEmpty());
+        QCOMPARE(doc->scanParameters().value(QStringLiteral("sideOverlapPercent")).toDouble(), 65.0);
+
+        // More side overlap: transects closer together, so more of them.
+        QVERIFY(doc->setScanParameters(row, {{QStringLiteral("sideOverlapPercent"), 85.0}}));
+        QCOMPARE(doc->scanParameters().value(QStringLiteral("sideOverlapPercent")).toDouble(), 85.0);
+        QVERIFY(doc->scanPath().size() > pathBefore);
+        QVERIFY(!doc->setScanParameters(row, {{QStringLiteral("frontOverlapPercent"), 120.0}}));
+        doc->undo();
+        QCOMPARE(int(doc->scanPath().size()), pathBefore);
+        doc->redo();
+
+        QSignalSpy saved(&m_alice->missions, &MissionController::saved);
+        m_alice->missions.save();
+        QVERIFY(saved.wait(10000));
+        Operator bob(m_sim->address(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
+        QVERIFY(bob.ok);
+        const pb::Route theirs = call<pb::GetObjectResponse>(bob.client.getObject(hci::HciObjectType::Route, id)).object().route();
+        QCOMPARE(theirs.segments_size(), 5);
+        const auto route = mission::routeFromHci(theirs);
+        QVERIFY(route);
+        QVERIFY(std::holds_alternative<mission::AreaScan>(route->route.segments[4]));
+        QCOMPARE(std::get<mission::AreaScan>(route->route.segments[4]).parameters.sideOverlapPercent, 85.0);
+    }
+
+    void processAndUploadWithProgress()
+    {
+        QVERIFY(openDemoRoute(*m_alice) > 0);
+        QTRY_COMPARE(m_alice->missions.vehicles()->count(), 3);
+        const int emu = m_alice->missions.vehicles()->objectIdAt(0);
+        QList<int> progress;
+        connect(&m_alice->missions, &MissionController::progressChanged, this, [&] {
+            if (m_alice->missions.progressMaximum() > 0)
+                progress.append(m_alice->missions.progressValue());
+        });
+        QSignalSpy uploaded(&m_alice->missions, &MissionController::uploaded);
+        m_alice->missions.upload(emu);
+        QVERIFY(uploaded.wait(15000));
+        QCOMPARE(uploaded.first().first().toInt(), emu);
+        QVERIFY(m_alice->missions.processed()->count() >= 4);
+        QVERIFY(m_alice->missions.processed()->flyable());
+        QVERIFY2(progress.size() >= 3, qPrintable(QString::number(progress.size())));
+        QVERIFY(std::is_sorted(progress.begin(), progress.end()));
+        QCOMPARE(m_alice->missions.message(), QStringLiteral("Uploaded to EMU-101."));
+        QVERIFY(m_sim->world.vehicle(emu)->model().mission().size() >= 4);
+    }
+
+    void processReportsTheServersProblems()
+    {
+        QVERIFY(openDemoRoute(*m_alice) > 0);
+        client::RouteDocument *doc = m_alice->missions.document();
+        doc->editor()->setAltitude({1}, 500); // above the route's maximum
+        QSignalSpy messages(&m_alice->missions, &MissionController::serverMessagesChanged);
+        m_alice->missions.process();
+        QVERIFY(messages.wait(10000));
+        QVERIFY(!m_alice->missions.processed()->flyable());
+        QVERIFY(!m_alice->missions.serverMessages().isEmpty());
+        QVERIFY2(m_alice->missions.serverMessages().join(' ').contains(QStringLiteral("altitude")),
+                 qPrintable(m_alice->missions.serverMessages().join(' ')));
+    }
+
+    void filesRoundTrip()
+    {
+        QVERIFY(openDemoRoute(*m_alice) > 0);
+        client::RouteDocument *doc = m_alice->missions.document();
+        QTemporaryDir dir;
+        const QUrl file = QUrl::fromLocalFile(dir.filePath(QStringLiteral("port.sortie")));
+        QVERIFY2(doc->exportFile(file), qPrintable(doc->message()));
+        doc->addWaypoint(56.9790, 24.0820);
+        doc->addWaypoint(56.9795, 24.0830);
+        QCOMPARE(doc->model()->count(), 6);
+        QVERIFY2(doc->importFile(file), qPrintable(doc->message()));
+        QCOMPARE(doc->model()->count(), 4);
+        QCOMPARE(m_alice->missions.routeName(), kDemoRoute);
+        doc->undo(); // an import is one undo step
+        QCOMPARE(doc->model()->count(), 6);
+
+        QFile broken(dir.filePath(QStringLiteral("broken.plan")));
+        QVERIFY(broken.open(QIODevice::WriteOnly));
+        broken.write("{ \"fileType\": \"Plan\", ");
+        broken.close();
+        QVERIFY(!doc->importFile(QUrl::fromLocalFile(broken.fileName())));
+        QVERIFY2(doc->message().contains(QStringLiteral("broken.plan")), qPrintable(doc->message()));
+        QCOMPARE(doc->model()->count(), 6); // nothing lost
+    }
+
+    void editsSurviveADroppedConnection()
+    {
+        QVERIFY(openDemoRoute(*m_alice) > 0);
+        client::RouteDocument *doc = m_alice->missions.document();
+        doc->addWaypoint(56.9790, 24.0820);
+        m_sim->server.close();
+        m_sim->server.dropConnections();
+        QTRY_VERIFY(!m_alice->session.isReady());
+        m_alice->missions.save();
+        QVERIFY2(m_alice->missions.message().startsWith(QStringLiteral("Not connected")), qPrintable(m_alice->missions.message()));
+        QCOMPARE(doc->model()->count(), 5);
+        QVERIFY(doc->isModified());
+    }
+};
+
+QTEST_GUILESS_MAIN(TestMissionController)
+#include "tst_missioncontroller.moc"

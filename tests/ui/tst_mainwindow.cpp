@@ -1,0 +1,295 @@
+// The main window offscreen: pages, shortcuts, help overlay, status bar, map source wiring,
+// and a PNG of each view (docs/images when SORTIE_SCREENSHOT_DIR points there).
+#include "AppSettings.h"
+#include "CoordinateListModel.h"
+#include "MapView.h"
+#include "QuickScene.h"
+#include "RouteLayer.h"
+#include "SortieUi.h"
+#include "TileHttpServer.h"
+#include "VehicleLayer.h"
+
+#include <QDir>
+#include <QGuiApplication>
+#include <QItemSelectionModel>
+#include <QPalette>
+#include <QQmlApplicationEngine>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QSettings>
+#include <QStandardItemModel>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QtQml/qqmlextensionplugin.h>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+using namespace sortie::ui;
+
+namespace {
+
+enum VehicleRole { IdRole = Qt::UserRole + 1, NameRole, LatRole, LonRole, HeadingRole, HomeLatRole, HomeLonRole };
+
+QString screenshotDir()
+{
+    const QString dir = qEnvironmentVariable("SORTIE_SCREENSHOT_DIR", QStringLiteral(SORTIE_SCREENSHOT_DEFAULT_DIR));
+    QDir().mkpath(dir);
+    return dir;
+}
+
+// Demonstration content for the pictures: a survey route near Riga and three vehicles.
+void fillRoute(CoordinateListModel &route, CoordinateListModel &polygon, CoordinateListModel &transects)
+{
+    route.append(56.9468, 24.0850, 0);
+    route.append(56.9500, 24.0950, 60);
+    for (int leg = 0; leg < 6; ++leg) {
+        const double lon = 24.1000 + leg * 0.0030;
+        const bool north = leg % 2 == 0;
+        transects.append(north ? 56.9460 : 56.9560, lon);
+        transects.append(north ? 56.9560 : 56.9460, lon);
+    }
+    route.append(56.9580, 24.1250, 60);
+    route.append(56.9520, 24.1320, 60);
+    route.append(56.9440, 24.1180, 40);
+    route.append(56.9420, 24.0900, 0);
+    for (const auto &[lat, lon] : {std::pair{56.9450, 24.0985}, {56.9575, 24.0985}, {56.9575, 24.1165}, {56.9450, 24.1165}})
+        polygon.append(lat, lon);
+}
+
+void fillVehicles(QStandardItemModel &vehicles)
+{
+    vehicles.setItemRoleNames({{IdRole, "vehicleId"}, {NameRole, "name"}, {LatRole, "latitude"}, {LonRole, "longitude"},
+                               {HeadingRole, "heading"}, {HomeLatRole, "homeLatitude"}, {HomeLonRole, "homeLongitude"}});
+    const struct { const char *name; double lat, lon, heading; } fleet[] = {
+        {"EMU-101 (HCI)", 56.9510, 24.1050, 45}, {"EMU-102 (HCI)", 56.9470, 24.1220, 200}, {"VCI sim 1", 56.9555, 24.0900, 300}};
+    for (const auto &v : fleet) {
+        auto *item = new QStandardItem;
+        item->setData(QString::fromLatin1(v.name), IdRole);
+        item->setData(QString::fromLatin1(v.name), NameRole);
+        item->setData(v.lat - 0.003, LatRole);
+        item->setData(v.lon - 0.004, LonRole);
+        item->setData(v.heading, HeadingRole);
+        item->setData(56.9468, HomeLatRole);
+        item->setData(24.0850 + (&v - fleet) * 0.004, HomeLonRole);
+        vehicles.appendRow(item);
+    }
+}
+
+// Flies each vehicle a few steps, so the trails show.
+void flyVehicles(QStandardItemModel &vehicles)
+{
+    for (int step = 1; step <= 12; ++step) {
+        for (int row = 0; row < vehicles.rowCount(); ++row) {
+            const QModelIndex index = vehicles.index(row, 0);
+            vehicles.setItemData(index, {{LatRole, index.data(LatRole).toDouble() + 0.00025},
+                                         {LonRole, index.data(LonRole).toDouble() + 0.0003 * std::sin(step * 0.5 + row)}});
+        }
+    }
+}
+
+} // namespace
+
+class TestMainWindow : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    std::unique_ptr<QSettings> m_storage;
+    std::unique_ptr<AppSettings> m_settings;
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+
+    template <typename T = QObject>
+    T *find(const char *name) const
+    {
+        return m_window->findChild<T *>(QString::fromLatin1(name));
+    }
+    QObject *page(const char *name) const { return m_window->property(name).value<QObject *>(); }
+
+    void save(const QString &name, int minimumColours = 12)
+    {
+        const QImage image = m_window->grabWindow();
+        QCOMPARE(image.size(), QSize(1280, 800));
+        QVERIFY2(sortie::test::distinctColours(image) >= minimumColours, qPrintable(name + " looks blank"));
+        const QString path = QDir(screenshotDir()).filePath(name);
+        QVERIFY2(image.save(path), qPrintable(path));
+    }
+
+    void verifyShown(const char *name)
+    {
+        auto *item = find<QQuickItem>(name);
+        QVERIFY2(item, name);
+        // Pages lay out on the frame after they are shown.
+        QTRY_VERIFY2(item->isVisible() && item->width() > 0 && item->height() > 0, name);
+        const QRectF inWindow = item->mapRectToScene(QRectF(0, 0, item->width(), item->height()));
+        QVERIFY2(QRectF(0, 0, m_window->width(), m_window->height()).intersects(inWindow), name);
+    }
+
+private slots:
+    void initTestCase() { sortie::test::useSoftwareRendering(); }
+
+    void init()
+    {
+        m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
+        m_storage->clear();
+        m_settings = std::make_unique<AppSettings>(m_storage.get());
+        m_engine = std::make_unique<QQmlApplicationEngine>();
+        addImportPaths(*m_engine);
+        m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())}});
+        m_engine->load(QUrl(QString::fromLatin1(kMainQml)));
+        QVERIFY(!m_engine->rootObjects().isEmpty());
+        m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
+        QVERIFY(m_window);
+        m_window->resize(1280, 800);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+    }
+
+    void cleanup()
+    {
+        m_engine.reset();
+        m_settings.reset();
+        m_storage.reset();
+        QGuiApplication::setPalette(QPalette());
+    }
+
+    void statusBarShowsTheConnectionState()
+    {
+        auto *label = find<QObject>("connectionStateLabel");
+        QVERIFY(label);
+        QCOMPARE(label->property("text").toString(), QStringLiteral("Disconnected"));
+        m_window->setProperty("connectionState", QStringLiteral("Reconnecting"));
+        m_window->setProperty("connectionDetail", QStringLiteral("attempt 2"));
+        QCOMPARE(label->property("text").toString(), QStringLiteral("Reconnecting — attempt 2"));
+    }
+
+    void shortcutsSwitchPagesAndShowHelp()
+    {
+        QCOMPARE(m_window->property("currentPage").toInt(), 0);
+        QTest::keyClick(m_window, Qt::Key_2, Qt::ControlModifier);
+        QCOMPARE(m_window->property("currentPage").toInt(), 1);
+        QTest::keyClick(m_window, Qt::Key_3, Qt::ControlModifier);
+        QCOMPARE(m_window->property("currentPage").toInt(), 2);
+        QTest::keyClick(m_window, Qt::Key_1, Qt::ControlModifier);
+        QCOMPARE(m_window->property("currentPage").toInt(), 0);
+
+        QObject *help = m_window->property("helpOverlay").value<QObject *>();
+        QVERIFY(help);
+        QTest::keyClick(m_window, Qt::Key_F1);
+        QTRY_VERIFY(help->property("opened").toBool());
+        auto *grid = find<QQuickItem>("shortcutGrid");
+        QVERIFY(grid);
+        QVERIFY(grid->childItems().size() >= 16); // two labels per shortcut
+        QTest::keyClick(m_window, Qt::Key_Escape);
+        QTRY_VERIFY(!help->property("opened").toBool());
+    }
+
+    void unitsAndMapSourceFollowTheSettings()
+    {
+        QTest::keyClick(m_window, Qt::Key_2, Qt::ControlModifier);
+        const auto scaleBars = m_window->findChildren<QQuickItem *>(QStringLiteral("scaleBar"));
+        QVERIFY(!scaleBars.isEmpty());
+        m_settings->setUnits(QStringLiteral("imperial"));
+        for (QQuickItem *bar : scaleBars)
+            QVERIFY(bar->property("imperial").toBool());
+
+        sortie::test::TileHttpServer server;
+        QVERIFY(server.listen());
+        const QString urlTemplate = server.urlTemplate();
+        server.close();
+        m_settings->setTileUrlTemplate(urlTemplate);
+        m_settings->setMapSource(QStringLiteral("xyz"));
+        auto *map = page("missionPage")->property("map").value<MapView *>();
+        QVERIFY(map);
+        QVERIFY(map->tileSource());
+        QTRY_VERIFY2(map->tileStatus().contains(QStringLiteral("offline base map shown")), qPrintable(map->tileStatus()));
+        auto *tileLabel = find<QObject>("tileStatusLabel");
+        QTRY_COMPARE(tileLabel->property("text").toString(), map->tileStatus());
+        m_settings->setMapSource(QStringLiteral("offline"));
+        QVERIFY(!map->tileSource());
+    }
+
+    void screenshots()
+    {
+        // Login
+        verifyShown("serverField");
+        verifyShown("connectButton");
+        verifyShown("statusBar");
+        save(QStringLiteral("login.png"));
+
+        // Mission edit
+        CoordinateListModel route, polygon, transects;
+        fillRoute(route, polygon, transects);
+        QItemSelectionModel selection(&route);
+        selection.select(route.index(2), QItemSelectionModel::Select);
+        QObject *mission = page("missionPage");
+        mission->setProperty("routeModel", QVariant::fromValue(static_cast<QObject *>(&route)));
+        mission->setProperty("selectionModel", QVariant::fromValue(static_cast<QObject *>(&selection)));
+        mission->setProperty("areaPolygonModel", QVariant::fromValue(static_cast<QObject *>(&polygon)));
+        mission->setProperty("areaTransectModel", QVariant::fromValue(static_cast<QObject *>(&transects)));
+        QTest::keyClick(m_window, Qt::Key_2, Qt::ControlModifier);
+        auto *routeLayer = mission->property("routeLayer").value<RouteLayer *>();
+        QVERIFY(routeLayer);
+        QTRY_VERIFY(routeLayer->width() > 600);
+        routeLayer->fitToMap(60);
+        auto *map = mission->property("map").value<MapView *>();
+        QTest::mouseMove(m_window, map->mapToScene(QPointF(300, 300)).toPoint());
+        QTRY_COMPARE(routeLayer->visibleWaypointCount(), route.count());
+        verifyShown("routeLayer");
+        verifyShown("waypointList");
+        verifyShown("scaleBar");
+        QTRY_VERIFY(!find<QObject>("cursorLabel")->property("text").toString().isEmpty());
+        QTest::qWait(100); // let the base-map tiles land
+        save(QStringLiteral("layers.png"));
+
+        // Live telemetry
+        QStandardItemModel vehicles;
+        fillVehicles(vehicles);
+        QObject *telemetry = page("telemetryPage");
+        telemetry->setProperty("vehicleModel", QVariant::fromValue(static_cast<QObject *>(&vehicles)));
+        flyVehicles(vehicles);
+        QTest::keyClick(m_window, Qt::Key_3, Qt::ControlModifier);
+        auto *vehicleLayer = telemetry->property("vehicleLayer").value<VehicleLayer *>();
+        QCOMPARE(vehicleLayer->count(), 3);
+        QVERIFY(vehicleLayer->trailPointCount(0) > 10);
+        auto *telemetryMap = telemetry->property("map").value<MapView *>();
+        QTRY_VERIFY(telemetryMap->width() > 600);
+        telemetryMap->fitBounds(56.940, 24.080, 56.962, 24.130);
+        verifyShown("vehicleLayer");
+        verifyShown("vehicleList");
+        QTest::qWait(100);
+        save(QStringLiteral("telemetry.png"));
+
+        // Keyboard help
+        QTest::keyClick(m_window, Qt::Key_F1);
+        QTRY_VERIFY(m_window->property("helpOverlay").value<QObject *>()->property("opened").toBool());
+        QTest::qWait(300); // the popup's fade-in
+        save(QStringLiteral("shortcuts.png"));
+        QTest::keyClick(m_window, Qt::Key_Escape);
+        const QVariant none = QVariant::fromValue<QObject *>(nullptr);
+        for (const char *property : {"routeModel", "selectionModel", "areaPolygonModel", "areaTransectModel"})
+            mission->setProperty(property, none);
+        telemetry->setProperty("vehicleModel", none);
+    }
+
+    void followsADarkPalette()
+    {
+        QPalette dark;
+        dark.setColor(QPalette::Window, QColor(0x2b, 0x2b, 0x2b));
+        dark.setColor(QPalette::WindowText, QColor(0xe0, 0xe0, 0xe0));
+        dark.setColor(QPalette::Base, QColor(0x1e, 0x1e, 0x1e));
+        dark.setColor(QPalette::Text, QColor(0xe0, 0xe0, 0xe0));
+        dark.setColor(QPalette::Button, QColor(0x35, 0x35, 0x35));
+        dark.setColor(QPalette::ButtonText, QColor(0xe0, 0xe0, 0xe0));
+        QGuiApplication::setPalette(dark);
+        QTRY_VERIFY(m_window->property("dark").toBool());
+        QTest::keyClick(m_window, Qt::Key_2, Qt::ControlModifier);
+        auto *map = page("missionPage")->property("map").value<MapView *>();
+        QTRY_VERIFY(map->isDark());
+        QTest::qWait(100);
+        save(QStringLiteral("mission-dark.png"), 6);
+    }
+};
+
+QTEST_MAIN(TestMainWindow)
+#include "tst_mainwindow.moc"

@@ -1,0 +1,385 @@
+// Real flows through the main window against the embedded simulator, driven by simulated mouse
+// and keys offscreen: log in (bad password, then good), open a route, add, move and delete
+// waypoints on the map and in the table, undo, save and see the server's copy change from a
+// second session, draw an area scan, upload with the progress bar moving.
+#include "AppSettings.h"
+#include "ConnectionController.h"
+#include "HciClient.h"
+#include "HciReply.h"
+#include "HciServer.h"
+#include "MapView.h"
+#include "Messages.pb.h"
+#include "MissionController.h"
+#include "QuickScene.h"
+#include "RouteLayer.h"
+#include "SimVciFleet.h"
+#include "SimVciListener.h"
+#include "SimWorld.h"
+#include "VehicleFleet.h"
+#include "VehicleLayer.h"
+#include "TelemetryPlot.h"
+#include "SortieUi.h"
+
+#include <QDir>
+
+#include <functional>
+#include <QQmlApplicationEngine>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QtQml/qqmlextensionplugin.h>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+using namespace sortie;
+namespace pb = com::ugcs::ucs::proto;
+using ui::MapView;
+using ui::RouteLayer;
+
+namespace {
+// QTest::keyClicks takes widgets only: one key at a time for a QWindow.
+void typeText(QWindow *window, const QString &text)
+{
+    for (QChar c : text)
+        QTest::keyClick(window, c.toLatin1());
+}
+} // namespace
+
+class TestUiFlows : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    std::unique_ptr<sim::SimWorld> m_world;
+    std::unique_ptr<sim::HciServer> m_server;
+    std::unique_ptr<QSettings> m_storage;
+    std::unique_ptr<ui::AppSettings> m_settings;
+    std::unique_ptr<hci::HciSession> m_session;
+    std::unique_ptr<hci::HciClient> m_client;
+    std::unique_ptr<client::ConnectionController> m_connection;
+    std::unique_ptr<client::MissionController> m_missions;
+    std::unique_ptr<client::VehicleFleet> m_fleet;
+    std::unique_ptr<sim::SimVciFleet> m_vci;
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+
+    template<typename T = QQuickItem>
+    T *find(const char *name) const
+    {
+        T *found = m_window->findChild<T *>(QString::fromLatin1(name));
+        if (!found)
+            qWarning("no item named %s", name);
+        return found;
+    }
+    QPoint centreOf(QQuickItem *item) const
+    {
+        return item->mapToScene(QPointF(item->width() / 2, item->height() / 2)).toPoint();
+    }
+    void click(const char *name)
+    {
+        QQuickItem *item = find(name);
+        QVERIFY(item);
+        QTRY_VERIFY2(item->isVisible() && item->isEnabled(), name);
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, centreOf(item));
+    }
+    void type(const char *field, const QString &text)
+    {
+        QQuickItem *item = find(field);
+        QVERIFY(item);
+        QTRY_VERIFY2(item->isVisible() && item->width() > 0 && QRect(QPoint(), m_window->size()).contains(centreOf(item)), field);
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, centreOf(item));
+        QTRY_VERIFY(item->hasActiveFocus());
+        QTest::keyClick(m_window, Qt::Key_A, Qt::ControlModifier);
+        typeText(m_window, text);
+    }
+    QString text(const char *name) const { return find<QObject>(name)->property("text").toString(); }
+    MapView *missionMap() const { return m_window->property("missionPage").value<QObject *>()->property("map").value<MapView *>(); }
+    RouteLayer *routeLayer() const { return find<RouteLayer>("routeLayer"); }
+
+    void logIn(const QString &password)
+    {
+        QTest::keyClick(m_window, Qt::Key_1, Qt::ControlModifier);
+        type("serverField", QStringLiteral("127.0.0.1:%1").arg(m_server->port()));
+        type("userField", QStringLiteral("admin"));
+        type("passwordField", password);
+        click("connectButton");
+    }
+
+    void openDemoRoute()
+    {
+        logIn(QStringLiteral("admin"));
+        QTRY_COMPARE(m_window->property("currentPage").toInt(), 1);
+        QObject *picker = find<QObject>("routePicker");
+        QTRY_VERIFY(picker->property("count").toInt() > 0);
+        QTRY_VERIFY(!m_missions->isBusy()); // the lists have arrived and will not be reset under us
+        // The keyboard way: focus the picker, Down picks the first route.
+        find("routePicker")->forceActiveFocus(Qt::TabFocusReason);
+        QTRY_VERIFY(find("routePicker")->hasActiveFocus());
+        QTest::keyClick(m_window, Qt::Key_Down);
+        QTRY_COMPARE(picker->property("currentIndex").toInt(), 0);
+        // Tab to the Open button and press it with the space bar.
+        QTest::keyClick(m_window, Qt::Key_Tab);
+        QTRY_VERIFY(find("openRouteButton")->hasActiveFocus());
+        QTest::keyClick(m_window, Qt::Key_Space);
+        QTRY_VERIFY2(routeLayer()->count() == 4, qPrintable(m_missions->message() + QStringLiteral(" / picker value ")
+                                                             + picker->property("currentValue").toString()));
+        QTRY_COMPARE(routeLayer()->visibleWaypointCount(), 4); // fitted to the map
+    }
+
+    pb::Route serverCopy(int routeId)
+    {
+        hci::HciSession other;
+        hci::HciClient client(&other);
+        QSignalSpy ready(&other, &hci::HciSession::ready);
+        other.open(QStringLiteral("127.0.0.1"), m_server->port(), QStringLiteral("admin"), QStringLiteral("admin"));
+        if (!ready.wait(10000))
+            return {};
+        hci::HciReply *reply = client.getObject(hci::HciObjectType::Route, routeId);
+        reply->setAutoDelete(false);
+        QSignalSpy done(reply, &hci::HciReply::finished);
+        if (!reply->isFinished())
+            done.wait(10000);
+        pb::Route route = reply->response<pb::GetObjectResponse>().object().route();
+        delete reply;
+        other.close();
+        return route;
+    }
+
+private slots:
+    void initTestCase() { test::useSoftwareRendering(); }
+
+    void init()
+    {
+        sim::SimWorld::Config config;
+        config.users = {{0, QStringLiteral("admin"), QStringLiteral("admin"), true}};
+        m_world = std::make_unique<sim::SimWorld>(config);
+        m_server = std::make_unique<sim::HciServer>(*m_world);
+        m_server->setUploadStepMs(40);
+        QVERIFY(m_server->listen(QHostAddress::LocalHost, 0));
+        m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
+        m_storage->clear();
+        m_settings = std::make_unique<ui::AppSettings>(m_storage.get());
+        m_session = std::make_unique<hci::HciSession>();
+        m_client = std::make_unique<hci::HciClient>(m_session.get());
+        m_connection = std::make_unique<client::ConnectionController>(m_session.get());
+        m_missions = std::make_unique<client::MissionController>(m_client.get());
+        m_fleet = std::make_unique<client::VehicleFleet>(m_client.get());
+        sim::SimVciFleetOptions vci;
+        vci.count = 1;
+        vci.firstPort = 0;
+        m_vci = std::make_unique<sim::SimVciFleet>(vci);
+        QString vciError;
+        QVERIFY2(m_vci->start(&vciError), qPrintable(vciError));
+        m_engine = std::make_unique<QQmlApplicationEngine>();
+        ui::addImportPaths(*m_engine);
+        m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())},
+                                        {QStringLiteral("connection"), QVariant::fromValue<QObject *>(m_connection.get())},
+                                        {QStringLiteral("missions"), QVariant::fromValue<QObject *>(m_missions.get())},
+                                        {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(m_fleet.get())}});
+        m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
+        QVERIFY(!m_engine->rootObjects().isEmpty());
+        m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
+        m_window->resize(1280, 800);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        m_window->requestActivate();
+        QVERIFY(QTest::qWaitForWindowActive(m_window));
+    }
+
+    void cleanup()
+    {
+        m_engine.reset();
+        m_fleet.reset();
+        m_vci.reset();
+        m_missions.reset();
+        m_connection.reset();
+        m_client.reset();
+        m_session.reset();
+        m_settings.reset();
+        m_storage.reset();
+        m_server.reset();
+        m_world.reset();
+    }
+
+    void badPasswordThenGood()
+    {
+        logIn(QStringLiteral("wrong"));
+        QTRY_VERIFY(text("loginMessage").startsWith(QStringLiteral("Wrong user name or password")));
+        QCOMPARE(text("connectionStateLabel"), QStringLiteral("Disconnected"));
+        QVERIFY(!text("loginMessage").contains(QStringLiteral("wrong")));
+        m_window->grabWindow().save(QDir(qEnvironmentVariable("SORTIE_SCREENSHOT_DIR", QStringLiteral(SORTIE_SCREENSHOT_DEFAULT_DIR))).filePath(QStringLiteral("login-error.png")));
+
+        logIn(QStringLiteral("admin"));
+        QTRY_VERIFY(text("connectionStateLabel").startsWith(QStringLiteral("Ready")));
+        QVERIFY(text("connectionStateLabel").contains(QStringLiteral("admin at 127.0.0.1")));
+        QCOMPARE(m_window->property("currentPage").toInt(), 1); // on to the mission
+        QCOMPARE(m_settings->lastUser(), QStringLiteral("admin"));
+    }
+
+    void editOnTheMapUndoAndSave()
+    {
+        openDemoRoute();
+        const int routeId = m_missions->routeId();
+        MapView *map = missionMap();
+        RouteLayer *route = routeLayer();
+
+        // Click on empty map: a waypoint is added there.
+        const QPointF empty = route->waypointPosition(0) + QPointF(0, 120);
+        QVERIFY(route->waypointAt(empty) < 0 && route->legAt(empty) < 0);
+        const QPoint at = map->mapToScene(empty).toPoint();
+        const QGeoCoordinate where = map->toCoordinate(map->mapFromScene(at));
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, at);
+        QTRY_COMPARE(route->count(), 5);
+        QVERIFY(std::abs(m_missions->document()->model()->index(4).data(mission::RouteModel::LatitudeRole).toDouble() - where.latitude()) < 1e-7);
+
+        // Drag waypoint 2 by (30, 20) pixels.
+        const QPoint from = map->mapToScene(route->waypointPosition(1)).toPoint();
+        const QGeoCoordinate dropped = map->toCoordinate(route->waypointPosition(1) + QPointF(30, 20));
+        QTest::mousePress(m_window, Qt::LeftButton, {}, from);
+        QTest::mouseMove(m_window, from + QPoint(10, 7));
+        QTest::mouseMove(m_window, from + QPoint(30, 20));
+        QTest::mouseRelease(m_window, Qt::LeftButton, {}, from + QPoint(30, 20));
+        const QModelIndex second = m_missions->document()->model()->index(1);
+        QTRY_VERIFY(std::abs(second.data(mission::RouteModel::LatitudeRole).toDouble() - dropped.latitude()) < 1e-7);
+
+        // Del removes the selected waypoint (the one just dragged); Ctrl+Z brings it back.
+        QCOMPARE(m_missions->document()->selectedRows(), QList<int>{1});
+        QTest::keyClick(m_window, Qt::Key_Delete);
+        QTRY_COMPARE(route->count(), 4);
+        QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
+        QTRY_COMPARE(route->count(), 5);
+
+        // In the table: the first row's altitude, typed in place.
+        QQuickItem *list = find("waypointList");
+        QVERIFY(list);
+        QTRY_VERIFY(list->property("count").toInt() == 5);
+        QList<QQuickItem *> cells;
+        std::function<void(QQuickItem *)> collect = [&](QQuickItem *item) {
+            if (item->property("role").toString() == QLatin1String("altitude") && item->isVisible())
+                cells.append(item);
+            for (QQuickItem *child : item->childItems())
+                collect(child);
+        };
+        collect(list);
+        QVERIFY(!cells.isEmpty());
+        std::sort(cells.begin(), cells.end(), [](QQuickItem *a, QQuickItem *b) { return a->mapToScene({0, 0}).y() < b->mapToScene({0, 0}).y(); });
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, centreOf(cells.first()));
+        QTRY_VERIFY(cells.first()->hasActiveFocus());
+        QTest::keyClick(m_window, Qt::Key_A, Qt::ControlModifier);
+        typeText(m_window, QStringLiteral("77"));
+        QTest::keyClick(m_window, Qt::Key_Return);
+        QTRY_COMPARE(m_missions->document()->model()->index(0).data(mission::RouteModel::AltitudeRole).toDouble(), 77.0);
+
+        // Ctrl+S saves under the lock; a second session sees the server's copy changed.
+        missionMap()->forceActiveFocus();
+        QSignalSpy saved(m_missions.get(), &client::MissionController::saved);
+        QTest::keyClick(m_window, Qt::Key_S, Qt::ControlModifier);
+        QVERIFY(saved.wait(10000));
+        const pb::Route copy = serverCopy(routeId);
+        QCOMPARE(copy.segments_size(), 5);
+        QCOMPARE(copy.version(), 2);
+        QTRY_VERIFY(text("missionMessage").contains(QStringLiteral("Saved")));
+    }
+
+    void areaScanOnTheMap()
+    {
+        openDemoRoute();
+        MapView *map = missionMap();
+        click("scanToolButton");
+        // A clear stretch of the map below the route (it is fitted the same way every time).
+        const QPointF base(450, 600);
+        for (const QPointF &corner : {QPointF(0, 0), QPointF(160, 0), QPointF(160, 110), QPointF(0, 110)}) {
+            QVERIFY(routeLayer()->waypointAt(base + corner) < 0 && routeLayer()->legAt(base + corner) < 0);
+            QTest::mouseClick(m_window, Qt::LeftButton, {}, map->mapToScene(base + corner).toPoint());
+        }
+        QQuickItem *draft = find("scanDraftLayer");
+        QTRY_COMPARE(draft->property("vertexCount").toInt(), 4);
+        click("finishScanButton");
+        QTRY_COMPARE(routeLayer()->count(), 5);
+        QQuickItem *area = find("areaLayer");
+        QTRY_COMPARE(area->property("vertexCount").toInt(), 4);
+        QVERIFY(area->property("transectPointCount").toInt() >= 4);
+        QCOMPARE(m_missions->document()->model()->index(4).data(mission::RouteModel::KindRole).toString(), QStringLiteral("areaScan"));
+        QTest::qWait(150);
+        m_window->grabWindow().save(QDir(qEnvironmentVariable("SORTIE_SCREENSHOT_DIR", QStringLiteral(SORTIE_SCREENSHOT_DEFAULT_DIR))).filePath(QStringLiteral("mission.png")));
+    }
+
+    void uploadMovesTheProgressBar()
+    {
+        openDemoRoute();
+        QObject *vehicles = find<QObject>("vehiclePicker");
+        QTRY_VERIFY(vehicles->property("count").toInt() == 3);
+        vehicles->setProperty("currentIndex", 0);
+        QObject *bar = find<QObject>("progressBar");
+        QList<double> values;
+        // The bar's binding runs first (it was connected at load): read what it shows.
+        connect(m_missions.get(), &client::MissionController::progressChanged, bar, [&values, bar] {
+            if (bar->property("to").toDouble() > 1)
+                values.append(bar->property("value").toDouble());
+        });
+        QSignalSpy uploaded(m_missions.get(), &client::MissionController::uploaded);
+        click("uploadButton");
+        QVERIFY(uploaded.wait(20000));
+        QVERIFY2(values.size() >= 3, qPrintable(QString::number(values.size())));
+        QVERIFY(values.last() > values.first());
+        QTRY_COMPARE(text("missionMessage"), QStringLiteral("Uploaded to EMU-101."));
+    }
+    void liveTelemetryAndCommands()
+    {
+        logIn(QStringLiteral("admin"));
+        QTRY_COMPARE(m_window->property("currentPage").toInt(), 1);
+        QTest::keyClick(m_window, Qt::Key_3, Qt::ControlModifier);
+        auto *layer = find<ui::VehicleLayer>("vehicleLayer");
+        QTRY_COMPARE_WITH_TIMEOUT(layer->count(), 3, 10000);
+
+        // A VCI vehicle, added by its address, beside the server's.
+        type("vciAddressField", QStringLiteral("tcp://127.0.0.1:%1").arg(m_vci->listeners().front()->port()));
+        click("vciConnectButton");
+        QTRY_COMPARE(layer->count(), 4);
+        QCOMPARE(m_fleet->index(3).data(client::VehicleFleet::ProtocolRole).toString(), QStringLiteral("VCI"));
+        QTRY_COMPARE_WITH_TIMEOUT(m_fleet->index(3).data(client::VehicleFleet::LinkStateRole).toString(), QStringLiteral("Connected"), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(!layer->vehiclePosition(3).isNull(), 10000);
+
+        // Choose EMU-101 on the map; its instruments fill in.
+        MapView *map = m_window->property("telemetryPage").value<QObject *>()->property("map").value<MapView *>();
+        QTRY_VERIFY_WITH_TIMEOUT(!layer->vehiclePosition(0).isNull(), 10000);
+        map->setCenter(m_fleet->vehicleAt(0)->position());
+        map->setZoomLevel(17); // EMU-101 on its own under the cursor
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, map->mapToScene(layer->vehiclePosition(0)).toPoint());
+        QTRY_COMPARE(layer->currentIndex(), 0);
+        QTRY_VERIFY(text("value_altitudeAgl") != QStringLiteral("—"));
+        QVERIFY(find("instrument_altitudeAgl")->opacity() > 0.9);
+
+        // Arm asks first; then take off, and the altitude climbs on the instruments and the plot.
+        auto confirmYes = [this] {
+            QObject *dialog = find<QObject>("commandConfirmDialog");
+            QTRY_VERIFY(dialog->property("opened").toBool());
+            QMetaObject::invokeMethod(dialog, "accept");
+        };
+        click("armButton");
+        QObject *dialog = find<QObject>("commandConfirmDialog");
+        QTRY_VERIFY(dialog->property("opened").toBool());
+        QVERIFY(dialog->property("text").toString().contains(QStringLiteral("EMU-101")));
+        QTest::keyClick(m_window, Qt::Key_Escape); // "no": nothing is sent
+        QTRY_VERIFY(!dialog->property("opened").toBool());
+        QVERIFY(!m_fleet->vehicleAt(0)->armed());
+        click("armButton");
+        confirmYes();
+        QTRY_VERIFY_WITH_TIMEOUT(m_fleet->vehicleAt(0)->armed(), 10000);
+        QTRY_VERIFY(text("commandResult").contains(QStringLiteral("done")));
+        QTRY_COMPARE(text("value_armed"), QStringLiteral("ARMED")); // at the vehicle's notify rate
+        click("takeoffButton");
+        confirmYes();
+        QTRY_VERIFY_WITH_TIMEOUT(m_fleet->vehicleAt(0)->altitudeAgl() > 3, 20000);
+        auto *plot = find<ui::TelemetryPlot>("telemetryPlot");
+        QTRY_VERIFY(plot->sampleCount() > 5);
+        QTest::qWait(200);
+        m_window->grabWindow().save(QDir(qEnvironmentVariable("SORTIE_SCREENSHOT_DIR", QStringLiteral(SORTIE_SCREENSHOT_DEFAULT_DIR))).filePath(QStringLiteral("telemetry-live.png")));
+    }
+};
+
+QTEST_MAIN(TestUiFlows)
+#include "tst_uiflows.moc"

@@ -1,0 +1,241 @@
+#include "AreaScanLayer.h"
+
+#include "MapView.h"
+#include "WebMercator.h"
+
+#include <QGuiApplication>
+#include <QPainter>
+#include <QStyleHints>
+
+#include <cmath>
+
+namespace sortie::ui {
+
+AreaScanLayer::AreaScanLayer(QQuickItem *parent)
+    : MapLayer(parent)
+{
+    setAcceptedMouseButtons(Qt::NoButton);
+    auto redraw = [this] {
+        polish();
+        update();
+    };
+    connect(&m_polygon, &ModelCoordinates::changed, this, redraw);
+    connect(&m_transects, &ModelCoordinates::changed, this, redraw);
+}
+
+void AreaScanLayer::setPolygonModel(QAbstractItemModel *model)
+{
+    if (model == m_polygon.model())
+        return;
+    m_polygon.setModel(model);
+    emit modelsChanged();
+}
+
+void AreaScanLayer::setTransectModel(QAbstractItemModel *model)
+{
+    if (model == m_transects.model())
+        return;
+    m_transects.setModel(model);
+    emit modelsChanged();
+}
+
+namespace {
+std::vector<QGeoCoordinate> toCoordinates(const QVariantList &list)
+{
+    std::vector<QGeoCoordinate> out;
+    for (const QVariant &v : list) {
+        const QGeoCoordinate c = v.value<QGeoCoordinate>();
+        if (c.isValid())
+            out.push_back(c);
+    }
+    return out;
+}
+} // namespace
+
+void AreaScanLayer::setPolygon(const QVariantList &coordinates)
+{
+    m_polygonList = coordinates;
+    m_ownPolygon.assign(toCoordinates(coordinates));
+    m_polygon.setModel(&m_ownPolygon);
+    emit modelsChanged();
+}
+
+void AreaScanLayer::setPath(const QVariantList &coordinates)
+{
+    m_pathList = coordinates;
+    m_ownPath.assign(toCoordinates(coordinates));
+    m_transects.setModel(&m_ownPath);
+    emit modelsChanged();
+}
+
+void AreaScanLayer::setEditable(bool editable)
+{
+    if (editable == m_editable)
+        return;
+    m_editable = editable;
+    setAcceptedMouseButtons(editable ? Qt::LeftButton : Qt::NoButton);
+    emit editableChanged();
+}
+
+void AreaScanLayer::setColor(const QColor &color)
+{
+    if (color == m_color)
+        return;
+    m_color = color;
+    emit colorChanged();
+    update();
+}
+
+QPolygonF AreaScanLayer::project(const std::vector<QPointF> &points, int displaced, QPointF offset) const
+{
+    const MapViewport view = viewport();
+    QPolygonF out;
+    out.reserve(qsizetype(points.size()));
+    QPointF anchor;
+    bool first = true;
+    for (size_t i = 0; i < points.size(); ++i) {
+        if (std::isnan(points[i].x()))
+            continue;
+        const QPointF p = int(i) == displaced ? points[i] + offset : points[i];
+        if (first) {
+            out.append(view.toScreen(p));
+            anchor = view.toNormalised(out.back());
+            first = false;
+        } else {
+            anchor = nearestCopy(anchor, p);
+            out.append(view.toScreenUnwrapped(anchor));
+        }
+    }
+    return out;
+}
+
+void AreaScanLayer::updatePolish()
+{
+    m_drawnPolygon = project(m_polygon.points(), m_dragging ? m_pressVertex : -1, m_dragOffset);
+    m_drawnTransects = project(m_transects.points(), -1, {});
+}
+
+void AreaScanLayer::paint(QPainter *painter)
+{
+    painter->setRenderHint(QPainter::Antialiasing, true);
+    if (m_drawnPolygon.size() >= 3) {
+        QColor fill = m_color;
+        fill.setAlpha(50);
+        painter->setPen(QPen(m_color, 2.0, Qt::DashLine));
+        painter->setBrush(fill);
+        painter->drawPolygon(m_drawnPolygon);
+    } else if (m_drawnPolygon.size() == 2) {
+        painter->setPen(QPen(m_color, 2.0, Qt::DashLine));
+        painter->drawPolyline(m_drawnPolygon);
+    }
+    if (m_drawnTransects.size() >= 2) {
+        painter->setPen(QPen(QColor(255, 255, 255, 180), 3.5));
+        painter->setBrush(Qt::NoBrush);
+        painter->drawPolyline(m_drawnTransects);
+        painter->setPen(QPen(m_color.darker(140), 1.8));
+        painter->drawPolyline(m_drawnTransects);
+    }
+    painter->setPen(QPen(Qt::white, 1.5));
+    painter->setBrush(m_color.darker(120));
+    for (const QPointF &vertex : std::as_const(m_drawnPolygon))
+        painter->drawRect(QRectF(vertex - QPointF(5, 5), QSizeF(10, 10)));
+}
+
+int AreaScanLayer::vertexAt(QPointF position, qreal radius) const
+{
+    const MapViewport view = viewport();
+    int best = -1;
+    double bestDistance = radius;
+    const std::vector<QPointF> &points = m_polygon.points();
+    for (size_t i = 0; i < points.size(); ++i) {
+        if (std::isnan(points[i].x()))
+            continue;
+        const QPointF s = view.toScreen(points[i]);
+        const double d = std::hypot(s.x() - position.x(), s.y() - position.y());
+        if (d <= bestDistance) {
+            bestDistance = d;
+            best = int(i);
+        }
+    }
+    return best;
+}
+
+int AreaScanLayer::edgeAt(QPointF position, qreal tolerance) const
+{
+    const QPolygonF polygon = project(m_polygon.points(), -1, {});
+    if (polygon.size() < 2 || polygon.size() != m_polygon.count())
+        return -1;
+    int best = -1;
+    double bestDistance = tolerance;
+    for (qsizetype i = 0; i < polygon.size(); ++i) {
+        const QPointF a = polygon[i];
+        const QPointF b = polygon[(i + 1) % polygon.size()];
+        const QPointF ab = b - a;
+        const double length2 = QPointF::dotProduct(ab, ab);
+        const double t = length2 > 0 ? std::clamp(QPointF::dotProduct(position - a, ab) / length2, 0.0, 1.0) : 0.0;
+        const QPointF nearest = a + t * ab;
+        const double d = std::hypot(position.x() - nearest.x(), position.y() - nearest.y());
+        if (d <= bestDistance) {
+            bestDistance = d;
+            best = int(i);
+        }
+    }
+    return best;
+}
+
+void AreaScanLayer::mousePressEvent(QMouseEvent *event)
+{
+    m_pressVertex = vertexAt(event->position());
+    m_pressEdge = m_pressVertex < 0 ? edgeAt(event->position()) : -1;
+    if (m_pressVertex < 0 && m_pressEdge < 0) {
+        event->ignore();
+        return;
+    }
+    m_pressPos = event->position();
+    m_dragOffset = {};
+    event->accept();
+}
+
+void AreaScanLayer::mouseMoveEvent(QMouseEvent *event)
+{
+    if (map())
+        map()->setCursorPosition(event->position());
+    if (m_pressVertex < 0)
+        return;
+    if (!m_dragging
+        && (event->position() - m_pressPos).manhattanLength() < QGuiApplication::styleHints()->startDragDistance())
+        return;
+    m_dragging = true;
+    const MapViewport view = viewport();
+    m_dragOffset = view.toNormalised(event->position()) - view.toNormalised(m_pressPos);
+    polish();
+    update();
+}
+
+void AreaScanLayer::mouseReleaseEvent(QMouseEvent *event)
+{
+    const int vertex = std::exchange(m_pressVertex, -1);
+    const int edge = std::exchange(m_pressEdge, -1);
+    if (m_dragging && vertex >= 0) {
+        m_dragging = false;
+        const QGeoCoordinate coordinate = WebMercator::unproject(m_polygon.points()[size_t(vertex)] + m_dragOffset);
+        polish();
+        update();
+        emit vertexMoved(vertex, coordinate);
+    } else if (edge >= 0) {
+        emit edgeClicked(edge, viewport().screenToGeo(event->position()), int(event->modifiers()));
+    }
+}
+
+void AreaScanLayer::mouseUngrabEvent()
+{
+    m_pressVertex = -1;
+    m_pressEdge = -1;
+    if (m_dragging) {
+        m_dragging = false;
+        polish();
+        update();
+    }
+}
+
+} // namespace sortie::ui

@@ -1,0 +1,48 @@
+#pragma once
+
+#include "MapViewport.h"
+
+#include <QPolygonF>
+
+#include <vector>
+
+namespace sortie::ui {
+
+// What a route looks like on screen for one viewport: the legs inside the view as polylines
+// and the waypoint markers to draw, each either labelled with its number or a plain dot (when
+// markers would overlap). Built on the GUI thread, drawn by RoutePainter: drawing never reads
+// the model. While waypoints are dragged, they and their legs form a separate "moving" part,
+// rebuilt alone on every mouse move while the rest stays (and stays cached as an image).
+struct RouteFrame
+{
+    enum MarkerFlag : quint8 { Labelled = 1, Selected = 2, Current = 4 };
+    struct Marker
+    {
+        QPointF position;
+        int row = 0;
+        quint8 flags = 0;
+    };
+
+    std::vector<QPolygonF> legs;
+    std::vector<Marker> markers; // in drawing order: selected and current last, on top
+    std::vector<QPolygonF> movingLegs;
+    std::vector<Marker> movingMarkers;
+    quint64 revision = 0; // changes whenever legs or markers (not the moving part) change
+    int visibleWaypoints = 0;
+    int labelledWaypoints = 0;
+
+    struct Input
+    {
+        const std::vector<QPointF> *points = nullptr; // normalised, NaN when unknown
+        const std::vector<bool> *selected = nullptr;  // may be shorter than points
+        int current = -1;
+        std::vector<int> draggedRows;                 // drawn displaced by dragOffset
+        QPointF dragOffset;                           // normalised
+        double markerRadius = 9.0;
+    };
+    static RouteFrame build(const Input &input, const MapViewport &viewport);
+    // Rebuilds only the moving part (the drag offset changed, nothing else).
+    void updateMoving(const Input &input, const MapViewport &viewport);
+};
+
+} // namespace sortie::ui

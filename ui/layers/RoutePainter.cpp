@@ -1,0 +1,147 @@
+#include "RoutePainter.h"
+
+#include <QPaintDevice>
+#include <QPainter>
+
+#include <cmath>
+
+namespace sortie::ui {
+
+namespace {
+constexpr int kMaxCachedNumbers = 20000;
+
+int digitsOf(int value)
+{
+    int digits = 1;
+    while (value >= 10) {
+        value /= 10;
+        ++digits;
+    }
+    return digits;
+}
+} // namespace
+
+const QStaticText &RoutePainter::number(int value)
+{
+    auto it = m_numbers.find(value);
+    if (it == m_numbers.end()) {
+        if (m_numbers.size() > kMaxCachedNumbers)
+            m_numbers.clear();
+        QStaticText text(QString::number(value));
+        text.setTextFormat(Qt::PlainText);
+        text.setPerformanceHint(QStaticText::AggressiveCaching);
+        text.prepare(QTransform(), m_font);
+        it = m_numbers.insert(value, text);
+    }
+    return it.value();
+}
+
+QImage RoutePainter::drawSprite(quint8 flags, int digits) const
+{
+    const double r = m_style.markerRadius;
+    const bool labelled = flags & RouteFrame::Labelled;
+    const QColor fill = (flags & RouteFrame::Selected) ? m_style.selected : m_style.marker;
+    const double textWidth = QFontMetricsF(m_font).horizontalAdvance(QString(digits, QLatin1Char('8')));
+    const double w = labelled ? std::max(2 * r, textWidth + 6) : r * 0.8;
+    const double h = labelled ? 2 * r : r * 0.8;
+    const double pad = (flags & RouteFrame::Current) && labelled ? 6 : 2;
+    const QSizeF size(w + 2 * pad, h + 2 * pad);
+    QImage image((size * m_dpr).toSize(), QImage::Format_ARGB32_Premultiplied);
+    image.setDevicePixelRatio(m_dpr);
+    image.fill(Qt::transparent);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QRectF body(pad, pad, w, h);
+    if (labelled && (flags & RouteFrame::Current)) {
+        p.setPen(QPen(m_style.current, 3.0));
+        p.setBrush(Qt::NoBrush);
+        p.drawRoundedRect(body.adjusted(-4, -4, 4, 4), r + 4, r + 4);
+    }
+    p.setPen(QPen(m_style.halo, 1.5));
+    p.setBrush(fill);
+    p.drawRoundedRect(body, h / 2, h / 2);
+    return image;
+}
+
+const QImage &RoutePainter::sprite(quint8 flags, int digits)
+{
+    const int key = (flags & RouteFrame::Labelled) ? (int(flags) << 8) | digits : int(flags) << 8;
+    auto it = m_sprites.find(key);
+    if (it == m_sprites.end())
+        it = m_sprites.insert(key, drawSprite(flags, digits));
+    return it.value();
+}
+
+void RoutePainter::setUp(QPainter &painter, const Style &style)
+{
+    const qreal dpr = painter.device() ? painter.device()->devicePixelRatioF() : 1.0;
+    if (style == m_style && dpr == m_dpr)
+        return;
+    m_style = style;
+    m_dpr = dpr;
+    m_font = painter.font();
+    m_font.setPixelSize(int(style.markerRadius * 1.1));
+    m_font.setBold(true);
+    m_numbers.clear();
+    m_sprites.clear();
+    m_still = QImage();
+}
+
+void RoutePainter::paintLegs(QPainter &painter, const std::vector<QPolygonF> &legs)
+{
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    painter.setBrush(Qt::NoBrush);
+    painter.setPen(QPen(m_style.halo, m_style.legWidth + 3.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    for (const QPolygonF &leg : legs)
+        painter.drawPolyline(leg);
+    painter.setPen(QPen(m_style.leg, m_style.legWidth, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    for (const QPolygonF &leg : legs)
+        painter.drawPolyline(leg);
+}
+
+void RoutePainter::paintMarkers(QPainter &painter, const std::vector<RouteFrame::Marker> &markers)
+{
+    painter.setFont(m_font);
+    painter.setPen(m_style.text);
+    for (const RouteFrame::Marker &marker : markers) {
+        const int value = marker.row + 1;
+        const QImage &image = sprite(marker.flags, digitsOf(value));
+        const QSizeF size = image.deviceIndependentSize();
+        // Whole pixels: a blit, not a resampling.
+        const QPointF topLeft(std::round(marker.position.x() - size.width() / 2),
+                              std::round(marker.position.y() - size.height() / 2));
+        painter.drawImage(topLeft, image);
+        if (marker.flags & RouteFrame::Labelled) {
+            const QStaticText &text = number(value);
+            painter.drawStaticText(marker.position - QPointF(text.size().width() / 2, text.size().height() / 2), text);
+        }
+    }
+}
+
+void RoutePainter::paint(QPainter &painter, const RouteFrame &frame, const Style &style)
+{
+    setUp(painter, style);
+    const bool moving = !frame.movingLegs.empty() || !frame.movingMarkers.empty();
+    if (!moving) {
+        m_still = QImage();
+        paintLegs(painter, frame.legs);
+        paintMarkers(painter, frame.markers);
+        return;
+    }
+    const QSize deviceSize = painter.device() ? QSize(painter.device()->width(), painter.device()->height()) : QSize();
+    if (m_still.isNull() || m_still.size() != deviceSize || m_stillRevision != frame.revision) {
+        m_still = QImage(deviceSize, QImage::Format_ARGB32_Premultiplied);
+        m_still.setDevicePixelRatio(m_dpr);
+        m_still.fill(Qt::transparent);
+        QPainter still(&m_still);
+        still.setFont(painter.font());
+        paintLegs(still, frame.legs);
+        paintMarkers(still, frame.markers);
+        m_stillRevision = frame.revision;
+    }
+    painter.drawImage(QPointF(0, 0), m_still);
+    paintLegs(painter, frame.movingLegs);
+    paintMarkers(painter, frame.movingMarkers);
+}
+
+} // namespace sortie::ui

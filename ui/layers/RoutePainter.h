@@ -1,0 +1,57 @@
+#pragma once
+
+#include "RouteFrame.h"
+
+#include <QColor>
+#include <QFont>
+#include <QHash>
+#include <QImage>
+#include <QStaticText>
+
+class QPainter;
+
+namespace sortie::ui {
+
+// Draws a RouteFrame: legs with a halo so they read on any map, numbered markers for labelled
+// waypoints, dots for the rest, selection and the current waypoint highlighted. Markers are
+// blitted from sprites drawn once (an antialiased circle per waypoint would cost a path fill
+// each), and number texts are laid out once; both are kept between frames.
+class RoutePainter
+{
+public:
+    struct Style
+    {
+        QColor leg{0x1e, 0x88, 0xe5};
+        QColor halo{255, 255, 255, 200};
+        QColor marker{0x15, 0x65, 0xc0};
+        QColor selected{0xff, 0x8f, 0x00};
+        QColor current{0xd8, 0x1b, 0x60};
+        QColor text{Qt::white};
+        double legWidth = 3.0;
+        double markerRadius = 9.0;
+        bool operator==(const Style &) const = default;
+    };
+
+    // While the frame has a moving part (a drag), the rest is drawn once into an image and
+    // blitted on later frames of the same revision.
+    void paint(QPainter &painter, const RouteFrame &frame, const Style &style);
+
+private:
+    void setUp(QPainter &painter, const Style &style);
+    void paintLegs(QPainter &painter, const std::vector<QPolygonF> &legs);
+    void paintMarkers(QPainter &painter, const std::vector<RouteFrame::Marker> &markers);
+    const QStaticText &number(int value);
+    // The marker without its number: flags (labelled, selected, current) and digit count pick it.
+    const QImage &sprite(quint8 flags, int digits);
+    QImage drawSprite(quint8 flags, int digits) const;
+
+    Style m_style;
+    qreal m_dpr = 0;
+    QFont m_font;
+    QHash<int, QStaticText> m_numbers;
+    QHash<int, QImage> m_sprites;
+    QImage m_still;               // the frame without its moving part
+    quint64 m_stillRevision = 0;
+};
+
+} // namespace sortie::ui

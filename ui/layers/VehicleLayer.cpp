@@ -1,0 +1,340 @@
+#include "VehicleLayer.h"
+
+#include "ModelCoordinates.h"
+#include "Polyline.h"
+#include "WebMercator.h"
+
+#include <QAbstractItemModel>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <cmath>
+
+namespace sortie::ui {
+
+namespace {
+
+// Positions closer than this (about half a metre at the equator) add nothing to a trail.
+constexpr double kTrailStep = 1.2e-8;
+
+QColor vehicleColor(int row)
+{
+    static constexpr QRgb kColors[] = {0xd81b60, 0x8e24aa, 0x00897b, 0xf4511e, 0x3949ab,
+                                       0x7cb342, 0x6d4c41, 0x00acc1, 0xc0ca33, 0x5e35b1};
+    return QColor::fromRgb(kColors[row % int(std::size(kColors))]);
+}
+
+QPainterPath arrowShape()
+{
+    QPainterPath path;
+    path.moveTo(0, -14);
+    path.lineTo(9, 10);
+    path.lineTo(0, 5);
+    path.lineTo(-9, 10);
+    path.closeSubpath();
+    return path;
+}
+
+} // namespace
+
+VehicleLayer::VehicleLayer(QQuickItem *parent)
+    : MapLayer(parent)
+{
+    setAcceptedMouseButtons(Qt::LeftButton);
+    connect(this, &VehicleLayer::modelChanged, this, &VehicleLayer::reload);
+}
+
+void VehicleLayer::setModel(QAbstractItemModel *model)
+{
+    if (model == m_model)
+        return;
+    if (m_model)
+        disconnect(m_model, nullptr, this, nullptr);
+    m_model = model;
+    if (m_model) {
+        connect(m_model, &QAbstractItemModel::dataChanged, this,
+                [this](const QModelIndex &topLeft, const QModelIndex &bottomRight) {
+                    reloadRows(topLeft.row(), bottomRight.row());
+                });
+        connect(m_model, &QAbstractItemModel::rowsInserted, this, &VehicleLayer::reload);
+        connect(m_model, &QAbstractItemModel::rowsRemoved, this, &VehicleLayer::reload);
+        connect(m_model, &QAbstractItemModel::rowsMoved, this, &VehicleLayer::reload);
+        connect(m_model, &QAbstractItemModel::modelReset, this, &VehicleLayer::reload);
+        connect(m_model, &QAbstractItemModel::layoutChanged, this, &VehicleLayer::reload);
+        connect(m_model, &QObject::destroyed, this, [this] { setModel(nullptr); });
+    }
+    emit modelChanged();
+}
+
+void VehicleLayer::setCurrentIndex(int row)
+{
+    if (row == m_current)
+        return;
+    m_current = row;
+    emit currentIndexChanged();
+    update();
+}
+
+void VehicleLayer::setTrailLength(int points)
+{
+    points = std::max(0, points);
+    if (points == m_trailLength)
+        return;
+    m_trailLength = points;
+    for (auto &trail : m_trails) {
+        while (int(trail.size()) > m_trailLength)
+            trail.pop_front();
+    }
+    emit trailLengthChanged();
+    polish();
+    update();
+}
+
+void VehicleLayer::setTrailsVisible(bool visible)
+{
+    if (visible == m_trailsVisible)
+        return;
+    m_trailsVisible = visible;
+    emit trailLengthChanged();
+    polish();
+    update();
+}
+
+void VehicleLayer::resolveRoles()
+{
+    m_roles.clear();
+    if (!m_model)
+        return;
+    const QHash<int, QByteArray> names = m_model->roleNames();
+    for (auto it = names.cbegin(); it != names.cend(); ++it)
+        m_roles.insert(QString::fromUtf8(it.value()), it.key());
+}
+
+VehicleLayer::Vehicle VehicleLayer::read(int row) const
+{
+    Vehicle vehicle;
+    const QModelIndex index = m_model->index(row, 0);
+    auto value = [&](const QString &role) {
+        const auto it = m_roles.constFind(role);
+        return it == m_roles.cend() ? QVariant() : m_model->data(index, it.value());
+    };
+    auto number = [&](const QString &role, bool *ok) { return value(role).toDouble(ok); };
+    vehicle.id = value(m_idRole).toString();
+    if (vehicle.id.isEmpty())
+        vehicle.id = QStringLiteral("#%1").arg(row);
+    vehicle.label = value(m_labelRole).toString();
+    bool okLat = false, okLon = false;
+    const double lat = number(m_latitudeRole, &okLat);
+    const double lon = number(m_longitudeRole, &okLon);
+    if (okLat && okLon && std::isfinite(lat) && std::isfinite(lon))
+        vehicle.position = WebMercator::project(lat, lon);
+    const double homeLat = number(m_homeLatitudeRole, &okLat);
+    const double homeLon = number(m_homeLongitudeRole, &okLon);
+    if (okLat && okLon && std::isfinite(homeLat) && std::isfinite(homeLon))
+        vehicle.home = WebMercator::project(homeLat, homeLon);
+    bool okHeading = false;
+    const double heading = number(m_headingRole, &okHeading);
+    vehicle.heading = okHeading && std::isfinite(heading) ? heading : 0.0;
+    vehicle.stale = value(m_staleRole).toBool();
+    vehicle.color = vehicleColor(row);
+    return vehicle;
+}
+
+void VehicleLayer::record(const Vehicle &vehicle)
+{
+    if (std::isnan(vehicle.position.x()) || m_trailLength == 0)
+        return;
+    std::deque<QPointF> &trail = m_trails[vehicle.id];
+    if (!trail.empty()) {
+        const QPointF d = vehicle.position - trail.back();
+        if (std::abs(d.x()) < kTrailStep && std::abs(d.y()) < kTrailStep)
+            return;
+    }
+    trail.push_back(vehicle.position);
+    while (int(trail.size()) > m_trailLength)
+        trail.pop_front();
+}
+
+void VehicleLayer::reload()
+{
+    resolveRoles();
+    m_vehicles.clear();
+    const int rows = m_model ? m_model->rowCount() : 0;
+    for (int row = 0; row < rows; ++row) {
+        m_vehicles.push_back(read(row));
+        record(m_vehicles.back());
+    }
+    emit vehiclesChanged();
+    polish();
+    update();
+}
+
+void VehicleLayer::reloadRows(int first, int last)
+{
+    for (int row = std::max(0, first); row <= last && row < int(m_vehicles.size()); ++row) {
+        m_vehicles[size_t(row)] = read(row);
+        record(m_vehicles[size_t(row)]);
+    }
+    polish();
+    update();
+}
+
+void VehicleLayer::clearTrails()
+{
+    m_trails.clear();
+    polish();
+    update();
+}
+
+int VehicleLayer::trailPointCount(int row) const
+{
+    if (row < 0 || row >= count())
+        return 0;
+    const auto it = m_trails.constFind(m_vehicles[size_t(row)].id);
+    return it == m_trails.cend() ? 0 : int(it->size());
+}
+
+QPointF VehicleLayer::vehiclePosition(int row) const
+{
+    if (row < 0 || row >= count() || std::isnan(m_vehicles[size_t(row)].position.x()))
+        return {};
+    return viewport().toScreen(m_vehicles[size_t(row)].position);
+}
+
+int VehicleLayer::vehicleAt(QPointF position, qreal radius) const
+{
+    const MapViewport view = viewport();
+    int best = -1;
+    double bestDistance = radius;
+    for (size_t row = 0; row < m_vehicles.size(); ++row) {
+        if (std::isnan(m_vehicles[row].position.x()))
+            continue;
+        const QPointF s = view.toScreen(m_vehicles[row].position);
+        const double d = std::hypot(s.x() - position.x(), s.y() - position.y());
+        if (d <= bestDistance) {
+            bestDistance = d;
+            best = int(row);
+        }
+    }
+    return best;
+}
+
+void VehicleLayer::updatePolish()
+{
+    const MapViewport view = viewport();
+    const QRectF screen = QRectF(QPointF(0, 0), view.size()).adjusted(-30, -30, 30, 30);
+    m_drawn.assign(m_vehicles.size(), Drawn());
+    for (size_t row = 0; row < m_vehicles.size(); ++row) {
+        const Vehicle &vehicle = m_vehicles[row];
+        Drawn &drawn = m_drawn[row];
+        drawn.hasPosition = !std::isnan(vehicle.position.x());
+        if (!drawn.hasPosition)
+            continue;
+        drawn.position = view.toScreen(vehicle.position);
+        const QPointF anchor = view.toNormalised(drawn.position);
+        if (!std::isnan(vehicle.home.x())) {
+            drawn.hasHome = true;
+            drawn.home = view.toScreenUnwrapped(nearestCopy(anchor, vehicle.home));
+        }
+        const auto trail = m_trails.constFind(vehicle.id);
+        if (!m_trailsVisible || trail == m_trails.cend())
+            continue;
+        // Only the parts of the trail near the screen are kept for drawing.
+        const size_t n = trail->size();
+        std::vector<QPointF> points(n);
+        std::vector<bool> inside(n);
+        for (size_t i = 0; i < n; ++i) {
+            points[i] = view.toScreenUnwrapped(nearestCopy(anchor, (*trail)[i]));
+            inside[i] = screen.contains(points[i]);
+        }
+        QPolygonF run;
+        for (size_t i = 0; i < n; ++i) {
+            const bool keep = inside[i] || (i > 0 && inside[i - 1]) || (i + 1 < n && inside[i + 1]);
+            if (keep) {
+                run.append(points[i]);
+            } else if (!run.isEmpty()) {
+                drawn.trails.push_back(simplifyPolyline(run, 0.4));
+                run.clear();
+            }
+        }
+        if (run.size() > 1)
+            drawn.trails.push_back(simplifyPolyline(run, 0.4));
+    }
+}
+
+void VehicleLayer::paint(QPainter *painter)
+{
+    painter->setRenderHint(QPainter::Antialiasing, true);
+    static const QPainterPath arrow = arrowShape();
+    QFont font = painter->font();
+    font.setPixelSize(11);
+    font.setBold(true);
+    painter->setFont(font);
+    for (size_t row = 0; row < m_drawn.size() && row < m_vehicles.size(); ++row) {
+        const Drawn &drawn = m_drawn[row];
+        const Vehicle &vehicle = m_vehicles[row];
+        const QColor color = vehicle.stale ? QColor(0x90, 0x90, 0x90) : vehicle.color;
+        QColor trailColor = color;
+        trailColor.setAlpha(170);
+        painter->setPen(QPen(trailColor, 2.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        painter->setBrush(Qt::NoBrush);
+        for (const QPolygonF &trail : drawn.trails) {
+            if (trail.size() > 1)
+                painter->drawPolyline(trail);
+        }
+        if (drawn.hasHome) {
+            painter->setPen(QPen(Qt::white, 1.5));
+            painter->setBrush(color.darker(120));
+            painter->drawRect(QRectF(drawn.home - QPointF(7, 7), QSizeF(14, 14)));
+            painter->setPen(Qt::white);
+            painter->drawText(QRectF(drawn.home - QPointF(7, 7), QSizeF(14, 14)), Qt::AlignCenter, QStringLiteral("H"));
+        }
+    }
+    for (size_t row = 0; row < m_drawn.size() && row < m_vehicles.size(); ++row) {
+        const Drawn &drawn = m_drawn[row];
+        if (!drawn.hasPosition)
+            continue;
+        const Vehicle &vehicle = m_vehicles[row];
+        const QColor color = vehicle.stale ? QColor(0x90, 0x90, 0x90) : vehicle.color;
+        painter->save();
+        painter->translate(drawn.position);
+        if (int(row) == m_current) {
+            painter->setPen(QPen(QColor(0xff, 0xd6, 0x00), 3));
+            painter->setBrush(Qt::NoBrush);
+            painter->drawEllipse(QPointF(0, 0), 19, 19);
+        }
+        painter->rotate(vehicle.heading);
+        painter->setPen(QPen(Qt::white, 2.0));
+        painter->setBrush(color);
+        painter->drawPath(arrow);
+        painter->restore();
+        if (!vehicle.label.isEmpty()) {
+            const QPointF at = drawn.position + QPointF(16, -10);
+            painter->setPen(QColor(255, 255, 255, 220));
+            painter->drawText(at + QPointF(1, 1), vehicle.label);
+            painter->setPen(color.darker(160));
+            painter->drawText(at, vehicle.label);
+        }
+    }
+}
+
+void VehicleLayer::mousePressEvent(QMouseEvent *event)
+{
+    m_pressRow = vehicleAt(event->position());
+    if (m_pressRow < 0) {
+        event->ignore();
+        return;
+    }
+    event->accept();
+}
+
+void VehicleLayer::mouseReleaseEvent(QMouseEvent *event)
+{
+    const int row = std::exchange(m_pressRow, -1);
+    if (row >= 0 && row == vehicleAt(event->position())) {
+        setCurrentIndex(row);
+        emit vehicleClicked(row, int(event->modifiers()));
+    }
+}
+
+} // namespace sortie::ui

@@ -1,0 +1,114 @@
+#pragma once
+
+#include "MapLayer.h"
+
+#include <QColor>
+#include <QHash>
+#include <QPolygonF>
+
+#include <deque>
+#include <vector>
+
+#include <QAbstractItemModel>
+
+namespace sortie::ui {
+
+// Vehicles over the map from a list model (one row per vehicle): an arrow turned to the
+// heading, a label, the home position and a trail of where the vehicle has been, which the
+// layer records from the model's position updates. Greyed when the row's stale role is true.
+// Role names are properties so any vehicle model fits.
+class VehicleLayer : public MapLayer
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(QAbstractItemModel *model READ model WRITE setModel NOTIFY modelChanged)
+    Q_PROPERTY(QString idRole MEMBER m_idRole NOTIFY modelChanged)
+    Q_PROPERTY(QString latitudeRole MEMBER m_latitudeRole NOTIFY modelChanged)
+    Q_PROPERTY(QString longitudeRole MEMBER m_longitudeRole NOTIFY modelChanged)
+    Q_PROPERTY(QString headingRole MEMBER m_headingRole NOTIFY modelChanged)
+    Q_PROPERTY(QString labelRole MEMBER m_labelRole NOTIFY modelChanged)
+    Q_PROPERTY(QString homeLatitudeRole MEMBER m_homeLatitudeRole NOTIFY modelChanged)
+    Q_PROPERTY(QString homeLongitudeRole MEMBER m_homeLongitudeRole NOTIFY modelChanged)
+    Q_PROPERTY(QString staleRole MEMBER m_staleRole NOTIFY modelChanged)
+    Q_PROPERTY(int currentIndex READ currentIndex WRITE setCurrentIndex NOTIFY currentIndexChanged)
+    Q_PROPERTY(int trailLength READ trailLength WRITE setTrailLength NOTIFY trailLengthChanged)
+    Q_PROPERTY(bool trailsVisible READ trailsVisible WRITE setTrailsVisible NOTIFY trailLengthChanged)
+    Q_PROPERTY(int count READ count NOTIFY vehiclesChanged)
+
+public:
+    explicit VehicleLayer(QQuickItem *parent = nullptr);
+
+    QAbstractItemModel *model() const { return m_model; }
+    void setModel(QAbstractItemModel *model);
+    int currentIndex() const { return m_current; }
+    void setCurrentIndex(int row);
+    int trailLength() const { return m_trailLength; }
+    void setTrailLength(int points);
+    bool trailsVisible() const { return m_trailsVisible; }
+    void setTrailsVisible(bool visible);
+    int count() const { return int(m_vehicles.size()); }
+
+    Q_INVOKABLE int vehicleAt(QPointF position, qreal radius = 16) const;
+    Q_INVOKABLE int trailPointCount(int row) const;
+    Q_INVOKABLE QPointF vehiclePosition(int row) const;
+    Q_INVOKABLE void clearTrails();
+
+    void paint(QPainter *painter) override;
+
+signals:
+    void modelChanged();
+    void currentIndexChanged();
+    void trailLengthChanged();
+    void vehiclesChanged();
+    void vehicleClicked(int row, int modifiers);
+
+protected:
+    void updatePolish() override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void mouseReleaseEvent(QMouseEvent *event) override;
+
+private:
+    struct Vehicle
+    {
+        QString id;
+        QString label;
+        QPointF position{qQNaN(), qQNaN()}; // normalised
+        QPointF home{qQNaN(), qQNaN()};
+        double heading = 0;
+        bool stale = false;
+        QColor color;
+    };
+    struct Drawn
+    {
+        QPointF position;
+        QPointF home;
+        bool hasPosition = false;
+        bool hasHome = false;
+        std::vector<QPolygonF> trails;
+    };
+    void reload();
+    void reloadRows(int first, int last);
+    void resolveRoles();
+    Vehicle read(int row) const;
+    void record(const Vehicle &vehicle);
+
+    QPointer<QAbstractItemModel> m_model;
+    QString m_idRole = QStringLiteral("vehicleId");
+    QString m_latitudeRole = QStringLiteral("latitude");
+    QString m_longitudeRole = QStringLiteral("longitude");
+    QString m_headingRole = QStringLiteral("heading");
+    QString m_labelRole = QStringLiteral("name");
+    QString m_homeLatitudeRole = QStringLiteral("homeLatitude");
+    QString m_homeLongitudeRole = QStringLiteral("homeLongitude");
+    QString m_staleRole = QStringLiteral("stale");
+    QHash<QString, int> m_roles;
+    std::vector<Vehicle> m_vehicles;
+    QHash<QString, std::deque<QPointF>> m_trails; // by vehicle id: survives row moves
+    std::vector<Drawn> m_drawn;                   // laid out in updatePolish
+    int m_current = -1;
+    int m_trailLength = 3000;
+    bool m_trailsVisible = true;
+    int m_pressRow = -1;
+};
+
+} // namespace sortie::ui

@@ -1,0 +1,47 @@
+#pragma once
+
+#include "TileSource.h"
+
+#include <QList>
+#include <QString>
+
+namespace sortie::ui {
+
+// Tiles from an MBTiles file (an SQLite database of raster tiles) for work without a network.
+// The file is opened read-only; its metadata gives the name, attribution and zoom range.
+// Rows in MBTiles count from the south (TMS), which this class hides.
+class MbTilesTileSource : public TileSource
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(QString file READ file WRITE setFile NOTIFY fileChanged)
+    Q_PROPERTY(bool valid READ isValid NOTIFY fileChanged)
+
+public:
+    explicit MbTilesTileSource(QObject *parent = nullptr);
+    ~MbTilesTileSource() override;
+
+    QString file() const { return m_file; }
+    // Accepts a path or a file:// URL.
+    void setFile(const QString &file);
+    bool isValid() const { return !m_connection.isEmpty(); }
+
+    void requestTile(const TileKey &key) override;
+    QList<TileKey> cancelPending() override;
+
+signals:
+    void fileChanged();
+
+private:
+    bool open(const QString &path, QString *error);
+    void close();
+    void readMetadata();
+    void serveQueue();
+
+    QString m_file;
+    QString m_connection; // QSqlDatabase connection name while open
+    QList<TileKey> m_queue;
+    bool m_serveScheduled = false;
+};
+
+} // namespace sortie::ui

@@ -1,0 +1,129 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Sortie.Ui
+
+// Server, user and password. `connection` is the client's connection controller; without one
+// (no client layer in this build) the form still edits and remembers the fields.
+Page {
+    id: page
+    required property AppSettings appSettings
+    property var connection: null
+    property alias serverField: server
+    property alias userField: user
+    property alias passwordField: password
+
+    readonly property bool connected: connection !== null && connection.state !== "Disconnected"
+
+    signal connectRequested(string server, string user, string password)
+    onConnectRequested: (server, user, password) => {
+        if (page.connection)
+            page.connection.connectToServer(server, user, password)
+    }
+
+    Frame {
+        anchors.centerIn: parent
+        width: Math.min(parent.width - 40, 420)
+        padding: 24
+        ColumnLayout {
+            anchors.fill: parent
+            spacing: 10
+            Label {
+                text: qsTr("Connect to a UgCS server")
+                font.pixelSize: 20
+                font.bold: true
+            }
+            Label { text: qsTr("Server (host:port)") }
+            TextField {
+                id: server
+                objectName: "serverField"
+                Layout.fillWidth: true
+                enabled: !page.connected
+                // Filled once: a binding would overwrite what the operator typed whenever a setting changes.
+                Component.onCompleted: text = page.appSettings.lastServer
+                placeholderText: "localhost:3334"
+                selectByMouse: true
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Host name or address and HCI port of the UgCS server")
+            }
+            Label { text: qsTr("User") }
+            TextField {
+                id: user
+                objectName: "userField"
+                Layout.fillWidth: true
+                enabled: !page.connected
+                Component.onCompleted: text = page.appSettings.lastUser
+                selectByMouse: true
+            }
+            Label { text: qsTr("Password") }
+            TextField {
+                id: password
+                objectName: "passwordField"
+                Layout.fillWidth: true
+                enabled: !page.connected
+                echoMode: TextInput.Password
+                Component.onCompleted: text = page.appSettings.rememberPassword ? page.appSettings.password : ""
+                onAccepted: connectButton.clicked()
+            }
+            CheckBox {
+                id: remember
+                objectName: "rememberCheck"
+                text: qsTr("Remember the password on this computer")
+                checked: page.appSettings.rememberPassword
+                onToggled: page.appSettings.rememberPassword = checked
+            }
+            RowLayout {
+                Layout.fillWidth: true
+                Button {
+                    id: connectButton
+                    objectName: "connectButton"
+                    visible: !page.connected
+                    text: qsTr("Connect")
+                    highlighted: true
+                    enabled: page.connection !== null && server.text.length > 0 && user.text.length > 0
+                    onClicked: {
+                        page.appSettings.lastServer = server.text
+                        page.appSettings.lastUser = user.text
+                        if (remember.checked)
+                            page.appSettings.password = password.text
+                        page.connectRequested(server.text, user.text, password.text)
+                    }
+                    ToolTip.visible: hovered
+                    ToolTip.text: qsTr("Log in (Enter in the password field)")
+                }
+                Button {
+                    objectName: "disconnectButton"
+                    visible: page.connected
+                    text: qsTr("Disconnect")
+                    onClicked: page.connection.disconnectFromServer()
+                }
+                BusyIndicator {
+                    objectName: "busyIndicator"
+                    running: page.connection !== null && page.connection.busy === true
+                    visible: running
+                    implicitWidth: 32
+                    implicitHeight: 32
+                }
+                Item { Layout.fillWidth: true }
+            }
+            Label {
+                objectName: "loginStatus"
+                Layout.fillWidth: true
+                wrapMode: Text.Wrap
+                visible: page.connected
+                text: page.connection && page.connection.ready
+                      ? qsTr("Logged in as %1 at %2.").arg(page.connection.user).arg(page.connection.server)
+                      : page.connection ? qsTr("%1…").arg(page.connection.state) : ""
+            }
+            Label {
+                objectName: "loginMessage"
+                Layout.fillWidth: true
+                wrapMode: Text.Wrap
+                color: "#e53935"
+                text: page.connection === null ? qsTr("No connection controller: this window cannot log in.")
+                                               : page.connection.errorString
+                visible: text.length > 0
+            }
+        }
+    }
+}

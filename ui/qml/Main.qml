@@ -1,0 +1,141 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Sortie.Ui
+
+// The main window: Login, Mission and Live telemetry pages, a status bar that always shows
+// the connection state, keyboard shortcuts with a help overlay (F1).
+ApplicationWindow {
+    id: window
+    required property AppSettings appSettings
+    property var connection: null
+    property var missions: null
+    property var fleet: null
+    property string connectionState: connection ? connection.state : "Disconnected"
+    property string connectionDetail: !connection ? ""
+                                      : connection.detail.length > 0 ? connection.detail
+                                      : connection.ready ? qsTr("%1 at %2").arg(connection.user).arg(connection.server) : ""
+
+    property alias currentPage: tabs.currentIndex
+    property alias loginPage: loginPage
+    property alias missionPage: missionPage
+    property alias telemetryPage: telemetryPage
+    property alias helpOverlay: help
+    readonly property bool dark: palette.window.hslLightness < 0.5
+    readonly property MapView activeMap: tabs.currentIndex === 2 ? telemetryPage.map : missionPage.map
+
+    width: 1280
+    height: 800
+    minimumWidth: 800
+    minimumHeight: 500
+    title: qsTr("Sortie")
+
+    function showPage(index) { tabs.currentIndex = index }
+    function toggleHelp() { help.opened ? help.close() : help.open() }
+    function openMapSource() { mapSourceDialog.open() }
+    function focusMap() { window.activeMap.forceActiveFocus() }
+    function saveRoute() { if (missions) { showPage(1); missions.save() } }
+    function undo() { if (missions) missions.document.undo() }
+    function redo() { if (missions) missions.document.redo() }
+    function deleteSelection() { if (missions && currentPage === 1) missions.document.removeSelected() }
+    function processRoute() { if (missions) missions.process() }
+    function toggleFullScreen() { window.visibility = window.visibility === Window.FullScreen ? Window.Windowed : Window.FullScreen }
+
+    Connections {
+        target: window.connection
+        function onReady() { tabs.currentIndex = 1 }
+    }
+
+    DisplayUnits {
+        id: units
+        systemName: window.appSettings.units
+    }
+
+    header: ToolBar {
+        RowLayout {
+            anchors.fill: parent
+            TabBar {
+                id: tabs
+                objectName: "pageTabs"
+                Layout.fillWidth: true
+                TabButton { text: qsTr("Login"); objectName: "loginTab" }
+                TabButton { text: qsTr("Mission"); objectName: "missionTab" }
+                TabButton { text: qsTr("Live telemetry"); objectName: "telemetryTab" }
+            }
+            ToolButton {
+                text: qsTr("Map…")
+                onClicked: window.openMapSource()
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Choose the map source (Ctrl+M)")
+            }
+            ToolButton {
+                objectName: "unitsButton"
+                text: units.imperial ? qsTr("ft, mph") : qsTr("m, m/s")
+                onClicked: window.appSettings.units = units.imperial ? "metric" : "imperial"
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Switch between metric and imperial units")
+            }
+            ToolButton {
+                text: "?"
+                onClicked: window.toggleHelp()
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Keyboard shortcuts (F1)")
+            }
+        }
+    }
+
+    StackLayout {
+        id: pages
+        anchors.fill: parent
+        currentIndex: tabs.currentIndex
+        LoginPage {
+            id: loginPage
+            objectName: "loginPage"
+            appSettings: window.appSettings
+            connection: window.connection
+        }
+        MissionPage {
+            id: missionPage
+            objectName: "missionPage"
+            missions: window.missions
+            units: units
+            dark: window.dark
+            mapSource: window.appSettings.mapSource
+            tileUrlTemplate: window.appSettings.tileUrlTemplate
+            mbtilesFile: window.appSettings.mbtilesFile
+        }
+        TelemetryPage {
+            id: telemetryPage
+            objectName: "telemetryPage"
+            fleet: window.fleet
+            units: units
+            dark: window.dark
+            mapSource: window.appSettings.mapSource
+            tileUrlTemplate: window.appSettings.tileUrlTemplate
+            mbtilesFile: window.appSettings.mbtilesFile
+        }
+    }
+
+    footer: StatusBar {
+        objectName: "statusBar"
+        connectionState: window.connectionState
+        connectionDetail: window.connectionDetail
+        map: window.activeMap
+        units: units
+    }
+
+    Shortcuts {
+        id: shortcuts
+        window: window
+    }
+    ShortcutHelp {
+        id: help
+        objectName: "shortcutHelp"
+        shortcuts: shortcuts
+    }
+    MapSourceDialog {
+        id: mapSourceDialog
+        objectName: "mapSourceDialog"
+        appSettings: window.appSettings
+    }
+}

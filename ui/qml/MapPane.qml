@@ -1,0 +1,103 @@
+import QtQuick
+import QtQuick.Controls
+import Sortie.Ui
+
+// A map with its furniture: zoom buttons, scale bar, attribution, rubber band. Layers declared
+// inside a MapPane sit above the map and should say `map: pane.map; anchors.fill: parent`.
+// The pane owns its own tile source, chosen by `mapSource`.
+Item {
+    id: pane
+    property alias map: mapView
+    property DisplayUnits units
+    property string mapSource: "offline"        // "offline", "xyz" or "mbtiles"
+    property string tileUrlTemplate: ""
+    property string mbtilesFile: ""
+    property bool dark: false
+    default property alias layers: overlay.data
+
+    XyzTileSource {
+        id: webTiles
+        urlTemplate: pane.mapSource === "xyz" ? pane.tileUrlTemplate : ""
+    }
+    MbTilesTileSource {
+        id: fileTiles
+        file: pane.mapSource === "mbtiles" ? pane.mbtilesFile : ""
+    }
+
+    MapView {
+        id: mapView
+        objectName: "mapView"
+        anchors.fill: parent
+        dark: pane.dark
+        tileSource: pane.mapSource === "xyz" ? webTiles : pane.mapSource === "mbtiles" ? fileTiles : null
+    }
+
+    Item {
+        id: overlay
+        anchors.fill: parent
+    }
+
+    Rectangle {
+        objectName: "rubberBand"
+        visible: mapView.selectionRect.width > 0
+        x: mapView.selectionRect.x
+        y: mapView.selectionRect.y
+        width: mapView.selectionRect.width
+        height: mapView.selectionRect.height
+        color: Qt.rgba(0.12, 0.53, 0.9, 0.15)
+        border.color: "#1e88e5"
+    }
+
+    Column {
+        anchors.right: parent.right
+        anchors.top: parent.top
+        anchors.margins: 10
+        spacing: 4
+        RoundButton {
+            objectName: "zoomInButton"
+            text: "+"
+            focusPolicy: Qt.NoFocus
+            onClicked: mapView.zoomIn()
+            ToolTip.visible: hovered
+            ToolTip.text: qsTr("Zoom in (+, wheel)")
+        }
+        RoundButton {
+            objectName: "zoomOutButton"
+            text: "−"
+            focusPolicy: Qt.NoFocus
+            onClicked: mapView.zoomOut()
+            ToolTip.visible: hovered
+            ToolTip.text: qsTr("Zoom out (−, wheel)")
+        }
+    }
+
+    Rectangle {
+        anchors.left: parent.left
+        anchors.bottom: parent.bottom
+        anchors.margins: 8
+        width: scaleBar.width + 8
+        height: scaleBar.height + 4
+        radius: 3
+        color: pane.dark ? Qt.rgba(0, 0, 0, 0.45) : Qt.rgba(1, 1, 1, 0.6)
+        MapScaleBar {
+            id: scaleBar
+            objectName: "scaleBar"
+            anchors.centerIn: parent
+            width: 140
+            height: 26
+            map: mapView
+            imperial: pane.units ? pane.units.imperial : false
+            color: pane.dark ? "white" : "black"
+        }
+    }
+
+    Label {
+        anchors.right: parent.right
+        anchors.bottom: parent.bottom
+        anchors.margins: 4
+        text: mapView.attribution
+        font.pixelSize: 10
+        padding: 2
+        background: Rectangle { color: pane.dark ? Qt.rgba(0, 0, 0, 0.45) : Qt.rgba(1, 1, 1, 0.6) }
+    }
+}

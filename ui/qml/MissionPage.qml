@@ -1,0 +1,123 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Sortie.Ui
+
+// Mission edit: the route on the map beside its panel and table. With `missions` (the client's
+// MissionController) every gesture becomes an undoable edit of its document; without one the
+// page shows whatever list model `routeModel` is.
+Page {
+    id: page
+    property alias map: pane.map
+    property alias routeLayer: routeLayer
+    property alias areaLayer: areaLayer
+    property alias pane: pane
+    property alias panel: panel
+    property var missions: null
+    readonly property var doc: missions ? missions.document : null
+    property var routeModel: doc ? doc.model : null
+    property var selectionModel: doc ? doc.selection : null
+    property var areaPolygonModel: null
+    property var areaTransectModel: null
+    property bool editable: doc !== null
+    property string tool: ""               // "" or "scan" (drawing an area-scan polygon)
+    property DisplayUnits units
+    property string mapSource: "offline"
+    property string tileUrlTemplate: ""
+    property string mbtilesFile: ""
+    property bool dark: false
+
+    function finishScan() {
+        if (page.doc && scanDraft.count >= 3)
+            page.doc.addAreaScan(scanDraft.coordinates())
+        scanDraft.clear()
+        page.tool = ""
+    }
+
+    CoordinateListModel { id: scanDraft }
+
+    Connections {
+        target: page.missions
+        function onRouteOpened() { if (routeLayer.count > 0) routeLayer.fitToMap(60) }
+    }
+
+    SplitView {
+        anchors.fill: parent
+        MapPane {
+            id: pane
+            SplitView.fillWidth: true
+            units: page.units
+            mapSource: page.mapSource
+            tileUrlTemplate: page.tileUrlTemplate
+            mbtilesFile: page.mbtilesFile
+            dark: page.dark
+            AreaScanLayer {
+                id: areaLayer
+                objectName: "areaLayer"
+                anchors.fill: parent
+                map: pane.map
+                polygonModel: page.areaPolygonModel
+                transectModel: page.areaTransectModel
+                polygon: page.doc ? page.doc.scanPolygon : []
+                path: page.doc ? page.doc.scanPath : []
+            }
+            AreaScanLayer {
+                objectName: "scanDraftLayer"
+                anchors.fill: parent
+                map: pane.map
+                polygonModel: scanDraft
+                color: "#ef6c00"
+                editable: page.tool === "scan"
+                onVertexMoved: (index, coordinate) => scanDraft.setCoordinate(index, coordinate.latitude, coordinate.longitude)
+            }
+            RouteLayer {
+                id: routeLayer
+                objectName: "routeLayer"
+                anchors.fill: parent
+                map: pane.map
+                model: page.routeModel
+                selectionModel: page.selectionModel
+                editable: page.editable && page.tool === ""
+                onWaypointsMoved: (rows, coordinates) => page.doc.moveWaypoints(rows, coordinates)
+                onLegClicked: (leg, coordinate, modifiers) => page.doc.insertWaypoint(leg, coordinate.latitude, coordinate.longitude)
+            }
+            Connections {
+                target: pane.map
+                function onClicked(coordinate, modifiers) {
+                    if (!page.doc || modifiers !== Qt.NoModifier)
+                        return
+                    if (page.tool === "scan")
+                        scanDraft.append(coordinate.latitude, coordinate.longitude)
+                    else
+                        page.doc.addWaypoint(coordinate.latitude, coordinate.longitude)
+                }
+                function onAreaSelected(rect, modifiers) { routeLayer.selectInRect(rect, modifiers) }
+            }
+            Frame {
+                visible: page.tool === "scan"
+                anchors.top: parent.top
+                anchors.horizontalCenter: parent.horizontalCenter
+                anchors.topMargin: 10
+                RowLayout {
+                    Label { text: qsTr("Click the corners of the area (%1 so far)").arg(scanDraft.count) }
+                    Button {
+                        objectName: "finishScanButton"
+                        text: qsTr("Create scan")
+                        enabled: scanDraft.count >= 3
+                        onClicked: page.finishScan()
+                    }
+                    Button {
+                        text: qsTr("Cancel")
+                        onClicked: { scanDraft.clear(); page.tool = "" }
+                    }
+                }
+            }
+        }
+        RoutePanel {
+            id: panel
+            SplitView.preferredWidth: 460
+            SplitView.minimumWidth: 320
+            page: page
+        }
+    }
+}

@@ -1,0 +1,202 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Dialogs
+import QtQuick.Layouts
+import Sortie.Ui
+
+// Beside the map: which route, what to do with it (save, undo, process, upload, files, area
+// scan), how it stands (progress, messages, statistics, validation) and its table.
+Pane {
+    id: panel
+    required property var page
+    readonly property var missions: page.missions
+    readonly property var doc: page.doc
+    readonly property DisplayUnits units: page.units
+    padding: 8
+    contentWidth: availableWidth // the content follows the panel's width, not its own wishes
+    clip: true
+
+    function formatTime(seconds) {
+        const s = Math.round(seconds)
+        return Math.floor(s / 60) + ":" + String(s % 60).padStart(2, "0")
+    }
+
+    FileDialog {
+        id: importDialog
+        title: qsTr("Import a route")
+        nameFilters: [qsTr("Routes (*.sortie *.plan *.waypoints *.txt *.kml)"), qsTr("All files (*)")]
+        onAccepted: panel.doc.importFile(selectedFile)
+    }
+    FileDialog {
+        id: exportDialog
+        title: qsTr("Export the route")
+        fileMode: FileDialog.SaveFile
+        nameFilters: [qsTr("Sortie (*.sortie)"), qsTr("QGroundControl plan (*.plan)"), qsTr("Waypoint list (*.waypoints)"), qsTr("KML (*.kml)")]
+        onAccepted: panel.doc.exportFile(selectedFile)
+    }
+
+    ColumnLayout {
+        anchors.fill: parent
+        spacing: 6
+
+        Label {
+            visible: panel.missions === null
+            objectName: "routeSummary"
+            text: page.routeModel ? qsTr("%n waypoint(s)", "", page.routeLayer.count) : qsTr("No route open. Log in to open a mission.")
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
+        }
+
+        RowLayout {
+            visible: panel.missions !== null
+            Layout.fillWidth: true
+            ComboBox {
+                id: routePicker
+                objectName: "routePicker"
+                Layout.fillWidth: true
+                Layout.preferredWidth: 120
+                model: panel.missions ? panel.missions.routes : null
+                textRole: "name"
+                valueRole: "objectId"
+                displayText: currentIndex < 0 ? qsTr("Choose a route…") : currentText
+            }
+            Button {
+                objectName: "openRouteButton"
+                text: qsTr("Open")
+                enabled: routePicker.currentIndex >= 0
+                onClicked: panel.missions.openRoute(routePicker.currentValue)
+            }
+        }
+
+        Flow {
+            visible: panel.missions !== null
+            Layout.fillWidth: true
+            spacing: 4
+            Button { objectName: "saveButton"; text: qsTr("Save"); enabled: panel.missions && panel.missions.routeId >= 0 || (panel.doc && panel.doc.modified); onClicked: panel.missions.save()
+                     ToolTip.visible: hovered; ToolTip.text: qsTr("Save on the server, under its lock (Ctrl+S)") }
+            Button { objectName: "undoButton"; text: qsTr("Undo"); enabled: panel.doc && panel.doc.canUndo; onClicked: panel.doc.undo()
+                     ToolTip.visible: hovered; ToolTip.text: panel.doc ? qsTr("Undo %1 (Ctrl+Z)").arg(panel.doc.undoText) : "" }
+            Button { objectName: "redoButton"; text: qsTr("Redo"); enabled: panel.doc && panel.doc.canRedo; onClicked: panel.doc.redo()
+                     ToolTip.visible: hovered; ToolTip.text: panel.doc ? qsTr("Redo %1 (Ctrl+Shift+Z)").arg(panel.doc.redoText) : "" }
+            Button { text: qsTr("Delete"); enabled: panel.doc && panel.doc.selectedRows.length > 0; onClicked: panel.doc.removeSelected()
+                     ToolTip.visible: hovered; ToolTip.text: qsTr("Delete the selected waypoints (Del)") }
+            Button { objectName: "scanToolButton"; text: qsTr("Area scan"); checkable: true; checked: page.tool === "scan"
+                     onToggled: page.tool = checked ? "scan" : ""
+                     ToolTip.visible: hovered; ToolTip.text: qsTr("Draw an area to scan: click its corners on the map") }
+            Button { text: qsTr("Import…"); onClicked: importDialog.open() }
+            Button { text: qsTr("Export…"); onClicked: exportDialog.open() }
+        }
+
+        RowLayout {
+            visible: panel.missions !== null
+            Layout.fillWidth: true
+            Button { objectName: "processButton"; text: qsTr("Process"); onClicked: panel.missions.process()
+                     ToolTip.visible: hovered; ToolTip.text: qsTr("Let the server check and prepare the route (Ctrl+P)") }
+            ComboBox {
+                id: vehiclePicker
+                objectName: "vehiclePicker"
+                Layout.fillWidth: true
+                Layout.preferredWidth: 120
+                displayText: currentIndex < 0 ? qsTr("Vehicle…") : currentText
+                model: panel.missions ? panel.missions.vehicles : null
+                textRole: "name"
+                valueRole: "objectId"
+            }
+            Button { objectName: "uploadButton"; text: qsTr("Upload"); enabled: vehiclePicker.currentIndex >= 0
+                     onClicked: panel.missions.upload(vehiclePicker.currentValue) }
+        }
+
+        Frame {
+            objectName: "conflictBanner"
+            visible: panel.missions !== null && panel.missions.conflict
+            Layout.fillWidth: true
+            background: Rectangle { color: "#fff3e0"; border.color: "#fb8c00"; radius: 3 }
+            ColumnLayout {
+                anchors.fill: parent
+                Label { text: panel.missions ? panel.missions.conflictText : ""; wrapMode: Text.Wrap; Layout.fillWidth: true; color: "#5d4037" }
+                RowLayout {
+                    Button { objectName: "keepMineButton"; text: qsTr("Keep mine (overwrite theirs)"); onClicked: panel.missions.keepMine() }
+                    Button { objectName: "takeTheirsButton"; text: qsTr("Take theirs (drop my edits)"); onClicked: panel.missions.takeTheirs() }
+                }
+            }
+        }
+
+        ColumnLayout {
+            visible: panel.missions !== null && panel.missions.busy
+            Layout.fillWidth: true
+            Label { text: panel.missions ? panel.missions.activity + "…" : "" }
+            ProgressBar {
+                objectName: "progressBar"
+                Layout.fillWidth: true
+                indeterminate: !panel.missions || panel.missions.progressMaximum <= 0
+                from: 0
+                to: panel.missions ? Math.max(1, panel.missions.progressMaximum) : 1
+                value: panel.missions ? panel.missions.progressValue : 0
+            }
+        }
+
+        Label {
+            objectName: "missionMessage"
+            visible: text.length > 0
+            text: panel.missions ? [panel.missions.message, panel.doc.message].filter(m => m.length > 0).join("\n") : ""
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
+        }
+
+        GridLayout {
+            objectName: "statistics"
+            visible: panel.doc !== null
+            columns: 4
+            Layout.fillWidth: true
+            Label { text: qsTr("Length") ; opacity: 0.7 }
+            Label { text: panel.doc ? panel.units.formatDistance(panel.doc.analyzer.lengthMeters) : "" }
+            Label { text: qsTr("Time"); opacity: 0.7 }
+            Label { text: panel.doc ? panel.formatTime(panel.doc.analyzer.flightTimeSeconds) : "" }
+            Label { text: qsTr("Waypoints"); opacity: 0.7 }
+            Label { text: panel.doc ? panel.doc.analyzer.waypointCount : "" }
+            Label { text: qsTr("Photos"); opacity: 0.7 }
+            Label { text: panel.doc ? panel.doc.analyzer.photoCount : "" }
+        }
+
+        ScanEditor {
+            visible: panel.doc !== null && panel.doc.scanPolygon.length > 0
+            Layout.fillWidth: true
+            doc: panel.doc
+        }
+
+        ListView {
+            objectName: "validationList"
+            visible: count > 0
+            Layout.fillWidth: true
+            Layout.preferredHeight: Math.min(contentHeight, 90)
+            clip: true
+            model: panel.doc ? panel.doc.analyzer.issues : null
+            delegate: ItemDelegate {
+                required property string severity
+                required property string message
+                required property int segment
+                width: ListView.view.width
+                text: (severity === "error" ? "⛔ " : "⚠ ") + message
+                onClicked: if (segment >= 0) panel.doc.selectRows([segment])
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Select the segment")
+            }
+        }
+
+        ListView {
+            objectName: "serverMessages"
+            visible: count > 0
+            Layout.fillWidth: true
+            Layout.preferredHeight: Math.min(contentHeight, 70)
+            clip: true
+            model: panel.missions ? panel.missions.serverMessages : []
+            delegate: Label { required property string modelData; text: modelData; wrapMode: Text.Wrap; width: ListView.view.width }
+        }
+
+        WaypointTable {
+            Layout.fillWidth: true
+            Layout.fillHeight: true
+            page: panel.page
+        }
+    }
+}

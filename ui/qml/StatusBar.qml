@@ -1,0 +1,50 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Sortie.Ui
+
+// The window's bottom line: connection state (always visible), what the map shows, and the
+// coordinates under the cursor.
+ToolBar {
+    id: bar
+    property string connectionState: "Disconnected"
+    property string connectionDetail: ""
+    property MapView map
+    property DisplayUnits units
+
+    readonly property color stateColor: connectionState === "Ready" ? "#43a047"
+                                      : connectionState === "Disconnected" ? "#9e9e9e"
+                                      : connectionState === "Reconnecting" ? "#fb8c00" : "#1e88e5"
+    RowLayout {
+        anchors.fill: parent
+        anchors.leftMargin: 8
+        anchors.rightMargin: 8
+        spacing: 12
+        Rectangle {
+            width: 10; height: 10; radius: 5
+            color: bar.stateColor
+        }
+        Label {
+            objectName: "connectionStateLabel"
+            text: bar.connectionDetail.length > 0 ? bar.connectionState + " — " + bar.connectionDetail : bar.connectionState
+            elide: Text.ElideRight
+            Layout.maximumWidth: 420
+        }
+        ToolSeparator {}
+        Label {
+            objectName: "tileStatusLabel"
+            text: bar.map ? bar.map.tileStatus : ""
+            elide: Text.ElideRight
+            Layout.fillWidth: true
+        }
+        Label {
+            objectName: "cursorLabel"
+            text: bar.map && bar.map.cursorInside && bar.units ? bar.units.formatCoordinate(bar.map.cursorCoordinate) : ""
+            font.family: "monospace"
+        }
+        Label {
+            objectName: "zoomLabel"
+            text: bar.map ? qsTr("zoom %1").arg(bar.map.zoomLevel.toFixed(1)) : ""
+        }
+    }
+}

@@ -1,0 +1,155 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Sortie.Ui
+
+// Live telemetry: every vehicle (HCI and VCI side by side) on the map, turned to its heading,
+// with its trail and home; the chosen one's instruments, plot and command bar.
+Page {
+    id: page
+    property alias map: pane.map
+    property alias vehicleLayer: vehicleLayer
+    property alias pane: pane
+    property var fleet: null
+    property var vehicleModel: fleet
+    readonly property var current: fleet && vehicleLayer.currentIndex >= 0 ? fleet.vehicleAt(vehicleLayer.currentIndex) : null
+    property bool goMode: false
+    property DisplayUnits units
+    property string mapSource: "offline"
+    property string tileUrlTemplate: ""
+    property string mbtilesFile: ""
+    property bool dark: false
+
+    SplitView {
+        anchors.fill: parent
+        Pane {
+            SplitView.preferredWidth: 250
+            SplitView.minimumWidth: 180
+            contentWidth: availableWidth
+            ColumnLayout {
+                anchors.fill: parent
+                Label { text: qsTr("Vehicles"); font.bold: true; font.pixelSize: 16 }
+                Label {
+                    objectName: "vehicleSummary"
+                    visible: vehicleLayer.count === 0
+                    text: qsTr("No vehicles. Log in to a server or connect a VCI vehicle.")
+                    wrapMode: Text.Wrap
+                    Layout.fillWidth: true
+                }
+                ListView {
+                    objectName: "vehicleList"
+                    Layout.fillWidth: true
+                    Layout.fillHeight: true
+                    clip: true
+                    model: page.vehicleModel
+                    currentIndex: vehicleLayer.currentIndex
+                    delegate: ItemDelegate {
+                        required property int index
+                        required property var model
+                        width: ListView.view.width
+                        highlighted: index === vehicleLayer.currentIndex
+                        text: (model.name !== undefined ? model.name : qsTr("Vehicle %1").arg(index + 1))
+                              + (model.protocol !== undefined ? "  ·  " + model.protocol + "  ·  " + model.linkState : "")
+                        opacity: model.stale === true ? 0.5 : 1
+                        onClicked: vehicleLayer.currentIndex = index
+                    }
+                }
+                RowLayout {
+                    visible: page.fleet !== null
+                    Layout.fillWidth: true
+                    TextField {
+                        id: vciAddress
+                        objectName: "vciAddressField"
+                        Layout.fillWidth: true
+                        placeholderText: "tcp://host:5760"
+                        selectByMouse: true
+                        ToolTip.visible: hovered
+                        ToolTip.text: qsTr("A vehicle reached directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600")
+                    }
+                    Button {
+                        objectName: "vciConnectButton"
+                        text: qsTr("Add")
+                        enabled: vciAddress.text.length > 0
+                        onClicked: if (page.fleet.addVciVehicle(vciAddress.text)) vciAddress.text = ""
+                    }
+                }
+                Label {
+                    visible: page.fleet !== null && page.fleet.message.length > 0
+                    text: page.fleet ? page.fleet.message : ""
+                    color: "#e53935"
+                    wrapMode: Text.Wrap
+                    Layout.fillWidth: true
+                }
+            }
+        }
+        ColumnLayout {
+            SplitView.fillWidth: true
+            spacing: 0
+            MapPane {
+                id: pane
+                Layout.fillWidth: true
+                Layout.fillHeight: true
+                units: page.units
+                mapSource: page.mapSource
+                tileUrlTemplate: page.tileUrlTemplate
+                mbtilesFile: page.mbtilesFile
+                dark: page.dark
+                VehicleLayer {
+                    id: vehicleLayer
+                    objectName: "vehicleLayer"
+                    anchors.fill: parent
+                    map: pane.map
+                    model: page.vehicleModel
+                }
+                Connections {
+                    target: pane.map
+                    function onClicked(coordinate, modifiers) {
+                        if (page.goMode && page.current)
+                            commands.confirm(qsTr("Fly %1 to %2?").arg(page.current.name).arg(page.units.formatCoordinate(coordinate)),
+                                             () => { page.fleet.goTo(vehicleLayer.currentIndex, coordinate.latitude, coordinate.longitude); page.goMode = false })
+                    }
+                }
+            }
+            CommandBar {
+                id: commands
+                Layout.fillWidth: true
+                page: page
+            }
+        }
+        ColumnLayout {
+            SplitView.preferredWidth: 300
+            SplitView.minimumWidth: 220
+            InstrumentPanel {
+                Layout.fillWidth: true
+                vehicle: page.current
+                units: page.units
+            }
+            RowLayout {
+                Layout.fillWidth: true
+                ComboBox {
+                    id: fieldPicker
+                    objectName: "plotFieldPicker"
+                    Layout.fillWidth: true
+                    model: plot.availableFields()
+                    currentIndex: Math.max(0, model.indexOf("altitudeAgl"))
+                }
+                ComboBox {
+                    id: windowPicker
+                    model: [qsTr("1 min"), qsTr("5 min"), qsTr("30 min")]
+                    currentIndex: 1
+                }
+            }
+            TelemetryPlot {
+                id: plot
+                objectName: "telemetryPlot"
+                Layout.fillWidth: true
+                Layout.fillHeight: true
+                Layout.minimumHeight: 160
+                vehicle: page.current
+                fields: [fieldPicker.currentText]
+                windowSeconds: [60, 300, 1800][windowPicker.currentIndex]
+                textColor: page.palette.windowText
+            }
+        }
+    }
+}

@@ -1,0 +1,103 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+
+// The route as a table beside the map: one row per segment, cells edited in place (each edit is
+// an undoable setData on the model), a click selects (Ctrl toggles, Shift extends), and the bar
+// above edits every selected row at once.
+ColumnLayout {
+    id: table
+    required property var page
+    readonly property var doc: page.doc
+    readonly property var selected: doc ? doc.selectedRows : []
+    spacing: 4
+
+    component Cell: TextField {
+        property string role
+        property var rowModel
+        readOnly: !table.doc || rowModel[role] === undefined
+        text: rowModel[role] === undefined ? "" : Number(rowModel[role]).toFixed(role === "latitude" || role === "longitude" ? 6 : 1)
+        selectByMouse: true
+        padding: 2
+        onEditingFinished: {
+            const value = Number(text)
+            if (readOnly || isNaN(value) || Math.abs(value - Number(rowModel[role])) < 1e-7)
+                return
+            rowModel[role] = value // setData: one undoable edit
+        }
+    }
+
+    RowLayout {
+        visible: table.doc !== null
+        Layout.fillWidth: true
+        Label { text: qsTr("%n selected:", "", table.selected.length) }
+        TextField { id: bulkAltitude; objectName: "bulkAltitude"; placeholderText: qsTr("alt m"); Layout.preferredWidth: 60 }
+        Button {
+            objectName: "bulkAltitudeButton"
+            text: qsTr("Set")
+            enabled: table.selected.length > 0 && bulkAltitude.text.length > 0
+            onClicked: table.doc.editor.setAltitude(table.selected, Number(bulkAltitude.text))
+        }
+        TextField { id: bulkSpeed; placeholderText: qsTr("m/s"); Layout.preferredWidth: 50 }
+        Button {
+            text: qsTr("Set")
+            enabled: table.selected.length > 0 && bulkSpeed.text.length > 0
+            onClicked: table.doc.editor.setSpeed(table.selected, Number(bulkSpeed.text))
+        }
+        ComboBox {
+            model: ["AGL", "AMSL"]
+            enabled: table.selected.length > 0
+            Layout.preferredWidth: 76
+            onActivated: table.doc.editor.setAltitudeType(table.selected, currentText)
+            ToolTip.visible: hovered
+            ToolTip.text: qsTr("Altitude above ground (AGL) or above mean sea level (AMSL)")
+        }
+    }
+
+    RowLayout {
+        Layout.fillWidth: true
+        spacing: 2
+        Repeater {
+            model: [[qsTr("#"), 28], [qsTr("Latitude"), 80], [qsTr("Longitude"), 80], [qsTr("Alt"), 46], [qsTr("Type"), 44], [qsTr("Speed"), 40], [qsTr("Actions"), 60]]
+            Label { required property var modelData; text: modelData[0]; font.bold: true; Layout.preferredWidth: modelData[1] }
+        }
+    }
+
+    ListView {
+        id: list
+        objectName: "waypointList"
+        Layout.fillWidth: true
+        Layout.fillHeight: true
+        clip: true
+        model: table.page.routeModel
+        ScrollBar.vertical: ScrollBar {}
+        delegate: Rectangle {
+            id: row
+            required property int index
+            required property var model
+            readonly property bool isSelected: table.selected.indexOf(index) >= 0
+            width: ListView.view.width
+            height: 28
+            color: isSelected ? Qt.rgba(1.0, 0.56, 0.0, 0.25) : index % 2 ? Qt.rgba(0.5, 0.5, 0.5, 0.08) : "transparent"
+            MouseArea {
+                anchors.fill: parent
+                onClicked: mouse => { if (table.doc) table.doc.clickRow(row.index, mouse.modifiers) }
+            }
+            RowLayout {
+                anchors.fill: parent
+                spacing: 2
+                Label { text: row.index + 1; Layout.preferredWidth: 28; horizontalAlignment: Text.AlignHCenter }
+                Cell { role: "latitude"; rowModel: row.model; Layout.preferredWidth: 80 }
+                Cell { role: "longitude"; rowModel: row.model; Layout.preferredWidth: 80 }
+                Cell { role: "altitude"; rowModel: row.model; Layout.preferredWidth: 46 }
+                Label { text: row.model.altitudeType !== undefined ? row.model.altitudeType : ""; Layout.preferredWidth: 44 }
+                Cell { role: "speed"; rowModel: row.model; Layout.preferredWidth: 40 }
+                Label {
+                    text: row.model.kind === "areaScan" ? qsTr("Area scan") : row.model.actionsSummary !== undefined ? row.model.actionsSummary : ""
+                    elide: Text.ElideRight
+                    Layout.fillWidth: true
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,52 @@
+#pragma once
+
+#include <QGeoCoordinate>
+#include <QObject>
+#include <QtQml/qqmlregistration.h>
+
+namespace sortie::ui {
+
+// How numbers are shown to the operator: metric or imperial distances, speeds and altitudes,
+// and decimal or degrees-minutes-seconds coordinates. Views format through it; nothing else
+// converts units.
+class DisplayUnits : public QObject
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(System system READ system WRITE setSystem NOTIFY changed)
+    Q_PROPERTY(CoordinateFormat coordinateFormat READ coordinateFormat WRITE setCoordinateFormat NOTIFY changed)
+    Q_PROPERTY(QString systemName READ systemName WRITE setSystemName NOTIFY changed)
+    Q_PROPERTY(bool imperial READ isImperial NOTIFY changed)
+
+public:
+    enum class System { Metric, Imperial };
+    Q_ENUM(System)
+    enum class CoordinateFormat { Decimal, DegreesMinutesSeconds };
+    Q_ENUM(CoordinateFormat)
+
+    explicit DisplayUnits(QObject *parent = nullptr);
+
+    System system() const { return m_system; }
+    void setSystem(System system);
+    CoordinateFormat coordinateFormat() const { return m_coordinates; }
+    void setCoordinateFormat(CoordinateFormat format);
+    // "metric" or "imperial", as settings store it.
+    QString systemName() const;
+    void setSystemName(const QString &name);
+    bool isImperial() const { return m_system == System::Imperial; }
+
+    Q_INVOKABLE QString formatDistance(double meters) const;
+    Q_INVOKABLE QString formatAltitude(double meters) const;
+    Q_INVOKABLE QString formatSpeed(double metersPerSecond) const;
+    Q_INVOKABLE QString formatCoordinate(const QGeoCoordinate &coordinate) const;
+    Q_INVOKABLE QString formatLatLon(double latitude, double longitude) const;
+
+signals:
+    void changed();
+
+private:
+    System m_system = System::Metric;
+    CoordinateFormat m_coordinates = CoordinateFormat::Decimal;
+};
+
+} // namespace sortie::ui
