@@ -17,7 +17,8 @@ for t in $targets; do
   work=$(mktemp -d)
   [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
   echo "== $t: ${seconds}s on $(ls "$work" | wc -l) seeds"
-  if "$build/tests/fuzz/$t" -max_total_time="$seconds" -print_final_stats=1 -max_len=65536 "$work" \
+  mkdir -p "$build/artifacts"
+  if "$build/tests/fuzz/$t" -artifact_prefix="$build/artifacts/" -max_total_time="$seconds" -print_final_stats=1 -max_len=65536 "$work" \
        > "$work.log" 2>&1; then
     grep -E 'stat::number_of_executed_units|Done' "$work.log" | tail -2
   else

@@ -1,5 +1,7 @@
 #include "WplFormat.h"
 
+#include <cmath>
+
 #include "NumberText.h"
 
 #include <QList>
@@ -77,7 +79,8 @@ Result<ImportedRoute> readWpl(const QByteArray &input)
             v[i] = *n;
         }
         for (int i : {0, 1, 2, 3, 11})
-            if (v[i] != double(int(v[i])) || v[i] < 0)
+            // Range first: converting a double beyond int's range to int is undefined (a fuzz finding).
+            if (!(v[i] >= 0 && v[i] <= 2147483647.0) || v[i] != std::floor(v[i]))
                 return lineError(lineNo, QStringLiteral("field %1 (%2) must be a whole number, found %3")
                                              .arg(i + 1).arg(QLatin1String(kFieldNames[i])).arg(v[i]));
         if (int(v[0]) != expectedIndex)
