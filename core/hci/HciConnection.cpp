@@ -6,6 +6,7 @@
 #include "HciSubscription.h"
 #include "Messages.pb.h"
 
+#include <QScopeGuard>
 #include <QTcpSocket>
 
 namespace sortie::hci {
@@ -49,6 +50,13 @@ HciConnection::HciConnection(QObject *parent)
 HciConnection::~HciConnection()
 {
     m_socket->disconnect(this);
+    if (m_reading > 0) {
+        // Deleted from a slot during the socket's readyRead: Qt touches the socket after the signal
+        // returns, so it must outlive this object by one event-loop turn.
+        m_socket->setParent(nullptr);
+        m_socket->abort();
+        m_socket->deleteLater();
+    }
     const auto pending = std::exchange(m_pending, {});
     for (const auto &reply : pending)
         if (reply)
@@ -210,6 +218,11 @@ void HciConnection::unroute(int32_t subscriptionId)
 void HciConnection::onReadyRead()
 {
     QPointer<HciConnection> self(this);
+    ++m_reading;
+    const auto done = qScopeGuard([&] {
+        if (self)
+            --m_reading;
+    });
     while (m_state == State::Connected && m_socket->bytesAvailable() > 0) {
         const QByteArray chunk = m_socket->read(64 * 1024);
         m_decoder.feed(std::string_view(chunk.constData(), size_t(chunk.size())));

@@ -96,6 +96,7 @@ private:
     quint64 m_framesReceived = 0;
     quint64 m_framesDropped = 0;
     quint64 m_unrouted = 0;
+    int m_reading = 0; // > 0 while inside the socket's readyRead
 };
 
 } // namespace sortie::hci

@@ -35,6 +35,9 @@ inline constexpr std::string_view kParameterPrefix = "/parameters/";
 inline constexpr std::array<std::string_view, 6> kTelemetry = {kPosition, kAttitude, kSpeed, kBattery, kGps, kHome};
 // Sent when they change while subscribed (and once right after SUBSCRIBE).
 inline constexpr std::array<std::string_view, 4> kState = {kArmed, kMode, kMission, kMissionProgress};
+// Of those, the ones also repeated at least every kStatusRepeatMs, so a silent vehicle shows as stale.
+inline constexpr std::array<std::string_view, 3> kStatus = {kArmed, kMode, kMissionProgress};
+inline constexpr int kStatusRepeatMs = 1000;
 
 // The flight modes, as /state/mode names them.
 inline constexpr std::array<std::string_view, 7> kModes = {"manual", "hold", "takeoff", "auto", "guided", "land", "return_home"};

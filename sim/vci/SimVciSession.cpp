@@ -1,6 +1,7 @@
 #include "SimVciSession.h"
 
 #include "SimVciVehicle.h"
+#include "VciProfile.h"
 
 #include <QIODevice>
 
@@ -22,6 +23,8 @@ SimVciSession::SimVciSession(QIODevice *device, SimVciVehicle *vehicle, QObject 
     });
     m_telemetry.setTimerType(Qt::PreciseTimer);
     connect(&m_telemetry, &QTimer::timeout, this, &SimVciSession::sendTelemetry);
+    connect(&m_status, &QTimer::timeout, this, &SimVciSession::repeatStatus);
+    m_status.start(vci::profile::kStatusRepeatMs);
     retime();
     if (device->bytesAvailable() > 0)
         QMetaObject::invokeMethod(this, &SimVciSession::onReadyRead, Qt::QueuedConnection);
@@ -49,6 +52,7 @@ void SimVciSession::drop()
         return;
     reset();
     m_telemetry.stop();
+    m_status.stop();
     m_device->close();
     emit dropped();
 }
@@ -145,6 +149,17 @@ void SimVciSession::sendTelemetry()
     retime();
     for (const QString &uri : std::as_const(m_subscriptions)) {
         if (m_vehicle->isPeriodic(uri.toStdString()))
+            notify(uri);
+        if (!m_device)
+            return;
+    }
+}
+
+void SimVciSession::repeatStatus()
+{
+    for (std::string_view status : vci::profile::kStatus) {
+        const QString uri = QString::fromLatin1(status.data(), qsizetype(status.size()));
+        if (m_subscriptions.contains(uri))
             notify(uri);
         if (!m_device)
             return;

@@ -47,6 +47,7 @@ private:
     void answerOne();
     SimVciReply serve(const vci::VciMessage &request);
     void sendTelemetry();
+    void repeatStatus();
     void notify(const QString &uri);
     void send(std::string bytes);
     void retime();
@@ -58,6 +59,7 @@ private:
     bool m_answering = false;
     QSet<QString> m_subscriptions;
     QTimer m_telemetry;
+    QTimer m_status; // repeats the status resources (profile::kStatus)
     quint64 m_notifications = 0, m_sent = 0;
 };
 

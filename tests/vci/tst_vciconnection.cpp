@@ -26,6 +26,7 @@ private slots:
     void putArmModeAndRefusals();
     void uploadMissionAndSeeItFlown();
     void unsubscribeAll();
+    void statusIsRepeated();
     void requestsGoOneAtATime();
     void notifyWhileGetOutstanding();
     void timeoutAndLateAnswer();
@@ -217,6 +218,22 @@ void TstVciConnection::unsubscribeAll()
     QTRY_VERIFY(g2.done);
     QCOMPARE(notified.count(), atAnswer);
     QVERIFY(m_sim->session()->subscriptions().isEmpty());
+}
+
+void TstVciConnection::statusIsRepeated()
+{
+    // Unchanged status still arrives now and then, so a silent vehicle can be told from a quiet one.
+    QSignalSpy notified(m_conn.get(), &VciConnection::notified);
+    m_conn->subscribe(QStringLiteral("/state/armed"));
+    m_conn->subscribe(QStringLiteral("/mission"));
+    QTRY_VERIFY_WITH_TIMEOUT(notified.count() >= 4, 5000);
+    int armed = 0, mission = 0;
+    for (const auto &args : notified) {
+        armed += args.at(0).toString() == QLatin1String("/state/armed");
+        mission += args.at(0).toString() == QLatin1String("/mission");
+    }
+    QVERIFY(armed >= 3);
+    QCOMPARE(mission, 1); // the mission list only once, after SUBSCRIBE: it has not changed
 }
 
 void TstVciConnection::requestsGoOneAtATime()
