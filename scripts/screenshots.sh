@@ -10,5 +10,5 @@ cmake --build "$build" --target tst_mainwindow tst_uiflows
 mkdir -p docs/images
 export QT_QPA_PLATFORM=offscreen SORTIE_SCREENSHOT_DIR="$PWD/docs/images"
 "$build/tests/ui/tst_mainwindow" screenshots followsADarkPalette
-"$build/tests/ui/tst_uiflows" badPasswordThenGood areaScanOnTheMap
+"$build/tests/ui/tst_uiflows" badPasswordThenGood areaScanOnTheMap liveTelemetryAndCommands
 ls -l docs/images/*.png

@@ -258,7 +258,7 @@ private slots:
         verifyShown("vehicleLayer");
         verifyShown("vehicleList");
         QTest::qWait(100);
-        save(QStringLiteral("telemetry.png"));
+        save(QStringLiteral("vehicle-layer.png"));
 
         // Keyboard help
         QTest::keyClick(m_window, Qt::Key_F1);

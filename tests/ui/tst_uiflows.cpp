@@ -377,7 +377,7 @@ private slots:
         auto *plot = find<ui::TelemetryPlot>("telemetryPlot");
         QTRY_VERIFY(plot->sampleCount() > 5);
         QTest::qWait(200);
-        m_window->grabWindow().save(QDir(qEnvironmentVariable("SORTIE_SCREENSHOT_DIR", QStringLiteral(SORTIE_SCREENSHOT_DEFAULT_DIR))).filePath(QStringLiteral("telemetry-live.png")));
+        m_window->grabWindow().save(QDir(qEnvironmentVariable("SORTIE_SCREENSHOT_DIR", QStringLiteral(SORTIE_SCREENSHOT_DEFAULT_DIR))).filePath(QStringLiteral("telemetry.png")));
     }
 };
 

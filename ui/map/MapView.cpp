@@ -49,15 +49,8 @@ void MapView::setCenter(const QGeoCoordinate &center)
     changeViewport(next);
 }
 
-void MapView::setLatitude(double latitude)
-{
-    setCenter(QGeoCoordinate(latitude, longitude()));
-}
-
-void MapView::setLongitude(double longitude)
-{
-    setCenter(QGeoCoordinate(latitude(), longitude));
-}
+void MapView::setLatitude(double latitude) { setCenter(QGeoCoordinate(latitude, longitude())); }
+void MapView::setLongitude(double longitude) { setCenter(QGeoCoordinate(latitude(), longitude)); }
 
 void MapView::setZoomLevel(double zoom)
 {

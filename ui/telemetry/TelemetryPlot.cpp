@@ -97,7 +97,16 @@ void TelemetryPlot::updatePolish()
             if (const auto last = history.last(*field))
                 newest = std::max<int64_t>(newest, last->time);
         }
-        const int64_t from = newest - int64_t(m_windowSeconds * 1000);
+        // The window, or less while the history is shorter: the data fills the plot from the start.
+        int64_t from = newest - int64_t(m_windowSeconds * 1000);
+        int64_t oldest = newest;
+        for (const auto &[field, name] : chosen) {
+            const auto &series = history.series(field);
+            if (!series.empty())
+                oldest = std::min<int64_t>(oldest, series.at(0).time);
+        }
+        from = std::max(from, oldest);
+        m_spanSeconds = std::max(1.0, double(newest - from) / 1000.0);
         std::vector<vehicle::TelemetrySample> samples;
         for (const auto &[field, name] : chosen) {
             samples.clear();
@@ -121,7 +130,7 @@ void TelemetryPlot::updatePolish()
             QPolygonF points;
             points.reserve(qsizetype(samples.size()));
             for (const auto &s : samples) {
-                const double x = area.left() + (double(s.time - from) / (m_windowSeconds * 1000.0)) * area.width();
+                const double x = area.left() + (double(s.time - from) / (m_spanSeconds * 1000.0)) * area.width();
                 const double y = area.bottom() - (s.value * scale - series.minimum) / (series.maximum - series.minimum) * area.height();
                 points.append(QPointF(x, y));
             }
@@ -148,7 +157,7 @@ void TelemetryPlot::paint(QPainter *painter)
     painter->setFont(font);
     painter->setPen(m_textColor);
     painter->drawText(QRectF(area.left(), area.bottom() + 2, area.width(), 16), Qt::AlignLeft,
-                      tr("−%1 s").arg(m_windowSeconds, 0, 'f', 0));
+                      tr("−%1 s").arg(m_spanSeconds, 0, 'f', 0));
     painter->drawText(QRectF(area.left(), area.bottom() + 2, area.width(), 16), Qt::AlignRight, tr("now"));
     if (m_series.empty()) {
         painter->drawText(area, Qt::AlignCenter, m_vehicle ? tr("No data yet") : tr("Choose a vehicle"));

@@ -64,6 +64,7 @@ private:
     QPointer<vehicle::Vehicle> m_vehicle;
     QStringList m_fields{QStringLiteral("altitudeAgl")};
     double m_windowSeconds = 300;
+    double m_spanSeconds = 300;   // what the time axis shows: the window, or the history if shorter
     QColor m_textColor = Qt::black;
     std::vector<Series> m_series; // built in updatePolish
     int m_sampleCount = 0;
