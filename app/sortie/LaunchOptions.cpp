@@ -71,7 +71,9 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     const QCommandLineOption vci(QStringLiteral("vci"),
                                  QCoreApplication::translate("sortie", "Connect a vehicle directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600."),
                                  QStringLiteral("address"));
-    parser.addOptions({demo, server, user, vci});
+    const QCommandLineOption reportStartup(QStringLiteral("report-startup"),
+                                           QCoreApplication::translate("sortie", "Print the start-up time and memory in use, then quit (for benchmarks)."));
+    parser.addOptions({demo, server, user, vci, reportStartup});
 
     if (!parser.parse(arguments))
         return parser.errorText();
@@ -90,6 +92,7 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
         return options;
     }
     options.demo = parser.isSet(demo);
+    options.reportStartup = parser.isSet(reportStartup);
     if (parser.isSet(server)) {
         auto parsed = ServerAddress::parse(parser.value(server));
         if (auto *error = std::get_if<QString>(&parsed))

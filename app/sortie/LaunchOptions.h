@@ -34,6 +34,7 @@ struct LaunchOptions
     std::optional<ServerAddress> server;
     QString user;
     std::optional<VciEndpoint> vci;
+    bool reportStartup = false; // print start-up time and memory, then quit
 
     bool exitNow = false;
     QString output;

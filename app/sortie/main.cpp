@@ -9,8 +9,10 @@
 #include "VehicleFleet.h"
 #include "LaunchOptions.h"
 #include "SortieUi.h"
+#include "StartupProbe.h"
 #include "WindowGeometry.h"
 
+#include <QElapsedTimer>
 #include <QGuiApplication>
 #include <QIcon>
 #include <QQmlApplicationEngine>
@@ -36,6 +38,8 @@ void describeApplication()
 
 int main(int argc, char *argv[])
 {
+    QElapsedTimer sinceMain;
+    sinceMain.start();
     // The command line is read before any window system is touched, so --help, --version and
     // a mistyped option work without a display.
     std::variant<sortie::app::LaunchOptions, QString> parsed;
@@ -102,6 +106,8 @@ int main(int argc, char *argv[])
         sortie::app::saveWindowGeometry(*window, settings);
         session.close();
     });
+    if (options.reportStartup)
+        new sortie::app::StartupProbe(window, sinceMain);
     window->show();
     if (options.demo) {
         connection.connectToServer(demo.address(), sortie::app::DemoServer::user(), sortie::app::DemoServer::password());

@@ -25,6 +25,7 @@ size_t TelemetrySeries::copyBetween(int64_t from, int64_t to, std::vector<Teleme
 
 void TelemetrySeries::clear()
 {
+    m_data.clear(); // keeps the reservation
     m_head = m_size = 0;
 }
 

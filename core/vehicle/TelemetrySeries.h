@@ -9,7 +9,7 @@
 namespace sortie::vehicle {
 
 // A bounded, time-ordered history of one field: a ring buffer of TelemetrySample that overwrites its
-// oldest sample when full. Storage is allocated on the first sample, so unused fields cost nothing.
+// oldest sample when full. Storage is reserved on the first sample, so unused fields cost nothing.
 // A sample older than the newest one is not added (a history for plots must stay ordered); it is
 // counted in rejected().
 class TelemetrySeries
@@ -24,12 +24,17 @@ public:
             ++m_rejected;
             return false;
         }
-        if (!m_data) {
+        if (m_data.size() < m_capacity) {
+            // Reserved whole on the first sample but filled as samples come: the pages of a
+            // buffer not yet full are never touched, so a new vehicle costs little resident memory.
+            if (m_data.capacity() == 0)
+                m_data.reserve(m_capacity);
+            m_data.push_back({time, value});
+        } else {
             if (!m_capacity)
                 return false;
-            m_data = std::make_unique<TelemetrySample[]>(m_capacity);
+            m_data[m_head] = {time, value};
         }
-        m_data[m_head] = {time, value};
         m_head = m_head + 1 == m_capacity ? 0 : m_head + 1;
         if (m_size < m_capacity)
             ++m_size;
@@ -40,7 +45,7 @@ public:
     bool empty() const { return m_size == 0; }
     size_t capacity() const { return m_capacity; }
     uint64_t rejected() const { return m_rejected; }
-    size_t memoryBytes() const { return m_data ? m_capacity * sizeof(TelemetrySample) : 0; }
+    size_t memoryBytes() const { return m_data.capacity() * sizeof(TelemetrySample); }
 
     // i = 0 is the oldest sample kept.
     const TelemetrySample &at(size_t i) const { return m_data[(m_head + m_capacity - m_size + i) % m_capacity]; }
@@ -55,7 +60,7 @@ public:
 
 private:
     size_t m_capacity;
-    std::unique_ptr<TelemetrySample[]> m_data;
+    std::vector<TelemetrySample> m_data;
     size_t m_head = 0; // where the next sample goes
     size_t m_size = 0;
     uint64_t m_rejected = 0;

@@ -87,7 +87,7 @@ bool HciSimOptions::read(const QCommandLineParser &p, QString *error)
         world.users.append(*user);
     }
     int seconds = sessionExpiryMs / 1000;
-    if (!readInt(p, QStringLiteral("hci-vehicles"), 0, 50, &world.vehicles, error)
+    if (!readInt(p, QStringLiteral("hci-vehicles"), 0, 1000, &world.vehicles, error)
         || !readInt(p, QStringLiteral("session-expiry"), 1, 86400, &seconds, error)
         || !readInt(p, QStringLiteral("max-sessions"), 0, 10000, &world.maxSessions, error)
         || !readInt(p, QStringLiteral("fault-reverse"), 0, 1000, &faults.reverseBatch, error)

@@ -2,6 +2,7 @@
 // validation, one waypoint move and its undo, and a 1 km² area scan. Prints each figure with its
 // target; exits 1 if a target is missed. Run: build/tests/mission/bench_mission
 #include "AreaScanPlanner.h"
+#include "BenchRoute.h"
 #include "LocalTangentPlane.h"
 #include "MissionFiles.h"
 #include "RouteAnalyzer.h"
@@ -77,28 +78,6 @@ bool report(const char *what, Timing t, double targetMs)
     return ok;
 }
 
-Route bigRoute(int n)
-{
-    Route r;
-    r.settings.name = QStringLiteral("bench");
-    r.settings.maxAltitude = 200;
-    r.settings.profile.maxHorizontalSpeed = 15;
-    r.segments.reserve(size_t(n));
-    const LocalTangentPlane plane({56.95, 24.1});
-    for (int i = 0; i < n; ++i) {
-        // A lawnmower over ~5 x 5 km: 100 rows of 100 points, 50 m apart.
-        const int row = i / 100, col = (row % 2) ? 99 - i % 100 : i % 100;
-        Waypoint w;
-        w.position = plane.unproject({col * 50.0 - 2500, row * 50.0 - 2500});
-        w.altitude = 60 + (i % 7);
-        w.speed = 8;
-        w.turnType = TurnType::Straight;
-        if (i % 50 == 0)
-            w.actions = {WaitAction{2, false}, CameraSeriesByDistanceAction{20, 0, 0}};
-        r.segments.push_back(std::move(w));
-    }
-    return r;
-}
 }
 
 int main(int argc, char **argv)
@@ -110,7 +89,7 @@ int main(int argc, char **argv)
                 loadAverage(), std::thread::hardware_concurrency());
 
     Route route;
-    report("build the route", median(5, [&] { route = bigRoute(kWaypoints); }), 0);
+    report("build the route", median(5, [&] { route = benchRoute(kWaypoints); }), 0);
     Mission mission;
     mission.routes.push_back(route);
 

@@ -34,6 +34,18 @@ void TstTelemetryStore::seriesWrapsAtCapacity()
     s.clear();
     QVERIFY(s.empty());
     QVERIFY(s.push(5, 1)); // after clear, any time is fine again
+
+    // Cleared while not yet full, then filled past capacity: still one ordered ring.
+    TelemetrySeries partial(4);
+    partial.push(1, 1);
+    partial.push(2, 2);
+    partial.clear();
+    for (int i = 10; i < 16; ++i)
+        QVERIFY(partial.push(i, i));
+    QCOMPARE(partial.size(), size_t(4));
+    for (size_t i = 0; i < partial.size(); ++i)
+        QCOMPARE(partial.at(i).time, int64_t(12 + i));
+    QCOMPARE(partial.memoryBytes(), size_t(4 * 16));
 }
 
 void TstTelemetryStore::olderSamplesAreRejected()

@@ -1,0 +1,57 @@
+#include "ClientUnderTest.h"
+
+#include "SortieUi.h"
+
+#include <QQuickWindow>
+#include <QSignalSpy>
+
+namespace sortie::bench {
+
+ClientUnderTest::ClientUnderTest(bool withWindow)
+    : m_storage(m_dir.filePath(QStringLiteral("settings.ini")), QSettings::IniFormat)
+    , m_settings(&m_storage)
+    , m_client(&m_session)
+    , m_connection(&m_session)
+    , m_missions(&m_client)
+    , m_fleet(&m_client)
+    , m_withWindow(withWindow)
+{
+    if (!withWindow)
+        return;
+    m_engine = std::make_unique<QQmlApplicationEngine>();
+    ui::addImportPaths(*m_engine);
+    m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(&m_settings)},
+                                   {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&m_connection)},
+                                   {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&m_missions)},
+                                   {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&m_fleet)}});
+    m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
+    if (m_engine->rootObjects().isEmpty())
+        return;
+    m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
+    if (m_window) {
+        m_window->resize(1280, 800);
+        m_window->show();
+    }
+}
+
+bool ClientUnderTest::logIn(const QString &address, int timeoutMs)
+{
+    QSignalSpy ready(&m_connection, &client::ConnectionController::ready);
+    return m_connection.connectToServer(address, QStringLiteral("admin"), QStringLiteral("admin")) && ready.wait(timeoutMs);
+}
+
+void ClientUnderTest::showPage(int page)
+{
+    if (!m_window)
+        return;
+    m_window->setProperty("currentPage", page);
+    renderFrame();
+}
+
+void ClientUnderTest::renderFrame()
+{
+    if (m_window)
+        m_window->grabWindow();
+}
+
+} // namespace sortie::bench

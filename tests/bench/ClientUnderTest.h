@@ -1,0 +1,55 @@
+#pragma once
+
+#include "AppSettings.h"
+#include "ConnectionController.h"
+#include "HciClient.h"
+#include "HciSession.h"
+#include "MissionController.h"
+#include "VehicleFleet.h"
+
+#include <QQmlApplicationEngine>
+#include <QSettings>
+#include <QTemporaryDir>
+
+#include <memory>
+
+class QQuickWindow;
+
+namespace sortie::bench {
+
+// The desktop client wired as app/sortie wires it (session, controllers, fleet, the Sortie.Ui main
+// window shown offscreen), with settings in a temporary directory.
+class ClientUnderTest
+{
+public:
+    // withWindow false: the client layer alone, no QML engine or window.
+    explicit ClientUnderTest(bool withWindow = true);
+
+    bool isReady() const { return m_window != nullptr || !m_withWindow; }
+    QQuickWindow *window() const { return m_window; }
+    client::ConnectionController &connection() { return m_connection; }
+    client::MissionController &missions() { return m_missions; }
+    client::VehicleFleet &fleet() { return m_fleet; }
+
+    // Logs in and waits for the session; false after `timeoutMs`.
+    bool logIn(const QString &address, int timeoutMs = 20000);
+    // 0 login, 1 mission, 2 live telemetry.
+    void showPage(int page);
+    // Renders and waits until the frame is out (offscreen: a grab of the window).
+    void renderFrame();
+
+private:
+    QTemporaryDir m_dir;
+    QSettings m_storage;
+    ui::AppSettings m_settings;
+    hci::HciSession m_session;
+    hci::HciClient m_client;
+    client::ConnectionController m_connection;
+    client::MissionController m_missions;
+    client::VehicleFleet m_fleet;
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+    bool m_withWindow;
+};
+
+} // namespace sortie::bench
