@@ -3,11 +3,11 @@
 # for a bounded time on its seed corpus. Usage: scripts/fuzz.sh [seconds per target, default 30]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
 seconds="${1:-30}"
-build="${SORTIE_FUZZ_BUILD_DIR:-build-fuzz}"
-CC=clang CXX=clang++ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DSORTIE_FUZZ=ON -DSORTIE_SANITIZE=ON -DSORTIE_BUILD_UI=OFF -DBUILD_TESTING=ON \
-  -DCMAKE_CXX_FLAGS="-fsanitize=fuzzer-no-link" >/dev/null
+source scripts/sanitized-build.sh
+build="$sanitized_build"
+configure_sanitized_build
 targets=$(find tests/fuzz -maxdepth 1 -name 'fuzz_*.cpp' -printf '%f\n' | sed 's/\.cpp$//' | sort)
 cmake --build "$build" --target $targets
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

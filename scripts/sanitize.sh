@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Builds everything with clang under AddressSanitizer and UndefinedBehaviorSanitizer and runs every
+# test (not the benchmarks) headless. Any report fails the run. Usage: scripts/sanitize.sh [ctest args]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/install-deps.sh
+source scripts/sanitized-build.sh
+configure_sanitized_build
+cmake --build "$sanitized_build"
+export QT_QPA_PLATFORM=offscreen
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=0"
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$PWD/tests/sanitizers/ubsan.supp"
+ctest --test-dir "$sanitized_build" --output-on-failure -j 2 -LE bench --timeout 600 "$@"
