@@ -5,6 +5,7 @@
 #include "ResilienceSupport.h"
 #include "SimProcess.h"
 
+#include "Messages.pb.h"
 #include "Vehicle.h"
 
 #include <QPointer>
@@ -148,7 +149,7 @@ private slots:
         QList<size_t> history;
         for (const auto &v : vehicles) {
             QVERIFY(v);
-            QVERIFY(v->isStale());
+            QTRY_VERIFY_WITH_TIMEOUT(v->isStale(), 10000); // nothing heard for 600 ms
             before.append(lastFix(v));
             history.append(v->history().series(TelemetryField::Latitude).size());
         }
