@@ -74,7 +74,7 @@ private slots:
         listener = std::make_unique<sim::SimVciListener>(&simVehicle);
         QVERIFY(listener->listen(port));
         QTRY_VERIFY_WITH_TIMEOUT(v.isConnected(), 15000);
-        QVERIFY(restored.wait(10000) || restored.count() > 0);
+        QTRY_VERIFY_WITH_TIMEOUT(restored.count() > 0, 10000);
         QCOMPARE(link.connection()->subscriptions(), subscribed);
         QTRY_VERIFY_WITH_TIMEOUT(!v.isStale() && lastFix(v) > before, 10000);
         QVERIFY(v.history().series(TelemetryField::Latitude).size() > history); // history kept and extended
