@@ -10,6 +10,8 @@
 
 #include <QMetaEnum>
 
+#include <set>
+
 #include <cmath>
 #include <numbers>
 
@@ -135,16 +137,29 @@ void VehicleFleet::discoverHciVehicles()
             emit messageChanged();
             return;
         }
-        dropHciVehicles();
+        // After a reconnect the same vehicles come back: keep their Vehicle (its history, and the
+        // pointers the views hold); drop only those the server no longer has, add the new ones.
+        std::set<int> listed;
         for (const pb::DomainObjectWrapper &object : reply->response<pb::GetObjectListResponse>().objects())
-            add(std::make_unique<vehicle::HciVehicleLink>(m_client, object.vehicle()));
+            listed.insert(object.vehicle().id());
+        dropHciVehicles(listed);
+        std::set<int> present;
+        for (const Entry &entry : m_entries) {
+            if (const auto *link = qobject_cast<const vehicle::HciVehicleLink *>(entry.link.get()))
+                present.insert(link->vehicleObjectId());
+        }
+        for (const pb::DomainObjectWrapper &object : reply->response<pb::GetObjectListResponse>().objects()) {
+            if (!present.count(object.vehicle().id()))
+                add(std::make_unique<vehicle::HciVehicleLink>(m_client, object.vehicle()));
+        }
     });
 }
 
-void VehicleFleet::dropHciVehicles()
+void VehicleFleet::dropHciVehicles(const std::set<int> &keep)
 {
     for (int row = count() - 1; row >= 0; --row) {
-        if (m_entries[size_t(row)].vehicle->protocol() != QLatin1String("HCI"))
+        const auto *link = qobject_cast<const vehicle::HciVehicleLink *>(m_entries[size_t(row)].link.get());
+        if (!link || keep.count(link->vehicleObjectId()))
             continue;
         beginRemoveRows({}, row, row);
         Entry gone = std::move(m_entries[size_t(row)]);

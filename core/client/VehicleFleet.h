@@ -6,6 +6,7 @@
 #include <QPointer>
 
 #include <memory>
+#include <set>
 #include <vector>
 
 namespace sortie::hci {
@@ -63,7 +64,8 @@ private:
         std::unique_ptr<vehicle::Vehicle> vehicle;
     };
     void add(std::unique_ptr<vehicle::VehicleLink> link);
-    void dropHciVehicles();
+    // Removes the HCI vehicles whose server object id is not in `keep`.
+    void dropHciVehicles(const std::set<int> &keep = {});
     void discoverHciVehicles();
     void rowChanged(const vehicle::Vehicle *vehicle);
     void setCommandResult(const QString &text);

@@ -80,6 +80,11 @@ void HciConnection::disconnectFromServer()
     closeWith({HciError::Kind::Disconnected, QStringLiteral("Disconnected from %1").arg(m_peer)});
 }
 
+void HciConnection::drop(const HciError &reason)
+{
+    closeWith(reason);
+}
+
 void HciConnection::onConnected()
 {
     m_connectTimer.stop();
@@ -225,6 +230,7 @@ void HciConnection::onReadyRead()
     });
     while (m_state == State::Connected && m_socket->bytesAvailable() > 0) {
         const QByteArray chunk = m_socket->read(64 * 1024);
+        m_bytesReceived += quint64(chunk.size());
         m_decoder.feed(std::string_view(chunk.constData(), size_t(chunk.size())));
         while (auto result = m_decoder.next()) {
             if (auto *frame = std::get_if<HciFrame>(&*result)) {

@@ -39,6 +39,9 @@ public:
     void connectToServer(const QString &host, quint16 port);
     // Closes the socket; every pending request fails at once with Disconnected.
     void disconnectFromServer();
+    // Gives the connection up as lost (e.g. a link that went silent): like disconnectFromServer(),
+    // but disconnected() carries `reason`, so the session reconnects and the log says why.
+    void drop(const HciError &reason);
     State state() const { return m_state; }
     QString peerName() const { return m_peer; }
 
@@ -57,6 +60,8 @@ public:
 
     int pendingCount() const { return int(m_pending.size()); }
     quint64 framesReceived() const { return m_framesReceived; }
+    // Every byte read from any server since this object was made: proof of life, whatever it was.
+    quint64 bytesReceived() const { return m_bytesReceived; }
     quint64 framesDropped() const { return m_framesDropped; }
     quint64 unroutedNotifications() const { return m_unrouted; }
 
@@ -94,6 +99,7 @@ private:
     std::chrono::milliseconds m_defaultTimeout = kDefaultRequestTimeout;
     std::chrono::milliseconds m_connectTimeout = kDefaultConnectTimeout;
     quint64 m_framesReceived = 0;
+    quint64 m_bytesReceived = 0;
     quint64 m_framesDropped = 0;
     quint64 m_unrouted = 0;
     int m_reading = 0; // > 0 while inside the socket's readyRead

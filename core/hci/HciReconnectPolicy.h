@@ -21,12 +21,17 @@ public:
     // The delay before the next attempt; advances the attempt count.
     ms next();
     int attempts() const { return m_attempts; }
+    // A connection that drops during the first login (a server restarting) is retried this many times
+    // before the operator is told; a session that was ready once retries until closed.
+    void setLoginAttempts(int attempts) { m_loginAttempts = attempts < 0 ? 0 : attempts; }
+    int loginAttempts() const { return m_loginAttempts; }
     void reset() { m_attempts = 0; }
 
 private:
     ms m_initial;
     ms m_maximum;
     int m_attempts = 0;
+    int m_loginAttempts = 6;
 };
 
 } // namespace sortie::hci

@@ -164,7 +164,26 @@ HciReply *HciSession::send(const google::protobuf::Message &request, std::chrono
     std::unique_ptr<google::protobuf::Message> stamped(request.New());
     stamped->CopyFrom(request);
     stampClientId(*stamped, m_clientId);
-    return m_connection->send(*stamped, timeout);
+    HciReply *reply = m_connection->send(*stamped, timeout);
+    watchForSilence(reply);
+    return reply;
+}
+
+// A request that timed out while nothing at all came from the server (no answer, no telemetry, no
+// progress) means the link is dead, not the server slow: TCP may not notice for hours. Drop the
+// connection so the session reconnects (and re-attaches) as soon as the link carries data again.
+void HciSession::watchForSilence(HciReply *reply)
+{
+    const quint64 bytesAtSend = m_connection->bytesReceived();
+    connect(reply, &HciReply::finished, this, [this, reply, bytesAtSend] {
+        if (reply->error().kind() != HciError::Kind::Timeout || m_state != State::Ready
+            || m_connection->bytesReceived() != bytesAtSend)
+            return;
+        qCWarning(lcHci).noquote() << "nothing from the server since" << reply->requestName() << "was sent; the link seems dead";
+        m_connection->drop({HciError::Kind::Disconnected,
+                            QStringLiteral("The server sent nothing while %1 waited (%2); the link seems dead")
+                                .arg(reply->requestName(), reply->error().message())});
+    });
 }
 
 void HciSession::onConnected()
@@ -277,8 +296,8 @@ void HciSession::handshakeFailed(const HciError &error)
 {
     m_handshake = nullptr;
     const bool transient = error.kind() == HciError::Kind::Timeout || error.kind() == HciError::Kind::Disconnected;
-    if (m_reconnecting && transient) {
-        // The connection's disconnected() schedules the next attempt; a timeout closes it to get there.
+    if ((m_reconnecting && transient) || error.kind() == HciError::Kind::Disconnected) {
+        // The connection's disconnected() decides (retry or give up); a timeout closes it to get there.
         m_connection->disconnectFromServer();
         return;
     }
@@ -309,10 +328,15 @@ void HciSession::onDisconnected(const HciError &reason)
         return;
     }
     m_handshake = nullptr;
-    if (m_reattachId < 0 && !m_reconnecting) {
-        // Never reached Ready: the operator is told why instead of watching retries.
-        fail(reason);
-        return;
+    if (m_reattachId < 0) {
+        // Never reached Ready. A server that refuses or cannot be reached is reported at once: the
+        // address is probably wrong. One that hung up mid-login is likely restarting: retry a few times.
+        const bool midLogin = m_state == State::Authorizing || m_state == State::LoggingIn;
+        const bool retrying = m_reconnecting || (midLogin && reason.kind() == HciError::Kind::Disconnected);
+        if (!retrying || m_backoff.attempts() >= m_backoff.loginAttempts()) {
+            fail(reason);
+            return;
+        }
     }
     if (!m_reconnecting)
         qCWarning(lcHci).noquote() << "connection lost:" << reason.message() << "- reconnecting";

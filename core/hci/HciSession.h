@@ -40,7 +40,9 @@ public:
     ~HciSession() override;
 
     // Connects, authorizes and logs in. Failures end in Disconnected with errorOccurred(): Refused,
-    // Unreachable, Authentication, Version, Licence... A session that reached Ready reconnects by itself.
+    // Unreachable, Authentication, Version, Licence... A connection that drops mid-login (a server
+    // restarting) is retried reconnectPolicy().loginAttempts() times; a session that reached Ready
+    // reconnects by itself until closed.
     void open(const QString &host, quint16 port, const QString &login, const QString &password);
     // Logs out (LogoutRequest with the clientId) and disconnects; no reconnect follows.
     void close();
@@ -89,6 +91,7 @@ private:
     void handshakeFailed(const HciError &error);
     void fail(const HciError &error);
     void scheduleReconnect();
+    void watchForSilence(HciReply *reply);
     void finishClose();
     void establish(HciSubscription *subscription);
     void forget(HciSubscription *subscription);
