@@ -6,6 +6,7 @@
 // Usage: bench_memory
 #include "BenchRoute.h"
 #include "ClientUnderTest.h"
+#include "FreePort.h"
 #include "ProcessStats.h"
 #include "QuickScene.h"
 #include "SimProcess.h"
@@ -25,7 +26,7 @@ namespace {
 
 void report(const char *what)
 {
-    const auto stats = bench::ProcessStats::of();
+    const auto stats = test::ProcessStats::of();
     std::printf("%-72s RSS %7.1f MiB  (peak %7.1f MiB, %d fds)\n", what, double(stats.residentKiB) / 1024,
                 double(stats.peakResidentKiB) / 1024, stats.openFiles);
 }
@@ -50,10 +51,9 @@ int main(int argc, char **argv)
     test::useSoftwareRendering();
     QGuiApplication app(argc, argv);
     std::printf("bench_memory: the client's resident memory (VmRSS), main window 1280x800 offscreen, software renderer\n");
-    bench::SimProcess sim;
-    QString error;
-    if (!sim.start({QStringLiteral("--hci-vehicles"), QStringLiteral("20")}, &error)) {
-        std::printf("FAILED: %s\n", qPrintable(error));
+    test::SimProcess sim(test::freePort(), {QStringLiteral("--hci-vehicles"), QStringLiteral("20")});
+    if (!sim.start()) {
+        std::printf("FAILED: sortie-sim did not start\n");
         return 1;
     }
     bench::ClientUnderTest client;

@@ -6,6 +6,7 @@
 //
 // Usage: bench_telemetry_e2e [--seconds S] [--headless] [vehicles@Hz ...]   (default: 224@100 22@100)
 #include "ClientUnderTest.h"
+#include "FreePort.h"
 #include "ProcessStats.h"
 #include "QuickScene.h"
 #include "SimProcess.h"
@@ -80,12 +81,11 @@ bool run(const Scenario &scenario, int seconds, bool withWindow)
 {
     std::printf("\n== %d vehicles x %d Hz, %s, %d s measured after 3 s of warm-up\n", scenario.vehicles, scenario.rateHz,
                 withWindow ? "main window on the telemetry page" : "client layer only (--headless)", seconds);
-    bench::SimProcess sim;
-    QString error;
-    if (!sim.start({QStringLiteral("--hci-vehicles"), QString::number(scenario.vehicles), QStringLiteral("--telemetry-rate"),
-                    QString::number(scenario.rateHz), QStringLiteral("--no-demo-mission")},
-                   &error)) {
-        std::printf("FAILED: %s\n", qPrintable(error));
+    test::SimProcess sim(test::freePort(), {QStringLiteral("--hci-vehicles"), QString::number(scenario.vehicles),
+                                            QStringLiteral("--telemetry-rate"), QString::number(scenario.rateHz),
+                                            QStringLiteral("--no-demo-mission")});
+    if (!sim.start()) {
+        std::printf("FAILED: sortie-sim did not start\n");
         return false;
     }
     bench::ClientUnderTest client(withWindow);
@@ -112,20 +112,20 @@ bool run(const Scenario &scenario, int seconds, bool withWindow)
     std::printf("second   values/s   client CPU   sim CPU   frames   latency p50   p99    max (ms)\n");
     quint64 totalValues = 0;
     std::vector<float> all;
-    const auto start = bench::ProcessStats::of();
-    const auto simStart = bench::ProcessStats::of(sim.pid());
+    const auto start = test::ProcessStats::of();
+    const auto simStart = test::ProcessStats::of(sim.pid());
     QElapsedTimer wall;
     wall.start();
     for (int second = 1; second <= seconds; ++second) {
         recorder = {};
         frames = 0;
-        const auto before = bench::ProcessStats::of();
-        const auto simBefore = bench::ProcessStats::of(sim.pid());
+        const auto before = test::ProcessStats::of();
+        const auto simBefore = test::ProcessStats::of(sim.pid());
         const qint64 from = wall.nsecsElapsed();
         runEventLoop(1000);
         const double elapsed = double(wall.nsecsElapsed() - from) / 1e9;
-        const auto after = bench::ProcessStats::of();
-        const auto simAfter = bench::ProcessStats::of(sim.pid());
+        const auto after = test::ProcessStats::of();
+        const auto simAfter = test::ProcessStats::of(sim.pid());
         std::printf("%6d %10.0f %11.0f%% %8.0f%% %8d %13.2f %6.2f %6.2f\n", second, double(recorder.values) / elapsed,
                     100 * (after.cpuSeconds - before.cpuSeconds) / elapsed,
                     100 * (simAfter.cpuSeconds - simBefore.cpuSeconds) / elapsed, frames,
@@ -135,8 +135,8 @@ bool run(const Scenario &scenario, int seconds, bool withWindow)
         all.insert(all.end(), recorder.latencies.begin(), recorder.latencies.end());
     }
     const double elapsed = double(wall.nsecsElapsed()) / 1e9;
-    const auto end = bench::ProcessStats::of();
-    const auto simEnd = bench::ProcessStats::of(sim.pid());
+    const auto end = test::ProcessStats::of();
+    const auto simEnd = test::ProcessStats::of(sim.pid());
     std::printf("total: %.0f values/s (%zu batches), client CPU %.0f%% of one core, sim CPU %.0f%%, latency p50 %.2f ms,"
                 " p99 %.2f ms, max %.2f ms, client RSS %.0f MiB\n",
                 double(totalValues) / elapsed, all.size(), 100 * (end.cpuSeconds - start.cpuSeconds) / elapsed,

@@ -1,16 +1,15 @@
 #pragma once
 
-// Helpers for the fault tests: the operator as the desktop app wires it, and this process's memory
-// and descriptors (SimProcess.h has sortie-sim as a process).
+// Helpers for the fault tests: the operator as the desktop app wires it, and waiting on the event
+// loop. tests/support has sortie-sim as a process, free ports and this process's memory and descriptors.
 #include "ConnectionController.h"
+#include "FreePort.h"
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "ProcessStats.h"
 #include "VehicleFleet.h"
 
-#include <QDir>
-#include <QFile>
-#include <QTcpServer>
 #include <QTest>
 
 #include <chrono>
@@ -19,25 +18,6 @@
 namespace sortie::test {
 
 using namespace std::chrono_literals;
-
-// Resident memory of this process in KiB (VmRSS), or -1.
-inline qint64 rssKiB()
-{
-    QFile status(QStringLiteral("/proc/self/status"));
-    if (!status.open(QIODevice::ReadOnly))
-        return -1;
-    for (const QByteArray &line : status.readAll().split('\n')) {
-        if (line.startsWith("VmRSS:"))
-            return line.mid(6).trimmed().split(' ').value(0).toLongLong();
-    }
-    return -1;
-}
-
-// Open file descriptors of this process (sockets, pipes, files, event fds).
-inline int openFds()
-{
-    return int(QDir(QStringLiteral("/proc/self/fd")).entryList(QDir::AllEntries | QDir::System | QDir::NoDotAndDotDot).size());
-}
 
 // Spins the event loop in 1 ms steps until `done` holds (QTRY_* sleeps 50 ms a step: too slow for
 // loops of hundreds). False on timeout.
@@ -51,15 +31,6 @@ bool waitUntil(Predicate done, int timeoutMs = 10000)
         QTest::qWait(1);
     }
     return true;
-}
-
-// A port nobody listens on right now: bind port 0, note the port, let it go.
-inline quint16 freePort()
-{
-    QTcpServer probe;
-    if (!probe.listen(QHostAddress::LocalHost, 0))
-        return 0;
-    return probe.serverPort();
 }
 
 // One operator: session, client and the controllers the views bind to. Short backoff, so a restarted

@@ -27,7 +27,11 @@ struct Figures
 {
     int fds = 0;
     qint64 rss = 0;
-    static Figures now() { return {test::openFds(), test::rssKiB()}; }
+    static Figures now()
+    {
+        const auto stats = test::ProcessStats::of();
+        return {stats.openFiles, stats.residentKiB};
+    }
 };
 
 void report(const char *what, const Figures &warm, const Figures &end)

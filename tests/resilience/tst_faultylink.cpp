@@ -227,7 +227,7 @@ private slots:
         QVERIFY(link.openDemoRoute());
         hci::HciConnection *connection = link.connection();
         const quint64 droppedBefore = connection->framesDropped();
-        const qint64 rssBefore = test::rssKiB();
+        const qint64 rssBefore = test::ProcessStats::of().residentKiB;
 
         // The event loop keeps turning while the flood is decoded: a heartbeat counts its turns.
         int beats = 0;
@@ -248,7 +248,7 @@ private slots:
             expected += quint64(kChunk);
             QVERIFY(test::waitUntil([&] { return connection->bytesReceived() >= expected; }));
         }
-        const qint64 rssAfter = test::rssKiB();
+        const qint64 rssAfter = test::ProcessStats::of().residentKiB;
         QVERIFY2(beats > beatsAtStart, "the event loop did not turn while the garbage was decoded");
 
         // Later frames arrive: the operator's next request is answered.

@@ -2,7 +2,7 @@
 
 #include <QtGlobal>
 
-namespace sortie::bench {
+namespace sortie::test {
 
 // What the kernel says about a process (Linux /proc and getrusage): memory, descriptors, CPU time.
 struct ProcessStats
@@ -16,4 +16,4 @@ struct ProcessStats
     static ProcessStats of(qint64 pid = 0);
 };
 
-} // namespace sortie::bench
+} // namespace sortie::test

@@ -6,7 +6,7 @@
 
 #include <unistd.h>
 
-namespace sortie::bench {
+namespace sortie::test {
 
 namespace {
 
@@ -48,4 +48,4 @@ ProcessStats ProcessStats::of(qint64 pid)
     return stats;
 }
 
-} // namespace sortie::bench
+} // namespace sortie::test
