@@ -71,7 +71,10 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     const QCommandLineOption vci(QStringLiteral("vci"),
                                  QCoreApplication::translate("sortie", "Connect a vehicle directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600."),
                                  QStringLiteral("address"));
-    parser.addOptions({demo, server, user, vci});
+    const QCommandLineOption autosave(QStringLiteral("autosave-dir"),
+                                      QCoreApplication::translate("sortie", "Folder for autosaved edits (default: the application data folder; also SORTIE_AUTOSAVE_DIR)."),
+                                      QStringLiteral("folder"));
+    parser.addOptions({demo, server, user, vci, autosave});
 
     if (!parser.parse(arguments))
         return parser.errorText();
@@ -99,6 +102,7 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     if (options.demo && options.server)
         return QStringLiteral("--demo starts its own server: leave out --server");
     options.user = parser.value(user);
+    options.autosaveDir = parser.value(autosave);
     if (parser.isSet(vci)) {
         auto parsed = VciEndpoint::parse(parser.value(vci));
         if (auto *error = std::get_if<QString>(&parsed))

@@ -34,6 +34,7 @@ struct LaunchOptions
     std::optional<ServerAddress> server;
     QString user;
     std::optional<VciEndpoint> vci;
+    QString autosaveDir; // --autosave-dir; empty: SORTIE_AUTOSAVE_DIR, else the default
 
     bool exitNow = false;
     QString output;
