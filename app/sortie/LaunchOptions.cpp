@@ -73,7 +73,10 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
                                  QStringLiteral("address"));
     const QCommandLineOption reportStartup(QStringLiteral("report-startup"),
                                            QCoreApplication::translate("sortie", "Print the start-up time and memory in use, then quit (for benchmarks)."));
-    parser.addOptions({demo, server, user, vci, reportStartup});
+    const QCommandLineOption autosave(QStringLiteral("autosave-dir"),
+                                      QCoreApplication::translate("sortie", "Folder for autosaved edits (default: the application data folder; also SORTIE_AUTOSAVE_DIR)."),
+                                      QStringLiteral("folder"));
+    parser.addOptions({demo, server, user, vci, autosave, reportStartup});
 
     if (!parser.parse(arguments))
         return parser.errorText();
@@ -102,6 +105,7 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     if (options.demo && options.server)
         return QStringLiteral("--demo starts its own server: leave out --server");
     options.user = parser.value(user);
+    options.autosaveDir = parser.value(autosave);
     if (parser.isSet(vci)) {
         auto parsed = VciEndpoint::parse(parser.value(vci));
         if (auto *error = std::get_if<QString>(&parsed))

@@ -35,6 +35,7 @@ struct LaunchOptions
     QString user;
     std::optional<VciEndpoint> vci;
     bool reportStartup = false; // print start-up time and memory, then quit
+    QString autosaveDir; // --autosave-dir; empty: SORTIE_AUTOSAVE_DIR, else the default
 
     bool exitNow = false;
     QString output;

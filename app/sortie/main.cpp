@@ -1,11 +1,13 @@
 // sortie: wires the pieces together. Parses the command line, restores the settings, loads the
 // Sortie.Ui main window.
 #include "AppSettings.h"
+#include "AutosaveRecovery.h"
 #include "ConnectionController.h"
 #include "DemoServer.h"
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "RouteAutosave.h"
 #include "VehicleFleet.h"
 #include "LaunchOptions.h"
 #include "SortieUi.h"
@@ -19,6 +21,8 @@
 #include <QQuickStyle>
 #include <QQuickWindow>
 #include <QSettings>
+#include <QStandardPaths>
+#include <QDir>
 #include <QtQml/qqmlextensionplugin.h>
 
 #include <cstdio>
@@ -32,6 +36,20 @@ void describeApplication()
     QCoreApplication::setOrganizationName(QStringLiteral("Sortie"));
     QCoreApplication::setApplicationName(QStringLiteral("sortie"));
     QCoreApplication::setApplicationVersion(QStringLiteral(SORTIE_VERSION));
+}
+
+// --autosave-dir, else SORTIE_AUTOSAVE_DIR, else a folder of its own for the demo (its server
+// lives only as long as the program), else the application data folder.
+QString autosaveDirectory(const sortie::app::LaunchOptions &options)
+{
+    if (!options.autosaveDir.isEmpty())
+        return options.autosaveDir;
+    const QString env = qEnvironmentVariable("SORTIE_AUTOSAVE_DIR");
+    if (!env.isEmpty())
+        return env;
+    if (options.demo)
+        return QDir::temp().filePath(QStringLiteral("sortie-demo-autosave"));
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(QStringLiteral("autosave"));
 }
 
 } // namespace
@@ -80,6 +98,12 @@ int main(int argc, char *argv[])
     sortie::client::ConnectionController connection(&session);
     sortie::client::MissionController missions(&hciClient);
     sortie::client::VehicleFleet fleet(&hciClient);
+    // Recovery looks first, so the autosave of this run takes a slot of its own.
+    const QString autosaves = autosaveDirectory(options);
+    sortie::client::AutosaveRecovery recovery(missions.document(), autosaves);
+    sortie::client::RouteAutosave autosave(missions.document(), autosaves);
+    QObject::connect(&connection, &sortie::client::ConnectionController::ready, &autosave,
+                     [&] { autosave.setServer(connection.server(), connection.user()); });
     sortie::app::DemoServer demo;
     if (options.demo) {
         QString error;
@@ -94,7 +118,8 @@ int main(int argc, char *argv[])
     engine.setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(&settings)},
                                  {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&connection)},
                                  {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&missions)},
-                                 {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&fleet)}});
+                                 {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&fleet)},
+                                 {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(&recovery)}});
     engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));
     if (engine.rootObjects().isEmpty())
         return 1;

@@ -23,6 +23,7 @@ MissionController::MissionController(hci::HciClient *client, QObject *parent)
     m_routeEvents = client->subscribeObjectChanges(HciObjectType::Route);
     connect(m_routeEvents, &hci::HciSubscription::received, this, &MissionController::routeEvent);
     connect(m_document.undoStack(), &QUndoStack::indexChanged, this, &MissionController::routeChanged);
+    connect(&m_document, &RouteDocument::loaded, this, [this] { m_opened = m_document.route(); });
 }
 
 MissionController::~MissionController() = default;
@@ -156,9 +157,9 @@ void MissionController::writeRoute(const pb::Route &route, bool locked)
 
 void MissionController::keepMine()
 {
-    if (!m_conflict)
+    if (!hasConflict())
         return;
-    const int theirVersion = m_conflict->version();
+    const int theirVersion = m_conflict.theirVersion();
     const int id = routeId();
     setConflict(nullptr, {});
     request(m_client->acquireLock(HciObjectType::Route, id), tr("Locking the route"), [this, id, theirVersion](HciReply *reply) {
@@ -172,14 +173,13 @@ void MissionController::keepMine()
 
 void MissionController::takeTheirs()
 {
-    if (!m_conflict)
+    if (!hasConflict())
         return;
-    auto imported = routeFromHci(*m_conflict);
+    Route theirs = m_conflict.theirRoute();
     setConflict(nullptr, {});
-    if (!imported)
-        return setMessage(tr("The server's copy cannot be edited here: %1").arg(imported.error().toString()));
-    m_document.load(imported->route);
-    setMessage(tr("Your edits were dropped; this is the server's copy."));
+    m_document.editor()->replaceRoute(std::move(theirs), tr("Take the server's version"));
+    m_document.undoStack()->setClean(); // what the server has: nothing unsaved
+    setMessage(tr("This is the server's copy now. Undo brings your edits back."));
     emit routeChanged();
 }
 
@@ -307,8 +307,9 @@ void MissionController::setMessage(const QString &message)
 
 void MissionController::setConflict(const pb::Route *theirs, const QString &text)
 {
-    m_conflict = theirs ? std::make_unique<pb::Route>(*theirs) : nullptr;
-    m_conflictText = text;
+    if (!theirs || !m_conflict.set(*theirs, m_document.route(), m_opened))
+        m_conflict.clear();
+    m_conflictText = m_conflict.isActive() ? text : QString();
     emit conflictChanged();
 }
 

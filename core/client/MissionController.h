@@ -2,6 +2,7 @@
 
 #include "HciProto.h"
 #include "ProcessedPlanModel.h"
+#include "RouteConflict.h"
 #include "RouteDocument.h"
 #include "ServerObjectListModel.h"
 
@@ -35,6 +36,8 @@ class MissionController : public QObject
     Q_PROPERTY(QString routeName READ routeName NOTIFY routeChanged)
     Q_PROPERTY(bool conflict READ hasConflict NOTIFY conflictChanged)
     Q_PROPERTY(QString conflictText READ conflictText NOTIFY conflictChanged)
+    // The server's copy beside ours: differences, each side's edits, versions, their route.
+    Q_PROPERTY(sortie::client::RouteConflict *conflictDetails READ conflictDetails CONSTANT)
     Q_PROPERTY(bool busy READ isBusy NOTIFY activityChanged)
     Q_PROPERTY(QString activity READ activity NOTIFY activityChanged)
     Q_PROPERTY(int progressValue READ progressValue NOTIFY progressChanged)
@@ -52,7 +55,8 @@ public:
     mission::ProcessedPlanModel *processed() { return &m_processed; }
     int routeId() const;
     QString routeName() const { return m_document.route().settings.name; }
-    bool hasConflict() const { return bool(m_conflict); }
+    bool hasConflict() const { return m_conflict.isActive(); }
+    RouteConflict *conflictDetails() { return &m_conflict; }
     QString conflictText() const { return m_conflictText; }
     bool isBusy() const { return !m_activity.isEmpty(); }
     QString activity() const { return m_activity; }
@@ -68,6 +72,8 @@ public:
     // is overwritten: `conflict` says so and keepMine() or takeTheirs() decides.
     Q_INVOKABLE void save();
     Q_INVOKABLE void keepMine();
+    // Their copy replaces ours as one undoable step (marked as saved: it is the server's), so
+    // undo brings our edits back.
     Q_INVOKABLE void takeTheirs();
     Q_INVOKABLE void process();
     // Processes if needed, then uploads under the vehicle's lock, with progress.
@@ -107,7 +113,8 @@ private:
     mission::ProcessedPlanModel m_processed;
     std::unique_ptr<com::ugcs::ucs::proto::ProcessedRoute> m_processedRoute;
     int m_processedAt = -1; // undo index the processed plan belongs to
-    std::unique_ptr<com::ugcs::ucs::proto::Route> m_conflict; // the server's copy, when it differs
+    RouteConflict m_conflict; // the server's copy, when it differs
+    mission::Route m_opened;  // the route as last opened or saved: what both sides of a conflict edited
     QString m_conflictText;
     QString m_activity;
     int m_progressValue = 0;

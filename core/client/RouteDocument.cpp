@@ -155,6 +155,7 @@ void RouteDocument::load(Route route)
     m_analyzer.recomputeNow();
     emit modifiedChanged();
     emit undoChanged();
+    emit loaded();
 }
 
 int RouteDocument::addWaypoint(double latitude, double longitude)

@@ -93,6 +93,8 @@ signals:
     void selectedRowsChanged();
     void messageChanged();
     void currentChanged();
+    // load() replaced the route: a new baseline (what "unsaved edits" are measured against).
+    void loaded();
 
 private:
     void setMessage(const QString &message);

@@ -189,6 +189,17 @@ private slots:
         QTRY_VERIFY(m_alice->missions.hasConflict());
         QVERIFY2(m_alice->missions.conflictText().contains(QStringLiteral("version 2")), qPrintable(m_alice->missions.conflictText()));
         QCOMPARE(doc->model()->count(), 5);
+        // She sees both: how the copies differ, who changed what, their route for the map.
+        const client::RouteConflict *conflict = m_alice->missions.conflictDetails();
+        const QString safe = QString::number(m_alice->missions.document()->route().settings.safeAltitude);
+        QCOMPARE(conflict->changes(), (QStringList{QStringLiteral("safe altitude 45 → %1 m").arg(safe), QStringLiteral("WP 5 added")}));
+        QVERIFY2(conflict->yourEdits() == QStringList{QStringLiteral("WP 5 added")}, qPrintable(conflict->yourEdits().join(" / ")));
+        QCOMPARE(conflict->theirEdits(), QStringList{QStringLiteral("safe altitude %1 → 45 m").arg(safe)});
+        QCOMPARE(conflict->yourVersion(), 1);
+        QCOMPARE(conflict->theirVersion(), 2);
+        QVERIFY(conflict->theirSaveTime().isValid());
+        QCOMPARE(const_cast<client::RouteConflict *>(conflict)->theirModel()->count(), 4);
+        QCOMPARE(conflict->theirRoute().settings.safeAltitude, 45.0);
 
         // Saving does not overwrite Bob's copy behind anyone's back...
         m_alice->missions.save();
@@ -204,23 +215,64 @@ private slots:
         QCOMPARE(now.version(), 3);
     }
 
-    void takeTheirsDropsOurEdits()
+    void takeTheirsIsUndoable()
     {
         const int id = openDemoRoute(*m_alice);
         QVERIFY(id > 0);
         client::RouteDocument *doc = m_alice->missions.document();
         doc->addWaypoint(56.9790, 24.0820);
+        const mission::Route mine = doc->route();
         Operator bob(m_sim->address(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
         QVERIFY(bob.ok);
         pb::Route theirs = call<pb::GetObjectResponse>(bob.client.getObject(hci::HciObjectType::Route, id)).object().route();
         theirs.set_name("Bob's");
         call<pb::CreateOrUpdateObjectResponse>(bob.client.createOrUpdate(theirs));
         QTRY_VERIFY(m_alice->missions.hasConflict());
+        QCOMPARE(m_alice->missions.conflictDetails()->changes(),
+                 (QStringList{QStringLiteral("name \"Bob's\" → \"%1\"").arg(kDemoRoute), QStringLiteral("WP 5 added")}));
         m_alice->missions.takeTheirs();
         QVERIFY(!m_alice->missions.hasConflict());
+        QCOMPARE(m_alice->missions.conflictDetails()->theirModel()->count(), 0); // the ghost is gone
         QCOMPARE(doc->model()->count(), 4);
         QCOMPARE(m_alice->missions.routeName(), QStringLiteral("Bob's"));
         QVERIFY(!doc->isModified());
+        QCOMPARE(doc->route().origin.message->version(), 2);
+        // Nothing of hers is lost: undo brings her edits back, unsaved.
+        doc->undo();
+        QVERIFY(doc->route() == mine);
+        QVERIFY(doc->isModified());
+    }
+
+    void editsSurviveAServerRestartAndSaveAfterIt()
+    {
+        const int id = openDemoRoute(*m_alice);
+        QVERIFY(id > 0);
+        m_alice->session.reconnectPolicy().setDelays(std::chrono::milliseconds(50), std::chrono::milliseconds(300));
+        client::RouteDocument *doc = m_alice->missions.document();
+        doc->addWaypoint(56.9790, 24.0820);
+        doc->editor()->setAltitude({1, 2}, 66);
+        const mission::Route edited = doc->route();
+        const int steps = doc->undoStack()->count();
+        const quint16 port = m_sim->server.port();
+
+        m_sim->server.close(); // stops listening and drops every connection
+        QTRY_VERIFY(!m_alice->session.isReady());
+        QVERIFY(doc->route() == edited);
+        QVERIFY(m_sim->server.listen(QHostAddress::LocalHost, port));
+        QTRY_VERIFY_WITH_TIMEOUT(m_alice->session.isReady(), 15000);
+        QVERIFY(doc->route() == edited);
+        QCOMPARE(doc->undoStack()->count(), steps);
+        QVERIFY(doc->isModified());
+
+        QSignalSpy saved(&m_alice->missions, &MissionController::saved);
+        m_alice->missions.save();
+        QVERIFY2(saved.wait(10000), qPrintable(m_alice->missions.message()));
+        QCOMPARE(saved.first().first().toInt(), 2);
+        Operator bob(m_sim->address(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
+        QVERIFY(bob.ok);
+        const auto route = mission::routeFromHci(call<pb::GetObjectResponse>(bob.client.getObject(hci::HciObjectType::Route, id)).object().route());
+        QVERIFY(route);
+        QVERIFY(route->route == edited);
     }
 
     void areaScan()

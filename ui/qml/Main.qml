@@ -11,6 +11,8 @@ ApplicationWindow {
     property var connection: null
     property var missions: null
     property var fleet: null
+    // The client's AutosaveRecovery: edits a previous run left unsaved, offered at start.
+    property var recovery: null
     property string connectionState: connection ? connection.state : "Disconnected"
     property string connectionDetail: !connection ? ""
                                       : connection.detail.length > 0 ? connection.detail
@@ -21,6 +23,7 @@ ApplicationWindow {
     property alias missionPage: missionPage
     property alias telemetryPage: telemetryPage
     property alias helpOverlay: help
+    property alias restoreDialog: restoreDialog
     readonly property bool dark: palette.window.hslLightness < 0.5
     readonly property MapView activeMap: tabs.currentIndex === 2 ? telemetryPage.map : missionPage.map
 
@@ -132,6 +135,16 @@ ApplicationWindow {
         id: help
         objectName: "shortcutHelp"
         shortcuts: shortcuts
+    }
+    RestoreDialog {
+        id: restoreDialog
+        objectName: "restoreDialog"
+        recovery: window.recovery
+        visible: window.recovery !== null && window.recovery.available
+        onRestored: {
+            window.showPage(1)
+            Qt.callLater(() => window.missionPage.routeLayer.fitToMap(60))
+        }
     }
     MapSourceDialog {
         id: mapSourceDialog

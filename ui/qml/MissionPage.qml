@@ -10,6 +10,7 @@ Page {
     id: page
     property alias map: pane.map
     property alias routeLayer: routeLayer
+    property alias theirRouteLayer: theirRouteLayer
     property alias areaLayer: areaLayer
     property alias pane: pane
     property alias panel: panel
@@ -69,6 +70,18 @@ Page {
                 color: "#ef6c00"
                 editable: page.tool === "scan"
                 onVertexMoved: (index, coordinate) => scanDraft.setCoordinate(index, coordinate.latitude, coordinate.longitude)
+            }
+            RouteLayer {
+                // The server's copy during a conflict: a read-only ghost under ours.
+                id: theirRouteLayer
+                objectName: "theirRouteLayer"
+                anchors.fill: parent
+                map: pane.map
+                visible: page.missions !== null && page.missions.conflict
+                model: page.missions ? page.missions.conflictDetails.theirs : null
+                color: "#8d8d8d"
+                opacity: 0.75
+                editable: false
             }
             RouteLayer {
                 id: routeLayer

@@ -114,9 +114,28 @@ Pane {
             ColumnLayout {
                 anchors.fill: parent
                 Label { text: panel.missions ? panel.missions.conflictText : ""; wrapMode: Text.Wrap; Layout.fillWidth: true; color: "#5d4037" }
+                Label {
+                    text: qsTr("Yours (version %1, edited) against theirs (version %2, grey on the map):")
+                          .arg(panel.missions ? panel.missions.conflictDetails.yourVersion : 0)
+                          .arg(panel.missions ? panel.missions.conflictDetails.theirVersion : 0)
+                    wrapMode: Text.Wrap; Layout.fillWidth: true; color: "#5d4037"; font.bold: true
+                }
+                ListView {
+                    objectName: "conflictChanges"
+                    Layout.fillWidth: true
+                    Layout.preferredHeight: Math.min(contentHeight, 110)
+                    clip: true
+                    model: panel.missions ? panel.missions.conflictDetails.changes : []
+                    delegate: Label { required property string modelData; text: "• " + modelData; color: "#5d4037"; wrapMode: Text.Wrap; width: ListView.view.width }
+                }
+                Label {
+                    visible: panel.missions !== null && panel.missions.conflictDetails.theirEdits.length > 0
+                    text: panel.missions ? qsTr("They changed: %1").arg(panel.missions.conflictDetails.theirEdits.join(", ")) : ""
+                    wrapMode: Text.Wrap; Layout.fillWidth: true; color: "#5d4037"; font.pointSize: 8
+                }
                 RowLayout {
                     Button { objectName: "keepMineButton"; text: qsTr("Keep mine (overwrite theirs)"); onClicked: panel.missions.keepMine() }
-                    Button { objectName: "takeTheirsButton"; text: qsTr("Take theirs (drop my edits)"); onClicked: panel.missions.takeTheirs() }
+                    Button { objectName: "takeTheirsButton"; text: qsTr("Take theirs (undo brings mine back)"); onClicked: panel.missions.takeTheirs() }
                 }
             }
         }

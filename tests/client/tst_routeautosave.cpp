@@ -1,0 +1,213 @@
+// RouteAutosave and AutosaveRecovery in one process, on a real temporary directory: a burst of
+// edits is one write, the file holds working route, baseline and identity, a clean document
+// removes it, unsaved edits outlive the instance, recovery lists exactly the edits and restores
+// them as one undo step, a live instance's file is not offered, an unreadable file is kept aside
+// and named, discard keeps one backup.
+#include "AutosaveRecord.h"
+#include "AutosaveRecovery.h"
+#include "AutosaveTestRoute.h"
+#include "RouteAutosave.h"
+
+#include <QDir>
+#include <QFile>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace sortie;
+using client::AutosaveRecovery;
+using client::RouteAutosave;
+using client::RouteDocument;
+
+class TestRouteAutosave : public QObject
+{
+    Q_OBJECT
+
+    static client::AutosaveRecord readFile(const QString &path)
+    {
+        QFile f(path);
+        if (!f.open(QIODevice::ReadOnly))
+            qFatal("cannot read %s", qPrintable(path));
+        auto decoded = client::decodeAutosave(f.readAll());
+        if (!decoded)
+            qFatal("%s", qPrintable(decoded.error().toString()));
+        return decoded.value();
+    }
+
+    // Leaves an autosave with the test edits in `dir`, as an instance that quit without saving does.
+    static mission::Route leaveEdits(const QString &dir)
+    {
+        RouteDocument doc;
+        RouteAutosave autosave(&doc, dir);
+        autosave.setServer(QStringLiteral("127.0.0.1:3334"), QStringLiteral("admin"));
+        doc.load(test::serverRoute());
+        test::editRoute(doc);
+        return doc.route();
+    }
+
+private slots:
+    void aBurstOfEditsIsOneWriteOfEverythingNeededToRestore()
+    {
+        QTemporaryDir dir;
+        RouteDocument doc;
+        RouteAutosave autosave(&doc, dir.path());
+        QVERIFY2(autosave.isActive(), qPrintable(autosave.error()));
+        autosave.setServer(QStringLiteral("127.0.0.1:3334"), QStringLiteral("admin"));
+        autosave.setDelay(50);
+        const mission::Route loaded = test::serverRoute();
+        doc.load(loaded);
+        QSignalSpy written(&autosave, &RouteAutosave::written);
+        test::editRoute(doc);
+        QVERIFY(!QFile::exists(autosave.filePath())); // not before the burst is over
+        QVERIFY(written.wait(5000));
+        QVERIFY(!written.wait(300));
+        QCOMPARE(written.count(), 1);
+        QCOMPARE(written.first().first().toString(), autosave.filePath());
+
+        const client::AutosaveRecord record = readFile(autosave.filePath());
+        QVERIFY(record.working == doc.route());
+        QVERIFY(record.baseline == loaded);
+        QCOMPARE(record.routeId, 42);
+        QCOMPARE(record.routeVersion, 3);
+        QCOMPARE(record.server, QStringLiteral("127.0.0.1:3334"));
+        QCOMPARE(record.user, QStringLiteral("admin"));
+        QVERIFY(qAbs(record.savedAt.secsTo(QDateTime::currentDateTimeUtc())) < 3600);
+        QVERIFY(record.working.origin && record.working.origin.message->id() == 42);
+        // No temporary file is left behind by the atomic write.
+        QCOMPARE(QDir(dir.path()).entryList({QStringLiteral("*.json*")}, QDir::Files),
+                 QStringList{QFileInfo(autosave.filePath()).fileName()});
+    }
+
+    void aCleanDocumentHasNoAutosave()
+    {
+        QTemporaryDir dir;
+        RouteDocument doc;
+        RouteAutosave autosave(&doc, dir.path());
+        doc.load(test::serverRoute());
+        doc.addWaypoint(56.0, 24.0);
+        QVERIFY(autosave.writeNow());
+        QVERIFY(QFile::exists(autosave.filePath()));
+        doc.undo(); // back to the saved state
+        QVERIFY(!QFile::exists(autosave.filePath()));
+        doc.redo();
+        QVERIFY(autosave.writeNow());
+        doc.markSaved(); // saved to the server: the baseline moves
+        QVERIFY(!QFile::exists(autosave.filePath()));
+        doc.addWaypoint(56.1, 24.1);
+        QVERIFY(autosave.writeNow());
+        QCOMPARE(int(readFile(autosave.filePath()).baseline.segments.size()), 13);
+        doc.load(test::serverRoute()); // another route opened
+        QVERIFY(!QFile::exists(autosave.filePath()));
+    }
+
+    void unsavedEditsOutliveTheInstanceAndAreRestoredAsOneStep()
+    {
+        QTemporaryDir dir;
+        const mission::Route edited = leaveEdits(dir.path());
+        QCOMPARE(client::AutosaveDirectory(dir.path()).slotsWithFiles(), QList<int>{1});
+
+        RouteDocument doc;
+        AutosaveRecovery recovery(&doc, dir.path());
+        QVERIFY(recovery.isAvailable());
+        const double altitude = std::get<mission::Waypoint>(test::serverRoute().segments[2]).altitude;
+        QCOMPARE(recovery.changes(), (QStringList{QStringLiteral("WP 2 moved 33 m"),
+                                                  QStringLiteral("altitude of WP 3 %1 → 100 m").arg(altitude),
+                                                  QStringLiteral("WP 13 added")}));
+        QVERIFY(recovery.summary().startsWith(QStringLiteral("3 changes: WP 2 moved 33 m")));
+        QCOMPARE(recovery.routeName(), QStringLiteral("Autosave sample"));
+        QCOMPARE(recovery.origin(), QStringLiteral("route 42, version 3, on 127.0.0.1:3334 as admin"));
+
+        // This instance's own autosave takes another slot and leaves the offered file alone.
+        RouteAutosave mine(&doc, dir.path());
+        QCOMPARE(mine.slot(), 2);
+
+        QSignalSpy restored(&recovery, &AutosaveRecovery::restored);
+        QVERIFY(recovery.restore());
+        QCOMPARE(restored.count(), 1);
+        QVERIFY(doc.route() == edited);
+        QVERIFY(doc.isModified());
+        QCOMPARE(doc.undoText(), QStringLiteral("Restore autosaved edits"));
+        QCOMPARE(doc.route().origin.message->id(), 42); // saving goes to the same server route
+        doc.undo();
+        QVERIFY(doc.route() == test::serverRoute());
+        doc.redo();
+        QVERIFY(!recovery.isAvailable());
+        QVERIFY(QFile::exists(client::AutosaveDirectory(dir.path()).discardedPath()));
+        QVERIFY(!QFile::exists(client::AutosaveDirectory(dir.path()).filePath(1)));
+    }
+
+    void aLiveInstancesAutosaveIsNotOffered()
+    {
+        QTemporaryDir dir;
+        RouteDocument live;
+        RouteAutosave autosave(&live, dir.path());
+        live.load(test::serverRoute());
+        test::editRoute(live);
+        QVERIFY(autosave.writeNow());
+        RouteDocument other;
+        AutosaveRecovery recovery(&other, dir.path());
+        QVERIFY(!recovery.isAvailable());
+        QVERIFY(recovery.message().isEmpty());
+        QVERIFY(QFile::exists(autosave.filePath()));
+    }
+
+    void anUnreadableFileIsKeptAsideAndNamed()
+    {
+        QTemporaryDir dir;
+        leaveEdits(dir.path());
+        client::AutosaveDirectory directory(dir.path());
+        QFile file(directory.filePath(1));
+        QVERIFY(file.open(QIODevice::ReadWrite));
+        const QByteArray whole = file.readAll();
+        file.resize(whole.size() / 2); // as a write cut short would leave it, were it not atomic
+        file.close();
+
+        RouteDocument doc;
+        AutosaveRecovery recovery(&doc, dir.path());
+        QVERIFY(!recovery.isAvailable());
+        QVERIFY2(recovery.message().contains(directory.filePath(1)), qPrintable(recovery.message()));
+        QVERIFY2(recovery.message().contains(QStringLiteral("kept as")), qPrintable(recovery.message()));
+        const QStringList aside = QDir(dir.path()).entryList({QStringLiteral("autosave-1.unreadable-*.json")}, QDir::Files);
+        QCOMPARE(aside.size(), 1);
+        QFile kept(QDir(dir.path()).filePath(aside.first()));
+        QVERIFY(kept.open(QIODevice::ReadOnly));
+        QCOMPARE(kept.readAll(), whole.left(whole.size() / 2)); // never deleted, not altered
+        QVERIFY(recovery.message().contains(aside.first()));
+    }
+
+    void discardKeepsOneBackup()
+    {
+        QTemporaryDir dir;
+        leaveEdits(dir.path());
+        RouteDocument doc;
+        AutosaveRecovery recovery(&doc, dir.path());
+        QVERIFY(recovery.isAvailable());
+        recovery.discard();
+        QVERIFY(!recovery.isAvailable());
+        QVERIFY(!doc.isModified());
+        client::AutosaveDirectory directory(dir.path());
+        QVERIFY(directory.slotsWithFiles().isEmpty());
+        QVERIFY(client::decodeAutosave([&] {
+                    QFile f(directory.discardedPath());
+                    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+                }()).ok());
+    }
+
+    void decodeErrorsSayWhere()
+    {
+        QCOMPARE(client::decodeAutosave("{\"format\": \"sortie-mission\"}").error().jsonPath, QStringLiteral("/format"));
+        client::AutosaveRecord record;
+        record.working = test::serverRoute();
+        record.baseline = record.working;
+        record.savedAt = QDateTime::currentDateTimeUtc();
+        QByteArray data = client::encodeAutosave(record);
+        QVERIFY(client::decodeAutosave(data).ok());
+        data.replace("\"schemaVersion\"", "\"schemaVersio\"");
+        const auto broken = client::decodeAutosave(data);
+        QVERIFY(!broken.ok());
+        QVERIFY2(broken.error().jsonPath.startsWith(QStringLiteral("/working")), qPrintable(broken.error().toString()));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestRouteAutosave)
+#include "tst_routeautosave.moc"

@@ -1,0 +1,188 @@
+// "Never lose an edit" through the main window, offscreen: a previous run's unsaved edits are
+// offered at start (the dialog lists the changes; Restore puts them on the map and in the table),
+// and a version conflict shows both copies (the banner lists the differences, their route is a
+// grey ghost on the map) until a button resolves it.
+#include "AppSettings.h"
+#include "AutosaveRecovery.h"
+#include "AutosaveTestRoute.h"
+#include "ConnectionController.h"
+#include "HciClient.h"
+#include "HciReply.h"
+#include "HciServer.h"
+#include "Messages.pb.h"
+#include "MissionController.h"
+#include "QuickScene.h"
+#include "RouteAutosave.h"
+#include "RouteLayer.h"
+#include "SimWorld.h"
+#include "SortieUi.h"
+
+#include <QQmlApplicationEngine>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QtQml/qqmlextensionplugin.h>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+using namespace sortie;
+namespace pb = com::ugcs::ucs::proto;
+
+class TestRecoveryFlows : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    std::unique_ptr<sim::SimWorld> m_world;
+    std::unique_ptr<sim::HciServer> m_server;
+    std::unique_ptr<QSettings> m_storage;
+    std::unique_ptr<ui::AppSettings> m_settings;
+    std::unique_ptr<hci::HciSession> m_session;
+    std::unique_ptr<hci::HciClient> m_client;
+    std::unique_ptr<client::ConnectionController> m_connection;
+    std::unique_ptr<client::MissionController> m_missions;
+    std::unique_ptr<client::AutosaveRecovery> m_recovery;
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+
+    template<typename T = QQuickItem>
+    T *find(const char *name) const { return m_window->findChild<T *>(QString::fromLatin1(name)); }
+    void click(const char *name)
+    {
+        QQuickItem *item = find(name);
+        QVERIFY2(item, name);
+        QTRY_VERIFY2(item->isVisible() && item->isEnabled() && item->width() > 0, name);
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, item->mapToScene(QPointF(item->width() / 2, item->height() / 2)).toPoint());
+    }
+
+    void showWindow()
+    {
+        m_engine = std::make_unique<QQmlApplicationEngine>();
+        ui::addImportPaths(*m_engine);
+        m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())},
+                                        {QStringLiteral("connection"), QVariant::fromValue<QObject *>(m_connection.get())},
+                                        {QStringLiteral("missions"), QVariant::fromValue<QObject *>(m_missions.get())},
+                                        {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(m_recovery.get())}});
+        m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
+        QVERIFY(!m_engine->rootObjects().isEmpty());
+        m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
+        m_window->resize(1280, 800);
+        m_window->show();
+        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+    }
+
+private slots:
+    void initTestCase() { test::useSoftwareRendering(); }
+
+    void init()
+    {
+        sim::SimWorld::Config config;
+        config.users = {{0, QStringLiteral("admin"), QStringLiteral("admin"), true}};
+        m_world = std::make_unique<sim::SimWorld>(config);
+        m_server = std::make_unique<sim::HciServer>(*m_world);
+        QVERIFY(m_server->listen(QHostAddress::LocalHost, 0));
+        m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
+        m_storage->clear();
+        m_settings = std::make_unique<ui::AppSettings>(m_storage.get());
+        m_session = std::make_unique<hci::HciSession>();
+        m_client = std::make_unique<hci::HciClient>(m_session.get());
+        m_connection = std::make_unique<client::ConnectionController>(m_session.get());
+        m_missions = std::make_unique<client::MissionController>(m_client.get());
+    }
+
+    void cleanup()
+    {
+        m_engine.reset();
+        m_recovery.reset();
+        m_missions.reset();
+        m_connection.reset();
+        m_client.reset();
+        m_session.reset();
+        m_settings.reset();
+        m_storage.reset();
+        m_server.reset();
+        m_world.reset();
+    }
+
+    void restoreDialogShowsTheChangesAndRestores()
+    {
+        QTemporaryDir autosaves;
+        mission::Route edited;
+        { // a run that quit with unsaved edits
+            client::RouteDocument doc;
+            client::RouteAutosave autosave(&doc, autosaves.path());
+            doc.load(test::serverRoute());
+            test::editRoute(doc);
+            edited = doc.route();
+        }
+        m_recovery = std::make_unique<client::AutosaveRecovery>(m_missions->document(), autosaves.path());
+        showWindow();
+        QObject *dialog = find<QObject>("restoreDialog");
+        QVERIFY(dialog);
+        QTRY_VERIFY(dialog->property("visible").toBool());
+        QQuickItem *changes = find("restoreChanges");
+        QVERIFY(changes);
+        QTRY_COMPARE(changes->property("count").toInt(), 3);
+        click("restoreAutosaveButton");
+        QTRY_VERIFY(!dialog->property("visible").toBool());
+        QTRY_COMPARE(m_window->property("currentPage").toInt(), 1);
+        auto *route = find<ui::RouteLayer>("routeLayer");
+        QTRY_COMPARE(route->count(), 13);
+        QTRY_COMPARE(find("waypointList")->property("count").toInt(), 13);
+        QTRY_COMPARE(route->visibleWaypointCount(), 13); // fitted to the map
+        QVERIFY(m_missions->document()->route() == edited);
+        QVERIFY(m_missions->document()->isModified());
+    }
+
+    void conflictShowsBothCopiesUntilAButtonResolvesIt()
+    {
+        showWindow();
+        QSignalSpy ready(m_connection.get(), &client::ConnectionController::ready);
+        m_connection->connectToServer(QStringLiteral("127.0.0.1:%1").arg(m_server->port()), QStringLiteral("admin"), QStringLiteral("admin"));
+        QVERIFY(ready.wait(10000));
+        QTRY_VERIFY(m_missions->routes()->count() > 0);
+        const int id = m_missions->routes()->objectIdAt(0);
+        m_missions->openRoute(id);
+        QTRY_COMPARE(m_missions->routeId(), id);
+        client::RouteDocument *doc = m_missions->document();
+        const int count = doc->model()->count();
+        doc->addWaypoint(56.9790, 24.0820);
+
+        // Someone else saves the route meanwhile, with a waypoint fewer.
+        hci::HciSession other;
+        hci::HciClient bob(&other);
+        QSignalSpy otherReady(&other, &hci::HciSession::ready);
+        other.open(QStringLiteral("127.0.0.1"), m_server->port(), QStringLiteral("admin"), QStringLiteral("admin"));
+        QVERIFY(otherReady.wait(10000));
+        hci::HciReply *get = bob.getObject(hci::HciObjectType::Route, id);
+        QSignalSpy got(get, &hci::HciReply::finished);
+        QVERIFY(get->isFinished() || got.wait(10000));
+        pb::Route theirs = get->response<pb::GetObjectResponse>().object().route();
+        theirs.mutable_segments()->RemoveLast();
+        hci::HciReply *put = bob.createOrUpdate(theirs);
+        QSignalSpy stored(put, &hci::HciReply::finished);
+        QVERIFY(put->isFinished() || stored.wait(10000));
+
+        QTRY_VERIFY(find("conflictBanner")->isVisible());
+        QTRY_COMPARE(find("conflictChanges")->property("count").toInt(), 2); // theirs lacks one, mine has one more
+        auto *ghost = find<ui::RouteLayer>("theirRouteLayer");
+        QVERIFY(ghost->isVisible());
+        QCOMPARE(ghost->count(), count - 1);
+        QCOMPARE(find<ui::RouteLayer>("routeLayer")->count(), count + 1);
+
+        click("takeTheirsButton");
+        QTRY_VERIFY(!find("conflictBanner")->isVisible());
+        QVERIFY(!ghost->isVisible());
+        QTRY_COMPARE(find<ui::RouteLayer>("routeLayer")->count(), count - 1);
+        QVERIFY(!doc->isModified());
+        doc->undo(); // mine again
+        QCOMPARE(find<ui::RouteLayer>("routeLayer")->count(), count + 1);
+        other.close();
+    }
+};
+
+QTEST_MAIN(TestRecoveryFlows)
+#include "tst_recoveryflows.moc"
