@@ -19,6 +19,18 @@ namespace sortie::test {
 
 using namespace std::chrono_literals;
 
+// The simulator's demo route, and the row of an object by name in a list the views show (-1: none).
+inline const QString kDemoRoute = QStringLiteral("Riga port - 4 WP");
+
+inline int rowOf(const client::ServerObjectListModel &model, const QString &name)
+{
+    for (int row = 0; row < model.count(); ++row) {
+        if (model.nameAt(row) == name)
+            return row;
+    }
+    return -1;
+}
+
 // Spins the event loop in 1 ms steps until `done` holds (QTRY_* sleeps 50 ms a step: too slow for
 // loops of hundreds). False on timeout.
 template<class Predicate>

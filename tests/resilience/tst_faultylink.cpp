@@ -22,17 +22,6 @@ namespace pb = com::ugcs::ucs::proto;
 
 namespace {
 
-const QString kDemoRoute = QStringLiteral("Riga port - 4 WP");
-
-int rowOf(const client::ServerObjectListModel &model, const QString &name)
-{
-    for (int row = 0; row < model.count(); ++row) {
-        if (model.nameAt(row) == name)
-            return row;
-    }
-    return -1;
-}
-
 // Bytes that can never hold a plausible HCI header (no 0x48 0x50 "HP"), so a decoder that lost its
 // place has to skip all of them.
 QByteArray noise(qsizetype size, quint32 seed)

@@ -20,17 +20,6 @@ using vehicle::TelemetryField;
 
 namespace {
 
-const QString kDemoRoute = QStringLiteral("Riga port - 4 WP");
-
-int rowOf(const client::ServerObjectListModel &model, const QString &name)
-{
-    for (int row = 0; row < model.count(); ++row) {
-        if (model.nameAt(row) == name)
-            return row;
-    }
-    return -1;
-}
-
 // The time of a vehicle's last latitude sample, or 0.
 qint64 lastFix(const vehicle::Vehicle *v)
 {
