@@ -17,6 +17,8 @@ using namespace sortie;
 using namespace std::chrono_literals;
 using client::MissionController;
 using vehicle::TelemetryField;
+using test::kDemoRoute;
+using test::rowOf;
 
 namespace {
 
