@@ -28,7 +28,7 @@ struct RouteFrame
     std::vector<QPolygonF> movingLegs;
     std::vector<Marker> movingMarkers;
     quint64 revision = 0; // changes whenever legs or markers (not the moving part) change
-    int visibleWaypoints = 0;
+    int visibleWaypoints = 0; // markers inside Input::visibleArea
     int labelledWaypoints = 0;
 
     struct Input
@@ -39,6 +39,7 @@ struct RouteFrame
         std::vector<int> draggedRows;                 // drawn displaced by dragOffset
         QPointF dragOffset;                           // normalised
         double markerRadius = 9.0;
+        QRectF visibleArea;                           // counted as visible; empty: the viewport
     };
     static RouteFrame build(const Input &input, const MapViewport &viewport);
     // Rebuilds only the moving part (the drag offset changed, nothing else).

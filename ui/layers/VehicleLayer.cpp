@@ -72,7 +72,7 @@ void VehicleLayer::setCurrentIndex(int row)
         return;
     m_current = row;
     emit currentIndexChanged();
-    update();
+    repaint();
 }
 
 void VehicleLayer::setTrailLength(int points)
@@ -87,7 +87,7 @@ void VehicleLayer::setTrailLength(int points)
     }
     emit trailLengthChanged();
     polish();
-    update();
+    repaint();
 }
 
 void VehicleLayer::setTrailsVisible(bool visible)
@@ -97,7 +97,7 @@ void VehicleLayer::setTrailsVisible(bool visible)
     m_trailsVisible = visible;
     emit trailLengthChanged();
     polish();
-    update();
+    repaint();
 }
 
 void VehicleLayer::resolveRoles()
@@ -166,7 +166,7 @@ void VehicleLayer::reload()
     }
     emit vehiclesChanged();
     polish();
-    update();
+    repaint();
 }
 
 void VehicleLayer::reloadRows(int first, int last)
@@ -176,14 +176,14 @@ void VehicleLayer::reloadRows(int first, int last)
         record(m_vehicles[size_t(row)]);
     }
     polish();
-    update();
+    repaint();
 }
 
 void VehicleLayer::clearTrails()
 {
     m_trails.clear();
     polish();
-    update();
+    repaint();
 }
 
 int VehicleLayer::trailPointCount(int row) const
@@ -221,7 +221,7 @@ int VehicleLayer::vehicleAt(QPointF position, qreal radius) const
 
 void VehicleLayer::updatePolish()
 {
-    const MapViewport view = viewport();
+    const MapViewport view = paintViewport();
     const QRectF screen = QRectF(QPointF(0, 0), view.size()).adjusted(-30, -30, 30, 30);
     m_drawn.assign(m_vehicles.size(), Drawn());
     for (size_t row = 0; row < m_vehicles.size(); ++row) {
