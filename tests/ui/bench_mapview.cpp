@@ -157,6 +157,13 @@ int main(int argc, char *argv[])
     // A pan that keeps going one way: the layers' pictures run out of margin every 40-odd frames.
     run("pan a long way, zoomed in", [&](int i) { map->panBy(i % 400 < 200 ? 6 : -6, 2); return true; });
 
+    // Zooming lays every layer out anew each frame (a pinch or a smooth wheel).
+    const double zoom = map->zoomLevel();
+    run("zoom in and out, vehicles moving", [&](int i) {
+        map->zoomAroundPoint(QPointF(640, 400), zoom + 0.02 * (i % 100 < 50 ? i % 50 : 50 - i % 50));
+        return true;
+    });
+
     route->fitToMap(20);
     run("vehicles moving, map still", [&](int) { return true; });
 

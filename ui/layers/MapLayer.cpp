@@ -81,22 +81,27 @@ void MapLayer::geometryChange(const QRectF &newGeometry, const QRectF &oldGeomet
 void MapLayer::followViewport()
 {
     const MapViewport view = viewport();
-    const QSizeF grown = view.size() + QSizeF(2.0 * m_margin, 2.0 * m_margin);
-    if (view.zoom() == m_paintViewport.zoom() && grown == m_paintViewport.size()) {
+    const bool sameZoom = view.zoom() == m_paintViewport.zoom();
+    const QSizeF grown = view.size() + QSizeF(2.0 * m_pictureMargin, 2.0 * m_pictureMargin);
+    if (sameZoom && grown == m_paintViewport.size()) {
         // How far the picture's content has to move: the centres' distance in pixels.
         QPointF delta = m_paintViewport.centre() - view.centre();
         delta.rx() -= std::round(delta.x()); // across the antimeridian
         const QPointF shift = delta * view.scale();
         const QPointF whole(std::round(shift.x()), std::round(shift.y()));
         if (std::abs(shift.x() - whole.x()) < kWholePixel && std::abs(shift.y() - whole.y()) < kWholePixel
-            && std::abs(whole.x()) <= m_margin && std::abs(whole.y()) <= m_margin) {
-            m_canvas->setPosition(whole - QPointF(m_margin, m_margin));
+            && std::abs(whole.x()) <= m_pictureMargin && std::abs(whole.y()) <= m_pictureMargin) {
+            m_canvas->setPosition(whole - QPointF(m_pictureMargin, m_pictureMargin));
             return;
         }
     }
-    m_paintViewport = MapViewport(view.centre(), view.zoom(), grown);
-    m_canvas->setPosition(QPointF(-m_margin, -m_margin));
-    m_canvas->setSize(grown);
+    // While the zoom changes (a pinch, a wheel) every frame is laid out anew anyway: no margin
+    // to draw until the map pans at one zoom.
+    m_pictureMargin = sameZoom ? m_margin : 0;
+    const double m = m_pictureMargin;
+    m_paintViewport = MapViewport(view.centre(), view.zoom(), view.size() + QSizeF(2 * m, 2 * m));
+    m_canvas->setPosition(QPointF(-m, -m));
+    m_canvas->setSize(m_paintViewport.size());
     onViewportChanged();
 }
 

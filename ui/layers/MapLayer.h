@@ -14,9 +14,9 @@ class LayerCanvas;
 
 // Base of the items drawn over a MapView: each draws many things with QPainter, so it also
 // renders under the software scene graph. A layer fills its map (anchors.fill: map). It draws
-// into a picture (a LayerCanvas child) that reaches `panMargin` pixels beyond the map on every
-// side: while the map pans by whole pixels within that margin, the picture only moves; a zoom,
-// a resize or a longer pan lays it out and draws it anew for the map's new viewport. Presses a
+// into a picture (a LayerCanvas child) that reaches a margin beyond the map on every side:
+// while the map pans by whole pixels within that margin, the picture only moves; a zoom, a
+// resize or a longer pan lays it out and draws it anew for the map's new viewport. Presses a
 // layer does not want go on to the map.
 class MapLayer : public QQuickItem
 {
@@ -39,7 +39,8 @@ public:
     const MapViewport &paintViewport() const { return m_paintViewport; }
     // Where paintViewport's top-left corner is in this item's coordinates now.
     QPointF paintOrigin() const;
-    int panMargin() const { return m_margin; }
+    // How far the picture reaches beyond the map now: the pan margin, or 0 just after a zoom.
+    int pictureMargin() const { return m_pictureMargin; }
 
     // Draws the layer in paintViewport's pixels.
     virtual void paint(QPainter *painter) = 0;
@@ -65,6 +66,7 @@ private:
     LayerCanvas *m_canvas = nullptr;
     MapViewport m_paintViewport;
     int m_margin = kDefaultPanMargin;
+    int m_pictureMargin = 0;
 };
 
 } // namespace sortie::ui

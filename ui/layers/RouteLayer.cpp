@@ -131,7 +131,7 @@ void RouteLayer::updatePolish()
     const MapViewport view = paintViewport();
     if (m_frameStale || !m_dragging) {
         // Counted as visible: inside the map when laid out (the picture reaches beyond it).
-        input.visibleArea = QRectF(QPointF(panMargin(), panMargin()), viewport().size());
+        input.visibleArea = QRectF(QPointF(pictureMargin(), pictureMargin()), viewport().size());
         m_frame = RouteFrame::build(input, view);
         m_frame.revision = ++m_revision;
         m_frameStale = false;
