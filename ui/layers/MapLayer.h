@@ -3,6 +3,8 @@
 #include <QPointer>
 #include <QQuickItem>
 
+#include <functional>
+
 #include "MapView.h"
 #include "MapViewport.h"
 

@@ -133,7 +133,6 @@ void RouteLayer::updatePolish()
         // Counted as visible: inside the map when laid out (the picture reaches beyond it).
         input.visibleArea = QRectF(QPointF(pictureMargin(), pictureMargin()), viewport().size());
         m_frame = RouteFrame::build(input, view);
-        m_frame.revision = ++m_revision;
         m_frameStale = false;
         repaint();
     } else {

@@ -102,7 +102,6 @@ private:
     RoutePainter m_painter;
     LayerCanvas *m_overlay = nullptr; // the moving part of a drag, over the still picture
     RouteFrame m_frame;
-    quint64 m_revision = 0;
     bool m_frameStale = true; // more than the drag offset changed since the last build
 
     int m_pressRow = -1;
