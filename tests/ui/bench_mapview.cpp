@@ -1,6 +1,7 @@
 // Frames per second drawing the map with 10,000 waypoints and 20 moving vehicles, offscreen with
 // the software scene graph: while panning (route overview and zoomed in) and while dragging a
 // waypoint. Each frame is a full polish + paint + render of the 1280x800 window (grabWindow).
+// Panning by whole pixels mostly moves the layers' pictures; "a long way" also redraws them.
 #include "CoordinateListModel.h"
 #include "MapView.h"
 #include "QuickScene.h"
@@ -152,6 +153,16 @@ int main(int argc, char *argv[])
     map->setCenter(QGeoCoordinate(56.95, 24.09));
     map->setZoomLevel(15.5);
     run("pan, zoomed in (part of route)", [&](int i) { map->panBy(i % 40 < 20 ? 4 : -4, 2); return true; });
+
+    // A pan that keeps going one way: the layers' pictures run out of margin every 40-odd frames.
+    run("pan a long way, zoomed in", [&](int i) { map->panBy(i % 400 < 200 ? 6 : -6, 2); return true; });
+
+    // Zooming lays every layer out anew each frame (a pinch or a smooth wheel).
+    const double zoom = map->zoomLevel();
+    run("zoom in and out, vehicles moving", [&](int i) {
+        map->zoomAroundPoint(QPointF(640, 400), zoom + 0.02 * (i % 100 < 50 ? i % 50 : 50 - i % 50));
+        return true;
+    });
 
     route->fitToMap(20);
     run("vehicles moving, map still", [&](int) { return true; });

@@ -17,7 +17,7 @@ AreaScanLayer::AreaScanLayer(QQuickItem *parent)
     setAcceptedMouseButtons(Qt::NoButton);
     auto redraw = [this] {
         polish();
-        update();
+        repaint();
     };
     connect(&m_polygon, &ModelCoordinates::changed, this, redraw);
     connect(&m_transects, &ModelCoordinates::changed, this, redraw);
@@ -83,12 +83,12 @@ void AreaScanLayer::setColor(const QColor &color)
         return;
     m_color = color;
     emit colorChanged();
-    update();
+    repaint();
 }
 
-QPolygonF AreaScanLayer::project(const std::vector<QPointF> &points, int displaced, QPointF offset) const
+QPolygonF AreaScanLayer::project(const std::vector<QPointF> &points, int displaced, QPointF offset,
+                                 const MapViewport &view)
 {
-    const MapViewport view = viewport();
     QPolygonF out;
     out.reserve(qsizetype(points.size()));
     QPointF anchor;
@@ -111,8 +111,8 @@ QPolygonF AreaScanLayer::project(const std::vector<QPointF> &points, int displac
 
 void AreaScanLayer::updatePolish()
 {
-    m_drawnPolygon = project(m_polygon.points(), m_dragging ? m_pressVertex : -1, m_dragOffset);
-    m_drawnTransects = project(m_transects.points(), -1, {});
+    m_drawnPolygon = project(m_polygon.points(), m_dragging ? m_pressVertex : -1, m_dragOffset, paintViewport());
+    m_drawnTransects = project(m_transects.points(), -1, {}, paintViewport());
 }
 
 void AreaScanLayer::paint(QPainter *painter)
@@ -162,7 +162,7 @@ int AreaScanLayer::vertexAt(QPointF position, qreal radius) const
 
 int AreaScanLayer::edgeAt(QPointF position, qreal tolerance) const
 {
-    const QPolygonF polygon = project(m_polygon.points(), -1, {});
+    const QPolygonF polygon = project(m_polygon.points(), -1, {}, viewport());
     if (polygon.size() < 2 || polygon.size() != m_polygon.count())
         return -1;
     int best = -1;
@@ -209,7 +209,7 @@ void AreaScanLayer::mouseMoveEvent(QMouseEvent *event)
     const MapViewport view = viewport();
     m_dragOffset = view.toNormalised(event->position()) - view.toNormalised(m_pressPos);
     polish();
-    update();
+    repaint();
 }
 
 void AreaScanLayer::mouseReleaseEvent(QMouseEvent *event)
@@ -220,7 +220,7 @@ void AreaScanLayer::mouseReleaseEvent(QMouseEvent *event)
         m_dragging = false;
         const QGeoCoordinate coordinate = WebMercator::unproject(m_polygon.points()[size_t(vertex)] + m_dragOffset);
         polish();
-        update();
+        repaint();
         emit vertexMoved(vertex, coordinate);
     } else if (edge >= 0) {
         emit edgeClicked(edge, viewport().screenToGeo(event->position()), int(event->modifiers()));
@@ -234,7 +234,7 @@ void AreaScanLayer::mouseUngrabEvent()
     if (m_dragging) {
         m_dragging = false;
         polish();
-        update();
+        repaint();
     }
 }
 

@@ -68,7 +68,7 @@ protected:
     void mouseUngrabEvent() override;
 
 private:
-    QPolygonF project(const std::vector<QPointF> &points, int displaced, QPointF offset) const;
+    static QPolygonF project(const std::vector<QPointF> &points, int displaced, QPointF offset, const MapViewport &view);
 
     CoordinateListModel m_ownPolygon; // behind the list properties
     CoordinateListModel m_ownPath;

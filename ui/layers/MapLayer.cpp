@@ -1,13 +1,22 @@
 #include "MapLayer.h"
 
+#include "LayerCanvas.h"
 #include "MapView.h"
+
+#include <cmath>
 
 namespace sortie::ui {
 
+namespace {
+// A shift this close to whole pixels is drawn by moving the picture (no resampling).
+constexpr double kWholePixel = 1e-3;
+} // namespace
+
 MapLayer::MapLayer(QQuickItem *parent)
-    : QQuickPaintedItem(parent)
+    : QQuickItem(parent)
+    , m_canvas(new LayerCanvas(this, [this](QPainter &painter) { paint(&painter); }))
 {
-    setAntialiasing(true);
+    setClip(true); // the picture reaches beyond the map
 }
 
 void MapLayer::setMap(MapView *map)
@@ -18,8 +27,9 @@ void MapLayer::setMap(MapView *map)
         disconnect(m_map, nullptr, this, nullptr);
     m_map = map;
     if (m_map)
-        connect(m_map, &MapView::viewportChanged, this, &MapLayer::onViewportChanged);
-    onViewportChanged();
+        connect(m_map, &MapView::viewportChanged, this, &MapLayer::followViewport);
+    m_paintViewport = MapViewport();
+    followViewport();
     emit mapChanged();
 }
 
@@ -30,10 +40,69 @@ MapViewport MapLayer::viewport() const
     return MapViewport(QPointF(0.5, 0.5), 2.0, size());
 }
 
+QPointF MapLayer::paintOrigin() const
+{
+    return m_canvas->position();
+}
+
+void MapLayer::repaint()
+{
+    m_canvas->update();
+}
+
 void MapLayer::onViewportChanged()
 {
     polish();
-    update();
+    repaint();
+}
+
+void MapLayer::setPanMargin(int pixels)
+{
+    pixels = std::max(0, pixels);
+    if (pixels == m_margin)
+        return;
+    m_margin = pixels;
+    m_paintViewport = MapViewport();
+    followViewport();
+}
+
+LayerCanvas *MapLayer::createOverlay(std::function<void(QPainter &)> painter)
+{
+    return new LayerCanvas(m_canvas, std::move(painter));
+}
+
+void MapLayer::geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry)
+{
+    QQuickItem::geometryChange(newGeometry, oldGeometry);
+    if (newGeometry.size() != oldGeometry.size())
+        followViewport();
+}
+
+void MapLayer::followViewport()
+{
+    const MapViewport view = viewport();
+    const bool sameZoom = view.zoom() == m_paintViewport.zoom();
+    const QSizeF grown = view.size() + QSizeF(2.0 * m_pictureMargin, 2.0 * m_pictureMargin);
+    if (sameZoom && grown == m_paintViewport.size()) {
+        // How far the picture's content has to move: the centres' distance in pixels.
+        QPointF delta = m_paintViewport.centre() - view.centre();
+        delta.rx() -= std::round(delta.x()); // across the antimeridian
+        const QPointF shift = delta * view.scale();
+        const QPointF whole(std::round(shift.x()), std::round(shift.y()));
+        if (std::abs(shift.x() - whole.x()) < kWholePixel && std::abs(shift.y() - whole.y()) < kWholePixel
+            && std::abs(whole.x()) <= m_pictureMargin && std::abs(whole.y()) <= m_pictureMargin) {
+            m_canvas->setPosition(whole - QPointF(m_pictureMargin, m_pictureMargin));
+            return;
+        }
+    }
+    // While the zoom changes (a pinch, a wheel) every frame is laid out anew anyway: no margin
+    // to draw until the map pans at one zoom.
+    m_pictureMargin = sameZoom ? m_margin : 0;
+    const double m = m_pictureMargin;
+    m_paintViewport = MapViewport(view.centre(), view.zoom(), view.size() + QSizeF(2 * m, 2 * m));
+    m_canvas->setPosition(QPointF(-m, -m));
+    m_canvas->setSize(m_paintViewport.size());
+    onViewportChanged();
 }
 
 } // namespace sortie::ui

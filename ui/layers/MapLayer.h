@@ -1,17 +1,26 @@
 #pragma once
 
 #include <QPointer>
-#include <QQuickPaintedItem>
+#include <QQuickItem>
+
+#include <functional>
 
 #include "MapView.h"
 #include "MapViewport.h"
 
+class QPainter;
+
 namespace sortie::ui {
 
+class LayerCanvas;
+
 // Base of the items drawn over a MapView: each draws many things with QPainter, so it also
-// renders under the software scene graph. A layer fills its map (anchors.fill: map) and
-// repaints when the map's viewport changes. Presses a layer does not want go on to the map.
-class MapLayer : public QQuickPaintedItem
+// renders under the software scene graph. A layer fills its map (anchors.fill: map). It draws
+// into a picture (a LayerCanvas child) that reaches a margin beyond the map on every side:
+// while the map pans by whole pixels within that margin, the picture only moves; a zoom, a
+// resize or a longer pan lays it out and draws it anew for the map's new viewport. Presses a
+// layer does not want go on to the map.
+class MapLayer : public QQuickItem
 {
     Q_OBJECT
     QML_ELEMENT
@@ -19,22 +28,47 @@ class MapLayer : public QQuickPaintedItem
     Q_PROPERTY(sortie::ui::MapView *map READ map WRITE setMap NOTIFY mapChanged)
 
 public:
+    static constexpr int kDefaultPanMargin = 256;
+
     explicit MapLayer(QQuickItem *parent = nullptr);
 
     MapView *map() const { return m_map; }
     void setMap(MapView *map);
-    // The map's viewport, or a default one before a map is set.
+    // The map's viewport now (for hit testing), or a default one before a map is set.
     MapViewport viewport() const;
+    // The viewport the picture is laid out for: the map's when it was last drawn anew, grown
+    // by the margin on every side. Layers project what they draw with this one.
+    const MapViewport &paintViewport() const { return m_paintViewport; }
+    // Where paintViewport's top-left corner is in this item's coordinates now.
+    QPointF paintOrigin() const;
+    // How far the picture reaches beyond the map now: the pan margin, or 0 just after a zoom.
+    int pictureMargin() const { return m_pictureMargin; }
+
+    // Draws the layer in paintViewport's pixels.
+    virtual void paint(QPainter *painter) = 0;
 
 signals:
     void mapChanged();
 
 protected:
-    // The map moved or zoomed: by default, draw again.
+    // What the layer shows changed: draw the picture again (for the same paintViewport).
+    void repaint();
+    // The picture needs a new layout for a new paintViewport: by default, polish and draw again.
     virtual void onViewportChanged();
+    void setPanMargin(int pixels);
+    // An extra picture that moves with the main one, drawn over it; the layer sets its geometry
+    // (in paintViewport pixels) and calls update() on it.
+    LayerCanvas *createOverlay(std::function<void(QPainter &)> painter);
+    void geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry) override;
 
 private:
+    void followViewport();
+
     QPointer<MapView> m_map;
+    LayerCanvas *m_canvas = nullptr;
+    MapViewport m_paintViewport;
+    int m_margin = kDefaultPanMargin;
+    int m_pictureMargin = 0;
 };
 
 } // namespace sortie::ui

@@ -142,7 +142,9 @@ RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
     frame.markers.insert(frame.markers.end(), onTop.begin(), onTop.end());
     for (const Marker &marker : frame.markers)
         frame.labelledWaypoints += (marker.flags & Labelled) ? 1 : 0;
-    frame.visibleWaypoints = int(visible.size());
+    const QRectF counted = input.visibleArea.isEmpty() ? view : input.visibleArea.adjusted(-margin, -margin, margin, margin);
+    for (int row : visible)
+        frame.visibleWaypoints += counted.contains(screen[size_t(row)]) ? 1 : 0;
     frame.updateMoving(input, viewport);
     return frame;
 }

@@ -12,7 +12,7 @@ namespace sortie::ui {
 // and the waypoint markers to draw, each either labelled with its number or a plain dot (when
 // markers would overlap). Built on the GUI thread, drawn by RoutePainter: drawing never reads
 // the model. While waypoints are dragged, they and their legs form a separate "moving" part,
-// rebuilt alone on every mouse move while the rest stays (and stays cached as an image).
+// rebuilt alone on every mouse move while the rest stays drawn in the layer's picture.
 struct RouteFrame
 {
     enum MarkerFlag : quint8 { Labelled = 1, Selected = 2, Current = 4 };
@@ -27,8 +27,7 @@ struct RouteFrame
     std::vector<Marker> markers; // in drawing order: selected and current last, on top
     std::vector<QPolygonF> movingLegs;
     std::vector<Marker> movingMarkers;
-    quint64 revision = 0; // changes whenever legs or markers (not the moving part) change
-    int visibleWaypoints = 0;
+    int visibleWaypoints = 0; // markers inside Input::visibleArea
     int labelledWaypoints = 0;
 
     struct Input
@@ -39,6 +38,7 @@ struct RouteFrame
         std::vector<int> draggedRows;                 // drawn displaced by dragOffset
         QPointF dragOffset;                           // normalised
         double markerRadius = 9.0;
+        QRectF visibleArea;                           // counted as visible; empty: the viewport
     };
     static RouteFrame build(const Input &input, const MapViewport &viewport);
     // Rebuilds only the moving part (the drag offset changed, nothing else).

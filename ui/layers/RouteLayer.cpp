@@ -28,6 +28,10 @@ RouteLayer::RouteLayer(QQuickItem *parent)
     : MapLayer(parent)
 {
     setAcceptedMouseButtons(Qt::NoButton);
+    m_overlay = createOverlay([this](QPainter &painter) {
+        m_painter.paintMoving(painter, m_frame, m_style, m_overlay->position());
+    });
+    m_overlay->setVisible(false);
     connect(&m_points, &ModelCoordinates::changed, this, &RouteLayer::pointsChanged);
 }
 
@@ -83,7 +87,8 @@ void RouteLayer::setColor(const QColor &color)
     m_style.leg = color;
     m_style.marker = color.darker(130);
     emit colorChanged();
-    update();
+    repaint();
+    m_overlay->update();
 }
 
 void RouteLayer::pointsChanged()
@@ -104,7 +109,6 @@ void RouteLayer::reloadSelection()
     }
     m_frameStale = true;
     polish();
-    update();
 }
 
 void RouteLayer::onViewportChanged()
@@ -124,19 +128,35 @@ void RouteLayer::updatePolish()
         input.draggedRows = m_dragRows;
         input.dragOffset = m_dragOffset;
     }
+    const MapViewport view = paintViewport();
     if (m_frameStale || !m_dragging) {
-        m_frame = RouteFrame::build(input, viewport());
-        m_frame.revision = ++m_revision;
+        // Counted as visible: inside the map when laid out (the picture reaches beyond it).
+        input.visibleArea = QRectF(QPointF(pictureMargin(), pictureMargin()), viewport().size());
+        m_frame = RouteFrame::build(input, view);
         m_frameStale = false;
+        repaint();
     } else {
-        m_frame.updateMoving(input, viewport());
+        m_frame.updateMoving(input, view);
     }
+    placeOverlay();
     emit frameChanged();
+}
+
+// The overlay covers only the moving part: the scene graph recomposites just that area.
+void RouteLayer::placeOverlay()
+{
+    const QRect bounds = RoutePainter::movingBounds(m_frame, m_style).toAlignedRect();
+    m_overlay->setVisible(!bounds.isEmpty());
+    if (bounds.isEmpty())
+        return;
+    m_overlay->setPosition(bounds.topLeft());
+    m_overlay->setSize(bounds.size());
+    m_overlay->update();
 }
 
 void RouteLayer::paint(QPainter *painter)
 {
-    m_painter.paint(*painter, m_frame, m_style);
+    m_painter.paintStill(*painter, m_frame, m_style);
 }
 
 int RouteLayer::waypointAt(QPointF position, qreal radius) const
@@ -310,7 +330,6 @@ void RouteLayer::mouseMoveEvent(QMouseEvent *event)
     }
     m_dragOffset = normalisedAt(event->position()) - normalisedAt(m_pressPos);
     polish();
-    update();
 }
 
 void RouteLayer::mouseReleaseEvent(QMouseEvent *event)
@@ -326,8 +345,8 @@ void RouteLayer::mouseReleaseEvent(QMouseEvent *event)
         }
         setDragging(false);
         m_dragRows.clear();
+        m_frameStale = true;
         polish();
-        update();
         emit waypointsMoved(rows, coordinates);
     } else if (pressRow >= 0) {
         emit waypointClicked(pressRow, int(m_pressModifiers));
@@ -343,8 +362,8 @@ void RouteLayer::mouseUngrabEvent()
     if (m_dragging) {
         setDragging(false);
         m_dragRows.clear();
+        m_frameStale = true;
         polish();
-        update();
     }
 }
 

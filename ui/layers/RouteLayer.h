@@ -1,5 +1,6 @@
 #pragma once
 
+#include "LayerCanvas.h"
 #include "MapLayer.h"
 #include "ModelCoordinates.h"
 #include "RouteFrame.h"
@@ -90,6 +91,7 @@ private:
     void pressWaypoint(int row, Qt::KeyboardModifiers modifiers);
     void setDragging(bool dragging);
     QPointF normalisedAt(QPointF screen) const;
+    void placeOverlay();
 
     ModelCoordinates m_points;
     QPointer<QItemSelectionModel> m_selection;
@@ -98,8 +100,8 @@ private:
     bool m_editable = false;
     RoutePainter::Style m_style;
     RoutePainter m_painter;
+    LayerCanvas *m_overlay = nullptr; // the moving part of a drag, over the still picture
     RouteFrame m_frame;
-    quint64 m_revision = 0;
     bool m_frameStale = true; // more than the drag offset changed since the last build
 
     int m_pressRow = -1;

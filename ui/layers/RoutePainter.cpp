@@ -84,7 +84,6 @@ void RoutePainter::setUp(QPainter &painter, const Style &style)
     m_font.setBold(true);
     m_numbers.clear();
     m_sprites.clear();
-    m_still = QImage();
 }
 
 void RoutePainter::paintLegs(QPainter &painter, const std::vector<QPolygonF> &legs)
@@ -118,30 +117,32 @@ void RoutePainter::paintMarkers(QPainter &painter, const std::vector<RouteFrame:
     }
 }
 
-void RoutePainter::paint(QPainter &painter, const RouteFrame &frame, const Style &style)
+void RoutePainter::paintStill(QPainter &painter, const RouteFrame &frame, const Style &style)
 {
     setUp(painter, style);
-    const bool moving = !frame.movingLegs.empty() || !frame.movingMarkers.empty();
-    if (!moving) {
-        m_still = QImage();
-        paintLegs(painter, frame.legs);
-        paintMarkers(painter, frame.markers);
-        return;
-    }
-    const QSize deviceSize = painter.device() ? QSize(painter.device()->width(), painter.device()->height()) : QSize();
-    if (m_still.isNull() || m_still.size() != deviceSize || m_stillRevision != frame.revision) {
-        m_still = QImage(deviceSize, QImage::Format_ARGB32_Premultiplied);
-        m_still.setDevicePixelRatio(m_dpr);
-        m_still.fill(Qt::transparent);
-        QPainter still(&m_still);
-        still.setFont(painter.font());
-        paintLegs(still, frame.legs);
-        paintMarkers(still, frame.markers);
-        m_stillRevision = frame.revision;
-    }
-    painter.drawImage(QPointF(0, 0), m_still);
+    paintLegs(painter, frame.legs);
+    paintMarkers(painter, frame.markers);
+}
+
+void RoutePainter::paintMoving(QPainter &painter, const RouteFrame &frame, const Style &style, QPointF origin)
+{
+    setUp(painter, style);
+    painter.translate(-origin);
     paintLegs(painter, frame.movingLegs);
     paintMarkers(painter, frame.movingMarkers);
+}
+
+QRectF RoutePainter::movingBounds(const RouteFrame &frame, const Style &style)
+{
+    QRectF bounds;
+    const double legPad = style.legWidth + 4.0;
+    for (const QPolygonF &leg : frame.movingLegs)
+        bounds |= leg.boundingRect().adjusted(-legPad, -legPad, legPad, legPad);
+    // A marker sprite: the number's width (five digits at most fit), the current ring, the halo.
+    const QPointF half(style.markerRadius * 3 + 10, style.markerRadius + 10);
+    for (const RouteFrame::Marker &marker : frame.movingMarkers)
+        bounds |= QRectF(marker.position - half, marker.position + half);
+    return bounds;
 }
 
 } // namespace sortie::ui

@@ -15,7 +15,8 @@ namespace sortie::ui {
 // Draws a RouteFrame: legs with a halo so they read on any map, numbered markers for labelled
 // waypoints, dots for the rest, selection and the current waypoint highlighted. Markers are
 // blitted from sprites drawn once (an antialiased circle per waypoint would cost a path fill
-// each), and number texts are laid out once; both are kept between frames.
+// each), and number texts are laid out once; both are kept between frames. The still part and
+// the moving part (a drag) are drawn separately, into different pictures.
 class RoutePainter
 {
 public:
@@ -32,9 +33,12 @@ public:
         bool operator==(const Style &) const = default;
     };
 
-    // While the frame has a moving part (a drag), the rest is drawn once into an image and
-    // blitted on later frames of the same revision.
-    void paint(QPainter &painter, const RouteFrame &frame, const Style &style);
+    // Everything but the moving part.
+    void paintStill(QPainter &painter, const RouteFrame &frame, const Style &style);
+    // The moving part, drawn into a picture whose top-left corner is `origin` in frame pixels.
+    void paintMoving(QPainter &painter, const RouteFrame &frame, const Style &style, QPointF origin);
+    // What the moving part covers, in frame pixels (empty when nothing moves).
+    static QRectF movingBounds(const RouteFrame &frame, const Style &style);
 
 private:
     void setUp(QPainter &painter, const Style &style);
@@ -50,8 +54,6 @@ private:
     QFont m_font;
     QHash<int, QStaticText> m_numbers;
     QHash<int, QImage> m_sprites;
-    QImage m_still;               // the frame without its moving part
-    quint64 m_stillRevision = 0;
 };
 
 } // namespace sortie::ui

@@ -16,6 +16,8 @@ namespace {
 
 // Positions closer than this (about half a metre at the equator) add nothing to a trail.
 constexpr double kTrailStep = 1.2e-8;
+// Trails are drawn this translucent over the map (170 of 255).
+constexpr qreal kTrailOpacity = 170.0 / 255.0;
 
 QColor vehicleColor(int row)
 {
@@ -72,7 +74,7 @@ void VehicleLayer::setCurrentIndex(int row)
         return;
     m_current = row;
     emit currentIndexChanged();
-    update();
+    repaint();
 }
 
 void VehicleLayer::setTrailLength(int points)
@@ -81,13 +83,16 @@ void VehicleLayer::setTrailLength(int points)
     if (points == m_trailLength)
         return;
     m_trailLength = points;
-    for (auto &trail : m_trails) {
-        while (int(trail.size()) > m_trailLength)
-            trail.pop_front();
+    for (Trail &trail : m_trails) {
+        while (int(trail.points.size()) > m_trailLength) {
+            trail.points.pop_front();
+            ++trail.dropped;
+        }
     }
+    redrawTrails();
     emit trailLengthChanged();
     polish();
-    update();
+    repaint();
 }
 
 void VehicleLayer::setTrailsVisible(bool visible)
@@ -95,9 +100,10 @@ void VehicleLayer::setTrailsVisible(bool visible)
     if (visible == m_trailsVisible)
         return;
     m_trailsVisible = visible;
+    redrawTrails();
     emit trailLengthChanged();
     polish();
-    update();
+    repaint();
 }
 
 void VehicleLayer::resolveRoles()
@@ -144,20 +150,43 @@ void VehicleLayer::record(const Vehicle &vehicle)
 {
     if (std::isnan(vehicle.position.x()) || m_trailLength == 0)
         return;
-    std::deque<QPointF> &trail = m_trails[vehicle.id];
-    if (!trail.empty()) {
-        const QPointF d = vehicle.position - trail.back();
+    Trail &trail = m_trails[vehicle.id];
+    if (!trail.points.empty()) {
+        const QPointF d = vehicle.position - trail.points.back();
         if (std::abs(d.x()) < kTrailStep && std::abs(d.y()) < kTrailStep)
             return;
     }
-    trail.push_back(vehicle.position);
-    while (int(trail.size()) > m_trailLength)
-        trail.pop_front();
+    trail.points.push_back(vehicle.position);
+    while (int(trail.points.size()) > m_trailLength) {
+        trail.points.pop_front();
+        ++trail.dropped;
+        // The picture still shows the cut points: redraw once they are a noticeable part.
+        if (++m_cutSinceRedraw > std::max(16, m_trailLength / 16))
+            redrawTrails();
+    }
+}
+
+void VehicleLayer::redrawTrails()
+{
+    m_trailsStale = true;
+    m_cutSinceRedraw = 0;
+}
+
+QColor VehicleLayer::colorOf(const Vehicle &vehicle) const
+{
+    return vehicle.stale ? QColor(0x90, 0x90, 0x90) : vehicle.color;
+}
+
+void VehicleLayer::onViewportChanged()
+{
+    redrawTrails();
+    MapLayer::onViewportChanged();
 }
 
 void VehicleLayer::reload()
 {
     resolveRoles();
+    redrawTrails(); // rows (and so colours) may have changed
     m_vehicles.clear();
     const int rows = m_model ? m_model->rowCount() : 0;
     for (int row = 0; row < rows; ++row) {
@@ -166,24 +195,28 @@ void VehicleLayer::reload()
     }
     emit vehiclesChanged();
     polish();
-    update();
+    repaint();
 }
 
 void VehicleLayer::reloadRows(int first, int last)
 {
     for (int row = std::max(0, first); row <= last && row < int(m_vehicles.size()); ++row) {
+        const QColor before = colorOf(m_vehicles[size_t(row)]);
         m_vehicles[size_t(row)] = read(row);
+        if (colorOf(m_vehicles[size_t(row)]) != before)
+            redrawTrails();
         record(m_vehicles[size_t(row)]);
     }
     polish();
-    update();
+    repaint();
 }
 
 void VehicleLayer::clearTrails()
 {
     m_trails.clear();
+    redrawTrails();
     polish();
-    update();
+    repaint();
 }
 
 int VehicleLayer::trailPointCount(int row) const
@@ -191,7 +224,7 @@ int VehicleLayer::trailPointCount(int row) const
     if (row < 0 || row >= count())
         return 0;
     const auto it = m_trails.constFind(m_vehicles[size_t(row)].id);
-    return it == m_trails.cend() ? 0 : int(it->size());
+    return it == m_trails.cend() ? 0 : int(it->points.size());
 }
 
 QPointF VehicleLayer::vehiclePosition(int row) const
@@ -221,8 +254,7 @@ int VehicleLayer::vehicleAt(QPointF position, qreal radius) const
 
 void VehicleLayer::updatePolish()
 {
-    const MapViewport view = viewport();
-    const QRectF screen = QRectF(QPointF(0, 0), view.size()).adjusted(-30, -30, 30, 30);
+    const MapViewport view = paintViewport();
     m_drawn.assign(m_vehicles.size(), Drawn());
     for (size_t row = 0; row < m_vehicles.size(); ++row) {
         const Vehicle &vehicle = m_vehicles[row];
@@ -231,40 +263,68 @@ void VehicleLayer::updatePolish()
         if (!drawn.hasPosition)
             continue;
         drawn.position = view.toScreen(vehicle.position);
-        const QPointF anchor = view.toNormalised(drawn.position);
         if (!std::isnan(vehicle.home.x())) {
             drawn.hasHome = true;
-            drawn.home = view.toScreenUnwrapped(nearestCopy(anchor, vehicle.home));
+            drawn.home = view.toScreenUnwrapped(nearestCopy(view.toNormalised(drawn.position), vehicle.home));
         }
-        const auto trail = m_trails.constFind(vehicle.id);
-        if (!m_trailsVisible || trail == m_trails.cend())
+    }
+    layOutTrails(view);
+}
+
+// Whole trails after a new layout, otherwise each trail's piece since the last layout.
+void VehicleLayer::layOutTrails(const MapViewport &view)
+{
+    const bool whole = m_trailsStale;
+    const QRectF screen = QRectF(QPointF(0, 0), view.size()).adjusted(-30, -30, 30, 30);
+    std::vector<TrailPicture::Stroke> strokes;
+    for (size_t row = 0; row < m_vehicles.size(); ++row) {
+        const Vehicle &vehicle = m_vehicles[row];
+        const auto found = m_trails.find(vehicle.id);
+        if (found == m_trails.end() || !m_drawn[row].hasPosition)
             continue;
-        // Only the parts of the trail near the screen are kept for drawing.
-        const size_t n = trail->size();
+        Trail &trail = *found;
+        const qint64 end = trail.dropped + qint64(trail.points.size());
+        const qint64 first = whole ? trail.dropped : std::max(trail.dropped, trail.drawn - 1);
+        trail.drawn = end;
+        if (!m_trailsVisible || end - first < 2)
+            continue;
+        const QPointF anchor = view.toNormalised(m_drawn[row].position);
+        const size_t n = size_t(end - first);
         std::vector<QPointF> points(n);
         std::vector<bool> inside(n);
         for (size_t i = 0; i < n; ++i) {
-            points[i] = view.toScreenUnwrapped(nearestCopy(anchor, (*trail)[i]));
+            points[i] = view.toScreenUnwrapped(nearestCopy(anchor, trail.points[size_t(first - trail.dropped) + i]));
             inside[i] = screen.contains(points[i]);
         }
+        // Only the parts of the trail near the picture are kept for drawing.
+        const QColor color = colorOf(vehicle);
         QPolygonF run;
         for (size_t i = 0; i < n; ++i) {
             const bool keep = inside[i] || (i > 0 && inside[i - 1]) || (i + 1 < n && inside[i + 1]);
             if (keep) {
                 run.append(points[i]);
             } else if (!run.isEmpty()) {
-                drawn.trails.push_back(simplifyPolyline(run, 0.4));
+                strokes.push_back({simplifyPolyline(run, 0.4), color});
                 run.clear();
             }
         }
         if (run.size() > 1)
-            drawn.trails.push_back(simplifyPolyline(run, 0.4));
+            strokes.push_back({simplifyPolyline(run, 0.4), color});
+    }
+    if (whole) {
+        m_trailPicture.restart(std::move(strokes));
+        m_trailsStale = false;
+        m_cutSinceRedraw = 0;
+    } else {
+        for (TrailPicture::Stroke &stroke : strokes)
+            m_trailPicture.add(std::move(stroke));
     }
 }
 
 void VehicleLayer::paint(QPainter *painter)
 {
     painter->setRenderHint(QPainter::Antialiasing, true);
+    m_trailPicture.paint(*painter, kTrailOpacity);
     static const QPainterPath arrow = arrowShape();
     QFont font = painter->font();
     font.setPixelSize(11);
@@ -272,30 +332,21 @@ void VehicleLayer::paint(QPainter *painter)
     painter->setFont(font);
     for (size_t row = 0; row < m_drawn.size() && row < m_vehicles.size(); ++row) {
         const Drawn &drawn = m_drawn[row];
-        const Vehicle &vehicle = m_vehicles[row];
-        const QColor color = vehicle.stale ? QColor(0x90, 0x90, 0x90) : vehicle.color;
-        QColor trailColor = color;
-        trailColor.setAlpha(170);
-        painter->setPen(QPen(trailColor, 2.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        painter->setBrush(Qt::NoBrush);
-        for (const QPolygonF &trail : drawn.trails) {
-            if (trail.size() > 1)
-                painter->drawPolyline(trail);
-        }
-        if (drawn.hasHome) {
-            painter->setPen(QPen(Qt::white, 1.5));
-            painter->setBrush(color.darker(120));
-            painter->drawRect(QRectF(drawn.home - QPointF(7, 7), QSizeF(14, 14)));
-            painter->setPen(Qt::white);
-            painter->drawText(QRectF(drawn.home - QPointF(7, 7), QSizeF(14, 14)), Qt::AlignCenter, QStringLiteral("H"));
-        }
+        if (!drawn.hasHome)
+            continue;
+        const QColor color = colorOf(m_vehicles[row]);
+        painter->setPen(QPen(Qt::white, 1.5));
+        painter->setBrush(color.darker(120));
+        painter->drawRect(QRectF(drawn.home - QPointF(7, 7), QSizeF(14, 14)));
+        painter->setPen(Qt::white);
+        painter->drawText(QRectF(drawn.home - QPointF(7, 7), QSizeF(14, 14)), Qt::AlignCenter, QStringLiteral("H"));
     }
     for (size_t row = 0; row < m_drawn.size() && row < m_vehicles.size(); ++row) {
         const Drawn &drawn = m_drawn[row];
         if (!drawn.hasPosition)
             continue;
         const Vehicle &vehicle = m_vehicles[row];
-        const QColor color = vehicle.stale ? QColor(0x90, 0x90, 0x90) : vehicle.color;
+        const QColor color = colorOf(vehicle);
         painter->save();
         painter->translate(drawn.position);
         if (int(row) == m_current) {

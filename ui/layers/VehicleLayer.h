@@ -1,6 +1,7 @@
 #pragma once
 
 #include "MapLayer.h"
+#include "TrailPicture.h"
 
 #include <QColor>
 #include <QHash>
@@ -16,7 +17,9 @@ namespace sortie::ui {
 // Vehicles over the map from a list model (one row per vehicle): an arrow turned to the
 // heading, a label, the home position and a trail of where the vehicle has been, which the
 // layer records from the model's position updates. Greyed when the row's stale role is true.
-// Role names are properties so any vehicle model fits.
+// Role names are properties so any vehicle model fits. A move strokes only the trail's new
+// piece (TrailPicture); trails are drawn whole again on a new layout, or once the points cut
+// from their old ends reach a sixteenth of `trailLength` (until then the picture keeps them).
 class VehicleLayer : public MapLayer
 {
     Q_OBJECT
@@ -63,6 +66,7 @@ signals:
     void vehicleClicked(int row, int modifiers);
 
 protected:
+    void onViewportChanged() override;
     void updatePolish() override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseReleaseEvent(QMouseEvent *event) override;
@@ -84,13 +88,21 @@ private:
         QPointF home;
         bool hasPosition = false;
         bool hasHome = false;
-        std::vector<QPolygonF> trails;
+    };
+    struct Trail
+    {
+        std::deque<QPointF> points; // normalised, oldest first
+        qint64 dropped = 0;         // points cut from the front so far
+        qint64 drawn = 0;           // points (counted from the first ever) in the picture
     };
     void reload();
     void reloadRows(int first, int last);
     void resolveRoles();
     Vehicle read(int row) const;
     void record(const Vehicle &vehicle);
+    void redrawTrails();
+    QColor colorOf(const Vehicle &vehicle) const;
+    void layOutTrails(const MapViewport &view);
 
     QPointer<QAbstractItemModel> m_model;
     QString m_idRole = QStringLiteral("vehicleId");
@@ -103,8 +115,11 @@ private:
     QString m_staleRole = QStringLiteral("stale");
     QHash<QString, int> m_roles;
     std::vector<Vehicle> m_vehicles;
-    QHash<QString, std::deque<QPointF>> m_trails; // by vehicle id: survives row moves
-    std::vector<Drawn> m_drawn;                   // laid out in updatePolish
+    QHash<QString, Trail> m_trails; // by vehicle id: survives row moves
+    std::vector<Drawn> m_drawn;     // laid out in updatePolish
+    TrailPicture m_trailPicture;
+    bool m_trailsStale = true;      // the picture must be drawn whole again
+    qint64 m_cutSinceRedraw = 0;
     int m_current = -1;
     int m_trailLength = 3000;
     bool m_trailsVisible = true;
