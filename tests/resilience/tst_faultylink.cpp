@@ -18,6 +18,8 @@
 
 using namespace sortie;
 using namespace std::chrono_literals;
+using test::kDemoRoute;
+using test::rowOf;
 namespace pb = com::ugcs::ucs::proto;
 
 namespace {
