@@ -11,4 +11,8 @@ export QT_QPA_PLATFORM=offscreen
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=0"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$PWD/tests/sanitizers/ubsan.supp"
-ctest --test-dir "$sanitized_build" --output-on-failure -j 2 -LE bench --timeout 600 "$@"
+ctest --test-dir "$sanitized_build" --output-on-failure -j 2 -LE 'bench|ui' --timeout 600 "$@"
+# Qt's libraries have no frame pointers: the leak suppressions for Qt Quick (tests/sanitizers) only
+# match with the slow unwinder, which the QML tests can afford.
+ASAN_OPTIONS="$ASAN_OPTIONS:fast_unwind_on_malloc=0" \
+  ctest --test-dir "$sanitized_build" --output-on-failure -j 2 -L ui -LE bench --timeout 600 "$@"

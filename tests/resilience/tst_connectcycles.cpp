@@ -93,7 +93,7 @@ private slots:
         const Figures end = Figures::now();
         report("HCI login/disconnect", warm, end);
         QVERIFY2(end.fds <= warm.fds + 2, "file descriptors leak across HCI connections");
-        QVERIFY2(end.rss - warm.rss < kRssBoundKiB, "memory grows with HCI connections");
+        QVERIFY2(!test::kResidentMemoryIsMeaningful || end.rss - warm.rss < kRssBoundKiB, "memory grows with HCI connections");
     }
 
     void vciConnectAndDisconnect()
@@ -136,7 +136,7 @@ private slots:
         const Figures end = Figures::now();
         report("VCI connect/disconnect", warm, end);
         QVERIFY2(end.fds <= warm.fds + 2, "file descriptors leak across VCI connections");
-        QVERIFY2(end.rss - warm.rss < kRssBoundKiB, "memory grows with VCI connections");
+        QVERIFY2(!test::kResidentMemoryIsMeaningful || end.rss - warm.rss < kRssBoundKiB, "memory grows with VCI connections");
     }
 };
 

@@ -254,7 +254,8 @@ private slots:
               qlonglong(kChunk * kChunks / (1024 * 1024)), qlonglong(rssBefore), qlonglong(rssAfter),
               qlonglong(rssAfter - rssBefore), beats - beatsAtStart);
         QVERIFY(rssBefore > 0);
-        QVERIFY2(rssAfter - rssBefore < 64 * 1024, "memory grew by 64 MiB or more while garbage was decoded");
+        QVERIFY2(!test::kResidentMemoryIsMeaningful || rssAfter - rssBefore < 64 * 1024,
+                 "memory grew by 64 MiB or more while garbage was decoded");
     }
 };
 

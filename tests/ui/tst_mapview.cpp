@@ -10,6 +10,8 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <memory>
 #include <QtQml/qqmlextensionplugin.h>
 
 #include <cmath>
@@ -183,7 +185,9 @@ private slots:
 
     void pinchZooms()
     {
-        QPointingDevice *touch = QTest::createTouchDevice();
+        // The test owns the device it makes up (deleting it unregisters it).
+        const std::unique_ptr<QPointingDevice> device(QTest::createTouchDevice());
+        QPointingDevice *touch = device.get();
         const QGeoCoordinate middle = m_map->toCoordinate(QPointF(400, 300));
         QTest::touchEvent(&m_scene->view(), touch).press(0, QPoint(350, 300)).press(1, QPoint(450, 300));
         QTest::touchEvent(&m_scene->view(), touch).move(0, QPoint(325, 300)).move(1, QPoint(475, 300));
