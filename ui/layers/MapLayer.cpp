@@ -78,8 +78,25 @@ void MapLayer::geometryChange(const QRectF &newGeometry, const QRectF &oldGeomet
         followViewport();
 }
 
+void MapLayer::itemChange(ItemChange change, const ItemChangeData &value)
+{
+    QQuickItem::itemChange(change, value);
+    if (change == ItemVisibleHasChanged)
+        followViewport();
+}
+
+void MapLayer::dropPicture()
+{
+    // A picture is the map's size and a margin on every side (9 MB at 1280x800): one per layer
+    // of a page not shown would add up for nothing.
+    m_paintViewport = MapViewport();
+    m_canvas->setSize(QSizeF());
+}
+
 void MapLayer::followViewport()
 {
+    if (!isVisible())
+        return dropPicture();
     const MapViewport view = viewport();
     const bool sameZoom = view.zoom() == m_paintViewport.zoom();
     const QSizeF grown = view.size() + QSizeF(2.0 * m_pictureMargin, 2.0 * m_pictureMargin);

@@ -18,7 +18,8 @@ class LayerCanvas;
 // renders under the software scene graph. A layer fills its map (anchors.fill: map). It draws
 // into a picture (a LayerCanvas child) that reaches a margin beyond the map on every side:
 // while the map pans by whole pixels within that margin, the picture only moves; a zoom, a
-// resize or a longer pan lays it out and draws it anew for the map's new viewport. Presses a
+// resize or a longer pan lays it out and draws it anew for the map's new viewport. A hidden layer
+// (a page not shown) keeps no picture: it is laid out and drawn again when it shows. Presses a
 // layer does not want go on to the map.
 class MapLayer : public QQuickItem
 {
@@ -60,9 +61,11 @@ protected:
     // (in paintViewport pixels) and calls update() on it.
     LayerCanvas *createOverlay(std::function<void(QPainter &)> painter);
     void geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry) override;
+    void itemChange(ItemChange change, const ItemChangeData &value) override;
 
 private:
     void followViewport();
+    void dropPicture();
 
     QPointer<MapView> m_map;
     LayerCanvas *m_canvas = nullptr;
