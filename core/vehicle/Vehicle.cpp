@@ -128,6 +128,14 @@ void Vehicle::setStaleAfter(int ms)
     m_staleTimer.start(std::clamp(m_staleAfter / 2, 1, 1000));
 }
 
+void Vehicle::setMission(std::vector<MissionItem> items)
+{
+    if (items == m_mission)
+        return;
+    m_mission = std::move(items);
+    emit missionChanged();
+}
+
 std::optional<TelemetrySample> Vehicle::last(TelemetryField field) const
 {
     const Last &l = m_last[size_t(field)];

@@ -97,6 +97,11 @@ public:
     void setStaleAfter(int ms);
     quint64 telemetryNotifications() const { return m_notifications; }
 
+    // The mission the vehicle holds, as last uploaded to it or read back from it; empty when unknown.
+    // The fly view draws it under the vehicle; whoever uploads or downloads a mission sets it.
+    const std::vector<MissionItem> &mission() const { return m_mission; }
+    void setMission(std::vector<MissionItem> items);
+
     // Applies a batch as if the link had sent it (the link's signal is connected to this).
     void ingest(const TelemetryBatch &batch);
 
@@ -116,6 +121,7 @@ signals:
     void identityChanged();
     void notifyIntervalChanged();
     void commandFinished(const QString &command, bool ok, const QString &message);
+    void missionChanged();
 
 private:
     struct Last
@@ -133,6 +139,7 @@ private:
     QString m_protocol;
     VehicleIdentity m_identity;
     QString m_lastError;
+    std::vector<MissionItem> m_mission;
     TelemetryStore m_history;
     std::array<Last, kTelemetryFieldCount> m_last;
     std::bitset<kTelemetryFieldCount> m_staleFields;
