@@ -13,6 +13,8 @@ ConnectionController::ConnectionController(HciSession *session, QObject *parent)
     : QObject(parent)
     , m_session(session)
 {
+    connect(this, &ConnectionController::stateChanged, this, &ConnectionController::statusDetailChanged);
+    connect(this, &ConnectionController::detailChanged, this, &ConnectionController::statusDetailChanged);
     connect(session, &HciSession::stateChanged, this, [this](HciSession::State state) {
         if (state == HciSession::State::Ready || state == HciSession::State::Disconnected)
             setDetail({});
@@ -31,6 +33,13 @@ ConnectionController::ConnectionController(HciSession *session, QObject *parent)
     connect(session, &HciSession::resumed, this, [this](bool sameSession) {
         setDetail(sameSession ? QString() : tr("reconnected in a new session"));
     });
+}
+
+QString ConnectionController::statusDetail() const
+{
+    if (!m_detail.isEmpty())
+        return m_detail;
+    return isReady() ? tr("%1 at %2").arg(m_user, m_server) : QString();
 }
 
 QString ConnectionController::stateName() const

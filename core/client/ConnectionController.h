@@ -23,6 +23,9 @@ class ConnectionController : public QObject
     Q_PROPERTY(QString errorString READ errorString NOTIFY errorChanged)
     Q_PROPERTY(QString errorKind READ errorKind NOTIFY errorChanged)
     Q_PROPERTY(QString detail READ detail NOTIFY detailChanged)
+    // What the status bar says after the state: the detail when there is one, else "user at server"
+    // once ready, else nothing.
+    Q_PROPERTY(QString statusDetail READ statusDetail NOTIFY statusDetailChanged)
 
 public:
     explicit ConnectionController(hci::HciSession *session, QObject *parent = nullptr);
@@ -36,6 +39,7 @@ public:
     QString errorString() const { return m_errorString; }
     QString errorKind() const { return m_errorKind; }
     QString detail() const { return m_detail; }
+    QString statusDetail() const;
 
     // Checks the input and starts logging in; false (with errorString) when the input is wrong.
     Q_INVOKABLE bool connectToServer(const QString &server, const QString &user, const QString &password);
@@ -48,6 +52,7 @@ signals:
     void stateChanged();
     void errorChanged();
     void detailChanged();
+    void statusDetailChanged();
     void ready();
 
 private:

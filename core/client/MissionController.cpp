@@ -23,6 +23,8 @@ MissionController::MissionController(hci::HciClient *client, QObject *parent)
     m_routeEvents = client->subscribeObjectChanges(HciObjectType::Route);
     connect(m_routeEvents, &hci::HciSubscription::received, this, &MissionController::routeEvent);
     connect(m_document.undoStack(), &QUndoStack::indexChanged, this, &MissionController::routeChanged);
+    connect(this, &MissionController::routeChanged, this, &MissionController::canSaveChanged);
+    connect(&m_document, &RouteDocument::modifiedChanged, this, &MissionController::canSaveChanged);
     connect(&m_document, &RouteDocument::loaded, this, [this] { m_opened = m_document.route(); });
 }
 
@@ -32,6 +34,11 @@ int MissionController::routeId() const
 {
     const auto &origin = m_document.route().origin;
     return origin && origin.message->has_id() ? origin.message->id() : -1;
+}
+
+bool MissionController::canSave() const
+{
+    return routeId() >= 0 || m_document.isModified();
 }
 
 template<typename Done>

@@ -34,6 +34,8 @@ class MissionController : public QObject
     Q_PROPERTY(sortie::mission::ProcessedPlanModel *processed READ processed CONSTANT)
     Q_PROPERTY(int routeId READ routeId NOTIFY routeChanged)
     Q_PROPERTY(QString routeName READ routeName NOTIFY routeChanged)
+    // Whether Save means something: a route from the server is open, or a new one has edits.
+    Q_PROPERTY(bool canSave READ canSave NOTIFY canSaveChanged)
     Q_PROPERTY(bool conflict READ hasConflict NOTIFY conflictChanged)
     Q_PROPERTY(QString conflictText READ conflictText NOTIFY conflictChanged)
     // The server's copy beside ours: differences, each side's edits, versions, their route.
@@ -55,6 +57,7 @@ public:
     mission::ProcessedPlanModel *processed() { return &m_processed; }
     int routeId() const;
     QString routeName() const { return m_document.route().settings.name; }
+    bool canSave() const;
     bool hasConflict() const { return m_conflict.isActive(); }
     RouteConflict *conflictDetails() { return &m_conflict; }
     QString conflictText() const { return m_conflictText; }
@@ -81,6 +84,7 @@ public:
 
 signals:
     void routeChanged();
+    void canSaveChanged();
     // A route was opened from the server (not saved, not edited): views frame it.
     void routeOpened();
     void conflictChanged();

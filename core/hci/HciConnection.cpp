@@ -105,7 +105,7 @@ void HciConnection::onSocketError()
         switch (error) {
         case QAbstractSocket::ConnectionRefusedError:
             closeWith({HciError::Kind::Refused,
-                       QStringLiteral("%1 refused the connection: is the UgCS server running on that port?").arg(m_peer)});
+                       QStringLiteral("%1 refused the connection").arg(m_peer)});
             return;
         case QAbstractSocket::HostNotFoundError:
             closeWith({HciError::Kind::Unreachable, QStringLiteral("The host in %1 cannot be found").arg(m_peer)});

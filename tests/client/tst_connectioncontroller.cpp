@@ -36,6 +36,7 @@ private slots:
         QCOMPARE(connection.user(), QStringLiteral("admin"));
         QCOMPARE(connection.server(), sim.address());
         QVERIFY(connection.errorString().isEmpty());
+        QCOMPARE(connection.statusDetail(), QStringLiteral("admin at %1").arg(sim.address()));
 
         connection.disconnectFromServer();
         QTRY_COMPARE(connection.stateName(), QStringLiteral("Disconnected"));
@@ -67,6 +68,10 @@ private slots:
         QVERIFY(connection.connectToServer(QStringLiteral("127.0.0.1:%1").arg(port), QStringLiteral("admin"), QStringLiteral("admin")));
         QTRY_COMPARE(connection.errorKind(), QStringLiteral("Refused"));
         QVERIFY2(connection.errorString().contains(QStringLiteral("Is the UgCS server running")), qPrintable(connection.errorString()));
+        // The hint is given once, and no sentence ends in "?.".
+        QCOMPARE(connection.errorString().count(QStringLiteral("running"), Qt::CaseInsensitive), 1);
+        QVERIFY2(!connection.errorString().contains(QStringLiteral("?.")), qPrintable(connection.errorString()));
+        QVERIFY(connection.statusDetail().isEmpty());
     }
 
     void inputIsCheckedFirst()

@@ -111,7 +111,12 @@ private slots:
 
     void editUndoSaveAndSeeItFromASecondSession()
     {
+        // Nothing open and nothing edited: Save means nothing.
+        QVERIFY(!m_alice->missions.canSave());
+        QSignalSpy canSave(&m_alice->missions, &client::MissionController::canSaveChanged);
         const int id = openDemoRoute(*m_alice);
+        QVERIFY(m_alice->missions.canSave());
+        QVERIFY(!canSave.isEmpty());
         QVERIFY(id > 0);
         client::RouteDocument *doc = m_alice->missions.document();
         QCOMPARE(doc->model()->count(), 4);

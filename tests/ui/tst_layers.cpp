@@ -306,6 +306,85 @@ private slots:
         QCOMPARE(layer->currentIndex(), 1);
     }
 
+    void vehiclesAtOneSpotKeepTheirLabelsApart()
+    {
+        auto *layer = m_scene->find<VehicleLayer>(QStringLiteral("vehicles"));
+        QStandardItemModel model;
+        model.setItemRoleNames({{IdRole, "vehicleId"}, {NameRole, "name"}, {LatRole, "latitude"}, {LonRole, "longitude"}});
+        const QGeoCoordinate at = m_map->toCoordinate(QPointF(400, 300));
+        for (int i = 0; i < 3; ++i) { // three vehicles on one spot (on the ground at one site)
+            auto *item = new QStandardItem;
+            item->setData(QStringLiteral("v%1").arg(i), IdRole);
+            item->setData(QStringLiteral("EMU-10%1").arg(i + 1), NameRole);
+            item->setData(at.latitude(), LatRole);
+            item->setData(at.longitude(), LonRole);
+            model.appendRow(item);
+        }
+        layer->setModel(&model);
+        QTRY_VERIFY(!layer->labelRect(2).isEmpty());
+        for (int a = 0; a < 3; ++a)
+            for (int b = a + 1; b < 3; ++b)
+                QVERIFY2(!layer->labelRect(a).intersects(layer->labelRect(b)), qPrintable(QStringLiteral("%1 and %2").arg(a).arg(b)));
+        // The current vehicle's label goes first: beside its arrow, the others stacked below.
+        layer->setCurrentIndex(2);
+        QTRY_VERIFY(layer->labelRect(2).top() < layer->labelRect(0).top());
+        QVERIFY(layer->labelRect(2).top() < layer->labelRect(1).top());
+        QVERIFY(std::abs(layer->labelRect(2).center().y() - 290) < 4); // 10 px above the vehicle, as alone
+        // And it stands out: its tag is filled with its colour, the yellow ring around it.
+        const QImage image = m_scene->grab();
+        QVERIFY(countNear(image, layer->labelRect(2).toRect().adjusted(3, 3, -3, -3), QColor(0x00, 0x89, 0x7b)) > 20);
+        QVERIFY(countNear(image, QRect(418, 296, 6, 8), QColor(0xff, 0xd6, 0x00)) > 5);
+    }
+
+    void framesFollowsAndStopsWhenTheOperatorMovesTheMap()
+    {
+        auto *layer = m_scene->find<VehicleLayer>(QStringLiteral("vehicles"));
+        QStandardItemModel model;
+        model.setItemRoleNames({{IdRole, "vehicleId"}, {NameRole, "name"}, {LatRole, "latitude"}, {LonRole, "longitude"}});
+        m_map->setZoomLevel(2); // the world
+        layer->setAutoFit(true);
+        layer->setModel(&model);
+        QCOMPARE(layer->positionedCount(), 0);
+        auto add = [&](double lat, double lon) {
+            auto *item = new QStandardItem;
+            item->setData(QStringLiteral("v%1").arg(model.rowCount()), IdRole);
+            item->setData(QStringLiteral("V%1").arg(model.rowCount()), NameRole);
+            item->setData(lat, LatRole);
+            item->setData(lon, LonRole);
+            model.appendRow(item);
+        };
+        // The first vehicle to report is framed (not at the closest zoom: about 400 m across).
+        add(56.95, 24.10);
+        QVERIFY(m_map->zoomLevel() > 14 && m_map->zoomLevel() < 18);
+        QVERIFY((layer->vehiclePosition(0) - QPointF(400, 300)).manhattanLength() < 2);
+        // A second one two kilometres away: both framed.
+        add(56.95, 24.135);
+        const QRectF inside(0, 0, 800, 600);
+        QVERIFY(inside.contains(layer->vehiclePosition(0)) && inside.contains(layer->vehiclePosition(1)));
+        QVERIFY(layer->autoFit());
+        // The operator pans: autoFit stops, a third vehicle does not move the map.
+        m_map->panBy(50, 0);
+        QVERIFY(!layer->autoFit());
+        const double zoom = m_map->zoomLevel();
+        add(57.5, 25.0);
+        QCOMPARE(m_map->zoomLevel(), zoom);
+        // Fit all frames the three; centerOn puts one in the middle.
+        QVERIFY(layer->fitToMap());
+        for (int row = 0; row < 3; ++row)
+            QVERIFY(inside.contains(layer->vehiclePosition(row)));
+        QVERIFY(layer->centerOn(1));
+        QVERIFY((layer->vehiclePosition(1) - QPointF(400, 300)).manhattanLength() < 2);
+        // Follow: when the current vehicle leaves the middle half, it is brought back to the middle.
+        layer->setCurrentIndex(1);
+        layer->setFollow(true);
+        m_map->setZoomLevel(16);
+        model.item(1)->setData(24.135 + 0.006, LonRole); // some 360 m east: out of the middle at zoom 16
+        QVERIFY((layer->vehiclePosition(1) - QPointF(400, 300)).manhattanLength() < 2);
+        layer->setFollow(false);
+        model.item(1)->setData(24.135 + 0.014, LonRole);
+        QVERIFY((layer->vehiclePosition(1) - QPointF(400, 300)).manhattanLength() > 100);
+    }
+
     void areaScanPolygon()
     {
         auto *layer = m_scene->find<AreaScanLayer>(QStringLiteral("area"));

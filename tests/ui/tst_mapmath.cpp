@@ -251,6 +251,30 @@ private slots:
         QCOMPARE(units.formatLatLon(56.5, -24.25), QStringLiteral("56°30′00.00″N 24°15′00.00″W"));
         QCOMPARE(units.formatCoordinate(QGeoCoordinate()), QStringLiteral("—"));
     }
+
+    void displayUnitsForTheInstruments()
+    {
+        DisplayUnits units;
+        QCOMPARE(units.formatDuration(0), QStringLiteral("0:00"));
+        QCOMPARE(units.formatDuration(245.4), QStringLiteral("4:05"));
+        QCOMPARE(units.formatDuration(3723), QStringLiteral("1:02:03"));
+        QCOMPARE(units.formatDuration(qQNaN()), QStringLiteral("—"));
+        QCOMPARE(units.formatAngle(M_PI / 6), QStringLiteral("30°"));
+        QCOMPARE(units.formatAngle(-0.001), QStringLiteral("0°"));
+        QCOMPARE(units.formatAngle(-M_PI / 4), QStringLiteral("-45°"));
+        QCOMPARE(units.formatHeading(-M_PI / 2), QStringLiteral("270°"));
+        QCOMPARE(units.formatHeading(2 * M_PI + 0.1), QStringLiteral("006°"));
+        QCOMPARE(units.formatHeading(qQNaN()), QStringLiteral("—"));
+        // The simulator's HCI vehicles send a voltage and no level: the voltage is shown.
+        QCOMPARE(units.formatBattery(22.43, qQNaN()), QStringLiteral("22.4 V"));
+        QCOMPARE(units.formatBattery(qQNaN(), 0.871), QStringLiteral("87 %"));
+        QCOMPARE(units.formatBattery(22.43, 0.871), QStringLiteral("87 %  22.4 V"));
+        QCOMPARE(units.formatBattery(qQNaN(), qQNaN()), QStringLiteral("—"));
+        QCOMPARE(units.formatLinkState(0), QStringLiteral("disconnected"));
+        QCOMPARE(units.formatLinkState(2), QStringLiteral("connected"));
+        QCOMPARE(units.formatLinkState(3), QStringLiteral("link lost"));
+        QCOMPARE(units.formatLinkState(17), QStringLiteral("—"));
+    }
 };
 
 QTEST_GUILESS_MAIN(TestMapMath)

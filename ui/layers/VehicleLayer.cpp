@@ -2,11 +2,14 @@
 
 #include "ModelCoordinates.h"
 #include "Polyline.h"
+#include "VehiclePalette.h"
 #include "WebMercator.h"
 
 #include <QAbstractItemModel>
+#include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
+#include <QScopedValueRollback>
 
 #include <cmath>
 
@@ -19,11 +22,15 @@ constexpr double kTrailStep = 1.2e-8;
 // Trails are drawn this translucent over the map (170 of 255).
 constexpr qreal kTrailOpacity = 170.0 / 255.0;
 
-QColor vehicleColor(int row)
+// A frame never zooms closer than about 400 m across (one vehicle alone, or all at one spot).
+constexpr double kMinimumFrameDegrees = 0.004;
+
+QFont labelFont()
 {
-    static constexpr QRgb kColors[] = {0xd81b60, 0x8e24aa, 0x00897b, 0xf4511e, 0x3949ab,
-                                       0x7cb342, 0x6d4c41, 0x00acc1, 0xc0ca33, 0x5e35b1};
-    return QColor::fromRgb(kColors[row % int(std::size(kColors))]);
+    QFont font;
+    font.setPixelSize(11);
+    font.setBold(true);
+    return font;
 }
 
 QPainterPath arrowShape()
@@ -44,6 +51,128 @@ VehicleLayer::VehicleLayer(QQuickItem *parent)
 {
     setAcceptedMouseButtons(Qt::LeftButton);
     connect(this, &VehicleLayer::modelChanged, this, &VehicleLayer::reload);
+    connect(this, &MapLayer::mapChanged, this, &VehicleLayer::watchMap);
+}
+
+void VehicleLayer::watchMap()
+{
+    if (m_watchedMap)
+        disconnect(m_watchedMap, nullptr, this, nullptr);
+    m_watchedMap = map();
+    if (m_watchedMap) {
+        m_framed = {m_watchedMap->latitude(), m_watchedMap->longitude(), m_watchedMap->zoomLevel()};
+        connect(m_watchedMap, &MapView::viewportChanged, this, &VehicleLayer::onMapMoved);
+        // A map that gets its size after the vehicles came frames them then.
+        // A map that gets its size after the vehicles came (a page shown later) frames them then.
+        connect(m_watchedMap, &QQuickItem::widthChanged, this, [this] {
+            if (m_autoFit) {
+                m_fittedCount = 0;
+                keepCurrentInView();
+            }
+        });
+    }
+}
+
+// The operator (or another layer framing its own things) moved the map: autoFit stops.
+void VehicleLayer::onMapMoved()
+{
+    if (m_movingMap || !m_autoFit || !map())
+        return;
+    // A resize keeps the centre and zoom; only a pan or a zoom by the operator changes them.
+    if (std::abs(map()->zoomLevel() - m_framed.zoom) < 1e-9 && std::abs(map()->latitude() - m_framed.latitude) < 1e-9
+        && std::abs(map()->longitude() - m_framed.longitude) < 1e-9)
+        return;
+    m_autoFit = false;
+    emit autoFitChanged();
+}
+
+void VehicleLayer::setFollow(bool follow)
+{
+    if (follow == m_follow)
+        return;
+    m_follow = follow;
+    emit followChanged();
+    if (m_follow)
+        centerOn(m_current);
+}
+
+void VehicleLayer::setAutoFit(bool on)
+{
+    if (on == m_autoFit)
+        return;
+    m_autoFit = on;
+    m_fittedCount = 0;
+    emit autoFitChanged();
+    keepCurrentInView();
+}
+
+int VehicleLayer::positionedCount() const
+{
+    return int(std::count_if(m_vehicles.begin(), m_vehicles.end(), [](const Vehicle &v) { return !std::isnan(v.position.x()); }));
+}
+
+bool VehicleLayer::fitToMap(qreal margin)
+{
+    MapView *view = map();
+    if (!view || view->width() <= 0)
+        return false;
+    double south = 90, north = -90, west = 180, east = -180;
+    bool any = false;
+    auto include = [&](QPointF normalised) {
+        if (std::isnan(normalised.x()))
+            return;
+        const QGeoCoordinate c = WebMercator::unproject(normalised);
+        south = std::min(south, c.latitude());
+        north = std::max(north, c.latitude());
+        west = std::min(west, c.longitude());
+        east = std::max(east, c.longitude());
+    };
+    for (const Vehicle &vehicle : m_vehicles) {
+        if (std::isnan(vehicle.position.x()))
+            continue;
+        any = true;
+        include(vehicle.position);
+        include(vehicle.home);
+    }
+    if (!any)
+        return false;
+    const double padLatitude = std::max(0.0, kMinimumFrameDegrees - (north - south)) / 2;
+    const double padLongitude = std::max(0.0, kMinimumFrameDegrees - (east - west)) / 2;
+    {
+        QScopedValueRollback moving(m_movingMap, true);
+        view->fitBounds(south - padLatitude, west - padLongitude, north + padLatitude, east + padLongitude, margin);
+    }
+    m_framed = {view->latitude(), view->longitude(), view->zoomLevel()};
+    return true;
+}
+
+bool VehicleLayer::centerOn(int row)
+{
+    if (!map() || row < 0 || row >= count() || std::isnan(m_vehicles[size_t(row)].position.x()))
+        return false;
+    {
+        QScopedValueRollback moving(m_movingMap, true);
+        map()->setCenter(WebMercator::unproject(m_vehicles[size_t(row)].position));
+    }
+    m_framed = {map()->latitude(), map()->longitude(), map()->zoomLevel()};
+    return true;
+}
+
+// After new positions: autoFit frames the fleet when a vehicle reports its first position;
+// follow brings the current vehicle back to the middle once it leaves the middle half.
+void VehicleLayer::keepCurrentInView()
+{
+    if (m_autoFit) {
+        const int positioned = positionedCount();
+        if (positioned > m_fittedCount && fitToMap())
+            m_fittedCount = positioned;
+    }
+    if (m_follow && m_current >= 0 && m_current < count()) {
+        const QPointF at = vehiclePosition(m_current);
+        const QRectF middle(width() / 4, height() / 4, width() / 2, height() / 2);
+        if (!at.isNull() && !middle.contains(at))
+            centerOn(m_current);
+    }
 }
 
 void VehicleLayer::setModel(QAbstractItemModel *model)
@@ -74,6 +203,9 @@ void VehicleLayer::setCurrentIndex(int row)
         return;
     m_current = row;
     emit currentIndexChanged();
+    if (m_follow)
+        centerOn(m_current);
+    polish(); // the labels are laid out again: the current one goes first
     repaint();
 }
 
@@ -194,19 +326,27 @@ void VehicleLayer::reload()
         record(m_vehicles.back());
     }
     emit vehiclesChanged();
+    keepCurrentInView();
     polish();
     repaint();
 }
 
 void VehicleLayer::reloadRows(int first, int last)
 {
+    bool positioned = false;
     for (int row = std::max(0, first); row <= last && row < int(m_vehicles.size()); ++row) {
         const QColor before = colorOf(m_vehicles[size_t(row)]);
+        const bool had = !std::isnan(m_vehicles[size_t(row)].position.x());
         m_vehicles[size_t(row)] = read(row);
+        const bool has = !std::isnan(m_vehicles[size_t(row)].position.x());
+        positioned = positioned || had != has;
         if (colorOf(m_vehicles[size_t(row)]) != before)
             redrawTrails();
         record(m_vehicles[size_t(row)]);
     }
+    if (positioned)
+        emit vehiclesChanged();
+    keepCurrentInView();
     polish();
     repaint();
 }
@@ -269,6 +409,50 @@ void VehicleLayer::updatePolish()
         }
     }
     layOutTrails(view);
+    layOutLabels();
+}
+
+// Each label goes beside its arrow unless an earlier one is there; then it is stacked below
+// the one in the way. The current vehicle's label is placed first, so it stays by its arrow.
+void VehicleLayer::layOutLabels()
+{
+    const QFontMetricsF metrics(labelFont());
+    std::vector<size_t> order;
+    for (size_t row = 0; row < m_drawn.size(); ++row)
+        if (m_drawn[row].hasPosition && !m_vehicles[row].label.isEmpty())
+            order.push_back(row);
+    std::stable_partition(order.begin(), order.end(), [this](size_t row) { return int(row) == m_current; });
+    std::vector<QRectF> placed;
+    for (size_t row : order) {
+        Drawn &drawn = m_drawn[row];
+        const QSizeF size(metrics.horizontalAdvance(m_vehicles[row].label) + 8, metrics.height() + 2);
+        QRectF rect(drawn.position + QPointF(16, -10 - size.height() / 2), size);
+        // The arrows nearby are not covered either (a label beside a vehicle's own arrow is fine).
+        auto blocked = [&](const QRectF &r) {
+            for (const QRectF &other : placed)
+                if (r.intersects(other))
+                    return true;
+            for (size_t other = 0; other < m_drawn.size(); ++other)
+                if (other != row && m_drawn[other].hasPosition
+                    && r.intersects(QRectF(m_drawn[other].position - QPointF(12, 12), QSizeF(24, 24))))
+                    return true;
+            return false;
+        };
+        drawn.labelMoved = false;
+        for (int tries = 0; tries < 12 && blocked(rect); ++tries) {
+            rect.translate(0, size.height() + 1);
+            drawn.labelMoved = true;
+        }
+        drawn.label = rect;
+        placed.push_back(rect);
+    }
+}
+
+QRectF VehicleLayer::labelRect(int row) const
+{
+    if (row < 0 || row >= int(m_drawn.size()) || m_drawn[size_t(row)].label.isEmpty())
+        return {};
+    return m_drawn[size_t(row)].label.translated(paintOrigin());
 }
 
 // Whole trails after a new layout, otherwise each trail's piece since the last layout.
@@ -341,31 +525,42 @@ void VehicleLayer::paint(QPainter *painter)
         painter->setPen(Qt::white);
         painter->drawText(QRectF(drawn.home - QPointF(7, 7), QSizeF(14, 14)), Qt::AlignCenter, QStringLiteral("H"));
     }
-    for (size_t row = 0; row < m_drawn.size() && row < m_vehicles.size(); ++row) {
+    std::vector<size_t> order;
+    for (size_t row = 0; row < m_drawn.size() && row < m_vehicles.size(); ++row)
+        if (m_drawn[row].hasPosition && int(row) != m_current)
+            order.push_back(row);
+    if (m_current >= 0 && size_t(m_current) < m_drawn.size() && m_drawn[size_t(m_current)].hasPosition)
+        order.push_back(size_t(m_current)); // on top of the others
+    painter->setFont(labelFont());
+    for (size_t row : order) {
         const Drawn &drawn = m_drawn[row];
-        if (!drawn.hasPosition)
-            continue;
         const Vehicle &vehicle = m_vehicles[row];
         const QColor color = colorOf(vehicle);
+        const bool current = int(row) == m_current;
         painter->save();
         painter->translate(drawn.position);
-        if (int(row) == m_current) {
+        if (current) {
             painter->setPen(QPen(QColor(0xff, 0xd6, 0x00), 3));
-            painter->setBrush(Qt::NoBrush);
-            painter->drawEllipse(QPointF(0, 0), 19, 19);
+            painter->setBrush(QColor(0xff, 0xd6, 0x00, 60));
+            painter->drawEllipse(QPointF(0, 0), 20, 20);
+            painter->scale(1.2, 1.2);
         }
         painter->rotate(vehicle.heading);
         painter->setPen(QPen(Qt::white, 2.0));
         painter->setBrush(color);
         painter->drawPath(arrow);
         painter->restore();
-        if (!vehicle.label.isEmpty()) {
-            const QPointF at = drawn.position + QPointF(16, -10);
-            painter->setPen(QColor(255, 255, 255, 220));
-            painter->drawText(at + QPointF(1, 1), vehicle.label);
-            painter->setPen(color.darker(160));
-            painter->drawText(at, vehicle.label);
+        if (vehicle.label.isEmpty() || drawn.label.isEmpty())
+            continue;
+        if (drawn.labelMoved) {
+            painter->setPen(QPen(color, 1));
+            painter->drawLine(drawn.position, QPointF(drawn.label.left(), drawn.label.center().y()));
         }
+        painter->setPen(current ? QPen(QColor(0xff, 0xd6, 0x00), 2) : QPen(color, 1));
+        painter->setBrush(current ? color : QColor(255, 255, 255, 225));
+        painter->drawRoundedRect(drawn.label, 3, 3);
+        painter->setPen(current ? QColor(Qt::white) : color.darker(160));
+        painter->drawText(drawn.label, Qt::AlignCenter, vehicle.label);
     }
 }
 

@@ -17,6 +17,11 @@ namespace sortie::ui {
 // Vehicles over the map from a list model (one row per vehicle): an arrow turned to the
 // heading, a label, the home position and a trail of where the vehicle has been, which the
 // layer records from the model's position updates. Greyed when the row's stale role is true.
+// Labels that would cover one another are stacked below the first, with a leader line; the
+// current vehicle is drawn last, ringed, its label on a filled tag.
+// The layer also moves its map for the operator: fitToMap() frames every vehicle, centerOn()
+// one of them; `follow` keeps the current vehicle in the middle of the map, and `autoFit`
+// frames the fleet whenever a vehicle first reports where it is, until the operator moves the map.
 // Role names are properties so any vehicle model fits. A move strokes only the trail's new
 // piece (TrailPicture); trails are drawn whole again on a new layout, or once the points cut
 // from their old ends reach a sixteenth of `trailLength` (until then the picture keeps them).
@@ -37,6 +42,9 @@ class VehicleLayer : public MapLayer
     Q_PROPERTY(int trailLength READ trailLength WRITE setTrailLength NOTIFY trailLengthChanged)
     Q_PROPERTY(bool trailsVisible READ trailsVisible WRITE setTrailsVisible NOTIFY trailLengthChanged)
     Q_PROPERTY(int count READ count NOTIFY vehiclesChanged)
+    Q_PROPERTY(int positionedCount READ positionedCount NOTIFY vehiclesChanged)
+    Q_PROPERTY(bool follow READ follow WRITE setFollow NOTIFY followChanged)
+    Q_PROPERTY(bool autoFit READ autoFit WRITE setAutoFit NOTIFY autoFitChanged)
 
 public:
     explicit VehicleLayer(QQuickItem *parent = nullptr);
@@ -50,11 +58,22 @@ public:
     bool trailsVisible() const { return m_trailsVisible; }
     void setTrailsVisible(bool visible);
     int count() const { return int(m_vehicles.size()); }
+    int positionedCount() const;
+    bool follow() const { return m_follow; }
+    void setFollow(bool follow);
+    bool autoFit() const { return m_autoFit; }
+    void setAutoFit(bool on);
 
     Q_INVOKABLE int vehicleAt(QPointF position, qreal radius = 16) const;
     Q_INVOKABLE int trailPointCount(int row) const;
     Q_INVOKABLE QPointF vehiclePosition(int row) const;
     Q_INVOKABLE void clearTrails();
+    // Frames every vehicle that has a position (and its home); false when none has one.
+    Q_INVOKABLE bool fitToMap(qreal margin = 60);
+    // Moves the map so that the vehicle is in its middle; false when it has no position.
+    Q_INVOKABLE bool centerOn(int row);
+    // Where the vehicle's label is drawn, in item pixels (empty without a label or position).
+    Q_INVOKABLE QRectF labelRect(int row) const;
 
     void paint(QPainter *painter) override;
 
@@ -64,6 +83,8 @@ signals:
     void trailLengthChanged();
     void vehiclesChanged();
     void vehicleClicked(int row, int modifiers);
+    void followChanged();
+    void autoFitChanged();
 
 protected:
     void onViewportChanged() override;
@@ -86,8 +107,10 @@ private:
     {
         QPointF position;
         QPointF home;
+        QRectF label;        // in paintViewport pixels
         bool hasPosition = false;
         bool hasHome = false;
+        bool labelMoved = false; // stacked away from its vehicle: drawn with a leader line
     };
     struct Trail
     {
@@ -103,6 +126,10 @@ private:
     void redrawTrails();
     QColor colorOf(const Vehicle &vehicle) const;
     void layOutTrails(const MapViewport &view);
+    void layOutLabels();
+    void watchMap();
+    void onMapMoved();
+    void keepCurrentInView();
 
     QPointer<QAbstractItemModel> m_model;
     QString m_idRole = QStringLiteral("vehicleId");
@@ -124,6 +151,15 @@ private:
     int m_trailLength = 3000;
     bool m_trailsVisible = true;
     int m_pressRow = -1;
+    bool m_follow = false;
+    bool m_autoFit = false;
+    bool m_movingMap = false;   // the map moves because this layer moved it
+    int m_fittedCount = 0;      // vehicles with a position when autoFit last framed them
+    QPointer<MapView> m_watchedMap;
+    struct Frame
+    {
+        double latitude = 0, longitude = 0, zoom = -1;
+    } m_framed; // where this layer last put the map
 };
 
 } // namespace sortie::ui

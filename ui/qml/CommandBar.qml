@@ -1,13 +1,15 @@
 import QtQuick
 import QtQuick.Controls
 import QtQuick.Layouts
+import Sortie.Ui
 
 // Commands to the chosen vehicle. The ones where a mistake is dangerous ask first; each one's
-// result shows beside the bar.
+// result shows beside the bar. `goMode` is on while the operator picks a point on the map.
 ToolBar {
     id: bar
-    required property var page
-    readonly property var vehicle: page.current
+    required property Vehicle vehicle      // null: none chosen
+    required property VehicleFleet fleet   // null: no client layer
+    property bool goMode: false
     property var pending: null
 
     function confirm(question, action) {
@@ -52,8 +54,8 @@ ToolBar {
             objectName: "goButton"
             text: qsTr("Go here…")
             checkable: true
-            checked: bar.page.goMode
-            onToggled: bar.page.goMode = checked
+            checked: bar.goMode
+            onToggled: bar.goMode = checked
             ToolTip.visible: hovered
             ToolTip.text: qsTr("Then click on the map where the vehicle should fly")
         }
@@ -62,7 +64,7 @@ ToolBar {
           objectName: "commandResult"
           Layout.fillWidth: true
           elide: Text.ElideRight
-          text: bar.page.fleet ? bar.page.fleet.commandResult : qsTr("Choose a vehicle on the map or in the list.")
+          text: bar.fleet ? bar.fleet.commandResult : qsTr("Choose a vehicle on the map or in the list.")
       }
     }
 }

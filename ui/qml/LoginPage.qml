@@ -8,7 +8,7 @@ import Sortie.Ui
 Page {
     id: page
     required property AppSettings appSettings
-    property var connection: null
+    required property ConnectionController connection // null: this window cannot log in
     property alias serverField: server
     property alias userField: user
     property alias passwordField: password

@@ -8,15 +8,15 @@ import Sortie.Ui
 ApplicationWindow {
     id: window
     required property AppSettings appSettings
-    property var connection: null
-    property var missions: null
-    property var fleet: null
-    // The client's AutosaveRecovery: edits a previous run left unsaved, offered at start.
-    property var recovery: null
+    // The client's controllers, made in C++ (app/sortie). Each may be missing (a test of the
+    // shell alone); the views then show what they can without it.
+    property ConnectionController connection: null
+    property MissionController missions: null
+    property VehicleFleet fleet: null
+    // Edits a previous run left unsaved, offered at start.
+    property AutosaveRecovery recovery: null
     property string connectionState: connection ? connection.state : "Disconnected"
-    property string connectionDetail: !connection ? ""
-                                      : connection.detail.length > 0 ? connection.detail
-                                      : connection.ready ? qsTr("%1 at %2").arg(connection.user).arg(connection.server) : ""
+    property string connectionDetail: connection ? connection.statusDetail : ""
 
     property alias currentPage: tabs.currentIndex
     property alias loginPage: loginPage
@@ -101,6 +101,7 @@ ApplicationWindow {
             id: missionPage
             objectName: "missionPage"
             missions: window.missions
+            vehicleModel: window.fleet
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource
@@ -129,7 +130,16 @@ ApplicationWindow {
 
     Shortcuts {
         id: shortcuts
-        window: window
+        onHelpRequested: window.toggleHelp()
+        onPageRequested: page => window.showPage(page)
+        onSaveRequested: window.saveRoute()
+        onUndoRequested: window.undo()
+        onRedoRequested: window.redo()
+        onDeleteRequested: window.deleteSelection()
+        onProcessRequested: window.processRoute()
+        onMapSourceRequested: window.openMapSource()
+        onMapFocusRequested: window.focusMap()
+        onFullScreenRequested: window.toggleFullScreen()
     }
     ShortcutHelp {
         id: help
@@ -143,7 +153,7 @@ ApplicationWindow {
         visible: window.recovery !== null && window.recovery.available
         onRestored: {
             window.showPage(1)
-            Qt.callLater(() => window.missionPage.routeLayer.fitToMap(60))
+            Qt.callLater(() => missionPage.routeLayer.fitToMap(60))
         }
     }
     MapSourceDialog {

@@ -14,15 +14,17 @@ Page {
     property alias areaLayer: areaLayer
     property alias pane: pane
     property alias panel: panel
-    property var missions: null
-    readonly property var doc: missions ? missions.document : null
+    required property MissionController missions // null: no client layer, `routeModel` is shown
+    required property DisplayUnits units
+    readonly property RouteDocument doc: missions ? missions.document : null
+    // The models the layers and the table draw (the document's, unless a test sets others).
     property var routeModel: doc ? doc.model : null
     property var selectionModel: doc ? doc.selection : null
     property var areaPolygonModel: null
     property var areaTransectModel: null
+    property var vehicleModel: null        // the fleet: where the vehicles are while planning
     property bool editable: doc !== null
     property string tool: ""               // "" or "scan" (drawing an area-scan polygon)
-    property DisplayUnits units
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
@@ -52,6 +54,17 @@ Page {
             tileUrlTemplate: page.tileUrlTemplate
             mbtilesFile: page.mbtilesFile
             dark: page.dark
+            VehicleLayer {
+                // Where the vehicles are, for planning near them; the map opens framed on them
+                // until a route is opened (which frames the route) or the operator moves the map.
+                id: vehicleLayer
+                objectName: "missionVehicleLayer"
+                anchors.fill: parent
+                map: pane.map
+                model: page.vehicleModel
+                enabled: false // clicks are for the route
+                autoFit: true
+            }
             AreaScanLayer {
                 id: areaLayer
                 objectName: "areaLayer"
@@ -130,7 +143,13 @@ Page {
             id: panel
             SplitView.preferredWidth: 460
             SplitView.minimumWidth: 320
-            page: page
+            missions: page.missions
+            doc: page.doc
+            units: page.units
+            routeModel: page.routeModel
+            waypointCount: routeLayer.count
+            scanning: page.tool === "scan"
+            onScanToggled: on => page.tool = on ? "scan" : ""
         }
     }
 }

@@ -1,13 +1,14 @@
 import QtQuick
 import QtQuick.Controls
 import QtQuick.Layouts
+import Sortie.Ui
 
 // Offered at start when a previous run left unsaved edits behind (it crashed, or quit without
 // saving): what they change since the last save, and Restore or Discard. `recovery` is the
 // client's AutosaveRecovery; the decisions are its.
 Dialog {
     id: dialog
-    property var recovery: null
+    required property AutosaveRecovery recovery
     signal restored()
     title: qsTr("Restore unsaved edits?")
     modal: true

@@ -8,18 +8,16 @@ import Sortie.Ui
 // scan), how it stands (progress, messages, statistics, validation) and its table.
 Pane {
     id: panel
-    required property var page
-    readonly property var missions: page.missions
-    readonly property var doc: page.doc
-    readonly property DisplayUnits units: page.units
+    required property MissionController missions // null: no client layer, the route is only shown
+    required property RouteDocument doc          // the missions' document, or null
+    required property DisplayUnits units
+    required property var routeModel             // the list model the table shows
+    required property int waypointCount
+    required property bool scanning              // the area-scan tool is on
+    signal scanToggled(bool on)
     padding: 8
     contentWidth: availableWidth // the content follows the panel's width, not its own wishes
     clip: true
-
-    function formatTime(seconds) {
-        const s = Math.round(seconds)
-        return Math.floor(s / 60) + ":" + String(s % 60).padStart(2, "0")
-    }
 
     FileDialog {
         id: importDialog
@@ -42,7 +40,7 @@ Pane {
         Label {
             visible: panel.missions === null
             objectName: "routeSummary"
-            text: page.routeModel ? qsTr("%n waypoint(s)", "", page.routeLayer.count) : qsTr("No route open. Log in to open a mission.")
+            text: panel.routeModel ? qsTr("%n waypoint(s)", "", panel.waypointCount) : qsTr("No route open. Log in to open a mission.")
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }
@@ -72,7 +70,7 @@ Pane {
             visible: panel.missions !== null
             Layout.fillWidth: true
             spacing: 4
-            Button { objectName: "saveButton"; text: qsTr("Save"); enabled: panel.missions && panel.missions.routeId >= 0 || (panel.doc && panel.doc.modified); onClicked: panel.missions.save()
+            Button { objectName: "saveButton"; text: qsTr("Save"); enabled: panel.missions !== null && panel.missions.canSave; onClicked: panel.missions.save()
                      ToolTip.visible: hovered; ToolTip.text: qsTr("Save on the server, under its lock (Ctrl+S)") }
             Button { objectName: "undoButton"; text: qsTr("Undo"); enabled: panel.doc && panel.doc.canUndo; onClicked: panel.doc.undo()
                      ToolTip.visible: hovered; ToolTip.text: panel.doc ? qsTr("Undo %1 (Ctrl+Z)").arg(panel.doc.undoText) : "" }
@@ -80,8 +78,8 @@ Pane {
                      ToolTip.visible: hovered; ToolTip.text: panel.doc ? qsTr("Redo %1 (Ctrl+Shift+Z)").arg(panel.doc.redoText) : "" }
             Button { text: qsTr("Delete"); enabled: panel.doc && panel.doc.selectedRows.length > 0; onClicked: panel.doc.removeSelected()
                      ToolTip.visible: hovered; ToolTip.text: qsTr("Delete the selected waypoints (Del)") }
-            Button { objectName: "scanToolButton"; text: qsTr("Area scan"); checkable: true; checked: page.tool === "scan"
-                     onToggled: page.tool = checked ? "scan" : ""
+            Button { objectName: "scanToolButton"; text: qsTr("Area scan"); checkable: true; checked: panel.scanning
+                     onToggled: panel.scanToggled(checked)
                      ToolTip.visible: hovered; ToolTip.text: qsTr("Draw an area to scan: click its corners on the map") }
             Button { text: qsTr("Import…"); onClicked: importDialog.open() }
             Button { text: qsTr("Export…"); onClicked: exportDialog.open() }
@@ -170,7 +168,7 @@ Pane {
             Label { text: qsTr("Length") ; opacity: 0.7 }
             Label { text: panel.doc ? panel.units.formatDistance(panel.doc.analyzer.lengthMeters) : "" }
             Label { text: qsTr("Time"); opacity: 0.7 }
-            Label { text: panel.doc ? panel.formatTime(panel.doc.analyzer.flightTimeSeconds) : "" }
+            Label { text: panel.doc ? panel.units.formatDuration(panel.doc.analyzer.flightTimeSeconds) : "" }
             Label { text: qsTr("Waypoints"); opacity: 0.7 }
             Label { text: panel.doc ? panel.doc.analyzer.waypointCount : "" }
             Label { text: qsTr("Photos"); opacity: 0.7 }
@@ -191,11 +189,21 @@ Pane {
             clip: true
             model: panel.doc ? panel.doc.analyzer.issues : null
             delegate: ItemDelegate {
+                id: issue
                 required property string severity
                 required property string message
                 required property int segment
                 width: ListView.view.width
-                text: (severity === "error" ? "⛔ " : "⚠ ") + message
+                text: message
+                // A coloured mark, not an emoji: the fonts an operator has may not carry one.
+                contentItem: RowLayout {
+                    spacing: 6
+                    Rectangle {
+                        implicitWidth: 10; implicitHeight: 10; radius: 5
+                        color: issue.severity === "error" ? "#e53935" : "#fb8c00"
+                    }
+                    Label { text: issue.message; wrapMode: Text.Wrap; Layout.fillWidth: true }
+                }
                 onClicked: if (segment >= 0) panel.doc.selectRows([segment])
                 ToolTip.visible: hovered
                 ToolTip.text: qsTr("Select the segment")
@@ -215,7 +223,8 @@ Pane {
         WaypointTable {
             Layout.fillWidth: true
             Layout.fillHeight: true
-            page: panel.page
+            doc: panel.doc
+            model: panel.routeModel
         }
     }
 }

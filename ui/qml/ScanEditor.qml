@@ -1,11 +1,12 @@
 import QtQuick
 import QtQuick.Controls
 import QtQuick.Layouts
+import Sortie.Ui
 
 // The selected area scan's camera and overlaps; the planned transects show on the map.
 GroupBox {
     id: editor
-    required property var doc
+    required property RouteDocument doc
     readonly property var parameters: doc ? doc.scanParameters : ({})
     title: qsTr("Area scan")
 

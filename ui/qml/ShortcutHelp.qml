@@ -5,11 +5,11 @@ import QtQuick.Layouts
 // The keyboard help overlay (F1): every shortcut and map key with what it does.
 Popup {
     id: help
-    property var shortcuts
+    required property Shortcuts shortcuts
     modal: true
     focus: true
     anchors.centerIn: Overlay.overlay
-    width: Math.min(parent ? parent.width - 80 : 560, 560)
+    width: Math.min(parent ? parent.width - 80 : 640, 640)
     padding: 16
     closePolicy: Popup.CloseOnEscape | Popup.CloseOnPressOutside
 
@@ -22,6 +22,7 @@ Popup {
         }
         GridLayout {
             objectName: "shortcutGrid"
+            Layout.fillWidth: true
             columns: 2
             columnSpacing: 24
             rowSpacing: 6
@@ -33,6 +34,7 @@ Popup {
                     Layout.row: index
                     Layout.column: 0
                     font.family: "monospace"
+                    Layout.alignment: Qt.AlignTop
                     text: modelData.nativeText.length > 0 ? modelData.nativeText : modelData.sequences.join(", ")
                 }
             }
@@ -44,6 +46,7 @@ Popup {
                     Layout.row: index
                     Layout.column: 1
                     Layout.fillWidth: true
+                    wrapMode: Text.Wrap
                     text: modelData.help
                 }
             }
@@ -53,6 +56,8 @@ Popup {
             font.bold: true
         }
         GridLayout {
+            objectName: "mapKeyGrid"
+            Layout.fillWidth: true
             columns: 2
             columnSpacing: 24
             rowSpacing: 6
@@ -64,6 +69,7 @@ Popup {
                     Layout.row: index
                     Layout.column: 0
                     font.family: "monospace"
+                    Layout.alignment: Qt.AlignTop
                     text: modelData.keys
                 }
             }
@@ -75,6 +81,7 @@ Popup {
                     Layout.row: index
                     Layout.column: 1
                     Layout.fillWidth: true
+                    wrapMode: Text.Wrap
                     text: modelData.help
                 }
             }

@@ -1,10 +1,20 @@
 import QtQuick
 
-// Every window-wide keyboard shortcut, with the words the help overlay shows for it.
-// Keys the focused map handles itself are listed in `mapKeys`.
+// Every window-wide keyboard shortcut, with the words the help overlay shows for it. Each one
+// says what the operator asked for; the window decides what that does. Keys the focused map
+// handles itself are listed in `mapKeys`.
 QtObject {
     id: root
-    required property var window
+    signal helpRequested()
+    signal pageRequested(int page)
+    signal saveRequested()
+    signal undoRequested()
+    signal redoRequested()
+    signal deleteRequested()
+    signal processRequested()
+    signal mapSourceRequested()
+    signal mapFocusRequested()
+    signal fullScreenRequested()
 
     readonly property var mapKeys: [
         { keys: "← ↑ → ↓", help: qsTr("Pan the map (Shift: faster)") },
@@ -19,62 +29,62 @@ QtObject {
         Shortcut {
             property string help: qsTr("Show or hide this help")
             sequences: ["F1", "?"]
-            onActivated: root.window.toggleHelp()
+            onActivated: root.helpRequested()
         },
         Shortcut {
             property string help: qsTr("Login page")
             sequence: "Ctrl+1"
-            onActivated: root.window.showPage(0)
+            onActivated: root.pageRequested(0)
         },
         Shortcut {
             property string help: qsTr("Mission page")
             sequence: "Ctrl+2"
-            onActivated: root.window.showPage(1)
+            onActivated: root.pageRequested(1)
         },
         Shortcut {
             property string help: qsTr("Live telemetry page")
             sequence: "Ctrl+3"
-            onActivated: root.window.showPage(2)
+            onActivated: root.pageRequested(2)
         },
         Shortcut {
             property string help: qsTr("Save the route on the server")
             sequence: "Ctrl+S"
-            onActivated: root.window.saveRoute()
+            onActivated: root.saveRequested()
         },
         Shortcut {
             property string help: qsTr("Undo")
             sequence: "Ctrl+Z"
-            onActivated: root.window.undo()
+            onActivated: root.undoRequested()
         },
         Shortcut {
             property string help: qsTr("Redo")
             sequences: ["Ctrl+Shift+Z", "Ctrl+Y"]
-            onActivated: root.window.redo()
+            onActivated: root.redoRequested()
         },
         Shortcut {
             property string help: qsTr("Delete the selected waypoints")
             sequence: "Del"
-            onActivated: root.window.deleteSelection()
+            onActivated: root.deleteRequested()
         },
         Shortcut {
             property string help: qsTr("Process the route on the server")
             sequence: "Ctrl+P"
-            onActivated: root.window.processRoute()
+            onActivated: root.processRequested()
         },
         Shortcut {
             property string help: qsTr("Choose the map source")
             sequence: "Ctrl+M"
-            onActivated: root.window.openMapSource()
+            onActivated: root.mapSourceRequested()
         },
         Shortcut {
             property string help: qsTr("Focus the map (then arrows and +/− move it)")
             sequence: "Ctrl+L"
-            onActivated: root.window.focusMap()
+            onActivated: root.mapFocusRequested()
         },
         Shortcut {
             property string help: qsTr("Full screen on or off")
             sequence: "F11"
-            onActivated: root.window.toggleFullScreen()
+            onActivated: root.fullScreenRequested()
         },
         Shortcut {
             property string help: qsTr("Quit")

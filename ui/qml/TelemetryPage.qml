@@ -10,11 +10,11 @@ Page {
     property alias map: pane.map
     property alias vehicleLayer: vehicleLayer
     property alias pane: pane
-    property var fleet: null
-    property var vehicleModel: fleet
-    readonly property var current: fleet && vehicleLayer.currentIndex >= 0 ? fleet.vehicleAt(vehicleLayer.currentIndex) : null
-    property bool goMode: false
-    property DisplayUnits units
+    required property VehicleFleet fleet   // null: no client layer (the shell's own tests)
+    required property DisplayUnits units
+    property var vehicleModel: fleet        // any list model with the fleet's role names
+    property var plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
+    readonly property Vehicle current: fleet && vehicleLayer.currentIndex >= 0 ? fleet.vehicleAt(vehicleLayer.currentIndex) : null
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
@@ -51,7 +51,7 @@ Page {
                         text: (model.name !== undefined ? model.name : qsTr("Vehicle %1").arg(index + 1))
                               + (model.protocol !== undefined ? "  ·  " + model.protocol + "  ·  " + model.linkState : "")
                         opacity: model.stale === true ? 0.5 : 1
-                        onClicked: vehicleLayer.currentIndex = index
+                        onClicked: { vehicleLayer.currentIndex = index; vehicleLayer.centerOn(index) }
                     }
                 }
                 RowLayout {
@@ -94,49 +94,130 @@ Page {
                 tileUrlTemplate: page.tileUrlTemplate
                 mbtilesFile: page.mbtilesFile
                 dark: page.dark
+                FlightPlanLayer {
+                    // Each vehicle's mission under it: flown, ahead, the waypoint it flies to.
+                    id: planLayer
+                    objectName: "flightPlanLayer"
+                    anchors.fill: parent
+                    map: pane.map
+                    model: page.fleet
+                    currentIndex: vehicleLayer.currentIndex
+                }
                 VehicleLayer {
                     id: vehicleLayer
                     objectName: "vehicleLayer"
                     anchors.fill: parent
                     map: pane.map
                     model: page.vehicleModel
+                    autoFit: true // the fleet framed as it reports, until the operator moves the map
+                }
+                Row {
+                    anchors.left: parent.left
+                    anchors.top: parent.top
+                    anchors.margins: 10
+                    spacing: 4
+                    Button {
+                        objectName: "fitAllButton"
+                        text: qsTr("Fit all")
+                        focusPolicy: Qt.NoFocus
+                        enabled: vehicleLayer.positionedCount > 0
+                        onClicked: vehicleLayer.fitToMap()
+                        ToolTip.visible: hovered
+                        ToolTip.text: qsTr("Show every vehicle on the map")
+                    }
+                    Button {
+                        objectName: "followButton"
+                        text: qsTr("Follow")
+                        checkable: true
+                        focusPolicy: Qt.NoFocus
+                        enabled: vehicleLayer.currentIndex >= 0
+                        checked: vehicleLayer.follow
+                        onToggled: vehicleLayer.follow = checked
+                        ToolTip.visible: hovered
+                        ToolTip.text: qsTr("Keep the chosen vehicle in the middle of the map")
+                    }
                 }
                 Connections {
                     target: pane.map
                     function onClicked(coordinate, modifiers) {
-                        if (page.goMode && page.current)
+                        if (commands.goMode && page.current)
                             commands.confirm(qsTr("Fly %1 to %2?").arg(page.current.name).arg(page.units.formatCoordinate(coordinate)),
-                                             () => { page.fleet.goTo(vehicleLayer.currentIndex, coordinate.latitude, coordinate.longitude); page.goMode = false })
+                                             () => { page.fleet.goTo(vehicleLayer.currentIndex, coordinate.latitude, coordinate.longitude); commands.goMode = false })
                     }
                 }
             }
             CommandBar {
                 id: commands
                 Layout.fillWidth: true
-                page: page
+                vehicle: page.current
+                fleet: page.fleet
             }
         }
         ColumnLayout {
-            SplitView.preferredWidth: 300
-            SplitView.minimumWidth: 220
+            SplitView.preferredWidth: 320
+            SplitView.minimumWidth: 240
+            spacing: 4
             InstrumentPanel {
+                objectName: "instrumentPanel"
                 Layout.fillWidth: true
                 vehicle: page.current
                 units: page.units
             }
+            // The plot: pick fields (each its own colour; another unit gets its own axis), or
+            // compare the same field across every vehicle.
             RowLayout {
                 Layout.fillWidth: true
+                spacing: 4
                 ComboBox {
                     id: fieldPicker
                     objectName: "plotFieldPicker"
                     Layout.fillWidth: true
                     model: plot.availableFields()
-                    currentIndex: Math.max(0, model.indexOf("altitudeAgl"))
+                    currentIndex: Math.max(0, model.indexOf("groundSpeed"))
+                }
+                Button {
+                    objectName: "plotAddButton"
+                    text: qsTr("Add")
+                    enabled: page.plotFields.indexOf(fieldPicker.currentText) < 0
+                    onClicked: page.plotFields = page.plotFields.concat([fieldPicker.currentText])
+                    ToolTip.visible: hovered
+                    ToolTip.text: qsTr("Plot this field too")
                 }
                 ComboBox {
                     id: windowPicker
+                    objectName: "plotWindowPicker"
+                    implicitContentWidthPolicy: ComboBox.WidestText
                     model: [qsTr("1 min"), qsTr("5 min"), qsTr("30 min")]
                     currentIndex: 1
+                }
+            }
+            Flow {
+                objectName: "plotFieldChips"
+                Layout.fillWidth: true
+                spacing: 4
+                Repeater {
+                    model: page.plotFields
+                    delegate: Button {
+                        required property string modelData
+                        text: modelData + "  ×"
+                        flat: true
+                        font.pixelSize: 11
+                        padding: 4
+                        enabled: page.plotFields.length > 1
+                        onClicked: page.plotFields = page.plotFields.filter(f => f !== modelData)
+                        ToolTip.visible: hovered
+                        ToolTip.text: qsTr("Remove from the plot")
+                    }
+                }
+                CheckBox {
+                    objectName: "plotCompareCheck"
+                    text: qsTr("All vehicles")
+                    font.pixelSize: 11
+                    padding: 2
+                    checked: plot.compare
+                    onToggled: plot.compare = checked
+                    ToolTip.visible: hovered
+                    ToolTip.text: qsTr("Compare these fields across every vehicle")
                 }
             }
             TelemetryPlot {
@@ -144,9 +225,10 @@ Page {
                 objectName: "telemetryPlot"
                 Layout.fillWidth: true
                 Layout.fillHeight: true
-                Layout.minimumHeight: 160
+                Layout.minimumHeight: 140
                 vehicle: page.current
-                fields: [fieldPicker.currentText]
+                fleet: page.fleet
+                fields: page.plotFields
                 windowSeconds: [60, 300, 1800][windowPicker.currentIndex]
                 textColor: page.palette.windowText
             }

@@ -1,14 +1,15 @@
 import QtQuick
 import QtQuick.Controls
 import QtQuick.Layouts
+import Sortie.Ui
 
 // The route as a table beside the map: one row per segment, cells edited in place (each edit is
 // an undoable setData on the model), a click selects (Ctrl toggles, Shift extends), and the bar
 // above edits every selected row at once.
 ColumnLayout {
     id: table
-    required property var page
-    readonly property var doc: page.doc
+    required property RouteDocument doc   // null: the table only shows `routeModel`
+    required property var routeModel
     readonly property var selected: doc ? doc.selectedRows : []
     spacing: 4
 
@@ -54,12 +55,23 @@ ColumnLayout {
         }
     }
 
+    // One width per column, for the header and the rows alike; the last column takes the rest.
+    readonly property var columnWidths: [28, 84, 84, 50, 50, 52]
     RowLayout {
         Layout.fillWidth: true
         spacing: 2
         Repeater {
-            model: [[qsTr("#"), 28], [qsTr("Latitude"), 80], [qsTr("Longitude"), 80], [qsTr("Alt"), 46], [qsTr("Type"), 44], [qsTr("Speed"), 40], [qsTr("Actions"), 60]]
-            Label { required property var modelData; text: modelData[0]; font.bold: true; Layout.preferredWidth: modelData[1] }
+            model: [qsTr("#"), qsTr("Latitude"), qsTr("Longitude"), qsTr("Alt"), qsTr("Type"), qsTr("Speed"), qsTr("Actions")]
+            Label {
+                required property string modelData
+                required property int index
+                text: modelData
+                font.bold: true
+                elide: Text.ElideRight
+                Layout.preferredWidth: index < table.columnWidths.length ? table.columnWidths[index] : -1
+                Layout.fillWidth: index >= table.columnWidths.length
+                leftPadding: index > 0 && index < 4 || index === 5 ? 2 : 0 // over the cells' text
+            }
         }
     }
 
@@ -69,7 +81,7 @@ ColumnLayout {
         Layout.fillWidth: true
         Layout.fillHeight: true
         clip: true
-        model: table.page.routeModel
+        model: table.routeModel
         ScrollBar.vertical: ScrollBar {}
         delegate: Rectangle {
             id: row
@@ -86,12 +98,12 @@ ColumnLayout {
             RowLayout {
                 anchors.fill: parent
                 spacing: 2
-                Label { text: row.index + 1; Layout.preferredWidth: 28; horizontalAlignment: Text.AlignHCenter }
-                Cell { role: "latitude"; rowModel: row.model; Layout.preferredWidth: 80 }
-                Cell { role: "longitude"; rowModel: row.model; Layout.preferredWidth: 80 }
-                Cell { role: "altitude"; rowModel: row.model; Layout.preferredWidth: 46 }
-                Label { text: row.model.altitudeType !== undefined ? row.model.altitudeType : ""; Layout.preferredWidth: 44 }
-                Cell { role: "speed"; rowModel: row.model; Layout.preferredWidth: 40 }
+                Label { text: row.index + 1; Layout.preferredWidth: table.columnWidths[0]; horizontalAlignment: Text.AlignHCenter }
+                Cell { role: "latitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[1] }
+                Cell { role: "longitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[2] }
+                Cell { role: "altitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[3] }
+                Label { text: row.model.altitudeType !== undefined ? row.model.altitudeType : ""; Layout.preferredWidth: table.columnWidths[4] }
+                Cell { role: "speed"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[5] }
                 Label {
                     text: row.model.kind === "areaScan" ? qsTr("Area scan") : row.model.actionsSummary !== undefined ? row.model.actionsSummary : ""
                     elide: Text.ElideRight

@@ -1,5 +1,8 @@
 #include "DisplayUnits.h"
 
+#include "VehicleLink.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace sortie::ui {
@@ -106,6 +109,61 @@ QString DisplayUnits::formatLatLon(double latitude, double longitude) const
     if (m_coordinates == CoordinateFormat::DegreesMinutesSeconds)
         return dms(latitude, u'N', u'S') + QLatin1Char(' ') + dms(longitude, u'E', u'W');
     return QStringLiteral("%1, %2").arg(latitude, 0, 'f', 6).arg(longitude, 0, 'f', 6);
+}
+
+QString DisplayUnits::formatDuration(double seconds) const
+{
+    if (!std::isfinite(seconds) || seconds < 0)
+        return QStringLiteral("—");
+    const qint64 total = qint64(std::llround(seconds));
+    const qint64 hours = total / 3600, minutes = (total / 60) % 60, rest = total % 60;
+    if (hours > 0)
+        return QStringLiteral("%1:%2:%3").arg(hours).arg(minutes, 2, 10, QLatin1Char('0')).arg(rest, 2, 10, QLatin1Char('0'));
+    return QStringLiteral("%1:%2").arg(minutes).arg(rest, 2, 10, QLatin1Char('0'));
+}
+
+QString DisplayUnits::formatAngle(double radians) const
+{
+    if (!std::isfinite(radians))
+        return QStringLiteral("—");
+    const double degrees = std::round(radians * 180.0 / M_PI);
+    return QStringLiteral("%1°").arg(degrees == 0 ? 0.0 : degrees, 0, 'f', 0); // no "-0°"
+}
+
+QString DisplayUnits::formatHeading(double radians) const
+{
+    if (!std::isfinite(radians))
+        return QStringLiteral("—");
+    int degrees = int(std::lround(radians * 180.0 / M_PI)) % 360;
+    if (degrees < 0)
+        degrees += 360;
+    return QStringLiteral("%1°").arg(degrees, 3, 10, QLatin1Char('0'));
+}
+
+QString DisplayUnits::formatBattery(double voltage, double remaining) const
+{
+    const bool hasLevel = std::isfinite(remaining), hasVoltage = std::isfinite(voltage);
+    const QString level = hasLevel ? tr("%1 %").arg(std::lround(std::clamp(remaining, 0.0, 1.0) * 100)) : QString();
+    const QString volts = hasVoltage ? tr("%1 V").arg(voltage, 0, 'f', 1) : QString();
+    if (hasLevel && hasVoltage)
+        return level + QStringLiteral("  ") + volts;
+    if (hasLevel)
+        return level;
+    if (hasVoltage)
+        return volts;
+    return QStringLiteral("—");
+}
+
+QString DisplayUnits::formatLinkState(int state) const
+{
+    using State = vehicle::VehicleLink::State;
+    switch (State(state)) {
+    case State::Disconnected: return tr("disconnected");
+    case State::Connecting: return tr("connecting");
+    case State::Connected: return tr("connected");
+    case State::Lost: return tr("link lost");
+    }
+    return QStringLiteral("—");
 }
 
 } // namespace sortie::ui

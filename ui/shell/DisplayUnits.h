@@ -40,6 +40,16 @@ public:
     Q_INVOKABLE QString formatSpeed(double metersPerSecond) const;
     Q_INVOKABLE QString formatCoordinate(const QGeoCoordinate &coordinate) const;
     Q_INVOKABLE QString formatLatLon(double latitude, double longitude) const;
+    // "4:05" under an hour, "1:02:03" above; "—" when unknown.
+    Q_INVOKABLE QString formatDuration(double seconds) const;
+    // Radians shown as whole degrees, "—" when unknown. A heading is folded into 0..359.
+    Q_INVOKABLE QString formatAngle(double radians) const;
+    Q_INVOKABLE QString formatHeading(double radians) const;
+    // What the vehicle reports of its battery: "87 %  22.4 V", "22.4 V" (voltage only),
+    // "87 %" (level only), or "—" (nothing). `remaining` is 0..1.
+    Q_INVOKABLE QString formatBattery(double voltage, double remaining) const;
+    // The link's state (VehicleLink::State) in words: "connected", "link lost"...
+    Q_INVOKABLE QString formatLinkState(int state) const;
 
 signals:
     void changed();

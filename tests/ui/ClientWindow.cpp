@@ -1,0 +1,117 @@
+#include "ClientWindow.h"
+
+#include "SimVciListener.h"
+#include "SortieUi.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+namespace sortie::test {
+
+ClientWindow::ClientWindow(Options options)
+{
+    sim::SimWorld::Config config;
+    config.users = {{0, QStringLiteral("admin"), QStringLiteral("admin"), true}};
+    m_world = std::make_unique<sim::SimWorld>(config);
+    m_server = std::make_unique<sim::HciServer>(*m_world);
+    m_server->setUploadStepMs(options.uploadStepMs);
+    if (!m_server->listen(QHostAddress::LocalHost, 0)) {
+        m_error = QStringLiteral("the simulated server cannot listen");
+        return;
+    }
+    sim::SimVciFleetOptions vci;
+    vci.count = options.vciVehicles;
+    vci.firstPort = 0;
+    m_vci = std::make_unique<sim::SimVciFleet>(vci);
+    if (!m_vci->start(&m_error))
+        return;
+    m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
+    m_settings = std::make_unique<ui::AppSettings>(m_storage.get());
+    m_session = std::make_unique<hci::HciSession>();
+    m_client = std::make_unique<hci::HciClient>(m_session.get());
+    m_connection = std::make_unique<client::ConnectionController>(m_session.get());
+    m_missions = std::make_unique<client::MissionController>(m_client.get());
+    m_fleet = std::make_unique<client::VehicleFleet>(m_client.get());
+    m_engine = std::make_unique<QQmlApplicationEngine>();
+    ui::addImportPaths(*m_engine);
+    m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())},
+                                    {QStringLiteral("connection"), QVariant::fromValue<QObject *>(m_connection.get())},
+                                    {QStringLiteral("missions"), QVariant::fromValue<QObject *>(m_missions.get())},
+                                    {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(m_fleet.get())}});
+    m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
+    if (m_engine->rootObjects().isEmpty()) {
+        m_error = QStringLiteral("Main.qml did not load");
+        return;
+    }
+    m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
+    m_window->resize(options.size);
+    m_window->show();
+    if (!QTest::qWaitForWindowExposed(m_window)) {
+        m_error = QStringLiteral("the window was not exposed");
+        m_window = nullptr;
+    }
+}
+
+ClientWindow::~ClientWindow()
+{
+    m_engine.reset();
+    m_fleet.reset();
+    m_missions.reset();
+    m_connection.reset();
+    m_client.reset();
+    m_session.reset();
+    m_vci.reset();
+    m_server.reset();
+    m_world.reset();
+}
+
+bool ClientWindow::logIn()
+{
+    QSignalSpy ready(m_connection.get(), &client::ConnectionController::ready);
+    if (!m_connection->connectToServer(QStringLiteral("127.0.0.1:%1").arg(m_server->port()), QStringLiteral("admin"),
+                                       QStringLiteral("admin")))
+        return false;
+    return ready.wait(10000) || m_connection->isReady();
+}
+
+bool ClientWindow::openDemoRoute()
+{
+    auto *routes = m_missions->routes();
+    if (!QTest::qWaitFor([&] { return routes->rowCount() > 0 && !m_missions->isBusy(); }, 10000))
+        return false;
+    const int id = routes->objectIdAt(0);
+    m_missions->openRoute(id);
+    return QTest::qWaitFor([&] { return m_missions->routeId() == id && m_missions->document()->model()->rowCount() > 0; }, 10000);
+}
+
+bool ClientWindow::addVciVehicles()
+{
+    const int before = m_fleet->count();
+    for (const auto &listener : m_vci->listeners())
+        if (!m_fleet->addVciVehicle(QStringLiteral("tcp://127.0.0.1:%1").arg(listener->port())))
+            return false;
+    return QTest::qWaitFor([&] {
+        for (int row = before; row < m_fleet->count(); ++row)
+            if (!m_fleet->vehicleAt(row)->position().isValid())
+                return false;
+        return m_fleet->count() == before + int(m_vci->listeners().size());
+    }, 10000);
+}
+
+void ClientWindow::showPage(int page)
+{
+    m_window->setProperty("currentPage", page);
+}
+
+bool waitForFrame(QQuickWindow *window)
+{
+    for (int i = 0; i < 2; ++i) {
+        QSignalSpy swapped(window, &QQuickWindow::frameSwapped);
+        window->update();
+        if (!swapped.wait(2000))
+            return false;
+    }
+    return true;
+}
+
+} // namespace sortie::test

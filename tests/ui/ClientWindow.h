@@ -1,0 +1,87 @@
+#pragma once
+
+// The whole client in one offscreen window, as app/sortie wires it, against the embedded
+// simulator: an HCI server with the demo content (three vehicles, a demo route) and VCI vehicles
+// on loopback ports. For UI tests that fly, render or inspect the real views.
+#include "AppSettings.h"
+#include "ConnectionController.h"
+#include "HciClient.h"
+#include "HciServer.h"
+#include "HciSession.h"
+#include "MissionController.h"
+#include "SimVciFleet.h"
+#include "SimWorld.h"
+#include "VehicleFleet.h"
+
+#include <QQmlApplicationEngine>
+#include <QQuickItem>
+#include <QQuickWindow>
+#include <QSettings>
+#include <QTemporaryDir>
+
+#include <memory>
+
+namespace sortie::test {
+
+class ClientWindow
+{
+public:
+    struct Options
+    {
+        int vciVehicles = 1;
+        int uploadStepMs = 20;
+        QSize size{1280, 800};
+    };
+    explicit ClientWindow(Options options);
+    ClientWindow() : ClientWindow(Options{}) {}
+    ~ClientWindow();
+
+    bool isReady() const { return m_window != nullptr; }
+    QString error() const { return m_error; }
+    QQuickWindow *window() const { return m_window; }
+
+    // Logs in to the simulated server straight through the controller (the login page's own
+    // test types it); true once ready.
+    bool logIn();
+    // Opens the simulator's demo route; true once its waypoints are in the document.
+    bool openDemoRoute();
+    // Adds every simulated VCI vehicle to the fleet; true once each has a position.
+    bool addVciVehicles();
+    void showPage(int page);
+
+    template<typename T = QQuickItem>
+    T *find(const QString &name) const
+    {
+        return m_window ? m_window->findChild<T *>(name) : nullptr;
+    }
+    QObject *page(const char *name) const { return m_window->property(name).value<QObject *>(); }
+
+    sim::SimWorld &world() { return *m_world; }
+    sim::HciServer &server() { return *m_server; }
+    sim::SimVciFleet &vci() { return *m_vci; }
+    ui::AppSettings &settings() { return *m_settings; }
+    client::ConnectionController &connection() { return *m_connection; }
+    client::MissionController &missions() { return *m_missions; }
+    client::VehicleFleet &fleet() { return *m_fleet; }
+
+private:
+    QTemporaryDir m_dir;
+    std::unique_ptr<sim::SimWorld> m_world;
+    std::unique_ptr<sim::HciServer> m_server;
+    std::unique_ptr<sim::SimVciFleet> m_vci;
+    std::unique_ptr<QSettings> m_storage;
+    std::unique_ptr<ui::AppSettings> m_settings;
+    std::unique_ptr<hci::HciSession> m_session;
+    std::unique_ptr<hci::HciClient> m_client;
+    std::unique_ptr<client::ConnectionController> m_connection;
+    std::unique_ptr<client::MissionController> m_missions;
+    std::unique_ptr<client::VehicleFleet> m_fleet;
+    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    QQuickWindow *m_window = nullptr;
+    QString m_error;
+};
+
+// Waits until the window has drawn a frame after now (layouts and polish done).
+bool waitForFrame(QQuickWindow *window);
+
+} // namespace sortie::test

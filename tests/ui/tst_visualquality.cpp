@@ -1,0 +1,151 @@
+// Visual quality: every page and dialog of the real client, against the embedded simulator (the
+// demo route open, HCI and VCI vehicles flying), rendered offscreen at 1280×800 and 1920×1080 in
+// a light and a dark palette; no text may be clipped, run past its frame, overlap another text or
+// fall back to a missing glyph (VisualCheck). Each rendering is saved beside the test's binary.
+#include "ClientWindow.h"
+#include "QuickScene.h"
+#include "VehicleLayer.h"
+#include "VisualCheck.h"
+
+#include <QDir>
+#include <QGuiApplication>
+#include <QPalette>
+#include <QSignalSpy>
+#include <QTest>
+#include <QtQml/qqmlextensionplugin.h>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+using namespace sortie;
+
+namespace {
+
+QPalette darkPalette()
+{
+    QPalette dark;
+    dark.setColor(QPalette::Window, QColor(0x2b, 0x2b, 0x2b));
+    dark.setColor(QPalette::WindowText, QColor(0xe0, 0xe0, 0xe0));
+    dark.setColor(QPalette::Base, QColor(0x1e, 0x1e, 0x1e));
+    dark.setColor(QPalette::AlternateBase, QColor(0x33, 0x33, 0x33));
+    dark.setColor(QPalette::Text, QColor(0xe0, 0xe0, 0xe0));
+    dark.setColor(QPalette::Button, QColor(0x35, 0x35, 0x35));
+    dark.setColor(QPalette::ButtonText, QColor(0xe0, 0xe0, 0xe0));
+    dark.setColor(QPalette::ToolTipBase, QColor(0x35, 0x35, 0x35));
+    dark.setColor(QPalette::ToolTipText, QColor(0xe0, 0xe0, 0xe0));
+    return dark;
+}
+
+QString outputDir()
+{
+    const QString dir = qEnvironmentVariable("SORTIE_QUALITY_DIR", QStringLiteral(SORTIE_QUALITY_DEFAULT_DIR));
+    QDir().mkpath(dir);
+    return dir;
+}
+
+} // namespace
+
+class TestVisualQuality : public QObject
+{
+    Q_OBJECT
+
+    std::unique_ptr<test::ClientWindow> m_client;
+
+    void check(const QString &name, QQuickItem *scope)
+    {
+        QVERIFY(test::waitForFrame(m_client->window()));
+        const QStringList problems = test::inspectTexts(scope);
+        QVERIFY2(test::lastInspectedTextCount() > 3, qPrintable(name + QStringLiteral(": hardly any text seen")));
+        m_client->window()->grabWindow().save(QDir(outputDir()).filePath(name + QStringLiteral(".png")));
+        QVERIFY2(problems.isEmpty(), qPrintable(name + QStringLiteral(":\n  ") + problems.join(QStringLiteral("\n  "))));
+    }
+
+    QQuickItem *popupItem(const char *name)
+    {
+        QObject *popup = m_client->find<QObject>(QString::fromLatin1(name));
+        if (!popup)
+            return nullptr;
+        auto *content = popup->property("contentItem").value<QQuickItem *>();
+        return content ? content->parentItem() : nullptr;
+    }
+
+    void openPopup(const char *name)
+    {
+        QObject *popup = m_client->find<QObject>(QString::fromLatin1(name));
+        QVERIFY2(popup, name);
+        QMetaObject::invokeMethod(popup, "open");
+        QTRY_VERIFY(popup->property("opened").toBool());
+    }
+
+    void closePopup(const char *name)
+    {
+        QObject *popup = m_client->find<QObject>(QString::fromLatin1(name));
+        QMetaObject::invokeMethod(popup, "close");
+        QTRY_VERIFY(!popup->property("visible").toBool());
+    }
+
+private slots:
+    void initTestCase()
+    {
+        test::useSoftwareRendering();
+        m_client = std::make_unique<test::ClientWindow>();
+        QVERIFY2(m_client->isReady(), qPrintable(m_client->error()));
+        QVERIFY(m_client->logIn());
+        QVERIFY(m_client->openDemoRoute());
+        QVERIFY(m_client->addVciVehicles());
+        QTRY_COMPARE_WITH_TIMEOUT(m_client->fleet().count(), 4, 10000);
+        // A vehicle chosen, so the instruments show values rather than dashes.
+        m_client->showPage(2);
+        auto *layer = m_client->find<ui::VehicleLayer>(QStringLiteral("vehicleLayer"));
+        QVERIFY(layer);
+        layer->setCurrentIndex(0);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->fleet().vehicleAt(0)->position().isValid(), 10000);
+    }
+
+    void cleanupTestCase()
+    {
+        m_client.reset();
+        QGuiApplication::setPalette(QPalette());
+    }
+
+    void everyViewAndDialog_data()
+    {
+        QTest::addColumn<QSize>("size");
+        QTest::addColumn<bool>("dark");
+        for (const QSize size : {QSize(1280, 800), QSize(1920, 1080)})
+            for (bool dark : {false, true})
+                QTest::addRow("%dx%d-%s", size.width(), size.height(), dark ? "dark" : "light") << size << dark;
+    }
+
+    void everyViewAndDialog()
+    {
+        QFETCH(QSize, size);
+        QFETCH(bool, dark);
+        QGuiApplication::setPalette(dark ? darkPalette() : QPalette());
+        QQuickWindow *window = m_client->window();
+        window->resize(size);
+        QTRY_COMPARE(window->size(), size);
+        QTRY_COMPARE(window->property("dark").toBool(), dark);
+        const QString suffix = QStringLiteral("-%1x%2-%3").arg(size.width()).arg(size.height()).arg(dark ? "dark" : "light");
+
+        for (const auto &[page, name] : {std::pair{0, "login"}, {1, "mission"}, {2, "fly"}}) {
+            m_client->showPage(page);
+            check(QString::fromLatin1(name) + suffix, window->contentItem());
+        }
+
+        m_client->showPage(2);
+        for (const char *dialog : {"shortcutHelp", "mapSourceDialog"}) {
+            openPopup(dialog);
+            check(QString::fromLatin1(dialog) + suffix, popupItem(dialog));
+            closePopup(dialog);
+        }
+        QObject *confirm = m_client->find<QObject>(QStringLiteral("commandConfirmDialog"));
+        QVERIFY(confirm);
+        confirm->setProperty("text", QStringLiteral("Take off with EMU-101 to 10 m?"));
+        openPopup("commandConfirmDialog");
+        check(QStringLiteral("confirm") + suffix, popupItem("commandConfirmDialog"));
+        closePopup("commandConfirmDialog");
+    }
+};
+
+QTEST_MAIN(TestVisualQuality)
+#include "tst_visualquality.moc"

@@ -1,0 +1,147 @@
+#include "AttitudeIndicator.h"
+
+#include <QPainter>
+#include <QPainterPath>
+
+#include <cmath>
+#include <numbers>
+
+namespace sortie::ui {
+
+namespace {
+constexpr double kDegree = 180.0 / std::numbers::pi;
+const QColor kSky(0x3f, 0x8f, 0xd8);
+const QColor kGround(0x8a, 0x5a, 0x2b);
+const QColor kSymbol(0xff, 0xd6, 0x00);
+
+bool same(double a, double b)
+{
+    return a == b || (std::isnan(a) && std::isnan(b));
+}
+} // namespace
+
+AttitudeIndicator::AttitudeIndicator(QQuickItem *parent)
+    : QQuickPaintedItem(parent)
+{
+    setAntialiasing(true);
+    setImplicitSize(150, 150);
+}
+
+void AttitudeIndicator::setRoll(double radians)
+{
+    if (same(radians, m_roll))
+        return;
+    m_roll = radians;
+    update();
+    emit attitudeChanged();
+}
+
+void AttitudeIndicator::setPitch(double radians)
+{
+    if (same(radians, m_pitch))
+        return;
+    m_pitch = radians;
+    update();
+    emit attitudeChanged();
+}
+
+void AttitudeIndicator::setTextColor(const QColor &color)
+{
+    if (color == m_text)
+        return;
+    m_text = color;
+    update();
+    emit textColorChanged();
+}
+
+void AttitudeIndicator::paint(QPainter *painter)
+{
+    painter->setRenderHint(QPainter::Antialiasing);
+    const double side = std::min(width(), height());
+    if (side < 20)
+        return;
+    const double r = side / 2 - 2;
+    const QPointF centre(width() / 2, height() / 2);
+    QPainterPath face;
+    face.addEllipse(centre, r, r);
+
+    if (!hasAttitude()) {
+        painter->setPen(QPen(m_text, 1.5));
+        painter->setBrush(QColor(0x80, 0x80, 0x80, 90));
+        painter->drawPath(face);
+        QFont font = painter->font();
+        font.setPixelSize(std::max(9, int(side / 12)));
+        painter->setFont(font);
+        painter->drawText(QRectF(centre.x() - r, centre.y() - r, 2 * r, 2 * r), Qt::AlignCenter, tr("no attitude"));
+        return;
+    }
+
+    // The horizon: pixels per degree of pitch so that ±30° spans the face.
+    const double pixelsPerDegree = r / 30.0;
+    const double pitchDeg = std::clamp(m_pitch * kDegree, -90.0, 90.0);
+    painter->save();
+    painter->setClipPath(face);
+    painter->translate(centre);
+    painter->rotate(-m_roll * kDegree);
+    painter->translate(0, pitchDeg * pixelsPerDegree);
+    const double big = side * 3;
+    painter->fillRect(QRectF(-big, -big, 2 * big, big), kSky);
+    painter->fillRect(QRectF(-big, 0, 2 * big, big), kGround);
+    painter->setPen(QPen(Qt::white, 2));
+    painter->drawLine(QPointF(-big, 0), QPointF(big, 0));
+    // The pitch ladder, every 10° (short marks at 5°).
+    QFont font = painter->font();
+    font.setPixelSize(std::max(8, int(side / 16)));
+    painter->setFont(font);
+    painter->setPen(QPen(Qt::white, 1.2));
+    for (int deg = -60; deg <= 60; deg += 5) {
+        if (deg == 0)
+            continue;
+        const double y = -deg * pixelsPerDegree;
+        const double half = deg % 10 == 0 ? r * 0.28 : r * 0.12;
+        painter->drawLine(QPointF(-half, y), QPointF(half, y));
+        if (deg % 10 == 0) {
+            const QString label = QString::number(std::abs(deg));
+            painter->drawText(QRectF(half + 2, y - 8, 24, 16), Qt::AlignLeft | Qt::AlignVCenter, label);
+            painter->drawText(QRectF(-half - 26, y - 8, 24, 16), Qt::AlignRight | Qt::AlignVCenter, label);
+        }
+    }
+    painter->restore();
+
+    // The roll scale (fixed) and its pointer (turns with the roll).
+    painter->save();
+    painter->translate(centre);
+    painter->setPen(QPen(Qt::white, 1.5));
+    for (int deg : {-60, -45, -30, -20, -10, 0, 10, 20, 30, 45, 60}) {
+        painter->save();
+        painter->rotate(deg);
+        const double inner = deg % 30 == 0 ? r - 12 : r - 7;
+        painter->drawLine(QPointF(0, -r + 1), QPointF(0, -inner));
+        painter->restore();
+    }
+    painter->rotate(-m_roll * kDegree);
+    QPainterPath pointer;
+    pointer.moveTo(0, -r + 13);
+    pointer.lineTo(-6, -r + 23);
+    pointer.lineTo(6, -r + 23);
+    pointer.closeSubpath();
+    painter->setPen(Qt::NoPen);
+    painter->setBrush(kSymbol);
+    painter->drawPath(pointer);
+    painter->restore();
+
+    // The aircraft: fixed wings and a centre dot.
+    painter->setPen(QPen(kSymbol, 4, Qt::SolidLine, Qt::RoundCap));
+    painter->drawLine(centre + QPointF(-r * 0.55, 0), centre + QPointF(-r * 0.18, 0));
+    painter->drawLine(centre + QPointF(-r * 0.18, 0), centre + QPointF(-r * 0.10, r * 0.08));
+    painter->drawLine(centre + QPointF(r * 0.55, 0), centre + QPointF(r * 0.18, 0));
+    painter->drawLine(centre + QPointF(r * 0.18, 0), centre + QPointF(r * 0.10, r * 0.08));
+    painter->setBrush(kSymbol);
+    painter->drawEllipse(centre, 2.5, 2.5);
+
+    painter->setBrush(Qt::NoBrush);
+    painter->setPen(QPen(m_text, 1.5));
+    painter->drawPath(face);
+}
+
+} // namespace sortie::ui

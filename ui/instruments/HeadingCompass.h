@@ -1,0 +1,53 @@
+#pragma once
+
+#include <QColor>
+#include <QQuickPaintedItem>
+#include <QtQml/qqmlregistration.h>
+
+namespace sortie::ui {
+
+// A heading compass card: the card turns so that the vehicle's heading is at the top under the
+// lubber line; marks on the rim show the bearing to home (H, square) and to the next waypoint
+// (triangle). Drawn with QPainter, so it renders offscreen. NaN hides what is unknown.
+class HeadingCompass : public QQuickPaintedItem
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(double heading READ heading WRITE setHeading NOTIFY changed)             // rad from north
+    Q_PROPERTY(double bearingToHome READ bearingToHome WRITE setBearingToHome NOTIFY changed)
+    Q_PROPERTY(double bearingToNext READ bearingToNext WRITE setBearingToNext NOTIFY changed)
+    Q_PROPERTY(QColor textColor READ textColor WRITE setTextColor NOTIFY changed)
+    Q_PROPERTY(QColor homeColor MEMBER m_homeColor NOTIFY changed)
+    Q_PROPERTY(QColor nextColor MEMBER m_nextColor NOTIFY changed)
+
+public:
+    explicit HeadingCompass(QQuickItem *parent = nullptr);
+
+    double heading() const { return m_heading; }
+    void setHeading(double radians);
+    double bearingToHome() const { return m_home; }
+    void setBearingToHome(double radians);
+    double bearingToNext() const { return m_next; }
+    void setBearingToNext(double radians);
+    QColor textColor() const { return m_text; }
+    void setTextColor(const QColor &color);
+
+    // Where a bearing's mark sits on the rim, in item pixels (a null point when not shown).
+    Q_INVOKABLE QPointF markPosition(double bearing) const;
+
+    void paint(QPainter *painter) override;
+
+signals:
+    void changed();
+
+private:
+    void set(double &field, double value);
+    double m_heading = qQNaN();
+    double m_home = qQNaN();
+    double m_next = qQNaN();
+    QColor m_text = Qt::black;
+    QColor m_homeColor = QColor(0x43, 0xa0, 0x47);
+    QColor m_nextColor = QColor(0xff, 0x8f, 0x00);
+};
+
+} // namespace sortie::ui

@@ -1,0 +1,125 @@
+#pragma once
+
+// The core types QML views hold, registered for Sortie.Ui as uncreatable types so that views
+// declare typed properties (`required property Vehicle vehicle`) instead of `var`. The objects
+// themselves are made and wired in C++ (app/sortie, tests) and handed to the window.
+#include "AutosaveRecovery.h"
+#include "ConnectionController.h"
+#include "MissionController.h"
+#include "ProcessedPlanModel.h"
+#include "RouteAnalyzer.h"
+#include "RouteConflict.h"
+#include "RouteDocument.h"
+#include "RouteEditor.h"
+#include "RouteModel.h"
+#include "ServerObjectListModel.h"
+#include "ValidationIssueModel.h"
+#include "Vehicle.h"
+#include "VehicleFleet.h"
+#include "VehicleLink.h"
+
+#include <QtQml/qqmlregistration.h>
+
+namespace sortie::ui::qmltypes {
+
+
+struct ConnectionControllerForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::ConnectionController)
+    QML_NAMED_ELEMENT(ConnectionController)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct MissionControllerForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::MissionController)
+    QML_NAMED_ELEMENT(MissionController)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct RouteDocumentForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::RouteDocument)
+    QML_NAMED_ELEMENT(RouteDocument)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct RouteConflictForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::RouteConflict)
+    QML_NAMED_ELEMENT(RouteConflict)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct ServerObjectListModelForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::ServerObjectListModel)
+    QML_NAMED_ELEMENT(ServerObjectListModel)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct AutosaveRecoveryForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::AutosaveRecovery)
+    QML_NAMED_ELEMENT(AutosaveRecovery)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct VehicleFleetForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::VehicleFleet)
+    QML_NAMED_ELEMENT(VehicleFleet)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct VehicleForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::vehicle::Vehicle)
+    QML_NAMED_ELEMENT(Vehicle)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct VehicleLinkForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::vehicle::VehicleLink)
+    QML_NAMED_ELEMENT(VehicleLink)
+    QML_UNCREATABLE("made by the program; here for its State enum")
+};
+struct RouteModelForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::mission::RouteModel)
+    QML_NAMED_ELEMENT(RouteModel)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct RouteEditorForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::mission::RouteEditor)
+    QML_NAMED_ELEMENT(RouteEditor)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct RouteAnalyzerForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::mission::RouteAnalyzer)
+    QML_NAMED_ELEMENT(RouteAnalyzer)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct ValidationIssueModelForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::mission::ValidationIssueModel)
+    QML_NAMED_ELEMENT(ValidationIssueModel)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct ProcessedPlanModelForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::mission::ProcessedPlanModel)
+    QML_NAMED_ELEMENT(ProcessedPlanModel)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+
+} // namespace sortie::ui::qmltypes
