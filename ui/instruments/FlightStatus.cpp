@@ -120,7 +120,7 @@ QString FlightStatus::progressText() const
     if (m_progress.isFlying())
         return tr("waypoint %1 of %2").arg(m_progress.active + 1).arg(m_progress.count);
     if (m_progress.count > 0)
-        return tr("%n waypoint(s) on board", "", m_progress.count);
+        return m_progress.count == 1 ? tr("1 waypoint on board") : tr("%1 waypoints on board").arg(m_progress.count);
     return tr("no mission on board");
 }
 

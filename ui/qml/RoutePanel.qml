@@ -224,7 +224,7 @@ Pane {
             Layout.fillWidth: true
             Layout.fillHeight: true
             doc: panel.doc
-            model: panel.routeModel
+            routeModel: panel.routeModel
         }
     }
 }
