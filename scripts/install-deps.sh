@@ -14,6 +14,7 @@ packages=(
   qml6-module-qt-labs-platform
   libprotobuf-dev protobuf-compiler nlohmann-json3-dev libbenchmark-dev
   clang libclang-rt-14-dev
+  llvm-14  # llvm-symbolizer: the sanitizer scripts need it to match the leak suppressions
 )
 
 missing=()
