@@ -1,6 +1,7 @@
 #include "PlanCommands.h"
 
 #include "AreaScanPlanner.h"
+#include "DjiDroneModels.h"
 #include "MissionFiles.h"
 #include "ReportJson.h"
 #include "RouteStatistics.h"
@@ -60,7 +61,7 @@ int runConvert(const QStringList &args, Streams io)
     QCommandLineParser p;
     p.addOption({QStringLiteral("route"), QStringLiteral("Route to write (1-based) for single-route formats."), QStringLiteral("N"), QStringLiteral("1")});
     p.addOption({QStringLiteral("force"), QStringLiteral("Write even with validation errors.")});
-    p.addOption({QStringLiteral("drone"), QStringLiteral("DJI WPML (.kmz): the aircraft (%1).").arg(djiDroneKeys()), QStringLiteral("MODEL"), QStringLiteral("m350")});
+    p.addOption({QStringLiteral("drone"), QStringLiteral("DJI WPML (.kmz): the aircraft (%1; default: the route's profile, else m350).").arg(djiDroneKeys()), QStringLiteral("MODEL")});
     p.addOption({QStringLiteral("payload"), QStringLiteral("DJI WPML: the payload (e.g. h20t, p1; default: the aircraft's camera)."), QStringLiteral("PAYLOAD")});
     p.addOption({QStringLiteral("height"), QStringLiteral("DJI WPML heights: relative (to take-off), amsl (EGM96) or agl (terrain following)."), QStringLiteral("MODE"), QStringLiteral("relative")});
     p.addOption({QStringLiteral("takeoff-amsl"), QStringLiteral("DJI WPML: AMSL altitude of the take-off point (default: the route's home)."), QStringLiteral("M")});

@@ -320,6 +320,15 @@ private slots:
         QCOMPARE(loaded->mission.routes.size(), size_t(1));
         QCOMPARE(loaded->mission.routes.front().settings.profile.name, QStringLiteral("DJI Matrice 300 RTK"));
         QCOMPARE(loaded->mission.routes.front().segments.size(), size_t(5));
+        // Written again without naming an aircraft: the route's DJI profile decides.
+        const Result<WpmlExport> again = writeWpml(loaded->mission.routes.front());
+        QVERIFY(again.ok());
+        QVERIFY(again->waylinesWpml.contains("<wpml:droneEnumValue>60</wpml:droneEnumValue>"));
+        QVERIFY(!again->notices.join('\n').contains(QStringLiteral("not a DJI aircraft")));
+        // A route planned for another vehicle is written for the M350, and says so.
+        const Result<WpmlExport> other = writeWpml(sampleRoute());
+        QVERIFY(other->waylinesWpml.contains("<wpml:droneEnumValue>89</wpml:droneEnumValue>"));
+        QVERIFY(other->notices.join('\n').contains(QStringLiteral("not a DJI aircraft")));
     }
 };
 

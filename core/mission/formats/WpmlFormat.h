@@ -40,7 +40,9 @@ inline constexpr double kWpmlMaxTakeoffSecurityHeight = 1500.0;
 
 struct WpmlExportOptions
 {
-    QString drone = QStringLiteral("m350");  // a DjiDroneModel key or name
+    // A DjiDroneModel key or name; empty: the route's vehicle profile when it names a DJI aircraft,
+    // else the Matrice 350 RTK (with a notice).
+    QString drone;
     QString payload;                         // a DjiPayload key; empty: the drone's default camera
     WpmlHeightMode heightMode = WpmlHeightMode::RelativeToTakeoff;
     // AMSL altitude of the take-off point; unset: the route's home. Needed to write AMSL altitudes

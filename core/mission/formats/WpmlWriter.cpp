@@ -650,7 +650,13 @@ bool parseWpmlHeightMode(const QString &name, WpmlHeightMode *out)
 
 Result<WpmlExport> writeWpml(const Route &route, const WpmlExportOptions &options, ScanPlanCache *cache)
 {
-    const DjiDroneModel *model = findDjiDroneModel(options.drone);
+    QStringList notices;
+    const DjiDroneModel *model = options.drone.isEmpty() ? findDjiDroneModel(route.settings.profile.name) : findDjiDroneModel(options.drone);
+    if (!model && options.drone.isEmpty()) {
+        model = findDjiDroneModel(QStringLiteral("m350"));
+        notices << QStringLiteral("written for the %1: the route's vehicle profile \"%2\" is not a DJI aircraft")
+                       .arg(model->name, route.settings.profile.name);
+    }
     if (!model)
         return refuse(QStringLiteral("unknown DJI aircraft \"%1\" (known: %2)").arg(options.drone, djiDroneKeys()));
     const DjiPayload *payload = findDjiPayload(*model, options.payload);
@@ -683,7 +689,7 @@ Result<WpmlExport> writeWpml(const Route &route, const WpmlExportOptions &option
         return zip.error();
     out.kmz = *zip;
     out.waypointCount = int(p.points.size());
-    out.notices = p.notices;
+    out.notices = notices + p.notices;
     return out;
 }
 
