@@ -32,8 +32,8 @@ void add(pb::VehicleProfile &p, SimObjectStore &store, pb::VehicleParameterType 
 
 void SimDjiProfiles::seed(SimObjectStore &store, qint64 nowMs)
 {
-    for (const QString key : {QStringLiteral("m350"), QStringLiteral("m3e")}) {
-        const DjiDroneModel &m = *mission::formats::findDjiDroneModel(key);
+    for (const char *key : {"m350", "m3e"}) {
+        const DjiDroneModel &m = *mission::formats::findDjiDroneModel(QLatin1String(key));
         const std::string name = m.name.toStdString();
         if (exists(store, name))
             continue;

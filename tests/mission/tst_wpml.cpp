@@ -62,7 +62,7 @@ QDomDocument parse(const QByteArray &xml, const char *what)
     return doc;
 }
 
-QStringList texts(const QDomDocument &doc, const QString &name)
+QStringList texts(QDomDocument doc, const QString &name)
 {
     QStringList out;
     const QDomNodeList nodes = doc.elementsByTagNameNS(kWpml, name);
@@ -110,7 +110,7 @@ private slots:
         o.payload = QStringLiteral("h20t");
         const Result<WpmlExport> out = writeWpml(sampleRoute(), o);
         QVERIFY(out.ok());
-        const QDomDocument w = parse(out->waylinesWpml, "waylines.wpml");
+        QDomDocument w = parse(out->waylinesWpml, "waylines.wpml");
         QCOMPARE(w.documentElement().localName(), QStringLiteral("kml"));
         QCOMPARE(texts(w, QStringLiteral("droneEnumValue")), QStringList{"89"});
         QCOMPARE(texts(w, QStringLiteral("payloadEnumValue")), QStringList{"43"});
@@ -141,7 +141,7 @@ private slots:
         QCOMPARE(coords.size(), 5);
         QCOMPARE(coords.at(0).toElement().text(), QStringLiteral("24.0735,56.9765"));
 
-        const QDomDocument t = parse(out->templateKml, "template.kml");
+        QDomDocument t = parse(out->templateKml, "template.kml");
         QCOMPARE(texts(t, QStringLiteral("templateType")), QStringList{"waypoint"});
         QCOMPARE(texts(t, QStringLiteral("heightMode")), QStringList{"relativeToStartPoint"});
         QCOMPARE(texts(t, QStringLiteral("coordinateMode")), QStringList{"WGS84"});
@@ -188,7 +188,7 @@ private slots:
         route.settings.home = HomePosition{{56.9764, 24.0734}, 120.0};
         const Result<WpmlExport> out = writeWpml(route, o);
         QVERIFY(out.ok());
-        const QDomDocument w = parse(out->waylinesWpml, "waylines.wpml");
+        QDomDocument w = parse(out->waylinesWpml, "waylines.wpml");
         QCOMPARE(texts(w, QStringLiteral("executeHeight")), (QStringList{"20", "30", "35", "25", "10"}));  // above take-off
         QCOMPARE(texts(parse(out->templateKml, "template.kml"), QStringLiteral("heightMode")), QStringList{"EGM96"});
         const Result<WpmlImport> in = readWpml(out->kmz);
@@ -211,7 +211,7 @@ private slots:
         const Result<WpmlExport> out = writeWpml(route);
         QVERIFY2(out.ok(), out.ok() ? "" : qPrintable(out.error().toString()));
         QVERIFY(out->waypointCount > 6);
-        const QDomDocument w = parse(out->waylinesWpml, "waylines.wpml");
+        QDomDocument w = parse(out->waylinesWpml, "waylines.wpml");
         QCOMPARE(texts(w, QStringLiteral("actionActuatorFunc")), (QStringList{"gimbalRotate", "takePhoto"}));
         QCOMPARE(texts(w, QStringLiteral("gimbalPitchRotateAngle")), QStringList{"-90"});
         QCOMPARE(texts(w, QStringLiteral("actionTriggerType")), (QStringList{"reachPoint", "multipleDistance"}));
@@ -277,7 +277,7 @@ private slots:
         o.drone = QStringLiteral("m3e");
         const Result<WpmlExport> out = writeWpml(sampleRoute(), o);
         QVERIFY(out.ok());
-        const QDomDocument w = parse(out->waylinesWpml, "waylines.wpml");
+        QDomDocument w = parse(out->waylinesWpml, "waylines.wpml");
         QCOMPARE(texts(w, QStringLiteral("executeHeightMode")), QStringList{"realTimeFollowSurface"});
         QCOMPARE(texts(w, QStringLiteral("droneEnumValue")), QStringList{"77"});
         QCOMPARE(texts(w, QStringLiteral("payloadEnumValue")), QStringList{"66"});

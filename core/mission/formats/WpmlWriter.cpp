@@ -245,8 +245,11 @@ Result<Plan> planOf(const Route &route, const WpmlExportOptions &options, const 
             if (d < kWpmlMinLegMeters)
                 return refuse(QStringLiteral("waypoints %1 and %2 (%3) are %4 m apart; DJI needs at least %5 m between adjacent waypoints")
                                   .arg(k).arg(k + 1).arg(where).arg(d, 0, 'f', 2).arg(kWpmlMinLegMeters));
-            if (p.turn == TurnMode::Coordinated || prev.turn == TurnMode::Coordinated)
+            // A coordinated turn starts turning this far before its point: within half of each leg.
+            if (p.turn == TurnMode::Coordinated)
                 plan.points[k].damping = std::min(plan.points[k].damping, horizontal / 2.0);
+            if (prev.turn == TurnMode::Coordinated)
+                plan.points[k - 1].damping = std::min(plan.points[k - 1].damping, horizontal / 2.0);
         }
     }
 
