@@ -112,6 +112,8 @@ private slots:
         QVERIFY(out.ok());
         QDomDocument w = parse(out->waylinesWpml, "waylines.wpml");
         QCOMPARE(w.documentElement().localName(), QStringLiteral("kml"));
+        QVERIFY(out->waylinesWpml.contains("<kml xmlns=\"http://www.opengis.net/kml/2.2\""));  // unprefixed KML, as DJI writes it
+        QVERIFY(out->waylinesWpml.contains("<Placemark>"));
         QCOMPARE(texts(w, QStringLiteral("droneEnumValue")), QStringList{"89"});
         QCOMPARE(texts(w, QStringLiteral("payloadEnumValue")), QStringList{"43"});
         QCOMPARE(texts(w, QStringLiteral("finishAction")), QStringList{"goHome"});
@@ -328,7 +330,7 @@ private slots:
         // A route planned for another vehicle is written for the M350, and says so.
         const Result<WpmlExport> other = writeWpml(sampleRoute());
         QVERIFY(other->waylinesWpml.contains("<wpml:droneEnumValue>89</wpml:droneEnumValue>"));
-        QVERIFY(other->notices.join('\n').contains(QStringLiteral("not a DJI aircraft")));
+        QVERIFY(other->notices.join('\n').contains(QStringLiteral("names no DJI aircraft")));
     }
 };
 

@@ -418,7 +418,7 @@ public:
 void writeDocumentStart(Writer &w)
 {
     w.x.writeStartDocument();
-    w.x.writeNamespace(kKmlNamespace, QString());
+    w.x.writeDefaultNamespace(kKmlNamespace);  // <kml xmlns="...">, unprefixed, as DJI's own files are
     w.x.writeNamespace(kNamespace, QStringLiteral("wpml"));
     w.kmlBegin(QStringLiteral("kml"));
     w.kmlBegin(QStringLiteral("Document"));
@@ -657,8 +657,10 @@ Result<WpmlExport> writeWpml(const Route &route, const WpmlExportOptions &option
     const DjiDroneModel *model = options.drone.isEmpty() ? findDjiDroneModel(route.settings.profile.name) : findDjiDroneModel(options.drone);
     if (!model && options.drone.isEmpty()) {
         model = findDjiDroneModel(QStringLiteral("m350"));
-        notices << QStringLiteral("written for the %1: the route's vehicle profile \"%2\" is not a DJI aircraft")
-                       .arg(model->name, route.settings.profile.name);
+        notices << (route.settings.profile.name.isEmpty()
+                        ? QStringLiteral("written for the %1: the route names no DJI aircraft (--drone chooses)").arg(model->name)
+                        : QStringLiteral("written for the %1: the route's vehicle profile \"%2\" is not a DJI aircraft")
+                              .arg(model->name, route.settings.profile.name));
     }
     if (!model)
         return refuse(QStringLiteral("unknown DJI aircraft \"%1\" (known: %2)").arg(options.drone, djiDroneKeys()));
