@@ -6,11 +6,12 @@ cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 seconds="${1:-30}"
 source scripts/sanitized-build.sh
+require_symbolizer
 build="$sanitized_build"
 configure_sanitized_build
 targets=$(find tests/fuzz -maxdepth 1 -name 'fuzz_*.cpp' -printf '%f\n' | sed 's/\.cpp$//' | sort)
 cmake --build "$build" --target $targets
-export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:external_symbolizer_path=$ASAN_SYMBOLIZER_PATH" UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 failed=0
 for t in $targets; do
   corpus="tests/fuzz/${t#fuzz_}-corpus"

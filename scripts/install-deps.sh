@@ -4,6 +4,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
+  dpkg-dev file zlib1g-dev  # dpkg-shlibdeps and file: CPack's Debian package; zlib: WPML's KMZ
   qt6-base-dev qt6-base-dev-tools qt6-declarative-dev qt6-declarative-dev-tools
   qt6-serialport-dev qt6-positioning-dev qt6-tools-dev qt6-tools-dev-tools
   libqt6sql6-sqlite libqt6opengl6-dev libgl-dev libxkbcommon-dev
@@ -14,6 +15,7 @@ packages=(
   qml6-module-qt-labs-platform
   libprotobuf-dev protobuf-compiler nlohmann-json3-dev libbenchmark-dev
   clang libclang-rt-14-dev
+  llvm-14  # llvm-symbolizer: the sanitizer scripts need it to match the leak suppressions
 )
 
 missing=()

@@ -5,10 +5,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 source scripts/sanitized-build.sh
+require_symbolizer
 configure_sanitized_build
 cmake --build "$sanitized_build"
 export QT_QPA_PLATFORM=offscreen
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=0"
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=0:symbolize=1:external_symbolizer_path=$ASAN_SYMBOLIZER_PATH"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$PWD/tests/sanitizers/ubsan.supp"
 ctest --test-dir "$sanitized_build" --output-on-failure -j 2 -LE 'bench|ui' --timeout 600 "$@"

@@ -1,6 +1,7 @@
 #include "PlanCommands.h"
 
 #include "AreaScanPlanner.h"
+#include "DjiDroneModels.h"
 #include "MissionFiles.h"
 #include "ReportJson.h"
 #include "RouteStatistics.h"
@@ -42,9 +43,10 @@ QString duration(double seconds)
     return QStringLiteral("%1:%2:%3").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
 }
 
-int saveWithGate(const Mission &mission, const QString &path, int route, bool force, Streams io)
+int saveWithGate(const Mission &mission, const QString &path, int route, bool force, Streams io,
+                 const WpmlExportOptions &wpml = {})
 {
-    const Result<QStringList> saved = saveMission(mission, path, {route, force ? ValidationOverride::AcceptErrors : ValidationOverride::None});
+    const Result<QStringList> saved = saveMission(mission, path, {route, force ? ValidationOverride::AcceptErrors : ValidationOverride::None, wpml});
     if (!saved) {
         io.err << "sortie-plan: " << saved.error().toString() << "\n";
         return saved.error().message.contains(QStringLiteral("validation error")) ? ValidationErrors : Failure;
@@ -59,9 +61,30 @@ int runConvert(const QStringList &args, Streams io)
     QCommandLineParser p;
     p.addOption({QStringLiteral("route"), QStringLiteral("Route to write (1-based) for single-route formats."), QStringLiteral("N"), QStringLiteral("1")});
     p.addOption({QStringLiteral("force"), QStringLiteral("Write even with validation errors.")});
+    p.addOption({QStringLiteral("drone"), QStringLiteral("DJI WPML (.kmz): the aircraft (%1; default: the route's profile, else m350).").arg(djiDroneKeys()), QStringLiteral("MODEL")});
+    p.addOption({QStringLiteral("payload"), QStringLiteral("DJI WPML: the payload (e.g. h20t, p1; default: the aircraft's camera)."), QStringLiteral("PAYLOAD")});
+    p.addOption({QStringLiteral("height"), QStringLiteral("DJI WPML heights: relative (to take-off), amsl (EGM96) or agl (terrain following)."), QStringLiteral("MODE"), QStringLiteral("relative")});
+    p.addOption({QStringLiteral("takeoff-amsl"), QStringLiteral("DJI WPML: AMSL altitude of the take-off point (default: the route's home)."), QStringLiteral("M")});
+    p.addOption({QStringLiteral("security-height"), QStringLiteral("DJI WPML: take-off security height, m."), QStringLiteral("M"), QStringLiteral("20")});
     if (!parse(p, args, 2, io))
         return Failure;
     const QString in = p.positionalArguments().at(0), out = p.positionalArguments().at(1);
+    WpmlExportOptions wpml;
+    wpml.drone = p.value(QStringLiteral("drone"));
+    wpml.payload = p.value(QStringLiteral("payload"));
+    if (!parseWpmlHeightMode(p.value(QStringLiteral("height")), &wpml.heightMode)) {
+        io.err << "sortie-plan: --height is relative, amsl or agl\n";
+        return Failure;
+    }
+    bool numberOk = true;
+    if (p.isSet(QStringLiteral("takeoff-amsl")))
+        wpml.takeoffAltitudeAmsl = p.value(QStringLiteral("takeoff-amsl")).toDouble(&numberOk);
+    if (numberOk)
+        wpml.takeoffSecurityHeight = p.value(QStringLiteral("security-height")).toDouble(&numberOk);
+    if (!numberOk) {
+        io.err << "sortie-plan: --takeoff-amsl and --security-height need a number\n";
+        return Failure;
+    }
     const Result<LoadedMission> loaded = loadMission(in);
     if (!loaded) {
         io.err << "sortie-plan: " << loaded.error().toString() << "\n";
@@ -74,7 +97,7 @@ int runConvert(const QStringList &args, Streams io)
         io.err << "sortie-plan: --route needs a number\n";
         return Failure;
     }
-    const int rc = saveWithGate(loaded->mission, out, route, p.isSet(QStringLiteral("force")), io);
+    const int rc = saveWithGate(loaded->mission, out, route, p.isSet(QStringLiteral("force")), io, wpml);
     if (rc == Ok)
         io.out << "wrote " << out << "\n";
     return rc;

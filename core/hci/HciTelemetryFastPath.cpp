@@ -9,6 +9,39 @@ namespace {
 
 enum WireType : uint32_t { kVarint = 0, kFixed64 = 1, kLength = 2, kFixed32 = 5 };
 
+// The parsers below name fields by number, as the wire does. Each number is tied to the generated
+// schema here, so a renumbered or removed field fails the build instead of silently mis-parsing.
+// (tst_hcifastpath checks the rest at run time: no required field below Notification, and each
+// field's type matches the wire type read here.)
+static_assert(pb::Notification::kSubscriptionIdFieldNumber == 1);
+static_assert(pb::Notification::kEventFieldNumber == 2);
+static_assert(pb::EventWrapper::kTelemetryEventFieldNumber == 3);
+static_assert(pb::TelemetryEvent::kVehicleFieldNumber == 1);
+static_assert(pb::TelemetryEvent::kTelemetryFieldNumber == 3);
+static_assert(pb::Vehicle::kIdFieldNumber == 1);
+static_assert(pb::Vehicle::kVersionFieldNumber == 2);
+static_assert(pb::Vehicle::kNameFieldNumber == 5);
+static_assert(pb::Vehicle::kTailNumberFieldNumber == 6);
+static_assert(pb::Telemetry::kValueFieldNumber == 1);
+static_assert(pb::Telemetry::kTimeFieldNumber == 2);
+static_assert(pb::Telemetry::kTelemetryFieldFieldNumber == 3);
+static_assert(pb::TelemetryField::kIdFieldNumber == 1);
+static_assert(pb::TelemetryField::kCodeFieldNumber == 2);
+static_assert(pb::TelemetryField::kSemanticFieldNumber == 3);
+static_assert(pb::TelemetryField::kSubsystemFieldNumber == 4);
+static_assert(pb::TelemetryField::kSubsystemIdFieldNumber == 5);
+static_assert(pb::Value::kIdFieldNumber == 1);
+static_assert(pb::Value::kVersionFieldNumber == 2);
+static_assert(pb::Value::kBoolValueFieldNumber == 3);
+static_assert(pb::Value::kIntValueFieldNumber == 4);
+static_assert(pb::Value::kLongValueFieldNumber == 5);
+static_assert(pb::Value::kFloatValueFieldNumber == 6);
+static_assert(pb::Value::kDoubleValueFieldNumber == 7);
+static_assert(pb::Value::kStringValueFieldNumber == 8);
+static_assert(pb::Value::kTagFieldNumber == 9);
+static_assert(pb::Value::kListValueFieldNumber == 10); // left to the general parser
+static_assert(pb::Value::kBytesValueFieldNumber == 11);
+
 // A bounded cursor over wire-format bytes. Every read checks the bounds; a varint longer than ten
 // bytes fails, as it does in protobuf.
 struct Reader

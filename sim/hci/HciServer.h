@@ -17,6 +17,7 @@ namespace sortie::sim {
 
 class HciServerConnection;
 class SimEventService;
+class SimExportService;
 class SimLockService;
 class SimObjectService;
 class SimSessionService;
@@ -75,6 +76,7 @@ private:
     std::unique_ptr<SimLockService> m_lockService;
     std::unique_ptr<SimEventService> m_eventService;
     std::unique_ptr<SimVehicleService> m_vehicleService;
+    std::unique_ptr<SimExportService> m_exportService;
     QList<QPointer<HciServerConnection>> m_connections;
 };
 

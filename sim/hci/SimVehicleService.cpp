@@ -131,6 +131,9 @@ void SimVehicleService::processRoute(SimCall &call)
         limits = SimRouteLimits::of(stored->vehicleprofile());
     pb::ProcessRouteResponse response;
     *response.mutable_processedroute() = SimRouteProcessor::process(route, limits, m_s.world.groundElevation());
+    // The route itself goes back with its processing, as a UgCS server's does: an unsaved route
+    // (the SDK's ExportRouteToWpml sample) is known to later requests only through it.
+    *response.mutable_processedroute()->mutable_route() = route;
     response.set_hash(SimRouteProcessor::hash(route));
     call.respond.reply(response);
 }

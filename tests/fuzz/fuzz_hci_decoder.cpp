@@ -1,12 +1,32 @@
 // Fuzzes the HCI frame decoder: any bytes, split at a point the input chooses, must decode without a
 // crash, a leak or undefined behaviour, and the decoder must account for every byte it was given.
+// Every frame's payload also goes through both parsers of a Notification: whatever the telemetry fast
+// path accepts, the general protobuf parser must accept too, as the same message, byte for byte (the
+// fast path may decline anything; then the general parser decides alone).
 #include "HciFrameCodec.h"
+#include "HciTelemetryFastPath.h"
+#include "Messages.pb.h"
 
 #include <google/protobuf/message.h>
 
 #include <cstdlib>
 
 using namespace sortie::hci;
+
+namespace {
+
+void compareParsers(std::string_view payload)
+{
+    static com::ugcs::ucs::proto::Notification fast; // reused across inputs, as the decoder reuses it
+    com::ugcs::ucs::proto::Notification general;
+    const bool generalOk = general.ParsePartialFromArray(payload.data(), int(payload.size())) && general.IsInitialized();
+    if (!HciTelemetryFastPath::parse(payload, &fast))
+        return;
+    if (!generalOk || fast.SerializeAsString() != general.SerializeAsString())
+        std::abort();
+}
+
+} // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -40,5 +60,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     drain();
     if (decoder.streamOffset() + decoder.buffered() != bytes.size() || consumedEnd > bytes.size())
         std::abort();
+    // The input as one payload, and every framed payload in it, through both Notification parsers.
+    compareParsers(bytes);
+    for (size_t at = 0; at + kHciHeaderSize <= bytes.size(); ++at) {
+        if (bytes[at] != 'H' || bytes[at + 1] != 'P')
+            continue;
+        const auto *h = reinterpret_cast<const uint8_t *>(bytes.data() + at + 12);
+        const uint32_t length = uint32_t(h[0]) << 24 | uint32_t(h[1]) << 16 | uint32_t(h[2]) << 8 | h[3];
+        if (length <= bytes.size() - at - kHciHeaderSize)
+            compareParsers(bytes.substr(at + kHciHeaderSize, length));
+    }
     return 0;
 }

@@ -11,6 +11,7 @@
 
 #include <fstream>
 #include <random>
+#include <set>
 #include <sstream>
 
 using sortie::hci::HciTelemetryFastPath;
@@ -81,6 +82,94 @@ class TestHciFastPath : public QObject
     Q_OBJECT
 
 private slots:
+    // The fast path reports what it built as complete after checking only Notification's own two
+    // required fields. That holds while no message it builds (everything below Notification on the
+    // telemetry path, whichever fields it reads) has a required field: walk the schema and fail if one
+    // appears, with its name.
+    void noRequiredFieldBelowNotification()
+    {
+        using google::protobuf::Descriptor;
+        // The sub-message fields the fast path enters, from Notification down.
+        const std::set<std::pair<std::string, int>> entered = {
+            {"com.ugcs.ucs.proto.Notification", pb::Notification::kEventFieldNumber},
+            {"com.ugcs.ucs.proto.EventWrapper", pb::EventWrapper::kTelemetryEventFieldNumber},
+            {"com.ugcs.ucs.proto.TelemetryEvent", pb::TelemetryEvent::kVehicleFieldNumber},
+            {"com.ugcs.ucs.proto.TelemetryEvent", pb::TelemetryEvent::kTelemetryFieldNumber},
+            {"com.ugcs.ucs.proto.Telemetry", pb::Telemetry::kValueFieldNumber},
+            {"com.ugcs.ucs.proto.Telemetry", pb::Telemetry::kTelemetryFieldFieldNumber},
+        };
+        std::vector<const Descriptor *> below;
+        std::vector<const Descriptor *> todo = {pb::Notification::descriptor()};
+        while (!todo.empty()) {
+            const Descriptor *d = todo.back();
+            todo.pop_back();
+            for (int i = 0; i < d->field_count(); ++i) {
+                const auto *f = d->field(i);
+                if (f->message_type() && entered.count({d->full_name(), f->number()})) {
+                    below.push_back(f->message_type());
+                    todo.push_back(f->message_type());
+                }
+            }
+        }
+        QCOMPARE(int(below.size()), 6); // EventWrapper, TelemetryEvent, Vehicle, Telemetry, Value, TelemetryField
+        QStringList required;
+        for (const Descriptor *d : below)
+            for (int i = 0; i < d->field_count(); ++i)
+                if (d->field(i)->is_required())
+                    required << QString::fromStdString(d->field(i)->full_name());
+        QVERIFY2(required.isEmpty(), qPrintable("required below Notification: " + required.join(", ")
+                                               + " (the telemetry fast path cannot check completeness)"));
+        // Notification's own required fields are exactly the two the fast path checks.
+        QStringList top;
+        for (int i = 0; i < pb::Notification::descriptor()->field_count(); ++i)
+            if (pb::Notification::descriptor()->field(i)->is_required())
+                top << QString::fromStdString(pb::Notification::descriptor()->field(i)->name());
+        QCOMPARE(top, QStringList({"subscriptionId", "event"}));
+    }
+
+    // The build ties each field number the fast path reads to the schema (static_asserts); this ties
+    // each one's type, which decides the wire encoding the fast path expects.
+    void everyFieldItReadsHasTheTypeItExpects()
+    {
+        using F = google::protobuf::FieldDescriptor;
+        struct Expect { const google::protobuf::Descriptor *message; int number; F::Type type; bool repeated; };
+        const Expect expected[] = {
+            {pb::Notification::descriptor(), 1, F::TYPE_INT32, false},
+            {pb::Notification::descriptor(), 2, F::TYPE_MESSAGE, false},
+            {pb::EventWrapper::descriptor(), 3, F::TYPE_MESSAGE, false},
+            {pb::TelemetryEvent::descriptor(), 1, F::TYPE_MESSAGE, false},
+            {pb::TelemetryEvent::descriptor(), 3, F::TYPE_MESSAGE, true},
+            {pb::Vehicle::descriptor(), 1, F::TYPE_INT32, false},
+            {pb::Vehicle::descriptor(), 2, F::TYPE_INT32, false},
+            {pb::Vehicle::descriptor(), 5, F::TYPE_STRING, false},
+            {pb::Vehicle::descriptor(), 6, F::TYPE_STRING, false},
+            {pb::Telemetry::descriptor(), 1, F::TYPE_MESSAGE, false},
+            {pb::Telemetry::descriptor(), 2, F::TYPE_INT64, false},
+            {pb::Telemetry::descriptor(), 3, F::TYPE_MESSAGE, false},
+            {pb::TelemetryField::descriptor(), 1, F::TYPE_INT32, false},
+            {pb::TelemetryField::descriptor(), 2, F::TYPE_STRING, false},
+            {pb::TelemetryField::descriptor(), 3, F::TYPE_ENUM, false},
+            {pb::TelemetryField::descriptor(), 4, F::TYPE_ENUM, false},
+            {pb::TelemetryField::descriptor(), 5, F::TYPE_INT32, false},
+            {pb::Value::descriptor(), 1, F::TYPE_INT32, false},
+            {pb::Value::descriptor(), 2, F::TYPE_INT32, false},
+            {pb::Value::descriptor(), 3, F::TYPE_BOOL, false},
+            {pb::Value::descriptor(), 4, F::TYPE_INT32, false},
+            {pb::Value::descriptor(), 5, F::TYPE_INT64, false},
+            {pb::Value::descriptor(), 6, F::TYPE_FLOAT, false},
+            {pb::Value::descriptor(), 7, F::TYPE_DOUBLE, false},
+            {pb::Value::descriptor(), 8, F::TYPE_STRING, false},
+            {pb::Value::descriptor(), 9, F::TYPE_STRING, false},
+            {pb::Value::descriptor(), 11, F::TYPE_BYTES, false},
+        };
+        for (const Expect &e : expected) {
+            const F *f = e.message->FindFieldByNumber(e.number);
+            QVERIFY2(f, qPrintable(QString::fromStdString(e.message->name()) + " has no field " + QString::number(e.number)));
+            QVERIFY2(f->type() == e.type && f->is_repeated() == e.repeated && !f->is_packed(),
+                     qPrintable(QString::fromStdString(f->full_name()) + " changed type: the fast path reads it as before"));
+        }
+    }
+
     void takesTheSdkTelemetryVector()
     {
         const std::string payload = payloadOf("029-Notification.bin");

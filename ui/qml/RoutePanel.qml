@@ -22,14 +22,14 @@ Pane {
     FileDialog {
         id: importDialog
         title: qsTr("Import a route")
-        nameFilters: [qsTr("Routes (*.sortie *.plan *.waypoints *.txt *.kml)"), qsTr("All files (*)")]
+        nameFilters: [qsTr("Routes (*.sortie *.plan *.waypoints *.txt *.kml *.kmz)"), qsTr("All files (*)")]
         onAccepted: panel.doc.importFile(selectedFile)
     }
     FileDialog {
         id: exportDialog
         title: qsTr("Export the route")
         fileMode: FileDialog.SaveFile
-        nameFilters: [qsTr("Sortie (*.sortie)"), qsTr("QGroundControl plan (*.plan)"), qsTr("Waypoint list (*.waypoints)"), qsTr("KML (*.kml)")]
+        nameFilters: [qsTr("Sortie (*.sortie)"), qsTr("QGroundControl plan (*.plan)"), qsTr("Waypoint list (*.waypoints)"), qsTr("KML (*.kml)"), qsTr("DJI Pilot 2 route, WPML (*.kmz)")]
         onAccepted: panel.doc.exportFile(selectedFile)
     }
 

@@ -6,6 +6,7 @@
 #include "ScanPlanCache.h"
 #include "SortieFormat.h"
 #include "WplFormat.h"
+#include "WpmlFormat.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -30,7 +31,7 @@ Result<FileFormat> formatOf(const QString &path)
 {
     if (const auto f = formatForPath(path))
         return *f;
-    return MissionError{QStringLiteral("unknown file type: use .sortie, .plan, .waypoints or .kml"), path, 0, 0, {}};
+    return MissionError{QStringLiteral("unknown file type: use .sortie, .plan, .waypoints, .kml or .kmz"), path, 0, 0, {}};
 }
 
 Mission missionOf(Route route, const QString &path)
@@ -52,6 +53,7 @@ std::optional<FileFormat> formatForPath(const QString &path)
     if (suffix == QLatin1String("plan")) return FileFormat::QgcPlan;
     if (suffix == QLatin1String("waypoints") || suffix == QLatin1String("wpl") || suffix == QLatin1String("txt")) return FileFormat::Wpl;
     if (suffix == QLatin1String("kml")) return FileFormat::Kml;
+    if (suffix == QLatin1String("kmz")) return FileFormat::Wpml;
     return std::nullopt;
 }
 
@@ -62,6 +64,7 @@ QString formatName(FileFormat format)
     case FileFormat::QgcPlan: return QStringLiteral("QGroundControl plan");
     case FileFormat::Wpl: return QStringLiteral("QGC WPL 110 waypoints");
     case FileFormat::Kml: return QStringLiteral("KML");
+    case FileFormat::Wpml: return QStringLiteral("DJI WPML");
     }
     return {};
 }
@@ -88,6 +91,22 @@ Result<LoadedMission> loadMission(const QString &path)
             return r.error().withFile(path);
         ImportedRoute imported = std::move(r).value();
         return LoadedMission{missionOf(std::move(imported.route), path), imported.notices};
+    }
+    case FileFormat::Wpml: {
+        Result<WpmlImport> r = readWpml(*data);
+        if (!r)
+            // "route.kmz/wpmz/waylines.wpml:12:5: ...": the archive, then the document in it.
+            return r.error().withFile(r.error().file.isEmpty() ? path : path + QLatin1Char('/') + r.error().file);
+        WpmlImport imported = std::move(r).value();
+        const QString name = QFileInfo(path).completeBaseName();
+        Mission m;
+        m.name = name;
+        for (Route &route : imported.routes) {
+            if (route.settings.name.isEmpty())
+                route.settings.name = name;
+            m.routes.push_back(std::move(route));
+        }
+        return LoadedMission{std::move(m), imported.notices};
     }
     case FileFormat::Kml:
         return MissionError{QStringLiteral("a KML file holds a polygon, not a mission: import it as an area-scan boundary"), path, 0, 0, {}};
@@ -134,6 +153,14 @@ Result<QStringList> saveMission(const Mission &mission, const QString &path, con
     case FileFormat::QgcPlan: bytes = writeQgcPlan(*routes.front(), &notices, &cache); break;
     case FileFormat::Wpl: bytes = writeWpl(*routes.front(), &notices, &cache); break;
     case FileFormat::Kml: bytes = writeKmlRoute(*routes.front(), &cache); break;
+    case FileFormat::Wpml: {
+        const Result<WpmlExport> wpml = writeWpml(*routes.front(), options.wpml, &cache);
+        if (!wpml)
+            return wpml.error().withFile(path);
+        bytes = wpml->kmz;
+        notices = wpml->notices;
+        break;
+    }
     }
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit())

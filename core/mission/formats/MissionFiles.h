@@ -4,6 +4,7 @@
 #include "Mission.h"
 #include "MissionError.h"
 #include "ValidationGate.h"
+#include "WpmlFormat.h"
 
 #include <QStringList>
 
@@ -11,9 +12,9 @@
 
 namespace sortie::mission::formats {
 
-enum class FileFormat { Sortie, QgcPlan, Wpl, Kml };
+enum class FileFormat { Sortie, QgcPlan, Wpl, Kml, Wpml };
 
-// By extension: .sortie, .plan, .waypoints / .wpl / .txt (QGC WPL), .kml.
+// By extension: .sortie, .plan, .waypoints / .wpl / .txt (QGC WPL), .kml, .kmz (DJI WPML).
 std::optional<FileFormat> formatForPath(const QString &path);
 QString formatName(FileFormat format);
 
@@ -34,6 +35,7 @@ struct SaveOptions
 {
     int routeIndex = 0;  // which route, for formats that hold one (.plan, WPL, KML)
     ValidationOverride override = ValidationOverride::None;
+    WpmlExportOptions wpml;  // aircraft, payload and height mode of a DJI WPML (.kmz) export
 };
 
 // Validates the route(s) being written (the gate refuses errors unless overridden), encodes, and
