@@ -4,6 +4,7 @@
 #include "HciServerConnection.h"
 #include "Messages.pb.h"
 #include "SimRouteProcessor.h"
+#include "SimVehicleProfiles.h"
 #include "SimSessionTable.h"
 #include "SimVehicle.h"
 #include "SimWorld.h"
@@ -124,11 +125,16 @@ void SimVehicleService::processRoute(SimCall &call)
 {
     const auto &r = static_cast<const pb::ProcessRouteRequest &>(call.request);
     const auto &route = r.route();
+    // The route's own copy of its profile when it carries one, else the stored profile of that id.
+    const pb::VehicleProfile *profile = route.vehicleprofile().parameters_size() > 0 ? &route.vehicleprofile() : nullptr;
+    if (!profile)
+        if (const auto *stored = m_s.world.store().find(QStringLiteral("VehicleProfile"), route.vehicleprofile().id()))
+            profile = &stored->vehicleprofile();
     SimRouteLimits limits;
-    if (route.vehicleprofile().parameters_size() > 0)
-        limits = SimRouteLimits::of(route.vehicleprofile());
-    else if (const auto *stored = m_s.world.store().find(QStringLiteral("VehicleProfile"), route.vehicleprofile().id()))
-        limits = SimRouteLimits::of(stored->vehicleprofile());
+    if (profile) {
+        limits = SimRouteLimits::of(*profile);
+        limits.cameras = profileCameras(*profile, &m_s.world.store());
+    }
     pb::ProcessRouteResponse response;
     *response.mutable_processedroute() = SimRouteProcessor::process(route, limits, m_s.world.groundElevation());
     response.set_hash(SimRouteProcessor::hash(route));
