@@ -349,7 +349,7 @@ SegmentPlanOutcome planAreaTool(AlgorithmKind kind, const SegmentFigure &f, cons
         const CameraSetup &s = std::get<CameraSetup>(setup);
         noteCamera(s, c.speed, plan);
         spec.height = s.figures.height;
-        spec.frame = frameOf(r.selection(QStringLiteral("altitudeType")));
+        spec.frame = HeightFrame::Agl;  // above the ground photographed; see SegmentPlan::altitudeType
         spec.trigger = s.figures.triggerDistance;
         spec.extraPoints = r.boolean(QStringLiteral("generateAdditionalWaypoints"), false);
         spacing = s.figures.passSpacing;
@@ -413,7 +413,7 @@ SegmentPlanOutcome planCorridor(const SegmentFigure &f, const ParameterReader &r
         return fail(QStringLiteral("width: %1 m needs %2 passes; raise the GSD or lower the side overlap").arg(m1(width)).arg(passes));
     PassSpec spec;
     spec.height = s.figures.height;
-    spec.frame = frameOf(r.selection(QStringLiteral("altitudeType")));
+    spec.frame = HeightFrame::Agl;  // above the ground photographed; see SegmentPlan::altitudeType
     spec.speed = c.speed;
     spec.overshoot = c.overshoot.value_or(0.0);
     spec.overshootSpeed = c.overshootSpeed.value_or(c.speed);
@@ -606,6 +606,7 @@ SegmentPlanOutcome planSegment(const AlgorithmDefinition &algorithm, const Segme
     if (!out.plan)
         return out;
     SegmentPlan &plan = *out.plan;
+    plan.altitudeType = reader.selection(QStringLiteral("altitudeType"));
     markUserActions(plan, reader.selection(QStringLiteral("actionExecution")),
                     reader.boolean(QStringLiteral("noActionsAtLastPoint"), false));
     for (size_t i = 1; i < plan.points.size(); ++i)

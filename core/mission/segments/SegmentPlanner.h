@@ -79,6 +79,10 @@ struct SegmentPlan
     double passSpacing = 0.0;      // metres between passes
     double triggerDistance = 0.0;  // metres between photos
     std::optional<Camera> camera;  // the camera the plan used
+    // The segment's altitudeType as given. The photo tools (photogrammetry, corridor) plan their GSD
+    // height above the ground photographed (points in Agl); AMSL asks for one constant altitude that
+    // height above the lowest ground under the area, which terrain post-processing applies.
+    QString altitudeType;
     std::vector<QString> warnings;
     std::vector<QString> notes;    // the calculated figures, for the route log
 };
