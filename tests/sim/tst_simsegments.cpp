@@ -229,6 +229,34 @@ private slots:
         QCOMPARE(vehicles.objects(0).vehicle().profile().payloadprofiles_size(), 1);
     }
 
+    void selectionValuesOfferTheProfilesCameras()
+    {
+        test::SimServer sim;
+        Client c(sim.port());
+        QVERIFY(c.ready());
+        const auto vehicles = call<pb::GetObjectListResponse>(c.client.listObjects(HciObjectType::Vehicle));
+        const pb::VehicleProfile &profile = vehicles.objects(0).vehicle().profile();
+        pb::GetParametersSelectionValuesRequest request;
+        request.set_clientid(-1);
+        request.mutable_route()->mutable_vehicleprofile()->set_id(profile.id());
+        request.mutable_algorithm()->set_implementationclass((kPackage + QStringLiteral("PhotogrammetryAlgorithm")).toStdString());
+        const auto response = call<pb::GetParametersSelectionValuesResponse>(c.session.send(request));
+        mission::AlgorithmDefinition photo = *mission::AlgorithmCatalog::builtIn().byKind(mission::AlgorithmKind::Photogrammetry);
+        mission::applySelections(photo, {response.selections().begin(), response.selections().end()});
+        const auto &cameras = photo.parameter(u"camera")->choices;
+        QCOMPARE(cameras.size(), size_t(1));
+        QCOMPARE(cameras[0].value, QString::number(profile.payloadprofiles(0).payloadprofile().id()));
+        QCOMPARE(cameras[0].displayName, QStringLiteral("GoPro Hero3 Black Edition"));
+        QCOMPARE(photo.parameter(u"camera")->defaultValue, cameras[0].value);
+        QCOMPARE(photo.parameter(u"wpTurnType")->choices.size(), size_t(4));
+        QCOMPARE(photo.parameter(u"actionExecution")->choices.size(), size_t(3));
+
+        request.mutable_algorithm()->set_implementationclass("com.example.Nothing");
+        HciError error;
+        call<pb::GetParametersSelectionValuesResponse>(c.session.send(request), &error);
+        QVERIFY(error.message().contains(QLatin1String("com.example.Nothing")));
+    }
+
     void everySegmentTypeIsProcessedToItsGeometry()
     {
         test::SimServer sim;
