@@ -253,6 +253,7 @@ pb::ProcessedRoute SimRouteProcessor::process(const pb::Route &route, const SimR
     std::optional<mission::GeoPoint> previous;
     double previousAgl = 0;
     double speed = route.initialspeed() > 0 ? route.initialspeed() : kDefaultSpeed;
+    double cruise = speed;  // the last segment's own speed (not its overshoot legs'): the next one's default
 
     for (int index = 0; index < route.segments_size(); ++index) {
         const pb::SegmentDefinition &definition = route.segments(index);
@@ -272,7 +273,7 @@ pb::ProcessedRoute SimRouteProcessor::process(const pb::Route &route, const SimR
 
         mission::PlanContext context;
         context.cameras = limits.cameras;
-        context.defaultSpeed = speed;
+        context.defaultSpeed = cruise;
         context.previousPosition = previous;
         const mission::SegmentPlanOutcome outcome = mission::planSegment(*algorithm, figureOf(definition), valuesOf(definition), context);
         if (!outcome.ok()) {
@@ -291,6 +292,7 @@ pb::ProcessedRoute SimRouteProcessor::process(const pb::Route &route, const SimR
         if (segment->status() == pb::RPS_INVALID)
             continue;
 
+        const pb::WaypointTurnType turn = turnType(parameter(definition, "wpTurnType").value_or("STOP_AND_TURN"));
         double distance = 0, time = 0;
         for (size_t i = 0; i < plan.points.size(); ++i) {
             const mission::PlannedPoint &p = plan.points[i];
@@ -334,13 +336,15 @@ pb::ProcessedRoute SimRouteProcessor::process(const pb::Route &route, const SimR
                 w->set_wgs84altitude(amsl);
                 w->set_elevation(ground);
                 w->set_acceptanceradius(limits.acceptanceRadius);
-                w->set_turntype(turnType(parameter(definition, "wpTurnType").value_or("STOP_AND_TURN")));
+                w->set_turntype(turn);
                 w->set_altitudeframe(p.frame == mission::HeightFrame::Agl ? pb::AF_AGL : pb::AF_WGS84);
             }
             *segment->add_segmentactions() = std::move(action);
             addCameraActions(p, segment);
             if (p.userActions)
                 addActions(definition, segment, &time);
+            if (!p.overshoot)
+                cruise = p.speed;
             distance += leg;
             time += legTime;
             previous = p.position;
