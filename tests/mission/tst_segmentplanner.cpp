@@ -78,7 +78,7 @@ private slots:
             const AlgorithmDefinition *a = catalog.byClassName(pkg + QLatin1String(k.cls));
             QVERIFY2(a, k.cls);
             QCOMPARE(a->figure, k.figure);
-            QCOMPARE(algorithmKindOf(QLatin1String(k.cls)), a->kind);
+            QCOMPARE(algorithmKindOf(QString::fromLatin1(k.cls)), a->kind);
             QCOMPARE(algorithmClassName(a->kind), pkg + QLatin1String(k.cls));
         }
         QCOMPARE(algorithmKindOf(u"com.example.Other"), AlgorithmKind::Unknown);
@@ -119,7 +119,7 @@ private slots:
             {AlgorithmKind::Corridor, "width", ParameterType::Double, "m", "30"},
         };
         for (const Row &r : rows) {
-            const ParameterDefinition *p = algorithm(r.kind).parameter(QLatin1String(r.name));
+            const ParameterDefinition *p = algorithm(r.kind).parameter(QString::fromLatin1(r.name));
             QVERIFY2(p, r.name);
             QCOMPARE(p->type, r.type);
             QCOMPARE(p->unit(), QString::fromUtf8(r.unit));

@@ -13,6 +13,7 @@
 #include "LocalTangentPlane.h"
 #include "Messages.pb.h"
 #include "Photogrammetry.h"
+#include "SegmentPlanner.h"
 #include "SimVehicle.h"
 
 #include <QtTest>
