@@ -1,5 +1,6 @@
 #pragma once
 
+#include "Camera.h"
 #include "GeoPoint.h"
 #include "HciOrigin.h"
 #include "WaypointAction.h"
@@ -9,18 +10,6 @@
 #include <vector>
 
 namespace sortie::mission {
-
-// The camera of a survey. The image's width runs across the flight direction, its height along it.
-struct Camera
-{
-    QString name = QStringLiteral("Generic 1\" 20 MP");
-    double sensorWidthMm = 13.2;
-    double sensorHeightMm = 8.8;
-    double focalLengthMm = 8.8;
-    int imageWidthPx = 5472;
-    int imageHeightPx = 3648;
-    bool operator==(const Camera &) const = default;
-};
 
 // What the operator chose for a scan: the altitude itself, or the ground sample distance the
 // altitude is derived from.
@@ -38,6 +27,7 @@ struct AreaScanParameters
     double directionDeg = 0.0;              // bearing of the transects, clockwise from north
     double turnaroundMeters = 10.0;         // overshoot beyond each transect end, for the turn
     double speed = 8.0;                     // m/s along the transects
+    double sideDistanceMeters = 0.0;        // UgCS sideDistance: metres between passes; 0 = from footprint and side overlap
     bool operator==(const AreaScanParameters &) const = default;
 };
 
