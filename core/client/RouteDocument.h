@@ -12,8 +12,9 @@
 namespace sortie::client {
 
 // The route open for editing, with nothing of the network in it: the model the map and the table
-// both show, its undo stack, editor, selection and analysis (statistics, validation), the gestures
-// of the map turned into undoable edits, and import/export of files.
+// both show, its undo stack, its editor (the one way to change it: every gesture, cell and
+// button calls `editor`), the selection (rows an edit adds become it), analysis (statistics,
+// validation) and import/export of files.
 class RouteDocument : public QObject
 {
     Q_OBJECT
@@ -31,7 +32,7 @@ class RouteDocument : public QObject
     Q_PROPERTY(QString message READ message NOTIFY messageChanged)
     Q_PROPERTY(int currentRow READ currentRow NOTIFY currentChanged)
     // The current row's area scan, when it is one: its polygon, the path the planner made of it
-    // (transects and turnarounds, QGeoCoordinates) and its parameters; empty otherwise.
+    // (transects and turnarounds, QGeoCoordinates) and its parameters by wire name; empty otherwise.
     Q_PROPERTY(QVariantList scanPolygon READ scanPolygon NOTIFY currentChanged)
     Q_PROPERTY(QVariantList scanPath READ scanPath NOTIFY currentChanged)
     Q_PROPERTY(QVariantMap scanParameters READ scanParameters NOTIFY currentChanged)
@@ -64,21 +65,9 @@ public:
     void load(mission::Route route);
     void markSaved() { m_undo.setClean(); }
 
-    // Map gestures, each one undo step; the new or moved rows become the selection.
-    Q_INVOKABLE int addWaypoint(double latitude, double longitude);
-    // A click on the leg from row `leg` to `leg + 1` inserts a waypoint between them.
-    Q_INVOKABLE int insertWaypoint(int leg, double latitude, double longitude);
-    // rows (ints) and coordinates (QGeoCoordinate) as RouteLayer::waypointsMoved gives them.
-    Q_INVOKABLE void moveWaypoints(const QVariantList &rows, const QVariantList &coordinates);
-    Q_INVOKABLE void removeSelected();
     Q_INVOKABLE void selectRows(const QList<int> &rows);
     // A click on a row of the table: selects it; Ctrl toggles it, Shift extends from the current row.
     Q_INVOKABLE void clickRow(int row, int modifiers);
-    // polygon: QGeoCoordinates (or {latitude, longitude} maps). Returns the new row or -1.
-    Q_INVOKABLE int addAreaScan(const QVariantList &polygon);
-    // Camera, overlaps, altitude, direction... of the scan at `row`, as one undo step. Keys as in
-    // scanParameters; keys left out keep their value.
-    Q_INVOKABLE bool setScanParameters(int row, const QVariantMap &parameters);
     Q_INVOKABLE void undo() { m_undo.undo(); }
     Q_INVOKABLE void redo() { m_undo.redo(); }
 

@@ -130,7 +130,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < moves; ++i) {
         const int row = (i * 7919) % kWaypoints;
         const GeoPoint p = std::get<Waypoint>(model.segment(row)).position;
-        editor.moveWaypoint(row, p.latitude + 1e-5, p.longitude);
+        editor.moveWaypoints({row}, {QGeoCoordinate(p.latitude + 1e-5, p.longitude)});
         stack.undo();
     }
     ok &= report("move one waypoint and undo it", {t.nsecsElapsed() / 1e6 / moves, (threadCpuMs() - c0) / moves}, 0.1);

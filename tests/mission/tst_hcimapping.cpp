@@ -124,8 +124,8 @@ private slots:
         QUndoStack stack;
         RouteEditor editor(&model, &stack);
         editor.replaceRoute(imported(original), QStringLiteral("Load"));
-        editor.moveWaypoint(0, 56.97, 24.08);  // a drag, in two steps
-        editor.moveWaypoint(0, 56.98, 24.09);
+        editor.moveWaypoints({0}, {QGeoCoordinate(56.97, 24.08)}, EditStep::Continuing);  // a drag, in two steps
+        editor.moveWaypoints({0}, {QGeoCoordinate(56.98, 24.09)});
         const pb::Route sent = routeToHci(model.route());
 
         QCOMPARE(sent.segments(1).SerializeAsString(), original.segments(1).SerializeAsString());
@@ -154,7 +154,7 @@ private slots:
         RouteEditor editor(&model, &stack);
         editor.replaceRoute(imported(original), QStringLiteral("Load"));
         editor.setSpeed({1, 2}, 9);
-        editor.setAltitudeType({2}, QStringLiteral("AMSL"));
+        editor.setAltitudeType({2}, AltitudeType::Amsl);
         editor.setAltitude({2}, 140.5);
         QVERIFY(editor.addAction({1}, {{"kind", "cameraTrigger"}, {"state", "singleShot"}}));
         const pb::Route sent = routeToHci(model.route());

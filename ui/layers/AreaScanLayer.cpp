@@ -73,7 +73,7 @@ void AreaScanLayer::setEditable(bool editable)
     if (editable == m_editable)
         return;
     m_editable = editable;
-    setAcceptedMouseButtons(editable ? Qt::LeftButton : Qt::NoButton);
+    setAcceptedMouseButtons(editable ? Qt::LeftButton | Qt::RightButton : Qt::NoButton);
     emit editableChanged();
 }
 
@@ -111,7 +111,10 @@ QPolygonF AreaScanLayer::project(const std::vector<QPointF> &points, int displac
 
 void AreaScanLayer::updatePolish()
 {
-    m_drawnPolygon = project(m_polygon.points(), m_dragging ? m_pressVertex : -1, m_dragOffset, paintViewport());
+    // While dragging, the vertex shows where the pointer is, whether or not the model has caught up.
+    const bool shown = m_dragging && m_pressVertex >= 0 && m_pressVertex < int(m_polygon.points().size());
+    const QPointF displacement = shown ? m_pressPoint + m_dragOffset - m_polygon.points()[size_t(m_pressVertex)] : QPointF();
+    m_drawnPolygon = project(m_polygon.points(), shown ? m_pressVertex : -1, displacement, paintViewport());
     m_drawnTransects = project(m_transects.points(), -1, {}, paintViewport());
 }
 
@@ -183,15 +186,31 @@ int AreaScanLayer::edgeAt(QPointF position, qreal tolerance) const
     return best;
 }
 
+QGeoCoordinate AreaScanLayer::dragTarget() const
+{
+    return WebMercator::unproject(m_pressPoint + m_dragOffset);
+}
+
 void AreaScanLayer::mousePressEvent(QMouseEvent *event)
 {
-    m_pressVertex = vertexAt(event->position());
+    const int vertex = vertexAt(event->position());
+    if (event->button() == Qt::RightButton) {
+        if (vertex < 0) {
+            event->ignore();
+            return;
+        }
+        event->accept();
+        emit vertexRemoveRequested(vertex);
+        return;
+    }
+    m_pressVertex = vertex;
     m_pressEdge = m_pressVertex < 0 ? edgeAt(event->position()) : -1;
     if (m_pressVertex < 0 && m_pressEdge < 0) {
         event->ignore();
         return;
     }
     m_pressPos = event->position();
+    m_pressPoint = m_pressVertex >= 0 ? m_polygon.points()[size_t(m_pressVertex)] : QPointF();
     m_dragOffset = {};
     event->accept();
 }
@@ -210,6 +229,7 @@ void AreaScanLayer::mouseMoveEvent(QMouseEvent *event)
     m_dragOffset = view.toNormalised(event->position()) - view.toNormalised(m_pressPos);
     polish();
     repaint();
+    emit vertexMoved(m_pressVertex, dragTarget(), mission::EditStep::Continuing);
 }
 
 void AreaScanLayer::mouseReleaseEvent(QMouseEvent *event)
@@ -218,10 +238,10 @@ void AreaScanLayer::mouseReleaseEvent(QMouseEvent *event)
     const int edge = std::exchange(m_pressEdge, -1);
     if (m_dragging && vertex >= 0) {
         m_dragging = false;
-        const QGeoCoordinate coordinate = WebMercator::unproject(m_polygon.points()[size_t(vertex)] + m_dragOffset);
+        const QGeoCoordinate coordinate = dragTarget();
         polish();
         repaint();
-        emit vertexMoved(vertex, coordinate);
+        emit vertexMoved(vertex, coordinate, mission::EditStep::Done);
     } else if (edge >= 0) {
         emit edgeClicked(edge, viewport().screenToGeo(event->position()), int(event->modifiers()));
     }
@@ -229,12 +249,13 @@ void AreaScanLayer::mouseReleaseEvent(QMouseEvent *event)
 
 void AreaScanLayer::mouseUngrabEvent()
 {
-    m_pressVertex = -1;
+    const int vertex = std::exchange(m_pressVertex, -1);
     m_pressEdge = -1;
     if (m_dragging) {
         m_dragging = false;
         polish();
         repaint();
+        emit vertexMoved(vertex, dragTarget(), mission::EditStep::Done);  // closes the gesture where it got to
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include "MapLayer.h"
 #include "CoordinateListModel.h"
+#include "MissionEnums.h"
 #include "ModelCoordinates.h"
 
 #include <QColor>
@@ -13,8 +14,10 @@ namespace sortie::ui {
 // An area-scan segment over the map: the survey polygon (filled, with vertex handles) and the
 // transects the planner generated inside it, each from a list model with latitude and longitude
 // roles. `transectModel` rows are the scan path in flight order. With `editable`, dragging a
-// vertex reports vertexMoved and a click on an edge reports edgeClicked (to insert a vertex);
-// the layer only previews, the owner of the model applies.
+// vertex reports vertexMoved at every step (EditStep Continuing) and at the drop (Done), so the
+// owner can apply it live and see the path follow; a click on an edge reports edgeClicked (to
+// insert a vertex) and a right click on a vertex vertexRemoveRequested. The layer previews the
+// drag itself until the owner's model catches up.
 class AreaScanLayer : public MapLayer
 {
     Q_OBJECT
@@ -56,7 +59,8 @@ signals:
     void modelsChanged();
     void editableChanged();
     void colorChanged();
-    void vertexMoved(int index, const QGeoCoordinate &coordinate);
+    void vertexMoved(int index, const QGeoCoordinate &coordinate, sortie::mission::MissionEnums::EditStep step);
+    void vertexRemoveRequested(int index);
     // The edge from vertex index to the next one (the last edge closes the polygon).
     void edgeClicked(int index, const QGeoCoordinate &coordinate, int modifiers);
 
@@ -68,6 +72,7 @@ protected:
     void mouseUngrabEvent() override;
 
 private:
+    QGeoCoordinate dragTarget() const;
     static QPolygonF project(const std::vector<QPointF> &points, int displaced, QPointF offset, const MapViewport &view);
 
     CoordinateListModel m_ownPolygon; // behind the list properties
@@ -83,6 +88,7 @@ private:
     int m_pressVertex = -1;
     int m_pressEdge = -1;
     QPointF m_pressPos;
+    QPointF m_pressPoint;  // the pressed vertex where the drag began (normalised)
     QPointF m_dragOffset;
     bool m_dragging = false;
 };

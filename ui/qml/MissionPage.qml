@@ -30,7 +30,7 @@ Page {
 
     function finishScan() {
         if (page.doc && scanDraft.count >= 3)
-            page.doc.addAreaScan(scanDraft.coordinates())
+            page.doc.editor.addAreaScan(scanDraft.coordinates())
         scanDraft.clear()
         page.tool = ""
     }
@@ -61,6 +61,12 @@ Page {
                 transectModel: page.areaTransectModel
                 polygon: page.doc ? page.doc.scanPolygon : []
                 path: page.doc ? page.doc.scanPath : []
+                // The current scan's corners: drag one (the path follows), click an edge to add one,
+                // right-click one to remove it.
+                editable: page.editable && page.tool === "" && page.doc.scanPolygon.length > 0
+                onVertexMoved: (index, coordinate, step) => page.doc.editor.moveVertex(page.doc.currentRow, index, coordinate, step)
+                onEdgeClicked: (index, coordinate, modifiers) => page.doc.editor.insertVertex(page.doc.currentRow, index + 1, coordinate)
+                onVertexRemoveRequested: index => page.doc.editor.removeVertex(page.doc.currentRow, index)
             }
             AreaScanLayer {
                 objectName: "scanDraftLayer"
@@ -69,7 +75,7 @@ Page {
                 polygonModel: scanDraft
                 color: "#ef6c00"
                 editable: page.tool === "scan"
-                onVertexMoved: (index, coordinate) => scanDraft.setCoordinate(index, coordinate.latitude, coordinate.longitude)
+                onVertexMoved: (index, coordinate, step) => scanDraft.setCoordinate(index, coordinate.latitude, coordinate.longitude)
             }
             RouteLayer {
                 // The server's copy during a conflict: a read-only ghost under ours.
@@ -91,8 +97,8 @@ Page {
                 model: page.routeModel
                 selectionModel: page.selectionModel
                 editable: page.editable && page.tool === ""
-                onWaypointsMoved: (rows, coordinates) => page.doc.moveWaypoints(rows, coordinates)
-                onLegClicked: (leg, coordinate, modifiers) => page.doc.insertWaypoint(leg, coordinate.latitude, coordinate.longitude)
+                onWaypointsMoved: (rows, coordinates) => page.doc.editor.moveWaypoints(rows, coordinates)
+                onLegClicked: (leg, coordinate, modifiers) => page.doc.editor.insertWaypoint(leg + 1, coordinate)
             }
             Connections {
                 target: pane.map
@@ -102,7 +108,7 @@ Page {
                     if (page.tool === "scan")
                         scanDraft.append(coordinate.latitude, coordinate.longitude)
                     else
-                        page.doc.addWaypoint(coordinate.latitude, coordinate.longitude)
+                        page.doc.editor.addWaypoint(coordinate)
                 }
                 function onAreaSelected(rect, modifiers) { routeLayer.selectInRect(rect, modifiers) }
             }

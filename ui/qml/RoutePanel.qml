@@ -78,7 +78,7 @@ Pane {
                      ToolTip.visible: hovered; ToolTip.text: panel.doc ? qsTr("Undo %1 (Ctrl+Z)").arg(panel.doc.undoText) : "" }
             Button { objectName: "redoButton"; text: qsTr("Redo"); enabled: panel.doc && panel.doc.canRedo; onClicked: panel.doc.redo()
                      ToolTip.visible: hovered; ToolTip.text: panel.doc ? qsTr("Redo %1 (Ctrl+Shift+Z)").arg(panel.doc.redoText) : "" }
-            Button { text: qsTr("Delete"); enabled: panel.doc && panel.doc.selectedRows.length > 0; onClicked: panel.doc.removeSelected()
+            Button { text: qsTr("Delete"); enabled: panel.doc && panel.doc.selectedRows.length > 0; onClicked: panel.doc.editor.removeRows(panel.doc.selectedRows)
                      ToolTip.visible: hovered; ToolTip.text: qsTr("Delete the selected waypoints (Del)") }
             Button { objectName: "scanToolButton"; text: qsTr("Area scan"); checkable: true; checked: page.tool === "scan"
                      onToggled: page.tool = checked ? "scan" : ""

@@ -21,11 +21,8 @@ GroupBox {
             selectByMouse: true
             onEditingFinished: {
                 const v = Number(text)
-                if (!isNaN(v) && v !== editor.parameters[parent.key]) {
-                    const change = {}
-                    change[parent.key] = v
-                    editor.doc.setScanParameters(editor.doc.currentRow, change)
-                }
+                if (!isNaN(v) && v !== editor.parameters[parent.key])
+                    editor.doc.editor.setParameter([editor.doc.currentRow], parent.key, v)
             }
         }
         Label { text: parent.unit; opacity: 0.7 }
@@ -33,11 +30,11 @@ GroupBox {
 
     ColumnLayout {
         anchors.fill: parent
-        Label { text: editor.parameters.cameraName !== undefined ? qsTr("Camera: %1").arg(editor.parameters.cameraName) : "" }
-        Field { label: qsTr("Altitude"); key: "altitude"; unit: "m" }
-        Field { label: qsTr("Front overlap"); key: "frontOverlapPercent"; unit: "%" }
-        Field { label: qsTr("Side overlap"); key: "sideOverlapPercent"; unit: "%" }
-        Field { label: qsTr("Direction"); key: "directionDeg"; unit: "°" }
+        Label { text: editor.parameters.camera !== undefined ? qsTr("Camera: %1").arg(editor.parameters.camera) : "" }
+        Field { label: qsTr("Altitude"); key: "height"; unit: "m" }
+        Field { label: qsTr("Front overlap"); key: "overlapForward"; unit: "%" }
+        Field { label: qsTr("Side overlap"); key: "overlapSide"; unit: "%" }
+        Field { label: qsTr("Direction"); key: "directionAngle"; unit: "°" }
         Label {
             visible: editor.doc && editor.doc.scanProblem.length > 0
             text: editor.doc ? editor.doc.scanProblem : ""

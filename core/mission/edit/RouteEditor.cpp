@@ -4,24 +4,56 @@
 #include "EditSegmentsCommand.h"
 #include "InsertSegmentsCommand.h"
 #include "MissionLog.h"
-#include "MoveWaypointCommand.h"
+#include "PolygonGeometry.h"
+#include "LocalTangentPlane.h"
 #include "RemoveSegmentsCommand.h"
 #include "ReorderSegmentsCommand.h"
 #include "ReplaceRouteCommand.h"
 #include "RouteModel.h"
-#include "ScanVariants.h"
+#include "SegmentParameters.h"
 #include "SetRouteSettingsCommand.h"
 
 #include <QUndoStack>
 
 #include <algorithm>
+#include <cmath>
+#include <unordered_map>
 
 namespace sortie::mission {
+
+namespace {
+GeoPoint geo(const QGeoCoordinate &c)
+{
+    return c.isValid() ? GeoPoint{c.latitude(), c.longitude()} : GeoPoint{std::nan(""), std::nan("")};
+}
+
+// Three or more valid corners enclosing some area (1 m²).
+bool enclosesArea(const std::vector<GeoPoint> &polygon)
+{
+    if (polygon.size() < 3)
+        return false;
+    for (const GeoPoint &g : polygon)
+        if (!g.isValid())
+            return false;
+    const LocalTangentPlane plane(LocalTangentPlane::centroidOf(polygon));
+    std::vector<PlanePoint> pts;
+    pts.reserve(polygon.size());
+    for (const GeoPoint &g : polygon)
+        pts.push_back(plane.project(g));
+    return std::abs(polygon::signedArea(pts)) >= 1.0;
+}
+} // namespace
 
 RouteEditor::RouteEditor(RouteModel *model, QUndoStack *stack, QObject *parent)
     : QObject(parent), m_model(model), m_stack(stack)
 {
-    m_model->setUndoStack(stack);
+}
+
+bool RouteEditor::refuse(const QString &reason)
+{
+    qCDebug(lcMission) << "edit refused:" << reason;
+    emit refused(reason);
+    return false;
 }
 
 std::vector<int> RouteEditor::validRows(const QList<int> &rows) const
@@ -34,6 +66,37 @@ std::vector<int> RouteEditor::validRows(const QList<int> &rows) const
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
+}
+
+bool RouteEditor::edit(const QList<int> &rows, const std::function<bool(int, Segment &)> &change, const QString &text,
+                       const QString &kind, EditStep step)
+{
+    const std::vector<int> valid = validRows(rows);
+    if (valid.empty())
+        return refuse(tr("Nothing is selected."));
+    std::vector<int> changed;
+    std::vector<Segment> before, after;
+    for (int r : valid) {
+        Segment s = m_model->segment(r);
+        if (!change(r, s))
+            return false;
+        if (s == m_model->segment(r))
+            continue;
+        changed.push_back(r);
+        before.push_back(m_model->segment(r));
+        after.push_back(std::move(s));
+    }
+    // Continuing steps carry the gesture; so does the Done step that ends an open gesture.
+    const int merge = (step == EditStep::Continuing || m_gestureOpen) ? m_gesture : 0;
+    if (step == EditStep::Done) {
+        ++m_gesture;
+        m_gestureOpen = false;
+    } else {
+        m_gestureOpen = true;
+    }
+    if (!changed.empty())
+        m_stack->push(new EditSegmentsCommand(m_model, std::move(changed), std::move(before), std::move(after), text, kind, merge));
+    return true;
 }
 
 Waypoint RouteEditor::newWaypointAt(int row, const GeoPoint &position) const
@@ -55,31 +118,65 @@ Waypoint RouteEditor::newWaypointAt(int row, const GeoPoint &position) const
     return w;
 }
 
-int RouteEditor::addWaypoint(double latitude, double longitude)
+int RouteEditor::addWaypoint(const QGeoCoordinate &at)
 {
-    return insertWaypoint(m_model->count(), latitude, longitude);
+    return insertWaypoint(m_model->count(), at);
 }
 
-int RouteEditor::insertWaypoint(int row, double latitude, double longitude)
+int RouteEditor::insertWaypoint(int row, const QGeoCoordinate &at)
 {
-    const GeoPoint p{latitude, longitude};
-    if (!p.isValid() || row < 0 || row > m_model->count())
-        return -1;
-    return insertSegments(row, {newWaypointAt(row, p)}, QStringLiteral("Add waypoint %1").arg(row + 1));
+    const GeoPoint p = geo(at);
+    if (!p.isValid())
+        return refuse(tr("That is not a valid position.")), -1;
+    if (row < 0 || row > m_model->count())
+        return refuse(tr("There is no row %1 to insert at.").arg(row + 1)), -1;
+    return insertSegments(row, {newWaypointAt(row, p)}, tr("Add waypoint %1").arg(row + 1));
 }
 
 int RouteEditor::insertSegments(int row, std::vector<Segment> segments, const QString &text)
 {
+    const int count = int(segments.size());
     m_stack->push(new InsertSegmentsCommand(m_model, row, std::move(segments), text));
+    emit rowsAdded(row, count);
     return row;
 }
 
-void RouteEditor::moveWaypoint(int row, double latitude, double longitude)
+bool RouteEditor::moveWaypoints(const QList<int> &rows, const QList<QGeoCoordinate> &to, EditStep step)
 {
-    const GeoPoint p{latitude, longitude};
-    if (row < 0 || row >= m_model->count() || !isWaypoint(m_model->segment(row)) || !p.isValid())
-        return;
-    m_stack->push(new MoveWaypointCommand(m_model, row, p, m_gesture));
+    if (rows.size() != to.size() || rows.isEmpty())
+        return refuse(tr("A move needs one position per waypoint."));
+    std::unordered_map<int, GeoPoint> target;
+    target.reserve(size_t(rows.size()));
+    for (qsizetype i = 0; i < rows.size(); ++i) {
+        const GeoPoint p = geo(to[i]);
+        if (!p.isValid())
+            return refuse(tr("That is not a valid position."));
+        if (rows[i] < 0 || rows[i] >= m_model->count() || !isWaypoint(m_model->segment(rows[i])))
+            return refuse(tr("Row %1 is not a waypoint.").arg(rows[i] + 1));
+        target[rows[i]] = p;
+    }
+    const QString text = rows.size() == 1 ? tr("Move waypoint %1").arg(rows.first() + 1)
+                                          : tr("Move %n waypoint(s)", nullptr, int(rows.size()));
+    return edit(rows, [&](int row, Segment &s) {
+        std::get<Waypoint>(s).position = target.at(row);
+        return true;
+    }, text, QStringLiteral("move"), step);
+}
+
+bool RouteEditor::setLatitude(int row, double latitude)
+{
+    if (row < 0 || row >= m_model->count() || !isWaypoint(m_model->segment(row)))
+        return refuse(tr("Row %1 is not a waypoint.").arg(row + 1));
+    const GeoPoint p = std::get<Waypoint>(m_model->segment(row)).position;
+    return moveWaypoints({row}, {QGeoCoordinate(latitude, p.longitude)});
+}
+
+bool RouteEditor::setLongitude(int row, double longitude)
+{
+    if (row < 0 || row >= m_model->count() || !isWaypoint(m_model->segment(row)))
+        return refuse(tr("Row %1 is not a waypoint.").arg(row + 1));
+    const GeoPoint p = std::get<Waypoint>(m_model->segment(row)).position;
+    return moveWaypoints({row}, {QGeoCoordinate(p.latitude, longitude)});
 }
 
 QList<int> RouteEditor::rowsOf(const QItemSelectionModel *selection) const
@@ -118,149 +215,162 @@ void RouteEditor::reverse(const QList<int> &rows)
         m_stack->push(ReorderSegmentsCommand::reverse(m_model, first, last));
 }
 
-void RouteEditor::editSegments(const QList<int> &rows, const std::function<void(Segment &)> &edit, const QString &text)
+bool RouteEditor::setAltitude(const QList<int> &rows, double altitude, EditStep step)
 {
-    std::vector<int> valid = validRows(rows);
-    if (valid.empty())
-        return;
-    auto *cmd = new EditSegmentsCommand(m_model, std::move(valid), edit, text);
-    if (cmd->isNoOp()) {
-        delete cmd;
-        return;
-    }
-    m_stack->push(cmd);
-}
-
-void RouteEditor::setAltitude(const QList<int> &rows, double altitude)
-{
-    editSegments(rows, [altitude](Segment &s) {
+    if (!std::isfinite(altitude))
+        return refuse(tr("The altitude needs a number."));
+    QString error;
+    return edit(rows, [&](int, Segment &s) {
         if (Waypoint *w = asWaypoint(s)) {
             w->altitude = altitude;
-        } else {
-            auto &p = std::get<AreaScan>(s).parameters;
-            p.heightMode = ScanHeightMode::Altitude;
-            p.altitude = altitude;
-            syncDerivedFields(p);
+            return true;
         }
-    }, QStringLiteral("Set altitude to %1 m").arg(altitude));
+        return setParameterValue(s, QStringLiteral("height"), altitude, &error) || refuse(error);
+    }, tr("Set altitude to %1 m").arg(altitude), QStringLiteral("altitude"), step);
 }
 
-bool RouteEditor::setAltitudeType(const QList<int> &rows, const QString &type)
+bool RouteEditor::setAltitudeType(const QList<int> &rows, AltitudeType type)
 {
-    AltitudeType t;
-    if (!parseAltitudeType(type, &t))
-        return false;
     // The number stays: without terrain data a conversion would be a guess. See docs/missions.md.
-    editSegments(rows, [t](Segment &s) {
-        if (Waypoint *w = asWaypoint(s)) w->altitudeType = t;
-        else std::get<AreaScan>(s).parameters.altitudeType = t;
-    }, QStringLiteral("Set altitude type to %1").arg(altitudeTypeName(t)));
-    return true;
+    return edit(rows, [type](int, Segment &s) {
+        return setParameterValue(s, QStringLiteral("altitudeType"), QVariant::fromValue(type));
+    }, tr("Set altitude type to %1").arg(altitudeTypeName(type)), QStringLiteral("altitudeType"), EditStep::Done);
 }
 
-void RouteEditor::setSpeed(const QList<int> &rows, double speed)
+bool RouteEditor::setSpeed(const QList<int> &rows, double speed)
 {
-    editSegments(rows, [speed](Segment &s) {
-        if (Waypoint *w = asWaypoint(s)) w->speed = speed;
-        else std::get<AreaScan>(s).parameters.speed = speed;
-    }, QStringLiteral("Set speed to %1 m/s").arg(speed));
+    return setParameter(rows, QStringLiteral("speed"), speed);
 }
 
-bool RouteEditor::setTurnType(const QList<int> &rows, const QString &type)
+bool RouteEditor::setTurnType(const QList<int> &rows, TurnType type)
 {
-    TurnType t;
-    if (!parseTurnType(type, &t))
-        return false;
-    editSegments(rows, [t](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->turnType = t; },
-                 QStringLiteral("Set turn type to %1").arg(turnTypeName(t)));
-    return true;
+    return edit(rows, [type](int, Segment &s) {
+        if (Waypoint *w = asWaypoint(s))
+            w->turnType = type;
+        return true;
+    }, tr("Set turn type to %1").arg(turnTypeName(type)), QStringLiteral("turnType"), EditStep::Done);
 }
 
-void RouteEditor::setAcceptanceRadius(const QList<int> &rows, double meters)
+bool RouteEditor::setAcceptanceRadius(const QList<int> &rows, double meters)
 {
-    editSegments(rows, [meters](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->acceptanceRadius = meters; },
-                 QStringLiteral("Set acceptance radius to %1 m").arg(meters));
+    return setParameter(rows, QStringLiteral("acceptanceRadius"), meters);
+}
+
+bool RouteEditor::setParameter(const QList<int> &rows, const QString &name, const QVariant &value, EditStep step)
+{
+    // Rows without the parameter are left alone; a bad value for one that has it cancels the edit.
+    QString error;
+    bool any = false;
+    for (int r : validRows(rows))
+        any |= parameterNames(m_model->segment(r)).contains(name);
+    if (!any)
+        return refuse(tr("No selected segment has a parameter \"%1\".").arg(name));
+    return edit(rows, [&](int, Segment &s) {
+        if (!parameterNames(s).contains(name))
+            return true;
+        return setParameterValue(s, name, value, &error) || refuse(error);
+    }, tr("Set %1 to %2").arg(name, value.toString()), QStringLiteral("parameter:") + name, step);
 }
 
 bool RouteEditor::addAction(const QList<int> &rows, const QVariantMap &action)
 {
     const auto a = actionFromVariant(action);
-    if (!a) {
-        qCWarning(lcMission) << "unknown action kind" << action.value(QStringLiteral("kind"));
-        return false;
-    }
-    editSegments(rows, [&a](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->actions.push_back(*a); },
-                 QStringLiteral("Add action: %1").arg(describeAction(*a)));
-    return true;
+    if (!a)
+        return refuse(tr("There is no action \"%1\".").arg(action.value(QStringLiteral("kind")).toString()));
+    return edit(rows, [&a](int, Segment &s) {
+        if (Waypoint *w = asWaypoint(s))
+            w->actions.push_back(*a);
+        return true;
+    }, tr("Add action: %1").arg(describeAction(*a)), QStringLiteral("addAction"), EditStep::Done);
 }
 
 void RouteEditor::removeAction(const QList<int> &rows, int actionIndex)
 {
-    editSegments(rows, [actionIndex](Segment &s) {
+    edit(rows, [actionIndex](int, Segment &s) {
         if (Waypoint *w = asWaypoint(s); w && actionIndex >= 0 && actionIndex < int(w->actions.size()))
             w->actions.erase(w->actions.begin() + actionIndex);
-    }, QStringLiteral("Remove action"));
+        return true;
+    }, tr("Remove action"), QStringLiteral("removeAction"), EditStep::Done);
 }
 
 bool RouteEditor::setAction(const QList<int> &rows, int actionIndex, const QVariantMap &action)
 {
     const auto a = actionFromVariant(action);
     if (!a)
-        return false;
-    editSegments(rows, [&a, actionIndex](Segment &s) {
+        return refuse(tr("There is no action \"%1\".").arg(action.value(QStringLiteral("kind")).toString()));
+    return edit(rows, [&a, actionIndex](int, Segment &s) {
         if (Waypoint *w = asWaypoint(s); w && actionIndex >= 0 && actionIndex < int(w->actions.size()))
             w->actions[size_t(actionIndex)] = *a;
-    }, QStringLiteral("Edit action: %1").arg(describeAction(*a)));
-    return true;
-}
-
-bool RouteEditor::setScanProperties(int row, const QVariantMap &parameters)
-{
-    if (row < 0 || row >= m_model->count() || !isAreaScan(m_model->segment(row)))
-        return false;
-    AreaScanParameters p = std::get<AreaScan>(m_model->segment(row)).parameters;
-    if (!applyScanVariant(p, parameters))
-        return false;
-    setScanParameters(row, p);
-    return true;
+        return true;
+    }, tr("Edit action: %1").arg(describeAction(*a)), QStringLiteral("setAction"), EditStep::Done);
 }
 
 void RouteEditor::clearActions(const QList<int> &rows)
 {
-    editSegments(rows, [](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->actions.clear(); },
-                 QStringLiteral("Clear actions"));
+    edit(rows, [](int, Segment &s) {
+        if (Waypoint *w = asWaypoint(s))
+            w->actions.clear();
+        return true;
+    }, tr("Clear actions"), QStringLiteral("clearActions"), EditStep::Done);
 }
 
-int RouteEditor::addAreaScan(const QVariantList &polygon)
+int RouteEditor::addAreaScan(const QList<QGeoCoordinate> &polygon)
 {
     AreaScan scan;
-    for (const QVariant &v : polygon) {
-        const QVariantMap m = v.toMap();
-        const GeoPoint g{m.value(QStringLiteral("latitude")).toDouble(), m.value(QStringLiteral("longitude")).toDouble()};
-        if (!g.isValid())
-            return -1;
-        scan.polygon.push_back(g);
-    }
-    if (scan.polygon.size() < 3)
-        return -1;
-    scan.parameters.altitude = std::max(m_model->settings().safeAltitude, std::min(60.0, m_model->settings().maxAltitude));
-    scan.parameters.speed = m_model->settings().initialSpeed;
+    for (const QGeoCoordinate &c : polygon)
+        scan.polygon.push_back(geo(c));
+    if (!enclosesArea(scan.polygon))
+        return refuse(tr("An area scan needs at least three corners that enclose an area.")), -1;
+    const RouteSettings &rs = m_model->settings();
+    scan.parameters.altitude = std::max(rs.safeAltitude, std::min(60.0, rs.maxAltitude));
+    scan.parameters.speed = rs.initialSpeed;
     syncDerivedFields(scan.parameters);
-    return insertSegments(m_model->count(), {std::move(scan)}, QStringLiteral("Add area scan"));
+    return insertSegments(m_model->count(), {std::move(scan)}, tr("Add area scan"));
 }
 
-void RouteEditor::setScanParameters(int row, const AreaScanParameters &parameters)
-{
-    AreaScanParameters synced = parameters;
-    syncDerivedFields(synced);
-    editSegments({row}, [&synced](Segment &s) { if (AreaScan *a = asAreaScan(s)) a->parameters = synced; },
-                 QStringLiteral("Edit area scan %1").arg(row + 1));
+namespace {
+AreaScan *scanOf(Segment &s) { return std::get_if<AreaScan>(&s); }
 }
 
-void RouteEditor::setScanPolygon(int row, std::vector<GeoPoint> polygon)
+bool RouteEditor::moveVertex(int row, int vertex, const QGeoCoordinate &to, EditStep step)
 {
-    editSegments({row}, [&polygon](Segment &s) { if (AreaScan *a = asAreaScan(s)) a->polygon = polygon; },
-                 QStringLiteral("Edit area scan %1 polygon").arg(row + 1));
+    const GeoPoint p = geo(to);
+    if (!p.isValid())
+        return refuse(tr("That is not a valid position."));
+    return edit({row}, [&](int, Segment &s) {
+        AreaScan *a = scanOf(s);
+        if (!a || vertex < 0 || vertex >= int(a->polygon.size()))
+            return refuse(tr("Segment %1 has no corner %2.").arg(row + 1).arg(vertex + 1));
+        a->polygon[size_t(vertex)] = p;
+        return true;
+    }, tr("Move corner %1 of segment %2").arg(vertex + 1).arg(row + 1), QStringLiteral("vertex:%1").arg(vertex), step);
+}
+
+bool RouteEditor::insertVertex(int row, int vertex, const QGeoCoordinate &at)
+{
+    const GeoPoint p = geo(at);
+    if (!p.isValid())
+        return refuse(tr("That is not a valid position."));
+    return edit({row}, [&](int, Segment &s) {
+        AreaScan *a = scanOf(s);
+        if (!a || vertex < 0 || vertex > int(a->polygon.size()))
+            return refuse(tr("Segment %1 has no edge there.").arg(row + 1));
+        a->polygon.insert(a->polygon.begin() + vertex, p);
+        return true;
+    }, tr("Add a corner to segment %1").arg(row + 1), QStringLiteral("insertVertex"), EditStep::Done);
+}
+
+bool RouteEditor::removeVertex(int row, int vertex)
+{
+    return edit({row}, [&](int, Segment &s) {
+        AreaScan *a = scanOf(s);
+        if (!a || vertex < 0 || vertex >= int(a->polygon.size()))
+            return refuse(tr("Segment %1 has no corner %2.").arg(row + 1).arg(vertex + 1));
+        if (a->polygon.size() <= 3)
+            return refuse(tr("An area keeps at least three corners."));
+        a->polygon.erase(a->polygon.begin() + vertex);
+        return true;
+    }, tr("Remove corner %1 of segment %2").arg(vertex + 1).arg(row + 1), QStringLiteral("removeVertex"), EditStep::Done);
 }
 
 bool RouteEditor::setRouteProperty(const QString &name, const QVariant &value)
@@ -284,11 +394,11 @@ bool RouteEditor::setRouteProperty(const QString &name, const QVariant &value)
     else if (name == QLatin1String("maxHorizontalSpeed"))
         s.profile.maxHorizontalSpeed = value.toDouble(&ok);
     else
-        return false;
+        return refuse(tr("A route has no setting \"%1\".").arg(name));
     if (!ok)
-        return false;
+        return refuse(tr("%1 needs a number.").arg(name));
     if (!(s == m_model->settings()))
-        setSettings(s, QStringLiteral("Set route %1").arg(name));
+        setSettings(s, tr("Set route %1").arg(name));
     return true;
 }
 

@@ -4,8 +4,6 @@
 #include "ScanPlanCache.h"
 
 #include <QAbstractListModel>
-#include <QPointer>
-#include <QUndoStack>
 
 #include <vector>
 
@@ -13,7 +11,7 @@ namespace sortie::mission {
 
 // The route being edited, one row per segment (waypoint or area scan), as plain values: no QObject
 // per waypoint, so 10,000+ rows stay cheap. Views read it through roles; edits go through
-// RouteEditor (or setData, which pushes the same undoable commands when an undo stack is set).
+// RouteEditor, the one entry point: the model itself is read-only to views.
 // The mutators below are the primitives the undo commands use; they are not undoable themselves.
 class RouteModel : public QAbstractListModel
 {
@@ -40,8 +38,8 @@ public:
         ActionsSummaryRole,           // "Wait 5 s · Photo every 20 m"
         ActionsRole,                  // list of maps, see ActionVariants.h
         PolygonRole,                  // a scan's vertices: list of {latitude, longitude}
-        ScanParametersRole,           // a scan's parameters as a map (ScanVariants.h)
-        ScanPlanRole,                 // a scan's generated plan: path, transects, photos (ScanVariants.h)
+        ScanParametersRole,           // a scan's parameters by wire name (SegmentParameters.h)
+        ScanPlanRole,                 // a scan's generated plan: {ok, message, transects, photoCount, path, ...}
     };
     Q_ENUM(Roles)
 
@@ -49,8 +47,6 @@ public:
 
     int rowCount(const QModelIndex &parent = QModelIndex()) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
-    bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
-    Qt::ItemFlags flags(const QModelIndex &index) const override;
     QHash<int, QByteArray> roleNames() const override;
 
     const Route &route() const { return m_route; }
@@ -63,16 +59,11 @@ public:
     double initialSpeed() const { return m_route.settings.initialSpeed; }
     double maxSpeed() const { return m_route.settings.maxSpeed; }
 
-    // Where setData pushes its commands. Without one, setData edits directly.
-    void setUndoStack(QUndoStack *stack);
-    QUndoStack *undoStack() const { return m_undoStack; }
-
     // Primitives for the undo commands. Rows are sorted ascending and valid.
     void insertSegments(int row, std::vector<Segment> segments);
     std::vector<Segment> takeSegments(const std::vector<int> &rows);
     void restoreSegments(const std::vector<int> &rows, std::vector<Segment> segments);  // inverse of takeSegments
     void replaceSegments(const std::vector<int> &rows, const std::vector<Segment> &values);
-    void setWaypointPosition(int row, const GeoPoint &position);
     void permute(const std::vector<int> &order);  // new row i holds old row order[i]
     void setSettings(const RouteSettings &settings);
     void resetRoute(Route route);
@@ -89,7 +80,6 @@ private:
     void emitChanged(const std::vector<int> &rows, const QList<int> &roles);
 
     Route m_route;
-    QPointer<QUndoStack> m_undoStack;
     mutable ScanPlanCache m_scanPlans;  // plans shown through ScanPlanRole
 };
 

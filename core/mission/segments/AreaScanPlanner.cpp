@@ -124,7 +124,8 @@ AreaScanOutcome planAreaScan(const AreaScan &scan)
     AreaScanPlan plan;
     plan.altitude = altitude;
     plan.groundSampleDistanceCm = scanGroundSampleDistanceCm(params);
-    plan.transectSpacing = footprintAcrossMeters(params) * (1 - params.sideOverlapPercent / 100.0);
+    plan.transectSpacing = params.sideDistanceMeters > 0 ? params.sideDistanceMeters
+                                                         : footprintAcrossMeters(params) * (1 - params.sideOverlapPercent / 100.0);
     plan.triggerDistance = footprintAlongMeters(params) * (1 - params.frontOverlapPercent / 100.0);
     plan.areaSquareMeters = area;
 
