@@ -15,7 +15,9 @@ RouteDocument::RouteDocument(QObject *parent)
     , m_editor(&m_model, &m_undo)
     , m_selection(&m_model)
     , m_analyzer(&m_model)
+    , m_segmentEditor(&m_model, &m_editor)
 {
+    connect(this, &RouteDocument::currentChanged, this, [this] { m_segmentEditor.setRow(currentRow()); });
     connect(&m_editor, &RouteEditor::rowsAdded, this, [this](int first, int count) {
         QList<int> rows;
         for (int r = first; r < first + count; ++r)

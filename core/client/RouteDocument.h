@@ -3,6 +3,7 @@
 #include "RouteAnalyzer.h"
 #include "RouteEditor.h"
 #include "RouteModel.h"
+#include "SegmentEditorModel.h"
 
 #include <QItemSelectionModel>
 #include <QObject>
@@ -23,6 +24,8 @@ class RouteDocument : public QObject
     Q_PROPERTY(QUndoStack *undoStack READ undoStack CONSTANT)
     Q_PROPERTY(QItemSelectionModel *selection READ selection CONSTANT)
     Q_PROPERTY(sortie::mission::RouteAnalyzer *analyzer READ analyzer CONSTANT)
+    // The current segment's parameters, as the editor the panel draws (follows currentRow).
+    Q_PROPERTY(sortie::mission::SegmentEditorModel *segmentEditor READ segmentEditor CONSTANT)
     Q_PROPERTY(bool modified READ isModified NOTIFY modifiedChanged)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY undoChanged)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoChanged)
@@ -46,6 +49,7 @@ public:
     QUndoStack *undoStack() { return &m_undo; }
     QItemSelectionModel *selection() { return &m_selection; }
     mission::RouteAnalyzer *analyzer() { return &m_analyzer; }
+    mission::SegmentEditorModel *segmentEditor() { return &m_segmentEditor; }
     const mission::Route &route() const { return m_model.route(); }
 
     bool isModified() const { return !m_undo.isClean(); }
@@ -93,6 +97,7 @@ private:
     mission::RouteEditor m_editor;
     QItemSelectionModel m_selection;
     mission::RouteAnalyzer m_analyzer;
+    mission::SegmentEditorModel m_segmentEditor;
     QString m_message;
 };
 

@@ -321,7 +321,7 @@ private slots:
         QVERIFY(area->property("transectPointCount").toInt() >= pathBefore);
 
         // The side overlap typed in the editor; then undo both.
-        type("scan_overlapSide", QStringLiteral("80"));
+        type("segment_overlapSide", QStringLiteral("80"));
         QTest::keyClick(m_window, Qt::Key_Return);
         QTRY_COMPARE(std::get<mission::AreaScan>(doc->model()->segment(4)).parameters.sideOverlapPercent, 80.0);
         QCOMPARE(doc->undoStack()->count(), stepsBefore + 2);

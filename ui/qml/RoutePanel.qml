@@ -177,10 +177,9 @@ Pane {
             Label { text: panel.doc ? panel.doc.analyzer.photoCount : "" }
         }
 
-        ScanEditor {
-            visible: panel.doc !== null && panel.doc.scanPolygon.length > 0
+        SegmentEditor {
             Layout.fillWidth: true
-            doc: panel.doc
+            editor: panel.doc ? panel.doc.segmentEditor : null
         }
 
         ListView {

@@ -53,10 +53,10 @@ RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
     for (const Segment &s : route.segments) {
         if (isWaypoint(s)) {
             ++st.waypointCount;
-        } else {
+        } else if (const std::optional<AreaScan> scan = scanOf(s)) {
             ++st.areaScanCount;
             AreaScanOutcome scratch;
-            const AreaScanOutcome &o = scanOutcome(std::get<AreaScan>(s), cache, scratch);
+            const AreaScanOutcome &o = scanOutcome(*scan, cache, scratch);
             if (o.ok())
                 st.photoCount += o.plan->photoCount;
         }

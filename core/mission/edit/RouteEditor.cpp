@@ -225,15 +225,27 @@ bool RouteEditor::setAltitude(const QList<int> &rows, double altitude, EditStep 
             w->altitude = altitude;
             return true;
         }
-        return setParameterValue(s, QStringLiteral("height"), altitude, &error) || refuse(error);
+        if (AlgorithmSegment *a = asAlgorithmSegment(s); a && !parameterNames(s, catalog()).contains(QStringLiteral("height"))) {
+            if (a->figure == FigureType::Point || a->figure == FigureType::Circle)  // the point carries it
+                for (FigurePoint &p : a->points)
+                    p.altitude = altitude;
+            return true;
+        }
+        return setParameterValue(s, QStringLiteral("height"), altitude, &error, catalog()) || refuse(error);
     }, tr("Set altitude to %1 m").arg(altitude), QStringLiteral("altitude"), step);
 }
 
 bool RouteEditor::setAltitudeType(const QList<int> &rows, AltitudeType type)
 {
     // The number stays: without terrain data a conversion would be a guess. See docs/missions.md.
-    return edit(rows, [type](int, Segment &s) {
-        return setParameterValue(s, QStringLiteral("altitudeType"), QVariant::fromValue(type));
+    QString error;
+    return edit(rows, [&](int, Segment &s) {
+        if (AlgorithmSegment *a = asAlgorithmSegment(s); a && !parameterNames(s, catalog()).contains(QStringLiteral("altitudeType"))) {
+            for (FigurePoint &p : a->points)
+                p.altitudeType = type;
+            return true;
+        }
+        return setParameterValue(s, QStringLiteral("altitudeType"), QVariant::fromValue(type), &error, catalog()) || refuse(error);
     }, tr("Set altitude type to %1").arg(altitudeTypeName(type)), QStringLiteral("altitudeType"), EditStep::Done);
 }
 
@@ -262,13 +274,13 @@ bool RouteEditor::setParameter(const QList<int> &rows, const QString &name, cons
     QString error;
     bool any = false;
     for (int r : validRows(rows))
-        any |= parameterNames(m_model->segment(r)).contains(name);
+        any |= parameterNames(m_model->segment(r), catalog()).contains(name);
     if (!any)
         return refuse(tr("No selected segment has a parameter \"%1\".").arg(name));
     return edit(rows, [&](int, Segment &s) {
-        if (!parameterNames(s).contains(name))
+        if (!parameterNames(s, catalog()).contains(name))
             return true;
-        return setParameterValue(s, name, value, &error) || refuse(error);
+        return setParameterValue(s, name, value, &error, catalog()) || refuse(error);
     }, tr("Set %1 to %2").arg(name, value.toString()), QStringLiteral("parameter:") + name, step);
 }
 
@@ -329,8 +341,48 @@ int RouteEditor::addAreaScan(const QList<QGeoCoordinate> &polygon)
 }
 
 namespace {
-AreaScan *scanOf(Segment &s) { return std::get_if<AreaScan>(&s); }
+// The points of a figure an operator edits, whatever segment holds them.
+struct FigureAccess
+{
+    std::vector<GeoPoint> *corners = nullptr;        // an area scan
+    std::vector<FigurePoint> *points = nullptr;      // any other algorithm
+    FigureType figure = FigureType::Polygon;
+
+    int size() const { return corners ? int(corners->size()) : points ? int(points->size()) : 0; }
+    int minimum() const { return figure == FigureType::Polygon ? 3 : figure == FigureType::Polyline ? 2 : 1; }
+    bool movable() const { return corners || points; }
+    bool growable() const { return figure == FigureType::Polygon || figure == FigureType::Polyline; }
+    void set(int i, const GeoPoint &p)
+    {
+        if (corners) (*corners)[size_t(i)] = p;
+        else (*points)[size_t(i)].position = p;
+    }
+    void insert(int i, const GeoPoint &p)
+    {
+        if (corners) {
+            corners->insert(corners->begin() + i, p);
+        } else {
+            FigurePoint f = points->empty() ? FigurePoint{} : (*points)[size_t(std::max(0, i - 1))];
+            f.position = p;
+            points->insert(points->begin() + i, f);
+        }
+    }
+    void erase(int i)
+    {
+        if (corners) corners->erase(corners->begin() + i);
+        else points->erase(points->begin() + i);
+    }
+};
+
+FigureAccess figureAccess(Segment &s)
+{
+    if (AreaScan *a = asAreaScan(s))
+        return {&a->polygon, nullptr, FigureType::Polygon};
+    if (AlgorithmSegment *a = asAlgorithmSegment(s))
+        return {nullptr, &a->points, a->figure};
+    return {};
 }
+} // namespace
 
 bool RouteEditor::moveVertex(int row, int vertex, const QGeoCoordinate &to, EditStep step)
 {
@@ -338,12 +390,12 @@ bool RouteEditor::moveVertex(int row, int vertex, const QGeoCoordinate &to, Edit
     if (!p.isValid())
         return refuse(tr("That is not a valid position."));
     return edit({row}, [&](int, Segment &s) {
-        AreaScan *a = scanOf(s);
-        if (!a || vertex < 0 || vertex >= int(a->polygon.size()))
-            return refuse(tr("Segment %1 has no corner %2.").arg(row + 1).arg(vertex + 1));
-        a->polygon[size_t(vertex)] = p;
+        FigureAccess f = figureAccess(s);
+        if (vertex < 0 || vertex >= f.size())
+            return refuse(tr("Segment %1 has no point %2.").arg(row + 1).arg(vertex + 1));
+        f.set(vertex, p);
         return true;
-    }, tr("Move corner %1 of segment %2").arg(vertex + 1).arg(row + 1), QStringLiteral("vertex:%1").arg(vertex), step);
+    }, tr("Move point %1 of segment %2").arg(vertex + 1).arg(row + 1), QStringLiteral("vertex:%1").arg(vertex), step);
 }
 
 bool RouteEditor::insertVertex(int row, int vertex, const QGeoCoordinate &at)
@@ -352,25 +404,99 @@ bool RouteEditor::insertVertex(int row, int vertex, const QGeoCoordinate &at)
     if (!p.isValid())
         return refuse(tr("That is not a valid position."));
     return edit({row}, [&](int, Segment &s) {
-        AreaScan *a = scanOf(s);
-        if (!a || vertex < 0 || vertex > int(a->polygon.size()))
+        FigureAccess f = figureAccess(s);
+        if (!f.growable() || vertex < 0 || vertex > f.size())
             return refuse(tr("Segment %1 has no edge there.").arg(row + 1));
-        a->polygon.insert(a->polygon.begin() + vertex, p);
+        f.insert(vertex, p);
         return true;
-    }, tr("Add a corner to segment %1").arg(row + 1), QStringLiteral("insertVertex"), EditStep::Done);
+    }, tr("Add a point to segment %1").arg(row + 1), QStringLiteral("insertVertex"), EditStep::Done);
 }
 
 bool RouteEditor::removeVertex(int row, int vertex)
 {
     return edit({row}, [&](int, Segment &s) {
-        AreaScan *a = scanOf(s);
-        if (!a || vertex < 0 || vertex >= int(a->polygon.size()))
-            return refuse(tr("Segment %1 has no corner %2.").arg(row + 1).arg(vertex + 1));
-        if (a->polygon.size() <= 3)
-            return refuse(tr("An area keeps at least three corners."));
-        a->polygon.erase(a->polygon.begin() + vertex);
+        FigureAccess f = figureAccess(s);
+        if (vertex < 0 || vertex >= f.size())
+            return refuse(tr("Segment %1 has no point %2.").arg(row + 1).arg(vertex + 1));
+        if (f.size() <= f.minimum())
+            return refuse(tr("This figure keeps at least %n point(s).", nullptr, f.minimum()));
+        f.erase(vertex);
         return true;
-    }, tr("Remove corner %1 of segment %2").arg(vertex + 1).arg(row + 1), QStringLiteral("removeVertex"), EditStep::Done);
+    }, tr("Remove point %1 of segment %2").arg(vertex + 1).arg(row + 1), QStringLiteral("removeVertex"), EditStep::Done);
+}
+
+bool RouteEditor::setRadius(int row, double meters, EditStep step)
+{
+    if (!(meters > 0) || !std::isfinite(meters))
+        return refuse(tr("A radius is above 0 m."));
+    return edit({row}, [&](int, Segment &s) {
+        AlgorithmSegment *a = asAlgorithmSegment(s);
+        if (!a || a->figure != FigureType::Circle)
+            return refuse(tr("Segment %1 is no circle.").arg(row + 1));
+        if (a->figureParameters.empty())
+            a->figureParameters.push_back(meters);
+        else
+            a->figureParameters[0] = meters;
+        return true;
+    }, tr("Set the radius of segment %1 to %2 m").arg(row + 1).arg(meters), QStringLiteral("radius"), step);
+}
+
+void RouteEditor::setCatalog(const AlgorithmCatalog *catalog)
+{
+    m_catalog = catalog;
+}
+
+const AlgorithmCatalog &RouteEditor::catalog() const
+{
+    return m_catalog ? *m_catalog : AlgorithmCatalog::builtIn();
+}
+
+int RouteEditor::addSegment(const QString &algorithm, const QList<QGeoCoordinate> &points)
+{
+    const AlgorithmKind kind = algorithmKindOf(algorithm);
+    const QString className = algorithm.contains(QLatin1Char('.')) || kind == AlgorithmKind::Unknown ? algorithm
+                                                                                                      : algorithmClassName(kind);
+    if (kind == AlgorithmKind::AreaScan)
+        return addAreaScan(points);
+    if (kind == AlgorithmKind::Waypoint || kind == AlgorithmKind::TakeOff || kind == AlgorithmKind::Landing) {
+        if (points.size() != 1 || !geo(points.first()).isValid())
+            return refuse(tr("A point segment needs one valid position.")), -1;
+        Waypoint w = newWaypointAt(m_model->count(), geo(points.first()));
+        w.role = kind == AlgorithmKind::TakeOff ? WaypointRole::Takeoff : kind == AlgorithmKind::Landing ? WaypointRole::Land : WaypointRole::Pass;
+        return insertSegments(m_model->count(), {std::move(w)}, tr("Add %1").arg(roleName(w.role)));
+    }
+    const AlgorithmDefinition *def = catalog().byClassName(className);
+    if (!def)
+        return refuse(tr("Sortie has no description of the algorithm %1.").arg(algorithm)), -1;
+    AlgorithmSegment a;
+    a.algorithm = def->className;
+    a.figure = def->figure;
+    for (const QGeoCoordinate &c : points)
+        a.points.push_back({geo(c), 0.0, AltitudeType::Agl});
+    std::vector<GeoPoint> corners = figureOf(Segment(a));
+    for (const GeoPoint &g : corners)
+        if (!g.isValid())
+            return refuse(tr("That is not a valid position.")), -1;
+    if (int(corners.size()) < def->minimumPoints || (def->figure == FigureType::Polygon && !enclosesArea(corners)))
+        return refuse(tr("%1 needs at least %n point(s)%2.", nullptr, def->minimumPoints)
+                          .arg(def->displayName, def->figure == FigureType::Polygon ? tr(" enclosing an area") : QString())), -1;
+    const RouteSettings &rs = m_model->settings();
+    const double height = std::max(rs.safeAltitude, std::min(50.0, rs.maxAltitude));
+    if (def->figure == FigureType::Point || def->figure == FigureType::Circle)
+        for (FigurePoint &p : a.points)
+            p.altitude = height;  // the point tools fly at their point's altitude
+    if (def->figure == FigureType::Circle)
+        a.figureParameters = {50.0};
+    for (const ParameterDefinition &p : def->parameters) {
+        QString value = p.defaultValue;
+        if (p.name == QLatin1String("height"))
+            value = parameterNumberText(height);
+        else if (p.name == QLatin1String("speed"))
+            value = parameterNumberText(rs.initialSpeed);
+        if (!value.isEmpty())
+            a.parameters.push_back({p.name, value});
+    }
+    return insertSegments(m_model->count(), {std::move(a)}, tr("Add %1").arg(def->displayName));
 }
 
 bool RouteEditor::setRouteProperty(const QString &name, const QVariant &value)

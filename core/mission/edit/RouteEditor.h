@@ -1,5 +1,6 @@
 #pragma once
 
+#include "AlgorithmCatalog.h"
 #include "MissionEnums.h"
 #include "Route.h"
 
@@ -76,12 +77,24 @@ public:
 
     // Area scans: a polygon of at least three corners enclosing an area. Returns the new row or -1.
     Q_INVOKABLE int addAreaScan(const QList<QGeoCoordinate> &polygon);
+    // A segment of any algorithm by class name (full or short: "CircleAlgorithm") on the points
+    // drawn: a polygon's corners, a corridor's centre line, a circle's centre, a point. Its
+    // parameters start at the definition's defaults, its height and speed at the route's.
+    // Returns the new row or -1.
+    Q_INVOKABLE int addSegment(const QString &algorithm, const QList<QGeoCoordinate> &points);
+    // The figure's points (area corners, corridor line, circle centre) by index.
     Q_INVOKABLE bool moveVertex(int row, int vertex, const QGeoCoordinate &to,
                                 sortie::mission::MissionEnums::EditStep step = EditStep::Done);
-    // A corner between `vertex - 1` and `vertex` (a click on that edge); vertex == count appends.
+    // A point between `vertex - 1` and `vertex` (a click on that edge); vertex == count appends.
     Q_INVOKABLE bool insertVertex(int row, int vertex, const QGeoCoordinate &at);
-    // Keeps at least three corners.
+    // Keeps the points the figure needs (three corners, two line points).
     Q_INVOKABLE bool removeVertex(int row, int vertex);
+    // A circle's radius in metres (its figure parameter).
+    Q_INVOKABLE bool setRadius(int row, double meters, sortie::mission::MissionEnums::EditStep step = EditStep::Done);
+
+    // The algorithms a server described (TraverseAlgorithm); the built-in ones until then.
+    void setCatalog(const AlgorithmCatalog *catalog);
+    const AlgorithmCatalog &catalog() const;
 
     Q_INVOKABLE bool setRouteProperty(const QString &name, const QVariant &value);
     // The rows a view's selection covers, sorted.
@@ -108,6 +121,7 @@ private:
 
     RouteModel *m_model;
     QUndoStack *m_stack;
+    const AlgorithmCatalog *m_catalog = nullptr;
     int m_gesture = 1;          // the gesture steps belong to; Done closes it
     bool m_gestureOpen = false;  // a Continuing step of m_gesture was pushed
 };

@@ -5,6 +5,7 @@
 #include "SegmentParameters.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sortie::mission {
 
@@ -63,6 +64,7 @@ QHash<int, QByteArray> RouteModel::roleNames() const
         {AltitudeRole, "altitude"}, {AltitudeTypeRole, "altitudeType"}, {SpeedRole, "speed"}, {TurnTypeRole, "turnType"},
         {AcceptanceRadiusRole, "acceptanceRadius"}, {ActionCountRole, "actionCount"}, {ActionsSummaryRole, "actionsSummary"},
         {ActionsRole, "actions"}, {PolygonRole, "polygon"}, {ScanParametersRole, "scanParameters"}, {ScanPlanRole, "scanPlan"},
+        {LabelRole, "label"},
         {Qt::DisplayRole, "display"},
     };
 }
@@ -73,19 +75,21 @@ QVariant RouteModel::data(const QModelIndex &index, int role) const
         return {};
     const Segment &s = segment(index.row());
     const Waypoint *w = asWaypoint(s);
-    const AreaScan *scan = asAreaScan(s);
+    // A value a segment does not give (an unknown algorithm's altitude) is missing, never 0.
+    auto known = [](double v) { return std::isnan(v) ? QVariant() : QVariant(v); };
     switch (role) {
     case Qt::DisplayRole:  // no row number in it: rows are renumbered by inserts, their text is not
-        return QStringLiteral("%1 %2, %3 · %4 m %5").arg(w ? roleName(w->role) : QStringLiteral("areaScan"))
+        return QStringLiteral("%1 %2, %3 · %4 m %5").arg(segmentKindName(s))
             .arg(anchorOf(s).latitude, 0, 'f', 6).arg(anchorOf(s).longitude, 0, 'f', 6)
             .arg(altitudeOf(s)).arg(altitudeTypeName(altitudeTypeOf(s)));
-    case KindRole: return w ? roleName(w->role) : QStringLiteral("areaScan");
+    case KindRole: return segmentKindName(s);
+    case LabelRole: return segmentLabel(index.row(), s);
     case SequenceRole: return index.row() + 1;
     case LatitudeRole: return anchorOf(s).latitude;
     case LongitudeRole: return anchorOf(s).longitude;
-    case AltitudeRole: return altitudeOf(s);
+    case AltitudeRole: return known(altitudeOf(s));
     case AltitudeTypeRole: return altitudeTypeName(altitudeTypeOf(s));
-    case SpeedRole: return speedOf(s);
+    case SpeedRole: return known(speedOf(s));
     case TurnTypeRole: return w ? turnTypeName(w->turnType) : QVariant();
     case AcceptanceRadiusRole: return w ? w->acceptanceRadius : QVariant();
     case ActionCountRole: return w ? int(w->actions.size()) : 0;
@@ -99,20 +103,22 @@ QVariant RouteModel::data(const QModelIndex &index, int role) const
     }
     case PolygonRole: {
         QVariantList list;
-        if (scan)
-            for (const GeoPoint &g : scan->polygon)
-                list << QVariantMap{{"latitude", g.latitude}, {"longitude", g.longitude}};
+        for (const GeoPoint &g : figureOf(s))
+            list << QVariantMap{{"latitude", g.latitude}, {"longitude", g.longitude}};
         return list;
     }
-    case ScanParametersRole: return scan ? parametersToVariant(s) : QVariant();
-    case ScanPlanRole: return scan ? scanPlanToVariant(m_scanPlans.outcome(*scan)) : QVariant();
+    case ScanParametersRole: return w ? QVariant() : parametersToVariant(s);
+    case ScanPlanRole: {
+        const std::optional<AreaScan> scan = scanOf(s);
+        return scan ? scanPlanToVariant(m_scanPlans.outcome(*scan)) : QVariant();
+    }
     default: return {};
     }
 }
 
 QString RouteModel::segmentLabelFor(int row, const Segment &s)
 {
-    return (isWaypoint(s) ? QStringLiteral("Waypoint %1") : QStringLiteral("Area scan %1")).arg(row + 1);
+    return segmentLabel(row, s);
 }
 
 void RouteModel::insertSegments(int row, std::vector<Segment> segments)

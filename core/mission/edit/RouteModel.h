@@ -25,7 +25,7 @@ class RouteModel : public QAbstractListModel
 
 public:
     enum Roles {
-        KindRole = Qt::UserRole + 1,  // "waypoint", "takeoff", "land", "areaScan"
+        KindRole = Qt::UserRole + 1,  // "waypoint", "takeoff", "land", "areaScan", "circle", ... "unknown"
         SequenceRole,                 // 1-based row number
         LatitudeRole,                 // degrees (a scan: its first vertex)
         LongitudeRole,
@@ -37,9 +37,10 @@ public:
         ActionCountRole,
         ActionsSummaryRole,           // "Wait 5 s · Photo every 20 m"
         ActionsRole,                  // list of maps, see ActionVariants.h
-        PolygonRole,                  // a scan's vertices: list of {latitude, longitude}
-        ScanParametersRole,           // a scan's parameters by wire name (SegmentParameters.h)
-        ScanPlanRole,                 // a scan's generated plan: {ok, message, transects, photoCount, path, ...}
+        PolygonRole,                  // an area's corners, a corridor's line, a circle's centre: list of {latitude, longitude}
+        ScanParametersRole,           // a segment's parameters by wire name (SegmentParameters.h); none for a waypoint
+        ScanPlanRole,                 // an area scan's or photogrammetry's plan: {ok, message, transects, photoCount, path, ...}
+        LabelRole,                    // "Waypoint 3", "Circle 5"
     };
     Q_ENUM(Roles)
 
@@ -68,7 +69,7 @@ public:
     void setSettings(const RouteSettings &settings);
     void resetRoute(Route route);
 
-    static QString segmentLabelFor(int row, const Segment &s);  // "Waypoint 12", "Area scan 4"
+    static QString segmentLabelFor(int row, const Segment &s);  // "Waypoint 12", "Area scan 4", "Circle 5"
 
 signals:
     void countChanged();

@@ -32,8 +32,11 @@ public:
             const Segment &s = route.segments[i];
             if (const Waypoint *w = asWaypoint(s))
                 waypoint(*w, int(i));
+            else if (const std::optional<AreaScan> planned = scanOf(s))
+                scan(*planned, int(i));
             else
-                scan(std::get<AreaScan>(s), int(i));
+                m_out.notices << QStringLiteral("%1 was left out: MAVLink has no such segment and Sortie does not plan it.")
+                                     .arg(segmentLabel(int(i), s));
         }
         if (route.settings.endAction == EndAction::ReturnHome)
             m_out.items.push_back(command(mav::NavReturnToLaunch));

@@ -48,6 +48,14 @@ void setParam(pb::SegmentDefinition &s, const char *name, const std::string &val
     p->set_value(value);
 }
 
+void eraseParam(pb::SegmentDefinition &s, const char *name)
+{
+    auto *params = s.mutable_parametervalues();
+    for (int i = params->size() - 1; i >= 0; --i)
+        if (params->Get(i).name() == name)
+            params->DeleteSubrange(i, 1);
+}
+
 void setNumber(pb::SegmentDefinition &s, const char *name, double v) { setParam(s, name, javaDoubleString(v)); }
 
 AltitudeType altitudeTypeOf(const pb::SegmentDefinition &s, const pb::FigurePoint *point)
@@ -131,7 +139,8 @@ AreaScan scanFromHci(const pb::SegmentDefinition &s, const HciSegmentContext &ct
                 *notices << QStringLiteral("An area scan's %1: %2 It keeps Sortie's default.").arg(name, error);
             continue;
         }
-        customCamera |= key.startsWith(QLatin1String("camera")) && key != QLatin1String("camera");
+        customCamera |= key.startsWith(QLatin1String("camera"))
+            && (key != QLatin1String("camera") || builtInCamera(QString::fromStdString(v.value())));
     }
     scan.parameters = std::get<AreaScan>(segment).parameters;
     AreaScanParameters &p = scan.parameters;
@@ -146,6 +155,96 @@ AreaScan scanFromHci(const pb::SegmentDefinition &s, const HciSegmentContext &ct
     }
     syncDerivedFields(p);
     return scan;
+}
+
+// Merge by position: an action of the same kind at the same index keeps its definition's ids.
+void actionsToHci(const std::vector<WaypointAction> &actions, const std::vector<WaypointAction> *before, pb::SegmentDefinition &s)
+{
+    const google::protobuf::RepeatedPtrField<pb::ActionDefinition> old = s.actiondefinitions();
+    s.clear_actiondefinitions();
+    for (size_t i = 0; i < actions.size(); ++i) {
+        pb::ActionDefinition def;
+        if (before && i < before->size() && int(i) < old.size() && actionKindName((*before)[i]) == actionKindName(actions[i]))
+            def = old[int(i)];
+        actionToHci(actions[i], def);
+        *s.add_actiondefinitions() = std::move(def);
+    }
+}
+
+// Any other algorithm, as the server described it: figure and parameter text, nothing parsed
+// that is not needed, so an algorithm Sortie does not know comes back exactly as it went.
+AlgorithmSegment algorithmSegmentFromHci(const pb::SegmentDefinition &s)
+{
+    AlgorithmSegment a;
+    a.algorithm = QString::fromStdString(s.algorithmclassname());
+    a.figure = FigureType(int(s.figure().type()));
+    for (const pb::FigurePoint &p : s.figure().points()) {
+        const AltitudeType type = p.altitudetype() == pb::AT_WGS84 ? AltitudeType::Amsl : AltitudeType::Agl;
+        a.points.push_back({{p.latitude() / kDeg, p.longitude() / kDeg}, type == AltitudeType::Amsl ? p.wgs84altitude() : p.aglaltitude(), type});
+    }
+    if (a.figure == FigureType::Polygon && a.points.size() > 3 && a.points.front().position == a.points.back().position)
+        a.points.pop_back();  // sent closed
+    for (const auto &fp : s.figure().parameters())
+        a.figureParameters.push_back(fp.value());
+    for (const auto &v : s.parametervalues())
+        a.parameters.push_back({QString::fromStdString(v.name()), QString::fromStdString(v.value())});
+    for (const auto &d : s.actiondefinitions())
+        a.actions.push_back(actionFromHci(d));
+    return a;
+}
+
+void algorithmSegmentToHci(const AlgorithmSegment &a, const AlgorithmSegment *before, pb::SegmentDefinition &s)
+{
+    const bool fresh = !before;
+    if (fresh || before->algorithm != a.algorithm)
+        s.set_algorithmclassname(a.algorithm.toStdString());
+    if (fresh || before->figure != a.figure)
+        s.mutable_figure()->set_type(pb::FigureType(int(a.figure)));
+    if (fresh || before->points != a.points) {
+        const bool closed = a.figure == FigureType::Polygon && !a.points.empty();
+        const size_t n = a.points.size() + (closed ? 1 : 0);
+        auto *points = s.mutable_figure()->mutable_points();
+        while (points->size() > int(n))
+            points->RemoveLast();
+        for (size_t i = 0; i < n; ++i) {
+            const FigurePoint &f = a.points[i % a.points.size()];
+            const bool exists = int(i) < points->size();
+            pb::FigurePoint *p = exists ? points->Mutable(int(i)) : s.mutable_figure()->add_points();
+            if (!exists || differs(p->latitude() / kDeg, f.position.latitude))
+                p->set_latitude(f.position.latitude * kDeg);
+            if (!exists || differs(p->longitude() / kDeg, f.position.longitude))
+                p->set_longitude(f.position.longitude * kDeg);
+            const pb::AltitudeType type = f.altitudeType == AltitudeType::Amsl ? pb::AT_WGS84 : pb::AT_AGL;
+            if (!exists || !p->has_altitudetype() || p->altitudetype() != type)
+                p->set_altitudetype(type);
+            const double current = type == pb::AT_WGS84 ? p->wgs84altitude() : p->aglaltitude();
+            if (!exists || differs(current, f.altitude))
+                type == pb::AT_WGS84 ? p->set_wgs84altitude(f.altitude) : p->set_aglaltitude(f.altitude);
+        }
+    }
+    if (fresh || before->figureParameters != a.figureParameters) {
+        auto *params = s.mutable_figure()->mutable_parameters();
+        while (params->size() > int(a.figureParameters.size()))
+            params->RemoveLast();
+        for (size_t i = 0; i < a.figureParameters.size(); ++i) {
+            pb::FigureParameter *p = int(i) < params->size() ? params->Mutable(int(i)) : s.mutable_figure()->add_parameters();
+            if (differs(p->value(), a.figureParameters[i]) || !p->has_value())
+                p->set_value(a.figureParameters[i]);
+        }
+    }
+    if (fresh || before->parameters != a.parameters) {
+        if (before)
+            for (const ParameterValue &v : before->parameters)
+                if (!a.value(v.name))
+                    eraseParam(s, v.name.toStdString().c_str());
+        for (const ParameterValue &v : a.parameters) {
+            const QString *old = before ? before->value(v.name) : nullptr;
+            if (!old || *old != v.value)
+                setParam(s, v.name.toStdString().c_str(), v.value.toStdString());
+        }
+    }
+    if (fresh || before->actions != a.actions)
+        actionsToHci(a.actions, before ? &before->actions : nullptr, s);
 }
 
 void waypointToHci(const Waypoint &w, const Waypoint *before, pb::SegmentDefinition &s)
@@ -184,27 +283,8 @@ void waypointToHci(const Waypoint &w, const Waypoint *before, pb::SegmentDefinit
         setParam(s, "altitudeType", w.altitudeType == AltitudeType::Amsl ? "AMSL" : "AGL");
     if ((fresh && w.acceptanceRadius != 0) || (!fresh && differs(before->acceptanceRadius, w.acceptanceRadius)))
         setNumber(s, "acceptanceRadius", w.acceptanceRadius);
-    if (fresh || before->actions != w.actions) {
-        // Merge by position: an action of the same kind at the same index keeps its definition's ids.
-        const google::protobuf::RepeatedPtrField<pb::ActionDefinition> old = s.actiondefinitions();
-        s.clear_actiondefinitions();
-        for (size_t i = 0; i < w.actions.size(); ++i) {
-            pb::ActionDefinition def;
-            if (before && i < before->actions.size() && int(i) < old.size()
-                && actionKindName(before->actions[i]) == actionKindName(w.actions[i]))
-                def = old[int(i)];
-            actionToHci(w.actions[i], def);
-            *s.add_actiondefinitions() = std::move(def);
-        }
-    }
-}
-
-void eraseParam(pb::SegmentDefinition &s, const char *name)
-{
-    auto *params = s.mutable_parametervalues();
-    for (int i = params->size() - 1; i >= 0; --i)
-        if (params->Get(i).name() == name)
-            params->DeleteSubrange(i, 1);
+    if (fresh || before->actions != w.actions)
+        actionsToHci(w.actions, before ? &before->actions : nullptr, s);
 }
 
 // The metres between passes the scan flies: its own sideDistance or the camera's footprint less
@@ -277,28 +357,33 @@ void scanToHci(const AreaScan &a, const AreaScan *before, pb::SegmentDefinition 
 Result<Segment> segmentFromHci(const pb::SegmentDefinition &s, const HciSegmentContext &ctx, QStringList *notices)
 {
     const std::string &algorithm = s.algorithmclassname();
-    if (algorithm == kAreaScanAlgorithm) {
-        if (s.figure().type() != pb::FT_POLYGON)
-            return MissionError{QStringLiteral("an area scan whose figure is not a polygon"), {}, 0, 0, {}};
+    const auto origin = std::make_shared<const pb::SegmentDefinition>(s);
+    if (algorithm == kAreaScanAlgorithm && s.figure().type() == pb::FT_POLYGON && s.figure().points_size() >= 3) {
         AreaScan scan = scanFromHci(s, ctx, notices);
-        scan.origin.message = std::make_shared<const pb::SegmentDefinition>(s);
+        scan.origin.message = origin;
         return Segment(std::move(scan));
     }
     if (algorithm == kWaypointAlgorithm || algorithm == kTakeoffAlgorithm || algorithm == kLandingAlgorithm) {
-        Result<Waypoint> w = waypointFromHci(s, ctx);
-        if (!w)
-            return w.error();
-        Waypoint out = std::move(w).value();
-        out.origin.message = std::make_shared<const pb::SegmentDefinition>(s);
-        return Segment(std::move(out));
+        if (Result<Waypoint> w = waypointFromHci(s, ctx)) {
+            Waypoint out = std::move(w).value();
+            out.origin.message = origin;
+            return Segment(std::move(out));
+        } else if (notices) {
+            *notices << QStringLiteral("A %1 segment could not be read as one (%2); it is kept as the server sent it.")
+                            .arg(QString::fromStdString(algorithm).section(QLatin1Char('.'), -1), w.error().message);
+        }
+    } else if (algorithm == kAreaScanAlgorithm && notices) {
+        *notices << QStringLiteral("An area scan without a polygon of three corners is kept as the server sent it.");
     }
-    return MissionError{QStringLiteral("a segment of algorithm \"%1\", which Sortie cannot edit").arg(QString::fromStdString(algorithm)),
-                        {}, 0, 0, {}};
+    // Any other algorithm (or one that does not read as its kind) is kept as the server described it.
+    AlgorithmSegment other = algorithmSegmentFromHci(s);
+    other.origin.message = origin;
+    return Segment(std::move(other));
 }
 
 pb::SegmentDefinition segmentToHci(const Segment &segment, const HciSegmentContext &ctx)
 {
-    const SegmentOrigin &origin = isWaypoint(segment) ? std::get<Waypoint>(segment).origin : std::get<AreaScan>(segment).origin;
+    const SegmentOrigin &origin = originOf(segment);
     pb::SegmentDefinition out;
     std::optional<Segment> before;
     if (origin.message) {
@@ -311,8 +396,10 @@ pb::SegmentDefinition segmentToHci(const Segment &segment, const HciSegmentConte
     }
     if (const Waypoint *w = asWaypoint(segment))
         waypointToHci(*w, before ? &std::get<Waypoint>(*before) : nullptr, out);
+    else if (const AreaScan *scan = asAreaScan(segment))
+        scanToHci(*scan, before ? &std::get<AreaScan>(*before) : nullptr, out);
     else
-        scanToHci(std::get<AreaScan>(segment), before ? &std::get<AreaScan>(*before) : nullptr, out);
+        algorithmSegmentToHci(std::get<AlgorithmSegment>(segment), before ? &std::get<AlgorithmSegment>(*before) : nullptr, out);
     return out;
 }
 

@@ -1,5 +1,7 @@
 #include "SegmentParameters.h"
 
+#include "Camera.h"
+
 #include <cmath>
 
 namespace sortie::mission {
@@ -135,10 +137,14 @@ bool setScan(AreaScanParameters &p, const QString &name, const QVariant &value, 
     if (name == QLatin1String("speed"))
         return number(value, name, 0.1, 1000, false, error, [&](double d) { p.speed = d; });
     if (name == QLatin1String("camera")) {
+        // A camera Sortie knows brings its optics; another name only names the optics there are.
         const QString n = value.toString();
         if (n.isEmpty())
             return fail(error, QStringLiteral("camera needs a name."));
-        p.camera.name = n;
+        if (const auto known = builtInCamera(n))
+            p.camera = *known;
+        else
+            p.camera.name = n;
         return true;
     }
     // A custom camera's optics, Sortie's own names (docs/missions.md): millimetres and pixels.
@@ -207,12 +213,55 @@ QVariant waypointValue(const Waypoint &w, const QString &name)
     return {};
 }
 
+// The wire text of a typed value: numbers the shortest way, booleans as "true"/"false".
+std::optional<QString> wireText(const QVariant &v)
+{
+    switch (v.metaType().id()) {
+    case QMetaType::Bool: return v.toBool() ? QStringLiteral("true") : QStringLiteral("false");
+    case QMetaType::Int: case QMetaType::LongLong: case QMetaType::UInt: case QMetaType::ULongLong:
+    case QMetaType::Double: case QMetaType::Float: {
+        const double d = v.toDouble();
+        return std::isfinite(d) ? std::optional(parameterNumberText(d)) : std::nullopt;
+    }
+    case QMetaType::QString: return v.toString();
+    default: return v.canConvert<QString>() ? std::optional(v.toString()) : std::nullopt;
+    }
+}
+
+QVariant typedValue(const ParameterDefinition *def, const QString &text)
+{
+    if (!def)
+        return text;
+    switch (def->type) {
+    case ParameterType::Integer:
+    case ParameterType::Double:
+        if (const auto d = parseParameterNumber(text))
+            return *d;
+        return text;  // shown as sent, flagged by validation
+    case ParameterType::Boolean:
+        if (const auto b = parseParameterBoolean(text))
+            return *b;
+        return text;
+    default: return text;
+    }
+}
+
 } // namespace
 
-QStringList parameterNames(const Segment &segment)
+QStringList parameterNames(const Segment &segment, const AlgorithmCatalog &catalog)
 {
     if (isWaypoint(segment))
         return {QStringLiteral("speed"), QStringLiteral("wpTurnType"), QStringLiteral("altitudeType"), QStringLiteral("acceptanceRadius")};
+    if (const AlgorithmSegment *a = asAlgorithmSegment(segment)) {
+        QStringList names;
+        if (const AlgorithmDefinition *def = catalog.byClassName(a->algorithm))
+            for (const ParameterDefinition &p : def->parameters)
+                names << p.name;
+        for (const ParameterValue &v : a->parameters)
+            if (!names.contains(v.name))
+                names << v.name;
+        return names;
+    }
     return {QStringLiteral("height"), QStringLiteral("groundSampleDistance"), QStringLiteral("altitudeType"),
             QStringLiteral("overlapForward"), QStringLiteral("overlapSide"), QStringLiteral("sideDistance"),
             QStringLiteral("directionAngle"), QStringLiteral("overshoot"), QStringLiteral("speed"), QStringLiteral("camera"),
@@ -220,20 +269,47 @@ QStringList parameterNames(const Segment &segment)
             QStringLiteral("cameraImageWidth"), QStringLiteral("cameraImageHeight")};
 }
 
-QVariant parameterValue(const Segment &segment, const QString &name)
+QVariant parameterValue(const Segment &segment, const QString &name, const AlgorithmCatalog &catalog)
 {
     if (const Waypoint *w = asWaypoint(segment))
         return waypointValue(*w, name);
+    if (const AlgorithmSegment *a = asAlgorithmSegment(segment)) {
+        const QString *text = a->value(name);
+        if (!text || text->isEmpty())
+            return {};
+        const AlgorithmDefinition *def = catalog.byClassName(a->algorithm);
+        return typedValue(def ? def->parameter(name) : nullptr, *text);
+    }
     return scanValue(std::get<AreaScan>(segment).parameters, name);
 }
 
-bool setParameterValue(Segment &segment, const QString &name, const QVariant &value, QString *error)
+bool setParameterValue(Segment &segment, const QString &name, const QVariant &value, QString *error, const AlgorithmCatalog &catalog)
 {
     if (Waypoint *w = asWaypoint(segment)) {
         Waypoint copy = *w;
         if (!setWaypoint(copy, name, value, error))
             return false;
         *w = std::move(copy);
+        return true;
+    }
+    if (AlgorithmSegment *a = asAlgorithmSegment(segment)) {
+        const AlgorithmDefinition *def = catalog.byClassName(a->algorithm);
+        const ParameterDefinition *p = def ? def->parameter(name) : nullptr;
+        if (!p && !a->value(name))
+            return fail(error, QStringLiteral("%1 has no parameter \"%2\".").arg(algorithmLabel(*a), name));
+        std::optional<QString> text = wireText(value);
+        if (p && p->type == ParameterType::Selection && value.metaType() == QMetaType::fromType<AltitudeType>())
+            text = altitudeTypeName(value.value<AltitudeType>());
+        if (!text)
+            return fail(error, QStringLiteral("%1 cannot take that value.").arg(name));
+        if (p) {
+            if (p->type == ParameterType::Boolean && value.metaType().id() != QMetaType::Bool && !parseParameterBoolean(*text)
+                && !text->isEmpty())
+                return fail(error, QStringLiteral("%1 is true or false, not \"%2\".").arg(name, *text));
+            if (const QString problem = p->check(*text); !problem.isEmpty())
+                return fail(error, problem);
+        }
+        a->setValue(name, *text);
         return true;
     }
     AreaScanParameters p = std::get<AreaScan>(segment).parameters;

@@ -2,6 +2,8 @@
 
 #include "ScanPlanCache.h"
 
+#include <cmath>
+
 namespace sortie::mission {
 
 std::vector<PathPoint> flightPath(const Route &route, ScanPlanCache *cache)
@@ -18,7 +20,17 @@ std::vector<PathPoint> flightPath(const Route &route, ScanPlanCache *cache)
             path.push_back(p);
             continue;
         }
-        const AreaScan &scan = std::get<AreaScan>(s);
+        const std::optional<AreaScan> planned = scanOf(s);
+        if (!planned) {
+            // A segment the client has no planner for flies through its figure's points until
+            // the server processes it.
+            const double altitude = altitudeOf(s), speed = speedOf(s);
+            for (const GeoPoint &g : figureOf(s))
+                path.push_back({g, std::isnan(altitude) ? 0.0 : altitude, altitudeTypeOf(s), std::isnan(speed) ? route.settings.initialSpeed : speed,
+                                0.0, WaypointRole::Pass, int(i)});
+            continue;
+        }
+        const AreaScan &scan = *planned;
         AreaScanOutcome scratch;
         const AreaScanOutcome &o = scanOutcome(scan, cache, scratch);
         const double speed = scan.parameters.speed;
