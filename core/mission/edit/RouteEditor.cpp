@@ -235,11 +235,20 @@ bool RouteEditor::setAltitude(const QList<int> &rows, double altitude, EditStep 
     }, tr("Set altitude to %1 m").arg(altitude), QStringLiteral("altitude"), step);
 }
 
-bool RouteEditor::setAltitudeType(const QList<int> &rows, AltitudeType type)
+bool RouteEditor::setAltitudeType(const QList<int> &rows, AltitudeType type, bool keepHeight)
 {
-    // The number stays: without terrain data a conversion would be a guess. See docs/missions.md.
+    // Through the ground under each waypoint when it is known; otherwise the number stays (a
+    // conversion would be a guess). A scan's altitude has no one point to convert at. See docs/missions.md.
+    const GroundLookup ground = keepHeight ? m_ground : GroundLookup();
     QString error;
     return edit(rows, [&](int, Segment &s) {
+        if (Waypoint *w = asWaypoint(s)) {
+            if (ground && w->altitudeType != type)
+                if (const std::optional<double> g = ground(w->position))
+                    w->altitude += type == AltitudeType::Amsl ? *g : -*g;
+            w->altitudeType = type;
+            return true;
+        }
         if (AlgorithmSegment *a = asAlgorithmSegment(s); a && !parameterNames(s, catalog()).contains(QStringLiteral("altitudeType"))) {
             for (FigurePoint &p : a->points)
                 p.altitudeType = type;
@@ -444,6 +453,7 @@ bool RouteEditor::setRadius(int row, double meters, EditStep step)
 void RouteEditor::setCatalog(const AlgorithmCatalog *catalog)
 {
     m_catalog = catalog;
+    emit catalogChanged();
 }
 
 const AlgorithmCatalog &RouteEditor::catalog() const

@@ -12,6 +12,7 @@
 #include <QVariantMap>
 
 #include <functional>
+#include <optional>
 
 namespace sortie::mission {
 
@@ -59,7 +60,9 @@ public:
     // area scan) are left alone.
     Q_INVOKABLE bool setAltitude(const QList<int> &rows, double altitude,
                                  sortie::mission::MissionEnums::EditStep step = EditStep::Done);
-    Q_INVOKABLE bool setAltitudeType(const QList<int> &rows, sortie::mission::MissionEnums::AltitudeType type);
+    // With keepHeight (and a ground lookup), a waypoint keeps the height it flies at: AGL -> AMSL adds
+    // the ground under it, AMSL -> AGL subtracts it. Without terrain there, the number stays.
+    Q_INVOKABLE bool setAltitudeType(const QList<int> &rows, sortie::mission::MissionEnums::AltitudeType type, bool keepHeight = true);
     Q_INVOKABLE bool setSpeed(const QList<int> &rows, double speed);
     Q_INVOKABLE bool setTurnType(const QList<int> &rows, sortie::mission::MissionEnums::TurnType type);
     Q_INVOKABLE bool setAcceptanceRadius(const QList<int> &rows, double meters);
@@ -106,9 +109,16 @@ public:
     void replaceRoute(Route route, const QString &text);
     Waypoint newWaypointAt(int row, const GeoPoint &position) const;
 
+    // The ground elevation (metres above the geoid) at a point, nullopt where unknown: set by the
+    // application from its terrain sources, used by setAltitudeType.
+    using GroundLookup = std::function<std::optional<double>(const GeoPoint &)>;
+    void setGroundLookup(GroundLookup lookup) { m_ground = std::move(lookup); }
+
 signals:
     // Rows an edit added (addWaypoint, insertWaypoint, addAreaScan): views select them.
     void rowsAdded(int first, int count);
+    // Another description of the algorithms arrived: editors rebuild.
+    void catalogChanged();
     void refused(const QString &reason);
 
 private:
@@ -122,6 +132,7 @@ private:
     RouteModel *m_model;
     QUndoStack *m_stack;
     const AlgorithmCatalog *m_catalog = nullptr;
+    GroundLookup m_ground;
     int m_gesture = 1;          // the gesture steps belong to; Done closes it
     bool m_gestureOpen = false;  // a Continuing step of m_gesture was pushed
 };

@@ -110,6 +110,7 @@ SegmentEditorModel::SegmentEditorModel(RouteModel *model, RouteEditor *editor, Q
         connect(model, signal, this, &SegmentEditorModel::rebuild);
     connect(model, &QAbstractItemModel::rowsRemoved, this, &SegmentEditorModel::rebuild);
     connect(model, &QAbstractItemModel::rowsInserted, this, &SegmentEditorModel::rebuild);
+    connect(editor, &RouteEditor::catalogChanged, this, &SegmentEditorModel::rebuild);
     connect(editor, &RouteEditor::refused, this, [this](const QString &reason) {
         m_problem = reason;
         emit valuesChanged();
