@@ -4,6 +4,9 @@
 #include "SimObjectStore.h"
 #include "SimRouteProcessor.h"
 #include "SimUsers.h"
+#include "SimVehicleProfiles.h"
+
+#include "AlgorithmProto.h"
 
 namespace sortie::sim {
 namespace {
@@ -17,29 +20,6 @@ int findByName(const SimObjectStore &store, const char *type, const std::string 
         if (get(*w).name() == name)
             return get(*w).id();
     return -1;
-}
-
-void addParameter(pb::VehicleProfile &p, int id, pb::VehicleParameterType type, double value)
-{
-    auto *v = p.add_parameters();
-    v->set_id(id);
-    v->set_version(1);
-    v->set_type(type);
-    v->set_value(value);
-}
-
-void addDefinition(pb::TraverseAlgorithm &a, int id, const char *name, pb::ParameterType type, const char *value,
-                   pb::PhysicalSemantic semantic, bool mandatory)
-{
-    auto *d = a.add_parameterdefinitions();
-    d->set_id(id);
-    d->set_version(1);
-    d->set_name(name);
-    d->set_type(type);
-    d->set_defaultvalue(value);
-    d->set_physicalsemantic(semantic);
-    d->set_mandatory(mandatory);
-    d->set_category(pb::PG_BASIC);
 }
 
 pb::SegmentDefinition waypointSegment(double latDeg, double lonDeg, double agl, const char *speed)
@@ -61,41 +41,25 @@ pb::SegmentDefinition waypointSegment(double latDeg, double lonDeg, double agl, 
     return s;
 }
 
-int seedProfile(SimObjectStore &store, qint64 now)
+// Every algorithm Sortie's catalog describes, as TraverseAlgorithm objects with their parameter definitions,
+// so that clients build their editors from the server's description. Ones the store has are kept.
+void seedAlgorithms(SimObjectStore &store, qint64 now)
 {
-    if (int id = findByName(store, "VehicleProfile", "EMU Copter", [](const auto &w) -> const auto & { return w.vehicleprofile(); }); id >= 0)
-        return id;
-    pb::DomainObjectWrapper w;
-    auto *p = w.mutable_vehicleprofile();
-    p->set_name("EMU Copter");
-    p->set_vehicletype(pb::VT_MULTICOPTER);
-    p->set_code("emu-copter");
-    p->set_sealed(true);
-    addParameter(*p, store.allocateId(), pb::VPT_MAX_HORIZONTAL_SPEED, 12.0);
-    addParameter(*p, store.allocateId(), pb::VPT_MAX_CLIMB_RATE, 4.0);
-    addParameter(*p, store.allocateId(), pb::VPT_MAX_ALTITUDE_AGL, 120.0);
-    addParameter(*p, store.allocateId(), pb::VPT_WAYPOINT_ACCEPTANCE_RADIUS, 2.0);
-    return store.save(QStringLiteral("VehicleProfile"), w, now).object->vehicleprofile().id();
-}
-
-void seedAlgorithm(SimObjectStore &store, qint64 now)
-{
-    if (findByName(store, "TraverseAlgorithm", "Waypoint", [](const auto &w) -> const auto & { return w.traversealgorithm(); }) >= 0)
-        return;
-    pb::DomainObjectWrapper w;
-    auto *a = w.mutable_traversealgorithm();
-    a->set_name("Waypoint");
-    a->set_code("Waypoint");
-    a->set_implementationclass(SimRouteProcessor::kWaypointAlgorithm);
-    a->set_figuretype(pb::FT_POINT);
-    a->set_selectfigure(false);
-    addDefinition(*a, store.allocateId(), "speed", pb::PT_DOUBLE, "5.0", pb::PS_SPEED, true);
-    addDefinition(*a, store.allocateId(), "wpTurnType", pb::PT_SELECTION, "STOP_AND_TURN", pb::PS_NONE, true);
-    addDefinition(*a, store.allocateId(), "avoidObstacles", pb::PT_BOOLEAN, "true", pb::PS_NONE, false);
-    addDefinition(*a, store.allocateId(), "avoidTerrain", pb::PT_BOOLEAN, "true", pb::PS_NONE, false);
-    addDefinition(*a, store.allocateId(), "altitudeType", pb::PT_SELECTION, "AGL", pb::PS_NONE, true);
-    addDefinition(*a, store.allocateId(), "cornerRadius", pb::PT_DOUBLE, "", pb::PS_DISTANCE, false);
-    store.save(QStringLiteral("TraverseAlgorithm"), w, now);
+    for (const mission::AlgorithmDefinition &definition : mission::AlgorithmCatalog::builtIn().algorithms()) {
+        const std::string className = definition.className.toStdString();
+        bool known = false;
+        for (const auto *w : store.list(QStringLiteral("TraverseAlgorithm")))
+            known = known || w->traversealgorithm().implementationclass() == className;
+        if (known)
+            continue;
+        pb::DomainObjectWrapper w;
+        *w.mutable_traversealgorithm() = mission::algorithmToProto(definition);
+        for (auto &d : *w.mutable_traversealgorithm()->mutable_parameterdefinitions()) {
+            d.set_id(store.allocateId());
+            d.set_version(1);
+        }
+        store.save(QStringLiteral("TraverseAlgorithm"), w, now);
+    }
 }
 
 } // namespace
@@ -123,8 +87,8 @@ QList<int> SimDemoContent::seed(SimObjectStore &store, const SimUsers &users, in
         user->set_role(u.administrator ? pb::UR_ADMINISTRATOR : pb::UR_OPERATOR);
         store.insert(QStringLiteral("User"), w);
     }
-    const int profileId = seedProfile(store, now);
-    seedAlgorithm(store, now);
+    const int profileId = seedVehicleProfiles(store, simVehicleProfiles(), now).value(QStringLiteral("EMU Copter"));
+    seedAlgorithms(store, now);
     const auto *profile = store.find(QStringLiteral("VehicleProfile"), profileId);
 
     QList<int> ids;

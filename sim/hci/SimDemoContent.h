@@ -8,9 +8,9 @@ namespace sortie::sim {
 class SimObjectStore;
 class SimUsers;
 
-// The objects a fresh simulator offers, named like UgCS's emulator: the "EMU Copter" profile, vehicles
-// EMU-101, EMU-102, EMU-103 near Riga, the Waypoint traverse algorithm, the users, and a demo mission
-// with one route. Objects already in the store (loaded from a file) are kept, matched by name.
+// The objects a fresh simulator offers, named like UgCS's emulator: the vehicle profiles of
+// SimVehicleProfiles.h with their camera payloads, vehicles EMU-101, EMU-102, EMU-103 (profile "EMU Copter")
+// near Riga, every traverse algorithm of Sortie's catalog, the users, and a demo mission with one route. Objects already in the store (loaded from a file) are kept, matched by name.
 class SimDemoContent
 {
 public:

@@ -1,13 +1,19 @@
 #include "SimRouteProcessor.h"
 
 #include "Messages.pb.h"
+#include "SimVehicleProfiles.h"
+
+#include "AlgorithmCatalog.h"
+#include "Geodesy.h"
 
 #include <google/protobuf/io/coded_stream.h>
 #include <google/protobuf/io/zero_copy_stream_impl_lite.h>
 
 #include <QCryptographicHash>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 namespace sortie::sim {
@@ -84,8 +90,129 @@ void addActions(const pb::SegmentDefinition &definition, pb::ProcessedSegment *s
             s->set_startdelay(c.startdelay());
             s->set_autocalc(c.autocalc());
         } else {
-            message(segment, pb::MS_INFORMATION, QStringLiteral("The simulator keeps this action in the route but does not perform it"));
+            const std::string text = "The simulator keeps this action in the route but does not perform it";
+            bool said = false;
+            for (const auto &m : segment->messageset().messages())
+                said = said || m.defaulttext() == text;
+            if (!said)
+                message(segment, pb::MS_INFORMATION, QString::fromStdString(text));
             continue;
+        }
+        *segment->add_segmentactions() = std::move(a);
+    }
+}
+
+// The figure in degrees, each point's altitude in its own frame (the first point's frame counts).
+mission::SegmentFigure figureOf(const pb::SegmentDefinition &definition)
+{
+    mission::SegmentFigure f;
+    const auto &figure = definition.figure();
+    f.type = mission::FigureType(int(figure.type()));
+    for (int i = 0; i < figure.points_size(); ++i) {
+        const auto &p = figure.points(i);
+        const bool agl = p.altitudetype() == pb::AT_AGL;
+        if (i == 0)
+            f.pointFrame = agl ? mission::HeightFrame::Agl : mission::HeightFrame::Amsl;
+        f.points.push_back({p.latitude() * kDeg, p.longitude() * kDeg});
+        f.pointAltitudes.push_back(agl ? p.aglaltitude() : p.wgs84altitude());
+    }
+    for (const auto &parameter : figure.parameters())
+        f.parameters.push_back(parameter.value());
+    return f;
+}
+
+mission::ParameterValues valuesOf(const pb::SegmentDefinition &definition)
+{
+    mission::ParameterValues values;
+    values.reserve(definition.parametervalues_size());
+    for (const auto &p : definition.parametervalues())
+        values.push_back({QString::fromStdString(p.name()), QString::fromStdString(p.value())});
+    return values;
+}
+
+QString segmentName(int index, const mission::AlgorithmDefinition *algorithm, const std::string &className)
+{
+    const QString tool = algorithm ? algorithm->displayName : QString::fromStdString(className).section(QLatin1Char('.'), -1);
+    return QStringLiteral("Segment %1 (%2)").arg(index + 1).arg(tool);
+}
+
+double altitudeAgl(const mission::PlannedPoint &p, double ground)
+{
+    return p.frame == mission::HeightFrame::Agl ? p.height : p.height - ground;
+}
+
+// The route's and the profile's limits over the planned points: each rule reports its first offender.
+void checkLimits(const pb::Route &route, const SimRouteLimits &limits, double ground, const mission::SegmentPlan &plan,
+                 const QString &name, pb::ProcessedSegment *segment)
+{
+    auto first = [&](auto test) -> const mission::PlannedPoint * {
+        for (const auto &p : plan.points)
+            if (test(p))
+                return &p;
+        return nullptr;
+    };
+    auto airborne = [](const mission::PlannedPoint &p) { return p.kind == mission::PlannedPoint::Kind::Waypoint; };
+    const QString prefix = name + QStringLiteral(": ");
+    if (route.has_maxaltitude())
+        if (const auto *p = first([&](const auto &q) { return altitudeAgl(q, ground) > route.maxaltitude(); }))
+            invalid(segment, 0, prefix + QStringLiteral("Altitude %1 m is above the route's maximum altitude of %2 m")
+                                    .arg(metres(altitudeAgl(*p, ground)), metres(route.maxaltitude())));
+    if (limits.maxAltitudeAgl > 0)
+        if (const auto *p = first([&](const auto &q) { return altitudeAgl(q, ground) > limits.maxAltitudeAgl; }))
+            invalid(segment, 0, prefix + QStringLiteral("Altitude %1 m AGL is above the vehicle profile's limit of %2 m")
+                                    .arg(metres(altitudeAgl(*p, ground)), metres(limits.maxAltitudeAgl)));
+    if (const auto *p = first([&](const auto &q) { return altitudeAgl(q, ground) < 0; }))
+        invalid(segment, 0, prefix + QStringLiteral("Altitude %1 m is below the ground").arg(metres(altitudeAgl(*p, ground))));
+    if (route.has_maxspeed() && route.maxspeed() > 0)
+        if (const auto *p = first([&](const auto &q) { return q.speed > route.maxspeed(); }))
+            invalid(segment, 0, prefix + QStringLiteral("Speed %1 m/s is above the route's maximum speed of %2 m/s")
+                                    .arg(metres(p->speed), metres(route.maxspeed())));
+    if (limits.maxSpeed > 0)
+        if (const auto *p = first([&](const auto &q) { return q.speed > limits.maxSpeed; }))
+            invalid(segment, 0, prefix + QStringLiteral("Speed %1 m/s is above the vehicle profile's limit of %2 m/s")
+                                    .arg(metres(p->speed), metres(limits.maxSpeed)));
+    if (route.has_safealtitude())
+        if (const auto *p = first([&](const auto &q) {
+                const double agl = altitudeAgl(q, ground);
+                return airborne(q) && agl >= 0 && agl < route.safealtitude();
+            }))
+            message(segment, pb::MS_WARNING, prefix + QStringLiteral("Altitude %1 m is below the route's safe altitude of %2 m")
+                                                 .arg(metres(altitudeAgl(*p, ground)), metres(route.safealtitude())));
+}
+
+pb::Action systemAction()
+{
+    pb::Action a;
+    a.set_origin(pb::OO_SYSTEM);
+    return a;
+}
+
+void addCameraActions(const mission::PlannedPoint &p, pb::ProcessedSegment *segment)
+{
+    for (const mission::CameraCommand &c : p.camera) {
+        pb::Action a = systemAction();
+        switch (c.kind) {
+        case mission::CameraCommand::Kind::FaceDown:
+            a.mutable_cameracontrol()->set_tilt(std::numbers::pi / 2);  // UgCS: tilt 90° faces down
+            a.mutable_cameracontrol()->set_roll(0);
+            a.mutable_cameracontrol()->set_yaw(0);
+            break;
+        case mission::CameraCommand::Kind::FaceHeading: {
+            a.mutable_headingchange()->set_heading(c.value / kDeg);
+            a.mutable_headingchange()->set_relativetonorth(true);
+            a.mutable_headingchange()->set_relativetonextwaypoint(false);
+            *segment->add_segmentactions() = std::move(a);
+            a = systemAction();
+            a.mutable_cameracontrol()->set_tilt(0);
+            break;
+        }
+        case mission::CameraCommand::Kind::StartSeries:
+        case mission::CameraCommand::Kind::StopSeries:
+            a.mutable_cameraseriesbydistance()->set_interval(c.value);
+            a.mutable_cameraseriesbydistance()->set_shotsnumber(0);
+            a.mutable_cameraseriesbydistance()->set_startdelay(0);
+            a.mutable_cameraseriesbydistance()->set_autocalc(false);
+            break;
         }
         *segment->add_segmentactions() = std::move(a);
     }
@@ -105,6 +232,7 @@ SimRouteLimits SimRouteLimits::of(const pb::VehicleProfile &profile)
         default: break;
         }
     }
+    limits.cameras = profileCameras(profile);
     return limits;
 }
 
@@ -118,99 +246,115 @@ pb::ProcessedRoute SimRouteProcessor::process(const pb::Route &route, const SimR
     out.set_uuid(route.uuid());
     out.set_modificationuuid(route.modificationuuid());
 
+    const mission::AlgorithmCatalog &catalog = mission::AlgorithmCatalog::builtIn();
+    const double climb = limits.climbRate > 0 ? limits.climbRate : 3;
     double total = 0;
     double minLat = 1e9, maxLat = -1e9, minLon = 1e9, maxLon = -1e9;
-    std::optional<std::pair<double, double>> previous; // lat, lon in degrees
+    std::optional<mission::GeoPoint> previous;
     double previousAgl = 0;
-    const double climb = limits.climbRate > 0 ? limits.climbRate : 3;
+    double speed = route.initialspeed() > 0 ? route.initialspeed() : kDefaultSpeed;
+    double cruise = speed;  // the last segment's own speed (not its overshoot legs'): the next one's default
 
-    for (const auto &definition : route.segments()) {
+    for (int index = 0; index < route.segments_size(); ++index) {
+        const pb::SegmentDefinition &definition = route.segments(index);
         auto *segment = out.add_segments();
         segment->set_uuid(definition.uuid());
         segment->set_modificationuuid(definition.modificationuuid());
         segment->set_status(pb::RPS_PROCESSED);
-        segment->set_algorithmcode("Waypoint");
 
-        if (definition.algorithmclassname() != kWaypointAlgorithm) {
-            invalid(segment, 0, QStringLiteral("The simulator processes waypoint segments only, not '%1'")
-                                    .arg(QString::fromStdString(definition.algorithmclassname())));
+        const mission::AlgorithmDefinition *algorithm = catalog.byClassName(QString::fromStdString(definition.algorithmclassname()));
+        const QString name = segmentName(index, algorithm, definition.algorithmclassname());
+        if (!algorithm) {
+            invalid(segment, 0, QStringLiteral("%1: the simulator has no algorithm '%2'")
+                                    .arg(name, QString::fromStdString(definition.algorithmclassname())));
             continue;
         }
-        if (definition.figure().points_size() == 0) {
-            invalid(segment, 0, QStringLiteral("The segment has no point"));
+        segment->set_algorithmcode(algorithm->code.toStdString());
+
+        mission::PlanContext context;
+        context.cameras = limits.cameras;
+        context.defaultSpeed = cruise;
+        context.previousPosition = previous;
+        const mission::SegmentPlanOutcome outcome = mission::planSegment(*algorithm, figureOf(definition), valuesOf(definition), context);
+        if (!outcome.ok()) {
+            for (const QString &error : outcome.errors)
+                invalid(segment, std::max(0, outcome.wrongPoint), name + QStringLiteral(": ") + error);
             continue;
         }
-        const auto &point = definition.figure().points(0);
-        const double lat = point.latitude() * kDeg, lon = point.longitude() * kDeg;
-        if (std::abs(lat) > 90 || std::abs(lon) > 180 || !std::isfinite(lat) || !std::isfinite(lon)) {
-            invalid(segment, 0, QStringLiteral("The point is not on the globe (latitude and longitude are in radians)"));
-            continue;
-        }
-        const bool agl = point.altitudetype() == pb::AT_AGL;
-        const double altitudeAgl = agl ? point.aglaltitude() : point.wgs84altitude() - ground;
-        const double altitudeAmsl = ground + altitudeAgl;
-
-        double speed = route.initialspeed() > 0 ? route.initialspeed() : kDefaultSpeed;
-        if (const auto text = parameter(definition, "speed"); text && !text->empty()) {
-            bool ok = false;
-            speed = QString::fromStdString(*text).toDouble(&ok);
-            if (!ok || speed <= 0) {
-                invalid(segment, 0, QStringLiteral("The speed '%1' is not a positive number of m/s").arg(QString::fromStdString(*text)));
-                continue;
-            }
-        }
-
-        if (route.has_maxaltitude() && altitudeAgl > route.maxaltitude())
-            invalid(segment, 0, QStringLiteral("Altitude %1 m is above the route's maximum altitude of %2 m")
-                                    .arg(metres(altitudeAgl), metres(route.maxaltitude())));
-        if (limits.maxAltitudeAgl > 0 && altitudeAgl > limits.maxAltitudeAgl)
-            invalid(segment, 0, QStringLiteral("Altitude %1 m AGL is above the vehicle profile's limit of %2 m")
-                                    .arg(metres(altitudeAgl), metres(limits.maxAltitudeAgl)));
-        if (altitudeAgl < 0)
-            invalid(segment, 0, QStringLiteral("Altitude %1 m is below the ground").arg(metres(altitudeAgl)));
-        if (route.has_maxspeed() && route.maxspeed() > 0 && speed > route.maxspeed())
-            invalid(segment, 0, QStringLiteral("Speed %1 m/s is above the route's maximum speed of %2 m/s")
-                                    .arg(metres(speed), metres(route.maxspeed())));
-        if (limits.maxSpeed > 0 && speed > limits.maxSpeed)
-            invalid(segment, 0, QStringLiteral("Speed %1 m/s is above the vehicle profile's limit of %2 m/s")
-                                    .arg(metres(speed), metres(limits.maxSpeed)));
-        if (route.has_safealtitude() && altitudeAgl >= 0 && altitudeAgl < route.safealtitude())
-            message(segment, pb::MS_WARNING, QStringLiteral("Altitude %1 m is below the route's safe altitude of %2 m")
-                                                 .arg(metres(altitudeAgl), metres(route.safealtitude())));
+        mission::SegmentPlan plan = *outcome.plan;
+        // Terrain post-processing (AGL conversion, clearance) belongs here: it edits `plan`'s points
+        // before they are checked and written.
+        checkLimits(route, limits, ground, plan, name, segment);
+        for (const QString &w : plan.warnings)
+            message(segment, pb::MS_WARNING, name + QStringLiteral(": ") + w);
+        for (const QString &n : plan.notes)
+            message(segment, pb::MS_INFORMATION, name + QStringLiteral(": ") + n);
         if (segment->status() == pb::RPS_INVALID)
             continue;
 
-        const double distance = previous ? sphericalDistance(previous->first, previous->second, lat, lon) : 0.0;
-        double time = distance / speed + std::abs(altitudeAgl - previousAgl) / climb;
-
-        pb::Action change;
-        change.set_origin(pb::OO_USER);
-        change.mutable_speedchange()->set_groundspeed(speed);
-        change.mutable_speedchange()->set_rateofclimb(climb);
-        change.set_estimatedtime(0);
-        *segment->add_segmentactions() = std::move(change);
-
-        pb::Action waypoint;
-        waypoint.set_origin(pb::OO_USER);
-        auto *w = waypoint.mutable_waypoint();
-        w->set_latitude(point.latitude());
-        w->set_longitude(point.longitude());
-        w->set_wgs84altitude(altitudeAmsl);
-        w->set_elevation(ground);
-        w->set_acceptanceradius(limits.acceptanceRadius);
-        w->set_turntype(turnType(parameter(definition, "wpTurnType").value_or("STOP_AND_TURN")));
-        w->set_altitudeframe(agl ? pb::AF_AGL : pb::AF_WGS84);
-        waypoint.set_estimatedtime(time);
-        *segment->add_segmentactions() = std::move(waypoint);
-        addActions(definition, segment, &time);
-
+        const pb::WaypointTurnType turn = turnType(parameter(definition, "wpTurnType").value_or("STOP_AND_TURN"));
+        double distance = 0, time = 0;
+        for (size_t i = 0; i < plan.points.size(); ++i) {
+            const mission::PlannedPoint &p = plan.points[i];
+            const double agl = altitudeAgl(p, ground);
+            const double leg = previous ? mission::geodesicDistance(*previous, p.position) : 0.0;
+            const double legTime = leg / p.speed + std::abs(agl - previousAgl) / climb;
+            if (i == 0 || p.speed != speed) {
+                pb::Action change;
+                change.set_origin(i == 0 ? pb::OO_USER : pb::OO_SYSTEM);
+                change.mutable_speedchange()->set_groundspeed(p.speed);
+                change.mutable_speedchange()->set_rateofclimb(climb);
+                change.set_estimatedtime(0);
+                *segment->add_segmentactions() = std::move(change);
+                speed = p.speed;
+            }
+            const double lat = p.position.latitude / kDeg, lon = p.position.longitude / kDeg;
+            const double amsl = ground + agl;
+            pb::Action action;
+            action.set_origin(pb::OO_USER);
+            action.set_estimatedtime(legTime);
+            if (p.kind == mission::PlannedPoint::Kind::Takeoff) {
+                auto *t = action.mutable_takeoff();
+                t->set_latitude(lat);
+                t->set_longitude(lon);
+                t->set_wgs84altitude(amsl);
+                t->set_elevation(ground);
+                t->set_acceptanceradius(limits.acceptanceRadius);
+                t->set_rateofclimb(climb);
+            } else if (p.kind == mission::PlannedPoint::Kind::Landing) {
+                auto *l = action.mutable_landing();
+                l->set_latitude(lat);
+                l->set_longitude(lon);
+                l->set_wgs84altitude(amsl);
+                l->set_elevation(ground);
+                l->set_acceptanceradius(limits.acceptanceRadius);
+                l->set_rateofdescent(climb);
+            } else {
+                auto *w = action.mutable_waypoint();
+                w->set_latitude(lat);
+                w->set_longitude(lon);
+                w->set_wgs84altitude(amsl);
+                w->set_elevation(ground);
+                w->set_acceptanceradius(limits.acceptanceRadius);
+                w->set_turntype(turn);
+                w->set_altitudeframe(p.frame == mission::HeightFrame::Agl ? pb::AF_AGL : pb::AF_WGS84);
+            }
+            *segment->add_segmentactions() = std::move(action);
+            addCameraActions(p, segment);
+            if (p.userActions)
+                addActions(definition, segment, &time);
+            if (!p.overshoot)
+                cruise = p.speed;
+            distance += leg;
+            time += legTime;
+            previous = p.position;
+            previousAgl = agl;
+            minLat = std::min(minLat, p.position.latitude), maxLat = std::max(maxLat, p.position.latitude);
+            minLon = std::min(minLon, p.position.longitude), maxLon = std::max(maxLon, p.position.longitude);
+        }
         segment->set_estimateddistance(distance);
         segment->set_estimatedtime(time);
         total += distance;
-        previous = {lat, lon};
-        previousAgl = altitudeAgl;
-        minLat = std::min(minLat, lat), maxLat = std::max(maxLat, lat);
-        minLon = std::min(minLon, lon), maxLon = std::max(maxLon, lon);
     }
     out.set_estimateddistance(total);
     out.set_diameter(previous ? sphericalDistance(minLat, minLon, maxLat, maxLon) : 0.0);
@@ -241,10 +385,16 @@ std::vector<FlightModel::Waypoint> SimRouteProcessor::flightPlan(const pb::Proce
         for (const auto &action : segment.segmentactions()) {
             if (action.has_speedchange() && action.speedchange().groundspeed() > 0)
                 speed = action.speedchange().groundspeed();
-            if (!action.has_waypoint())
-                continue;
-            const auto &w = action.waypoint();
-            plan.push_back({w.latitude() * kDeg, w.longitude() * kDeg, w.wgs84altitude() - homeGround, speed});
+            if (action.has_waypoint()) {
+                const auto &w = action.waypoint();
+                plan.push_back({w.latitude() * kDeg, w.longitude() * kDeg, w.wgs84altitude() - homeGround, speed});
+            } else if (action.has_takeoff()) {
+                const auto &t = action.takeoff();
+                plan.push_back({t.latitude() * kDeg, t.longitude() * kDeg, t.wgs84altitude() - homeGround, speed});
+            } else if (action.has_landing()) {
+                const auto &l = action.landing();
+                plan.push_back({l.latitude() * kDeg, l.longitude() * kDeg, l.elevation() - homeGround, speed});
+            }
         }
     }
     if (plan.empty())

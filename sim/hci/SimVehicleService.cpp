@@ -4,9 +4,12 @@
 #include "HciServerConnection.h"
 #include "Messages.pb.h"
 #include "SimRouteProcessor.h"
+#include "SimVehicleProfiles.h"
 #include "SimSessionTable.h"
 #include "SimVehicle.h"
 #include "SimWorld.h"
+
+#include "AlgorithmCatalog.h"
 
 #include <QTimer>
 
@@ -23,6 +26,7 @@ void SimVehicleService::install(HciRequestDispatcher &d)
     d.add(pb::SendCommandRequest::default_instance(), A::LoggedIn, [this](SimCall &c) { sendCommand(c); });
     d.add(pb::UploadRouteRequest::default_instance(), A::LoggedIn, [this](SimCall &c) { uploadRoute(c); });
     d.add(pb::ProcessRouteRequest::default_instance(), A::LoggedIn, [this](SimCall &c) { processRoute(c); });
+    d.add(pb::GetParametersSelectionValuesRequest::default_instance(), A::LoggedIn, [this](SimCall &c) { selectionValues(c); });
     d.add(pb::GetTelemetryRequest::default_instance(), A::LoggedIn, [this](SimCall &c) { telemetry(c); });
 }
 
@@ -120,18 +124,68 @@ void SimVehicleService::uploadRoute(SimCall &call)
     }
 }
 
+namespace {
+// The route's own copy of its profile when it carries one, else the stored profile of that id.
+const pb::VehicleProfile *routeProfile(const pb::Route &route, const SimObjectStore &store)
+{
+    if (route.vehicleprofile().parameters_size() > 0)
+        return &route.vehicleprofile();
+    const auto *stored = store.find(QStringLiteral("VehicleProfile"), route.vehicleprofile().id());
+    return stored ? &stored->vehicleprofile() : nullptr;
+}
+}
+
 void SimVehicleService::processRoute(SimCall &call)
 {
     const auto &r = static_cast<const pb::ProcessRouteRequest &>(call.request);
     const auto &route = r.route();
     SimRouteLimits limits;
-    if (route.vehicleprofile().parameters_size() > 0)
-        limits = SimRouteLimits::of(route.vehicleprofile());
-    else if (const auto *stored = m_s.world.store().find(QStringLiteral("VehicleProfile"), route.vehicleprofile().id()))
-        limits = SimRouteLimits::of(stored->vehicleprofile());
+    if (const pb::VehicleProfile *profile = routeProfile(route, m_s.world.store())) {
+        limits = SimRouteLimits::of(*profile);
+        limits.cameras = profileCameras(*profile, &m_s.world.store());
+    }
     pb::ProcessRouteResponse response;
     *response.mutable_processedroute() = SimRouteProcessor::process(route, limits, m_s.world.groundElevation());
     response.set_hash(SimRouteProcessor::hash(route));
+    call.respond.reply(response);
+}
+
+// The values of an algorithm's selection parameters for a route: the cameras of the route's profile
+// (value = payload profile id, as UgCS clients send it; the first is the default), and each other
+// selection's choices from the catalog with its default marked. selectionId = the parameter's name.
+void SimVehicleService::selectionValues(SimCall &call)
+{
+    const auto &r = static_cast<const pb::GetParametersSelectionValuesRequest &>(call.request);
+    const QString className = QString::fromStdString(r.algorithm().implementationclass());
+    const mission::AlgorithmDefinition *algorithm = mission::AlgorithmCatalog::builtIn().byClassName(className);
+    if (!algorithm) {
+        call.respond.error(QStringLiteral("The simulator has no algorithm '%1'").arg(className));
+        return;
+    }
+    const pb::VehicleProfile *profile = routeProfile(r.route(), m_s.world.store());
+    pb::GetParametersSelectionValuesResponse response;
+    for (const mission::ParameterDefinition &p : algorithm->parameters) {
+        if (p.type != mission::ParameterType::Selection)
+            continue;
+        auto *selection = response.add_selections();
+        selection->set_selectionid(p.name.toStdString());
+        if (p.name == QLatin1String("camera")) {
+            const auto cameras = profile ? profileCameras(*profile, &m_s.world.store()) : std::vector<mission::ProfileCamera>{};
+            for (size_t i = 0; i < cameras.size(); ++i) {
+                auto *item = selection->add_items();
+                item->set_value(std::to_string(cameras[i].id));
+                item->set_description(cameras[i].camera.name.toStdString());
+                item->set_markdefault(i == 0);
+            }
+            continue;
+        }
+        for (const mission::ParameterChoice &c : p.choices) {
+            auto *item = selection->add_items();
+            item->set_value(c.value.toStdString());
+            item->set_description(c.displayName.toStdString());
+            item->set_markdefault(c.value == p.defaultValue);
+        }
+    }
     call.respond.reply(response);
 }
 

@@ -26,6 +26,7 @@ private:
     void sendCommand(SimCall &call);
     void uploadRoute(SimCall &call);
     void processRoute(SimCall &call);
+    void selectionValues(SimCall &call);
     void telemetry(SimCall &call);
     QString lockedBy(const SimCall &call, int vehicleId) const;
 

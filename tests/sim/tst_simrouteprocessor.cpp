@@ -107,7 +107,7 @@ private slots:
         QCOMPARE(out.segments(1).status(), pb::RPS_INVALID);
         QCOMPARE(out.segments(1).wrongpointnumber(), 0);
         QCOMPARE(out.segments(1).messageset().messages(0).severity(), pb::MS_ERROR);
-        QCOMPARE(firstMessage(out.segments(1)), QStringLiteral("Altitude 130.0 m is above the route's maximum altitude of 120.0 m"));
+        QCOMPARE(firstMessage(out.segments(1)), QStringLiteral("Segment 2 (Waypoint): Altitude 130.0 m is above the route's maximum altitude of 120.0 m"));
         QCOMPARE(out.segments(1).segmentactions_size(), 0);
     }
 
@@ -122,13 +122,13 @@ private slots:
         const auto limits = SimRouteLimits::of(profile);
         auto out = SimRouteProcessor::process(twoPoints(50, "12"), limits, kGround);
         QCOMPARE(out.segments(1).status(), pb::RPS_INVALID);
-        QCOMPARE(firstMessage(out.segments(1)), QStringLiteral("Speed 12.0 m/s is above the vehicle profile's limit of 8.0 m/s"));
+        QCOMPARE(firstMessage(out.segments(1)), QStringLiteral("Segment 2 (Waypoint): Speed 12.0 m/s is above the vehicle profile's limit of 8.0 m/s"));
         out = SimRouteProcessor::process(twoPoints(101), limits, kGround);
-        QCOMPARE(firstMessage(out.segments(1)), QStringLiteral("Altitude 101.0 m AGL is above the vehicle profile's limit of 100.0 m"));
+        QCOMPARE(firstMessage(out.segments(1)), QStringLiteral("Segment 2 (Waypoint): Altitude 101.0 m AGL is above the vehicle profile's limit of 100.0 m"));
         pb::Route fast = twoPoints(50, "9");
         fast.set_maxspeed(8.5);
         out = SimRouteProcessor::process(fast, {}, kGround);
-        QCOMPARE(firstMessage(out.segments(1)), QStringLiteral("Speed 9.0 m/s is above the route's maximum speed of 8.5 m/s"));
+        QCOMPARE(firstMessage(out.segments(1)), QStringLiteral("Segment 2 (Waypoint): Speed 9.0 m/s is above the route's maximum speed of 8.5 m/s"));
     }
 
     void softProblemsAreWarningsAndHardOnesErrors()
@@ -145,14 +145,16 @@ private slots:
         QVERIFY(firstMessage(out.segments(1)).contains(QLatin1String("'fast'")));
 
         r = twoPoints();
-        r.mutable_segments(1)->set_algorithmclassname("com.ugcs.ucs.service.routing.impl.AreaScanAlgorithm");
+        r.mutable_segments(1)->set_algorithmclassname("com.example.routing.SpiralAlgorithm");
         out = SimRouteProcessor::process(r, {}, kGround);
-        QVERIFY(firstMessage(out.segments(1)).contains(QLatin1String("AreaScanAlgorithm")));
+        QCOMPARE(out.segments(1).status(), pb::RPS_INVALID);
+        QCOMPARE(firstMessage(out.segments(1)),
+                 QStringLiteral("Segment 2 (SpiralAlgorithm): the simulator has no algorithm 'com.example.routing.SpiralAlgorithm'"));
 
         r = twoPoints();
         r.mutable_segments(0)->mutable_figure()->clear_points();
         out = SimRouteProcessor::process(r, {}, kGround);
-        QCOMPARE(firstMessage(out.segments(0)), QStringLiteral("The segment has no point"));
+        QCOMPARE(firstMessage(out.segments(0)), QStringLiteral("Segment 1 (Waypoint): The segment has no point"));
 
         r = twoPoints(-5);
         out = SimRouteProcessor::process(r, {}, kGround);

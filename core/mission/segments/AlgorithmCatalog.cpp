@@ -1,6 +1,7 @@
 #include "AlgorithmCatalog.h"
 
 #include <array>
+#include <cstring>
 
 namespace sortie::mission {
 
@@ -124,6 +125,7 @@ AlgorithmDefinition algorithm(AlgorithmKind kind, const char *display, FigureTyp
 {
     AlgorithmDefinition a;
     a.className = algorithmClassName(kind);
+    a.code = a.className.section(QLatin1Char('.'), -1).chopped(int(std::strlen("Algorithm")));  // "Circle", "AreaScan"
     a.displayName = QString::fromUtf8(display);
     a.kind = kind;
     a.figure = figure;

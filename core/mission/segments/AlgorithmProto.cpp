@@ -141,4 +141,21 @@ AlgorithmCatalog catalogFromProto(const std::vector<pb::TraverseAlgorithm> &algo
     return catalog;
 }
 
+void applySelections(AlgorithmDefinition &algorithm, const std::vector<pb::Selection> &selections)
+{
+    for (const pb::Selection &selection : selections) {
+        for (ParameterDefinition &p : algorithm.parameters) {
+            if (p.name != text(selection.selectionid()))
+                continue;
+            p.choices.clear();
+            for (const auto &item : selection.items()) {
+                const QString value = text(item.value());
+                p.choices.push_back({value, item.description().empty() ? value : text(item.description())});
+                if (item.markdefault() && p.defaultValue.isEmpty())
+                    p.defaultValue = value;
+            }
+        }
+    }
+}
+
 } // namespace sortie::mission

@@ -5,6 +5,7 @@
 namespace com::ugcs::ucs::proto {
 class TraverseAlgorithm;
 class ParameterDefinition;
+class Selection;
 }
 
 namespace sortie::mission {
@@ -26,5 +27,10 @@ com::ugcs::ucs::proto::TraverseAlgorithm algorithmToProto(const AlgorithmDefinit
 // after the server's, so a server that lists fewer tools still opens every segment.
 AlgorithmCatalog catalogFromProto(const std::vector<com::ugcs::ucs::proto::TraverseAlgorithm> &algorithms,
                                   const AlgorithmCatalog &known = AlgorithmCatalog::builtIn());
+
+// Puts a server's GetParametersSelectionValues answer into the definition: each selection (by
+// selectionId = parameter name) becomes that parameter's choices, its marked item the default when the
+// parameter has none. Selections for parameters the definition lacks are ignored.
+void applySelections(AlgorithmDefinition &algorithm, const std::vector<com::ugcs::ucs::proto::Selection> &selections);
 
 } // namespace sortie::mission

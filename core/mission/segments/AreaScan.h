@@ -30,6 +30,7 @@ struct AreaScanParameters
     double directionDeg = 0.0;              // bearing of the transects, clockwise from north
     double turnaroundMeters = 10.0;         // overshoot beyond each transect end, for the turn
     double speed = 8.0;                     // m/s along the transects
+    double sideDistanceMeters = 0.0;        // UgCS sideDistance: metres between passes; 0 = from footprint and side overlap
     bool operator==(const AreaScanParameters &) const = default;
 };
 

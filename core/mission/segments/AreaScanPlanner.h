@@ -1,6 +1,7 @@
 #pragma once
 
 #include "AreaScan.h"
+#include "CoverageSweep.h"
 
 #include <QString>
 
@@ -34,12 +35,6 @@ struct AreaScanPlan
     int cells = 0;                    // monotone pieces a concave polygon was split into
 };
 
-// Why a scan cannot be planned. The validator turns these into named rules.
-enum class ScanProblem {
-    None, TooFewVertices, InvalidVertex, TooLarge, SelfIntersecting, NoArea, InvalidCamera,
-    InvalidOverlap, InvalidAltitude, InvalidTurnaround, TooManyTransects, NoTransects
-};
-
 struct AreaScanOutcome
 {
     std::optional<AreaScanPlan> plan;
@@ -48,14 +43,9 @@ struct AreaScanOutcome
     bool ok() const { return plan.has_value(); }
 };
 
-// Lawnmower coverage of a polygon. The polygon is projected on the plane tangent at its centre
-// (so the antimeridian and the poles need no special case), swept by lines spaced by the image
-// footprint less the side overlap, and split into monotone cells where the sweep meets a concave
-// notch, so that no transect leaves the polygon. Cells are flown one after another, each as a
-// boustrophedon, choosing the nearest entry each time. Refuses polygons wider than 100 km.
+// Lawnmower coverage of a polygon (sweepPolygon in CoverageSweep.h), lines spaced by the image
+// footprint less the side overlap, photos every footprint less the forward overlap.
+// Refuses polygons wider than 100 km.
 AreaScanOutcome planAreaScan(const AreaScan &scan);
-
-constexpr double kMaxScanRadiusMeters = 50000.0;
-constexpr int kMaxTransects = 20000;
 
 } // namespace sortie::mission
