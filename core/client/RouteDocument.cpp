@@ -16,8 +16,13 @@ RouteDocument::RouteDocument(QObject *parent)
     , m_selection(&m_model)
     , m_analyzer(&m_model)
     , m_segmentEditor(&m_model, &m_editor)
+    , m_preview(&m_model, &m_editor)
 {
-    connect(this, &RouteDocument::currentChanged, this, [this] { m_segmentEditor.setRow(currentRow()); });
+    connect(this, &RouteDocument::currentChanged, this, [this] {
+        m_segmentEditor.setRow(currentRow());
+        m_preview.setRow(currentRow());
+    });
+    connect(&m_preview, &SegmentPreview::changed, this, &RouteDocument::previewChanged);
     connect(&m_editor, &RouteEditor::rowsAdded, this, [this](int first, int count) {
         QList<int> rows;
         for (int r = first; r < first + count; ++r)
@@ -41,48 +46,25 @@ int RouteDocument::currentRow() const
     return current.isValid() && current.row() < m_model.count() ? current.row() : -1;
 }
 
-namespace {
-
-const AreaScan *scanAt(const RouteModel &model, int row)
-{
-    return row >= 0 && row < model.count() ? std::get_if<AreaScan>(&model.segment(row)) : nullptr;
-}
-
-QVariantList coordinates(const std::vector<GeoPoint> &points)
-{
-    QVariantList list;
-    for (const GeoPoint &p : points)
-        list.append(QVariant::fromValue(QGeoCoordinate(p.latitude, p.longitude)));
-    return list;
-}
-
-} // namespace
-
 QVariantList RouteDocument::scanPolygon() const
 {
-    const AreaScan *scan = scanAt(m_model, currentRow());
-    return scan ? coordinates(scan->polygon) : QVariantList();
+    return m_preview.figure();
 }
 
 QVariantList RouteDocument::scanPath() const
 {
-    const AreaScan *scan = scanAt(m_model, currentRow());
-    if (!scan)
-        return {};
-    const AreaScanOutcome outcome = planAreaScan(*scan);
-    return outcome.ok() ? coordinates(outcome.plan->path) : QVariantList();
+    return m_preview.path();
 }
 
 QVariantMap RouteDocument::scanParameters() const
 {
     const int row = currentRow();
-    return scanAt(m_model, row) ? m_model.index(row).data(RouteModel::ScanParametersRole).toMap() : QVariantMap();
+    return row >= 0 ? m_model.index(row).data(RouteModel::ScanParametersRole).toMap() : QVariantMap();
 }
 
 QString RouteDocument::scanProblem() const
 {
-    const AreaScan *scan = scanAt(m_model, currentRow());
-    return scan ? planAreaScan(*scan).message : QString();
+    return m_preview.problem();
 }
 
 QList<int> RouteDocument::selectedRows() const

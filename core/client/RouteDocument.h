@@ -4,6 +4,7 @@
 #include "RouteEditor.h"
 #include "RouteModel.h"
 #include "SegmentEditorModel.h"
+#include "SegmentPreview.h"
 
 #include <QItemSelectionModel>
 #include <QObject>
@@ -34,12 +35,15 @@ class RouteDocument : public QObject
     Q_PROPERTY(QList<int> selectedRows READ selectedRows NOTIFY selectedRowsChanged)
     Q_PROPERTY(QString message READ message NOTIFY messageChanged)
     Q_PROPERTY(int currentRow READ currentRow NOTIFY currentChanged)
-    // The current row's area scan, when it is one: its polygon, the path the planner made of it
-    // (transects and turnarounds, QGeoCoordinates) and its parameters by wire name; empty otherwise.
-    Q_PROPERTY(QVariantList scanPolygon READ scanPolygon NOTIFY currentChanged)
-    Q_PROPERTY(QVariantList scanPath READ scanPath NOTIFY currentChanged)
+    // The current segment, unless it is a waypoint: its figure (an area's corners, a corridor's
+    // line, a circle's centre), the path it flies (QGeoCoordinates, from `preview`) and its
+    // parameters by wire name; empty otherwise.
+    Q_PROPERTY(QVariantList scanPolygon READ scanPolygon NOTIFY previewChanged)
+    Q_PROPERTY(QVariantList scanPath READ scanPath NOTIFY previewChanged)
     Q_PROPERTY(QVariantMap scanParameters READ scanParameters NOTIFY currentChanged)
-    Q_PROPERTY(QString scanProblem READ scanProblem NOTIFY currentChanged)
+    Q_PROPERTY(QString scanProblem READ scanProblem NOTIFY previewChanged)
+    // The current segment's figure and path, planned at most once per frame while it is edited.
+    Q_PROPERTY(sortie::mission::SegmentPreview *preview READ preview CONSTANT)
 
 public:
     explicit RouteDocument(QObject *parent = nullptr);
@@ -50,6 +54,7 @@ public:
     QItemSelectionModel *selection() { return &m_selection; }
     mission::RouteAnalyzer *analyzer() { return &m_analyzer; }
     mission::SegmentEditorModel *segmentEditor() { return &m_segmentEditor; }
+    mission::SegmentPreview *preview() { return &m_preview; }
     const mission::Route &route() const { return m_model.route(); }
 
     bool isModified() const { return !m_undo.isClean(); }
@@ -86,6 +91,7 @@ signals:
     void selectedRowsChanged();
     void messageChanged();
     void currentChanged();
+    void previewChanged();
     // load() replaced the route: a new baseline (what "unsaved edits" are measured against).
     void loaded();
 
@@ -98,6 +104,7 @@ private:
     QItemSelectionModel m_selection;
     mission::RouteAnalyzer m_analyzer;
     mission::SegmentEditorModel m_segmentEditor;
+    mission::SegmentPreview m_preview;
     QString m_message;
 };
 

@@ -30,6 +30,10 @@ class AreaScanLayer : public MapLayer
     Q_PROPERTY(bool editable READ isEditable WRITE setEditable NOTIFY editableChanged)
     Q_PROPERTY(QColor color READ color WRITE setColor NOTIFY colorChanged)
     Q_PROPERTY(int vertexCount READ vertexCount NOTIFY modelsChanged)
+    // false: the points are a line (a corridor's centre line), not an area: no fill, no closing edge.
+    Q_PROPERTY(bool closed READ isClosed WRITE setClosed NOTIFY shapeChanged)
+    // A circle around the first point, metres (0: none), with a handle on its east side to drag.
+    Q_PROPERTY(double radius READ radius WRITE setRadius NOTIFY shapeChanged)
     Q_PROPERTY(int transectPointCount READ transectPointCount NOTIFY modelsChanged)
 
 public:
@@ -48,6 +52,12 @@ public:
     QColor color() const { return m_color; }
     void setColor(const QColor &color);
     int vertexCount() const { return m_polygon.count(); }
+    bool isClosed() const { return m_closed; }
+    void setClosed(bool closed);
+    double radius() const { return m_radius; }
+    void setRadius(double meters);
+    // Where the radius handle is, in item pixels (NaN when there is no circle).
+    Q_INVOKABLE QPointF radiusHandlePosition() const;
     int transectPointCount() const { return m_transects.count(); }
 
     Q_INVOKABLE int vertexAt(QPointF position, qreal radius = 10) const;
@@ -61,6 +71,8 @@ signals:
     void colorChanged();
     void vertexMoved(int index, const QGeoCoordinate &coordinate, sortie::mission::MissionEnums::EditStep step);
     void vertexRemoveRequested(int index);
+    void radiusMoved(double meters, sortie::mission::MissionEnums::EditStep step);
+    void shapeChanged();
     // The edge from vertex index to the next one (the last edge closes the polygon).
     void edgeClicked(int index, const QGeoCoordinate &coordinate, int modifiers);
 
@@ -73,6 +85,8 @@ protected:
 
 private:
     QGeoCoordinate dragTarget() const;
+    double metersPerUnit() const;  // ground metres per normalised unit at the circle's centre
+    double radiusAt(QPointF position) const;
     static QPolygonF project(const std::vector<QPointF> &points, int displaced, QPointF offset, const MapViewport &view);
 
     CoordinateListModel m_ownPolygon; // behind the list properties
@@ -89,6 +103,10 @@ private:
     int m_pressEdge = -1;
     QPointF m_pressPos;
     QPointF m_pressPoint;  // the pressed vertex where the drag began (normalised)
+    bool m_pressRadius = false;
+    bool m_closed = true;
+    double m_radius = 0.0;
+    double m_dragRadius = 0.0;  // what the handle shows while dragged
     QPointF m_dragOffset;
     bool m_dragging = false;
 };

@@ -67,6 +67,9 @@ Page {
                 onVertexMoved: (index, coordinate, step) => page.doc.editor.moveVertex(page.doc.currentRow, index, coordinate, step)
                 onEdgeClicked: (index, coordinate, modifiers) => page.doc.editor.insertVertex(page.doc.currentRow, index + 1, coordinate)
                 onVertexRemoveRequested: index => page.doc.editor.removeVertex(page.doc.currentRow, index)
+                closed: page.doc ? page.doc.preview.figureType !== "polyline" : true
+                radius: page.doc ? page.doc.preview.radius : 0
+                onRadiusMoved: (meters, step) => page.doc.editor.setRadius(page.doc.currentRow, meters, step)
             }
             AreaScanLayer {
                 objectName: "scanDraftLayer"

@@ -55,7 +55,7 @@ public:
                 checkNeighbour(row);
                 continue;
             }
-            const std::optional<AreaScan> planned = scanOf(s);
+            const std::optional<AreaScan> planned = isAreaScan(s) ? scanOf(s) : std::nullopt;
             if (!planned) {
                 checkAlgorithmSegment(row, std::get<AlgorithmSegment>(s));
                 continue;
@@ -142,12 +142,13 @@ private:
                     .arg(label(row), a.algorithm));
             return;
         }
-        if (int(a.points.size()) < def->minimumPoints)
-            add(Severity::Error, "figure-points", row, QStringLiteral("%1 needs at least %2 points.").arg(label(row)).arg(def->minimumPoints));
-        for (const QString &problem : ParameterReader(*def, a.parameters).problems())
-            add(Severity::Error, "parameter", row, QStringLiteral("%1: %2").arg(label(row), problem));
-        if (a.figure == FigureType::Circle && !(a.figureParameters.size() >= 1 && a.figureParameters[0] > 0))
-            add(Severity::Error, "circle-radius", row, QStringLiteral("%1 needs a radius above 0 m.").arg(label(row)));
+        // What the planner (the same one sortie-sim processes with) cannot plan, by parameter or point.
+        const SegmentPlanOutcome o = planSegment(*def, plannerFigure(a), a.parameters, {});
+        for (const QString &problem : o.errors)
+            add(Severity::Error, "segment-plan", row, QStringLiteral("%1: %2").arg(label(row), problem));
+        if (o.ok())
+            for (const QString &warning : o.plan->warnings)
+                add(Severity::Warning, "segment-plan", row, QStringLiteral("%1: %2").arg(label(row), warning));
     }
 
     void checkNeighbour(int row)

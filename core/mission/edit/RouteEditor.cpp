@@ -1,6 +1,7 @@
 #include "RouteEditor.h"
 
 #include "ActionVariants.h"
+#include "Camera.h"
 #include "EditSegmentsCommand.h"
 #include "InsertSegmentsCommand.h"
 #include "MissionLog.h"
@@ -450,6 +451,25 @@ bool RouteEditor::setRadius(int row, double meters, EditStep step)
     }, tr("Set the radius of segment %1 to %2 m").arg(row + 1).arg(meters), QStringLiteral("radius"), step);
 }
 
+QVariantList RouteEditor::drawingTools() const
+{
+    QVariantList tools;
+    for (const AlgorithmDefinition &d : catalog().algorithms()) {
+        if (d.kind == AlgorithmKind::Waypoint || d.kind == AlgorithmKind::TakeOff || d.kind == AlgorithmKind::Landing)
+            continue;  // a click on the map adds those
+        const QString figure = d.figure == FigureType::Polygon ? QStringLiteral("polygon")
+                             : d.figure == FigureType::Polyline ? QStringLiteral("polyline")
+                             : d.figure == FigureType::Circle ? QStringLiteral("circle") : QStringLiteral("point");
+        const QVariantMap tool{{QStringLiteral("algorithm"), d.className}, {QStringLiteral("name"), d.displayName},
+                               {QStringLiteral("figure"), figure}, {QStringLiteral("minimumPoints"), std::max(1, d.minimumPoints)}};
+        if (d.kind == AlgorithmKind::AreaScan)
+            tools.prepend(tool);
+        else
+            tools.append(tool);
+    }
+    return tools;
+}
+
 void RouteEditor::setCatalog(const AlgorithmCatalog *catalog)
 {
     m_catalog = catalog;
@@ -501,6 +521,8 @@ int RouteEditor::addSegment(const QString &algorithm, const QList<QGeoCoordinate
         QString value = p.defaultValue;
         if (p.name == QLatin1String("height"))
             value = parameterNumberText(height);
+        else if (p.name == QLatin1String("camera") && value.isEmpty() && !builtInCameras().empty())
+            value = builtInCameras().front().name;  // a photo tool flies with a camera from the start
         else if (p.name == QLatin1String("speed"))
             value = parameterNumberText(rs.initialSpeed);
         if (!value.isEmpty())

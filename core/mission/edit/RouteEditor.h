@@ -85,6 +85,9 @@ public:
     // parameters start at the definition's defaults, its height and speed at the route's.
     // Returns the new row or -1.
     Q_INVOKABLE int addSegment(const QString &algorithm, const QList<QGeoCoordinate> &points);
+    // The tools an operator draws on the map, from the catalog: [{algorithm (class name), name,
+    // figure ("polygon", "polyline", "point", "circle"), minimumPoints}], area scan first.
+    Q_INVOKABLE QVariantList drawingTools() const;
     // The figure's points (area corners, corridor line, circle centre) by index.
     Q_INVOKABLE bool moveVertex(int row, int vertex, const QGeoCoordinate &to,
                                 sortie::mission::MissionEnums::EditStep step = EditStep::Done);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "AlgorithmDefinition.h"
+#include "SegmentPlanner.h"
 #include "GeoPoint.h"
 #include "HciOrigin.h"
 #include "WaypointAction.h"
@@ -8,6 +9,8 @@
 #include <vector>
 
 namespace sortie::mission {
+
+class AlgorithmCatalog;
 
 // A point of a figure with the altitude it carries on the wire.
 struct FigurePoint
@@ -44,5 +47,12 @@ struct AlgorithmSegment
 
 // "Circle", "Photogrammetry", or the class's short name for an algorithm Sortie does not know.
 QString algorithmLabel(const AlgorithmSegment &segment);
+
+// The figure the segment planner takes (SegmentPlanner.h).
+SegmentFigure plannerFigure(const AlgorithmSegment &segment);
+// What the segment flies, planned the way sortie-sim processes it; an outcome with an error when
+// no definition in `catalog` describes the algorithm.
+SegmentPlanOutcome planAlgorithmSegment(const AlgorithmSegment &segment, const AlgorithmCatalog &catalog,
+                                        const PlanContext &context = {});
 
 } // namespace sortie::mission
