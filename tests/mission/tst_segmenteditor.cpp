@@ -3,6 +3,7 @@
 // checked by the definition, every set one undo step; figures of a survey as the operator types;
 // the preview plans once per frame however many edits arrive, and only for its own row.
 #include "AlgorithmCatalog.h"
+#include "Camera.h"
 #include "RouteEditor.h"
 #include "RouteModel.h"
 #include "SegmentEditorModel.h"
@@ -51,8 +52,9 @@ private slots:
     void everyToolGetsAnEditorFromItsDescription()
     {
         for (const AlgorithmDefinition &def : AlgorithmCatalog::builtIn().algorithms()) {
-            if (def.kind == AlgorithmKind::Waypoint || def.kind == AlgorithmKind::TakeOff || def.kind == AlgorithmKind::Landing)
-                continue;
+            if (def.kind == AlgorithmKind::Waypoint || def.kind == AlgorithmKind::TakeOff || def.kind == AlgorithmKind::Landing
+                || def.kind == AlgorithmKind::AreaScan)
+                continue;  // typed segments: their fields are Sortie's (areaScanFieldsAreWireNames)
             Fixture f;
             const QList<QGeoCoordinate> points = def.figure == FigureType::Polygon ? kSquare
                                                : def.figure == FigureType::Polyline ? kSquare.mid(0, 2) : kSquare.mid(0, 1);
@@ -76,6 +78,24 @@ private slots:
             QVERIFY2(f.preview.problem().isEmpty(), qPrintable(def.displayName + QStringLiteral(": ") + f.preview.problem()));
             QVERIFY2(!f.preview.path().isEmpty(), qPrintable(def.displayName));
         }
+    }
+
+    void areaScanFieldsAreWireNames()
+    {
+        Fixture f;
+        const int row = f.editor.addSegment(QStringLiteral("AreaScanAlgorithm"), kSquare);
+        f.fields.setRow(row);
+        QCOMPARE(f.fields.kind(), QStringLiteral("areaScan"));
+        for (const char *name : {"height", "overlapForward", "overlapSide", "sideDistance", "directionAngle", "overshoot", "camera"})
+            QVERIFY2(f.fields.indexOf(QLatin1String(name)) >= 0, name);
+        QCOMPARE(f.fields.index(f.fields.indexOf(QStringLiteral("overlapSide"))).data(SegmentEditorModel::UnitRole).toString(),
+                 QStringLiteral("%"));
+        // Choosing a camera by name brings its optics (one undo step).
+        const Camera gopro = *builtInCamera(QStringLiteral("GoPro Hero3 Black Edition"));
+        QVERIFY(f.fields.set(f.fields.indexOf(QStringLiteral("camera")), gopro.name));
+        QCOMPARE(std::get<AreaScan>(f.model.segment(row)).parameters.camera, gopro);
+        f.stack.undo();
+        QVERIFY(!(std::get<AreaScan>(f.model.segment(row)).parameters.camera == gopro));
     }
 
     void setValuesTypedCheckedAndUndoable()

@@ -2,6 +2,7 @@
 // included), migration from schema 1, refusal of newer schemas, and errors that name the line,
 // column or JSON path.
 #include "AlgorithmCatalog.h"
+#include "Camera.h"
 #include "Domain.pb.h"
 #include "MissionFiles.h"
 #include "MissionSamples.h"
@@ -59,14 +60,14 @@ Mission fullMission()
         AlgorithmSegment a;
         a.algorithm = def.className;
         a.figure = def.figure;
+        const GeoPoint square[] = {{56.95, 24.1}, {56.95, 24.101}, {56.951, 24.101}, {56.951, 24.1}};
         for (int i = 0; i < std::max(def.minimumPoints, def.figure == FigureType::Polygon ? 4 : 1); ++i)
-            a.points.push_back({{56.95 + 0.001 * (i % 2), 24.1 + 0.001 * (i / 2)}, def.figure == FigureType::Circle ? 35.0 : 0.0,
-                                AltitudeType::Agl});
+            a.points.push_back({square[i], def.figure == FigureType::Circle ? 35.0 : 0.0, AltitudeType::Agl});
         if (def.figure == FigureType::Circle)
             a.figureParameters = {42.5};
         for (const ParameterDefinition &p : def.parameters)
-            if (!p.defaultValue.isEmpty())
-                a.parameters.push_back({p.name, p.defaultValue});
+            if (!p.defaultValue.isEmpty() || p.name == QLatin1String("camera"))
+                a.parameters.push_back({p.name, p.name == QLatin1String("camera") ? builtInCameras().front().name : p.defaultValue});
         r.segments.push_back(a);
     }
     AlgorithmSegment unknown;

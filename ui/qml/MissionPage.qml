@@ -28,9 +28,14 @@ Page {
     property string mbtilesFile: ""
     property bool dark: false
 
+    // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
+    readonly property var drawingTools: doc ? doc.editor.drawingTools() : []
+    property int drawingTool: 0
+    readonly property var currentTool: drawingTools.length > drawingTool ? drawingTools[drawingTool] : null
+
     function finishScan() {
-        if (page.doc && scanDraft.count >= 3)
-            page.doc.editor.addAreaScan(scanDraft.coordinates())
+        if (page.doc && page.currentTool && scanDraft.count >= page.currentTool.minimumPoints)
+            page.doc.editor.addSegment(page.currentTool.algorithm, scanDraft.coordinates())
         scanDraft.clear()
         page.tool = ""
     }
@@ -76,6 +81,7 @@ Page {
                 anchors.fill: parent
                 map: pane.map
                 polygonModel: scanDraft
+                closed: !page.currentTool || page.currentTool.figure !== "polyline"
                 color: "#ef6c00"
                 editable: page.tool === "scan"
                 onVertexMoved: (index, coordinate, step) => scanDraft.setCoordinate(index, coordinate.latitude, coordinate.longitude)
@@ -108,9 +114,11 @@ Page {
                 function onClicked(coordinate, modifiers) {
                     if (!page.doc || modifiers !== Qt.NoModifier)
                         return
-                    if (page.tool === "scan")
+                    if (page.tool === "scan") {
                         scanDraft.append(coordinate.latitude, coordinate.longitude)
-                    else
+                        if (page.currentTool && (page.currentTool.figure === "point" || page.currentTool.figure === "circle"))
+                            page.finishScan() // one click places it
+                    } else
                         page.doc.editor.addWaypoint(coordinate)
                 }
                 function onAreaSelected(rect, modifiers) { routeLayer.selectInRect(rect, modifiers) }
@@ -121,11 +129,24 @@ Page {
                 anchors.horizontalCenter: parent.horizontalCenter
                 anchors.topMargin: 10
                 RowLayout {
-                    Label { text: qsTr("Click the corners of the area (%1 so far)").arg(scanDraft.count) }
+                    ComboBox {
+                        objectName: "segmentToolPicker"
+                        model: page.drawingTools
+                        textRole: "name"
+                        currentIndex: page.drawingTool
+                        onActivated: index => { page.drawingTool = index; scanDraft.clear() }
+                        Layout.preferredWidth: 170
+                    }
+                    Label {
+                        text: !page.currentTool ? ""
+                              : page.currentTool.figure === "polyline" ? qsTr("Click the centre line (%1 so far)").arg(scanDraft.count)
+                              : page.currentTool.figure === "polygon" ? qsTr("Click the corners of the area (%1 so far)").arg(scanDraft.count)
+                              : qsTr("Click where it goes")
+                    }
                     Button {
                         objectName: "finishScanButton"
-                        text: qsTr("Create scan")
-                        enabled: scanDraft.count >= 3
+                        text: qsTr("Create")
+                        enabled: page.currentTool !== null && scanDraft.count >= page.currentTool.minimumPoints
                         onClicked: page.finishScan()
                     }
                     Button {

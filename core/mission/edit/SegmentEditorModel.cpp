@@ -106,8 +106,8 @@ SegmentEditorModel::SegmentEditorModel(RouteModel *model, RouteEditor *editor, Q
         if (m_row >= from.row() && m_row <= to.row())
             refreshValues();
     });
-    for (auto signal : {&QAbstractItemModel::modelReset, &QAbstractItemModel::layoutChanged})
-        connect(model, signal, this, &SegmentEditorModel::rebuild);
+    connect(model, &QAbstractItemModel::modelReset, this, &SegmentEditorModel::rebuild);
+    connect(model, &QAbstractItemModel::layoutChanged, this, &SegmentEditorModel::rebuild);
     connect(model, &QAbstractItemModel::rowsRemoved, this, &SegmentEditorModel::rebuild);
     connect(model, &QAbstractItemModel::rowsInserted, this, &SegmentEditorModel::rebuild);
     connect(editor, &RouteEditor::catalogChanged, this, &SegmentEditorModel::rebuild);
@@ -234,7 +234,12 @@ QVariant SegmentEditorModel::data(const QModelIndex &index, int role) const
 QString SegmentEditorModel::title() const
 {
     const Segment *s = segment();
-    return s ? segmentLabel(m_row, *s) : QString();
+    if (!s)
+        return {};
+    if (const AlgorithmSegment *a = asAlgorithmSegment(*s))  // the name the server gives it
+        if (const AlgorithmDefinition *d = m_editor->catalog().byClassName(a->algorithm); d && !d->displayName.isEmpty())
+            return QStringLiteral("%1 %2").arg(d->displayName).arg(m_row + 1);
+    return segmentLabel(m_row, *s);
 }
 
 QString SegmentEditorModel::kind() const

@@ -24,9 +24,6 @@ struct AreaScanParameters
     AltitudeType altitudeType = AltitudeType::Agl;
     double frontOverlapPercent = 75.0;
     double sideOverlapPercent = 65.0;
-    // UgCS `sideDistance`: metres between passes, set by an area scan (no camera); 0 = the spacing
-    // follows from the camera's footprint and the side overlap.
-    double sideDistanceMeters = 0.0;
     double directionDeg = 0.0;              // bearing of the transects, clockwise from north
     double turnaroundMeters = 10.0;         // overshoot beyond each transect end, for the turn
     double speed = 8.0;                     // m/s along the transects
