@@ -1,5 +1,7 @@
 #include "MissionController.h"
 
+#include "AlgorithmProto.h"
+
 #include "HciClient.h"
 #include "HciReply.h"
 #include "HciRouteMapper.h"
@@ -70,6 +72,21 @@ void MissionController::refresh()
         }
         std::sort(entries.begin(), entries.end(), [](const auto &a, const auto &b) { return a.name < b.name; });
         m_routes.setEntries(std::move(entries));
+    });
+    // The server's algorithms and their parameters: what the segment editor is built from. A
+    // server that does not list them leaves the built-in descriptions in place.
+    HciReply *algorithms = m_client->listObjects(HciObjectType::TraverseAlgorithm);
+    connect(algorithms, &HciReply::finished, this, [this, algorithms] {
+        if (!algorithms->isOk())
+            return;
+        std::vector<pb::TraverseAlgorithm> list;
+        for (const pb::DomainObjectWrapper &object : algorithms->response<pb::GetObjectListResponse>().objects())
+            if (object.has_traversealgorithm())
+                list.push_back(object.traversealgorithm());
+        if (list.empty())
+            return;
+        m_catalog = mission::catalogFromProto(list);
+        m_document.editor()->setCatalog(&m_catalog);
     });
     request(m_client->listObjects(HciObjectType::Vehicle), tr("Reading the server's vehicles"), [this](HciReply *reply) {
         if (!reply->isOk())

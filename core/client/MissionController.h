@@ -1,5 +1,6 @@
 #pragma once
 
+#include "AlgorithmCatalog.h"
 #include "HciProto.h"
 #include "ProcessedPlanModel.h"
 #include "RouteConflict.h"
@@ -113,6 +114,7 @@ private:
     ServerObjectListModel m_routes;
     ServerObjectListModel m_vehicles;
     std::map<int, std::unique_ptr<com::ugcs::ucs::proto::Vehicle>> m_vehicleObjects;
+    mission::AlgorithmCatalog m_catalog;  // the server's algorithms, once listed (the document's editor uses it)
     RouteDocument m_document;
     mission::ProcessedPlanModel m_processed;
     std::unique_ptr<com::ugcs::ucs::proto::ProcessedRoute> m_processedRoute;

@@ -15,8 +15,21 @@ RouteDocument::RouteDocument(QObject *parent)
     , m_editor(&m_model, &m_undo)
     , m_selection(&m_model)
     , m_analyzer(&m_model)
+    , m_segmentEditor(&m_model, &m_editor)
+    , m_preview(&m_model, &m_editor)
 {
-    m_model.setUndoStack(&m_undo);
+    connect(this, &RouteDocument::currentChanged, this, [this] {
+        m_segmentEditor.setRow(currentRow());
+        m_preview.setRow(currentRow());
+    });
+    connect(&m_preview, &SegmentPreview::changed, this, &RouteDocument::previewChanged);
+    connect(&m_editor, &RouteEditor::rowsAdded, this, [this](int first, int count) {
+        QList<int> rows;
+        for (int r = first; r < first + count; ++r)
+            rows << r;
+        selectRows(rows);
+    });
+    connect(&m_editor, &RouteEditor::refused, this, &RouteDocument::setMessage);
     connect(&m_undo, &QUndoStack::cleanChanged, this, &RouteDocument::modifiedChanged);
     connect(&m_undo, &QUndoStack::indexChanged, this, &RouteDocument::undoChanged);
     connect(&m_undo, &QUndoStack::canUndoChanged, this, &RouteDocument::undoChanged);
@@ -33,108 +46,25 @@ int RouteDocument::currentRow() const
     return current.isValid() && current.row() < m_model.count() ? current.row() : -1;
 }
 
-namespace {
-
-const AreaScan *scanAt(const RouteModel &model, int row)
-{
-    return row >= 0 && row < model.count() ? std::get_if<AreaScan>(&model.segment(row)) : nullptr;
-}
-
-QVariantList coordinates(const std::vector<GeoPoint> &points)
-{
-    QVariantList list;
-    for (const GeoPoint &p : points)
-        list.append(QVariant::fromValue(QGeoCoordinate(p.latitude, p.longitude)));
-    return list;
-}
-
-} // namespace
-
 QVariantList RouteDocument::scanPolygon() const
 {
-    const AreaScan *scan = scanAt(m_model, currentRow());
-    return scan ? coordinates(scan->polygon) : QVariantList();
+    return m_preview.figure();
 }
 
 QVariantList RouteDocument::scanPath() const
 {
-    const AreaScan *scan = scanAt(m_model, currentRow());
-    if (!scan)
-        return {};
-    const AreaScanOutcome outcome = planAreaScan(*scan);
-    return outcome.ok() ? coordinates(outcome.plan->path) : QVariantList();
+    return m_preview.path();
 }
 
 QVariantMap RouteDocument::scanParameters() const
 {
     const int row = currentRow();
-    return scanAt(m_model, row) ? m_model.index(row).data(RouteModel::ScanParametersRole).toMap() : QVariantMap();
+    return row >= 0 ? m_model.index(row).data(RouteModel::ScanParametersRole).toMap() : QVariantMap();
 }
 
 QString RouteDocument::scanProblem() const
 {
-    const AreaScan *scan = scanAt(m_model, currentRow());
-    return scan ? planAreaScan(*scan).message : QString();
-}
-
-int RouteDocument::addAreaScan(const QVariantList &polygon)
-{
-    QVariantList vertices;
-    for (const QVariant &v : polygon) {
-        if (v.canConvert<QGeoCoordinate>() && v.metaType() == QMetaType::fromType<QGeoCoordinate>()) {
-            const QGeoCoordinate c = v.value<QGeoCoordinate>();
-            vertices.append(QVariantMap{{QStringLiteral("latitude"), c.latitude()}, {QStringLiteral("longitude"), c.longitude()}});
-        } else {
-            vertices.append(v);
-        }
-    }
-    const int row = m_editor.addAreaScan(vertices);
-    if (row < 0)
-        setMessage(tr("An area scan needs at least three corners that enclose an area."));
-    else
-        selectRows({row});
-    return row;
-}
-
-bool RouteDocument::setScanParameters(int row, const QVariantMap &parameters)
-{
-    const AreaScan *scan = scanAt(m_model, row);
-    if (!scan)
-        return false;
-    AreaScanParameters p = scan->parameters;
-    auto number = [&](const char *key, double &field) {
-        const QVariant v = parameters.value(QLatin1String(key));
-        bool ok = false;
-        const double d = v.toDouble(&ok);
-        if (v.isValid() && ok)
-            field = d;
-    };
-    number("altitude", p.altitude);
-    number("frontOverlapPercent", p.frontOverlapPercent);
-    number("sideOverlapPercent", p.sideOverlapPercent);
-    number("directionDeg", p.directionDeg);
-    number("turnaroundMeters", p.turnaroundMeters);
-    number("speed", p.speed);
-    number("groundSampleDistanceCm", p.groundSampleDistanceCm);
-    number("sensorWidthMm", p.camera.sensorWidthMm);
-    number("sensorHeightMm", p.camera.sensorHeightMm);
-    number("focalLengthMm", p.camera.focalLengthMm);
-    if (parameters.contains(QStringLiteral("imageWidthPx")))
-        p.camera.imageWidthPx = parameters.value(QStringLiteral("imageWidthPx")).toInt();
-    if (parameters.contains(QStringLiteral("imageHeightPx")))
-        p.camera.imageHeightPx = parameters.value(QStringLiteral("imageHeightPx")).toInt();
-    if (parameters.contains(QStringLiteral("cameraName")))
-        p.camera.name = parameters.value(QStringLiteral("cameraName")).toString();
-    if (parameters.contains(QStringLiteral("byGroundSampleDistance")))
-        p.heightMode = parameters.value(QStringLiteral("byGroundSampleDistance")).toBool() ? ScanHeightMode::GroundSampleDistance
-                                                                                         : ScanHeightMode::Altitude;
-    if (p.frontOverlapPercent < 0 || p.frontOverlapPercent >= 100 || p.sideOverlapPercent < 0 || p.sideOverlapPercent >= 100) {
-        setMessage(tr("Overlaps are percentages from 0 to below 100."));
-        return false;
-    }
-    syncDerivedFields(p);
-    m_editor.setScanParameters(row, p);
-    return true;
+    return m_preview.problem();
 }
 
 QList<int> RouteDocument::selectedRows() const
@@ -156,47 +86,6 @@ void RouteDocument::load(Route route)
     emit modifiedChanged();
     emit undoChanged();
     emit loaded();
-}
-
-int RouteDocument::addWaypoint(double latitude, double longitude)
-{
-    const int row = m_editor.addWaypoint(latitude, longitude);
-    if (row >= 0)
-        selectRows({row});
-    return row;
-}
-
-int RouteDocument::insertWaypoint(int leg, double latitude, double longitude)
-{
-    if (leg < 0 || leg + 1 > m_model.count())
-        return -1;
-    const int row = m_editor.insertWaypoint(leg + 1, latitude, longitude);
-    if (row >= 0)
-        selectRows({row});
-    return row;
-}
-
-void RouteDocument::moveWaypoints(const QVariantList &rows, const QVariantList &coordinates)
-{
-    if (rows.size() != coordinates.size() || rows.isEmpty())
-        return;
-    m_undo.beginMacro(rows.size() == 1 ? tr("Move waypoint %1").arg(rows.first().toInt() + 1)
-                                       : tr("Move %n waypoint(s)", nullptr, int(rows.size())));
-    for (qsizetype i = 0; i < rows.size(); ++i) {
-        const QGeoCoordinate c = coordinates[i].value<QGeoCoordinate>();
-        if (c.isValid())
-            m_editor.moveWaypoint(rows[i].toInt(), c.latitude(), c.longitude());
-    }
-    m_undo.endMacro();
-}
-
-void RouteDocument::removeSelected()
-{
-    const QList<int> rows = selectedRows();
-    if (rows.isEmpty())
-        return;
-    m_selection.clear();
-    m_editor.removeRows(rows);
 }
 
 void RouteDocument::selectRows(const QList<int> &rows)

@@ -3,6 +3,8 @@
 #include "RouteAnalyzer.h"
 #include "RouteEditor.h"
 #include "RouteModel.h"
+#include "SegmentEditorModel.h"
+#include "SegmentPreview.h"
 
 #include <QItemSelectionModel>
 #include <QObject>
@@ -12,8 +14,9 @@
 namespace sortie::client {
 
 // The route open for editing, with nothing of the network in it: the model the map and the table
-// both show, its undo stack, editor, selection and analysis (statistics, validation), the gestures
-// of the map turned into undoable edits, and import/export of files.
+// both show, its undo stack, its editor (the one way to change it: every gesture, cell and
+// button calls `editor`), the selection (rows an edit adds become it), analysis (statistics,
+// validation) and import/export of files.
 class RouteDocument : public QObject
 {
     Q_OBJECT
@@ -22,6 +25,8 @@ class RouteDocument : public QObject
     Q_PROPERTY(QUndoStack *undoStack READ undoStack CONSTANT)
     Q_PROPERTY(QItemSelectionModel *selection READ selection CONSTANT)
     Q_PROPERTY(sortie::mission::RouteAnalyzer *analyzer READ analyzer CONSTANT)
+    // The current segment's parameters, as the editor the panel draws (follows currentRow).
+    Q_PROPERTY(sortie::mission::SegmentEditorModel *segmentEditor READ segmentEditor CONSTANT)
     Q_PROPERTY(bool modified READ isModified NOTIFY modifiedChanged)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY undoChanged)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoChanged)
@@ -30,12 +35,15 @@ class RouteDocument : public QObject
     Q_PROPERTY(QList<int> selectedRows READ selectedRows NOTIFY selectedRowsChanged)
     Q_PROPERTY(QString message READ message NOTIFY messageChanged)
     Q_PROPERTY(int currentRow READ currentRow NOTIFY currentChanged)
-    // The current row's area scan, when it is one: its polygon, the path the planner made of it
-    // (transects and turnarounds, QGeoCoordinates) and its parameters; empty otherwise.
-    Q_PROPERTY(QVariantList scanPolygon READ scanPolygon NOTIFY currentChanged)
-    Q_PROPERTY(QVariantList scanPath READ scanPath NOTIFY currentChanged)
+    // The current segment, unless it is a waypoint: its figure (an area's corners, a corridor's
+    // line, a circle's centre), the path it flies (QGeoCoordinates, from `preview`) and its
+    // parameters by wire name; empty otherwise.
+    Q_PROPERTY(QVariantList scanPolygon READ scanPolygon NOTIFY previewChanged)
+    Q_PROPERTY(QVariantList scanPath READ scanPath NOTIFY previewChanged)
     Q_PROPERTY(QVariantMap scanParameters READ scanParameters NOTIFY currentChanged)
-    Q_PROPERTY(QString scanProblem READ scanProblem NOTIFY currentChanged)
+    Q_PROPERTY(QString scanProblem READ scanProblem NOTIFY previewChanged)
+    // The current segment's figure and path, planned at most once per frame while it is edited.
+    Q_PROPERTY(sortie::mission::SegmentPreview *preview READ preview CONSTANT)
 
 public:
     explicit RouteDocument(QObject *parent = nullptr);
@@ -45,6 +53,8 @@ public:
     QUndoStack *undoStack() { return &m_undo; }
     QItemSelectionModel *selection() { return &m_selection; }
     mission::RouteAnalyzer *analyzer() { return &m_analyzer; }
+    mission::SegmentEditorModel *segmentEditor() { return &m_segmentEditor; }
+    mission::SegmentPreview *preview() { return &m_preview; }
     const mission::Route &route() const { return m_model.route(); }
 
     bool isModified() const { return !m_undo.isClean(); }
@@ -64,21 +74,9 @@ public:
     void load(mission::Route route);
     void markSaved() { m_undo.setClean(); }
 
-    // Map gestures, each one undo step; the new or moved rows become the selection.
-    Q_INVOKABLE int addWaypoint(double latitude, double longitude);
-    // A click on the leg from row `leg` to `leg + 1` inserts a waypoint between them.
-    Q_INVOKABLE int insertWaypoint(int leg, double latitude, double longitude);
-    // rows (ints) and coordinates (QGeoCoordinate) as RouteLayer::waypointsMoved gives them.
-    Q_INVOKABLE void moveWaypoints(const QVariantList &rows, const QVariantList &coordinates);
-    Q_INVOKABLE void removeSelected();
     Q_INVOKABLE void selectRows(const QList<int> &rows);
     // A click on a row of the table: selects it; Ctrl toggles it, Shift extends from the current row.
     Q_INVOKABLE void clickRow(int row, int modifiers);
-    // polygon: QGeoCoordinates (or {latitude, longitude} maps). Returns the new row or -1.
-    Q_INVOKABLE int addAreaScan(const QVariantList &polygon);
-    // Camera, overlaps, altitude, direction... of the scan at `row`, as one undo step. Keys as in
-    // scanParameters; keys left out keep their value.
-    Q_INVOKABLE bool setScanParameters(int row, const QVariantMap &parameters);
     Q_INVOKABLE void undo() { m_undo.undo(); }
     Q_INVOKABLE void redo() { m_undo.redo(); }
 
@@ -93,6 +91,7 @@ signals:
     void selectedRowsChanged();
     void messageChanged();
     void currentChanged();
+    void previewChanged();
     // load() replaced the route: a new baseline (what "unsaved edits" are measured against).
     void loaded();
 
@@ -104,6 +103,8 @@ private:
     mission::RouteEditor m_editor;
     QItemSelectionModel m_selection;
     mission::RouteAnalyzer m_analyzer;
+    mission::SegmentEditorModel m_segmentEditor;
+    mission::SegmentPreview m_preview;
     QString m_message;
 };
 

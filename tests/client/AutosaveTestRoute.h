@@ -34,8 +34,8 @@ inline void editRoute(client::RouteDocument &doc)
     const QModelIndex second = doc.model()->index(1);
     const double lat = second.data(mission::RouteModel::LatitudeRole).toDouble();
     const double lon = second.data(mission::RouteModel::LongitudeRole).toDouble();
-    doc.addWaypoint(lat + 0.002, lon + 0.003);
-    doc.moveWaypoints({1}, {QVariant::fromValue(QGeoCoordinate(lat + 0.0003, lon))});
+    doc.editor()->addWaypoint(QGeoCoordinate(lat + 0.002, lon + 0.003));
+    doc.editor()->moveWaypoints({1}, {QGeoCoordinate(lat + 0.0003, lon)});
     doc.editor()->setAltitude({2}, 100);
 }
 

@@ -7,6 +7,7 @@
 #include "AutosaveTestRoute.h"
 #include "RouteAutosave.h"
 
+#include <QGeoCoordinate>
 #include <QCoreApplication>
 #include <QTimer>
 #include <QUrl>
@@ -46,7 +47,7 @@ int main(int argc, char *argv[])
         int step = 0;
         QObject::connect(&edits, &QTimer::timeout, [&] {
             // Grow the route, so every write is bigger than the one before, and write at once.
-            doc.addWaypoint(56.9 + 0.0001 * (step % 1000), 24.1 + 0.0001 * (step / 1000));
+            doc.editor()->addWaypoint(QGeoCoordinate(56.9 + 0.0001 * (step % 1000), 24.1 + 0.0001 * (step / 1000)));
             if (!autosave.writeNow())
                 QCoreApplication::exit(1);
             if (step++ == 0) {

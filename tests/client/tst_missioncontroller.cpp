@@ -123,13 +123,14 @@ private slots:
         QCOMPARE(m_alice->missions.routeName(), kDemoRoute);
         QVERIFY(!doc->isModified());
 
-        QCOMPARE(doc->addWaypoint(56.9790, 24.0820), 4);
+        QCOMPARE(doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820)), 4);
         QCOMPARE(doc->selectedRows(), QList<int>{4});
-        QCOMPARE(doc->insertWaypoint(0, 56.9770, 24.0745), 1);
-        doc->moveWaypoints({2}, {QVariant::fromValue(QGeoCoordinate(56.9785, 24.0770))});
+        QCOMPARE(doc->editor()->insertWaypoint(1, QGeoCoordinate(56.9770, 24.0745)), 1);
+        QCOMPARE(doc->selectedRows(), QList<int>{1});
+        QVERIFY(doc->editor()->moveWaypoints({2}, {QGeoCoordinate(56.9785, 24.0770)}));
         QCOMPARE(doc->model()->count(), 6);
         doc->selectRows({5});
-        doc->removeSelected();
+        doc->editor()->removeRows(doc->selectedRows());
         QCOMPARE(doc->model()->count(), 5);
         QVERIFY(doc->isModified());
         doc->undo(); // the removal
@@ -182,7 +183,7 @@ private slots:
         const int id = openDemoRoute(*m_alice);
         QVERIFY(id > 0);
         client::RouteDocument *doc = m_alice->missions.document();
-        doc->addWaypoint(56.9790, 24.0820);
+        doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
 
         Operator bob(m_sim->address(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
         QVERIFY(bob.ok);
@@ -225,7 +226,7 @@ private slots:
         const int id = openDemoRoute(*m_alice);
         QVERIFY(id > 0);
         client::RouteDocument *doc = m_alice->missions.document();
-        doc->addWaypoint(56.9790, 24.0820);
+        doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
         const mission::Route mine = doc->route();
         Operator bob(m_sim->address(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
         QVERIFY(bob.ok);
@@ -254,7 +255,7 @@ private slots:
         QVERIFY(id > 0);
         m_alice->session.reconnectPolicy().setDelays(std::chrono::milliseconds(50), std::chrono::milliseconds(300));
         client::RouteDocument *doc = m_alice->missions.document();
-        doc->addWaypoint(56.9790, 24.0820);
+        doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
         doc->editor()->setAltitude({1, 2}, 66);
         const mission::Route edited = doc->route();
         const int steps = doc->undoStack()->count();
@@ -285,24 +286,25 @@ private slots:
         const int id = openDemoRoute(*m_alice);
         QVERIFY(id > 0);
         client::RouteDocument *doc = m_alice->missions.document();
-        const QVariantList corners{QVariant::fromValue(QGeoCoordinate(56.9740, 24.0800)), QVariant::fromValue(QGeoCoordinate(56.9770, 24.0800)),
-                                   QVariant::fromValue(QGeoCoordinate(56.9770, 24.0870)), QVariant::fromValue(QGeoCoordinate(56.9740, 24.0870))};
-        QCOMPARE(doc->addAreaScan(corners.mid(0, 2)), -1); // two corners enclose nothing
+        const QList<QGeoCoordinate> corners{QGeoCoordinate(56.9740, 24.0800), QGeoCoordinate(56.9770, 24.0800),
+                                            QGeoCoordinate(56.9770, 24.0870), QGeoCoordinate(56.9740, 24.0870)};
+        QCOMPARE(doc->editor()->addAreaScan(corners.mid(0, 2)), -1); // two corners enclose nothing
         QVERIFY(!doc->message().isEmpty());
-        const int row = doc->addAreaScan(corners);
+        const int row = doc->editor()->addAreaScan(corners);
         QCOMPARE(row, 4);
         QCOMPARE(doc->currentRow(), 4);
         QCOMPARE(doc->scanPolygon().size(), 4);
         const int pathBefore = int(doc->scanPath().size());
         QVERIFY2(pathBefore >= 4, qPrintable(QString::number(pathBefore)));
         QVERIFY(doc->scanProblem().isEmpty());
-        QCOMPARE(doc->scanParameters().value(QStringLiteral("sideOverlapPercent")).toDouble(), 65.0);
+        QCOMPARE(doc->scanParameters().value(QStringLiteral("overlapSide")).toDouble(), 65.0);
 
         // More side overlap: transects closer together, so more of them.
-        QVERIFY(doc->setScanParameters(row, {{QStringLiteral("sideOverlapPercent"), 85.0}}));
-        QCOMPARE(doc->scanParameters().value(QStringLiteral("sideOverlapPercent")).toDouble(), 85.0);
+        QVERIFY(doc->editor()->setParameter({row}, QStringLiteral("overlapSide"), 85.0));
+        QCOMPARE(doc->scanParameters().value(QStringLiteral("overlapSide")).toDouble(), 85.0);
         QVERIFY(doc->scanPath().size() > pathBefore);
-        QVERIFY(!doc->setScanParameters(row, {{QStringLiteral("frontOverlapPercent"), 120.0}}));
+        QVERIFY(!doc->editor()->setParameter({row}, QStringLiteral("overlapForward"), 120.0));
+        QVERIFY(doc->message().contains(QStringLiteral("overlapForward")));
         doc->undo();
         QCOMPARE(int(doc->scanPath().size()), pathBefore);
         doc->redo();
@@ -363,8 +365,8 @@ private slots:
         QTemporaryDir dir;
         const QUrl file = QUrl::fromLocalFile(dir.filePath(QStringLiteral("port.sortie")));
         QVERIFY2(doc->exportFile(file), qPrintable(doc->message()));
-        doc->addWaypoint(56.9790, 24.0820);
-        doc->addWaypoint(56.9795, 24.0830);
+        doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
+        doc->editor()->addWaypoint(QGeoCoordinate(56.9795, 24.0830));
         QCOMPARE(doc->model()->count(), 6);
         QVERIFY2(doc->importFile(file), qPrintable(doc->message()));
         QCOMPARE(doc->model()->count(), 4);
@@ -385,7 +387,7 @@ private slots:
     {
         QVERIFY(openDemoRoute(*m_alice) > 0);
         client::RouteDocument *doc = m_alice->missions.document();
-        doc->addWaypoint(56.9790, 24.0820);
+        doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
         m_sim->server.close();
         m_sim->server.dropConnections();
         QTRY_VERIFY(!m_alice->session.isReady());

@@ -8,6 +8,7 @@
 #include "AutosaveTestRoute.h"
 #include "RouteAutosave.h"
 
+#include <QGeoCoordinate>
 #include <QDir>
 #include <QFile>
 #include <QSignalSpy>
@@ -84,7 +85,7 @@ private slots:
         RouteDocument doc;
         RouteAutosave autosave(&doc, dir.path());
         doc.load(test::serverRoute());
-        doc.addWaypoint(56.0, 24.0);
+        doc.editor()->addWaypoint(QGeoCoordinate(56.0, 24.0));
         QVERIFY(autosave.writeNow());
         QVERIFY(QFile::exists(autosave.filePath()));
         doc.undo(); // back to the saved state
@@ -93,7 +94,7 @@ private slots:
         QVERIFY(autosave.writeNow());
         doc.markSaved(); // saved to the server: the baseline moves
         QVERIFY(!QFile::exists(autosave.filePath()));
-        doc.addWaypoint(56.1, 24.1);
+        doc.editor()->addWaypoint(QGeoCoordinate(56.1, 24.1));
         QVERIFY(autosave.writeNow());
         QCOMPARE(int(readFile(autosave.filePath()).baseline.segments.size()), 13);
         doc.load(test::serverRoute()); // another route opened

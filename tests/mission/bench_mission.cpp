@@ -1,6 +1,8 @@
 // Mission benchmark: a 10,000-waypoint route saved and loaded as .sortie, its statistics and
-// validation, one waypoint move and its undo, and a 1 km² area scan. Prints each figure with its
+// validation, one waypoint move and its undo, a 1 km² area scan, and a step of dragging a corner
+// of a 5 km² photogrammetry area on that route (edit + the preview's plan). Prints each figure with its
 // target; exits 1 if a target is missed. Run: build/tests/mission/bench_mission
+#include "AlgorithmCatalog.h"
 #include "AreaScanPlanner.h"
 #include "BenchRoute.h"
 #include "LocalTangentPlane.h"
@@ -9,11 +11,13 @@
 #include "RouteEditor.h"
 #include "RouteModel.h"
 #include "RouteStatistics.h"
+#include "SegmentPreview.h"
 #include "RouteValidator.h"
 #include "SortieFormat.h"
 
 #include <QCoreApplication>
 #include <QElapsedTimer>
+#include <QGeoCoordinate>
 #include <QTemporaryDir>
 #include <QUndoStack>
 
@@ -130,7 +134,7 @@ int main(int argc, char **argv)
     for (int i = 0; i < moves; ++i) {
         const int row = (i * 7919) % kWaypoints;
         const GeoPoint p = std::get<Waypoint>(model.segment(row)).position;
-        editor.moveWaypoint(row, p.latitude + 1e-5, p.longitude);
+        editor.moveWaypoints({row}, {QGeoCoordinate(p.latitude + 1e-5, p.longitude)});
         stack.undo();
     }
     ok &= report("move one waypoint and undo it", {t.nsecsElapsed() / 1e6 / moves, (threadCpuMs() - c0) / moves}, 0.1);
@@ -145,6 +149,42 @@ int main(int argc, char **argv)
     AreaScanOutcome outcome;
     ok &= report("1 km² area scan", median(21, [&] { outcome = planAreaScan(scan); }), 10);
     std::printf("%-40s %10zu transects, %d photos\n", "  result", outcome.plan->transects.size(), outcome.plan->photoCount);
+
+    // Dragging a corner of a 5 km² photogrammetry area (≥ 2,000 photos) on the 10,000-waypoint
+    // route: each mouse move is an EditStep::Continuing edit through the RouteEditor, then the
+    // map's preview plans the path (SegmentPreview, what the map draws). One step must fit a frame.
+    {
+        RouteModel dragModel;
+        QUndoStack dragStack;
+        RouteEditor dragEditor(&dragModel, &dragStack);
+        dragModel.resetRoute(route);
+        RouteAnalyzer dragAnalyzer(&dragModel);  // attached, as in the client: edits only schedule it
+        SegmentPreview preview(&dragModel, &dragEditor);
+        QList<QGeoCoordinate> corners;
+        for (const PlanePoint p : {PlanePoint{-1118, -1118}, PlanePoint{1118, -1118}, PlanePoint{1118, 1118}, PlanePoint{-1118, 1118}}) {
+            const GeoPoint g = plane.unproject(p);
+            corners << QGeoCoordinate(g.latitude, g.longitude);
+        }
+        const int row = dragEditor.addSegment(QStringLiteral("PhotogrammetryAlgorithm"), corners);
+        dragEditor.setParameter({row}, QStringLiteral("camera"), QStringLiteral("DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)"));
+        dragEditor.setParameter({row}, QStringLiteral("groundSampleDistance"), 2.5);
+        preview.setRow(row);
+        const SegmentPlanOutcome o = planAlgorithmSegment(std::get<AlgorithmSegment>(dragModel.segment(row)), AlgorithmCatalog::builtIn());
+        if (!o.ok() || o.plan->photos < 2000)
+            std::printf("the photogrammetry area plans %d photos (needs 2000): %s\n", o.ok() ? o.plan->photos : 0,
+                        o.ok() ? "" : qPrintable(o.errors.front())), ok = false;
+        const GeoPoint start = plane.unproject({1118, 1118});
+        int step = 0;
+        const Timing t = median(31, [&] {
+            ++step;
+            dragEditor.moveVertex(row, 2, QGeoCoordinate(start.latitude + step * 2e-6, start.longitude + step * 2e-6), EditStep::Continuing);
+            if (preview.path().isEmpty())
+                std::abort();
+        });
+        ok &= report("drag a corner of 5 km² photogrammetry", t, 16);
+        std::printf("%-40s %10d photos, %lld path points, %d undo step(s)\n", "  result", o.ok() ? o.plan->photos : 0,
+                    (long long)preview.path().size(), dragStack.count() - 3);
+    }
     std::printf(ok ? "all targets met\n" : "TARGETS MISSED\n");
     return ok ? 0 : 1;
 }

@@ -2,6 +2,8 @@
 // back byte for byte; a route edited in one waypoint sends every other field back exactly,
 // unknown fields included; a new route encodes the way the SDK's sample builds one; the processed
 // route becomes the plan the vehicle will fly.
+#include "AlgorithmCatalog.h"
+#include "AreaScanPlanner.h"
 #include "Domain.pb.h"
 #include "HciRouteMapper.h"
 #include "HciText.h"
@@ -9,6 +11,7 @@
 #include "ProcessedPlanModel.h"
 #include "RouteEditor.h"
 #include "RouteModel.h"
+#include "SegmentParameters.h"
 
 #include <google/protobuf/util/field_comparator.h>
 #include <google/protobuf/util/message_differencer.h>
@@ -64,6 +67,14 @@ QString differences(const google::protobuf::Message &a, const google::protobuf::
 }
 
 constexpr double kDeg = std::numbers::pi / 180.0;
+
+const pb::ParameterValue *findValue(const pb::SegmentDefinition &s, const char *name)
+{
+    for (const auto &v : s.parametervalues())
+        if (v.name() == name)
+            return &v;
+    return nullptr;
+}
 }
 
 class TestHciMapping : public QObject
@@ -124,8 +135,8 @@ private slots:
         QUndoStack stack;
         RouteEditor editor(&model, &stack);
         editor.replaceRoute(imported(original), QStringLiteral("Load"));
-        editor.moveWaypoint(0, 56.97, 24.08);  // a drag, in two steps
-        editor.moveWaypoint(0, 56.98, 24.09);
+        editor.moveWaypoints({0}, {QGeoCoordinate(56.97, 24.08)}, EditStep::Continuing);  // a drag, in two steps
+        editor.moveWaypoints({0}, {QGeoCoordinate(56.98, 24.09)});
         const pb::Route sent = routeToHci(model.route());
 
         QCOMPARE(sent.segments(1).SerializeAsString(), original.segments(1).SerializeAsString());
@@ -154,7 +165,7 @@ private slots:
         RouteEditor editor(&model, &stack);
         editor.replaceRoute(imported(original), QStringLiteral("Load"));
         editor.setSpeed({1, 2}, 9);
-        editor.setAltitudeType({2}, QStringLiteral("AMSL"));
+        editor.setAltitudeType({2}, AltitudeType::Amsl);
         editor.setAltitude({2}, 140.5);
         QVERIFY(editor.addAction({1}, {{"kind", "cameraTrigger"}, {"state", "singleShot"}}));
         const pb::Route sent = routeToHci(model.route());
@@ -241,7 +252,10 @@ private slots:
         const pb::SegmentDefinition &s = sent.segments(3);
         QCOMPARE(s.algorithmclassname(), std::string(kAreaScanAlgorithm));
         QCOMPARE(s.figure().type(), pb::FT_POLYGON);
-        QCOMPARE(s.figure().points_size(), 4);
+        QCOMPARE(s.figure().points_size(), 5);  // sent closed
+        QCOMPARE(s.figure().points(4).latitude(), s.figure().points(0).latitude());
+        QVERIFY(findValue(s, "overlapSide") && findValue(s, "overlapForward") && findValue(s, "sideDistance"));
+        QVERIFY(!findValue(s, "sideOverlap") && !findValue(s, "forwardOverlap"));
         const Route back = imported(sent);
         QVERIFY(std::get<AreaScan>(back.segments[3]) == scan);
         QVERIFY(back == r);
@@ -292,14 +306,256 @@ private slots:
         QCOMPARE(missionToHci(*mission).SerializeAsString(), m.SerializeAsString());
     }
 
-    void unsupportedSegmentIsAnError()
+    // Each tool of the facts file, built by code: out to a SegmentDefinition and back unchanged,
+    // with the class name, figure type and parameter names the facts give.
+    void everySegmentTypeRoundTrips()
     {
-        pb::Route r = storedRoute();
-        r.mutable_segments(1)->set_algorithmclassname("com.ugcs.ucs.service.routing.impl.CircleAlgorithm");
-        const Result<HciRouteImport> i = routeFromHci(r);
-        QVERIFY(!i.ok());
-        QVERIFY(i.error().message.contains(QStringLiteral("segment 2")));
-        QVERIFY(i.error().message.contains(QStringLiteral("CircleAlgorithm")));
+        Route r = imported(savedRoute());
+        const GeoPoint a{56.95, 24.10}, b{56.95, 24.11}, c{56.955, 24.11}, d{56.955, 24.10};
+        for (const AlgorithmDefinition &def : AlgorithmCatalog::builtIn().algorithms()) {
+            if (def.kind == AlgorithmKind::Waypoint || def.kind == AlgorithmKind::TakeOff || def.kind == AlgorithmKind::Landing
+                || def.kind == AlgorithmKind::AreaScan)
+                continue;  // typed segments, below
+            AlgorithmSegment seg;
+            seg.algorithm = def.className;
+            seg.figure = def.figure;
+            const std::vector<GeoPoint> corners = def.figure == FigureType::Polygon ? std::vector{a, b, c, d}
+                                                : def.figure == FigureType::Polyline ? std::vector{a, c} : std::vector{a};
+            for (const GeoPoint &g : corners)
+                seg.points.push_back({g, def.figure == FigureType::Circle ? 40.0 : 0.0, AltitudeType::Agl});
+            if (def.figure == FigureType::Circle)
+                seg.figureParameters = {35.5};
+            for (const ParameterDefinition &p : def.parameters)
+                if (!p.defaultValue.isEmpty())
+                    seg.parameters.push_back({p.name, p.defaultValue});
+            r.segments.push_back(seg);
+        }
+        Waypoint takeoff, landing;
+        takeoff.role = WaypointRole::Takeoff;
+        takeoff.position = a;
+        landing.role = WaypointRole::Land;
+        landing.position = d;
+        landing.altitude = 0;
+        r.segments.push_back(takeoff);
+        r.segments.push_back(landing);
+        AreaScan scan;  // UgCS's own area scan: a plain side distance, no camera overlap
+        scan.polygon = {a, b, c};
+        scan.parameters.sideDistanceMeters = 25;
+        syncDerivedFields(scan.parameters);
+        r.segments.push_back(scan);
+
+        const pb::Route sent = routeToHci(r);
+        QCOMPARE(sent.segments_size(), int(r.segments.size()));
+        QSet<QString> kinds;
+        for (int i = 3; i < sent.segments_size(); ++i) {
+            const pb::SegmentDefinition &s = sent.segments(i);
+            const QString className = QString::fromStdString(s.algorithmclassname());
+            QVERIFY2(className.startsWith(QLatin1String(kUgcsAlgorithmPackage)), qPrintable(className));
+            kinds.insert(className.section(QLatin1Char('.'), -1));
+            if (s.figure().type() == pb::FT_POLYGON) {
+                QVERIFY(s.figure().points_size() >= 4);
+                QCOMPARE(s.figure().points(s.figure().points_size() - 1).longitude(), s.figure().points(0).longitude());
+            }
+            if (s.figure().type() == pb::FT_CIRCLE) {
+                QCOMPARE(s.figure().parameters(0).value(), 35.5);
+                QCOMPARE(s.figure().points(0).aglaltitude(), 40.0);
+            }
+        }
+        for (const char *k : {"PhotogrammetryAlgorithm", "CircleAlgorithm", "PerimeterAlgorithm", "CorridorMappingAlgorithm",
+                              "TakeOffAlgorithm", "LandingAlgorithm", "AreaScanAlgorithm", "ExpandingSquareAlgorithm",
+                              "CreepingLineAlgorithm", "FacadeScannerAlgorithm"})
+            QVERIFY2(kinds.contains(QLatin1String(k)), k);
+        const pb::SegmentDefinition &areaScan = sent.segments(sent.segments_size() - 1);
+        QCOMPARE(findValue(areaScan, "sideDistance")->value(), std::string("25.0"));
+        QVERIFY(!findValue(areaScan, "overlapSide"));
+        const Route back = imported(sent);
+        QCOMPARE(back.segments.size(), r.segments.size());
+        for (size_t i = 0; i < r.segments.size(); ++i)
+            QVERIFY2(back.segments[i] == r.segments[i], qPrintable(segmentLabel(int(i), r.segments[i])));
+        // And out again: what came back goes out byte for byte.
+        QCOMPARE(routeToHci(back).SerializePartialAsString(), sent.SerializePartialAsString());
+    }
+
+    // Segments as UgCS clients write them (NET-RC, NET-DEMO, MAT in the facts file), built by hand
+    // field by field, framed, decoded: the values arrive typed, and an unedited route goes back
+    // byte for byte.
+    void handMadeFramesOfEveryTool()
+    {
+        pb::Route route = storedRoute();
+        auto point = [](pb::Figure *f, double lat, double lon, double agl) {
+            pb::FigurePoint *p = f->add_points();
+            p->set_latitude(lat * kDeg);
+            p->set_longitude(lon * kDeg);
+            p->set_aglaltitude(agl);
+            p->set_altitudetype(pb::AT_AGL);
+        };
+        auto param = [](pb::SegmentDefinition *s, const char *name, const char *value) {
+            pb::ParameterValue *v = s->add_parametervalues();
+            v->set_name(name);
+            v->set_value(value);
+        };
+        auto polygon = [&](pb::SegmentDefinition *s) {
+            s->mutable_figure()->set_type(pb::FT_POLYGON);
+            for (auto [lat, lon] : {std::pair{56.95, 24.10}, {56.95, 24.11}, {56.955, 24.11}, {56.955, 24.10}, {56.95, 24.10}})
+                point(s->mutable_figure(), lat, lon, 0);  // closed, as sent
+        };
+        const std::string impl = "com.ugcs.ucs.service.routing.impl.";
+        pb::SegmentDefinition *areaScan = route.add_segments();
+        areaScan->set_uuid("a1");
+        areaScan->set_algorithmclassname(impl + "AreaScanAlgorithm");
+        polygon(areaScan);
+        for (auto [n, v] : {std::pair{"speed", "5"}, {"wpTurnType", "STOP_AND_TURN"}, {"height", "70"}, {"altitudeType", "AGL"},
+                            {"sideDistance", "25"}, {"directionAngle", "30"}, {"avoidObstacles", "True"},
+                            {"actionExecution", "ACTIONS_EVERY_POINT"}, {"overshoot", ""}, {"overshootSpeed", ""},
+                            {"areaScanAllowPartialCalculation", "False"}, {"tolerance", "3"}, {"noActionsAtLastPoint", "True"},
+                            {"doubleGrid", "False"}})
+            param(areaScan, n, v);
+        pb::SegmentDefinition *photo = route.add_segments();
+        photo->set_uuid("p1");
+        photo->set_algorithmclassname(impl + "PhotogrammetryAlgorithm");
+        polygon(photo);
+        for (auto [n, v] : {std::pair{"speed", "5.0"}, {"camera", "GoPro Hero3 Black Edition"}, {"groundSampleDistance", "2.5"},
+                            {"overlapForward", "60"}, {"overlapSide", "30"}, {"camTopFacingForward", "True"},
+                            {"directionAngle", "0"}, {"altitudeType", "AMSL"}})
+            param(photo, n, v);
+        photo->add_actiondefinitions()->mutable_cameraseriesbytimedefinition()->set_autocalc(true);
+        pb::SegmentDefinition *circle = route.add_segments();
+        circle->set_uuid("c1");
+        circle->set_algorithmclassname(impl + "CircleAlgorithm");
+        circle->mutable_figure()->set_type(pb::FT_CIRCLE);
+        point(circle->mutable_figure(), 56.952, 24.105, 45);
+        circle->mutable_figure()->add_parameters()->set_value(30);
+        for (auto [n, v] : {std::pair{"speed", "4"}, {"loops", "2"}, {"flightClockwise", "False"}, {"followTerrain", "True"}})
+            param(circle, n, v);
+        pb::SegmentDefinition *perimeter = route.add_segments();
+        perimeter->set_uuid("m1");
+        perimeter->set_algorithmclassname(impl + "PerimeterAlgorithm");
+        polygon(perimeter);
+        for (auto [n, v] : {std::pair{"height", "40"}, {"heightAgl", "True"}, {"loops", "1"}})
+            param(perimeter, n, v);
+        pb::SegmentDefinition *landing = route.add_segments();
+        landing->set_uuid("l1");
+        landing->set_algorithmclassname(impl + "LandingAlgorithm");
+        landing->mutable_figure()->set_type(pb::FT_LANDING_POINT);
+        point(landing->mutable_figure(), 56.9505, 24.1005, 0);
+
+        // Framed as a server's GetObjectResponse would carry it, then decoded from the bytes.
+        pb::GetObjectResponse response;
+        *response.mutable_object()->mutable_route() = route;
+        pb::GetObjectResponse decoded;
+        QVERIFY(decoded.ParsePartialFromString(response.SerializePartialAsString()));
+        const Result<HciRouteImport> in = routeFromHci(decoded.object().route());
+        QVERIFY2(in.ok(), in.ok() ? "" : qPrintable(in.error().toString()));
+        const Route &r = in->route;
+        QCOMPARE(int(r.segments.size()), 7);
+        const AreaScan &scan = std::get<AreaScan>(r.segments[2]);
+        QCOMPARE(scan.polygon.size(), size_t(4));  // the closing point is the wire's, not a corner
+        QCOMPARE(scan.parameters.sideDistanceMeters, 25.0);
+        QCOMPARE(scan.parameters.altitude, 70.0);
+        QCOMPARE(scan.parameters.directionDeg, 30.0);
+        QCOMPARE(scan.parameters.turnaroundMeters, AreaScanParameters{}.turnaroundMeters);  // "" is "not set"
+        QCOMPARE(planAreaScan(scan).plan->transectSpacing, 25.0);
+        const AlgorithmSegment &ph = std::get<AlgorithmSegment>(r.segments[3]);
+        QCOMPARE(ph.kind(), AlgorithmKind::Photogrammetry);
+        QCOMPARE(parameterValue(r.segments[3], QStringLiteral("groundSampleDistance")).toDouble(), 2.5);
+        QCOMPARE(parameterValue(r.segments[3], QStringLiteral("camTopFacingForward")).toBool(), true);
+        QCOMPARE(int(ph.actions.size()), 1);
+        const std::optional<AreaScan> photoScan = scanOf(r.segments[3]);
+        QVERIFY(photoScan);
+        QCOMPARE(photoScan->parameters.camera.name, QStringLiteral("GoPro Hero3 Black Edition"));
+        QCOMPARE(photoScan->parameters.sideOverlapPercent, 30.0);
+        const AlgorithmSegment &ci = std::get<AlgorithmSegment>(r.segments[4]);
+        QCOMPARE(ci.figure, FigureType::Circle);
+        QCOMPARE(ci.figureParameters, std::vector<double>{30});
+        QCOMPARE(altitudeOf(r.segments[4]), 45.0);
+        QCOMPARE(parameterValue(r.segments[4], QStringLiteral("flightClockwise")).toBool(), false);
+        QCOMPARE(parameterValue(r.segments[4], QStringLiteral("loops")).toDouble(), 2.0);
+        QCOMPARE(std::get<AlgorithmSegment>(r.segments[5]).points.size(), size_t(4));
+        QCOMPARE(altitudeOf(r.segments[5]), 40.0);
+        QCOMPARE(std::get<Waypoint>(r.segments[6]).role, WaypointRole::Land);
+        QCOMPARE(routeToHci(r).SerializePartialAsString(), decoded.object().route().SerializePartialAsString());
+    }
+
+    // A segment of an algorithm Sortie has never heard of, with fields this schema does not know:
+    // shown, editable as raw name/value text, and byte for byte the same after another segment
+    // was edited; an edit of one of its values changes that value only.
+    void unknownAlgorithmSurvivesEditsByteForByte()
+    {
+        pb::Route original = storedRoute();
+        pb::SegmentDefinition *odd = original.add_segments();
+        odd->set_uuid("u1");
+        odd->set_algorithmclassname("com.ugcs.ucs.service.routing.impl.SpiralSearchAlgorithm");
+        odd->mutable_figure()->set_type(pb::FT_EIGHT_CURVE);
+        pb::FigurePoint *p = odd->mutable_figure()->add_points();
+        p->set_latitude(56.95 * kDeg);
+        p->set_longitude(24.1 * kDeg);
+        p->set_wgs84altitude(120);
+        p->set_altitudetype(pb::AT_WGS84);
+        odd->mutable_figure()->add_parameters()->set_value(12);
+        for (auto [n, v] : {std::pair{"turns", "7"}, {"spiralOut", "True"}, {"speed", "6.5"}}) {
+            pb::ParameterValue *pv = odd->add_parametervalues();
+            pv->set_name(n);
+            pv->set_value(v);
+        }
+        odd->mutable_unknown_fields()->AddVarint(9999, 42);  // a field of a newer schema
+        pb::Route withUnknown;
+        QVERIFY(withUnknown.ParseFromString(original.SerializeAsString()));
+        const std::string oddBytes = withUnknown.segments(2).SerializeAsString();
+
+        RouteModel model;
+        QUndoStack stack;
+        RouteEditor editor(&model, &stack);
+        editor.replaceRoute(imported(withUnknown), QStringLiteral("Load"));
+        QCOMPARE(model.index(2).data(RouteModel::KindRole).toString(), QStringLiteral("unknown"));
+        QCOMPARE(model.index(2).data(RouteModel::LabelRole).toString(), QStringLiteral("SpiralSearch 3"));
+        QCOMPARE(model.index(2).data(RouteModel::ScanParametersRole).toMap().value(QStringLiteral("turns")).toString(), QStringLiteral("7"));
+        QCOMPARE(model.index(2).data(RouteModel::SpeedRole).toDouble(), 6.5);
+        QVERIFY(editor.moveWaypoints({0}, {QGeoCoordinate(56.97, 24.08)}));
+        QVERIFY(editor.setAltitude({0, 1}, 77));
+        pb::Route sent = routeToHci(model.route());
+        QCOMPARE(sent.segments(2).SerializeAsString(), oddBytes);
+
+        QVERIFY(editor.setParameter({2}, QStringLiteral("turns"), QStringLiteral("9")));
+        QVERIFY(!editor.setParameter({2}, QStringLiteral("spin"), 1));  // it has no such parameter
+        sent = routeToHci(model.route());
+        pb::SegmentDefinition expected = withUnknown.segments(2);
+        expected.mutable_parametervalues(0)->set_value("9");
+        QCOMPARE(sent.segments(2).SerializeAsString(), expected.SerializeAsString());
+    }
+
+    // UgCS payload profiles give the optics in SI metres (GoPro Hero3 Black: focal 0.0028 m).
+    void profileCameraIsInMetres()
+    {
+        pb::Route route = storedRoute();
+        pb::PayloadProfile *camera = route.mutable_vehicleprofile()->add_payloadprofiles()->mutable_payloadprofile();
+        camera->set_name("GoPro Hero3 Black Edition");
+        camera->set_payloadtype(pb::PT_CAMERA);
+        for (auto [type, value] : {std::pair{pb::PPT_TRUE_FOCAL_LENGTH, 0.0028}, {pb::PPT_SENSOR_WIDTH, 0.00617},
+                                   {pb::PPT_SENSOR_HEIGHT, 0.00455}, {pb::PPT_SENSOR_HORIZONTAL_PIXELS, 4000.0},
+                                   {pb::PPT_SENSOR_VERTICAL_PIXELS, 3000.0}}) {
+            pb::PayloadParameter *p = camera->add_parameters();
+            p->set_type(type);
+            p->set_value(value);
+        }
+        pb::SegmentDefinition *scan = route.add_segments();
+        scan->set_algorithmclassname(kAreaScanAlgorithm);
+        scan->mutable_figure()->set_type(pb::FT_POLYGON);
+        for (auto [lat, lon] : {std::pair{56.95, 24.10}, {56.95, 24.11}, {56.955, 24.11}}) {
+            pb::FigurePoint *p = scan->mutable_figure()->add_points();
+            p->set_latitude(lat * kDeg);
+            p->set_longitude(lon * kDeg);
+        }
+        pb::ParameterValue *gsd = scan->add_parametervalues();
+        gsd->set_name("groundSampleDistance");
+        gsd->set_value("2");
+        const Route r = imported(route);
+        const AreaScanParameters &p = std::get<AreaScan>(r.segments[2]).parameters;
+        QCOMPARE(p.camera.focalLengthMm, 2.8);
+        QCOMPARE(p.camera.sensorWidthMm, 6.17);
+        QCOMPARE(p.camera.imageWidthPx, 4000);
+        // 2 cm/px with this camera: H = 0.02 · 2.8 · 4000 / 6.17 = 36.3 m (GSD on the coarser axis).
+        QVERIFY(std::abs(scanAltitude(p) - 0.02 * 2.8 / std::max(6.17 / 4000, 4.55 / 3000)) < 1e-6);
+        QVERIFY(scanAltitude(p) > 30 && scanAltitude(p) < 40);
     }
 
     void javaNumberText()

@@ -1,5 +1,6 @@
 // QGC WPL 110 and QGroundControl .plan: every sample from QGroundControl's test data imports,
 // round trips come back identical, and malformed files fail with the line or JSON path.
+#include "AlgorithmCatalog.h"
 #include "AreaScanPlanner.h"
 #include "MissionFiles.h"
 #include "MissionSamples.h"
@@ -158,6 +159,63 @@ private slots:
         QCOMPARE(writeQgcPlan(back->route), text);
     }
 
+    // A corridor goes out as QGroundControl's CorridorScan and comes back as the same corridor; a
+    // structure scan comes in as a perimeter; a circle goes out as the waypoints Sortie plans.
+    void corridorStructureAndCircle()
+    {
+        Route r = mavlinkRoute();
+        AlgorithmSegment corridor;
+        corridor.algorithm = algorithmClassName(AlgorithmKind::Corridor);
+        corridor.figure = FigureType::Polyline;
+        corridor.points = {{{56.950, 24.100}, 0, AltitudeType::Agl}, {{56.953, 24.104}, 0, AltitudeType::Agl},
+                           {{56.955, 24.112}, 0, AltitudeType::Agl}};
+        corridor.parameters = {{QStringLiteral("width"), QStringLiteral("40")}, {QStringLiteral("camera"), QStringLiteral("GoPro Hero3 Black Edition")},
+                               {QStringLiteral("groundSampleDistance"), QStringLiteral("2.5")}, {QStringLiteral("overlapForward"), QStringLiteral("70")},
+                               {QStringLiteral("overlapSide"), QStringLiteral("40")}, {QStringLiteral("altitudeType"), QStringLiteral("AGL")}};
+        r.segments.push_back(corridor);
+        AlgorithmSegment circle;
+        circle.algorithm = algorithmClassName(AlgorithmKind::Circle);
+        circle.figure = FigureType::Circle;
+        circle.points = {{{56.951, 24.105}, 40, AltitudeType::Agl}};
+        circle.figureParameters = {30};
+        r.segments.push_back(circle);
+        QStringList notices;
+        const QByteArray text = writeQgcPlan(r, &notices);
+        QVERIFY(text.contains("\"complexItemType\": \"CorridorScan\""));
+        QVERIFY(notices.join(' ').contains(QStringLiteral("waypoints Sortie plans")));
+        const Result<ImportedRoute> back = readQgcPlan(text);
+        QVERIFY2(back.ok(), back.ok() ? "" : qPrintable(describe(back.error())));
+        const auto it = std::find_if(back->route.segments.begin(), back->route.segments.end(),
+                                     [](const Segment &s) { return isAlgorithmSegment(s); });
+        QVERIFY(it != back->route.segments.end());
+        const AlgorithmSegment &c = std::get<AlgorithmSegment>(*it);
+        QCOMPARE(c.kind(), AlgorithmKind::Corridor);
+        QVERIFY(c.points == corridor.points);
+        for (const char *name : {"width", "camera", "overlapForward", "overlapSide", "altitudeType"})
+            QCOMPARE(*c.value(QString::fromLatin1(name)), *corridor.value(QString::fromLatin1(name)));
+        QVERIFY(std::abs(parseParameterNumber(*c.value(u"groundSampleDistance")).value() - 2.5) < 1e-9);
+        // The circle's orbit came back as waypoints on its radius.
+        const int waypointsBefore = countRole(r, WaypointRole::Pass);
+        QVERIFY(countRole(back->route, WaypointRole::Pass) >= waypointsBefore + 8);
+
+        const QByteArray structure = R"({"fileType": "Plan", "version": 1, "groundStation": "QGroundControl",
+            "geoFence": {"circles": [], "polygons": [], "version": 2}, "rallyPoints": {"points": [], "version": 2},
+            "mission": {"version": 2, "firmwareType": 12, "vehicleType": 2, "cruiseSpeed": 15, "hoverSpeed": 5,
+              "plannedHomePosition": [47.39, 8.54, 488], "items": [{"type": "ComplexItem", "complexItemType": "StructureScan",
+              "version": 3, "Altitude": 30, "Layers": 3, "StructureHeight": 25,
+              "CameraCalc": {"DistanceToSurface": 10, "DistanceToSurfaceRelative": true, "version": 1},
+              "polygon": [[47.3900, 8.5400], [47.3900, 8.5410], [47.3906, 8.5410], [47.3906, 8.5400]]}]}})";
+        const Result<ImportedRoute> s = readQgcPlan(structure);
+        QVERIFY2(s.ok(), s.ok() ? "" : qPrintable(describe(s.error())));
+        QCOMPARE(int(s->route.segments.size()), 1);
+        const AlgorithmSegment &perimeter = std::get<AlgorithmSegment>(s->route.segments[0]);
+        QCOMPARE(perimeter.kind(), AlgorithmKind::Perimeter);
+        QCOMPARE(perimeter.points.size(), size_t(4));
+        QCOMPARE(*perimeter.value(u"height"), QStringLiteral("30"));
+        QCOMPARE(*perimeter.value(u"loops"), QStringLiteral("3"));
+        QVERIFY(s->notices.join(' ').contains(QStringLiteral("3 layers as 3 loops")));
+    }
+
     void wplExpandsScans()
     {
         Route r = mavlinkRoute();
@@ -205,7 +263,8 @@ private slots:
         QTest::newRow("file type") << QByteArray("\"fileType\": \"Plan\"") << QByteArray("\"fileType\": \"Fence\"") << "/fileType";
         QTest::newRow("params") << QByteArray("\"params\": [\n                    0,\n                    0,\n                    0,\n                    null\n                ],\n                \"type\": \"SimpleItem\"\n            },\n            {\n                \"autoContinue\": true,\n                \"command\": 16")
                                 << QByteArray("\"params\": [0, 0],\n                \"type\": \"SimpleItem\"\n            },\n            {\n                \"autoContinue\": true,\n                \"command\": 16") << "/mission/items/0/params";
-        QTest::newRow("complex") << QByteArray("\"type\": \"SimpleItem\"\n            }\n        ],") << QByteArray("\"type\": \"SimpleItem\"\n            },\n {\"type\": \"ComplexItem\", \"complexItemType\": \"CorridorScan\"}        ],") << "/mission/items/5/complexItemType";
+        QTest::newRow("complex") << QByteArray("\"type\": \"SimpleItem\"\n            }\n        ],") << QByteArray("\"type\": \"SimpleItem\"\n            },\n {\"type\": \"ComplexItem\", \"complexItemType\": \"Orbit\"}        ],") << "/mission/items/5/complexItemType";
+        QTest::newRow("corridor") << QByteArray("\"type\": \"SimpleItem\"\n            }\n        ],") << QByteArray("\"type\": \"SimpleItem\"\n            },\n {\"type\": \"ComplexItem\", \"complexItemType\": \"CorridorScan\"}        ],") << "/mission/items/5";  // no "polyline" in it
         QTest::newRow("command type") << QByteArray("\"command\": 22") << QByteArray("\"command\": \"takeoff\"") << "/mission/items/0/command";
         QTest::newRow("mission version") << QByteArray("\"version\": 2") << QByteArray("\"version\": 3") << "/mission/version";
     }

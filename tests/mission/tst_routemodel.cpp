@@ -1,8 +1,11 @@
-// RouteModel and its undo commands: every command undoes back to the start and redoes to the end,
-// drags of one point merge, bulk edits touch only the selection, the model stays consistent
-// (QAbstractItemModelTester) and persistent indexes follow reordering.
+// RouteModel and RouteEditor, the one entry point for edits: every edit undoes back to the start
+// and redoes to the end, the steps of a gesture (EditStep::Continuing ... Done) merge into one
+// undo step and nothing else merges, bulk edits touch only the selection, parameters go by wire
+// name through the one reader, the model stays consistent (QAbstractItemModelTester) and
+// persistent indexes follow reordering.
 #include "RouteEditor.h"
 #include "RouteModel.h"
+#include "SegmentParameters.h"
 
 #include <QAbstractItemModelTester>
 #include <QItemSelectionModel>
@@ -61,30 +64,33 @@ private slots:
     {
         Fixture f(6);
         const Route start = f.model.route();
-        f.editor.addWaypoint(57.0, 24.2);
-        f.editor.insertWaypoint(0, 56.8, 24.0);
-        f.editor.moveWaypoint(2, 56.95, 24.15);
+        f.editor.addWaypoint(QGeoCoordinate(57.0, 24.2));
+        f.editor.insertWaypoint(0, QGeoCoordinate(56.8, 24.0));
+        f.editor.moveWaypoints({2}, {QGeoCoordinate(56.95, 24.15)});
         f.editor.removeRows({1, 3, 4});
         f.editor.moveRows({0, 2}, 4);
         f.editor.reverse();
         f.editor.setAltitude({0, 1}, 80);
-        f.editor.setAltitudeType({1, 2}, QStringLiteral("AMSL"));
+        f.editor.setAltitudeType({1, 2}, AltitudeType::Amsl);
         f.editor.setSpeed({2}, 7.5);
-        f.editor.setTurnType({0}, QStringLiteral("Spline"));
+        f.editor.setTurnType({0}, TurnType::Spline);
         f.editor.setAcceptanceRadius({0, 1, 2}, 3);
         QVERIFY(f.editor.addAction({0, 2}, {{"kind", "wait"}, {"seconds", 5}}));
         QVERIFY(f.editor.addAction({2}, {{"kind", "cameraSeriesByDistance"}, {"intervalMeters", 20}}));
         f.editor.removeAction({0}, 0);
         f.editor.clearActions({2});
-        QVERIFY(f.editor.addAreaScan({QVariantMap{{"latitude", 56.9}, {"longitude", 24.1}},
-                                      QVariantMap{{"latitude", 56.91}, {"longitude", 24.1}},
-                                      QVariantMap{{"latitude", 56.91}, {"longitude", 24.12}}}) >= 0);
+        const int scan = f.editor.addAreaScan({QGeoCoordinate(56.9, 24.1), QGeoCoordinate(56.91, 24.1), QGeoCoordinate(56.91, 24.12)});
+        QVERIFY(scan >= 0);
+        QVERIFY(f.editor.setParameter({scan}, QStringLiteral("overlapSide"), 70.0));
+        QVERIFY(f.editor.moveVertex(scan, 1, QGeoCoordinate(56.912, 24.1)));
+        QVERIFY(f.editor.insertVertex(scan, 3, QGeoCoordinate(56.905, 24.125)));
+        QVERIFY(f.editor.removeVertex(scan, 0));
         QVERIFY(f.editor.setRouteProperty(QStringLiteral("maxAltitude"), 90));
         Route replacement = sampleRoute(2);
         f.editor.replaceRoute(replacement, QStringLiteral("Import"));
-        f.editor.addWaypoint(10, 10);
+        f.editor.addWaypoint(QGeoCoordinate(10, 10));
         const Route end = f.model.route();
-        QCOMPARE(f.stack.count(), 19);
+        QCOMPARE(f.stack.count(), 23);
 
         f.stack.setIndex(0);
         QVERIFY(f.model.route() == start);
@@ -101,38 +107,75 @@ private slots:
         QVERIFY(f.model.route() == start);
     }
 
-    void dragStepsMergeIntoOneUndo()
+    void gestureStepsMergeIntoOneUndo()
     {
         Fixture f;
         const GeoPoint origin = wp(f.model, 2).position;
-        for (int i = 1; i <= 30; ++i)
-            f.editor.moveWaypoint(2, 56.9 + i * 1e-4, 24.1);
+        for (int i = 1; i < 30; ++i)
+            QVERIFY(f.editor.moveWaypoints({2}, {QGeoCoordinate(56.9 + i * 1e-4, 24.1)}, EditStep::Continuing));
+        QVERIFY(f.editor.moveWaypoints({2}, {QGeoCoordinate(56.9 + 30 * 1e-4, 24.1)}, EditStep::Done));
         QCOMPARE(f.stack.count(), 1);
         QCOMPARE(wp(f.model, 2).position.latitude, 56.9 + 30 * 1e-4);
-        f.editor.moveWaypoint(3, 56.0, 24.0);  // another point: a new step
+        // The same point again, a new gesture: a new step.
+        f.editor.moveWaypoints({2}, {QGeoCoordinate(56.0, 24.0)}, EditStep::Continuing);
+        f.editor.moveWaypoints({2}, {QGeoCoordinate(56.1, 24.0)});
         QCOMPARE(f.stack.count(), 2);
-        f.editor.endMove();
-        f.editor.moveWaypoint(3, 56.1, 24.0);  // the same point, a new drag: a new step
-        f.editor.moveWaypoint(3, 56.2, 24.0);
-        QCOMPARE(f.stack.count(), 3);
+        // One-shot edits (a typed coordinate) never merge, even of the same point.
+        f.editor.setLatitude(1, 57.0);
+        f.editor.setLatitude(1, 57.1);
+        QCOMPARE(f.stack.count(), 4);
+        // Within a gesture only the same edit of the same rows merges.
+        f.editor.setAltitude({3}, 60, EditStep::Continuing);
+        f.editor.setAltitude({4}, 61, EditStep::Continuing);
+        f.editor.setAltitude({4}, 62, EditStep::Done);
+        QCOMPARE(f.stack.count(), 6);
+        QCOMPARE(wp(f.model, 4).altitude, 62.0);
         f.stack.undo();
-        QCOMPARE(wp(f.model, 3).position.latitude, 56.0);
-        f.stack.undo();
+        QCOMPARE(wp(f.model, 4).altitude, 44.0);
+        f.stack.setIndex(1);
+        QCOMPARE(wp(f.model, 2).position.latitude, 56.9 + 30 * 1e-4);
         f.stack.undo();
         QVERIFY(wp(f.model, 2).position == origin);
-        // Typed coordinates never merge.
-        QVERIFY(f.model.setData(f.model.index(1), 57.0, RouteModel::LatitudeRole));
-        QVERIFY(f.model.setData(f.model.index(1), 57.1, RouteModel::LatitudeRole));
-        QCOMPARE(f.stack.count(), 2);
     }
 
-    void areaScanToolEditsThroughMaps()
+    void areaScanCornersFollowAGesture()
+    {
+        Fixture f(1);
+        const int row = f.editor.addAreaScan({QGeoCoordinate(56.90, 24.10), QGeoCoordinate(56.90, 24.11),
+                                              QGeoCoordinate(56.905, 24.11), QGeoCoordinate(56.905, 24.10)});
+        QCOMPARE(row, 1);
+        QCOMPARE(f.stack.count(), 1);
+        const QVariantMap planBefore = f.model.index(row).data(RouteModel::ScanPlanRole).toMap();
+        for (int i = 1; i <= 10; ++i)  // the corner is dragged outwards; the plan follows every step
+            QVERIFY(f.editor.moveVertex(row, 2, QGeoCoordinate(56.905 + i * 2e-4, 24.11 + i * 2e-4),
+                                        i < 10 ? EditStep::Continuing : EditStep::Done));
+        QCOMPARE(f.stack.count(), 2);
+        const auto &scan = std::get<AreaScan>(f.model.segment(row));
+        QCOMPARE(scan.polygon[2].latitude, 56.905 + 10 * 2e-4);
+        const QVariantMap planAfter = f.model.index(row).data(RouteModel::ScanPlanRole).toMap();
+        QVERIFY(planAfter.value("areaSquareMeters").toDouble() > planBefore.value("areaSquareMeters").toDouble());
+        QVERIFY(f.editor.insertVertex(row, 2, QGeoCoordinate(56.902, 24.113)));
+        QCOMPARE(std::get<AreaScan>(f.model.segment(row)).polygon.size(), size_t(5));
+        QVERIFY(f.editor.removeVertex(row, 0));
+        QVERIFY(f.editor.removeVertex(row, 0));
+        QSignalSpy refused(&f.editor, &RouteEditor::refused);
+        QVERIFY(!f.editor.removeVertex(row, 0));  // three corners stay
+        QCOMPARE(refused.count(), 1);
+        QVERIFY(!f.editor.moveVertex(row, 7, QGeoCoordinate(56.9, 24.1)));
+        QVERIFY(!f.editor.moveVertex(0, 0, QGeoCoordinate(56.9, 24.1)));  // a waypoint has no corners
+        QCOMPARE(refused.count(), 3);
+        f.stack.setIndex(1);
+        QCOMPARE(std::get<AreaScan>(f.model.segment(row)).polygon[2].latitude, 56.905);
+    }
+
+    void areaScanParametersByWireName()
     {
         Fixture f(2);
-        const int row = f.editor.addAreaScan({QVariantMap{{"latitude", 56.90}, {"longitude", 24.10}},
-                                              QVariantMap{{"latitude", 56.90}, {"longitude", 24.11}},
-                                              QVariantMap{{"latitude", 56.905}, {"longitude", 24.11}}});
+        QSignalSpy added(&f.editor, &RouteEditor::rowsAdded);
+        const int row = f.editor.addAreaScan({QGeoCoordinate(56.90, 24.10), QGeoCoordinate(56.90, 24.11), QGeoCoordinate(56.905, 24.11)});
         QCOMPARE(row, 2);
+        QCOMPARE(added.count(), 1);
+        QCOMPARE(added.at(0).at(0).toInt(), 2);
         const QModelIndex i = f.model.index(row);
         QCOMPARE(i.data(RouteModel::KindRole).toString(), QStringLiteral("areaScan"));
         QCOMPARE(i.data(RouteModel::PolygonRole).toList().size(), 3);
@@ -142,22 +185,57 @@ private slots:
         QVERIFY(photosBefore > 0);
         QCOMPARE(plan.value("path").toList().size(), 4 * plan.value("transects").toInt());
 
-        QVERIFY(f.editor.setScanProperties(row, {{"byGroundSampleDistance", true}, {"groundSampleDistanceCm", 1.0},
-                                                 {"frontOverlapPercent", 80}}));
+        QVERIFY(f.editor.setParameter({row}, QStringLiteral("groundSampleDistance"), 1.0));
+        QVERIFY(f.editor.setParameter({row}, QStringLiteral("overlapForward"), 80));
         const QVariantMap params = i.data(RouteModel::ScanParametersRole).toMap();
-        QCOMPARE(params.value("groundSampleDistanceCm").toDouble(), 1.0);
-        QVERIFY(params.value("altitude").toDouble() < 40);  // 1 cm/px needs to fly lower than 60 m
+        QCOMPARE(params.value("groundSampleDistance").toDouble(), 1.0);
+        QVERIFY(params.value("height").toDouble() < 40);  // 1 cm/px needs to fly lower than 60 m
         plan = i.data(RouteModel::ScanPlanRole).toMap();
         QVERIFY(plan.value("photoCount").toInt() > photosBefore);
-        QVERIFY(!f.editor.setScanProperties(row, {{"sideOverlapPercent", "lots"}}));
-        QVERIFY(!f.editor.setScanProperties(0, {{"sideOverlapPercent", 50}}));  // a waypoint
-        QVERIFY(f.editor.setScanProperties(row, {{"sideOverlapPercent", 99}}));
-        plan = i.data(RouteModel::ScanPlanRole).toMap();
-        QVERIFY(!plan.value("ok").toBool());
-        QVERIFY(plan.value("message").toString().contains(QStringLiteral("Overlap")));
+        QSignalSpy refused(&f.editor, &RouteEditor::refused);
+        QVERIFY(!f.editor.setParameter({row}, QStringLiteral("overlapSide"), QStringLiteral("lots")));
+        QVERIFY(!f.editor.setParameter({row}, QStringLiteral("overlapSide"), 100));
+        QVERIFY(!f.editor.setParameter({row}, QStringLiteral("teleport"), 1));
+        QCOMPARE(refused.count(), 3);
+        QVERIFY(refused.at(1).at(0).toString().contains(QStringLiteral("overlapSide")));
+        QCOMPARE(f.stack.count(), 3);
+        // A selection of a waypoint and the scan: the speed goes to both, the overlap to the scan.
+        QVERIFY(f.editor.setParameter({0, row}, QStringLiteral("speed"), 6.5));
+        QCOMPARE(wp(f.model, 0).speed, 6.5);
+        QCOMPARE(std::get<AreaScan>(f.model.segment(row)).parameters.speed, 6.5);
+        // sideDistance sets the spacing directly.
+        QVERIFY(f.editor.setParameter({row}, QStringLiteral("sideDistance"), 25.0));
+        QCOMPARE(i.data(RouteModel::ScanPlanRole).toMap().value("transectSpacingMeters").toDouble(), 25.0);
+        f.stack.undo();
+        f.stack.undo();
         f.stack.undo();
         f.stack.undo();
         QCOMPARE(i.data(RouteModel::ScanPlanRole).toMap().value("photoCount").toInt(), photosBefore);
+    }
+
+    void parameterReaderTakesTypedAndWireValues()
+    {
+        Segment scan = AreaScan{};
+        QString error;
+        QVERIFY(setParameterValue(scan, QStringLiteral("overlapSide"), QStringLiteral("70.0"), &error));
+        QVERIFY(setParameterValue(scan, QStringLiteral("altitudeType"), QStringLiteral("WGS84"), &error));
+        QCOMPARE(std::get<AreaScan>(scan).parameters.altitudeType, AltitudeType::Amsl);
+        QVERIFY(setParameterValue(scan, QStringLiteral("altitudeType"), QVariant::fromValue(AltitudeType::Agl), &error));
+        QVERIFY(setParameterValue(scan, QStringLiteral("directionAngle"), -90, &error));
+        QCOMPARE(std::get<AreaScan>(scan).parameters.directionDeg, 270.0);
+        QVERIFY(!setParameterValue(scan, QStringLiteral("overlapForward"), true, &error));  // a bool is no number
+        QVERIFY(!setParameterValue(scan, QStringLiteral("height"), QStringLiteral("high"), &error));
+        QVERIFY(error.contains(QStringLiteral("height")));
+        QCOMPARE(parameterValue(scan, QStringLiteral("overlapSide")).toDouble(), 70.0);
+        QVERIFY(!parameterValue(scan, QStringLiteral("wpTurnType")).isValid());
+
+        Segment w = Waypoint{};
+        QVERIFY(setParameterValue(w, QStringLiteral("wpTurnType"), QStringLiteral("BANK_TURN"), &error));
+        QCOMPARE(std::get<Waypoint>(w).turnType, TurnType::BankTurn);
+        QVERIFY(setParameterValue(w, QStringLiteral("wpTurnType"), 2, &error));  // QML hands enums over as numbers
+        QCOMPARE(std::get<Waypoint>(w).turnType, TurnType::Spline);
+        QVERIFY(!setParameterValue(w, QStringLiteral("wpTurnType"), QStringLiteral("SIDEWAYS"), &error));
+        QCOMPARE(parameterValue(w, QStringLiteral("wpTurnType")).toString(), QStringLiteral("SPLINE"));
     }
 
     void editAnActionOfASelection()
@@ -187,17 +265,20 @@ private slots:
         QVERIFY(f.editor.rowsOf(&other).isEmpty());
     }
 
-    void setDataGoesThroughTheUndoStack()
+    void tableCellsAreEditorCalls()
     {
         Fixture f;
-        QVERIFY(f.model.setData(f.model.index(1), 99.0, RouteModel::AltitudeRole));
-        QVERIFY(f.model.setData(f.model.index(1), QStringLiteral("AMSL"), RouteModel::AltitudeTypeRole));
-        QVERIFY(f.model.setData(f.model.index(1), 57.5, RouteModel::LatitudeRole));
-        QVERIFY(!f.model.setData(f.model.index(1), QStringLiteral("sideways"), RouteModel::TurnTypeRole));
-        QVERIFY(!f.model.setData(f.model.index(1), 91.0, RouteModel::LatitudeRole));
+        QVERIFY(!(f.model.flags(f.model.index(1)) & Qt::ItemIsEditable));  // read-only: edits go through the editor
+        QVERIFY(!f.model.setData(f.model.index(1), 99.0, RouteModel::AltitudeRole));
+        QVERIFY(f.editor.setAltitude({1}, 99.0));
+        QVERIFY(f.editor.setAltitudeType({1}, AltitudeType::Amsl));
+        QVERIFY(f.editor.setLatitude(1, 57.5));
+        QVERIFY(!f.editor.setLatitude(1, 91.0));
+        QVERIFY(!f.editor.setLatitude(17, 50.0));
         QCOMPARE(f.stack.count(), 3);
         QCOMPARE(wp(f.model, 1).altitude, 99.0);
         QCOMPARE(wp(f.model, 1).altitudeType, AltitudeType::Amsl);
+        QCOMPARE(f.model.index(1).data(RouteModel::AltitudeTypeRole).toString(), QStringLiteral("AMSL"));
         f.stack.setIndex(0);
         QCOMPARE(wp(f.model, 1).altitude, 41.0);
         QCOMPARE(wp(f.model, 1).position.latitude, 56.901);
@@ -261,11 +342,12 @@ private slots:
         Fixture f(2);
         f.editor.setAltitude({1}, 77);
         f.editor.setSpeed({1}, 6);
-        const int row = f.editor.addWaypoint(56.95, 24.2);
+        const int row = f.editor.addWaypoint(QGeoCoordinate(56.95, 24.2));
         QCOMPARE(row, 2);
         QCOMPARE(wp(f.model, 2).altitude, 77.0);
         QCOMPARE(wp(f.model, 2).speed, 6.0);
-        QCOMPARE(f.editor.addWaypoint(95, 0), -1);
+        QCOMPARE(f.editor.addWaypoint(QGeoCoordinate(95, 0)), -1);
+        QCOMPARE(f.editor.addWaypoint(QGeoCoordinate()), -1);
     }
 };
 

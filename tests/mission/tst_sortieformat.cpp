@@ -1,6 +1,8 @@
 // The native .sortie format: exact round trip of everything in the model (HCI provenance
 // included), migration from schema 1, refusal of newer schemas, and errors that name the line,
 // column or JSON path.
+#include "AlgorithmCatalog.h"
+#include "Camera.h"
 #include "Domain.pb.h"
 #include "MissionFiles.h"
 #include "MissionSamples.h"
@@ -47,6 +49,39 @@ Mission fullMission()
     syncDerivedFields(gsd.parameters);
     r.segments.insert(r.segments.begin() + 3, gsd);
     r.segments.push_back(squareScan({56.97, 24.12}, 200, 70));
+    AreaScan spaced = squareScan({56.98, 24.12}, 150, 65);  // UgCS's area scan: passes a plain 25 m apart
+    spaced.parameters.sideDistanceMeters = 25;
+    r.segments.push_back(spaced);
+    // Every other tool, and one Sortie does not know, kept with its server's bytes.
+    for (const AlgorithmDefinition &def : AlgorithmCatalog::builtIn().algorithms()) {
+        if (def.kind == AlgorithmKind::Waypoint || def.kind == AlgorithmKind::TakeOff || def.kind == AlgorithmKind::Landing
+            || def.kind == AlgorithmKind::AreaScan)
+            continue;
+        AlgorithmSegment a;
+        a.algorithm = def.className;
+        a.figure = def.figure;
+        const GeoPoint square[] = {{56.95, 24.1}, {56.95, 24.101}, {56.951, 24.101}, {56.951, 24.1}};
+        for (int i = 0; i < std::max(def.minimumPoints, def.figure == FigureType::Polygon ? 4 : 1); ++i)
+            a.points.push_back({square[i], def.figure == FigureType::Circle ? 35.0 : 0.0, AltitudeType::Agl});
+        if (def.figure == FigureType::Circle)
+            a.figureParameters = {42.5};
+        for (const ParameterDefinition &p : def.parameters)
+            if (!p.defaultValue.isEmpty() || p.name == QLatin1String("camera"))
+                a.parameters.push_back({p.name, p.name == QLatin1String("camera") ? builtInCameras().front().name : p.defaultValue});
+        r.segments.push_back(a);
+    }
+    AlgorithmSegment unknown;
+    unknown.algorithm = QStringLiteral("com.example.SpiralAlgorithm");
+    unknown.figure = FigureType::EightCurve;
+    unknown.points = {{{56.9, 24.1}, 120, AltitudeType::Amsl}};
+    unknown.parameters = {{QStringLiteral("turns"), QStringLiteral("7")}, {QStringLiteral("turns"), QStringLiteral("8")},
+                          {QStringLiteral("note"), QStringLiteral("")}};
+    unknown.actions.push_back(WaitAction{3, false});
+    auto unknownOrigin = std::make_shared<pb::SegmentDefinition>();
+    unknownOrigin->set_uuid("spiral");
+    unknownOrigin->mutable_unknown_fields()->AddVarint(4242, 7);
+    unknown.origin.message = unknownOrigin;
+    r.segments.push_back(unknown);
     m.routes = {r, mavlinkRoute()};
     return m;
 }
@@ -73,6 +108,11 @@ bool sameIgnoringOpaquePointers(Mission a, Mission b)
                     for (auto &act : w->actions)
                         if (auto *o = std::get_if<OpaqueAction>(&act))
                             o->definition.reset();
+    // The unknown algorithm's server bytes come back as they went.
+    const auto &ua = std::get<AlgorithmSegment>(a.routes[0].segments.back());
+    const auto &ub = std::get<AlgorithmSegment>(b.routes[0].segments.back());
+    if (!ua.origin.message || !ub.origin.message || ua.origin.message->SerializeAsString() != ub.origin.message->SerializeAsString())
+        return false;
     return a == b;
 }
 }
@@ -111,9 +151,38 @@ private slots:
         QCOMPARE(readSortie(broken).error().jsonPath, QStringLiteral("/mission/routes/0/waypoints/0"));
     }
 
+    // Schema 2 named an area scan's parameters Sortie's way; schema 3 takes the UgCS wire names.
+    void migratesSchemaTwo()
+    {
+        const QByteArray v2 = R"({"format": "sortie-mission", "schemaVersion": 2, "mission": {"name": "old", "routes": [{"name": "r",
+            "segments": [{"type": "areaScan", "polygon": [[56.9, 24.1], [56.9, 24.11], [56.905, 24.11]],
+              "camera": {"name": "Cam", "sensorWidthMm": 13.2, "sensorHeightMm": 8.8, "focalLengthMm": 8.8, "imageWidthPx": 5472, "imageHeightPx": 3648},
+              "heightMode": "groundSampleDistance", "altitude": 60, "groundSampleDistanceCm": 1.5, "altitudeType": "AMSL",
+              "frontOverlapPercent": 70, "sideOverlapPercent": 55, "directionDeg": 33, "turnaroundMeters": 12, "speed": 7}]}]}})";
+        const Result<Mission> m = readSortie(v2);
+        QVERIFY2(m.ok(), m.ok() ? "" : qPrintable(m.error().toString()));
+        const AreaScanParameters &p = std::get<AreaScan>(m->routes.at(0).segments.at(0)).parameters;
+        QCOMPARE(p.heightMode, ScanHeightMode::GroundSampleDistance);
+        QCOMPARE(p.groundSampleDistanceCm, 1.5);
+        QCOMPARE(p.altitudeType, AltitudeType::Amsl);
+        QCOMPARE(p.frontOverlapPercent, 70.0);
+        QCOMPARE(p.sideOverlapPercent, 55.0);
+        QCOMPARE(p.sideDistanceMeters, 0.0);
+        QCOMPARE(p.directionDeg, 33.0);
+        QCOMPARE(p.turnaroundMeters, 12.0);
+        QCOMPARE(p.speed, 7.0);
+        QVERIFY(writeSortie(*m).contains("\"overlapSide\":55"));
+        // A bad value in the new names is refused by the one parameter reader, naming its place.
+        QByteArray bad = writeSortie(*m);
+        bad.replace("\"overlapSide\":55", "\"overlapSide\":100");
+        const Result<Mission> refused = readSortie(bad);
+        QVERIFY(!refused.ok());
+        QCOMPARE(refused.error().jsonPath, QStringLiteral("/mission/routes/0/segments/0/parameters/overlapSide"));
+    }
+
     void refusesNewerSchema()
     {
-        const Result<Mission> m = readSortie(R"({"format": "sortie-mission", "schemaVersion": 3, "mission": {"routes": []}})");
+        const Result<Mission> m = readSortie(R"({"format": "sortie-mission", "schemaVersion": 4, "mission": {"routes": []}})");
         QVERIFY(!m.ok());
         QCOMPARE(m.error().jsonPath, QStringLiteral("/schemaVersion"));
         QVERIFY(m.error().message.contains(QStringLiteral("newer")));

@@ -188,7 +188,7 @@ private slots:
         QSignalSpy recomputed(&analyzer, &RouteAnalyzer::recomputed);
         QSignalSpy validation(&analyzer, &RouteAnalyzer::validationChanged);
         for (int i = 0; i < 200; ++i)
-            editor.moveWaypoint(1, 56.91 + i * 1e-5, 24.1);
+            editor.moveWaypoints({1}, {QGeoCoordinate(56.91 + i * 1e-5, 24.1)}, EditStep::Continuing);
         editor.setAltitude({1}, 500);
         QVERIFY(analyzer.isPending());
         QVERIFY(recomputed.wait(2000));

@@ -11,6 +11,7 @@
 #include "Messages.pb.h"
 #include "SimFixture.h"
 
+#include <QGeoCoordinate>
 #include <QRandomGenerator>
 #include <QSignalSpy>
 #include <QTest>
@@ -96,7 +97,7 @@ private slots:
         Link link;
         QVERIFY(link.openDemoRoute());
         const int clientId = link.op.session.clientId();
-        link.op.missions.document()->addWaypoint(56.9790, 24.0820); // typed before the link dies
+        link.op.missions.document()->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820)); // typed before the link dies
 
         link.proxy.setForwarding(false); // the connection stays open; nothing gets through
         link.op.missions.refresh();
@@ -134,7 +135,7 @@ private slots:
         QSignalSpy errors(&link.op.connection, &client::ConnectionController::errorChanged);
         const QStringList statesBefore = link.op.states;
 
-        link.op.missions.document()->addWaypoint(56.9790, 24.0820);
+        link.op.missions.document()->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
         QSignalSpy saved(&link.op.missions, &client::MissionController::saved);
         link.op.missions.save(); // lock, write, release: three slow round trips
         QVERIFY(saved.wait(15000));
@@ -197,7 +198,7 @@ private slots:
         link.proxy.injectToClients(garbage);
 
         // The operator edits and saves: lock, write, release, list; every answer arrives behind garbage.
-        link.op.missions.document()->addWaypoint(56.9790, 24.0820);
+        link.op.missions.document()->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
         QSignalSpy saved(&link.op.missions, &client::MissionController::saved);
         link.op.missions.save();
         QTRY_VERIFY_WITH_TIMEOUT(link.connection()->framesDropped() >= droppedBefore + 4, 10000);
@@ -243,7 +244,7 @@ private slots:
         QVERIFY2(beats > beatsAtStart, "the event loop did not turn while the garbage was decoded");
 
         // Later frames arrive: the operator's next request is answered.
-        link.op.missions.document()->addWaypoint(56.9790, 24.0820);
+        link.op.missions.document()->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
         QSignalSpy saved(&link.op.missions, &client::MissionController::saved);
         link.op.missions.save();
         QVERIFY(saved.wait(10000));

@@ -8,6 +8,7 @@
 #include "Messages.pb.h"
 #include "Vehicle.h"
 
+#include <QGeoCoordinate>
 #include <QPointer>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -79,7 +80,7 @@ private slots:
         op.missions.openRoute(op.missions.routes()->objectIdAt(rowOf(*op.missions.routes(), kDemoRoute)));
         QTRY_COMPARE_WITH_TIMEOUT(op.missions.document()->model()->count(), 4, 10000);
         client::RouteDocument *doc = op.missions.document();
-        doc->addWaypoint(56.9790, 24.0820); // the operator's edit, never saved
+        doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820)); // the operator's edit, never saved
         QCOMPARE(doc->model()->count(), 5);
 
         QSignalSpy uploaded(&op.missions, &MissionController::uploaded);

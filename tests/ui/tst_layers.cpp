@@ -146,8 +146,8 @@ private slots:
         QTest::mouseRelease(&view(), Qt::LeftButton, {}, QPoint(640, 280));
         QVERIFY(!m_route->isDragging());
         QCOMPARE(moved.count(), 1);
-        QCOMPARE(moved.at(0).at(0).toList(), QVariantList{3});
-        const QGeoCoordinate dropped = moved.at(0).at(1).toList().at(0).value<QGeoCoordinate>();
+        QCOMPARE(moved.at(0).at(0).value<QList<int>>(), QList<int>{3});
+        const QGeoCoordinate dropped = moved.at(0).at(1).value<QList<QGeoCoordinate>>().at(0);
         QVERIFY(samePlace(dropped, m_map->toCoordinate(QPointF(640, 280))));
         QVERIFY(samePlace(m_map->center(), centre)); // the map did not pan
         // The layer only previewed: the model moves when its owner applies the move.
@@ -166,10 +166,10 @@ private slots:
         QTest::mouseMove(&view(), (kWaypoints[1] + QPointF(20, 10)).toPoint());
         QTest::mouseRelease(&view(), Qt::LeftButton, {}, (kWaypoints[1] + QPointF(20, 10)).toPoint());
         QCOMPARE(moved.count(), 1);
-        QCOMPARE(moved.at(0).at(0).toList(), (QVariantList{0, 1}));
-        const QVariantList coordinates = moved.at(0).at(1).toList();
-        QVERIFY(samePlace(coordinates.at(0).value<QGeoCoordinate>(), m_map->toCoordinate(kWaypoints[0] + QPointF(20, 10))));
-        QVERIFY(samePlace(coordinates.at(1).value<QGeoCoordinate>(), m_map->toCoordinate(kWaypoints[1] + QPointF(20, 10))));
+        QCOMPARE(moved.at(0).at(0).value<QList<int>>(), (QList<int>{0, 1}));
+        const auto coordinates = moved.at(0).at(1).value<QList<QGeoCoordinate>>();
+        QVERIFY(samePlace(coordinates.at(0), m_map->toCoordinate(kWaypoints[0] + QPointF(20, 10))));
+        QVERIFY(samePlace(coordinates.at(1), m_map->toCoordinate(kWaypoints[1] + QPointF(20, 10))));
     }
 
     void pressBesideTheRoutePansTheMap()
@@ -417,9 +417,19 @@ private slots:
         QTest::mouseMove(&view(), QPoint(630, 190));
         QTest::mouseMove(&view(), QPoint(650, 180));
         QTest::mouseRelease(&view(), Qt::LeftButton, {}, QPoint(650, 180));
-        QCOMPARE(moved.count(), 1);
-        QCOMPARE(moved.at(0).at(0).toInt(), 1);
-        QVERIFY(samePlace(moved.at(0).at(1).value<QGeoCoordinate>(), m_map->toCoordinate(QPointF(650, 180))));
+        // Every step of the drag is reported (Continuing), then the drop (Done): the owner can
+        // apply it live and merge the steps into one undo step.
+        QCOMPARE(moved.count(), 3);
+        QCOMPARE(moved.at(0).at(2).value<sortie::mission::EditStep>(), sortie::mission::EditStep::Continuing);
+        QVERIFY(samePlace(moved.at(0).at(1).value<QGeoCoordinate>(), m_map->toCoordinate(QPointF(630, 190))));
+        QCOMPARE(moved.last().at(0).toInt(), 1);
+        QCOMPARE(moved.last().at(2).value<sortie::mission::EditStep>(), sortie::mission::EditStep::Done);
+        QVERIFY(samePlace(moved.last().at(1).value<QGeoCoordinate>(), m_map->toCoordinate(QPointF(650, 180))));
+        // A right click on a corner asks for its removal.
+        QSignalSpy removal(layer, &AreaScanLayer::vertexRemoveRequested);
+        QTest::mouseClick(&view(), Qt::RightButton, {}, QPoint(603, 398));
+        QCOMPARE(removal.count(), 1);
+        QCOMPARE(removal.at(0).at(0).toInt(), 2);
 
         // Inside the polygon the fill is a tint of the layer's green over the map.
         const QRgb inside = m_scene->grab().pixel(250, 300);

@@ -17,6 +17,7 @@
 #include "SimWorld.h"
 #include "SortieUi.h"
 
+#include <QGeoCoordinate>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
@@ -149,7 +150,7 @@ private slots:
         QTRY_COMPARE(m_missions->routeId(), id);
         client::RouteDocument *doc = m_missions->document();
         const int count = doc->model()->count();
-        doc->addWaypoint(56.9790, 24.0820);
+        doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
 
         // Someone else saves the route meanwhile, with a waypoint fewer.
         hci::HciSession other;

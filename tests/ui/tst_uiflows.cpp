@@ -302,7 +302,33 @@ private slots:
         QQuickItem *area = find("areaLayer");
         QTRY_COMPARE(area->property("vertexCount").toInt(), 4);
         QVERIFY(area->property("transectPointCount").toInt() >= 4);
-        QCOMPARE(m_missions->document()->model()->index(4).data(mission::RouteModel::KindRole).toString(), QStringLiteral("areaScan"));
+        client::RouteDocument *doc = m_missions->document();
+        QCOMPARE(doc->model()->index(4).data(mission::RouteModel::KindRole).toString(), QStringLiteral("areaScan"));
+        QCOMPARE(doc->currentRow(), 4);
+
+        // Its corners are handles now: drag the third one out; the path follows and it is one undo step.
+        const int stepsBefore = doc->undoStack()->count();
+        const int pathBefore = area->property("transectPointCount").toInt();
+        const QPoint corner = map->mapToScene(base + QPointF(160, 110)).toPoint();
+        const QGeoCoordinate dropped = map->toCoordinate(base + QPointF(160, 110) + QPointF(60, 40));
+        QTest::mousePress(m_window, Qt::LeftButton, {}, corner);
+        for (int i = 1; i <= 6; ++i)
+            QTest::mouseMove(m_window, corner + QPoint(10 * i, 40 * i / 6));
+        QTest::mouseRelease(m_window, Qt::LeftButton, {}, corner + QPoint(60, 40));
+        const auto polygonOf = [doc] { return std::get<mission::AreaScan>(doc->model()->segment(4)).polygon; };
+        QTRY_VERIFY(std::abs(polygonOf()[2].latitude - dropped.latitude()) < 1e-6);
+        QCOMPARE(doc->undoStack()->count(), stepsBefore + 1);
+        QVERIFY(area->property("transectPointCount").toInt() >= pathBefore);
+
+        // The side overlap typed in the editor; then undo both.
+        type("segment_overlapSide", QStringLiteral("80"));
+        QTest::keyClick(m_window, Qt::Key_Return);
+        QTRY_COMPARE(std::get<mission::AreaScan>(doc->model()->segment(4)).parameters.sideOverlapPercent, 80.0);
+        QCOMPARE(doc->undoStack()->count(), stepsBefore + 2);
+        doc->undo();
+        doc->undo();
+        QVERIFY(std::abs(polygonOf()[2].latitude - map->toCoordinate(base + QPointF(160, 110)).latitude()) < 1e-6);
+        doc->redo();
         QTest::qWait(150);
         m_window->grabWindow().save(QDir(qEnvironmentVariable("SORTIE_SCREENSHOT_DIR", QStringLiteral(SORTIE_SCREENSHOT_DEFAULT_DIR))).filePath(QStringLiteral("mission.png")));
     }

@@ -2,6 +2,7 @@
 
 #include "MapLayer.h"
 #include "CoordinateListModel.h"
+#include "MissionEnums.h"
 #include "ModelCoordinates.h"
 
 #include <QColor>
@@ -13,8 +14,10 @@ namespace sortie::ui {
 // An area-scan segment over the map: the survey polygon (filled, with vertex handles) and the
 // transects the planner generated inside it, each from a list model with latitude and longitude
 // roles. `transectModel` rows are the scan path in flight order. With `editable`, dragging a
-// vertex reports vertexMoved and a click on an edge reports edgeClicked (to insert a vertex);
-// the layer only previews, the owner of the model applies.
+// vertex reports vertexMoved at every step (EditStep Continuing) and at the drop (Done), so the
+// owner can apply it live and see the path follow; a click on an edge reports edgeClicked (to
+// insert a vertex) and a right click on a vertex vertexRemoveRequested. The layer previews the
+// drag itself until the owner's model catches up.
 class AreaScanLayer : public MapLayer
 {
     Q_OBJECT
@@ -27,6 +30,10 @@ class AreaScanLayer : public MapLayer
     Q_PROPERTY(bool editable READ isEditable WRITE setEditable NOTIFY editableChanged)
     Q_PROPERTY(QColor color READ color WRITE setColor NOTIFY colorChanged)
     Q_PROPERTY(int vertexCount READ vertexCount NOTIFY modelsChanged)
+    // false: the points are a line (a corridor's centre line), not an area: no fill, no closing edge.
+    Q_PROPERTY(bool closed READ isClosed WRITE setClosed NOTIFY shapeChanged)
+    // A circle around the first point, metres (0: none), with a handle on its east side to drag.
+    Q_PROPERTY(double radius READ radius WRITE setRadius NOTIFY shapeChanged)
     Q_PROPERTY(int transectPointCount READ transectPointCount NOTIFY modelsChanged)
 
 public:
@@ -45,6 +52,12 @@ public:
     QColor color() const { return m_color; }
     void setColor(const QColor &color);
     int vertexCount() const { return m_polygon.count(); }
+    bool isClosed() const { return m_closed; }
+    void setClosed(bool closed);
+    double radius() const { return m_radius; }
+    void setRadius(double meters);
+    // Where the radius handle is, in item pixels (NaN when there is no circle).
+    Q_INVOKABLE QPointF radiusHandlePosition() const;
     int transectPointCount() const { return m_transects.count(); }
 
     Q_INVOKABLE int vertexAt(QPointF position, qreal radius = 10) const;
@@ -56,7 +69,10 @@ signals:
     void modelsChanged();
     void editableChanged();
     void colorChanged();
-    void vertexMoved(int index, const QGeoCoordinate &coordinate);
+    void vertexMoved(int index, const QGeoCoordinate &coordinate, sortie::mission::MissionEnums::EditStep step);
+    void vertexRemoveRequested(int index);
+    void radiusMoved(double meters, sortie::mission::MissionEnums::EditStep step);
+    void shapeChanged();
     // The edge from vertex index to the next one (the last edge closes the polygon).
     void edgeClicked(int index, const QGeoCoordinate &coordinate, int modifiers);
 
@@ -68,6 +84,9 @@ protected:
     void mouseUngrabEvent() override;
 
 private:
+    QGeoCoordinate dragTarget() const;
+    double metersPerUnit() const;  // ground metres per normalised unit at the circle's centre
+    double radiusAt(QPointF position) const;
     static QPolygonF project(const std::vector<QPointF> &points, int displaced, QPointF offset, const MapViewport &view);
 
     CoordinateListModel m_ownPolygon; // behind the list properties
@@ -83,6 +102,11 @@ private:
     int m_pressVertex = -1;
     int m_pressEdge = -1;
     QPointF m_pressPos;
+    QPointF m_pressPoint;  // the pressed vertex where the drag began (normalised)
+    bool m_pressRadius = false;
+    bool m_closed = true;
+    double m_radius = 0.0;
+    double m_dragRadius = 0.0;  // what the handle shows while dragged
     QPointF m_dragOffset;
     bool m_dragging = false;
 };

@@ -337,11 +337,13 @@ void RouteLayer::mouseReleaseEvent(QMouseEvent *event)
     const int pressRow = std::exchange(m_pressRow, -1);
     const int pressLeg = std::exchange(m_pressLeg, -1);
     if (m_dragging) {
-        QVariantList rows;
-        QVariantList coordinates;
+        QList<int> rows;
+        QList<QGeoCoordinate> coordinates;
+        rows.reserve(qsizetype(m_dragRows.size()));
+        coordinates.reserve(qsizetype(m_dragRows.size()));
         for (int row : m_dragRows) {
             rows.append(row);
-            coordinates.append(QVariant::fromValue(WebMercator::unproject(m_points.points()[size_t(row)] + m_dragOffset)));
+            coordinates.append(WebMercator::unproject(m_points.points()[size_t(row)] + m_dragOffset));
         }
         setDragging(false);
         m_dragRows.clear();

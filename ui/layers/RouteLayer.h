@@ -74,8 +74,8 @@ signals:
     void frameChanged();
     void waypointClicked(int row, int modifiers);
     void legClicked(int leg, const QGeoCoordinate &coordinate, int modifiers);
-    // A drag ended: rows (ints) and their new positions (QGeoCoordinate), in the same order.
-    void waypointsMoved(const QVariantList &rows, const QVariantList &coordinates);
+    // A drag ended: rows and their new positions, in the same order (RouteEditor::moveWaypoints).
+    void waypointsMoved(const QList<int> &rows, const QList<QGeoCoordinate> &coordinates);
 
 protected:
     void onViewportChanged() override;

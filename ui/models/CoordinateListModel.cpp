@@ -109,12 +109,9 @@ QGeoCoordinate CoordinateListModel::get(int row) const
     return row >= 0 && row < count() ? m_points[size_t(row)] : QGeoCoordinate();
 }
 
-QVariantList CoordinateListModel::coordinates() const
+QList<QGeoCoordinate> CoordinateListModel::coordinates() const
 {
-    QVariantList list;
-    for (const QGeoCoordinate &point : m_points)
-        list.append(QVariant::fromValue(point));
-    return list;
+    return QList<QGeoCoordinate>(m_points.begin(), m_points.end());
 }
 
 void CoordinateListModel::assign(std::vector<QGeoCoordinate> points)

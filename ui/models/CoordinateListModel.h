@@ -34,8 +34,8 @@ public:
     Q_INVOKABLE bool remove(int row);
     Q_INVOKABLE void clear();
     Q_INVOKABLE QGeoCoordinate get(int row) const;
-    // Every point, as a list of QGeoCoordinates.
-    Q_INVOKABLE QVariantList coordinates() const;
+    // Every point (what RouteEditor::addAreaScan takes).
+    Q_INVOKABLE QList<QGeoCoordinate> coordinates() const;
     // Replaces everything at once (one reset, not one signal per point).
     void assign(std::vector<QGeoCoordinate> points);
 

@@ -40,7 +40,7 @@ ApplicationWindow {
     function saveRoute() { if (missions) { showPage(1); missions.save() } }
     function undo() { if (missions) missions.document.undo() }
     function redo() { if (missions) missions.document.redo() }
-    function deleteSelection() { if (missions && currentPage === 1) missions.document.removeSelected() }
+    function deleteSelection() { if (missions && currentPage === 1) missions.document.editor.removeRows(missions.document.selectedRows) }
     function processRoute() { if (missions) missions.process() }
     function toggleFullScreen() { window.visibility = window.visibility === Window.FullScreen ? Window.Windowed : Window.FullScreen }
 

@@ -30,9 +30,14 @@ Page {
     property string mbtilesFile: ""
     property bool dark: false
 
+    // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
+    readonly property var drawingTools: doc ? doc.editor.drawingTools() : []
+    property int drawingTool: 0
+    readonly property var currentTool: drawingTools.length > drawingTool ? drawingTools[drawingTool] : null
+
     function finishScan() {
-        if (page.doc && scanDraft.count >= 3)
-            page.doc.addAreaScan(scanDraft.coordinates())
+        if (page.doc && page.currentTool && scanDraft.count >= page.currentTool.minimumPoints)
+            page.doc.editor.addSegment(page.currentTool.algorithm, scanDraft.coordinates())
         scanDraft.clear()
         page.tool = ""
     }
@@ -74,15 +79,25 @@ Page {
                 transectModel: page.areaTransectModel
                 polygon: page.doc ? page.doc.scanPolygon : []
                 path: page.doc ? page.doc.scanPath : []
+                // The current scan's corners: drag one (the path follows), click an edge to add one,
+                // right-click one to remove it.
+                editable: page.editable && page.tool === "" && page.doc.scanPolygon.length > 0
+                onVertexMoved: (index, coordinate, step) => page.doc.editor.moveVertex(page.doc.currentRow, index, coordinate, step)
+                onEdgeClicked: (index, coordinate, modifiers) => page.doc.editor.insertVertex(page.doc.currentRow, index + 1, coordinate)
+                onVertexRemoveRequested: index => page.doc.editor.removeVertex(page.doc.currentRow, index)
+                closed: page.doc ? page.doc.preview.figureType !== "polyline" : true
+                radius: page.doc ? page.doc.preview.radius : 0
+                onRadiusMoved: (meters, step) => page.doc.editor.setRadius(page.doc.currentRow, meters, step)
             }
             AreaScanLayer {
                 objectName: "scanDraftLayer"
                 anchors.fill: parent
                 map: pane.map
                 polygonModel: scanDraft
+                closed: !page.currentTool || page.currentTool.figure !== "polyline"
                 color: "#ef6c00"
                 editable: page.tool === "scan"
-                onVertexMoved: (index, coordinate) => scanDraft.setCoordinate(index, coordinate.latitude, coordinate.longitude)
+                onVertexMoved: (index, coordinate, step) => scanDraft.setCoordinate(index, coordinate.latitude, coordinate.longitude)
             }
             RouteLayer {
                 // The server's copy during a conflict: a read-only ghost under ours.
@@ -104,18 +119,20 @@ Page {
                 model: page.routeModel
                 selectionModel: page.selectionModel
                 editable: page.editable && page.tool === ""
-                onWaypointsMoved: (rows, coordinates) => page.doc.moveWaypoints(rows, coordinates)
-                onLegClicked: (leg, coordinate, modifiers) => page.doc.insertWaypoint(leg, coordinate.latitude, coordinate.longitude)
+                onWaypointsMoved: (rows, coordinates) => page.doc.editor.moveWaypoints(rows, coordinates)
+                onLegClicked: (leg, coordinate, modifiers) => page.doc.editor.insertWaypoint(leg + 1, coordinate)
             }
             Connections {
                 target: pane.map
                 function onClicked(coordinate, modifiers) {
                     if (!page.doc || modifiers !== Qt.NoModifier)
                         return
-                    if (page.tool === "scan")
+                    if (page.tool === "scan") {
                         scanDraft.append(coordinate.latitude, coordinate.longitude)
-                    else
-                        page.doc.addWaypoint(coordinate.latitude, coordinate.longitude)
+                        if (page.currentTool && (page.currentTool.figure === "point" || page.currentTool.figure === "circle"))
+                            page.finishScan() // one click places it
+                    } else
+                        page.doc.editor.addWaypoint(coordinate)
                 }
                 function onAreaSelected(rect, modifiers) { routeLayer.selectInRect(rect, modifiers) }
             }
@@ -125,11 +142,24 @@ Page {
                 anchors.horizontalCenter: parent.horizontalCenter
                 anchors.topMargin: 10
                 RowLayout {
-                    Label { text: qsTr("Click the corners of the area (%1 so far)").arg(scanDraft.count) }
+                    ComboBox {
+                        objectName: "segmentToolPicker"
+                        model: page.drawingTools
+                        textRole: "name"
+                        currentIndex: page.drawingTool
+                        onActivated: index => { page.drawingTool = index; scanDraft.clear() }
+                        Layout.preferredWidth: 170
+                    }
+                    Label {
+                        text: !page.currentTool ? ""
+                              : page.currentTool.figure === "polyline" ? qsTr("Click the centre line (%1 so far)").arg(scanDraft.count)
+                              : page.currentTool.figure === "polygon" ? qsTr("Click the corners of the area (%1 so far)").arg(scanDraft.count)
+                              : qsTr("Click where it goes")
+                    }
                     Button {
                         objectName: "finishScanButton"
-                        text: qsTr("Create scan")
-                        enabled: scanDraft.count >= 3
+                        text: qsTr("Create")
+                        enabled: page.currentTool !== null && scanDraft.count >= page.currentTool.minimumPoints
                         onClicked: page.finishScan()
                     }
                     Button {

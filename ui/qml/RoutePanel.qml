@@ -76,7 +76,7 @@ Pane {
                      ToolTip.visible: hovered; ToolTip.text: panel.doc ? qsTr("Undo %1 (Ctrl+Z)").arg(panel.doc.undoText) : "" }
             Button { objectName: "redoButton"; text: qsTr("Redo"); enabled: panel.doc && panel.doc.canRedo; onClicked: panel.doc.redo()
                      ToolTip.visible: hovered; ToolTip.text: panel.doc ? qsTr("Redo %1 (Ctrl+Shift+Z)").arg(panel.doc.redoText) : "" }
-            Button { text: qsTr("Delete"); enabled: panel.doc && panel.doc.selectedRows.length > 0; onClicked: panel.doc.removeSelected()
+            Button { text: qsTr("Delete"); enabled: panel.doc && panel.doc.selectedRows.length > 0; onClicked: panel.doc.editor.removeRows(panel.doc.selectedRows)
                      ToolTip.visible: hovered; ToolTip.text: qsTr("Delete the selected waypoints (Del)") }
             Button { objectName: "scanToolButton"; text: qsTr("Area scan"); checkable: true; checked: panel.scanning
                      onToggled: panel.scanToggled(checked)
@@ -175,10 +175,9 @@ Pane {
             Label { text: panel.doc ? panel.doc.analyzer.photoCount : "" }
         }
 
-        ScanEditor {
-            visible: panel.doc !== null && panel.doc.scanPolygon.length > 0
+        SegmentEditor {
             Layout.fillWidth: true
-            doc: panel.doc
+            editor: panel.doc ? panel.doc.segmentEditor : null
         }
 
         ListView {

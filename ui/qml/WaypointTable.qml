@@ -3,9 +3,9 @@ import QtQuick.Controls
 import QtQuick.Layouts
 import Sortie.Ui
 
-// The route as a table beside the map: one row per segment, cells edited in place (each edit is
-// an undoable setData on the model), a click selects (Ctrl toggles, Shift extends), and the bar
-// above edits every selected row at once.
+// The route as a table beside the map: one row per segment, cells edited in place, a click
+// selects (Ctrl toggles, Shift extends), and the bar above edits every selected row at once.
+// Every edit is one call of the document's RouteEditor (one undo step).
 ColumnLayout {
     id: table
     required property RouteDocument doc   // null: the table only shows `routeModel`
@@ -16,6 +16,7 @@ ColumnLayout {
     component Cell: TextField {
         property string role
         property var rowModel
+        signal edited(real value)
         readOnly: !table.doc || rowModel[role] === undefined
         text: rowModel[role] === undefined ? "" : Number(rowModel[role]).toFixed(role === "latitude" || role === "longitude" ? 6 : 1)
         selectByMouse: true
@@ -24,7 +25,7 @@ ColumnLayout {
             const value = Number(text)
             if (readOnly || isNaN(value) || Math.abs(value - Number(rowModel[role])) < 1e-7)
                 return
-            rowModel[role] = value // setData: one undoable edit
+            edited(value)
         }
     }
 
@@ -49,7 +50,7 @@ ColumnLayout {
             model: ["AGL", "AMSL"]
             enabled: table.selected.length > 0
             Layout.preferredWidth: 76
-            onActivated: table.doc.editor.setAltitudeType(table.selected, currentText)
+            onActivated: table.doc.editor.setAltitudeType(table.selected, currentIndex === 0 ? MissionEnums.Agl : MissionEnums.Amsl)
             ToolTip.visible: hovered
             ToolTip.text: qsTr("Altitude above ground (AGL) or above mean sea level (AMSL)")
         }
@@ -99,11 +100,15 @@ ColumnLayout {
                 anchors.fill: parent
                 spacing: 2
                 Label { text: row.index + 1; Layout.preferredWidth: table.columnWidths[0]; horizontalAlignment: Text.AlignHCenter }
-                Cell { role: "latitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[1] }
-                Cell { role: "longitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[2] }
-                Cell { role: "altitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[3] }
+                Cell { role: "latitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[1]
+                       onEdited: value => table.doc.editor.setLatitude(row.index, value) }
+                Cell { role: "longitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[2]
+                       onEdited: value => table.doc.editor.setLongitude(row.index, value) }
+                Cell { role: "altitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[3]
+                       onEdited: value => table.doc.editor.setAltitude([row.index], value) }
                 Label { text: row.model.altitudeType !== undefined ? row.model.altitudeType : ""; Layout.preferredWidth: table.columnWidths[4] }
-                Cell { role: "speed"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[5] }
+                Cell { role: "speed"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[5]
+                       onEdited: value => table.doc.editor.setSpeed([row.index], value) }
                 Label {
                     text: row.model.kind === "areaScan" ? qsTr("Area scan") : row.model.actionsSummary !== undefined ? row.model.actionsSummary : ""
                     elide: Text.ElideRight

@@ -23,7 +23,11 @@ QString meters(double v) { return v >= 10 ? QString::number(std::lround(v)) : QS
 
 QString label(const Segment &s, int row)
 {
-    return (isWaypoint(s) ? tr("WP %1") : tr("Scan %1")).arg(row + 1);
+    if (isWaypoint(s))
+        return tr("WP %1").arg(row + 1);
+    if (isAreaScan(s))
+        return tr("Scan %1").arg(row + 1);
+    return tr("%1 %2").arg(algorithmLabel(std::get<AlgorithmSegment>(s))).arg(row + 1);
 }
 
 QString quoted(const QString &s) { return s.isEmpty() ? tr("(none)") : QStringLiteral("\"%1\"").arg(s); }
@@ -218,6 +222,21 @@ void RouteDiff::compareFields(const Segment &before, const Segment &after, int r
             add(Kind::Waypoint, row, tr("acceptance radius of %1 %2 → %3 m").arg(name, num(a->acceptanceRadius), num(b->acceptanceRadius)));
         if (a->role != b->role)
             add(Kind::Waypoint, row, tr("%1 %2 → %3").arg(name, roleName(a->role), roleName(b->role)));
+        return;
+    }
+    if (const AlgorithmSegment *a = asAlgorithmSegment(before), *b = asAlgorithmSegment(after); a && b) {
+        if (a->points != b->points || a->figureParameters != b->figureParameters)
+            add(Kind::AreaScan, row, tr("figure of %1 reshaped").arg(name));
+        for (const ParameterValue &v : b->parameters) {
+            const QString *old = a->value(v.name);
+            if (!old || *old != v.value)
+                add(Kind::AreaScan, row, tr("%1 of %2 %3 → %4").arg(v.name, name, old ? quoted(*old) : tr("(none)"), quoted(v.value)));
+        }
+        for (const ParameterValue &v : a->parameters)
+            if (!b->value(v.name))
+                add(Kind::AreaScan, row, tr("%1 of %2 removed").arg(v.name, name));
+        if (a->actions != b->actions)
+            add(Kind::Actions, row, tr("actions of %1 changed").arg(name));
         return;
     }
     const AreaScan *a = asAreaScan(before);

@@ -1,5 +1,7 @@
 #include "RouteStatistics.h"
 
+#include "AlgorithmCatalog.h"
+
 #include "FlightPath.h"
 #include "Geodesy.h"
 #include "ScanPlanCache.h"
@@ -53,12 +55,15 @@ RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
     for (const Segment &s : route.segments) {
         if (isWaypoint(s)) {
             ++st.waypointCount;
-        } else {
+        } else if (const AreaScan *scan = asAreaScan(s)) {
             ++st.areaScanCount;
             AreaScanOutcome scratch;
-            const AreaScanOutcome &o = scanOutcome(std::get<AreaScan>(s), cache, scratch);
+            const AreaScanOutcome &o = scanOutcome(*scan, cache, scratch);
             if (o.ok())
                 st.photoCount += o.plan->photoCount;
+        } else if (const SegmentPlanOutcome o = planAlgorithmSegment(std::get<AlgorithmSegment>(s), AlgorithmCatalog::builtIn()); o.ok()) {
+            st.areaScanCount += o.plan->passes > 0;
+            st.photoCount += o.plan->photos;
         }
     }
     const std::vector<PathPoint> path = flightPath(route, cache);

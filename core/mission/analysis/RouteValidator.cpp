@@ -1,5 +1,7 @@
 #include "RouteValidator.h"
 
+#include "AlgorithmCatalog.h"
+
 #include "ScanPlanCache.h"
 
 #include <algorithm>
@@ -53,7 +55,12 @@ public:
                 checkNeighbour(row);
                 continue;
             }
-            const AreaScan &scan = std::get<AreaScan>(s);
+            const std::optional<AreaScan> planned = isAreaScan(s) ? scanOf(s) : std::nullopt;
+            if (!planned) {
+                checkAlgorithmSegment(row, std::get<AlgorithmSegment>(s));
+                continue;
+            }
+            const AreaScan &scan = *planned;
             AreaScanOutcome scratch;
             const AreaScanOutcome &o = scanOutcome(scan, m_cache, scratch);
             if (o.ok()) {
@@ -123,6 +130,27 @@ private:
                 .arg(label(row), num(speed), num(limit)));
     }
 
+    // A segment Sortie keeps as the server describes it: its values against the definition, its
+    // figure against the points the tool needs. An algorithm no definition describes is kept and
+    // flagged, not refused: the server decides.
+    void checkAlgorithmSegment(int row, const AlgorithmSegment &a)
+    {
+        const AlgorithmDefinition *def = AlgorithmCatalog::builtIn().byClassName(a.algorithm);
+        if (!def) {
+            add(Severity::Warning, "unknown-algorithm", row,
+                QStringLiteral("%1: Sortie does not know the algorithm %2; the server checks it when it processes the route.")
+                    .arg(label(row), a.algorithm));
+            return;
+        }
+        // What the planner (the same one sortie-sim processes with) cannot plan, by parameter or point.
+        const SegmentPlanOutcome o = planSegment(*def, plannerFigure(a), a.parameters, {});
+        for (const QString &problem : o.errors)
+            add(Severity::Error, "segment-plan", row, QStringLiteral("%1: %2").arg(label(row), problem));
+        if (o.ok())
+            for (const QString &warning : o.plan->warnings)
+                add(Severity::Warning, "segment-plan", row, QStringLiteral("%1: %2").arg(label(row), warning));
+    }
+
     void checkNeighbour(int row)
     {
         if (row == 0)
@@ -158,7 +186,7 @@ QString segmentLabel(const Route &route, int row)
 {
     if (row < 0 || row >= int(route.segments.size()))
         return QStringLiteral("The route");
-    return (isWaypoint(route.segments[row]) ? QStringLiteral("Waypoint %1") : QStringLiteral("Area scan %1")).arg(row + 1);
+    return segmentLabel(row, route.segments[size_t(row)]);
 }
 
 ValidationReport validateRoute(const Route &route, ScanPlanCache *cache)

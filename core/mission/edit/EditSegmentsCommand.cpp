@@ -2,23 +2,13 @@
 
 #include "RouteModel.h"
 
-#include <algorithm>
-
 namespace sortie::mission {
 
-EditSegmentsCommand::EditSegmentsCommand(RouteModel *model, std::vector<int> rows, const std::function<void(Segment &)> &edit,
-                                         const QString &text)
-    : QUndoCommand(text), m_model(model), m_rows(std::move(rows))
+EditSegmentsCommand::EditSegmentsCommand(RouteModel *model, std::vector<int> rows, std::vector<Segment> before,
+                                         std::vector<Segment> after, const QString &text, QString kind, int gesture)
+    : QUndoCommand(text), m_model(model), m_rows(std::move(rows)), m_before(std::move(before)), m_after(std::move(after)),
+      m_kind(std::move(kind)), m_gesture(gesture)
 {
-    std::sort(m_rows.begin(), m_rows.end());
-    m_rows.erase(std::unique(m_rows.begin(), m_rows.end()), m_rows.end());
-    m_before.reserve(m_rows.size());
-    m_after.reserve(m_rows.size());
-    for (int r : m_rows) {
-        m_before.push_back(model->segment(r));
-        m_after.push_back(m_before.back());
-        edit(m_after.back());
-    }
 }
 
 void EditSegmentsCommand::redo()
@@ -29,6 +19,15 @@ void EditSegmentsCommand::redo()
 void EditSegmentsCommand::undo()
 {
     m_model->replaceSegments(m_rows, m_before);
+}
+
+bool EditSegmentsCommand::mergeWith(const QUndoCommand *other)
+{
+    const auto *o = static_cast<const EditSegmentsCommand *>(other);
+    if (m_gesture == 0 || o->m_gesture != m_gesture || o->m_model != m_model || o->m_kind != m_kind || o->m_rows != m_rows)
+        return false;
+    m_after = o->m_after;
+    return true;
 }
 
 } // namespace sortie::mission

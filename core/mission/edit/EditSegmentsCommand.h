@@ -4,31 +4,36 @@
 
 #include <QUndoCommand>
 
-#include <functional>
 #include <vector>
 
 namespace sortie::mission {
 
 class RouteModel;
 
-// One undo step for an edit of a selection: altitude, altitude type, speed, actions, scan
-// parameters... The edit function is applied once, at construction, to copies of the rows; redo
-// and undo swap the stored values in.
+// One undo step for an in-place edit of some rows: a move, an altitude, a parameter, actions...
+// redo and undo swap the stored values in. Steps of one gesture (same gesture number, not 0)
+// that do the same kind of edit to the same rows merge: the step keeps the values the gesture
+// started from and takes the latest ones. This is the only way edits merge (see RouteEditor.h).
 class EditSegmentsCommand : public QUndoCommand
 {
 public:
-    EditSegmentsCommand(RouteModel *model, std::vector<int> rows, const std::function<void(Segment &)> &edit,
-                        const QString &text);
+    static constexpr int kId = 0x5302;
+
+    // rows sorted and unique, before/after in the same order. gesture 0: never merges.
+    EditSegmentsCommand(RouteModel *model, std::vector<int> rows, std::vector<Segment> before, std::vector<Segment> after,
+                        const QString &text, QString kind = {}, int gesture = 0);
     void redo() override;
     void undo() override;
-    // True when the edit changes nothing (the caller may skip pushing it).
-    bool isNoOp() const { return m_before == m_after; }
+    int id() const override { return kId; }
+    bool mergeWith(const QUndoCommand *other) override;
 
 private:
     RouteModel *m_model;
-    std::vector<int> m_rows;  // sorted, unique
+    std::vector<int> m_rows;
     std::vector<Segment> m_before;
     std::vector<Segment> m_after;
+    QString m_kind;
+    int m_gesture;
 };
 
 } // namespace sortie::mission

@@ -1,27 +1,60 @@
 #include "RouteEditor.h"
 
 #include "ActionVariants.h"
+#include "Camera.h"
 #include "EditSegmentsCommand.h"
 #include "InsertSegmentsCommand.h"
 #include "MissionLog.h"
-#include "MoveWaypointCommand.h"
+#include "PolygonGeometry.h"
+#include "LocalTangentPlane.h"
 #include "RemoveSegmentsCommand.h"
 #include "ReorderSegmentsCommand.h"
 #include "ReplaceRouteCommand.h"
 #include "RouteModel.h"
-#include "ScanVariants.h"
+#include "SegmentParameters.h"
 #include "SetRouteSettingsCommand.h"
 
 #include <QUndoStack>
 
 #include <algorithm>
+#include <cmath>
+#include <unordered_map>
 
 namespace sortie::mission {
+
+namespace {
+GeoPoint geo(const QGeoCoordinate &c)
+{
+    return c.isValid() ? GeoPoint{c.latitude(), c.longitude()} : GeoPoint{std::nan(""), std::nan("")};
+}
+
+// Three or more valid corners enclosing some area (1 m²).
+bool enclosesArea(const std::vector<GeoPoint> &polygon)
+{
+    if (polygon.size() < 3)
+        return false;
+    for (const GeoPoint &g : polygon)
+        if (!g.isValid())
+            return false;
+    const LocalTangentPlane plane(LocalTangentPlane::centroidOf(polygon));
+    std::vector<PlanePoint> pts;
+    pts.reserve(polygon.size());
+    for (const GeoPoint &g : polygon)
+        pts.push_back(plane.project(g));
+    return std::abs(polygon::signedArea(pts)) >= 1.0;
+}
+} // namespace
 
 RouteEditor::RouteEditor(RouteModel *model, QUndoStack *stack, QObject *parent)
     : QObject(parent), m_model(model), m_stack(stack)
 {
-    m_model->setUndoStack(stack);
+}
+
+bool RouteEditor::refuse(const QString &reason)
+{
+    qCDebug(lcMission) << "edit refused:" << reason;
+    emit refused(reason);
+    return false;
 }
 
 std::vector<int> RouteEditor::validRows(const QList<int> &rows) const
@@ -34,6 +67,37 @@ std::vector<int> RouteEditor::validRows(const QList<int> &rows) const
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
+}
+
+bool RouteEditor::edit(const QList<int> &rows, const std::function<bool(int, Segment &)> &change, const QString &text,
+                       const QString &kind, EditStep step)
+{
+    const std::vector<int> valid = validRows(rows);
+    if (valid.empty())
+        return refuse(tr("Nothing is selected."));
+    std::vector<int> changed;
+    std::vector<Segment> before, after;
+    for (int r : valid) {
+        Segment s = m_model->segment(r);
+        if (!change(r, s))
+            return false;
+        if (s == m_model->segment(r))
+            continue;
+        changed.push_back(r);
+        before.push_back(m_model->segment(r));
+        after.push_back(std::move(s));
+    }
+    // Continuing steps carry the gesture; so does the Done step that ends an open gesture.
+    const int merge = (step == EditStep::Continuing || m_gestureOpen) ? m_gesture : 0;
+    if (step == EditStep::Done) {
+        ++m_gesture;
+        m_gestureOpen = false;
+    } else {
+        m_gestureOpen = true;
+    }
+    if (!changed.empty())
+        m_stack->push(new EditSegmentsCommand(m_model, std::move(changed), std::move(before), std::move(after), text, kind, merge));
+    return true;
 }
 
 Waypoint RouteEditor::newWaypointAt(int row, const GeoPoint &position) const
@@ -55,31 +119,65 @@ Waypoint RouteEditor::newWaypointAt(int row, const GeoPoint &position) const
     return w;
 }
 
-int RouteEditor::addWaypoint(double latitude, double longitude)
+int RouteEditor::addWaypoint(const QGeoCoordinate &at)
 {
-    return insertWaypoint(m_model->count(), latitude, longitude);
+    return insertWaypoint(m_model->count(), at);
 }
 
-int RouteEditor::insertWaypoint(int row, double latitude, double longitude)
+int RouteEditor::insertWaypoint(int row, const QGeoCoordinate &at)
 {
-    const GeoPoint p{latitude, longitude};
-    if (!p.isValid() || row < 0 || row > m_model->count())
-        return -1;
-    return insertSegments(row, {newWaypointAt(row, p)}, QStringLiteral("Add waypoint %1").arg(row + 1));
+    const GeoPoint p = geo(at);
+    if (!p.isValid())
+        return refuse(tr("That is not a valid position.")), -1;
+    if (row < 0 || row > m_model->count())
+        return refuse(tr("There is no row %1 to insert at.").arg(row + 1)), -1;
+    return insertSegments(row, {newWaypointAt(row, p)}, tr("Add waypoint %1").arg(row + 1));
 }
 
 int RouteEditor::insertSegments(int row, std::vector<Segment> segments, const QString &text)
 {
+    const int count = int(segments.size());
     m_stack->push(new InsertSegmentsCommand(m_model, row, std::move(segments), text));
+    emit rowsAdded(row, count);
     return row;
 }
 
-void RouteEditor::moveWaypoint(int row, double latitude, double longitude)
+bool RouteEditor::moveWaypoints(const QList<int> &rows, const QList<QGeoCoordinate> &to, EditStep step)
 {
-    const GeoPoint p{latitude, longitude};
-    if (row < 0 || row >= m_model->count() || !isWaypoint(m_model->segment(row)) || !p.isValid())
-        return;
-    m_stack->push(new MoveWaypointCommand(m_model, row, p, m_gesture));
+    if (rows.size() != to.size() || rows.isEmpty())
+        return refuse(tr("A move needs one position per waypoint."));
+    std::unordered_map<int, GeoPoint> target;
+    target.reserve(size_t(rows.size()));
+    for (qsizetype i = 0; i < rows.size(); ++i) {
+        const GeoPoint p = geo(to[i]);
+        if (!p.isValid())
+            return refuse(tr("That is not a valid position."));
+        if (rows[i] < 0 || rows[i] >= m_model->count() || !isWaypoint(m_model->segment(rows[i])))
+            return refuse(tr("Row %1 is not a waypoint.").arg(rows[i] + 1));
+        target[rows[i]] = p;
+    }
+    const QString text = rows.size() == 1 ? tr("Move waypoint %1").arg(rows.first() + 1)
+                                          : tr("Move %n waypoint(s)", nullptr, int(rows.size()));
+    return edit(rows, [&](int row, Segment &s) {
+        std::get<Waypoint>(s).position = target.at(row);
+        return true;
+    }, text, QStringLiteral("move"), step);
+}
+
+bool RouteEditor::setLatitude(int row, double latitude)
+{
+    if (row < 0 || row >= m_model->count() || !isWaypoint(m_model->segment(row)))
+        return refuse(tr("Row %1 is not a waypoint.").arg(row + 1));
+    const GeoPoint p = std::get<Waypoint>(m_model->segment(row)).position;
+    return moveWaypoints({row}, {QGeoCoordinate(latitude, p.longitude)});
+}
+
+bool RouteEditor::setLongitude(int row, double longitude)
+{
+    if (row < 0 || row >= m_model->count() || !isWaypoint(m_model->segment(row)))
+        return refuse(tr("Row %1 is not a waypoint.").arg(row + 1));
+    const GeoPoint p = std::get<Waypoint>(m_model->segment(row)).position;
+    return moveWaypoints({row}, {QGeoCoordinate(p.latitude, longitude)});
 }
 
 QList<int> RouteEditor::rowsOf(const QItemSelectionModel *selection) const
@@ -118,149 +216,319 @@ void RouteEditor::reverse(const QList<int> &rows)
         m_stack->push(ReorderSegmentsCommand::reverse(m_model, first, last));
 }
 
-void RouteEditor::editSegments(const QList<int> &rows, const std::function<void(Segment &)> &edit, const QString &text)
+bool RouteEditor::setAltitude(const QList<int> &rows, double altitude, EditStep step)
 {
-    std::vector<int> valid = validRows(rows);
-    if (valid.empty())
-        return;
-    auto *cmd = new EditSegmentsCommand(m_model, std::move(valid), edit, text);
-    if (cmd->isNoOp()) {
-        delete cmd;
-        return;
-    }
-    m_stack->push(cmd);
-}
-
-void RouteEditor::setAltitude(const QList<int> &rows, double altitude)
-{
-    editSegments(rows, [altitude](Segment &s) {
+    if (!std::isfinite(altitude))
+        return refuse(tr("The altitude needs a number."));
+    QString error;
+    return edit(rows, [&](int, Segment &s) {
         if (Waypoint *w = asWaypoint(s)) {
             w->altitude = altitude;
-        } else {
-            auto &p = std::get<AreaScan>(s).parameters;
-            p.heightMode = ScanHeightMode::Altitude;
-            p.altitude = altitude;
-            syncDerivedFields(p);
+            return true;
         }
-    }, QStringLiteral("Set altitude to %1 m").arg(altitude));
+        if (AlgorithmSegment *a = asAlgorithmSegment(s); a && !parameterNames(s, catalog()).contains(QStringLiteral("height"))) {
+            if (a->figure == FigureType::Point || a->figure == FigureType::Circle)  // the point carries it
+                for (FigurePoint &p : a->points)
+                    p.altitude = altitude;
+            return true;
+        }
+        return setParameterValue(s, QStringLiteral("height"), altitude, &error, catalog()) || refuse(error);
+    }, tr("Set altitude to %1 m").arg(altitude), QStringLiteral("altitude"), step);
 }
 
-bool RouteEditor::setAltitudeType(const QList<int> &rows, const QString &type)
+bool RouteEditor::setAltitudeType(const QList<int> &rows, AltitudeType type, bool keepHeight)
 {
-    AltitudeType t;
-    if (!parseAltitudeType(type, &t))
-        return false;
-    // The number stays: without terrain data a conversion would be a guess. See docs/missions.md.
-    editSegments(rows, [t](Segment &s) {
-        if (Waypoint *w = asWaypoint(s)) w->altitudeType = t;
-        else std::get<AreaScan>(s).parameters.altitudeType = t;
-    }, QStringLiteral("Set altitude type to %1").arg(altitudeTypeName(t)));
-    return true;
+    // Through the ground under each waypoint when it is known; otherwise the number stays (a
+    // conversion would be a guess). A scan's altitude has no one point to convert at. See docs/missions.md.
+    const GroundLookup ground = keepHeight ? m_ground : GroundLookup();
+    QString error;
+    return edit(rows, [&](int, Segment &s) {
+        if (Waypoint *w = asWaypoint(s)) {
+            if (ground && w->altitudeType != type)
+                if (const std::optional<double> g = ground(w->position))
+                    w->altitude += type == AltitudeType::Amsl ? *g : -*g;
+            w->altitudeType = type;
+            return true;
+        }
+        if (AlgorithmSegment *a = asAlgorithmSegment(s); a && !parameterNames(s, catalog()).contains(QStringLiteral("altitudeType"))) {
+            for (FigurePoint &p : a->points)
+                p.altitudeType = type;
+            return true;
+        }
+        return setParameterValue(s, QStringLiteral("altitudeType"), QVariant::fromValue(type), &error, catalog()) || refuse(error);
+    }, tr("Set altitude type to %1").arg(altitudeTypeName(type)), QStringLiteral("altitudeType"), EditStep::Done);
 }
 
-void RouteEditor::setSpeed(const QList<int> &rows, double speed)
+bool RouteEditor::setSpeed(const QList<int> &rows, double speed)
 {
-    editSegments(rows, [speed](Segment &s) {
-        if (Waypoint *w = asWaypoint(s)) w->speed = speed;
-        else std::get<AreaScan>(s).parameters.speed = speed;
-    }, QStringLiteral("Set speed to %1 m/s").arg(speed));
+    return setParameter(rows, QStringLiteral("speed"), speed);
 }
 
-bool RouteEditor::setTurnType(const QList<int> &rows, const QString &type)
+bool RouteEditor::setTurnType(const QList<int> &rows, TurnType type)
 {
-    TurnType t;
-    if (!parseTurnType(type, &t))
-        return false;
-    editSegments(rows, [t](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->turnType = t; },
-                 QStringLiteral("Set turn type to %1").arg(turnTypeName(t)));
-    return true;
+    return edit(rows, [type](int, Segment &s) {
+        if (Waypoint *w = asWaypoint(s))
+            w->turnType = type;
+        return true;
+    }, tr("Set turn type to %1").arg(turnTypeName(type)), QStringLiteral("turnType"), EditStep::Done);
 }
 
-void RouteEditor::setAcceptanceRadius(const QList<int> &rows, double meters)
+bool RouteEditor::setAcceptanceRadius(const QList<int> &rows, double meters)
 {
-    editSegments(rows, [meters](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->acceptanceRadius = meters; },
-                 QStringLiteral("Set acceptance radius to %1 m").arg(meters));
+    return setParameter(rows, QStringLiteral("acceptanceRadius"), meters);
+}
+
+bool RouteEditor::setParameter(const QList<int> &rows, const QString &name, const QVariant &value, EditStep step)
+{
+    // Rows without the parameter are left alone; a bad value for one that has it cancels the edit.
+    QString error;
+    bool any = false;
+    for (int r : validRows(rows))
+        any |= parameterNames(m_model->segment(r), catalog()).contains(name);
+    if (!any)
+        return refuse(tr("No selected segment has a parameter \"%1\".").arg(name));
+    return edit(rows, [&](int, Segment &s) {
+        if (!parameterNames(s, catalog()).contains(name))
+            return true;
+        return setParameterValue(s, name, value, &error, catalog()) || refuse(error);
+    }, tr("Set %1 to %2").arg(name, value.toString()), QStringLiteral("parameter:") + name, step);
 }
 
 bool RouteEditor::addAction(const QList<int> &rows, const QVariantMap &action)
 {
     const auto a = actionFromVariant(action);
-    if (!a) {
-        qCWarning(lcMission) << "unknown action kind" << action.value(QStringLiteral("kind"));
-        return false;
-    }
-    editSegments(rows, [&a](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->actions.push_back(*a); },
-                 QStringLiteral("Add action: %1").arg(describeAction(*a)));
-    return true;
+    if (!a)
+        return refuse(tr("There is no action \"%1\".").arg(action.value(QStringLiteral("kind")).toString()));
+    return edit(rows, [&a](int, Segment &s) {
+        if (Waypoint *w = asWaypoint(s))
+            w->actions.push_back(*a);
+        return true;
+    }, tr("Add action: %1").arg(describeAction(*a)), QStringLiteral("addAction"), EditStep::Done);
 }
 
 void RouteEditor::removeAction(const QList<int> &rows, int actionIndex)
 {
-    editSegments(rows, [actionIndex](Segment &s) {
+    edit(rows, [actionIndex](int, Segment &s) {
         if (Waypoint *w = asWaypoint(s); w && actionIndex >= 0 && actionIndex < int(w->actions.size()))
             w->actions.erase(w->actions.begin() + actionIndex);
-    }, QStringLiteral("Remove action"));
+        return true;
+    }, tr("Remove action"), QStringLiteral("removeAction"), EditStep::Done);
 }
 
 bool RouteEditor::setAction(const QList<int> &rows, int actionIndex, const QVariantMap &action)
 {
     const auto a = actionFromVariant(action);
     if (!a)
-        return false;
-    editSegments(rows, [&a, actionIndex](Segment &s) {
+        return refuse(tr("There is no action \"%1\".").arg(action.value(QStringLiteral("kind")).toString()));
+    return edit(rows, [&a, actionIndex](int, Segment &s) {
         if (Waypoint *w = asWaypoint(s); w && actionIndex >= 0 && actionIndex < int(w->actions.size()))
             w->actions[size_t(actionIndex)] = *a;
-    }, QStringLiteral("Edit action: %1").arg(describeAction(*a)));
-    return true;
-}
-
-bool RouteEditor::setScanProperties(int row, const QVariantMap &parameters)
-{
-    if (row < 0 || row >= m_model->count() || !isAreaScan(m_model->segment(row)))
-        return false;
-    AreaScanParameters p = std::get<AreaScan>(m_model->segment(row)).parameters;
-    if (!applyScanVariant(p, parameters))
-        return false;
-    setScanParameters(row, p);
-    return true;
+        return true;
+    }, tr("Edit action: %1").arg(describeAction(*a)), QStringLiteral("setAction"), EditStep::Done);
 }
 
 void RouteEditor::clearActions(const QList<int> &rows)
 {
-    editSegments(rows, [](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->actions.clear(); },
-                 QStringLiteral("Clear actions"));
+    edit(rows, [](int, Segment &s) {
+        if (Waypoint *w = asWaypoint(s))
+            w->actions.clear();
+        return true;
+    }, tr("Clear actions"), QStringLiteral("clearActions"), EditStep::Done);
 }
 
-int RouteEditor::addAreaScan(const QVariantList &polygon)
+int RouteEditor::addAreaScan(const QList<QGeoCoordinate> &polygon)
 {
     AreaScan scan;
-    for (const QVariant &v : polygon) {
-        const QVariantMap m = v.toMap();
-        const GeoPoint g{m.value(QStringLiteral("latitude")).toDouble(), m.value(QStringLiteral("longitude")).toDouble()};
-        if (!g.isValid())
-            return -1;
-        scan.polygon.push_back(g);
-    }
-    if (scan.polygon.size() < 3)
-        return -1;
-    scan.parameters.altitude = std::max(m_model->settings().safeAltitude, std::min(60.0, m_model->settings().maxAltitude));
-    scan.parameters.speed = m_model->settings().initialSpeed;
+    for (const QGeoCoordinate &c : polygon)
+        scan.polygon.push_back(geo(c));
+    if (!enclosesArea(scan.polygon))
+        return refuse(tr("An area scan needs at least three corners that enclose an area.")), -1;
+    const RouteSettings &rs = m_model->settings();
+    scan.parameters.altitude = std::max(rs.safeAltitude, std::min(60.0, rs.maxAltitude));
+    scan.parameters.speed = rs.initialSpeed;
     syncDerivedFields(scan.parameters);
-    return insertSegments(m_model->count(), {std::move(scan)}, QStringLiteral("Add area scan"));
+    return insertSegments(m_model->count(), {std::move(scan)}, tr("Add area scan"));
 }
 
-void RouteEditor::setScanParameters(int row, const AreaScanParameters &parameters)
+namespace {
+// The points of a figure an operator edits, whatever segment holds them.
+struct FigureAccess
 {
-    AreaScanParameters synced = parameters;
-    syncDerivedFields(synced);
-    editSegments({row}, [&synced](Segment &s) { if (AreaScan *a = asAreaScan(s)) a->parameters = synced; },
-                 QStringLiteral("Edit area scan %1").arg(row + 1));
+    std::vector<GeoPoint> *corners = nullptr;        // an area scan
+    std::vector<FigurePoint> *points = nullptr;      // any other algorithm
+    FigureType figure = FigureType::Polygon;
+
+    int size() const { return corners ? int(corners->size()) : points ? int(points->size()) : 0; }
+    int minimum() const { return figure == FigureType::Polygon ? 3 : figure == FigureType::Polyline ? 2 : 1; }
+    bool movable() const { return corners || points; }
+    bool growable() const { return figure == FigureType::Polygon || figure == FigureType::Polyline; }
+    void set(int i, const GeoPoint &p)
+    {
+        if (corners) (*corners)[size_t(i)] = p;
+        else (*points)[size_t(i)].position = p;
+    }
+    void insert(int i, const GeoPoint &p)
+    {
+        if (corners) {
+            corners->insert(corners->begin() + i, p);
+        } else {
+            FigurePoint f = points->empty() ? FigurePoint{} : (*points)[size_t(std::max(0, i - 1))];
+            f.position = p;
+            points->insert(points->begin() + i, f);
+        }
+    }
+    void erase(int i)
+    {
+        if (corners) corners->erase(corners->begin() + i);
+        else points->erase(points->begin() + i);
+    }
+};
+
+FigureAccess figureAccess(Segment &s)
+{
+    if (AreaScan *a = asAreaScan(s))
+        return {&a->polygon, nullptr, FigureType::Polygon};
+    if (AlgorithmSegment *a = asAlgorithmSegment(s))
+        return {nullptr, &a->points, a->figure};
+    return {};
+}
+} // namespace
+
+bool RouteEditor::moveVertex(int row, int vertex, const QGeoCoordinate &to, EditStep step)
+{
+    const GeoPoint p = geo(to);
+    if (!p.isValid())
+        return refuse(tr("That is not a valid position."));
+    return edit({row}, [&](int, Segment &s) {
+        FigureAccess f = figureAccess(s);
+        if (vertex < 0 || vertex >= f.size())
+            return refuse(tr("Segment %1 has no point %2.").arg(row + 1).arg(vertex + 1));
+        f.set(vertex, p);
+        return true;
+    }, tr("Move point %1 of segment %2").arg(vertex + 1).arg(row + 1), QStringLiteral("vertex:%1").arg(vertex), step);
 }
 
-void RouteEditor::setScanPolygon(int row, std::vector<GeoPoint> polygon)
+bool RouteEditor::insertVertex(int row, int vertex, const QGeoCoordinate &at)
 {
-    editSegments({row}, [&polygon](Segment &s) { if (AreaScan *a = asAreaScan(s)) a->polygon = polygon; },
-                 QStringLiteral("Edit area scan %1 polygon").arg(row + 1));
+    const GeoPoint p = geo(at);
+    if (!p.isValid())
+        return refuse(tr("That is not a valid position."));
+    return edit({row}, [&](int, Segment &s) {
+        FigureAccess f = figureAccess(s);
+        if (!f.growable() || vertex < 0 || vertex > f.size())
+            return refuse(tr("Segment %1 has no edge there.").arg(row + 1));
+        f.insert(vertex, p);
+        return true;
+    }, tr("Add a point to segment %1").arg(row + 1), QStringLiteral("insertVertex"), EditStep::Done);
+}
+
+bool RouteEditor::removeVertex(int row, int vertex)
+{
+    return edit({row}, [&](int, Segment &s) {
+        FigureAccess f = figureAccess(s);
+        if (vertex < 0 || vertex >= f.size())
+            return refuse(tr("Segment %1 has no point %2.").arg(row + 1).arg(vertex + 1));
+        if (f.size() <= f.minimum())
+            return refuse(tr("This figure keeps at least %n point(s).", nullptr, f.minimum()));
+        f.erase(vertex);
+        return true;
+    }, tr("Remove point %1 of segment %2").arg(vertex + 1).arg(row + 1), QStringLiteral("removeVertex"), EditStep::Done);
+}
+
+bool RouteEditor::setRadius(int row, double meters, EditStep step)
+{
+    if (!(meters > 0) || !std::isfinite(meters))
+        return refuse(tr("A radius is above 0 m."));
+    return edit({row}, [&](int, Segment &s) {
+        AlgorithmSegment *a = asAlgorithmSegment(s);
+        if (!a || a->figure != FigureType::Circle)
+            return refuse(tr("Segment %1 is no circle.").arg(row + 1));
+        if (a->figureParameters.empty())
+            a->figureParameters.push_back(meters);
+        else
+            a->figureParameters[0] = meters;
+        return true;
+    }, tr("Set the radius of segment %1 to %2 m").arg(row + 1).arg(meters), QStringLiteral("radius"), step);
+}
+
+QVariantList RouteEditor::drawingTools() const
+{
+    QVariantList tools;
+    for (const AlgorithmDefinition &d : catalog().algorithms()) {
+        if (d.kind == AlgorithmKind::Waypoint || d.kind == AlgorithmKind::TakeOff || d.kind == AlgorithmKind::Landing)
+            continue;  // a click on the map adds those
+        const QString figure = d.figure == FigureType::Polygon ? QStringLiteral("polygon")
+                             : d.figure == FigureType::Polyline ? QStringLiteral("polyline")
+                             : d.figure == FigureType::Circle ? QStringLiteral("circle") : QStringLiteral("point");
+        const QVariantMap tool{{QStringLiteral("algorithm"), d.className}, {QStringLiteral("name"), d.displayName},
+                               {QStringLiteral("figure"), figure}, {QStringLiteral("minimumPoints"), std::max(1, d.minimumPoints)}};
+        if (d.kind == AlgorithmKind::AreaScan)
+            tools.prepend(tool);
+        else
+            tools.append(tool);
+    }
+    return tools;
+}
+
+void RouteEditor::setCatalog(const AlgorithmCatalog *catalog)
+{
+    m_catalog = catalog;
+    emit catalogChanged();
+}
+
+const AlgorithmCatalog &RouteEditor::catalog() const
+{
+    return m_catalog ? *m_catalog : AlgorithmCatalog::builtIn();
+}
+
+int RouteEditor::addSegment(const QString &algorithm, const QList<QGeoCoordinate> &points)
+{
+    const AlgorithmKind kind = algorithmKindOf(algorithm);
+    const QString className = algorithm.contains(QLatin1Char('.')) || kind == AlgorithmKind::Unknown ? algorithm
+                                                                                                      : algorithmClassName(kind);
+    if (kind == AlgorithmKind::AreaScan)
+        return addAreaScan(points);
+    if (kind == AlgorithmKind::Waypoint || kind == AlgorithmKind::TakeOff || kind == AlgorithmKind::Landing) {
+        if (points.size() != 1 || !geo(points.first()).isValid())
+            return refuse(tr("A point segment needs one valid position.")), -1;
+        Waypoint w = newWaypointAt(m_model->count(), geo(points.first()));
+        w.role = kind == AlgorithmKind::TakeOff ? WaypointRole::Takeoff : kind == AlgorithmKind::Landing ? WaypointRole::Land : WaypointRole::Pass;
+        return insertSegments(m_model->count(), {std::move(w)}, tr("Add %1").arg(roleName(w.role)));
+    }
+    const AlgorithmDefinition *def = catalog().byClassName(className);
+    if (!def)
+        return refuse(tr("Sortie has no description of the algorithm %1.").arg(algorithm)), -1;
+    AlgorithmSegment a;
+    a.algorithm = def->className;
+    a.figure = def->figure;
+    for (const QGeoCoordinate &c : points)
+        a.points.push_back({geo(c), 0.0, AltitudeType::Agl});
+    std::vector<GeoPoint> corners = figureOf(Segment(a));
+    for (const GeoPoint &g : corners)
+        if (!g.isValid())
+            return refuse(tr("That is not a valid position.")), -1;
+    if (int(corners.size()) < def->minimumPoints || (def->figure == FigureType::Polygon && !enclosesArea(corners)))
+        return refuse(tr("%1 needs at least %n point(s)%2.", nullptr, def->minimumPoints)
+                          .arg(def->displayName, def->figure == FigureType::Polygon ? tr(" enclosing an area") : QString())), -1;
+    const RouteSettings &rs = m_model->settings();
+    const double height = std::max(rs.safeAltitude, std::min(50.0, rs.maxAltitude));
+    if (def->figure == FigureType::Point || def->figure == FigureType::Circle)
+        for (FigurePoint &p : a.points)
+            p.altitude = height;  // the point tools fly at their point's altitude
+    if (def->figure == FigureType::Circle)
+        a.figureParameters = {50.0};
+    for (const ParameterDefinition &p : def->parameters) {
+        QString value = p.defaultValue;
+        if (p.name == QLatin1String("height"))
+            value = parameterNumberText(height);
+        else if (p.name == QLatin1String("camera") && value.isEmpty() && !builtInCameras().empty())
+            value = builtInCameras().front().name;  // a photo tool flies with a camera from the start
+        else if (p.name == QLatin1String("speed"))
+            value = parameterNumberText(rs.initialSpeed);
+        if (!value.isEmpty())
+            a.parameters.push_back({p.name, value});
+    }
+    return insertSegments(m_model->count(), {std::move(a)}, tr("Add %1").arg(def->displayName));
 }
 
 bool RouteEditor::setRouteProperty(const QString &name, const QVariant &value)
@@ -284,11 +552,11 @@ bool RouteEditor::setRouteProperty(const QString &name, const QVariant &value)
     else if (name == QLatin1String("maxHorizontalSpeed"))
         s.profile.maxHorizontalSpeed = value.toDouble(&ok);
     else
-        return false;
+        return refuse(tr("A route has no setting \"%1\".").arg(name));
     if (!ok)
-        return false;
+        return refuse(tr("%1 needs a number.").arg(name));
     if (!(s == m_model->settings()))
-        setSettings(s, QStringLiteral("Set route %1").arg(name));
+        setSettings(s, tr("Set route %1").arg(name));
     return true;
 }
 

@@ -1,13 +1,11 @@
 #include "RouteModel.h"
 
 #include "ActionVariants.h"
-#include "EditSegmentsCommand.h"
-#include "MoveWaypointCommand.h"
-#include "ScanVariants.h"
-
-#include <QUndoStack>
+#include "AreaScanPlanner.h"
+#include "SegmentParameters.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sortie::mission {
 
@@ -16,51 +14,27 @@ namespace {
 // each run: one O(n) pass beats thousands of O(n) erases.
 constexpr size_t kMaxRunsSignalled = 16;
 
-// The edit a setData call asks for, or nullopt when the role is not editable or the value is bad.
-std::optional<std::function<void(Segment &)>> editFor(int role, const QVariant &value)
+QVariantMap scanPlanToVariant(const AreaScanOutcome &o)
 {
-    bool ok = false;
-    switch (role) {
-    case RouteModel::AltitudeRole: {
-        const double v = value.toDouble(&ok);
-        if (!ok) return std::nullopt;
-        return [v](Segment &s) {
-            if (Waypoint *w = asWaypoint(s)) { w->altitude = v; return; }
-            auto &p = std::get<AreaScan>(s).parameters;
-            p.heightMode = ScanHeightMode::Altitude;
-            p.altitude = v;
-            syncDerivedFields(p);
-        };
-    }
-    case RouteModel::AltitudeTypeRole: {
-        AltitudeType t;
-        if (!parseAltitudeType(value.toString(), &t)) return std::nullopt;
-        return [t](Segment &s) {
-            if (Waypoint *w = asWaypoint(s)) w->altitudeType = t;
-            else std::get<AreaScan>(s).parameters.altitudeType = t;
-        };
-    }
-    case RouteModel::SpeedRole: {
-        const double v = value.toDouble(&ok);
-        if (!ok) return std::nullopt;
-        return [v](Segment &s) {
-            if (Waypoint *w = asWaypoint(s)) w->speed = v;
-            else std::get<AreaScan>(s).parameters.speed = v;
-        };
-    }
-    case RouteModel::TurnTypeRole: {
-        TurnType t;
-        if (!parseTurnType(value.toString(), &t)) return std::nullopt;
-        return [t](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->turnType = t; };
-    }
-    case RouteModel::AcceptanceRadiusRole: {
-        const double v = value.toDouble(&ok);
-        if (!ok) return std::nullopt;
-        return [v](Segment &s) { if (Waypoint *w = asWaypoint(s)) w->acceptanceRadius = v; };
-    }
-    default:
-        return std::nullopt;
-    }
+    if (!o.ok())
+        return {{"ok", false}, {"message", o.message}};
+    const AreaScanPlan &p = *o.plan;
+    QVariantList path;
+    path.reserve(qsizetype(p.path.size()));
+    for (const GeoPoint &g : p.path)
+        path << QVariantMap{{"latitude", g.latitude}, {"longitude", g.longitude}};
+    return {{"ok", true}, {"message", QString()}, {"transects", int(p.transects.size())}, {"cells", p.cells},
+            {"photoCount", p.photoCount}, {"altitude", p.altitude}, {"groundSampleDistanceCm", p.groundSampleDistanceCm},
+            {"transectSpacingMeters", p.transectSpacing}, {"triggerDistanceMeters", p.triggerDistance},
+            {"pathLengthMeters", p.pathLength}, {"areaSquareMeters", p.areaSquareMeters}, {"path", path}};
+}
+
+QVariantMap parametersToVariant(const Segment &s)
+{
+    QVariantMap map;
+    for (const QString &name : parameterNames(s))
+        map.insert(name, parameterValue(s, name));
+    return map;
 }
 }
 
@@ -90,6 +64,7 @@ QHash<int, QByteArray> RouteModel::roleNames() const
         {AltitudeRole, "altitude"}, {AltitudeTypeRole, "altitudeType"}, {SpeedRole, "speed"}, {TurnTypeRole, "turnType"},
         {AcceptanceRadiusRole, "acceptanceRadius"}, {ActionCountRole, "actionCount"}, {ActionsSummaryRole, "actionsSummary"},
         {ActionsRole, "actions"}, {PolygonRole, "polygon"}, {ScanParametersRole, "scanParameters"}, {ScanPlanRole, "scanPlan"},
+        {LabelRole, "label"},
         {Qt::DisplayRole, "display"},
     };
 }
@@ -100,19 +75,21 @@ QVariant RouteModel::data(const QModelIndex &index, int role) const
         return {};
     const Segment &s = segment(index.row());
     const Waypoint *w = asWaypoint(s);
-    const AreaScan *scan = asAreaScan(s);
+    // A value a segment does not give (an unknown algorithm's altitude) is missing, never 0.
+    auto known = [](double v) { return std::isnan(v) ? QVariant() : QVariant(v); };
     switch (role) {
     case Qt::DisplayRole:  // no row number in it: rows are renumbered by inserts, their text is not
-        return QStringLiteral("%1 %2, %3 · %4 m %5").arg(w ? roleName(w->role) : QStringLiteral("areaScan"))
+        return QStringLiteral("%1 %2, %3 · %4 m %5").arg(segmentKindName(s))
             .arg(anchorOf(s).latitude, 0, 'f', 6).arg(anchorOf(s).longitude, 0, 'f', 6)
             .arg(altitudeOf(s)).arg(altitudeTypeName(altitudeTypeOf(s)));
-    case KindRole: return w ? roleName(w->role) : QStringLiteral("areaScan");
+    case KindRole: return segmentKindName(s);
+    case LabelRole: return segmentLabel(index.row(), s);
     case SequenceRole: return index.row() + 1;
     case LatitudeRole: return anchorOf(s).latitude;
     case LongitudeRole: return anchorOf(s).longitude;
-    case AltitudeRole: return altitudeOf(s);
+    case AltitudeRole: return known(altitudeOf(s));
     case AltitudeTypeRole: return altitudeTypeName(altitudeTypeOf(s));
-    case SpeedRole: return speedOf(s);
+    case SpeedRole: return known(speedOf(s));
     case TurnTypeRole: return w ? turnTypeName(w->turnType) : QVariant();
     case AcceptanceRadiusRole: return w ? w->acceptanceRadius : QVariant();
     case ActionCountRole: return w ? int(w->actions.size()) : 0;
@@ -126,64 +103,22 @@ QVariant RouteModel::data(const QModelIndex &index, int role) const
     }
     case PolygonRole: {
         QVariantList list;
-        if (scan)
-            for (const GeoPoint &g : scan->polygon)
-                list << QVariantMap{{"latitude", g.latitude}, {"longitude", g.longitude}};
+        for (const GeoPoint &g : figureOf(s))
+            list << QVariantMap{{"latitude", g.latitude}, {"longitude", g.longitude}};
         return list;
     }
-    case ScanParametersRole: return scan ? scanParametersToVariant(scan->parameters) : QVariant();
-    case ScanPlanRole: return scan ? scanPlanToVariant(m_scanPlans.outcome(*scan)) : QVariant();
+    case ScanParametersRole: return w ? QVariant() : parametersToVariant(s);
+    case ScanPlanRole: {
+        const std::optional<AreaScan> scan = scanOf(s);
+        return scan ? scanPlanToVariant(m_scanPlans.outcome(*scan)) : QVariant();
+    }
     default: return {};
     }
 }
 
 QString RouteModel::segmentLabelFor(int row, const Segment &s)
 {
-    return (isWaypoint(s) ? QStringLiteral("Waypoint %1") : QStringLiteral("Area scan %1")).arg(row + 1);
-}
-
-Qt::ItemFlags RouteModel::flags(const QModelIndex &index) const
-{
-    return QAbstractListModel::flags(index) | (index.isValid() ? Qt::ItemIsEditable : Qt::NoItemFlags);
-}
-
-bool RouteModel::setData(const QModelIndex &index, const QVariant &value, int role)
-{
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
-        return false;
-    const int row = index.row();
-    if (role == LatitudeRole || role == LongitudeRole) {
-        const Waypoint *w = asWaypoint(segment(row));
-        bool ok = false;
-        const double v = value.toDouble(&ok);
-        if (!w || !ok)
-            return false;
-        GeoPoint to = w->position;
-        (role == LatitudeRole ? to.latitude : to.longitude) = v;
-        if (!to.isValid())
-            return false;
-        if (m_undoStack)
-            m_undoStack->push(new MoveWaypointCommand(this, row, to));
-        else
-            setWaypointPosition(row, to);
-        return true;
-    }
-    const auto edit = editFor(role, value);
-    if (!edit)
-        return false;
-    if (m_undoStack) {
-        m_undoStack->push(new EditSegmentsCommand(this, {row}, *edit, QStringLiteral("Edit %1").arg(QString::fromLatin1(roleNames().value(role)))));
-    } else {
-        Segment s = segment(row);
-        (*edit)(s);
-        replaceSegments({row}, {s});
-    }
-    return true;
-}
-
-void RouteModel::setUndoStack(QUndoStack *stack)
-{
-    m_undoStack = stack;
+    return segmentLabel(row, s);
 }
 
 void RouteModel::insertSegments(int row, std::vector<Segment> segments)
@@ -268,14 +203,6 @@ void RouteModel::replaceSegments(const std::vector<int> &rows, const std::vector
     for (size_t i = 0; i < rows.size(); ++i)
         m_route.segments[size_t(rows[i])] = values[i];
     emitChanged(rows, {});
-}
-
-void RouteModel::setWaypointPosition(int row, const GeoPoint &position)
-{
-    std::get<Waypoint>(m_route.segments[size_t(row)]).position = position;
-    const QModelIndex i = index(row);
-    emit dataChanged(i, i, {LatitudeRole, LongitudeRole});
-    emit routeEdited();
 }
 
 void RouteModel::permute(const std::vector<int> &order)

@@ -4,8 +4,6 @@
 #include "ScanPlanCache.h"
 
 #include <QAbstractListModel>
-#include <QPointer>
-#include <QUndoStack>
 
 #include <vector>
 
@@ -13,7 +11,7 @@ namespace sortie::mission {
 
 // The route being edited, one row per segment (waypoint or area scan), as plain values: no QObject
 // per waypoint, so 10,000+ rows stay cheap. Views read it through roles; edits go through
-// RouteEditor (or setData, which pushes the same undoable commands when an undo stack is set).
+// RouteEditor, the one entry point: the model itself is read-only to views.
 // The mutators below are the primitives the undo commands use; they are not undoable themselves.
 class RouteModel : public QAbstractListModel
 {
@@ -27,7 +25,7 @@ class RouteModel : public QAbstractListModel
 
 public:
     enum Roles {
-        KindRole = Qt::UserRole + 1,  // "waypoint", "takeoff", "land", "areaScan"
+        KindRole = Qt::UserRole + 1,  // "waypoint", "takeoff", "land", "areaScan", "circle", ... "unknown"
         SequenceRole,                 // 1-based row number
         LatitudeRole,                 // degrees (a scan: its first vertex)
         LongitudeRole,
@@ -39,9 +37,10 @@ public:
         ActionCountRole,
         ActionsSummaryRole,           // "Wait 5 s · Photo every 20 m"
         ActionsRole,                  // list of maps, see ActionVariants.h
-        PolygonRole,                  // a scan's vertices: list of {latitude, longitude}
-        ScanParametersRole,           // a scan's parameters as a map (ScanVariants.h)
-        ScanPlanRole,                 // a scan's generated plan: path, transects, photos (ScanVariants.h)
+        PolygonRole,                  // an area's corners, a corridor's line, a circle's centre: list of {latitude, longitude}
+        ScanParametersRole,           // a segment's parameters by wire name (SegmentParameters.h); none for a waypoint
+        ScanPlanRole,                 // an area scan's or photogrammetry's plan: {ok, message, transects, photoCount, path, ...}
+        LabelRole,                    // "Waypoint 3", "Circle 5"
     };
     Q_ENUM(Roles)
 
@@ -49,8 +48,6 @@ public:
 
     int rowCount(const QModelIndex &parent = QModelIndex()) const override;
     QVariant data(const QModelIndex &index, int role = Qt::DisplayRole) const override;
-    bool setData(const QModelIndex &index, const QVariant &value, int role = Qt::EditRole) override;
-    Qt::ItemFlags flags(const QModelIndex &index) const override;
     QHash<int, QByteArray> roleNames() const override;
 
     const Route &route() const { return m_route; }
@@ -63,21 +60,16 @@ public:
     double initialSpeed() const { return m_route.settings.initialSpeed; }
     double maxSpeed() const { return m_route.settings.maxSpeed; }
 
-    // Where setData pushes its commands. Without one, setData edits directly.
-    void setUndoStack(QUndoStack *stack);
-    QUndoStack *undoStack() const { return m_undoStack; }
-
     // Primitives for the undo commands. Rows are sorted ascending and valid.
     void insertSegments(int row, std::vector<Segment> segments);
     std::vector<Segment> takeSegments(const std::vector<int> &rows);
     void restoreSegments(const std::vector<int> &rows, std::vector<Segment> segments);  // inverse of takeSegments
     void replaceSegments(const std::vector<int> &rows, const std::vector<Segment> &values);
-    void setWaypointPosition(int row, const GeoPoint &position);
     void permute(const std::vector<int> &order);  // new row i holds old row order[i]
     void setSettings(const RouteSettings &settings);
     void resetRoute(Route route);
 
-    static QString segmentLabelFor(int row, const Segment &s);  // "Waypoint 12", "Area scan 4"
+    static QString segmentLabelFor(int row, const Segment &s);  // "Waypoint 12", "Area scan 4", "Circle 5"
 
 signals:
     void countChanged();
@@ -89,7 +81,6 @@ private:
     void emitChanged(const std::vector<int> &rows, const QList<int> &roles);
 
     Route m_route;
-    QPointer<QUndoStack> m_undoStack;
     mutable ScanPlanCache m_scanPlans;  // plans shown through ScanPlanRole
 };
 

@@ -196,9 +196,9 @@ QByteArray writeKmlRoute(const Route &route, ScanPlanCache *cache)
             writeCoordinates(w, {{wp->position, wp->altitude}});
             w.writeEndElement();
         } else {
-            const AreaScan &scan = std::get<AreaScan>(s);
+            // Areas as polygons; a corridor's line and a circle's centre as a (one-point) ring.
             std::vector<std::pair<GeoPoint, double>> ring;
-            for (const GeoPoint &g : scan.polygon)
+            for (const GeoPoint &g : figureOf(s))
                 ring.emplace_back(g, 0.0);
             if (!ring.empty())
                 ring.push_back(ring.front());

@@ -1,5 +1,7 @@
 #include "MavlinkMission.h"
 
+#include "AlgorithmCatalog.h"
+
 #include "ScanPlanCache.h"
 
 #include <QSet>
@@ -32,8 +34,10 @@ public:
             const Segment &s = route.segments[i];
             if (const Waypoint *w = asWaypoint(s))
                 waypoint(*w, int(i));
+            else if (const std::optional<AreaScan> planned = scanOf(s))
+                scan(*planned, int(i));
             else
-                scan(std::get<AreaScan>(s), int(i));
+                algorithm(std::get<AlgorithmSegment>(s), int(i));
         }
         if (route.settings.endAction == EndAction::ReturnHome)
             m_out.items.push_back(command(mav::NavReturnToLaunch));
@@ -125,6 +129,41 @@ private:
             [&](const PanoramaAction &) { skipped(row, QStringLiteral("a panorama")); },
             [&](const OpaqueAction &x) { skipped(row, x.description); },
         }, a);
+    }
+
+    // A corridor stays whole where the format has one (.plan); anything else flies its planned
+    // path as waypoints, with the camera series the planner puts on it.
+    void algorithm(const AlgorithmSegment &a, int row)
+    {
+        if (m_keepScans && a.kind() == AlgorithmKind::Corridor) {
+            MavlinkItem i;
+            i.segment = std::make_shared<const AlgorithmSegment>(a);
+            m_out.items.push_back(i);
+            return;
+        }
+        const SegmentPlanOutcome o = planAlgorithmSegment(a, AlgorithmCatalog::builtIn(), {{}, m_speed, std::nullopt});
+        if (!o.ok()) {
+            m_out.notices << QStringLiteral("%1 was left out: %2").arg(segmentLabel(row, Segment(a)),
+                                                                       o.errors.empty() ? QStringLiteral("it cannot be planned") : o.errors.front());
+            return;
+        }
+        for (const PlannedPoint &p : o.plan->points) {
+            speed(p.speed);
+            MavlinkItem nav;
+            nav.command = p.kind == PlannedPoint::Kind::Takeoff ? mav::NavTakeoff : p.kind == PlannedPoint::Kind::Landing ? mav::NavLand : mav::NavWaypoint;
+            nav.frame = p.frame == HeightFrame::Amsl ? mav::Global : mav::GlobalRelativeAlt;
+            nav.latitude = p.position.latitude;
+            nav.longitude = p.position.longitude;
+            nav.altitude = p.height;
+            m_out.items.push_back(nav);
+            for (const CameraCommand &c : p.camera) {
+                if (c.kind == CameraCommand::Kind::StartSeries)
+                    m_out.items.push_back(command(mav::DoSetCamTriggDist, c.value, 0, 1, 0));
+                else if (c.kind == CameraCommand::Kind::StopSeries)
+                    m_out.items.push_back(command(mav::DoSetCamTriggDist, 0, 0, 0, 0));
+            }
+        }
+        m_once.insert(QStringLiteral("Segments without a MAVLink equivalent (circle, perimeter...) were written as the waypoints Sortie plans for them."));
     }
 
     void scan(const AreaScan &s, int row)

@@ -82,6 +82,11 @@ public:
 private:
     std::optional<MissionError> take(const MavlinkItem &item)
     {
+        if (item.segment) {
+            m_out.route.segments.push_back(*item.segment);
+            m_last = -1;
+            return std::nullopt;
+        }
         if (item.scan) {
             AreaScan scan = *item.scan;
             scan.parameters.speed = m_speed;

@@ -44,6 +44,8 @@ struct MavlinkItem
     // Set for a survey that a format keeps whole (a .plan complex item): the item stands for the
     // area-scan segment and its command is ignored.
     std::shared_ptr<const AreaScan> scan;
+    // Set for another segment a format keeps whole (a .plan corridor scan): the item stands for it.
+    std::shared_ptr<const AlgorithmSegment> segment;
 };
 
 struct ImportedRoute

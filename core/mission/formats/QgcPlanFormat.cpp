@@ -1,6 +1,8 @@
 #include "QgcPlanFormat.h"
 
 #include "QgcSurveyJson.h"
+
+#include "AlgorithmCatalog.h"
 #include "ScanPlanCache.h"
 
 #include <cmath>
@@ -93,11 +95,16 @@ Result<ImportedRoute> readQgcPlan(const QByteArray &data)
                 items.push_back(simpleFromJson(item));
             } else if (type == QLatin1String("ComplexItem")) {
                 const QString kind = item.at("complexItemType").string();
-                if (kind != QLatin1String("survey"))
-                    item.at("complexItemType").fail(QStringLiteral("complex item \"%1\" is not supported; Sortie imports surveys").arg(kind));
                 MavlinkItem m;
                 m.jsonPath = item.pathText();
-                m.scan = std::make_shared<const AreaScan>(surveyFromJson(item, &notices));
+                if (kind == QLatin1String("survey"))
+                    m.scan = std::make_shared<const AreaScan>(surveyFromJson(item, &notices));
+                else if (kind == QLatin1String("CorridorScan"))
+                    m.segment = std::make_shared<const AlgorithmSegment>(corridorFromJson(item, &notices));
+                else if (kind == QLatin1String("StructureScan"))
+                    m.segment = std::make_shared<const AlgorithmSegment>(structureScanFromJson(item, &notices));
+                else
+                    item.at("complexItemType").fail(QStringLiteral("complex item \"%1\" is not supported; Sortie imports surveys, corridor and structure scans").arg(kind));
                 items.push_back(std::move(m));
             } else {
                 item.at("type").fail(QStringLiteral("unknown item type \"%1\"").arg(type));
@@ -132,6 +139,17 @@ QByteArray writeQgcPlan(const Route &route, QStringList *notices, ScanPlanCache 
     Json items = Json::array();
     int jumpId = 1;
     for (const MavlinkItem &i : out.items) {
+        if (i.segment) {
+            const SegmentPlanOutcome o = planAlgorithmSegment(*i.segment, AlgorithmCatalog::builtIn());
+            if (!o.ok()) {
+                out.notices << QStringLiteral("A corridor was left out: %1").arg(o.errors.empty() ? QString() : o.errors.front());
+                continue;
+            }
+            int used = 0;
+            items.push_back(corridorToJson(*i.segment, *o.plan, jumpId, &used));
+            jumpId += used;
+            continue;
+        }
         if (!i.scan) {
             items.push_back(itemToJson(i, jumpId++));
             continue;

@@ -1,6 +1,8 @@
 #include "QgcSurveyJson.h"
 
+#include "AlgorithmCatalog.h"
 #include "MavlinkMission.h"
+#include "Photogrammetry.h"
 
 #include <cmath>
 
@@ -118,6 +120,118 @@ Json surveyToJson(const AreaScan &scan, const AreaScanPlan &plan, int firstJumpI
                                       {"VisualTransectPoints", std::move(visual)}, {"version", 1}}},
         {"angle", p.directionDeg}, {"complexItemType", "survey"}, {"entryLocation", 0}, {"flyAlternateTransects", false},
         {"polygon", std::move(polygon)}, {"splitConcavePolygons", false}, {"type", "ComplexItem"}, {"version", 5}};
+}
+
+namespace {
+QString number(double v) { return parameterNumberText(v); }
+
+std::vector<FigurePoint> pointsAt(const JsonCursor &list, size_t minimum, const char *what)
+{
+    std::vector<FigurePoint> points;
+    for (size_t i = 0; i < list.arraySize(); ++i) {
+        const JsonCursor v = list.at(i);
+        const GeoPoint g{v.at(size_t(0)).number(), v.at(size_t(1)).number()};
+        if (!g.isValid())
+            v.fail(QStringLiteral("latitude/longitude out of range"));
+        points.push_back({g, 0.0, AltitudeType::Agl});
+    }
+    if (points.size() < minimum)
+        list.fail(QStringLiteral("a %1 needs at least %2 points, found %3").arg(QLatin1String(what)).arg(minimum).arg(points.size()));
+    return points;
+}
+
+// CameraCalc -> photogrammetry's camera, GSD, overlaps and altitude type.
+void cameraCalcInto(const JsonCursor &cam, AlgorithmSegment &a, QStringList *notices)
+{
+    const QString name = cam.stringOr("CameraName", QString());
+    const bool amsl = cam.find("DistanceMode") ? cam.at("DistanceMode").integer() == kAltitudeModeAmsl
+                                               : !cam.booleanOr("DistanceToSurfaceRelative", true);
+    a.setValue(QStringLiteral("altitudeType"), amsl ? QStringLiteral("AMSL") : QStringLiteral("AGL"));
+    a.setValue(QStringLiteral("overlapForward"), number(cam.number("FrontalOverlap")));
+    a.setValue(QStringLiteral("overlapSide"), number(cam.number("SideOverlap")));
+    std::optional<Camera> camera = builtInCamera(name);
+    if (!camera && cam.find("SensorWidth") && cam.find("FocalLength")) {
+        camera = Camera{name, cam.number("SensorWidth"), cam.number("SensorHeight"), cam.number("FocalLength"),
+                        cam.at("ImageWidth").integer(), cam.at("ImageHeight").integer(), 0.0};
+        if (notices)
+            *notices << QStringLiteral("%1: the camera \"%2\" is not one Sortie knows; it is kept by name, and the server must know it.")
+                            .arg(cam.pathText(), name);
+    }
+    if (!name.isEmpty())
+        a.setValue(QStringLiteral("camera"), name);
+    const bool byDistance = cam.booleanOr("ValueSetIsDistance", true);
+    if (!byDistance)
+        a.setValue(QStringLiteral("groundSampleDistance"), number(cam.number("ImageDensity")));
+    else if (camera && camera->isValid())
+        a.setValue(QStringLiteral("groundSampleDistance"), number(photogrammetry::gsdAtHeight(*camera, cam.number("DistanceToSurface"))));
+    else
+        cam.fail(QStringLiteral("the corridor's camera has no sensor to turn its distance into a ground sample distance"));
+    a.setValue(QStringLiteral("camTopFacingForward"), cam.booleanOr("Landscape", true) ? QStringLiteral("true") : QStringLiteral("false"));
+}
+} // namespace
+
+AlgorithmSegment corridorFromJson(const JsonCursor &item, QStringList *notices)
+{
+    AlgorithmSegment a;
+    a.algorithm = algorithmClassName(AlgorithmKind::Corridor);
+    a.figure = FigureType::Polyline;
+    a.points = pointsAt(item.at("polyline"), 2, "corridor centre line");
+    a.setValue(QStringLiteral("width"), number(item.number("CorridorWidth")));
+    cameraCalcInto(item.at("TransectStyleComplexItem").at("CameraCalc"), a, notices);
+    return a;
+}
+
+Json corridorToJson(const AlgorithmSegment &corridor, const SegmentPlan &plan, int firstJumpId, int *itemsUsed)
+{
+    const ParameterReader read(*AlgorithmCatalog::builtIn().byKind(AlgorithmKind::Corridor), corridor.parameters);
+    const bool amsl = read.selection(u"altitudeType") == QLatin1String("AMSL");
+    const int frame = amsl ? mav::Global : mav::GlobalRelativeAlt;
+    Json polyline = Json::array();
+    for (const FigurePoint &p : corridor.points)
+        polyline.push_back({p.position.latitude, p.position.longitude});
+    Json items = Json::array();
+    int id = firstJumpId;
+    items.push_back(simpleItem(id++, mav::DoSetCamTriggDist, mav::Mission, {plan.triggerDistance, 0, 1, 0, 0, 0, 0}));
+    for (const PlannedPoint &p : plan.points)
+        items.push_back(simpleItem(id++, mav::NavWaypoint, frame, {0, 0, 0, 0, p.position.latitude, p.position.longitude, p.height}));
+    items.push_back(simpleItem(id++, mav::DoSetCamTriggDist, mav::Mission, {0, 0, 0, 0, 0, 0, 0}));
+    *itemsUsed = id - firstJumpId;
+    const Camera camera = plan.camera.value_or(Camera{});
+    const Json cameraCalc{
+        {"AdjustedFootprintFrontal", plan.triggerDistance}, {"AdjustedFootprintSide", plan.passSpacing},
+        {"CameraName", camera.name.toStdString()}, {"DistanceToSurface", plan.height}, {"DistanceToSurfaceRelative", !amsl},
+        {"FixedOrientation", false}, {"FocalLength", camera.focalLengthMm}, {"FrontalOverlap", read.number(u"overlapForward", 60)},
+        {"ImageDensity", plan.gsdCm}, {"ImageHeight", camera.imageHeightPx}, {"ImageWidth", camera.imageWidthPx},
+        {"Landscape", read.boolean(u"camTopFacingForward", true)}, {"MinTriggerInterval", camera.minTriggerIntervalS},
+        {"SensorHeight", camera.sensorHeightMm}, {"SensorWidth", camera.sensorWidthMm}, {"SideOverlap", read.number(u"overlapSide", 30)},
+        {"ValueSetIsDistance", false}, {"version", 1}};
+    return Json{
+        {"CorridorWidth", read.number(u"width", 30)}, {"EntryPoint", 0},
+        {"TransectStyleComplexItem", {{"CameraCalc", cameraCalc}, {"CameraShots", plan.photos}, {"CameraTriggerInTurnAround", true},
+                                      {"FollowTerrain", false}, {"HoverAndCapture", false}, {"Items", std::move(items)},
+                                      {"Refly90Degrees", false}, {"TurnAroundDistance", 0}, {"VisualTransectPoints", Json::array()},
+                                      {"version", 1}}},
+        {"complexItemType", "CorridorScan"}, {"polyline", std::move(polyline)}, {"type", "ComplexItem"}, {"version", 2}};
+}
+
+AlgorithmSegment structureScanFromJson(const JsonCursor &item, QStringList *notices)
+{
+    AlgorithmSegment a;
+    a.algorithm = algorithmClassName(AlgorithmKind::Perimeter);
+    a.figure = FigureType::Polygon;
+    a.points = pointsAt(item.at("polygon"), 3, "structure polygon");
+    const JsonCursor cam = item.at("CameraCalc");
+    const bool amsl = cam.find("DistanceMode") ? cam.at("DistanceMode").integer() == kAltitudeModeAmsl
+                                               : !cam.booleanOr("DistanceToSurfaceRelative", true);
+    a.setValue(QStringLiteral("height"), number(item.number("Altitude")));
+    a.setValue(QStringLiteral("heightAgl"), amsl ? QStringLiteral("false") : QStringLiteral("true"));
+    const int layers = std::max(1, item.integerOr("Layers", 1));
+    a.setValue(QStringLiteral("loops"), QString::number(layers));
+    if (notices)
+        *notices << QStringLiteral("%1: the structure scan became a perimeter flight at %2 m%3.")
+                        .arg(item.pathText(), number(item.number("Altitude")),
+                             layers > 1 ? QStringLiteral(", its %1 layers as %1 loops at one height").arg(layers) : QString());
+    return a;
 }
 
 } // namespace sortie::mission::formats

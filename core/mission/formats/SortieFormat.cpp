@@ -1,5 +1,7 @@
 #include "SortieFormat.h"
 
+#include "SegmentParameters.h"
+
 #include "Domain.pb.h"
 #include "JsonCursor.h"
 #include "SortieMigrations.h"
@@ -160,20 +162,55 @@ Json segmentJson(const Segment &s)
         putOrigin(j, w->origin.message);
         return j;
     }
+    if (const AlgorithmSegment *a = asAlgorithmSegment(s)) {
+        Json points = Json::array();
+        for (const FigurePoint &p : a->points)
+            points.push_back({p.position.latitude, p.position.longitude, p.altitude, str(altitudeTypeName(p.altitudeType))});
+        Json parameters = Json::array();  // pairs, in order: names may repeat on the wire
+        for (const ParameterValue &v : a->parameters)
+            parameters.push_back({str(v.name), str(v.value)});
+        Json j{{"type", "algorithm"}, {"algorithm", str(a->algorithm)}, {"figure", int(a->figure)}, {"points", std::move(points)},
+               {"figureParameters", a->figureParameters}, {"parameters", std::move(parameters)}};
+        if (!a->actions.empty()) {
+            Json actions = Json::array();
+            for (const auto &action : a->actions)
+                actions.push_back(actionJson(action));
+            j["actions"] = std::move(actions);
+        }
+        putOrigin(j, a->origin.message);
+        return j;
+    }
     const AreaScan &scan = std::get<AreaScan>(s);
     const AreaScanParameters &p = scan.parameters;
     Json polygon = Json::array();
     for (const GeoPoint &g : scan.polygon)
         polygon.push_back({g.latitude, g.longitude});
+    // Parameters by their UgCS wire names and units (schema 3), read back through SegmentParameters.
     Json j{{"type", "areaScan"}, {"polygon", std::move(polygon)},
            {"camera", {{"name", str(p.camera.name)}, {"sensorWidthMm", p.camera.sensorWidthMm}, {"sensorHeightMm", p.camera.sensorHeightMm},
                        {"focalLengthMm", p.camera.focalLengthMm}, {"imageWidthPx", p.camera.imageWidthPx}, {"imageHeightPx", p.camera.imageHeightPx}}},
            {"heightMode", p.heightMode == ScanHeightMode::Altitude ? "altitude" : "groundSampleDistance"},
-           {"altitude", p.altitude}, {"groundSampleDistanceCm", p.groundSampleDistanceCm}, {"altitudeType", str(altitudeTypeName(p.altitudeType))},
-           {"frontOverlapPercent", p.frontOverlapPercent}, {"sideOverlapPercent", p.sideOverlapPercent}, {"directionDeg", p.directionDeg},
-           {"turnaroundMeters", p.turnaroundMeters}, {"speed", p.speed}};
+           {"parameters", {{"height", p.altitude}, {"groundSampleDistance", p.groundSampleDistanceCm},
+                           {"altitudeType", str(altitudeTypeName(p.altitudeType))}, {"overlapForward", p.frontOverlapPercent},
+                           {"overlapSide", p.sideOverlapPercent}, {"sideDistance", p.sideDistanceMeters},
+                           {"directionAngle", p.directionDeg}, {"overshoot", p.turnaroundMeters}, {"speed", p.speed}}}};
     putOrigin(j, scan.origin.message);
     return j;
+}
+
+// One area-scan parameter from the file through the one reader; a bad value names its place.
+void setParameter(const JsonCursor &params, Segment &segment, const char *name, bool required)
+{
+    const auto v = params.find(name);
+    if (!v) {
+        if (required)
+            params.failAt(name, QStringLiteral("missing"));
+        return;
+    }
+    const QVariant value = v->value().is_string() ? QVariant(v->string()) : QVariant(v->number());
+    QString error;
+    if (!setParameterValue(segment, QString::fromLatin1(name), value, &error))
+        v->fail(error);
 }
 
 Segment readSegment(const JsonCursor &c)
@@ -220,17 +257,52 @@ Segment readSegment(const JsonCursor &c)
         const QString mode = c.stringOr("heightMode", QStringLiteral("altitude"));
         if (mode != QLatin1String("altitude") && mode != QLatin1String("groundSampleDistance"))
             c.at("heightMode").fail(QStringLiteral("expected \"altitude\" or \"groundSampleDistance\""));
-        p.heightMode = mode == QLatin1String("altitude") ? ScanHeightMode::Altitude : ScanHeightMode::GroundSampleDistance;
-        p.altitude = c.number("altitude");
-        p.groundSampleDistanceCm = c.numberOr("groundSampleDistanceCm", p.groundSampleDistanceCm);
-        p.altitudeType = altitudeTypeAt(c, "altitudeType");
-        p.frontOverlapPercent = c.number("frontOverlapPercent");
-        p.sideOverlapPercent = c.number("sideOverlapPercent");
-        p.directionDeg = c.numberOr("directionDeg", 0);
-        p.turnaroundMeters = c.numberOr("turnaroundMeters", 0);
-        p.speed = c.number("speed");
-        s.origin.message = takeOrigin<pb::SegmentDefinition>(c);
-        return s;
+        // The one parameter reader; the height mode's own value goes last, since it sets the mode.
+        Segment segment = std::move(s);
+        const JsonCursor params = c.at("parameters");
+        params.requireObject();
+        for (const char *name : {"altitudeType", "overlapForward", "overlapSide", "sideDistance", "directionAngle", "overshoot", "speed"})
+            setParameter(params, segment, name, name == std::string_view("altitudeType") || name == std::string_view("speed"));
+        // The other of height and GSD is derived from this one and the camera.
+        const char *last = mode == QLatin1String("altitude") ? "height" : "groundSampleDistance";
+        setParameter(params, segment, last, true);
+        AreaScan &scan = std::get<AreaScan>(segment);
+        scan.origin.message = takeOrigin<pb::SegmentDefinition>(c);
+        return segment;
+    }
+    if (type == "algorithm") {
+        AlgorithmSegment a;
+        a.algorithm = c.at("algorithm").string();
+        const int figure = c.at("figure").integer();
+        if (figure < 0 || figure > int(FigureType::Polyline))
+            c.at("figure").fail(QStringLiteral("no figure type %1").arg(figure));
+        a.figure = FigureType(figure);
+        const JsonCursor points = c.at("points");
+        for (size_t i = 0; i < points.arraySize(); ++i) {
+            const JsonCursor p = points.at(i);
+            FigurePoint fp;
+            fp.position = {p.at(size_t(0)).number(), p.at(size_t(1)).number()};
+            if (!fp.position.isValid())
+                p.fail(QStringLiteral("latitude/longitude out of range"));
+            fp.altitude = p.at(size_t(2)).number();
+            const QString type = p.at(size_t(3)).string();
+            if (!parseAltitudeType(type, &fp.altitudeType))
+                p.at(size_t(3)).fail(QStringLiteral("expected \"AGL\" or \"AMSL\""));
+            a.points.push_back(fp);
+        }
+        const JsonCursor figureParameters = c.at("figureParameters");
+        for (size_t i = 0; i < figureParameters.arraySize(); ++i)
+            a.figureParameters.push_back(figureParameters.at(i).number());
+        const JsonCursor parameters = c.at("parameters");
+        for (size_t i = 0; i < parameters.arraySize(); ++i) {
+            const JsonCursor pair = parameters.at(i);
+            a.parameters.push_back({pair.at(size_t(0)).string(), pair.at(size_t(1)).string()});
+        }
+        if (const auto actions = c.find("actions"))
+            for (size_t i = 0; i < actions->arraySize(); ++i)
+                a.actions.push_back(readAction(actions->at(i)));
+        a.origin.message = takeOrigin<pb::SegmentDefinition>(c);
+        return a;
     }
     c.failAt("type", QStringLiteral("unknown segment type \"%1\"").arg(QString::fromStdString(type)));
 }

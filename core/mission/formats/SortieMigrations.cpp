@@ -35,9 +35,43 @@ void v1ToV2(Json &doc)
     }
 }
 
+// Schema 3 names an area scan's parameters the way UgCS does (the wire names of the facts file),
+// under "parameters": altitude -> height, groundSampleDistanceCm -> groundSampleDistance,
+// frontOverlapPercent -> overlapForward, sideOverlapPercent -> overlapSide, directionDeg ->
+// directionAngle, turnaroundMeters -> overshoot; and adds sideDistance (0: from the camera).
+// Segments of other algorithms ("algorithm") are new in schema 3.
+void v2ToV3(Json &doc)
+{
+    static const std::pair<const char *, const char *> kRenames[] = {
+        {"altitude", "height"}, {"groundSampleDistanceCm", "groundSampleDistance"}, {"altitudeType", "altitudeType"},
+        {"frontOverlapPercent", "overlapForward"}, {"sideOverlapPercent", "overlapSide"}, {"directionDeg", "directionAngle"},
+        {"turnaroundMeters", "overshoot"}, {"speed", "speed"}};
+    Json &routes = doc["mission"]["routes"];
+    if (!routes.is_array())
+        throw JsonPathError{"/mission/routes", QStringLiteral("schema 2 document without a routes array")};
+    for (size_t r = 0; r < routes.size(); ++r) {
+        Json &segments = routes[r]["segments"];
+        if (!segments.is_array())
+            continue;  // the reader names what is missing
+        for (Json &segment : segments) {
+            if (!segment.is_object() || segment.value("type", "") != "areaScan")
+                continue;
+            Json parameters = Json::object();
+            for (const auto &[from, to] : kRenames) {
+                if (segment.contains(from)) {
+                    parameters[to] = segment[from];
+                    segment.erase(from);
+                }
+            }
+            parameters["sideDistance"] = 0.0;
+            segment["parameters"] = std::move(parameters);
+        }
+    }
+}
+
 const std::vector<std::function<void(Json &)>> &steps()
 {
-    static const std::vector<std::function<void(Json &)>> s{v1ToV2};  // steps()[i] lifts i+1 to i+2
+    static const std::vector<std::function<void(Json &)>> s{v1ToV2, v2ToV3};  // steps()[i] lifts i+1 to i+2
     return s;
 }
 }

@@ -23,7 +23,9 @@ struct HciRouteImport
 // HCI Route <-> Route. Reading keeps the protobuf each value came from (HciOrigin); writing starts
 // from a copy of it and writes only the fields whose value changed, so everything else (ids,
 // versions, uuids, references, fields this schema does not know) goes back exactly as it came.
-// A segment of an algorithm Sortie cannot edit (circle, perimeter, corridor...) is an error.
+// A segment of any other algorithm (photogrammetry, circle, perimeter, corridor, one Sortie does
+// not know) becomes an AlgorithmSegment: kept, editable as name/value parameters, and written
+// back byte for byte while it is not edited.
 Result<HciRouteImport> routeFromHci(const com::ugcs::ucs::proto::Route &route);
 com::ugcs::ucs::proto::Route routeToHci(const Route &route);
 

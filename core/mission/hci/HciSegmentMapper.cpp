@@ -4,6 +4,7 @@
 #include "HciActionMapper.h"
 #include "HciRouteMapper.h"
 #include "HciText.h"
+#include "SegmentParameters.h"
 
 #include <numbers>
 
@@ -33,12 +34,6 @@ const pb::ParameterValue *findParam(const pb::SegmentDefinition &s, const char *
     return nullptr;
 }
 
-std::optional<double> numberParam(const pb::SegmentDefinition &s, const char *name)
-{
-    const pb::ParameterValue *p = findParam(s, name);
-    return p ? parseHciDouble(p->value()) : std::nullopt;
-}
-
 void setParam(pb::SegmentDefinition &s, const char *name, const std::string &value)
 {
     for (auto &p : *s.mutable_parametervalues()) {
@@ -53,6 +48,14 @@ void setParam(pb::SegmentDefinition &s, const char *name, const std::string &val
     p->set_value(value);
 }
 
+void eraseParam(pb::SegmentDefinition &s, const char *name)
+{
+    auto *params = s.mutable_parametervalues();
+    for (int i = params->size() - 1; i >= 0; --i)
+        if (params->Get(i).name() == name)
+            params->DeleteSubrange(i, 1);
+}
+
 void setNumber(pb::SegmentDefinition &s, const char *name, double v) { setParam(s, name, javaDoubleString(v)); }
 
 AltitudeType altitudeTypeOf(const pb::SegmentDefinition &s, const pb::FigurePoint *point)
@@ -64,31 +67,15 @@ AltitudeType altitudeTypeOf(const pb::SegmentDefinition &s, const pb::FigurePoin
     return AltitudeType::Agl;
 }
 
-// The route profile's camera payload, if it has one with a full sensor description.
+// The route profile's camera payload, if it has one with a full sensor description (UgCS gives
+// the optics in SI metres: cameraFromPayload converts).
 std::optional<Camera> profileCamera(const pb::VehicleProfile *profile)
 {
     if (!profile)
         return std::nullopt;
-    for (const auto &link : profile->payloadprofiles()) {
-        const pb::PayloadProfile &pp = link.payloadprofile();
-        if (pp.payloadtype() != pb::PT_CAMERA)
-            continue;
-        Camera c;
-        c.name = QString::fromStdString(pp.name());
-        int found = 0;
-        for (const auto &param : pp.parameters()) {
-            switch (param.type()) {
-            case pb::PPT_TRUE_FOCAL_LENGTH: c.focalLengthMm = param.value(); ++found; break;
-            case pb::PPT_SENSOR_WIDTH: c.sensorWidthMm = param.value(); ++found; break;
-            case pb::PPT_SENSOR_HEIGHT: c.sensorHeightMm = param.value(); ++found; break;
-            case pb::PPT_SENSOR_HORIZONTAL_PIXELS: c.imageWidthPx = int(param.value()); ++found; break;
-            case pb::PPT_SENSOR_VERTICAL_PIXELS: c.imageHeightPx = int(param.value()); ++found; break;
-            default: break;
-            }
-        }
-        if (found == 5)
-            return c;
-    }
+    for (const auto &link : profile->payloadprofiles())
+        if (auto camera = cameraFromPayload(link.payloadprofile()))
+            return camera;
     return std::nullopt;
 }
 
@@ -107,47 +94,157 @@ Result<Waypoint> waypointFromHci(const pb::SegmentDefinition &s, const HciSegmen
         return MissionError{QStringLiteral("the waypoint's position is out of range"), {}, 0, 0, {}};
     w.altitudeType = altitudeTypeOf(s, &p);
     w.altitude = w.altitudeType == AltitudeType::Amsl ? p.wgs84altitude() : p.aglaltitude();
-    w.speed = numberParam(s, "speed").value_or(ctx.defaultSpeed);
-    if (const pb::ParameterValue *t = findParam(s, "wpTurnType")) {
-        for (TurnType tt : {TurnType::StopAndTurn, TurnType::Straight, TurnType::Spline, TurnType::BankTurn})
-            if (t->value() == turnName(tt))
-                w.turnType = tt;
-    }
-    w.acceptanceRadius = numberParam(s, "acceptanceRadius").value_or(0.0);
+    w.speed = ctx.defaultSpeed;
+    Segment segment = w;
+    for (const char *name : {"speed", "wpTurnType", "acceptanceRadius"})  // the rest stays in the origin
+        if (const pb::ParameterValue *v = findParam(s, name); v && !v->value().empty())
+            setParameterValue(segment, QString::fromLatin1(name), QString::fromStdString(v->value()));
+    w = std::get<Waypoint>(std::move(segment));
     for (const auto &d : s.actiondefinitions())
         w.actions.push_back(actionFromHci(d));
     return w;
 }
 
+// Polygons travel closed (the first point repeated last); Sortie keeps them open.
+std::vector<GeoPoint> openPolygon(const pb::Figure &figure)
+{
+    std::vector<GeoPoint> polygon;
+    for (const auto &p : figure.points())
+        polygon.push_back({p.latitude() / kDeg, p.longitude() / kDeg});
+    if (polygon.size() > 3 && polygon.front() == polygon.back())
+        polygon.pop_back();
+    return polygon;
+}
+
 AreaScan scanFromHci(const pb::SegmentDefinition &s, const HciSegmentContext &ctx, QStringList *notices)
 {
     AreaScan scan;
-    for (const auto &p : s.figure().points())
-        scan.polygon.push_back({p.latitude() / kDeg, p.longitude() / kDeg});
-    AreaScanParameters &p = scan.parameters;
-    p.altitude = numberParam(s, "height").value_or(p.altitude);
-    p.altitudeType = altitudeTypeOf(s, nullptr);
-    p.sideOverlapPercent = numberParam(s, "sideOverlap").value_or(p.sideOverlapPercent);
-    p.frontOverlapPercent = numberParam(s, "forwardOverlap").value_or(p.frontOverlapPercent);
-    p.directionDeg = numberParam(s, "directionAngle").value_or(p.directionDeg);
-    p.turnaroundMeters = numberParam(s, "overshoot").value_or(p.turnaroundMeters);
-    p.speed = numberParam(s, "speed").value_or(ctx.defaultSpeed);
-    if (const auto gsd = numberParam(s, "groundSampleDistance")) {
-        p.heightMode = ScanHeightMode::GroundSampleDistance;
-        p.groundSampleDistanceCm = *gsd;
+    scan.polygon = openPolygon(s.figure());
+    Segment segment = AreaScan{};
+    setParameterValue(segment, QStringLiteral("speed"), ctx.defaultSpeed);
+    // The pass spacing is the camera's (overlapSide) when both are given: sideDistance is what
+    // Sortie writes beside it for a server that only reads that.
+    const bool byOverlap = findParam(s, "overlapSide") != nullptr;
+    bool customCamera = false;
+    for (const auto &v : s.parametervalues()) {
+        const QString name = QString::fromStdString(v.name());
+        if (v.value().empty() || (byOverlap && name == QLatin1String("sideDistance")))
+            continue;  // "" is "not set"
+        QString error;
+        const QString key = name == QLatin1String("cameraName") ? QStringLiteral("camera") : name;  // before 0.2
+        if (!parameterNames(segment).contains(key))
+            continue;  // kept in the origin, written back as it came
+        if (!setParameterValue(segment, key, QString::fromStdString(v.value()), &error)) {
+            if (notices)
+                *notices << QStringLiteral("An area scan's %1: %2 It keeps Sortie's default.").arg(name, error);
+            continue;
+        }
+        customCamera |= key.startsWith(QLatin1String("camera"))
+            && (key != QLatin1String("camera") || builtInCamera(QString::fromStdString(v.value())));
     }
-    const auto sw = numberParam(s, "cameraSensorWidth"), sh = numberParam(s, "cameraSensorHeight"),
-               f = numberParam(s, "cameraFocalLength"), iw = numberParam(s, "cameraImageWidth"), ih = numberParam(s, "cameraImageHeight");
-    if (sw && sh && f && iw && ih) {
-        const pb::ParameterValue *name = findParam(s, "cameraName");
-        p.camera = {name ? QString::fromStdString(name->value()) : QString(), *sw, *sh, *f, int(*iw), int(*ih)};
-    } else if (const auto c = profileCamera(ctx.profile)) {
-        p.camera = *c;
-    } else if (notices) {
-        *notices << QStringLiteral("An area scan came without a camera; Sortie's default camera (%1) was assumed.").arg(p.camera.name);
+    scan.parameters = std::get<AreaScan>(segment).parameters;
+    AreaScanParameters &p = scan.parameters;
+    if (!findParam(s, "altitudeType"))
+        p.altitudeType = altitudeTypeOf(s, nullptr);
+    if (!customCamera) {
+        if (const auto c = profileCamera(ctx.profile)) {
+            p.camera = *c;
+        } else if (p.sideDistanceMeters <= 0 && notices) {
+            *notices << QStringLiteral("An area scan came without a camera; Sortie's default camera (%1) was assumed.").arg(p.camera.name);
+        }
     }
     syncDerivedFields(p);
     return scan;
+}
+
+// Merge by position: an action of the same kind at the same index keeps its definition's ids.
+void actionsToHci(const std::vector<WaypointAction> &actions, const std::vector<WaypointAction> *before, pb::SegmentDefinition &s)
+{
+    const google::protobuf::RepeatedPtrField<pb::ActionDefinition> old = s.actiondefinitions();
+    s.clear_actiondefinitions();
+    for (size_t i = 0; i < actions.size(); ++i) {
+        pb::ActionDefinition def;
+        if (before && i < before->size() && int(i) < old.size() && actionKindName((*before)[i]) == actionKindName(actions[i]))
+            def = old[int(i)];
+        actionToHci(actions[i], def);
+        *s.add_actiondefinitions() = std::move(def);
+    }
+}
+
+// Any other algorithm, as the server described it: figure and parameter text, nothing parsed
+// that is not needed, so an algorithm Sortie does not know comes back exactly as it went.
+AlgorithmSegment algorithmSegmentFromHci(const pb::SegmentDefinition &s)
+{
+    AlgorithmSegment a;
+    a.algorithm = QString::fromStdString(s.algorithmclassname());
+    a.figure = FigureType(int(s.figure().type()));
+    for (const pb::FigurePoint &p : s.figure().points()) {
+        const AltitudeType type = p.altitudetype() == pb::AT_WGS84 ? AltitudeType::Amsl : AltitudeType::Agl;
+        a.points.push_back({{p.latitude() / kDeg, p.longitude() / kDeg}, type == AltitudeType::Amsl ? p.wgs84altitude() : p.aglaltitude(), type});
+    }
+    if (a.figure == FigureType::Polygon && a.points.size() > 3 && a.points.front().position == a.points.back().position)
+        a.points.pop_back();  // sent closed
+    for (const auto &fp : s.figure().parameters())
+        a.figureParameters.push_back(fp.value());
+    for (const auto &v : s.parametervalues())
+        a.parameters.push_back({QString::fromStdString(v.name()), QString::fromStdString(v.value())});
+    for (const auto &d : s.actiondefinitions())
+        a.actions.push_back(actionFromHci(d));
+    return a;
+}
+
+void algorithmSegmentToHci(const AlgorithmSegment &a, const AlgorithmSegment *before, pb::SegmentDefinition &s)
+{
+    const bool fresh = !before;
+    if (fresh || before->algorithm != a.algorithm)
+        s.set_algorithmclassname(a.algorithm.toStdString());
+    if (fresh || before->figure != a.figure)
+        s.mutable_figure()->set_type(pb::FigureType(int(a.figure)));
+    if (fresh || before->points != a.points) {
+        const bool closed = a.figure == FigureType::Polygon && !a.points.empty();
+        const size_t n = a.points.size() + (closed ? 1 : 0);
+        auto *points = s.mutable_figure()->mutable_points();
+        while (points->size() > int(n))
+            points->RemoveLast();
+        for (size_t i = 0; i < n; ++i) {
+            const FigurePoint &f = a.points[i % a.points.size()];
+            const bool exists = int(i) < points->size();
+            pb::FigurePoint *p = exists ? points->Mutable(int(i)) : s.mutable_figure()->add_points();
+            if (!exists || differs(p->latitude() / kDeg, f.position.latitude))
+                p->set_latitude(f.position.latitude * kDeg);
+            if (!exists || differs(p->longitude() / kDeg, f.position.longitude))
+                p->set_longitude(f.position.longitude * kDeg);
+            const pb::AltitudeType type = f.altitudeType == AltitudeType::Amsl ? pb::AT_WGS84 : pb::AT_AGL;
+            if (!exists || !p->has_altitudetype() || p->altitudetype() != type)
+                p->set_altitudetype(type);
+            const double current = type == pb::AT_WGS84 ? p->wgs84altitude() : p->aglaltitude();
+            if (!exists || differs(current, f.altitude))
+                type == pb::AT_WGS84 ? p->set_wgs84altitude(f.altitude) : p->set_aglaltitude(f.altitude);
+        }
+    }
+    if (fresh || before->figureParameters != a.figureParameters) {
+        auto *params = s.mutable_figure()->mutable_parameters();
+        while (params->size() > int(a.figureParameters.size()))
+            params->RemoveLast();
+        for (size_t i = 0; i < a.figureParameters.size(); ++i) {
+            pb::FigureParameter *p = int(i) < params->size() ? params->Mutable(int(i)) : s.mutable_figure()->add_parameters();
+            if (differs(p->value(), a.figureParameters[i]) || !p->has_value())
+                p->set_value(a.figureParameters[i]);
+        }
+    }
+    if (fresh || before->parameters != a.parameters) {
+        if (before)
+            for (const ParameterValue &v : before->parameters)
+                if (!a.value(v.name))
+                    eraseParam(s, v.name.toStdString().c_str());
+        for (const ParameterValue &v : a.parameters) {
+            const QString *old = before ? before->value(v.name) : nullptr;
+            if (!old || *old != v.value)
+                setParam(s, v.name.toStdString().c_str(), v.value.toStdString());
+        }
+    }
+    if (fresh || before->actions != a.actions)
+        actionsToHci(a.actions, before ? &before->actions : nullptr, s);
 }
 
 void waypointToHci(const Waypoint &w, const Waypoint *before, pb::SegmentDefinition &s)
@@ -186,19 +283,15 @@ void waypointToHci(const Waypoint &w, const Waypoint *before, pb::SegmentDefinit
         setParam(s, "altitudeType", w.altitudeType == AltitudeType::Amsl ? "AMSL" : "AGL");
     if ((fresh && w.acceptanceRadius != 0) || (!fresh && differs(before->acceptanceRadius, w.acceptanceRadius)))
         setNumber(s, "acceptanceRadius", w.acceptanceRadius);
-    if (fresh || before->actions != w.actions) {
-        // Merge by position: an action of the same kind at the same index keeps its definition's ids.
-        const google::protobuf::RepeatedPtrField<pb::ActionDefinition> old = s.actiondefinitions();
-        s.clear_actiondefinitions();
-        for (size_t i = 0; i < w.actions.size(); ++i) {
-            pb::ActionDefinition def;
-            if (before && i < before->actions.size() && int(i) < old.size()
-                && actionKindName(before->actions[i]) == actionKindName(w.actions[i]))
-                def = old[int(i)];
-            actionToHci(w.actions[i], def);
-            *s.add_actiondefinitions() = std::move(def);
-        }
-    }
+    if (fresh || before->actions != w.actions)
+        actionsToHci(w.actions, before ? &before->actions : nullptr, s);
+}
+
+// The metres between passes the scan flies: its own sideDistance or the camera's footprint less
+// the side overlap.
+double passSpacing(const AreaScanParameters &p)
+{
+    return p.sideDistanceMeters > 0 ? p.sideDistanceMeters : footprintAcrossMeters(p) * (1 - p.sideOverlapPercent / 100.0);
 }
 
 void scanToHci(const AreaScan &a, const AreaScan *before, pb::SegmentDefinition &s)
@@ -209,38 +302,49 @@ void scanToHci(const AreaScan &a, const AreaScan *before, pb::SegmentDefinition 
         s.mutable_figure()->set_type(pb::FT_POLYGON);
     }
     if (fresh || before->polygon != a.polygon) {
+        // Closed on the wire: n corners, then the first again.
         auto *points = s.mutable_figure()->mutable_points();
-        while (points->size() > int(a.polygon.size()))
+        const size_t n = a.polygon.size() + 1;
+        while (points->size() > int(n))
             points->RemoveLast();
-        for (size_t i = 0; i < a.polygon.size(); ++i) {
-            pb::FigurePoint *p = int(i) < points->size() ? points->Mutable(int(i)) : s.mutable_figure()->add_points();
-            if (fresh || i >= before->polygon.size() || differs(before->polygon[i].latitude, a.polygon[i].latitude))
-                p->set_latitude(a.polygon[i].latitude * kDeg);
-            if (fresh || i >= before->polygon.size() || differs(before->polygon[i].longitude, a.polygon[i].longitude))
-                p->set_longitude(a.polygon[i].longitude * kDeg);
+        for (size_t i = 0; i < n; ++i) {
+            const GeoPoint &g = a.polygon[i % a.polygon.size()];
+            const bool exists = int(i) < points->size();
+            pb::FigurePoint *p = exists ? points->Mutable(int(i)) : s.mutable_figure()->add_points();
+            if (!exists || differs(p->latitude() / kDeg, g.latitude))
+                p->set_latitude(g.latitude * kDeg);
+            if (!exists || differs(p->longitude() / kDeg, g.longitude))
+                p->set_longitude(g.longitude * kDeg);
+            if (!exists) {  // area tools carry 0 m AGL on their corners; the height is a parameter
+                p->set_aglaltitude(0);
+                p->set_altitudetype(pb::AT_AGL);
+            }
         }
     }
     const AreaScanParameters &p = a.parameters;
     const AreaScanParameters *b = before ? &before->parameters : nullptr;
     if (!b || differs(scanAltitude(*b), scanAltitude(p))) setNumber(s, "height", scanAltitude(p));
     if (!b || b->altitudeType != p.altitudeType) setParam(s, "altitudeType", p.altitudeType == AltitudeType::Amsl ? "AMSL" : "AGL");
-    if (!b || differs(b->sideOverlapPercent, p.sideOverlapPercent)) setNumber(s, "sideOverlap", p.sideOverlapPercent);
-    if (!b || differs(b->frontOverlapPercent, p.frontOverlapPercent)) setNumber(s, "forwardOverlap", p.frontOverlapPercent);
+    if (!b || differs(passSpacing(*b), passSpacing(p))) setNumber(s, "sideDistance", passSpacing(p));
+    if (p.sideDistanceMeters > 0) {
+        if (!b || b->sideDistanceMeters <= 0)
+            eraseParam(s, "overlapSide");
+    } else if (!b || differs(b->sideOverlapPercent, p.sideOverlapPercent) || b->sideDistanceMeters > 0) {
+        setNumber(s, "overlapSide", p.sideOverlapPercent);
+    }
+    if (!b || differs(b->frontOverlapPercent, p.frontOverlapPercent)) setNumber(s, "overlapForward", p.frontOverlapPercent);
     if (!b || differs(b->directionDeg, p.directionDeg)) setNumber(s, "directionAngle", p.directionDeg);
     if (!b || differs(b->turnaroundMeters, p.turnaroundMeters)) setNumber(s, "overshoot", p.turnaroundMeters);
     if (!b || differs(b->speed, p.speed)) setNumber(s, "speed", p.speed);
     if (!b || b->heightMode != p.heightMode || differs(b->groundSampleDistanceCm, p.groundSampleDistanceCm)) {
-        if (p.heightMode == ScanHeightMode::GroundSampleDistance) {
+        if (p.heightMode == ScanHeightMode::GroundSampleDistance)
             setNumber(s, "groundSampleDistance", p.groundSampleDistanceCm);
-        } else {
-            auto *params = s.mutable_parametervalues();
-            for (int i = params->size() - 1; i >= 0; --i)
-                if (params->Get(i).name() == "groundSampleDistance")
-                    params->DeleteSubrange(i, 1);
-        }
+        else
+            eraseParam(s, "groundSampleDistance");
     }
     if (!b || !(b->camera == p.camera)) {
-        setParam(s, "cameraName", p.camera.name.toStdString());
+        eraseParam(s, "cameraName");
+        setParam(s, "camera", p.camera.name.toStdString());
         setNumber(s, "cameraSensorWidth", p.camera.sensorWidthMm);
         setNumber(s, "cameraSensorHeight", p.camera.sensorHeightMm);
         setNumber(s, "cameraFocalLength", p.camera.focalLengthMm);
@@ -253,28 +357,33 @@ void scanToHci(const AreaScan &a, const AreaScan *before, pb::SegmentDefinition 
 Result<Segment> segmentFromHci(const pb::SegmentDefinition &s, const HciSegmentContext &ctx, QStringList *notices)
 {
     const std::string &algorithm = s.algorithmclassname();
-    if (algorithm == kAreaScanAlgorithm) {
-        if (s.figure().type() != pb::FT_POLYGON)
-            return MissionError{QStringLiteral("an area scan whose figure is not a polygon"), {}, 0, 0, {}};
+    const auto origin = std::make_shared<const pb::SegmentDefinition>(s);
+    if (algorithm == kAreaScanAlgorithm && s.figure().type() == pb::FT_POLYGON && s.figure().points_size() >= 3) {
         AreaScan scan = scanFromHci(s, ctx, notices);
-        scan.origin.message = std::make_shared<const pb::SegmentDefinition>(s);
+        scan.origin.message = origin;
         return Segment(std::move(scan));
     }
     if (algorithm == kWaypointAlgorithm || algorithm == kTakeoffAlgorithm || algorithm == kLandingAlgorithm) {
-        Result<Waypoint> w = waypointFromHci(s, ctx);
-        if (!w)
-            return w.error();
-        Waypoint out = std::move(w).value();
-        out.origin.message = std::make_shared<const pb::SegmentDefinition>(s);
-        return Segment(std::move(out));
+        if (Result<Waypoint> w = waypointFromHci(s, ctx)) {
+            Waypoint out = std::move(w).value();
+            out.origin.message = origin;
+            return Segment(std::move(out));
+        } else if (notices) {
+            *notices << QStringLiteral("A %1 segment could not be read as one (%2); it is kept as the server sent it.")
+                            .arg(QString::fromStdString(algorithm).section(QLatin1Char('.'), -1), w.error().message);
+        }
+    } else if (algorithm == kAreaScanAlgorithm && notices) {
+        *notices << QStringLiteral("An area scan without a polygon of three corners is kept as the server sent it.");
     }
-    return MissionError{QStringLiteral("a segment of algorithm \"%1\", which Sortie cannot edit").arg(QString::fromStdString(algorithm)),
-                        {}, 0, 0, {}};
+    // Any other algorithm (or one that does not read as its kind) is kept as the server described it.
+    AlgorithmSegment other = algorithmSegmentFromHci(s);
+    other.origin.message = origin;
+    return Segment(std::move(other));
 }
 
 pb::SegmentDefinition segmentToHci(const Segment &segment, const HciSegmentContext &ctx)
 {
-    const SegmentOrigin &origin = isWaypoint(segment) ? std::get<Waypoint>(segment).origin : std::get<AreaScan>(segment).origin;
+    const SegmentOrigin &origin = originOf(segment);
     pb::SegmentDefinition out;
     std::optional<Segment> before;
     if (origin.message) {
@@ -287,8 +396,10 @@ pb::SegmentDefinition segmentToHci(const Segment &segment, const HciSegmentConte
     }
     if (const Waypoint *w = asWaypoint(segment))
         waypointToHci(*w, before ? &std::get<Waypoint>(*before) : nullptr, out);
+    else if (const AreaScan *scan = asAreaScan(segment))
+        scanToHci(*scan, before ? &std::get<AreaScan>(*before) : nullptr, out);
     else
-        scanToHci(std::get<AreaScan>(segment), before ? &std::get<AreaScan>(*before) : nullptr, out);
+        algorithmSegmentToHci(std::get<AlgorithmSegment>(segment), before ? &std::get<AlgorithmSegment>(*before) : nullptr, out);
     return out;
 }
 

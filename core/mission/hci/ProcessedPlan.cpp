@@ -16,8 +16,7 @@ int rowOfUuid(const Route *route, const std::string &uuid)
     if (!route || uuid.empty())
         return -1;
     for (size_t i = 0; i < route->segments.size(); ++i) {
-        const SegmentOrigin &o = isWaypoint(route->segments[i]) ? std::get<Waypoint>(route->segments[i]).origin
-                                                               : std::get<AreaScan>(route->segments[i]).origin;
+        const SegmentOrigin &o = originOf(route->segments[i]);
         if (o.message && o.message->uuid() == uuid)
             return int(i);
     }

@@ -8,8 +8,6 @@
 
 namespace sortie::mission {
 
-enum class TurnType { StopAndTurn, Straight, Spline, BankTurn };
-
 // What the vehicle does at the point: fly through it, take off there (climb vertically to the
 // altitude) or land there.
 enum class WaypointRole { Pass, Takeoff, Land };

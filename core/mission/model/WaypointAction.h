@@ -1,6 +1,7 @@
 #pragma once
 
 #include "GeoPoint.h"
+#include "MissionEnums.h"
 
 #include <QString>
 
@@ -11,8 +12,6 @@
 namespace com::ugcs::ucs::proto { class ActionDefinition; }
 
 namespace sortie::mission {
-
-enum class AltitudeType { Agl, Amsl };  // above ground level / above mean sea level
 
 // Actions performed at a waypoint, in order. Units: seconds, metres, degrees (clockwise from north).
 struct WaitAction

@@ -1,6 +1,9 @@
 #include "FlightPath.h"
 
+#include "AlgorithmCatalog.h"
 #include "ScanPlanCache.h"
+
+#include <cmath>
 
 namespace sortie::mission {
 
@@ -18,7 +21,32 @@ std::vector<PathPoint> flightPath(const Route &route, ScanPlanCache *cache)
             path.push_back(p);
             continue;
         }
-        const AreaScan &scan = std::get<AreaScan>(s);
+        if (const AlgorithmSegment *a = asAlgorithmSegment(s)) {
+            // Planned the way the server (and sortie-sim) processes it.
+            const SegmentPlanOutcome o = planAlgorithmSegment(*a, AlgorithmCatalog::builtIn(),
+                                                              {{}, route.settings.initialSpeed, path.empty() ? std::nullopt
+                                                                                                         : std::optional(path.back().position)});
+            if (o.ok()) {
+                for (const PlannedPoint &p : o.plan->points) {
+                    const WaypointRole role = p.kind == PlannedPoint::Kind::Takeoff ? WaypointRole::Takeoff
+                                            : p.kind == PlannedPoint::Kind::Landing ? WaypointRole::Land : WaypointRole::Pass;
+                    path.push_back({p.position, p.height, p.frame == HeightFrame::Amsl ? AltitudeType::Amsl : AltitudeType::Agl,
+                                    p.speed > 0 ? p.speed : route.settings.initialSpeed, 0.0, role, int(i)});
+                }
+                continue;
+            }
+        }
+        const std::optional<AreaScan> planned = isAreaScan(s) ? scanOf(s) : std::nullopt;
+        if (!planned) {
+            // A segment the client cannot plan flies through its figure's points until the server
+            // processes it.
+            const double altitude = altitudeOf(s), speed = speedOf(s);
+            for (const GeoPoint &g : figureOf(s))
+                path.push_back({g, std::isnan(altitude) ? 0.0 : altitude, altitudeTypeOf(s), std::isnan(speed) ? route.settings.initialSpeed : speed,
+                                0.0, WaypointRole::Pass, int(i)});
+            continue;
+        }
+        const AreaScan &scan = *planned;
         AreaScanOutcome scratch;
         const AreaScanOutcome &o = scanOutcome(scan, cache, scratch);
         const double speed = scan.parameters.speed;

@@ -1,0 +1,328 @@
+#include "SegmentEditorModel.h"
+
+#include "AreaScanPlanner.h"
+#include "RouteEditor.h"
+#include "RouteModel.h"
+#include "SegmentParameters.h"
+
+#include <cmath>
+
+namespace sortie::mission {
+
+namespace {
+// The definitions that describe a segment's parameters, most specific first.
+std::vector<const AlgorithmDefinition *> definitionsOf(const Segment &s, const AlgorithmCatalog &catalog)
+{
+    std::vector<const AlgorithmDefinition *> out;
+    auto add = [&](const AlgorithmDefinition *d) {
+        if (d)
+            out.push_back(d);
+    };
+    if (const Waypoint *w = asWaypoint(s)) {
+        add(catalog.byKind(w->role == WaypointRole::Takeoff ? AlgorithmKind::TakeOff
+                           : w->role == WaypointRole::Land ? AlgorithmKind::Landing : AlgorithmKind::Waypoint));
+        add(catalog.byKind(AlgorithmKind::Waypoint));
+    } else if (isAreaScan(s)) {
+        // Sortie's area scan flies a camera too: the photogrammetry tool describes those names.
+        add(catalog.byKind(AlgorithmKind::AreaScan));
+        add(catalog.byKind(AlgorithmKind::Photogrammetry));
+    } else {
+        add(catalog.byClassName(std::get<AlgorithmSegment>(s).algorithm));
+    }
+    return out;
+}
+
+// Names Sortie itself gives (docs/missions.md): described here, since no server does.
+std::optional<ParameterDefinition> sortieDefinition(const QString &name)
+{
+    struct Own { const char *name; const char *label; ParameterType type; Quantity quantity; double minimum; };
+    static const Own kOwn[] = {
+        {"acceptanceRadius", "Acceptance radius", ParameterType::Double, Quantity::Distance, 0},
+        {"cameraSensorWidth", "Sensor width (mm)", ParameterType::Double, Quantity::None, 0.01},
+        {"cameraSensorHeight", "Sensor height (mm)", ParameterType::Double, Quantity::None, 0.01},
+        {"cameraFocalLength", "Focal length (mm)", ParameterType::Double, Quantity::None, 0.01},
+        {"cameraImageWidth", "Image width (px)", ParameterType::Integer, Quantity::Count, 1},
+        {"cameraImageHeight", "Image height (px)", ParameterType::Integer, Quantity::Count, 1},
+        {"height", "Height", ParameterType::Double, Quantity::Altitude, 0.1},
+        {"sideDistance", "Side distance (0: from the camera)", ParameterType::Double, Quantity::Distance, 0},
+    };
+    for (const Own &o : kOwn) {
+        if (name == QLatin1String(o.name)) {
+            ParameterDefinition d;
+            d.name = name;
+            d.displayName = QString::fromLatin1(o.label);
+            d.type = o.type;
+            d.quantity = o.quantity;
+            d.minimum = o.minimum;
+            d.advanced = name.startsWith(QLatin1String("camera"));
+            return d;
+        }
+    }
+    return std::nullopt;
+}
+
+QString typeName(ParameterType t)
+{
+    switch (t) {
+    case ParameterType::String: return QStringLiteral("string");
+    case ParameterType::Integer: return QStringLiteral("integer");
+    case ParameterType::Double: return QStringLiteral("double");
+    case ParameterType::Boolean: return QStringLiteral("boolean");
+    case ParameterType::Selection: return QStringLiteral("selection");
+    }
+    return QStringLiteral("string");
+}
+
+QString widgetOf(const ParameterDefinition &d)
+{
+    if (d.name == QLatin1String("camera"))
+        return QStringLiteral("camera");
+    if (d.quantity == Quantity::Angle)
+        return QStringLiteral("angle");
+    switch (d.type) {
+    case ParameterType::Boolean: return QStringLiteral("toggle");
+    case ParameterType::Selection: return d.choices.empty() ? QStringLiteral("text") : QStringLiteral("choice");
+    case ParameterType::Integer:
+    case ParameterType::Double: return QStringLiteral("number");
+    case ParameterType::String: break;
+    }
+    return QStringLiteral("text");
+}
+
+QString textOf(const QVariant &v)
+{
+    if (v.metaType().id() == QMetaType::Double)
+        return parameterNumberText(v.toDouble());
+    if (v.metaType().id() == QMetaType::Bool)
+        return v.toBool() ? QStringLiteral("true") : QStringLiteral("false");
+    return v.toString();
+}
+} // namespace
+
+SegmentEditorModel::SegmentEditorModel(RouteModel *model, RouteEditor *editor, QObject *parent)
+    : QAbstractListModel(parent), m_model(model), m_editor(editor)
+{
+    connect(model, &QAbstractItemModel::dataChanged, this, [this](const QModelIndex &from, const QModelIndex &to) {
+        if (m_row >= from.row() && m_row <= to.row())
+            refreshValues();
+    });
+    connect(model, &QAbstractItemModel::modelReset, this, &SegmentEditorModel::rebuild);
+    connect(model, &QAbstractItemModel::layoutChanged, this, &SegmentEditorModel::rebuild);
+    connect(model, &QAbstractItemModel::rowsRemoved, this, &SegmentEditorModel::rebuild);
+    connect(model, &QAbstractItemModel::rowsInserted, this, &SegmentEditorModel::rebuild);
+    connect(editor, &RouteEditor::catalogChanged, this, &SegmentEditorModel::rebuild);
+    connect(editor, &RouteEditor::refused, this, [this](const QString &reason) {
+        m_problem = reason;
+        emit valuesChanged();
+    });
+}
+
+const Segment *SegmentEditorModel::segment() const
+{
+    return m_model && m_row >= 0 && m_row < m_model->count() ? &m_model->segment(m_row) : nullptr;
+}
+
+void SegmentEditorModel::setRow(int row)
+{
+    if (row == m_row)
+        return;
+    m_row = row;
+    m_problem.clear();
+    rebuild();
+    emit rowChanged();
+}
+
+void SegmentEditorModel::rebuild()
+{
+    beginResetModel();
+    m_fields.clear();
+    if (const Segment *s = segment(); s && !isWaypoint(*s)) {
+        const AlgorithmCatalog &catalog = m_editor->catalog();
+        const auto definitions = definitionsOf(*s, catalog);
+        for (const QString &name : parameterNames(*s, catalog)) {
+            Field f{name, {}, false};
+            for (const AlgorithmDefinition *d : definitions) {
+                if (const ParameterDefinition *p = d->parameter(name)) {
+                    f.definition = *p;
+                    f.known = true;
+                    break;
+                }
+            }
+            if (!f.known) {
+                if (auto own = sortieDefinition(name)) {
+                    f.definition = *own;
+                    f.known = true;
+                } else {
+                    f.definition.name = name;
+                    f.definition.displayName = name;
+                    f.definition.description = tr("A parameter Sortie has no description of: kept and sent as typed.");
+                }
+            }
+            if (f.definition.displayName.isEmpty())
+                f.definition.displayName = name;
+            if (name == QLatin1String("camera") && f.definition.choices.empty())
+                for (const Camera &c : builtInCameras())
+                    f.definition.choices.push_back({c.name, c.name});
+            m_fields.push_back(std::move(f));
+        }
+    }
+    endResetModel();
+    emit rowChanged();
+    emit valuesChanged();
+}
+
+void SegmentEditorModel::refreshValues()
+{
+    const Segment *s = segment();
+    if (!s)
+        return rebuild();
+    if (int(parameterNames(*s, m_editor->catalog()).size()) != int(m_fields.size()))
+        return rebuild();  // a raw parameter came or went
+    m_problem.clear();
+    if (!m_fields.empty())
+        emit dataChanged(index(0), index(int(m_fields.size()) - 1), {ValueRole, ProblemRole});
+    emit valuesChanged();
+}
+
+int SegmentEditorModel::rowCount(const QModelIndex &parent) const
+{
+    return parent.isValid() ? 0 : int(m_fields.size());
+}
+
+QHash<int, QByteArray> SegmentEditorModel::roleNames() const
+{
+    return {{NameRole, "name"}, {LabelRole, "label"}, {DescriptionRole, "description"}, {TypeRole, "type"}, {WidgetRole, "widget"},
+            {UnitRole, "unit"}, {ValueRole, "value"}, {DefaultRole, "defaultValue"}, {MinimumRole, "minimum"},
+            {MaximumRole, "maximum"}, {ChoicesRole, "choices"}, {AdvancedRole, "advanced"}, {KnownRole, "known"},
+            {ProblemRole, "problem"}};
+}
+
+QVariant SegmentEditorModel::data(const QModelIndex &index, int role) const
+{
+    const Segment *s = segment();
+    if (!s || !checkIndex(index, CheckIndexOption::IndexIsValid | CheckIndexOption::ParentIsInvalid))
+        return {};
+    const Field &f = m_fields[size_t(index.row())];
+    const ParameterDefinition &d = f.definition;
+    switch (role) {
+    case NameRole: return f.name;
+    case LabelRole: return d.displayName;
+    case DescriptionRole: return d.description;
+    case TypeRole: return typeName(d.type);
+    case WidgetRole: return f.known ? widgetOf(d) : QStringLiteral("text");
+    case UnitRole: return d.unit();
+    case ValueRole: return parameterValue(*s, f.name, m_editor->catalog());
+    case DefaultRole: return d.defaultValue;
+    case MinimumRole: return d.minimum ? QVariant(*d.minimum) : QVariant();
+    case MaximumRole: return d.maximum ? QVariant(*d.maximum) : QVariant();
+    case ChoicesRole: {
+        QVariantList list;
+        for (const ParameterChoice &c : d.choices)
+            list << QVariantMap{{QStringLiteral("value"), c.value}, {QStringLiteral("text"), c.displayName}};
+        return list;
+    }
+    case AdvancedRole: return d.advanced;
+    case KnownRole: return f.known;
+    case ProblemRole: {
+        const QVariant v = parameterValue(*s, f.name, m_editor->catalog());
+        return f.known && v.isValid() ? d.check(textOf(v)) : QString();
+    }
+    default: return {};
+    }
+}
+
+QString SegmentEditorModel::title() const
+{
+    const Segment *s = segment();
+    if (!s)
+        return {};
+    if (const AlgorithmSegment *a = asAlgorithmSegment(*s))  // the name the server gives it
+        if (const AlgorithmDefinition *d = m_editor->catalog().byClassName(a->algorithm); d && !d->displayName.isEmpty())
+            return QStringLiteral("%1 %2").arg(d->displayName).arg(m_row + 1);
+    return segmentLabel(m_row, *s);
+}
+
+QString SegmentEditorModel::kind() const
+{
+    const Segment *s = segment();
+    return s ? segmentKindName(*s) : QString();
+}
+
+bool SegmentEditorModel::isValid() const
+{
+    const Segment *s = segment();
+    return s && !isWaypoint(*s);
+}
+
+double SegmentEditorModel::radius() const
+{
+    const Segment *s = segment();
+    const AlgorithmSegment *a = s ? asAlgorithmSegment(*s) : nullptr;
+    return a && a->figure == FigureType::Circle && !a->figureParameters.empty() ? a->figureParameters[0] : std::nan("");
+}
+
+QVariantMap SegmentEditorModel::figures() const
+{
+    const Segment *s = segment();
+    const std::optional<AreaScan> scan = s ? scanOf(*s) : std::nullopt;
+    if (!scan)
+        return {};
+    const QVariantMap plan = m_model->index(m_row).data(RouteModel::ScanPlanRole).toMap();
+    QVariantMap out{{QStringLiteral("height"), scanAltitude(scan->parameters)},
+                    {QStringLiteral("gsdCm"), scanGroundSampleDistanceCm(scan->parameters)},
+                    {QStringLiteral("footprintAcross"), footprintAcrossMeters(scan->parameters)},
+                    {QStringLiteral("footprintAlong"), footprintAlongMeters(scan->parameters)}};
+    if (plan.value(QStringLiteral("ok")).toBool()) {
+        out.insert(QStringLiteral("passSpacing"), plan.value(QStringLiteral("transectSpacingMeters")));
+        out.insert(QStringLiteral("triggerDistance"), plan.value(QStringLiteral("triggerDistanceMeters")));
+        out.insert(QStringLiteral("photoCount"), plan.value(QStringLiteral("photoCount")));
+        out.insert(QStringLiteral("areaSquareMeters"), plan.value(QStringLiteral("areaSquareMeters")));
+        out.insert(QStringLiteral("passes"), plan.value(QStringLiteral("transects")));
+    } else {
+        out.insert(QStringLiteral("message"), plan.value(QStringLiteral("message")));
+    }
+    return out;
+}
+
+QStringList SegmentEditorModel::cameras() const
+{
+    QStringList names;
+    for (const Camera &c : builtInCameras())
+        names << c.name;
+    return names;
+}
+
+bool SegmentEditorModel::set(int index, const QVariant &value, EditStep step)
+{
+    if (index < 0 || index >= int(m_fields.size()) || !m_editor)
+        return false;
+    const Field &f = m_fields[size_t(index)];
+    QVariant typed = value;
+    // A text field's number arrives as text; the definition says what it is.
+    if (value.metaType().id() == QMetaType::QString && f.known
+        && (f.definition.type == ParameterType::Double || f.definition.type == ParameterType::Integer) && !value.toString().isEmpty()) {
+        const auto n = parseParameterNumber(value.toString());
+        if (!n) {
+            m_problem = tr("%1 needs a number, not \"%2\".").arg(f.definition.displayName, value.toString());
+            emit valuesChanged();
+            return false;
+        }
+        typed = *n;
+    }
+    return m_editor->setParameter({m_row}, f.name, typed, step);
+}
+
+bool SegmentEditorModel::setRadius(double meters, EditStep step)
+{
+    return m_editor && m_editor->setRadius(m_row, meters, step);
+}
+
+int SegmentEditorModel::indexOf(const QString &name) const
+{
+    for (size_t i = 0; i < m_fields.size(); ++i)
+        if (m_fields[i].name == name)
+            return int(i);
+    return -1;
+}
+
+} // namespace sortie::mission

@@ -1,0 +1,28 @@
+#pragma once
+
+// The editing types QML views use beside the ones ui/qmltypes registers: the enums the
+// RouteEditor takes (MissionEnums.Amsl, MissionEnums.Continuing) and the generated segment
+// editor's model.
+#include "MissionEnums.h"
+#include "SegmentEditorModel.h"
+
+#include <QtQml/qqmlregistration.h>
+
+namespace sortie::ui {
+
+struct MissionEnumsForeign
+{
+    Q_GADGET
+    QML_FOREIGN_NAMESPACE(sortie::mission::MissionEnums)
+    QML_NAMED_ELEMENT(MissionEnums)
+};
+
+struct SegmentEditorModelForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::mission::SegmentEditorModel)
+    QML_NAMED_ELEMENT(SegmentEditorModel)
+    QML_UNCREATABLE("the document's, handed to the views")
+};
+
+} // namespace sortie::ui

@@ -1,0 +1,141 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Sortie.Ui
+
+// The current segment's editor, generated from its algorithm's description (SegmentEditorModel:
+// the server's TraverseAlgorithm definitions, the built-in ones offline). One field per parameter,
+// drawn by its widget hint; every change is editor.set(), which validates and undoes. Sortie's own
+// knowledge adds the angle dial, the camera picker and the live survey figures.
+GroupBox {
+    id: box
+    required property SegmentEditorModel editor
+    property bool showAdvanced: false
+    visible: editor !== null && editor.valid
+    title: editor ? editor.title : ""
+
+    ColumnLayout {
+        anchors.fill: parent
+        spacing: 2
+
+        RowLayout {
+            visible: box.editor !== null && !isNaN(box.editor.radius)
+            Label { text: qsTr("Radius"); Layout.preferredWidth: 150 }
+            TextField {
+                objectName: "segment_radius"
+                text: box.editor === null || isNaN(box.editor.radius) ? "" : Number(box.editor.radius).toFixed(1)
+                Layout.preferredWidth: 80
+                selectByMouse: true
+                onEditingFinished: if (Number(text) !== box.editor.radius) box.editor.setRadius(Number(text))
+            }
+            Label { text: "m"; opacity: 0.7 }
+        }
+
+        Repeater {
+            model: box.editor
+            delegate: RowLayout {
+                id: field
+                required property int index
+                required property string name
+                required property string label
+                required property string description
+                required property string widget
+                required property string unit
+                required property var value
+                required property string defaultValue
+                required property var choices
+                required property bool advanced
+                required property bool known
+                required property string problem
+                visible: box.showAdvanced || !advanced
+                Layout.fillWidth: true
+                ToolTip.visible: hover.hovered && description.length > 0
+                ToolTip.text: description
+                HoverHandler { id: hover }
+
+                Label {
+                    text: field.known ? field.label : field.label + " ⋯"
+                    color: field.problem.length > 0 ? "#e53935" : palette.windowText
+                    elide: Text.ElideRight
+                    Layout.preferredWidth: 150
+                }
+                TextField {
+                    objectName: "segment_" + field.name
+                    visible: field.widget === "number" || field.widget === "text"
+                    text: field.value === undefined ? "" : field.widget === "number" ? Number(field.value).toString() : String(field.value)
+                    placeholderText: field.defaultValue
+                    selectByMouse: true
+                    Layout.preferredWidth: 110
+                    onEditingFinished: if (text !== (field.value === undefined ? "" : String(field.value))) box.editor.set(field.index, text)
+                }
+                Switch {
+                    objectName: "segment_" + field.name + "_switch"
+                    visible: field.widget === "toggle"
+                    checked: field.value === true || (field.value === undefined && field.defaultValue === "true")
+                    onToggled: box.editor.set(field.index, checked)
+                }
+                ComboBox {
+                    objectName: "segment_" + field.name + "_choice"
+                    visible: field.widget === "choice" || field.widget === "camera"
+                    Layout.preferredWidth: 180
+                    model: field.choices
+                    textRole: "text"
+                    valueRole: "value"
+                    currentIndex: visible ? indexOfValue(field.value === undefined ? field.defaultValue : field.value) : -1
+                    displayText: currentIndex < 0 && field.value !== undefined ? String(field.value) : currentText
+                    onActivated: box.editor.set(field.index, currentValue)
+                }
+                Dial {
+                    // The direction of passes: drag it round; the path follows, one undo step.
+                    objectName: "segment_" + field.name + "_dial"
+                    visible: field.widget === "angle"
+                    from: 0
+                    to: 360
+                    value: field.value === undefined ? 0 : field.value
+                    implicitWidth: 44
+                    implicitHeight: 44
+                    onMoved: box.editor.set(field.index, Math.round(value), MissionEnums.Continuing)
+                    onPressedChanged: if (!pressed) box.editor.set(field.index, Math.round(value), MissionEnums.Done)
+                }
+                TextField {
+                    visible: field.widget === "angle"
+                    text: field.value === undefined ? "" : Number(field.value).toString()
+                    Layout.preferredWidth: 60
+                    selectByMouse: true
+                    onEditingFinished: box.editor.set(field.index, text)
+                }
+                Label { text: field.unit; opacity: 0.7 }
+            }
+        }
+
+        CheckBox {
+            objectName: "segment_showAdvanced"
+            text: qsTr("Advanced parameters")
+            checked: box.showAdvanced
+            onToggled: box.showAdvanced = checked
+        }
+
+        Label {
+            // What the survey gives, as the operator types.
+            objectName: "segment_figures"
+            readonly property var f: box.editor ? box.editor.figures : ({})
+            visible: f.height !== undefined
+            text: f.height === undefined ? "" : f.message !== undefined
+                  ? f.message
+                  : qsTr("%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos")
+                    .arg(Number(f.height).toFixed(1)).arg(Number(f.gsdCm).toFixed(2))
+                    .arg(Number(f.footprintAcross).toFixed(1)).arg(Number(f.footprintAlong).toFixed(1))
+                    .arg(Number(f.passSpacing).toFixed(1)).arg(Number(f.triggerDistance).toFixed(1)).arg(f.photoCount)
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
+        }
+        Label {
+            objectName: "segment_problem"
+            visible: text.length > 0
+            text: box.editor ? box.editor.problem : ""
+            color: "#e53935"
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
+        }
+    }
+}
