@@ -6,6 +6,7 @@
 #include "SimLog.h"
 #include "SimObjectService.h"
 #include "SimSessionService.h"
+#include "SimTerrainService.h"
 #include "SimVehicleService.h"
 #include "SimWorld.h"
 
@@ -30,6 +31,7 @@ HciServer::HciServer(SimWorld &world, QObject *parent)
     m_lockService->install(m_dispatcher);
     m_eventService->install(m_dispatcher);
     m_vehicleService->install(m_dispatcher);
+    SimTerrainService::install(m_dispatcher, m_world);
 
     connect(&m_sessions, &SimSessionTable::sessionEnded, this, [this](int clientId) { m_world.locks().releaseAll(clientId); });
     connect(&m_server, &QTcpServer::newConnection, this, &HciServer::onNewConnection);

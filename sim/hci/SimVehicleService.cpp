@@ -4,6 +4,7 @@
 #include "HciServerConnection.h"
 #include "Messages.pb.h"
 #include "SimRouteProcessor.h"
+#include "SimRouteTerrain.h"
 #include "SimSessionTable.h"
 #include "SimVehicle.h"
 #include "SimWorld.h"
@@ -131,6 +132,9 @@ void SimVehicleService::processRoute(SimCall &call)
         limits = SimRouteLimits::of(stored->vehicleprofile());
     pb::ProcessRouteResponse response;
     *response.mutable_processedroute() = SimRouteProcessor::process(route, limits, m_s.world.groundElevation());
+    const auto *storedProfile = m_s.world.store().find(QStringLiteral("VehicleProfile"), route.vehicleprofile().id());
+    SimRouteTerrain::apply(*response.mutable_processedroute(), m_s.world.terrain(),
+                           SimRouteTerrain::safeDistance(route.vehicleprofile(), storedProfile ? &storedProfile->vehicleprofile() : nullptr));
     response.set_hash(SimRouteProcessor::hash(route));
     call.respond.reply(response);
 }
