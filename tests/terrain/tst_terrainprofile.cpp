@@ -1,11 +1,11 @@
 // The terrain profile of a route, the terrain rules, the source order and terrain following.
-#include "AltitudeConversion.h"
 #include "ElevationService.h"
 #include "Geodesy.h"
 #include "HgtTileSource.h"
 #include "HgtWriter.h"
 #include "NoElevationSource.h"
 #include "RouteAnalyzer.h"
+#include "RouteEditor.h"
 #include "RouteModel.h"
 #include "TerrainFollow.h"
 #include "TerrainProfile.h"
@@ -13,6 +13,7 @@
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QUndoStack>
 #include <QTest>
 
 #include <functional>
@@ -245,12 +246,34 @@ private slots:
         QVERIFY(std::none_of(after.begin(), after.end(), [](const auto &i) { return i.rule.startsWith(QLatin1String("terrain")); }));
     }
 
-    void altitudeConversion()
+    // Changing the altitude type keeps the flown height through the ground; without ground, the number.
+    void altitudeTypeKeepsHeight()
     {
-        QCOMPARE(convertAltitude(50, AltitudeType::Agl, AltitudeType::Amsl, ElevationSample::value(30)), std::optional<double>(80));
-        QCOMPARE(convertAltitude(80, AltitudeType::Amsl, AltitudeType::Agl, ElevationSample::value(30)), std::optional<double>(50));
-        QCOMPARE(convertAltitude(80, AltitudeType::Amsl, AltitudeType::Amsl, ElevationSample::noData()), std::optional<double>(80));
-        QVERIFY(!convertAltitude(80, AltitudeType::Amsl, AltitudeType::Agl, ElevationSample::noData()));
+        FormulaSource ground(QStringLiteral("g"), [](const GeoPoint &p) -> std::optional<double> {
+            return p.longitude < 24.015 ? std::optional<double>(30.0) : std::nullopt;
+        });
+        ElevationService service;
+        service.setSources({&ground});
+        sortie::mission::RouteModel model;
+        QUndoStack stack;
+        model.resetRoute(routeOf({{{56.9, 24.0}, 50}, {{56.9, 24.02}, 50}}, AltitudeType::Agl));
+        sortie::mission::RouteEditor editor(&model, &stack);
+        editor.setGroundLookup([&service](const GeoPoint &p) -> std::optional<double> {
+            const GroundSample g = service.sample(p);
+            return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
+        });
+        QVERIFY(editor.setAltitudeType({0, 1}, QStringLiteral("AMSL")));
+        auto wp = [&](int row) { return *sortie::mission::asWaypoint(model.segment(row)); };
+        QCOMPARE(wp(0).altitude, 80.0);  // 50 m above 30 m ground
+        QCOMPARE(wp(1).altitude, 50.0);  // no ground there: kept
+        QCOMPARE(wp(1).altitudeType, AltitudeType::Amsl);
+        QVERIFY(editor.setAltitudeType({0}, QStringLiteral("AGL")));
+        QCOMPARE(wp(0).altitude, 50.0);
+        QVERIFY(editor.setAltitudeType({0}, QStringLiteral("AMSL"), false));  // the operator keeps the number
+        QCOMPARE(wp(0).altitude, 50.0);
+        stack.undo();
+        stack.undo();
+        QCOMPARE(wp(0).altitude, 80.0);
     }
 
     // A pass over a hill: points are added where the ground bends, and every probe stays in tolerance.

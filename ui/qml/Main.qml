@@ -10,6 +10,7 @@ ApplicationWindow {
     required property AppSettings appSettings
     property var connection: null
     property var missions: null
+    property QtObject elevation: null
     property var fleet: null
     // The client's AutosaveRecovery: edits a previous run left unsaved, offered at start.
     property var recovery: null
@@ -101,6 +102,7 @@ ApplicationWindow {
             id: missionPage
             objectName: "missionPage"
             missions: window.missions
+            elevation: window.elevation
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource

@@ -145,15 +145,23 @@ void RouteEditor::setAltitude(const QList<int> &rows, double altitude)
     }, QStringLiteral("Set altitude to %1 m").arg(altitude));
 }
 
-bool RouteEditor::setAltitudeType(const QList<int> &rows, const QString &type)
+bool RouteEditor::setAltitudeType(const QList<int> &rows, const QString &type, bool keepHeight)
 {
     AltitudeType t;
     if (!parseAltitudeType(type, &t))
         return false;
-    // The number stays: without terrain data a conversion would be a guess. See docs/missions.md.
-    editSegments(rows, [t](Segment &s) {
-        if (Waypoint *w = asWaypoint(s)) w->altitudeType = t;
-        else std::get<AreaScan>(s).parameters.altitudeType = t;
+    // Through the ground under each waypoint when it is known; otherwise the number stays (a
+    // conversion would be a guess). A scan's altitude has no one point to convert at. See docs/missions.md.
+    const GroundLookup ground = keepHeight ? m_ground : GroundLookup();
+    editSegments(rows, [t, &ground](Segment &s) {
+        if (Waypoint *w = asWaypoint(s)) {
+            if (ground && w->altitudeType != t)
+                if (const std::optional<double> g = ground(w->position))
+                    w->altitude += t == AltitudeType::Amsl ? *g : -*g;
+            w->altitudeType = t;
+        } else {
+            std::get<AreaScan>(s).parameters.altitudeType = t;
+        }
     }, QStringLiteral("Set altitude type to %1").arg(altitudeTypeName(t)));
     return true;
 }

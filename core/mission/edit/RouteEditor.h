@@ -10,6 +10,7 @@
 #include <QVariantMap>
 
 #include <functional>
+#include <optional>
 
 namespace sortie::mission {
 
@@ -43,7 +44,9 @@ public:
     // Bulk edits of a selection; each is one undo step. Rows that an edit does not apply to
     // (turn type on an area scan) are left alone.
     Q_INVOKABLE void setAltitude(const QList<int> &rows, double altitude);
-    Q_INVOKABLE bool setAltitudeType(const QList<int> &rows, const QString &type);
+    // With keepHeight (and a ground lookup), a waypoint keeps the height it flies at: AGL -> AMSL adds
+    // the ground under it, AMSL -> AGL subtracts it. Without terrain there, the number stays.
+    Q_INVOKABLE bool setAltitudeType(const QList<int> &rows, const QString &type, bool keepHeight = true);
     Q_INVOKABLE void setSpeed(const QList<int> &rows, double speed);
     Q_INVOKABLE bool setTurnType(const QList<int> &rows, const QString &type);
     Q_INVOKABLE void setAcceptanceRadius(const QList<int> &rows, double meters);
@@ -70,11 +73,17 @@ public:
 
     Waypoint newWaypointAt(int row, const GeoPoint &position) const;
 
+    // The ground elevation (metres above the geoid) at a point, nullopt where unknown: set by the
+    // application from its terrain sources, used by setAltitudeType.
+    using GroundLookup = std::function<std::optional<double>(const GeoPoint &)>;
+    void setGroundLookup(GroundLookup lookup) { m_ground = std::move(lookup); }
+
 private:
     std::vector<int> validRows(const QList<int> &rows) const;
 
     RouteModel *m_model;
     QUndoStack *m_stack;
+    GroundLookup m_ground;
     int m_gesture = 0;
 };
 
