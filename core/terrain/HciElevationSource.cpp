@@ -47,6 +47,8 @@ void HciElevationSource::clearCache()
     m_inFlight.clear();
     m_profiles.clear();
     m_profilesAsked.clear();
+    m_profileInFlight = false;
+    m_nextProfile.reset();
 }
 
 quint64 HciElevationSource::pointKey(const GeoPoint &p)
@@ -130,7 +132,18 @@ void HciElevationSource::samplePath(const SampledPath &path, std::vector<Elevati
     out.assign(path.points.size(), ElevationSample::pending());
     if (m_profilesAsked.contains(key))
         return;
+    if (m_profileInFlight) {
+        // One profile at a time: while a drag changes the path every frame, only the latest waits.
+        m_nextProfile = path;
+        return;
+    }
+    requestProfile(key, path);
+}
+
+void HciElevationSource::requestProfile(const QByteArray &key, const SampledPath &path)
+{
     m_profilesAsked.insert(key, true);
+    m_profileInFlight = true;
     pb::GetElevationProfileRequest request;
     request.set_samplingstep(path.step);
     for (const GeoPoint &v : path.vertices) {
@@ -146,6 +159,7 @@ void HciElevationSource::samplePath(const SampledPath &path, std::vector<Elevati
     connect(reply, &hci::HciReply::finished, this, [this, reply, key, path, generation] {
         if (generation != m_generation)
             return;
+        m_profileInFlight = false;
         std::vector<GeoPoint> locations;
         std::vector<double> elevations;
         if (reply->isOk()) {
@@ -158,6 +172,13 @@ void HciElevationSource::samplePath(const SampledPath &path, std::vector<Elevati
             qCWarning(lcTerrain).noquote() << "the server did not give an elevation profile:" << reply->error().message();
         }
         storeProfile(key, path, locations, elevations);
+        if (m_nextProfile && m_session && m_session->isReady()) {
+            const SampledPath next = std::move(*m_nextProfile);
+            m_nextProfile.reset();
+            const QByteArray nextKey = pathKey(next);
+            if (!m_profiles.contains(nextKey))
+                requestProfile(nextKey, next);
+        }
         emit dataChanged();
     });
 }

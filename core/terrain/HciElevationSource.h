@@ -7,6 +7,7 @@
 #include <QSet>
 #include <QTimer>
 
+#include <optional>
 #include <vector>
 
 namespace sortie::hci {
@@ -16,7 +17,8 @@ class HciSession;
 namespace sortie::terrain {
 
 // The UgCS server's elevation (its own sources in the order its operator set) over HCI, never
-// blocking: a path is asked for in one GetElevationProfileRequest, points are gathered into one
+// blocking: a path is asked for in one GetElevationProfileRequest (one at a time: while one is out,
+// only the latest path asked for waits for its turn), points are gathered into one
 // GetRasterValuesRequest per event-loop turn (in batches of kBatch). Until an answer is in, samples
 // are Pending; answers are cached for the session (dropped when it is replaced or re-established)
 // and announced with dataChanged(). Latitudes and longitudes travel in radians, as everywhere in
@@ -43,6 +45,7 @@ private:
     static quint64 pointKey(const GeoPoint &p);
     static QByteArray pathKey(const SampledPath &path);
     void flushPoints();
+    void requestProfile(const QByteArray &key, const SampledPath &path);
     void storeProfile(const QByteArray &key, const SampledPath &path, const std::vector<GeoPoint> &locations,
                       const std::vector<double> &elevations);
 
@@ -52,6 +55,8 @@ private:
     QSet<quint64> m_inFlight;
     QHash<QByteArray, std::vector<float>> m_profiles;  // per path key, one value per sampled point
     QHash<QByteArray, bool> m_profilesAsked;
+    bool m_profileInFlight = false;
+    std::optional<SampledPath> m_nextProfile;
     QTimer m_flush;
     int m_requests = 0;
     int m_generation = 0;  // bumps on clearCache: late answers for an old session are dropped

@@ -4,6 +4,8 @@
 
 #include <QItemSelectionModel>
 #include <QPainter>
+#include <QHoverEvent>
+#include <QMouseEvent>
 #include <QPainterPath>
 
 #include <algorithm>
