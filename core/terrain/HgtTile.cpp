@@ -75,8 +75,13 @@ std::optional<HgtTile> HgtTile::fromData(QByteArrayView data, TileCell cell, con
 ElevationSample HgtTile::sample(double latitude, double longitude) const
 {
     const double span = m_size - 1;
-    const double y = (m_cell.south + 1 - latitude) * span;  // rows grow southwards
-    const double x = (longitude - m_cell.west) * span;
+    double y = (m_cell.south + 1 - latitude) * span;  // rows grow southwards
+    double x = (longitude - m_cell.west) * span;
+    // A point on a post (to rounding) is that post: a void beside it has no weight.
+    if (std::abs(y - std::round(y)) < 1e-6)
+        y = std::round(y);
+    if (std::abs(x - std::round(x)) < 1e-6)
+        x = std::round(x);
     if (!(y >= -1e-9 && y <= span + 1e-9 && x >= -1e-9 && x <= span + 1e-9))
         return ElevationSample::noData();
     const int r0 = std::clamp(int(std::floor(y)), 0, m_size - 2);
