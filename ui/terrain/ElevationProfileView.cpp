@@ -226,7 +226,7 @@ void ElevationProfileView::paint(QPainter *painter)
         double altitude = std::numeric_limits<double>::infinity();
         bool hasGround = false, hasAltitude = false, low = false;
     };
-    std::vector<Column> col(size_t(columns));
+    std::vector<Column> col(static_cast<size_t>(columns));
     for (size_t i = 0; i < p.size(); ++i) {
         const int c = std::clamp(int(xOf(p.path.points[i].distance) - plot.left()), 0, columns - 1);
         Column &k = col[size_t(c)];

@@ -1,17 +1,19 @@
 #pragma once
 
+#include "TerrainProfileModel.h"
+
 #include <QColor>
+#include <QItemSelectionModel>
 #include <QPointer>
 #include <QQuickPaintedItem>
 #include <QtQml/qqmlregistration.h>
 
 #include <vector>
 
-class QItemSelectionModel;
+
 
 namespace sortie::ui {
 
-class TerrainProfileModel;
 
 // The elevation profile under the map: the ground along the route (filled), the route's altitude,
 // the clearance band (ground + safe distance), stretches flown too low in red, stretches without
