@@ -2,14 +2,21 @@
 
 #include "AreaScanPlanner.h"
 #include "DjiDroneModels.h"
+#include "ElevationService.h"
+#include "HgtTileSource.h"
 #include "MissionFiles.h"
 #include "ReportJson.h"
 #include "RouteStatistics.h"
 #include "RouteValidator.h"
 #include "ScanPlanCache.h"
+#include "TerrainReport.h"
+#include "TerrainRule.h"
 
 #include <QCommandLineParser>
 #include <QFileInfo>
+
+#include <algorithm>
+#include <memory>
 
 namespace sortie::plan {
 
@@ -107,6 +114,7 @@ int runStats(const QStringList &args, Streams io)
 {
     QCommandLineParser p;
     p.addOption({QStringLiteral("json"), QStringLiteral("Machine-readable output.")});
+    p.addOption({QStringLiteral("dem"), QStringLiteral("SRTM .hgt tile or folder: check the terrain rules too."), QStringLiteral("PATH")});
     if (!parse(p, args, 1, io))
         return Failure;
     const QString file = p.positionalArguments().at(0);
@@ -115,15 +123,46 @@ int runStats(const QStringList &args, Streams io)
         io.err << "sortie-plan: " << loaded.error().toString() << "\n";
         return Failure;
     }
+    // With --dem, each route's terrain profile adds its issues (see profile).
+    std::unique_ptr<terrain::HgtTileSource> tiles;
+    terrain::ElevationService elevation;
+    std::vector<terrain::ProfileRoute> profiles;
+    if (p.isSet(QStringLiteral("dem"))) {
+        tiles = std::make_unique<terrain::HgtTileSource>(p.value(QStringLiteral("dem")));
+        if (!tiles->isUsable()) {
+            io.err << "sortie-plan: " << tiles->error() << "\n";
+            return Failure;
+        }
+        elevation.setSources({tiles.get()});
+        QString error;
+        auto pr = profileRoutes(file, loaded->mission, &error);
+        if (!pr) {
+            io.err << "sortie-plan: " << file << ": " << error << "\n";
+            return Failure;
+        }
+        profiles = std::move(*pr);
+    }
     ScanPlanCache cache;
     bool errors = false;
     Json routes = Json::array();
-    for (const Route &r : loaded->mission.routes) {
+    for (size_t ri = 0; ri < loaded->mission.routes.size(); ++ri) {
+        const Route &r = loaded->mission.routes[ri];
         const RouteStatistics st = computeStatistics(r, &cache);
-        const ValidationReport report = validateRoute(r, &cache);
+        ValidationReport report = validateRoute(r, &cache);
+        std::optional<terrain::TerrainProfile> profile;
+        if (ri < profiles.size()) {
+            profile = terrain::computeProfile(profiles[ri], elevation);
+            const auto found = terrain::terrainIssues(profiles[ri], *profile);
+            report.issues.insert(report.issues.end(), found.begin(), found.end());
+            std::stable_sort(report.issues.begin(), report.issues.end(),
+                             [](const ValidationIssue &a, const ValidationIssue &b) { return a.segment < b.segment; });
+        }
         errors |= report.hasErrors();
         if (p.isSet(QStringLiteral("json"))) {
-            routes.push_back({{"name", r.settings.name.toStdString()}, {"statistics", statisticsJson(st)}, {"validation", validationJson(report)}});
+            Json route{{"name", r.settings.name.toStdString()}, {"statistics", statisticsJson(st)}, {"validation", validationJson(report)}};
+            if (profile)
+                route["terrain"] = terrainJson(profiles[ri], *profile, false);
+            routes.push_back(std::move(route));
             continue;
         }
         io.out << "Route \"" << r.settings.name << "\"\n"
@@ -135,6 +174,14 @@ int runStats(const QStringList &args, Streams io)
         if (!st.boundingBox.empty)
             io.out << "  bounds " << st.boundingBox.south << ", " << st.boundingBox.west << " .. " << st.boundingBox.north << ", "
                    << st.boundingBox.east << "\n";
+        if (profile) {
+            io.out << "  terrain from " << profile->sourcesTried.join(QStringLiteral(", ")) << ": ";
+            if (profile->minClearance)
+                io.out << "lowest clearance " << QString::number(profile->minClearance->clearance, 'f', 1) << " m on leg "
+                       << profile->minClearance->leg + 1 << "\n";
+            else
+                io.out << "no data under the route\n";
+        }
         io.out << "  " << report.errorCount() << " error(s), " << report.warningCount() << " warning(s)\n";
         for (const ValidationIssue &i : report.issues)
             io.out << "    " << (i.severity == Severity::Error ? "error" : "warning") << " [" << i.rule << "] " << i.message << "\n";
@@ -147,6 +194,12 @@ int runStats(const QStringList &args, Streams io)
         io.out << QString::fromStdString(doc.dump(2)) << "\n";
     } else {
         printNotices(loaded->notices, io);
+    }
+    if (tiles) {
+        for (const QString &problem : tiles->problems())
+            io.err << "sortie-plan: " << problem << "\n";
+        if (!tiles->problems().isEmpty())
+            return Failure;
     }
     return errors ? ValidationErrors : Ok;
 }

@@ -1,6 +1,7 @@
 // sortie-plan: convert mission files between formats, print statistics and validation, and
 // generate area scans, for scripts and batch work. See docs/missions.md.
 #include "PlanCommands.h"
+#include "ProfileCommand.h"
 
 #include <QCoreApplication>
 #include <QLoggingCategory>
@@ -15,8 +16,12 @@ const char *const kUsage =
     "       [--drone m300|m350|m3e|m3t] [--payload P] [--height relative|amsl|agl] [--takeoff-amsl M] [--security-height M]\n"
     "      Convert between .sortie, .plan (QGroundControl), .waypoints (QGC WPL 110), .kmz (DJI WPML) and\n"
     "      .kml (export only). The --drone.. options shape a .kmz for DJI Pilot 2.\n"
-    "  stats FILE [--json]\n"
-    "      Print each route's statistics and validation results. Exit 2 when a route has errors.\n"
+    "  stats FILE [--dem PATH] [--json]\n"
+    "      Print each route's statistics and validation results (with --dem, the terrain rules too).\n"
+    "      Exit 2 when a route has errors.\n"
+    "  profile FILE --dem PATH [--step METERS] [--safe-distance METERS] [--json]\n"
+    "      Ground, altitude and clearance along each route from SRTM .hgt tiles (PATH: a tile or a folder).\n"
+    "      Exit 2 when a leg flies closer to the ground than the safe distance.\n"
     "  scan POLYGON.kml OUT [--altitude M | --gsd CM] [--front PCT] [--side PCT] [--angle DEG]\n"
     "       [--turnaround M] [--speed M/S] [--amsl] [--camera NAME,SENSOR_W_MM,SENSOR_H_MM,FOCAL_MM,IMAGE_W_PX,IMAGE_H_PX]\n"
     "       [--json] [--force]\n"
@@ -43,6 +48,8 @@ int main(int argc, char **argv)
         return sortie::plan::runConvert(args, io);
     if (command == QLatin1String("stats"))
         return sortie::plan::runStats(args, io);
+    if (command == QLatin1String("profile"))
+        return sortie::plan::runProfile(args, io);
     if (command == QLatin1String("scan"))
         return sortie::plan::runScan(args, io);
     err << "sortie-plan: unknown command \"" << command << "\"\n\n" << kUsage;

@@ -76,7 +76,10 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     const QCommandLineOption autosave(QStringLiteral("autosave-dir"),
                                       QCoreApplication::translate("sortie", "Folder for autosaved edits (default: the application data folder; also SORTIE_AUTOSAVE_DIR)."),
                                       QStringLiteral("folder"));
-    parser.addOptions({demo, server, user, vci, autosave, reportStartup});
+    const QCommandLineOption dem(QStringLiteral("dem"),
+                                 QCoreApplication::translate("sortie", "SRTM .hgt terrain tiles (a tile or a folder), asked before the server (also the setting terrain/demFolder)."),
+                                 QStringLiteral("path"));
+    parser.addOptions({demo, server, user, vci, autosave, reportStartup, dem});
 
     if (!parser.parse(arguments))
         return parser.errorText();
@@ -106,6 +109,7 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
         return QStringLiteral("--demo starts its own server: leave out --server");
     options.user = parser.value(user);
     options.autosaveDir = parser.value(autosave);
+    options.demPath = parser.value(dem);
     if (parser.isSet(vci)) {
         auto parsed = VciEndpoint::parse(parser.value(vci));
         if (auto *error = std::get_if<QString>(&parsed))

@@ -36,6 +36,7 @@ struct LaunchOptions
     std::optional<VciEndpoint> vci;
     bool reportStartup = false; // print start-up time and memory, then quit
     QString autosaveDir; // --autosave-dir; empty: SORTIE_AUTOSAVE_DIR, else the default
+    QString demPath;     // --dem: SRTM .hgt tiles for the terrain; empty: the setting terrain/demFolder
 
     bool exitNow = false;
     QString output;

@@ -4,10 +4,14 @@
 #include "AutosaveRecovery.h"
 #include "ConnectionController.h"
 #include "DemoServer.h"
+#include "ElevationSetup.h"
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "RouteAnalyzer.h"
 #include "RouteAutosave.h"
+#include "RouteDocument.h"
+#include "RouteEditor.h"
 #include "VehicleFleet.h"
 #include "LaunchOptions.h"
 #include "SortieUi.h"
@@ -98,6 +102,15 @@ int main(int argc, char *argv[])
     sortie::client::ConnectionController connection(&session);
     sortie::client::MissionController missions(&hciClient);
     sortie::client::VehicleFleet fleet(&hciClient);
+    // Terrain: local tiles (--dem, else the setting) and the server, in the order the settings give.
+    sortie::terrain::ElevationSetup elevation(&session);
+    elevation.configure(options.demPath.isEmpty() ? storage.value(QStringLiteral("terrain/demFolder")).toString() : options.demPath,
+                        storage.value(QStringLiteral("terrain/sourceOrder")).toStringList());
+    missions.document()->analyzer()->addRule(elevation.rule());
+    missions.document()->editor()->setGroundLookup([&elevation](const sortie::mission::GeoPoint &p) -> std::optional<double> {
+        const sortie::terrain::GroundSample g = elevation.service()->sample(p);
+        return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
+    });
     // Recovery looks first, so the autosave of this run takes a slot of its own.
     const QString autosaves = autosaveDirectory(options);
     sortie::client::AutosaveRecovery recovery(missions.document(), autosaves);
@@ -119,7 +132,8 @@ int main(int argc, char *argv[])
                                  {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&connection)},
                                  {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&missions)},
                                  {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&fleet)},
-                                 {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(&recovery)}});
+                                 {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(&recovery)},
+                                 {QStringLiteral("elevation"), QVariant::fromValue<QObject *>(elevation.service())}});
     engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));
     if (engine.rootObjects().isEmpty())
         return 1;

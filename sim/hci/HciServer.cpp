@@ -7,6 +7,7 @@
 #include "SimObjectService.h"
 #include "SimSessionService.h"
 #include "SimExportService.h"
+#include "SimTerrainService.h"
 #include "SimVehicleService.h"
 #include "SimWorld.h"
 
@@ -33,6 +34,7 @@ HciServer::HciServer(SimWorld &world, QObject *parent)
     m_vehicleService->install(m_dispatcher);
     m_exportService = std::make_unique<SimExportService>(services);
     m_exportService->install(m_dispatcher);
+    SimTerrainService::install(m_dispatcher, m_world);
 
     connect(&m_sessions, &SimSessionTable::sessionEnded, this, [this](int clientId) { m_world.locks().releaseAll(clientId); });
     connect(&m_server, &QTcpServer::newConnection, this, &HciServer::onNewConnection);

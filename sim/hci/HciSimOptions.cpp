@@ -51,6 +51,8 @@ HciSimOptions::HciSimOptions()
         {QStringLiteral("user"), QStringLiteral("An account, login:password (repeatable; default admin:admin)."), QStringLiteral("login:password")},
         {QStringLiteral("hci-vehicles"), QStringLiteral("Number of emulator vehicles EMU-101... (default 3)."), QStringLiteral("n")},
         {QStringLiteral("store"), QStringLiteral("Keep the objects in this JSON file (loaded at start, saved on change)."), QStringLiteral("file")},
+        {QStringLiteral("dem"), QStringLiteral("The ground from SRTM .hgt tiles (a tile or a folder); default: built-in hills near Riga."),
+         QStringLiteral("path")},
         {QStringLiteral("telemetry-rate"), QStringLiteral("Telemetry rate in Hz (default 10)."), QStringLiteral("hz")},
         {QStringLiteral("session-expiry"), QStringLiteral("Seconds a disconnected session can be re-attached (default 60)."), QStringLiteral("s")},
         {QStringLiteral("max-sessions"), QStringLiteral("Licence limit on logged-in sessions (default none)."), QStringLiteral("n")},
@@ -106,6 +108,7 @@ bool HciSimOptions::read(const QCommandLineParser &p, QString *error)
         }
     }
     world.storePath = p.value(QStringLiteral("store"));
+    world.demPath = p.value(QStringLiteral("dem"));
     world.demoMission = !p.isSet(QStringLiteral("no-demo-mission"));
     return true;
 }

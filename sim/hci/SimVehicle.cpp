@@ -3,6 +3,7 @@
 #include "Messages.pb.h"
 #include "SimCommands.h"
 #include "SimRouteProcessor.h"
+#include "SimTerrain.h"
 
 namespace sortie::sim {
 
@@ -36,7 +37,16 @@ bool SimVehicle::tick(double dt, qint64 nowMs, pb::TelemetryEvent *event)
 {
     m_model.tick(dt);
     *event->mutable_vehicle() = *m_reference;
-    m_telemetry.record(nowMs, m_model.state(), event);
+    if (m_terrain) {
+        // The model flies above its home ground; the operator sees the height above the ground below.
+        FlightModel::State reported = m_model.state();
+        const double amsl = reported.altitudeAmsl();
+        reported.groundElevation = m_terrain->groundOr(reported.latitude, reported.longitude, reported.groundElevation);
+        reported.altitudeAgl = amsl - reported.groundElevation;
+        m_telemetry.record(nowMs, reported, event);
+    } else {
+        m_telemetry.record(nowMs, m_model.state(), event);
+    }
     const quint32 availability = SimCommands::availability(m_model);
     return std::exchange(m_availability, availability) != availability;
 }

@@ -18,6 +18,8 @@ namespace sortie::sim {
 namespace pb = com::ugcs::ucs::proto;
 
 // One simulated vehicle: its Vehicle object, its FlightModel, its commands and its telemetry.
+class SimTerrain;
+
 class SimVehicle
 {
 public:
@@ -32,6 +34,9 @@ public:
     // The Vehicle object changed in the store (renamed, new profile...).
     void setVehicle(const pb::Vehicle &vehicle);
     const SimTelemetry &telemetry() const { return m_telemetry; }
+    // The ground under the vehicle (not owned): telemetry's altitude_agl is above it. Without one,
+    // above the home ground.
+    void setTerrain(const SimTerrain *terrain) { m_terrain = terrain; }
 
     // Advances the flight by dt seconds and fills `event` with the telemetry batch. Returns true when
     // the set of available commands changed (a CommandEvent is due).
@@ -47,6 +52,7 @@ private:
     FlightModel m_model;
     SimTelemetry m_telemetry;
     quint32 m_availability = 0;
+    const SimTerrain *m_terrain = nullptr;
 };
 
 } // namespace sortie::sim

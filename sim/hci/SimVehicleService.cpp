@@ -5,6 +5,7 @@
 #include "Messages.pb.h"
 #include "SimRouteProcessor.h"
 #include "SimVehicleProfiles.h"
+#include "SimRouteTerrain.h"
 #include "SimSessionTable.h"
 #include "SimVehicle.h"
 #include "SimWorld.h"
@@ -149,6 +150,9 @@ void SimVehicleService::processRoute(SimCall &call)
     // The route itself goes back with its processing, as a UgCS server's does: an unsaved route
     // (the SDK's ExportRouteToWpml sample) is known to later requests only through it.
     *response.mutable_processedroute()->mutable_route() = route;
+    const auto *storedProfile = m_s.world.store().find(QStringLiteral("VehicleProfile"), route.vehicleprofile().id());
+    SimRouteTerrain::apply(*response.mutable_processedroute(), m_s.world.terrain(),
+                           SimRouteTerrain::safeDistance(route.vehicleprofile(), storedProfile ? &storedProfile->vehicleprofile() : nullptr));
     response.set_hash(SimRouteProcessor::hash(route));
     call.respond.reply(response);
 }

@@ -5,6 +5,7 @@
 #include "SimDjiProfiles.h"
 #include "SimLog.h"
 #include "SimStoreFile.h"
+#include "SimTerrain.h"
 #include "SimVehicle.h"
 
 #include <QDateTime>
@@ -21,6 +22,7 @@ SimWorld::SimWorld(Config config, QObject *parent)
     : QObject(parent)
     , m_config(std::move(config))
     , m_users(m_config.users.isEmpty() ? SimUsers() : SimUsers(m_config.users))
+    , m_terrain(std::make_unique<SimTerrain>(m_config.groundElevation))
 {
     m_ticker.setTimerType(Qt::PreciseTimer);
     connect(&m_ticker, &QTimer::timeout, this, &SimWorld::tick);
@@ -53,14 +55,27 @@ bool SimWorld::start(QString *error)
             return false;
         qCInfo(lcSim).noquote() << "loaded" << m_store.count() << "objects from" << m_config.storePath;
     }
+    if (!m_config.demPath.isEmpty()) {
+        QString demError;
+        auto dem = SimTerrain::fromDem(m_config.demPath, &demError);
+        if (!dem) {
+            if (error)
+                *error = demError;
+            return false;
+        }
+        m_terrain = std::move(dem);
+    }
+    qCInfo(lcSim).noquote() << "ground from" << m_terrain->description();
     const QList<int> ids = SimDemoContent::seed(m_store, m_users, m_config.vehicles, m_config.groundElevation,
                                                 m_config.demoMission, now());
     SimDjiProfiles::seed(m_store, now());
     const auto homes = SimDemoContent::vehicleHomes(m_config.vehicles);
     for (int i = 0; i < ids.size(); ++i) {
         const auto *object = m_store.find(QStringLiteral("Vehicle"), ids[i]);
-        FlightModel model(homes[i].latitude, homes[i].longitude, m_config.groundElevation);
+        const double homeGround = m_terrain->groundOr(homes[i].latitude, homes[i].longitude, m_config.groundElevation);
+        FlightModel model(homes[i].latitude, homes[i].longitude, homeGround);
         m_vehicles.push_back(std::make_unique<SimVehicle>(object->vehicle(), std::move(model), m_config.telemetryRateHz));
+        m_vehicles.back()->setTerrain(m_terrain.get());
     }
     connect(&m_store, &SimObjectStore::changed, this,
             [this](int type, const QString &objectType, int id, const pb::DomainObjectWrapper &object) {

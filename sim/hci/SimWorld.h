@@ -18,6 +18,7 @@ class TelemetryEvent;
 
 namespace sortie::sim {
 
+class SimTerrain;
 class SimVehicle;
 
 // Everything the simulated UgCS server serves, independent of any connection: users, the object
@@ -33,7 +34,8 @@ public:
         QList<SimUser> users;         // empty: admin/admin
         int vehicles = 3;             // EMU-101, EMU-102, EMU-103, ...
         double telemetryRateHz = 10;
-        double groundElevation = 10;  // metres AMSL of the (flat) ground around Riga
+        double groundElevation = 10;  // metres AMSL of the ground around Riga, away from the built-in hills
+        QString demPath;              // SRTM .hgt tile or folder for the ground; empty: built-in terrain
         QString storePath;            // empty: in memory only
         int maxSessions = 0;          // licence limit on logged-in sessions; 0: none
         bool demoMission = true;
@@ -52,6 +54,8 @@ public:
     SimLockTable &locks() { return m_locks; }
     const SimUsers &users() const { return m_users; }
     double groundElevation() const { return m_config.groundElevation; }
+    // The ground everywhere (GetElevationProfile, route processing, telemetry's AGL).
+    const SimTerrain &terrain() const { return *m_terrain; }
     static qint64 now();
 
     const std::vector<std::unique_ptr<SimVehicle>> &vehicles() const { return m_vehicles; }
@@ -74,6 +78,7 @@ private:
     SimUsers m_users;
     SimObjectStore m_store;
     SimLockTable m_locks;
+    std::unique_ptr<SimTerrain> m_terrain;
     std::vector<std::unique_ptr<SimVehicle>> m_vehicles;
     QTimer m_ticker;
     QTimer m_saveTimer;

@@ -29,6 +29,7 @@ Page {
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
     property bool dark: false
+    property QtObject elevation: null       // the client's ElevationService, for the terrain profile
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
     readonly property var drawingTools: doc ? doc.editor.drawingTools() : []
@@ -51,9 +52,14 @@ Page {
 
     SplitView {
         anchors.fill: parent
+        // The map over the terrain profile of the route.
+        SplitView {
+        orientation: Qt.Vertical
+        SplitView.fillWidth: true
         MapPane {
             id: pane
             SplitView.fillWidth: true
+            SplitView.fillHeight: true
             units: page.units
             mapSource: page.mapSource
             tileUrlTemplate: page.tileUrlTemplate
@@ -168,6 +174,15 @@ Page {
                     }
                 }
             }
+        }
+        TerrainProfilePanel {
+            id: terrainProfile
+            SplitView.preferredHeight: 170
+            SplitView.minimumHeight: 90
+            routeModel: page.routeModel
+            selectionModel: page.selectionModel
+            elevation: page.elevation
+        }
         }
         RoutePanel {
             id: panel

@@ -3,6 +3,8 @@
 #include "RouteModel.h"
 #include "ValidationIssueModel.h"
 
+#include <algorithm>
+
 namespace sortie::mission {
 
 RouteAnalyzer::RouteAnalyzer(const RouteModel *model, QObject *parent)
@@ -21,6 +23,13 @@ QVariantMap RouteAnalyzer::boundingBox() const
     if (b.empty)
         return {};
     return {{"south", b.south}, {"west", b.west}, {"north", b.north}, {"east", b.east}};
+}
+
+void RouteAnalyzer::addRule(RouteRule *rule)
+{
+    m_rules.emplace_back(rule);
+    connect(rule, &RouteRule::changed, this, &RouteAnalyzer::schedule);
+    schedule();
 }
 
 void RouteAnalyzer::setDelay(int milliseconds)
@@ -43,6 +52,13 @@ void RouteAnalyzer::recomputeNow()
     ++m_recomputes;
     RouteStatistics st = computeStatistics(m_model->route(), &m_scans);
     ValidationReport report = validateRoute(m_model->route(), &m_scans);
+    if (!m_rules.empty()) {
+        for (const auto &rule : m_rules)
+            if (rule)
+                rule->check(m_model->route(), &m_scans, report.issues);
+        std::stable_sort(report.issues.begin(), report.issues.end(),
+                         [](const ValidationIssue &a, const ValidationIssue &b) { return a.segment < b.segment; });
+    }
     m_scans.retainRecentlyUsed();
     const bool statsChanged = !(st == m_statistics);
     const bool validationDiffers = !(report == m_validation);

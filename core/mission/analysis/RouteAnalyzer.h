@@ -1,11 +1,13 @@
 #pragma once
 
+#include "RouteRule.h"
 #include "RouteStatistics.h"
 #include "RouteValidator.h"
 #include "ScanPlanCache.h"
 #include "ValidationIssueModel.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QTimer>
 #include <QVariantMap>
 
@@ -37,6 +39,8 @@ public:
     explicit RouteAnalyzer(const RouteModel *model, QObject *parent = nullptr);
 
     void setDelay(int milliseconds);
+    // Runs `rule` (not owned) on every recomputation, and recomputes when it says it changed.
+    void addRule(RouteRule *rule);
     int delay() const { return m_timer.interval(); }
 
     const RouteStatistics &statistics() const { return m_statistics; }
@@ -72,6 +76,7 @@ private:
     RouteStatistics m_statistics;
     ValidationReport m_validation;
     ValidationIssueModel *m_issues;
+    std::vector<QPointer<RouteRule>> m_rules;
     int m_recomputes = 0;
 };
 

@@ -17,6 +17,7 @@ struct VehicleProfile
     double maxHorizontalSpeed = 0.0;  // m/s
     double climbRate = 3.0;           // m/s, used to estimate flight time
     double descentRate = 2.0;         // m/s
+    double safeTerrainDistance = 10.0;  // metres: the least clearance above the ground on any leg
     bool operator==(const VehicleProfile &) const = default;
 };
 

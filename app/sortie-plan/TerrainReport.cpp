@@ -1,0 +1,170 @@
+#include "TerrainReport.h"
+
+#include "MavlinkMission.h"
+#include "MissionFiles.h"
+#include "ScanPlanCache.h"
+
+#include <QFile>
+
+#include <QList>
+
+#include <cmath>
+
+namespace sortie::plan {
+
+using mission::formats::Json;
+using namespace sortie::terrain;
+namespace mav = mission::formats::mav;
+
+namespace {
+Json number(double v)
+{
+    return std::isfinite(v) ? Json(std::round(v * 1000.0) / 1000.0) : Json(nullptr);
+}
+
+Json coordinate(double v)
+{
+    return Json(std::round(v * 1e8) / 1e8);
+}
+} // namespace
+
+Json terrainJson(const ProfileRoute &route, const TerrainProfile &profile, bool withSamples)
+{
+    Json t = Json::object();
+    t["safeDistance"] = route.safeDistance;
+    Json sources = Json::array();
+    for (const QString &s : profile.sourcesTried)
+        sources.push_back(s.toStdString());
+    t["sources"] = sources;
+    t["length"] = number(profile.path.length());
+    t["step"] = profile.path.step;
+    if (profile.minClearance) {
+        t["minClearance"] = number(profile.minClearance->clearance);
+        t["minClearanceAt"] = {{"leg", profile.minClearance->leg + 1},
+                               {"distance", number(profile.minClearance->distance)},
+                               {"distanceAlongLeg", number(profile.minClearance->distanceAlongLeg)}};
+    } else {
+        t["minClearance"] = nullptr;
+        t["minClearanceAt"] = nullptr;
+    }
+    Json noData = Json::array();
+    for (const NoDataStretch &s : profile.noData)
+        noData.push_back({{"fromDistance", number(s.fromDistance)}, {"toDistance", number(s.toDistance)}, {"leg", s.leg + 1}});
+    t["noData"] = noData;
+    Json low = Json::array();
+    for (const LowStretch &s : profile.lowStretches)
+        low.push_back({{"fromDistance", number(s.fromDistance)}, {"toDistance", number(s.toDistance)}, {"leg", s.leg + 1},
+                       {"clearance", number(s.lowest.clearance)}, {"distance", number(s.lowest.distance)}});
+    t["tooLow"] = low;
+    Json waypoints = Json::array();
+    for (size_t i = 0; i < profile.waypoints.size(); ++i) {
+        const WaypointTerrain &w = profile.waypoints[i];
+        waypoints.push_back({{"waypoint", i + 1},
+                             {"ground", w.ground.hasValue() ? number(w.ground.ground) : Json(nullptr)},
+                             {"altitudeAmsl", number(w.altitudeAmsl)},
+                             {"altitudeAgl", number(w.altitudeAgl)},
+                             {"distance", number(profile.path.vertexDistance[i])}});
+    }
+    t["waypoints"] = waypoints;
+    if (withSamples) {
+        Json samples = Json::array();
+        for (size_t i = 0; i < profile.size(); ++i) {
+            const PathSamplePoint &p = profile.path.points[i];
+            const GroundSample &g = profile.ground[i];
+            samples.push_back({{"distance", number(p.distance)},
+                               {"leg", p.leg + 1},
+                               {"latitude", coordinate(p.position.latitude)},
+                               {"longitude", coordinate(p.position.longitude)},
+                               {"ground", g.hasValue() ? number(g.ground) : Json(nullptr)},
+                               {"altitudeAmsl", number(profile.altitudeAmsl[i])},
+                               {"clearance", g.hasValue() ? number(profile.clearance(i)) : Json(nullptr)}});
+        }
+        t["samples"] = samples;
+    }
+    return t;
+}
+
+std::optional<ProfileRoute> wplProfileRoute(const QByteArray &data, QString *error)
+{
+    ProfileRoute route;
+    const QList<QByteArray> lines = data.split('\n');
+    bool haveHome = false;
+    int lineNo = 0;
+    for (QByteArray line : lines) {
+        ++lineNo;
+        line = line.trimmed();
+        if (line.isEmpty() || line.startsWith("QGC WPL"))
+            continue;
+        const QList<QByteArray> f = line.simplified().split(' ');
+        if (f.size() < 12)
+            continue;  // the reader has refused such a file before this runs
+        const int index = f[0].toInt(), frame = f[2].toInt(), command = f[3].toInt();
+        const double lat = f[8].toDouble(), lon = f[9].toDouble(), alt = f[10].toDouble();
+        if (index == 0 && !haveHome) {
+            route.home = GeoPoint{lat, lon};
+            haveHome = true;
+            continue;
+        }
+        switch (command) {
+        case mav::NavWaypoint: case mav::NavLoiterUnlimited: case mav::NavLoiterTurns: case mav::NavLoiterTime:
+        case mav::NavLand: case mav::NavTakeoff: case mav::NavLoiterToAltitude: case mav::NavSplineWaypoint:
+        case mav::NavVtolTakeoff: case mav::NavVtolLand:
+            break;
+        default:
+            continue;  // not a place the vehicle flies to
+        }
+        ProfileWaypoint w;
+        switch (frame) {
+        case mav::Global: case mav::GlobalInt: w.reference = HeightReference::Amsl; break;
+        case mav::GlobalRelativeAlt: case mav::GlobalRelativeAltInt: w.reference = HeightReference::AboveHome; break;
+        case mav::GlobalTerrainAlt: case mav::GlobalTerrainAltInt: w.reference = HeightReference::AboveTerrain; break;
+        default:
+            *error = QStringLiteral("line %1: altitude frame %2 has no height reference the profile knows (0, 3 or 10)").arg(lineNo).arg(frame);
+            return std::nullopt;
+        }
+        w.position = {lat, lon};
+        if (lat == 0.0 && lon == 0.0) {  // "here": home for a take-off, the previous point otherwise
+            if (command == mav::NavTakeoff || command == mav::NavVtolTakeoff || route.waypoints.empty()) {
+                if (!route.home) {
+                    *error = QStringLiteral("line %1: a take-off at 0,0 needs the home item").arg(lineNo);
+                    return std::nullopt;
+                }
+                w.position = *route.home;
+            } else {
+                w.position = route.waypoints.back().position;
+            }
+        }
+        w.altitude = alt;
+        w.row = int(route.waypoints.size());
+        w.label = QStringLiteral("Waypoint %1").arg(route.waypoints.size() + 1);
+        route.waypoints.push_back(std::move(w));
+    }
+    return route;
+}
+
+std::optional<std::vector<ProfileRoute>> profileRoutes(const QString &file, const mission::Mission &mission, QString *error)
+{
+    std::vector<ProfileRoute> routes;
+    if (mission::formats::formatForPath(file) == mission::formats::FileFormat::Wpl) {
+        QFile f(file);
+        if (!f.open(QIODevice::ReadOnly)) {
+            *error = f.errorString();
+            return std::nullopt;
+        }
+        std::optional<ProfileRoute> r = wplProfileRoute(f.readAll(), error);
+        if (!r)
+            return std::nullopt;
+        if (!mission.routes.empty()) {
+            r->name = mission.routes.front().settings.name;
+            r->safeDistance = mission.routes.front().settings.profile.safeTerrainDistance;
+        }
+        routes.push_back(std::move(*r));
+        return routes;
+    }
+    mission::ScanPlanCache cache;
+    for (const mission::Route &r : mission.routes)
+        routes.push_back(profileRouteOf(r, &cache));
+    return routes;
+}
+
+} // namespace sortie::plan

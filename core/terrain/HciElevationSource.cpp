@@ -1,0 +1,227 @@
+#include "HciElevationSource.h"
+
+#include "Geodesy.h"
+#include "HciReply.h"
+#include "HciSession.h"
+#include "Messages.pb.h"
+#include "TerrainLog.h"
+
+#include <QCryptographicHash>
+
+#include <cmath>
+#include <numbers>
+
+namespace sortie::terrain {
+
+namespace pb = com::ugcs::ucs::proto;
+
+namespace {
+constexpr double kRad = std::numbers::pi / 180.0;
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+}
+
+HciElevationSource::HciElevationSource(hci::HciSession *session, QObject *parent)
+    : ElevationSource(parent), m_session(session)
+{
+    m_flush.setSingleShot(true);
+    m_flush.setInterval(0);
+    connect(&m_flush, &QTimer::timeout, this, &HciElevationSource::flushPoints);
+    if (session) {
+        // A new or re-established session may see other data (the server's sources can change meanwhile).
+        connect(session, &hci::HciSession::ready, this, [this] {
+            clearCache();
+            emit dataChanged();
+        });
+        connect(session, &hci::HciSession::resumed, this, [this] {
+            clearCache();
+            emit dataChanged();
+        });
+    }
+}
+
+void HciElevationSource::clearCache()
+{
+    ++m_generation;
+    m_points.clear();
+    m_queued.clear();
+    m_inFlight.clear();
+    m_profiles.clear();
+    m_profilesAsked.clear();
+    m_profileInFlight = false;
+    m_nextProfile.reset();
+}
+
+quint64 HciElevationSource::pointKey(const GeoPoint &p)
+{
+    // 1e-6° (about 0.1 m): the same place asked twice is one question.
+    const auto lat = quint64(qint64(std::llround((p.latitude + 90.0) * 1e6)));
+    const auto lon = quint64(qint64(std::llround((p.longitude + 180.0) * 1e6)));
+    return lat << 32 | lon;
+}
+
+QByteArray HciElevationSource::pathKey(const SampledPath &path)
+{
+    QCryptographicHash h(QCryptographicHash::Sha1);
+    h.addData(QByteArrayView(reinterpret_cast<const char *>(&path.step), sizeof path.step));
+    h.addData(QByteArrayView(reinterpret_cast<const char *>(path.vertices.data()), qsizetype(path.vertices.size() * sizeof(GeoPoint))));
+    return h.result();
+}
+
+ElevationSample HciElevationSource::sample(const GeoPoint &point)
+{
+    if (!point.isValid() || !m_session || !m_session->isReady())
+        return ElevationSample::noData();
+    const quint64 key = pointKey(point);
+    if (const auto it = m_points.constFind(key); it != m_points.cend())
+        return std::isnan(*it) ? ElevationSample::noData() : ElevationSample::value(*it);
+    if (!m_inFlight.contains(key) && !m_queued.contains(key)) {
+        m_queued.insert(key, point);
+        if (!m_flush.isActive())
+            m_flush.start();
+    }
+    return ElevationSample::pending();
+}
+
+void HciElevationSource::flushPoints()
+{
+    if (!m_session || m_queued.isEmpty())
+        return;
+    pb::GetRasterValuesRequest request;
+    auto keys = std::make_shared<std::vector<quint64>>();
+    for (auto it = m_queued.begin(); it != m_queued.end() && int(keys->size()) < kBatch;) {
+        request.add_latitudes(it.value().latitude * kRad);
+        request.add_longitudes(it.value().longitude * kRad);
+        keys->push_back(it.key());
+        m_inFlight.insert(it.key());
+        it = m_queued.erase(it);
+    }
+    if (!m_queued.isEmpty())
+        m_flush.start();  // the rest on the next turn
+    ++m_requests;
+    hci::HciReply *reply = m_session->send(request);
+    const int generation = m_generation;
+    connect(reply, &hci::HciReply::finished, this, [this, reply, keys, generation] {
+        if (generation != m_generation)
+            return;
+        const auto &r = reply->response<pb::GetRasterValuesResponse>();
+        if (!reply->isOk())
+            qCWarning(lcTerrain).noquote() << "the server did not give elevations:" << reply->error().message();
+        for (size_t i = 0; i < keys->size(); ++i) {
+            float v = kNaN;
+            if (reply->isOk() && int(i) < r.values_size() && std::isfinite(r.values(int(i))))
+                v = r.values(int(i));
+            m_inFlight.remove((*keys)[i]);
+            m_points.insert((*keys)[i], v);
+        }
+        emit dataChanged();
+    });
+}
+
+void HciElevationSource::samplePath(const SampledPath &path, std::vector<ElevationSample> &out)
+{
+    out.assign(path.points.size(), ElevationSample::noData());
+    if (path.points.empty() || !m_session || !m_session->isReady())
+        return;
+    const QByteArray key = pathKey(path);
+    if (const auto it = m_profiles.constFind(key); it != m_profiles.cend()) {
+        const std::vector<float> &values = *it;
+        for (size_t i = 0; i < out.size() && i < values.size(); ++i)
+            out[i] = std::isnan(values[i]) ? ElevationSample::noData() : ElevationSample::value(values[i]);
+        return;
+    }
+    out.assign(path.points.size(), ElevationSample::pending());
+    if (m_profilesAsked.contains(key))
+        return;
+    if (m_profileInFlight) {
+        // One profile at a time: while a drag changes the path every frame, only the latest waits.
+        m_nextProfile = path;
+        return;
+    }
+    requestProfile(key, path);
+}
+
+void HciElevationSource::requestProfile(const QByteArray &key, const SampledPath &path)
+{
+    m_profilesAsked.insert(key, true);
+    m_profileInFlight = true;
+    pb::GetElevationProfileRequest request;
+    request.set_samplingstep(path.step);
+    for (const GeoPoint &v : path.vertices) {
+        auto *l = request.add_locations();
+        l->set_latitude(v.latitude * kRad);
+        l->set_longitude(v.longitude * kRad);
+        l->set_altitude(0.0);
+        l->set_altitudetype(pb::AT_WGS84);
+    }
+    ++m_requests;
+    hci::HciReply *reply = m_session->send(request);
+    const int generation = m_generation;
+    connect(reply, &hci::HciReply::finished, this, [this, reply, key, path, generation] {
+        if (generation != m_generation)
+            return;
+        m_profileInFlight = false;
+        std::vector<GeoPoint> locations;
+        std::vector<double> elevations;
+        if (reply->isOk()) {
+            const auto &r = reply->response<pb::GetElevationProfileResponse>();
+            for (int i = 0; i < r.locations_size() && i < r.elevations_size(); ++i) {
+                locations.push_back({r.locations(i).latitude() / kRad, r.locations(i).longitude() / kRad});
+                elevations.push_back(r.elevations(i));
+            }
+        } else {
+            qCWarning(lcTerrain).noquote() << "the server did not give an elevation profile:" << reply->error().message();
+        }
+        storeProfile(key, path, locations, elevations);
+        if (m_nextProfile && m_session && m_session->isReady()) {
+            const SampledPath next = std::move(*m_nextProfile);
+            m_nextProfile.reset();
+            const QByteArray nextKey = pathKey(next);
+            if (!m_profiles.contains(nextKey))
+                requestProfile(nextKey, next);
+        }
+        emit dataChanged();
+    });
+}
+
+// The server picks its own sample positions: place them along our path by their running distance
+// and interpolate linearly to our samples. A sample between a missing value and anything is missing.
+void HciElevationSource::storeProfile(const QByteArray &key, const SampledPath &path, const std::vector<GeoPoint> &locations,
+                                      const std::vector<double> &elevations)
+{
+    std::vector<float> values(path.points.size(), kNaN);
+    if (!locations.empty()) {
+        std::vector<double> at(locations.size(), 0.0);
+        for (size_t i = 1; i < locations.size(); ++i)
+            at[i] = at[i - 1] + mission::geodesicDistance(locations[i - 1], locations[i]);
+        // Scale the server's running distance onto ours: both walk the same legs.
+        const double scale = at.back() > 0 && path.length() > 0 ? path.length() / at.back() : 1.0;
+        for (double &d : at)
+            d *= scale;
+        size_t j = 0;
+        for (size_t i = 0; i < path.points.size(); ++i) {
+            const double d = path.points[i].distance;
+            while (j + 1 < at.size() && at[j + 1] < d - 1e-6)
+                ++j;
+            if (std::abs(at[j] - d) < 1e-3) {
+                values[i] = float(elevations[j]);
+                continue;
+            }
+            if (j + 1 < at.size() && at[j] <= d && d <= at[j + 1] + 1e-6) {
+                if (std::abs(at[j + 1] - d) < 1e-3) {
+                    values[i] = float(elevations[j + 1]);
+                    continue;
+                }
+                const double f = (d - at[j]) / (at[j + 1] - at[j]);
+                values[i] = float(elevations[j] + f * (elevations[j + 1] - elevations[j]));  // NaN spreads
+            }
+        }
+    }
+    if (m_profiles.size() >= kMaxCachedProfiles) {
+        m_profiles.clear();
+        m_profilesAsked.clear();
+    }
+    m_profiles.insert(key, std::move(values));
+    m_profilesAsked.remove(key);
+}
+
+} // namespace sortie::terrain

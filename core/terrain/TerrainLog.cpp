@@ -1,0 +1,3 @@
+#include "TerrainLog.h"
+
+Q_LOGGING_CATEGORY(lcTerrain, "sortie.terrain")

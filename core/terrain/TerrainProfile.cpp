@@ -1,0 +1,114 @@
+#include "TerrainProfile.h"
+
+#include "FlightPath.h"
+#include "RouteValidator.h"
+
+#include <cmath>
+
+namespace sortie::terrain {
+
+ProfileRoute profileRouteOf(const mission::Route &route, mission::ScanPlanCache *cache)
+{
+    ProfileRoute out;
+    out.name = route.settings.name;
+    out.safeDistance = route.settings.profile.safeTerrainDistance;
+    if (route.settings.home)
+        out.home = route.settings.home->position;
+    const std::vector<mission::PathPoint> path = mission::flightPath(route, cache);
+    out.waypoints.reserve(path.size());
+    for (size_t i = 0; i < path.size(); ++i) {
+        const mission::PathPoint &p = path[i];
+        ProfileWaypoint w;
+        w.position = p.position;
+        w.altitude = p.altitude;
+        w.reference = p.altitudeType == mission::AltitudeType::Amsl ? HeightReference::Amsl : HeightReference::AboveTerrain;
+        w.row = p.segment;
+        w.label = p.segment >= 0 && size_t(p.segment) < route.segments.size() && mission::isAreaScan(route.segments[size_t(p.segment)])
+                      ? QStringLiteral("%1, point %2").arg(mission::segmentLabel(route, p.segment)).arg(i + 1)
+                      : QStringLiteral("Waypoint %1").arg(i + 1);
+        out.waypoints.push_back(std::move(w));
+    }
+    return out;
+}
+
+QString legLabel(const ProfileRoute &route, int leg)
+{
+    const auto name = [&](int i) {
+        return i >= 0 && size_t(i) < route.waypoints.size() && !route.waypoints[size_t(i)].label.isEmpty()
+                   ? route.waypoints[size_t(i)].label
+                   : QStringLiteral("Waypoint %1").arg(i + 1);
+    };
+    return QStringLiteral("Leg %1 (%2 → %3)").arg(leg + 1).arg(name(leg), name(leg + 1));
+}
+
+TerrainProfile computeProfile(const ProfileRoute &route, ElevationService &service, double step)
+{
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    TerrainProfile out;
+    out.sourcesTried = service.sourceNames();
+    std::vector<GeoPoint> vertices;
+    vertices.reserve(route.waypoints.size());
+    for (const ProfileWaypoint &w : route.waypoints)
+        vertices.push_back(w.position);
+    out.path = samplePath(std::move(vertices), step);
+    service.samplePath(out.path, out.ground);
+    const size_t n = out.path.points.size();
+
+    bool needsHome = false;
+    for (const ProfileWaypoint &w : route.waypoints)
+        needsHome |= w.reference == HeightReference::AboveHome;
+    if (needsHome) {
+        out.homeGround = route.home ? service.sample(*route.home)
+                                    : (out.ground.empty() ? GroundSample{} : out.ground[size_t(out.path.vertexSample.front())]);
+    }
+
+    // Each waypoint's ground and its altitude above the geoid.
+    out.waypoints.resize(route.waypoints.size());
+    for (size_t i = 0; i < route.waypoints.size(); ++i) {
+        const ProfileWaypoint &w = route.waypoints[i];
+        WaypointTerrain &t = out.waypoints[i];
+        t.ground = out.ground[size_t(out.path.vertexSample[i])];
+        switch (w.reference) {
+        case HeightReference::Amsl: t.altitudeAmsl = w.altitude; break;
+        case HeightReference::AboveTerrain: t.altitudeAmsl = t.ground.hasValue() ? t.ground.ground + w.altitude : kNaN; break;
+        case HeightReference::AboveHome: t.altitudeAmsl = out.homeGround.hasValue() ? out.homeGround.ground + w.altitude : kNaN; break;
+        }
+        t.altitudeAgl = t.ground.hasValue() ? t.altitudeAmsl - t.ground.ground : kNaN;
+    }
+
+    // The altitude along each leg, the clearance, and what is lowest.
+    out.altitudeAmsl.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const PathSamplePoint &p = out.path.points[i];
+        const size_t a = size_t(p.leg), b = std::min(a + 1, out.waypoints.size() - 1);
+        const double da = out.path.vertexDistance[a], db = out.path.vertexDistance[b];
+        const double f = db > da ? (p.distance - da) / (db - da) : 0.0;
+        const double ha = out.waypoints[a].altitudeAmsl, hb = out.waypoints[b].altitudeAmsl;
+        out.altitudeAmsl[i] = ha + f * (hb - ha);
+        const GroundSample &g = out.ground[i];
+        out.pending |= g.status == SampleStatus::Pending;
+        const double c = out.altitudeAmsl[i] - g.ground;
+        if (std::isnan(c))
+            continue;
+        const ClearancePoint here{p.leg, p.distance, p.distance - da, c};
+        if (!out.minClearance || c < out.minClearance->clearance)
+            out.minClearance = here;
+        if (c < route.safeDistance) {
+            LowStretch *open = out.lowStretches.empty() ? nullptr : &out.lowStretches.back();
+            const bool continues = open && open->leg == p.leg && i > 0
+                                   && out.clearance(i - 1) < route.safeDistance && out.path.points[i - 1].leg == p.leg;
+            if (continues) {
+                open->toDistance = p.distance;
+                if (c < open->lowest.clearance)
+                    open->lowest = here;
+            } else {
+                out.lowStretches.push_back({p.leg, p.distance, p.distance, here});
+            }
+        }
+    }
+    std::vector<ElevationSample> plain(out.ground.begin(), out.ground.end());
+    out.noData = ElevationSource::noDataStretches(out.path, plain);
+    return out;
+}
+
+} // namespace sortie::terrain

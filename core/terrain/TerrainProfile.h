@@ -1,0 +1,90 @@
+#pragma once
+
+#include "ElevationService.h"
+#include "PathSampling.h"
+#include "Route.h"
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace sortie::mission {
+class ScanPlanCache;
+}
+
+namespace sortie::terrain {
+
+// What a waypoint's altitude is measured from. A route's AGL is above the ground under the waypoint
+// (UgCS's meaning); WPL's frame 3 is above the home point's ground.
+enum class HeightReference { Amsl, AboveTerrain, AboveHome };
+
+struct ProfileWaypoint
+{
+    GeoPoint position;
+    double altitude = 0.0;
+    HeightReference reference = HeightReference::Amsl;
+    int row = -1;   // the route segment it belongs to (what selecting it selects), -1 if none
+    QString label;  // "Waypoint 3", as the table names it
+};
+
+// The flown path as the profile sees it: points with their heights, legs between them.
+struct ProfileRoute
+{
+    QString name;
+    std::vector<ProfileWaypoint> waypoints;
+    std::optional<GeoPoint> home;  // for AboveHome; the first waypoint when absent
+    double safeDistance = 10.0;    // metres of clearance the vehicle keeps from the ground
+};
+
+// The flown path of a route (area scans expanded); AGL is above the terrain under each point.
+ProfileRoute profileRouteOf(const mission::Route &route, mission::ScanPlanCache *cache = nullptr);
+
+struct WaypointTerrain
+{
+    GroundSample ground;
+    double altitudeAmsl = std::numeric_limits<double>::quiet_NaN();  // NaN: unknown (AGL over no data)
+    double altitudeAgl = std::numeric_limits<double>::quiet_NaN();
+};
+
+struct ClearancePoint
+{
+    int leg = 0;
+    double distance = 0.0;          // from the route's start
+    double distanceAlongLeg = 0.0;
+    double clearance = 0.0;         // metres above the ground (negative: below it)
+};
+
+// A stretch of one leg flown closer to the ground than the safe distance.
+struct LowStretch
+{
+    int leg = 0;
+    double fromDistance = 0.0, toDistance = 0.0;
+    ClearancePoint lowest;
+};
+
+// Ground, altitude and clearance along the flown path, sampled every step metres. Sample i is at
+// path.points[i]; the altitude goes linearly with distance between waypoints.
+struct TerrainProfile
+{
+    SampledPath path;
+    std::vector<GroundSample> ground;
+    std::vector<double> altitudeAmsl;  // NaN where the altitude is unknown
+    std::vector<WaypointTerrain> waypoints;
+    std::vector<NoDataStretch> noData;  // per leg
+    std::vector<LowStretch> lowStretches;
+    std::optional<ClearancePoint> minClearance;
+    GroundSample homeGround;
+    bool pending = false;  // an asynchronous source is still answering: more may come
+    QStringList sourcesTried;
+
+    double clearance(size_t i) const { return altitudeAmsl[i] - ground[i].ground; }  // NaN when unknown
+    size_t size() const { return path.points.size(); }
+};
+
+TerrainProfile computeProfile(const ProfileRoute &route, ElevationService &service, double step = 30.0);
+
+// "Leg 3 (Waypoint 3 → Waypoint 4)"
+QString legLabel(const ProfileRoute &route, int leg);
+
+} // namespace sortie::terrain

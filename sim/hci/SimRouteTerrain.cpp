@@ -1,0 +1,112 @@
+#include "SimRouteTerrain.h"
+
+#include "Messages.pb.h"
+#include "PathSampling.h"
+#include "SimTerrain.h"
+
+#include <QString>
+
+#include <cmath>
+#include <optional>
+#include <vector>
+
+namespace sortie::sim {
+namespace {
+
+constexpr double kDeg = 180.0 / 3.14159265358979323846;
+
+std::optional<double> safeDistanceOf(const pb::VehicleProfile &profile)
+{
+    for (const auto &p : profile.parameters())
+        if (p.type() == pb::VPT_SAFE_DISTANCE_TO_TERRAIN && p.value() >= 0)
+            return p.value();
+    return std::nullopt;
+}
+
+void fail(pb::ProcessedSegment *segment, const QString &text)
+{
+    segment->set_status(pb::RPS_INVALID);
+    auto *m = segment->mutable_messageset()->add_messages();
+    m->set_severity(pb::MS_ERROR);
+    m->set_defaulttext(text.toStdString());
+}
+
+QString metres(double v)
+{
+    return QString::number(v, 'f', 1);
+}
+
+struct Point
+{
+    double latitude, longitude, amsl;
+    int segment;
+    int number;  // 1-based among the route's waypoints
+};
+
+} // namespace
+
+double SimRouteTerrain::safeDistance(const pb::VehicleProfile &routeProfile, const pb::VehicleProfile *stored)
+{
+    if (const auto d = safeDistanceOf(routeProfile))
+        return *d;
+    if (stored)
+        if (const auto d = safeDistanceOf(*stored))
+            return *d;
+    return kDefaultSafeDistance;
+}
+
+void SimRouteTerrain::apply(pb::ProcessedRoute &route, const SimTerrain &terrain, double safeDistance)
+{
+    std::vector<Point> points;
+    for (int s = 0; s < route.segments_size(); ++s) {
+        auto *segment = route.mutable_segments(s);
+        for (auto &action : *segment->mutable_segmentactions()) {
+            if (!action.has_waypoint())
+                continue;
+            auto *w = action.mutable_waypoint();
+            const double lat = w->latitude() * kDeg, lon = w->longitude() * kDeg;
+            const int number = int(points.size()) + 1;
+            const std::optional<double> ground = terrain.groundAt(lat, lon);
+            if (w->altitudeframe() == pb::AF_AGL) {
+                const double agl = w->wgs84altitude() - w->elevation();  // processed over flat ground
+                if (!ground) {
+                    fail(segment, QStringLiteral("Waypoint %1 is %2 m above the ground, but the terrain (%3) has no data there: its "
+                                                 "height above sea level is unknown")
+                                      .arg(number).arg(metres(agl), terrain.description()));
+                    continue;
+                }
+                w->set_wgs84altitude(*ground + agl);
+            }
+            if (ground)
+                w->set_elevation(*ground);
+            else
+                w->clear_elevation();
+            points.push_back({lat, lon, w->wgs84altitude(), s, number});
+        }
+    }
+    for (size_t i = 1; i < points.size(); ++i) {
+        const Point &a = points[i - 1], &b = points[i];
+        const terrain::SampledPath path = terrain::samplePath({{a.latitude, a.longitude}, {b.latitude, b.longitude}}, kStep);
+        const double length = path.length();
+        double lowest = INFINITY, at = 0;
+        for (const terrain::PathSamplePoint &p : path.points) {
+            const std::optional<double> ground = terrain.groundAt(p.position.latitude, p.position.longitude);
+            if (!ground)
+                continue;
+            const double f = length > 0 ? p.distance / length : 0.0;
+            const double clearance = a.amsl + f * (b.amsl - a.amsl) - *ground;
+            if (clearance < lowest) {
+                lowest = clearance;
+                at = p.distance;
+            }
+        }
+        if (lowest < safeDistance)
+            fail(route.mutable_segments(b.segment),
+                 QStringLiteral("The leg from waypoint %1 to waypoint %2 passes %3 m %4 the ground %5 m along it, closer than the "
+                                "safe distance to terrain of %6 m")
+                     .arg(a.number).arg(b.number).arg(metres(std::abs(lowest)), lowest < 0 ? QStringLiteral("below") : QStringLiteral("above"),
+                                                       metres(at), metres(safeDistance)));
+    }
+}
+
+} // namespace sortie::sim

@@ -1,0 +1,32 @@
+#pragma once
+
+#include "HciProto.h"
+
+namespace com::ugcs::ucs::proto {
+class VehicleProfile;
+} // namespace com::ugcs::ucs::proto
+
+namespace sortie::sim {
+
+namespace pb = com::ugcs::ucs::proto;
+class SimTerrain;
+
+// Route processing's terrain pass, run over what SimRouteProcessor made (it knows the geometry;
+// this knows the ground). Every processed waypoint gets the ground under it as `elevation`; an AGL
+// waypoint (altitudeFrame AF_AGL, processed as flat ground + AGL) flies the real ground + AGL as
+// wgs84Altitude. Then each leg between consecutive waypoints is sampled every kStep metres: a leg
+// closer to the ground than the profile's safe distance to terrain makes the segment it arrives in
+// RPS_INVALID with an MS_ERROR naming the leg, the distance along it and the clearance; an AGL
+// waypoint where the terrain has no data is an error too (its height is unknown).
+class SimRouteTerrain
+{
+public:
+    static constexpr double kStep = 10.0;
+    static constexpr double kDefaultSafeDistance = 10.0;
+
+    // VPT_SAFE_DISTANCE_TO_TERRAIN of the route's own profile, else of the stored one, else 10 m.
+    static double safeDistance(const pb::VehicleProfile &routeProfile, const pb::VehicleProfile *stored);
+    static void apply(pb::ProcessedRoute &route, const SimTerrain &terrain, double safeDistance);
+};
+
+} // namespace sortie::sim

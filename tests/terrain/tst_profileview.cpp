@@ -1,0 +1,172 @@
+// The elevation profile view in a real offscreen QML scene: a route that flies into a hill shows
+// the hill and a red stretch; hovering reads the clearance; clicking a leg selects its waypoint.
+#include "ElevationProfileView.h"
+#include "ElevationService.h"
+#include "QuickScene.h"
+#include "RouteModel.h"
+#include "TerrainProfileModel.h"
+
+#include <QDir>
+#include <QItemSelectionModel>
+#include <QSignalSpy>
+#include <QTest>
+#include <QtQml/qqmlextensionplugin.h>
+
+#include <cmath>
+#include <functional>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+using namespace sortie;
+using namespace sortie::terrain;
+
+namespace {
+const QByteArray kScene = R"(
+import QtQuick
+import QtQml.Models
+import Sortie.Ui
+Item {
+    property QtObject routeModel
+    property ItemSelectionModel selection
+    property QtObject elevation
+    TerrainProfilePanel {
+        objectName: "panel"
+        anchors.fill: parent
+        routeModel: parent.routeModel
+        selectionModel: parent.selection
+        elevation: parent.elevation
+    }
+}
+)";
+
+class HillSource : public ElevationSource
+{
+public:
+    QString name() const override { return QStringLiteral("test hill"); }
+    ElevationSample sample(const GeoPoint &p) override
+    {
+        // 10 m plain, a 100 m hill at 24.005 E; no data east of 24.018 E.
+        if (p.longitude > 24.018)
+            return ElevationSample::noData();
+        const double d = (p.longitude - 24.005) / 0.0015;
+        return ElevationSample::value(10 + 100 * std::exp(-d * d));
+    }
+};
+
+mission::Route threeWaypoints()
+{
+    mission::Route r;
+    for (double lon : {24.0, 24.01, 24.02}) {
+        mission::Waypoint w;
+        w.position = {56.9, lon};
+        w.altitude = 60;
+        w.altitudeType = mission::AltitudeType::Amsl;
+        r.segments.push_back(w);
+    }
+    return r;
+}
+
+int countNear(const QImage &image, int x0, int x1, const QColor &colour, int tolerance = 40)
+{
+    int n = 0;
+    for (int x = std::max(0, x0); x <= std::min(image.width() - 1, x1); ++x)
+        for (int y = 0; y < image.height(); ++y)
+            n += test::colourDistance(image.pixel(x, y), colour.rgb()) < tolerance ? 1 : 0;
+    return n;
+}
+
+// The topmost pixel of the ground colour in a column.
+int groundTop(const QImage &image, int x)
+{
+    for (int y = 0; y < image.height(); ++y)
+        if (test::colourDistance(image.pixel(x, y), QColor(0x8d, 0x6e, 0x63).rgb()) < 30)
+            return y;
+    return image.height();
+}
+} // namespace
+
+class TstProfileView : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { test::useSoftwareRendering(); }
+
+    void hillRedStretchAndClick()
+    {
+        HillSource hill;
+        ElevationService service;
+        service.setSources({&hill});
+        mission::RouteModel model;
+        model.resetRoute(threeWaypoints());
+        QItemSelectionModel selection(&model);
+        test::QuickScene scene(kScene, QSize(900, 220),
+                               {{QStringLiteral("routeModel"), QVariant::fromValue<QObject *>(&model)},
+                                {QStringLiteral("selection"), QVariant::fromValue<QObject *>(&selection)},
+                                {QStringLiteral("elevation"), QVariant::fromValue<QObject *>(&service)}});
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        auto *view = scene.find<ui::ElevationProfileView>(QStringLiteral("elevationProfile"));
+        QVERIFY(view);
+        QTRY_VERIFY(view->model() && view->model()->sampleCount() > 10);
+        ui::TerrainProfileModel *profile = view->model();
+        QCOMPARE(profile->lowStretchCount(), 1);
+        QCOMPARE(profile->noDataCount(), 1);
+        QVERIFY(profile->sourceText().contains(QStringLiteral("test hill")));
+
+        const auto &p = profile->profile();
+        const double hillDistance = p.path.vertexDistance[1] / 2;  // 24.005 E: the middle of leg 1
+        const int hillX = int(view->mapToScene({view->xOf(hillDistance), 0}).x());
+        const int flatX = int(view->mapToScene({view->xOf(p.path.vertexDistance[1] * 0.1), 0}).x());
+        const int leg2X = int(view->mapToScene({view->xOf(p.path.vertexDistance[1] * 1.3), 0}).x());
+        QTRY_VERIFY(!scene.grab().isNull());
+        const QImage image = scene.grab();
+        image.save(QDir::temp().filePath(QStringLiteral("sortie-profile-view.png")));
+        // The hill stands out of the plain.
+        QVERIFY2(groundTop(image, hillX) + 40 < groundTop(image, flatX),
+                 qPrintable(QStringLiteral("%1 vs %2").arg(groundTop(image, hillX)).arg(groundTop(image, flatX))));
+        // Red where the route flies into it, none over the second leg.
+        QVERIFY(countNear(image, hillX - 3, hillX + 3, QColor(0xd3, 0x2f, 0x2f)) > 4);
+        QCOMPARE(countNear(image, leg2X - 3, leg2X + 3, QColor(0xd3, 0x2f, 0x2f)), 0);
+        QVERIFY(countNear(image, leg2X - 3, leg2X + 3, QColor(0x15, 0x65, 0xc0)) > 2);  // the route line, blue
+
+        // Hovering reads the point under the mouse.
+        QTest::mouseMove(&scene.view(), QPoint(hillX, 100));
+        QTRY_VERIFY(view->readout().startsWith(QStringLiteral("Leg 1 ·")));
+        QVERIFY(view->readout().contains(QStringLiteral("clearance -")));
+        QCOMPARE(view->hoveredLeg(), 0);
+
+        // Clicking selects the leg's first waypoint.
+        QSignalSpy clicked(view, &ui::ElevationProfileView::legClicked);
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, QPoint(leg2X, 100));
+        QCOMPARE(clicked.count(), 1);
+        QCOMPARE(clicked.at(0).at(0).toInt(), 1);
+        QCOMPARE(selection.currentIndex().row(), 1);
+        QCOMPARE(selection.selectedRows().size(), 1);
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, QPoint(hillX, 100));
+        QCOMPARE(selection.currentIndex().row(), 0);
+    }
+
+    // Edits are coalesced: a burst of moves costs one recomputation.
+    void dragIsCoalesced()
+    {
+        HillSource hill;
+        ElevationService service;
+        service.setSources({&hill});
+        mission::RouteModel model;
+        model.resetRoute(threeWaypoints());
+        ui::TerrainProfileModel profile;
+        profile.setService(&service);
+        profile.setRouteModel(&model);
+        profile.recomputeNow();
+        const int before = profile.recomputeCount();
+        for (int i = 0; i < 50; ++i)
+            model.setWaypointPosition(1, {56.9 + i * 1e-5, 24.01});
+        QSignalSpy changed(&profile, &ui::TerrainProfileModel::profileChanged);
+        QVERIFY(changed.wait(2000));
+        QCOMPARE(profile.recomputeCount(), before + 1);
+        QCOMPARE(profile.profile().path.vertices[1].latitude, 56.9 + 49 * 1e-5);
+    }
+};
+
+QTEST_MAIN(TstProfileView)
+#include "tst_profileview.moc"

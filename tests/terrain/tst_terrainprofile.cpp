@@ -1,0 +1,319 @@
+// The terrain profile of a route, the terrain rules, the source order and terrain following.
+#include "ElevationService.h"
+#include "Geodesy.h"
+#include "HgtTileSource.h"
+#include "HgtWriter.h"
+#include "NoElevationSource.h"
+#include "RouteAnalyzer.h"
+#include "RouteEditor.h"
+#include "RouteModel.h"
+#include "TerrainFollow.h"
+#include "TerrainProfile.h"
+#include "TerrainRule.h"
+
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QTest>
+
+#include <functional>
+
+using namespace sortie::terrain;
+using namespace sortie::terrain::test;
+using sortie::mission::AltitudeType;
+using sortie::mission::Route;
+using sortie::mission::Waypoint;
+
+namespace {
+// A source from a formula, with an optional hole (a disc without data).
+class FormulaSource : public ElevationSource
+{
+public:
+    FormulaSource(QString name, std::function<std::optional<double>(const GeoPoint &)> f) : m_name(std::move(name)), m_f(std::move(f)) {}
+    QString name() const override { return m_name; }
+    ElevationSample sample(const GeoPoint &p) override
+    {
+        const auto v = m_f(p);
+        return v ? ElevationSample::value(*v) : ElevationSample::noData();
+    }
+
+private:
+    QString m_name;
+    std::function<std::optional<double>(const GeoPoint &)> m_f;
+};
+
+ProfileRoute straight(double altitude, HeightReference reference, double lonEnd = 24.02)
+{
+    ProfileRoute r;
+    r.waypoints.push_back({{56.9, 24.0}, altitude, reference, 0, QStringLiteral("Waypoint 1")});
+    r.waypoints.push_back({{56.9, 24.01}, altitude, reference, 1, QStringLiteral("Waypoint 2")});
+    r.waypoints.push_back({{56.9, lonEnd}, altitude, reference, 2, QStringLiteral("Waypoint 3")});
+    return r;
+}
+
+Route routeOf(const std::vector<std::pair<GeoPoint, double>> &points, AltitudeType type)
+{
+    Route r;
+    r.settings.name = QStringLiteral("test");
+    for (const auto &[p, alt] : points) {
+        Waypoint w;
+        w.position = p;
+        w.altitude = alt;
+        w.altitudeType = type;
+        r.segments.push_back(w);
+    }
+    return r;
+}
+} // namespace
+
+class TstTerrainProfile : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void sampling()
+    {
+        const SampledPath p = samplePath({{56.9, 24.0}, {56.9, 24.01}, {56.91, 24.01}}, 30.0);
+        QCOMPARE(p.legCount(), 2);
+        QCOMPARE(p.vertexSample.size(), size_t(3));
+        QCOMPARE(p.vertexSample.front(), 0);
+        QCOMPARE(p.vertexSample.back(), int(p.points.size()) - 1);
+        const double leg1 = sortie::mission::geodesicDistance({56.9, 24.0}, {56.9, 24.01});
+        QCOMPARE(p.vertexDistance[1], leg1);
+        for (size_t i = 1; i < p.points.size(); ++i) {
+            const double gap = p.points[i].distance - p.points[i - 1].distance;
+            QVERIFY(gap > 0 && gap <= 30.0 + 1e-9);
+            // Each point is where its distance says: the geodesic from the leg start agrees to a centimetre.
+            const int leg = p.points[i].leg;
+            const double along = sortie::mission::geodesicDistance(p.vertices[size_t(leg)], p.points[i].position);
+            QVERIFY2(std::abs(along - (p.points[i].distance - p.vertexDistance[size_t(leg)])) < 0.05, qPrintable(QString::number(i)));
+        }
+        QCOMPARE(samplePath({{1, 1}}, 30).points.size(), size_t(1));
+        QVERIFY(samplePath({}, 30).points.empty());
+    }
+
+    // Clearance over a plane at 100 m: AMSL 150 gives 50 m; AGL over it is above the local ground.
+    void profileOverPlane()
+    {
+        FormulaSource flat(QStringLiteral("flat"), [](const GeoPoint &) { return 100.0; });
+        ElevationService service;
+        service.setSources({&flat});
+        const TerrainProfile amsl = computeProfile(straight(150, HeightReference::Amsl), service, 30);
+        QVERIFY(!amsl.pending);
+        QVERIFY(amsl.noData.empty());
+        QVERIFY(amsl.lowStretches.empty());
+        QCOMPARE(amsl.minClearance->clearance, 50.0);
+        QCOMPARE(amsl.waypoints[1].altitudeAgl, 50.0);
+        QCOMPARE(amsl.ground[3].source, 0);
+        const TerrainProfile agl = computeProfile(straight(30, HeightReference::AboveTerrain), service, 30);
+        QCOMPARE(agl.waypoints[2].altitudeAmsl, 130.0);
+        QCOMPARE(agl.minClearance->clearance, 30.0);
+    }
+
+    // A ridge between waypoints 1 and 2: the waypoints are high enough, the leg is not.
+    void ridgeBetweenWaypoints()
+    {
+        // 300 m high around 24.005°E, 20 m elsewhere.
+        FormulaSource ridge(QStringLiteral("ridge"), [](const GeoPoint &p) { return std::abs(p.longitude - 24.005) < 0.001 ? 300.0 : 20.0; });
+        ElevationService service;
+        service.setSources({&ridge});
+        ProfileRoute r = straight(100, HeightReference::Amsl);
+        const TerrainProfile profile = computeProfile(r, service, 10);
+        QVERIFY(profile.minClearance);
+        QCOMPARE(profile.minClearance->clearance, -200.0);
+        QCOMPARE(profile.minClearance->leg, 0);
+        QCOMPARE(profile.lowStretches.size(), size_t(1));
+        const double legLength = profile.path.vertexDistance[1];
+        QVERIFY(profile.minClearance->distanceAlongLeg > legLength * 0.4 && profile.minClearance->distanceAlongLeg < legLength * 0.6);
+        const auto issues = terrainIssues(r, profile);
+        QCOMPARE(issues.size(), size_t(1));
+        QCOMPARE(issues[0].rule, QStringLiteral("terrain-clearance"));
+        QCOMPARE(issues[0].severity, sortie::mission::Severity::Error);
+        QCOMPARE(issues[0].segment, 0);
+        QVERIFY2(issues[0].message.startsWith(QStringLiteral("Leg 1 (Waypoint 1 → Waypoint 2) flies 200.0 m below the ground at ")),
+                 qPrintable(issues[0].message));
+        QVERIFY(issues[0].message.contains(QStringLiteral("safe distance of 10.0 m")));
+
+        // 9 m over flat ground is too low too; 10 m is not.
+        FormulaSource flat(QStringLiteral("flat"), [](const GeoPoint &) { return 20.0; });
+        service.setSources({&flat});
+        QCOMPARE(terrainIssues(r, computeProfile(straight(29, HeightReference::Amsl), service)).size(), size_t(2));
+        QVERIFY(terrainIssues(r, computeProfile(straight(30, HeightReference::Amsl), service)).empty());
+    }
+
+    // A hole in the data: reported per leg with the sources tried, never as 0 m.
+    void noDataStretches()
+    {
+        FormulaSource holed(QStringLiteral("holed"), [](const GeoPoint &p) -> std::optional<double> {
+            if (p.longitude > 24.012 && p.longitude < 24.015)
+                return std::nullopt;
+            return 10.0;
+        });
+        NoElevationSource none;
+        ElevationService service;
+        service.setSources({&holed, &none});
+        ProfileRoute r = straight(100, HeightReference::Amsl);
+        const TerrainProfile profile = computeProfile(r, service, 30);
+        QCOMPARE(profile.noData.size(), size_t(1));
+        QCOMPARE(profile.noData[0].leg, 1);
+        for (size_t i = 0; i < profile.size(); ++i) {
+            const double lon = profile.path.points[i].position.longitude;
+            if (lon > 24.0121 && lon < 24.0149) {
+                QVERIFY(!profile.ground[i].hasValue());
+                QVERIFY(std::isnan(profile.ground[i].ground));
+                QVERIFY(std::isnan(profile.clearance(i)));
+                QVERIFY(profile.noData[0].fromDistance <= profile.path.points[i].distance);
+                QVERIFY(profile.noData[0].toDistance >= profile.path.points[i].distance);
+            }
+        }
+        const auto issues = terrainIssues(r, profile);
+        QCOMPARE(issues.size(), size_t(1));
+        QCOMPARE(issues[0].rule, QStringLiteral("terrain-no-data"));
+        QCOMPARE(issues[0].severity, sortie::mission::Severity::Warning);
+        QCOMPARE(issues[0].segment, 1);
+        QVERIFY(issues[0].message.startsWith(QStringLiteral("Leg 2 (Waypoint 2 → Waypoint 3): no terrain data from ")));
+        QVERIFY(issues[0].message.contains(QStringLiteral("(tried: holed, none)")));
+
+        // AGL waypoints over the hole: their height is unknown, an error.
+        ProfileRoute agl = straight(50, HeightReference::AboveTerrain, 24.013);
+        const auto aglIssues = terrainIssues(agl, computeProfile(agl, service, 30));
+        QVERIFY(std::any_of(aglIssues.begin(), aglIssues.end(), [](const auto &i) {
+            return i.rule == QLatin1String("terrain-agl-no-data") && i.segment == 2 && i.severity == sortie::mission::Severity::Error
+                   && i.message.startsWith(QLatin1String("Waypoint 3: the altitude is above the ground, but there is no terrain data there"));
+        }));
+    }
+
+    // The first source with a value wins, and says so; the next fills its holes.
+    void sourceOrder()
+    {
+        FormulaSource west(QStringLiteral("west"), [](const GeoPoint &p) -> std::optional<double> {
+            return p.longitude < 24.01 ? std::optional<double>(5.0) : std::nullopt;
+        });
+        FormulaSource everywhere(QStringLiteral("everywhere"), [](const GeoPoint &) { return 7.0; });
+        ElevationService service;
+        QSignalSpy changed(&service, &ElevationService::changed);
+        service.setSources({&west, &everywhere});
+        QCOMPARE(changed.count(), 1);
+        QCOMPARE(service.sample({56.9, 24.0}).source, 0);
+        QCOMPARE(service.sample({56.9, 24.0}).ground, 5.0);
+        QCOMPARE(service.sample({56.9, 24.02}).source, 1);
+        QCOMPARE(service.sourceName(1), QStringLiteral("everywhere"));
+        QCOMPARE(service.sourceName(-1), QStringLiteral("none"));
+        const TerrainProfile p = computeProfile(straight(100, HeightReference::Amsl), service);
+        QCOMPARE(p.ground.front().source, 0);
+        QCOMPARE(p.ground.back().source, 1);
+        ElevationService empty;
+        QCOMPARE(empty.sample({56.9, 24.0}).status, SampleStatus::NoData);
+        QCOMPARE(empty.sourceNames(), QStringList{QStringLiteral("none")});
+    }
+
+    // The same answers from tiles on disk as from the formula they were written from.
+    void tilesAgreeWithFormula()
+    {
+        QTemporaryDir dir;
+        QVERIFY(writeHgt(dir.filePath("N56E024.hgt"), 1201, [](int r, int c) { return 10 + c / 2 + r / 3; }));
+        HgtTileSource tiles(dir.path());
+        ElevationService service;
+        service.setSources({&tiles});
+        const TerrainProfile p = computeProfile(straight(30, HeightReference::AboveTerrain), service, 30);
+        QCOMPARE(p.noData.size(), size_t(0));
+        for (size_t i = 0; i < p.size(); ++i)
+            QCOMPARE(p.ground[i].ground, tiles.sample(p.path.points[i].position).ground);
+        QCOMPARE(p.waypoints[0].altitudeAgl, 30.0);
+        QCOMPARE(p.waypoints[0].ground.ground, tiles.sample({56.9, 24.0}).ground);
+    }
+
+    void rulesInTheAnalyzer()
+    {
+        FormulaSource hill(QStringLiteral("hill"), [](const GeoPoint &p) { return std::abs(p.longitude - 24.005) < 0.001 ? 90.0 : 10.0; });
+        ElevationService service;
+        service.setSources({&hill});
+        TerrainRule rule(&service);
+        sortie::mission::RouteModel model;
+        model.resetRoute(routeOf({{{56.9, 24.0}, 60}, {{56.9, 24.01}, 60}}, AltitudeType::Amsl));
+        sortie::mission::RouteAnalyzer analyzer(&model);
+        analyzer.setDelay(0);
+        QSignalSpy recomputed(&analyzer, &sortie::mission::RouteAnalyzer::recomputed);
+        analyzer.addRule(&rule);
+        QVERIFY(recomputed.wait());
+        const auto &issues = analyzer.validation().issues;
+        QVERIFY(std::any_of(issues.begin(), issues.end(), [](const auto &i) { return i.rule == QLatin1String("terrain-clearance") && i.segment == 0; }));
+        // The ground changes (another source): the rule runs again without an edit.
+        FormulaSource low(QStringLiteral("low"), [](const GeoPoint &) { return 0.0; });
+        service.setSources({&low});
+        QVERIFY(recomputed.wait());
+        const auto &after = analyzer.validation().issues;
+        QVERIFY(std::none_of(after.begin(), after.end(), [](const auto &i) { return i.rule.startsWith(QLatin1String("terrain")); }));
+    }
+
+    // Changing the altitude type keeps the flown height through the ground; without ground, the number.
+    void altitudeTypeKeepsHeight()
+    {
+        FormulaSource ground(QStringLiteral("g"), [](const GeoPoint &p) -> std::optional<double> {
+            return p.longitude < 24.015 ? std::optional<double>(30.0) : std::nullopt;
+        });
+        ElevationService service;
+        service.setSources({&ground});
+        sortie::mission::RouteModel model;
+        QUndoStack stack;
+        model.resetRoute(routeOf({{{56.9, 24.0}, 50}, {{56.9, 24.02}, 50}}, AltitudeType::Agl));
+        sortie::mission::RouteEditor editor(&model, &stack);
+        editor.setGroundLookup([&service](const GeoPoint &p) -> std::optional<double> {
+            const GroundSample g = service.sample(p);
+            return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
+        });
+        QVERIFY(editor.setAltitudeType({0, 1}, QStringLiteral("AMSL")));
+        auto wp = [&](int row) { return *sortie::mission::asWaypoint(model.segment(row)); };
+        QCOMPARE(wp(0).altitude, 80.0);  // 50 m above 30 m ground
+        QCOMPARE(wp(1).altitude, 50.0);  // no ground there: kept
+        QCOMPARE(wp(1).altitudeType, AltitudeType::Amsl);
+        QVERIFY(editor.setAltitudeType({0}, QStringLiteral("AGL")));
+        QCOMPARE(wp(0).altitude, 50.0);
+        QVERIFY(editor.setAltitudeType({0}, QStringLiteral("AMSL"), false));  // the operator keeps the number
+        QCOMPARE(wp(0).altitude, 50.0);
+        stack.undo();
+        stack.undo();
+        QCOMPARE(wp(0).altitude, 80.0);
+    }
+
+    // A pass over a hill: points are added where the ground bends, and every probe stays in tolerance.
+    void followTerrainOverAHill()
+    {
+        auto height = [](const GeoPoint &p) { return 50.0 + 40.0 * std::exp(-std::pow((p.longitude - 24.01) / 0.003, 2)); };
+        FormulaSource hill(QStringLiteral("hill"), height);
+        ElevationService service;
+        service.setSources({&hill});
+        const std::vector<GeoPoint> pass{{56.9, 24.0}, {56.9, 24.02}};
+        FollowOptions options;
+        options.altitudeAgl = 30;
+        options.tolerance = 3;
+        const FollowResult r = followTerrain(pass, options, service);
+        QVERIFY(r.ok());
+        QVERIFY(r.points.size() > 4);
+        QCOMPARE(r.points.front().position, pass.front());
+        QCOMPARE(r.points.back().position, pass.back());
+        // Between consecutive points, the straight climb stays within 3 m of 30 m above the ground.
+        const SampledPath probes = samplePath(pass, 2.0);
+        size_t k = 0;
+        for (const PathSamplePoint &pp : probes.points) {
+            while (k + 1 < r.points.size() - 1 && r.points[k + 1].position.longitude < pp.position.longitude)
+                ++k;
+            const auto &a = r.points[k], &b = r.points[k + 1];
+            const double f = (pp.position.longitude - a.position.longitude) / (b.position.longitude - a.position.longitude);
+            const double alt = a.altitudeAmsl + f * (b.altitudeAmsl - a.altitudeAmsl);
+            QVERIFY2(std::abs(alt - height(pp.position) - 30) < 3.5, qPrintable(QString::number(pp.distance)));
+        }
+        // Flat ground needs no extra point; no data refuses.
+        FormulaSource flat(QStringLiteral("flat"), [](const GeoPoint &) { return 5.0; });
+        service.setSources({&flat});
+        QCOMPARE(followTerrain(pass, options, service).points.size(), size_t(2));
+        NoElevationSource none;
+        service.setSources({&none});
+        const FollowResult refused = followTerrain(pass, options, service);
+        QCOMPARE(refused.status, SampleStatus::NoData);
+        QVERIFY(refused.message.contains(QStringLiteral("tried: none")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TstTerrainProfile)
+#include "tst_terrainprofile.moc"

@@ -1,0 +1,30 @@
+import QtQuick
+import QtQml.Models
+import Sortie.Ui
+
+// The elevation profile of the route being edited, under the map: the view (ElevationProfileView)
+// over its coalesced model (TerrainProfileModel), fed by the client's ElevationService.
+Item {
+    id: panel
+    property QtObject routeModel: null
+    property ItemSelectionModel selectionModel: null
+    property QtObject elevation: null
+    property alias view: view
+    property alias profile: profile
+    implicitHeight: 170
+
+    TerrainProfileModel {
+        id: profile
+        routeModel: panel.routeModel
+        service: panel.elevation
+    }
+    ElevationProfileView {
+        id: view
+        objectName: "elevationProfile"
+        anchors.fill: parent
+        model: profile
+        selectionModel: panel.selectionModel
+        textColor: palette.windowText
+        backgroundColor: palette.base
+    }
+}

@@ -1,0 +1,84 @@
+#pragma once
+
+#include "TerrainProfileModel.h"
+
+#include <QColor>
+#include <QItemSelectionModel>
+#include <QPointer>
+#include <QQuickPaintedItem>
+#include <QtQml/qqmlregistration.h>
+
+#include <vector>
+
+
+
+namespace sortie::ui {
+
+
+// The elevation profile under the map: the ground along the route (filled), the route's altitude,
+// the clearance band (ground + safe distance), stretches flown too low in red, stretches without
+// terrain data hatched, the source named, the selected waypoints marked. Hovering shows distance,
+// ground, altitude and clearance; clicking selects the leg's first waypoint in `selectionModel`.
+// Paints a per-pixel-column summary, so a profile of 100,000 samples costs what its width costs.
+class ElevationProfileView : public QQuickPaintedItem
+{
+    Q_OBJECT
+    QML_ELEMENT
+    Q_PROPERTY(sortie::ui::TerrainProfileModel *model READ model WRITE setModel NOTIFY modelChanged)
+    Q_PROPERTY(QItemSelectionModel *selectionModel READ selectionModel WRITE setSelectionModel NOTIFY selectionModelChanged)
+    Q_PROPERTY(QString readout READ readout NOTIFY readoutChanged)  // the hovered point, empty when none
+    Q_PROPERTY(int hoveredLeg READ hoveredLeg NOTIFY readoutChanged)
+    Q_PROPERTY(QColor textColor MEMBER m_textColor NOTIFY colorsChanged)
+    Q_PROPERTY(QColor backgroundColor MEMBER m_background NOTIFY colorsChanged)
+
+public:
+    explicit ElevationProfileView(QQuickItem *parent = nullptr);
+
+    TerrainProfileModel *model() const { return m_model; }
+    void setModel(TerrainProfileModel *model);
+    QItemSelectionModel *selectionModel() const { return m_selection; }
+    void setSelectionModel(QItemSelectionModel *selection);
+    QString readout() const { return m_readout; }
+    int hoveredLeg() const { return m_hoveredLeg; }
+
+    // Where a distance along the route is drawn, and back (item coordinates).
+    Q_INVOKABLE double xOf(double distance) const;
+    Q_INVOKABLE double distanceAt(double x) const;
+    Q_INVOKABLE double yOf(double altitude) const;
+    // The leg under x, -1 outside the plot.
+    Q_INVOKABLE int legAt(double x) const;
+    // Hover and click as the mouse does them (also for tests and keyboard users).
+    Q_INVOKABLE void hoverAt(double x);
+    Q_INVOKABLE void clickAt(double x);
+
+    void paint(QPainter *painter) override;
+
+signals:
+    void modelChanged();
+    void selectionModelChanged();
+    void readoutChanged();
+    void colorsChanged();
+    // A click on a leg: its index (0-based) and the route row it starts at.
+    void legClicked(int leg, int row);
+
+protected:
+    void hoverMoveEvent(QHoverEvent *event) override;
+    void hoverLeaveEvent(QHoverEvent *event) override;
+    void mousePressEvent(QMouseEvent *event) override;
+    void geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry) override;
+
+private:
+    void rescale();
+    QRectF plotRect() const;
+
+    QPointer<TerrainProfileModel> m_model;
+    QPointer<QItemSelectionModel> m_selection;
+    QString m_readout;
+    int m_hoveredLeg = -1;
+    double m_hoverX = -1;
+    double m_low = 0, m_high = 100;  // the altitude axis, metres
+    QColor m_textColor = QColor(0x21, 0x21, 0x21);
+    QColor m_background = QColor(0xfa, 0xfa, 0xfa);
+};
+
+} // namespace sortie::ui
