@@ -98,6 +98,7 @@ int main(int argc, char *argv[])
     sortie::client::ConnectionController connection(&session);
     sortie::client::MissionController missions(&hciClient);
     sortie::client::VehicleFleet fleet(&hciClient);
+    missions.setFleet(&fleet);
     // Recovery looks first, so the autosave of this run takes a slot of its own.
     const QString autosaves = autosaveDirectory(options);
     sortie::client::AutosaveRecovery recovery(missions.document(), autosaves);
