@@ -89,7 +89,7 @@ bool MissionUploader::start(const mission::Route &route, vehicle::Vehicle *vehic
     m_logEntry = m_log ? m_log->track(m_vehicleName, tr("upload \"%1\"").arg(route.settings.name.isEmpty() ? tr("route") : route.settings.name))
                        : std::function<void(const CommandResult &)>();
     // A vehicle that goes away (its server session ended) takes the upload with it.
-    connect(vehicle, &QObject::destroyed, this, current([this] {
+    connect(vehicle, &QObject::destroyed, this, current([this](QObject *) {
         end(State::Failed, tr("Upload to %1 failed: the vehicle is gone (its connection was closed).").arg(m_vehicleName),
             CommandResult::failure(tr("the vehicle is gone")));
     }));

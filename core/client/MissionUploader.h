@@ -23,6 +23,7 @@ class MissionUploader : public QObject
     Q_PROPERTY(bool canCancel READ canCancel NOTIFY stateChanged)
     Q_PROPERTY(QString activity READ activity NOTIFY stateChanged)
     Q_PROPERTY(QString vehicleName READ vehicleName NOTIFY stateChanged)
+    Q_PROPERTY(bool asking READ isAsking NOTIFY stateChanged) // AwaitingConfirmation
     Q_PROPERTY(QString question READ question NOTIFY stateChanged)
     Q_PROPERTY(bool unsavedEdits READ hasUnsavedEdits NOTIFY stateChanged)
     Q_PROPERTY(int culprit READ culprit NOTIFY stateChanged)
@@ -55,6 +56,7 @@ public:
     State state() const { return m_state; }
     bool isBusy() const;
     bool canCancel() const;
+    bool isAsking() const { return m_state == State::AwaitingConfirmation; }
     QString activity() const;
     QString vehicleName() const { return m_vehicleName; }
     QString question() const;

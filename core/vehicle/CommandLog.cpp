@@ -20,7 +20,7 @@ int CommandLog::rowCount(const QModelIndex &parent) const
 QHash<int, QByteArray> CommandLog::roleNames() const
 {
     return {{TimeRole, "time"}, {TimeTextRole, "timeText"}, {VehicleRole, "vehicle"}, {CommandRole, "command"},
-            {StatusRole, "status"}, {StatusTextRole, "statusText"}, {ResultRole, "result"}, {TextRole, "text"}};
+            {StatusRole, "status"}, {StatusTextRole, "statusText"}, {ResultRole, "result"}, {TextRole, "text"}, {FailedRole, "failed"}};
 }
 
 QString CommandLog::statusText(Status status)
@@ -47,6 +47,7 @@ QVariant CommandLog::data(const QModelIndex &index, int role) const
     case StatusRole: return int(e.status);
     case StatusTextRole: return statusText(e.status);
     case ResultRole: return e.result;
+    case FailedRole: return e.status == Status::Failed;
     case TextRole:
     case Qt::DisplayRole:
         return e.result.isEmpty() ? tr("%1 %2: %3 %4").arg(e.sent.toLocalTime().toString(QStringLiteral("HH:mm:ss")), e.vehicle, e.command, statusText(e.status))

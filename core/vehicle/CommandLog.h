@@ -34,7 +34,7 @@ public:
         QString result;     // the vehicle's or the link's words when it failed
     };
 
-    enum Roles { TimeRole = Qt::UserRole + 1, TimeTextRole, VehicleRole, CommandRole, StatusRole, StatusTextRole, ResultRole, TextRole };
+    enum Roles { TimeRole = Qt::UserRole + 1, TimeTextRole, VehicleRole, CommandRole, StatusRole, StatusTextRole, ResultRole, TextRole, FailedRole };
 
     explicit CommandLog(QObject *parent = nullptr, int capacity = 1000);
 

@@ -42,7 +42,7 @@ Result<MissionAction> vciAction(const WaypointAction &action)
         Result<MissionAction> operator()(const WaitAction &a) const
         {
             if (a.waitForOperator)
-                return missionError(QStringLiteral("a wait for the operator has no VCI form (a vehicle flying alone cannot be released)");
+                return missionError(QStringLiteral("a wait for the operator has no VCI form (a vehicle flying alone cannot be released)"));
             return MissionAction{QStringLiteral("wait"), {{QStringLiteral("seconds"), a.seconds}}};
         }
         Result<MissionAction> operator()(const HeadingAction &a) const
@@ -53,7 +53,7 @@ Result<MissionAction> vciAction(const WaypointAction &action)
         Result<MissionAction> operator()(const PoiAction &a) const
         {
             if (a.altitudeType != AltitudeType::Agl)
-                return missionError(QStringLiteral("a point of interest with an AMSL altitude has no VCI form (altitudes are above home)");
+                return missionError(QStringLiteral("a point of interest with an AMSL altitude has no VCI form (altitudes are above home)"));
             return MissionAction{QStringLiteral("poi"), {{QStringLiteral("latitude"), a.position.latitude * kRad},
                                                          {QStringLiteral("longitude"), a.position.longitude * kRad},
                                                          {QStringLiteral("altitude"), a.altitude}}};
@@ -86,7 +86,7 @@ Result<MissionAction> vciAction(const WaypointAction &action)
         }
         Result<MissionAction> operator()(const OpaqueAction &a) const
         {
-            return missionError(QStringLiteral("the action \"%1\" came from a UgCS server and has no VCI form").arg(a.description);
+            return missionError(QStringLiteral("the action \"%1\" came from a UgCS server and has no VCI form").arg(a.description));
         }
     };
     return std::visit(Visitor{}, action);
@@ -94,7 +94,7 @@ Result<MissionAction> vciAction(const WaypointAction &action)
 
 MissionError at(const Route &route, int row, const QString &why)
 {
-    return missionError(QStringLiteral("%1: %2").arg(segmentLabel(route, row), why);
+    return missionError(QStringLiteral("%1: %2").arg(segmentLabel(route, row), why));
 }
 
 } // namespace
@@ -138,7 +138,7 @@ Result<std::vector<MissionItem>> missionItemsFor(const Route &route, ScanPlanCac
                                                                               {QStringLiteral("delay"), 0.0}}});
     }
     if (items.empty())
-        return missionError(QStringLiteral("the route has no waypoints to fly");
+        return missionError(QStringLiteral("the route has no waypoints to fly"));
     return items;
 }
 
