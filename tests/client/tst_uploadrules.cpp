@@ -11,6 +11,7 @@
 #include "UploadReview.h"
 #include "VciProfile.h"
 
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -82,8 +83,8 @@ private slots:
         QCOMPARE(review.warnings.size(), 2);
         QVERIFY(review.warnings[0].startsWith(QLatin1String("Waypoint 2: altitude")));
         QString q = review.question(QStringLiteral("EMU-101"));
-        QVERIFY2(q.contains(QLatin1String("2 warnings")), qPrintable(q));
-        QVERIFY(q.contains(QLatin1String("• Waypoint 3: altitude")));
+        QVERIFY2(q.contains(QLatin1String("2 warning(s)")), qPrintable(q));
+        QVERIFY(q.contains(QStringLiteral("• Waypoint 3: altitude")));
         QVERIFY(!q.contains(QLatin1String("not saved")));
         QVERIFY(q.endsWith(QLatin1String("Upload to EMU-101?")));
 
@@ -121,7 +122,7 @@ private slots:
         QCOMPARE(policy.confirmation(QStringLiteral("takeoff"), &unknown), QStringLiteral("Take off with the vehicle to 20 m above home?").replace(QLatin1String("the vehicle"), unknown.name()));
         QVERIFY(policy.confirmation(QStringLiteral("auto"), &unknown).contains(QLatin1String("has not seen its mission")));
         unknown.setMission({MissionItem{}, MissionItem{}});
-        QVERIFY(policy.confirmation(QStringLiteral("auto"), &unknown).contains(QLatin1String("2 waypoints")));
+        QVERIFY(policy.confirmation(QStringLiteral("auto"), &unknown).contains(QLatin1String("2 waypoint(s)")));
         // Resting on the ground with fresh telemetry: disarming needs no question.
         vehicle::TelemetryBatch onGround{{vehicle::TelemetryField::AltitudeAgl, 0.1, 0}};
         unknown.ingest(onGround);
