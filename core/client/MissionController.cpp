@@ -110,7 +110,7 @@ void MissionController::save()
     if (isBusy())
         return setMessage(tr("Wait until %1 is done.").arg(m_activity.toLower()));
     // The validation gate: nothing with an error is saved (the message names the culprit).
-    if (const QString refused = saveRefusal(validateRoute(m_document.route())); !refused.isEmpty())
+    if (const QString refused = saveRefusal(validation()); !refused.isEmpty())
         return setMessage(tr("Not saved: %1").arg(refused));
     const int id = routeId();
     if (id < 0) {
@@ -284,8 +284,17 @@ void MissionController::saveAndUpload()
     save();
 }
 
+mission::ValidationReport MissionController::validation()
+{
+    // The analyzer's report: every rule, those other libraries add to it (terrain) included.
+    m_document.analyzer()->recomputeNow();
+    return m_document.analyzer()->validation();
+}
+
 void MissionController::followUploader()
 {
+    // The uploader only ever gets the open document's route from here.
+    m_uploader.setValidator([this](const mission::Route &) { return validation(); });
     connect(&m_uploader, &MissionUploader::stateChanged, this, [this] {
         if (m_uploader.state() != MissionUploader::State::AwaitingConfirmation)
             m_uploadAfterSave = false;

@@ -118,6 +118,7 @@ private:
     void written(const hci::HciReply &reply, int routeId);
     void routeEvent(const com::ugcs::ucs::proto::EventWrapper &event);
     void followUploader();
+    mission::ValidationReport validation();
     void setServerMessages(const mission::ProcessedPlan &plan);
 
     QPointer<hci::HciClient> m_client;

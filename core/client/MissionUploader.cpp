@@ -94,7 +94,7 @@ bool MissionUploader::start(const mission::Route &route, vehicle::Vehicle *vehic
             CommandResult::failure(tr("the vehicle is gone")));
     }));
     setState(State::Validating);
-    m_review = reviewUpload(mission::validateRoute(route), unsavedEdits);
+    m_review = reviewUpload(validate(route), unsavedEdits);
     if (m_review.isBlocked()) {
         end(State::Failed, tr("Not uploaded: %1").arg(m_review.blocked), CommandResult::failure(m_review.blocked));
         return true;
@@ -106,6 +106,11 @@ bool MissionUploader::start(const mission::Route &route, vehicle::Vehicle *vehic
     }
     process();
     return true;
+}
+
+mission::ValidationReport MissionUploader::validate(const mission::Route &route) const
+{
+    return m_validator ? m_validator(route) : mission::validateRoute(route);
 }
 
 void MissionUploader::confirm()
@@ -120,7 +125,7 @@ void MissionUploader::confirm(const mission::Route &route, bool unsavedEdits)
         return;
     const QStringList asked = m_review.warnings;
     m_route = route;
-    m_review = reviewUpload(mission::validateRoute(route), unsavedEdits);
+    m_review = reviewUpload(validate(route), unsavedEdits);
     if (m_review.isBlocked())
         return end(State::Failed, tr("Not uploaded: %1").arg(m_review.blocked), CommandResult::failure(m_review.blocked));
     bool news = m_review.unsavedEdits;

@@ -52,6 +52,10 @@ public:
 
     // Where every upload and its result is recorded (not owned; none by default).
     void setCommandLog(vehicle::CommandLog *log) { m_log = log; }
+    // How a route is validated: mission::validateRoute by default; the editor's analyzer, with the
+    // rules other libraries add to it (terrain clearance), when the route is the open document.
+    using Validator = std::function<mission::ValidationReport(const mission::Route &)>;
+    void setValidator(Validator validator) { m_validator = std::move(validator); }
 
     State state() const { return m_state; }
     bool isBusy() const;
@@ -95,6 +99,7 @@ private:
     void setState(State state);
     void setMessage(const QString &message);
     void setProgress(int value, int maximum);
+    mission::ValidationReport validate(const mission::Route &route) const;
     void process();
     void send();
     void verify();
@@ -106,6 +111,7 @@ private:
 
     QPointer<vehicle::Vehicle> m_vehicle;
     QPointer<vehicle::CommandLog> m_log;
+    Validator m_validator;
     mission::Route m_route;
     UploadReview m_review;
     vehicle::PreparedMission m_prepared;
