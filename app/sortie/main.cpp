@@ -111,6 +111,7 @@ int main(int argc, char *argv[])
         const sortie::terrain::GroundSample g = elevation.service()->sample(p);
         return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
     });
+    missions.setFleet(&fleet);
     // Recovery looks first, so the autosave of this run takes a slot of its own.
     const QString autosaves = autosaveDirectory(options);
     sortie::client::AutosaveRecovery recovery(missions.document(), autosaves);

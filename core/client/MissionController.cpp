@@ -3,11 +3,15 @@
 #include "AlgorithmProto.h"
 
 #include "HciClient.h"
+#include "HciLock.h"
 #include "HciReply.h"
 #include "HciRouteMapper.h"
 #include "HciSession.h"
 #include "HciSubscription.h"
 #include "Messages.pb.h"
+#include "RouteValidator.h"
+#include "UploadReview.h"
+#include "VehicleFleet.h"
 
 namespace sortie::client {
 
@@ -28,6 +32,7 @@ MissionController::MissionController(hci::HciClient *client, QObject *parent)
     connect(this, &MissionController::routeChanged, this, &MissionController::canSaveChanged);
     connect(&m_document, &RouteDocument::modifiedChanged, this, &MissionController::canSaveChanged);
     connect(&m_document, &RouteDocument::loaded, this, [this] { m_opened = m_document.route(); });
+    followUploader();
 }
 
 MissionController::~MissionController() = default;
@@ -92,11 +97,9 @@ void MissionController::refresh()
         if (!reply->isOk())
             return;
         std::vector<ServerObjectListModel::Entry> entries;
-        m_vehicleObjects.clear();
         for (const pb::DomainObjectWrapper &object : reply->response<pb::GetObjectListResponse>().objects()) {
             const pb::Vehicle &vehicle = object.vehicle();
             entries.push_back({vehicle.id(), QString::fromStdString(vehicle.name()), QString::fromStdString(vehicle.serialnumber())});
-            m_vehicleObjects[vehicle.id()] = std::make_unique<pb::Vehicle>(vehicle);
         }
         m_vehicles.setEntries(std::move(entries));
     });
@@ -114,7 +117,6 @@ void MissionController::openRoute(int routeId)
             return setMessage(tr("The route cannot be edited here: %1").arg(imported.error().toString()));
         setConflict(nullptr, {});
         m_processed.setPlan({});
-        m_processedRoute.reset();
         m_document.load(imported->route);
         QString text = tr("Opened %1 (version %2).").arg(routeName()).arg(reply->response<pb::GetObjectResponse>().object().route().version());
         if (!imported->notices.isEmpty())
@@ -131,52 +133,83 @@ void MissionController::save()
         return setMessage(tr("Not connected: your edits are kept; save again when the connection is back."));
     if (isBusy())
         return setMessage(tr("Wait until %1 is done.").arg(m_activity.toLower()));
+    // The validation gate: nothing with an error is saved (the message names the culprit).
+    if (const QString refused = saveRefusal(validation()); !refused.isEmpty())
+        return setMessage(tr("Not saved: %1").arg(refused));
     const int id = routeId();
-    if (id < 0)
-        return writeRoute(routeToHci(m_document.route()), false);
-    request(m_client->acquireLock(HciObjectType::Route, id), tr("Locking the route"), [this, id](HciReply *reply) {
-        if (!reply->isOk())
-            return setMessage(tr("Not saved: the route is locked (%1).").arg(reply->error().message()));
-        if (id != routeId())
-            return releaseRouteLock(id);
-        writeRoute(routeToHci(m_document.route()), true);
-    });
+    if (id < 0) {
+        m_saving = true;
+        request(m_client->createOrUpdate(routeToHci(m_document.route())), tr("Saving"), [this](HciReply *reply) {
+            m_saving = false;
+            written(*reply, -1);
+        });
+        return;
+    }
+    writeLocked(routeToHci(m_document.route()));
 }
 
-void MissionController::writeRoute(const pb::Route &route, bool locked)
+void MissionController::writeLocked(const pb::Route &route)
 {
-    const int id = route.has_id() ? route.id() : -1;
-    m_saving = true;
-    request(m_client->createOrUpdate(route), tr("Saving"), [this, id, locked](HciReply *reply) {
-        m_saving = false;
-        if (locked)
-            releaseRouteLock(id);
-        if (!reply->isOk()) {
-            if (id < 0 || reply->error().kind() != hci::HciError::Kind::Server)
-                return setMessage(tr("Not saved: %1").arg(reply->error().message()));
-            // Refused: find out whether someone else saved a newer version meanwhile.
-            const QString refusal = reply->error().message();
-            request(m_client->getObject(HciObjectType::Route, id), tr("Reading the server's copy"), [this, refusal](HciReply *check) {
-                const pb::Route &theirs = check->response<pb::GetObjectResponse>().object().route();
-                const auto &origin = m_document.route().origin;
-                if (check->isOk() && origin && theirs.version() > origin.message->version())
-                    return setConflict(&theirs, tr("Someone else saved this route on the server (version %1) after you opened it (version %2).")
-                                                    .arg(theirs.version()).arg(origin.message->version()));
-                setMessage(tr("Not saved: %1").arg(refusal));
+    // The reply is kept until the lock is released, then handled.
+    struct Written
+    {
+        std::shared_ptr<HciReply> reply;
+        QString refusal;
+    };
+    const int id = route.id();
+    setActivity(tr("Locking the route"));
+    hci::underLock<Written>(m_client, HciObjectType::Route, id, this, {
+        [this, route, id](auto finish) {
+            if (id != routeId())
+                return finish(Written{}); // another route was opened meanwhile
+            setActivity(tr("Saving"));
+            m_saving = true;
+            HciReply *reply = m_client->createOrUpdate(route);
+            reply->setAutoDelete(false);
+            connect(reply, &HciReply::progress, this, [this](const QString &, int value, int maximum) { setProgress(value, maximum); });
+            connect(reply, &HciReply::finished, this, [reply, finish] {
+                finish(Written{std::shared_ptr<HciReply>(reply, [](HciReply *r) { r->deleteLater(); }), {}});
             });
-            return;
-        }
-        const pb::Route &stored = reply->response<pb::CreateOrUpdateObjectResponse>().object().route();
-        auto imported = routeFromHci(stored);
-        if (!imported)
-            return setMessage(tr("Saved, but the server's answer cannot be read back: %1").arg(imported.error().toString()));
-        m_document.load(imported->route);
-        setConflict(nullptr, {});
-        setMessage(tr("Saved %1 (version %2).").arg(routeName()).arg(stored.version()));
-        emit routeChanged();
-        emit saved(stored.version());
-        refresh();
-    });
+        },
+        [](const hci::HciError &refusal) { return Written{nullptr, refusal.message()}; },
+        [this, id](Written outcome) {
+            m_saving = false;
+            setActivity({});
+            if (!outcome.refusal.isEmpty())
+                return setMessage(tr("Not saved: the route is locked (%1).").arg(outcome.refusal));
+            if (outcome.reply)
+                written(*outcome.reply, id);
+        },
+        {}, {}});
+}
+
+void MissionController::written(const HciReply &reply, int id)
+{
+    if (!reply.isOk()) {
+        if (id < 0 || reply.error().kind() != hci::HciError::Kind::Server)
+            return setMessage(tr("Not saved: %1").arg(reply.error().message()));
+        // Refused: find out whether someone else saved a newer version meanwhile.
+        const QString refusal = reply.error().message();
+        request(m_client->getObject(HciObjectType::Route, id), tr("Reading the server's copy"), [this, refusal](HciReply *check) {
+            const pb::Route &theirs = check->response<pb::GetObjectResponse>().object().route();
+            const auto &origin = m_document.route().origin;
+            if (check->isOk() && origin && theirs.version() > origin.message->version())
+                return setConflict(&theirs, tr("Someone else saved this route on the server (version %1) after you opened it (version %2).")
+                                                .arg(theirs.version()).arg(origin.message->version()));
+            setMessage(tr("Not saved: %1").arg(refusal));
+        });
+        return;
+    }
+    const pb::Route &stored = reply.response<pb::CreateOrUpdateObjectResponse>().object().route();
+    auto imported = routeFromHci(stored);
+    if (!imported)
+        return setMessage(tr("Saved, but the server's answer cannot be read back: %1").arg(imported.error().toString()));
+    m_document.load(imported->route);
+    setConflict(nullptr, {});
+    setMessage(tr("Saved %1 (version %2).").arg(routeName()).arg(stored.version()));
+    emit routeChanged();
+    emit saved(stored.version());
+    refresh();
 }
 
 void MissionController::keepMine()
@@ -184,15 +217,10 @@ void MissionController::keepMine()
     if (!hasConflict())
         return;
     const int theirVersion = m_conflict.theirVersion();
-    const int id = routeId();
     setConflict(nullptr, {});
-    request(m_client->acquireLock(HciObjectType::Route, id), tr("Locking the route"), [this, id, theirVersion](HciReply *reply) {
-        if (!reply->isOk())
-            return setMessage(tr("Not saved: the route is locked (%1).").arg(reply->error().message()));
-        pb::Route mine = routeToHci(m_document.route());
-        mine.set_version(theirVersion); // ours replaces theirs, knowingly
-        writeRoute(mine, true);
-    });
+    pb::Route mine = routeToHci(m_document.route());
+    mine.set_version(theirVersion); // ours replaces theirs, knowingly
+    writeLocked(mine);
 }
 
 void MissionController::takeTheirs()
@@ -205,12 +233,6 @@ void MissionController::takeTheirs()
     m_document.undoStack()->setClean(); // what the server has: nothing unsaved
     setMessage(tr("This is the server's copy now. Undo brings your edits back."));
     emit routeChanged();
-}
-
-void MissionController::releaseRouteLock(int routeId)
-{
-    if (m_client && routeId >= 0)
-        m_client->releaseLock(HciObjectType::Route, routeId);
 }
 
 void MissionController::routeEvent(const pb::EventWrapper &event)
@@ -242,58 +264,79 @@ void MissionController::routeEvent(const pb::EventWrapper &event)
 
 void MissionController::process()
 {
-    processThen({});
-}
-
-void MissionController::processThen(std::function<void()> next)
-{
     if (!m_client || !m_client->session()->isReady())
         return setMessage(tr("Not connected: the server processes routes."));
-    const int undoIndex = m_document.undoStack()->index();
-    request(m_client->processRoute(routeToHci(m_document.route())), tr("Processing on the server"),
-            [this, undoIndex, next](HciReply *reply) {
+    request(m_client->processRoute(routeToHci(m_document.route())), tr("Processing on the server"), [this](HciReply *reply) {
         if (!reply->isOk())
             return setMessage(tr("Processing failed: %1").arg(reply->error().message()));
-        const pb::ProcessedRoute &processed = reply->response<pb::ProcessRouteResponse>().processedroute();
-        ProcessedPlan plan = processedPlanFromHci(processed, &m_document.route());
+        ProcessedPlan plan = processedPlanFromHci(reply->response<pb::ProcessRouteResponse>().processedroute(), &m_document.route());
         setServerMessages(plan);
-        m_processedRoute = std::make_unique<pb::ProcessedRoute>(processed);
-        m_processedAt = undoIndex;
         const bool flyable = plan.flyable();
         m_processed.setPlan(std::move(plan));
         setMessage(flyable ? tr("Processed: %1 waypoints to fly.").arg(m_processed.count())
                            : tr("The server found problems in the route: see its messages."));
-        if (next)
-            next();
     });
 }
 
-void MissionController::upload(int vehicleId)
+void MissionController::setFleet(VehicleFleet *fleet)
 {
-    if (!m_vehicleObjects.count(vehicleId))
-        return setMessage(tr("Choose a vehicle to upload to."));
-    if (m_processedRoute && m_processedAt == m_document.undoStack()->index())
-        return startUpload(vehicleId);
-    // Process what is on screen first, then upload that.
-    processThen([this, vehicleId] { startUpload(vehicleId); });
+    if (fleet == m_fleet)
+        return;
+    m_fleet = fleet;
+    m_uploader.setCommandLog(fleet ? fleet->commandLog() : nullptr);
+    emit fleetChanged();
 }
 
-void MissionController::startUpload(int vehicleId)
+void MissionController::upload(const QString &vehicleId)
 {
-    if (!m_processed.flyable())
-        return setMessage(tr("Not uploaded: the server found problems in the route."));
-    const pb::Vehicle vehicle = *m_vehicleObjects.at(vehicleId);
-    const QString name = QString::fromStdString(vehicle.name());
-    request(m_client->acquireLock(HciObjectType::Vehicle, vehicleId), tr("Locking %1").arg(name), [this, vehicle, name](HciReply *lock) {
-        if (!lock->isOk())
-            return setMessage(tr("Not uploaded: %1 is locked (%2).").arg(name, lock->error().message()));
-        request(m_client->uploadRoute(vehicle, *m_processedRoute), tr("Uploading to %1").arg(name), [this, vehicle, name](HciReply *reply) {
-            m_client->releaseLock(HciObjectType::Vehicle, vehicle.id());
-            if (!reply->isOk())
-                return setMessage(tr("Upload to %1 failed: %2").arg(name, reply->error().message()));
-            setMessage(tr("Uploaded to %1.").arg(name));
-            emit uploaded(vehicle.id());
-        });
+    vehicle::Vehicle *target = m_fleet ? m_fleet->vehicle(vehicleId) : nullptr;
+    if (!target)
+        return setMessage(tr("Choose a vehicle to upload to."));
+    if (m_uploader.isBusy())
+        return setMessage(m_uploader.state() == MissionUploader::State::AwaitingConfirmation
+                              ? tr("An upload is waiting for your answer.")
+                              : tr("Wait until %1 is done.").arg(m_uploader.activity().toLower()));
+    m_uploadTarget = vehicleId;
+    m_uploader.start(m_document.route(), target, m_document.isModified());
+}
+
+void MissionController::saveAndUpload()
+{
+    if (m_uploader.state() != MissionUploader::State::AwaitingConfirmation)
+        return;
+    m_uploadAfterSave = true;
+    save();
+}
+
+mission::ValidationReport MissionController::validation()
+{
+    // The analyzer's report: every rule, those other libraries add to it (terrain) included.
+    m_document.analyzer()->recomputeNow();
+    return m_document.analyzer()->validation();
+}
+
+void MissionController::followUploader()
+{
+    // The uploader only ever gets the open document's route from here.
+    m_uploader.setValidator([this](const mission::Route &) { return validation(); });
+    connect(&m_uploader, &MissionUploader::stateChanged, this, [this] {
+        if (m_uploader.state() != MissionUploader::State::AwaitingConfirmation)
+            m_uploadAfterSave = false;
+        // While it waits for the operator nothing runs: the route can still be saved.
+        const bool running = m_uploader.isBusy() && m_uploader.state() != MissionUploader::State::AwaitingConfirmation;
+        setActivity(running ? m_uploader.activity() : QString());
+    });
+    connect(&m_uploader, &MissionUploader::progressChanged, this, [this] {
+        setProgress(m_uploader.progressValue(), m_uploader.progressMaximum());
+    });
+    connect(&m_uploader, &MissionUploader::messageChanged, this, [this] { setMessage(m_uploader.message()); });
+    connect(&m_uploader, &MissionUploader::uploaded, this, [this] { emit uploaded(m_uploadTarget); });
+    connect(this, &MissionController::saved, this, [this] {
+        if (!m_uploadAfterSave)
+            return;
+        m_uploadAfterSave = false;
+        // What goes up is the route as saved, checked again (edits made while asking are not skipped).
+        m_uploader.confirm(m_document.route(), m_document.isModified());
     });
 }
 

@@ -2,10 +2,12 @@
 
 #include "AlgorithmCatalog.h"
 #include "HciProto.h"
+#include "MissionUploader.h"
 #include "ProcessedPlanModel.h"
 #include "RouteConflict.h"
 #include "RouteDocument.h"
 #include "ServerObjectListModel.h"
+#include "VehicleFleet.h"
 
 #include <QObject>
 #include <QPointer>
@@ -24,13 +26,18 @@ namespace sortie::client {
 
 // Routes on the server: the list to pick from, the one open for editing (a RouteDocument), saving
 // it under a lock, noticing when someone else changed it meanwhile (and offering a clear choice:
-// keep ours or take theirs), processing it on the server and uploading it to a vehicle with
-// progress. Edits stay in the document whatever the connection does.
+// keep ours or take theirs), processing it on the server to show the plan, and uploading it to any
+// vehicle of the fleet through the MissionUploader. Edits stay in the document whatever the connection does.
 class MissionController : public QObject
 {
     Q_OBJECT
     Q_PROPERTY(sortie::client::ServerObjectListModel *routes READ routes CONSTANT)
+    // The server's vehicle objects (uploads go to the fleet's vehicles, HCI and VCI alike).
     Q_PROPERTY(sortie::client::ServerObjectListModel *vehicles READ vehicles CONSTANT)
+    // The vehicles a route can be uploaded to: the upload's chooser lists them (vehicleId role).
+    Q_PROPERTY(sortie::client::VehicleFleet *fleet READ fleet NOTIFY fleetChanged)
+    // The one upload service: its state, the question it asks, cancel.
+    Q_PROPERTY(sortie::client::MissionUploader *uploader READ uploader CONSTANT)
     Q_PROPERTY(sortie::client::RouteDocument *document READ document CONSTANT)
     Q_PROPERTY(sortie::mission::ProcessedPlanModel *processed READ processed CONSTANT)
     Q_PROPERTY(int routeId READ routeId NOTIFY routeChanged)
@@ -54,6 +61,10 @@ public:
 
     ServerObjectListModel *routes() { return &m_routes; }
     ServerObjectListModel *vehicles() { return &m_vehicles; }
+    MissionUploader *uploader() { return &m_uploader; }
+    // The vehicles a route can be uploaded to (not owned).
+    void setFleet(VehicleFleet *fleet);
+    VehicleFleet *fleet() const { return m_fleet; }
     RouteDocument *document() { return &m_document; }
     mission::ProcessedPlanModel *processed() { return &m_processed; }
     int routeId() const;
@@ -72,20 +83,25 @@ public:
     // Reads the server's routes and vehicles (done by itself whenever the session becomes ready).
     Q_INVOKABLE void refresh();
     Q_INVOKABLE void openRoute(int routeId);
-    // Saves under the route's lock. When the server's copy changed since it was opened, nothing
-    // is overwritten: `conflict` says so and keepMine() or takeTheirs() decides.
+    // Saves under the route's lock, unless validation finds an error (the message names it). When
+    // the server's copy changed since it was opened, nothing is overwritten: `conflict` says so and
+    // keepMine() or takeTheirs() decides.
     Q_INVOKABLE void save();
     Q_INVOKABLE void keepMine();
     // Their copy replaces ours as one undoable step (marked as saved: it is the server's), so
     // undo brings our edits back.
     Q_INVOKABLE void takeTheirs();
     Q_INVOKABLE void process();
-    // Processes if needed, then uploads under the vehicle's lock, with progress.
-    Q_INVOKABLE void upload(int vehicleId);
+    // Uploads the route on screen to a vehicle of the fleet (its `vehicleId` role, "HCI:7" or
+    // "VCI:vci-1") through the uploader: validated, processed, under the vehicle's lock, verified.
+    Q_INVOKABLE void upload(const QString &vehicleId);
+    // The answer "save, then upload" to the uploader's question about unsaved edits.
+    Q_INVOKABLE void saveAndUpload();
 
 signals:
     void routeChanged();
     void canSaveChanged();
+    void fleetChanged();
     // A route was opened from the server (not saved, not edited): views frame it.
     void routeOpened();
     void conflictChanged();
@@ -94,7 +110,7 @@ signals:
     void messageChanged();
     void serverMessagesChanged();
     void saved(int version);
-    void uploaded(int vehicleId);
+    void uploaded(const QString &vehicleId);
 
 private:
     template<typename Done>
@@ -103,11 +119,11 @@ private:
     void setProgress(int value, int maximum);
     void setMessage(const QString &message);
     void setConflict(const com::ugcs::ucs::proto::Route *theirs, const QString &text);
-    void writeRoute(const com::ugcs::ucs::proto::Route &route, bool locked);
-    void releaseRouteLock(int routeId);
+    void writeLocked(const com::ugcs::ucs::proto::Route &route);
+    void written(const hci::HciReply &reply, int routeId);
     void routeEvent(const com::ugcs::ucs::proto::EventWrapper &event);
-    void startUpload(int vehicleId);
-    void processThen(std::function<void()> next);
+    void followUploader();
+    mission::ValidationReport validation();
     void setServerMessages(const mission::ProcessedPlan &plan);
 
     QPointer<hci::HciClient> m_client;
@@ -117,8 +133,6 @@ private:
     mission::AlgorithmCatalog m_catalog;  // the server's algorithms, once listed (the document's editor uses it)
     RouteDocument m_document;
     mission::ProcessedPlanModel m_processed;
-    std::unique_ptr<com::ugcs::ucs::proto::ProcessedRoute> m_processedRoute;
-    int m_processedAt = -1; // undo index the processed plan belongs to
     RouteConflict m_conflict; // the server's copy, when it differs
     mission::Route m_opened;  // the route as last opened or saved: what both sides of a conflict edited
     QString m_conflictText;
@@ -129,6 +143,10 @@ private:
     QStringList m_serverMessages;
     hci::HciSubscription *m_routeEvents = nullptr;
     bool m_saving = false; // our own save's change event is not someone else's
+    MissionUploader m_uploader;
+    QPointer<VehicleFleet> m_fleet;
+    QString m_uploadTarget;
+    bool m_uploadAfterSave = false;
 };
 
 } // namespace sortie::client

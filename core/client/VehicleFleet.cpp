@@ -96,11 +96,21 @@ Vehicle *VehicleFleet::vehicleAt(int row) const
     return row >= 0 && row < count() ? m_entries[size_t(row)].vehicle.get() : nullptr;
 }
 
+Vehicle *VehicleFleet::vehicle(const QString &id) const
+{
+    for (const Entry &entry : m_entries) {
+        if (entry.vehicle->protocol() + QLatin1Char(':') + entry.vehicle->id() == id)
+            return entry.vehicle.get();
+    }
+    return nullptr;
+}
+
 void VehicleFleet::add(std::unique_ptr<VehicleLink> link)
 {
     // Parented, so that QML, which receives it from vehicleAt(), never takes it over and deletes it.
     auto vehicle = std::make_unique<Vehicle>(link.get(), this);
     Vehicle *raw = vehicle.get();
+    raw->setCommandLog(&m_commandLog);
     connect(raw, &Vehicle::telemetryChanged, this, [this, raw] { rowChanged(raw); });
     connect(raw, &Vehicle::staleChanged, this, [this, raw] { rowChanged(raw); });
     connect(raw, &Vehicle::linkStateChanged, this, [this, raw] { rowChanged(raw); });
@@ -193,7 +203,9 @@ void VehicleFleet::goTo(int row, double latitude, double longitude)
     const double agl = v->altitudeAgl();
     const double altitude = std::isfinite(agl) && agl > 2 ? agl : 20.0;
     const QString name = v->name();
-    v->link()->goTo(latitude, longitude, altitude, 5.0, [this, name](const vehicle::CommandResult &result) {
+    auto logged = m_commandLog.track(name, tr("go to %1, %2 at %3 m").arg(latitude, 0, 'f', 6).arg(longitude, 0, 'f', 6).arg(altitude, 0, 'f', 0));
+    v->link()->goTo(latitude, longitude, altitude, 5.0, [this, name, logged](const vehicle::CommandResult &result) {
+        logged(result);
         setCommandResult(result.ok ? tr("%1: flying to the clicked point.").arg(name)
                                    : tr("%1: go-to failed: %2").arg(name, result.message));
     });

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "CommandLog.h"
+#include "CommandPolicy.h"
 #include "Vehicle.h"
 
 #include <QAbstractListModel>
@@ -16,7 +18,8 @@ class HciClient;
 namespace sortie::client {
 
 // Every vehicle the operator can see, whichever protocol reaches it: the server's vehicles over
-// HCI (found when the session becomes ready) and vehicles connected directly over VCI. One row per
+// HCI (found when the session becomes ready) and vehicles connected directly over VCI. Any of them
+// can take a route (MissionUploader); the fleet is the upload's vehicle chooser. One row per
 // vehicle with what the map and the list show (position and heading in degrees for the map layer,
 // protocol and link state); the Vehicle itself (instruments, history, commands) is `vehicle`.
 // Rows change at most at the vehicles' notify rate (100 ms), never per telemetry message.
@@ -26,6 +29,10 @@ class VehicleFleet : public QAbstractListModel
     Q_PROPERTY(int count READ count NOTIFY countChanged)
     Q_PROPERTY(QString commandResult READ commandResult NOTIFY commandResultChanged)
     Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+    // Every command and upload sent to the fleet's vehicles, with its result.
+    Q_PROPERTY(sortie::vehicle::CommandLog *commandLog READ commandLog CONSTANT)
+    // The rules the command bar follows: what asks first, the take-off altitude, mode names.
+    Q_PROPERTY(sortie::client::CommandPolicy *commands READ commands CONSTANT)
 
 public:
     enum Roles {
@@ -45,6 +52,10 @@ public:
     QString commandResult() const { return m_commandResult; }
     QString message() const { return m_message; }
     Q_INVOKABLE sortie::vehicle::Vehicle *vehicleAt(int row) const;
+    // The vehicle whose `vehicleId` role is `id` ("HCI:7", "VCI:vci-1"), or nullptr.
+    Q_INVOKABLE sortie::vehicle::Vehicle *vehicle(const QString &id) const;
+    vehicle::CommandLog *commandLog() { return &m_commandLog; }
+    CommandPolicy *commands() { return &m_commands; }
 
     // Connects a vehicle over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600.
     Q_INVOKABLE bool addVciVehicle(const QString &endpoint);
@@ -71,6 +82,8 @@ private:
     void setCommandResult(const QString &text);
 
     QPointer<hci::HciClient> m_client;
+    vehicle::CommandLog m_commandLog; // before the vehicles, which write to it
+    CommandPolicy m_commands;
     std::vector<Entry> m_entries;
     QString m_commandResult;
     QString m_message;

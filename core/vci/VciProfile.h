@@ -43,15 +43,30 @@ inline constexpr int kStatusRepeatMs = 1000;
 inline constexpr std::array<std::string_view, 7> kModes = {"manual", "hold", "takeoff", "auto", "guided", "land", "return_home"};
 bool isMode(std::string_view name);
 
+// Something done at a waypoint once it is reached (docs/vci-profile.md, "Mission actions"): `type`
+// names it, `fields` is the rest of its JSON object (numbers in SI units and radians, names).
+struct Action
+{
+    std::string type;
+    nlohmann::json fields = nlohmann::json::object();
+};
+
+// The action types of the profile, in the order the document lists them.
+inline constexpr std::array<std::string_view, 8> kActionTypes = {"wait", "heading", "poi", "camera", "camera_by_time",
+                                                                  "camera_by_distance", "panorama", "land"};
+
 struct Waypoint
 {
     double latitude = 0;  // radians
     double longitude = 0; // radians
     double altitude = 0;  // metres above the home point
     double speed = 0;     // m/s towards this waypoint; 0: the vehicle's default
+    double acceptanceRadius = 0; // metres; 0: the vehicle's default
+    std::vector<Action> actions;
 };
 
-// {"waypoints":[{"latitude":..,"longitude":..,"altitude":..,"speed":..}, ...]}
+// {"waypoints":[{"latitude":..,"longitude":..,"altitude":..,"speed":..,"acceptanceRadius":..,
+//  "actions":[{"type":"wait","seconds":5}, ...]}, ...]}
 nlohmann::json encodeMission(const std::vector<Waypoint> &waypoints);
 // The waypoints, or nullopt and an error that names the JSON path ("waypoints[2].latitude: ...").
 std::optional<std::vector<Waypoint>> decodeMission(const nlohmann::json &body, std::string *error);

@@ -1,7 +1,9 @@
 #include "HciVehicleLink.h"
 
 #include "HciClient.h"
-#include "HciMissionRoute.h"
+#include "HciLock.h"
+#include "HciRouteMapper.h"
+#include "ProcessedPlan.h"
 #include "HciReply.h"
 #include "HciSession.h"
 #include "HciSubscription.h"
@@ -9,6 +11,8 @@
 #include "Messages.pb.h"
 
 #include <QDateTime>
+
+#include <numbers>
 
 namespace sortie::vehicle {
 
@@ -104,21 +108,16 @@ void HciVehicleLink::failLater(Done done, const QString &why)
 
 void HciVehicleLink::underLock(const QString &what, Work work, Done done)
 {
-    const int id = m_vehicle->id();
-    onFinished(m_client->acquireLock(HciObjectType::Vehicle, id), [this, id, what, work, done](const HciReply &lock) {
-        if (!lock.isOk()) {
+    hci::underLock<CommandResult>(m_client, HciObjectType::Vehicle, m_vehicle->id(), this, {
+        std::move(work),
+        [this, what](const hci::HciError &refusal) {
+            return CommandResult::failure(QStringLiteral("%1: cannot take control of %2: %3").arg(what, m_identity.name, refusal.message()));
+        },
+        [done](CommandResult result) {
             if (done)
-                done(CommandResult::failure(QStringLiteral("%1: cannot take control of %2: %3").arg(what, m_identity.name, lock.error().message())));
-            return;
-        }
-        work([this, id, done](const CommandResult &result) {
-            // Release whatever happened; the result is the work's.
-            onFinished(m_client->releaseLock(HciObjectType::Vehicle, id, true), [done, result](const HciReply &) {
-                if (done)
-                    done(result);
-            });
-        });
-    });
+                done(result);
+        },
+        {}, {}});
 }
 
 void HciVehicleLink::command(const QString &code, const QVariantMap &arguments, Done done)
@@ -192,27 +191,94 @@ void HciVehicleLink::goTo(double latitude, double longitude, double altitude, do
     command(QStringLiteral("waypoint"), args, std::move(done));
 }
 
-void HciVehicleLink::uploadMission(const std::vector<MissionItem> &items, Done done)
+namespace {
+
+// The server's processed route, which is what UploadRoute sends to the vehicle.
+struct HciProcessedMission : NativeMission
 {
-    if (items.empty()) {
-        failLater(std::move(done), QStringLiteral("a mission needs at least one waypoint"));
+    explicit HciProcessedMission(const pb::ProcessedRoute &r) : route(r) {}
+    pb::ProcessedRoute route;
+};
+
+// Empty when every segment was processed; otherwise what the server said about the first one that
+// was not ("Segment 3: Altitude 900 m is above ...").
+QString processingProblem(const mission::ProcessedPlan &plan)
+{
+    for (size_t i = 0; i < plan.segments.size(); ++i) {
+        const mission::ProcessedSegment &s = plan.segments[i];
+        if (s.status == mission::ProcessingStatus::Processed)
+            continue;
+        QString why;
+        for (const auto &m : s.messages) {
+            if (m.error || why.isEmpty())
+                why = m.text;
+            if (m.error)
+                break;
+        }
+        return QStringLiteral("Segment %1: %2").arg(i + 1).arg(why.isEmpty() ? QStringLiteral("the server could not process it") : why);
+    }
+    return {};
+}
+
+} // namespace
+
+void HciVehicleLink::prepareMission(const mission::Route &route, PrepareDone done)
+{
+    pb::Route hciRoute = mission::routeToHci(route);
+    if (!hciRoute.has_vehicleprofile() && m_vehicle->has_profile())
+        *hciRoute.mutable_vehicleprofile() = m_vehicle->profile();
+    if (hciRoute.name().empty())
+        hciRoute.set_name(QStringLiteral("Sortie upload to %1").arg(m_identity.name).toStdString());
+    onFinished(m_client->processRoute(hciRoute), [route, done](const HciReply &processed) {
+        if (!done)
+            return;
+        if (!processed.isOk()) {
+            done(CommandResult::failure(QStringLiteral("route processing: %1").arg(processed.error().message())), {});
+            return;
+        }
+        const pb::ProcessedRoute &server = processed.response<pb::ProcessRouteResponse>().processedroute();
+        const mission::ProcessedPlan plan = mission::processedPlanFromHci(server, &route);
+        if (const QString problem = processingProblem(plan); !problem.isEmpty()) {
+            done(CommandResult::failure(problem), {});
+            return;
+        }
+        PreparedMission prepared;
+        prepared.native = std::make_shared<HciProcessedMission>(server);
+        // Altitudes above home: the ground where the route starts is where the vehicle takes off.
+        const double home = plan.waypoints.empty() ? 0.0 : plan.waypoints.front().groundElevation;
+        constexpr double kRad = std::numbers::pi / 180.0;
+        for (const mission::ProcessedWaypoint &w : plan.waypoints)
+            prepared.items.push_back({w.position.latitude * kRad, w.position.longitude * kRad, w.altitudeAmsl - home, w.speed, w.acceptanceRadius, {}});
+        for (size_t i = 0; i < plan.segments.size(); ++i) {
+            for (const mission::ProcessedMessage &m : plan.segments[i].messages)
+                prepared.notices << QStringLiteral("Segment %1: %2").arg(i + 1).arg(m.text);
+        }
+        done(CommandResult::success(), prepared);
+    });
+}
+
+void HciVehicleLink::uploadMission(const PreparedMission &mission, UploadObserver observer, Done done)
+{
+    const auto processed = std::dynamic_pointer_cast<const HciProcessedMission>(mission.native);
+    if (!processed) {
+        failLater(std::move(done), QStringLiteral("upload: the mission was not prepared by the UgCS server"));
         return;
     }
-    const pb::Route route = hciRouteFor(*m_vehicle, items, QStringLiteral("Sortie upload to %1").arg(m_identity.name));
-    onFinished(m_client->processRoute(route), [this, done](const HciReply &processed) {
-        if (!processed.isOk()) {
-            if (done)
-                done(CommandResult::failure(QStringLiteral("route processing: %1").arg(processed.error().message())));
-            return;
-        }
-        const auto plan = std::make_shared<pb::ProcessedRoute>(processed.response<pb::ProcessRouteResponse>().processedroute());
-        if (const QString problem = hciProcessingProblem(*plan); !problem.isEmpty()) {
-            if (done)
-                done(CommandResult::failure(problem));
-            return;
-        }
-        underLock(QStringLiteral("upload"), [this, plan](Done finish) {
-            onFinished(m_client->uploadRoute(*m_vehicle, *plan), [this, finish](const HciReply &uploaded) {
+    auto step = [observer](UploadStep s, int value, int maximum) {
+        if (observer.step)
+            observer.step(s, value, maximum);
+    };
+    step(UploadStep::Locking, 0, 0);
+    hci::underLock<CommandResult>(m_client, HciObjectType::Vehicle, m_vehicle->id(), this, {
+        [this, processed, observer, step](auto finish) {
+            if (observer.proceed && !observer.proceed()) {
+                finish(CommandResult::cancel());
+                return;
+            }
+            step(UploadStep::Sending, 0, 0);
+            HciReply *reply = m_client->uploadRoute(*m_vehicle, processed->route);
+            connect(reply, &HciReply::progress, this, [step](const QString &, int value, int maximum) { step(UploadStep::Sending, value, maximum); });
+            onFinished(reply, [this, finish](const HciReply &uploaded) {
                 if (!uploaded.isOk()) {
                     finish(CommandResult::failure(QStringLiteral("upload: %1").arg(uploaded.error().message())));
                     return;
@@ -220,8 +286,16 @@ void HciVehicleLink::uploadMission(const std::vector<MissionItem> &items, Done d
                 emit missionChanged();
                 finish(CommandResult::success());
             });
-        }, done);
-    });
+        },
+        [this](const hci::HciError &refusal) {
+            return CommandResult::failure(QStringLiteral("upload: cannot take control of %1: %2").arg(m_identity.name, refusal.message()));
+        },
+        [done](CommandResult result) {
+            if (done)
+                done(result);
+        },
+        {},
+        [step] { step(UploadStep::Releasing, 0, 0); }});
 }
 
 void HciVehicleLink::downloadMission(MissionDone done)

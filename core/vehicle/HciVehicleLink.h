@@ -21,8 +21,9 @@ namespace sortie::vehicle {
 
 // A vehicle reached through a UgCS server over HCI. Telemetry comes from a telemetry subscription for
 // this vehicle (the session keeps it across reconnects); commands go as SendCommand and missions as
-// ProcessRoute + UploadRoute, each inside the vehicle's lock as the UgCS SDK does it (another
-// operator's lock makes them fail with that operator's name). The link's state follows the session.
+// ProcessRoute (prepareMission) then UploadRoute (uploadMission), commands and uploads inside the
+// vehicle's lock as the UgCS SDK does it (hci::underLock; another operator's lock makes them fail
+// with that operator's name). The link's state follows the session.
 // HCI cannot read a vehicle's mission back or change its parameters; readParameters() gives the
 // vehicle profile's values (VPT_* names).
 class HciVehicleLink : public VehicleLink
@@ -48,7 +49,8 @@ public:
     void land(Done done) override;
     void returnHome(Done done) override;
     void goTo(double latitude, double longitude, double altitude, double speed, Done done) override;
-    void uploadMission(const std::vector<MissionItem> &items, Done done) override;
+    void prepareMission(const mission::Route &route, PrepareDone done) override;
+    void uploadMission(const PreparedMission &mission, UploadObserver observer, Done done) override;
     void downloadMission(MissionDone done) override;
     void readParameters(ParametersDone done) override;
     void setParameter(const QString &name, double value, Done done) override;

@@ -1,5 +1,7 @@
 #include "VciVehicleLink.h"
 
+#include "MissionItems.h"
+#include "Route.h"
 #include "VciProfile.h"
 #include "VciTelemetryMapper.h"
 
@@ -15,6 +17,50 @@ using nlohmann::json;
 QString q(std::string_view s)
 {
     return QString::fromUtf8(s.data(), qsizetype(s.size()));
+}
+
+QVariant toVariant(const json &value)
+{
+    if (value.is_boolean())
+        return value.get<bool>();
+    if (value.is_number())
+        return value.get<double>();
+    if (value.is_string())
+        return QString::fromStdString(value.get<std::string>());
+    return {};
+}
+
+json toJson(const QVariant &value)
+{
+    switch (value.typeId()) {
+    case QMetaType::Bool: return value.toBool();
+    case QMetaType::QString: return value.toString().toStdString();
+    default: return value.toDouble();
+    }
+}
+
+profile::Waypoint toWaypoint(const MissionItem &item)
+{
+    profile::Waypoint w{item.latitude, item.longitude, item.altitude, item.speed, item.acceptanceRadius, {}};
+    for (const MissionAction &a : item.actions) {
+        json fields = json::object();
+        for (auto it = a.parameters.begin(); it != a.parameters.end(); ++it)
+            fields[it.key().toStdString()] = toJson(it.value());
+        w.actions.push_back({a.type.toStdString(), std::move(fields)});
+    }
+    return w;
+}
+
+MissionItem toItem(const profile::Waypoint &w)
+{
+    MissionItem item{w.latitude, w.longitude, w.altitude, w.speed, w.acceptanceRadius, {}};
+    for (const profile::Action &a : w.actions) {
+        MissionAction action{QString::fromStdString(a.type), {}};
+        for (const auto &[name, value] : a.fields.items())
+            action.parameters.insert(QString::fromStdString(name), toVariant(value));
+        item.actions.push_back(std::move(action));
+    }
+    return item;
 }
 
 QString stringField(const json &body, const char *key)
@@ -163,13 +209,37 @@ void VciVehicleLink::goTo(double latitude, double longitude, double altitude, do
     put(profile::kGoto, json{{"latitude", latitude}, {"longitude", longitude}, {"altitude", altitude}, {"speed", speed}}, std::move(done));
 }
 
-void VciVehicleLink::uploadMission(const std::vector<MissionItem> &items, Done done)
+void VciVehicleLink::prepareMission(const mission::Route &route, PrepareDone done)
 {
-    std::vector<profile::Waypoint> waypoints;
-    waypoints.reserve(items.size());
-    for (const MissionItem &i : items)
-        waypoints.push_back({i.latitude, i.longitude, i.altitude, i.speed});
-    put(profile::kMission, profile::encodeMission(waypoints), std::move(done));
+    // Nothing to ask the vehicle: the route is expanded here, and the answer still comes later.
+    auto items = missionItemsFor(route);
+    QMetaObject::invokeMethod(this, [done, items = std::move(items)] {
+        if (!done)
+            return;
+        if (!items)
+            done(CommandResult::failure(items.error().message), {});
+        else
+            done(CommandResult::success(), PreparedMission{*items, {}, {}});
+    }, Qt::QueuedConnection);
+}
+
+void VciVehicleLink::uploadMission(const PreparedMission &mission, UploadObserver observer, Done done)
+{
+    // VCI has no locks: the one step is the PUT.
+    QMetaObject::invokeMethod(this, [this, items = mission.items, observer, done] {
+        if (observer.proceed && !observer.proceed()) {
+            if (done)
+                done(CommandResult::cancel());
+            return;
+        }
+        if (observer.step)
+            observer.step(UploadStep::Sending, 0, 0);
+        std::vector<profile::Waypoint> waypoints;
+        waypoints.reserve(items.size());
+        for (const MissionItem &i : items)
+            waypoints.push_back(toWaypoint(i));
+        put(profile::kMission, profile::encodeMission(waypoints), done);
+    }, Qt::QueuedConnection);
 }
 
 void VciVehicleLink::downloadMission(MissionDone done)
@@ -187,7 +257,7 @@ void VciVehicleLink::downloadMission(MissionDone done)
             return;
         }
         for (const auto &w : *waypoints)
-            items.push_back({w.latitude, w.longitude, w.altitude, w.speed});
+            items.push_back(toItem(w));
         done(CommandResult::success(), items);
     });
 }

@@ -37,7 +37,8 @@ public:
     void land(Done done) override;
     void returnHome(Done done) override;
     void goTo(double latitude, double longitude, double altitude, double speed, Done done) override;
-    void uploadMission(const std::vector<MissionItem> &items, Done done) override;
+    void prepareMission(const mission::Route &route, PrepareDone done) override;
+    void uploadMission(const PreparedMission &mission, UploadObserver observer, Done done) override;
     void downloadMission(MissionDone done) override;
     void readParameters(ParametersDone done) override;
     void setParameter(const QString &name, double value, Done done) override;

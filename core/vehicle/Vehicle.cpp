@@ -1,5 +1,7 @@
 #include "Vehicle.h"
 
+#include "CommandLog.h"
+
 #include <cmath>
 
 namespace sortie::vehicle {
@@ -28,6 +30,8 @@ Vehicle::Vehicle(VehicleLink *link, QObject *parent, size_t historyCapacity)
             m_lastError.clear();
             emit lastErrorChanged();
         }
+        if (state == VehicleLink::State::Connected)
+            readParameters();
         emit linkStateChanged();
     });
     connect(link, &VehicleLink::errorOccurred, this, [this](const QString &message) {
@@ -198,10 +202,14 @@ QString Vehicle::missionState() const
     return QString::fromLatin1(n.data(), qsizetype(n.size()));
 }
 
-VehicleLink::Done Vehicle::finisher(const QString &command)
+VehicleLink::Done Vehicle::finisher(const QString &command, const QString &logged)
 {
+    // Called as the command is sent: it goes into the command log now, its result when it comes.
+    VehicleLink::Done log = m_commandLog ? m_commandLog->track(name(), logged.isEmpty() ? command : logged) : VehicleLink::Done();
     // Queued, so the result never arrives inside the call that asked for it.
-    return [self = QPointer<Vehicle>(this), command](const CommandResult &r) {
+    return [self = QPointer<Vehicle>(this), command, log](const CommandResult &r) {
+        if (log)
+            log(r);
         if (!self)
             return;
         QMetaObject::invokeMethod(self, [self, command, r] {
@@ -209,6 +217,23 @@ VehicleLink::Done Vehicle::finisher(const QString &command)
                 emit self->commandFinished(command, r.ok, r.message);
         }, Qt::QueuedConnection);
     };
+}
+
+void Vehicle::readParameters()
+{
+    // Read once per connection: the vehicle's own limits and defaults (take-off altitude, battery
+    // levels) that the command policy and the instruments prefer over the client's settings.
+    m_link->readParameters([self = QPointer<Vehicle>(this)](const CommandResult &result, const QVariantMap &values) {
+        if (!self || !result.ok || values == self->m_parameters)
+            return;
+        self->m_parameters = values;
+        emit self->parametersChanged();
+    });
+}
+
+void Vehicle::setCommandLog(CommandLog *log)
+{
+    m_commandLog = log;
 }
 
 void Vehicle::arm()
@@ -226,18 +251,19 @@ void Vehicle::disarm()
 void Vehicle::setMode(const QString &mode)
 {
     const FlightMode m = modeFromName(mode.toStdString());
+    const QString logged = QStringLiteral("mode %1").arg(mode);
     if (m == FlightMode::Unknown) {
-        finisher(QStringLiteral("mode"))(CommandResult::failure(QStringLiteral("\"%1\" is not a flight mode").arg(mode)));
+        finisher(QStringLiteral("mode"), logged)(CommandResult::failure(QStringLiteral("\"%1\" is not a flight mode").arg(mode)));
         return;
     }
     if (m_link)
-        m_link->setMode(m, finisher(QStringLiteral("mode")));
+        m_link->setMode(m, finisher(QStringLiteral("mode"), logged));
 }
 
 void Vehicle::takeoff(double altitude)
 {
     if (m_link)
-        m_link->takeoff(altitude, finisher(QStringLiteral("takeoff")));
+        m_link->takeoff(altitude, finisher(QStringLiteral("takeoff"), QStringLiteral("takeoff to %1 m").arg(altitude)));
 }
 
 void Vehicle::land()
@@ -249,7 +275,7 @@ void Vehicle::land()
 void Vehicle::returnHome()
 {
     if (m_link)
-        m_link->returnHome(finisher(QStringLiteral("returnHome")));
+        m_link->returnHome(finisher(QStringLiteral("returnHome"), QStringLiteral("return home")));
 }
 
 } // namespace sortie::vehicle

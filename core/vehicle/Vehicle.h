@@ -1,5 +1,6 @@
 #pragma once
 
+#include "CommandLog.h"
 #include "TelemetryStore.h"
 #include "VehicleLink.h"
 
@@ -48,6 +49,9 @@ class Vehicle : public QObject
     Q_PROPERTY(QString missionState READ missionState NOTIFY telemetryChanged)
     Q_PROPERTY(int missionCurrent READ missionCurrent NOTIFY telemetryChanged)
     Q_PROPERTY(int missionCount READ missionCount NOTIFY telemetryChanged)
+    // The vehicle's parameters as its link reports them (VCI: /parameters; HCI: the vehicle profile's
+    // VPT_* values), read after each connect; empty until then.
+    Q_PROPERTY(QVariantMap parameters READ parameters NOTIFY parametersChanged)
     Q_PROPERTY(int notifyInterval READ notifyInterval WRITE setNotifyInterval NOTIFY notifyIntervalChanged)
 
 public:
@@ -105,7 +109,14 @@ public:
     // Applies a batch as if the link had sent it (the link's signal is connected to this).
     void ingest(const TelemetryBatch &batch);
 
-    // Commands for QML; each ends with commandFinished(command, ok, message).
+    QVariantMap parameters() const { return m_parameters; }
+
+    // Where the commands below are recorded (not owned; none by default).
+    void setCommandLog(CommandLog *log);
+    CommandLog *commandLog() const { return m_commandLog; }
+
+    // Commands for QML; each ends with commandFinished(command, ok, message) and, with a command
+    // log, an entry there.
     Q_INVOKABLE void arm();
     Q_INVOKABLE void disarm();
     Q_INVOKABLE void setMode(const QString &mode);
@@ -122,6 +133,7 @@ signals:
     void notifyIntervalChanged();
     void commandFinished(const QString &command, bool ok, const QString &message);
     void missionChanged();
+    void parametersChanged();
 
 private:
     struct Last
@@ -131,14 +143,17 @@ private:
     };
 
     void scheduleNotify();
+    void readParameters();
     void emitNotify();
     void checkStale();
-    VehicleLink::Done finisher(const QString &command);
+    VehicleLink::Done finisher(const QString &command, const QString &logged = {});
 
     QPointer<VehicleLink> m_link;
+    QPointer<CommandLog> m_commandLog;
     QString m_protocol;
     VehicleIdentity m_identity;
     QString m_lastError;
+    QVariantMap m_parameters;
     std::vector<MissionItem> m_mission;
     TelemetryStore m_history;
     std::array<Last, kTelemetryFieldCount> m_last;

@@ -10,6 +10,10 @@
 #include <functional>
 #include <vector>
 
+namespace sortie::mission {
+struct Route;
+}
+
 namespace sortie::vehicle {
 
 // How the client reaches one vehicle, whatever the protocol: telemetry comes out normalised
@@ -25,7 +29,7 @@ public:
 
     // What a link can do beyond the commands every link has.
     enum Capability {
-        MissionDownload = 1 << 0,
+        MissionDownload = 1 << 0, // the mission can be read back (an upload is then verified)
         Parameters = 1 << 1,
         GoTo = 1 << 2,
     };
@@ -34,6 +38,15 @@ public:
     using Done = std::function<void(const CommandResult &)>;
     using MissionDone = std::function<void(const CommandResult &, const std::vector<MissionItem> &)>;
     using ParametersDone = std::function<void(const CommandResult &, const QVariantMap &)>;
+    using PrepareDone = std::function<void(const CommandResult &, const PreparedMission &)>;
+    // What an upload tells its caller on the way: `proceed` is asked before anything is sent (false
+    // stops the upload, releasing what it holds, with CommandResult::cancel()); `step` reports each
+    // stage with the server's or the link's progress (value of maximum; 0 of 0 when unknown).
+    struct UploadObserver
+    {
+        std::function<bool()> proceed;
+        std::function<void(UploadStep step, int value, int maximum)> step;
+    };
 
     using QObject::QObject;
 
@@ -51,7 +64,14 @@ public:
     virtual void land(Done done) = 0;
     virtual void returnHome(Done done) = 0;
     virtual void goTo(double latitude, double longitude, double altitude, double speed, Done done) = 0;
-    virtual void uploadMission(const std::vector<MissionItem> &items, Done done) = 0;
+    // Makes a route ready for this vehicle: HCI has the UgCS server process it against the
+    // vehicle's profile; VCI expands it locally (area scans into their passes) and checks that every
+    // part of it has a VCI form. Nothing is sent to the vehicle. MissionUploader is the one caller
+    // that then uploads; it validates before and verifies after.
+    virtual void prepareMission(const mission::Route &route, PrepareDone done) = 0;
+    // Sends a prepared mission to the vehicle, inside the vehicle's lock where the protocol has one
+    // (HCI). `done` comes after the lock is released; ok means the vehicle (or its server) took it.
+    virtual void uploadMission(const PreparedMission &mission, UploadObserver observer, Done done) = 0;
     virtual void downloadMission(MissionDone done) = 0;
     virtual void readParameters(ParametersDone done) = 0;
     virtual void setParameter(const QString &name, double value, Done done) = 0;

@@ -2,6 +2,11 @@
 
 #include <QMetaType>
 #include <QString>
+#include <QStringList>
+#include <QVariantMap>
+
+#include <memory>
+#include <vector>
 
 namespace sortie::vehicle {
 
@@ -17,26 +22,62 @@ struct VehicleIdentity
     bool operator==(const VehicleIdentity &) const = default;
 };
 
+// Something the vehicle does at a waypoint, in the words of Sortie's VCI profile
+// (docs/vci-profile.md, "Mission actions"): `type` is "wait", "heading", "poi", "camera",
+// "camera_by_time", "camera_by_distance" or "panorama"; `parameters` hold its numbers (SI units,
+// radians) and names.
+struct MissionAction
+{
+    QString type;
+    QVariantMap parameters;
+
+    bool operator==(const MissionAction &) const = default;
+};
+
 // One waypoint of the mission a vehicle carries, in the form both links upload and download.
 struct MissionItem
 {
-    double latitude = 0;  // rad
-    double longitude = 0; // rad
-    double altitude = 0;  // m above the home point
-    double speed = 0;     // m/s towards it; 0: the vehicle's default
+    double latitude = 0;         // rad
+    double longitude = 0;        // rad
+    double altitude = 0;         // m above the home point
+    double speed = 0;            // m/s towards it; 0: the vehicle's default
+    double acceptanceRadius = 0; // m: how close counts as reached; 0: the vehicle's default
+    std::vector<MissionAction> actions; // in order, once the waypoint is reached
 
     bool operator==(const MissionItem &) const = default;
 };
 
-// The outcome of a command: ok, or a message an operator understands.
+// The outcome of a command: ok, or a message an operator understands. `cancelled` marks a
+// failure the operator asked for.
 struct CommandResult
 {
     bool ok = true;
     QString message;
+    bool cancelled = false;
 
     static CommandResult success() { return {}; }
     static CommandResult failure(QString why) { return {false, std::move(why)}; }
+    static CommandResult cancel() { return {false, QStringLiteral("cancelled"), true}; }
 };
+
+// A link's own form of a prepared mission (the UgCS server's processed route, for HCI). Only the
+// link that prepared it reads it.
+struct NativeMission
+{
+    virtual ~NativeMission() = default;
+};
+
+// A route made ready for one vehicle (VehicleLink::prepareMission): what the vehicle will fly, and
+// what the processing said that the operator should read before it goes up.
+struct PreparedMission
+{
+    std::vector<MissionItem> items;
+    QStringList notices;
+    std::shared_ptr<const NativeMission> native;
+};
+
+// The stages of an upload inside a link, for progress.
+enum class UploadStep { Locking, Sending, Releasing };
 
 } // namespace sortie::vehicle
 

@@ -125,6 +125,7 @@ FlightModel::Refusal FlightModel::startMission()
     if (!m_state.armed)
         return "arm before starting the mission";
     m_state.currentWaypoint = 0;
+    m_holdLeft = -1;
     m_state.mode = Mode::Auto;
     return {};
 }
@@ -234,7 +235,7 @@ void FlightModel::climbTo(double altAgl, double dt)
     m_state.altitudeAgl = std::max(0.0, m_state.altitudeAgl + rate * dt);
 }
 
-bool FlightModel::flyTowards(double lat, double lon, double altAgl, double speed, double dt)
+bool FlightModel::flyTowards(double lat, double lon, double altAgl, double speed, double dt, double radius)
 {
     const double distance = sphericalDistance(m_state.latitude, m_state.longitude, lat, lon);
     const double cruise = std::min(speed > 0 ? speed : m_limits.cruiseSpeed, m_limits.maxSpeed);
@@ -250,7 +251,7 @@ bool FlightModel::flyTowards(double lat, double lon, double altAgl, double speed
         m_state.groundSpeed = 0;
         m_state.pitch = 0;
     }
-    return distance <= m_limits.acceptanceRadius && std::abs(altAgl - m_state.altitudeAgl) < 0.5;
+    return distance <= (radius > 0 ? radius : m_limits.acceptanceRadius) && std::abs(altAgl - m_state.altitudeAgl) < 0.5;
 }
 
 void FlightModel::tick(double dt)
@@ -277,7 +278,19 @@ void FlightModel::tick(double dt)
             break;
         }
         const Waypoint &wp = m_mission[size_t(s.currentWaypoint)];
-        if (flyTowards(wp.latitude, wp.longitude, wp.altitudeAgl, wp.speed, dt)) {
+        if (flyTowards(wp.latitude, wp.longitude, wp.altitudeAgl, wp.speed, dt, wp.acceptanceRadius)) {
+            if (m_holdLeft < 0 && wp.holdSeconds > 0)
+                m_holdLeft = wp.holdSeconds; // arrived: start waiting
+            if (m_holdLeft > 0) {
+                m_holdLeft = std::max(0.0, m_holdLeft - dt);
+                if (m_holdLeft > 0)
+                    break;
+            }
+            m_holdLeft = -1;
+            if (wp.landHere) {
+                s.mode = Mode::Land;
+                break;
+            }
             if (++s.currentWaypoint >= int(m_mission.size())) {
                 s.currentWaypoint = int(m_mission.size()) - 1;
                 s.mode = Mode::Hold; // mission complete: hold at the last waypoint

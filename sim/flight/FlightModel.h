@@ -20,6 +20,9 @@ public:
         double longitude = 0;  // degrees
         double altitudeAgl = 0;// metres above the home point
         double speed = 0;      // m/s; 0 means the model's cruise speed
+        double acceptanceRadius = 0; // m; 0 means the model's
+        double holdSeconds = 0;      // waits this long once reached
+        bool landHere = false;       // lands once reached (and waited): the mission ends
     };
 
     struct State
@@ -86,7 +89,7 @@ public:
     static bool modeFromName(const std::string &name, Mode *mode);
 
 private:
-    bool flyTowards(double lat, double lon, double altAgl, double speed, double dt); // true when arrived
+    bool flyTowards(double lat, double lon, double altAgl, double speed, double dt, double radius = 0); // true when arrived
     void climbTo(double altAgl, double dt);
     void turnTowards(double bearing, double dt);
 
@@ -96,6 +99,7 @@ private:
     uint64_t m_missionVersion = 0;
     Waypoint m_target; // Guided target or Takeoff altitude
     double m_armedSeconds = 0;
+    double m_holdLeft = -1; // s still to wait at the current waypoint; -1 when not waiting
 };
 
 // Spherical-earth helpers good to a few metres over a simulated flight (the mission model has the

@@ -42,8 +42,8 @@ void SimVciVehicle::tick()
     const double dt = double(m_clock.restart()) / 1000.0 * m_options.timeScale;
     const FlightModel::Mode before = m_model.state().mode;
     m_model.tick(dt);
-    // Auto becomes Hold inside tick() only when the last waypoint has been reached.
-    if (before == FlightModel::Mode::Auto && m_model.state().mode == FlightModel::Mode::Hold)
+    // Auto becomes Hold (or Land, at a landing waypoint) inside tick() only at the mission's end.
+    if (before == FlightModel::Mode::Auto && (m_model.state().mode == FlightModel::Mode::Hold || m_model.state().mode == FlightModel::Mode::Land))
         m_missionComplete = true;
     checkChanges();
 }
@@ -136,9 +136,10 @@ std::optional<json> SimVciVehicle::resource(const std::string &uri) const
     if (is(uri, profile::kMode))
         return json(FlightModel::modeName(s.mode));
     if (is(uri, profile::kMission)) {
-        std::vector<vci::profile::Waypoint> list;
-        for (const auto &w : m_model.mission())
-            list.push_back({w.latitude * kRad, w.longitude * kRad, w.altitudeAgl, w.speed});
+        // What was accepted, as it was sent, with the speeds the vehicle filled in.
+        std::vector<vci::profile::Waypoint> list = m_missionAsSent;
+        for (size_t i = 0; i < list.size() && i < m_model.mission().size(); ++i)
+            list[i].speed = m_model.mission()[i].speed;
         json m = profile::encodeMission(list);
         m["version"] = m_model.missionVersion();
         return m;
@@ -232,11 +233,24 @@ SimVciReply SimVciVehicle::put(const std::string &uri, const vci::VciMessage &re
         if (!waypoints)
             return SimVciReply::error(400, error);
         std::vector<FlightModel::Waypoint> mission;
-        for (const auto &w : *waypoints)
-            mission.push_back({w.latitude / kRad, w.longitude / kRad, w.altitude, w.speed > 0 ? w.speed : m_parameters["mission_speed"]});
+        for (const auto &w : *waypoints) {
+            FlightModel::Waypoint p{w.latitude / kRad, w.longitude / kRad, w.altitude, w.speed > 0 ? w.speed : m_parameters["mission_speed"]};
+            p.acceptanceRadius = w.acceptanceRadius;
+            // The simulated vehicle flies waits and landings; it has no camera or gimbal, so the
+            // other actions are kept (and read back) but change nothing in its flight.
+            for (const auto &a : w.actions) {
+                if (a.type == "wait")
+                    p.holdSeconds += a.fields.value("seconds", 0.0);
+                else if (a.type == "land")
+                    p.landHere = true;
+            }
+            mission.push_back(p);
+        }
         const FlightModel::Refusal refusal = m_model.setMission(std::move(mission));
-        if (refusal.empty())
+        if (refusal.empty()) {
             m_missionComplete = false;
+            m_missionAsSent = *waypoints;
+        }
         return refusedOrOk(refusal, *resource(std::string(profile::kMission)));
     }
     if (uri.rfind(profile::kParameterPrefix, 0) == 0)

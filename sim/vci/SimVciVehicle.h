@@ -1,5 +1,7 @@
 #pragma once
 
+#include "VciProfile.h"
+
 #include "FlightModel.h"
 #include "SimVciOptions.h"
 #include "SimVciReply.h"
@@ -54,6 +56,7 @@ private:
     QTimer m_tick;
     QElapsedTimer m_clock;
     bool m_missionComplete = false;
+    std::vector<vci::profile::Waypoint> m_missionAsSent; // the accepted mission with its actions, for GET
     std::map<std::string, double> m_parameters;     // the writable ones
     std::map<std::string, nlohmann::json> m_lastState; // last value of each state resource, to see changes
 };

@@ -9,6 +9,7 @@
 #include "MissionController.h"
 #include "SimFixture.h"
 #include "SimVehicle.h"
+#include "VehicleFleet.h"
 
 #include <QGeoCoordinate>
 #include <QSignalSpy>
@@ -28,7 +29,9 @@ struct Operator
         : client(&session)
         , connection(&session)
         , missions(&client)
+        , fleet(&client)
     {
+        missions.setFleet(&fleet);
         QSignalSpy ready(&connection, &client::ConnectionController::ready);
         connection.connectToServer(address, user, password);
         ok = ready.wait(10000);
@@ -37,6 +40,7 @@ struct Operator
     hci::HciClient client;
     client::ConnectionController connection;
     MissionController missions;
+    client::VehicleFleet fleet;
     bool ok = false;
 };
 
@@ -107,6 +111,7 @@ private slots:
         QTRY_VERIFY(routeRow(*m_alice->missions.routes(), kDemoRoute) >= 0);
         QTRY_COMPARE(m_alice->missions.vehicles()->count(), 3);
         QCOMPARE(m_alice->missions.vehicles()->nameAt(0), QStringLiteral("EMU-101"));
+        QTRY_COMPARE(m_alice->fleet.count(), 3); // the upload's chooser
     }
 
     void editUndoSaveAndSeeItFromASecondSession()
@@ -325,8 +330,13 @@ private slots:
     void processAndUploadWithProgress()
     {
         QVERIFY(openDemoRoute(*m_alice) > 0);
-        QTRY_COMPARE(m_alice->missions.vehicles()->count(), 3);
-        const int emu = m_alice->missions.vehicles()->objectIdAt(0);
+        QTRY_COMPARE(m_alice->fleet.count(), 3);
+        const QString emu = m_alice->fleet.index(0).data(client::VehicleFleet::VehicleIdRole).toString();
+        QCOMPARE(emu.left(4), QStringLiteral("HCI:"));
+        m_alice->missions.process();
+        QTRY_VERIFY_WITH_TIMEOUT(m_alice->missions.processed()->count() >= 4, 10000);
+        QVERIFY(m_alice->missions.processed()->flyable());
+        QTRY_VERIFY(!m_alice->missions.isBusy());
         QList<int> progress;
         connect(&m_alice->missions, &MissionController::progressChanged, this, [&] {
             if (m_alice->missions.progressMaximum() > 0)
@@ -335,13 +345,63 @@ private slots:
         QSignalSpy uploaded(&m_alice->missions, &MissionController::uploaded);
         m_alice->missions.upload(emu);
         QVERIFY(uploaded.wait(15000));
-        QCOMPARE(uploaded.first().first().toInt(), emu);
-        QVERIFY(m_alice->missions.processed()->count() >= 4);
-        QVERIFY(m_alice->missions.processed()->flyable());
+        QCOMPARE(uploaded.first().first().toString(), emu);
         QVERIFY2(progress.size() >= 3, qPrintable(QString::number(progress.size())));
         QVERIFY(std::is_sorted(progress.begin(), progress.end()));
-        QCOMPARE(m_alice->missions.message(), QStringLiteral("Uploaded to EMU-101."));
-        QVERIFY(m_sim->world.vehicle(emu)->model().mission().size() >= 4);
+        QVERIFY2(m_alice->missions.message().startsWith(QStringLiteral("Uploaded to EMU-101: ")), qPrintable(m_alice->missions.message()));
+        const int emuId = emu.mid(4).toInt();
+        QVERIFY(m_sim->world.vehicle(emuId)->model().mission().size() >= 4);
+        // What the vehicle holds is what the fly view draws.
+        QCOMPARE(m_alice->fleet.vehicle(emu)->mission().size(), m_sim->world.vehicle(emuId)->model().mission().size());
+        // The upload is in the command log, done.
+        const vehicle::CommandLog &log = *m_alice->fleet.commandLog();
+        QVERIFY(log.count() >= 1);
+        QCOMPARE(log.at(log.count() - 1).vehicle, QStringLiteral("EMU-101"));
+        QVERIFY(log.at(log.count() - 1).command.startsWith(QLatin1String("upload")));
+        QCOMPARE(log.at(log.count() - 1).status, vehicle::CommandLog::Status::Done);
+    }
+
+    void saveAndUploadAnsweringTheUnsavedQuestion()
+    {
+        QVERIFY(openDemoRoute(*m_alice) > 0);
+        QTRY_COMPARE(m_alice->fleet.count(), 3);
+        const QString emu = m_alice->fleet.index(1).data(client::VehicleFleet::VehicleIdRole).toString();
+        client::RouteDocument *doc = m_alice->missions.document();
+        doc->addWaypoint(56.9790, 24.0820);
+        QVERIFY(doc->isModified());
+        QSignalSpy uploaded(&m_alice->missions, &MissionController::uploaded);
+        QSignalSpy saved(&m_alice->missions, &MissionController::saved);
+        m_alice->missions.upload(emu);
+        client::MissionUploader *uploader = m_alice->missions.uploader();
+        QCOMPARE(uploader->state(), client::MissionUploader::State::AwaitingConfirmation);
+        QVERIFY(uploader->hasUnsavedEdits());
+        QVERIFY2(uploader->question().contains(QLatin1String("not saved")), qPrintable(uploader->question()));
+        QVERIFY(!m_alice->missions.isBusy()); // asking holds nothing: saving is possible
+        m_alice->missions.saveAndUpload();
+        QVERIFY(uploaded.wait(15000));
+        QCOMPARE(saved.count(), 1);
+        QVERIFY(!doc->isModified());
+        QVERIFY(std::abs(m_sim->world.vehicle(emu.mid(4).toInt())->model().mission().back().longitude - 24.0820) < 1e-9);
+    }
+
+    void saveAndUploadRefuseAValidationError()
+    {
+        QVERIFY(openDemoRoute(*m_alice) > 0);
+        QTRY_COMPARE(m_alice->fleet.count(), 3);
+        client::RouteDocument *doc = m_alice->missions.document();
+        doc->editor()->setAltitude({2}, 900); // above the route's maximum: an error
+        QSignalSpy saved(&m_alice->missions, &MissionController::saved);
+        m_alice->missions.save();
+        QVERIFY2(m_alice->missions.message().startsWith(QStringLiteral("Not saved: Waypoint 3: ")), qPrintable(m_alice->missions.message()));
+        const QString emu = m_alice->fleet.index(0).data(client::VehicleFleet::VehicleIdRole).toString();
+        m_alice->missions.upload(emu);
+        client::MissionUploader *uploader = m_alice->missions.uploader();
+        QCOMPARE(uploader->state(), client::MissionUploader::State::Failed);
+        QCOMPARE(uploader->culprit(), 2);
+        QVERIFY2(m_alice->missions.message().startsWith(QStringLiteral("Not uploaded: Waypoint 3: ")), qPrintable(m_alice->missions.message()));
+        QTest::qWait(50);
+        QCOMPARE(saved.count(), 0);
+        QVERIFY(m_sim->world.vehicle(emu.mid(4).toInt())->model().mission().empty());
     }
 
     void processReportsTheServersProblems()

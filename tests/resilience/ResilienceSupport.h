@@ -56,6 +56,7 @@ struct Operator
         , missions(&client)
         , fleet(withFleet ? std::make_unique<client::VehicleFleet>(&client) : nullptr)
     {
+        missions.setFleet(fleet.get());
         session.reconnectPolicy().setDelays(100ms, 800ms);
         session.setConnectTimeout(3000ms);
         QObject::connect(&connection, &client::ConnectionController::stateChanged, &connection, [this] {

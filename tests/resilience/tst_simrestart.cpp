@@ -84,7 +84,13 @@ private slots:
         QCOMPARE(doc->model()->count(), 5);
 
         QSignalSpy uploaded(&op.missions, &MissionController::uploaded);
-        op.missions.upload(op.missions.vehicles()->objectIdAt(0));
+        QTRY_COMPARE_WITH_TIMEOUT(op.fleet->count(), 3, 10000);
+        const QString emu = op.fleet->index(0).data(client::VehicleFleet::VehicleIdRole).toString();
+        op.missions.upload(emu);
+        // The edit is not saved: the uploader asks, and the operator uploads what is on screen.
+        QTRY_COMPARE(op.missions.uploader()->state(), client::MissionUploader::State::AwaitingConfirmation);
+        QVERIFY(op.missions.uploader()->question().contains(QLatin1String("not saved")));
+        op.missions.uploader()->confirm();
         // The transfer has begun: the server reported progress.
         QTRY_VERIFY_WITH_TIMEOUT(op.missions.progressMaximum() > 0
                                      && op.missions.activity().startsWith(QStringLiteral("Uploading to")), 10000);
@@ -102,12 +108,16 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(op.missions.vehicles()->count(), 3, 10000);
         QCOMPARE(uploaded.count(), 0); // a reconnect does not make the lost upload look done
         // Uploading again works, and what goes up is the edited route.
-        op.missions.upload(op.missions.vehicles()->objectIdAt(0));
+        QTRY_COMPARE_WITH_TIMEOUT(op.fleet->count(), 3, 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(op.fleet->vehicle(emu) && op.fleet->vehicle(emu)->isConnected(), 10000);
+        op.missions.upload(emu);
+        QTRY_COMPARE(op.missions.uploader()->state(), client::MissionUploader::State::AwaitingConfirmation);
+        op.missions.uploader()->confirm();
         QVERIFY(uploaded.wait(15000));
         QCOMPARE(uploaded.count(), 1);
-        QCOMPARE(op.missions.message(), QStringLiteral("Uploaded to EMU-101."));
+        QVERIFY2(op.missions.message().startsWith(QStringLiteral("Uploaded to EMU-101: ")), qPrintable(op.missions.message()));
         QVERIFY(!op.missions.isBusy());
-        QVERIFY(op.missions.processed()->count() >= 5);
+        QVERIFY(op.fleet->vehicle(emu)->mission().size() >= 5);
         QCOMPARE(doc->model()->count(), 5);
     }
 

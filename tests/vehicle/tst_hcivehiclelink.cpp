@@ -7,6 +7,7 @@
 #include "HciSession.h"
 #include "HciTelemetryMapper.h"
 #include "HciVehicleLink.h"
+#include "Route.h"
 #include "Messages.pb.h"
 #include "SimVciListener.h"
 #include "SimVciVehicle.h"
@@ -189,6 +190,39 @@ void TstHciVehicleLink::telemetryAndCommands()
     QCOMPARE(v.linkState(), VehicleLink::State::Disconnected);
 }
 
+namespace {
+
+mission::Route routeOf(std::initializer_list<std::array<double, 4>> points) // lat, lon (deg), alt AGL, speed
+{
+    mission::Route r;
+    r.settings.name = QStringLiteral("link test");
+    for (const auto &p : points) {
+        mission::Waypoint w;
+        w.position = {p[0], p[1]};
+        w.altitude = p[2];
+        w.speed = p[3];
+        r.segments.push_back(w);
+    }
+    return r;
+}
+
+struct Prepared
+{
+    bool done = false;
+    CommandResult result;
+    PreparedMission mission;
+    VehicleLink::PrepareDone callback()
+    {
+        return [this](const CommandResult &r, const PreparedMission &m) {
+            done = true;
+            result = r;
+            mission = m;
+        };
+    }
+};
+
+} // namespace
+
 void TstHciVehicleLink::missionUpload()
 {
     Server sim;
@@ -197,21 +231,45 @@ void TstHciVehicleLink::missionUpload()
     HciVehicleLink link(&op.client, op.vehicle("EMU-102"));
     link.start();
     QSignalSpy missionChanged(&link, &VehicleLink::missionChanged);
-    Result upload, bad, download;
-    link.uploadMission({{56.9499 * kRad, 24.1052 * kRad, 20, 6}, {56.9501 * kRad, 24.1056 * kRad, 25, 0}}, upload.callback());
+    // The server processes the route against the vehicle's profile; what comes back is uploaded.
+    Prepared prepared, bad;
+    link.prepareMission(routeOf({{56.9499, 24.1052, 20, 6}, {56.9501, 24.1056, 25, 5}}), prepared.callback());
+    QTRY_VERIFY_WITH_TIMEOUT(prepared.done, 15000);
+    QVERIFY2(prepared.result.ok, qPrintable(prepared.result.message));
+    QVERIFY(prepared.mission.native);
+    QVERIFY(prepared.mission.items.size() >= 2);
+    QVERIFY(std::abs(prepared.mission.items.back().longitude - 24.1056 * kRad) < 1e-7);
+    QCOMPARE(missionChanged.count(), 0); // nothing was sent yet
+
+    std::vector<UploadStep> steps;
+    VehicleLink::UploadObserver observer;
+    observer.step = [&](UploadStep step, int, int) {
+        if (steps.empty() || steps.back() != step)
+            steps.push_back(step);
+    };
+    Result upload;
+    link.uploadMission(prepared.mission, observer, upload.callback());
     QTRY_VERIFY_WITH_TIMEOUT(upload.done, 15000);
     QVERIFY2(upload.result.ok, qPrintable(upload.result.message));
     QCOMPARE(missionChanged.count(), 1);
+    QCOMPARE(steps, (std::vector<UploadStep>{UploadStep::Locking, UploadStep::Sending, UploadStep::Releasing}));
     const sim::SimVehicle *emu = sim.world.vehicle(link.vehicleObjectId());
-    QCOMPARE(emu->model().mission().size(), size_t(2));
-    QVERIFY(std::abs(emu->model().mission()[1].longitude - 24.1056) < 1e-9);
-    QCOMPARE(emu->model().mission()[0].speed, 6.0);
+    QVERIFY(emu->model().mission().size() >= 2);
+    QVERIFY(std::abs(emu->model().mission().back().longitude - 24.1056) < 1e-7);
+    QVERIFY(!sim.world.locks().holder(QStringLiteral("Vehicle"), link.vehicleObjectId())); // released
 
-    link.uploadMission({{56.95 * kRad, 24.1 * kRad, -30, 0}}, bad.callback());
+    // Refused by the server's processing, naming the segment; nothing to upload.
+    link.prepareMission(routeOf({{56.95, 24.1, -30, 5}}), bad.callback());
     QTRY_VERIFY_WITH_TIMEOUT(bad.done, 15000);
     QVERIFY(!bad.result.ok);
-    QVERIFY2(bad.result.message.startsWith(QLatin1String("Waypoint 1: ")), qPrintable(bad.result.message));
+    QVERIFY2(bad.result.message.startsWith(QLatin1String("Segment 1: ")), qPrintable(bad.result.message));
     QVERIFY2(bad.result.message.contains(QLatin1String("below the ground")), qPrintable(bad.result.message));
+
+    // A mission prepared by another link (no server plan) is refused, not half-sent.
+    Result foreign;
+    link.uploadMission(PreparedMission{prepared.mission.items, {}, {}}, {}, foreign.callback());
+    QTRY_VERIFY(foreign.done);
+    QVERIFY(!foreign.result.ok);
 
     bool refused = false;
     link.downloadMission([&](const CommandResult &r, const std::vector<MissionItem> &) { refused = !r.ok; });

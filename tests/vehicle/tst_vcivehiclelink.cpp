@@ -156,10 +156,10 @@ void TstVciVehicleLink::commandsThroughTheModel()
 void TstVciVehicleLink::missionUploadDownloadAndFlight()
 {
     startLink(QStringLiteral("tcp://127.0.0.1:%1").arg(m_listener->port()));
-    const std::vector<MissionItem> plan = {{56.9499 * kRad, 24.1052 * kRad, 10, 12}, {56.9499 * kRad, 24.1058 * kRad, 14, 0}};
+    const std::vector<MissionItem> plan = {{56.9499 * kRad, 24.1052 * kRad, 10, 12, 0, {}}, {56.9499 * kRad, 24.1058 * kRad, 14, 0, 0, {}}};
     QSignalSpy missionChanged(m_link.get(), &VehicleLink::missionChanged);
     Result upload;
-    m_link->uploadMission(plan, upload.callback());
+    m_link->uploadMission(PreparedMission{plan, {}, {}}, {}, upload.callback());
     QTRY_VERIFY(upload.done);
     QVERIFY2(upload.result.ok, qPrintable(upload.result.message));
     QTRY_VERIFY(missionChanged.count() >= 1);
@@ -188,7 +188,7 @@ void TstVciVehicleLink::missionUploadDownloadAndFlight()
     QVERIFY(std::abs(m_vehicle->position().longitude() - 24.1058) < 1e-4);
 
     Result bad;
-    m_link->uploadMission({{2.0, 0.1, 10, 0}}, bad.callback()); // latitude beyond the pole
+    m_link->uploadMission(PreparedMission{{{2.0, 0.1, 10, 0, 0, {}}}, {}, {}}, {}, bad.callback()); // latitude beyond the pole
     QTRY_VERIFY(bad.done);
     QVERIFY(!bad.result.ok);
     QVERIFY2(bad.result.message.contains(QLatin1String("waypoints[0].latitude")), qPrintable(bad.result.message));

@@ -3,14 +3,25 @@ import QtQuick.Controls
 import QtQuick.Layouts
 import Sortie.Ui
 
-// Commands to the chosen vehicle. The ones where a mistake is dangerous ask first; each one's
-// result shows beside the bar. `goMode` is on while the operator picks a point on the map.
+// Commands to the chosen vehicle. The ones where a mistake is dangerous ask first (the policy says
+// which); each one's result shows beside the bar. `goMode` is on while the operator picks a point on the map.
 ToolBar {
     id: bar
     required property Vehicle vehicle      // null: none chosen
     required property VehicleFleet fleet   // null: no client layer
     property bool goMode: false
     property var pending: null
+
+    // Which commands ask, what they ask and with what arguments they go: the fleet's CommandPolicy.
+    readonly property var policy: bar.fleet ? bar.fleet.commands : null
+    function command(name) {
+        if (!bar.vehicle || !bar.policy)
+            return
+        if (bar.policy.needsConfirmation(name, bar.vehicle))
+            bar.confirm(bar.policy.confirmation(name, bar.vehicle), () => bar.policy.send(name, bar.vehicle))
+        else
+            bar.policy.send(name, bar.vehicle)
+    }
 
     function confirm(question, action) {
         bar.pending = action
@@ -41,15 +52,17 @@ ToolBar {
         Layout.fillWidth: true
         spacing: 4
         enabled: bar.vehicle !== null
-        Button { objectName: "armButton"; text: qsTr("Arm"); onClicked: bar.confirm(qsTr("Arm %1? Its motors may start.").arg(bar.vehicle.name), () => bar.vehicle.arm()) }
-        Button { objectName: "disarmButton"; text: qsTr("Disarm"); onClicked: bar.confirm(qsTr("Disarm %1? In the air it would fall.").arg(bar.vehicle.name), () => bar.vehicle.disarm()) }
-        Button { objectName: "takeoffButton"; text: qsTr("Take off"); onClicked: bar.confirm(qsTr("Take off with %1 to 10 m?").arg(bar.vehicle.name), () => bar.vehicle.takeoff(10)) }
-        Button { objectName: "autoButton"; text: qsTr("Auto"); onClicked: bar.vehicle.setMode("Auto")
+        Button { objectName: "armButton"; text: qsTr("Arm"); onClicked: bar.command("arm") }
+        Button { objectName: "disarmButton"; text: qsTr("Disarm"); onClicked: bar.command("disarm") }
+        Button { objectName: "takeoffButton"; text: qsTr("Take off"); onClicked: bar.command("takeoff")
+                 ToolTip.visible: hovered
+                 ToolTip.text: bar.vehicle ? qsTr("Climb to %1 m above home").arg(bar.policy.takeoffAltitude(bar.vehicle)) : "" }
+        Button { objectName: "autoButton"; text: qsTr("Auto"); onClicked: bar.command("auto")
                  ToolTip.visible: hovered; ToolTip.text: qsTr("Fly the uploaded mission") }
-        Button { objectName: "pauseButton"; text: qsTr("Pause"); onClicked: bar.vehicle.setMode("Hold") }
-        Button { objectName: "resumeButton"; text: qsTr("Resume"); onClicked: bar.vehicle.setMode("Auto") }
-        Button { objectName: "landButton"; text: qsTr("Land"); onClicked: bar.confirm(qsTr("Land %1 where it is?").arg(bar.vehicle.name), () => bar.vehicle.land()) }
-        Button { objectName: "homeButton"; text: qsTr("Return home"); onClicked: bar.confirm(qsTr("Send %1 home?").arg(bar.vehicle.name), () => bar.vehicle.returnHome()) }
+        Button { objectName: "pauseButton"; text: qsTr("Pause"); onClicked: bar.command("hold") }
+        Button { objectName: "resumeButton"; text: qsTr("Resume"); onClicked: bar.command("auto") }
+        Button { objectName: "landButton"; text: qsTr("Land"); onClicked: bar.command("land") }
+        Button { objectName: "homeButton"; text: qsTr("Return home"); onClicked: bar.command("return_home") }
         Button {
             objectName: "goButton"
             text: qsTr("Go here…")

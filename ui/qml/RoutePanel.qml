@@ -96,12 +96,19 @@ Pane {
                 Layout.fillWidth: true
                 Layout.preferredWidth: 120
                 displayText: currentIndex < 0 ? qsTr("Vehicle…") : currentText
-                model: panel.missions ? panel.missions.vehicles : null
+                model: panel.missions ? panel.missions.fleet : null // every vehicle, HCI and VCI
                 textRole: "name"
-                valueRole: "objectId"
+                valueRole: "vehicleId"
             }
-            Button { objectName: "uploadButton"; text: qsTr("Upload"); enabled: vehiclePicker.currentIndex >= 0
+            Button { objectName: "uploadButton"; text: qsTr("Upload"); enabled: vehiclePicker.currentIndex >= 0 && !panel.missions.uploader.busy
                      onClicked: panel.missions.upload(vehiclePicker.currentValue) }
+            Button { objectName: "cancelUploadButton"; text: qsTr("Cancel"); visible: panel.missions.uploader.canCancel
+                     onClicked: panel.missions.uploader.cancel() }
+        }
+
+        UploadQuestion {
+            uploader: panel.missions ? panel.missions.uploader : null
+            onSaveAndUpload: panel.missions.saveAndUpload()
         }
 
         Frame {

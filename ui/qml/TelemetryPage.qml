@@ -232,6 +232,11 @@ Page {
                 windowSeconds: [60, 300, 1800][windowPicker.currentIndex]
                 textColor: page.palette.windowText
             }
+            CommandLogView {
+                Layout.fillWidth: true
+                Layout.preferredHeight: 150
+                log: page.fleet ? page.fleet.commandLog : null
+            }
         }
     }
 }

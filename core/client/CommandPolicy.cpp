@@ -1,0 +1,124 @@
+#include "CommandPolicy.h"
+
+#include <QSettings>
+
+#include <cmath>
+
+namespace sortie::client {
+
+namespace {
+const QString kSettingsKey = QStringLiteral("commands/takeoffAltitude");
+
+bool validAltitude(double metres)
+{
+    return std::isfinite(metres) && metres >= CommandPolicy::kMinTakeoffAltitude && metres <= CommandPolicy::kMaxTakeoffAltitude;
+}
+
+// On the ground for sure: telemetry says so and is fresh.
+bool knownOnGround(const vehicle::Vehicle *v)
+{
+    if (!v || v->isStale(vehicle::TelemetryField::AltitudeAgl))
+        return false;
+    const double agl = v->altitudeAgl();
+    return std::isfinite(agl) && agl < 0.5;
+}
+} // namespace
+
+CommandPolicy::CommandPolicy(QObject *parent)
+    : QObject(parent)
+{
+    const double stored = QSettings().value(kSettingsKey, m_defaultTakeoffAltitude).toDouble();
+    if (validAltitude(stored))
+        m_defaultTakeoffAltitude = stored;
+}
+
+void CommandPolicy::setDefaultTakeoffAltitude(double metres)
+{
+    if (!validAltitude(metres) || metres == m_defaultTakeoffAltitude)
+        return;
+    m_defaultTakeoffAltitude = metres;
+    QSettings().setValue(kSettingsKey, metres);
+    emit defaultTakeoffAltitudeChanged();
+}
+
+QVariantList CommandPolicy::modes() const
+{
+    QVariantList list;
+    for (const char *name : {"auto", "hold", "guided", "manual", "return_home", "land"})
+        list.append(QVariantMap{{QStringLiteral("name"), QString::fromLatin1(name)}, {QStringLiteral("label"), modeLabel(QString::fromLatin1(name))}});
+    return list;
+}
+
+QString CommandPolicy::modeLabel(const QString &mode) const
+{
+    switch (vehicle::modeFromName(mode.toStdString())) {
+    case vehicle::FlightMode::Manual: return tr("Manual");
+    case vehicle::FlightMode::Hold: return tr("Hold");
+    case vehicle::FlightMode::Takeoff: return tr("Taking off");
+    case vehicle::FlightMode::Auto: return tr("Auto (fly the mission)");
+    case vehicle::FlightMode::Guided: return tr("Guided");
+    case vehicle::FlightMode::Land: return tr("Land");
+    case vehicle::FlightMode::ReturnHome: return tr("Return home");
+    case vehicle::FlightMode::Unknown: break;
+    }
+    return mode.isEmpty() ? tr("Unknown") : mode;
+}
+
+double CommandPolicy::takeoffAltitude(const vehicle::Vehicle *vehicle) const
+{
+    if (vehicle) {
+        bool ok = false;
+        const double own = vehicle->parameters().value(QStringLiteral("takeoff_altitude")).toDouble(&ok);
+        if (ok && validAltitude(own))
+            return own;
+    }
+    return m_defaultTakeoffAltitude;
+}
+
+bool CommandPolicy::needsConfirmation(const QString &command, const vehicle::Vehicle *vehicle) const
+{
+    if (command == QLatin1String("arm") || command == QLatin1String("takeoff") || command == QLatin1String("auto"))
+        return true;
+    if (command == QLatin1String("disarm"))
+        return !knownOnGround(vehicle);
+    return false;
+}
+
+QString CommandPolicy::confirmation(const QString &command, const vehicle::Vehicle *vehicle) const
+{
+    if (!needsConfirmation(command, vehicle))
+        return {};
+    const QString name = vehicle ? vehicle->name() : tr("the vehicle");
+    if (command == QLatin1String("arm"))
+        return tr("Arm %1? Its motors may start.").arg(name);
+    if (command == QLatin1String("disarm"))
+        return tr("Disarm %1? It may be in the air, and would fall.").arg(name);
+    if (command == QLatin1String("takeoff"))
+        return tr("Take off with %1 to %2 m above home?").arg(name).arg(takeoffAltitude(vehicle), 0, 'f', 0);
+    const int count = vehicle ? int(vehicle->mission().size()) : 0;
+    return count > 0 ? tr("Start the mission on %1 (%n waypoint(s))?", nullptr, count).arg(name)
+                     : tr("Start the mission on %1? Sortie has not seen its mission.").arg(name);
+}
+
+bool CommandPolicy::send(const QString &command, vehicle::Vehicle *vehicle) const
+{
+    if (!vehicle)
+        return false;
+    if (command == QLatin1String("arm"))
+        vehicle->arm();
+    else if (command == QLatin1String("disarm"))
+        vehicle->disarm();
+    else if (command == QLatin1String("takeoff"))
+        vehicle->takeoff(takeoffAltitude(vehicle));
+    else if (command == QLatin1String("land"))
+        vehicle->land();
+    else if (command == QLatin1String("return_home"))
+        vehicle->returnHome();
+    else if (vehicle::modeFromName(command.toStdString()) != vehicle::FlightMode::Unknown)
+        vehicle->setMode(command);
+    else
+        return false;
+    return true;
+}
+
+} // namespace sortie::client

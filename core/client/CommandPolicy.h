@@ -1,0 +1,52 @@
+#pragma once
+
+#include "Vehicle.h"
+
+#include <QObject>
+#include <QVariantList>
+
+namespace sortie::client {
+
+// The rules for commanding a vehicle, in one place the views bind to: which commands ask first
+// (and what they ask), the take-off altitude (the vehicle's own `takeoff_altitude` parameter when
+// it reports one, else the operator's setting), and the flight modes with the names the operator
+// reads. Commands are named as VCI's /state/mode and the buttons name them: "arm", "disarm",
+// "takeoff", "auto", "hold", "land", "return_home", "guided", "manual".
+class CommandPolicy : public QObject
+{
+    Q_OBJECT
+    // The take-off altitude when the vehicle does not say, m above home (2..500; 20 by default).
+    Q_PROPERTY(double defaultTakeoffAltitude READ defaultTakeoffAltitude WRITE setDefaultTakeoffAltitude NOTIFY defaultTakeoffAltitudeChanged)
+    // [{name: "auto", label: "Auto (fly the mission)"}, ...] in the order a mode picker lists them.
+    Q_PROPERTY(QVariantList modes READ modes CONSTANT)
+
+public:
+    explicit CommandPolicy(QObject *parent = nullptr);
+
+    double defaultTakeoffAltitude() const { return m_defaultTakeoffAltitude; }
+    void setDefaultTakeoffAltitude(double metres);
+    QVariantList modes() const;
+
+    Q_INVOKABLE double takeoffAltitude(const sortie::vehicle::Vehicle *vehicle) const;
+    // Arm, take-off and starting the mission ask; so does disarming unless the vehicle is known to
+    // be on the ground. Land, hold and return home never wait for a dialog: they are what an
+    // operator reaches for when something goes wrong.
+    Q_INVOKABLE bool needsConfirmation(const QString &command, const sortie::vehicle::Vehicle *vehicle) const;
+    // The question to ask, naming the vehicle and what will happen; empty when none is asked.
+    Q_INVOKABLE QString confirmation(const QString &command, const sortie::vehicle::Vehicle *vehicle) const;
+    // Sends the command with the policy's arguments (take-off altitude, the mode). False for a name
+    // that is not a command.
+    Q_INVOKABLE bool send(const QString &command, sortie::vehicle::Vehicle *vehicle) const;
+    Q_INVOKABLE QString modeLabel(const QString &mode) const;
+
+    static constexpr double kMinTakeoffAltitude = 2;
+    static constexpr double kMaxTakeoffAltitude = 500;
+
+signals:
+    void defaultTakeoffAltitudeChanged();
+
+private:
+    double m_defaultTakeoffAltitude = 20;
+};
+
+} // namespace sortie::client
