@@ -99,6 +99,7 @@ private slots:
         QVERIFY(layer);
         layer->setCurrentIndex(0);
         QTRY_VERIFY_WITH_TIMEOUT(m_client->fleet().vehicleAt(0)->position().isValid(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(std::isfinite(m_client->fleet().vehicleAt(0)->batteryVoltage()), 10000);
     }
 
     void cleanupTestCase()
@@ -130,6 +131,8 @@ private slots:
         for (const auto &[page, name] : {std::pair{0, "login"}, {1, "mission"}, {2, "fly"}}) {
             m_client->showPage(page);
             check(QString::fromLatin1(name) + suffix, window->contentItem());
+            if (QTest::currentTestFailed())
+                return;
         }
 
         m_client->showPage(2);
@@ -137,6 +140,8 @@ private slots:
             openPopup(dialog);
             check(QString::fromLatin1(dialog) + suffix, popupItem(dialog));
             closePopup(dialog);
+            if (QTest::currentTestFailed())
+                return;
         }
         QObject *confirm = m_client->find<QObject>(QStringLiteral("commandConfirmDialog"));
         QVERIFY(confirm);
