@@ -129,6 +129,24 @@ private slots:
         QCOMPARE(status.progressText(), QStringLiteral("mission complete"));
     }
 
+    void homeIsTheTakeOffPointWhenNotReported()
+    {
+        vehicle::Vehicle v(nullptr);
+        QVERIFY(!ui::FlightStatus::homeOf(v).isValid());
+        // An HCI vehicle reports no home: where it was armed is home, also after it landed.
+        v.ingest({{F::Latitude, 56.95 * kRad, 1000}, {F::Longitude, 24.10 * kRad, 1000}, {F::Armed, 0, 1000}});
+        QVERIFY(!ui::FlightStatus::homeOf(v).isValid());
+        v.ingest({{F::Latitude, 56.96 * kRad, 2000}, {F::Longitude, 24.11 * kRad, 2000}, {F::Armed, 1, 2000}});
+        v.ingest({{F::Latitude, 56.97 * kRad, 3000}, {F::Longitude, 24.12 * kRad, 3000}, {F::Armed, 1, 3000}});
+        v.ingest({{F::Armed, 0, 4000}});
+        QGeoCoordinate home = ui::FlightStatus::homeOf(v);
+        QVERIFY(std::abs(home.latitude() - 56.96) < 1e-9 && std::abs(home.longitude() - 24.11) < 1e-9);
+        // A reported home wins.
+        v.ingest({{F::HomeLatitude, 56.9 * kRad, 5000}, {F::HomeLongitude, 24.0 * kRad, 5000}});
+        home = ui::FlightStatus::homeOf(v);
+        QVERIFY(std::abs(home.latitude() - 56.9) < 1e-9 && std::abs(home.longitude() - 24.0) < 1e-9);
+    }
+
     void instrumentsDrawOffscreen()
     {
         test::QuickScene scene(kInstruments, QSize(320, 160));

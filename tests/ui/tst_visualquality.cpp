@@ -99,12 +99,41 @@ private slots:
         QVERIFY(layer);
         layer->setCurrentIndex(0);
         QTRY_VERIFY_WITH_TIMEOUT(m_client->fleet().vehicleAt(0)->position().isValid(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(std::isfinite(m_client->fleet().vehicleAt(0)->batteryVoltage()), 10000);
     }
 
     void cleanupTestCase()
     {
         m_client.reset();
         QGuiApplication::setPalette(QPalette());
+    }
+
+    // The checker itself finds each fault on purpose-made texts, and leaves an elided one alone.
+    void theCheckerFindsEachFault()
+    {
+        const QByteArray qml = R"(
+import QtQuick
+Item {
+    width: 400; height: 300
+    Text { objectName: "clipped"; y: 0; width: 40; text: "SpeedActions" }
+    Text { objectName: "one"; y: 40; text: "overlapping one" }
+    Text { objectName: "two"; x: 30; y: 45; text: "overlapping two" }
+    Text { objectName: "glyph"; y: 100 }
+    Text { objectName: "elided"; y: 150; width: 40; elide: Text.ElideRight; text: "elided on purpose" }
+    Text { objectName: "wide"; x: 350; y: 200; text: "past the window's edge" }
+}
+)";
+        test::QuickScene scene(qml, QSize(400, 300));
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        const char32_t unassigned = 0x10FFFD; // a private-use code point no font draws
+        scene.find(QStringLiteral("glyph"))->setProperty("text", QStringLiteral("a ") + QString::fromUcs4(&unassigned, 1));
+        QVERIFY(test::waitForFrame(&scene.view()));
+        const QString found = test::inspectTexts(scene.root()).join(QLatin1Char('\n'));
+        QVERIFY2(found.contains(QStringLiteral("clipped: “SpeedActions”")), qPrintable(found));
+        QVERIFY2(found.contains(QStringLiteral("overlapping: “overlapping one” and “overlapping two”")), qPrintable(found));
+        QVERIFY2(found.contains(QStringLiteral("missing glyph U+10fffd")), qPrintable(found));
+        QVERIFY2(found.contains(QStringLiteral("out of the window: “past the window's edge”")), qPrintable(found));
+        QVERIFY2(!found.contains(QStringLiteral("elided on purpose")), qPrintable(found));
     }
 
     void everyViewAndDialog_data()
@@ -130,6 +159,8 @@ private slots:
         for (const auto &[page, name] : {std::pair{0, "login"}, {1, "mission"}, {2, "fly"}}) {
             m_client->showPage(page);
             check(QString::fromLatin1(name) + suffix, window->contentItem());
+            if (QTest::currentTestFailed())
+                return;
         }
 
         m_client->showPage(2);
@@ -137,6 +168,8 @@ private slots:
             openPopup(dialog);
             check(QString::fromLatin1(dialog) + suffix, popupItem(dialog));
             closePopup(dialog);
+            if (QTest::currentTestFailed())
+                return;
         }
         QObject *confirm = m_client->find<QObject>(QStringLiteral("commandConfirmDialog"));
         QVERIFY(confirm);

@@ -28,6 +28,21 @@ double armedFor(const vehicle::Vehicle &v)
     return double(newest - armed.at(first).time) / 1000.0;
 }
 
+// The first sample of the latest run of "armed", or -1.
+int64_t armedSince(const vehicle::Vehicle &v)
+{
+    const auto &armed = v.history().series(TelemetryField::Armed);
+    size_t last = armed.size();
+    while (last > 0 && armed.at(last - 1).value == 0)
+        --last;
+    if (last == 0)
+        return -1;
+    size_t first = last - 1;
+    while (first > 0 && armed.at(first - 1).value != 0)
+        --first;
+    return armed.at(first).time;
+}
+
 double positionRate(const vehicle::Vehicle &v)
 {
     const auto &series = v.history().series(TelemetryField::Latitude);
@@ -42,6 +57,22 @@ double positionRate(const vehicle::Vehicle &v)
     return double(samples - 1) / span;
 }
 } // namespace
+
+QGeoCoordinate FlightStatus::homeOf(const vehicle::Vehicle &v)
+{
+    if (v.home().isValid())
+        return v.home();
+    const int64_t since = armedSince(v);
+    if (since < 0)
+        return {};
+    const auto &lat = v.history().series(TelemetryField::Latitude);
+    const auto &lon = v.history().series(TelemetryField::Longitude);
+    const size_t i = lat.lowerBound(since), j = lon.lowerBound(since);
+    if (i >= lat.size() || j >= lon.size())
+        return {};
+    constexpr double kDeg = 180.0 / 3.14159265358979323846;
+    return QGeoCoordinate(lat.at(i).value * kDeg, lon.at(j).value * kDeg);
+}
 
 FlightStatus::FlightStatus(QObject *parent)
     : QObject(parent)
@@ -90,6 +121,7 @@ void FlightStatus::refresh()
     if (!v) {
         m_progress = {};
         m_complete = false;
+        m_home = {};
         m_distanceToHome = m_bearingToHome = m_flightSeconds = m_telemetryRate = m_roll = m_pitch = qQNaN();
         m_battery = BatteryState::Unknown;
         emit changed();
@@ -103,7 +135,8 @@ void FlightStatus::refresh()
     if (m_progress.count == 0)
         m_progress.count = v->missionCount();
     m_complete = m_progress.isComplete() || v->missionState() == QLatin1String("complete");
-    const QGeoCoordinate home = v->home();
+    const QGeoCoordinate home = homeOf(*v);
+    m_home = home;
     m_distanceToHome = position.isValid() && home.isValid() ? position.distanceTo(home) : qQNaN();
     m_bearingToHome = vehicle::bearingBetween(position, home);
     m_flightSeconds = armedFor(*v);

@@ -32,6 +32,7 @@ class FlightStatus : public QObject
     Q_PROPERTY(double distanceLeft READ distanceLeft NOTIFY changed)         // m
     Q_PROPERTY(double timeLeft READ timeLeft NOTIFY changed)                 // s
     Q_PROPERTY(double bearingToNext READ bearingToNext NOTIFY changed)       // rad
+    Q_PROPERTY(QGeoCoordinate home READ home NOTIFY changed)                 // reported, else the take-off point
     Q_PROPERTY(double distanceToHome READ distanceToHome NOTIFY changed)     // m
     Q_PROPERTY(double bearingToHome READ bearingToHome NOTIFY changed)       // rad
     Q_PROPERTY(double flightSeconds READ flightSeconds NOTIFY changed)       // since armed; NaN when disarmed
@@ -64,12 +65,16 @@ public:
     double distanceLeft() const { return m_progress.distanceLeft; }
     double timeLeft() const { return m_progress.timeLeft; }
     double bearingToNext() const { return m_progress.bearingToActive; }
+    QGeoCoordinate home() const { return m_home; }
     double distanceToHome() const { return m_distanceToHome; }
     double bearingToHome() const { return m_bearingToHome; }
     double flightSeconds() const { return m_flightSeconds; }
     double telemetryRate() const { return m_telemetryRate; }
     BatteryState batteryState() const { return m_battery; }
 
+    // Home as the vehicle reports it; for one that does not (HCI), where it was when it was
+    // last armed: its take-off point. Invalid when neither is known.
+    static QGeoCoordinate homeOf(const vehicle::Vehicle &vehicle);
     // Judges a battery against the levels: the remaining fraction when reported, else the voltage.
     static BatteryState judgeBattery(double remaining, double voltage, double low, double critical,
                                      double lowVoltage, double criticalVoltage);
@@ -88,6 +93,7 @@ private:
     bool m_complete = false;
     double m_roll = qQNaN();
     double m_pitch = qQNaN();
+    QGeoCoordinate m_home;
     double m_distanceToHome = qQNaN();
     double m_bearingToHome = qQNaN();
     double m_flightSeconds = qQNaN();

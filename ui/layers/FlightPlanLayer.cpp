@@ -1,5 +1,6 @@
 #include "FlightPlanLayer.h"
 
+#include "FlightStatus.h"
 #include "MissionProgress.h"
 #include "Vehicle.h"
 #include "VehiclePalette.h"
@@ -66,11 +67,8 @@ void FlightPlanLayer::reload()
             emit plansChanged();
             repaint();
         });
-        // Telemetry moves the vehicle's line to its waypoint and, now and then, the active waypoint.
-        connect(v, &vehicle::Vehicle::telemetryChanged, this, [this] {
-            if (planCount() > 0)
-                repaint();
-        });
+        // Telemetry moves the vehicle's line to its waypoint, the active waypoint, the take-off point.
+        connect(v, &vehicle::Vehicle::telemetryChanged, this, &FlightPlanLayer::repaint);
     }
     emit plansChanged();
     repaint();
@@ -124,6 +122,21 @@ void FlightPlanLayer::paint(QPainter *painter)
     if (m_current >= 0 && m_current < int(m_vehicles.size()))
         order.push_back(m_current); // over the others
     const QColor done(0x9e, 0x9e, 0x9e);
+    // The take-off point of vehicles that report no home (the vehicle layer draws reported homes).
+    for (int row : order) {
+        const vehicle::Vehicle *v = vehicleAt(row);
+        if (!v || v->home().isValid())
+            continue;
+        const QGeoCoordinate takeoff = FlightStatus::homeOf(*v);
+        if (!takeoff.isValid())
+            continue;
+        const QRectF box(view.geoToScreen(takeoff) - QPointF(7, 7), QSizeF(14, 14));
+        painter->setPen(QPen(Qt::white, 1.5));
+        painter->setBrush(vehicleColor(row).darker(120));
+        painter->drawRect(box);
+        painter->setPen(Qt::white);
+        painter->drawText(box, Qt::AlignCenter, QStringLiteral("H"));
+    }
     for (int row : order) {
         const vehicle::Vehicle *v = vehicleAt(row);
         if (!v || v->mission().empty())

@@ -62,14 +62,15 @@ void VehicleLayer::watchMap()
     if (m_watchedMap) {
         m_framed = {m_watchedMap->latitude(), m_watchedMap->longitude(), m_watchedMap->zoomLevel()};
         connect(m_watchedMap, &MapView::viewportChanged, this, &VehicleLayer::onMapMoved);
-        // A map that gets its size after the vehicles came frames them then.
         // A map that gets its size after the vehicles came (a page shown later) frames them then.
-        connect(m_watchedMap, &QQuickItem::widthChanged, this, [this] {
+        auto refit = [this] {
             if (m_autoFit) {
                 m_fittedCount = 0;
                 keepCurrentInView();
             }
-        });
+        };
+        connect(m_watchedMap, &QQuickItem::widthChanged, this, refit);
+        connect(m_watchedMap, &QQuickItem::heightChanged, this, refit);
     }
 }
 
@@ -114,7 +115,8 @@ int VehicleLayer::positionedCount() const
 bool VehicleLayer::fitToMap(qreal margin)
 {
     MapView *view = map();
-    if (!view || view->width() <= 0)
+    // A map not laid out yet (a page not shown) is framed once it has its size.
+    if (!view || view->width() <= 2 * margin || view->height() <= 2 * margin)
         return false;
     double south = 90, north = -90, west = 180, east = -180;
     bool any = false;
