@@ -9,7 +9,6 @@
 #include "WpmlSchema.h"
 #include "ZipArchive.h"
 
-#include <QRegularExpression>
 #include <QXmlStreamWriter>
 
 #include <algorithm>
@@ -401,7 +400,18 @@ Result<Plan> planOf(const Route &route, const WpmlExportOptions &options, const 
 }
 
 QString num(double v) { return QString::fromLatin1(shortestNumber(v)); }
-QString coord(double v) { return QString::number(v, 'f', 9).remove(QRegularExpression(QStringLiteral("\\.?0+$"))); }
+// Degrees to 1e-9 (0.1 mm), trailing zeros dropped: "24.0735".
+QString coord(double v)
+{
+    QString s = QString::number(v, 'f', 9);
+    qsizetype end = s.size();
+    while (end > 0 && s[end - 1] == QLatin1Char('0'))
+        --end;
+    if (end > 0 && s[end - 1] == QLatin1Char('.'))
+        --end;
+    s.truncate(end);
+    return s;
+}
 
 class Writer
 {

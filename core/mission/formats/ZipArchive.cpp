@@ -34,7 +34,7 @@ quint32 crcOf(const QByteArray &data)
 std::optional<QByteArray> deflateRaw(const QByteArray &data)
 {
     z_stream z{};
-    if (deflateInit2(&z, Z_BEST_COMPRESSION, Z_DEFLATED, -MAX_WBITS, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+    if (deflateInit2(&z, Z_DEFAULT_COMPRESSION, Z_DEFLATED, -MAX_WBITS, 8, Z_DEFAULT_STRATEGY) != Z_OK)
         return std::nullopt;
     QByteArray out(int(deflateBound(&z, uLong(data.size()))), Qt::Uninitialized);
     z.next_in = reinterpret_cast<Bytef *>(const_cast<char *>(data.constData()));
