@@ -66,10 +66,23 @@ class TestUiFlows : public QObject
     std::unique_ptr<QQmlApplicationEngine> m_engine;
     QQuickWindow *m_window = nullptr;
 
+    // By objectName, through QObject children and the item tree (a Repeater's delegates are only in the latter).
+    static QQuickItem *findItem(QQuickItem *root, const QString &name)
+    {
+        for (QQuickItem *child : root->childItems()) {
+            if (child->objectName() == name)
+                return child;
+            if (QQuickItem *found = findItem(child, name))
+                return found;
+        }
+        return nullptr;
+    }
     template<typename T = QQuickItem>
     T *find(const char *name) const
     {
         T *found = m_window->findChild<T *>(QString::fromLatin1(name));
+        if (!found)
+            found = qobject_cast<T *>(findItem(m_window->contentItem(), QString::fromLatin1(name)));
         if (!found)
             qWarning("no item named %s", name);
         return found;

@@ -10,12 +10,11 @@
 
 namespace sortie::ui {
 
-struct MissionEnumsForeign
-{
-    Q_GADGET
-    QML_FOREIGN_NAMESPACE(sortie::mission::MissionEnums)
-    QML_NAMED_ELEMENT(MissionEnums)
-};
+namespace MissionEnumsForeign {
+Q_NAMESPACE
+QML_FOREIGN_NAMESPACE(sortie::mission::MissionEnums)
+QML_NAMED_ELEMENT(MissionEnums)
+} // namespace MissionEnumsForeign
 
 struct SegmentEditorModelForeign
 {

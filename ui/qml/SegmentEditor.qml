@@ -91,7 +91,7 @@ GroupBox {
                     visible: field.widget === "angle"
                     from: 0
                     to: 360
-                    value: field.value === undefined ? 0 : field.value
+                    value: field.widget === "angle" && field.value !== undefined ? Number(field.value) : 0
                     implicitWidth: 44
                     implicitHeight: 44
                     onMoved: box.editor.set(field.index, Math.round(value), MissionEnums.Continuing)
