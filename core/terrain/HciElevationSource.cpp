@@ -124,7 +124,7 @@ void HciElevationSource::samplePath(const SampledPath &path, std::vector<Elevati
         return;
     const QByteArray key = pathKey(path);
     if (const auto it = m_profiles.constFind(key); it != m_profiles.cend()) {
-        const std::vector<float> &values = *it;
+        const std::vector<double> &values = *it;
         for (size_t i = 0; i < out.size() && i < values.size(); ++i)
             out[i] = std::isnan(values[i]) ? ElevationSample::noData() : ElevationSample::value(values[i]);
         return;
@@ -188,8 +188,15 @@ void HciElevationSource::requestProfile(const QByteArray &key, const SampledPath
 void HciElevationSource::storeProfile(const QByteArray &key, const SampledPath &path, const std::vector<GeoPoint> &locations,
                                       const std::vector<double> &elevations)
 {
-    std::vector<float> values(path.points.size(), kNaN);
-    if (!locations.empty()) {
+    std::vector<double> values(path.points.size(), std::numeric_limits<double>::quiet_NaN());
+    // A server that samples the way we do (the simulator does) gives our points: take them as they are.
+    bool same = locations.size() == path.points.size();
+    for (size_t i = 0; same && i < locations.size(); ++i)
+        same = mission::geodesicDistance(locations[i], path.points[i].position) < 0.5;
+    if (same) {
+        for (size_t i = 0; i < values.size(); ++i)
+            values[i] = elevations[i];
+    } else if (!locations.empty()) {
         std::vector<double> at(locations.size(), 0.0);
         for (size_t i = 1; i < locations.size(); ++i)
             at[i] = at[i - 1] + mission::geodesicDistance(locations[i - 1], locations[i]);
@@ -203,16 +210,16 @@ void HciElevationSource::storeProfile(const QByteArray &key, const SampledPath &
             while (j + 1 < at.size() && at[j + 1] < d - 1e-6)
                 ++j;
             if (std::abs(at[j] - d) < 1e-3) {
-                values[i] = float(elevations[j]);
+                values[i] = elevations[j];
                 continue;
             }
             if (j + 1 < at.size() && at[j] <= d && d <= at[j + 1] + 1e-6) {
                 if (std::abs(at[j + 1] - d) < 1e-3) {
-                    values[i] = float(elevations[j + 1]);
+                    values[i] = elevations[j + 1];
                     continue;
                 }
                 const double f = (d - at[j]) / (at[j + 1] - at[j]);
-                values[i] = float(elevations[j] + f * (elevations[j + 1] - elevations[j]));  // NaN spreads
+                values[i] = elevations[j] + f * (elevations[j + 1] - elevations[j]);  // NaN spreads
             }
         }
     }

@@ -53,7 +53,7 @@ private:
     QHash<quint64, float> m_points;  // NaN: the server has no data there
     QHash<quint64, GeoPoint> m_queued;
     QSet<quint64> m_inFlight;
-    QHash<QByteArray, std::vector<float>> m_profiles;  // per path key, one value per sampled point
+    QHash<QByteArray, std::vector<double>> m_profiles;  // per path key, one value per sampled point
     QHash<QByteArray, bool> m_profilesAsked;
     bool m_profileInFlight = false;
     std::optional<SampledPath> m_nextProfile;

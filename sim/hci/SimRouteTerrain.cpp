@@ -40,7 +40,8 @@ struct Point
 {
     double latitude, longitude, amsl;
     int segment;
-    int number;  // 1-based among the route's waypoints
+    int number;  // 1-based among the route's flown points
+    bool landing;
 };
 
 } // namespace
@@ -61,31 +62,39 @@ void SimRouteTerrain::apply(pb::ProcessedRoute &route, const SimTerrain &terrain
     for (int s = 0; s < route.segments_size(); ++s) {
         auto *segment = route.mutable_segments(s);
         for (auto &action : *segment->mutable_segmentactions()) {
-            if (!action.has_waypoint())
-                continue;
-            auto *w = action.mutable_waypoint();
-            const double lat = w->latitude() * kDeg, lon = w->longitude() * kDeg;
-            const int number = int(points.size()) + 1;
-            const std::optional<double> ground = terrain.groundAt(lat, lon);
-            if (w->altitudeframe() == pb::AF_AGL) {
-                const double agl = w->wgs84altitude() - w->elevation();  // processed over flat ground
-                if (!ground) {
-                    fail(segment, QStringLiteral("Waypoint %1 is %2 m above the ground, but the terrain (%3) has no data there: its "
-                                                 "height above sea level is unknown")
-                                      .arg(number).arg(metres(agl), terrain.description()));
-                    continue;
+            // Waypoints, take-offs and landings are flown points; each has the same four fields.
+            auto place = [&](auto *w, bool agl, bool landing) {
+                const double lat = w->latitude() * kDeg, lon = w->longitude() * kDeg;
+                const int number = int(points.size()) + 1;
+                const std::optional<double> ground = terrain.groundAt(lat, lon);
+                if (agl || landing) {
+                    const double height = landing ? 0.0 : w->wgs84altitude() - w->elevation();  // processed over flat ground
+                    if (!ground) {
+                        fail(segment, QStringLiteral("Waypoint %1 is %2 m above the ground, but the terrain (%3) has no data there: "
+                                                     "its height above sea level is unknown")
+                                          .arg(number).arg(metres(height), terrain.description()));
+                        return;
+                    }
+                    w->set_wgs84altitude(*ground + height);
                 }
-                w->set_wgs84altitude(*ground + agl);
-            }
-            if (ground)
-                w->set_elevation(*ground);
-            else
-                w->clear_elevation();
-            points.push_back({lat, lon, w->wgs84altitude(), s, number});
+                if (ground)
+                    w->set_elevation(*ground);
+                else
+                    w->clear_elevation();
+                points.push_back({lat, lon, w->wgs84altitude(), s, number, landing});
+            };
+            if (action.has_waypoint())
+                place(action.mutable_waypoint(), action.waypoint().altitudeframe() == pb::AF_AGL, false);
+            else if (action.has_takeoff())
+                place(action.mutable_takeoff(), true, false);
+            else if (action.has_landing())
+                place(action.mutable_landing(), false, true);
         }
     }
     for (size_t i = 1; i < points.size(); ++i) {
         const Point &a = points[i - 1], &b = points[i];
+        if (b.landing)
+            continue;  // the descent to a landing meets the ground on purpose
         const terrain::SampledPath path = terrain::samplePath({{a.latitude, a.longitude}, {b.latitude, b.longitude}}, kStep);
         const double length = path.length();
         double lowest = INFINITY, at = 0;

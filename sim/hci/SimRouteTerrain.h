@@ -12,9 +12,9 @@ namespace pb = com::ugcs::ucs::proto;
 class SimTerrain;
 
 // Route processing's terrain pass, run over what SimRouteProcessor made (it knows the geometry;
-// this knows the ground). Every processed waypoint gets the ground under it as `elevation`; an AGL
-// waypoint (altitudeFrame AF_AGL, processed as flat ground + AGL) flies the real ground + AGL as
-// wgs84Altitude. Then each leg between consecutive waypoints is sampled every kStep metres: a leg
+// this knows the ground). Every processed waypoint, take-off and landing gets the ground under it as
+// `elevation`; an AGL waypoint (altitudeFrame AF_AGL, processed as flat ground + AGL) and a take-off
+// fly the real ground + their height as wgs84Altitude, a landing is on the ground. Then each leg between consecutive waypoints is sampled every kStep metres: a leg
 // closer to the ground than the profile's safe distance to terrain makes the segment it arrives in
 // RPS_INVALID with an MS_ERROR naming the leg, the distance along it and the clearance; an AGL
 // waypoint where the terrain has no data is an error too (its height is unknown).

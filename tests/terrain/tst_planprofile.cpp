@@ -124,7 +124,7 @@ private slots:
         QCOMPARE(stats.code, 2);
         QVERIFY2(stats.out.contains("error [terrain-clearance] Leg 1 (Waypoint 1 → Waypoint 2) flies"), stats.out.constData());
         // Without --dem, stats knows nothing of the ground.
-        QCOMPARE(run({QStringLiteral("stats"), path("low.waypoints")}).code, 0);
+        QVERIFY(!run({QStringLiteral("stats"), path("low.waypoints")}).out.contains("terrain-"));
     }
 
     void badInput()

@@ -58,7 +58,7 @@ private slots:
     void demTiles()
     {
         QTemporaryDir dir;
-        QVERIFY(test::writeHgt(dir.filePath("N56E024.hgt"), 1201, [](int, int) { return 33; }));
+        QVERIFY(terrain::test::writeHgt(dir.filePath("N56E024.hgt"), 1201, [](int, int) { return 33; }));
         QString error;
         auto terrain = sim::SimTerrain::fromDem(dir.path(), &error);
         QVERIFY2(terrain, qPrintable(error));

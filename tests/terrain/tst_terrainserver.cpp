@@ -139,7 +139,8 @@ private slots:
             QCOMPARE(fromServer.ground[i].status, fromTiles.ground[i].status);
             if (fromTiles.ground[i].hasValue()) {
                 ++withData;
-                QVERIFY2(std::abs(fromServer.ground[i].ground - fromTiles.ground[i].ground) < 1e-6, qPrintable(QString::number(i)));
+                QVERIFY2(std::abs(fromServer.ground[i].ground - fromTiles.ground[i].ground) < 1e-6,
+                         qPrintable(QStringLiteral("%1: %2 vs %3").arg(i).arg(fromServer.ground[i].ground, 0, 'f', 9).arg(fromTiles.ground[i].ground, 0, 'f', 9)));
             } else {
                 ++without;
             }

@@ -177,6 +177,7 @@ Page {
         }
         TerrainProfilePanel {
             id: terrainProfile
+            visible: page.elevation !== null  // the client always has one ("none" at least)
             SplitView.preferredHeight: 170
             SplitView.minimumHeight: 90
             routeModel: page.routeModel

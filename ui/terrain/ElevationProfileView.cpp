@@ -224,12 +224,13 @@ void ElevationProfileView::paint(QPainter *painter)
     {
         double ground = -std::numeric_limits<double>::infinity();
         double altitude = std::numeric_limits<double>::infinity();
-        bool hasGround = false, hasAltitude = false, low = false;
+        bool seen = false, hasGround = false, hasAltitude = false, low = false;
     };
     std::vector<Column> col(static_cast<size_t>(columns));
     for (size_t i = 0; i < p.size(); ++i) {
         const int c = std::clamp(int(xOf(p.path.points[i].distance) - plot.left()), 0, columns - 1);
         Column &k = col[size_t(c)];
+        k.seen = true;
         if (p.ground[i].hasValue()) {
             k.ground = std::max(k.ground, p.ground[i].ground);
             k.hasGround = true;
@@ -240,6 +241,26 @@ void ElevationProfileView::paint(QPainter *painter)
         }
         if (p.clearance(i) < safe)
             k.low = true;
+    }
+
+    // Columns between two samples (fewer samples than pixels) take the line between them; a gap
+    // next to a sample without data stays a gap.
+    for (int c = 0, last = -1; c < columns; ++c) {
+        if (!col[size_t(c)].seen)
+            continue;
+        if (last >= 0 && c - last > 1) {
+            const Column &a = col[size_t(last)], &b = col[size_t(c)];
+            for (int g = last + 1; g < c; ++g) {
+                const double f = double(g - last) / (c - last);
+                Column &k = col[size_t(g)];
+                k.hasGround = a.hasGround && b.hasGround;
+                k.ground = a.ground + f * (b.ground - a.ground);
+                k.hasAltitude = a.hasAltitude && b.hasAltitude;
+                k.altitude = a.altitude + f * (b.altitude - a.altitude);
+                k.low = a.low && b.low;
+            }
+        }
+        last = c;
     }
 
     painter->save();
