@@ -164,9 +164,15 @@ void FlightPlanLayer::paint(QPainter *painter)
             painter->setPen(QPen(color, 2, Qt::DashLine, Qt::RoundCap));
             painter->drawLine(view.geoToScreen(position), points[active]);
         }
+        // Numbers for the current vehicle's waypoints only (text is the costly part); the others
+        // get plain dots, and nothing off the picture is drawn.
+        const QRectF picture = QRectF(QPointF(0, 0), view.size()).adjusted(-12, -12, 12, 12);
         for (int i = 0; i < points.size(); ++i) {
+            if (!picture.contains(points[i]))
+                continue;
             const bool isActive = i == active;
-            const double radius = isActive ? 10 : 8;
+            const bool numbered = current || m_current < 0;
+            const double radius = isActive ? 10 : numbered ? 8 : 4;
             if (isActive) {
                 painter->setPen(QPen(QColor(0xff, 0xd6, 0x00), 3));
                 painter->setBrush(Qt::NoBrush);
@@ -175,6 +181,8 @@ void FlightPlanLayer::paint(QPainter *painter)
             painter->setPen(QPen(Qt::white, 1.5));
             painter->setBrush(behind(i) ? done : color);
             painter->drawEllipse(points[i], radius, radius);
+            if (!numbered && !isActive)
+                continue;
             painter->setPen(Qt::white);
             painter->drawText(QRectF(points[i] - QPointF(radius, radius), QSizeF(2 * radius, 2 * radius)), Qt::AlignCenter,
                               QString::number(i + 1));

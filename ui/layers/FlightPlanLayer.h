@@ -15,9 +15,10 @@ namespace sortie::ui {
 
 // The mission each vehicle carries (Vehicle::mission(), as uploaded to it or read back), drawn
 // under the vehicles: the legs already flown thin and dashed grey, the legs ahead in the
-// vehicle's colour, a dashed line from the vehicle to the waypoint it flies to, numbered
-// waypoints with the active one ringed. The current vehicle's plan is drawn over the others and
-// bolder. Vehicles come from a list model's `vehicleRole` (the fleet's "vehicle").
+// vehicle's colour, a dashed line from the vehicle to the waypoint it flies to, waypoints with
+// the active one ringed. The current vehicle's plan is drawn over the others, bolder and with
+// numbered waypoints (the others get dots: text is what costs when many vehicles fly missions).
+// Vehicles come from a list model's `vehicleRole` (the fleet's "vehicle").
 class FlightPlanLayer : public MapLayer
 {
     Q_OBJECT

@@ -21,6 +21,17 @@ Page {
             page.connection.connectToServer(server, user, password)
     }
 
+    // A login made elsewhere (the demo, --server) shows where and as whom in the fields.
+    Connections {
+        target: page.connection
+        function onStateChanged() {
+            if (page.connected && page.connection.server.length > 0) {
+                server.text = page.connection.server
+                user.text = page.connection.user
+            }
+        }
+    }
+
     Frame {
         anchors.centerIn: parent
         width: Math.min(parent.width - 40, 420)
