@@ -13,7 +13,7 @@ ToolBar {
     property var pending: null
 
     // Which commands ask, what they ask and with what arguments they go: the fleet's CommandPolicy.
-    readonly property var policy: bar.fleet ? bar.fleet.commands : null
+    readonly property CommandPolicy policy: bar.fleet ? bar.fleet.commands : null
     function command(name) {
         if (!bar.vehicle || !bar.policy)
             return

@@ -1,13 +1,14 @@
 import QtQuick
 import QtQuick.Controls
 import QtQuick.Layouts
+import Sortie.Ui
 
 // What was asked of the vehicles and what they answered, newest at the bottom: time, vehicle,
 // command, result. The fleet's CommandLog holds it; this only lists it.
 ColumnLayout {
     id: view
     objectName: "commandLogView"
-    required property QtObject log
+    required property CommandLog log
     spacing: 2
 
     Label { text: qsTr("Command log"); font.bold: true }

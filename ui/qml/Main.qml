@@ -13,7 +13,7 @@ ApplicationWindow {
     property ConnectionController connection: null
     property MissionController missions: null
     property VehicleFleet fleet: null
-    property QtObject elevation: null   // the terrain service (core/terrain), when there is one
+    property ElevationService elevation: null   // the terrain service (core/terrain), when there is one
     // Edits a previous run left unsaved, offered at start.
     property AutosaveRecovery recovery: null
     property string connectionState: connection ? connection.state : "Disconnected"

@@ -29,7 +29,7 @@ Page {
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
     property bool dark: false
-    property QtObject elevation: null       // the client's ElevationService, for the terrain profile
+    property ElevationService elevation: null       // the client's ElevationService, for the terrain profile
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
     readonly property var drawingTools: doc ? doc.editor.drawingTools() : []

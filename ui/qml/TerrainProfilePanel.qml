@@ -8,7 +8,7 @@ Item {
     id: panel
     property QtObject routeModel: null
     property ItemSelectionModel selectionModel: null
-    property QtObject elevation: null
+    property ElevationService elevation: null
     property alias view: view
     property alias profile: profile
     implicitHeight: 170

@@ -1,13 +1,14 @@
 import QtQuick
 import QtQuick.Controls
 import QtQuick.Layouts
+import Sortie.Ui
 
 // The one question the uploader asks before a route goes to a vehicle: its warnings and unsaved
 // edits, listed. The uploader decides when to ask and what; this only shows it and answers.
 Dialog {
     id: dialog
     objectName: "uploadQuestion"
-    required property QtObject uploader
+    required property MissionUploader uploader
     signal saveAndUpload()
 
     title: qsTr("Upload the route?")

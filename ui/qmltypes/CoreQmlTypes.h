@@ -4,6 +4,10 @@
 // declare typed properties (`required property Vehicle vehicle`) instead of `var`. The objects
 // themselves are made and wired in C++ (app/sortie, tests) and handed to the window.
 #include "AutosaveRecovery.h"
+#include "CommandLog.h"
+#include "CommandPolicy.h"
+#include "ElevationService.h"
+#include "MissionUploader.h"
 #include "ConnectionController.h"
 #include "MissionController.h"
 #include "ProcessedPlanModel.h"
@@ -119,6 +123,35 @@ struct ProcessedPlanModelForeign
     Q_GADGET
     QML_FOREIGN(sortie::mission::ProcessedPlanModel)
     QML_NAMED_ELEMENT(ProcessedPlanModel)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+
+struct MissionUploaderForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::MissionUploader)
+    QML_NAMED_ELEMENT(MissionUploader)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct CommandPolicyForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::CommandPolicy)
+    QML_NAMED_ELEMENT(CommandPolicy)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct CommandLogForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::vehicle::CommandLog)
+    QML_NAMED_ELEMENT(CommandLog)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct ElevationServiceForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::terrain::ElevationService)
+    QML_NAMED_ELEMENT(ElevationService)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 
