@@ -4,9 +4,12 @@
 #include "AutosaveRecovery.h"
 #include "ConnectionController.h"
 #include "DemoServer.h"
+#include "FleetRecording.h"
+#include "FlightRecorder.h"
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "ReplayController.h"
 #include "RouteAutosave.h"
 #include "VehicleFleet.h"
 #include "LaunchOptions.h"
@@ -50,6 +53,26 @@ QString autosaveDirectory(const sortie::app::LaunchOptions &options)
     if (options.demo)
         return QDir::temp().filePath(QStringLiteral("sortie-demo-autosave"));
     return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(QStringLiteral("autosave"));
+}
+
+// SORTIE_FLIGHTLOG_DIR, else a folder of its own for the demo, else the application data folder.
+QString flightLogDirectory(const sortie::app::LaunchOptions &options)
+{
+    const QString env = qEnvironmentVariable("SORTIE_FLIGHTLOG_DIR");
+    if (!env.isEmpty())
+        return env;
+    if (options.demo)
+        return QDir::temp().filePath(QStringLiteral("sortie-demo-flightlogs"));
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(QStringLiteral("flightlogs"));
+}
+
+// The operator's limits (settings flightlog/maxFileMB and flightlog/maxFolderMB; 0: no limit).
+sortie::flightlog::RecordingLimits recordingLimits(const QSettings &storage)
+{
+    sortie::flightlog::RecordingLimits limits;
+    limits.maxFileBytes = storage.value(QStringLiteral("flightlog/maxFileMB"), limits.maxFileBytes >> 20).toLongLong() << 20;
+    limits.maxFolderBytes = storage.value(QStringLiteral("flightlog/maxFolderMB"), limits.maxFolderBytes >> 20).toLongLong() << 20;
+    return limits;
 }
 
 } // namespace
@@ -104,6 +127,13 @@ int main(int argc, char *argv[])
     sortie::client::RouteAutosave autosave(missions.document(), autosaves);
     QObject::connect(&connection, &sortie::client::ConnectionController::ready, &autosave,
                      [&] { autosave.setServer(connection.server(), connection.user()); });
+    // Every session is recorded without the operator asking: a log per run in the data folder.
+    sortie::flightlog::FlightRecorder recorder(
+        {sortie::flightlog::FlightRecorder::sessionPath(flightLogDirectory(options)), recordingLimits(storage), 500});
+    if (QString error; !recorder.start(&error))
+        std::fprintf(stderr, "sortie: %s\n", qPrintable(error)); // flying goes on without a log
+    sortie::flightlog::FleetRecording recording(&fleet, &recorder, &session);
+    sortie::flightlog::ReplayController replay;
     sortie::app::DemoServer demo;
     if (options.demo) {
         QString error;
@@ -119,6 +149,7 @@ int main(int argc, char *argv[])
                                  {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&connection)},
                                  {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&missions)},
                                  {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&fleet)},
+                                 {QStringLiteral("replay"), QVariant::fromValue(&replay)},
                                  {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(&recovery)}});
     engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));
     if (engine.rootObjects().isEmpty())

@@ -1,9 +1,11 @@
 #include "ReplayController.h"
 
+#include "FlightLogExport.h"
 #include "FlightLogLog.h"
 
 #include <QDateTime>
 #include <QMetaEnum>
+#include <QSaveFile>
 
 #include <cmath>
 #include <numbers>
@@ -106,8 +108,9 @@ void ReplayController::setError(const QString &error)
     emit errorChanged();
 }
 
-bool ReplayController::open(const QString &path)
+bool ReplayController::open(const QString &pathOrUrl)
 {
+    const QString path = pathOrUrl.startsWith(QLatin1String("file:")) ? QUrl(pathOrUrl).toLocalFile() : pathOrUrl;
     QString error;
     auto log = FlightLog::open(path, &error);
     if (!log) {
@@ -285,6 +288,20 @@ void ReplayController::previousEvent()
     const int row = m_events.lastBefore(m_position);
     if (row >= 0)
         jumpToEvent(row);
+}
+
+QString ReplayController::exportTracks(const QString &format, const QUrl &file) const
+{
+    if (!m_log)
+        return tr("No log is open.");
+    const auto f = exportFormatFromName(format);
+    if (!f)
+        return tr("\"%1\" is not an export format (gpx, kml or csv).").arg(format);
+    QSaveFile out(file.isLocalFile() ? file.toLocalFile() : file.toString());
+    QString error;
+    if (!out.open(QIODevice::WriteOnly) || !exportLog(*m_log, *f, {}, &out, &error) || !out.commit())
+        return tr("%1 could not be written: %2").arg(out.fileName(), error.isEmpty() ? out.errorString() : error);
+    return {};
 }
 
 void ReplayController::showAt(qint64 time)

@@ -9,6 +9,7 @@
 #include <QElapsedTimer>
 #include <QObject>
 #include <QTimer>
+#include <QUrl>
 
 #include <memory>
 
@@ -64,10 +65,12 @@ class ReplayController : public QObject
     Q_PROPERTY(double progress READ progress WRITE setProgress NOTIFY positionChanged)
     Q_PROPERTY(QString positionText READ positionText NOTIFY positionChanged)
     Q_PROPERTY(QString spanText READ spanText NOTIFY loadedChanged)
+    Q_PROPERTY(double spanSeconds READ spanSeconds NOTIFY loadedChanged)
     Q_PROPERTY(bool playing READ isPlaying NOTIFY playingChanged)
     Q_PROPERTY(double speed READ speed WRITE setSpeed NOTIFY speedChanged)
     Q_PROPERTY(sortie::flightlog::ReplayFleet *fleet READ fleet CONSTANT)
     Q_PROPERTY(sortie::flightlog::ReplayEventModel *events READ events CONSTANT)
+    Q_PROPERTY(QList<double> speeds READ speeds CONSTANT)
 
 public:
     static constexpr double kMinSpeed = 1, kMaxSpeed = 50;
@@ -77,7 +80,7 @@ public:
 
     // Opens a log file; false with errorString when it cannot be read at all. A damaged log opens
     // up to its last good block, with `warning` saying where it stopped.
-    Q_INVOKABLE bool open(const QString &path);
+    Q_INVOKABLE bool open(const QString &pathOrUrl); // a path or a file: URL
     // A log built elsewhere (the server's history).
     void open(std::unique_ptr<FlightLog> log);
     Q_INVOKABLE void close();
@@ -93,6 +96,7 @@ public:
     double progress() const;
     QString positionText() const;
     QString spanText() const;
+    double spanSeconds() const { return m_log ? double(m_log->end() - m_log->start()) / 1000.0 : 0; }
     bool isPlaying() const { return m_timer.isActive(); }
     double speed() const { return m_speed; }
     ReplayFleet *fleet() { return &m_fleet; }
@@ -108,6 +112,11 @@ public:
     Q_INVOKABLE void jumpToEvent(int row);
     Q_INVOKABLE void nextEvent();
     Q_INVOKABLE void previousEvent();
+    // The speeds the timeline offers.
+    static QList<double> speeds() { return {1, 2, 5, 10, 20, 50}; }
+    // Writes the open log's tracks as "gpx", "kml" or "csv" (a local file URL or path); the error
+    // for the operator, or empty.
+    Q_INVOKABLE QString exportTracks(const QString &format, const QUrl &file) const;
     // Advances the clock as if `ms` of wall time had passed while playing (the timer calls it; so
     // do benchmarks that want no wall clock).
     void advance(qint64 ms);

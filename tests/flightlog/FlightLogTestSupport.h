@@ -4,9 +4,12 @@
 #include "FlightRecorder.h"
 #include "Geodesy.h"
 #include "Route.h"
+#include "Vehicle.h"
 #include "VehicleLink.h"
 
+#include <QDir>
 #include <QMetaObject>
+#include <QSignalSpy>
 
 #include <cmath>
 #include <numbers>
@@ -109,6 +112,49 @@ inline mission::Route routeThrough(const std::vector<mission::GeoPoint> &points,
         route.segments.push_back(w);
     }
     return route;
+}
+
+inline const std::vector<mission::GeoPoint> kLegs = {{56.9500, 24.1000}, {56.9510, 24.1000}, {56.9510, 24.1020}, {56.9500, 24.1020}};
+inline constexpr int64_t kT0 = 1'780'000'000'000;
+
+// Records two vehicles flying the legs (the second 12 m to the east) with events along the way.
+inline QString recordTwoFlights(const QString &folder, std::vector<FlightSample> *flown = nullptr)
+{
+    const QString path = QDir(folder).filePath(QStringLiteral("two.sortielog"));
+    ScriptedLink linkA(QStringLiteral("7"), QStringLiteral("EMU-101")), linkB(QStringLiteral("8"), QStringLiteral("EMU-102"));
+    vehicle::Vehicle a(&linkA), b(&linkB);
+    flightlog::FlightRecorder recorder({path, {}, 100});
+    QString error;
+    if (!recorder.start(&error))
+        qFatal("%s", qPrintable(error));
+    recorder.addVehicle(&a);
+    recorder.addVehicle(&b);
+    a.setMission({{kLegs[0].latitude * kRad, kLegs[0].longitude * kRad, 20, 8},
+                  {kLegs[1].latitude * kRad, kLegs[1].longitude * kRad, 20, 8}});
+    const auto pathA = flyAlong(kLegs, kT0, 100);
+    const auto pathB = flyAlong(kLegs, kT0, 100, 12);
+    if (flown)
+        *flown = pathA;
+    for (size_t i = 0; i < pathA.size(); ++i) {
+        const int mode = i < 5 ? 1 : 4; // manual, then auto
+        linkA.send(test::telemetryAt(pathA[i].time, pathA[i].lat, pathA[i].lon, 20, pathA[i].heading, i >= 3, mode));
+        if (i < pathB.size())
+            linkB.send(test::telemetryAt(pathB[i].time, pathB[i].lat, pathB[i].lon, 20, pathB[i].heading, i >= 3, mode));
+        if (i == 40)
+            linkB.setState(vehicle::VehicleLink::State::Lost);
+        if (i == 60)
+            linkB.setState(vehicle::VehicleLink::State::Connected);
+        if (i % 200 == 0)
+            recorder.flush();
+    }
+    a.arm();
+    QSignalSpy done(&a, &vehicle::Vehicle::commandFinished);
+    done.wait(5000);
+    b.returnHome(); // refused by the scripted link
+    QSignalSpy refused(&b, &vehicle::Vehicle::commandFinished);
+    refused.wait(5000);
+    recorder.stop();
+    return path;
 }
 
 } // namespace sortie::test

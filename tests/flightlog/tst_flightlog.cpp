@@ -25,50 +25,11 @@ using test::ScriptedLink;
 using vehicle::TelemetryField;
 using vehicle::Vehicle;
 
+using test::kLegs;
+using test::kT0;
+using test::recordTwoFlights;
+
 namespace {
-
-const std::vector<mission::GeoPoint> kLegs = {{56.9500, 24.1000}, {56.9510, 24.1000}, {56.9510, 24.1020}, {56.9500, 24.1020}};
-constexpr int64_t kT0 = 1'780'000'000'000;
-
-// Records two vehicles flying the legs (the second 12 m to the east) with events along the way.
-QString recordTwoFlights(const QString &folder, std::vector<test::FlightSample> *flown = nullptr)
-{
-    const QString path = QDir(folder).filePath(QStringLiteral("two.sortielog"));
-    ScriptedLink linkA(QStringLiteral("7"), QStringLiteral("EMU-101")), linkB(QStringLiteral("8"), QStringLiteral("EMU-102"));
-    Vehicle a(&linkA), b(&linkB);
-    FlightRecorder recorder({path, {}, 100});
-    QString error;
-    if (!recorder.start(&error))
-        qFatal("%s", qPrintable(error));
-    recorder.addVehicle(&a);
-    recorder.addVehicle(&b);
-    a.setMission({{kLegs[0].latitude * test::kRad, kLegs[0].longitude * test::kRad, 20, 8},
-                  {kLegs[1].latitude * test::kRad, kLegs[1].longitude * test::kRad, 20, 8}});
-    const auto pathA = test::flyAlong(kLegs, kT0, 100);
-    const auto pathB = test::flyAlong(kLegs, kT0, 100, 12);
-    if (flown)
-        *flown = pathA;
-    for (size_t i = 0; i < pathA.size(); ++i) {
-        const int mode = i < 5 ? 1 : 4; // manual, then auto
-        linkA.send(test::telemetryAt(pathA[i].time, pathA[i].lat, pathA[i].lon, 20, pathA[i].heading, i >= 3, mode));
-        if (i < pathB.size())
-            linkB.send(test::telemetryAt(pathB[i].time, pathB[i].lat, pathB[i].lon, 20, pathB[i].heading, i >= 3, mode));
-        if (i == 40)
-            linkB.setState(vehicle::VehicleLink::State::Lost);
-        if (i == 60)
-            linkB.setState(vehicle::VehicleLink::State::Connected);
-        if (i % 200 == 0)
-            recorder.flush();
-    }
-    a.arm();
-    QSignalSpy done(&a, &Vehicle::commandFinished);
-    done.wait(5000);
-    b.returnHome(); // refused by the scripted link
-    QSignalSpy refused(&b, &Vehicle::commandFinished);
-    refused.wait(5000);
-    recorder.stop();
-    return path;
-}
 
 int countElements(const QByteArray &xml, const QString &name, QString *error)
 {

@@ -9,7 +9,11 @@
 #include "HciClient.h"
 #include "HciServer.h"
 #include "HciSession.h"
+#include "HciVehicleLink.h"
+#include "Messages.pb.h"
 #include "MissionFiles.h"
+#include "ReplayController.h"
+#include "ServerHistory.h"
 #include "SimWorld.h"
 #include "VehicleFleet.h"
 
@@ -20,6 +24,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QXmlStreamReader>
@@ -278,6 +283,66 @@ private slots:
         Run unknown = sortieLog({QStringLiteral("compare"), cleanLog, file101, QStringLiteral("--vehicle"), QStringLiteral("EMU-999")});
         QCOMPARE(unknown.exitCode, 1);
         QVERIFY2(unknown.err.contains("EMU-999") && unknown.err.contains("EMU-101"), unknown.err.constData());
+    }
+
+    // The server's history of a vehicle, fetched in pages with progress, replays like a recording.
+    void serverHistoryReplays()
+    {
+        Sim sim;
+        hci::HciSession session;
+        hci::HciClient client(&session);
+        client::ConnectionController connection(&session);
+        client::VehicleFleet fleet(&client);
+        QVERIFY(connection.connectToServer(sim.address(), QStringLiteral("admin"), QStringLiteral("admin")));
+        QTRY_COMPARE_WITH_TIMEOUT(fleet.count(), 3, 10000);
+        Vehicle *v = nullptr;
+        for (int row = 0; row < fleet.count(); ++row)
+            if (fleet.vehicleAt(row)->name() == QLatin1String("EMU-103"))
+                v = fleet.vehicleAt(row);
+        QVERIFY(v);
+        std::vector<vehicle::TelemetrySample> live;
+        connect(v->link(), &vehicle::VehicleLink::telemetryReceived, this, [&](const vehicle::TelemetryBatch &batch) {
+            for (const auto &u : batch)
+                if (u.field == vehicle::TelemetryField::AltitudeAgl)
+                    live.push_back({u.time, u.value});
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(!live.empty(), 10000);
+        v->arm();
+        QTRY_VERIFY_WITH_TIMEOUT(v->armed(), 10000);
+        v->takeoff(10);
+        QTRY_VERIFY_WITH_TIMEOUT(v->altitudeAgl() > 4, 15000);
+        const auto *link = qobject_cast<vehicle::HciVehicleLink *>(v->link());
+        QVERIFY(link);
+        com::ugcs::ucs::proto::Vehicle ref;
+        ref.set_id(link->vehicleObjectId());
+        ref.set_name("EMU-103");
+        const std::vector<vehicle::TelemetrySample> seen = live;
+        const qint64 from = seen.front().time, to = seen.back().time;
+
+        flightlog::ServerHistory history(&client);
+        QSignalSpy progress(&history, &flightlog::ServerHistory::progressChanged);
+        QSignalSpy finished(&history, &flightlog::ServerHistory::finished);
+        history.fetch(ref, from, to, 200);
+        QVERIFY(history.isBusy());
+        QVERIFY(finished.wait(15000));
+        QVERIFY2(finished.first().first().toBool(), qPrintable(history.errorString()));
+        QVERIFY2(history.pages() > 1, qPrintable(QString::number(history.pages())));
+        QVERIFY(progress.count() >= history.pages());
+        QCOMPARE(history.progress(), 1.0);
+
+        flightlog::ReplayController replay;
+        replay.open(history.takeLog());
+        QCOMPARE(replay.fleet()->count(), 1);
+        QCOMPARE(replay.fleet()->vehicleAt(0)->name(), QStringLiteral("EMU-103"));
+        const auto fetched = replay.log()->series(0, vehicle::TelemetryField::AltitudeAgl);
+        // Every value the live link received in the range is in the history, at its time.
+        for (const auto &s : seen) {
+            const auto it = std::find_if(fetched.begin(), fetched.end(), [&](const auto &f) { return f.time == s.time; });
+            QVERIFY2(it != fetched.end(), qPrintable(QString::number(s.time)));
+            QVERIFY(std::fabs(it->value - s.value) <= 0.0005);
+        }
+        replay.seek(to);
+        QVERIFY(std::fabs(replay.fleet()->vehicleAt(0)->altitudeAgl() - seen.back().value) <= 0.0005);
     }
 
     void badUsage()

@@ -11,6 +11,8 @@ ApplicationWindow {
     property var connection: null
     property var missions: null
     property var fleet: null
+    // Flight-log replay (the timeline on the telemetry page); null when the program has none.
+    property ReplayController replay: null
     // The client's AutosaveRecovery: edits a previous run left unsaved, offered at start.
     property var recovery: null
     property string connectionState: connection ? connection.state : "Disconnected"
@@ -111,6 +113,7 @@ ApplicationWindow {
             id: telemetryPage
             objectName: "telemetryPage"
             fleet: window.fleet
+            replay: window.replay
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource

@@ -11,8 +11,11 @@ Page {
     property alias vehicleLayer: vehicleLayer
     property alias pane: pane
     property var fleet: null
-    property var vehicleModel: fleet
-    readonly property var current: fleet && vehicleLayer.currentIndex >= 0 ? fleet.vehicleAt(vehicleLayer.currentIndex) : null
+    // A log being replayed takes the place of the live vehicles (the timeline says so).
+    property ReplayController replay: null
+    readonly property bool replaying: replay !== null && replay.active
+    property var vehicleModel: replaying ? replay.fleet : fleet
+    readonly property var current: vehicleModel && vehicleLayer.currentIndex >= 0 ? vehicleModel.vehicleAt(vehicleLayer.currentIndex) : null
     property bool goMode: false
     property DisplayUnits units
     property string mapSource: "offline"
@@ -115,6 +118,12 @@ Page {
                 Layout.fillWidth: true
                 page: page
             }
+            Loader {
+                objectName: "replayTimelineLoader"
+                Layout.fillWidth: true
+                active: page.replay !== null
+                sourceComponent: ReplayTimeline { replay: page.replay }
+            }
         }
         ColumnLayout {
             SplitView.preferredWidth: 300
@@ -147,7 +156,7 @@ Page {
                 Layout.minimumHeight: 160
                 vehicle: page.current
                 fields: [fieldPicker.currentText]
-                windowSeconds: [60, 300, 1800][windowPicker.currentIndex]
+                windowSeconds: page.replaying ? page.replay.spanSeconds : [60, 300, 1800][windowPicker.currentIndex]
                 textColor: page.palette.windowText
             }
         }
