@@ -2,6 +2,7 @@
 // Sortie.Ui main window.
 #include "AppSettings.h"
 #include "AutosaveRecovery.h"
+#include "ComparisonController.h"
 #include "ConnectionController.h"
 #include "DemoServer.h"
 #include "FleetRecording.h"
@@ -134,6 +135,7 @@ int main(int argc, char *argv[])
         std::fprintf(stderr, "sortie: %s\n", qPrintable(error)); // flying goes on without a log
     sortie::flightlog::FleetRecording recording(&fleet, &recorder, &session);
     sortie::flightlog::ReplayController replay;
+    sortie::flightlog::ComparisonController comparison(&replay);
     sortie::app::DemoServer demo;
     if (options.demo) {
         QString error;
@@ -150,6 +152,7 @@ int main(int argc, char *argv[])
                                  {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&missions)},
                                  {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&fleet)},
                                  {QStringLiteral("replay"), QVariant::fromValue(&replay)},
+                                 {QStringLiteral("comparison"), QVariant::fromValue(&comparison)},
                                  {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(&recovery)}});
     engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));
     if (engine.rootObjects().isEmpty())

@@ -260,6 +260,7 @@ void ReplayController::seek(qint64 time)
     showAt(time);
     if (m_timer.isActive())
         m_wall.restart();
+    emit seeked();
     emit positionChanged();
 }
 

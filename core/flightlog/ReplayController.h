@@ -125,6 +125,7 @@ signals:
     void loadedChanged();
     void errorChanged();
     void positionChanged();
+    void seeked(); // a jump, not play: trails drawn so far no longer lead to the vehicles
     void playingChanged();
     void speedChanged();
 

@@ -24,6 +24,7 @@ struct Sample
     int64_t time;
     mission::PlanePoint p;
     double amsl, agl; // NaN when unknown
+    double lat, lon;  // degrees
 };
 
 struct Planned
@@ -68,7 +69,7 @@ std::vector<Sample> trackOf(const FlightLog &log, int vehicle, const mission::Lo
         }
         const bool lastOfTime = i + 1 == updates.size() || updates[i + 1].time != u.time;
         if (lastOfTime && std::isfinite(lat) && std::isfinite(lon))
-            out.push_back({u.time, plane.project({lat * kDeg, lon * kDeg}), amsl, agl});
+            out.push_back({u.time, plane.project({lat * kDeg, lon * kDeg}), amsl, agl, lat * kDeg, lon * kDeg});
     }
     return out;
 }
@@ -160,7 +161,10 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
         c.legs.push_back({int(w - 1), int(w), 0, 0, 0, 0, 0});
     std::vector<double> altitudeSum(c.legs.size(), 0), crossSum(c.legs.size(), 0);
     std::vector<int> altitudeSamples(c.legs.size(), 0);
+    size_t nextUnassigned = 0; // windows meet at a reached waypoint's point: it counts once
     auto assign = [&](size_t fromTrack, size_t toTrack, size_t firstLeg, size_t lastLeg) { // legs by 'to' waypoint
+        fromTrack = std::max(fromTrack, nextUnassigned);
+        nextUnassigned = toTrack + 1;
         for (size_t k = fromTrack; k <= toTrack && k < track.size(); ++k) {
             size_t best = firstLeg;
             double bestD = std::numeric_limits<double>::infinity(), bestAlong = 0;
@@ -180,12 +184,14 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
             const Planned &a = planned[best - 1], &b = planned[best];
             const double plannedAltitude = a.altitude + bestAlong * (b.altitude - a.altitude);
             const double flown = b.amsl ? track[k].amsl : track[k].agl;
+            double dev = std::nan("");
             if (std::isfinite(flown)) {
-                const double dev = std::fabs(flown - plannedAltitude);
+                dev = std::fabs(flown - plannedAltitude);
                 l.maxAltitude = std::max(l.maxAltitude, dev);
                 altitudeSum[best - 1] += dev;
                 ++altitudeSamples[best - 1];
             }
+            c.track.push_back({track[k].lat, track[k].lon, track[k].time, int(best - 1), bestD, dev});
         }
     };
     std::optional<size_t> previous; // waypoint index of the last reached one

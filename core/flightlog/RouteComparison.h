@@ -37,12 +37,23 @@ struct WaypointPassage
     double closest = 0;                 // closest horizontal approach, m
 };
 
+// A track point that belongs to a leg, with its deviation: what the map's overlay colours.
+struct TrackDeviation
+{
+    double latitude = 0, longitude = 0; // degrees
+    int64_t time = 0;
+    int leg = 0;            // index into legs
+    double crossTrack = 0;  // m
+    double altitude = 0;    // m, absolute; NaN when unknown
+};
+
 struct RouteComparison
 {
     QString routeName;
     QString vehicleName;
     std::vector<WaypointPassage> waypoints;
     std::vector<LegDeviation> legs;
+    std::vector<TrackDeviation> track;
     int reached = 0, missed = 0;
     double maxCrossTrack = 0, meanCrossTrack = 0, maxAltitude = 0, meanAltitude = 0;
     int64_t start = 0, end = 0; // the span compared

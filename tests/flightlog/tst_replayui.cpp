@@ -1,7 +1,9 @@
 // The replay in the fly view, offscreen: a log opened on the telemetry page shows its vehicles
 // marked as a replay; Play moves the clock, a click on the timeline scrubs, the next-event button
 // jumps to an event, and each time the vehicle is drawn on the map where the log says it was.
+#include "ComparisonController.h"
 #include "FlightLog.h"
+#include "MissionFiles.h"
 #include "FlightLogTestSupport.h"
 #include "QuickScene.h"
 #include "ReplayController.h"
@@ -35,13 +37,15 @@ private slots:
         QTemporaryDir dir;
         const QString path = test::recordTwoFlights(dir.path());
         flightlog::ReplayController replay;
+        flightlog::ComparisonController comparison(&replay);
         test::QuickScene scene(R"(
             import QtQuick
             import Sortie.Ui
             TelemetryPage {
                 units: DisplayUnits {}
             }
-        )", QSize(1280, 800), {{QStringLiteral("replay"), QVariant::fromValue(&replay)}});
+        )", QSize(1280, 800), {{QStringLiteral("replay"), QVariant::fromValue(&replay)},
+                                                    {QStringLiteral("comparison"), QVariant::fromValue(&comparison)}});
         QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
         QVERIFY(scene.find<QQuickItem>(QStringLiteral("openLogButton")));
         auto *banner = scene.find<QQuickItem>(QStringLiteral("replayBanner"));
@@ -110,6 +114,33 @@ private slots:
         QTRY_VERIFY(expectOnMap(replay.position()) < 1.5);
         auto *label = scene.find<QQuickItem>(QStringLiteral("positionLabel"));
         QVERIFY(label && label->property("text").toString().contains(QStringLiteral("UTC")));
+
+        // Compare with the plan: a table of legs and the track coloured on the map.
+        mission::Mission plan;
+        plan.routes.push_back(test::routeThrough(test::kLegs, 20, QStringLiteral("Box")));
+        const QString routeFile = dir.filePath(QStringLiteral("box.sortie"));
+        QVERIFY(mission::formats::saveMission(plan, routeFile, {0, mission::ValidationOverride::AcceptErrors}));
+        auto *compareButton = scene.find<QQuickItem>(QStringLiteral("compareButton"));
+        QVERIFY(compareButton && compareButton->isVisible());
+        QVERIFY(!comparison.compare(routeFile, -1)); // two vehicles: which one?
+        QVERIFY(!comparison.errorString().isEmpty());
+        QVERIFY2(comparison.compare(QUrl::fromLocalFile(routeFile).toString(), a), qPrintable(comparison.errorString()));
+        auto *deviation = scene.find<QQuickItem>(QStringLiteral("deviationLayer"));
+        QVERIFY(deviation && deviation->isVisible());
+        QTRY_VERIFY(deviation->property("count").toInt() > 100);
+        auto *table = scene.find<QQuickItem>(QStringLiteral("comparisonTable"));
+        QTRY_VERIFY(table && table->isVisible());
+        QCOMPARE(table->property("count").toInt(), 3);
+        auto *summary = scene.find<QQuickItem>(QStringLiteral("comparisonSummary"));
+        QVERIFY2(summary->property("text").toString().contains(QStringLiteral("4 of 4 waypoints reached")), qPrintable(summary->property("text").toString()));
+        // The track is drawn in the colour of "fine" on the map.
+        const QImage shot = scene.grab();
+        QPointF onTrack;
+        QMetaObject::invokeMethod(map, "fromCoordinate", Q_RETURN_ARG(QPointF, onTrack),
+                                  Q_ARG(QGeoCoordinate, QGeoCoordinate((test::kLegs[1].latitude + test::kLegs[2].latitude) / 2,
+                                                                       (test::kLegs[1].longitude + test::kLegs[2].longitude) / 2)));
+        const QPoint pixel = deviation->mapToScene(onTrack).toPoint();
+        QVERIFY2(test::colourDistance(shot.pixel(pixel), qRgb(0x43, 0xa0, 0x47)) < 40, qPrintable(QColor(shot.pixel(pixel)).name()));
 
         // Back to live: the banner goes, the replayed vehicles with it.
         auto *close = scene.find<QQuickItem>(QStringLiteral("closeLogButton"));

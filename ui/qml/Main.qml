@@ -13,6 +13,7 @@ ApplicationWindow {
     property var fleet: null
     // Flight-log replay (the timeline on the telemetry page); null when the program has none.
     property ReplayController replay: null
+    property ComparisonController comparison: null
     // The client's AutosaveRecovery: edits a previous run left unsaved, offered at start.
     property var recovery: null
     property string connectionState: connection ? connection.state : "Disconnected"
@@ -114,6 +115,7 @@ ApplicationWindow {
             objectName: "telemetryPage"
             fleet: window.fleet
             replay: window.replay
+            comparison: window.comparison
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource

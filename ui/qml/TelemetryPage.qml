@@ -13,6 +13,7 @@ Page {
     property var fleet: null
     // A log being replayed takes the place of the live vehicles (the timeline says so).
     property ReplayController replay: null
+    property ComparisonController comparison: null
     readonly property bool replaying: replay !== null && replay.active
     property var vehicleModel: replaying ? replay.fleet : fleet
     readonly property var current: vehicleModel && vehicleLayer.currentIndex >= 0 ? vehicleModel.vehicleAt(vehicleLayer.currentIndex) : null
@@ -97,12 +98,24 @@ Page {
                 tileUrlTemplate: page.tileUrlTemplate
                 mbtilesFile: page.mbtilesFile
                 dark: page.dark
+                DeviationLayer {
+                    objectName: "deviationLayer"
+                    anchors.fill: parent
+                    map: pane.map
+                    visible: page.replaying && page.comparison !== null
+                    model: page.comparison ? page.comparison.track : null
+                }
                 VehicleLayer {
                     id: vehicleLayer
                     objectName: "vehicleLayer"
                     anchors.fill: parent
                     map: pane.map
                     model: page.vehicleModel
+                }
+                Connections {
+                    target: page.replay
+                    function onSeeked() { vehicleLayer.clearTrails() }
+                    function onLoadedChanged() { vehicleLayer.clearTrails() }
                 }
                 Connections {
                     target: pane.map
@@ -123,6 +136,15 @@ Page {
                 Layout.fillWidth: true
                 active: page.replay !== null
                 sourceComponent: ReplayTimeline { replay: page.replay }
+            }
+            Loader {
+                objectName: "comparisonPanelLoader"
+                Layout.fillWidth: true
+                active: page.replaying && page.comparison !== null
+                sourceComponent: ComparisonPanel {
+                    comparison: page.comparison
+                    vehicleIndex: vehicleLayer.currentIndex
+                }
             }
         }
         ColumnLayout {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ComparisonController.h"
 #include "ReplayController.h"
 
 #include <QtQml/qqmlregistration.h>
@@ -30,6 +31,14 @@ struct ReplayFleetForeign
     QML_FOREIGN(sortie::flightlog::ReplayFleet)
     QML_NAMED_ELEMENT(ReplayFleet)
     QML_UNCREATABLE("Part of the replay controller.")
+};
+
+struct ComparisonControllerForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::flightlog::ComparisonController)
+    QML_NAMED_ELEMENT(ComparisonController)
+    QML_UNCREATABLE("The application provides the comparison.")
 };
 
 } // namespace sortie::ui
