@@ -97,6 +97,9 @@ std::unique_ptr<FlightLog> FlightLog::open(const QString &path, QString *error)
     }
     QSqlQuery q(c.db());
     q.setForwardOnly(true);
+    // A file cut short holds fewer pages than its header says; SQLite calls that corrupt unless the
+    // schema is "writable", and then reads what is there (nothing is written through this connection).
+    q.exec(QStringLiteral("PRAGMA writable_schema=ON"));
     if (!q.exec(QStringLiteral("SELECT value FROM meta WHERE key = 'application'")) || !q.next()
         || q.value(0).toString() != QLatin1String(schema::kApplicationId)) {
         const QString detail = q.lastError().isValid() ? q.lastError().text() : QObject::tr("no Sortie flight log header");
@@ -208,6 +211,8 @@ void FlightLog::finish()
         m_end = any ? std::max(m_end, v.end) : v.end;
         any = true;
     }
+    if (any)
+        return; // the span is the telemetry's: events without it (a session start) may be on another clock
     for (const Event &e : m_events) { // a log with events only still has a span
         m_start = any ? std::min(m_start, e.time) : e.time;
         m_end = any ? std::max(m_end, e.time) : e.time;

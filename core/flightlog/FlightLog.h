@@ -64,6 +64,7 @@ public:
     const std::vector<Vehicle> &vehicles() const { return m_vehicles; }
     const std::vector<Event> &events() const { return m_events; } // time order
     int vehicleIndex(const QString &nameOrKey) const; // -1 when absent
+    // The span of the telemetry (of the events when there is none).
     int64_t start() const { return m_start; }
     int64_t end() const { return m_end; }
     // Empty when the whole file was read; else where reading stopped and why.

@@ -184,8 +184,10 @@ bool FlightLogWriter::writeChunk(const RecordingChunk &chunk, QString *error)
             for (const FieldSamples &f : s.fields) {
                 if (f.samples.empty())
                     continue;
-                t0 = std::min(t0, f.samples.front().time);
-                t1 = std::max(t1, f.samples.back().time);
+                for (const auto &sample : f.samples) {
+                    t0 = std::min(t0, sample.time);
+                    t1 = std::max(t1, sample.time);
+                }
                 count += f.samples.size();
             }
             if (!count)

@@ -156,7 +156,7 @@ void FlightRecorder::addVehicle(Vehicle *vehicle)
                                         event(r, QStringLiteral("command"), message.isEmpty() ? command : command + QStringLiteral(": ") + message, ok ? 1 : 0);
                                     }));
     r.connections.push_back(connect(vehicle, &Vehicle::missionChanged, this, [this, &r] {
-        m_chunk.missions.push_back({r.key, now(), r.vehicle->mission()});
+        m_chunk.missions.push_back({r.key, vehicleTime(r), r.vehicle->mission()});
         event(r, QStringLiteral("upload"), tr("Route of %n waypoint(s)", nullptr, int(r.vehicle->mission().size())));
     }));
     r.connections.push_back(connect(vehicle, &QObject::destroyed, this, [this, raw = vehicle] {
@@ -194,16 +194,18 @@ void FlightRecorder::removeVehicle(Vehicle *vehicle)
 void FlightRecorder::recordEvent(Vehicle *vehicle, const QString &kind, const QString &text, int ok)
 {
     const Recorded *r = find(vehicle);
-    m_chunk.events.push_back({r ? r->key : QString(), now(), kind, text, ok});
+    m_chunk.events.push_back({r ? r->key : QString(), r ? vehicleTime(*r) : now(), kind, text, ok});
 }
 
 void FlightRecorder::event(const Recorded &r, const QString &kind, const QString &text, int ok)
 {
-    m_chunk.events.push_back({r.key, now(), kind, text, ok});
+    m_chunk.events.push_back({r.key, vehicleTime(r), kind, text, ok});
 }
 
 void FlightRecorder::gather(Recorded &r, const vehicle::TelemetryBatch &batch)
 {
+    if (!batch.empty())
+        r.clockOffset = batch.back().time - now();
     for (const vehicle::TelemetryUpdate &u : batch) {
         int &slot = r.slot[size_t(u.field)];
         if (slot < 0) {

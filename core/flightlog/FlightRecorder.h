@@ -70,6 +70,9 @@ private:
         RecordedSamples pending;
         std::array<int, vehicle::kTelemetryFieldCount> slot; // index into pending.fields, -1 when none yet
         double armed = qQNaN(), mode = qQNaN();
+        // The vehicle's clock minus ours at its last telemetry: events are put on the vehicle's
+        // clock, the one its telemetry times use, so the timeline shows them where they happened.
+        int64_t clockOffset = 0;
         QMetaObject::Connection telemetry;
         std::vector<QMetaObject::Connection> connections;
     };
@@ -77,6 +80,7 @@ private:
     Recorded *find(const vehicle::Vehicle *vehicle);
     void gather(Recorded &r, const vehicle::TelemetryBatch &batch);
     void event(const Recorded &r, const QString &kind, const QString &text, int ok = -1);
+    static int64_t vehicleTime(const Recorded &r) { return now() + r.clockOffset; }
     static int64_t now();
 
     Options m_options;

@@ -2,6 +2,8 @@
 
 #include <QDateTime>
 
+#include <algorithm>
+
 namespace sortie::flightlog {
 
 void ReplayEventModel::reset(const FlightLog *log)
@@ -61,7 +63,7 @@ QVariant ReplayEventModel::data(const QModelIndex &index, int role) const
     case VehicleRole: return e->vehicle >= 0 ? m_log->vehicles()[size_t(e->vehicle)].name() : QString();
     case FractionRole: {
         const double span = double(m_log->end() - m_log->start());
-        return span > 0 ? double(e->time - m_log->start()) / span : 0.0;
+        return span > 0 ? std::clamp(double(e->time - m_log->start()) / span, 0.0, 1.0) : 0.0;
     }
     case FailedRole: return e->ok == 0;
     default: return {};

@@ -171,7 +171,7 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
             for (size_t leg = firstLeg; leg <= lastLeg; ++leg) {
                 double along = 0;
                 const double d = toSegment(track[k].p, planned[leg - 1].p, planned[leg].p, &along);
-                if (d < bestD) {
+                if (d <= bestD + 0.01) { // a tie (to 1 cm) goes to the later leg: the one the vehicle was on its way along
                     bestD = d;
                     best = leg;
                     bestAlong = along;
@@ -198,8 +198,8 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
     for (size_t w = 0; w < n; ++w) {
         if (!reachedAt[w])
             continue;
-        if (previous)
-            assign(*reachedAt[*previous], *reachedAt[w], *previous + 1, w);
+        if (previous) // the leg into the last reached waypoint stays a candidate: turning there is flying it
+            assign(*reachedAt[*previous], *reachedAt[w], std::max<size_t>(*previous, 1), w);
         else if (w > 0) // the first waypoints were missed: from the start of the track
             assign(0, *reachedAt[w], 1, w);
         previous = w;
@@ -207,7 +207,7 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
     if (!previous)
         assign(0, track.size() - 1, 1, n - 1);
     else if (*previous + 1 < n) // sent elsewhere before the end: the rest of the track to the rest of the legs
-        assign(*reachedAt[*previous], track.size() - 1, *previous + 1, n - 1);
+        assign(*reachedAt[*previous], track.size() - 1, std::max<size_t>(*previous, 1), n - 1);
 
     double crossTotal = 0, altitudeTotal = 0;
     int crossCount = 0, altitudeCount = 0;

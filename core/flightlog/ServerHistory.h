@@ -1,6 +1,7 @@
 #pragma once
 
 #include "FlightLog.h"
+#include "HciReply.h"
 
 #include <QObject>
 #include <QPointer>
@@ -12,7 +13,6 @@ class Vehicle;
 }
 namespace sortie::hci {
 class HciClient;
-class HciReply;
 }
 
 namespace sortie::flightlog {

@@ -13,6 +13,7 @@ namespace {
 constexpr uint8_t kVersion = 1;
 constexpr uint8_t kSecondOrder = 1; // values stored as second differences
 constexpr uint8_t kHasMissing = 2;  // a bitmap of missing (NaN) values follows the times
+constexpr uint8_t kSameTimes = 4;   // no times: the same as the last field that had its own
 constexpr double kMaxQuantum = 9007199254740992.0; // 2^53: beyond it a value is not representable
 
 uint64_t zigzag(int64_t v) { return (uint64_t(v) << 1) ^ uint64_t(v >> 63); }
@@ -139,7 +140,7 @@ bool readFieldHeader(Reader &r, FieldHeader *f, std::string *error)
     uint8_t id, flags;
     uint64_t count, length;
     if (!r.byte(&id) || id >= vehicle::kTelemetryFieldCount || !r.varint(&count) || !r.byte(&flags)
-        || !r.varint(&length) || length > r.left() || count == 0 || count > length)
+        || !r.varint(&length) || length > r.left() || count == 0 || length == 0 || count > length * 8)
         return fail(error, "bad field header");
     f->field = TelemetryField(id);
     f->count = count;
@@ -148,11 +149,15 @@ bool readFieldHeader(Reader &r, FieldHeader *f, std::string *error)
     return true;
 }
 
-bool decodeField(const FieldHeader &f, int64_t t0, FieldSamples *out, std::string *error)
+// Reads the field's times (into `times`, unless it shares the last field's) and leaves `r` at what follows.
+bool readTimes(const FieldHeader &f, int64_t t0, Reader &r, std::vector<int64_t> &times, std::string *error)
 {
-    Reader r(f.payload);
-    out->field = f.field;
-    out->samples.resize(size_t(f.count));
+    if (f.flags & kSameTimes) {
+        if (times.size() != f.count)
+            return fail(error, "shared times of another length");
+        return true;
+    }
+    times.resize(size_t(f.count));
     int64_t t = t0, d = 0;
     for (size_t i = 0; i < f.count; ++i) {
         int64_t v;
@@ -164,8 +169,17 @@ bool decodeField(const FieldHeader &f, int64_t t0, FieldSamples *out, std::strin
             d = plus(d, v);
             t = plus(t, d);
         }
-        out->samples[i].time = t;
+        times[i] = t;
     }
+    return true;
+}
+
+bool decodeValues(const FieldHeader &f, Reader &r, const std::vector<int64_t> &times, FieldSamples *out, std::string *error)
+{
+    out->field = f.field;
+    out->samples.resize(size_t(f.count));
+    for (size_t i = 0; i < f.count; ++i)
+        out->samples[i].time = times[i];
     std::string_view missing;
     if ((f.flags & kHasMissing) && !r.bytes(size_t((f.count + 7) / 8), &missing))
         return fail(error, "missing-value map cut short");
@@ -197,13 +211,29 @@ bool decodeField(const FieldHeader &f, int64_t t0, FieldSamples *out, std::strin
     return true;
 }
 
-void encodeField(const FieldSamples &f, int64_t t0, std::string &out)
+bool sameTimes(const FieldSamples &a, const FieldSamples &b)
+{
+    if (a.samples.size() != b.samples.size())
+        return false;
+    for (size_t i = 0; i < a.samples.size(); ++i) {
+        if (a.samples[i].time != b.samples[i].time)
+            return false;
+    }
+    return true;
+}
+
+// `timesOf`: the last field written with its own times; this one shares them when they are equal
+// (a telemetry message gives all its fields one time).
+void encodeField(const FieldSamples &f, int64_t t0, const FieldSamples *&timesOf, std::string &out)
 {
     const size_t n = f.samples.size();
     std::string payload;
     payload.reserve(n * 3);
+    const bool shared = timesOf && sameTimes(f, *timesOf);
+    if (!shared)
+        timesOf = &f;
     int64_t prevT = t0, prevD = 0;
-    for (size_t i = 0; i < n; ++i) {
+    for (size_t i = 0; i < n && !shared; ++i) {
         const int64_t t = f.samples[i].time;
         if (i == 0) {
             putVarint(payload, zigzag(minus(t, t0)));
@@ -236,6 +266,8 @@ void encodeField(const FieldSamples &f, int64_t t0, std::string &out)
     }
     const bool secondOrder = second < first;
     uint8_t flags = secondOrder ? kSecondOrder : 0;
+    if (shared)
+        flags |= kSameTimes;
     if (!missing.empty()) {
         flags |= kHasMissing;
         payload += missing;
@@ -309,8 +341,10 @@ std::string TelemetryBlockCodec::encode(const BlockFields &fields)
             continue;
         ++used;
         values += f.samples.size();
-        t0 = std::min(t0, f.samples.front().time);
-        t1 = std::max(t1, f.samples.back().time);
+        for (const TelemetrySample &sample : f.samples) {
+            t0 = std::min(t0, sample.time);
+            t1 = std::max(t1, sample.time);
+        }
     }
     std::string out;
     out.reserve(16 + values * 3);
@@ -320,9 +354,10 @@ std::string TelemetryBlockCodec::encode(const BlockFields &fields)
     putVarint(out, zigzag(t0));
     putVarint(out, zigzag(minus(t1, t0)));
     putVarint(out, used);
+    const FieldSamples *timesOf = nullptr;
     for (const FieldSamples &f : fields) {
         if (!f.samples.empty())
-            encodeField(f, t0, out);
+            encodeField(f, t0, timesOf, out);
     }
     const uint32_t crc = crc32(out);
     out.append(reinterpret_cast<const char *>(&crc), 4);
@@ -338,10 +373,17 @@ std::optional<BlockSummary> TelemetryBlockCodec::summarize(std::string_view bloc
     BlockSummary s;
     s.t0 = h.t0;
     s.t1 = h.t1;
+    uint64_t timesCount = 0;
     for (uint64_t i = 0; i < h.fieldCount; ++i) {
         FieldHeader f;
         if (!readFieldHeader(r, &f, error))
             return std::nullopt;
+        if ((f.flags & kSameTimes) && (i == 0 || f.count != timesCount)) {
+            fail(error, "shared times of another length");
+            return std::nullopt;
+        }
+        if (!(f.flags & kSameTimes))
+            timesCount = f.count;
         s.counts[size_t(f.field)] += uint32_t(f.count);
         s.total += uint32_t(f.count);
     }
@@ -357,14 +399,19 @@ std::optional<BlockFields> TelemetryBlockCodec::decode(std::string_view block, s
         return std::nullopt;
     BlockFields fields;
     fields.reserve(only ? 1 : size_t(h.fieldCount));
+    std::vector<int64_t> times;
     for (uint64_t i = 0; i < h.fieldCount; ++i) {
         FieldHeader f;
         if (!readFieldHeader(r, &f, error))
             return std::nullopt;
+        Reader payload(f.payload);
+        // Times are read for every field: a later one may share them.
+        if (!readTimes(f, h.t0, payload, times, error))
+            return std::nullopt;
         if (only && f.field != *only)
             continue;
         FieldSamples out;
-        if (!decodeField(f, h.t0, &out, error))
+        if (!decodeValues(f, payload, times, &out, error))
             return std::nullopt;
         fields.push_back(std::move(out));
     }

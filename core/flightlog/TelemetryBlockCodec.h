@@ -18,7 +18,8 @@ namespace sortie::flightlog {
 // Every value is quantised to its field's step (fieldStep: 1e-9 rad for positions, 1 mm for
 // altitudes, 1e-5 rad for angles, ...), then stored as zig-zag varints of its first or second
 // difference (whichever is shorter for that field in that block); times as varints of their second
-// difference. Regular 10 Hz telemetry therefore takes one or two bytes per value. NaN (missing) is
+// difference, written once for all the fields that share them (a telemetry message gives its fields
+// one time). Regular 10 Hz telemetry therefore takes one or two bytes per value. NaN (missing) is
 // kept as missing in a bitmap, never turned into 0. A CRC-32 closes the block.
 struct FieldSamples
 {

@@ -43,8 +43,9 @@ private slots:
     {
         QRandomGenerator rng(7);
         BlockFields in = typicalSecond(1'700'000'000'000, rng);
-        // Irregular times, a backwards step and a value far from the others.
-        in[2].samples[4].time -= 250;
+        // Irregular times, a backwards step, a field with times of its own, a value far from the others.
+        in[2].samples[4].time = in[0].samples[0].time - 30; // earlier than anything: the block starts there
+        in[5].samples.pop_back();
         in[8].samples[5].value = 1234.5678;
         const std::string block = TelemetryBlockCodec::encode(in);
         std::string error;
@@ -63,15 +64,19 @@ private slots:
         }
         const auto summary = TelemetryBlockCodec::summarize(block);
         QVERIFY(summary);
-        QCOMPARE(summary->total, uint32_t(10 * vehicle::kTelemetryFieldCount));
+        QCOMPARE(summary->total, uint32_t(10 * vehicle::kTelemetryFieldCount - 1));
         QCOMPARE(summary->t0, in[2].samples[4].time);
     }
 
     void missingStaysMissing()
     {
-        BlockFields in{{TelemetryField::AltitudeAgl, {{1000, 5.0}, {1100, std::nan("")}, {1200, 7.0}, {1300, INFINITY}}}};
+        BlockFields in{{TelemetryField::AltitudeAgl, {{1000, 5.0}, {1100, std::nan("")}, {1200, 7.0}, {1300, INFINITY}}},
+                       {TelemetryField::AltitudeAmsl, {{1000, std::nan("")}, {1100, std::nan("")}, {1200, std::nan("")}, {1300, std::nan("")}}}};
         const auto out = TelemetryBlockCodec::decode(TelemetryBlockCodec::encode(in));
         QVERIFY(out);
+        for (const auto &sample : (*out)[1].samples) // a field with nothing but missing values
+            QVERIFY(std::isnan(sample.value));
+        QCOMPARE((*out)[1].samples[3].time, 1300);
         const auto &s = out->front().samples;
         QCOMPARE(s[0].value, 5.0);
         QVERIFY(std::isnan(s[1].value));
