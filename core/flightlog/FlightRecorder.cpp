@@ -157,7 +157,8 @@ void FlightRecorder::addVehicle(Vehicle *vehicle)
                                     }));
     r.connections.push_back(connect(vehicle, &Vehicle::missionChanged, this, [this, &r] {
         m_chunk.missions.push_back({r.key, vehicleTime(r), r.vehicle->mission()});
-        event(r, QStringLiteral("upload"), tr("Route of %n waypoint(s)", nullptr, int(r.vehicle->mission().size())));
+        const size_t n = r.vehicle->mission().size();
+        event(r, QStringLiteral("upload"), n == 1 ? tr("Route of 1 waypoint") : tr("Route of %1 waypoints").arg(n));
     }));
     r.connections.push_back(connect(vehicle, &QObject::destroyed, this, [this, raw = vehicle] {
         for (auto it = m_recorded.begin(); it != m_recorded.end(); ++it) {

@@ -205,8 +205,8 @@ QString ReplayController::spanText() const
     if (!m_log)
         return {};
     const qint64 s = (m_log->end() - m_log->start()) / 1000;
-    return tr("%1:%2:%3 of %n vehicle(s)", nullptr, int(m_vehicles.size()))
-        .arg(s / 3600).arg(s / 60 % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
+    const QString duration = QStringLiteral("%1:%2:%3").arg(s / 3600).arg(s / 60 % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
+    return m_vehicles.size() == 1 ? tr("%1 of 1 vehicle").arg(duration) : tr("%1 of %2 vehicles").arg(duration).arg(m_vehicles.size());
 }
 
 void ReplayController::play()

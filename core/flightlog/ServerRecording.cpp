@@ -51,7 +51,8 @@ bool ServerRecording::start(QString *error)
             emit message(tr("server: %1").arg(m_connection->errorString()));
     });
     connect(m_fleet.get(), &client::VehicleFleet::countChanged, this, [this] {
-        emit message(tr("%n vehicle(s)", nullptr, m_fleet->count()));
+        const int n = m_fleet->count();
+        emit message(n == 1 ? tr("1 vehicle") : tr("%1 vehicles").arg(n));
     });
     connect(m_recorder.get(), &FlightRecorder::errorChanged, this, [this] { fail(m_recorder->errorString()); });
     if (!m_connection->connectToServer(m_options.server, m_options.user, m_options.password)) {

@@ -86,7 +86,7 @@ private slots:
             kinds << e.kind + QLatin1Char(':') + (e.vehicle >= 0 ? log->vehicles()[size_t(e.vehicle)].name() : QString()) + QLatin1Char(':') + e.text
                          + (e.ok >= 0 ? QStringLiteral(":%1").arg(e.ok) : QString());
         for (const char *expected : {"armed:EMU-101:Armed", "mode:EMU-101:manual", "mode:EMU-101:auto", "link:EMU-102:Lost",
-                                     "link:EMU-102:Connected", "command:EMU-101:arm:1", "upload:EMU-101:Route of 2 waypoint(s)",
+                                     "link:EMU-102:Connected", "command:EMU-101:arm:1", "upload:EMU-101:Route of 2 waypoints",
                                      "session::Recording started", "session::Recording stopped"})
             QVERIFY2(kinds.contains(QString::fromLatin1(expected)), qPrintable(kinds.join(QLatin1Char('\n'))));
         QVERIFY2(std::any_of(kinds.begin(), kinds.end(), [](const QString &k) { return k.startsWith(QLatin1String("command:EMU-102:returnHome: refused by the test:0")); }),

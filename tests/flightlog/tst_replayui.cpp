@@ -86,8 +86,11 @@ private slots:
         auto *play = scene.find<QQuickItem>(QStringLiteral("playButton"));
         QVERIFY(play && play->isVisible());
         const qint64 before = replay.position();
+        scene.grab(); // lays the timeline out (polish) before finding where its buttons are
         QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(play).toPoint());
-        QVERIFY(replay.isPlaying());
+        QVERIFY2(replay.isPlaying(), qPrintable(QStringLiteral("play at %1,%2 in %3x%4; picked: %5").arg(centre(play).x()).arg(centre(play).y())
+                                                  .arg(scene.view().width()).arg(scene.view().height())
+                                                  .arg(scene.root()->childAt(centre(play).x(), centre(play).y()) ? scene.root()->childAt(centre(play).x(), centre(play).y())->metaObject()->className() : "none")));
         QTRY_VERIFY(replay.position() > before + 200);
         QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(play).toPoint());
         QVERIFY(!replay.isPlaying());

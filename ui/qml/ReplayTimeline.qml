@@ -95,12 +95,9 @@ ToolBar {
                 textRole: "text"
                 displayText: qsTr("Jump to event (%1)").arg(bar.replay.events.count)
                 delegate: ItemDelegate {
-                    required property string timeText
-                    required property string vehicle
-                    required property string text
-                    required property int index
+                    required property var model // the event's roles; an ItemDelegate's own `text` is final
                     width: ListView.view.width
-                    contentItem: Label { text: timeText + "  " + (vehicle.length ? vehicle + ": " : "") + parent.text; elide: Text.ElideRight }
+                    text: model.timeText + "  " + (model.vehicle.length > 0 ? model.vehicle + ": " : "") + model.text
                 }
                 onActivated: index => bar.replay.jumpToEvent(index)
             }
