@@ -2,12 +2,16 @@
 // Sortie.Ui main window.
 #include "AppSettings.h"
 #include "AutosaveRecovery.h"
+#include "ComparisonController.h"
 #include "ConnectionController.h"
 #include "DemoServer.h"
 #include "ElevationSetup.h"
+#include "FleetRecording.h"
+#include "FlightRecorder.h"
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "ReplayController.h"
 #include "RouteAnalyzer.h"
 #include "RouteAutosave.h"
 #include "RouteDocument.h"
@@ -54,6 +58,26 @@ QString autosaveDirectory(const sortie::app::LaunchOptions &options)
     if (options.demo)
         return QDir::temp().filePath(QStringLiteral("sortie-demo-autosave"));
     return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(QStringLiteral("autosave"));
+}
+
+// SORTIE_FLIGHTLOG_DIR, else a folder of its own for the demo, else the application data folder.
+QString flightLogDirectory(const sortie::app::LaunchOptions &options)
+{
+    const QString env = qEnvironmentVariable("SORTIE_FLIGHTLOG_DIR");
+    if (!env.isEmpty())
+        return env;
+    if (options.demo)
+        return QDir::temp().filePath(QStringLiteral("sortie-demo-flightlogs"));
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(QStringLiteral("flightlogs"));
+}
+
+// The operator's limits (settings flightlog/maxFileMB and flightlog/maxFolderMB; 0: no limit).
+sortie::flightlog::RecordingLimits recordingLimits(const QSettings &storage)
+{
+    sortie::flightlog::RecordingLimits limits;
+    limits.maxFileBytes = storage.value(QStringLiteral("flightlog/maxFileMB"), limits.maxFileBytes >> 20).toLongLong() << 20;
+    limits.maxFolderBytes = storage.value(QStringLiteral("flightlog/maxFolderMB"), limits.maxFolderBytes >> 20).toLongLong() << 20;
+    return limits;
 }
 
 } // namespace
@@ -118,6 +142,14 @@ int main(int argc, char *argv[])
     sortie::client::RouteAutosave autosave(missions.document(), autosaves);
     QObject::connect(&connection, &sortie::client::ConnectionController::ready, &autosave,
                      [&] { autosave.setServer(connection.server(), connection.user()); });
+    // Every session is recorded without the operator asking: a log per run in the data folder.
+    sortie::flightlog::FlightRecorder recorder(
+        {sortie::flightlog::FlightRecorder::sessionPath(flightLogDirectory(options)), recordingLimits(storage), 500});
+    if (QString error; !recorder.start(&error))
+        std::fprintf(stderr, "sortie: %s\n", qPrintable(error)); // flying goes on without a log
+    sortie::flightlog::FleetRecording recording(&fleet, &recorder, &session);
+    sortie::flightlog::ReplayController replay;
+    sortie::flightlog::ComparisonController comparison(&replay);
     sortie::app::DemoServer demo;
     if (options.demo) {
         QString error;
@@ -133,6 +165,8 @@ int main(int argc, char *argv[])
                                  {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&connection)},
                                  {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&missions)},
                                  {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&fleet)},
+                                 {QStringLiteral("replay"), QVariant::fromValue(&replay)},
+                                 {QStringLiteral("comparison"), QVariant::fromValue(&comparison)},
                                  {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(&recovery)},
                                  {QStringLiteral("elevation"), QVariant::fromValue<QObject *>(elevation.service())}});
     engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));

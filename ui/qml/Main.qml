@@ -14,6 +14,9 @@ ApplicationWindow {
     property MissionController missions: null
     property VehicleFleet fleet: null
     property ElevationService elevation: null   // the terrain service (core/terrain), when there is one
+    // Flight-log replay (the timeline on the telemetry page); null when the program has none.
+    property ReplayController replay: null
+    property ComparisonController comparison: null
     // Edits a previous run left unsaved, offered at start.
     property AutosaveRecovery recovery: null
     property string connectionState: connection ? connection.state : "Disconnected"
@@ -114,6 +117,8 @@ ApplicationWindow {
             id: telemetryPage
             objectName: "telemetryPage"
             fleet: window.fleet
+            replay: window.replay
+            comparison: window.comparison
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource

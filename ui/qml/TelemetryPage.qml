@@ -12,9 +12,13 @@ Page {
     property alias pane: pane
     required property VehicleFleet fleet   // null: no client layer (the shell's own tests)
     required property DisplayUnits units
-    property var vehicleModel: fleet        // any list model with the fleet's role names
+    // A log being replayed takes the place of the live vehicles (the timeline says so).
+    property ReplayController replay: null
+    property ComparisonController comparison: null
+    readonly property bool replaying: replay !== null && replay.active
+    property var vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
     property var plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
-    readonly property Vehicle current: fleet && vehicleLayer.currentIndex >= 0 ? fleet.vehicleAt(vehicleLayer.currentIndex) : null
+    readonly property Vehicle current: vehicleModel && vehicleLayer.currentIndex >= 0 ? vehicleModel.vehicleAt(vehicleLayer.currentIndex) : null
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
@@ -100,8 +104,15 @@ Page {
                     objectName: "flightPlanLayer"
                     anchors.fill: parent
                     map: pane.map
-                    model: page.fleet
+                    model: page.vehicleModel
                     currentIndex: vehicleLayer.currentIndex
+                }
+                DeviationLayer {
+                    objectName: "deviationLayer"
+                    anchors.fill: parent
+                    map: pane.map
+                    visible: page.replaying && page.comparison !== null
+                    model: page.comparison ? page.comparison.track : null
                 }
                 VehicleLayer {
                     id: vehicleLayer
@@ -138,6 +149,11 @@ Page {
                     }
                 }
                 Connections {
+                    target: page.replay
+                    function onSeeked() { vehicleLayer.clearTrails() }
+                    function onLoadedChanged() { vehicleLayer.clearTrails() }
+                }
+                Connections {
                     target: pane.map
                     function onClicked(coordinate, modifiers) {
                         if (commands.goMode && page.current)
@@ -151,6 +167,21 @@ Page {
                 Layout.fillWidth: true
                 vehicle: page.current
                 fleet: page.fleet
+            }
+            Loader {
+                objectName: "replayTimelineLoader"
+                Layout.fillWidth: true
+                active: page.replay !== null
+                sourceComponent: ReplayTimeline { replay: page.replay }
+            }
+            Loader {
+                objectName: "comparisonPanelLoader"
+                Layout.fillWidth: true
+                active: page.replaying && page.comparison !== null
+                sourceComponent: ComparisonPanel {
+                    comparison: page.comparison
+                    vehicleIndex: vehicleLayer.currentIndex
+                }
             }
         }
         ColumnLayout {
@@ -227,9 +258,9 @@ Page {
                 Layout.fillHeight: true
                 Layout.minimumHeight: 140
                 vehicle: page.current
-                fleet: page.fleet
+                fleet: page.vehicleModel
                 fields: page.plotFields
-                windowSeconds: [60, 300, 1800][windowPicker.currentIndex]
+                windowSeconds: page.replaying ? page.replay.spanSeconds : [60, 300, 1800][windowPicker.currentIndex]
                 textColor: page.palette.windowText
             }
             CommandLogView {

@@ -1,0 +1,270 @@
+// sortie-log: record a UgCS server's vehicles into a flight log, describe a log, export its tracks,
+// compare a flight with its plan. The work is in core/flightlog; this file reads arguments.
+#include "FlightLog.h"
+#include "FlightLogExport.h"
+#include "FlightLogInfo.h"
+#include "MissionFiles.h"
+#include "RouteComparison.h"
+#include "ServerRecording.h"
+
+#include <QCoreApplication>
+#include <QFile>
+#include <QJsonDocument>
+#include <QLoggingCategory>
+#include <QSaveFile>
+#include <QSocketNotifier>
+#include <QTextStream>
+
+#include <csignal>
+#include <sys/socket.h>
+#include <unistd.h>
+
+using namespace sortie;
+
+namespace {
+
+const char *const kUsage =
+    "usage: sortie-log <command> [options]\n"
+    "\n"
+    "  record --server HOST:PORT --user NAME [--password-file FILE] [--seconds N] [--max-size MB] OUT\n"
+    "      Record every vehicle of an HCI server until N seconds have passed or SIGINT/SIGTERM,\n"
+    "      then close the log. The password is the first line of FILE (else $SORTIE_PASSWORD).\n"
+    "  info LOG [--json]\n"
+    "      Vehicles, fields, time span, sample counts, routes and events.\n"
+    "  export LOG --format gpx|kml|csv [--vehicle NAME] [-o OUT]\n"
+    "      Tracks as GPX 1.1, KML (gx:Track) or CSV; to stdout without -o.\n"
+    "  compare LOG ROUTE_FILE --vehicle NAME [--route N] [--json]\n"
+    "      The flown track against the planned route (.sortie, .plan, .waypoints): per leg the\n"
+    "      largest and mean cross-track and altitude deviation, when each waypoint was reached.\n"
+    "\n"
+    "Exit status: 0 done, 1 failed, 2 bad usage.\n";
+
+enum Exit { Ok = 0, Failed = 1, Usage = 2 };
+
+struct Args
+{
+    QStringList positional;
+    QHash<QString, QString> options;
+    QSet<QString> flags;
+};
+
+// Options with a value (--name VALUE) and flags (--json); anything else is positional.
+std::optional<Args> parse(const QStringList &in, const QStringList &valued, const QStringList &flags, QTextStream &err)
+{
+    Args a;
+    for (int i = 0; i < in.size(); ++i) {
+        const QString &s = in[i];
+        if (valued.contains(s)) {
+            if (i + 1 >= in.size()) {
+                err << "sortie-log: " << s << " needs a value\n";
+                return std::nullopt;
+            }
+            a.options.insert(s, in[++i]);
+        } else if (flags.contains(s)) {
+            a.flags.insert(s);
+        } else if (s.startsWith(QLatin1String("-")) && s.size() > 1) {
+            err << "sortie-log: unknown option " << s << "\n";
+            return std::nullopt;
+        } else {
+            a.positional.append(s);
+        }
+    }
+    return a;
+}
+
+std::unique_ptr<flightlog::FlightLog> openLog(const QString &path, QTextStream &err)
+{
+    QString error;
+    auto log = flightlog::FlightLog::open(path, &error);
+    if (!log)
+        err << "sortie-log: " << error << "\n";
+    else if (!log->stoppedAt().isEmpty())
+        err << "sortie-log: " << path << " is damaged; read up to its last good record: " << log->stoppedAt() << "\n";
+    return log;
+}
+
+int info(const QStringList &in, QTextStream &out, QTextStream &err)
+{
+    const auto a = parse(in, {}, {QStringLiteral("--json")}, err);
+    if (!a || a->positional.size() != 1)
+        return (err << kUsage, Usage);
+    const auto log = openLog(a->positional.first(), err);
+    if (!log)
+        return Failed;
+    if (a->flags.contains(QStringLiteral("--json")))
+        out << QJsonDocument(flightlog::logInfoJson(*log)).toJson(QJsonDocument::Indented);
+    else
+        out << flightlog::logInfoText(*log);
+    return Ok;
+}
+
+int exportTracks(const QStringList &in, QTextStream &out, QTextStream &err)
+{
+    const auto a = parse(in, {QStringLiteral("--format"), QStringLiteral("--vehicle"), QStringLiteral("-o")}, {}, err);
+    if (!a || a->positional.size() != 1 || !a->options.contains(QStringLiteral("--format")))
+        return (err << kUsage, Usage);
+    const auto format = flightlog::exportFormatFromName(a->options.value(QStringLiteral("--format")));
+    if (!format) {
+        err << "sortie-log: unknown format \"" << a->options.value(QStringLiteral("--format")) << "\" (gpx, kml or csv)\n";
+        return Usage;
+    }
+    const auto log = openLog(a->positional.first(), err);
+    if (!log)
+        return Failed;
+    std::vector<int> vehicles;
+    if (a->options.contains(QStringLiteral("--vehicle"))) {
+        const int v = log->vehicleIndex(a->options.value(QStringLiteral("--vehicle")));
+        if (v < 0) {
+            err << "sortie-log: no vehicle \"" << a->options.value(QStringLiteral("--vehicle")) << "\" in " << log->path() << "\n";
+            return Failed;
+        }
+        vehicles.push_back(v);
+    }
+    QString error;
+    if (a->options.contains(QStringLiteral("-o"))) {
+        QSaveFile file(a->options.value(QStringLiteral("-o")));
+        if (!file.open(QIODevice::WriteOnly) || !flightlog::exportLog(*log, *format, vehicles, &file, &error) || !file.commit()) {
+            err << "sortie-log: " << file.fileName() << ": " << (error.isEmpty() ? file.errorString() : error) << "\n";
+            return Failed;
+        }
+        return Ok;
+    }
+    out.flush();
+    QFile stdoutFile;
+    stdoutFile.open(stdout, QIODevice::WriteOnly);
+    if (!flightlog::exportLog(*log, *format, vehicles, &stdoutFile, &error)) {
+        err << "sortie-log: " << error << "\n";
+        return Failed;
+    }
+    return Ok;
+}
+
+int compare(const QStringList &in, QTextStream &out, QTextStream &err)
+{
+    const auto a = parse(in, {QStringLiteral("--vehicle"), QStringLiteral("--route")}, {QStringLiteral("--json")}, err);
+    if (!a || a->positional.size() != 2 || !a->options.contains(QStringLiteral("--vehicle")))
+        return (err << kUsage, Usage);
+    const auto log = openLog(a->positional[0], err);
+    if (!log)
+        return Failed;
+    const auto loaded = mission::formats::loadMission(a->positional[1]);
+    if (!loaded) {
+        err << "sortie-log: " << loaded.error().toString() << "\n";
+        return Failed;
+    }
+    const auto &routes = loaded->mission.routes;
+    bool ok = true;
+    const int routeIndex = a->options.value(QStringLiteral("--route"), QStringLiteral("1")).toInt(&ok) - 1;
+    if (!ok || routeIndex < 0 || size_t(routeIndex) >= routes.size()) {
+        err << "sortie-log: " << a->positional[1] << " has " << routes.size() << " route(s); --route takes 1 to " << routes.size() << "\n";
+        return Failed;
+    }
+    const QString vehicleName = a->options.value(QStringLiteral("--vehicle"));
+    const int vehicle = log->vehicleIndex(vehicleName);
+    const flightlog::ComparisonResult result = flightlog::compareRoute(*log, vehicle, routes[size_t(routeIndex)]);
+    if (!result.comparison) {
+        err << "sortie-log: " << (vehicle < 0 ? QStringLiteral("\"%1\": ").arg(vehicleName) : QString()) << result.error << "\n";
+        return Failed;
+    }
+    if (a->flags.contains(QStringLiteral("--json")))
+        out << QJsonDocument(result.comparison->toJson()).toJson(QJsonDocument::Indented);
+    else
+        out << result.comparison->toText();
+    return Ok;
+}
+
+int signalPipe[2] = {-1, -1};
+
+void onSignal(int)
+{
+    const char c = 1;
+    [[maybe_unused]] const auto n = ::write(signalPipe[1], &c, 1);
+}
+
+int record(QCoreApplication &app, const QStringList &in, QTextStream &out, QTextStream &err)
+{
+    const auto a = parse(in, {QStringLiteral("--server"), QStringLiteral("--user"), QStringLiteral("--password-file"),
+                              QStringLiteral("--seconds"), QStringLiteral("--max-size")}, {}, err);
+    if (!a || a->positional.size() != 1 || !a->options.contains(QStringLiteral("--server")) || !a->options.contains(QStringLiteral("--user")))
+        return (err << kUsage, Usage);
+    flightlog::ServerRecording::Options options;
+    options.server = a->options.value(QStringLiteral("--server"));
+    options.user = a->options.value(QStringLiteral("--user"));
+    options.path = a->positional.first();
+    options.limits.maxFolderBytes = 0; // a file the operator named: never prune its folder
+    bool ok = true;
+    options.seconds = a->options.value(QStringLiteral("--seconds"), QStringLiteral("0")).toInt(&ok);
+    if (!ok || options.seconds < 0)
+        return (err << "sortie-log: --seconds takes a whole number of seconds\n", Usage);
+    if (a->options.contains(QStringLiteral("--max-size"))) {
+        const qint64 mb = a->options.value(QStringLiteral("--max-size")).toLongLong(&ok);
+        if (!ok || mb <= 0)
+            return (err << "sortie-log: --max-size takes a number of MB\n", Usage);
+        options.limits.maxFileBytes = mb << 20;
+    }
+    if (a->options.contains(QStringLiteral("--password-file"))) {
+        QFile file(a->options.value(QStringLiteral("--password-file")));
+        if (!file.open(QIODevice::ReadOnly)) {
+            err << "sortie-log: " << file.fileName() << ": " << file.errorString() << "\n";
+            return Failed;
+        }
+        options.password = QString::fromUtf8(file.readLine()).trimmed();
+    } else {
+        options.password = qEnvironmentVariable("SORTIE_PASSWORD");
+    }
+
+    flightlog::ServerRecording recording(options);
+    // SIGINT and SIGTERM close the log cleanly: the handler only writes a byte, the loop does the rest.
+    ::socketpair(AF_UNIX, SOCK_STREAM, 0, signalPipe);
+    QSocketNotifier notifier(signalPipe[0], QSocketNotifier::Read);
+    QObject::connect(&notifier, &QSocketNotifier::activated, &recording, [&] {
+        char c;
+        [[maybe_unused]] const auto n = ::read(signalPipe[0], &c, 1);
+        recording.stop();
+    });
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+    QObject::connect(&recording, &flightlog::ServerRecording::message, &app, [&out](const QString &line) {
+        out << line << Qt::endl;
+    });
+    int code = Ok;
+    QObject::connect(&recording, &flightlog::ServerRecording::finished, &app, [&](int exitCode, const QString &error) {
+        if (!error.isEmpty())
+            err << "sortie-log: " << error << Qt::endl;
+        code = exitCode;
+        app.quit();
+    }, Qt::QueuedConnection);
+    QString error;
+    if (!recording.start(&error)) {
+        err << "sortie-log: " << error << "\n";
+        return Failed;
+    }
+    app.exec();
+    return code;
+}
+
+} // namespace
+
+int main(int argc, char **argv)
+{
+    QCoreApplication app(argc, argv);
+    QCoreApplication::setApplicationName(QStringLiteral("sortie-log"));
+    QLoggingCategory::setFilterRules(QStringLiteral("sortie.*.info=false\nsortie.*.debug=false"));
+    QTextStream out(stdout), err(stderr);
+    QStringList args = app.arguments().mid(1);
+    if (args.isEmpty() || args.first() == QLatin1String("--help") || args.first() == QLatin1String("-h")) {
+        (args.isEmpty() ? err : out) << kUsage;
+        return args.isEmpty() ? Usage : Ok;
+    }
+    const QString command = args.takeFirst();
+    if (command == QLatin1String("record"))
+        return record(app, args, out, err);
+    if (command == QLatin1String("info"))
+        return info(args, out, err);
+    if (command == QLatin1String("export"))
+        return exportTracks(args, out, err);
+    if (command == QLatin1String("compare"))
+        return compare(args, out, err);
+    err << "sortie-log: unknown command \"" << command << "\"\n\n" << kUsage;
+    return Usage;
+}

@@ -1,0 +1,318 @@
+#include "FlightLog.h"
+
+#include "FlightLogLog.h"
+#include "FlightLogSchema.h"
+
+#include <QDateTime>
+#include <QFileInfo>
+#include <QHash>
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QUuid>
+
+#include <algorithm>
+
+namespace sortie::flightlog {
+
+using vehicle::TelemetryBatch;
+using vehicle::TelemetryField;
+using vehicle::TelemetrySample;
+
+namespace {
+
+QString timeText(int64_t ms)
+{
+    return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz 'UTC'"));
+}
+
+// The connection is removed when the last query on it is gone.
+class Connection
+{
+public:
+    explicit Connection(const QString &path, QString *error)
+        : m_name(QStringLiteral("flightlog-reader-") + QUuid::createUuid().toString(QUuid::WithoutBraces))
+    {
+        m_db = schema::open(path, m_name, true, error);
+    }
+    ~Connection()
+    {
+        m_db.close();
+        m_db = QSqlDatabase();
+        QSqlDatabase::removeDatabase(m_name);
+    }
+    QSqlDatabase &db() { return m_db; }
+
+private:
+    QString m_name;
+    QSqlDatabase m_db;
+};
+
+} // namespace
+
+uint64_t FlightLog::Vehicle::sampleCount() const
+{
+    uint64_t n = 0;
+    for (uint64_t c : counts)
+        n += c;
+    return n;
+}
+
+bool FlightLog::Vehicle::appendBlock(std::string data, std::string *error)
+{
+    const auto summary = TelemetryBlockCodec::summarize(data, error);
+    if (!summary)
+        return false;
+    Block b{summary->t0, summary->t1, 0, std::move(data)};
+    for (size_t f = 0; f < vehicle::kTelemetryFieldCount; ++f) {
+        if (summary->counts[f]) {
+            b.fields |= 1u << f;
+            counts[f] += summary->counts[f];
+        }
+    }
+    blocks.push_back(std::move(b));
+    return true;
+}
+
+std::unique_ptr<FlightLog> FlightLog::open(const QString &path, QString *error)
+{
+    auto fail = [&](const QString &why) {
+        if (error)
+            *error = why;
+        return nullptr;
+    };
+    if (!QFileInfo(path).isFile())
+        return fail(QObject::tr("%1: no such file").arg(path));
+    // A log whose recorder was killed still has its write-ahead journal beside it: opening it
+    // read-write lets SQLite apply the committed transactions and ignore the torn one.
+    const bool recovering = QFileInfo::exists(path + QStringLiteral("-wal"));
+    QString why;
+    Connection c(path, &why);
+    if (!c.db().isOpen())
+        return fail(QObject::tr("%1: cannot be opened: %2").arg(path, why));
+    if (recovering) {
+        c.db().close();
+        c.db().setConnectOptions(QString());
+        if (!c.db().open())
+            return fail(QObject::tr("%1: cannot be opened: %2").arg(path, c.db().lastError().text()));
+    }
+    QSqlQuery q(c.db());
+    q.setForwardOnly(true);
+    // A file cut short holds fewer pages than its header says; SQLite calls that corrupt unless the
+    // schema is "writable", and then reads what is there (nothing is written through this connection).
+    q.exec(QStringLiteral("PRAGMA writable_schema=ON"));
+    if (!q.exec(QStringLiteral("SELECT value FROM meta WHERE key = 'application'")) || !q.next()
+        || q.value(0).toString() != QLatin1String(schema::kApplicationId)) {
+        const QString detail = q.lastError().isValid() ? q.lastError().text() : QObject::tr("no Sortie flight log header");
+        return fail(QObject::tr("%1 is not a Sortie flight log (%2)").arg(path, detail));
+    }
+
+    auto log = std::make_unique<FlightLog>();
+    log->m_path = path;
+    QHash<qint64, int> vehicleOf;
+    auto stop = [&log](const QString &why) {
+        if (log->m_stoppedAt.isEmpty())
+            log->m_stoppedAt = why;
+    };
+
+    if (!q.exec(QStringLiteral("SELECT id, key, name, protocol, type, autopilot FROM vehicles ORDER BY id")))
+        return fail(QObject::tr("%1: the vehicles cannot be read: %2").arg(path, q.lastError().text()));
+    while (q.next()) {
+        Vehicle v;
+        v.key = q.value(1).toString();
+        v.identity.id = v.key.section(QLatin1Char(':'), 1);
+        v.identity.name = q.value(2).toString();
+        v.identity.protocol = q.value(3).toString();
+        v.identity.type = q.value(4).toString();
+        v.identity.autopilot = q.value(5).toString();
+        vehicleOf.insert(q.value(0).toLongLong(), int(log->m_vehicles.size()));
+        log->m_vehicles.push_back(std::move(v));
+    }
+    if (q.lastError().isValid())
+        stop(QObject::tr("the vehicle list is damaged: %1").arg(q.lastError().text()));
+
+    if (q.exec(QStringLiteral("SELECT vehicle, data FROM blocks ORDER BY id"))) {
+        qint64 good = 0, lastTime = 0;
+        while (q.next()) {
+            const int index = vehicleOf.value(q.value(0).toLongLong(), -1);
+            const QByteArray data = q.value(1).toByteArray();
+            std::string problem;
+            if (index < 0 || !log->m_vehicles[size_t(index)].appendBlock(std::string(data.constData(), size_t(data.size())), &problem)) {
+                stop(QObject::tr("block %1 (after %2 good ones, %3) is damaged: %4")
+                         .arg(good + 1).arg(good).arg(good ? timeText(lastTime) : QObject::tr("at the start"),
+                              index < 0 ? QObject::tr("unknown vehicle") : QString::fromStdString(problem)));
+                break;
+            }
+            lastTime = std::max<qint64>(lastTime, log->m_vehicles[size_t(index)].blocks.back().t1);
+            ++good;
+        }
+        if (q.lastError().isValid())
+            stop(QObject::tr("stopped after %1 good blocks (%2): %3").arg(good).arg(good ? timeText(lastTime) : QObject::tr("none"), q.lastError().text()));
+    } else {
+        stop(QObject::tr("the telemetry cannot be read: %1").arg(q.lastError().text()));
+    }
+
+    if (q.exec(QStringLiteral("SELECT vehicle, time, kind, text, ok FROM events ORDER BY id"))) {
+        while (q.next()) {
+            const QVariant ok = q.value(4);
+            log->m_events.push_back({q.value(0).isNull() ? -1 : vehicleOf.value(q.value(0).toLongLong(), -1), q.value(1).toLongLong(),
+                                     q.value(2).toString(), q.value(3).toString(), ok.isNull() ? -1 : ok.toInt()});
+        }
+        if (q.lastError().isValid())
+            stop(QObject::tr("the events stop after %1: %2").arg(log->m_events.size()).arg(q.lastError().text()));
+    } else {
+        stop(QObject::tr("the events cannot be read: %1").arg(q.lastError().text()));
+    }
+
+    if (q.exec(QStringLiteral("SELECT vehicle, time, items FROM missions ORDER BY id"))) {
+        while (q.next()) {
+            const int index = vehicleOf.value(q.value(0).toLongLong(), -1);
+            bool ok = false;
+            auto items = schema::missionFromJson(q.value(2).toString().toUtf8(), &ok);
+            if (index >= 0 && ok)
+                log->m_vehicles[size_t(index)].missions.push_back({q.value(1).toLongLong(), std::move(items)});
+        }
+        if (q.lastError().isValid())
+            stop(QObject::tr("the routes stop early: %1").arg(q.lastError().text()));
+    } else {
+        stop(QObject::tr("the routes cannot be read: %1").arg(q.lastError().text()));
+    }
+    q.finish();
+    log->finish();
+    if (!log->m_stoppedAt.isEmpty())
+        qCWarning(lcFlightLog) << path << "read partly:" << log->m_stoppedAt;
+    return log;
+}
+
+void FlightLog::addVehicle(Vehicle v)
+{
+    m_vehicles.push_back(std::move(v));
+}
+
+void FlightLog::addEvent(Event e)
+{
+    m_events.push_back(std::move(e));
+}
+
+void FlightLog::finish()
+{
+    std::stable_sort(m_events.begin(), m_events.end(), [](const Event &a, const Event &b) { return a.time < b.time; });
+    bool any = false;
+    for (Vehicle &v : m_vehicles) {
+        std::stable_sort(v.blocks.begin(), v.blocks.end(), [](const Block &a, const Block &b) { return a.t0 < b.t0; });
+        if (v.blocks.empty())
+            continue;
+        v.start = v.blocks.front().t0;
+        v.end = v.blocks.front().t1;
+        for (const Block &b : v.blocks) {
+            v.start = std::min(v.start, b.t0);
+            v.end = std::max(v.end, b.t1);
+        }
+        m_start = any ? std::min(m_start, v.start) : v.start;
+        m_end = any ? std::max(m_end, v.end) : v.end;
+        any = true;
+    }
+    if (any)
+        return; // the span is the telemetry's: events without it (a session start) may be on another clock
+    for (const Event &e : m_events) { // a log with events only still has a span
+        m_start = any ? std::min(m_start, e.time) : e.time;
+        m_end = any ? std::max(m_end, e.time) : e.time;
+        any = true;
+    }
+}
+
+int FlightLog::vehicleIndex(const QString &nameOrKey) const
+{
+    for (size_t i = 0; i < m_vehicles.size(); ++i) {
+        if (m_vehicles[i].key == nameOrKey || m_vehicles[i].identity.name == nameOrKey || m_vehicles[i].identity.id == nameOrKey)
+            return int(i);
+    }
+    return -1;
+}
+
+std::vector<TelemetrySample> FlightLog::series(int vehicle, TelemetryField field, int64_t from, int64_t to) const
+{
+    std::vector<TelemetrySample> out;
+    if (vehicle < 0 || size_t(vehicle) >= m_vehicles.size())
+        return out;
+    const Vehicle &v = m_vehicles[size_t(vehicle)];
+    out.reserve(size_t(v.counts[size_t(field)]));
+    for (const Block &b : v.blocks) {
+        if (b.t1 < from || b.t0 > to || !(b.fields & (1u << unsigned(field))))
+            continue;
+        auto fields = TelemetryBlockCodec::decode(b.data, nullptr, field);
+        if (!fields || fields->empty())
+            continue;
+        for (const TelemetrySample &s : fields->front().samples) {
+            if (s.time >= from && s.time <= to)
+                out.push_back(s);
+        }
+    }
+    return out;
+}
+
+TelemetryBatch FlightLog::updatesBetween(int vehicle, int64_t from, int64_t to) const
+{
+    TelemetryBatch out;
+    if (vehicle < 0 || size_t(vehicle) >= m_vehicles.size() || to <= from)
+        return out;
+    const Vehicle &v = m_vehicles[size_t(vehicle)];
+    // Blocks are in time order; the first one that can hold a sample after `from`.
+    auto it = std::partition_point(v.blocks.begin(), v.blocks.end(), [from](const Block &b) { return b.t1 <= from; });
+    for (; it != v.blocks.end() && it->t0 <= to; ++it) {
+        auto fields = TelemetryBlockCodec::decode(it->data);
+        if (!fields)
+            continue;
+        for (const FieldSamples &f : *fields) {
+            for (const TelemetrySample &s : f.samples) {
+                if (s.time > from && s.time <= to)
+                    out.push_back({f.field, s.value, s.time});
+            }
+        }
+    }
+    std::stable_sort(out.begin(), out.end(), [](const auto &a, const auto &b) { return a.time < b.time; });
+    return out;
+}
+
+TelemetryBatch FlightLog::stateAt(int vehicle, int64_t time) const
+{
+    TelemetryBatch out;
+    if (vehicle < 0 || size_t(vehicle) >= m_vehicles.size())
+        return out;
+    const Vehicle &v = m_vehicles[size_t(vehicle)];
+    std::array<std::optional<TelemetrySample>, vehicle::kTelemetryFieldCount> last;
+    uint32_t wanted = 0;
+    for (size_t f = 0; f < vehicle::kTelemetryFieldCount; ++f) {
+        if (v.counts[f])
+            wanted |= 1u << f;
+    }
+    // Walk back from the last block that starts by `time`, decoding only blocks that hold a field
+    // still missing.
+    auto it = std::partition_point(v.blocks.begin(), v.blocks.end(), [time](const Block &b) { return b.t0 <= time; });
+    while (wanted && it != v.blocks.begin()) {
+        --it;
+        if (!(it->fields & wanted))
+            continue;
+        auto fields = TelemetryBlockCodec::decode(it->data);
+        if (!fields)
+            continue;
+        for (const FieldSamples &f : *fields) {
+            const uint32_t bit = 1u << unsigned(f.field);
+            if (!(wanted & bit))
+                continue;
+            for (auto s = f.samples.rbegin(); s != f.samples.rend(); ++s) {
+                if (s->time <= time) {
+                    last[size_t(f.field)] = *s;
+                    wanted &= ~bit;
+                    break;
+                }
+            }
+        }
+    }
+    for (size_t f = 0; f < vehicle::kTelemetryFieldCount; ++f) {
+        if (last[f])
+            out.push_back({TelemetryField(f), last[f]->value, last[f]->time});
+    }
+    return out;
+}
+
+} // namespace sortie::flightlog

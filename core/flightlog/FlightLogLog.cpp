@@ -1,0 +1,3 @@
+#include "FlightLogLog.h"
+
+Q_LOGGING_CATEGORY(lcFlightLog, "sortie.flightlog", QtInfoMsg)

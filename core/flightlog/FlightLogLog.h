@@ -1,0 +1,6 @@
+#pragma once
+
+#include <QLoggingCategory>
+
+// sortie.flightlog: recording, reading and replaying flight logs.
+Q_DECLARE_LOGGING_CATEGORY(lcFlightLog)

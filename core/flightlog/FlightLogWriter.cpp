@@ -1,0 +1,299 @@
+#include "FlightLogWriter.h"
+
+#include "FlightLogLog.h"
+#include "FlightLogSchema.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QSqlError>
+#include <QSqlQuery>
+#include <QUuid>
+
+#include <time.h>
+
+namespace sortie::flightlog {
+
+namespace {
+qint64 threadCpuNs()
+{
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return qint64(ts.tv_sec) * 1000000000 + ts.tv_nsec;
+}
+
+QString partPath(const QString &base, int part)
+{
+    if (part <= 1)
+        return base;
+    const QFileInfo info(base);
+    return info.dir().filePath(QStringLiteral("%1-%2%3").arg(info.completeBaseName()).arg(part).arg(QLatin1String(schema::kSuffix)));
+}
+} // namespace
+
+FlightLogWriter::FlightLogWriter(QString path, RecordingLimits limits, QObject *parent)
+    : QObject(parent)
+    , m_basePath(std::move(path))
+    , m_connection(QStringLiteral("flightlog-writer-") + QUuid::createUuid().toString(QUuid::WithoutBraces))
+    , m_limits(limits)
+{
+}
+
+FlightLogWriter::~FlightLogWriter()
+{
+    close();
+}
+
+bool FlightLogWriter::open(QString *error)
+{
+    QDir().mkpath(QFileInfo(m_basePath).absolutePath());
+    m_parts = 0;
+    return openPart(m_basePath, error);
+}
+
+bool FlightLogWriter::openPart(const QString &path, QString *error)
+{
+    m_db = schema::open(path, m_connection, false, error);
+    if (!m_db.isOpen())
+        return false;
+    QSqlQuery q(m_db);
+    // WAL: a commit appends to the log file, readers (a replay of the running session) never block
+    // the writer, and a torn last transaction is ignored on the next open. FULL syncs the WAL at each
+    // commit (once per flush): a power cut loses at most the flush in flight.
+    q.exec(QStringLiteral("PRAGMA journal_mode=WAL"));
+    q.next();
+    if (q.value(0).toString().compare(QLatin1String("wal"), Qt::CaseInsensitive) != 0) {
+        if (error)
+            *error = tr("%1: the log cannot use a write-ahead journal").arg(path);
+        m_db.close();
+        return false;
+    }
+    q.exec(QStringLiteral("PRAGMA synchronous=FULL"));
+    if (!schema::create(m_db, error)) {
+        m_db.close();
+        return false;
+    }
+    {
+        QMutexLocker lock(&m_pathMutex);
+        m_path = path;
+    }
+    m_vehicleRows.clear();
+    ++m_parts;
+    m_failed = false;
+    qCInfo(lcFlightLog) << "recording to" << path;
+    return true;
+}
+
+void FlightLogWriter::close()
+{
+    if (!m_db.isValid())
+        return;
+    if (m_db.isOpen()) {
+        QSqlQuery q(m_db);
+        q.exec(QStringLiteral("PRAGMA wal_checkpoint(TRUNCATE)")); // a closed log is one file again
+        q.finish();
+        m_db.close();
+    }
+    m_db = QSqlDatabase();
+    QSqlDatabase::removeDatabase(m_connection);
+}
+
+QString FlightLogWriter::currentPath() const
+{
+    QMutexLocker lock(&m_pathMutex);
+    return m_path;
+}
+
+FlightLogWriter::Stats FlightLogWriter::stats() const
+{
+    return {m_values.load(), m_blocks.load(), m_blockBytes.load(), m_cpuNs.load(), m_parts.load()};
+}
+
+void FlightLogWriter::write(const RecordingChunk &chunk)
+{
+    if (!m_db.isOpen() || chunk.empty())
+        return;
+    const qint64 start = threadCpuNs();
+    QString error;
+    if (!writeChunk(chunk, &error)) {
+        m_db.rollback();
+        if (!m_failed) { // say it once, not every second
+            m_failed = true;
+            qCWarning(lcFlightLog) << "recording failed:" << error;
+            emit errorOccurred(tr("Recording to %1 failed: %2").arg(currentPath(), error));
+        }
+    } else {
+        m_failed = false;
+        if (m_limits.maxFileBytes > 0 && sizeOnDisk() > m_limits.maxFileBytes)
+            rotate();
+    }
+    m_cpuNs += threadCpuNs() - start;
+}
+
+qint64 FlightLogWriter::vehicleRow(const QString &key)
+{
+    const auto it = m_vehicleRows.constFind(key);
+    if (it != m_vehicleRows.constEnd())
+        return *it;
+    // A vehicle whose identity never came: a row under its key, so its telemetry has somewhere to go.
+    RecordedVehicle v{key, {}};
+    v.identity.id = key;
+    QSqlQuery q(m_db);
+    q.prepare(QStringLiteral("INSERT INTO vehicles(key, name, protocol, type, autopilot) VALUES (?, ?, '', '', '')"
+                             " ON CONFLICT(key) DO NOTHING"));
+    q.addBindValue(key);
+    q.addBindValue(key);
+    q.exec();
+    q.prepare(QStringLiteral("SELECT id FROM vehicles WHERE key = ?"));
+    q.addBindValue(key);
+    if (!q.exec() || !q.next())
+        return -1;
+    const qint64 row = q.value(0).toLongLong();
+    m_vehicleRows.insert(key, row);
+    return row;
+}
+
+bool FlightLogWriter::writeChunk(const RecordingChunk &chunk, QString *error)
+{
+    auto failed = [error](const QSqlQuery &q) {
+        *error = q.lastError().text();
+        return false;
+    };
+    if (!m_db.transaction()) {
+        *error = m_db.lastError().text();
+        return false;
+    }
+    QSqlQuery q(m_db);
+    for (const RecordedVehicle &v : chunk.vehicles) {
+        m_vehicles.insert(v.key, v);
+        q.prepare(QStringLiteral("INSERT INTO vehicles(key, name, protocol, type, autopilot) VALUES (?, ?, ?, ?, ?)"
+                                 " ON CONFLICT(key) DO UPDATE SET name = excluded.name, protocol = excluded.protocol,"
+                                 " type = excluded.type, autopilot = excluded.autopilot"));
+        q.addBindValue(v.key);
+        q.addBindValue(v.identity.name.isEmpty() ? v.identity.id : v.identity.name);
+        q.addBindValue(v.identity.protocol);
+        q.addBindValue(v.identity.type);
+        q.addBindValue(v.identity.autopilot);
+        if (!q.exec())
+            return failed(q);
+    }
+    if (!chunk.samples.empty()) {
+        q.prepare(QStringLiteral("INSERT INTO blocks(vehicle, t0, t1, count, data) VALUES (?, ?, ?, ?, ?)"));
+        for (const RecordedSamples &s : chunk.samples) {
+            int64_t t0 = INT64_MAX, t1 = INT64_MIN;
+            size_t count = 0;
+            for (const FieldSamples &f : s.fields) {
+                if (f.samples.empty())
+                    continue;
+                for (const auto &sample : f.samples) {
+                    t0 = std::min(t0, sample.time);
+                    t1 = std::max(t1, sample.time);
+                }
+                count += f.samples.size();
+            }
+            if (!count)
+                continue;
+            const std::string block = TelemetryBlockCodec::encode(s.fields);
+            q.addBindValue(vehicleRow(s.vehicleKey));
+            q.addBindValue(qint64(t0));
+            q.addBindValue(qint64(t1));
+            q.addBindValue(qint64(count));
+            q.addBindValue(QByteArray::fromRawData(block.data(), qsizetype(block.size())));
+            if (!q.exec())
+                return failed(q);
+            m_values += count;
+            ++m_blocks;
+            m_blockBytes += block.size();
+        }
+    }
+    if (!chunk.events.empty()) {
+        q.prepare(QStringLiteral("INSERT INTO events(vehicle, time, kind, text, ok) VALUES (?, ?, ?, ?, ?)"));
+        for (const RecordedEvent &e : chunk.events) {
+            q.addBindValue(e.vehicleKey.isEmpty() ? QVariant() : QVariant(vehicleRow(e.vehicleKey)));
+            q.addBindValue(qint64(e.time));
+            q.addBindValue(e.kind);
+            q.addBindValue(e.text);
+            q.addBindValue(e.ok < 0 ? QVariant() : QVariant(e.ok));
+            if (!q.exec())
+                return failed(q);
+        }
+    }
+    if (!chunk.missions.empty()) {
+        q.prepare(QStringLiteral("INSERT INTO missions(vehicle, time, items) VALUES (?, ?, ?)"));
+        for (const RecordedMission &m : chunk.missions) {
+            m_lastMissions.insert(m.vehicleKey, m);
+            q.addBindValue(vehicleRow(m.vehicleKey));
+            q.addBindValue(qint64(m.time));
+            q.addBindValue(QString::fromUtf8(schema::missionToJson(m.items)));
+            if (!q.exec())
+                return failed(q);
+        }
+    }
+    if (!m_db.commit()) {
+        *error = m_db.lastError().text();
+        return false;
+    }
+    return true;
+}
+
+qint64 FlightLogWriter::sizeOnDisk()
+{
+    QSqlQuery q(m_db);
+    if (!q.exec(QStringLiteral("PRAGMA page_count")) || !q.next())
+        return 0;
+    const qint64 pages = q.value(0).toLongLong();
+    if (!q.exec(QStringLiteral("PRAGMA page_size")) || !q.next())
+        return 0;
+    return pages * q.value(0).toLongLong();
+}
+
+void FlightLogWriter::rotate()
+{
+    close();
+    const QString next = partPath(m_basePath, m_parts + 1);
+    QString error;
+    if (!openPart(next, &error)) {
+        m_failed = true;
+        emit errorOccurred(tr("Recording could not continue in %1: %2").arg(next, error));
+        return;
+    }
+    // Each part stands on its own: it names its vehicles and holds their routes again.
+    RecordingChunk carry;
+    for (const RecordedVehicle &v : std::as_const(m_vehicles))
+        carry.vehicles.push_back(v);
+    for (const RecordedMission &m : std::as_const(m_lastMissions))
+        carry.missions.push_back(m);
+    if (!writeChunk(carry, &error))
+        m_db.rollback();
+    if (m_limits.maxFolderBytes > 0)
+        pruneFolder(QFileInfo(next).absolutePath(), m_limits.maxFolderBytes, next);
+    emit rotated(next);
+}
+
+QStringList FlightLogWriter::pruneFolder(const QString &folder, qint64 maxBytes, const QString &keep)
+{
+    QDir dir(folder);
+    QFileInfoList logs = dir.entryInfoList({QStringLiteral("*") + QLatin1String(schema::kSuffix)}, QDir::Files, QDir::Time | QDir::Reversed);
+    auto sizeOf = [&dir](const QFileInfo &f) {
+        return f.size() + QFileInfo(dir.filePath(f.fileName() + QStringLiteral("-wal"))).size();
+    };
+    qint64 total = 0;
+    for (const QFileInfo &f : logs)
+        total += sizeOf(f);
+    QStringList removed;
+    const QString kept = QFileInfo(keep).absoluteFilePath();
+    for (const QFileInfo &f : logs) { // oldest first
+        if (total <= maxBytes)
+            break;
+        if (f.absoluteFilePath() == kept)
+            continue;
+        total -= sizeOf(f);
+        QFile::remove(f.absoluteFilePath());
+        QFile::remove(f.absoluteFilePath() + QStringLiteral("-wal"));
+        QFile::remove(f.absoluteFilePath() + QStringLiteral("-shm"));
+        removed.append(f.absoluteFilePath());
+        qCInfo(lcFlightLog) << "removed old log" << f.fileName() << "(folder over its limit)";
+    }
+    return removed;
+}
+
+} // namespace sortie::flightlog

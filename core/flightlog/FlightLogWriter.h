@@ -1,0 +1,78 @@
+#pragma once
+
+#include "RecordingChunk.h"
+
+#include <QHash>
+#include <QMutex>
+#include <QObject>
+#include <QSqlDatabase>
+
+#include <atomic>
+
+namespace sortie::flightlog {
+
+// How big a session's log may grow, and how much the log folder may hold; the operator sets both.
+struct RecordingLimits
+{
+    qint64 maxFileBytes = 256ll << 20;   // a log reaching it continues in a new part (<name>-2.sortielog, ...)
+    qint64 maxFolderBytes = 4ll << 30;   // the oldest logs in the folder are deleted beyond it; 0: never
+};
+
+// Writes recording chunks into a SQLite flight log (docs/flightlog.md). Lives on the recorder's
+// writer thread: the database connection is created, used and closed there. Each chunk is one
+// transaction, committed with the WAL synced, so a killed process loses only the chunk in flight.
+class FlightLogWriter : public QObject
+{
+    Q_OBJECT
+
+public:
+    struct Stats
+    {
+        quint64 values = 0;  // telemetry values written
+        quint64 blocks = 0;
+        quint64 blockBytes = 0; // encoded telemetry bytes
+        qint64 cpuNs = 0;    // CPU time this thread spent encoding and writing
+        int parts = 0;       // files written (1 + rotations)
+    };
+
+    FlightLogWriter(QString path, RecordingLimits limits, QObject *parent = nullptr);
+    ~FlightLogWriter() override;
+
+    bool open(QString *error);
+    void write(const RecordingChunk &chunk);
+    void close();
+
+    QString currentPath() const;
+    Stats stats() const;
+
+    // Deletes the oldest *.sortielog files in `folder` (never `keep`) until the folder holds at most
+    // maxBytes of them; returns the files removed.
+    static QStringList pruneFolder(const QString &folder, qint64 maxBytes, const QString &keep);
+
+signals:
+    void errorOccurred(const QString &message);
+    void rotated(const QString &path);
+
+private:
+    bool openPart(const QString &path, QString *error);
+    bool writeChunk(const RecordingChunk &chunk, QString *error);
+    qint64 vehicleRow(const QString &key);
+    qint64 sizeOnDisk();
+    void rotate();
+
+    QString m_basePath;
+    QString m_path;
+    QString m_connection;
+    RecordingLimits m_limits;
+    QSqlDatabase m_db;
+    QHash<QString, qint64> m_vehicleRows;
+    QHash<QString, RecordedVehicle> m_vehicles;          // to repeat in a new part
+    QHash<QString, RecordedMission> m_lastMissions;      // likewise
+    bool m_failed = false;
+    std::atomic<quint64> m_values{0}, m_blocks{0}, m_blockBytes{0};
+    std::atomic<qint64> m_cpuNs{0};
+    std::atomic<int> m_parts{0};
+    mutable QMutex m_pathMutex; // m_path is read from the recorder's thread
+};
+
+} // namespace sortie::flightlog

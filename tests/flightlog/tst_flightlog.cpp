@@ -1,0 +1,420 @@
+// A recorder on scripted vehicles, then the log read back: telemetry, identities, events and routes;
+// damaged and cut-short logs; rotation; export to GPX, KML and CSV parsed back; replay through the
+// Vehicle model; comparison with the plan on synthetic flights.
+#include "FlightLog.h"
+#include "FlightLogExport.h"
+#include "FlightLogInfo.h"
+#include "FlightLogTestSupport.h"
+#include "FlightRecorder.h"
+#include "ReplayController.h"
+#include "RouteComparison.h"
+#include "Vehicle.h"
+
+#include <QBuffer>
+#include <QDir>
+#include <QFile>
+#include <QJsonArray>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QXmlStreamReader>
+
+using namespace sortie;
+using flightlog::FlightLog;
+using flightlog::FlightRecorder;
+using test::ScriptedLink;
+using vehicle::TelemetryField;
+using vehicle::Vehicle;
+
+using test::kLegs;
+using test::kT0;
+using test::recordTwoFlights;
+
+namespace {
+
+int countElements(const QByteArray &xml, const QString &name, QString *error)
+{
+    QXmlStreamReader r(xml);
+    int n = 0;
+    while (!r.atEnd()) {
+        if (r.readNext() == QXmlStreamReader::StartElement && r.name() == name)
+            ++n;
+    }
+    if (r.hasError())
+        *error = r.errorString();
+    return n;
+}
+
+} // namespace
+
+class TestFlightLog : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void recordsAndReadsBack()
+    {
+        QTemporaryDir dir;
+        std::vector<test::FlightSample> flown;
+        const QString path = recordTwoFlights(dir.path(), &flown);
+        QVERIFY(!QFile::exists(path + QStringLiteral("-wal"))); // closed cleanly: one file
+        QString error;
+        const auto log = FlightLog::open(path, &error);
+        QVERIFY2(log, qPrintable(error));
+        QVERIFY2(log->stoppedAt().isEmpty(), qPrintable(log->stoppedAt()));
+        QCOMPARE(log->vehicles().size(), size_t(2));
+        const int a = log->vehicleIndex(QStringLiteral("EMU-101"));
+        QVERIFY(a >= 0);
+        const FlightLog::Vehicle &va = log->vehicles()[size_t(a)];
+        QCOMPARE(va.key, QStringLiteral("VCI:7"));
+        QCOMPARE(va.identity.type, QStringLiteral("multicopter"));
+        QCOMPARE(va.counts[size_t(TelemetryField::Latitude)], uint64_t(flown.size()));
+        QCOMPARE(va.start, kT0);
+        QCOMPARE(va.end, flown.back().time);
+        // Every position as flown, to its quantum.
+        const auto lat = log->series(a, TelemetryField::Latitude);
+        QCOMPARE(lat.size(), flown.size());
+        for (size_t i = 0; i < flown.size(); ++i) {
+            QCOMPARE(lat[i].time, flown[i].time);
+            QVERIFY(std::fabs(lat[i].value - flown[i].lat * test::kRad) <= 0.5e-9);
+        }
+        QCOMPARE(va.missions.size(), size_t(1));
+        QCOMPARE(va.missions.front().items.size(), size_t(2));
+
+        QStringList kinds;
+        for (const FlightLog::Event &e : log->events())
+            kinds << e.kind + QLatin1Char(':') + (e.vehicle >= 0 ? log->vehicles()[size_t(e.vehicle)].name() : QString()) + QLatin1Char(':') + e.text
+                         + (e.ok >= 0 ? QStringLiteral(":%1").arg(e.ok) : QString());
+        for (const char *expected : {"armed:EMU-101:Armed", "mode:EMU-101:manual", "mode:EMU-101:auto", "link:EMU-102:Lost",
+                                     "link:EMU-102:Connected", "command:EMU-101:arm:1", "upload:EMU-101:Route of 2 waypoints",
+                                     "session::Recording started", "session::Recording stopped"})
+            QVERIFY2(kinds.contains(QString::fromLatin1(expected)), qPrintable(kinds.join(QLatin1Char('\n'))));
+        QVERIFY2(std::any_of(kinds.begin(), kinds.end(), [](const QString &k) { return k.startsWith(QLatin1String("command:EMU-102:returnHome: refused by the test:0")); }),
+                 qPrintable(kinds.join(QLatin1Char('\n'))));
+
+        // The state at a time is the last value of each field by then.
+        const auto state = log->stateAt(a, flown[100].time + 50);
+        const auto latNow = std::find_if(state.begin(), state.end(), [](const auto &u) { return u.field == TelemetryField::Latitude; });
+        QVERIFY(latNow != state.end());
+        QCOMPARE(latNow->time, flown[100].time);
+
+        const QJsonObject info = flightlog::logInfoJson(*log);
+        QCOMPARE(info.value(QStringLiteral("vehicles")).toArray().size(), 2);
+        QVERIFY(info.value(QStringLiteral("complete")).toBool());
+        QVERIFY(flightlog::logInfoText(*log).contains(QStringLiteral("EMU-102")));
+    }
+
+    void notALog()
+    {
+        QTemporaryDir dir;
+        QString error;
+        QVERIFY(!FlightLog::open(dir.filePath(QStringLiteral("absent.sortielog")), &error));
+        QVERIFY2(error.contains(QStringLiteral("no such file")), qPrintable(error));
+        QFile text(dir.filePath(QStringLiteral("notes.sortielog")));
+        QVERIFY(text.open(QIODevice::WriteOnly));
+        text.write("this is not a database\n");
+        text.close();
+        QVERIFY(!FlightLog::open(text.fileName(), &error));
+        QVERIFY2(error.contains(QStringLiteral("not a Sortie flight log")), qPrintable(error));
+    }
+
+    void damagedLogsOpenUpToTheLastGoodBlock()
+    {
+        QTemporaryDir dir;
+        const QString path = recordTwoFlights(dir.path());
+        QString error;
+        const auto whole = FlightLog::open(path, &error);
+        QVERIFY(whole);
+        const size_t allBlocks = whole->vehicles()[0].blocks.size() + whole->vehicles()[1].blocks.size();
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        const QByteArray bytes = file.readAll();
+        file.close();
+
+        // Cut short at several points: never a crash, either refused with a reason or read partly
+        // with where it stopped.
+        int partly = 0;
+        for (double keep : {0.2, 0.5, 0.75, 0.9}) {
+            const QString cut = dir.filePath(QStringLiteral("cut-%1.sortielog").arg(int(keep * 100)));
+            QFile out(cut);
+            QVERIFY(out.open(QIODevice::WriteOnly));
+            out.write(bytes.left(qsizetype(double(bytes.size()) * keep)));
+            out.close();
+            const auto log = FlightLog::open(cut, &error);
+            if (!log) {
+                qInfo("%d %%: %s", int(keep * 100), qPrintable(error));
+                QVERIFY(!error.isEmpty());
+                continue;
+            }
+            qInfo("%d %%: %s", int(keep * 100), qPrintable(log->stoppedAt()));
+            size_t blocks = 0;
+            for (const auto &v : log->vehicles())
+                blocks += v.blocks.size();
+            QVERIFY(blocks < allBlocks);
+            QVERIFY2(!log->stoppedAt().isEmpty(), qPrintable(cut));
+            ++partly;
+        }
+        QVERIFY(partly >= 1);
+
+        // A flipped byte inside a telemetry block: read up to the block before it.
+        const QByteArray needle = QByteArray::fromStdString(whole->vehicles()[1].blocks[3].data.substr(0, 24));
+        const qsizetype at = bytes.indexOf(needle);
+        QVERIFY(at > 0);
+        QByteArray corrupt = bytes;
+        corrupt[at + 12] = char(corrupt[at + 12] ^ 0x55);
+        const QString bad = dir.filePath(QStringLiteral("flipped.sortielog"));
+        QFile out(bad);
+        QVERIFY(out.open(QIODevice::WriteOnly));
+        out.write(corrupt);
+        out.close();
+        const auto log = FlightLog::open(bad, &error);
+        QVERIFY2(log, qPrintable(error));
+        QVERIFY2(log->stoppedAt().contains(QStringLiteral("checksum mismatch")), qPrintable(log->stoppedAt()));
+        QVERIFY(log->vehicles()[1].blocks.size() == 3 || log->vehicles()[1].blocks.size() == 4 - 1);
+    }
+
+    void rotatesAndPrunes()
+    {
+        QTemporaryDir dir;
+        const QString path = QDir(dir.path()).filePath(QStringLiteral("small.sortielog"));
+        ScriptedLink link(QStringLiteral("1"), QStringLiteral("EMU-101"));
+        Vehicle v(&link);
+        flightlog::RecordingLimits limits;
+        limits.maxFileBytes = 64 << 10;
+        limits.maxFolderBytes = 0;
+        FlightRecorder recorder({path, limits, 100});
+        QVERIFY(recorder.start());
+        recorder.addVehicle(&v);
+        QSignalSpy rotated(&recorder, &FlightRecorder::pathChanged);
+        const auto flight = test::flyAlong(kLegs, kT0, 20);
+        for (int round = 0; round < 6; ++round) {
+            for (size_t i = 0; i < flight.size(); ++i) {
+                const auto &s = flight[i];
+                link.send(test::telemetryAt(s.time + round * 600000, s.lat, s.lon, 20, s.heading, true, 4));
+                if (i % 100 == 0)
+                    recorder.flush();
+            }
+        }
+        recorder.stop();
+        const QStringList parts = QDir(dir.path()).entryList({QStringLiteral("*.sortielog")}, QDir::Files, QDir::Name);
+        QVERIFY2(parts.size() >= 2, qPrintable(parts.join(QLatin1Char(' '))));
+        for (const QString &part : parts) {
+            QString error;
+            const auto log = FlightLog::open(QDir(dir.path()).filePath(part), &error);
+            QVERIFY2(log, qPrintable(error));
+            QCOMPARE(log->vehicles().size(), size_t(1)); // every part names its vehicle
+            QCOMPARE(log->vehicles()[0].name(), QStringLiteral("EMU-101"));
+            QVERIFY(QFileInfo(QDir(dir.path()).filePath(part)).size() < (64 << 10) + (32 << 10));
+        }
+        // The folder limit removes the oldest first, never the one named to keep.
+        const QString newest = QDir(dir.path()).filePath(parts.last());
+        const QStringList removed = flightlog::FlightLogWriter::pruneFolder(dir.path(), 70 << 10, newest);
+        QVERIFY(!removed.isEmpty());
+        QVERIFY(QFile::exists(newest));
+    }
+
+    void exportsParseBack()
+    {
+        QTemporaryDir dir;
+        std::vector<test::FlightSample> flown;
+        const auto log = FlightLog::open(recordTwoFlights(dir.path(), &flown), nullptr);
+        QVERIFY(log);
+        const int a = log->vehicleIndex(QStringLiteral("EMU-101"));
+
+        QBuffer gpx;
+        gpx.open(QIODevice::WriteOnly);
+        QVERIFY(flightlog::exportLog(*log, flightlog::ExportFormat::Gpx, {}, &gpx, nullptr));
+        QString error;
+        QCOMPARE(countElements(gpx.data(), QStringLiteral("trk"), &error), 2);
+        QCOMPARE(countElements(gpx.data(), QStringLiteral("trkpt"), &error), int(flown.size() * 2));
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        {
+            QXmlStreamReader r(gpx.data());
+            while (!r.atEnd() && !(r.readNext() == QXmlStreamReader::StartElement && r.name() == QLatin1String("trkpt"))) {}
+            QCOMPARE(r.namespaceUri().toString(), QStringLiteral("http://www.topografix.com/GPX/1/1"));
+            QVERIFY(std::fabs(r.attributes().value(QStringLiteral("lat")).toDouble() - flown[0].lat) < 1e-7);
+            QVERIFY(std::fabs(r.attributes().value(QStringLiteral("lon")).toDouble() - flown[0].lon) < 1e-7);
+            r.readNextStartElement();
+            QCOMPARE(r.name().toString(), QStringLiteral("ele"));
+            QCOMPARE(r.readElementText().toDouble(), 30.0); // AMSL: 10 m ground + 20 m
+            r.readNextStartElement();
+            QCOMPARE(r.name().toString(), QStringLiteral("time"));
+            QCOMPARE(QDateTime::fromString(r.readElementText(), Qt::ISODateWithMs).toMSecsSinceEpoch(), kT0);
+        }
+
+        QBuffer kml;
+        kml.open(QIODevice::WriteOnly);
+        QVERIFY(flightlog::exportLog(*log, flightlog::ExportFormat::Kml, {a}, &kml, nullptr));
+        QCOMPARE(countElements(kml.data(), QStringLiteral("Track"), &error), 1);
+        QCOMPARE(countElements(kml.data(), QStringLiteral("when"), &error), int(flown.size()));
+        QCOMPARE(countElements(kml.data(), QStringLiteral("coord"), &error), int(flown.size()));
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        QVERIFY(kml.data().contains("xmlns:gx=\"http://www.google.com/kml/ext/2.2\""));
+
+        QBuffer csv;
+        csv.open(QIODevice::WriteOnly);
+        QVERIFY(flightlog::exportLog(*log, flightlog::ExportFormat::Csv, {}, &csv, nullptr));
+        const QList<QByteArray> lines = csv.data().split('\n');
+        const QList<QByteArray> header = lines.first().split(',');
+        QCOMPARE(header.mid(0, 2), (QList<QByteArray>{"time", "vehicle"}));
+        const int latColumn = int(header.indexOf("latitude [deg]"));
+        const int aglColumn = int(header.indexOf("altitudeAgl [m]"));
+        QVERIFY(latColumn > 1 && aglColumn > 1);
+        QVERIFY(!header.contains("airSpeed [m/s]")); // never sent: no column
+        int rowsA = 0;
+        for (const QByteArray &line : lines.mid(1)) {
+            if (line.isEmpty())
+                continue;
+            const QList<QByteArray> cells = line.split(',');
+            QCOMPARE(cells.size(), header.size());
+            if (cells[1] != "EMU-101")
+                continue;
+            QVERIFY(std::fabs(cells[latColumn].toDouble() - flown[size_t(rowsA)].lat) < 1e-7);
+            QCOMPARE(cells[aglColumn].toDouble(), 20.0);
+            ++rowsA;
+        }
+        QCOMPARE(rowsA, int(flown.size()));
+    }
+
+    void replayShowsWhatWasRecorded()
+    {
+        QTemporaryDir dir;
+        std::vector<test::FlightSample> flown;
+        const QString path = recordTwoFlights(dir.path(), &flown);
+        flightlog::ReplayController replay;
+        QVERIFY2(replay.open(path), qPrintable(replay.errorString()));
+        QCOMPARE(replay.fleet()->count(), 2);
+        QCOMPARE(replay.position(), replay.start());
+        Vehicle *a = replay.fleet()->vehicleAt(replay.log()->vehicleIndex(QStringLiteral("EMU-101")));
+        QVERIFY(a);
+        QCOMPARE(a->protocol(), QStringLiteral("Replay")); // never a live vehicle
+        QCOMPARE(replay.fleet()->index(0).data(flightlog::ReplayFleet::ReplayRole).toBool(), true);
+        // The history holds the whole span at once, for the plots.
+        QCOMPARE(a->history().series(TelemetryField::Latitude).size(), flown.size());
+        QCOMPARE(a->history().series(TelemetryField::Latitude).newest().time, flown.back().time);
+
+        // Scrub anywhere: the vehicle is where it was.
+        for (size_t i : {size_t(250), size_t(10), size_t(400), flown.size() - 1}) {
+            replay.seek(flown[i].time);
+            QVERIFY(std::fabs(a->position().latitude() - flown[i].lat) < 1e-7);
+            QVERIFY(std::fabs(a->position().longitude() - flown[i].lon) < 1e-7);
+        }
+        // Play from the start: every recorded position arrives, in order, equal to the log's.
+        replay.seek(replay.start());
+        std::vector<vehicle::TelemetrySample> played;
+        connect(a->link(), &vehicle::VehicleLink::telemetryReceived, this, [&](const vehicle::TelemetryBatch &batch) {
+            for (const auto &u : batch)
+                if (u.field == TelemetryField::Latitude)
+                    played.push_back({u.time, u.value});
+        });
+        replay.setSpeed(100);
+        QCOMPARE(replay.speed(), 50.0);
+        while (replay.position() < replay.end())
+            replay.advance(33);
+        const auto recorded = replay.log()->series(replay.log()->vehicleIndex(QStringLiteral("EMU-101")), TelemetryField::Latitude);
+        QCOMPARE(played.size(), recorded.size() - 1); // all after the first, which the start showed
+        for (size_t i = 0; i < played.size(); ++i) {
+            QCOMPARE(played[i].time, recorded[i + 1].time);
+            QCOMPARE(played[i].value, recorded[i + 1].value);
+        }
+        // Events: jump to the link loss of EMU-102 and see it lost.
+        Vehicle *b = replay.fleet()->vehicleAt(replay.log()->vehicleIndex(QStringLiteral("EMU-102")));
+        int lost = -1;
+        for (int row = 0; row < replay.events()->rowCount(); ++row) {
+            if (replay.events()->index(row).data(flightlog::ReplayEventModel::TextRole) == QStringLiteral("Lost"))
+                lost = row;
+        }
+        QVERIFY(lost >= 0);
+        replay.jumpToEvent(lost);
+        QCOMPARE(b->linkState(), vehicle::VehicleLink::State::Lost);
+        replay.nextEvent();
+        QVERIFY(replay.position() > replay.events()->eventAt(lost)->time);
+        replay.setProgress(0);
+        QCOMPARE(b->linkState(), vehicle::VehicleLink::State::Connected);
+        // Commands are refused.
+        QSignalSpy result(a, &Vehicle::commandFinished);
+        a->arm();
+        QVERIFY(result.wait(2000));
+        QCOMPARE(result.first().at(1).toBool(), false);
+    }
+
+    void compareFollowsThePlan()
+    {
+        FlightLog log = syntheticLog(test::flyAlong(kLegs, kT0, 100, 1.0));
+        const auto result = flightlog::compareRoute(log, 0, test::routeThrough(kLegs, 20, QStringLiteral("Box")));
+        QVERIFY2(result.comparison, qPrintable(result.error));
+        const auto &c = *result.comparison;
+        QCOMPARE(c.reached, 4);
+        QCOMPARE(c.missed, 0);
+        QCOMPARE(c.legs.size(), size_t(3));
+        // 1 m east of the line: 1 m off the north and south legs, along the east one.
+        for (const auto &leg : c.legs) {
+            QVERIFY(leg.samples > 10);
+            QVERIFY2(leg.maxCrossTrack < 1.1, qPrintable(c.toText()));
+            QVERIFY(leg.maxAltitude < 0.01);
+        }
+        QVERIFY2(std::fabs(c.legs[0].meanCrossTrack - 1.0) < 0.05, qPrintable(c.toText()));
+        QVERIFY2(std::fabs(c.legs[2].meanCrossTrack - 1.0) < 0.05, qPrintable(c.toText()));
+        QVERIFY(c.toText().contains(QStringLiteral("4 reached, 0 missed")));
+        QCOMPARE(c.toJson().value(QStringLiteral("total")).toObject().value(QStringLiteral("missed")).toInt(), 0);
+    }
+
+    void compareSentElsewhere()
+    {
+        // Flies the first leg, then goes 80 m west from the second waypoint (click-and-go).
+        const mission::GeoPoint elsewhere = mission::geodesicDirect(kLegs[1], 270, 80).point;
+        FlightLog log = syntheticLog(test::flyAlong({kLegs[0], kLegs[1], elsewhere}, kT0, 100));
+        const auto result = flightlog::compareRoute(log, 0, test::routeThrough(kLegs, 20, QStringLiteral("Box")));
+        QVERIFY2(result.comparison, qPrintable(result.error));
+        const auto &c = *result.comparison;
+        QCOMPARE(c.reached, 2);
+        QCOMPARE(c.missed, 2);
+        QVERIFY(!c.waypoints[2].reachedAt && !c.waypoints[3].reachedAt);
+        QVERIFY2(c.legs[0].maxCrossTrack < 0.1, qPrintable(c.toText()));
+        QVERIFY2(c.legs[1].maxCrossTrack > 70, qPrintable(QString::number(c.legs[1].maxCrossTrack)));
+        QVERIFY(c.toText().contains(QStringLiteral("missed")));
+    }
+
+    void compareRefusesAnotherVehiclesRoute()
+    {
+        FlightLog log = syntheticLog(test::flyAlong(kLegs, kT0, 100));
+        std::vector<mission::GeoPoint> far;
+        for (const auto &p : kLegs)
+            far.push_back({p.latitude + 0.1, p.longitude});
+        const auto result = flightlog::compareRoute(log, 0, test::routeThrough(far, 20, QStringLiteral("Elsewhere")));
+        QVERIFY(!result.comparison);
+        QVERIFY2(result.error.contains(QStringLiteral("does not match EMU-101")), qPrintable(result.error));
+        const auto absent = flightlog::compareRoute(log, 3, test::routeThrough(kLegs, 20, QStringLiteral("Box")));
+        QVERIFY2(absent.error.contains(QStringLiteral("EMU-101")), qPrintable(absent.error));
+    }
+
+private:
+    static FlightLog syntheticLog(const std::vector<test::FlightSample> &flight)
+    {
+        flightlog::BlockFields fields;
+        FlightLog::Vehicle v;
+        v.key = QStringLiteral("HCI:1");
+        v.identity.name = QStringLiteral("EMU-101");
+        for (size_t i = 0; i < flight.size(); ++i) {
+            const auto batch = test::telemetryAt(flight[i].time, flight[i].lat, flight[i].lon, 20, flight[i].heading, true, 4);
+            if (fields.empty())
+                for (const auto &u : batch)
+                    fields.push_back({u.field, {}});
+            for (size_t k = 0; k < batch.size(); ++k)
+                fields[k].samples.push_back({batch[k].time, batch[k].value});
+            if (i % 10 == 9 || i + 1 == flight.size()) {
+                if (!v.appendBlock(flightlog::TelemetryBlockCodec::encode(fields)))
+                    qFatal("a block the codec made does not read back");
+                for (auto &f : fields)
+                    f.samples.clear();
+            }
+        }
+        FlightLog log;
+        log.addVehicle(v);
+        log.finish();
+        return log;
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFlightLog)
+#include "tst_flightlog.moc"

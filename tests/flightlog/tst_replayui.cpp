@@ -1,0 +1,157 @@
+// The replay in the fly view, offscreen: a log opened on the telemetry page shows its vehicles
+// marked as a replay; Play moves the clock, a click on the timeline scrubs, the next-event button
+// jumps to an event, and each time the vehicle is drawn on the map where the log says it was.
+#include "ComparisonController.h"
+#include "FlightLog.h"
+#include "MissionFiles.h"
+#include "FlightLogTestSupport.h"
+#include "QuickScene.h"
+#include "ReplayController.h"
+
+#include <QTemporaryDir>
+#include <QTest>
+#include <QtQml/qqmlextensionplugin.h>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+using namespace sortie;
+
+namespace {
+
+QPointF centre(QQuickItem *item)
+{
+    return item->mapToScene(QPointF(item->width() / 2, item->height() / 2));
+}
+
+} // namespace
+
+class TestReplayUi : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { test::useSoftwareRendering(); }
+
+    void openPlayScrubJump()
+    {
+        QTemporaryDir dir;
+        const QString path = test::recordTwoFlights(dir.path());
+        flightlog::ReplayController replay;
+        flightlog::ComparisonController comparison(&replay);
+        test::QuickScene scene(R"(
+            import QtQuick
+            import Sortie.Ui
+            TelemetryPage {
+                units: DisplayUnits {}
+            }
+        )", QSize(1280, 800), {{QStringLiteral("replay"), QVariant::fromValue(&replay)},
+                                                    {QStringLiteral("comparison"), QVariant::fromValue(&comparison)}});
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        QVERIFY(scene.find<QQuickItem>(QStringLiteral("openLogButton")));
+        auto *banner = scene.find<QQuickItem>(QStringLiteral("replayBanner"));
+        QVERIFY(banner && !banner->isVisible());
+
+        // Open: the replayed vehicles take the map, under a banner that says so.
+        QVERIFY(replay.open(path));
+        QTRY_VERIFY(banner->isVisible());
+        auto *layer = scene.find<QQuickItem>(QStringLiteral("vehicleLayer"));
+        QVERIFY(layer);
+        QTRY_COMPARE(layer->property("count").toInt(), 2);
+        auto *list = scene.find<QQuickItem>(QStringLiteral("vehicleList"));
+        QVERIFY(list);
+        QObject *map = scene.root()->property("map").value<QObject *>();
+        QVERIFY(map);
+        const int a = replay.log()->vehicleIndex(QStringLiteral("EMU-101"));
+        // Centre the map on the flight so the vehicle is in view.
+        QMetaObject::invokeMethod(map, "fitBounds", Q_ARG(double, 56.9495), Q_ARG(double, 24.0995), Q_ARG(double, 56.9515), Q_ARG(double, 24.1025), Q_ARG(qreal, 40));
+
+        auto expectOnMap = [&](qint64 time) {
+            const auto state = replay.log()->stateAt(a, time);
+            double lat = 0, lon = 0;
+            for (const auto &u : state) {
+                if (u.field == vehicle::TelemetryField::Latitude)
+                    lat = u.value / test::kRad;
+                if (u.field == vehicle::TelemetryField::Longitude)
+                    lon = u.value / test::kRad;
+            }
+            QPointF expected;
+            QMetaObject::invokeMethod(map, "fromCoordinate", Q_RETURN_ARG(QPointF, expected), Q_ARG(QGeoCoordinate, QGeoCoordinate(lat, lon)));
+            QPointF drawn;
+            QMetaObject::invokeMethod(layer, "vehiclePosition", Q_RETURN_ARG(QPointF, drawn), Q_ARG(int, a));
+            return QLineF(expected, drawn).length();
+        };
+        QTRY_VERIFY2(expectOnMap(replay.position()) < 1.5, "the vehicle is not drawn where the log has it at the start");
+
+        // Play: the clock moves; pause stops it.
+        auto *play = scene.find<QQuickItem>(QStringLiteral("playButton"));
+        QVERIFY(play && play->isVisible());
+        const qint64 before = replay.position();
+        scene.grab(); // lays the timeline out (polish) before finding where its buttons are
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(play).toPoint());
+        QVERIFY2(replay.isPlaying(), qPrintable(QStringLiteral("play at %1,%2 in %3x%4; picked: %5").arg(centre(play).x()).arg(centre(play).y())
+                                                  .arg(scene.view().width()).arg(scene.view().height())
+                                                  .arg(scene.root()->childAt(centre(play).x(), centre(play).y()) ? scene.root()->childAt(centre(play).x(), centre(play).y())->metaObject()->className() : "none")));
+        QTRY_VERIFY(replay.position() > before + 200);
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(play).toPoint());
+        QVERIFY(!replay.isPlaying());
+        QTRY_VERIFY(expectOnMap(replay.position()) < 1.5);
+
+        // Scrub: a click at three quarters of the timeline.
+        auto *slider = scene.find<QQuickItem>(QStringLiteral("timelineSlider"));
+        QVERIFY(slider && slider->isVisible());
+        const double left = slider->property("leftPadding").toDouble();
+        const double usable = slider->property("availableWidth").toDouble();
+        const QPointF at = slider->mapToScene(QPointF(left + 0.75 * usable, slider->height() / 2));
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, at.toPoint());
+        QTRY_VERIFY2(std::fabs(replay.progress() - 0.75) < 0.03, qPrintable(QString::number(replay.progress())));
+        QTRY_VERIFY(expectOnMap(replay.position()) < 1.5);
+
+        // Jump back to the first event, then on to the next one.
+        replay.seek(replay.start());
+        auto *next = scene.find<QQuickItem>(QStringLiteral("nextEventButton"));
+        QVERIFY(next && next->isVisible());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(next).toPoint());
+        const int first = replay.events()->nextAfter(replay.start());
+        QVERIFY(first >= 0);
+        QTRY_COMPARE(replay.position(), replay.events()->eventAt(first)->time);
+        QTRY_VERIFY(expectOnMap(replay.position()) < 1.5);
+        auto *label = scene.find<QQuickItem>(QStringLiteral("positionLabel"));
+        QVERIFY(label && label->property("text").toString().contains(QStringLiteral("UTC")));
+
+        // Compare with the plan: a table of legs and the track coloured on the map.
+        mission::Mission plan;
+        plan.routes.push_back(test::routeThrough(test::kLegs, 20, QStringLiteral("Box")));
+        const QString routeFile = dir.filePath(QStringLiteral("box.sortie"));
+        QVERIFY(mission::formats::saveMission(plan, routeFile, {0, mission::ValidationOverride::AcceptErrors}));
+        auto *compareButton = scene.find<QQuickItem>(QStringLiteral("compareButton"));
+        QVERIFY(compareButton && compareButton->isVisible());
+        QVERIFY(!comparison.compare(routeFile, -1)); // two vehicles: which one?
+        QVERIFY(!comparison.errorString().isEmpty());
+        QVERIFY2(comparison.compare(QUrl::fromLocalFile(routeFile).toString(), a), qPrintable(comparison.errorString()));
+        auto *deviation = scene.find<QQuickItem>(QStringLiteral("deviationLayer"));
+        QVERIFY(deviation && deviation->isVisible());
+        QTRY_VERIFY(deviation->property("count").toInt() > 100);
+        auto *table = scene.find<QQuickItem>(QStringLiteral("comparisonTable"));
+        QTRY_VERIFY(table && table->isVisible());
+        QCOMPARE(table->property("count").toInt(), 3);
+        auto *summary = scene.find<QQuickItem>(QStringLiteral("comparisonSummary"));
+        QVERIFY2(summary->property("text").toString().contains(QStringLiteral("4 of 4 waypoints reached")), qPrintable(summary->property("text").toString()));
+        // The track is drawn in the colour of "fine" on the map.
+        const QImage shot = scene.grab();
+        QPointF onTrack;
+        QMetaObject::invokeMethod(map, "fromCoordinate", Q_RETURN_ARG(QPointF, onTrack),
+                                  Q_ARG(QGeoCoordinate, QGeoCoordinate((test::kLegs[1].latitude + test::kLegs[2].latitude) / 2,
+                                                                       (test::kLegs[1].longitude + test::kLegs[2].longitude) / 2)));
+        const QPoint pixel = deviation->mapToScene(onTrack).toPoint();
+        QVERIFY2(test::colourDistance(shot.pixel(pixel), qRgb(0x43, 0xa0, 0x47)) < 40, qPrintable(QColor(shot.pixel(pixel)).name()));
+
+        // Back to live: the banner goes, the replayed vehicles with it.
+        auto *close = scene.find<QQuickItem>(QStringLiteral("closeLogButton"));
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(close).toPoint());
+        QTRY_VERIFY(!banner->isVisible());
+        QVERIFY(!replay.isActive());
+    }
+};
+
+QTEST_MAIN(TestReplayUi)
+#include "tst_replayui.moc"

@@ -1,0 +1,171 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Dialogs
+import QtQuick.Layouts
+import Sortie.Ui
+
+// The replay timeline under the fly view: open a flight log, play or pause it, choose a speed,
+// scrub, and jump to its events (marked on the bar). While a log plays, a banner says so: replayed
+// vehicles are never taken for live ones. The ReplayController decides everything; this is a view.
+ToolBar {
+    id: bar
+    required property ReplayController replay
+    property string exportMessage
+
+    FileDialog {
+        id: openDialog
+        title: qsTr("Open a flight log")
+        nameFilters: [qsTr("Flight logs (*.sortielog)"), qsTr("All files (*)")]
+        onAccepted: bar.replay.open(selectedFile.toString())
+    }
+    FileDialog {
+        id: exportDialog
+        property string format: "gpx"
+        title: qsTr("Export tracks")
+        fileMode: FileDialog.SaveFile
+        nameFilters: [format.toUpperCase() + " (*." + format + ")"]
+        onAccepted: bar.exportMessage = bar.replay.exportTracks(format, selectedFile) || qsTr("Exported to %1.").arg(selectedFile)
+    }
+
+    ColumnLayout {
+        anchors.fill: parent
+        spacing: 2
+        RowLayout {
+            Layout.fillWidth: true
+            spacing: 8
+            Button {
+                objectName: "openLogButton"
+                text: qsTr("Open log…")
+                onClicked: openDialog.open()
+            }
+            Rectangle {
+                objectName: "replayBanner"
+                visible: bar.replay.active
+                color: "#8e24aa"
+                radius: 3
+                implicitWidth: bannerText.implicitWidth + 12
+                implicitHeight: bannerText.implicitHeight + 4
+                Label {
+                    id: bannerText
+                    anchors.centerIn: parent
+                    color: "white"
+                    font.bold: true
+                    text: qsTr("REPLAY — %1").arg(bar.replay.spanText)
+                }
+            }
+            Button {
+                objectName: "playButton"
+                visible: bar.replay.active
+                text: bar.replay.playing ? qsTr("Pause") : qsTr("Play")
+                onClicked: bar.replay.togglePlaying()
+            }
+            ToolButton {
+                objectName: "previousEventButton"
+                visible: bar.replay.active
+                text: "⏮"
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Previous event")
+                onClicked: bar.replay.previousEvent()
+            }
+            ToolButton {
+                objectName: "nextEventButton"
+                visible: bar.replay.active
+                text: "⏭"
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Next event")
+                onClicked: bar.replay.nextEvent()
+            }
+            ComboBox {
+                objectName: "speedBox"
+                visible: bar.replay.active
+                model: bar.replay.speeds
+                displayText: bar.replay.speed + "×"
+                delegate: ItemDelegate {
+                    required property var modelData
+                    text: modelData + "×"
+                    width: ListView.view.width
+                }
+                onActivated: index => bar.replay.speed = bar.replay.speeds[index]
+            }
+            ComboBox {
+                objectName: "eventBox"
+                visible: bar.replay.active
+                Layout.preferredWidth: 260
+                model: bar.replay.events
+                textRole: "text"
+                displayText: qsTr("Jump to event (%1)").arg(bar.replay.events.count)
+                delegate: ItemDelegate {
+                    required property var model // the event's roles; an ItemDelegate's own `text` is final
+                    width: ListView.view.width
+                    text: model.timeText + "  " + (model.vehicle.length > 0 ? model.vehicle + ": " : "") + model.text
+                }
+                onActivated: index => bar.replay.jumpToEvent(index)
+            }
+            Label {
+                objectName: "positionLabel"
+                visible: bar.replay.active
+                text: bar.replay.positionText
+                Layout.fillWidth: true
+                elide: Text.ElideRight
+            }
+            Button {
+                objectName: "exportButton"
+                visible: bar.replay.active
+                text: qsTr("Export…")
+                onClicked: exportMenu.open()
+                Menu {
+                    id: exportMenu
+                    Repeater {
+                        model: ["gpx", "kml", "csv"]
+                        MenuItem {
+                            required property string modelData
+                            text: modelData.toUpperCase()
+                            onTriggered: { exportDialog.format = modelData; exportDialog.open() }
+                        }
+                    }
+                }
+            }
+            Button {
+                objectName: "closeLogButton"
+                visible: bar.replay.active
+                text: qsTr("Back to live")
+                onClicked: bar.replay.close()
+            }
+        }
+        Item {
+            visible: bar.replay.active
+            Layout.fillWidth: true
+            implicitHeight: slider.implicitHeight
+            Slider {
+                id: slider
+                objectName: "timelineSlider"
+                anchors.fill: parent
+                from: 0
+                to: 1
+                value: bar.replay.progress
+                onMoved: bar.replay.progress = value
+            }
+            Repeater {
+                model: bar.replay.events
+                Rectangle {
+                    required property real fraction
+                    required property bool failed
+                    x: slider.leftPadding + fraction * slider.availableWidth - 1
+                    y: 2
+                    width: 2
+                    height: 6
+                    color: failed ? "#e53935" : "#8e24aa"
+                }
+            }
+        }
+        Label {
+            id: exportResult
+            objectName: "replayMessage"
+            visible: text.length > 0
+            text: [bar.replay.errorString, bar.replay.warning, bar.exportMessage].filter(t => t.length > 0).join("\n")
+            color: bar.replay.errorString.length > 0 || bar.replay.warning.length > 0 ? "#e53935" : palette.windowText
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
+        }
+    }
+}

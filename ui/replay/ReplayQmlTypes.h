@@ -1,0 +1,44 @@
+#pragma once
+
+#include "ComparisonController.h"
+#include "ReplayController.h"
+
+#include <QtQml/qqmlregistration.h>
+
+namespace sortie::ui {
+
+// The replay's core objects under names QML views can type their properties with; the
+// application makes them, QML never does.
+struct ReplayControllerForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::flightlog::ReplayController)
+    QML_NAMED_ELEMENT(ReplayController)
+    QML_UNCREATABLE("The application provides the replay controller.")
+};
+
+struct ReplayEventModelForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::flightlog::ReplayEventModel)
+    QML_NAMED_ELEMENT(ReplayEventModel)
+    QML_UNCREATABLE("Part of the replay controller.")
+};
+
+struct ReplayFleetForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::flightlog::ReplayFleet)
+    QML_NAMED_ELEMENT(ReplayFleet)
+    QML_UNCREATABLE("Part of the replay controller.")
+};
+
+struct ComparisonControllerForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::flightlog::ComparisonController)
+    QML_NAMED_ELEMENT(ComparisonController)
+    QML_UNCREATABLE("The application provides the comparison.")
+};
+
+} // namespace sortie::ui
