@@ -1,5 +1,7 @@
 #include "VehicleFleet.h"
 
+#include <QtMath>
+
 #include "HciClient.h"
 #include "HciReply.h"
 #include "HciSession.h"
@@ -204,7 +206,8 @@ void VehicleFleet::goTo(int row, double latitude, double longitude)
     const double altitude = std::isfinite(agl) && agl > 2 ? agl : 20.0;
     const QString name = v->name();
     auto logged = m_commandLog.track(name, tr("go to %1, %2 at %3 m").arg(latitude, 0, 'f', 6).arg(longitude, 0, 'f', 6).arg(altitude, 0, 'f', 0));
-    v->link()->goTo(latitude, longitude, altitude, 5.0, [this, name, logged](const vehicle::CommandResult &result) {
+    // The link takes radians (as MissionItem does); QML speaks degrees.
+    v->link()->goTo(qDegreesToRadians(latitude), qDegreesToRadians(longitude), altitude, 5.0, [this, name, logged](const vehicle::CommandResult &result) {
         logged(result);
         setCommandResult(result.ok ? tr("%1: flying to the clicked point.").arg(name)
                                    : tr("%1: go-to failed: %2").arg(name, result.message));

@@ -39,6 +39,11 @@ void ReplayVehicleLink::refuse(const Done &done)
     QMetaObject::invokeMethod(this, [done] { done(refused()); }, Qt::QueuedConnection);
 }
 
+void ReplayVehicleLink::prepareMission(const mission::Route &, PrepareDone done)
+{
+    QMetaObject::invokeMethod(this, [done] { done(refused(), {}); }, Qt::QueuedConnection);
+}
+
 void ReplayVehicleLink::downloadMission(MissionDone done)
 {
     QMetaObject::invokeMethod(this, [done] { done(refused(), {}); }, Qt::QueuedConnection);

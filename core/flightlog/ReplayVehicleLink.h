@@ -32,7 +32,8 @@ public:
     void land(Done done) override { refuse(done); }
     void returnHome(Done done) override { refuse(done); }
     void goTo(double, double, double, double, Done done) override { refuse(done); }
-    void uploadMission(const std::vector<vehicle::MissionItem> &, Done done) override { refuse(done); }
+    void prepareMission(const mission::Route &, PrepareDone done) override;
+    void uploadMission(const vehicle::PreparedMission &, UploadObserver, Done done) override { refuse(done); }
     void downloadMission(MissionDone done) override;
     void readParameters(ParametersDone done) override;
     void setParameter(const QString &, double, Done done) override { refuse(done); }

@@ -162,21 +162,29 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
     std::vector<double> altitudeSum(c.legs.size(), 0), crossSum(c.legs.size(), 0);
     std::vector<int> altitudeSamples(c.legs.size(), 0);
     size_t nextUnassigned = 0; // windows meet at a reached waypoint's point: it counts once
+    // A sample belongs to the leg the vehicle is flying: legs are taken in order, starting with the leg
+    // that leaves the last reached waypoint. A later leg takes over only where the track comes within
+    // kRejoinDistance of it (a vehicle sent elsewhere mid-leg stays on the leg it left, however close a
+    // later leg happens to pass).
+    constexpr double kRejoinDistance = 10.0;
     auto assign = [&](size_t fromTrack, size_t toTrack, size_t firstLeg, size_t lastLeg) { // legs by 'to' waypoint
         fromTrack = std::max(fromTrack, nextUnassigned);
         nextUnassigned = toTrack + 1;
+        size_t current = firstLeg;
         for (size_t k = fromTrack; k <= toTrack && k < track.size(); ++k) {
-            size_t best = firstLeg;
-            double bestD = std::numeric_limits<double>::infinity(), bestAlong = 0;
-            for (size_t leg = firstLeg; leg <= lastLeg; ++leg) {
+            double bestAlong = 0;
+            double bestD = toSegment(track[k].p, planned[current - 1].p, planned[current].p, &bestAlong);
+            size_t best = current;
+            for (size_t leg = current + 1; leg <= lastLeg; ++leg) {
                 double along = 0;
                 const double d = toSegment(track[k].p, planned[leg - 1].p, planned[leg].p, &along);
-                if (d <= bestD + 0.01) { // a tie (to 1 cm) goes to the later leg: the one the vehicle was on its way along
+                if (d <= kRejoinDistance && d < bestD) {
                     bestD = d;
                     best = leg;
                     bestAlong = along;
                 }
             }
+            current = best;
             LegDeviation &l = c.legs[best - 1];
             ++l.samples;
             l.maxCrossTrack = std::max(l.maxCrossTrack, bestD);
@@ -198,16 +206,16 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
     for (size_t w = 0; w < n; ++w) {
         if (!reachedAt[w])
             continue;
-        if (previous) // the leg into the last reached waypoint stays a candidate: turning there is flying it
-            assign(*reachedAt[*previous], *reachedAt[w], std::max<size_t>(*previous, 1), w);
+        if (previous) // from the last reached waypoint to this one: the legs between them
+            assign(*reachedAt[*previous], *reachedAt[w], *previous + 1, w);
         else if (w > 0) // the first waypoints were missed: from the start of the track
             assign(0, *reachedAt[w], 1, w);
         previous = w;
     }
     if (!previous)
         assign(0, track.size() - 1, 1, n - 1);
-    else if (*previous + 1 < n) // sent elsewhere before the end: the rest of the track to the rest of the legs
-        assign(*reachedAt[*previous], track.size() - 1, std::max<size_t>(*previous, 1), n - 1);
+    else if (*previous + 1 < n) // sent elsewhere before the end: the rest of the track from the leg it left on
+        assign(*reachedAt[*previous], track.size() - 1, *previous + 1, n - 1);
 
     double crossTotal = 0, altitudeTotal = 0;
     int crossCount = 0, altitudeCount = 0;

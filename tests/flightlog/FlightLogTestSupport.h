@@ -42,7 +42,11 @@ public:
     void land(Done done) override { later(done, true); }
     void returnHome(Done done) override { later(done, false); }
     void goTo(double, double, double, double, Done done) override { later(done, true); }
-    void uploadMission(const std::vector<vehicle::MissionItem> &, Done done) override { later(done, true); }
+    void prepareMission(const mission::Route &, PrepareDone done) override
+    {
+        QMetaObject::invokeMethod(this, [done] { done(vehicle::CommandResult::success(), {}); }, Qt::QueuedConnection);
+    }
+    void uploadMission(const vehicle::PreparedMission &, UploadObserver, Done done) override { later(done, true); }
     void downloadMission(MissionDone) override {}
     void readParameters(ParametersDone) override {}
     void setParameter(const QString &, double, Done done) override { later(done, true); }

@@ -65,7 +65,8 @@ public:
     void land(Done) override {}
     void returnHome(Done) override {}
     void goTo(double, double, double, double, Done) override {}
-    void uploadMission(const std::vector<vehicle::MissionItem> &, Done) override {}
+    void prepareMission(const mission::Route &, PrepareDone) override {}
+    void uploadMission(const vehicle::PreparedMission &, UploadObserver, Done) override {}
     void downloadMission(MissionDone) override {}
     void readParameters(ParametersDone) override {}
     void setParameter(const QString &, double, Done) override {}

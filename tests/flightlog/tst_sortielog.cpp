@@ -88,12 +88,20 @@ std::vector<mission::GeoPoint> boxFrom(const QGeoCoordinate &home)
     return {a, b, c, d};
 }
 
-std::vector<vehicle::MissionItem> itemsOf(const std::vector<mission::GeoPoint> &points)
+// The box as a route of waypoints 12 m above the ground, flown at 8 m/s.
+mission::Route routeOf(const std::vector<mission::GeoPoint> &points)
 {
-    std::vector<vehicle::MissionItem> items;
-    for (const auto &p : points)
-        items.push_back({p.latitude * test::kRad, p.longitude * test::kRad, 12, 8});
-    return items;
+    mission::Route route;
+    route.settings.name = QStringLiteral("box");
+    for (const auto &p : points) {
+        mission::Waypoint w;
+        w.position = p;
+        w.altitude = 12;
+        w.altitudeType = mission::AltitudeType::Agl;
+        w.speed = 8;
+        route.segments.push_back(w);
+    }
+    return route;
 }
 
 // Metres from where a vehicle is now to a point (HCI reports no waypoint index: progress is position).
@@ -167,9 +175,16 @@ private slots:
         for (auto [v, route] : {std::pair{emu101, route101}, std::pair{emu102, route102}}) {
             bool uploaded = false;
             QString why;
-            v->link()->uploadMission(itemsOf(route), [&](const vehicle::CommandResult &r) {
-                uploaded = r.ok;
-                why = r.ok ? QStringLiteral("ok") : r.message;
+            // Through the link's two steps, as the upload service does: the server processes, then it is sent.
+            v->link()->prepareMission(routeOf(route), [&, v](const vehicle::CommandResult &prepared, const vehicle::PreparedMission &mission) {
+                if (!prepared.ok) {
+                    why = prepared.message;
+                    return;
+                }
+                v->link()->uploadMission(mission, {}, [&](const vehicle::CommandResult &r) {
+                    uploaded = r.ok;
+                    why = r.ok ? QStringLiteral("ok") : r.message;
+                });
             });
             QTRY_VERIFY_WITH_TIMEOUT(!why.isEmpty(), 15000);
             QVERIFY2(uploaded, qPrintable(why));
@@ -180,7 +195,7 @@ private slots:
         // EMU-102 is sent 60 m west once it flies towards its third waypoint.
         QTRY_VERIFY_WITH_TIMEOUT(metresTo(emu102, route102[1]) < 2.5, 30000); // reached its second waypoint
         const mission::GeoPoint west = mission::geodesicDirect(route102[1], 270, 60).point;
-        // Click-and-go through the link (VehicleFleet::goTo hands degrees to a link that takes radians).
+        // Click-and-go, straight through the link (radians, as VehicleLink takes them).
         emu102->link()->goTo(west.latitude * test::kRad, west.longitude * test::kRad, 12, 8, [](const vehicle::CommandResult &) {});
 
         // Mid-flight: SIGKILL one recorder.
