@@ -367,7 +367,7 @@ private slots:
         QTRY_COMPARE(m_alice->fleet.count(), 3);
         const QString emu = m_alice->fleet.index(1).data(client::VehicleFleet::VehicleIdRole).toString();
         client::RouteDocument *doc = m_alice->missions.document();
-        doc->addWaypoint(56.9790, 24.0820);
+        doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
         QVERIFY(doc->isModified());
         QSignalSpy uploaded(&m_alice->missions, &MissionController::uploaded);
         QSignalSpy saved(&m_alice->missions, &MissionController::saved);

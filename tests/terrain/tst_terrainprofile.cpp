@@ -262,14 +262,14 @@ private slots:
             const GroundSample g = service.sample(p);
             return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
         });
-        QVERIFY(editor.setAltitudeType({0, 1}, QStringLiteral("AMSL")));
+        QVERIFY(editor.setAltitudeType({0, 1}, AltitudeType::Amsl));
         auto wp = [&](int row) { return *sortie::mission::asWaypoint(model.segment(row)); };
         QCOMPARE(wp(0).altitude, 80.0);  // 50 m above 30 m ground
         QCOMPARE(wp(1).altitude, 50.0);  // no ground there: kept
         QCOMPARE(wp(1).altitudeType, AltitudeType::Amsl);
-        QVERIFY(editor.setAltitudeType({0}, QStringLiteral("AGL")));
+        QVERIFY(editor.setAltitudeType({0}, AltitudeType::Agl));
         QCOMPARE(wp(0).altitude, 50.0);
-        QVERIFY(editor.setAltitudeType({0}, QStringLiteral("AMSL"), false));  // the operator keeps the number
+        QVERIFY(editor.setAltitudeType({0}, AltitudeType::Amsl, false));  // the operator keeps the number
         QCOMPARE(wp(0).altitude, 50.0);
         stack.undo();
         stack.undo();
