@@ -171,10 +171,27 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
         fromTrack = std::max(fromTrack, nextUnassigned);
         nextUnassigned = toTrack + 1;
         size_t current = firstLeg;
+        bool closingIn = true; // towards the waypoint just reached, until the track first moves away from it
+        double lastToTurn = std::numeric_limits<double>::infinity();
         for (size_t k = fromTrack; k <= toTrack && k < track.size(); ++k) {
             double bestAlong = 0;
             double bestD = toSegment(track[k].p, planned[current - 1].p, planned[current].p, &bestAlong);
             size_t best = current;
+            // Closing in on the waypoint just reached (inside twice its acceptance radius, not yet past it,
+            // not yet moving away) is still flying the leg into it.
+            const size_t turnAt = firstLeg - 1;
+            const double toTurn = turnAt >= 1 ? dist(track[k].p, planned[turnAt].p) : 0;
+            closingIn = closingIn && toTurn <= lastToTurn + 0.01;
+            lastToTurn = toTurn;
+            if (closingIn && current == firstLeg && turnAt >= 1 && toTurn <= 2 * planned[turnAt].radius) {
+                double along = 0;
+                const double d = toSegment(track[k].p, planned[turnAt - 1].p, planned[turnAt].p, &along);
+                if (along < 1.0 && d < bestD) { // not yet past the waypoint along the leg into it
+                    bestD = d;
+                    best = turnAt;
+                    bestAlong = along;
+                }
+            }
             for (size_t leg = current + 1; leg <= lastLeg; ++leg) {
                 double along = 0;
                 const double d = toSegment(track[k].p, planned[leg - 1].p, planned[leg].p, &along);
@@ -184,7 +201,7 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
                     bestAlong = along;
                 }
             }
-            current = best;
+            current = std::max(current, best);
             LegDeviation &l = c.legs[best - 1];
             ++l.samples;
             l.maxCrossTrack = std::max(l.maxCrossTrack, bestD);

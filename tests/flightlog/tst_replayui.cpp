@@ -42,6 +42,7 @@ private slots:
             import QtQuick
             import Sortie.Ui
             TelemetryPage {
+                fleet: null
                 units: DisplayUnits {}
             }
         )", QSize(1280, 800), {{QStringLiteral("replay"), QVariant::fromValue(&replay)},

@@ -197,17 +197,16 @@ private slots:
         QVERIFY(connectTo(c, sim.port()));
         const int id = logIn(c);
         QVERIFY(id > 0);
-        pb::GetRasterGridRequest raster;
-        raster.set_clientid(id);
-        raster.set_minlatitude(0.99);
-        raster.set_minlongitude(0.42);
-        raster.set_maxlatitude(0.995);
-        raster.set_maxlongitude(0.425);
-        raster.set_width(16);
-        raster.set_height(16);
-        auto reply = test::keep(c.send(raster));
+        // The simulator serves no elevation tiles (profiles and raster values, yes).
+        pb::GetElevationTilesRequest tiles;
+        tiles.set_clientid(id);
+        tiles.set_minlatitude(0.99);
+        tiles.set_minlongitude(0.42);
+        tiles.set_maxlatitude(0.995);
+        tiles.set_maxlongitude(0.425);
+        auto reply = test::keep(c.send(tiles));
         QVERIFY(test::finishes(reply.get()));
-        QVERIFY2(reply->error().message().contains(QLatin1String("GetRasterGridRequest")), qPrintable(reply->error().message()));
+        QVERIFY2(reply->error().message().contains(QLatin1String("GetElevationTilesRequest")), qPrintable(reply->error().message()));
     }
 
     void requestsThatCannotGoOutFailWithAReason()

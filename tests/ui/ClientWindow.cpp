@@ -32,6 +32,7 @@ ClientWindow::ClientWindow(Options options)
     m_connection = std::make_unique<client::ConnectionController>(m_session.get());
     m_missions = std::make_unique<client::MissionController>(m_client.get());
     m_fleet = std::make_unique<client::VehicleFleet>(m_client.get());
+    m_missions->setFleet(m_fleet.get()); // the upload chooser lists every vehicle of the fleet
     m_engine = std::make_unique<QQmlApplicationEngine>();
     ui::addImportPaths(*m_engine);
     m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())},
