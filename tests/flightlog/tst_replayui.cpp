@@ -104,7 +104,7 @@ private slots:
         const double usable = slider->property("availableWidth").toDouble();
         const QPointF at = slider->mapToScene(QPointF(left + 0.75 * usable, slider->height() / 2));
         QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, at.toPoint());
-        QTRY_VERIFY2(std::fabs(replay.progress() - 0.75) < 0.03, qPrintable(QString::number(replay.progress())));
+        QTRY_VERIFY2(std::fabs(replay.progress() - 0.75) < 0.03, qPrintable(QStringLiteral("%1 after a click at %2,%3 in %4x%5").arg(replay.progress()).arg(at.x()).arg(at.y()).arg(scene.view().width()).arg(scene.view().height())));
         QTRY_VERIFY(expectOnMap(replay.position()) < 1.5);
 
         // Jump back to the first event, then on to the next one.

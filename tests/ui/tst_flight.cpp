@@ -124,6 +124,7 @@ private slots:
         auto *attitude = m_client->find<ui::AttitudeIndicator>(QStringLiteral("attitudeIndicator"));
         QVERIFY(compass && attitude);
         click("autoButton");
+        confirm(QStringLiteral("Start the mission on EMU-101"));
         QTRY_COMPARE_WITH_TIMEOUT(emu->mode(), QStringLiteral("auto"), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(status->distanceToHome() > 15, 30000);
         QVERIFY(std::isfinite(compass->heading()));
@@ -144,16 +145,18 @@ private slots:
         click("pauseButton");
         QTRY_COMPARE_WITH_TIMEOUT(emu->mode(), QStringLiteral("hold"), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(emu->groundSpeed() < 0.5, 20000);
-        click("resumeButton");
+        click("resumeButton"); // resuming starts the mission again: asked like Auto
+        confirm(QStringLiteral("Start the mission on EMU-101"));
         QTRY_COMPARE_WITH_TIMEOUT(emu->mode(), QStringLiteral("auto"), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(emu->groundSpeed() > 1, 20000);
 
-        // Home, then land where it is.
+        // Home, then land where it is: commands that make it safer go at once (CommandPolicy), no dialog.
+        QObject *dialog = m_client->find<QObject>(QStringLiteral("commandConfirmDialog"));
         click("homeButton");
-        confirm(QStringLiteral("home"));
+        QVERIFY(!dialog->property("opened").toBool());
         QTRY_COMPARE_WITH_TIMEOUT(emu->mode(), QStringLiteral("return_home"), 10000);
         click("landButton");
-        confirm(QStringLiteral("Land"));
+        QVERIFY(!dialog->property("opened").toBool());
         QTRY_COMPARE_WITH_TIMEOUT(emu->mode(), QStringLiteral("land"), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(emu->verticalSpeed() < -0.2, 20000);
     }

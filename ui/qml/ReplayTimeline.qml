@@ -87,10 +87,19 @@ ToolBar {
                 }
                 onActivated: index => bar.replay.speed = bar.replay.speeds[index]
             }
+        }
+        // The second row: where the replay is, and what to do with the log. Two rows keep the bar
+        // inside the map's column at 1280 px.
+        RowLayout {
+            Layout.fillWidth: true
+            visible: bar.replay.active
+            spacing: 8
             ComboBox {
                 objectName: "eventBox"
                 visible: bar.replay.active
                 Layout.preferredWidth: 260
+                Layout.minimumWidth: 140
+                Layout.fillWidth: true
                 model: bar.replay.events
                 textRole: "text"
                 displayText: qsTr("Jump to event (%1)").arg(bar.replay.events.count)
