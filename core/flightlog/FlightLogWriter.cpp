@@ -14,6 +14,12 @@
 namespace sortie::flightlog {
 
 namespace {
+
+// QtSql binds a null QString as SQL NULL; a vehicle that does not report its type has an empty one.
+QString notNull(const QString &text)
+{
+    return text.isNull() ? QStringLiteral("") : text;
+}
 qint64 threadCpuNs()
 {
     timespec ts{};
@@ -169,10 +175,10 @@ bool FlightLogWriter::writeChunk(const RecordingChunk &chunk, QString *error)
                                  " ON CONFLICT(key) DO UPDATE SET name = excluded.name, protocol = excluded.protocol,"
                                  " type = excluded.type, autopilot = excluded.autopilot"));
         q.addBindValue(v.key);
-        q.addBindValue(v.identity.name.isEmpty() ? v.identity.id : v.identity.name);
-        q.addBindValue(v.identity.protocol);
-        q.addBindValue(v.identity.type);
-        q.addBindValue(v.identity.autopilot);
+        q.addBindValue(notNull(v.identity.name.isEmpty() ? v.identity.id : v.identity.name));
+        q.addBindValue(notNull(v.identity.protocol));
+        q.addBindValue(notNull(v.identity.type));
+        q.addBindValue(notNull(v.identity.autopilot));
         if (!q.exec())
             return failed(q);
     }
@@ -210,8 +216,8 @@ bool FlightLogWriter::writeChunk(const RecordingChunk &chunk, QString *error)
         for (const RecordedEvent &e : chunk.events) {
             q.addBindValue(e.vehicleKey.isEmpty() ? QVariant() : QVariant(vehicleRow(e.vehicleKey)));
             q.addBindValue(qint64(e.time));
-            q.addBindValue(e.kind);
-            q.addBindValue(e.text);
+            q.addBindValue(notNull(e.kind));
+            q.addBindValue(notNull(e.text));
             q.addBindValue(e.ok < 0 ? QVariant() : QVariant(e.ok));
             if (!q.exec())
                 return failed(q);

@@ -32,6 +32,8 @@ public:
 
     QString protocol() const override { return QStringLiteral("VCI"); }
     vehicle::VehicleIdentity identity() const override { return m_identity; }
+    // As a vehicle that reports neither its type nor its autopilot (null strings, as a link leaves them).
+    void forgetTypeAndAutopilot() { m_identity.type = QString(); m_identity.autopilot = QString(); }
     State state() const override { return m_state; }
     Capabilities capabilities() const override { return {}; }
     void start() override {}

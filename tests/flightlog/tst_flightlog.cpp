@@ -104,6 +104,32 @@ private slots:
         QVERIFY(flightlog::logInfoText(*log).contains(QStringLiteral("EMU-102")));
     }
 
+    void aVehicleThatDoesNotSayWhatItIsIsRecorded()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("untyped.sortielog"));
+        test::ScriptedLink link(QStringLiteral("9"), QStringLiteral("Sim VCI 1"));
+        link.forgetTypeAndAutopilot();
+        vehicle::Vehicle v(&link);
+        {
+            flightlog::FlightRecorder recorder({path, {}, 100});
+            QString error;
+            QVERIFY2(recorder.start(&error), qPrintable(error));
+            recorder.addVehicle(&v);
+            const auto flight = test::flyAlong(kLegs, kT0, 20);
+            for (const auto &s : flight)
+                link.send(test::telemetryAt(s.time, s.lat, s.lon, 20, s.heading, false, 1));
+            recorder.stop();
+            QVERIFY2(recorder.errorString().isEmpty(), qPrintable(recorder.errorString()));
+        }
+        QString error;
+        const auto log = FlightLog::open(path, &error);
+        QVERIFY2(log, qPrintable(error));
+        QCOMPARE(log->vehicles().size(), size_t(1));
+        QVERIFY(log->vehicles()[0].identity.type.isEmpty());
+        QVERIFY(log->vehicles()[0].counts[size_t(TelemetryField::Latitude)] > 0);
+    }
+
     void notALog()
     {
         QTemporaryDir dir;
