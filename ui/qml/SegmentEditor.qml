@@ -42,6 +42,7 @@ GroupBox {
                 required property string widget
                 required property string unit
                 required property var value
+                required property string valueText
                 required property string defaultValue
                 required property var choices
                 required property bool advanced
@@ -62,11 +63,11 @@ GroupBox {
                 TextField {
                     objectName: "segment_" + field.name
                     visible: field.widget === "number" || field.widget === "text"
-                    text: field.value === undefined ? "" : field.widget === "number" ? Number(field.value).toString() : String(field.value)
+                    text: field.valueText
                     placeholderText: field.defaultValue
                     selectByMouse: true
                     Layout.preferredWidth: 110
-                    onEditingFinished: if (text !== (field.value === undefined ? "" : String(field.value))) box.editor.set(field.index, text)
+                    onEditingFinished: if (text !== field.valueText) box.editor.set(field.index, text)
                 }
                 Switch {
                     objectName: "segment_" + field.name + "_switch"
@@ -99,7 +100,7 @@ GroupBox {
                 }
                 TextField {
                     visible: field.widget === "angle"
-                    text: field.value === undefined ? "" : Number(field.value).toString()
+                    text: field.valueText
                     Layout.preferredWidth: 60
                     selectByMouse: true
                     onEditingFinished: box.editor.set(field.index, text)

@@ -180,7 +180,7 @@ void SegmentEditorModel::refreshValues()
         return rebuild();  // a raw parameter came or went
     m_problem.clear();
     if (!m_fields.empty())
-        emit dataChanged(index(0), index(int(m_fields.size()) - 1), {ValueRole, ProblemRole});
+        emit dataChanged(index(0), index(int(m_fields.size()) - 1), {ValueRole, ValueTextRole, ProblemRole});
     emit valuesChanged();
 }
 
@@ -194,7 +194,7 @@ QHash<int, QByteArray> SegmentEditorModel::roleNames() const
     return {{NameRole, "name"}, {LabelRole, "label"}, {DescriptionRole, "description"}, {TypeRole, "type"}, {WidgetRole, "widget"},
             {UnitRole, "unit"}, {ValueRole, "value"}, {DefaultRole, "defaultValue"}, {MinimumRole, "minimum"},
             {MaximumRole, "maximum"}, {ChoicesRole, "choices"}, {AdvancedRole, "advanced"}, {KnownRole, "known"},
-            {ProblemRole, "problem"}};
+            {ProblemRole, "problem"}, {ValueTextRole, "valueText"}};
 }
 
 QVariant SegmentEditorModel::data(const QModelIndex &index, int role) const
@@ -223,6 +223,14 @@ QVariant SegmentEditorModel::data(const QModelIndex &index, int role) const
     }
     case AdvancedRole: return d.advanced;
     case KnownRole: return f.known;
+    case ValueTextRole: {
+        const QVariant v = parameterValue(*s, f.name, m_editor->catalog());
+        if (!v.isValid())
+            return QString();
+        if (d.type == ParameterType::Double && f.known) // a computed GSD is 1.6473684...: show what matters
+            return QString::number(std::round(v.toDouble() * 100) / 100);
+        return textOf(v);
+    }
     case ProblemRole: {
         const QVariant v = parameterValue(*s, f.name, m_editor->catalog());
         return f.known && v.isValid() ? d.check(textOf(v)) : QString();

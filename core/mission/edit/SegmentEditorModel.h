@@ -51,6 +51,7 @@ public:
         AdvancedRole,
         KnownRole,                    // false: a raw parameter no definition names
         ProblemRole,                  // why the value is not acceptable, "" when it is
+        ValueTextRole,                // the value as the field shows it (numbers to 0.01), "" when not set
     };
     Q_ENUM(Roles)
 
