@@ -2,6 +2,7 @@
 // validation, one waypoint move and its undo, a 1 km² area scan, and a step of dragging a corner
 // of a 5 km² photogrammetry area on that route (edit + the preview's plan). Prints each figure with its
 // target; exits 1 if a target is missed. Run: build/tests/mission/bench_mission
+#include "BenchClock.h"
 #include "AlgorithmCatalog.h"
 #include "AreaScanPlanner.h"
 #include "BenchRoute.h"
@@ -34,23 +35,8 @@ using namespace sortie::mission::formats;
 namespace {
 struct Timing { double wallMs; double cpuMs; };
 
-double threadCpuMs()
-{
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
-}
-
-double loadAverage()
-{
-    double load = 0;
-    if (FILE *f = std::fopen("/proc/loadavg", "r")) {
-        if (std::fscanf(f, "%lf", &load) != 1)
-            load = 0;
-        std::fclose(f);
-    }
-    return load;
-}
+using sortie::test::loadAverage;
+using sortie::test::threadCpuMs;
 
 // Median wall and thread-CPU time of `runs` runs, in milliseconds.
 Timing median(int runs, const std::function<void()> &work)

@@ -3,6 +3,7 @@
 // corner is dragged, as the editor's live preview and sortie-sim's ProcessRoute do it; the same with a
 // waypoint at every photo; an orbit and a corridor. Prints each figure with its target (one 60 Hz
 // frame, 16.7 ms); exits 1 if a target is missed. Run: build/tests/mission/bench_segments
+#include "BenchClock.h"
 #include "AlgorithmCatalog.h"
 #include "LocalTangentPlane.h"
 #include "SegmentPlanner.h"
@@ -27,23 +28,8 @@ const GeoPoint kCentre{56.95, 24.10};
 
 struct Timing { double wallMs; double cpuMs; double worstMs; };
 
-double threadCpuMs()
-{
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
-}
-
-double loadAverage()
-{
-    double load = 0;
-    if (FILE *f = std::fopen("/proc/loadavg", "r")) {
-        if (std::fscanf(f, "%lf", &load) != 1)
-            load = 0;
-        std::fclose(f);
-    }
-    return load;
-}
+using sortie::test::loadAverage;
+using sortie::test::threadCpuMs;
 
 // Median wall and thread-CPU time of `runs` runs (run i gets i), and the slowest wall time.
 Timing measure(int runs, const std::function<void(int)> &work)

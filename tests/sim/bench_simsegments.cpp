@@ -2,6 +2,7 @@
 // 75/65 %: over 10,000 photos) and on the same with a waypoint at every photo: planning, limits checks
 // and the processed actions, then the flight plan an upload becomes. Prints each figure with its target
 // (one 60 Hz frame for processing). Run: build/tests/sim/bench_simsegments
+#include "BenchClock.h"
 #include "Messages.pb.h"
 #include "SimRouteProcessor.h"
 #include "SimVehicleProfiles.h"
@@ -24,23 +25,8 @@ namespace {
 
 constexpr double kRad = 3.14159265358979323846 / 180.0;
 
-double threadCpuMs()
-{
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
-}
-
-double loadAverage()
-{
-    double load = 0;
-    if (FILE *f = std::fopen("/proc/loadavg", "r")) {
-        if (std::fscanf(f, "%lf", &load) != 1)
-            load = 0;
-        std::fclose(f);
-    }
-    return load;
-}
+using sortie::test::loadAverage;
+using sortie::test::threadCpuMs;
 
 struct Timing { double wallMs, cpuMs; };
 

@@ -2,6 +2,7 @@
 // validation of the 10,000-waypoint route, and (with the UI) a full profile refresh while a
 // waypoint of that route is dragged. Prints each figure with its target; exits 1 if one is missed.
 // Run: build/tests/terrain/bench_terrain
+#include "BenchClock.h"
 #include "BenchRoute.h"
 #include "ElevationService.h"
 #include "HgtTileSource.h"
@@ -39,23 +40,8 @@ using namespace sortie::terrain;
 namespace {
 struct Timing { double wallMs; double cpuMs; };
 
-double threadCpuMs()
-{
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
-}
-
-double loadAverage()
-{
-    double load = 0;
-    if (FILE *f = std::fopen("/proc/loadavg", "r")) {
-        if (std::fscanf(f, "%lf", &load) != 1)
-            load = 0;
-        std::fclose(f);
-    }
-    return load;
-}
+using sortie::test::loadAverage;
+using sortie::test::threadCpuMs;
 
 Timing median(int runs, const std::function<void()> &work)
 {
@@ -100,7 +86,7 @@ int main(int argc, char **argv)
                 std::thread::hardware_concurrency());
     QTemporaryDir dir;
     for (int west : {24, 25})
-        if (!test::writeHgt(dir.filePath(hgtName({56, west})), 3601, [west](int r, int c) { return height(56, west, r, c); }))
+        if (!terrain::test::writeHgt(dir.filePath(hgtName({56, west})), 3601, [west](int r, int c) { return height(56, west, r, c); }))
             return 1;
     HgtTileSource tiles(dir.path());
     ElevationService service;
