@@ -99,7 +99,13 @@ std::optional<ProfileRoute> wplProfileRoute(const QByteArray &data, QString *err
         if (f.size() < 12)
             continue;  // the reader has refused such a file before this runs
         const int index = f[0].toInt(), frame = f[2].toInt(), command = f[3].toInt();
-        const double lat = f[8].toDouble(), lon = f[9].toDouble(), alt = f[10].toDouble();
+        bool latOk = false, lonOk = false, altOk = false;
+        const double lat = f[8].toDouble(&latOk), lon = f[9].toDouble(&lonOk), alt = f[10].toDouble(&altOk);
+        if (!latOk || !lonOk || !altOk) { // never a 0 in place of an unreadable number
+            if (error)
+                *error = QStringLiteral("line %1: latitude, longitude or altitude is not a number").arg(lineNo);
+            return std::nullopt;
+        }
         if (index == 0 && !haveHome) {
             route.home = GeoPoint{lat, lon};
             haveHome = true;

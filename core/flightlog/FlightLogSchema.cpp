@@ -75,7 +75,7 @@ std::vector<vehicle::MissionItem> missionFromJson(const QByteArray &json, bool *
     *ok = doc.isArray();
     for (const QJsonValue &v : doc.array()) {
         const QJsonArray a = v.toArray();
-        if (a.size() != 4) {
+        if (a.size() != 4 || !a[0].isDouble() || !a[1].isDouble() || !a[2].isDouble() || !a[3].isDouble()) {
             *ok = false;
             return {};
         }
