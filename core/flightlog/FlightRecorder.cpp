@@ -148,17 +148,17 @@ void FlightRecorder::addVehicle(Vehicle *vehicle)
     r.connections.push_back(connect(vehicle, &Vehicle::identityChanged, this, identity));
     r.connections.push_back(connect(vehicle, &Vehicle::linkStateChanged, this, [this, &r] {
         const char *state = QMetaEnum::fromType<VehicleLink::State>().valueToKey(int(r.vehicle->linkState()));
-        event(r, QStringLiteral("link"), QString::fromLatin1(state));
+        writeEvent(r, QStringLiteral("link"), QString::fromLatin1(state));
     }));
     // Until the command log exists, commands are what the Vehicle reports finished.
     r.connections.push_back(connect(vehicle, &Vehicle::commandFinished, this,
                                     [this, &r](const QString &command, bool ok, const QString &message) {
-                                        event(r, QStringLiteral("command"), message.isEmpty() ? command : command + QStringLiteral(": ") + message, ok ? 1 : 0);
+                                        writeEvent(r, QStringLiteral("command"), message.isEmpty() ? command : command + QStringLiteral(": ") + message, ok ? 1 : 0);
                                     }));
     r.connections.push_back(connect(vehicle, &Vehicle::missionChanged, this, [this, &r] {
         m_chunk.missions.push_back({r.key, vehicleTime(r), r.vehicle->mission()});
         const size_t n = r.vehicle->mission().size();
-        event(r, QStringLiteral("upload"), n == 1 ? tr("Route of 1 waypoint") : tr("Route of %1 waypoints").arg(n));
+        writeEvent(r, QStringLiteral("upload"), n == 1 ? tr("Route of 1 waypoint") : tr("Route of %1 waypoints").arg(n));
     }));
     r.connections.push_back(connect(vehicle, &QObject::destroyed, this, [this, raw = vehicle] {
         for (auto it = m_recorded.begin(); it != m_recorded.end(); ++it) {
@@ -174,7 +174,7 @@ void FlightRecorder::addVehicle(Vehicle *vehicle)
             }
         }
     }));
-    event(r, QStringLiteral("link"), QString::fromLatin1(QMetaEnum::fromType<VehicleLink::State>().valueToKey(int(vehicle->linkState()))));
+    writeEvent(r, QStringLiteral("link"), QString::fromLatin1(QMetaEnum::fromType<VehicleLink::State>().valueToKey(int(vehicle->linkState()))));
 }
 
 void FlightRecorder::removeVehicle(Vehicle *vehicle)
@@ -198,7 +198,7 @@ void FlightRecorder::recordEvent(Vehicle *vehicle, const QString &kind, const QS
     m_chunk.events.push_back({r ? r->key : QString(), r ? vehicleTime(*r) : now(), kind, text, ok});
 }
 
-void FlightRecorder::event(const Recorded &r, const QString &kind, const QString &text, int ok)
+void FlightRecorder::writeEvent(const Recorded &r, const QString &kind, const QString &text, int ok)
 {
     m_chunk.events.push_back({r.key, vehicleTime(r), kind, text, ok});
 }

@@ -79,7 +79,7 @@ private:
 
     Recorded *find(const vehicle::Vehicle *vehicle);
     void gather(Recorded &r, const vehicle::TelemetryBatch &batch);
-    void event(const Recorded &r, const QString &kind, const QString &text, int ok = -1);
+    void writeEvent(const Recorded &r, const QString &kind, const QString &text, int ok = -1);
     static int64_t vehicleTime(const Recorded &r) { return now() + r.clockOffset; }
     static int64_t now();
 

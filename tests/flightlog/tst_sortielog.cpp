@@ -172,7 +172,8 @@ private slots:
         Vehicle *emu101 = fleet.vehicleAt(rows[0]), *emu102 = fleet.vehicleAt(rows[1]);
         QTRY_VERIFY_WITH_TIMEOUT(emu101->position().isValid() && emu102->position().isValid(), 10000);
         const auto route101 = boxFrom(emu101->position()), route102 = boxFrom(emu102->position());
-        for (auto [v, route] : {std::pair{emu101, route101}, std::pair{emu102, route102}}) {
+        for (const auto &[vehicle, route] : {std::pair{emu101, route101}, std::pair{emu102, route102}}) {
+            Vehicle *v = vehicle; // a structured binding cannot be captured before C++20 in clang 14
             bool uploaded = false;
             QString why;
             // Through the link's two steps, as the upload service does: the server processes, then it is sent.
