@@ -98,6 +98,27 @@ private slots:
         QVERIFY(!(std::get<AreaScan>(f.model.segment(row)).parameters.camera == gopro));
     }
 
+    void aFreshAreaScanHasNoProblem()
+    {
+        // Its defaults (side distance 0: from the camera; the generic camera) are valid values.
+        Fixture f;
+        f.fields.setRow(f.editor.addSegment(QStringLiteral("AreaScanAlgorithm"), kSquare));
+        for (int i = 0; i < f.fields.rowCount(); ++i) {
+            const QModelIndex field = f.fields.index(i);
+            QVERIFY2(field.data(SegmentEditorModel::ProblemRole).toString().isEmpty(),
+                     qPrintable(field.data(SegmentEditorModel::NameRole).toString() + QStringLiteral(": ")
+                                + field.data(SegmentEditorModel::ProblemRole).toString()));
+        }
+        QVERIFY(f.fields.isValid());
+        // The picker lists the segment's own camera beside the built-in ones.
+        const QModelIndex camera = f.fields.index(f.fields.indexOf(QStringLiteral("camera")));
+        const QVariantList choices = camera.data(SegmentEditorModel::ChoicesRole).toList();
+        QCOMPARE(choices.size(), qsizetype(builtInCameras().size() + 1));
+        QCOMPARE(choices.first().toMap().value(QStringLiteral("value")).toString(), Camera{}.name);
+        // A side distance below 0 is still refused.
+        QVERIFY(!f.fields.set(f.fields.indexOf(QStringLiteral("sideDistance")), -1.0));
+    }
+
     void setValuesTypedCheckedAndUndoable()
     {
         Fixture f;

@@ -5,6 +5,7 @@
 #include "RouteModel.h"
 #include "SegmentParameters.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sortie::mission {
@@ -141,28 +142,29 @@ void SegmentEditorModel::rebuild()
         const auto definitions = definitionsOf(*s, catalog);
         for (const QString &name : parameterNames(*s, catalog)) {
             Field f{name, {}, false};
-            for (const AlgorithmDefinition *d : definitions) {
-                if (const ParameterDefinition *p = d->parameter(name)) {
-                    f.definition = *p;
-                    f.known = true;
-                    break;
-                }
-            }
-            if (!f.known) {
-                if (auto own = sortieDefinition(name)) {
-                    f.definition = *own;
-                    f.known = true;
-                } else {
-                    f.definition.name = name;
-                    f.definition.displayName = name;
-                    f.definition.description = tr("A parameter Sortie has no description of: kept and sent as typed.");
-                }
+            // Sortie's own area scan reads some names its own way (sideDistance 0: from the camera),
+            // so its own descriptions come first there; elsewhere the server's do.
+            std::optional<ParameterDefinition> found = isAreaScan(*s) ? sortieDefinition(name) : std::nullopt;
+            for (const AlgorithmDefinition *d : definitions)
+                if (const ParameterDefinition *p = found ? nullptr : d->parameter(name))
+                    found = *p;
+            if (!found)
+                found = sortieDefinition(name);
+            if (found) {
+                f.definition = *found;
+                f.known = true;
+            } else {
+                f.definition.name = name;
+                f.definition.displayName = name;
+                f.definition.description = tr("A parameter Sortie has no description of: kept and sent as typed.");
             }
             if (f.definition.displayName.isEmpty())
                 f.definition.displayName = name;
-            if (name == QLatin1String("camera") && f.definition.choices.empty())
+            if (name == QLatin1String("camera") && f.definition.choices.empty()) {
                 for (const Camera &c : builtInCameras())
                     f.definition.choices.push_back({c.name, c.name});
+                f.choicesSuggested = true;
+            }
             m_fields.push_back(std::move(f));
         }
     }
@@ -219,6 +221,11 @@ QVariant SegmentEditorModel::data(const QModelIndex &index, int role) const
         QVariantList list;
         for (const ParameterChoice &c : d.choices)
             list << QVariantMap{{QStringLiteral("value"), c.value}, {QStringLiteral("text"), c.displayName}};
+        // A value outside Sortie's suggestions (a custom camera) is listed, so the picker can show it.
+        const QString current = textOf(parameterValue(*s, f.name, m_editor->catalog()));
+        const bool listed = std::any_of(d.choices.begin(), d.choices.end(), [&](const ParameterChoice &c) { return c.value == current; });
+        if (f.choicesSuggested && !current.isEmpty() && !listed)
+            list.prepend(QVariantMap{{QStringLiteral("value"), current}, {QStringLiteral("text"), current}});
         return list;
     }
     case AdvancedRole: return d.advanced;
@@ -233,7 +240,14 @@ QVariant SegmentEditorModel::data(const QModelIndex &index, int role) const
     }
     case ProblemRole: {
         const QVariant v = parameterValue(*s, f.name, m_editor->catalog());
-        return f.known && v.isValid() ? d.check(textOf(v)) : QString();
+        if (!f.known || !v.isValid())
+            return QString();
+        if (f.choicesSuggested) {  // suggestions do not restrict
+            ParameterDefinition open = d;
+            open.choices.clear();
+            return open.check(textOf(v));
+        }
+        return d.check(textOf(v));
     }
     default: return {};
     }

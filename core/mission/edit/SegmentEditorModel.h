@@ -88,6 +88,7 @@ private:
         QString name;
         ParameterDefinition definition;  // synthesised for raw values and Sortie's own names
         bool known = true;
+        bool choicesSuggested = false;  // Sortie's list, not the server's: another value is allowed
     };
     void rebuild();
     void refreshValues();
