@@ -16,6 +16,7 @@ RouteDocument::RouteDocument(QObject *parent)
     , m_selection(&m_model)
     , m_analyzer(&m_model)
     , m_segmentEditor(&m_model, &m_editor)
+    , m_actionEditor(&m_model, &m_editor)
     , m_preview(&m_model, &m_editor)
 {
     connect(this, &RouteDocument::currentChanged, this, [this] {
@@ -38,6 +39,16 @@ RouteDocument::RouteDocument(QObject *parent)
     connect(&m_model, &QAbstractItemModel::modelReset, this, &RouteDocument::selectedRowsChanged);
     connect(&m_selection, &QItemSelectionModel::currentChanged, this, &RouteDocument::currentChanged);
     connect(&m_model, &RouteModel::routeEdited, this, &RouteDocument::currentChanged);
+    // The action editor shows the current waypoint's actions and edits the selection's.
+    const auto selectActions = [this] {
+        QList<int> rows = selectedRows();
+        if (const int current = currentRow(); rows.removeOne(current) || rows.isEmpty())
+            rows.prepend(current);
+        rows.removeAll(-1);
+        m_actionEditor.setRows(rows);
+    };
+    connect(this, &RouteDocument::selectedRowsChanged, this, selectActions);
+    connect(this, &RouteDocument::currentChanged, this, selectActions);
 }
 
 int RouteDocument::currentRow() const

@@ -4,6 +4,7 @@
 #include "RouteEditor.h"
 #include "RouteModel.h"
 #include "SegmentEditorModel.h"
+#include "WaypointActionsModel.h"
 #include "SegmentPreview.h"
 
 #include <QItemSelectionModel>
@@ -27,6 +28,7 @@ class RouteDocument : public QObject
     Q_PROPERTY(sortie::mission::RouteAnalyzer *analyzer READ analyzer CONSTANT)
     // The current segment's parameters, as the editor the panel draws (follows currentRow).
     Q_PROPERTY(sortie::mission::SegmentEditorModel *segmentEditor READ segmentEditor CONSTANT)
+    Q_PROPERTY(sortie::mission::WaypointActionsModel *actionEditor READ actionEditor CONSTANT)
     Q_PROPERTY(bool modified READ isModified NOTIFY modifiedChanged)
     Q_PROPERTY(bool canUndo READ canUndo NOTIFY undoChanged)
     Q_PROPERTY(bool canRedo READ canRedo NOTIFY undoChanged)
@@ -54,6 +56,7 @@ public:
     QItemSelectionModel *selection() { return &m_selection; }
     mission::RouteAnalyzer *analyzer() { return &m_analyzer; }
     mission::SegmentEditorModel *segmentEditor() { return &m_segmentEditor; }
+    mission::WaypointActionsModel *actionEditor() { return &m_actionEditor; }
     mission::SegmentPreview *preview() { return &m_preview; }
     const mission::Route &route() const { return m_model.route(); }
 
@@ -104,6 +107,7 @@ private:
     QItemSelectionModel m_selection;
     mission::RouteAnalyzer m_analyzer;
     mission::SegmentEditorModel m_segmentEditor;
+    mission::WaypointActionsModel m_actionEditor;
     mission::SegmentPreview m_preview;
     QString m_message;
 };

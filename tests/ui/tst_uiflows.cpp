@@ -367,6 +367,53 @@ private slots:
         QVERIFY(values.last() > values.first());
         QTRY_VERIFY2(text("missionMessage").startsWith(QStringLiteral("Uploaded to EMU-101: ")), qPrintable(text("missionMessage")));
     }
+    void actionsAtAWaypoint()
+    {
+        openDemoRoute();
+        MapView *map = missionMap();
+        client::RouteDocument *doc = m_missions->document();
+        // Click waypoint 2 on the map: its action editor appears, empty.
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, map->mapToScene(routeLayer()->waypointPosition(1)).toPoint());
+        QTRY_COMPARE(doc->currentRow(), 1);
+        QTRY_VERIFY(find("actionEditor")->isVisible());
+        QCOMPARE(find<QObject>("actionEditor")->property("title").toString(), QStringLiteral("Actions at waypoint 2"));
+        const auto actionsOf = [doc] { return std::get<mission::Waypoint>(doc->model()->segment(1)).actions; };
+        const size_t before = actionsOf().size();
+
+        // Pick "Photos by distance" with the keyboard and add it.
+        QQuickItem *picker = find("actionKindPicker");
+        picker->forceActiveFocus(Qt::TabFocusReason);
+        QTRY_VERIFY(picker->hasActiveFocus());
+        const QVariantList kinds = picker->property("model").toList();
+        int wanted = -1;
+        for (int i = 0; i < kinds.size(); ++i)
+            if (kinds[i].toMap().value(QStringLiteral("kind")) == QStringLiteral("cameraSeriesByDistance"))
+                wanted = i;
+        QVERIFY(wanted >= 0);
+        while (picker->property("currentIndex").toInt() < wanted)
+            QTest::keyClick(m_window, Qt::Key_Down);
+        QCOMPARE(picker->property("currentIndex").toInt(), wanted);
+        click("addActionButton");
+        QTRY_COMPARE(actionsOf().size(), before + 1);
+        const int added = int(before);
+
+        // Its distance typed in its field: the table says so, and it is one undo step.
+        const QByteArray fieldName = "action_" + QByteArray::number(added) + "_intervalMeters";
+        type(fieldName.constData(), QStringLiteral("25"));
+        QTest::keyClick(m_window, Qt::Key_Return);
+        QTRY_COMPARE(std::get<mission::CameraSeriesByDistanceAction>(actionsOf()[size_t(added)]).intervalMeters, 25.0);
+        QTRY_VERIFY(doc->model()->index(1).data(mission::RouteModel::ActionsSummaryRole).toString().contains(QStringLiteral("Photo every 25 m")));
+        // A value out of range is refused on screen and changes nothing.
+        type(fieldName.constData(), QStringLiteral("-5"));
+        QTest::keyClick(m_window, Qt::Key_Return);
+        QTRY_VERIFY(!text("actionProblem").isEmpty());
+        QCOMPARE(std::get<mission::CameraSeriesByDistanceAction>(actionsOf()[size_t(added)]).intervalMeters, 25.0);
+        doc->undo();
+        QCOMPARE(std::get<mission::CameraSeriesByDistanceAction>(actionsOf()[size_t(added)]).intervalMeters, 10.0);
+        click(("removeAction_" + QByteArray::number(added)).constData());
+        QTRY_COMPARE(actionsOf().size(), before);
+    }
+
     void liveTelemetryAndCommands()
     {
         logIn(QStringLiteral("admin"));

@@ -2,9 +2,10 @@
 
 // The editing types QML views use beside the ones ui/qmltypes registers: the enums the
 // RouteEditor takes (MissionEnums.Amsl, MissionEnums.Continuing) and the generated segment
-// editor's model.
+// editor's model and the waypoint actions' model.
 #include "MissionEnums.h"
 #include "SegmentEditorModel.h"
+#include "WaypointActionsModel.h"
 
 #include <QtQml/qqmlregistration.h>
 
@@ -21,6 +22,14 @@ struct SegmentEditorModelForeign
     Q_GADGET
     QML_FOREIGN(sortie::mission::SegmentEditorModel)
     QML_NAMED_ELEMENT(SegmentEditorModel)
+    QML_UNCREATABLE("the document's, handed to the views")
+};
+
+struct WaypointActionsModelForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::mission::WaypointActionsModel)
+    QML_NAMED_ELEMENT(WaypointActionsModel)
     QML_UNCREATABLE("the document's, handed to the views")
 };
 

@@ -187,6 +187,12 @@ Pane {
             editor: panel.doc ? panel.doc.segmentEditor : null
         }
 
+        ActionEditor {
+            objectName: "actionEditor"
+            Layout.fillWidth: true
+            actions: panel.doc ? panel.doc.actionEditor : null
+        }
+
         ListView {
             objectName: "validationList"
             visible: count > 0

@@ -1,5 +1,9 @@
 #include "ActionVariants.h"
 
+#include <QCoreApplication>
+
+#include <cmath>
+
 namespace sortie::mission {
 
 namespace {
@@ -96,6 +100,92 @@ std::optional<WaypointAction> actionFromVariant(const QVariantMap &m)
         return a;
     }
     return std::nullopt;
+}
+
+namespace {
+ActionField number(const char *name, const char *label, const char *unit, std::optional<double> minimum,
+                   std::optional<double> maximum = std::nullopt, ActionField::Type type = ActionField::Type::Number)
+{
+    return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), type,
+            QString::fromUtf8(unit), minimum, maximum, {}};
+}
+
+ActionField toggle(const char *name, const char *label)
+{
+    return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), ActionField::Type::Toggle, {}, {}, {}, {}};
+}
+
+ActionField choice(const char *name, const char *label, std::vector<std::pair<QString, QString>> choices)
+{
+    return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), ActionField::Type::Choice, {}, {}, {},
+            std::move(choices)};
+}
+
+ActionKindDescription kind(const char *name, const char *label, std::vector<ActionField> fields)
+{
+    return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), std::move(fields)};
+}
+} // namespace
+
+QString ActionField::check(const QVariant &value) const
+{
+    switch (type) {
+    case Type::Toggle:
+        return value.canConvert<bool>() ? QString() : QStringLiteral("%1 is either on or off").arg(label);
+    case Type::Choice:
+        for (const auto &c : choices)
+            if (c.first == value.toString())
+                return {};
+        return QStringLiteral("%1: \"%2\" is not one of its choices").arg(label, value.toString());
+    case Type::Number:
+    case Type::Integer: {
+        bool ok = false;
+        const double v = value.toString().trimmed().isEmpty() ? std::nan("") : value.toDouble(&ok);
+        if (!ok || !std::isfinite(v))
+            return QStringLiteral("%1: \"%2\" is not a number").arg(label, value.toString());
+        if (type == Type::Integer && std::floor(v) != v)
+            return QStringLiteral("%1: %2 is not a whole number").arg(label, value.toString());
+        if (minimum && v < *minimum)
+            return QStringLiteral("%1: %2 is below %3 %4").arg(label, QString::number(v), QString::number(*minimum), unit).trimmed();
+        if (maximum && v > *maximum)
+            return QStringLiteral("%1: %2 is above %3 %4").arg(label, QString::number(v), QString::number(*maximum), unit).trimmed();
+        return {};
+    }
+    }
+    return {};
+}
+
+const std::vector<ActionKindDescription> &editableActionKinds()
+{
+    using T = ActionField::Type;
+    static const std::vector<ActionKindDescription> kinds{
+        kind("cameraTrigger", "Camera", {choice("state", "Camera", {{"singleShot", "Take a photo"}, {"startRecording", "Start video"},
+                                                                   {"stopRecording", "Stop video"}, {"toggleRecording", "Toggle video"}})}),
+        kind("cameraSeriesByDistance", "Photos by distance", {number("intervalMeters", "Every", "m", 0, 10000),
+                                                              number("shots", "Shots (0: until stopped)", "", 0, 100000, T::Integer),
+                                                              number("startDelaySeconds", "Start after", "s", 0, 3600)}),
+        kind("cameraSeriesByTime", "Photos by time", {number("intervalSeconds", "Every", "s", 0.1, 3600),
+                                                      number("shots", "Shots (0: until stopped)", "", 0, 100000, T::Integer),
+                                                      number("startDelaySeconds", "Start after", "s", 0, 3600)}),
+        kind("wait", "Wait", {number("seconds", "For", "s", 0, 86400), toggle("waitForOperator", "Until the operator continues")}),
+        kind("heading", "Heading", {number("headingDeg", "Heading", "°", 0, 360), toggle("relativeToNextWaypoint", "From the course")}),
+        kind("poi", "Point of interest", {number("latitude", "Latitude", "°", -90, 90), number("longitude", "Longitude", "°", -180, 180),
+                                          number("altitude", "Altitude", "m", -500, 10000),
+                                          choice("altitudeType", "Altitude type", {{"AGL", "Above ground (AGL)"}, {"AMSL", "Above sea level (AMSL)"}})}),
+        kind("panorama", "Panorama", {number("angleDeg", "Angle", "°", 1, 360), number("stepAngleDeg", "Step", "°", 0, 360),
+                                      number("stepDelaySeconds", "Pause per step", "s", 0, 600),
+                                      number("rotationSpeedDegPerSecond", "Rotation speed", "°/s", 0.1, 360),
+                                      toggle("clockwise", "Clockwise"), toggle("video", "Video")}),
+    };
+    return kinds;
+}
+
+const ActionKindDescription *actionKindDescription(const QString &name)
+{
+    for (const ActionKindDescription &k : editableActionKinds())
+        if (k.kind == name)
+            return &k;
+    return nullptr;
 }
 
 } // namespace sortie::mission

@@ -5,6 +5,7 @@
 #include <QVariantMap>
 
 #include <optional>
+#include <vector>
 
 namespace sortie::mission {
 
@@ -14,5 +15,31 @@ QVariantMap actionToVariant(const WaypointAction &action);
 // nullopt for an unknown kind; missing keys take the action's defaults. Opaque actions cannot be
 // created from QML.
 std::optional<WaypointAction> actionFromVariant(const QVariantMap &map);
+
+// What an editor shows of an action kind: its fields by the keys above, with label, unit, type
+// and range. The ranges are what a value must satisfy to be applied.
+struct ActionField
+{
+    enum class Type { Number, Integer, Toggle, Choice };
+    QString name;
+    QString label;
+    Type type = Type::Number;
+    QString unit;                                    // "s", "m", "°", "°/s", ""
+    std::optional<double> minimum, maximum;
+    std::vector<std::pair<QString, QString>> choices; // value, label
+    // Why `value` cannot be this field's ("" when it can).
+    QString check(const QVariant &value) const;
+};
+
+struct ActionKindDescription
+{
+    QString kind;    // actionKindName()
+    QString label;   // "Photos by distance"
+    std::vector<ActionField> fields;
+};
+
+// Every kind an operator can add, in menu order.
+const std::vector<ActionKindDescription> &editableActionKinds();
+const ActionKindDescription *actionKindDescription(const QString &kind);
 
 } // namespace sortie::mission

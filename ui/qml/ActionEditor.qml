@@ -1,0 +1,141 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Sortie.Ui
+
+// The actions at the selected waypoints (WaypointActionsModel): each with its fields, a kind to
+// add, remove one. Every change is a call on the model, which checks it and makes it one undo step.
+GroupBox {
+    id: box
+    required property WaypointActionsModel actions
+    visible: actions !== null && actions.valid
+    title: actions ? actions.title : ""
+
+    ColumnLayout {
+        anchors.fill: parent
+        spacing: 4
+
+        Label {
+            visible: box.actions !== null && box.actions.mixed
+            text: qsTr("The selected waypoints have different actions: these are the first one's. An edit applies where they match; an added action goes to all.")
+            wrapMode: Text.Wrap
+            opacity: 0.8
+            Layout.fillWidth: true
+        }
+
+        Repeater {
+            model: box.actions
+            delegate: Frame {
+                id: action
+                required property int index
+                required property string summary
+                required property var fields
+                required property bool editable
+                objectName: "action_" + index
+                Layout.fillWidth: true
+                padding: 6
+
+                ColumnLayout {
+                    anchors.fill: parent
+                    spacing: 2
+                    RowLayout {
+                        Layout.fillWidth: true
+                        Label {
+                            text: action.summary
+                            font.bold: true
+                            elide: Text.ElideRight
+                            Layout.fillWidth: true
+                        }
+                        Button {
+                            objectName: "removeAction_" + action.index
+                            text: qsTr("Remove")
+                            flat: true
+                            onClicked: box.actions.remove(action.index)
+                        }
+                    }
+                    Label {
+                        visible: !action.editable
+                        text: qsTr("Sent by the server; kept and sent back unchanged.")
+                        opacity: 0.7
+                        wrapMode: Text.Wrap
+                        Layout.fillWidth: true
+                    }
+                    Repeater {
+                        model: action.fields
+                        delegate: RowLayout {
+                            id: field
+                            required property var modelData
+                            readonly property int action: modelData.action
+                            readonly property string name: modelData.name
+                            readonly property string type: modelData.type
+                            spacing: 6
+                            Label {
+                                text: field.modelData.label
+                                elide: Text.ElideRight
+                                Layout.preferredWidth: 150
+                            }
+                            TextField {
+                                objectName: "action_" + field.action + "_" + field.name
+                                visible: field.type === "number" || field.type === "integer"
+                                text: field.modelData.value === undefined ? "" : String(field.modelData.value)
+                                selectByMouse: true
+                                Layout.preferredWidth: 110
+                                onEditingFinished: if (text !== String(field.modelData.value)) box.actions.setField(field.action, field.name, text)
+                            }
+                            Switch {
+                                objectName: "action_" + field.action + "_" + field.name + "_switch"
+                                visible: field.type === "toggle"
+                                checked: field.modelData.value === true
+                                onToggled: box.actions.setField(field.action, field.name, checked)
+                            }
+                            ComboBox {
+                                objectName: "action_" + field.action + "_" + field.name + "_choice"
+                                visible: field.type === "choice"
+                                model: field.modelData.choices
+                                textRole: "text"
+                                valueRole: "value"
+                                currentIndex: visible ? indexOfValue(field.modelData.value) : -1
+                                Layout.preferredWidth: 190
+                                onActivated: box.actions.setField(field.action, field.name, currentValue)
+                            }
+                            Label { text: field.modelData.unit; opacity: 0.7 }
+                        }
+                    }
+                }
+            }
+        }
+
+        RowLayout {
+            Layout.fillWidth: true
+            ComboBox {
+                id: kindPicker
+                objectName: "actionKindPicker"
+                model: box.actions ? box.actions.kinds : []
+                textRole: "label"
+                valueRole: "kind"
+                Layout.preferredWidth: 190
+            }
+            Button {
+                objectName: "addActionButton"
+                text: qsTr("Add action")
+                enabled: kindPicker.currentIndex >= 0
+                onClicked: box.actions.add(kindPicker.currentValue)
+            }
+            Button {
+                objectName: "clearActionsButton"
+                text: qsTr("Remove all")
+                visible: box.actions !== null && box.actions.count > 0
+                onClicked: box.actions.clear()
+            }
+        }
+
+        Label {
+            objectName: "actionProblem"
+            visible: text.length > 0
+            text: box.actions ? box.actions.problem : ""
+            color: "#e53935"
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
+        }
+    }
+}
