@@ -175,6 +175,32 @@ private slots:
         QVERIFY(withScan.lengthMeters > st.lengthMeters + 20000);
     }
 
+    void cameraActionsCountPhotos()
+    {
+        // Four waypoints 100 m apart along a line at 5 m/s.
+        Route r;
+        GeoPoint p{56.9, 24.1};
+        for (int i = 0; i < 4; ++i) {
+            r.segments.push_back(at(p.latitude, p.longitude, 40, 5));
+            p = geodesicDirect(p, 90, 100).point;
+        }
+        auto actions = [&r](int row) -> std::vector<WaypointAction> & { return std::get<Waypoint>(r.segments[size_t(row)]).actions; };
+        QCOMPARE(computeStatistics(r).photoCount, 0);
+        // One photo where it is set, then one every 30 m over the 300 m that follow: 1 + 10.
+        actions(0).push_back(CameraSeriesByDistanceAction{30, 0, 0});
+        QCOMPARE(computeStatistics(r).photoCount, 11);
+        // Stopped at the third waypoint (interval 0) after 200 m: 1 + 6; a single shot at the last.
+        actions(2).push_back(CameraSeriesByDistanceAction{0, 0, 0});
+        actions(3).push_back(CameraTriggerAction{TriggerState::SingleShot});
+        QCOMPARE(computeStatistics(r).photoCount, 7 + 1);
+        // Three shots only.
+        actions(0).front() = CameraSeriesByDistanceAction{30, 3, 0};
+        QCOMPARE(computeStatistics(r).photoCount, 3 + 1);
+        // By time: every 4 s over 40 s of legs (two 100 m legs at 5 m/s) from the first: 1 + 10.
+        actions(0).front() = CameraSeriesByTimeAction{4, 0, 0};
+        QCOMPARE(computeStatistics(r).photoCount, 11 + 1);
+    }
+
     void analyzerCoalescesEdits()
     {
         RouteModel model;

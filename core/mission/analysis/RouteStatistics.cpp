@@ -49,6 +49,56 @@ GeoBox boundingBoxOf(const std::vector<GeoPoint> &points)
     return box;
 }
 
+namespace {
+// The photos the waypoints' camera actions take along the path: a single shot, or a series by
+// distance or by time that starts with a photo where it is set and goes on (for its number of
+// shots, or until another series or a stop) over the legs that follow.
+class CameraActionPhotos
+{
+public:
+    void arrive(const std::vector<WaypointAction> &actions)
+    {
+        for (const WaypointAction &a : actions) {
+            if (const auto *shot = std::get_if<CameraTriggerAction>(&a); shot && shot->state == TriggerState::SingleShot)
+                ++m_photos;
+            else if (const auto *d = std::get_if<CameraSeriesByDistanceAction>(&a))
+                start(Series::Distance, d->intervalMeters, d->shots);
+            else if (const auto *t = std::get_if<CameraSeriesByTimeAction>(&a))
+                start(Series::Time, t->intervalSeconds, t->shots);
+        }
+    }
+    void fly(double meters, double seconds)
+    {
+        if (m_series == Series::None)
+            return;
+        m_since += m_series == Series::Distance ? meters : seconds;
+        while (m_since >= m_interval && m_left != 0) {
+            ++m_photos;
+            m_since -= m_interval;
+            --m_left;  // below 0: no limit
+        }
+    }
+    int photos() const { return m_photos; }
+
+private:
+    enum class Series { None, Distance, Time };
+    void start(Series series, double interval, int shots)
+    {
+        m_series = interval > 0 ? series : Series::None;  // an interval of 0 stops the series
+        m_interval = interval;
+        m_since = 0;
+        if (m_series == Series::None)
+            return;
+        ++m_photos;
+        m_left = shots > 0 ? shots - 1 : -1;
+    }
+    Series m_series = Series::None;
+    double m_interval = 0, m_since = 0;
+    int m_left = -1;
+    int m_photos = 0;
+};
+} // namespace
+
 RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
 {
     RouteStatistics st;
@@ -77,16 +127,24 @@ RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
 
     std::vector<GeoPoint> positions;
     positions.reserve(path.size() + 1);
+    CameraActionPhotos cameraActions;
     for (size_t i = 0; i < path.size(); ++i) {
         const PathPoint &p = path[i];
         positions.push_back(p.position);
+        const auto arriveAtWaypoint = [&] {
+            if (p.segment >= 0 && p.segment < int(route.segments.size()))
+                if (const Waypoint *w = asWaypoint(route.segments[size_t(p.segment)]))
+                    cameraActions.arrive(w->actions);
+        };
         st.flightTimeSeconds += p.holdSeconds;
         if (p.role == WaypointRole::Takeoff && p.altitudeType == AltitudeType::Agl)
             st.flightTimeSeconds += verticalTime(p.altitude), st.climbMeters += std::max(0.0, p.altitude);
         if (p.role == WaypointRole::Land && p.altitudeType == AltitudeType::Agl)
             st.flightTimeSeconds += verticalTime(-p.altitude), st.descentMeters += std::max(0.0, p.altitude);
-        if (i == 0)
+        if (i == 0) {
+            arriveAtWaypoint();
             continue;
+        }
         const PathPoint &q = path[i - 1];
         const double d = geodesicDistance(q.position, p.position);
         st.lengthMeters += d;
@@ -96,8 +154,12 @@ RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
             (dh > 0 ? st.climbMeters : st.descentMeters) += std::abs(dh);
         }
         const double horizontal = p.speed > 0 ? d / p.speed : 0.0;
-        st.flightTimeSeconds += std::max(horizontal, verticalTime(dh));
+        const double legSeconds = std::max(horizontal, verticalTime(dh));
+        st.flightTimeSeconds += legSeconds;
+        cameraActions.fly(d, legSeconds);
+        arriveAtWaypoint();
     }
+    st.photoCount += cameraActions.photos();
     const RouteSettings &rs = route.settings;
     if (rs.endAction == EndAction::ReturnHome && rs.home && !path.empty()) {
         // Fly home at the last leg's speed, then descend from the last AGL altitude.

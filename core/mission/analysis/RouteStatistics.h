@@ -21,7 +21,7 @@ struct RouteStatistics
     double flightTimeSeconds = 0.0;
     double climbMeters = 0.0;       // total ascent between points of the same altitude type
     double descentMeters = 0.0;
-    int photoCount = 0;             // from area scans
+    int photoCount = 0;             // from scans and the waypoints' camera actions
     GeoBox boundingBox;
     bool operator==(const RouteStatistics &) const = default;
 };
