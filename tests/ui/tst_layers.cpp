@@ -227,6 +227,37 @@ private slots:
         QVERIFY(sortie::test::colourDistance(m_scene->grab().pixel(onLeg), QColor(0x1e, 0x88, 0xe5).rgb()) < 40);
     }
 
+    void actionMarksBadgeTheirWaypoints()
+    {
+        // Any model with the roles: a camera badge on waypoint 1, none on 2, then other actions there.
+        enum { Lat = Qt::UserRole + 1, Lon, Marks };
+        auto *model = new QStandardItemModel(m_scene->root());
+        model->setItemRoleNames({{Lat, "lat"}, {Lon, "lon"}, {Marks, "marks"}});
+        for (int i = 0; i < 2; ++i) {
+            const QGeoCoordinate c = m_map->toCoordinate(kWaypoints[i]);
+            auto *item = new QStandardItem;
+            item->setData(c.latitude(), Lat);
+            item->setData(c.longitude(), Lon);
+            item->setData(i == 0 ? 1 : 0, Marks);
+            model->appendRow(item);
+        }
+        m_route->setSelectionModel(nullptr);
+        m_route->setLatitudeRole(QStringLiteral("lat"));
+        m_route->setLongitudeRole(QStringLiteral("lon"));
+        m_route->setModel(model);
+        m_route->setActionMarksRole(QStringLiteral("marks"));
+        const QColor camera(0x2e, 0x7d, 0x32), other(0x6a, 0x1b, 0x9a);
+        const auto badgeArea = [](int i) { return QRect((kWaypoints[i] + QPointF(2, -18)).toPoint(), QSize(18, 12)); };
+        QTRY_VERIFY(countNear(m_scene->grab(), badgeArea(0), camera) > 10);
+        QCOMPARE(countNear(m_scene->grab(), badgeArea(1), camera), 0);
+        QCOMPARE(countNear(m_scene->grab(), badgeArea(1), other), 0);
+        model->item(1)->setData(2, Marks);
+        QTRY_VERIFY(countNear(m_scene->grab(), badgeArea(1), other) > 10);
+        // No role, no badges.
+        m_route->setActionMarksRole(QString());
+        QTRY_COMPARE(countNear(m_scene->grab(), badgeArea(0), camera), 0);
+    }
+
     void tenThousandWaypoints()
     {
         std::vector<QGeoCoordinate> points;

@@ -59,6 +59,7 @@ RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
             moving[size_t(row)] = true;
     }
     auto isSelected = [&](size_t i) { return input.selected && i < input.selected->size() && (*input.selected)[i]; };
+    auto marksOf = [&](size_t i) { return input.marks && i < input.marks->size() ? (*input.marks)[i] : quint8(0); };
 
     // Screen positions, each leg taking the copy of the world nearest its previous point.
     std::vector<QPointF> screen(n);
@@ -120,7 +121,7 @@ RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
     for (int row : visible) {
         const quint8 flags = quint8((isSelected(size_t(row)) ? Selected : 0) | (row == input.current ? Current : 0));
         if (flags)
-            onTop.push_back({screen[size_t(row)], row, flags});
+            onTop.push_back({screen[size_t(row)], row, flags, marksOf(size_t(row))});
     }
     for (Marker &marker : onTop) {
         if (grid.claim(marker.position))
@@ -132,9 +133,9 @@ RouteFrame RouteFrame::build(const Input &input, const MapViewport &viewport)
     for (int row : visible) {
         if (isSelected(size_t(row)) || row == input.current)
             continue;
-        const Marker marker{screen[size_t(row)], row, 0};
+        const Marker marker{screen[size_t(row)], row, 0, marksOf(size_t(row))};
         if (grid.claim(marker.position))
-            labelled.push_back({marker.position, row, Labelled});
+            labelled.push_back({marker.position, row, Labelled, marker.marks});
         else
             frame.markers.push_back(marker);
     }
@@ -180,7 +181,8 @@ void RouteFrame::updateMoving(const Input &input, const MapViewport &viewport)
         if (row < 0 || row >= n || std::isnan(points[size_t(row)].x()))
             continue;
         const quint8 flags = quint8(Labelled | (isSelected(row) ? Selected : 0) | (row == input.current ? Current : 0));
-        movingMarkers.push_back({viewport.toScreen(at(row)), row, flags});
+        const quint8 marks = input.marks && size_t(row) < input.marks->size() ? (*input.marks)[size_t(row)] : quint8(0);
+        movingMarkers.push_back({viewport.toScreen(at(row)), row, flags, marks});
     }
     visibleWaypoints += int(movingMarkers.size()) - movingVisibleBefore;
 }

@@ -21,6 +21,7 @@ struct RouteFrame
         QPointF position;
         int row = 0;
         quint8 flags = 0;
+        quint8 marks = 0;  // the waypoint's action marks (RouteModel::ActionMark), drawn on labelled markers
     };
 
     std::vector<QPolygonF> legs;
@@ -34,6 +35,7 @@ struct RouteFrame
     {
         const std::vector<QPointF> *points = nullptr; // normalised, NaN when unknown
         const std::vector<bool> *selected = nullptr;  // may be shorter than points
+        const std::vector<quint8> *marks = nullptr;   // may be shorter than points
         int current = -1;
         std::vector<int> draggedRows;                 // drawn displaced by dragOffset
         QPointF dragOffset;                           // normalised

@@ -39,8 +39,42 @@ void RouteLayer::setModel(QAbstractItemModel *model)
 {
     if (model == m_points.model())
         return;
+    if (m_points.model())
+        disconnect(m_points.model(), &QAbstractItemModel::dataChanged, this, nullptr);
     m_points.setModel(model);
+    if (model) {
+        // Actions change without moving anything: ModelCoordinates does not report those.
+        connect(model, &QAbstractItemModel::dataChanged, this,
+                [this](const QModelIndex &topLeft, const QModelIndex &bottomRight, const QList<int> &roles) {
+                    const int id = m_points.roleId(m_marksRole);
+                    if (id >= 0 && (roles.isEmpty() || roles.contains(id))) {
+                        reloadMarks(topLeft.row(), bottomRight.row());
+                        m_frameStale = true;
+                        polish();
+                    }
+                });
+    }
     emit modelChanged();
+}
+
+void RouteLayer::setActionMarksRole(const QString &role)
+{
+    if (role.toUtf8() == m_marksRole)
+        return;
+    m_marksRole = role.toUtf8();
+    reloadMarks(0, m_points.count() - 1);
+    m_frameStale = true;
+    polish();
+    emit modelChanged();
+}
+
+void RouteLayer::reloadMarks(int first, int last)
+{
+    m_marks.resize(size_t(m_points.count()), 0);
+    const int id = m_points.roleId(m_marksRole);
+    QAbstractItemModel *model = m_points.model();
+    for (int row = std::max(first, 0); row <= last && row < m_points.count(); ++row)
+        m_marks[size_t(row)] = id >= 0 && model ? quint8(model->index(row, 0).data(id).toInt()) : quint8(0);
 }
 
 void RouteLayer::setLatitudeRole(const QString &role)
@@ -91,8 +125,12 @@ void RouteLayer::setColor(const QColor &color)
     m_overlay->update();
 }
 
-void RouteLayer::pointsChanged()
+void RouteLayer::pointsChanged(int first, int last)
 {
+    if (int(m_marks.size()) != m_points.count())
+        reloadMarks(0, m_points.count() - 1);  // rows came or went
+    else
+        reloadMarks(first, last);
     reloadSelection();
 }
 
@@ -122,6 +160,7 @@ void RouteLayer::updatePolish()
     RouteFrame::Input input;
     input.points = &m_points.points();
     input.selected = &m_selected;
+    input.marks = &m_marks;
     input.current = m_current;
     input.markerRadius = m_style.markerRadius;
     if (m_dragging) {

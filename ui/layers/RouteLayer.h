@@ -17,7 +17,8 @@ namespace sortie::ui {
 // toggles, Shift extends) and a drag moves it, or the whole selection when it is selected;
 // the layer only previews the move and reports it with waypointsMoved: whoever owns the model
 // applies it (as an undoable command). A click on a leg reports legClicked. Everything else
-// goes through to the map.
+// goes through to the map. With `actionMarksRole`, a role of flags (1: camera, 2: other actions),
+// labelled waypoints carry a badge saying they have actions.
 class RouteLayer : public MapLayer
 {
     Q_OBJECT
@@ -25,6 +26,7 @@ class RouteLayer : public MapLayer
     Q_PROPERTY(QAbstractItemModel *model READ model WRITE setModel NOTIFY modelChanged)
     Q_PROPERTY(QString latitudeRole READ latitudeRole WRITE setLatitudeRole NOTIFY modelChanged)
     Q_PROPERTY(QString longitudeRole READ longitudeRole WRITE setLongitudeRole NOTIFY modelChanged)
+    Q_PROPERTY(QString actionMarksRole READ actionMarksRole WRITE setActionMarksRole NOTIFY modelChanged) // "": none
     Q_PROPERTY(QItemSelectionModel *selectionModel READ selectionModel WRITE setSelectionModel NOTIFY selectionModelChanged)
     Q_PROPERTY(bool editable READ isEditable WRITE setEditable NOTIFY editableChanged)
     Q_PROPERTY(QColor color READ color WRITE setColor NOTIFY colorChanged)
@@ -42,6 +44,8 @@ public:
     void setLatitudeRole(const QString &role);
     QString longitudeRole() const { return QString::fromUtf8(m_points.longitudeRole()); }
     void setLongitudeRole(const QString &role);
+    QString actionMarksRole() const { return QString::fromUtf8(m_marksRole); }
+    void setActionMarksRole(const QString &role);
     QItemSelectionModel *selectionModel() const { return m_selection; }
     void setSelectionModel(QItemSelectionModel *selection);
     bool isEditable() const { return m_editable; }
@@ -86,7 +90,8 @@ protected:
     void mouseUngrabEvent() override;
 
 private:
-    void pointsChanged();
+    void pointsChanged(int first, int last);
+    void reloadMarks(int first, int last);
     void reloadSelection();
     void pressWaypoint(int row, Qt::KeyboardModifiers modifiers);
     void setDragging(bool dragging);
@@ -96,6 +101,8 @@ private:
     ModelCoordinates m_points;
     QPointer<QItemSelectionModel> m_selection;
     std::vector<bool> m_selected;
+    QByteArray m_marksRole;
+    std::vector<quint8> m_marks;  // per row, RouteModel::ActionMark flags
     int m_current = -1;
     bool m_editable = false;
     RoutePainter::Style m_style;

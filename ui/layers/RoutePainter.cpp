@@ -72,6 +72,32 @@ const QImage &RoutePainter::sprite(quint8 flags, int digits)
     return it.value();
 }
 
+const QImage &RoutePainter::markSprite(quint8 marks)
+{
+    auto it = m_markSprites.find(marks);
+    if (it != m_markSprites.end())
+        return it.value();
+    const double d = std::max(8.0, m_style.markerRadius);
+    QImage image((QSizeF(d + 2, d + 2) * m_dpr).toSize(), QImage::Format_ARGB32_Premultiplied);
+    image.setDevicePixelRatio(m_dpr);
+    image.fill(Qt::transparent);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing);
+    const QRectF body(1, 1, d, d);
+    const bool camera = marks & 1, other = marks & 2;
+    p.setPen(Qt::NoPen);
+    p.setBrush(camera ? m_style.cameraMark : m_style.actionMark);
+    p.drawEllipse(body);
+    if (camera && other) {  // the right half says "and more"
+        p.setBrush(m_style.actionMark);
+        p.drawPie(body, -90 * 16, 180 * 16);
+    }
+    p.setPen(QPen(m_style.halo, 1.2));
+    p.setBrush(Qt::NoBrush);
+    p.drawEllipse(body);
+    return m_markSprites.insert(marks, image).value();
+}
+
 void RoutePainter::setUp(QPainter &painter, const Style &style)
 {
     const qreal dpr = painter.device() ? painter.device()->devicePixelRatioF() : 1.0;
@@ -84,6 +110,7 @@ void RoutePainter::setUp(QPainter &painter, const Style &style)
     m_font.setBold(true);
     m_numbers.clear();
     m_sprites.clear();
+    m_markSprites.clear();
 }
 
 void RoutePainter::paintLegs(QPainter &painter, const std::vector<QPolygonF> &legs)
@@ -113,6 +140,11 @@ void RoutePainter::paintMarkers(QPainter &painter, const std::vector<RouteFrame:
         if (marker.flags & RouteFrame::Labelled) {
             const QStaticText &text = number(value);
             painter.drawStaticText(marker.position - QPointF(text.size().width() / 2, text.size().height() / 2), text);
+            if (marker.marks) {
+                const QImage &mark = markSprite(marker.marks);
+                const double r = m_style.markerRadius;
+                painter.drawImage(QPointF(std::round(topLeft.x() + size.width() - r * 0.6), std::round(marker.position.y() - r * 1.5)), mark);
+            }
         }
     }
 }

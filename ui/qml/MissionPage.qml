@@ -123,6 +123,7 @@ Page {
                 anchors.fill: parent
                 map: pane.map
                 model: page.routeModel
+                actionMarksRole: "actionMarks"
                 selectionModel: page.selectionModel
                 editable: page.editable && page.tool === ""
                 onWaypointsMoved: (rows, coordinates) => page.doc.editor.moveWaypoints(rows, coordinates)

@@ -63,7 +63,7 @@ QHash<int, QByteArray> RouteModel::roleNames() const
         {KindRole, "kind"}, {SequenceRole, "sequence"}, {LatitudeRole, "latitude"}, {LongitudeRole, "longitude"},
         {AltitudeRole, "altitude"}, {AltitudeTypeRole, "altitudeType"}, {SpeedRole, "speed"}, {TurnTypeRole, "turnType"},
         {AcceptanceRadiusRole, "acceptanceRadius"}, {ActionCountRole, "actionCount"}, {ActionsSummaryRole, "actionsSummary"},
-        {ActionsRole, "actions"}, {PolygonRole, "polygon"}, {ScanParametersRole, "scanParameters"}, {ScanPlanRole, "scanPlan"},
+        {ActionsRole, "actions"}, {ActionMarksRole, "actionMarks"}, {PolygonRole, "polygon"}, {ScanParametersRole, "scanParameters"}, {ScanPlanRole, "scanPlan"},
         {LabelRole, "label"},
         {Qt::DisplayRole, "display"},
     };
@@ -94,6 +94,15 @@ QVariant RouteModel::data(const QModelIndex &index, int role) const
     case AcceptanceRadiusRole: return w ? w->acceptanceRadius : QVariant();
     case ActionCountRole: return w ? int(w->actions.size()) : 0;
     case ActionsSummaryRole: return w ? describeActions(w->actions) : QString();
+    case ActionMarksRole: {
+        int marks = 0;
+        for (const WaypointAction &a : w ? w->actions : std::vector<WaypointAction>{}) {
+            const bool camera = std::holds_alternative<CameraTriggerAction>(a) || std::holds_alternative<CameraSeriesByTimeAction>(a)
+                                || std::holds_alternative<CameraSeriesByDistanceAction>(a) || std::holds_alternative<PanoramaAction>(a);
+            marks |= camera ? CameraMark : OtherActionMark;
+        }
+        return marks;
+    }
     case ActionsRole: {
         QVariantList list;
         if (w)

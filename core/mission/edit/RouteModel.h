@@ -37,12 +37,14 @@ public:
         ActionCountRole,
         ActionsSummaryRole,           // "Wait 5 s · Photo every 20 m"
         ActionsRole,                  // list of maps, see ActionVariants.h
+        ActionMarksRole,              // what a map marks: ActionMark flags (camera, other), 0 for none
         PolygonRole,                  // an area's corners, a corridor's line, a circle's centre: list of {latitude, longitude}
         ScanParametersRole,           // a segment's parameters by wire name (SegmentParameters.h); none for a waypoint
         ScanPlanRole,                 // an area scan's or photogrammetry's plan: {ok, message, transects, photoCount, path, ...}
         LabelRole,                    // "Waypoint 3", "Circle 5"
     };
     Q_ENUM(Roles)
+    enum ActionMark { CameraMark = 1, OtherActionMark = 2 };
 
     explicit RouteModel(QObject *parent = nullptr);
 
