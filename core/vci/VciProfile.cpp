@@ -76,6 +76,8 @@ const std::vector<ActionRule> &actionRules()
         {"panorama", {{"angle", Kind::Angle, true}, {"step", Kind::Angle, true}, {"stepDelay", Kind::NonNegative, false},
                       {"direction", Kind::Name, false, {"cw", "ccw"}}, {"rate", Kind::NonNegative, false},
                       {"mode", Kind::Name, false, {"photo", "video"}}}},
+        {"gimbal", {{"tilt", Kind::Angle, false}, {"roll", Kind::Angle, false}, {"yaw", Kind::Angle, false},
+                    {"zoom", Kind::NonNegative, false}}},
         {"land", {}},
     };
     return rules;

@@ -52,8 +52,8 @@ struct Action
 };
 
 // The action types of the profile, in the order the document lists them.
-inline constexpr std::array<std::string_view, 8> kActionTypes = {"wait", "heading", "poi", "camera", "camera_by_time",
-                                                                  "camera_by_distance", "panorama", "land"};
+inline constexpr std::array<std::string_view, 9> kActionTypes = {"wait", "heading", "poi", "camera", "camera_by_time",
+                                                                  "camera_by_distance", "panorama", "gimbal", "land"};
 
 struct Waypoint
 {

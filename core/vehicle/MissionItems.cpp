@@ -84,6 +84,15 @@ Result<MissionAction> vciAction(const WaypointAction &action)
                                   {QStringLiteral("rate"), a.rotationSpeedDegPerSecond * kRad},
                                   {QStringLiteral("mode"), a.mode == PanoramaMode::Photo ? QStringLiteral("photo") : QStringLiteral("video")}}};
         }
+        Result<MissionAction> operator()(const CameraControlAction &a) const
+        {
+            QVariantMap fields;  // a value not set is left out: the vehicle keeps it
+            if (a.tiltDeg) fields.insert(QStringLiteral("tilt"), *a.tiltDeg * kRad);
+            if (a.rollDeg) fields.insert(QStringLiteral("roll"), *a.rollDeg * kRad);
+            if (a.yawDeg) fields.insert(QStringLiteral("yaw"), *a.yawDeg * kRad);
+            if (a.zoomLevel) fields.insert(QStringLiteral("zoom"), *a.zoomLevel);
+            return MissionAction{QStringLiteral("gimbal"), fields};
+        }
         Result<MissionAction> operator()(const OpaqueAction &a) const
         {
             return missionError(QStringLiteral("the action \"%1\" came from a UgCS server and has no VCI form").arg(a.description));

@@ -24,7 +24,7 @@ struct VehicleIdentity
 
 // Something the vehicle does at a waypoint, in the words of Sortie's VCI profile
 // (docs/vci-profile.md, "Mission actions"): `type` is "wait", "heading", "poi", "camera",
-// "camera_by_time", "camera_by_distance" or "panorama"; `parameters` hold its numbers (SI units,
+// "camera_by_time", "camera_by_distance", "panorama", "gimbal" or "land"; `parameters` hold its numbers (SI units,
 // radians) and names.
 struct MissionAction
 {

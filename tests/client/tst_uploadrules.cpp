@@ -159,6 +159,14 @@ private slots:
         QCOMPARE((*items)[1].actions[2].type, QStringLiteral("camera_by_distance"));
         QCOMPARE((*items)[1].actions[3].parameters.value(QStringLiteral("direction")).toString(), QStringLiteral("cw"));
         QCOMPARE((*items)[2].actions, (std::vector<MissionAction>{{QStringLiteral("land"), {}}}));
+        // A gimbal action sends what is set, in radians, and leaves the rest out.
+        mission::Waypoint gimbal = a;
+        mission::CameraControlAction tiltOnly;
+        tiltOnly.tiltDeg = 90;
+        gimbal.actions = {tiltOnly};
+        items = vehicle::missionItemsFor(route({gimbal}));
+        QVERIFY(items);
+        QCOMPARE((*items)[0].actions.front(), (MissionAction{QStringLiteral("gimbal"), {{QStringLiteral("tilt"), 90 * kRad}}}));
 
         // What has no VCI form is refused, naming the waypoint.
         mission::Waypoint amsl = b;
@@ -236,6 +244,8 @@ private slots:
         QCOMPARE(refused(with(R"({"type":"wait"})").c_str()), std::string("waypoints[0].actions[0].seconds: missing"));
         QCOMPARE(refused(with(R"({"type":"wait","seconds":-1})").c_str()), std::string("waypoints[0].actions[0].seconds: must be a number, 0 or more"));
         QCOMPARE(refused(with(R"({"type":"camera","state":"burst"})").c_str()), std::string("waypoints[0].actions[0].state: not one of the names the profile lists"));
+        QCOMPARE(refused(with(R"({"type":"gimbal","tilt":1.57})").c_str()), std::string());
+        QCOMPARE(refused(with(R"({"type":"gimbal","zoom":-1})").c_str()), std::string("waypoints[0].actions[0].zoom: must be a number, 0 or more"));
         QCOMPARE(refused(with(R"(5)").c_str()), std::string("waypoints[0].actions[0]: must be an object"));
         QCOMPARE(refused(R"({"waypoints":[{"latitude":0.9,"longitude":0.4,"altitude":10,"acceptanceRadius":-2}]})"),
                  std::string("waypoints[0].acceptanceRadius: must be a number of metres, 0 or more"));

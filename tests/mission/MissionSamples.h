@@ -63,7 +63,8 @@ inline Route mavlinkRoute()
                  CameraSeriesByDistanceAction{20, 0, 0}, WaitAction{3, false}};
     Waypoint c = waypoint(56.9541, 24.1071, 45, 7.5);
     c.actions = {CameraSeriesByTimeAction{2, 10, 0}, CameraTriggerAction{TriggerState::StartRecording},
-                 CameraTriggerAction{TriggerState::StopRecording}, CameraSeriesByDistanceAction{0, 0, 0}};
+                 CameraTriggerAction{TriggerState::StopRecording}, CameraSeriesByDistanceAction{0, 0, 0},
+                 CameraControlAction{60, 0, 15, std::nullopt}};
     Waypoint land = waypoint(56.955, 24.108, 0, 4);
     land.role = WaypointRole::Land;
     r.segments = {takeoff, a, b, c, land};

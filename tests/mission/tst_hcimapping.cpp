@@ -5,6 +5,7 @@
 #include "AlgorithmCatalog.h"
 #include "AreaScanPlanner.h"
 #include "Domain.pb.h"
+#include "HciActionMapper.h"
 #include "HciRouteMapper.h"
 #include "HciText.h"
 #include "Messages.pb.h"
@@ -218,6 +219,38 @@ private slots:
         QCOMPARE(sent.actiondefinitions(1).SerializeAsString(), s->actiondefinitions(1).SerializeAsString());
         QCOMPARE(sent.actiondefinitions(2).waitdefinition().interval(), 2.0);
         QCOMPARE(sent.figure().points(0).aglaltitude(), 95.0);
+    }
+
+    void gimbalKeepsWhatIsNotSet()
+    {
+        // A camera control that sets only the tilt (radians; 90° looks down, per the facts file).
+        pb::ActionDefinition received;
+        received.set_id(5);
+        received.mutable_cameracontroldefinition()->set_tilt(std::numbers::pi / 2);
+        const WaypointAction read = actionFromHci(received);
+        const auto &gimbal = std::get<CameraControlAction>(read);
+        QCOMPARE(*gimbal.tiltDeg, 90.0);
+        QVERIFY(!gimbal.rollDeg && !gimbal.yawDeg && !gimbal.zoomLevel);
+        QCOMPARE(describeAction(read), QStringLiteral("Gimbal tilt 90°"));
+        // Untouched: the same bytes. Yaw set: added, tilt kept, roll still absent. Tilt unset: gone.
+        pb::ActionDefinition sent = received;
+        actionToHci(read, sent);
+        QCOMPARE(sent.SerializeAsString(), received.SerializeAsString());
+        CameraControlAction edited = gimbal;
+        edited.yawDeg = 30;
+        actionToHci(edited, sent);
+        QVERIFY(std::abs(sent.cameracontroldefinition().yaw() - std::numbers::pi / 6) < 1e-12);
+        QCOMPARE(sent.cameracontroldefinition().tilt(), std::numbers::pi / 2);
+        QVERIFY(!sent.cameracontroldefinition().has_roll() && !sent.cameracontroldefinition().has_zoomlevel());
+        QCOMPARE(sent.id(), 5);
+        edited.tiltDeg.reset();
+        edited.zoomLevel = 3;
+        actionToHci(edited, sent);
+        QVERIFY(!sent.cameracontroldefinition().has_tilt());
+        QCOMPARE(sent.cameracontroldefinition().zoomlevel(), 3);
+        const auto back = std::get<CameraControlAction>(actionFromHci(sent));
+        QVERIFY(!back.tiltDeg && !back.rollDeg && back.zoomLevel == 3);
+        QVERIFY(std::abs(*back.yawDeg - 30) < 1e-9);
     }
 
     void newRouteEncodesLikeTheSdkSample()

@@ -67,7 +67,7 @@ private slots:
         QTest::newRow("Mission Planner, many commands") << "MissionPlanner.waypoints.txt" << 11 << 1 << 1 << false << 4;
         QTest::newRow("100 waypoints") << "100Waypoints.waypoints.txt" << 98 << 1 << 0 << false << 1;
         QTest::newRow("800 waypoints") << "800Waypoints.waypoints.txt" << 825 << 1 << 0 << true << 1;
-        QTest::newRow("plan") << "SectionTest.plan" << 4 << 1 << 0 << false << 2;
+        QTest::newRow("plan") << "SectionTest.plan" << 4 << 1 << 0 << false << 1;
     }
     void samplesImport()
     {
@@ -123,7 +123,9 @@ private slots:
         QCOMPARE(w.position.latitude, 47.63369112);
         QCOMPARE(w.altitude, 20.0);
         QCOMPARE(w.altitudeType, AltitudeType::Agl);
-        QVERIFY(r->notices.join(' ').contains(QStringLiteral("/mission/items/3: command 205 is not supported")));
+        // Item 3 is QGroundControl's gimbal control (DO_MOUNT_CONTROL, all angles 0) after waypoint 3: the camera ahead.
+        QCOMPARE(std::get<Waypoint>(r->route.segments[2]).actions, (std::vector<WaypointAction>{CameraControlAction{0, 0, 0, std::nullopt}}));
+        QVERIFY(!r->notices.join(' ').contains(QStringLiteral("205")));
     }
 
     void wplRoundTripIsIdentical()
@@ -136,6 +138,26 @@ private slots:
         QVERIFY(wplView(back->route) == wplView(r));
         QCOMPARE(writeWpl(back->route), text);
         QVERIFY(text.startsWith("QGC WPL 110\n0\t1\t0\t16\t0\t0\t0\t0\t56.9512345678901\t24.1023456789012\t12.5\t1\n"));
+    }
+
+    void gimbalIsAMountControl()
+    {
+        // Tilt only: MAVLink has no "unchanged", so roll and yaw go out as 0 and the notice says so.
+        Route r = mavlinkRoute();
+        CameraControlAction down;
+        down.tiltDeg = 90;
+        down.zoomLevel = 2;
+        std::get<Waypoint>(r.segments[1]).actions = {down};
+        QStringList notices;
+        const QByteArray text = writeWpl(r, &notices);
+        QVERIFY2(notices.join('\n').contains(QStringLiteral("Waypoint 2: the gimbal's roll, yaw was not set and is written as 0°")),
+                 qPrintable(notices.join('\n')));
+        QVERIFY(notices.join('\n').contains(QStringLiteral("Waypoint 2: a zoom level has no MAVLink equivalent")));
+        QVERIFY(text.contains("\t205\t-90\t0\t0\t0\t0\t0\t2\t1\n"));
+        const Result<ImportedRoute> back = readWpl(text);
+        QVERIFY(back.ok());
+        QCOMPARE(std::get<Waypoint>(back->route.segments[1]).actions,
+                 (std::vector<WaypointAction>{CameraControlAction{90, 0, 0, std::nullopt}}));
     }
 
     void planRoundTripIsIdentical()

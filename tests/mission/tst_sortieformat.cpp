@@ -34,6 +34,10 @@ Mission fullMission()
     b.actions.push_back(WaitAction{0, true});
     b.actions.push_back(HeadingAction{10, true});
     b.actions.push_back(CameraTriggerAction{TriggerState::ToggleRecording});
+    CameraControlAction gimbal;  // roll and zoom not set: they stay unset
+    gimbal.tiltDeg = 90;
+    gimbal.yawDeg = -12.5;
+    b.actions.push_back(gimbal);
     auto def = std::make_shared<pb::ActionDefinition>();
     def->mutable_setservodefinition()->set_servoid(7);
     def->mutable_setservodefinition()->set_pwm(1500);

@@ -120,6 +120,21 @@ private slots:
         QVERIFY(f.at(0).empty() && f.at(1).empty());
     }
 
+    void aGimbalValueMayBeLeftUnset()
+    {
+        Fixture f;
+        f.actions.setRows({0});
+        QVERIFY(f.actions.add(QStringLiteral("cameraControl")));
+        QVERIFY(f.field(0, QStringLiteral("tiltDeg")).value(QStringLiteral("optional")).toBool());
+        QVERIFY(!f.field(0, QStringLiteral("tiltDeg")).value(QStringLiteral("value")).isValid());  // shown empty, not 0
+        QVERIFY(f.actions.setField(0, QStringLiteral("tiltDeg"), QStringLiteral("90")));
+        QCOMPARE(std::get<CameraControlAction>(f.at(0)[0]).tiltDeg, std::optional<double>(90));
+        QVERIFY(!std::get<CameraControlAction>(f.at(0)[0]).yawDeg);
+        QVERIFY(!f.actions.setField(0, QStringLiteral("tiltDeg"), QStringLiteral("200")));
+        QVERIFY(f.actions.setField(0, QStringLiteral("tiltDeg"), QString()));
+        QVERIFY(!std::get<CameraControlAction>(f.at(0)[0]).tiltDeg);
+    }
+
     void choicesAndTogglesAndWhatIsNotAWaypoint()
     {
         Fixture f;

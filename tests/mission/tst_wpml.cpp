@@ -42,6 +42,7 @@ Route sampleRoute()
     Waypoint b = wp(56.97800, 24.07600, 50, 6, TurnType::Straight);
     b.actions.push_back(HeadingAction{90.0, false});
     b.actions.push_back(CameraTriggerAction{TriggerState::StartRecording});
+    b.actions.push_back(CameraControlAction{45, std::nullopt, std::nullopt, std::nullopt});
     Waypoint c = wp(56.97700, 24.07950, 55, 7, TurnType::Spline);
     c.actions.push_back(CameraTriggerAction{TriggerState::StopRecording});
     c.actions.push_back(CameraSeriesByDistanceAction{12.5, 0, 0.0});
@@ -127,7 +128,7 @@ private slots:
                  (QStringList{"toPointAndStopWithDiscontinuityCurvature", "toPointAndPassWithContinuityCurvature",
                               "toPointAndPassWithContinuityCurvature", "coordinateTurn", "toPointAndStopWithDiscontinuityCurvature"}));
         QCOMPARE(texts(w, QStringLiteral("actionActuatorFunc")),
-                 (QStringList{"takePhoto", "hover", "rotateYaw", "startRecord", "stopRecord", "takePhoto"}));
+                 (QStringList{"takePhoto", "hover", "rotateYaw", "startRecord", "gimbalRotate", "stopRecord", "takePhoto"}));
         QCOMPARE(texts(w, QStringLiteral("actionTriggerType")),
                  (QStringList{"reachPoint", "reachPoint", "reachPoint", "multipleDistance"}));
         QCOMPARE(texts(w, QStringLiteral("actionTriggerParam")), QStringList{"12.5"});
@@ -249,6 +250,9 @@ private slots:
         Route toggle = sampleRoute();
         std::get<Waypoint>(toggle.segments[1]).actions = {CameraTriggerAction{TriggerState::ToggleRecording}};
         QTest::newRow("toggle recording") << toggle << "m350" << "row 2: \"toggle recording\" has no WPML action";
+        Route yaw = sampleRoute();
+        std::get<Waypoint>(yaw.segments[1]).actions = {CameraControlAction{45, std::nullopt, 10, std::nullopt}};
+        QTest::newRow("gimbal yaw") << yaw << "m350" << "row 2: only the gimbal's tilt has a WPML action here";
         Route amsl = sampleRoute();
         std::get<Waypoint>(amsl.segments[0]).altitudeType = AltitudeType::Amsl;
         QTest::newRow("AMSL without a take-off altitude") << amsl << "m350" << "row 1 is AMSL";

@@ -52,6 +52,14 @@ QVariantMap actionToVariant(const WaypointAction &action)
                                {"rotationSpeedDegPerSecond", a.rotationSpeedDegPerSecond},
                                {"video", a.mode == PanoramaMode::Video}};
         },
+        [](const CameraControlAction &a) {
+            QVariantMap m;  // a value not set has no key
+            if (a.tiltDeg) m.insert(QStringLiteral("tiltDeg"), *a.tiltDeg);
+            if (a.rollDeg) m.insert(QStringLiteral("rollDeg"), *a.rollDeg);
+            if (a.yawDeg) m.insert(QStringLiteral("yawDeg"), *a.yawDeg);
+            if (a.zoomLevel) m.insert(QStringLiteral("zoomLevel"), *a.zoomLevel);
+            return m;
+        },
         [](const OpaqueAction &a) { return QVariantMap{{"description", a.description}}; },
     }, action);
     m.insert(QStringLiteral("kind"), actionKindName(action));
@@ -99,6 +107,21 @@ std::optional<WaypointAction> actionFromVariant(const QVariantMap &m)
         a.mode = m.value(QStringLiteral("video")).toBool() ? PanoramaMode::Video : PanoramaMode::Photo;
         return a;
     }
+    if (kind == QLatin1String("cameraControl")) {
+        const auto optional = [&m](const char *key) -> std::optional<double> {
+            const QVariant v = m.value(QLatin1String(key));
+            bool ok = false;
+            const double d = v.toDouble(&ok);
+            return ok && !v.toString().isEmpty() ? std::optional<double>(d) : std::nullopt;
+        };
+        CameraControlAction a;
+        a.tiltDeg = optional("tiltDeg");
+        a.rollDeg = optional("rollDeg");
+        a.yawDeg = optional("yawDeg");
+        if (const auto zoom = optional("zoomLevel"))
+            a.zoomLevel = int(*zoom);
+        return a;
+    }
     return std::nullopt;
 }
 
@@ -107,18 +130,24 @@ ActionField number(const char *name, const char *label, const char *unit, std::o
                    std::optional<double> maximum = std::nullopt, ActionField::Type type = ActionField::Type::Number)
 {
     return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), type,
-            QString::fromUtf8(unit), minimum, maximum, {}};
+            QString::fromUtf8(unit), minimum, maximum, {}, false};
+}
+
+ActionField optional(ActionField f)
+{
+    f.optional = true;
+    return f;
 }
 
 ActionField toggle(const char *name, const char *label)
 {
-    return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), ActionField::Type::Toggle, {}, {}, {}, {}};
+    return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), ActionField::Type::Toggle, {}, {}, {}, {}, false};
 }
 
 ActionField choice(const char *name, const char *label, std::vector<std::pair<QString, QString>> choices)
 {
     return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), ActionField::Type::Choice, {}, {}, {},
-            std::move(choices)};
+            std::move(choices), false};
 }
 
 ActionKindDescription kind(const char *name, const char *label, std::vector<ActionField> fields)
@@ -139,6 +168,8 @@ QString ActionField::check(const QVariant &value) const
         return QStringLiteral("%1: \"%2\" is not one of its choices").arg(label, value.toString());
     case Type::Number:
     case Type::Integer: {
+        if (optional && value.toString().trimmed().isEmpty())
+            return {};  // not set
         bool ok = false;
         const double v = value.toString().trimmed().isEmpty() ? std::nan("") : value.toDouble(&ok);
         if (!ok || !std::isfinite(v))
@@ -172,6 +203,10 @@ const std::vector<ActionKindDescription> &editableActionKinds()
         kind("poi", "Point of interest", {number("latitude", "Latitude", "°", -90, 90), number("longitude", "Longitude", "°", -180, 180),
                                           number("altitude", "Altitude", "m", -500, 10000),
                                           choice("altitudeType", "Altitude type", {{"AGL", "Above ground (AGL)"}, {"AMSL", "Above sea level (AMSL)"}})}),
+        kind("cameraControl", "Gimbal and zoom", {optional(number("tiltDeg", "Tilt (90: down)", "°", -90, 180)),
+                                                  optional(number("rollDeg", "Roll", "°", -90, 90)),
+                                                  optional(number("yawDeg", "Yaw", "°", -360, 360)),
+                                                  optional(number("zoomLevel", "Zoom level", "", 0, 1000, T::Integer))}),
         kind("panorama", "Panorama", {number("angleDeg", "Angle", "°", 1, 360), number("stepAngleDeg", "Step", "°", 0, 360),
                                       number("stepDelaySeconds", "Pause per step", "s", 0, 600),
                                       number("rotationSpeedDegPerSecond", "Rotation speed", "°/s", 0.1, 360),

@@ -27,6 +27,7 @@ struct ActionField
     QString unit;                                    // "s", "m", "°", "°/s", ""
     std::optional<double> minimum, maximum;
     std::vector<std::pair<QString, QString>> choices; // value, label
+    bool optional = false;                            // may be left unset (empty)
     // Why `value` cannot be this field's ("" when it can).
     QString check(const QVariant &value) const;
 };

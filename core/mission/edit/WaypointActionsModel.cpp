@@ -145,7 +145,8 @@ QVariant WaypointActionsModel::data(const QModelIndex &index, int role) const
                 choices << QVariantMap{{QStringLiteral("value"), value}, {QStringLiteral("text"), label}};
             fields << QVariantMap{{QStringLiteral("action"), index.row()}, {QStringLiteral("name"), f.name}, {QStringLiteral("label"), f.label},
                                   {QStringLiteral("type"), typeName(f.type)}, {QStringLiteral("unit"), f.unit},
-                                  {QStringLiteral("value"), values.value(f.name)}, {QStringLiteral("choices"), choices}};
+                                  {QStringLiteral("value"), values.value(f.name)}, {QStringLiteral("choices"), choices},
+                                  {QStringLiteral("optional"), f.optional}};
         }
         return fields;
     }
@@ -197,8 +198,11 @@ bool WaypointActionsModel::setField(int action, const QString &name, const QVari
     }
     setProblem({});
     QVariantMap changed = actionToVariant(current);
-    changed.insert(name, field->type == ActionField::Type::Number || field->type == ActionField::Type::Integer
-                             ? QVariant(value.toDouble()) : value);
+    const bool numeric = field->type == ActionField::Type::Number || field->type == ActionField::Type::Integer;
+    if (numeric && field->optional && value.toString().trimmed().isEmpty())
+        changed.remove(name);  // unset
+    else
+        changed.insert(name, numeric ? QVariant(value.toDouble()) : value);
     return m_editor->setAction(rows, action, changed);
 }
 

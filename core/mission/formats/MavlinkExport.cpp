@@ -127,6 +127,20 @@ private:
                 m_out.items.push_back(command(mav::DoSetCamTriggDist, x.intervalMeters, 0, 0, 0));
             },
             [&](const PanoramaAction &) { skipped(row, QStringLiteral("a panorama")); },
+            [&](const CameraControlAction &x) {
+                // DO_MOUNT_CONTROL has no "leave as it is": an angle not set is written as 0, and said so.
+                QStringList unset;
+                if (!x.tiltDeg) unset << QStringLiteral("tilt");
+                if (!x.rollDeg) unset << QStringLiteral("roll");
+                if (!x.yawDeg) unset << QStringLiteral("yaw");
+                if (!unset.isEmpty())
+                    m_out.notices << QStringLiteral("Waypoint %1: the gimbal's %2 was not set and is written as 0° (MAVLink has no \"unchanged\").")
+                                         .arg(row + 1).arg(unset.join(QStringLiteral(", ")));
+                if (x.zoomLevel) skipped(row, QStringLiteral("a zoom level"));
+                MavlinkItem i = command(mav::DoMountControl, -x.tiltDeg.value_or(0.0), x.rollDeg.value_or(0.0), x.yawDeg.value_or(0.0), 0);
+                i.altitude = mav::MountModeMavlinkTargeting;  // param 7: the mount mode
+                m_out.items.push_back(i);
+            },
             [&](const OpaqueAction &x) { skipped(row, x.description); },
         }, a);
     }

@@ -28,7 +28,9 @@ QString mavCommandName(int command)
     case mav::DoSetRoiNone: return QStringLiteral("DO_SET_ROI_NONE");
     case mav::DoSetRoi: return QStringLiteral("DO_SET_ROI");
     case mav::DoDigicamControl: return QStringLiteral("DO_DIGICAM_CONTROL");
+    case mav::DoMountControl: return QStringLiteral("DO_MOUNT_CONTROL");
     case mav::DoSetCamTriggDist: return QStringLiteral("DO_SET_CAM_TRIGG_DIST");
+    case mav::DoGimbalManagerPitchYaw: return QStringLiteral("DO_GIMBAL_MANAGER_PITCHYAW");
     case mav::ImageStartCapture: return QStringLiteral("IMAGE_START_CAPTURE");
     case mav::ImageStopCapture: return QStringLiteral("IMAGE_STOP_CAPTURE");
     case mav::VideoStartCapture: return QStringLiteral("VIDEO_START_CAPTURE");
@@ -137,6 +139,22 @@ private:
         case mav::DoSetCamTriggDist:
             attach(item, CameraSeriesByDistanceAction{item.param[0], 0, 0});
             return std::nullopt;
+        case mav::DoMountControl: {
+            // Pitch, roll, yaw in degrees, pitch -90 looking down; UgCS's tilt is 90 there.
+            CameraControlAction a;
+            if (!std::isnan(item.param[0])) a.tiltDeg = -item.param[0];
+            if (!std::isnan(item.param[1])) a.rollDeg = item.param[1];
+            if (!std::isnan(item.param[2])) a.yawDeg = item.param[2];
+            attach(item, a);
+            return std::nullopt;
+        }
+        case mav::DoGimbalManagerPitchYaw: {
+            CameraControlAction a;  // NaN: leave as it is
+            if (!std::isnan(item.param[0])) a.tiltDeg = -item.param[0];
+            if (!std::isnan(item.param[1])) a.yawDeg = item.param[1];
+            attach(item, a);
+            return std::nullopt;
+        }
         case mav::ImageStartCapture:
             if (item.param[2] == 1 && item.param[1] == 0)
                 attach(item, CameraTriggerAction{TriggerState::SingleShot});

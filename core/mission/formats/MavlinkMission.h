@@ -23,9 +23,10 @@ enum Command {
     NavLand = 21, NavTakeoff = 22, NavLoiterToAltitude = 31, NavSplineWaypoint = 82, NavVtolTakeoff = 84,
     NavVtolLand = 85, NavDelay = 93, ConditionDelay = 112, ConditionYaw = 115, DoJump = 177, DoChangeSpeed = 178,
     DoLandStart = 189, DoSetRoiLocation = 195, DoSetRoiNone = 197, DoSetRoi = 201, DoDigicamControl = 203,
-    DoSetCamTriggDist = 206, ImageStartCapture = 2000, ImageStopCapture = 2001, VideoStartCapture = 2500,
+    DoMountControl = 205, DoSetCamTriggDist = 206, DoGimbalManagerPitchYaw = 1000, ImageStartCapture = 2000, ImageStopCapture = 2001, VideoStartCapture = 2500,
     VideoStopCapture = 2501,
 };
+enum MountMode { MountModeMavlinkTargeting = 2 };
 enum Frame { Global = 0, Mission = 2, GlobalRelativeAlt = 3, GlobalInt = 5, GlobalRelativeAltInt = 6,
              GlobalTerrainAlt = 10, GlobalTerrainAltInt = 11 };
 }

@@ -71,6 +71,14 @@ Json actionJson(const WaypointAction &action)
                         {"clockwise", a.direction == RotationDirection::Clockwise}, {"rotationSpeedDegPerSecond", a.rotationSpeedDegPerSecond},
                         {"video", a.mode == PanoramaMode::Video}};
         },
+        [](const CameraControlAction &a) {
+            Json j{{"type", "cameraControl"}};  // a value not set has no key
+            if (a.tiltDeg) j["tiltDeg"] = *a.tiltDeg;
+            if (a.rollDeg) j["rollDeg"] = *a.rollDeg;
+            if (a.yawDeg) j["yawDeg"] = *a.yawDeg;
+            if (a.zoomLevel) j["zoomLevel"] = *a.zoomLevel;
+            return j;
+        },
         [](const OpaqueAction &a) {
             Json j{{"type", "opaque"}, {"description", str(a.description)}};
             putOrigin(j, a.definition);
@@ -106,6 +114,14 @@ WaypointAction readAction(const JsonCursor &c)
         a.direction = c.booleanOr("clockwise", true) ? RotationDirection::Clockwise : RotationDirection::CounterClockwise;
         a.rotationSpeedDegPerSecond = c.numberOr("rotationSpeedDegPerSecond", a.rotationSpeedDegPerSecond);
         a.mode = c.booleanOr("video", false) ? PanoramaMode::Video : PanoramaMode::Photo;
+        return a;
+    }
+    if (type == QLatin1String("cameraControl")) {
+        CameraControlAction a;
+        if (const auto v = c.find("tiltDeg")) a.tiltDeg = v->number();
+        if (const auto v = c.find("rollDeg")) a.rollDeg = v->number();
+        if (const auto v = c.find("yawDeg")) a.yawDeg = v->number();
+        if (const auto v = c.find("zoomLevel")) a.zoomLevel = v->integer();
         return a;
     }
     if (type == QLatin1String("opaque")) {

@@ -404,9 +404,18 @@ Result<Route> routeOf(const ReadFolder &wayline, const ReadFolder *templateFolde
                         return MissionError{QStringLiteral("%1: rotateYaw without an aircraftHeading").arg(where), file, byIndex[i]->line, 0, {}};
                     w->actions.push_back(HeadingAction{*h < 0.0 ? *h + 360.0 : *h, false});
                 } else if (a.func == QLatin1String("gimbalRotate")) {
-                    const auto pitch = paramNumber(a, "gimbalPitchRotateAngle");
-                    *notices << QStringLiteral("%1: gimbal pitch %2° not kept: Sortie routes have no gimbal action")
-                                    .arg(where, pitch ? QString::number(*pitch) : QStringLiteral("?"));
+                    // Each angle counts where its enable flag is 1; WPML's pitch -90° is UgCS's tilt 90°.
+                    const auto enabled = [&a](const char *flag) { return paramNumber(a, flag).value_or(0) == 1; };
+                    CameraControlAction gimbal;
+                    if (enabled("gimbalPitchRotateEnable")) {
+                        if (const auto pitch = paramNumber(a, "gimbalPitchRotateAngle")) gimbal.tiltDeg = -*pitch;
+                    }
+                    if (enabled("gimbalRollRotateEnable")) gimbal.rollDeg = paramNumber(a, "gimbalRollRotateAngle");
+                    if (enabled("gimbalYawRotateEnable")) gimbal.yawDeg = paramNumber(a, "gimbalYawRotateAngle");
+                    if (gimbal == CameraControlAction{})
+                        *notices << QStringLiteral("%1: a gimbalRotate that turns nothing is not kept").arg(where);
+                    else
+                        w->actions.push_back(gimbal);
                 } else {
                     *notices << QStringLiteral("%1: the WPML action \"%2\" has no Sortie equivalent and is not kept").arg(where, a.func);
                 }

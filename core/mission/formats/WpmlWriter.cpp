@@ -381,6 +381,12 @@ Result<Plan> planOf(const Route &route, const WpmlExportOptions &options, const 
                 }
                 if (pano->mode == PanoramaMode::Video)
                     g.actions.push_back({ActuatorFunc::StopRecord, 0.0});
+            } else if (const auto *gimbal = std::get_if<CameraControlAction>(&a)) {
+                // WPML pitches -90° looking down where UgCS tilts 90°.
+                if (gimbal->rollDeg || gimbal->yawDeg || gimbal->zoomLevel)
+                    return refuse(QStringLiteral("%1: only the gimbal's tilt has a WPML action here; roll, yaw and zoom do not").arg(where));
+                if (gimbal->tiltDeg)
+                    at(k).actions.push_back({ActuatorFunc::GimbalRotate, -*gimbal->tiltDeg});
             } else if (const auto *opaque = std::get_if<OpaqueAction>(&a)) {
                 return refuse(QStringLiteral("%1: the server action \"%2\" has no WPML equivalent").arg(where, opaque->description));
             }

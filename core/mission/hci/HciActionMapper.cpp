@@ -47,7 +47,16 @@ WaypointAction actionFromHci(const pb::ActionDefinition &d)
                               p.rotationdirection() == pb::RD_COUNTERCLOCKWISE ? RotationDirection::CounterClockwise : RotationDirection::Clockwise,
                               p.rotationspeed() / kDeg, p.panoramamode() == pb::PM_VIDEO ? PanoramaMode::Video : PanoramaMode::Photo};
     }
-    // Anything else (camera control, servos, VTOL transitions, lidar, hop, drop) is kept verbatim.
+    if (d.has_cameracontroldefinition()) {
+        const auto &c = d.cameracontroldefinition();
+        CameraControlAction a;
+        if (c.has_tilt()) a.tiltDeg = c.tilt() / kDeg;
+        if (c.has_roll()) a.rollDeg = c.roll() / kDeg;
+        if (c.has_yaw()) a.yawDeg = c.yaw() / kDeg;
+        if (c.has_zoomlevel()) a.zoomLevel = c.zoomlevel();
+        return a;
+    }
+    // Anything else (servos, VTOL transitions, lidar, hop, drop) is kept verbatim.
     QString name = QStringLiteral("Action");
     const auto *refl = d.GetReflection();
     std::vector<const google::protobuf::FieldDescriptor *> fields;
@@ -136,6 +145,24 @@ void actionToHci(const WaypointAction &action, pb::ActionDefinition &def)
                 p->set_rotationdirection(a.direction == RotationDirection::Clockwise ? pb::RD_CLOCKWISE : pb::RD_COUNTERCLOCKWISE);
             if (!b || differs(b->rotationSpeedDegPerSecond, a.rotationSpeedDegPerSecond)) p->set_rotationspeed(a.rotationSpeedDegPerSecond * kDeg);
             if (!b || b->mode != a.mode) p->set_panoramamode(a.mode == PanoramaMode::Video ? pb::PM_VIDEO : pb::PM_PHOTO);
+        },
+        [&](const CameraControlAction &a) {
+            const CameraControlAction *b = fresh ? nullptr : &std::get<CameraControlAction>(*decoded);
+            auto *c = def.mutable_cameracontroldefinition();
+            // An angle not set is absent on the wire: the camera keeps it.
+            const auto angle = [&](const std::optional<double> &now, const std::optional<double> *before, auto set, auto clear) {
+                if (before && now.has_value() == before->has_value() && (!now || !differs(**before, *now)))
+                    return;
+                if (now) (c->*set)(*now * kDeg);
+                else (c->*clear)();
+            };
+            angle(a.tiltDeg, b ? &b->tiltDeg : nullptr, &pb::CameraControlDefinition::set_tilt, &pb::CameraControlDefinition::clear_tilt);
+            angle(a.rollDeg, b ? &b->rollDeg : nullptr, &pb::CameraControlDefinition::set_roll, &pb::CameraControlDefinition::clear_roll);
+            angle(a.yawDeg, b ? &b->yawDeg : nullptr, &pb::CameraControlDefinition::set_yaw, &pb::CameraControlDefinition::clear_yaw);
+            if (!b || b->zoomLevel != a.zoomLevel) {
+                if (a.zoomLevel) c->set_zoomlevel(*a.zoomLevel);
+                else c->clear_zoomlevel();
+            }
         },
         [&](const OpaqueAction &) {},
     }, action);

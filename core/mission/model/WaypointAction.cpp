@@ -48,6 +48,7 @@ QString actionKindName(const WaypointAction &action)
         [](const CameraSeriesByTimeAction &) { return QStringLiteral("cameraSeriesByTime"); },
         [](const CameraSeriesByDistanceAction &) { return QStringLiteral("cameraSeriesByDistance"); },
         [](const PanoramaAction &) { return QStringLiteral("panorama"); },
+        [](const CameraControlAction &) { return QStringLiteral("cameraControl"); },
         [](const OpaqueAction &) { return QStringLiteral("opaque"); },
     }, action);
 }
@@ -80,6 +81,14 @@ QString describeAction(const WaypointAction &action)
                                         : QStringLiteral("Stop photos");
         },
         [](const PanoramaAction &a) { return QStringLiteral("Panorama %1°").arg(number(a.angleDeg)); },
+        [](const CameraControlAction &a) {
+            QStringList parts;
+            if (a.tiltDeg) parts << QStringLiteral("tilt %1°").arg(number(*a.tiltDeg));
+            if (a.rollDeg) parts << QStringLiteral("roll %1°").arg(number(*a.rollDeg));
+            if (a.yawDeg) parts << QStringLiteral("yaw %1°").arg(number(*a.yawDeg));
+            if (a.zoomLevel) parts << QStringLiteral("zoom %1").arg(*a.zoomLevel);
+            return parts.isEmpty() ? QStringLiteral("Gimbal (nothing set)") : QStringLiteral("Gimbal ") + parts.join(QStringLiteral(", "));
+        },
         [](const OpaqueAction &a) { return a.description + QStringLiteral(" (kept as received)"); },
     }, action);
 }

@@ -6,6 +6,7 @@
 #include <QString>
 
 #include <memory>
+#include <optional>
 #include <variant>
 #include <vector>
 
@@ -74,6 +75,18 @@ struct PanoramaAction
     bool operator==(const PanoramaAction &) const = default;
 };
 
+// Points the camera's gimbal and sets its zoom (UgCS's camera control). A value not set is left
+// as it is. Angles in degrees: tilt 90° looks straight down, 0° ahead (UgCS's convention); roll and
+// yaw relative to the vehicle. The zoom level is the camera's own step number.
+struct CameraControlAction
+{
+    std::optional<double> tiltDeg;
+    std::optional<double> rollDeg;
+    std::optional<double> yawDeg;
+    std::optional<int> zoomLevel;
+    bool operator==(const CameraControlAction &) const = default;
+};
+
 // An action a server sent that Sortie does not model (servo, lidar, drop, ...). It is kept
 // verbatim so that saving the route sends it back unchanged.
 struct OpaqueAction
@@ -86,7 +99,7 @@ struct OpaqueAction
 
 using WaypointAction = std::variant<WaitAction, HeadingAction, PoiAction, CameraTriggerAction,
                                     CameraSeriesByTimeAction, CameraSeriesByDistanceAction, PanoramaAction,
-                                    OpaqueAction>;
+                                    CameraControlAction, OpaqueAction>;
 
 QString altitudeTypeName(AltitudeType type);                 // "AGL" / "AMSL"
 bool parseAltitudeType(const QString &name, AltitudeType *out);
