@@ -3,6 +3,8 @@
 #include "Messages.pb.h"
 #include "TelemetryField.h"
 
+#include <algorithm>
+
 namespace sortie::vehicle {
 
 namespace pb = com::ugcs::ucs::proto;

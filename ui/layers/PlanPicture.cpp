@@ -3,6 +3,8 @@
 #include <QPaintDevice>
 #include <QPainter>
 
+#include <algorithm>
+
 namespace sortie::ui {
 
 namespace {
