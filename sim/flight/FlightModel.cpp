@@ -94,7 +94,6 @@ FlightModel::Refusal FlightModel::disarm()
     m_state.armed = false;
     m_state.mode = Mode::Manual;
     m_state.currentWaypoint = -1;
-    m_state.missionComplete = false;
     return {};
 }
 
