@@ -9,7 +9,7 @@ namespace {
 
 using google::protobuf::FieldDescriptor;
 
-constexpr std::array kNames = {"Vehicle", "Route", "Mission", "VehicleProfile", "User", "TraverseAlgorithm", "CommandDefinition"};
+constexpr std::array kNames = {"Vehicle", "Route", "Mission", "VehicleProfile", "User", "TraverseAlgorithm", "CommandDefinition", "RoutePass"};
 
 const FieldDescriptor *wrapperFieldFor(const google::protobuf::Descriptor *type)
 {

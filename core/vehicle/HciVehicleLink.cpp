@@ -8,6 +8,7 @@
 #include "HciSession.h"
 #include "HciSubscription.h"
 #include "HciTelemetryMapper.h"
+#include "VehicleLog.h"
 #include "Messages.pb.h"
 
 #include <QDateTime>
@@ -24,6 +25,7 @@ HciVehicleLink::HciVehicleLink(hci::HciClient *client, const pb::Vehicle &vehicl
     : VehicleLink(parent)
     , m_client(client)
     , m_vehicle(std::make_unique<pb::Vehicle>(vehicle))
+    , m_routePass(vehicle.id())
 {
     m_identity.id = QString::number(vehicle.id());
     m_identity.name = QString::fromStdString(vehicle.name());
@@ -41,6 +43,8 @@ HciVehicleLink::~HciVehicleLink()
 {
     if (m_subscription)
         m_client->session()->unsubscribe(m_subscription);
+    if (m_routePassSubscription)
+        m_client->session()->unsubscribe(m_routePassSubscription);
 }
 
 int HciVehicleLink::vehicleObjectId() const
@@ -62,6 +66,8 @@ void HciVehicleLink::updateState()
     if (s == m_state)
         return;
     m_state = s;
+    if (s == State::Connected)
+        readRoutePasses(); // what changed while we were away is not replayed
     emit stateChanged(s);
 }
 
@@ -72,6 +78,8 @@ void HciVehicleLink::start()
     m_started = true;
     m_subscription = m_client->subscribeTelemetry(m_vehicle->id());
     connect(m_subscription, &hci::HciSubscription::received, this, &HciVehicleLink::onEvent);
+    m_routePassSubscription = m_client->subscribeObjectChanges(HciObjectType::RoutePass);
+    connect(m_routePassSubscription, &hci::HciSubscription::received, this, &HciVehicleLink::onRoutePassEvent);
     updateState();
 }
 
@@ -80,6 +88,8 @@ void HciVehicleLink::stop()
     m_started = false;
     if (m_subscription)
         m_client->session()->unsubscribe(m_subscription);
+    if (m_routePassSubscription)
+        m_client->session()->unsubscribe(m_routePassSubscription);
     updateState();
 }
 
@@ -96,6 +106,41 @@ template<class F>
 void HciVehicleLink::onFinished(HciReply *reply, F &&f)
 {
     connect(reply, &HciReply::finished, this, [reply, f = std::forward<F>(f)] { f(*reply); });
+}
+
+void HciVehicleLink::onRoutePassEvent(const pb::EventWrapper &event)
+{
+    if (!event.has_objectmodificationevent())
+        return;
+    m_routePassSeen = true;
+    report(m_routePass.apply(event.objectmodificationevent(), QDateTime::currentMSecsSinceEpoch()));
+}
+
+void HciVehicleLink::readRoutePasses()
+{
+    m_routePassSeen = false;
+    onFinished(m_client->listObjects(HciObjectType::RoutePass), [this](const HciReply &reply) {
+        if (!reply.isOk()) {
+            qCDebug(lcVehicle).noquote() << m_identity.name << "RoutePass list not available:" << reply.error().message();
+            return;
+        }
+        if (m_routePassSeen)
+            return; // events since the request are newer than the list
+        for (const auto &w : reply.response<pb::GetObjectListResponse>().objects())
+            if (w.has_routepass() && w.routepass().vehicle().id() == m_vehicle->id())
+                report(m_routePass.apply(w.routepass(), QDateTime::currentMSecsSinceEpoch()));
+    });
+}
+
+void HciVehicleLink::report(const HciRoutePassTracker::Outcome &outcome)
+{
+    using Kind = HciRoutePassTracker::Outcome::Kind;
+    if (outcome.kind == Kind::Dropped) {
+        qCWarning(lcVehicle).noquote() << m_identity.name << "dropped a RoutePass event:" << outcome.reason;
+        emit errorOccurred(outcome.reason);
+    } else if (outcome.kind == Kind::Applied) {
+        emit telemetryReceived(outcome.batch);
+    }
 }
 
 void HciVehicleLink::failLater(Done done, const QString &why)
@@ -270,7 +315,7 @@ void HciVehicleLink::uploadMission(const PreparedMission &mission, UploadObserve
     };
     step(UploadStep::Locking, 0, 0);
     hci::underLock<CommandResult>(m_client, HciObjectType::Vehicle, m_vehicle->id(), this, {
-        [this, processed, observer, step](auto finish) {
+        [this, processed, observer, step, count = int(mission.items.size())](auto finish) {
             if (observer.proceed && !observer.proceed()) {
                 finish(CommandResult::cancel());
                 return;
@@ -278,11 +323,12 @@ void HciVehicleLink::uploadMission(const PreparedMission &mission, UploadObserve
             step(UploadStep::Sending, 0, 0);
             HciReply *reply = m_client->uploadRoute(*m_vehicle, processed->route);
             connect(reply, &HciReply::progress, this, [step](const QString &, int value, int maximum) { step(UploadStep::Sending, value, maximum); });
-            onFinished(reply, [this, finish](const HciReply &uploaded) {
+            onFinished(reply, [this, finish, count](const HciReply &uploaded) {
                 if (!uploaded.isOk()) {
                     finish(CommandResult::failure(QStringLiteral("upload: %1").arg(uploaded.error().message())));
                     return;
                 }
+                m_routePass.setUploadedCount(count);
                 emit missionChanged();
                 finish(CommandResult::success());
             });

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "HciRoutePass.h"
 #include "VehicleLink.h"
 
 #include <QPointer>
@@ -23,7 +24,10 @@ namespace sortie::vehicle {
 // this vehicle (the session keeps it across reconnects); commands go as SendCommand and missions as
 // ProcessRoute (prepareMission) then UploadRoute (uploadMission), commands and uploads inside the
 // vehicle's lock as the UgCS SDK does it (hci::underLock; another operator's lock makes them fail
-// with that operator's name). The link's state follows the session.
+// with that operator's name). The link's state follows the session. Mission progress comes from the
+// server's RoutePass objects (an object-modification subscription, and the list once connected),
+// reported as the same Mission* telemetry fields a VCI vehicle sends; a malformed RoutePass is
+// dropped with errorOccurred naming why.
 // HCI cannot read a vehicle's mission back or change its parameters; readParameters() gives the
 // vehicle profile's values (VPT_* names).
 class HciVehicleLink : public VehicleLink
@@ -60,6 +64,9 @@ private:
     void command(const QString &code, const QVariantMap &arguments, Done done);
     void underLock(const QString &what, Work work, Done done);
     void onEvent(const com::ugcs::ucs::proto::EventWrapper &event);
+    void onRoutePassEvent(const com::ugcs::ucs::proto::EventWrapper &event);
+    void readRoutePasses();
+    void report(const HciRoutePassTracker::Outcome &outcome);
     void updateState();
     void failLater(Done done, const QString &why);
     template<class F>
@@ -68,6 +75,9 @@ private:
     hci::HciClient *m_client;
     std::unique_ptr<com::ugcs::ucs::proto::Vehicle> m_vehicle;
     QPointer<hci::HciSubscription> m_subscription;
+    QPointer<hci::HciSubscription> m_routePassSubscription;
+    HciRoutePassTracker m_routePass;
+    bool m_routePassSeen = false; // an event arrived: a list read earlier is older
     VehicleIdentity m_identity;
     State m_state = State::Disconnected;
     bool m_started = false;

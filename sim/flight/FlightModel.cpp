@@ -115,6 +115,7 @@ FlightModel::Refusal FlightModel::setMission(std::vector<Waypoint> waypoints)
     m_mission = std::move(waypoints);
     ++m_missionVersion;
     m_state.currentWaypoint = -1;
+    m_state.missionComplete = false;
     return {};
 }
 
@@ -125,6 +126,7 @@ FlightModel::Refusal FlightModel::startMission()
     if (!m_state.armed)
         return "arm before starting the mission";
     m_state.currentWaypoint = 0;
+    m_state.missionComplete = false;
     m_holdLeft = -1;
     m_state.mode = Mode::Auto;
     return {};
@@ -289,11 +291,13 @@ void FlightModel::tick(double dt)
             m_holdLeft = -1;
             if (wp.landHere) {
                 s.mode = Mode::Land;
+                s.missionComplete = true;
                 break;
             }
             if (++s.currentWaypoint >= int(m_mission.size())) {
                 s.currentWaypoint = int(m_mission.size()) - 1;
                 s.mode = Mode::Hold; // mission complete: hold at the last waypoint
+                s.missionComplete = true;
             }
         }
         break;

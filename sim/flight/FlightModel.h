@@ -40,6 +40,7 @@ public:
         bool armed = false;
         Mode mode = Mode::Manual;
         int currentWaypoint = -1;           // index in the mission while flying it, else -1
+        bool missionComplete = false;       // its last waypoint was reached; cleared by a new mission or start
         double homeLatitude = 0, homeLongitude = 0;
         double altitudeAmsl() const { return groundElevation + altitudeAgl; }
         bool airborne() const { return altitudeAgl > 0.2; }

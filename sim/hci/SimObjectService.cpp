@@ -55,6 +55,8 @@ QString SimObjectService::readOnlyReason(const QString &type, bool creating)
 {
     if (type == kCommandDefinition || type == QLatin1String("TraverseAlgorithm"))
         return QStringLiteral("%1 objects are defined by the server and cannot be changed").arg(type);
+    if (type == QLatin1String("RoutePass"))
+        return QStringLiteral("RoutePass objects are kept by the server while a vehicle flies an uploaded route");
     if (type == QLatin1String("User"))
         return QStringLiteral("Users are configured when the simulator starts (--user) and cannot be changed over HCI");
     if (type == QLatin1String("Vehicle") && creating)

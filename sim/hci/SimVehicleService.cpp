@@ -117,9 +117,10 @@ void SimVehicleService::uploadRoute(SimCall &call)
                 return;
             SimVehicle *target = world.vehicle(vehicleId);
             const QString refusal = target ? target->upload(*route) : QStringLiteral("The vehicle is gone");
-            if (refusal.isEmpty())
+            if (refusal.isEmpty()) {
+                world.routePasses().uploaded(*target, *route, SimWorld::now());
                 respond.reply(pb::UploadRouteResponse());
-            else
+            } else
                 respond.error(refusal);
         });
     }

@@ -54,6 +54,7 @@ bool SimWorld::start(QString *error)
         if (!SimStoreFile::load(m_config.storePath, m_store, error))
             return false;
         qCInfo(lcSim).noquote() << "loaded" << m_store.count() << "objects from" << m_config.storePath;
+        m_routePasses.clearStale();
     }
     if (!m_config.demPath.isEmpty()) {
         QString demError;
@@ -140,6 +141,7 @@ void SimWorld::tick()
         pb::TelemetryEvent event;
         const bool commandsChanged = v->tick(dt, time, &event);
         emit telemetry(event);
+        m_routePasses.follow(*v);
         if (commandsChanged)
             emit this->commandsChanged(v->id());
     }

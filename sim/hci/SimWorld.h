@@ -2,6 +2,7 @@
 
 #include "SimLockTable.h"
 #include "SimObjectStore.h"
+#include "SimRoutePasses.h"
 #include "SimUsers.h"
 
 #include <QElapsedTimer>
@@ -52,6 +53,8 @@ public:
     const Config &config() const { return m_config; }
     SimObjectStore &store() { return m_store; }
     SimLockTable &locks() { return m_locks; }
+    // The RoutePass of every vehicle flying an uploaded route (kept in the store).
+    SimRoutePasses &routePasses() { return m_routePasses; }
     const SimUsers &users() const { return m_users; }
     double groundElevation() const { return m_config.groundElevation; }
     // The ground everywhere (GetElevationProfile, route processing, telemetry's AGL).
@@ -78,6 +81,7 @@ private:
     SimUsers m_users;
     SimObjectStore m_store;
     SimLockTable m_locks;
+    SimRoutePasses m_routePasses{m_store};
     std::unique_ptr<SimTerrain> m_terrain;
     std::vector<std::unique_ptr<SimVehicle>> m_vehicles;
     QTimer m_ticker;

@@ -59,12 +59,15 @@ private slots:
         QVERIFY(m.startMission().empty());
         int seenFirst = -1;
         for (int i = 0; i < 600 && m.state().mode == FlightModel::Mode::Auto; ++i) {
+            QVERIFY(!m.state().missionComplete);
             m.tick(0.1);
             if (m.state().currentWaypoint == 1 && seenFirst < 0)
                 seenFirst = i;
         }
         QVERIFY(seenFirst > 0);
         QCOMPARE(m.state().mode, FlightModel::Mode::Hold);
+        QVERIFY(m.state().missionComplete); // what the HCI server's RoutePass and the VCI progress report
+        QCOMPARE(m.state().currentWaypoint, 1);
         QVERIFY(sortie::sim::sphericalDistance(m.state().latitude, m.state().longitude, lat2, lon2) < 2.5);
         QVERIFY(qAbs(m.state().altitudeAgl - 35) < 0.6);
     }

@@ -6,6 +6,9 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <algorithm>
+#include <functional>
+
 namespace sortie::test {
 
 ClientWindow::ClientWindow(Options options)
@@ -22,6 +25,11 @@ ClientWindow::ClientWindow(Options options)
     sim::SimVciFleetOptions vci;
     vci.count = options.vciVehicles;
     vci.firstPort = 0;
+    vci.vehicle.timeScale = options.vciTimeScale;
+    if (options.vciHome.isValid()) {
+        vci.vehicle.homeLatitude = options.vciHome.latitude();
+        vci.vehicle.homeLongitude = options.vciHome.longitude();
+    }
     m_vci = std::make_unique<sim::SimVciFleet>(vci);
     if (!m_vci->start(&m_error))
         return;
@@ -102,6 +110,23 @@ bool ClientWindow::addVciVehicles()
 void ClientWindow::showPage(int page)
 {
     m_window->setProperty("currentPage", page);
+}
+
+QQuickItem *ClientWindow::waypointCell(int row, const QString &role) const
+{
+    QQuickItem *list = find(QStringLiteral("waypointList"));
+    if (!list)
+        return nullptr;
+    QList<QQuickItem *> cells;
+    std::function<void(QQuickItem *)> collect = [&](QQuickItem *item) {
+        if (item->property("role").toString() == role && item->isVisible())
+            cells.append(item);
+        for (QQuickItem *child : item->childItems())
+            collect(child);
+    };
+    collect(list);
+    std::sort(cells.begin(), cells.end(), [](QQuickItem *a, QQuickItem *b) { return a->mapToScene({0, 0}).y() < b->mapToScene({0, 0}).y(); });
+    return row >= 0 && row < cells.size() ? cells[row] : nullptr;
 }
 
 bool waitForFrame(QQuickWindow *window)

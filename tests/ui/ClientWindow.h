@@ -13,6 +13,7 @@
 #include "SimWorld.h"
 #include "VehicleFleet.h"
 
+#include <QGeoCoordinate>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
@@ -29,6 +30,8 @@ public:
     struct Options
     {
         int vciVehicles = 1;
+        QGeoCoordinate vciHome;     // invalid: the simulator's default, south-east of the demo route
+        double vciTimeScale = 1;    // simulated seconds per real second for the VCI vehicles
         int uploadStepMs = 20;
         QSize size{1280, 800};
     };
@@ -48,6 +51,8 @@ public:
     // Adds every simulated VCI vehicle to the fleet; true once each has a position.
     bool addVciVehicles();
     void showPage(int page);
+    // The waypoint table's cell for `role` ("altitude", "speed", ...) in a row, as laid out now.
+    QQuickItem *waypointCell(int row, const QString &role) const;
 
     template<typename T = QQuickItem>
     T *find(const QString &name) const

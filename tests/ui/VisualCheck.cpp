@@ -1,5 +1,7 @@
 #include "VisualCheck.h"
 
+#include "MapView.h"
+
 #include <QFontDatabase>
 #include <QFontMetricsF>
 #include <QHash>
@@ -166,6 +168,38 @@ QStringList inspectTexts(QQuickItem *scope)
         }
     }
     problems.removeDuplicates();
+    return problems;
+}
+
+QStringList inspectMapControls(QQuickItem *pane, const QStringList &controls)
+{
+    QStringList problems;
+    auto *map = pane->findChild<ui::MapView *>(QStringLiteral("mapView"));
+    if (!map)
+        return {QStringLiteral("no map in the pane")};
+    const QList<QRectF> labels = map->graticuleLabelRects();
+    const qreal top = map->labelBandTop(), left = map->labelBandLeft();
+    const QRectF topBand(0, 0, map->width(), top), leftBand(0, 0, left, map->height());
+    for (qsizetype i = 0; i < labels.size(); ++i)
+        for (qsizetype j = i + 1; j < labels.size(); ++j)
+            if (labels[i].intersects(labels[j]))
+                problems << QStringLiteral("two graticule labels cross at (%1, %2)").arg(labels[j].x()).arg(labels[j].y());
+    QList<std::pair<QString, QRectF>> placed;
+    for (const QString &name : controls) {
+        auto *item = pane->findChild<QQuickItem *>(name);
+        if (!item || !item->isVisible() || item->width() <= 0 || item->height() <= 0)
+            continue;
+        const QRectF rect = item->mapRectToItem(map, QRectF(0, 0, item->width(), item->height()));
+        for (const QRectF &label : labels)
+            if (rect.intersects(label))
+                problems << QStringLiteral("%1 covers a graticule label at (%2, %3)").arg(name).arg(label.x()).arg(label.y());
+        if (rect.intersects(topBand) || rect.intersects(leftBand))
+            problems << QStringLiteral("%1 reaches into the graticule's label band").arg(name);
+        for (const auto &[other, otherRect] : placed)
+            if (rect.intersects(otherRect))
+                problems << QStringLiteral("%1 and %2 cover each other").arg(name, other);
+        placed.append({name, rect});
+    }
     return problems;
 }
 

@@ -17,4 +17,10 @@ QStringList inspectTexts(QQuickItem *scope);
 // How many texts the last inspectTexts() judged (so a test knows it looked at something).
 int lastInspectedTextCount();
 
+// Looks at the controls laid on a map (the visible items under `pane`, the MapPane, named in
+// `controls`) and reports, one line each, a control that covers one of the map's graticule labels
+// as they are drawn now, or reaches into the bands where labels go (MapView::labelBandTop/Left),
+// two controls that cover each other, and two labels that cross.
+QStringList inspectMapControls(QQuickItem *pane, const QStringList &controls);
+
 } // namespace sortie::test

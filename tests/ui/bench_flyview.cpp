@@ -2,7 +2,8 @@
 // vehicles flying 50-waypoint missions under them (FlightPlanLayer) with their arrows, labels and
 // trails (VehicleLayer), every vehicle reporting every frame; then 200 vehicles on one spot (the
 // label stacking at its worst); and FlightStatus deriving progress, home, flight time and rate
-// per telemetry notification. Prints ms per frame (wall and the GUI thread's CPU).
+// per telemetry notification. Prints ms per frame (wall and the GUI thread's CPU) and the load average.
+#include "BenchClock.h"
 #include "FlightPlanLayer.h"
 #include "FlightStatus.h"
 #include "QuickScene.h"
@@ -16,7 +17,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <memory>
 #include <numbers>
 
@@ -39,13 +39,6 @@ Item {
 
 constexpr double kRad = std::numbers::pi / 180.0;
 enum Role { VehicleRole = Qt::UserRole + 1, IdRole, NameRole, LatRole, LonRole, HeadingRole };
-
-qint64 threadCpuNanoseconds()
-{
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return qint64(ts.tv_sec) * 1000000000 + ts.tv_nsec;
-}
 
 struct Fleet
 {
@@ -104,7 +97,14 @@ void run(const char *name, int vehicles, bool oneSpot, int frames)
         return;
     }
     Fleet fleet(vehicles, oneSpot);
-    scene.find<ui::FlightPlanLayer>(QStringLiteral("plans"))->setModel(&fleet.model);
+    auto *plans = scene.find<ui::FlightPlanLayer>(QStringLiteral("plans"));
+    plans->setModel(&fleet.model);
+    auto redraws = [&] {
+        int n = 0;
+        for (int row = 0; row < vehicles; ++row)
+            n += plans->planRedraws(row);
+        return n;
+    };
     scene.find<ui::VehicleLayer>(QStringLiteral("vehicles"))->setModel(&fleet.model);
     for (int i = 0; i < 5; ++i) { // warm up
         fleet.move();
@@ -113,15 +113,17 @@ void run(const char *name, int vehicles, bool oneSpot, int frames)
     }
     QElapsedTimer clock;
     clock.start();
-    const qint64 cpuStart = threadCpuNanoseconds();
+    const double cpuStart = test::threadCpuMs();
+    const int redrawsBefore = redraws();
     for (int i = 0; i < frames; ++i) {
         fleet.move();
         QCoreApplication::processEvents(); // the vehicles' notifications
         scene.grab();
     }
     const double wall = double(clock.nsecsElapsed()) / 1e6 / frames;
-    const double cpu = double(threadCpuNanoseconds() - cpuStart) / 1e6 / frames;
-    std::printf("%-52s %10.2f %13.2f\n", name, wall, cpu);
+    const double cpu = (test::threadCpuMs() - cpuStart) / frames;
+    const double redrawn = double(redraws() - redrawsBefore) / frames;
+    std::printf("%-52s %10.2f %13.2f %14.1f\n", name, wall, cpu, redrawn);
 }
 
 void statusCost(int notifications)
@@ -131,10 +133,10 @@ void statusCost(int notifications)
     status.setVehicle(fleet.vehicles.front().get());
     for (int i = 0; i < 3000; ++i) // five minutes of history at 10 Hz
         fleet.move();
-    const qint64 cpuStart = threadCpuNanoseconds();
+    const double cpuStart = test::threadCpuMs();
     for (int i = 0; i < notifications; ++i)
         status.refresh();
-    const double us = double(threadCpuNanoseconds() - cpuStart) / 1e3 / notifications;
+    const double us = (test::threadCpuMs() - cpuStart) * 1e3 / notifications;
     std::printf("%-52s %10s %13.1f (µs)\n", "FlightStatus::refresh, 50 waypoints, 5 min of history", "", us);
 }
 
@@ -145,10 +147,11 @@ int main(int argc, char **argv)
     test::useSoftwareRendering();
     QGuiApplication app(argc, argv);
     const int frames = argc > 1 ? std::max(10, std::atoi(argv[1])) : 200;
-    std::printf("bench_flyview: %d frames per case, 1280x800, software scene graph\n", frames);
-    std::printf("%-52s %10s %13s\n", "case", "ms/frame", "cpu ms/frame");
+    std::printf("bench_flyview: %d frames per case, 1280x800, software scene graph, load average %.1f\n", frames, test::loadAverage());
+    std::printf("%-52s %10s %13s %14s\n", "case", "ms/frame", "cpu ms/frame", "plans redrawn");
     run("20 vehicles flying 50-waypoint missions, all reporting", 20, false, frames);
     run("200 on one spot, 50-waypoint missions, labels stacked", 200, true, frames / 4);
     statusCost(20000);
+    std::printf("load average at the end: %.1f\n", test::loadAverage());
     return 0;
 }

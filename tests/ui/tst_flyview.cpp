@@ -227,6 +227,56 @@ private slots:
         QVERIFY(countNear(scene.grab(), QRect(layer->waypointPosition(0, 3).toPoint() + QPoint(11, -3), QSize(5, 6)), ring) > 3);
     }
 
+    // A plan is drawn once and shown from its picture while the vehicle moves; a new active
+    // waypoint, a new layout (zoom) or a new mission draw it anew, where it now belongs.
+    void flightPlanIsKeptAsAPicture()
+    {
+        test::QuickScene scene(kMapScene, QSize(800, 600));
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        auto *layer = scene.find<ui::FlightPlanLayer>(QStringLiteral("plans"));
+        auto *map = scene.find<ui::MapView>(QStringLiteral("map"));
+        vehicle::Vehicle v(nullptr);
+        v.setNotifyInterval(0);
+        QStandardItemModel fleet;
+        fleet.setItemRoleNames({{Qt::UserRole, "vehicle"}});
+        auto *row = new QStandardItem;
+        row->setData(QVariant::fromValue<QObject *>(&v), Qt::UserRole);
+        fleet.appendRow(row);
+        layer->setModel(&fleet);
+        v.setMission({waypoint(56.950, 24.098), waypoint(56.952, 24.098), waypoint(56.952, 24.104), waypoint(56.950, 24.104)});
+        report(v, 1000, 56.951, 24.098, {{F::MissionCurrent, 1, 1000}});
+        const QColor colour = ui::vehicleColor(0);
+        auto middleOf = [&](int a, int b) { return ((layer->waypointPosition(0, a) + layer->waypointPosition(0, b)) / 2).toPoint(); };
+        auto aheadShown = [&] { return countNear(scene.grab(), QRect(middleOf(2, 3) - QPoint(3, 3), QSize(7, 7)), colour) > 5; };
+        QTRY_VERIFY(aheadShown());
+        const int drawn = layer->planRedraws(0);
+        QVERIFY(drawn >= 1);
+
+        // Moving along the same leg: frames come from the picture.
+        for (int i = 1; i <= 5; ++i) {
+            report(v, 1000 + 100 * i, 56.951 + 0.0001 * i, 24.098, {{F::MissionCurrent, 1, 1000 + 100 * i}});
+            QVERIFY(aheadShown());
+        }
+        QCOMPARE(layer->planRedraws(0), drawn);
+
+        // The next waypoint: drawn anew once, the leg left behind grey.
+        report(v, 2000, 56.952, 24.100, {{F::MissionCurrent, 2, 2000}});
+        QTRY_COMPARE(countNear(scene.grab(), QRect(middleOf(0, 1) - QPoint(3, 3), QSize(7, 7)), colour), 0);
+        QCOMPARE(layer->planRedraws(0), drawn + 1);
+
+        // Zoomed out: laid out and drawn anew where the waypoints now are.
+        const QPointF before = layer->waypointPosition(0, 3);
+        map->setZoomLevel(15);
+        QTRY_VERIFY((layer->waypointPosition(0, 3) - before).manhattanLength() > 20);
+        QTRY_VERIFY(aheadShown());
+        QCOMPARE(layer->planRedraws(0), drawn + 2);
+
+        // Another mission: drawn anew.
+        v.setMission({waypoint(56.950, 24.100), waypoint(56.951, 24.102), waypoint(56.950, 24.104), waypoint(56.949, 24.106)});
+        QTRY_VERIFY(aheadShown());
+        QCOMPARE(layer->planRedraws(0), drawn + 3);
+    }
+
     void plotsSeveralFieldsAndSeveralVehicles()
     {
         const QByteArray qml = R"(

@@ -8,6 +8,7 @@
 #include "TileKey.h"
 #include "WebMercator.h"
 
+#include <QFontMetrics>
 #include <QTest>
 
 #include <cmath>
@@ -120,6 +121,30 @@ private slots:
         QCOMPARE(Graticule::label(-12.5, 0.5, true), QStringLiteral("12.5°S"));
         QCOMPARE(Graticule::label(30, 10, false), QStringLiteral("30°E"));
         QCOMPARE(Graticule::label(1e-12, 0.01, false), QStringLiteral("0°"));
+    }
+
+    // Labels stay whole inside the view, in their bands, and never cross, at every zoom and place.
+    void graticuleLabelsKeepToTheirBands()
+    {
+        const QFontMetrics metrics(Graticule::labelFont(QFont()));
+        const QMarginsF bands = Graticule::labelBands(metrics);
+        QVERIFY(bands.top() > metrics.height() && bands.left() > metrics.horizontalAdvance(QStringLiteral("56.9765°N")));
+        int seen = 0;
+        for (double zoom : {2.0, 6.5, 11.0, 13.9, 17.0, 19.5}) {
+            for (QPointF centre : {QPointF(0.5, 0.5), WebMercator::project(56.97, 24.07), WebMercator::project(-33.9, 151.2)}) {
+                const MapViewport view(centre, zoom, QSizeF(707, 678));
+                const auto labels = Graticule::labels(view, metrics);
+                seen += int(labels.size());
+                for (size_t i = 0; i < labels.size(); ++i) {
+                    const QRectF r = labels[i].rect;
+                    QVERIFY(QRectF(QPointF(0, 0), view.size()).contains(r));
+                    QVERIFY2(r.bottom() <= bands.top() || r.right() <= bands.left(), qPrintable(labels[i].text)); // in a band
+                    for (size_t j = i + 1; j < labels.size(); ++j)
+                        QVERIFY2(!r.intersects(labels[j].rect), qPrintable(labels[i].text + QStringLiteral(" / ") + labels[j].text));
+                }
+            }
+        }
+        QVERIFY(seen > 30);
     }
 
     void scaleBar()
@@ -277,5 +302,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestMapMath)
+QTEST_MAIN(TestMapMath) // fonts (graticule labels) need a QGuiApplication
 #include "tst_mapmath.moc"

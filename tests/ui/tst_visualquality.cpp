@@ -42,6 +42,10 @@ QString outputDir()
     return dir;
 }
 
+// The controls laid on the maps of the mission and fly pages.
+const QStringList kMapControls = {QStringLiteral("zoomButtons"), QStringLiteral("scaleBarFrame"), QStringLiteral("attributionLabel"),
+                                  QStringLiteral("flyMapControls")};
+
 } // namespace
 
 class TestVisualQuality : public QObject
@@ -108,6 +112,35 @@ private slots:
         QGuiApplication::setPalette(QPalette());
     }
 
+    // The map check finds a control moved back over the labels (where "Fit all" used to sit).
+    void theMapCheckFindsACoveredLabel()
+    {
+        m_client->showPage(2);
+        auto *pane = m_client->page("telemetryPage")->property("pane").value<QQuickItem *>();
+        QVERIFY(pane);
+        QVERIFY(test::waitForFrame(m_client->window()));
+        QVERIFY(test::inspectMapControls(pane, kMapControls).isEmpty());
+        auto *row = pane->findChild<QQuickItem *>(QStringLiteral("flyMapControls"));
+        QVERIFY(row);
+        QObject *anchors = row->property("anchors").value<QObject *>();
+        const QVariant top = anchors->property("topMargin"), left = anchors->property("leftMargin");
+        anchors->setProperty("topMargin", 10);
+        anchors->setProperty("leftMargin", 10);
+        const QString found = test::inspectMapControls(pane, kMapControls).join(QLatin1Char('\n'));
+        anchors->setProperty("topMargin", top);
+        anchors->setProperty("leftMargin", left);
+        QVERIFY2(found.contains(QStringLiteral("flyMapControls reaches into the graticule's label band")), qPrintable(found));
+        // Two controls on top of each other.
+        auto *zoom = pane->findChild<QQuickItem *>(QStringLiteral("zoomButtons"));
+        QVERIFY(zoom);
+        const QPointF at = zoom->mapToItem(row->parentItem(), QPointF(0, 0));
+        anchors->setProperty("leftMargin", at.x());
+        const QString crossing = test::inspectMapControls(pane, kMapControls).join(QLatin1Char('\n'));
+        anchors->setProperty("leftMargin", left);
+        QVERIFY2(crossing.contains(QStringLiteral("flyMapControls and zoomButtons cover each other"))
+                     || crossing.contains(QStringLiteral("zoomButtons and flyMapControls cover each other")), qPrintable(crossing));
+    }
+
     // The checker itself finds each fault on purpose-made texts, and leaves an elided one alone.
     void theCheckerFindsEachFault()
     {
@@ -161,6 +194,13 @@ Item {
             check(QString::fromLatin1(name) + suffix, window->contentItem());
             if (QTest::currentTestFailed())
                 return;
+        }
+        // No control on a map covers a graticule label or another control.
+        for (const char *pageName : {"missionPage", "telemetryPage"}) {
+            auto *pane = m_client->page(pageName)->property("pane").value<QQuickItem *>();
+            QVERIFY2(pane, pageName);
+            const QStringList problems = test::inspectMapControls(pane, kMapControls);
+            QVERIFY2(problems.isEmpty(), qPrintable(QString::fromLatin1(pageName) + suffix + QStringLiteral(":\n  ") + problems.join(QStringLiteral("\n  "))));
         }
 
         m_client->showPage(2);

@@ -5,6 +5,7 @@
 #include "HciReply.h"
 #include "HciServer.h"
 #include "HciSession.h"
+#include "HciRoutePass.h"
 #include "HciTelemetryMapper.h"
 #include "HciVehicleLink.h"
 #include "Route.h"
@@ -107,6 +108,9 @@ private slots:
     void missionUpload();
     void anotherOperatorsLock();
     void oneModelForBothProtocols();
+    void routePassMapping();
+    void routePassFollowsTheFlight();
+    void routePassMalformedIsDropped();
 };
 
 void TstHciVehicleLink::mapping()
@@ -329,6 +333,178 @@ void TstHciVehicleLink::oneModelForBothProtocols()
     QVERIFY(viaHci.batteryVoltage() > 14 && viaVci.batteryVoltage() > 14);
     QCOMPARE(viaHci.protocol(), QStringLiteral("HCI"));
     QCOMPARE(viaVci.protocol(), QStringLiteral("VCI"));
+}
+
+
+namespace {
+
+pb::ObjectModificationEvent passEvent(pb::ModificationType type, int id, int vehicle, int count, int index = -1)
+{
+    pb::ObjectModificationEvent e;
+    e.set_modificationtype(type);
+    e.set_objecttype("RoutePass");
+    e.set_objectid(id);
+    if (type == pb::MT_DELETE)
+        return e;
+    auto *p = e.mutable_object()->mutable_routepass();
+    p->set_id(id);
+    p->mutable_vehicle()->set_id(vehicle);
+    p->set_waypointcount(count);
+    if (index >= 0)
+        p->set_waypointindex(index);
+    return e;
+}
+
+double fieldIn(const TelemetryBatch &b, TelemetryField f)
+{
+    for (const auto &u : b)
+        if (u.field == f)
+            return u.value;
+    return qQNaN();
+}
+
+// Applies the batches a link emits to a fresh record of the mission fields, in order.
+QList<int> missionCurrents(const QSignalSpy &spy)
+{
+    QList<int> seen;
+    for (const auto &args : spy) {
+        const double v = fieldIn(args.at(0).value<TelemetryBatch>(), TelemetryField::MissionCurrent);
+        if (!qIsNaN(v) && (seen.isEmpty() || seen.back() != int(v)))
+            seen.append(int(v));
+    }
+    return seen;
+}
+
+} // namespace
+
+void TstHciVehicleLink::routePassMapping()
+{
+    using Kind = HciRoutePassTracker::Outcome::Kind;
+    HciRoutePassTracker t(7);
+    // Uploaded, not yet flown: the count, no active waypoint.
+    auto o = t.apply(passEvent(pb::MT_CREATE, 40, 7, 5), 100);
+    QCOMPARE(o.kind, Kind::Applied);
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionCurrent), -1.0);
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionCount), 5.0);
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionState), double(MissionState::Idle));
+    o = t.apply(passEvent(pb::MT_UPDATE, 40, 7, 5, 2), 200);
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionCurrent), 2.0);
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionReached), 2.0);
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionState), double(MissionState::Active));
+    QCOMPARE(o.batch.front().time, int64_t(200));
+    // Another vehicle's pass, and the removal of a pass we do not follow: nothing.
+    QCOMPARE(t.apply(passEvent(pb::MT_UPDATE, 41, 8, 5, 4), 300).kind, Kind::Ignored);
+    QCOMPARE(t.apply(passEvent(pb::MT_DELETE, 41, 0, 0), 300).kind, Kind::Ignored);
+    // Removed before its last waypoint: no longer executed, not complete.
+    o = t.apply(passEvent(pb::MT_DELETE, 40, 0, 0), 400);
+    QCOMPARE(o.kind, Kind::Applied);
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionState), double(MissionState::Idle));
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionCurrent), -1.0);
+    // The server added the vehicle's position as a first waypoint: indexes shift onto our mission.
+    t.setUploadedCount(3);
+    o = t.apply(passEvent(pb::MT_UPDATE, 42, 7, 4, 1), 500);
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionCurrent), 0.0);
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionCount), 3.0);
+    o = t.apply(passEvent(pb::MT_UPDATE, 42, 7, 4, 3), 600);
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionCurrent), 2.0);
+    // Removed after its last waypoint: fully processed.
+    o = t.apply(passEvent(pb::MT_DELETE, 42, 0, 0), 700);
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionState), double(MissionState::Complete));
+    QCOMPARE(fieldIn(o.batch, TelemetryField::MissionReached), 3.0);
+    // Malformed: each dropped with its reason.
+    auto bad = passEvent(pb::MT_UPDATE, 43, 7, 3, 3);
+    o = t.apply(bad, 800);
+    QCOMPARE(o.kind, Kind::Dropped);
+    QVERIFY2(o.reason.contains(QLatin1String("outside the route's 3 waypoints")), qPrintable(o.reason));
+    bad.mutable_object()->mutable_routepass()->clear_vehicle();
+    QVERIFY(t.apply(bad, 800).reason.contains(QLatin1String("names no vehicle")));
+    bad = passEvent(pb::MT_CREATE, 44, 7, 0);
+    QVERIFY(t.apply(bad, 800).reason.contains(QLatin1String("no waypoint count")));
+    bad.mutable_object()->Clear();
+    QVERIFY(t.apply(bad, 800).reason.contains(QLatin1String("carries no RoutePass")));
+    bad.set_objecttype("Route");
+    QCOMPARE(t.apply(bad, 800).kind, Kind::Dropped);
+}
+
+void TstHciVehicleLink::routePassFollowsTheFlight()
+{
+    Server sim;
+    Operator op(sim.server.port(), "admin", "admin");
+    QTRY_VERIFY(op.session.isReady());
+    HciVehicleLink link(&op.client, op.vehicle("EMU-102")), other(&op.client, op.vehicle("EMU-101"));
+    Vehicle v(&link), bystander(&other);
+    QSignalSpy batches(&link, &VehicleLink::telemetryReceived);
+    link.start();
+    other.start();
+    QTRY_VERIFY(v.isConnected() && v.position().isValid());
+    // Three short legs from where the vehicle stands.
+    const QGeoCoordinate at = v.position();
+    auto step = [&](double east) { return at.atDistanceAndAzimuth(east, 90); };
+    const QGeoCoordinate a = step(12), b = step(24), c = step(36);
+    Prepared prepared;
+    link.prepareMission(routeOf({{a.latitude(), a.longitude(), 12, 8}, {b.latitude(), b.longitude(), 12, 8},
+                                 {c.latitude(), c.longitude(), 12, 8}}), prepared.callback());
+    QTRY_VERIFY_WITH_TIMEOUT(prepared.done, 15000);
+    QVERIFY2(prepared.result.ok, qPrintable(prepared.result.message));
+    const int count = int(prepared.mission.items.size());
+    Result upload;
+    link.uploadMission(prepared.mission, {}, upload.callback());
+    QTRY_VERIFY_WITH_TIMEOUT(upload.done, 15000);
+    QVERIFY2(upload.result.ok, qPrintable(upload.result.message));
+    // The server's RoutePass: on board, not yet flown.
+    QTRY_COMPARE(v.missionCount(), count);
+    QCOMPARE(v.missionCurrent(), -1);
+    QCOMPARE(sim.world.store().list(QStringLiteral("RoutePass")).size(), size_t(1));
+
+    Result arm, fly;
+    link.arm(true, arm.callback());
+    QTRY_VERIFY(arm.done);
+    QVERIFY2(arm.result.ok, qPrintable(arm.result.message));
+    link.setMode(FlightMode::Auto, fly.callback());
+    QTRY_VERIFY(fly.done);
+    QVERIFY2(fly.result.ok, qPrintable(fly.result.message));
+    // The active waypoint advances through every waypoint, then the route is fully processed.
+    QTRY_COMPARE_WITH_TIMEOUT(v.missionState(), QStringLiteral("complete"), 30000);
+    QList<int> expected{-1}; // on board, then each waypoint in turn, then done
+    for (int i = 0; i < count; ++i)
+        expected << i;
+    expected << -1;
+    QCOMPARE(missionCurrents(batches), expected);
+    QCOMPARE(v.missionCurrent(), -1);
+    QVERIFY(sim.world.store().list(QStringLiteral("RoutePass")).empty());
+    // The other vehicle's link saw every event and took none of them.
+    QVERIFY(!bystander.last(TelemetryField::MissionCurrent).has_value());
+    QVERIFY(bystander.lastError().isEmpty());
+}
+
+void TstHciVehicleLink::routePassMalformedIsDropped()
+{
+    Server sim;
+    Operator op(sim.server.port(), "admin", "admin");
+    QTRY_VERIFY(op.session.isReady());
+    HciVehicleLink link(&op.client, op.vehicle("EMU-103"));
+    Vehicle v(&link);
+    QSignalSpy errors(&link, &VehicleLink::errorOccurred);
+    link.start();
+    QTRY_VERIFY(v.isConnected());
+    // A pass the server publishes with an index past its own count (written straight into the
+    // simulator's store, which publishes it as it would any change).
+    pb::DomainObjectWrapper w;
+    auto *pass = w.mutable_routepass();
+    pass->mutable_vehicle()->set_id(link.vehicleObjectId());
+    pass->set_waypointcount(4);
+    pass->set_waypointindex(9);
+    QVERIFY(sim.world.store().save(QStringLiteral("RoutePass"), w, 1).object);
+    QTRY_COMPARE(errors.count(), 1);
+    QVERIFY2(errors.at(0).at(0).toString().contains(QLatin1String("waypoint index 9 is outside the route's 4 waypoints")),
+             qPrintable(errors.at(0).at(0).toString()));
+    QVERIFY(!v.last(TelemetryField::MissionCurrent).has_value()); // nothing of it was taken
+    // The stream goes on: a well-formed pass for this vehicle is followed.
+    pass->set_waypointindex(1);
+    QVERIFY(sim.world.store().save(QStringLiteral("RoutePass"), w, 2).object);
+    QTRY_COMPARE(v.missionCurrent(), 1);
+    QCOMPARE(v.missionCount(), 4);
+    QCOMPARE(errors.count(), 1);
 }
 
 QTEST_GUILESS_MAIN(TstHciVehicleLink)

@@ -50,6 +50,7 @@ void FlightPlanLayer::reload()
         if (v)
             disconnect(v, nullptr, this, nullptr);
     m_vehicles.clear();
+    m_plans.clear();
     int role = -1;
     if (m_model) {
         const auto names = m_model->roleNames();
@@ -63,15 +64,29 @@ void FlightPlanLayer::reload()
         m_vehicles.emplace_back(v);
         if (!v)
             continue;
-        connect(v, &vehicle::Vehicle::missionChanged, this, [this] {
+        connect(v, &vehicle::Vehicle::missionChanged, this, [this, row] {
+            m_plans[size_t(row)].invalidate();
             emit plansChanged();
             repaint();
         });
         // Telemetry moves the vehicle's line to its waypoint, the active waypoint, the take-off point.
         connect(v, &vehicle::Vehicle::telemetryChanged, this, &FlightPlanLayer::repaint);
     }
+    m_plans.resize(m_vehicles.size());
     emit plansChanged();
     repaint();
+}
+
+void FlightPlanLayer::onViewportChanged()
+{
+    for (PlanPicture &plan : m_plans)
+        plan.invalidate(); // laid out for the new picture on the next paint
+    MapLayer::onViewportChanged();
+}
+
+int FlightPlanLayer::planRedraws(int row) const
+{
+    return row >= 0 && row < int(m_plans.size()) ? m_plans[size_t(row)].redraws() : 0;
 }
 
 vehicle::Vehicle *FlightPlanLayer::vehicleAt(int row) const
@@ -121,7 +136,6 @@ void FlightPlanLayer::paint(QPainter *painter)
             order.push_back(row);
     if (m_current >= 0 && m_current < int(m_vehicles.size()))
         order.push_back(m_current); // over the others
-    const QColor done(0x9e, 0x9e, 0x9e);
     // The take-off point of vehicles that report no home (the vehicle layer draws reported homes).
     for (int row : order) {
         const vehicle::Vehicle *v = vehicleAt(row);
@@ -137,56 +151,38 @@ void FlightPlanLayer::paint(QPainter *painter)
         painter->setPen(Qt::white);
         painter->drawText(box, Qt::AlignCenter, QStringLiteral("H"));
     }
+    const QRectF clip(QPointF(0, 0), view.size());
+    qint64 budget = kPictureBudget;
     for (int row : order) {
         const vehicle::Vehicle *v = vehicleAt(row);
         if (!v || v->mission().empty())
             continue;
-        const bool current = row == m_current;
-        const int active = activeWaypoint(row);
-        const bool complete = v->missionState() == QLatin1String("complete");
-        QColor color = vehicleColor(row);
-        if (!current && m_current >= 0)
-            color.setAlpha(150);
-        QPolygonF points;
-        for (const vehicle::MissionItem &item : v->mission())
-            points.append(view.geoToScreen(vehicle::coordinateOf(item)));
-        // A waypoint is behind once the vehicle flies to a later one (or the mission is complete).
-        auto behind = [&](int index) { return complete || (active >= 0 && index < active); };
-        for (int i = 1; i < points.size(); ++i) {
-            const bool flown = behind(i);
-            painter->setPen(flown ? QPen(done, 2, Qt::DashLine, Qt::RoundCap)
-                                  : QPen(color, current ? 4 : 2.5, Qt::SolidLine, Qt::RoundCap));
-            painter->drawLine(points[i - 1], points[i]);
+        PlanPicture &plan = m_plans[size_t(row)];
+        if (!plan.isLaidOut()) {
+            QPolygonF points;
+            points.reserve(qsizetype(v->mission().size()));
+            for (const vehicle::MissionItem &item : v->mission())
+                points.append(view.geoToScreen(vehicle::coordinateOf(item)));
+            plan.layOut(std::move(points));
         }
-        // From the vehicle to where it flies now.
+        PlanPicture::Look look;
+        look.current = row == m_current;
+        look.numbered = look.current || m_current < 0;
+        look.active = activeWaypoint(row);
+        look.complete = v->missionState() == QLatin1String("complete");
+        look.color = vehicleColor(row);
+        if (!look.current && m_current >= 0)
+            look.color.setAlpha(150);
+        // From the vehicle to where it flies now: it moves every frame, so it is not in the
+        // picture (drawn first, under the legs and waypoints).
         const QGeoCoordinate position = v->position();
-        if (active >= 0 && position.isValid()) {
-            painter->setPen(QPen(color, 2, Qt::DashLine, Qt::RoundCap));
-            painter->drawLine(view.geoToScreen(position), points[active]);
-        }
-        // Numbers for the current vehicle's waypoints only (text is the costly part); the others
-        // get plain dots, and nothing off the picture is drawn.
-        const QRectF picture = QRectF(QPointF(0, 0), view.size()).adjusted(-12, -12, 12, 12);
-        for (int i = 0; i < points.size(); ++i) {
-            if (!picture.contains(points[i]))
-                continue;
-            const bool isActive = i == active;
-            const bool numbered = current || m_current < 0;
-            const double radius = isActive ? 10 : numbered ? 8 : 4;
-            if (isActive) {
-                painter->setPen(QPen(QColor(0xff, 0xd6, 0x00), 3));
-                painter->setBrush(Qt::NoBrush);
-                painter->drawEllipse(points[i], radius + 4, radius + 4);
+        if (look.active >= 0 && position.isValid()) {
+            if (const auto line = PlanPicture::clipped(QLineF(view.geoToScreen(position), plan.points()[look.active]), clip)) {
+                painter->setPen(QPen(look.color, 2, Qt::DashLine, Qt::FlatCap)); // round dash ends cost a curve each
+                painter->drawLine(*line);
             }
-            painter->setPen(QPen(Qt::white, 1.5));
-            painter->setBrush(behind(i) ? done : color);
-            painter->drawEllipse(points[i], radius, radius);
-            if (!numbered && !isActive)
-                continue;
-            painter->setPen(Qt::white);
-            painter->drawText(QRectF(points[i] - QPointF(radius, radius), QSizeF(2 * radius, 2 * radius)), Qt::AlignCenter,
-                              QString::number(i + 1));
         }
+        plan.paint(*painter, look, clip, &budget);
     }
 }
 

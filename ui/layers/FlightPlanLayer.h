@@ -1,6 +1,7 @@
 #pragma once
 
 #include "MapLayer.h"
+#include "PlanPicture.h"
 
 #include <QAbstractItemModel>
 #include <QPointer>
@@ -18,7 +19,9 @@ namespace sortie::ui {
 // vehicle's colour, a dashed line from the vehicle to the waypoint it flies to, waypoints with
 // the active one ringed. The current vehicle's plan is drawn over the others, bolder and with
 // numbered waypoints (the others get dots: text is what costs when many vehicles fly missions).
-// Vehicles come from a list model's `vehicleRole` (the fleet's "vehicle").
+// Vehicles come from a list model's `vehicleRole` (the fleet's "vehicle"). Each plan is kept as a
+// picture (PlanPicture), drawn anew only when its waypoints, its active waypoint, its look or the
+// layout change; a frame of moving vehicles only redraws the lines to their waypoints.
 class FlightPlanLayer : public MapLayer
 {
     Q_OBJECT
@@ -43,8 +46,16 @@ public:
     Q_INVOKABLE int waypointCount(int row) const;
     Q_INVOKABLE int activeWaypoint(int row) const;
     Q_INVOKABLE QPointF waypointPosition(int row, int index) const;
+    // How many times the row's plan was drawn anew (not from its picture).
+    Q_INVOKABLE int planRedraws(int row) const;
+
+    // Pixels the plans' pictures may hold together (64 MB); plans beyond it are drawn each time.
+    static constexpr qint64 kPictureBudget = 16 * 1024 * 1024;
 
     void paint(QPainter *painter) override;
+
+protected:
+    void onViewportChanged() override;
 
 signals:
     void modelChanged();
@@ -58,7 +69,7 @@ private:
     QPointer<QAbstractItemModel> m_model;
     QString m_vehicleRole = QStringLiteral("vehicle");
     std::vector<QPointer<vehicle::Vehicle>> m_vehicles;
-    std::vector<int> m_active; // each row's active waypoint at the last repaint
+    std::vector<PlanPicture> m_plans; // by row
     int m_current = -1;
 };
 

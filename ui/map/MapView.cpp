@@ -3,6 +3,7 @@
 #include "Graticule.h"
 #include "WebMercator.h"
 
+#include <QFontMetrics>
 #include <QGuiApplication>
 #include <QPainter>
 #include <QStyleHints>
@@ -102,6 +103,26 @@ void MapView::setGraticuleVisible(bool visible)
     m_graticule = visible;
     emit graticuleVisibleChanged();
     update();
+}
+
+qreal MapView::labelBandTop() const
+{
+    return m_graticule ? Graticule::labelBands(QFontMetrics(Graticule::labelFont(QFont()))).top() : 0;
+}
+
+qreal MapView::labelBandLeft() const
+{
+    return m_graticule ? Graticule::labelBands(QFontMetrics(Graticule::labelFont(QFont()))).left() : 0;
+}
+
+QList<QRectF> MapView::graticuleLabelRects() const
+{
+    QList<QRectF> rects;
+    if (!m_graticule)
+        return rects;
+    for (const Graticule::Label &l : Graticule::labels(m_viewport, QFontMetrics(Graticule::labelFont(QFont()))))
+        rects.append(l.rect);
+    return rects;
 }
 
 void MapView::setInteractive(bool interactive)

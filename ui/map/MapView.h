@@ -27,6 +27,10 @@ class MapView : public QQuickPaintedItem
     Q_PROPERTY(sortie::ui::TileSource *tileSource READ tileSource WRITE setTileSource NOTIFY tileSourceChanged)
     Q_PROPERTY(bool dark READ isDark WRITE setDark NOTIFY darkChanged)
     Q_PROPERTY(bool graticuleVisible READ isGraticuleVisible WRITE setGraticuleVisible NOTIFY graticuleVisibleChanged)
+    // The bands along the top and left edges where the graticule's labels go (0 when it is hidden):
+    // map controls laid out clear of them never cover a label.
+    Q_PROPERTY(qreal labelBandTop READ labelBandTop NOTIFY graticuleVisibleChanged)
+    Q_PROPERTY(qreal labelBandLeft READ labelBandLeft NOTIFY graticuleVisibleChanged)
     Q_PROPERTY(bool interactive READ isInteractive WRITE setInteractive NOTIFY interactiveChanged)
     Q_PROPERTY(QGeoCoordinate cursorCoordinate READ cursorCoordinate NOTIFY cursorChanged)
     Q_PROPERTY(bool cursorInside READ isCursorInside NOTIFY cursorChanged)
@@ -59,6 +63,10 @@ public:
     void setDark(bool dark);
     bool isGraticuleVisible() const { return m_graticule; }
     void setGraticuleVisible(bool visible);
+    qreal labelBandTop() const;
+    qreal labelBandLeft() const;
+    // Where the graticule's labels are now, in item pixels (for layout checks).
+    Q_INVOKABLE QList<QRectF> graticuleLabelRects() const;
     bool isInteractive() const { return m_interactive; }
     void setInteractive(bool interactive);
     QGeoCoordinate cursorCoordinate() const { return m_cursor; }

@@ -4,7 +4,9 @@ import Sortie.Ui
 
 // A map with its furniture: zoom buttons, scale bar, attribution, rubber band. Layers declared
 // inside a MapPane sit above the map and should say `map: pane.map; anchors.fill: parent`.
-// The pane owns its own tile source, chosen by `mapSource`.
+// The pane owns its own tile source, chosen by `mapSource`. The graticule labels the top and left
+// edges: controls placed on the map keep `controlsTop` / `controlsLeft` from them, as the pane's
+// own do, so that none covers a label.
 Item {
     id: pane
     property alias map: mapView
@@ -14,6 +16,8 @@ Item {
     property string mbtilesFile: ""
     property bool dark: false
     default property alias layers: overlay.data
+    readonly property real controlsTop: mapView.labelBandTop + 6
+    readonly property real controlsLeft: mapView.labelBandLeft + 6
 
     XyzTileSource {
         id: webTiles
@@ -49,9 +53,11 @@ Item {
     }
 
     Column {
+        objectName: "zoomButtons"
         anchors.right: parent.right
         anchors.top: parent.top
-        anchors.margins: 10
+        anchors.rightMargin: 10
+        anchors.topMargin: pane.controlsTop
         spacing: 4
         RoundButton {
             objectName: "zoomInButton"
@@ -72,9 +78,11 @@ Item {
     }
 
     Rectangle {
+        objectName: "scaleBarFrame"
         anchors.left: parent.left
         anchors.bottom: parent.bottom
-        anchors.margins: 8
+        anchors.leftMargin: pane.controlsLeft
+        anchors.bottomMargin: 8
         width: scaleBar.width + 8
         height: scaleBar.height + 4
         radius: 3
@@ -92,6 +100,7 @@ Item {
     }
 
     Label {
+        objectName: "attributionLabel"
         anchors.right: parent.right
         anchors.bottom: parent.bottom
         anchors.margins: 4

@@ -147,7 +147,7 @@ Page {
                 visible: page.tool === "scan"
                 anchors.top: parent.top
                 anchors.horizontalCenter: parent.horizontalCenter
-                anchors.topMargin: 10
+                anchors.topMargin: pane.controlsTop
                 RowLayout {
                     ComboBox {
                         objectName: "segmentToolPicker"

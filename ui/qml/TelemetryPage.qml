@@ -123,9 +123,11 @@ Page {
                     autoFit: true // the fleet framed as it reports, until the operator moves the map
                 }
                 Row {
+                    objectName: "flyMapControls"
                     anchors.left: parent.left
                     anchors.top: parent.top
-                    anchors.margins: 10
+                    anchors.leftMargin: pane.controlsLeft
+                    anchors.topMargin: pane.controlsTop
                     spacing: 4
                     Button {
                         objectName: "fitAllButton"
