@@ -315,7 +315,8 @@ private slots:
         QVERIFY(a);
         QCOMPARE(a->protocol(), QStringLiteral("Replay")); // never a live vehicle
         QCOMPARE(replay.fleet()->index(0).data(flightlog::ReplayFleet::ReplayRole).toBool(), true);
-        // The history holds the whole span at once, for the plots.
+        // The history is filled with the whole span in the background, for the plots.
+        QTRY_VERIFY(replay.isHistoryLoaded());
         QCOMPARE(a->history().series(TelemetryField::Latitude).size(), flown.size());
         QCOMPARE(a->history().series(TelemetryField::Latitude).newest().time, flown.back().time);
 
@@ -362,6 +363,70 @@ private slots:
         a->arm();
         QVERIFY(result.wait(2000));
         QCOMPARE(result.first().at(1).toBool(), false);
+    }
+
+    void replayOpensBeforeTheHistoriesAreDecoded()
+    {
+        QTemporaryDir dir;
+        std::vector<test::FlightSample> flown;
+        const QString path = recordTwoFlights(dir.path(), &flown);
+        flightlog::ReplayController replay;
+        QSignalSpy loaded(&replay, &flightlog::ReplayController::historyLoadedChanged);
+        QVERIFY2(replay.open(path), qPrintable(replay.errorString()));
+        // The histories arrive through the event loop, which has not run yet: this is the lazy path.
+        QVERIFY(!replay.isHistoryLoaded());
+        Vehicle *a = replay.fleet()->vehicleAt(replay.log()->vehicleIndex(QStringLiteral("EMU-101")));
+        QVERIFY(a);
+        QVERIFY(std::fabs(a->position().latitude() - flown.front().lat) < 1e-7);
+        QVERIFY(std::fabs(a->position().longitude() - flown.front().lon) < 1e-7);
+        QVERIFY(a->history().series(TelemetryField::Latitude).size() < flown.size());
+        // Scrub before the histories are there: still where it was.
+        replay.seek(flown[300].time);
+        QVERIFY(std::fabs(a->position().latitude() - flown[300].lat) < 1e-7);
+        // Then the histories: the whole span, the position untouched by them.
+        QVERIFY(loaded.wait(5000));
+        QVERIFY(replay.isHistoryLoaded());
+        const auto &lat = a->history().series(TelemetryField::Latitude);
+        QCOMPARE(lat.size(), flown.size());
+        QCOMPARE(lat.oldest().time, flown.front().time);
+        QCOMPARE(lat.newest().time, flown.back().time);
+        QVERIFY(std::fabs(a->position().latitude() - flown[300].lat) < 1e-7);
+        QCOMPARE(replay.position(), qint64(flown[300].time));
+        // A second open while a fill runs: the first log's histories never reach the new vehicles.
+        QVERIFY(replay.open(path));
+        QVERIFY(!replay.isHistoryLoaded());
+        replay.close();
+        QVERIFY(!replay.isHistoryLoaded());
+    }
+
+    void thinnedSeriesKeepsTheWholeSpan()
+    {
+        QTemporaryDir dir;
+        std::vector<test::FlightSample> flown;
+        const QString path = recordTwoFlights(dir.path(), &flown);
+        QString error;
+        const auto log = FlightLog::open(path, &error);
+        QVERIFY2(log, qPrintable(error));
+        const int a = log->vehicleIndex(QStringLiteral("EMU-101"));
+        const auto all = log->series(a, TelemetryField::Latitude);
+        const size_t perField = all.size() / 4;
+        const auto thinned = log->thinnedSeries(a, perField);
+        QVERIFY(thinned);
+        std::vector<vehicle::TelemetryUpdate> lat;
+        for (const auto &u : *thinned)
+            if (u.field == TelemetryField::Latitude)
+                lat.push_back(u);
+        QVERIFY(lat.size() <= perField);
+        QVERIFY(lat.size() > perField / 2);
+        QCOMPARE(lat.front().time, all.front().time);
+        int64_t widestGap = 0;
+        for (size_t i = 1; i < lat.size(); ++i) {
+            QVERIFY(lat[i].time > lat[i - 1].time);
+            widestGap = std::max(widestGap, lat[i].time - lat[i - 1].time);
+        }
+        QVERIFY(all.back().time - lat.back().time <= widestGap); // evenly to the end of the span
+        std::atomic_bool cancelled{true};
+        QVERIFY(!log->thinnedSeries(a, perField, &cancelled));
     }
 
     void compareFollowsThePlan()
