@@ -12,6 +12,7 @@
 #include "HciSession.h"
 #include "MissionController.h"
 #include "ReplayController.h"
+#include "ServerHistoryRequest.h"
 #include "RouteAnalyzer.h"
 #include "RouteAutosave.h"
 #include "RouteDocument.h"
@@ -150,6 +151,8 @@ int main(int argc, char *argv[])
     sortie::flightlog::FleetRecording recording(&fleet, &recorder, &session);
     sortie::flightlog::ReplayController replay;
     sortie::flightlog::ComparisonController comparison(&replay);
+    sortie::flightlog::ServerHistoryRequest serverHistory(&hciClient, &replay);
+    serverHistory.setFleet(&fleet);
     sortie::app::DemoServer demo;
     if (options.demo) {
         QString error;
@@ -167,6 +170,7 @@ int main(int argc, char *argv[])
                                  {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&fleet)},
                                  {QStringLiteral("replay"), QVariant::fromValue(&replay)},
                                  {QStringLiteral("comparison"), QVariant::fromValue(&comparison)},
+                                 {QStringLiteral("serverHistory"), QVariant::fromValue(&serverHistory)},
                                  {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(&recovery)},
                                  {QStringLiteral("elevation"), QVariant::fromValue<QObject *>(elevation.service())}});
     engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));

@@ -7,6 +7,7 @@
 #include "FlightLogTestSupport.h"
 #include "FlightRecorder.h"
 #include "ReplayController.h"
+#include "ServerHistoryRequest.h"
 #include "RouteComparison.h"
 #include "Vehicle.h"
 
@@ -14,6 +15,7 @@
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
+#include <QDateTime>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -427,6 +429,58 @@ private slots:
         QVERIFY(all.back().time - lat.back().time <= widestGap); // evenly to the end of the span
         std::atomic_bool cancelled{true};
         QVERIFY(!log->thinnedSeries(a, perField, &cancelled));
+    }
+
+    void serverHistoryChoice()
+    {
+        flightlog::ReplayController replay;
+        flightlog::ServerHistoryRequest request(nullptr, &replay);
+        const qint64 now = QDateTime(QDate(2026, 11, 24), QTime(12, 0, 30), Qt::UTC).toMSecsSinceEpoch();
+        request.setClock([now] { return now; });
+        QCOMPARE(request.canFetch(), false);
+        QVERIFY2(request.problem().contains(QStringLiteral("connect to a server")), qPrintable(request.problem()));
+        request.setVehicles({{QStringLiteral("EMU-101"), 7}, {QStringLiteral("EMU-102"), 9}});
+        request.setVehicleIndex(1);
+        // Opening the dialog: the last hour up to now, the same vehicle still chosen.
+        QSignalSpy changed(&request, &flightlog::ServerHistoryRequest::choiceChanged);
+        request.reset();
+        QVERIFY(changed.count() >= 1);
+        QCOMPARE(request.vehicleNames(), QStringList({QStringLiteral("EMU-101"), QStringLiteral("EMU-102")}));
+        QCOMPARE(request.vehicleIndex(), 1);
+        QCOMPARE(request.fromText(), QStringLiteral("2026-11-24 11:00:30"));
+        QCOMPARE(request.toText(), QStringLiteral("2026-11-24 12:00:30"));
+        QVERIFY2(request.canFetch(), qPrintable(request.problem()));
+        QCOMPARE(request.range()->first, now - 3600000);
+        QCOMPARE(request.range()->second, now);
+        // Times are UTC, to the second or the minute, with a space or a T.
+        QCOMPARE(flightlog::ServerHistoryRequest::parseTime(QStringLiteral(" 2026-11-24T11:15 ")), now - 45 * 60000 - 30000);
+        QVERIFY(!flightlog::ServerHistoryRequest::parseTime(QStringLiteral("2026-11-24 25:00")));
+        // Each problem named; nothing is sent while there is one.
+        request.setFromText(QStringLiteral("yesterday"));
+        QVERIFY2(request.problem().contains(QStringLiteral("\"yesterday\" is not a time")), qPrintable(request.problem()));
+        QVERIFY(!request.fetch());
+        QVERIFY(!request.isBusy());
+        request.setFromText(QStringLiteral("2026-11-24 12:00:30"));
+        QCOMPARE(request.problem(), QStringLiteral("The start must be before the end."));
+        request.setFromText(QStringLiteral("2026-11-24 13:00"));
+        request.setToText(QStringLiteral("2026-11-24 14:00"));
+        QCOMPARE(request.problem(), QStringLiteral("The start is in the future."));
+        request.setFromText(QStringLiteral("2026-11-22 12:00"));
+        request.setToText(QStringLiteral("2026-11-24 12:00"));
+        QVERIFY2(request.problem().contains(QStringLiteral("24 hours")), qPrintable(request.problem()));
+        request.setVehicleIndex(-1);
+        QCOMPARE(request.problem(), QStringLiteral("Choose a vehicle."));
+        request.chooseLastHour();
+        request.setVehicleIndex(0);
+        QVERIFY(request.canFetch());
+        // No server behind it: the fetch ends at once with the reason, and the replay stays closed.
+        QVERIFY(request.fetch());
+        QVERIFY(!request.isBusy());
+        QVERIFY2(request.errorString().contains(QStringLiteral("not connected")), qPrintable(request.errorString()));
+        QVERIFY(!replay.isActive());
+        // Opening the dialog again clears the error.
+        request.reset();
+        QVERIFY(request.errorString().isEmpty());
     }
 
     void compareFollowsThePlan()

@@ -1,13 +1,23 @@
 // The replay in the fly view, offscreen: a log opened on the telemetry page shows its vehicles
 // marked as a replay; Play moves the clock, a click on the timeline scrubs, the next-event button
-// jumps to an event, and each time the vehicle is drawn on the map where the log says it was.
+// jumps to an event, and each time the vehicle is drawn on the map where the log says it was. The
+// server's history of a vehicle chosen in the timeline's dialog, fetched from the simulator, replays
+// with the vehicle drawn where the server had it.
 #include "ComparisonController.h"
+#include "ConnectionController.h"
+#include "HciClient.h"
+#include "HciServer.h"
+#include "HciSession.h"
+#include "ServerHistoryRequest.h"
+#include "SimWorld.h"
+#include "VehicleFleet.h"
 #include "FlightLog.h"
 #include "MissionFiles.h"
 #include "FlightLogTestSupport.h"
 #include "QuickScene.h"
 #include "ReplayController.h"
 
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QtQml/qqmlextensionplugin.h>
@@ -151,6 +161,132 @@ private slots:
         QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(close).toPoint());
         QTRY_VERIFY(!banner->isVisible());
         QVERIFY(!replay.isActive());
+    }
+
+    void serverHistoryFromTheDialog()
+    {
+        sim::SimWorld::Config config;
+        config.telemetryRateHz = 20;
+        config.users = {{0, QStringLiteral("admin"), QStringLiteral("admin"), true}};
+        sim::SimWorld world(config);
+        sim::HciServer server(world);
+        QVERIFY(server.listen(QHostAddress::LocalHost, 0));
+        hci::HciSession session;
+        hci::HciClient client(&session);
+        client::ConnectionController connection(&session);
+        client::VehicleFleet fleet(&client);
+        flightlog::ReplayController replay;
+        flightlog::ServerHistoryRequest history(&client, &replay);
+        history.setFleet(&fleet);
+        QVERIFY(connection.connectToServer(QStringLiteral("127.0.0.1:%1").arg(server.port()), QStringLiteral("admin"), QStringLiteral("admin")));
+        QTRY_COMPARE_WITH_TIMEOUT(fleet.count(), 3, 10000);
+        vehicle::Vehicle *live = nullptr;
+        for (int row = 0; row < fleet.count(); ++row)
+            if (fleet.vehicleAt(row)->name() == QLatin1String("EMU-102"))
+                live = fleet.vehicleAt(row);
+        QVERIFY(live);
+        // Fly a little: take off and climb, remembering where the live link had the vehicle when.
+        struct Fix { qint64 time; double lat = qQNaN(), lon = qQNaN(), agl = qQNaN(); };
+        std::vector<Fix> seen;
+        connect(live->link(), &vehicle::VehicleLink::telemetryReceived, this, [&seen](const vehicle::TelemetryBatch &batch) {
+            for (const auto &u : batch) {
+                if (seen.empty() || seen.back().time != u.time)
+                    seen.push_back({u.time});
+                if (u.field == vehicle::TelemetryField::Latitude)
+                    seen.back().lat = u.value / test::kRad;
+                else if (u.field == vehicle::TelemetryField::Longitude)
+                    seen.back().lon = u.value / test::kRad;
+                else if (u.field == vehicle::TelemetryField::AltitudeAgl)
+                    seen.back().agl = u.value;
+            }
+        });
+        QTRY_VERIFY_WITH_TIMEOUT(live->position().isValid(), 10000);
+        live->arm();
+        QTRY_VERIFY_WITH_TIMEOUT(live->armed(), 10000);
+        live->takeoff(10);
+        QTRY_VERIFY_WITH_TIMEOUT(live->altitudeAgl() > 4, 15000);
+
+        test::QuickScene scene(R"(
+            import QtQuick
+            import Sortie.Ui
+            TelemetryPage {
+                units: DisplayUnits {}
+            }
+        )", QSize(1280, 800), {{QStringLiteral("fleet"), QVariant::fromValue(&fleet)},
+                                {QStringLiteral("replay"), QVariant::fromValue(&replay)},
+                                {QStringLiteral("serverHistory"), QVariant::fromValue(&history)}});
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        scene.grab();
+        auto *button = scene.find<QQuickItem>(QStringLiteral("serverHistoryButton"));
+        QVERIFY(button && button->isVisible());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(button).toPoint());
+        auto *dialog = scene.find<QObject>(QStringLiteral("serverHistoryDialog"));
+        QVERIFY(dialog);
+        QTRY_VERIFY(dialog->property("opened").toBool());
+        // The server's vehicles, the last hour; the vehicle chosen in the list.
+        QCOMPARE(history.vehicleNames().size(), 3);
+        QVERIFY(history.canFetch());
+        auto *vehicles = scene.find<QQuickItem>(QStringLiteral("historyVehicleBox"));
+        QVERIFY(vehicles);
+        QCOMPARE(vehicles->property("count").toInt(), 3);
+        const int row = int(history.vehicleNames().indexOf(QStringLiteral("EMU-102")));
+        QMetaObject::invokeMethod(vehicles, "activated", Q_ARG(int, row));
+        QCOMPARE(history.vehicleIndex(), row);
+        // A start after the end is refused in the dialog before anything is sent.
+        auto *from = scene.find<QQuickItem>(QStringLiteral("historyFromField"));
+        auto *to = scene.find<QQuickItem>(QStringLiteral("historyToField"));
+        QVERIFY(from && to);
+        QCOMPARE(from->property("text").toString(), history.fromText());
+        const QString toText = history.toText();
+        history.setFromText(toText);
+        auto *problem = scene.find<QQuickItem>(QStringLiteral("historyProblem"));
+        auto *fetch = scene.find<QQuickItem>(QStringLiteral("historyFetchButton"));
+        QVERIFY(problem && fetch);
+        QTRY_VERIFY(problem->isVisible());
+        QCOMPARE(problem->property("text").toString(), QStringLiteral("The start must be before the end."));
+        QVERIFY(!fetch->isEnabled());
+        history.chooseLastHour();
+        QTRY_VERIFY(fetch->isEnabled());
+        QVERIFY(!problem->isVisible());
+
+        // Fetch: progress while pages arrive, then the replay opens and the dialog closes.
+        QSignalSpy progress(&history, &flightlog::ServerHistoryRequest::progressChanged);
+        QSignalSpy opened(&history, &flightlog::ServerHistoryRequest::opened);
+        scene.grab();
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(fetch).toPoint());
+        QVERIFY(history.isBusy());
+        QVERIFY2(opened.wait(15000), qPrintable(history.errorString()));
+        QVERIFY(progress.count() >= 1);
+        QTRY_VERIFY(!dialog->property("visible").toBool());
+        QVERIFY(replay.isActive());
+        QCOMPARE(replay.fleet()->count(), 1);
+        vehicle::Vehicle *replayed = replay.fleet()->vehicleAt(0);
+        QCOMPARE(replayed->name(), QStringLiteral("EMU-102"));
+        auto *banner = scene.find<QQuickItem>(QStringLiteral("replayBanner"));
+        QTRY_VERIFY(banner && banner->isVisible());
+
+        // Where the server had it: a time the live link saw during the climb, drawn there.
+        const auto fixed = std::find_if(seen.rbegin(), seen.rend(), [&](const Fix &f) {
+            return f.time <= replay.end() && std::isfinite(f.lat) && std::isfinite(f.agl) && f.agl > 2;
+        });
+        QVERIFY(fixed != seen.rend());
+        replay.seek(fixed->time);
+        QVERIFY2(std::fabs(replayed->position().latitude() - fixed->lat) < 1e-6, qPrintable(QString::number(replayed->position().latitude() - fixed->lat)));
+        QVERIFY(std::fabs(replayed->position().longitude() - fixed->lon) < 1e-6);
+        QVERIFY(std::fabs(replayed->altitudeAgl() - fixed->agl) < 0.01);
+        QObject *map = scene.root()->property("map").value<QObject *>();
+        auto *layer = scene.find<QQuickItem>(QStringLiteral("vehicleLayer"));
+        QVERIFY(map && layer);
+        QTRY_COMPARE(layer->property("count").toInt(), 1);
+        QMetaObject::invokeMethod(map, "fitBounds", Q_ARG(double, fixed->lat - 0.001), Q_ARG(double, fixed->lon - 0.001),
+                                  Q_ARG(double, fixed->lat + 0.001), Q_ARG(double, fixed->lon + 0.001), Q_ARG(qreal, 40));
+        auto offMap = [&] {
+            QPointF expected, drawn;
+            QMetaObject::invokeMethod(map, "fromCoordinate", Q_RETURN_ARG(QPointF, expected), Q_ARG(QGeoCoordinate, QGeoCoordinate(fixed->lat, fixed->lon)));
+            QMetaObject::invokeMethod(layer, "vehiclePosition", Q_RETURN_ARG(QPointF, drawn), Q_ARG(int, 0));
+            return QLineF(expected, drawn).length();
+        };
+        QTRY_VERIFY2(offMap() < 1.5, "the replayed vehicle is not drawn where the server had it");
     }
 };
 

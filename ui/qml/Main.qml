@@ -17,6 +17,7 @@ ApplicationWindow {
     // Flight-log replay (the timeline on the telemetry page); null when the program has none.
     property ReplayController replay: null
     property ComparisonController comparison: null
+    property ServerHistoryRequest serverHistory: null   // the server's history into the replay
     // Edits a previous run left unsaved, offered at start.
     property AutosaveRecovery recovery: null
     property string connectionState: connection ? connection.state : "Disconnected"
@@ -118,6 +119,7 @@ ApplicationWindow {
             objectName: "telemetryPage"
             fleet: window.fleet
             replay: window.replay
+            serverHistory: window.serverHistory
             comparison: window.comparison
             units: units
             dark: window.dark

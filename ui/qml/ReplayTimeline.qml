@@ -10,6 +10,8 @@ import Sortie.Ui
 ToolBar {
     id: bar
     required property ReplayController replay
+    // The connected server's history, replayed in the same controller; null when the program has none.
+    property ServerHistoryRequest serverHistory: null
     property string exportMessage
 
     FileDialog {
@@ -37,6 +39,17 @@ ToolBar {
                 objectName: "openLogButton"
                 text: qsTr("Open log…")
                 onClicked: openDialog.open()
+            }
+            Button {
+                objectName: "serverHistoryButton"
+                visible: bar.serverHistory !== null
+                text: qsTr("Server history…")
+                onClicked: historyDialog.item.open()
+                Loader {
+                    id: historyDialog
+                    active: bar.serverHistory !== null
+                    sourceComponent: ServerHistoryDialog { request: bar.serverHistory }
+                }
             }
             Rectangle {
                 objectName: "replayBanner"

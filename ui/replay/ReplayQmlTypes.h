@@ -2,6 +2,7 @@
 
 #include "ComparisonController.h"
 #include "ReplayController.h"
+#include "ServerHistoryRequest.h"
 
 #include <QtQml/qqmlregistration.h>
 
@@ -39,6 +40,14 @@ struct ComparisonControllerForeign
     QML_FOREIGN(sortie::flightlog::ComparisonController)
     QML_NAMED_ELEMENT(ComparisonController)
     QML_UNCREATABLE("The application provides the comparison.")
+};
+
+struct ServerHistoryRequestForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::flightlog::ServerHistoryRequest)
+    QML_NAMED_ELEMENT(ServerHistoryRequest)
+    QML_UNCREATABLE("The application provides the server history request.")
 };
 
 } // namespace sortie::ui
