@@ -6,6 +6,7 @@
 #include "FlightLogInfo.h"
 #include "FlightLogTestSupport.h"
 #include "FlightRecorder.h"
+#include "RecordingSettings.h"
 #include "ReplayController.h"
 #include "ServerHistoryRequest.h"
 #include "RouteComparison.h"
@@ -16,6 +17,7 @@
 #include <QFile>
 #include <QJsonArray>
 #include <QDateTime>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -239,6 +241,96 @@ private slots:
         const QStringList removed = flightlog::FlightLogWriter::pruneFolder(dir.path(), 70 << 10, newest);
         QVERIFY(!removed.isEmpty());
         QVERIFY(QFile::exists(newest));
+    }
+
+    void limitsChangeWhileRecording()
+    {
+        QTemporaryDir dir;
+        // An older session in the folder, for the folder limit to remove.
+        const QString old = QDir(dir.path()).filePath(QStringLiteral("session-old.sortielog"));
+        {
+            QFile f(old);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray(200 << 10, 'x'));
+            f.flush();
+            QVERIFY(f.setFileTime(QDateTime::currentDateTimeUtc().addDays(-1), QFileDevice::FileModificationTime));
+        }
+        const QString path = QDir(dir.path()).filePath(QStringLiteral("live.sortielog"));
+        ScriptedLink link(QStringLiteral("1"), QStringLiteral("EMU-101"));
+        Vehicle v(&link);
+        FlightRecorder recorder({path, {}, 100}); // the defaults: 256 MB a log, 4 GB the folder
+        QVERIFY(recorder.start());
+        recorder.addVehicle(&v);
+        const auto flight = test::flyAlong(kLegs, kT0, 20);
+        auto fly = [&](size_t from, size_t to) {
+            for (size_t i = from; i < to && i < flight.size(); ++i) {
+                link.send(test::telemetryAt(flight[i].time, flight[i].lat, flight[i].lon, 20, flight[i].heading, true, 4));
+                if (i % 100 == 99)
+                    recorder.flush();
+            }
+        };
+        fly(0, flight.size() / 2);
+        recorder.flush();
+        QTRY_VERIFY(QFileInfo(path).size() + QFileInfo(path + QStringLiteral("-wal")).size() > (16 << 10));
+        QCOMPARE(recorder.path(), path);
+        QVERIFY(QFile::exists(old));
+
+        // A tiny cap while recording: the log continues in a new part without a restart.
+        QSignalSpy rotated(&recorder, &FlightRecorder::pathChanged);
+        recorder.setLimits({8 << 10, 0});
+        QCOMPARE(recorder.limits().maxFileBytes, qint64(8 << 10));
+        QVERIFY(rotated.wait(5000));
+        QCOMPARE(QFileInfo(recorder.path()).fileName(), QStringLiteral("live-2.sortielog"));
+        // A folder limit: the oldest log goes, the one being written stays.
+        recorder.setLimits({0, 1});
+        QTRY_VERIFY(!QFile::exists(old));
+        QVERIFY(QFile::exists(recorder.path()));
+        const QString second = recorder.path();
+        fly(flight.size() / 2, flight.size());
+        recorder.stop();
+        QString error;
+        const auto log = FlightLog::open(second, &error);
+        QVERIFY2(log, qPrintable(error));
+        QCOMPARE(log->vehicles()[0].name(), QStringLiteral("EMU-101"));
+        QVERIFY(log->vehicles()[0].counts[size_t(TelemetryField::Latitude)] >= flight.size() / 2 - 1);
+    }
+
+    void recordingSettingsCheckSaveAndApply()
+    {
+        QTemporaryDir dir;
+        QSettings storage(QDir(dir.path()).filePath(QStringLiteral("settings.ini")), QSettings::IniFormat);
+        storage.setValue(QStringLiteral("flightlog/maxFileMB"), 64);
+        storage.setValue(QStringLiteral("flightlog/maxFolderMB"), QStringLiteral("lots")); // unreadable: the default
+        QCOMPARE(flightlog::RecordingSettings::stored(storage).maxFileBytes, qint64(64) << 20);
+        QCOMPARE(flightlog::RecordingSettings::stored(storage).maxFolderBytes, flightlog::RecordingLimits{}.maxFolderBytes);
+        FlightRecorder recorder({QDir(dir.path()).filePath(QStringLiteral("logs/a.sortielog")), {}, 100});
+        flightlog::RecordingSettings settings(&storage, &recorder);
+        QCOMPARE(recorder.limits().maxFileBytes, qint64(64) << 20); // the stored limits, before the start
+        QCOMPARE(settings.maxFileMB(), 64);
+        QCOMPARE(settings.maxFolderMB(), 4096);
+        QVERIFY(recorder.start());
+        QCOMPARE(settings.currentLog(), QStringLiteral("a.sortielog"));
+        QVERIFY(settings.folder().endsWith(QStringLiteral("logs")));
+        settings.refresh();
+        QVERIFY2(settings.folderSummary().contains(QStringLiteral("in 1 log")), qPrintable(settings.folderSummary()));
+        // Refused, with the reason, and nothing changes.
+        QSignalSpy changed(&settings, &flightlog::RecordingSettings::limitsChanged);
+        QVERIFY(!settings.apply(100, 50));
+        QVERIFY2(settings.errorString().contains(QStringLiteral("at least one whole log")), qPrintable(settings.errorString()));
+        QVERIFY(!settings.apply(-1, 0));
+        QVERIFY(!settings.errorString().isEmpty());
+        QCOMPARE(changed.count(), 0);
+        QCOMPARE(storage.value(QStringLiteral("flightlog/maxFileMB")).toInt(), 64);
+        // Accepted: saved, and in force in the running recorder.
+        QVERIFY(settings.apply(32, 0));
+        QVERIFY(settings.errorString().isEmpty());
+        QCOMPARE(changed.count(), 1);
+        QCOMPARE(recorder.limits().maxFileBytes, qint64(32) << 20);
+        QCOMPARE(recorder.limits().maxFolderBytes, qint64(0));
+        QCOMPARE(storage.value(QStringLiteral("flightlog/maxFileMB")).toInt(), 32);
+        QCOMPARE(storage.value(QStringLiteral("flightlog/maxFolderMB")).toInt(), 0);
+        QCOMPARE(flightlog::RecordingSettings::stored(storage).maxFolderBytes, qint64(0)); // 0 stays "no limit"
+        recorder.stop();
     }
 
     void exportsParseBack()

@@ -18,6 +18,7 @@ ApplicationWindow {
     property ReplayController replay: null
     property ComparisonController comparison: null
     property ServerHistoryRequest serverHistory: null   // the server's history into the replay
+    property RecordingSettings recordingSettings: null  // the flight logs' folder and limits (Logs…)
     // Edits a previous run left unsaved, offered at start.
     property AutosaveRecovery recovery: null
     property string connectionState: connection ? connection.state : "Disconnected"
@@ -75,6 +76,19 @@ ApplicationWindow {
                 onClicked: window.openMapSource()
                 ToolTip.visible: hovered
                 ToolTip.text: qsTr("Choose the map source (Ctrl+M)")
+            }
+            ToolButton {
+                objectName: "logSettingsButton"
+                visible: window.recordingSettings !== null
+                text: qsTr("Logs…")
+                onClicked: logSettingsDialog.item.open()
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Where flight logs are recorded, and how much they may take")
+                Loader {
+                    id: logSettingsDialog
+                    active: window.recordingSettings !== null
+                    sourceComponent: FlightLogSettingsDialog { settings: window.recordingSettings }
+                }
             }
             ToolButton {
                 objectName: "unitsButton"

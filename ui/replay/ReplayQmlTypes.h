@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ComparisonController.h"
+#include "RecordingSettings.h"
 #include "ReplayController.h"
 #include "ServerHistoryRequest.h"
 
@@ -48,6 +49,14 @@ struct ServerHistoryRequestForeign
     QML_FOREIGN(sortie::flightlog::ServerHistoryRequest)
     QML_NAMED_ELEMENT(ServerHistoryRequest)
     QML_UNCREATABLE("The application provides the server history request.")
+};
+
+struct RecordingSettingsForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::flightlog::RecordingSettings)
+    QML_NAMED_ELEMENT(RecordingSettings)
+    QML_UNCREATABLE("The application provides the recording settings.")
 };
 
 } // namespace sortie::ui
