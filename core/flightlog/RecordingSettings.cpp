@@ -62,6 +62,14 @@ int RecordingSettings::maxFolderMB() const
     return m_recorder ? int(m_recorder->limits().maxFolderBytes >> 20) : 0;
 }
 
+QString RecordingSettings::limitsText() const
+{
+    const int file = maxFileMB(), folder = maxFolderMB();
+    return tr("In force: %1; %2.")
+        .arg(file > 0 ? tr("a log up to %1 MB").arg(file) : tr("logs of any size"),
+             folder > 0 ? tr("the folder up to %1 MB").arg(folder) : tr("the folder without limit"));
+}
+
 QString RecordingSettings::folder() const
 {
     return m_recorder ? QDir::toNativeSeparators(m_recorder->folder()) : QString();
@@ -100,8 +108,8 @@ void RecordingSettings::refresh()
 {
     int logs = 0;
     const qint64 bytes = m_recorder ? FlightLogWriter::folderBytes(m_recorder->folder(), &logs) : 0;
-    const QString summary = logs == 1 ? tr("%1 in 1 log").arg(QLocale().formattedDataSize(bytes))
-                                      : tr("%1 in %2 logs").arg(QLocale().formattedDataSize(bytes)).arg(logs);
+    const QString summary = logs == 1 ? tr("%1 in 1 log").arg(QLocale().formattedDataSize(bytes, 2, QLocale::DataSizeTraditionalFormat))
+                                      : tr("%1 in %2 logs").arg(QLocale().formattedDataSize(bytes, 2, QLocale::DataSizeTraditionalFormat)).arg(logs);
     if (summary == m_folderSummary)
         return;
     m_folderSummary = summary;

@@ -21,6 +21,7 @@ class RecordingSettings : public QObject
     Q_OBJECT
     Q_PROPERTY(int maxFileMB READ maxFileMB NOTIFY limitsChanged)
     Q_PROPERTY(int maxFolderMB READ maxFolderMB NOTIFY limitsChanged)
+    Q_PROPERTY(QString limitsText READ limitsText NOTIFY limitsChanged)
     Q_PROPERTY(QString folder READ folder CONSTANT)
     Q_PROPERTY(QString folderSummary READ folderSummary NOTIFY folderChanged)
     Q_PROPERTY(QString currentLog READ currentLog NOTIFY currentLogChanged)
@@ -38,6 +39,7 @@ public:
 
     int maxFileMB() const;
     int maxFolderMB() const;
+    QString limitsText() const; // the limits in force, in words
     QString folder() const;
     QString folderSummary() const { return m_folderSummary; }
     QString currentLog() const;

@@ -8,6 +8,8 @@
 #include "HciClient.h"
 #include "HciServer.h"
 #include "HciSession.h"
+#include "FlightRecorder.h"
+#include "RecordingSettings.h"
 #include "ServerHistoryRequest.h"
 #include "SimWorld.h"
 #include "VehicleFleet.h"
@@ -17,6 +19,8 @@
 #include "QuickScene.h"
 #include "ReplayController.h"
 
+#include <QDir>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -133,7 +137,7 @@ private slots:
         mission::Mission plan;
         plan.routes.push_back(test::routeThrough(test::kLegs, 20, QStringLiteral("Box")));
         const QString routeFile = dir.filePath(QStringLiteral("box.sortie"));
-        QVERIFY(mission::formats::saveMission(plan, routeFile, {0, mission::ValidationOverride::AcceptErrors}));
+        QVERIFY(mission::formats::saveMission(plan, routeFile, {0, mission::ValidationOverride::AcceptErrors, {}}));
         auto *compareButton = scene.find<QQuickItem>(QStringLiteral("compareButton"));
         QVERIFY(compareButton && compareButton->isVisible());
         QVERIFY(!comparison.compare(routeFile, -1)); // two vehicles: which one?
@@ -161,6 +165,67 @@ private slots:
         QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(close).toPoint());
         QTRY_VERIFY(!banner->isVisible());
         QVERIFY(!replay.isActive());
+    }
+
+    // The flight-log settings dialog: the folder and what it holds, the limits in force; a refused
+    // change says why, an accepted one is saved and in force in the running recorder.
+    void recordingSettingsDialog()
+    {
+        QTemporaryDir dir;
+        QSettings storage(QDir(dir.path()).filePath(QStringLiteral("settings.ini")), QSettings::IniFormat);
+        flightlog::FlightRecorder recorder({QDir(dir.path()).filePath(QStringLiteral("logs/now.sortielog")), {}, 100});
+        flightlog::RecordingSettings settings(&storage, &recorder);
+        QVERIFY(recorder.start());
+        test::QuickScene scene(R"(
+            import QtQuick
+            import Sortie.Ui
+            Item {
+                id: root
+                required property RecordingSettings settings
+                property alias dialog: dialog
+                FlightLogSettingsDialog { id: dialog; settings: root.settings }
+            }
+        )", QSize(900, 600), {{QStringLiteral("settings"), QVariant::fromValue(&settings)}});
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        auto *dialog = scene.root()->property("dialog").value<QObject *>();
+        QVERIFY(dialog);
+        QMetaObject::invokeMethod(dialog, "open");
+        QTRY_VERIFY(dialog->property("opened").toBool());
+        auto *folder = scene.find<QQuickItem>(QStringLiteral("logFolderField"));
+        auto *size = scene.find<QQuickItem>(QStringLiteral("logFolderSize"));
+        auto *current = scene.find<QQuickItem>(QStringLiteral("currentLogLabel"));
+        auto *fileBox = scene.find<QQuickItem>(QStringLiteral("maxFileBox"));
+        auto *folderBox = scene.find<QQuickItem>(QStringLiteral("maxFolderBox"));
+        auto *apply = scene.find<QQuickItem>(QStringLiteral("applyLogSettingsButton"));
+        auto *error = scene.find<QQuickItem>(QStringLiteral("logSettingsError"));
+        auto *inForce = scene.find<QQuickItem>(QStringLiteral("logSettingsInForce"));
+        QVERIFY(folder && size && current && fileBox && folderBox && apply && error && inForce);
+        QCOMPARE(folder->property("text").toString(), QDir::toNativeSeparators(QDir(dir.path()).filePath(QStringLiteral("logs"))));
+        QVERIFY2(size->property("text").toString().contains(QStringLiteral("in 1 log")), qPrintable(size->property("text").toString()));
+        QCOMPARE(current->property("text").toString(), QStringLiteral("now.sortielog"));
+        QCOMPARE(fileBox->property("value").toInt(), 256);
+        QCOMPARE(folderBox->property("value").toInt(), 4096);
+        QCOMPARE(inForce->property("text").toString(), QStringLiteral("In force: a log up to 256 MB; the folder up to 4096 MB."));
+
+        // A folder smaller than a log: refused with the reason, nothing saved.
+        fileBox->setProperty("value", 100);
+        folderBox->setProperty("value", 50);
+        scene.grab();
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(apply).toPoint());
+        QTRY_VERIFY(error->isVisible());
+        QVERIFY2(error->property("text").toString().contains(QStringLiteral("at least one whole log")), qPrintable(error->property("text").toString()));
+        QVERIFY(!storage.contains(QStringLiteral("flightlog/maxFileMB")));
+        QCOMPARE(recorder.limits().maxFileBytes, qint64(256) << 20);
+        // A good change: in force at once, saved, the error gone.
+        folderBox->setProperty("value", 0);
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(apply).toPoint());
+        QTRY_VERIFY(!error->isVisible());
+        QCOMPARE(recorder.limits().maxFileBytes, qint64(100) << 20);
+        QCOMPARE(recorder.limits().maxFolderBytes, qint64(0));
+        QCOMPARE(storage.value(QStringLiteral("flightlog/maxFileMB")).toInt(), 100);
+        QCOMPARE(storage.value(QStringLiteral("flightlog/maxFolderMB")).toInt(), 0);
+        QCOMPARE(inForce->property("text").toString(), QStringLiteral("In force: a log up to 100 MB; the folder without limit."));
+        recorder.stop();
     }
 
     void serverHistoryFromTheDialog()

@@ -99,9 +99,7 @@ Dialog {
                 objectName: "logSettingsInForce"
                 Layout.fillWidth: true
                 elide: Text.ElideRight
-                text: qsTr("In force: %1 a log, %2 the folder")
-                          .arg(dialog.settings.maxFileMB > 0 ? dialog.settings.maxFileMB + " MB" : qsTr("no limit"))
-                          .arg(dialog.settings.maxFolderMB > 0 ? dialog.settings.maxFolderMB + " MB" : qsTr("no limit"))
+                text: dialog.settings.limitsText
             }
             Button {
                 objectName: "applyLogSettingsButton"
