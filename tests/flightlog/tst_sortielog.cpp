@@ -117,7 +117,7 @@ QString saveRoute(const QString &path, const std::vector<mission::GeoPoint> &poi
     m.name = name;
     m.routes.push_back(test::routeThrough(points, 12, name));
     m.routes.back().settings.safeAltitude = 5;
-    const auto saved = mission::formats::saveMission(m, path, {0, mission::ValidationOverride::AcceptErrors});
+    const auto saved = mission::formats::saveMission(m, path, {0, mission::ValidationOverride::AcceptErrors, {}});
     if (!saved)
         qFatal("%s", qPrintable(saved.error().toString()));
     return path;
