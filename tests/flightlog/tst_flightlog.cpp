@@ -486,11 +486,17 @@ private slots:
         QCOMPARE(lat.newest().time, flown.back().time);
         QVERIFY(std::fabs(a->position().latitude() - flown[300].lat) < 1e-7);
         QCOMPARE(replay.position(), qint64(flown[300].time));
-        // A second open while a fill runs: the first log's histories never reach the new vehicles.
+        // Closed while its worker runs (or has just posted): nothing of it arrives afterwards.
         QVERIFY(replay.open(path));
         QVERIFY(!replay.isHistoryLoaded());
-        replay.close();
+        replay.close(); // cancels the worker and waits for it
+        QCoreApplication::processEvents();
         QVERIFY(!replay.isHistoryLoaded());
+        // And a log opened again fills again.
+        QVERIFY(replay.open(path));
+        QTRY_VERIFY(replay.isHistoryLoaded());
+        a = replay.fleet()->vehicleAt(replay.log()->vehicleIndex(QStringLiteral("EMU-101")));
+        QCOMPARE(a->history().series(TelemetryField::Latitude).size(), flown.size());
     }
 
     void thinnedSeriesKeepsTheWholeSpan()
