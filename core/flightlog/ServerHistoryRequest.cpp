@@ -70,9 +70,10 @@ void ServerHistoryRequest::reset()
 
 void ServerHistoryRequest::chooseLastHour()
 {
-    const qint64 now = m_clock();
-    m_toText = timeText(now);
-    m_fromText = timeText(now - kDefaultSpanMs);
+    // The texts hold whole seconds: round the end up, so what arrived this second is in.
+    const qint64 to = (m_clock() + 999) / 1000 * 1000;
+    m_toText = timeText(to);
+    m_fromText = timeText(to - kDefaultSpanMs);
     emit choiceChanged();
 }
 

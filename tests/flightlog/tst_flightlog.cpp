@@ -533,13 +533,13 @@ private slots:
     {
         flightlog::ReplayController replay;
         flightlog::ServerHistoryRequest request(nullptr, &replay);
-        const qint64 now = QDateTime(QDate(2026, 11, 24), QTime(12, 0, 30), Qt::UTC).toMSecsSinceEpoch();
+        const qint64 now = QDateTime(QDate(2026, 11, 24), QTime(12, 0, 29, 250), Qt::UTC).toMSecsSinceEpoch();
         request.setClock([now] { return now; });
         QCOMPARE(request.canFetch(), false);
         QVERIFY2(request.problem().contains(QStringLiteral("connect to a server")), qPrintable(request.problem()));
         request.setVehicles({{QStringLiteral("EMU-101"), 7}, {QStringLiteral("EMU-102"), 9}});
         request.setVehicleIndex(1);
-        // Opening the dialog: the last hour up to now, the same vehicle still chosen.
+        // Opening the dialog: the last hour up to now (to the second after it), the same vehicle still chosen.
         QSignalSpy changed(&request, &flightlog::ServerHistoryRequest::choiceChanged);
         request.reset();
         QVERIFY(changed.count() >= 1);
@@ -548,10 +548,10 @@ private slots:
         QCOMPARE(request.fromText(), QStringLiteral("2026-11-24 11:00:30"));
         QCOMPARE(request.toText(), QStringLiteral("2026-11-24 12:00:30"));
         QVERIFY2(request.canFetch(), qPrintable(request.problem()));
-        QCOMPARE(request.range()->first, now - 3600000);
-        QCOMPARE(request.range()->second, now);
+        QCOMPARE(request.range()->first, now + 750 - 3600000);
+        QCOMPARE(request.range()->second, now + 750);
         // Times are UTC, to the second or the minute, with a space or a T.
-        QCOMPARE(flightlog::ServerHistoryRequest::parseTime(QStringLiteral(" 2026-11-24T11:15 ")), now - 45 * 60000 - 30000);
+        QCOMPARE(flightlog::ServerHistoryRequest::parseTime(QStringLiteral(" 2026-11-24T11:15 ")), now + 750 - 45 * 60000 - 30000);
         QVERIFY(!flightlog::ServerHistoryRequest::parseTime(QStringLiteral("2026-11-24 25:00")));
         // Each problem named; nothing is sent while there is one.
         request.setFromText(QStringLiteral("yesterday"));

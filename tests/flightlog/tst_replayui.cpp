@@ -26,6 +26,8 @@
 #include <QTest>
 #include <QtQml/qqmlextensionplugin.h>
 
+#include <map>
+
 Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
 
 using namespace sortie;
@@ -250,21 +252,21 @@ private slots:
             if (fleet.vehicleAt(row)->name() == QLatin1String("EMU-102"))
                 live = fleet.vehicleAt(row);
         QVERIFY(live);
-        // Fly a little: take off and climb, remembering where the live link had the vehicle when.
-        struct Fix { qint64 time; double lat = qQNaN(), lon = qQNaN(), agl = qQNaN(); };
-        std::vector<Fix> seen;
+        // Fly a little: take off and climb, remembering what the live link said when (each field has
+        // its own times).
+        std::map<vehicle::TelemetryField, std::vector<vehicle::TelemetrySample>> seen;
         connect(live->link(), &vehicle::VehicleLink::telemetryReceived, this, [&seen](const vehicle::TelemetryBatch &batch) {
-            for (const auto &u : batch) {
-                if (seen.empty() || seen.back().time != u.time)
-                    seen.push_back({u.time});
-                if (u.field == vehicle::TelemetryField::Latitude)
-                    seen.back().lat = u.value / test::kRad;
-                else if (u.field == vehicle::TelemetryField::Longitude)
-                    seen.back().lon = u.value / test::kRad;
-                else if (u.field == vehicle::TelemetryField::AltitudeAgl)
-                    seen.back().agl = u.value;
-            }
+            for (const auto &u : batch)
+                seen[u.field].push_back({u.time, u.value});
         });
+        // The live value of a field at a time: its last sample at or before it.
+        auto liveAt = [&seen](vehicle::TelemetryField field, qint64 time) {
+            double value = qQNaN();
+            for (const auto &sample : seen[field])
+                if (sample.time <= time)
+                    value = sample.value;
+            return value;
+        };
         QTRY_VERIFY_WITH_TIMEOUT(live->position().isValid(), 10000);
         live->arm();
         QTRY_VERIFY_WITH_TIMEOUT(live->armed(), 10000);
@@ -330,24 +332,24 @@ private slots:
         auto *banner = scene.find<QQuickItem>(QStringLiteral("replayBanner"));
         QTRY_VERIFY(banner && banner->isVisible());
 
-        // Where the server had it: a time the live link saw during the climb, drawn there.
-        const auto fixed = std::find_if(seen.rbegin(), seen.rend(), [&](const Fix &f) {
-            return f.time <= replay.end() && std::isfinite(f.lat) && std::isfinite(f.agl) && f.agl > 2;
-        });
-        QVERIFY(fixed != seen.rend());
-        replay.seek(fixed->time);
-        QVERIFY2(std::fabs(replayed->position().latitude() - fixed->lat) < 1e-6, qPrintable(QString::number(replayed->position().latitude() - fixed->lat)));
-        QVERIFY(std::fabs(replayed->position().longitude() - fixed->lon) < 1e-6);
-        QVERIFY(std::fabs(replayed->altitudeAgl() - fixed->agl) < 0.01);
+        // Where the server had it at the end of the range, up in the air, drawn there.
+        const qint64 at = replay.end();
+        const QGeoCoordinate where(liveAt(vehicle::TelemetryField::Latitude, at) / test::kRad, liveAt(vehicle::TelemetryField::Longitude, at) / test::kRad);
+        const double agl = liveAt(vehicle::TelemetryField::AltitudeAgl, at);
+        QVERIFY2(agl > 4, qPrintable(QString::number(agl))); // the range ends after the climb
+        replay.seek(at);
+        QVERIFY2(std::fabs(replayed->position().latitude() - where.latitude()) < 1e-6, qPrintable(QString::number(replayed->position().latitude() - where.latitude())));
+        QVERIFY(std::fabs(replayed->position().longitude() - where.longitude()) < 1e-6);
+        QVERIFY2(std::fabs(replayed->altitudeAgl() - agl) < 0.01, qPrintable(QStringLiteral("%1 %2").arg(replayed->altitudeAgl()).arg(agl)));
         QObject *map = scene.root()->property("map").value<QObject *>();
         auto *layer = scene.find<QQuickItem>(QStringLiteral("vehicleLayer"));
         QVERIFY(map && layer);
         QTRY_COMPARE(layer->property("count").toInt(), 1);
-        QMetaObject::invokeMethod(map, "fitBounds", Q_ARG(double, fixed->lat - 0.001), Q_ARG(double, fixed->lon - 0.001),
-                                  Q_ARG(double, fixed->lat + 0.001), Q_ARG(double, fixed->lon + 0.001), Q_ARG(qreal, 40));
+        QMetaObject::invokeMethod(map, "fitBounds", Q_ARG(double, where.latitude() - 0.001), Q_ARG(double, where.longitude() - 0.001),
+                                  Q_ARG(double, where.latitude() + 0.001), Q_ARG(double, where.longitude() + 0.001), Q_ARG(qreal, 40));
         auto offMap = [&] {
             QPointF expected, drawn;
-            QMetaObject::invokeMethod(map, "fromCoordinate", Q_RETURN_ARG(QPointF, expected), Q_ARG(QGeoCoordinate, QGeoCoordinate(fixed->lat, fixed->lon)));
+            QMetaObject::invokeMethod(map, "fromCoordinate", Q_RETURN_ARG(QPointF, expected), Q_ARG(QGeoCoordinate, where));
             QMetaObject::invokeMethod(layer, "vehiclePosition", Q_RETURN_ARG(QPointF, drawn), Q_ARG(int, 0));
             return QLineF(expected, drawn).length();
         };
