@@ -70,6 +70,8 @@ private slots:
 
         // Open: the replayed vehicles take the map, under a banner that says so.
         QVERIFY(replay.open(path));
+        auto *loading = scene.find<QQuickItem>(QStringLiteral("historyLoadingLabel"));
+        QVERIFY(loading && loading->isVisible()); // no event has run: the histories cannot be in yet
         QTRY_VERIFY(banner->isVisible());
         auto *layer = scene.find<QQuickItem>(QStringLiteral("vehicleLayer"));
         QVERIFY(layer);
@@ -98,6 +100,9 @@ private slots:
             return QLineF(expected, drawn).length();
         };
         QTRY_VERIFY2(expectOnMap(replay.position()) < 1.5, "the vehicle is not drawn where the log has it at the start");
+        // The plots' histories fill in the background; the timeline says so until they are in.
+        QTRY_VERIFY(replay.isHistoryLoaded());
+        QTRY_VERIFY(!loading->isVisible());
 
         // Play: the clock moves; pause stops it.
         auto *play = scene.find<QQuickItem>(QStringLiteral("playButton"));

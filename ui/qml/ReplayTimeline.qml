@@ -124,6 +124,12 @@ ToolBar {
                 onActivated: index => bar.replay.jumpToEvent(index)
             }
             Label {
+                objectName: "historyLoadingLabel"
+                visible: bar.replay.active && !bar.replay.historyLoaded
+                text: qsTr("Loading plots…")
+                opacity: 0.7
+            }
+            Label {
                 objectName: "positionLabel"
                 visible: bar.replay.active
                 text: bar.replay.positionText
