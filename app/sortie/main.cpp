@@ -11,7 +11,9 @@
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "RecordingSettings.h"
 #include "ReplayController.h"
+#include "ServerHistoryRequest.h"
 #include "RouteAnalyzer.h"
 #include "RouteAutosave.h"
 #include "RouteDocument.h"
@@ -69,15 +71,6 @@ QString flightLogDirectory(const sortie::app::LaunchOptions &options)
     if (options.demo)
         return QDir::temp().filePath(QStringLiteral("sortie-demo-flightlogs"));
     return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(QStringLiteral("flightlogs"));
-}
-
-// The operator's limits (settings flightlog/maxFileMB and flightlog/maxFolderMB; 0: no limit).
-sortie::flightlog::RecordingLimits recordingLimits(const QSettings &storage)
-{
-    sortie::flightlog::RecordingLimits limits;
-    limits.maxFileBytes = storage.value(QStringLiteral("flightlog/maxFileMB"), limits.maxFileBytes >> 20).toLongLong() << 20;
-    limits.maxFolderBytes = storage.value(QStringLiteral("flightlog/maxFolderMB"), limits.maxFolderBytes >> 20).toLongLong() << 20;
-    return limits;
 }
 
 } // namespace
@@ -143,13 +136,16 @@ int main(int argc, char *argv[])
     QObject::connect(&connection, &sortie::client::ConnectionController::ready, &autosave,
                      [&] { autosave.setServer(connection.server(), connection.user()); });
     // Every session is recorded without the operator asking: a log per run in the data folder.
-    sortie::flightlog::FlightRecorder recorder(
-        {sortie::flightlog::FlightRecorder::sessionPath(flightLogDirectory(options)), recordingLimits(storage), 500});
+    sortie::flightlog::FlightRecorder recorder({sortie::flightlog::FlightRecorder::sessionPath(flightLogDirectory(options)), {}, 500});
+    // The operator's size cap and folder limit, from the settings, changed in the Logs… dialog.
+    sortie::flightlog::RecordingSettings recordingSettings(&storage, &recorder);
     if (QString error; !recorder.start(&error))
         std::fprintf(stderr, "sortie: %s\n", qPrintable(error)); // flying goes on without a log
     sortie::flightlog::FleetRecording recording(&fleet, &recorder, &session);
     sortie::flightlog::ReplayController replay;
     sortie::flightlog::ComparisonController comparison(&replay);
+    sortie::flightlog::ServerHistoryRequest serverHistory(&hciClient, &replay);
+    serverHistory.setFleet(&fleet);
     sortie::app::DemoServer demo;
     if (options.demo) {
         QString error;
@@ -167,6 +163,8 @@ int main(int argc, char *argv[])
                                  {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&fleet)},
                                  {QStringLiteral("replay"), QVariant::fromValue(&replay)},
                                  {QStringLiteral("comparison"), QVariant::fromValue(&comparison)},
+                                 {QStringLiteral("serverHistory"), QVariant::fromValue(&serverHistory)},
+                                 {QStringLiteral("recordingSettings"), QVariant::fromValue(&recordingSettings)},
                                  {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(&recovery)},
                                  {QStringLiteral("elevation"), QVariant::fromValue<QObject *>(elevation.service())}});
     engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));

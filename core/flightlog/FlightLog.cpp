@@ -17,6 +17,7 @@ namespace sortie::flightlog {
 using vehicle::TelemetryBatch;
 using vehicle::TelemetryField;
 using vehicle::TelemetrySample;
+using vehicle::TelemetryUpdate;
 
 namespace {
 
@@ -270,6 +271,42 @@ TelemetryBatch FlightLog::updatesBetween(int vehicle, int64_t from, int64_t to) 
         }
     }
     std::stable_sort(out.begin(), out.end(), [](const auto &a, const auto &b) { return a.time < b.time; });
+    return out;
+}
+
+std::optional<TelemetryBatch> FlightLog::thinnedSeries(int vehicle, size_t perField, const std::atomic_bool *cancelled) const
+{
+    if (vehicle < 0 || size_t(vehicle) >= m_vehicles.size())
+        return TelemetryBatch{};
+    const Vehicle &v = m_vehicles[size_t(vehicle)];
+    // Keep every stride-th sample of a field: at most perField of them, spread over the span.
+    std::array<uint64_t, vehicle::kTelemetryFieldCount> stride{}, seen{};
+    std::array<std::vector<TelemetryUpdate>, vehicle::kTelemetryFieldCount> kept;
+    for (size_t f = 0; f < stride.size(); ++f) {
+        stride[f] = perField ? std::max<uint64_t>(1, (v.counts[f] + perField - 1) / perField) : 1;
+        kept[f].reserve(size_t((v.counts[f] + stride[f] - 1) / stride[f]));
+    }
+    for (const Block &b : v.blocks) {
+        if (cancelled && cancelled->load(std::memory_order_relaxed))
+            return std::nullopt;
+        const auto fields = TelemetryBlockCodec::decode(b.data);
+        if (!fields)
+            continue;
+        for (const FieldSamples &f : *fields) {
+            const size_t i = size_t(f.field);
+            for (const TelemetrySample &s : f.samples) {
+                if (seen[i]++ % stride[i] == 0)
+                    kept[i].push_back({f.field, s.value, s.time});
+            }
+        }
+    }
+    TelemetryBatch out;
+    size_t total = 0;
+    for (const auto &k : kept)
+        total += k.size();
+    out.reserve(total);
+    for (const auto &k : kept)
+        out.insert(out.end(), k.begin(), k.end());
     return out;
 }
 

@@ -6,6 +6,7 @@
 #include <QString>
 
 #include <array>
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -78,6 +79,12 @@ public:
     vehicle::TelemetryBatch updatesBetween(int vehicle, int64_t from, int64_t to) const;
     // The last value of every field at or before `time` (fields not seen by then are absent).
     vehicle::TelemetryBatch stateAt(int vehicle, int64_t time) const;
+    // Every field over the whole span, thinned evenly to at most `perField` samples a field (0: all),
+    // grouped by field and in time order within each: what a replay's plots hold. Decodes every
+    // block, so a replay runs it on a worker thread; it returns early (with nullopt) once
+    // *cancelled is set. Safe to call from any thread (the log is not changed after open/finish).
+    std::optional<vehicle::TelemetryBatch> thinnedSeries(int vehicle, size_t perField,
+                                                         const std::atomic_bool *cancelled = nullptr) const;
 
     // For building logs in memory.
     void addVehicle(Vehicle v);

@@ -40,7 +40,8 @@ FlightLogWriter::FlightLogWriter(QString path, RecordingLimits limits, QObject *
     : QObject(parent)
     , m_basePath(std::move(path))
     , m_connection(QStringLiteral("flightlog-writer-") + QUuid::createUuid().toString(QUuid::WithoutBraces))
-    , m_limits(limits)
+    , m_maxFileBytes(limits.maxFileBytes)
+    , m_maxFolderBytes(limits.maxFolderBytes)
 {
 }
 
@@ -129,7 +130,8 @@ void FlightLogWriter::write(const RecordingChunk &chunk)
         }
     } else {
         m_failed = false;
-        if (m_limits.maxFileBytes > 0 && sizeOnDisk() > m_limits.maxFileBytes)
+        const qint64 maxFile = m_maxFileBytes.load();
+        if (maxFile > 0 && sizeOnDisk() > maxFile)
             rotate();
     }
     m_cpuNs += threadCpuNs() - start;
@@ -270,21 +272,64 @@ void FlightLogWriter::rotate()
         carry.missions.push_back(m);
     if (!writeChunk(carry, &error))
         m_db.rollback();
-    if (m_limits.maxFolderBytes > 0)
-        pruneFolder(QFileInfo(next).absolutePath(), m_limits.maxFolderBytes, next);
+    if (m_maxFolderBytes.load() > 0)
+        pruneFolder(QFileInfo(next).absolutePath(), m_maxFolderBytes.load(), next);
     emit rotated(next);
+}
+
+void FlightLogWriter::setLimits(RecordingLimits limits)
+{
+    m_maxFileBytes = limits.maxFileBytes;
+    m_maxFolderBytes = limits.maxFolderBytes;
+    qCInfo(lcFlightLog) << "recording limits now" << (limits.maxFileBytes >> 20) << "MB a log," << (limits.maxFolderBytes >> 20) << "MB the folder";
+}
+
+void FlightLogWriter::enforceLimits()
+{
+    if (!m_db.isOpen())
+        return;
+    const qint64 maxFile = m_maxFileBytes.load();
+    if (maxFile > 0 && sizeOnDisk() > maxFile) {
+        rotate(); // prunes too
+        return;
+    }
+    if (m_maxFolderBytes.load() > 0) {
+        const QString path = currentPath();
+        pruneFolder(QFileInfo(path).absolutePath(), m_maxFolderBytes.load(), path);
+    }
+}
+
+namespace {
+
+QFileInfoList logsIn(const QDir &dir)
+{
+    return dir.entryInfoList({QStringLiteral("*") + QLatin1String(schema::kSuffix)}, QDir::Files, QDir::Time | QDir::Reversed);
+}
+
+qint64 sizeWithJournal(const QFileInfo &log)
+{
+    return log.size() + QFileInfo(log.absoluteFilePath() + QStringLiteral("-wal")).size();
+}
+
+} // namespace
+
+qint64 FlightLogWriter::folderBytes(const QString &folder, int *logs)
+{
+    const QFileInfoList files = logsIn(QDir(folder));
+    qint64 total = 0;
+    for (const QFileInfo &f : files)
+        total += sizeWithJournal(f);
+    if (logs)
+        *logs = int(files.size());
+    return total;
 }
 
 QStringList FlightLogWriter::pruneFolder(const QString &folder, qint64 maxBytes, const QString &keep)
 {
-    QDir dir(folder);
-    QFileInfoList logs = dir.entryInfoList({QStringLiteral("*") + QLatin1String(schema::kSuffix)}, QDir::Files, QDir::Time | QDir::Reversed);
-    auto sizeOf = [&dir](const QFileInfo &f) {
-        return f.size() + QFileInfo(dir.filePath(f.fileName() + QStringLiteral("-wal"))).size();
-    };
+    const QFileInfoList logs = logsIn(QDir(folder));
     qint64 total = 0;
     for (const QFileInfo &f : logs)
-        total += sizeOf(f);
+        total += sizeWithJournal(f);
     QStringList removed;
     const QString kept = QFileInfo(keep).absoluteFilePath();
     for (const QFileInfo &f : logs) { // oldest first
@@ -292,7 +337,7 @@ QStringList FlightLogWriter::pruneFolder(const QString &folder, qint64 maxBytes,
             break;
         if (f.absoluteFilePath() == kept)
             continue;
-        total -= sizeOf(f);
+        total -= sizeWithJournal(f);
         QFile::remove(f.absoluteFilePath());
         QFile::remove(f.absoluteFilePath() + QStringLiteral("-wal"));
         QFile::remove(f.absoluteFilePath() + QStringLiteral("-shm"));

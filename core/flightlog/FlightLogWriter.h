@@ -45,9 +45,18 @@ public:
     QString currentPath() const;
     Stats stats() const;
 
+    // New limits, from any thread: every later write checks against them.
+    void setLimits(RecordingLimits limits);
+    // On the writer's thread: continues in a new part if the log is over its limit now, and prunes
+    // the folder to its limit (what a change of the limits asks for at once).
+    void enforceLimits();
+    RecordingLimits limits() const { return {m_maxFileBytes.load(), m_maxFolderBytes.load()}; }
+
     // Deletes the oldest *.sortielog files in `folder` (never `keep`) until the folder holds at most
     // maxBytes of them; returns the files removed.
     static QStringList pruneFolder(const QString &folder, qint64 maxBytes, const QString &keep);
+    // What the *.sortielog files in `folder` (with their journals) take on disk, and how many there are.
+    static qint64 folderBytes(const QString &folder, int *logs = nullptr);
 
 signals:
     void errorOccurred(const QString &message);
@@ -63,7 +72,7 @@ private:
     QString m_basePath;
     QString m_path;
     QString m_connection;
-    RecordingLimits m_limits;
+    std::atomic<qint64> m_maxFileBytes, m_maxFolderBytes; // set from the recorder's thread
     QSqlDatabase m_db;
     QHash<QString, qint64> m_vehicleRows;
     QHash<QString, RecordedVehicle> m_vehicles;          // to repeat in a new part

@@ -100,6 +100,23 @@ QString FlightRecorder::path() const
     return m_writer ? m_writer->currentPath() : m_options.path;
 }
 
+QString FlightRecorder::folder() const
+{
+    return QFileInfo(m_options.path).absolutePath();
+}
+
+void FlightRecorder::setLimits(RecordingLimits limits)
+{
+    if (limits.maxFileBytes == m_options.limits.maxFileBytes && limits.maxFolderBytes == m_options.limits.maxFolderBytes)
+        return;
+    m_options.limits = limits;
+    if (FlightLogWriter *writer = m_writer) {
+        writer->setLimits(limits);
+        QMetaObject::invokeMethod(writer, [writer] { writer->enforceLimits(); }, Qt::QueuedConnection);
+    }
+    emit limitsChanged();
+}
+
 FlightLogWriter::Stats FlightRecorder::stats() const
 {
     return m_writer ? m_writer->stats() : m_lastStats;

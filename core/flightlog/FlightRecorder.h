@@ -50,6 +50,12 @@ public:
     void flush();
 
     QString path() const;
+    // The folder the logs go to.
+    QString folder() const;
+    // The size cap and folder limit; a change applies to the log being written at once (it rotates
+    // if it is over the new cap, the folder is pruned to the new limit) and to later parts.
+    RecordingLimits limits() const { return m_options.limits; }
+    void setLimits(RecordingLimits limits);
     bool isRecording() const { return m_thread.isRunning(); }
     QString errorString() const { return m_error; }
     FlightLogWriter::Stats stats() const; // of the last recording once stopped
@@ -61,6 +67,7 @@ signals:
     void pathChanged();
     void recordingChanged();
     void errorChanged();
+    void limitsChanged();
 
 private:
     struct Recorded

@@ -7,6 +7,8 @@
 #include <QMetaEnum>
 #include <QSaveFile>
 
+#include <utility>
+
 #include <cmath>
 #include <numbers>
 
@@ -92,6 +94,7 @@ ReplayController::ReplayController(QObject *parent)
 
 ReplayController::~ReplayController()
 {
+    stopHistoryFill();
     m_fleet.reset({});
 }
 
@@ -135,26 +138,6 @@ void ReplayController::open(std::unique_ptr<FlightLog> log)
         r.link = std::make_unique<ReplayVehicleLink>(identity);
         r.vehicle = std::make_unique<Vehicle>(r.link.get(), this);
         r.vehicle->setStaleAfter(std::numeric_limits<int>::max() / 2); // paused is not silent
-        // The whole span into the history, thinned evenly to what a live history holds.
-        std::array<std::vector<vehicle::TelemetrySample>, vehicle::kTelemetryFieldCount> series;
-        for (size_t f = 0; f < series.size(); ++f)
-            series[f].reserve(size_t(recorded.counts[f]));
-        for (const FlightLog::Block &b : recorded.blocks) {
-            const auto fields = TelemetryBlockCodec::decode(b.data);
-            if (!fields)
-                continue;
-            for (const FieldSamples &f : *fields)
-                series[size_t(f.field)].insert(series[size_t(f.field)].end(), f.samples.begin(), f.samples.end());
-        }
-        const size_t capacity = r.vehicle->history().capacityPerField();
-        vehicle::TelemetryBatch history;
-        for (size_t f = 0; f < series.size(); ++f) {
-            const size_t n = series[f].size();
-            const size_t stride = capacity ? (n + capacity - 1) / capacity : 1;
-            for (size_t k = 0; k < n; k += std::max<size_t>(stride, 1))
-                history.push_back({vehicle::TelemetryField(f), series[f][k].value, series[f][k].time});
-        }
-        r.vehicle->ingest(history);
         m_vehicles.push_back(std::move(r));
     }
     std::vector<Vehicle *> vehicles;
@@ -164,9 +147,60 @@ void ReplayController::open(std::unique_ptr<FlightLog> log)
     m_events.reset(m_log.get());
     m_position = m_log->start();
     showAt(m_position);
+    startHistoryFill();
     qCInfo(lcFlightLog) << "replaying" << m_log->path() << m_vehicles.size() << "vehicles";
     emit loadedChanged();
     emit positionChanged();
+}
+
+void ReplayController::startHistoryFill()
+{
+    std::vector<size_t> capacities;
+    for (const Replayed &r : m_vehicles)
+        capacities.push_back(r.vehicle->history().capacityPerField());
+    auto cancelled = std::make_shared<std::atomic_bool>(false);
+    m_cancelHistory = cancelled;
+    const quint64 generation = ++m_generation;
+    std::shared_ptr<const FlightLog> log = m_log;
+    m_historyThread.reset(QThread::create([this, log, cancelled, capacities, generation] {
+        QElapsedTimer took;
+        took.start();
+        // Built here whole, so the GUI thread only swaps them in.
+        auto histories = std::make_shared<std::vector<vehicle::TelemetryStore>>();
+        for (size_t i = 0; i < capacities.size(); ++i) {
+            const auto series = log->thinnedSeries(int(i), capacities[i], cancelled.get());
+            if (!series)
+                return; // closed meanwhile
+            histories->emplace_back(capacities[i]);
+            histories->back().ingest(*series);
+        }
+        qCDebug(lcFlightLog) << "replay histories decoded in" << took.elapsed() << "ms";
+        // close() waits for this thread, so `this` outlives the call; a result of an earlier log
+        // is recognised by its generation.
+        QMetaObject::invokeMethod(this, [this, generation, histories] { applyHistories(generation, *histories); }, Qt::QueuedConnection);
+    }));
+    m_historyThread->setObjectName(QStringLiteral("replay-history"));
+    m_historyThread->start(QThread::LowPriority);
+}
+
+void ReplayController::stopHistoryFill()
+{
+    if (m_cancelHistory)
+        m_cancelHistory->store(true);
+    if (m_historyThread)
+        m_historyThread->wait();
+    m_historyThread.reset();
+    m_cancelHistory.reset();
+}
+
+void ReplayController::applyHistories(quint64 generation, std::vector<vehicle::TelemetryStore> &histories)
+{
+    if (generation != m_generation || !m_log || histories.size() != m_vehicles.size())
+        return;
+    for (size_t i = 0; i < histories.size(); ++i)
+        m_vehicles[i].vehicle->replaceHistory(std::move(histories[i]));
+    m_historyLoaded = true;
+    emit historyLoadedChanged();
 }
 
 void ReplayController::close()
@@ -174,6 +208,9 @@ void ReplayController::close()
     if (!m_log)
         return;
     pause();
+    stopHistoryFill();
+    ++m_generation;
+    const bool hadHistory = std::exchange(m_historyLoaded, false);
     m_fleet.reset({});
     m_events.reset(nullptr);
     m_vehicles.clear();
@@ -181,6 +218,8 @@ void ReplayController::close()
     m_position = 0;
     emit loadedChanged();
     emit positionChanged();
+    if (hadHistory)
+        emit historyLoadedChanged();
 }
 
 double ReplayController::progress() const

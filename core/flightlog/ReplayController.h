@@ -8,6 +8,7 @@
 #include <QAbstractListModel>
 #include <QElapsedTimer>
 #include <QObject>
+#include <QThread>
 #include <QTimer>
 #include <QUrl>
 
@@ -50,8 +51,12 @@ private:
 // 1x to 50x, seeking (by time or as a fraction of the span) and jumps to events. At every position
 // each replayed vehicle shows what the log recorded at that moment (its last value of every field, its
 // link state, the route it carried); while playing, every recorded sample is delivered in order, so
-// the vehicles' instruments and trails move as they did. Each Vehicle's history holds the log's whole
-// span from the start (thinned evenly when it holds more than a live history would), so plots show it.
+// the vehicles' instruments and trails move as they did.
+//
+// Opening is cheap: the log's blocks stay encoded and each vehicle gets its state at the start (the
+// few blocks that holds). The plots' histories (the log's whole span, thinned evenly when it holds
+// more than a live history would) are decoded on a worker thread and replace each Vehicle's history
+// when ready (historyLoaded); until then the plots show what has been played.
 class ReplayController : public QObject
 {
     Q_OBJECT
@@ -71,6 +76,7 @@ class ReplayController : public QObject
     Q_PROPERTY(sortie::flightlog::ReplayFleet *fleet READ fleet CONSTANT)
     Q_PROPERTY(sortie::flightlog::ReplayEventModel *events READ events CONSTANT)
     Q_PROPERTY(QList<double> speeds READ speeds CONSTANT)
+    Q_PROPERTY(bool historyLoaded READ isHistoryLoaded NOTIFY historyLoadedChanged)
 
 public:
     static constexpr double kMinSpeed = 1, kMaxSpeed = 50;
@@ -86,6 +92,8 @@ public:
     Q_INVOKABLE void close();
 
     bool isActive() const { return m_log != nullptr; }
+    // The plots' whole-span histories are in the vehicles (false while no log is open).
+    bool isHistoryLoaded() const { return m_historyLoaded; }
     const FlightLog *log() const { return m_log.get(); }
     QString path() const { return m_log ? m_log->path() : QString(); }
     QString errorString() const { return m_error; }
@@ -128,6 +136,7 @@ signals:
     void seeked(); // a jump, not play: trails drawn so far no longer lead to the vehicles
     void playingChanged();
     void speedChanged();
+    void historyLoadedChanged();
 
 private:
     struct Replayed
@@ -140,8 +149,15 @@ private:
     void playTo(qint64 time);                 // every sample in (position, time] delivered in order
     void applyEventsAndMissions(qint64 time); // link state and route as of `time`
     void setError(const QString &error);
+    void startHistoryFill();
+    void stopHistoryFill(); // cancels and waits for the worker
+    void applyHistories(quint64 generation, std::vector<vehicle::TelemetryStore> &histories);
 
-    std::unique_ptr<FlightLog> m_log;
+    std::shared_ptr<const FlightLog> m_log; // shared with the history worker
+    std::unique_ptr<QThread> m_historyThread;
+    std::shared_ptr<std::atomic_bool> m_cancelHistory;
+    quint64 m_generation = 0; // which open a worker's result belongs to
+    bool m_historyLoaded = false;
     std::vector<Replayed> m_vehicles;
     ReplayFleet m_fleet;
     ReplayEventModel m_events;

@@ -71,6 +71,12 @@ void Vehicle::ingest(const TelemetryBatch &batch)
     scheduleNotify();
 }
 
+void Vehicle::replaceHistory(TelemetryStore history)
+{
+    m_history = std::move(history);
+    scheduleNotify(); // the plots redraw on telemetryChanged
+}
+
 void Vehicle::scheduleNotify()
 {
     m_dirty = true;

@@ -108,6 +108,9 @@ public:
 
     // Applies a batch as if the link had sent it (the link's signal is connected to this).
     void ingest(const TelemetryBatch &batch);
+    // Replaces the history (not the last values): a replay fills its plots with a log's whole span,
+    // built on a worker thread, without stalling the GUI thread.
+    void replaceHistory(TelemetryStore history);
 
     QVariantMap parameters() const { return m_parameters; }
 

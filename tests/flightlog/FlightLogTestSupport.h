@@ -135,8 +135,8 @@ inline QString recordTwoFlights(const QString &folder, std::vector<FlightSample>
         qFatal("%s", qPrintable(error));
     recorder.addVehicle(&a);
     recorder.addVehicle(&b);
-    a.setMission({{kLegs[0].latitude * kRad, kLegs[0].longitude * kRad, 20, 8},
-                  {kLegs[1].latitude * kRad, kLegs[1].longitude * kRad, 20, 8}});
+    a.setMission({{kLegs[0].latitude * kRad, kLegs[0].longitude * kRad, 20, 8, 0, {}},
+                  {kLegs[1].latitude * kRad, kLegs[1].longitude * kRad, 20, 8, 0, {}}});
     const auto pathA = flyAlong(kLegs, kT0, 100);
     const auto pathB = flyAlong(kLegs, kT0, 100, 12);
     if (flown)

@@ -6,7 +6,9 @@
 #include "FlightLogInfo.h"
 #include "FlightLogTestSupport.h"
 #include "FlightRecorder.h"
+#include "RecordingSettings.h"
 #include "ReplayController.h"
+#include "ServerHistoryRequest.h"
 #include "RouteComparison.h"
 #include "Vehicle.h"
 
@@ -14,6 +16,8 @@
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
+#include <QDateTime>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -239,6 +243,96 @@ private slots:
         QVERIFY(QFile::exists(newest));
     }
 
+    void limitsChangeWhileRecording()
+    {
+        QTemporaryDir dir;
+        // An older session in the folder, for the folder limit to remove.
+        const QString old = QDir(dir.path()).filePath(QStringLiteral("session-old.sortielog"));
+        {
+            QFile f(old);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray(200 << 10, 'x'));
+            f.flush();
+            QVERIFY(f.setFileTime(QDateTime::currentDateTimeUtc().addDays(-1), QFileDevice::FileModificationTime));
+        }
+        const QString path = QDir(dir.path()).filePath(QStringLiteral("live.sortielog"));
+        ScriptedLink link(QStringLiteral("1"), QStringLiteral("EMU-101"));
+        Vehicle v(&link);
+        FlightRecorder recorder({path, {}, 100}); // the defaults: 256 MB a log, 4 GB the folder
+        QVERIFY(recorder.start());
+        recorder.addVehicle(&v);
+        const auto flight = test::flyAlong(kLegs, kT0, 20);
+        auto fly = [&](size_t from, size_t to) {
+            for (size_t i = from; i < to && i < flight.size(); ++i) {
+                link.send(test::telemetryAt(flight[i].time, flight[i].lat, flight[i].lon, 20, flight[i].heading, true, 4));
+                if (i % 100 == 99)
+                    recorder.flush();
+            }
+        };
+        fly(0, flight.size() / 2);
+        recorder.flush();
+        QTRY_VERIFY(QFileInfo(path).size() + QFileInfo(path + QStringLiteral("-wal")).size() > (16 << 10));
+        QCOMPARE(recorder.path(), path);
+        QVERIFY(QFile::exists(old));
+
+        // A tiny cap while recording: the log continues in a new part without a restart.
+        QSignalSpy rotated(&recorder, &FlightRecorder::pathChanged);
+        recorder.setLimits({8 << 10, 0});
+        QCOMPARE(recorder.limits().maxFileBytes, qint64(8 << 10));
+        QVERIFY(rotated.wait(5000));
+        QCOMPARE(QFileInfo(recorder.path()).fileName(), QStringLiteral("live-2.sortielog"));
+        // A folder limit: the oldest log goes, the one being written stays.
+        recorder.setLimits({0, 1});
+        QTRY_VERIFY(!QFile::exists(old));
+        QVERIFY(QFile::exists(recorder.path()));
+        const QString second = recorder.path();
+        fly(flight.size() / 2, flight.size());
+        recorder.stop();
+        QString error;
+        const auto log = FlightLog::open(second, &error);
+        QVERIFY2(log, qPrintable(error));
+        QCOMPARE(log->vehicles()[0].name(), QStringLiteral("EMU-101"));
+        QVERIFY(log->vehicles()[0].counts[size_t(TelemetryField::Latitude)] >= flight.size() / 2 - 1);
+    }
+
+    void recordingSettingsCheckSaveAndApply()
+    {
+        QTemporaryDir dir;
+        QSettings storage(QDir(dir.path()).filePath(QStringLiteral("settings.ini")), QSettings::IniFormat);
+        storage.setValue(QStringLiteral("flightlog/maxFileMB"), 64);
+        storage.setValue(QStringLiteral("flightlog/maxFolderMB"), QStringLiteral("lots")); // unreadable: the default
+        QCOMPARE(flightlog::RecordingSettings::stored(storage).maxFileBytes, qint64(64) << 20);
+        QCOMPARE(flightlog::RecordingSettings::stored(storage).maxFolderBytes, flightlog::RecordingLimits{}.maxFolderBytes);
+        FlightRecorder recorder({QDir(dir.path()).filePath(QStringLiteral("logs/a.sortielog")), {}, 100});
+        flightlog::RecordingSettings settings(&storage, &recorder);
+        QCOMPARE(recorder.limits().maxFileBytes, qint64(64) << 20); // the stored limits, before the start
+        QCOMPARE(settings.maxFileMB(), 64);
+        QCOMPARE(settings.maxFolderMB(), 4096);
+        QVERIFY(recorder.start());
+        QCOMPARE(settings.currentLog(), QStringLiteral("a.sortielog"));
+        QVERIFY(settings.folder().endsWith(QStringLiteral("logs")));
+        settings.refresh();
+        QVERIFY2(settings.folderSummary().contains(QStringLiteral("in 1 log")), qPrintable(settings.folderSummary()));
+        // Refused, with the reason, and nothing changes.
+        QSignalSpy changed(&settings, &flightlog::RecordingSettings::limitsChanged);
+        QVERIFY(!settings.apply(100, 50));
+        QVERIFY2(settings.errorString().contains(QStringLiteral("at least one whole log")), qPrintable(settings.errorString()));
+        QVERIFY(!settings.apply(-1, 0));
+        QVERIFY(!settings.errorString().isEmpty());
+        QCOMPARE(changed.count(), 0);
+        QCOMPARE(storage.value(QStringLiteral("flightlog/maxFileMB")).toInt(), 64);
+        // Accepted: saved, and in force in the running recorder.
+        QVERIFY(settings.apply(32, 0));
+        QVERIFY(settings.errorString().isEmpty());
+        QCOMPARE(changed.count(), 1);
+        QCOMPARE(recorder.limits().maxFileBytes, qint64(32) << 20);
+        QCOMPARE(recorder.limits().maxFolderBytes, qint64(0));
+        QCOMPARE(storage.value(QStringLiteral("flightlog/maxFileMB")).toInt(), 32);
+        QCOMPARE(storage.value(QStringLiteral("flightlog/maxFolderMB")).toInt(), 0);
+        QCOMPARE(flightlog::RecordingSettings::stored(storage).maxFolderBytes, qint64(0)); // 0 stays "no limit"
+        recorder.stop();
+    }
+
     void exportsParseBack()
     {
         QTemporaryDir dir;
@@ -315,7 +409,8 @@ private slots:
         QVERIFY(a);
         QCOMPARE(a->protocol(), QStringLiteral("Replay")); // never a live vehicle
         QCOMPARE(replay.fleet()->index(0).data(flightlog::ReplayFleet::ReplayRole).toBool(), true);
-        // The history holds the whole span at once, for the plots.
+        // The history is filled with the whole span in the background, for the plots.
+        QTRY_VERIFY(replay.isHistoryLoaded());
         QCOMPARE(a->history().series(TelemetryField::Latitude).size(), flown.size());
         QCOMPARE(a->history().series(TelemetryField::Latitude).newest().time, flown.back().time);
 
@@ -362,6 +457,128 @@ private slots:
         a->arm();
         QVERIFY(result.wait(2000));
         QCOMPARE(result.first().at(1).toBool(), false);
+    }
+
+    void replayOpensBeforeTheHistoriesAreDecoded()
+    {
+        QTemporaryDir dir;
+        std::vector<test::FlightSample> flown;
+        const QString path = recordTwoFlights(dir.path(), &flown);
+        flightlog::ReplayController replay;
+        QSignalSpy loaded(&replay, &flightlog::ReplayController::historyLoadedChanged);
+        QVERIFY2(replay.open(path), qPrintable(replay.errorString()));
+        // The histories arrive through the event loop, which has not run yet: this is the lazy path.
+        QVERIFY(!replay.isHistoryLoaded());
+        Vehicle *a = replay.fleet()->vehicleAt(replay.log()->vehicleIndex(QStringLiteral("EMU-101")));
+        QVERIFY(a);
+        QVERIFY(std::fabs(a->position().latitude() - flown.front().lat) < 1e-7);
+        QVERIFY(std::fabs(a->position().longitude() - flown.front().lon) < 1e-7);
+        QVERIFY(a->history().series(TelemetryField::Latitude).size() < flown.size());
+        // Scrub before the histories are there: still where it was.
+        replay.seek(flown[300].time);
+        QVERIFY(std::fabs(a->position().latitude() - flown[300].lat) < 1e-7);
+        // Then the histories: the whole span, the position untouched by them.
+        QVERIFY(loaded.wait(5000));
+        QVERIFY(replay.isHistoryLoaded());
+        const auto &lat = a->history().series(TelemetryField::Latitude);
+        QCOMPARE(lat.size(), flown.size());
+        QCOMPARE(lat.oldest().time, flown.front().time);
+        QCOMPARE(lat.newest().time, flown.back().time);
+        QVERIFY(std::fabs(a->position().latitude() - flown[300].lat) < 1e-7);
+        QCOMPARE(replay.position(), qint64(flown[300].time));
+        // Closed while its worker runs (or has just posted): nothing of it arrives afterwards.
+        QVERIFY(replay.open(path));
+        QVERIFY(!replay.isHistoryLoaded());
+        replay.close(); // cancels the worker and waits for it
+        QCoreApplication::processEvents();
+        QVERIFY(!replay.isHistoryLoaded());
+        // And a log opened again fills again.
+        QVERIFY(replay.open(path));
+        QTRY_VERIFY(replay.isHistoryLoaded());
+        a = replay.fleet()->vehicleAt(replay.log()->vehicleIndex(QStringLiteral("EMU-101")));
+        QCOMPARE(a->history().series(TelemetryField::Latitude).size(), flown.size());
+    }
+
+    void thinnedSeriesKeepsTheWholeSpan()
+    {
+        QTemporaryDir dir;
+        std::vector<test::FlightSample> flown;
+        const QString path = recordTwoFlights(dir.path(), &flown);
+        QString error;
+        const auto log = FlightLog::open(path, &error);
+        QVERIFY2(log, qPrintable(error));
+        const int a = log->vehicleIndex(QStringLiteral("EMU-101"));
+        const auto all = log->series(a, TelemetryField::Latitude);
+        const size_t perField = all.size() / 4;
+        const auto thinned = log->thinnedSeries(a, perField);
+        QVERIFY(thinned);
+        std::vector<vehicle::TelemetryUpdate> lat;
+        for (const auto &u : *thinned)
+            if (u.field == TelemetryField::Latitude)
+                lat.push_back(u);
+        QVERIFY(lat.size() <= perField);
+        QVERIFY(lat.size() > perField / 2);
+        QCOMPARE(lat.front().time, all.front().time);
+        int64_t widestGap = 0;
+        for (size_t i = 1; i < lat.size(); ++i) {
+            QVERIFY(lat[i].time > lat[i - 1].time);
+            widestGap = std::max(widestGap, lat[i].time - lat[i - 1].time);
+        }
+        QVERIFY(all.back().time - lat.back().time <= widestGap); // evenly to the end of the span
+        std::atomic_bool cancelled{true};
+        QVERIFY(!log->thinnedSeries(a, perField, &cancelled));
+    }
+
+    void serverHistoryChoice()
+    {
+        flightlog::ReplayController replay;
+        flightlog::ServerHistoryRequest request(nullptr, &replay);
+        const qint64 now = QDateTime(QDate(2026, 11, 24), QTime(12, 0, 29, 250), Qt::UTC).toMSecsSinceEpoch();
+        request.setClock([now] { return now; });
+        QCOMPARE(request.canFetch(), false);
+        QVERIFY2(request.problem().contains(QStringLiteral("connect to a server")), qPrintable(request.problem()));
+        request.setVehicles({{QStringLiteral("EMU-101"), 7}, {QStringLiteral("EMU-102"), 9}});
+        request.setVehicleIndex(1);
+        // Opening the dialog: the last hour up to now (to the second after it), the same vehicle still chosen.
+        QSignalSpy changed(&request, &flightlog::ServerHistoryRequest::choiceChanged);
+        request.reset();
+        QVERIFY(changed.count() >= 1);
+        QCOMPARE(request.vehicleNames(), QStringList({QStringLiteral("EMU-101"), QStringLiteral("EMU-102")}));
+        QCOMPARE(request.vehicleIndex(), 1);
+        QCOMPARE(request.fromText(), QStringLiteral("2026-11-24 11:00:30"));
+        QCOMPARE(request.toText(), QStringLiteral("2026-11-24 12:00:30"));
+        QVERIFY2(request.canFetch(), qPrintable(request.problem()));
+        QCOMPARE(request.range()->first, now + 750 - 3600000);
+        QCOMPARE(request.range()->second, now + 750);
+        // Times are UTC, to the second or the minute, with a space or a T.
+        QCOMPARE(flightlog::ServerHistoryRequest::parseTime(QStringLiteral(" 2026-11-24T11:15 ")), now + 750 - 45 * 60000 - 30000);
+        QVERIFY(!flightlog::ServerHistoryRequest::parseTime(QStringLiteral("2026-11-24 25:00")));
+        // Each problem named; nothing is sent while there is one.
+        request.setFromText(QStringLiteral("yesterday"));
+        QVERIFY2(request.problem().contains(QStringLiteral("\"yesterday\" is not a time")), qPrintable(request.problem()));
+        QVERIFY(!request.fetch());
+        QVERIFY(!request.isBusy());
+        request.setFromText(QStringLiteral("2026-11-24 12:00:30"));
+        QCOMPARE(request.problem(), QStringLiteral("The start must be before the end."));
+        request.setFromText(QStringLiteral("2026-11-24 13:00"));
+        request.setToText(QStringLiteral("2026-11-24 14:00"));
+        QCOMPARE(request.problem(), QStringLiteral("The start is in the future."));
+        request.setFromText(QStringLiteral("2026-11-22 12:00"));
+        request.setToText(QStringLiteral("2026-11-24 12:00"));
+        QVERIFY2(request.problem().contains(QStringLiteral("24 hours")), qPrintable(request.problem()));
+        request.setVehicleIndex(-1);
+        QCOMPARE(request.problem(), QStringLiteral("Choose a vehicle."));
+        request.chooseLastHour();
+        request.setVehicleIndex(0);
+        QVERIFY(request.canFetch());
+        // No server behind it: the fetch ends at once with the reason, and the replay stays closed.
+        QVERIFY(request.fetch());
+        QVERIFY(!request.isBusy());
+        QVERIFY2(request.errorString().contains(QStringLiteral("not connected")), qPrintable(request.errorString()));
+        QVERIFY(!replay.isActive());
+        // Opening the dialog again clears the error.
+        request.reset();
+        QVERIFY(request.errorString().isEmpty());
     }
 
     void compareFollowsThePlan()

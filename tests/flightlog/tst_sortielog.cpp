@@ -117,7 +117,7 @@ QString saveRoute(const QString &path, const std::vector<mission::GeoPoint> &poi
     m.name = name;
     m.routes.push_back(test::routeThrough(points, 12, name));
     m.routes.back().settings.safeAltitude = 5;
-    const auto saved = mission::formats::saveMission(m, path, {0, mission::ValidationOverride::AcceptErrors});
+    const auto saved = mission::formats::saveMission(m, path, {0, mission::ValidationOverride::AcceptErrors, {}});
     if (!saved)
         qFatal("%s", qPrintable(saved.error().toString()));
     return path;
@@ -224,7 +224,7 @@ private slots:
             const int v = log->vehicleIndex(QStringLiteral("EMU-101"));
             const auto lat = log->series(v, vehicle::TelemetryField::Latitude);
             QVERIFY(!lat.empty());
-            qInfo("killed at %lld, last sample %lld: %lld ms lost", killedAt, lat.back().time, killedAt - lat.back().time);
+            qInfo("killed at %lld, last sample %lld: %lld ms lost", (long long)killedAt, (long long)lat.back().time, (long long)(killedAt - lat.back().time));
             QVERIFY2(killedAt - lat.back().time <= 1000, qPrintable(QString::number(killedAt - lat.back().time)));
         }
 
@@ -240,7 +240,7 @@ private slots:
         QVERIFY2(kinds.contains(QStringLiteral("mode:EMU-102")), qPrintable(kinds.join(QLatin1Char(' '))));
 
         // export, each format parsed back
-        for (const QString format : {QStringLiteral("gpx"), QStringLiteral("kml"), QStringLiteral("csv")}) {
+        for (const QString &format : {QStringLiteral("gpx"), QStringLiteral("kml"), QStringLiteral("csv")}) {
             const QString out = dir.filePath(QStringLiteral("tracks.") + format);
             Run e = sortieLog({QStringLiteral("export"), cleanLog, QStringLiteral("--format"), format, QStringLiteral("-o"), out});
             QVERIFY2(e.exitCode == 0, e.err.constData());

@@ -17,6 +17,8 @@ ApplicationWindow {
     // Flight-log replay (the timeline on the telemetry page); null when the program has none.
     property ReplayController replay: null
     property ComparisonController comparison: null
+    property ServerHistoryRequest serverHistory: null   // the server's history into the replay
+    property RecordingSettings recordingSettings: null  // the flight logs' folder and limits (Logs…)
     // Edits a previous run left unsaved, offered at start.
     property AutosaveRecovery recovery: null
     property string connectionState: connection ? connection.state : "Disconnected"
@@ -76,6 +78,19 @@ ApplicationWindow {
                 ToolTip.text: qsTr("Choose the map source (Ctrl+M)")
             }
             ToolButton {
+                objectName: "logSettingsButton"
+                visible: window.recordingSettings !== null
+                text: qsTr("Logs…")
+                onClicked: logSettingsDialog.item.open()
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Where flight logs are recorded, and how much they may take")
+                Loader {
+                    id: logSettingsDialog
+                    active: window.recordingSettings !== null
+                    sourceComponent: FlightLogSettingsDialog { settings: window.recordingSettings }
+                }
+            }
+            ToolButton {
                 objectName: "unitsButton"
                 text: units.imperial ? qsTr("ft, mph") : qsTr("m, m/s")
                 onClicked: window.appSettings.units = units.imperial ? "metric" : "imperial"
@@ -118,6 +133,7 @@ ApplicationWindow {
             objectName: "telemetryPage"
             fleet: window.fleet
             replay: window.replay
+            serverHistory: window.serverHistory
             comparison: window.comparison
             units: units
             dark: window.dark

@@ -10,6 +10,8 @@ import Sortie.Ui
 ToolBar {
     id: bar
     required property ReplayController replay
+    // The connected server's history, replayed in the same controller; null when the program has none.
+    property ServerHistoryRequest serverHistory: null
     property string exportMessage
 
     FileDialog {
@@ -37,6 +39,17 @@ ToolBar {
                 objectName: "openLogButton"
                 text: qsTr("Open log…")
                 onClicked: openDialog.open()
+            }
+            Button {
+                objectName: "serverHistoryButton"
+                visible: bar.serverHistory !== null
+                text: qsTr("Server history…")
+                onClicked: historyDialog.item.open()
+                Loader {
+                    id: historyDialog
+                    active: bar.serverHistory !== null
+                    sourceComponent: ServerHistoryDialog { request: bar.serverHistory }
+                }
             }
             Rectangle {
                 objectName: "replayBanner"
@@ -109,6 +122,12 @@ ToolBar {
                     text: model.timeText + "  " + (model.vehicle.length > 0 ? model.vehicle + ": " : "") + model.text
                 }
                 onActivated: index => bar.replay.jumpToEvent(index)
+            }
+            Label {
+                objectName: "historyLoadingLabel"
+                visible: bar.replay.active && !bar.replay.historyLoaded
+                text: qsTr("Loading plots…")
+                opacity: 0.7
             }
             Label {
                 objectName: "positionLabel"

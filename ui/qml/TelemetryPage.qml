@@ -14,6 +14,8 @@ Page {
     required property DisplayUnits units
     // A log being replayed takes the place of the live vehicles (the timeline says so).
     property ReplayController replay: null
+    // The server's history for the replay (the timeline's Server history… dialog); null when none.
+    property ServerHistoryRequest serverHistory: null
     property ComparisonController comparison: null
     readonly property bool replaying: replay !== null && replay.active
     property var vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
@@ -174,7 +176,7 @@ Page {
                 objectName: "replayTimelineLoader"
                 Layout.fillWidth: true
                 active: page.replay !== null
-                sourceComponent: ReplayTimeline { replay: page.replay }
+                sourceComponent: ReplayTimeline { replay: page.replay; serverHistory: page.serverHistory }
             }
             Loader {
                 objectName: "comparisonPanelLoader"

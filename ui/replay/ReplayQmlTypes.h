@@ -1,7 +1,9 @@
 #pragma once
 
 #include "ComparisonController.h"
+#include "RecordingSettings.h"
 #include "ReplayController.h"
+#include "ServerHistoryRequest.h"
 
 #include <QtQml/qqmlregistration.h>
 
@@ -39,6 +41,22 @@ struct ComparisonControllerForeign
     QML_FOREIGN(sortie::flightlog::ComparisonController)
     QML_NAMED_ELEMENT(ComparisonController)
     QML_UNCREATABLE("The application provides the comparison.")
+};
+
+struct ServerHistoryRequestForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::flightlog::ServerHistoryRequest)
+    QML_NAMED_ELEMENT(ServerHistoryRequest)
+    QML_UNCREATABLE("The application provides the server history request.")
+};
+
+struct RecordingSettingsForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::flightlog::RecordingSettings)
+    QML_NAMED_ELEMENT(RecordingSettings)
+    QML_UNCREATABLE("The application provides the recording settings.")
 };
 
 } // namespace sortie::ui
