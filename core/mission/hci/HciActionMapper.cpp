@@ -3,6 +3,7 @@
 #include "Domain.pb.h"
 #include "HciText.h"
 
+#include <cmath>
 #include <numbers>
 #include <optional>
 
@@ -16,6 +17,13 @@ template<class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
+// An angle the server holds in radians, in degrees as the operator typed them: 60° goes out as
+// 1.0471975511965976 rad and would come back as 59.99999999999999°, which reads as an edit.
+double degreesOf(double radians)
+{
+    return std::round(radians / kDeg * 1e9) / 1e9;
+}
+
 // Set a field only when the decoded value differs: keeps the server's bytes when nothing changed.
 }
 
@@ -24,7 +32,7 @@ WaypointAction actionFromHci(const pb::ActionDefinition &d)
     if (d.has_waitdefinition())
         return WaitAction{d.waitdefinition().interval(), d.waitdefinition().waitforoperator()};
     if (d.has_headingdefinition())
-        return HeadingAction{d.headingdefinition().heading() / kDeg, d.headingdefinition().relativetonextwaypoint()};
+        return HeadingAction{degreesOf(d.headingdefinition().heading()), d.headingdefinition().relativetonextwaypoint()};
     if (d.has_poidefinition()) {
         const auto &p = d.poidefinition();
         const bool amsl = p.has_altitudetype() && p.altitudetype() == pb::AT_WGS84;
@@ -43,16 +51,16 @@ WaypointAction actionFromHci(const pb::ActionDefinition &d)
     }
     if (d.has_panoramadefinition()) {
         const auto &p = d.panoramadefinition();
-        return PanoramaAction{p.angle() / kDeg, p.stepangle() / kDeg, p.stepdelay(),
+        return PanoramaAction{degreesOf(p.angle()), degreesOf(p.stepangle()), p.stepdelay(),
                               p.rotationdirection() == pb::RD_COUNTERCLOCKWISE ? RotationDirection::CounterClockwise : RotationDirection::Clockwise,
-                              p.rotationspeed() / kDeg, p.panoramamode() == pb::PM_VIDEO ? PanoramaMode::Video : PanoramaMode::Photo};
+                              degreesOf(p.rotationspeed()), p.panoramamode() == pb::PM_VIDEO ? PanoramaMode::Video : PanoramaMode::Photo};
     }
     if (d.has_cameracontroldefinition()) {
         const auto &c = d.cameracontroldefinition();
         CameraControlAction a;
-        if (c.has_tilt()) a.tiltDeg = c.tilt() / kDeg;
-        if (c.has_roll()) a.rollDeg = c.roll() / kDeg;
-        if (c.has_yaw()) a.yawDeg = c.yaw() / kDeg;
+        if (c.has_tilt()) a.tiltDeg = degreesOf(c.tilt());
+        if (c.has_roll()) a.rollDeg = degreesOf(c.roll());
+        if (c.has_yaw()) a.yawDeg = degreesOf(c.yaw());
         if (c.has_zoomlevel()) a.zoomLevel = c.zoomlevel();
         return a;
     }
