@@ -40,11 +40,7 @@ SimVciVehicle::SimVciVehicle(const SimVciOptions &options, QObject *parent)
 void SimVciVehicle::tick()
 {
     const double dt = double(m_clock.restart()) / 1000.0 * m_options.timeScale;
-    const FlightModel::Mode before = m_model.state().mode;
     m_model.tick(dt);
-    // Auto becomes Hold (or Land, at a landing waypoint) inside tick() only at the mission's end.
-    if (before == FlightModel::Mode::Auto && (m_model.state().mode == FlightModel::Mode::Hold || m_model.state().mode == FlightModel::Mode::Land))
-        m_missionComplete = true;
     checkChanges();
 }
 
@@ -85,7 +81,7 @@ json SimVciVehicle::progress() const
     const int count = int(m_model.mission().size());
     std::string state = "idle";
     int reached = 0;
-    if (count > 0 && m_missionComplete) {
+    if (count > 0 && s.missionComplete) {
         state = "complete";
         reached = count;
     } else if (count > 0 && s.mode == FlightModel::Mode::Auto) {
@@ -95,7 +91,7 @@ json SimVciVehicle::progress() const
         state = "paused";
         reached = s.currentWaypoint;
     }
-    return {{"state", state}, {"current", m_missionComplete ? -1 : s.currentWaypoint}, {"reached", reached}, {"count", count}};
+    return {{"state", state}, {"current", s.missionComplete ? -1 : s.currentWaypoint}, {"reached", reached}, {"count", count}};
 }
 
 json SimVciVehicle::parameters() const
@@ -194,12 +190,8 @@ SimVciReply SimVciVehicle::put(const std::string &uri, const vci::VciMessage &re
         FlightModel::Mode mode;
         if (!body.is_string() || !FlightModel::modeFromName(body.get<std::string>(), &mode))
             return SimVciReply::error(400, "/state/mode takes one of manual, hold, takeoff, auto, guided, land, return_home");
-        if (mode == FlightModel::Mode::Auto && (m_missionComplete || m_model.state().currentWaypoint < 0)) {
-            const FlightModel::Refusal refusal = m_model.startMission(); // from the first waypoint again
-            if (refusal.empty())
-                m_missionComplete = false;
-            return refusedOrOk(refusal, body);
-        }
+        if (mode == FlightModel::Mode::Auto && (m_model.state().missionComplete || m_model.state().currentWaypoint < 0))
+            return refusedOrOk(m_model.startMission(), body); // from the first waypoint again
         if (mode == FlightModel::Mode::Takeoff)
             return refusedOrOk(m_model.takeoff(m_parameters["takeoff_altitude"]), body);
         return refusedOrOk(m_model.setMode(mode), body);
@@ -247,10 +239,8 @@ SimVciReply SimVciVehicle::put(const std::string &uri, const vci::VciMessage &re
             mission.push_back(p);
         }
         const FlightModel::Refusal refusal = m_model.setMission(std::move(mission));
-        if (refusal.empty()) {
-            m_missionComplete = false;
+        if (refusal.empty())
             m_missionAsSent = *waypoints;
-        }
         return refusedOrOk(refusal, *resource(std::string(profile::kMission)));
     }
     if (uri.rfind(profile::kParameterPrefix, 0) == 0)

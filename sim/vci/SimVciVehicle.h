@@ -55,7 +55,6 @@ private:
     FlightModel m_model;
     QTimer m_tick;
     QElapsedTimer m_clock;
-    bool m_missionComplete = false;
     std::vector<vci::profile::Waypoint> m_missionAsSent; // the accepted mission with its actions, for GET
     std::map<std::string, double> m_parameters;     // the writable ones
     std::map<std::string, nlohmann::json> m_lastState; // last value of each state resource, to see changes

@@ -60,12 +60,15 @@ GroupBox {
                         wrapMode: Text.Wrap
                         Layout.fillWidth: true
                     }
+                    // By count, not by list: an edited value then updates its row in place
+                    // instead of rebuilding every field (and losing the focus being typed in).
                     Repeater {
-                        model: action.fields
+                        model: action.fields.length
                         delegate: RowLayout {
                             id: field
-                            required property var modelData
-                            readonly property int action: modelData.action
+                            required property int index
+                            readonly property var modelData: action.fields[index] ?? ({})
+                            readonly property int actionIndex: modelData.action ?? -1
                             readonly property string name: modelData.name
                             readonly property string type: modelData.type
                             spacing: 6
@@ -75,28 +78,28 @@ GroupBox {
                                 Layout.preferredWidth: 150
                             }
                             TextField {
-                                objectName: "action_" + field.action + "_" + field.name
+                                objectName: "action_" + field.actionIndex + "_" + field.name
                                 visible: field.type === "number" || field.type === "integer"
                                 text: field.modelData.value === undefined ? "" : String(field.modelData.value)
                                 selectByMouse: true
                                 Layout.preferredWidth: 110
-                                onEditingFinished: if (text !== String(field.modelData.value)) box.actions.setField(field.action, field.name, text)
+                                onEditingFinished: if (text !== String(field.modelData.value)) box.actions.setField(field.actionIndex, field.name, text)
                             }
                             Switch {
-                                objectName: "action_" + field.action + "_" + field.name + "_switch"
+                                objectName: "action_" + field.actionIndex + "_" + field.name + "_switch"
                                 visible: field.type === "toggle"
                                 checked: field.modelData.value === true
-                                onToggled: box.actions.setField(field.action, field.name, checked)
+                                onToggled: box.actions.setField(field.actionIndex, field.name, checked)
                             }
                             ComboBox {
-                                objectName: "action_" + field.action + "_" + field.name + "_choice"
+                                objectName: "action_" + field.actionIndex + "_" + field.name + "_choice"
                                 visible: field.type === "choice"
                                 model: field.modelData.choices
                                 textRole: "text"
                                 valueRole: "value"
                                 currentIndex: visible ? indexOfValue(field.modelData.value) : -1
                                 Layout.preferredWidth: 190
-                                onActivated: box.actions.setField(field.action, field.name, currentValue)
+                                onActivated: box.actions.setField(field.actionIndex, field.name, currentValue)
                             }
                             Label { text: field.modelData.unit; opacity: 0.7 }
                         }
