@@ -352,6 +352,51 @@ private slots:
         QCOMPARE(refused.status, SampleStatus::NoData);
         QVERIFY(refused.message.contains(QStringLiteral("tried: none")));
     }
+
+    // An area scan flown AGL follows the terrain (UgCS's area tools do, within `tolerance`): the
+    // profile flies over the hill its passes cross, where straight passes at the same height would
+    // fly into it. Flown AMSL, or as waypoints, it does not follow.
+    void aglScanFollowsTheTerrain()
+    {
+        auto height = [](const GeoPoint &p) { return 20.0 + 80.0 * std::exp(-std::pow((p.longitude - 24.01) / 0.002, 2)); };
+        FormulaSource hill(QStringLiteral("hill"), height);
+        ElevationService service;
+        service.setSources({&hill});
+
+        sortie::mission::AreaScan scan;
+        scan.polygon = {{56.900, 24.000}, {56.900, 24.020}, {56.902, 24.020}, {56.902, 24.000}};
+        scan.parameters.altitude = 40;
+        scan.parameters.altitudeType = AltitudeType::Agl;
+        scan.parameters.directionDeg = 90;  // passes east-west, across the hill
+        scan.parameters.sideDistanceMeters = 100;
+        scan.parameters.turnaroundMeters = 0;
+        Route route;
+        route.segments.push_back(scan);
+        QCOMPARE(terrainFollowTolerance(route.segments[0]), std::optional<double>(kDefaultFollowTolerance));
+
+        const ProfileRoute profileRoute = profileRouteOf(route);
+        QVERIFY(profileRoute.waypoints.size() >= 4);
+        QCOMPARE(profileRoute.waypoints.front().followTolerance, kDefaultFollowTolerance);
+        const TerrainProfile followed = computeProfile(profileRoute, service, 10);
+        QVERIFY(followed.minClearance);
+        QVERIFY2(followed.minClearance->clearance > 40 - kDefaultFollowTolerance - 0.5,
+                 qPrintable(QString::number(followed.minClearance->clearance)));
+        QVERIFY(followed.lowStretches.empty());
+
+        // The same passes, straight: into the hill.
+        ProfileRoute straight = profileRoute;
+        for (ProfileWaypoint &w : straight.waypoints)
+            w.followTolerance = -1;
+        const TerrainProfile flown = computeProfile(straight, service, 10);
+        QVERIFY(flown.minClearance && flown.minClearance->clearance < 0);
+        QVERIFY(!flown.lowStretches.empty());
+
+        // AMSL scans and waypoints fly straight.
+        std::get<sortie::mission::AreaScan>(route.segments[0]).parameters.altitudeType = AltitudeType::Amsl;
+        QCOMPARE(terrainFollowTolerance(route.segments[0]), std::nullopt);
+        QCOMPARE(profileRouteOf(route).waypoints.front().followTolerance, -1.0);
+        QCOMPARE(terrainFollowTolerance(sortie::mission::Segment(sortie::mission::Waypoint{})), std::nullopt);
+    }
 };
 
 QTEST_GUILESS_MAIN(TstTerrainProfile)
