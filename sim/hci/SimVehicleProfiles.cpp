@@ -98,16 +98,10 @@ QMap<QString, int> seedVehicleProfiles(SimObjectStore &store, const std::vector<
 
 std::vector<mission::ProfileCamera> profileCameras(const pb::VehicleProfile &profile, const SimObjectStore *store)
 {
-    std::vector<mission::ProfileCamera> out;
-    for (const auto &link : profile.payloadprofiles()) {
-        const pb::PayloadProfile *payload = &link.payloadprofile();
-        if (payload->parameters_size() == 0 && store)
-            if (const auto *stored = store->find(QStringLiteral("PayloadProfile"), payload->id()))
-                payload = &stored->payloadprofile();
-        if (const auto camera = mission::cameraFromPayload(*payload))
-            out.push_back({payload->id(), *camera});
-    }
-    return out;
+    return mission::profileCameras(profile, [store](int id) -> const pb::PayloadProfile * {
+        const auto *stored = store ? store->find(QStringLiteral("PayloadProfile"), id) : nullptr;
+        return stored ? &stored->payloadprofile() : nullptr;
+    });
 }
 
 } // namespace sortie::sim

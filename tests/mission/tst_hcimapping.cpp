@@ -5,11 +5,13 @@
 #include "AlgorithmCatalog.h"
 #include "AreaScanPlanner.h"
 #include "Domain.pb.h"
+#include "FlightPath.h"
 #include "HciActionMapper.h"
 #include "HciRouteMapper.h"
 #include "HciText.h"
 #include "Messages.pb.h"
 #include "ProcessedPlanModel.h"
+#include "RouteValidator.h"
 #include "RouteEditor.h"
 #include "RouteModel.h"
 #include "SegmentParameters.h"
@@ -129,6 +131,62 @@ private slots:
         QCOMPARE(found, 1);
         QCOMPARE(back.vehicleprofile().parameters_size(), withDistance.vehicleprofile().parameters_size());
         QCOMPARE(imported(back).settings.profile.safeTerrainDistance, 40.0);
+    }
+
+    void profileCamerasPlanTheSegmentsThatNameThem()
+    {
+        // The server's profile carries a camera payload (id 7): the route knows it, and a
+        // photogrammetry segment whose `camera` is "7" is planned with its optics everywhere Sortie plans.
+        Camera survey;
+        survey.name = QStringLiteral("Survey 42 MP");
+        survey.sensorWidthMm = 35.9;
+        survey.sensorHeightMm = 24.0;
+        survey.focalLengthMm = 35.0;
+        survey.imageWidthPx = 7952;
+        survey.imageHeightPx = 5304;
+        pb::Route withCamera = savedRoute();
+        *withCamera.mutable_vehicleprofile()->add_payloadprofiles()->mutable_payloadprofile() = payloadFromCamera(survey, 7);
+        Route route = imported(withCamera);
+        QCOMPARE(route.settings.profile.cameras.size(), size_t(1));
+        QCOMPARE(route.settings.profile.cameras[0].id, 7);
+        QCOMPARE(route.settings.profile.cameras[0].camera.name, survey.name);
+        QVERIFY(std::abs(route.settings.profile.cameras[0].camera.focalLengthMm - 35.0) < 1e-9);
+        // Read-only: sending the route back leaves the profile as the server sent it.
+        QCOMPARE(routeToHci(route).vehicleprofile().SerializeAsString(), withCamera.vehicleprofile().SerializeAsString());
+
+        const AlgorithmDefinition *def = AlgorithmCatalog::builtIn().byKind(AlgorithmKind::Photogrammetry);
+        QVERIFY(def);
+        AlgorithmSegment photo;
+        photo.algorithm = def->className;
+        photo.figure = FigureType::Polygon;
+        for (const GeoPoint &g : {GeoPoint{56.95, 24.1}, GeoPoint{56.95, 24.12}, GeoPoint{56.96, 24.12}, GeoPoint{56.96, 24.1}})
+            photo.points.push_back({g, 0.0, AltitudeType::Agl});
+        for (const ParameterDefinition &p : def->parameters)
+            if (!p.defaultValue.isEmpty())
+                photo.parameters.push_back({p.name, p.defaultValue});
+        photo.setValue(QStringLiteral("camera"), QStringLiteral("7"));
+        route.segments.push_back(photo);
+        const int row = int(route.segments.size()) - 1;
+        const auto pointsOf = [row](const Route &r) {
+            int n = 0;
+            for (const PathPoint &p : flightPath(r))
+                n += p.segment == row ? 1 : 0;
+            return n;
+        };
+        const auto planErrors = [row](const Route &r) {
+            int n = 0;
+            for (const ValidationIssue &i : validateRoute(r).issues)
+                n += i.segment == row && i.rule == QLatin1String("segment-plan") ? 1 : 0;
+            return n;
+        };
+        QVERIFY2(pointsOf(route) > 10, qPrintable(QString::number(pointsOf(route))));
+        QCOMPARE(planErrors(route), 0);
+        // Without the profile's camera the same segment cannot be planned ("7" names nothing): the path
+        // only runs through its corners, and validation says why.
+        Route bare = route;
+        bare.settings.profile.cameras.clear();
+        QCOMPARE(pointsOf(bare), 4);
+        QVERIFY(planErrors(bare) > 0);
     }
 
     void unchangedRouteGoesBackByteForByte()

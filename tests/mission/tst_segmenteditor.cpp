@@ -213,6 +213,34 @@ private slots:
                 < after.value(QStringLiteral("passSpacing")).toDouble());
     }
 
+    void profileCamerasLeadThePicker()
+    {
+        // A route from a server whose vehicle profile has a camera (id 7): the picker offers it first,
+        // and choosing it plans the figures with its optics, not a built-in's.
+        Fixture f;
+        Camera wide = builtInCameras().front();
+        wide.name = QStringLiteral("Profile wide");
+        wide.focalLengthMm /= 2;  // twice the footprint of the built-in it is made from
+        Route r = f.model.route();
+        r.settings.profile.cameras = {{7, wide}};
+        f.model.resetRoute(r);
+        const int row = f.editor.addSegment(QStringLiteral("PhotogrammetryAlgorithm"), kSquare);
+        f.fields.setRow(row);
+        const int camera = f.fields.indexOf(QStringLiteral("camera"));
+        const QVariantList choices = f.fields.index(camera).data(SegmentEditorModel::ChoicesRole).toList();
+        QVERIFY(choices.size() > 1);
+        QCOMPARE(choices.first().toMap().value(QStringLiteral("value")).toString(), QStringLiteral("7"));
+        QCOMPARE(choices.first().toMap().value(QStringLiteral("text")).toString(), QStringLiteral("Profile wide (vehicle profile)"));
+        QVERIFY(f.fields.set(camera, builtInCameras().front().name));
+        const double builtInHeight = f.fields.figures().value(QStringLiteral("height")).toDouble();
+        QVERIFY(f.fields.set(camera, QStringLiteral("7")));
+        const QVariantMap withProfile = f.fields.figures();
+        QVERIFY2(withProfile.contains(QStringLiteral("photoCount")), qPrintable(withProfile.value(QStringLiteral("message")).toString()));
+        // The same GSD from half the focal length: half the height.
+        QVERIFY2(std::abs(withProfile.value(QStringLiteral("height")).toDouble() - builtInHeight / 2) < 0.01,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(withProfile.value(QStringLiteral("height")).toDouble()).arg(builtInHeight)));
+    }
+
     void previewPlansOncePerFrame()
     {
         Fixture f;

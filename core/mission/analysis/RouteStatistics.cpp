@@ -111,7 +111,8 @@ RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
             const AreaScanOutcome &o = scanOutcome(*scan, cache, scratch);
             if (o.ok())
                 st.photoCount += o.plan->photoCount;
-        } else if (const SegmentPlanOutcome o = planAlgorithmSegment(std::get<AlgorithmSegment>(s), AlgorithmCatalog::builtIn()); o.ok()) {
+        } else if (const SegmentPlanOutcome o = planAlgorithmSegment(std::get<AlgorithmSegment>(s), AlgorithmCatalog::builtIn(),
+                                                                                 planContextOf(route.settings)); o.ok()) {
             st.areaScanCount += o.plan->passes > 0;
             st.photoCount += o.plan->photos;
         }

@@ -143,7 +143,7 @@ private:
             return;
         }
         // What the planner (the same one sortie-sim processes with) cannot plan, by parameter or point.
-        const SegmentPlanOutcome o = planSegment(*def, plannerFigure(a), a.parameters, {});
+        const SegmentPlanOutcome o = planSegment(*def, plannerFigure(a), a.parameters, planContextOf(m_route.settings));
         for (const QString &problem : o.errors)
             add(Severity::Error, "segment-plan", row, QStringLiteral("%1: %2").arg(label(row), problem));
         if (o.ok())

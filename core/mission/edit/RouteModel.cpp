@@ -120,7 +120,7 @@ QVariant RouteModel::data(const QModelIndex &index, int role) const
     }
     case ScanParametersRole: return w ? QVariant() : parametersToVariant(s);
     case ScanPlanRole: {
-        const std::optional<AreaScan> scan = scanOf(s);
+        const std::optional<AreaScan> scan = scanOf(s, m_route.settings.profile.cameras);
         return scan ? scanPlanToVariant(m_scanPlans.outcome(*scan)) : QVariant();
     }
     default: return {};

@@ -161,6 +161,12 @@ void SegmentEditorModel::rebuild()
             if (f.definition.displayName.isEmpty())
                 f.definition.displayName = name;
             if (name == QLatin1String("camera") && f.definition.choices.empty()) {
+                // The vehicle profile's cameras first (by id, as the server resolves them; an algorithm
+                // segment is planned against them), then Sortie's survey cameras by name.
+                if (asAlgorithmSegment(*s))
+                    for (const ProfileCamera &c : m_model->settings().profile.cameras)
+                        f.definition.choices.push_back({c.id > 0 ? QString::number(c.id) : c.camera.name,
+                                                        tr("%1 (vehicle profile)").arg(c.camera.name)});
                 for (const Camera &c : builtInCameras())
                     f.definition.choices.push_back({c.name, c.name});
                 f.choicesSuggested = true;
@@ -286,7 +292,7 @@ double SegmentEditorModel::radius() const
 QVariantMap SegmentEditorModel::figures() const
 {
     const Segment *s = segment();
-    const std::optional<AreaScan> scan = s ? scanOf(*s) : std::nullopt;
+    const std::optional<AreaScan> scan = s ? scanOf(*s, m_model->settings().profile.cameras) : std::nullopt;
     if (!scan)
         return {};
     const QVariantMap plan = m_model->index(m_row).data(RouteModel::ScanPlanRole).toMap();

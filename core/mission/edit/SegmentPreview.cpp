@@ -103,7 +103,7 @@ void SegmentPreview::refresh() const
         return;
     }
     const SegmentPlanOutcome o = planAlgorithmSegment(std::get<AlgorithmSegment>(s), m_editor->catalog(),
-                                                      {{}, m_model->settings().initialSpeed, std::nullopt});
+                                                      planContextOf(m_model->settings()));
     if (!o.ok()) {
         m_problem = o.errors.empty() ? tr("This segment cannot be planned.") : o.errors.front();
         return;

@@ -26,7 +26,8 @@ int frameOf(AltitudeType t) { return t == AltitudeType::Amsl ? mav::Global : mav
 class Exporter
 {
 public:
-    Exporter(double startSpeed, ScanPlanCache *cache, bool keepScans) : m_speed(startSpeed), m_cache(cache), m_keepScans(keepScans) {}
+    Exporter(double startSpeed, std::vector<ProfileCamera> cameras, ScanPlanCache *cache, bool keepScans)
+        : m_speed(startSpeed), m_cameras(std::move(cameras)), m_cache(cache), m_keepScans(keepScans) {}
 
     MavlinkExport run(const Route &route)
     {
@@ -34,7 +35,7 @@ public:
             const Segment &s = route.segments[i];
             if (const Waypoint *w = asWaypoint(s))
                 waypoint(*w, int(i));
-            else if (const std::optional<AreaScan> planned = scanOf(s))
+            else if (const std::optional<AreaScan> planned = scanOf(s, m_cameras))
                 scan(*planned, int(i));
             else
                 algorithm(std::get<AlgorithmSegment>(s), int(i));
@@ -155,7 +156,7 @@ private:
             m_out.items.push_back(i);
             return;
         }
-        const SegmentPlanOutcome o = planAlgorithmSegment(a, AlgorithmCatalog::builtIn(), {{}, m_speed, std::nullopt});
+        const SegmentPlanOutcome o = planAlgorithmSegment(a, AlgorithmCatalog::builtIn(), {m_cameras, m_speed, std::nullopt});
         if (!o.ok()) {
             m_out.notices << QStringLiteral("%1 was left out: %2").arg(segmentLabel(row, Segment(a)),
                                                                        o.errors.empty() ? QStringLiteral("it cannot be planned") : o.errors.front());
@@ -221,6 +222,7 @@ private:
     }
 
     double m_speed;
+    std::vector<ProfileCamera> m_cameras;  // the route's profile's: a segment's camera may name one
     ScanPlanCache *m_cache;
     bool m_keepScans;
     MavlinkExport m_out;
@@ -230,7 +232,7 @@ private:
 
 MavlinkExport routeToMavlink(const Route &route, double startSpeed, ScanPlanCache *cache, bool keepScans)
 {
-    return Exporter(startSpeed, cache, keepScans).run(route);
+    return Exporter(startSpeed, route.settings.profile.cameras, cache, keepScans).run(route);
 }
 
 } // namespace sortie::mission::formats

@@ -140,7 +140,7 @@ QByteArray writeQgcPlan(const Route &route, QStringList *notices, ScanPlanCache 
     int jumpId = 1;
     for (const MavlinkItem &i : out.items) {
         if (i.segment) {
-            const SegmentPlanOutcome o = planAlgorithmSegment(*i.segment, AlgorithmCatalog::builtIn());
+            const SegmentPlanOutcome o = planAlgorithmSegment(*i.segment, AlgorithmCatalog::builtIn(), planContextOf(route.settings));
             if (!o.ok()) {
                 out.notices << QStringLiteral("A corridor was left out: %1").arg(o.errors.empty() ? QString() : o.errors.front());
                 continue;

@@ -163,6 +163,49 @@ constexpr std::pair<const char *, WaypointRole> kRoles[] = {
 constexpr std::pair<const char *, TurnType> kTurns[] = {
     {"StopAndTurn", TurnType::StopAndTurn}, {"Straight", TurnType::Straight}, {"Spline", TurnType::Spline}, {"BankTurn", TurnType::BankTurn}};
 
+Json cameraJson(const Camera &c)
+{
+    Json j{{"name", str(c.name)}, {"sensorWidthMm", c.sensorWidthMm}, {"sensorHeightMm", c.sensorHeightMm},
+           {"focalLengthMm", c.focalLengthMm}, {"imageWidthPx", c.imageWidthPx}, {"imageHeightPx", c.imageHeightPx}};
+    if (c.minTriggerIntervalS > 0)  // absent: not known
+        j["minTriggerIntervalS"] = c.minTriggerIntervalS;
+    return j;
+}
+
+Camera readCamera(const JsonCursor &cam)
+{
+    Camera c;
+    c.name = cam.stringOr("name", QString());
+    c.sensorWidthMm = cam.number("sensorWidthMm");
+    c.sensorHeightMm = cam.number("sensorHeightMm");
+    c.focalLengthMm = cam.number("focalLengthMm");
+    c.imageWidthPx = cam.at("imageWidthPx").integer();
+    c.imageHeightPx = cam.at("imageHeightPx").integer();
+    c.minTriggerIntervalS = cam.numberOr("minTriggerIntervalS", 0.0);
+    return c;
+}
+
+Json profileCamerasJson(const std::vector<ProfileCamera> &cameras)
+{
+    Json out = Json::array();
+    for (const ProfileCamera &c : cameras) {
+        Json j = cameraJson(c.camera);
+        j["id"] = c.id;
+        out.push_back(std::move(j));
+    }
+    return out;
+}
+
+std::vector<ProfileCamera> readProfileCameras(const JsonCursor &list)
+{
+    std::vector<ProfileCamera> out;
+    for (size_t i = 0; i < list.arraySize(); ++i) {
+        const JsonCursor c = list.at(i);
+        out.push_back({c.integerOr("id", 0), readCamera(c)});
+    }
+    return out;
+}
+
 Json segmentJson(const Segment &s)
 {
     if (const Waypoint *w = asWaypoint(s)) {
@@ -203,8 +246,7 @@ Json segmentJson(const Segment &s)
         polygon.push_back({g.latitude, g.longitude});
     // Parameters by their UgCS wire names and units (schema 3), read back through SegmentParameters.
     Json j{{"type", "areaScan"}, {"polygon", std::move(polygon)},
-           {"camera", {{"name", str(p.camera.name)}, {"sensorWidthMm", p.camera.sensorWidthMm}, {"sensorHeightMm", p.camera.sensorHeightMm},
-                       {"focalLengthMm", p.camera.focalLengthMm}, {"imageWidthPx", p.camera.imageWidthPx}, {"imageHeightPx", p.camera.imageHeightPx}}},
+           {"camera", cameraJson(p.camera)},
            {"heightMode", p.heightMode == ScanHeightMode::Altitude ? "altitude" : "groundSampleDistance"},
            {"parameters", {{"height", p.altitude}, {"groundSampleDistance", p.groundSampleDistanceCm},
                            {"altitudeType", str(altitudeTypeName(p.altitudeType))}, {"overlapForward", p.frontOverlapPercent},
@@ -263,13 +305,7 @@ Segment readSegment(const JsonCursor &c)
             s.polygon.push_back(g);
         }
         AreaScanParameters &p = s.parameters;
-        const JsonCursor cam = c.at("camera");
-        p.camera.name = cam.stringOr("name", QString());
-        p.camera.sensorWidthMm = cam.number("sensorWidthMm");
-        p.camera.sensorHeightMm = cam.number("sensorHeightMm");
-        p.camera.focalLengthMm = cam.number("focalLengthMm");
-        p.camera.imageWidthPx = cam.at("imageWidthPx").integer();
-        p.camera.imageHeightPx = cam.at("imageHeightPx").integer();
+        p.camera = readCamera(c.at("camera"));
         const QString mode = c.stringOr("heightMode", QStringLiteral("altitude"));
         if (mode != QLatin1String("altitude") && mode != QLatin1String("groundSampleDistance"))
             c.at("heightMode").fail(QStringLiteral("expected \"altitude\" or \"groundSampleDistance\""));
@@ -332,7 +368,7 @@ Json routeJson(const Route &r)
     Json j{{"name", str(s.name)},
            {"vehicleProfile", {{"name", str(s.profile.name)}, {"maxHorizontalSpeed", s.profile.maxHorizontalSpeed},
                                {"climbRate", s.profile.climbRate}, {"descentRate", s.profile.descentRate},
-                               {"safeTerrainDistance", s.profile.safeTerrainDistance}}},
+                               {"safeTerrainDistance", s.profile.safeTerrainDistance}, {"cameras", profileCamerasJson(s.profile.cameras)}}},
            {"safeAltitude", s.safeAltitude}, {"maxAltitude", s.maxAltitude}, {"initialSpeed", s.initialSpeed},
            {"maxSpeed", s.maxSpeed}, {"cornerRadius", s.cornerRadius}, {"takeoffHeight", s.takeoffHeight},
            {"failsafes", std::move(failsafes)}, {"endAction", s.endAction == EndAction::ReturnHome ? "returnHome" : "none"}};
@@ -358,6 +394,8 @@ Route readRoute(const JsonCursor &c)
         s.profile.climbRate = p->numberOr("climbRate", s.profile.climbRate);
         s.profile.descentRate = p->numberOr("descentRate", s.profile.descentRate);
         s.profile.safeTerrainDistance = p->numberOr("safeTerrainDistance", s.profile.safeTerrainDistance);
+        if (const auto cameras = p->find("cameras"))
+            s.profile.cameras = readProfileCameras(*cameras);
     }
     s.safeAltitude = c.numberOr("safeAltitude", s.safeAltitude);
     s.maxAltitude = c.numberOr("maxAltitude", s.maxAltitude);

@@ -23,6 +23,7 @@ RouteSettings settingsFromHci(const pb::Route &r)
         s.failsafes.push_back({FailsafeReason(int(f.reason())), FailsafeAction(int(f.action()))});
     const pb::VehicleProfile &vp = r.vehicleprofile();
     s.profile.name = QString::fromStdString(vp.name());
+    s.profile.cameras = profileCameras(vp);  // read-only here: the server's payloads, never written back
     double maxClimb = 0, maxDescent = 0;
     for (const auto &p : vp.parameters()) {
         switch (p.type()) {

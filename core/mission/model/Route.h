@@ -18,6 +18,9 @@ struct VehicleProfile
     double climbRate = 3.0;           // m/s, used to estimate flight time
     double descentRate = 2.0;         // m/s
     double safeTerrainDistance = 10.0;  // metres: the least clearance above the ground on any leg
+    // The profile's camera payloads (read from the server; a segment's `camera` names one by id or
+    // name, and one without `camera` flies the first). Empty: only the built-in cameras.
+    std::vector<ProfileCamera> cameras;
     bool operator==(const VehicleProfile &) const = default;
 };
 
@@ -57,6 +60,9 @@ struct RouteSettings
     EndAction endAction = EndAction::None;
     bool operator==(const RouteSettings &) const = default;
 };
+
+// What planning a segment of this route locally knows: the profile's cameras, the route's speed.
+PlanContext planContextOf(const RouteSettings &settings);
 
 struct Route
 {

@@ -112,7 +112,7 @@ std::vector<GeoPoint> figureOf(const Segment &s)
     return out;
 }
 
-std::optional<AreaScan> scanOf(const Segment &s)
+std::optional<AreaScan> scanOf(const Segment &s, const std::vector<ProfileCamera> &cameras)
 {
     if (const AreaScan *scan = asAreaScan(s))
         return *scan;
@@ -124,7 +124,7 @@ std::optional<AreaScan> scanOf(const Segment &s)
     AreaScan scan;
     scan.polygon = figureOf(s);
     AreaScanParameters &p = scan.parameters;
-    if (const auto camera = builtInCamera(read.selection(u"camera")))
+    if (const auto camera = resolveCamera(read.selection(u"camera"), cameras))
         p.camera = *camera;
     if (!read.boolean(u"camTopFacingForward", true)) {  // the image's width runs along the track
         std::swap(p.camera.sensorWidthMm, p.camera.sensorHeightMm);

@@ -39,8 +39,8 @@ QString segmentKindName(const Segment &s);
 // circle's centre: the points a map lets the operator drag. Empty for a waypoint.
 std::vector<GeoPoint> figureOf(const Segment &s);
 // The lawnmower Sortie plans for a segment: an area scan itself, or a photogrammetry segment as
-// the scan its parameters describe (camera by name from the built-in list, GSD, overlaps,
-// direction, overshoot, speed); nullopt for anything else.
-std::optional<AreaScan> scanOf(const Segment &s);
+// the scan its parameters describe (its camera resolved against the profile's `cameras`, else the
+// built-in list by name; GSD, overlaps, direction, overshoot, speed); nullopt for anything else.
+std::optional<AreaScan> scanOf(const Segment &s, const std::vector<ProfileCamera> &cameras = {});
 
 } // namespace sortie::mission

@@ -56,6 +56,20 @@ std::optional<Camera> cameraFromPayload(const pb::PayloadProfile &payload)
     return c;
 }
 
+std::vector<ProfileCamera> profileCameras(const pb::VehicleProfile &profile, const std::function<const pb::PayloadProfile *(int)> &find)
+{
+    std::vector<ProfileCamera> out;
+    for (const auto &link : profile.payloadprofiles()) {
+        const pb::PayloadProfile *payload = &link.payloadprofile();
+        if (payload->parameters_size() == 0 && find)
+            if (const pb::PayloadProfile *found = find(payload->id()))
+                payload = found;
+        if (const std::optional<Camera> camera = cameraFromPayload(*payload))
+            out.push_back({payload->id(), *camera});
+    }
+    return out;
+}
+
 pb::PayloadProfile payloadFromCamera(const Camera &camera, int id)
 {
     pb::PayloadProfile out;

@@ -23,9 +23,10 @@ std::vector<PathPoint> flightPath(const Route &route, ScanPlanCache *cache)
         }
         if (const AlgorithmSegment *a = asAlgorithmSegment(s)) {
             // Planned the way the server (and sortie-sim) processes it.
-            const SegmentPlanOutcome o = planAlgorithmSegment(*a, AlgorithmCatalog::builtIn(),
-                                                              {{}, route.settings.initialSpeed, path.empty() ? std::nullopt
-                                                                                                         : std::optional(path.back().position)});
+            PlanContext context = planContextOf(route.settings);
+            if (!path.empty())
+                context.previousPosition = path.back().position;
+            const SegmentPlanOutcome o = planAlgorithmSegment(*a, AlgorithmCatalog::builtIn(), context);
             if (o.ok()) {
                 for (const PlannedPoint &p : o.plan->points) {
                     const WaypointRole role = p.kind == PlannedPoint::Kind::Takeoff ? WaypointRole::Takeoff

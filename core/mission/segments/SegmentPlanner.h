@@ -26,13 +26,6 @@ struct SegmentFigure
     std::vector<double> parameters;      // Figure.parameters: a circle's radius (m) first
 };
 
-// A camera payload of the route's vehicle profile, as the `camera` parameter names it (by id or name).
-struct ProfileCamera
-{
-    int id = 0;
-    Camera camera;
-};
-
 struct PlanContext
 {
     std::vector<ProfileCamera> cameras;        // the vehicle profile's cameras, first = default
