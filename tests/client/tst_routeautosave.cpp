@@ -6,17 +6,22 @@
 #include "AutosaveRecord.h"
 #include "AutosaveRecovery.h"
 #include "AutosaveTestRoute.h"
+#include "AutosaveWriter.h"
 #include "RouteAutosave.h"
 
 #include <QGeoCoordinate>
 #include <QDir>
 #include <QFile>
+#include <QScopeGuard>
+#include <QSemaphore>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThread>
 
 using namespace sortie;
 using client::AutosaveRecovery;
+using client::AutosaveWriter;
 using client::RouteAutosave;
 using client::RouteDocument;
 
@@ -88,17 +93,110 @@ private slots:
         doc.editor()->addWaypoint(QGeoCoordinate(56.0, 24.0));
         QVERIFY(autosave.writeNow());
         QVERIFY(QFile::exists(autosave.filePath()));
+        QSignalSpy removed(&autosave, &RouteAutosave::removed);
         doc.undo(); // back to the saved state
+        QVERIFY(removed.wait(5000)); // removed on the writer's thread
         QVERIFY(!QFile::exists(autosave.filePath()));
         doc.redo();
         QVERIFY(autosave.writeNow());
         doc.markSaved(); // saved to the server: the baseline moves
+        autosave.waitForWriter();
         QVERIFY(!QFile::exists(autosave.filePath()));
         doc.editor()->addWaypoint(QGeoCoordinate(56.1, 24.1));
         QVERIFY(autosave.writeNow());
         QCOMPARE(int(readFile(autosave.filePath()).baseline.segments.size()), 13);
         doc.load(test::serverRoute()); // another route opened
+        autosave.waitForWriter();
         QVERIFY(!QFile::exists(autosave.filePath()));
+    }
+
+    void theFileIsEncodedAndWrittenOffTheGuiThread()
+    {
+        QTemporaryDir dir;
+        RouteDocument doc;
+        RouteAutosave autosave(&doc, dir.path());
+        autosave.setDelay(0);
+        doc.load(test::serverRoute());
+        QThread *encodedOn = nullptr;
+        QThread *emittedOn = nullptr;
+        // Direct connections run where the writer emits: the thread that encoded and wrote.
+        connect(autosave.writer(), &AutosaveWriter::written, autosave.writer(),
+                [&encodedOn] { encodedOn = QThread::currentThread(); }, Qt::DirectConnection);
+        connect(&autosave, &RouteAutosave::written, this, [&emittedOn] { emittedOn = QThread::currentThread(); });
+        QSignalSpy written(&autosave, &RouteAutosave::written);
+        test::editRoute(doc);
+        QVERIFY(written.wait(5000));
+        QVERIFY(encodedOn);
+        QVERIFY(encodedOn != QThread::currentThread());
+        QCOMPARE(encodedOn, autosave.writer()->thread());
+        QCOMPARE(emittedOn, QThread::currentThread()); // the signal reaches the GUI thread
+        QVERIFY(readFile(autosave.filePath()).working == doc.route());
+    }
+
+    void aLateWriteDoesNotBringBackTheFileOfACleanDocument()
+    {
+        QTemporaryDir dir;
+        RouteDocument doc;
+        RouteAutosave autosave(&doc, dir.path());
+        autosave.setDelay(0);
+        doc.load(test::serverRoute());
+        autosave.waitForWriter();
+        // Hold the writer, so the write below is still pending when the document becomes clean.
+        QSemaphore gate;
+        QSemaphore holding;
+        QMetaObject::invokeMethod(autosave.writer(), [&] { holding.release(); gate.acquire(); }, Qt::QueuedConnection);
+        QVERIFY(holding.tryAcquire(1, 5000));
+        const auto letGo = qScopeGuard([&gate] { gate.release(); }); // a failed check must not leave it held
+        QSignalSpy written(&autosave, &RouteAutosave::written);
+        QSignalSpy removed(&autosave, &RouteAutosave::removed);
+        doc.editor()->addWaypoint(QGeoCoordinate(56.0, 24.0));
+        QTRY_VERIFY(!autosave.isBatching()); // the timer fired: the write waits
+        QCOMPARE(autosave.writer()->queued(), 1);
+        doc.undo(); // clean again: the removal is queued behind the write
+        gate.release();
+        autosave.waitForWriter();
+        QCoreApplication::processEvents(); // deliver what the writer emitted
+        QVERIFY(!QFile::exists(autosave.filePath()));
+        QCOMPARE(written.count(), 0); // the waiting write was dropped: the file was going anyway
+
+        // The same with the write already done: the removal follows it.
+        doc.redo();
+        QVERIFY(autosave.writeNow());
+        QVERIFY(QFile::exists(autosave.filePath()));
+        doc.undo();
+        QVERIFY(removed.wait(5000));
+        autosave.waitForWriter();
+        QVERIFY(!QFile::exists(autosave.filePath()));
+    }
+
+    void theNewestSnapshotWinsWhenWritesQueueUp()
+    {
+        QTemporaryDir dir;
+        RouteDocument doc;
+        RouteAutosave autosave(&doc, dir.path());
+        autosave.setDelay(0);
+        doc.load(test::serverRoute());
+        autosave.waitForWriter();
+        QSemaphore gate;
+        QSemaphore holding;
+        QMetaObject::invokeMethod(autosave.writer(), [&] { holding.release(); gate.acquire(); }, Qt::QueuedConnection);
+        QVERIFY(holding.tryAcquire(1, 5000));
+        const auto letGo = qScopeGuard([&gate] { gate.release(); }); // a failed check must not leave it held
+        QSignalSpy written(&autosave, &RouteAutosave::written);
+        doc.editor()->addWaypoint(QGeoCoordinate(56.0, 24.0));
+        QTRY_VERIFY(!autosave.isBatching());
+        QCOMPARE(autosave.writer()->queued(), 1);
+        doc.editor()->addWaypoint(QGeoCoordinate(56.1, 24.1));
+        QVERIFY(autosave.isBatching());
+        QTRY_VERIFY(!autosave.isBatching());
+        QCOMPARE(autosave.writer()->queued(), 1); // replaced, not appended
+        gate.release();
+        QVERIFY(written.wait(5000));
+        autosave.waitForWriter();
+        QCoreApplication::processEvents();
+        QCOMPARE(written.count(), 1);
+        QVERIFY(readFile(autosave.filePath()).working == doc.route());
+        QCOMPARE(int(doc.route().segments.size()), 14);
     }
 
     void unsavedEditsOutliveTheInstanceAndAreRestoredAsOneStep()
