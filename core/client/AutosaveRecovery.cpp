@@ -172,8 +172,8 @@ QString AutosaveRecovery::blockerOf(const Offer &offer) const
         return {};
     const QString owner = r.user.isEmpty() ? r.server : tr("%1 as %2").arg(r.server, r.user);
     if (m_server.isEmpty())
-        return tr("These edits belong to route %1 on %2. Sign in to %2 to restore them (choose Later), so that saving them "
-                  "updates that route.").arg(QString::number(r.routeId), owner);
+        return tr("These edits belong to route %1 on %2, and saving them updates that route. Sign in to %2 to restore "
+                  "them: choose Later, sign in, and they are offered again.").arg(QString::number(r.routeId), owner);
     if (m_server != r.server || (!r.user.isEmpty() && m_user != r.user))
         return tr("These edits belong to route %1 on %2, but this session is signed in to %3 as %4. Sign out and sign in to "
                   "%2 to restore them; until then they are kept and offered again at each start.")
