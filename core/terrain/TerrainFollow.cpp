@@ -1,23 +1,24 @@
 #include "TerrainFollow.h"
 
+#include "SegmentParameters.h"
+
+#include <algorithm>
 #include <cmath>
 
 namespace sortie::terrain {
 
-namespace {
-// Keeps probes first..last, marking in `keep` the ones that must become points.
-void split(const SampledPath &path, const std::vector<GroundSample> &g, double tolerance, size_t first, size_t last,
-           std::vector<bool> &keep)
+void markFollowPoints(const std::vector<double> &distance, const std::vector<double> &ground, double tolerance,
+                      size_t first, size_t last, std::vector<bool> &keep)
 {
     if (last <= first + 1)
         return;
-    const double d0 = path.points[first].distance, d1 = path.points[last].distance;
-    const double h0 = g[first].ground, h1 = g[last].ground;
-    double worst = tolerance;
+    const double d0 = distance[first], d1 = distance[last];
+    const double h0 = ground[first], h1 = ground[last];
+    double worst = std::max(0.1, tolerance);
     size_t at = 0;
     for (size_t i = first + 1; i < last; ++i) {
-        const double f = d1 > d0 ? (path.points[i].distance - d0) / (d1 - d0) : 0.0;
-        const double off = std::abs(h0 + f * (h1 - h0) - g[i].ground);
+        const double f = d1 > d0 ? (distance[i] - d0) / (d1 - d0) : 0.0;
+        const double off = std::abs(h0 + f * (h1 - h0) - ground[i]);
         if (off > worst) {
             worst = off;
             at = i;
@@ -26,10 +27,20 @@ void split(const SampledPath &path, const std::vector<GroundSample> &g, double t
     if (at == 0)
         return;
     keep[at] = true;
-    split(path, g, tolerance, first, at, keep);
-    split(path, g, tolerance, at, last, keep);
+    markFollowPoints(distance, ground, tolerance, first, at, keep);
+    markFollowPoints(distance, ground, tolerance, at, last, keep);
 }
-} // namespace
+
+std::optional<double> terrainFollowTolerance(const mission::Segment &segment)
+{
+    if (mission::asWaypoint(segment) || mission::altitudeTypeOf(segment) != mission::AltitudeType::Agl)
+        return std::nullopt;
+    if (!mission::isAreaScan(segment) && !mission::parameterNames(segment).contains(QStringLiteral("tolerance")))
+        return std::nullopt;
+    bool ok = false;
+    const double value = mission::parameterValue(segment, QStringLiteral("tolerance")).toDouble(&ok);
+    return ok && value >= 0 ? value : kDefaultFollowTolerance;
+}
 
 FollowResult followTerrain(const std::vector<GeoPoint> &pass, const FollowOptions &options, ElevationService &service)
 {
@@ -55,9 +66,13 @@ FollowResult followTerrain(const std::vector<GeoPoint> &pass, const FollowOption
     std::vector<bool> keep(path.points.size(), false);
     for (const int v : path.vertexSample)
         keep[size_t(v)] = true;
-    const double tolerance = std::max(0.1, options.tolerance);
+    std::vector<double> distance(path.points.size()), ground(g.size());
+    for (size_t i = 0; i < g.size(); ++i) {
+        distance[i] = path.points[i].distance;
+        ground[i] = g[i].ground;
+    }
     for (size_t k = 0; k + 1 < path.vertexSample.size(); ++k)
-        split(path, g, tolerance, size_t(path.vertexSample[k]), size_t(path.vertexSample[k + 1]), keep);
+        markFollowPoints(distance, ground, options.tolerance, size_t(path.vertexSample[k]), size_t(path.vertexSample[k + 1]), keep);
     for (size_t i = 0; i < keep.size(); ++i)
         if (keep[i])
             out.points.push_back({path.points[i].position, g[i].ground + options.altitudeAgl, g[i].ground});

@@ -1,9 +1,11 @@
 #pragma once
 
 #include "ElevationService.h"
+#include "Segment.h"
 
 #include <QString>
 
+#include <optional>
 #include <vector>
 
 namespace sortie::terrain {
@@ -35,5 +37,19 @@ struct FollowResult
 // consecutive points stays within `tolerance` of altitudeAgl above every probed ground sample. Like
 // Douglas–Peucker on the height profile: split each leg at the worst probe until all fit.
 FollowResult followTerrain(const std::vector<GeoPoint> &pass, const FollowOptions &options, ElevationService &service);
+
+// The probes a terrain-following leg flies through: of probes first..last (their distances along the
+// path and the ground at each), marks in `keep` the ones where a straight climb between the kept
+// probes would stray more than `tolerance` from the ground's shape. first and last are not marked
+// here: the caller keeps them. The step both followTerrain and the simulator's processing use.
+void markFollowPoints(const std::vector<double> &distance, const std::vector<double> &ground, double tolerance,
+                      size_t first, size_t last, std::vector<bool> &keep);
+
+// UgCS's area tools flown AGL follow the terrain: extra points where the ground departs more than
+// the segment's `tolerance` (docs/missions.md). The tolerance for a segment that does so (a scan,
+// photogrammetry or another algorithm with a `tolerance` parameter, its altitude type AGL), else
+// nullopt. An unset tolerance is the algorithm's default (kDefaultFollowTolerance).
+inline constexpr double kDefaultFollowTolerance = 3.0;
+std::optional<double> terrainFollowTolerance(const mission::Segment &segment);
 
 } // namespace sortie::terrain

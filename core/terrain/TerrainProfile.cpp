@@ -2,7 +2,9 @@
 
 #include "FlightPath.h"
 #include "RouteValidator.h"
+#include "TerrainFollow.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sortie::terrain {
@@ -16,6 +18,9 @@ ProfileRoute profileRouteOf(const mission::Route &route, mission::ScanPlanCache 
         out.home = route.settings.home->position;
     const std::vector<mission::PathPoint> path = mission::flightPath(route, cache);
     out.waypoints.reserve(path.size());
+    std::vector<std::optional<double>> follow(route.segments.size());
+    for (size_t s = 0; s < route.segments.size(); ++s)
+        follow[s] = terrainFollowTolerance(route.segments[s]);
     for (size_t i = 0; i < path.size(); ++i) {
         const mission::PathPoint &p = path[i];
         ProfileWaypoint w;
@@ -26,6 +31,10 @@ ProfileRoute profileRouteOf(const mission::Route &route, mission::ScanPlanCache 
         w.label = p.segment >= 0 && size_t(p.segment) < route.segments.size() && mission::isAreaScan(route.segments[size_t(p.segment)])
                       ? QStringLiteral("%1, point %2").arg(mission::segmentLabel(route, p.segment)).arg(i + 1)
                       : QStringLiteral("Waypoint %1").arg(i + 1);
+        // Within one following segment, the leg to its next point follows the ground.
+        if (p.segment >= 0 && size_t(p.segment) < follow.size() && follow[size_t(p.segment)] && i + 1 < path.size()
+            && path[i + 1].segment == p.segment)
+            w.followTolerance = *follow[size_t(p.segment)];
         out.waypoints.push_back(std::move(w));
     }
     return out;
@@ -76,7 +85,48 @@ TerrainProfile computeProfile(const ProfileRoute &route, ElevationService &servi
         t.altitudeAgl = t.ground.hasValue() ? t.altitudeAmsl - t.ground.ground : kNaN;
     }
 
-    // The altitude along each leg, the clearance, and what is lowest.
+    // The altitude along each leg: straight between waypoints; on a leg that follows the terrain,
+    // straight between the points following adds (needs the ground all along it, else straight).
+    std::vector<double> followed(n, kNaN);
+    std::vector<double> distance, ground;
+    for (size_t a = 0; a + 1 < route.waypoints.size(); ++a) {
+        const double tolerance = route.waypoints[a].followTolerance;
+        const size_t first = size_t(out.path.vertexSample[a]), last = size_t(out.path.vertexSample[a + 1]);
+        if (tolerance < 0 || last <= first + 1 || std::isnan(out.waypoints[a].altitudeAgl) || std::isnan(out.waypoints[a + 1].altitudeAgl))
+            continue;
+        if (!std::all_of(out.ground.begin() + long(first), out.ground.begin() + long(last) + 1,
+                         [](const GroundSample &g) { return g.hasValue(); }))
+            continue;
+        if (distance.empty()) {
+            distance.resize(n);
+            ground.resize(n);
+            for (size_t i = 0; i < n; ++i) {
+                distance[i] = out.path.points[i].distance;
+                ground[i] = out.ground[i].ground;
+            }
+        }
+        std::vector<bool> keep(n, false);
+        keep[first] = keep[last] = true;
+        markFollowPoints(distance, ground, tolerance, first, last, keep);
+        const double agl0 = out.waypoints[a].altitudeAgl, agl1 = out.waypoints[a + 1].altitudeAgl;
+        const auto height = [&](size_t i) {
+            const double f = distance[last] > distance[first] ? (distance[i] - distance[first]) / (distance[last] - distance[first]) : 0.0;
+            return ground[i] + agl0 + f * (agl1 - agl0);
+        };
+        size_t from = first;
+        for (size_t i = first + 1; i <= last; ++i) {
+            if (!keep[i])
+                continue;
+            const double h0 = height(from), h1 = height(i);
+            for (size_t j = from; j <= i; ++j) {
+                const double f = distance[i] > distance[from] ? (distance[j] - distance[from]) / (distance[i] - distance[from]) : 0.0;
+                followed[j] = h0 + f * (h1 - h0);
+            }
+            from = i;
+        }
+    }
+
+    // The clearance, and what is lowest.
     out.altitudeAmsl.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const PathSamplePoint &p = out.path.points[i];
@@ -84,7 +134,7 @@ TerrainProfile computeProfile(const ProfileRoute &route, ElevationService &servi
         const double da = out.path.vertexDistance[a], db = out.path.vertexDistance[b];
         const double f = db > da ? (p.distance - da) / (db - da) : 0.0;
         const double ha = out.waypoints[a].altitudeAmsl, hb = out.waypoints[b].altitudeAmsl;
-        out.altitudeAmsl[i] = ha + f * (hb - ha);
+        out.altitudeAmsl[i] = std::isnan(followed[i]) ? ha + f * (hb - ha) : followed[i];
         const GroundSample &g = out.ground[i];
         out.pending |= g.status == SampleStatus::Pending;
         const double c = out.altitudeAmsl[i] - g.ground;

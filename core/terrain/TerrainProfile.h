@@ -26,6 +26,9 @@ struct ProfileWaypoint
     HeightReference reference = HeightReference::Amsl;
     int row = -1;   // the route segment it belongs to (what selecting it selects), -1 if none
     QString label;  // "Waypoint 3", as the table names it
+    // >= 0: the leg to the next point follows the terrain within this many metres (an AGL scan; the
+    // processing adds points there, see terrainFollowTolerance); -1: a straight climb.
+    double followTolerance = -1.0;
 };
 
 // The flown path as the profile sees it: points with their heights, legs between them.
@@ -64,7 +67,8 @@ struct LowStretch
 };
 
 // Ground, altitude and clearance along the flown path, sampled every step metres. Sample i is at
-// path.points[i]; the altitude goes linearly with distance between waypoints.
+// path.points[i]; the altitude goes linearly with distance between waypoints, or, on a leg that
+// follows the terrain, between the points terrain following adds (markFollowPoints on the samples).
 struct TerrainProfile
 {
     SampledPath path;

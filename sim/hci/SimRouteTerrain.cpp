@@ -1,8 +1,10 @@
 #include "SimRouteTerrain.h"
 
+#include "AlgorithmCatalog.h"
 #include "Messages.pb.h"
 #include "PathSampling.h"
 #include "SimTerrain.h"
+#include "TerrainFollow.h"
 
 #include <QString>
 
@@ -44,6 +46,78 @@ struct Point
     bool landing;
 };
 
+// The tolerance within which a segment's AGL waypoints follow the terrain: an algorithm with a
+// `tolerance` parameter (UgCS's area tools); unset, the default. nullopt: it does not follow.
+std::optional<double> followTolerance(const pb::SegmentDefinition &definition)
+{
+    const mission::AlgorithmDefinition *algorithm =
+        mission::AlgorithmCatalog::builtIn().byClassName(QString::fromStdString(definition.algorithmclassname()));
+    if (!algorithm || !algorithm->parameter(u"tolerance"))
+        return std::nullopt;
+    for (const auto &p : definition.parametervalues())
+        if (p.name() == "tolerance") {
+            bool ok = false;
+            const double value = QString::fromStdString(p.value()).toDouble(&ok);
+            if (ok && value >= 0)
+                return value;
+        }
+    return terrain::kDefaultFollowTolerance;
+}
+
+bool isAglWaypoint(const pb::Action &a)
+{
+    return a.has_waypoint() && a.waypoint().altitudeframe() == pb::AF_AGL;
+}
+
+// Adds waypoints between consecutive AGL waypoints of the segment where a straight climb would
+// stray more than `tolerance` from the ground (probed every `step` metres). Each added point is a
+// copy of the waypoint it leads to (same turn, radius), its height above the ground interpolated,
+// still processed over flat ground (the placement below puts it on the real ground). A leg with
+// no data under it is left straight: its waypoints' own checks speak for it.
+void followTerrain(pb::ProcessedSegment &segment, const SimTerrain &terrain, double tolerance, double step)
+{
+    google::protobuf::RepeatedPtrField<pb::Action> out;
+    const pb::Action *previous = nullptr;
+    for (const pb::Action &action : segment.segmentactions()) {
+        if (isAglWaypoint(action) && previous) {
+            const pb::Waypoint &a = previous->waypoint(), &b = action.waypoint();
+            const terrain::SampledPath path = terrain::samplePath(
+                {{a.latitude() * kDeg, a.longitude() * kDeg}, {b.latitude() * kDeg, b.longitude() * kDeg}}, step);
+            std::vector<double> distance, ground;
+            bool complete = true;
+            for (const terrain::PathSamplePoint &p : path.points) {
+                const std::optional<double> g = terrain.groundAt(p.position.latitude, p.position.longitude);
+                complete = complete && g.has_value();
+                distance.push_back(p.distance);
+                ground.push_back(g.value_or(0.0));
+            }
+            if (complete && path.points.size() > 2) {
+                std::vector<bool> keep(path.points.size(), false);
+                terrain::markFollowPoints(distance, ground, tolerance, 0, path.points.size() - 1, keep);
+                const double aglA = a.wgs84altitude() - a.elevation(), aglB = b.wgs84altitude() - b.elevation();
+                const double length = distance.back();
+                for (size_t i = 1; i + 1 < keep.size(); ++i) {
+                    if (!keep[i])
+                        continue;
+                    pb::Action added;
+                    added.set_origin(pb::OO_SYSTEM);
+                    pb::Waypoint *w = added.mutable_waypoint();
+                    *w = b;
+                    w->set_latitude(path.points[i].position.latitude / kDeg);
+                    w->set_longitude(path.points[i].position.longitude / kDeg);
+                    const double f = length > 0 ? distance[i] / length : 0.0;
+                    w->set_wgs84altitude(b.elevation() + aglA + f * (aglB - aglA));
+                    *out.Add() = std::move(added);
+                }
+            }
+        }
+        if (action.has_waypoint() || action.has_takeoff() || action.has_landing())
+            previous = isAglWaypoint(action) ? &action : nullptr;
+        *out.Add() = action;
+    }
+    segment.mutable_segmentactions()->Swap(&out);
+}
+
 } // namespace
 
 double SimRouteTerrain::safeDistance(const pb::VehicleProfile &routeProfile, const pb::VehicleProfile *stored)
@@ -58,6 +132,10 @@ double SimRouteTerrain::safeDistance(const pb::VehicleProfile &routeProfile, con
 
 void SimRouteTerrain::apply(pb::ProcessedRoute &route, const SimTerrain &terrain, double safeDistance)
 {
+    for (int s = 0; s < route.segments_size() && s < route.route().segments_size(); ++s)
+        if (const std::optional<double> tolerance = followTolerance(route.route().segments(s)))
+            followTerrain(*route.mutable_segments(s), terrain, *tolerance, kStep);
+
     std::vector<Point> points;
     for (int s = 0; s < route.segments_size(); ++s) {
         auto *segment = route.mutable_segments(s);

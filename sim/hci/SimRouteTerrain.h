@@ -14,7 +14,10 @@ class SimTerrain;
 // Route processing's terrain pass, run over what SimRouteProcessor made (it knows the geometry;
 // this knows the ground). Every processed waypoint, take-off and landing gets the ground under it as
 // `elevation`; an AGL waypoint (altitudeFrame AF_AGL, processed as flat ground + AGL) and a take-off
-// fly the real ground + their height as wgs84Altitude, a landing is on the ground. Then each leg between consecutive waypoints is sampled every kStep metres: a leg
+// fly the real ground + their height as wgs84Altitude, a landing is on the ground. First, a segment
+// of an area tool (an algorithm with `tolerance`) flown AGL follows the terrain, as UgCS's do: between
+// its consecutive AGL waypoints, waypoints are added where the ground departs more than the tolerance
+// from a straight climb (terrain::markFollowPoints, the rule the client's profile draws with). Then each leg between consecutive waypoints is sampled every kStep metres: a leg
 // closer to the ground than the profile's safe distance to terrain makes the segment it arrives in
 // RPS_INVALID with an MS_ERROR naming the leg, the distance along it and the clearance; an AGL
 // waypoint where the terrain has no data is an error too (its height is unknown).

@@ -229,6 +229,75 @@ private slots:
                  qPrintable(message));
         QCOMPARE(processed.segments(2).status(), pb::RPS_PROCESSED);  // 300 m AMSL clears everything
     }
+
+    // An area scan flown AGL over the hill follows it: waypoints are added where the ground departs
+    // more than the tolerance, every leg keeps its height above the ground within it, and nothing is
+    // refused; the same scan without terrain following (AMSL) would fly through the hill.
+    void processRouteFollowsTerrainInAScan()
+    {
+        hci::HciClient client(m_session.get());
+        pb::Route route;
+        route.set_name("scan over the hill");
+        pb::SegmentDefinition scan;
+        scan.set_algorithmclassname("com.ugcs.ucs.service.routing.impl.AreaScanAlgorithm");
+        scan.mutable_figure()->set_type(pb::FT_POLYGON);
+        for (const auto &[lat, lon] : std::vector<std::pair<double, double>>{
+                 {56.947, 24.49}, {56.947, 24.51}, {56.953, 24.51}, {56.953, 24.49}, {56.947, 24.49}}) {
+            auto *p = scan.mutable_figure()->add_points();
+            p->set_latitude(lat * kRad);
+            p->set_longitude(lon * kRad);
+            p->set_altitudetype(pb::AT_AGL);
+        }
+        const auto set = [&scan](const char *name, const char *value) {
+            auto *v = scan.add_parametervalues();
+            v->set_name(name);
+            v->set_value(value);
+        };
+        set("height", "60");
+        set("altitudeType", "AGL");
+        set("sideDistance", "200");
+        set("directionAngle", "90");
+        set("tolerance", "5");
+        *route.add_segments() = scan;
+        const auto [response, error] = call<pb::ProcessRouteResponse>(client.processRoute(route));
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        const auto &segment = response.processedroute().segments(0);
+        QVERIFY2(segment.status() == pb::RPS_PROCESSED,
+                 qPrintable(segment.messageset().messages_size() ? QString::fromStdString(segment.messageset().messages(0).defaulttext()) : QString()));
+        std::vector<pb::Waypoint> points;
+        int added = 0;
+        for (const auto &a : segment.segmentactions())
+            if (a.has_waypoint()) {
+                points.push_back(a.waypoint());
+                added += a.origin() == pb::OO_SYSTEM ? 1 : 0;
+            }
+        QVERIFY2(added > 4, qPrintable(QString::number(added)));
+        // Between consecutive waypoints, probed every 5 m: 60 m above the tiles' ground within 5 m.
+        HgtTileSource tiles(m_dir.path());
+        double lowest = INFINITY, highest = -INFINITY;
+        for (size_t i = 1; i < points.size(); ++i) {
+            const pb::Waypoint &a = points[i - 1], &b = points[i];
+            const SampledPath path = samplePath({{a.latitude() / kRad, a.longitude() / kRad}, {b.latitude() / kRad, b.longitude() / kRad}}, 5);
+            for (const PathSamplePoint &p : path.points) {
+                const double f = path.length() > 0 ? p.distance / path.length() : 0.0;
+                const double agl = a.wgs84altitude() + f * (b.wgs84altitude() - a.wgs84altitude()) - tiles.sample(p.position).ground;
+                lowest = std::min(lowest, agl);
+                highest = std::max(highest, agl);
+            }
+        }
+        QVERIFY2(lowest > 60 - 5 - 1 && highest < 60 + 5 + 1, qPrintable(QStringLiteral("%1..%2").arg(lowest).arg(highest)));
+
+        // Flown AMSL at 120 m, the scan does not follow: the hill (220 m) refuses it.
+        for (auto &v : *scan.mutable_parametervalues())
+            if (v.name() == "altitudeType")
+                v.set_value("AMSL");
+            else if (v.name() == "height")
+                v.set_value("120");
+        *route.mutable_segments(0) = scan;
+        const auto [amsl, amslError] = call<pb::ProcessRouteResponse>(client.processRoute(route));
+        QVERIFY2(amslError.isEmpty(), qPrintable(amslError));
+        QCOMPARE(amsl.processedroute().segments(0).status(), pb::RPS_INVALID);
+    }
 };
 
 QTEST_GUILESS_MAIN(TstTerrainServer)
