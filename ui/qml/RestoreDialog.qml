@@ -25,7 +25,7 @@ Dialog {
         Label {
             objectName: "restoreIntro"
             text: !dialog.recovery ? ""
-                  : dialog.count > 1 ? qsTr("Sortie did not close normally. These routes had unsaved edits, saved automatically. Choose one to see its changes.")
+                  : dialog.count > 1 ? qsTr("Sortie did not close normally. These routes had unsaved edits, saved automatically. Choose one to see its changes; the others are kept and offered again at the next start.")
                   : qsTr("Sortie did not close normally. Edits of “%1” were saved automatically at %2.")
                         .arg(dialog.recovery.routeName)
                         .arg(Qt.formatDateTime(dialog.recovery.savedAt, Qt.DefaultLocaleShortDate))
