@@ -14,7 +14,7 @@ namespace sortie::client {
 
 // Encodes and writes one autosave slot's file on the thread it lives on (RouteAutosave moves it
 // to a worker thread of its own), so the GUI thread only takes snapshots: the routes are value
-// types, and copying a 10,000-waypoint route takes 0.1-1.3 ms (docs/performance.md), where
+// types, and copying a 10,000-waypoint route takes 0.1-1.5 ms (docs/performance.md), where
 // encoding and writing it takes 60-80.
 //
 // Jobs run one at a time, in the order they were queued: a removal queued after a write runs
