@@ -135,6 +135,11 @@ int main(int argc, char *argv[])
     sortie::client::RouteAutosave autosave(missions.document(), autosaves);
     QObject::connect(&connection, &sortie::client::ConnectionController::ready, &autosave,
                      [&] { autosave.setServer(connection.server(), connection.user()); });
+    // A server route's autosaved edits are restored only when signed in where they belong.
+    QObject::connect(&connection, &sortie::client::ConnectionController::stateChanged, &recovery, [&] {
+        const bool ready = connection.isReady();
+        recovery.setSession(ready ? connection.server() : QString(), ready ? connection.user() : QString());
+    });
     // Every session is recorded without the operator asking: a log per run in the data folder.
     sortie::flightlog::FlightRecorder recorder({sortie::flightlog::FlightRecorder::sessionPath(flightLogDirectory(options)), {}, 500});
     // The operator's size cap and folder limit, from the settings, changed in the Logs… dialog.

@@ -1,11 +1,10 @@
 #include "RouteAutosave.h"
 
-#include "AtomicFile.h"
 #include "AutosaveRecord.h"
+#include "AutosaveWriter.h"
 #include "Messages.pb.h"
 #include "RouteDocument.h"
 
-#include <QFile>
 #include <QLoggingCategory>
 
 Q_LOGGING_CATEGORY(lcAutosave, "sortie.client.autosave")
@@ -19,7 +18,7 @@ RouteAutosave::RouteAutosave(RouteDocument *document, const QString &directory, 
 {
     m_timer.setSingleShot(true);
     m_timer.setInterval(500);
-    connect(&m_timer, &QTimer::timeout, this, [this] { writeNow(); });
+    connect(&m_timer, &QTimer::timeout, this, &RouteAutosave::writeLater);
     QString error;
     if (!m_directory.ensureExists(&error)) {
         fail(error);
@@ -30,6 +29,18 @@ RouteAutosave::RouteAutosave(RouteDocument *document, const QString &directory, 
         fail(tr("No free autosave slot in %1: edits are not autosaved.").arg(directory));
         return;
     }
+    m_writer = new AutosaveWriter(filePath());
+    m_writer->moveToThread(&m_thread);
+    // Emitted on the writer's thread, delivered here in the order they were emitted.
+    connect(m_writer, &AutosaveWriter::written, this, [this](const QString &path) {
+        m_error.clear();
+        emit written(path);
+    });
+    connect(m_writer, &AutosaveWriter::removed, this, &RouteAutosave::removed);
+    connect(m_writer, &AutosaveWriter::failed, this, &RouteAutosave::fail);
+    m_thread.setObjectName(QStringLiteral("autosave writer %1").arg(m_slot));
+    m_thread.start();
+
     QUndoStack *stack = document->undoStack();
     connect(stack, &QUndoStack::indexChanged, this, &RouteAutosave::edited);
     connect(stack, &QUndoStack::cleanChanged, this, [this](bool clean) {
@@ -45,10 +56,17 @@ RouteAutosave::~RouteAutosave()
 {
     if (!m_lock)
         return;
-    if (m_document && m_document->isModified())
-        writeNow(); // kept: the next start offers these edits
-    else
-        remove();
+    if (m_document && m_document->isModified()) {
+        if (!writeNow()) // kept: the next start offers these edits
+            qCWarning(lcAutosave).noquote() << m_error;
+    } else {
+        if (m_writer->queueRemove())
+            drainLater();
+        waitForWriter();
+    }
+    m_thread.quit();
+    m_thread.wait();
+    delete m_writer; // its thread has stopped; the lock is released after this, with the members
 }
 
 QString RouteAutosave::filePath() const
@@ -73,16 +91,18 @@ void RouteAutosave::edited()
 void RouteAutosave::takeBaseline()
 {
     m_timer.stop();
-    if (!m_document)
+    if (!m_writer || !m_document)
         return;
-    m_baseline = encodeAutosaveRoute(m_document->route());
-    remove();
+    // The file goes and the route as it is now becomes the baseline, both after any write still
+    // queued or running: a late write cannot bring the file back.
+    if (m_writer->queueRemove(m_document->route()))
+        drainLater();
 }
 
-bool RouteAutosave::writeNow()
+bool RouteAutosave::queueWrite()
 {
     m_timer.stop();
-    if (!m_lock || !m_document || !m_document->isModified())
+    if (!m_writer || !m_document || !m_document->isModified())
         return false;
     AutosaveRecord header;
     header.server = m_server;
@@ -92,21 +112,44 @@ bool RouteAutosave::writeNow()
         header.routeVersion = origin.message->has_version() ? origin.message->version() : -1;
     }
     header.savedAt = QDateTime::currentDateTimeUtc();
-    const QByteArray data = encodeAutosave(header, encodeAutosaveRoute(m_document->route()), m_baseline);
-    const QString error = writeFileAtomically(filePath(), data);
-    if (!error.isEmpty()) {
-        fail(error);
-        return false;
-    }
-    m_error.clear();
-    emit written(filePath());
-    return true;
+    // A copy of the value: the worker encodes it while the GUI goes on editing the original.
+    return m_writer->queueWrite(std::move(header), m_document->route());
 }
 
-void RouteAutosave::remove()
+void RouteAutosave::writeLater()
 {
-    if (m_slot > 0 && QFile::exists(filePath()) && QFile::remove(filePath()))
-        emit removed();
+    if (queueWrite())
+        drainLater();
+}
+
+void RouteAutosave::drainLater()
+{
+    QMetaObject::invokeMethod(m_writer, [writer = m_writer] { writer->drain(); }, Qt::QueuedConnection);
+}
+
+QString RouteAutosave::drainAndWait()
+{
+    // Runs after every drain already posted (events are delivered in order), then drains the rest.
+    QString error;
+    QMetaObject::invokeMethod(m_writer, [&error, writer = m_writer] { error = writer->drain(); }, Qt::BlockingQueuedConnection);
+    return error;
+}
+
+bool RouteAutosave::writeNow()
+{
+    m_timer.stop();
+    if (!m_writer || !m_document || !m_document->isModified())
+        return false;
+    queueWrite(); // drainAndWait() below runs it, whether or not a drain was posted
+    const QString error = drainAndWait();
+    m_error = error; // the signals (written or failed) follow through the event loop
+    return error.isEmpty();
+}
+
+void RouteAutosave::waitForWriter()
+{
+    if (m_writer)
+        drainAndWait();
 }
 
 void RouteAutosave::fail(const QString &message)

@@ -78,6 +78,7 @@ private slots:
         QCOMPARE(recovery.changes(), (QStringList{QStringLiteral("WP 2 moved 33 m"),
                                                   QStringLiteral("altitude of WP 3 %1 → 100 m").arg(altitude),
                                                   QStringLiteral("WP 13 added")}));
+        recovery.setSession(QStringLiteral("127.0.0.1:3334"), QStringLiteral("admin")); // where the helper's route belongs
         QVERIFY(recovery.restore());
 
         auto expected = mission::formats::loadMission(expectedFile);
@@ -109,6 +110,7 @@ private slots:
             client::RouteDocument doc;
             client::AutosaveRecovery recovery(&doc, dir.path());
             QVERIFY2(recovery.isAvailable(), qPrintable(recovery.message()));
+            recovery.setSession(QStringLiteral("127.0.0.1:3334"), QStringLiteral("admin"));
             QVERIFY(recovery.restore());
             QCOMPARE(doc.model()->count(), int(record->working.segments.size()));
         }

@@ -6,17 +6,22 @@
 #include "AutosaveRecord.h"
 #include "AutosaveRecovery.h"
 #include "AutosaveTestRoute.h"
+#include "AutosaveWriter.h"
 #include "RouteAutosave.h"
 
 #include <QGeoCoordinate>
 #include <QDir>
 #include <QFile>
+#include <QScopeGuard>
+#include <QSemaphore>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThread>
 
 using namespace sortie;
 using client::AutosaveRecovery;
+using client::AutosaveWriter;
 using client::RouteAutosave;
 using client::RouteDocument;
 
@@ -43,6 +48,19 @@ class TestRouteAutosave : public QObject
         autosave.setServer(QStringLiteral("127.0.0.1:3334"), QStringLiteral("admin"));
         doc.load(test::serverRoute());
         test::editRoute(doc);
+        return doc.route();
+    }
+
+    // The same for a route from a file (no server identity), named `name`, with one waypoint added.
+    static mission::Route leaveFileEdits(const QString &dir, const QString &name)
+    {
+        RouteDocument doc;
+        RouteAutosave autosave(&doc, dir);
+        mission::Route route = test::serverRoute();
+        route.origin = {};
+        route.settings.name = name;
+        doc.load(route);
+        doc.editor()->addWaypoint(QGeoCoordinate(56.5, 24.5));
         return doc.route();
     }
 
@@ -88,17 +106,111 @@ private slots:
         doc.editor()->addWaypoint(QGeoCoordinate(56.0, 24.0));
         QVERIFY(autosave.writeNow());
         QVERIFY(QFile::exists(autosave.filePath()));
+        QSignalSpy removed(&autosave, &RouteAutosave::removed);
         doc.undo(); // back to the saved state
+        QVERIFY(removed.wait(5000)); // removed on the writer's thread
         QVERIFY(!QFile::exists(autosave.filePath()));
         doc.redo();
         QVERIFY(autosave.writeNow());
         doc.markSaved(); // saved to the server: the baseline moves
+        autosave.waitForWriter();
         QVERIFY(!QFile::exists(autosave.filePath()));
         doc.editor()->addWaypoint(QGeoCoordinate(56.1, 24.1));
         QVERIFY(autosave.writeNow());
         QCOMPARE(int(readFile(autosave.filePath()).baseline.segments.size()), 13);
         doc.load(test::serverRoute()); // another route opened
+        autosave.waitForWriter();
         QVERIFY(!QFile::exists(autosave.filePath()));
+    }
+
+    void theFileIsEncodedAndWrittenOffTheGuiThread()
+    {
+        QTemporaryDir dir;
+        RouteDocument doc;
+        RouteAutosave autosave(&doc, dir.path());
+        autosave.setDelay(0);
+        doc.load(test::serverRoute());
+        QThread *encodedOn = nullptr;
+        QThread *emittedOn = nullptr;
+        // Direct connections run where the writer emits: the thread that encoded and wrote.
+        connect(autosave.writer(), &AutosaveWriter::written, autosave.writer(),
+                [&encodedOn] { encodedOn = QThread::currentThread(); }, Qt::DirectConnection);
+        connect(&autosave, &RouteAutosave::written, this, [&emittedOn] { emittedOn = QThread::currentThread(); });
+        QSignalSpy written(&autosave, &RouteAutosave::written);
+        test::editRoute(doc);
+        QVERIFY(written.wait(5000));
+        autosave.waitForWriter(); // the writer emits to RouteAutosave first, then to the lambda
+        QVERIFY(encodedOn);
+        QVERIFY(encodedOn != QThread::currentThread());
+        QCOMPARE(encodedOn, autosave.writer()->thread());
+        QCOMPARE(emittedOn, QThread::currentThread()); // the signal reaches the GUI thread
+        QVERIFY(readFile(autosave.filePath()).working == doc.route());
+    }
+
+    void aLateWriteDoesNotBringBackTheFileOfACleanDocument()
+    {
+        QTemporaryDir dir;
+        RouteDocument doc;
+        RouteAutosave autosave(&doc, dir.path());
+        autosave.setDelay(0);
+        doc.load(test::serverRoute());
+        autosave.waitForWriter();
+        // Hold the writer, so the write below is still pending when the document becomes clean.
+        QSemaphore gate;
+        QSemaphore holding;
+        QMetaObject::invokeMethod(autosave.writer(), [&] { holding.release(); gate.acquire(); }, Qt::QueuedConnection);
+        QVERIFY(holding.tryAcquire(1, 5000));
+        const auto letGo = qScopeGuard([&gate] { gate.release(); }); // a failed check must not leave it held
+        QSignalSpy written(&autosave, &RouteAutosave::written);
+        QSignalSpy removed(&autosave, &RouteAutosave::removed);
+        doc.editor()->addWaypoint(QGeoCoordinate(56.0, 24.0));
+        QTRY_VERIFY(!autosave.isBatching()); // the timer fired: the write waits
+        QCOMPARE(autosave.writer()->queued(), 1);
+        doc.undo(); // clean again: the removal is queued behind the write
+        gate.release();
+        autosave.waitForWriter();
+        QCoreApplication::processEvents(); // deliver what the writer emitted
+        QVERIFY(!QFile::exists(autosave.filePath()));
+        QCOMPARE(written.count(), 0); // the waiting write was dropped: the file was going anyway
+
+        // The same with the write already done: the removal follows it.
+        doc.redo();
+        QVERIFY(autosave.writeNow());
+        QVERIFY(QFile::exists(autosave.filePath()));
+        doc.undo();
+        QVERIFY(removed.wait(5000));
+        autosave.waitForWriter();
+        QVERIFY(!QFile::exists(autosave.filePath()));
+    }
+
+    void theNewestSnapshotWinsWhenWritesQueueUp()
+    {
+        QTemporaryDir dir;
+        RouteDocument doc;
+        RouteAutosave autosave(&doc, dir.path());
+        autosave.setDelay(0);
+        doc.load(test::serverRoute());
+        autosave.waitForWriter();
+        QSemaphore gate;
+        QSemaphore holding;
+        QMetaObject::invokeMethod(autosave.writer(), [&] { holding.release(); gate.acquire(); }, Qt::QueuedConnection);
+        QVERIFY(holding.tryAcquire(1, 5000));
+        const auto letGo = qScopeGuard([&gate] { gate.release(); }); // a failed check must not leave it held
+        QSignalSpy written(&autosave, &RouteAutosave::written);
+        doc.editor()->addWaypoint(QGeoCoordinate(56.0, 24.0));
+        QTRY_VERIFY(!autosave.isBatching());
+        QCOMPARE(autosave.writer()->queued(), 1);
+        doc.editor()->addWaypoint(QGeoCoordinate(56.1, 24.1));
+        QVERIFY(autosave.isBatching());
+        QTRY_VERIFY(!autosave.isBatching());
+        QCOMPARE(autosave.writer()->queued(), 1); // replaced, not appended
+        gate.release();
+        QVERIFY(written.wait(5000));
+        autosave.waitForWriter();
+        QCoreApplication::processEvents();
+        QCOMPARE(written.count(), 1);
+        QVERIFY(readFile(autosave.filePath()).working == doc.route());
+        QCOMPARE(int(doc.route().segments.size()), 14);
     }
 
     void unsavedEditsOutliveTheInstanceAndAreRestoredAsOneStep()
@@ -122,6 +234,12 @@ private slots:
         RouteAutosave mine(&doc, dir.path());
         QCOMPARE(mine.slot(), 2);
 
+        // Saving the restored edits updates route 42 on that server: restored only when signed in there.
+        QVERIFY(recovery.restoreBlocker().contains(QStringLiteral("Sign in to 127.0.0.1:3334 as admin")));
+        QVERIFY(!recovery.restore());
+        recovery.setSession(QStringLiteral("127.0.0.1:3334"), QStringLiteral("admin"));
+        QVERIFY(recovery.restoreBlocker().isEmpty());
+
         QSignalSpy restored(&recovery, &AutosaveRecovery::restored);
         QVERIFY(recovery.restore());
         QCOMPARE(restored.count(), 1);
@@ -135,6 +253,122 @@ private slots:
         QVERIFY(!recovery.isAvailable());
         QVERIFY(QFile::exists(client::AutosaveDirectory(dir.path()).discardedPath()));
         QVERIFY(!QFile::exists(client::AutosaveDirectory(dir.path()).filePath(1)));
+    }
+
+    void severalLeftoversAreOfferedInOneListNewestFirst()
+    {
+        QTemporaryDir dir;
+        const mission::Route serverEdits = leaveEdits(dir.path()); // slot 1
+        const mission::Route fileEdits = leaveFileEdits(dir.path(), QStringLiteral("Field B")); // slot 2
+        client::AutosaveDirectory directory(dir.path());
+        QFile older(directory.filePath(1));
+        QVERIFY(older.open(QIODevice::ReadWrite));
+        QVERIFY(older.setFileTime(QDateTime::currentDateTime().addSecs(-600), QFileDevice::FileModificationTime));
+        older.close();
+
+        RouteDocument doc;
+        AutosaveRecovery recovery(&doc, dir.path());
+        QVERIFY(recovery.isAvailable());
+        QCOMPARE(recovery.count(), 2);
+        QCOMPARE(recovery.rowCount(), 2);
+        auto role = [&recovery](int row, int role) { return recovery.data(recovery.index(row), role); };
+        QCOMPARE(role(0, AutosaveRecovery::RouteNameRole).toString(), QStringLiteral("Field B"));
+        QCOMPARE(role(0, AutosaveRecovery::FileNameRole).toString(), directory.filePath(2));
+        QCOMPARE(role(0, AutosaveRecovery::OriginRole).toString(), QString());
+        QCOMPARE(role(0, AutosaveRecovery::RestoreBlockerRole).toString(), QString()); // a file's route: no session needed
+        QCOMPARE(role(1, AutosaveRecovery::RouteNameRole).toString(), QStringLiteral("Autosave sample"));
+        QCOMPARE(role(1, AutosaveRecovery::OriginRole).toString(), QStringLiteral("route 42, version 3, on 127.0.0.1:3334 as admin"));
+        QVERIFY(role(1, AutosaveRecovery::SummaryRole).toString().startsWith(QStringLiteral("3 changes")));
+        QVERIFY(!role(1, AutosaveRecovery::RestoreBlockerRole).toString().isEmpty());
+
+        // The current row is the one the details show and the buttons act on.
+        QCOMPARE(recovery.currentRow(), 0);
+        QCOMPARE(recovery.changes(), QStringList{QStringLiteral("WP 13 added")});
+        recovery.setCurrentRow(1);
+        QCOMPARE(recovery.changes().size(), 3);
+        recovery.discard(); // the server route's edits: kept as the discarded backup
+        QCOMPARE(recovery.count(), 1);
+        QCOMPARE(recovery.currentRow(), 0);
+        QCOMPARE(recovery.routeName(), QStringLiteral("Field B"));
+        QVERIFY(client::decodeAutosave([&] {
+                    QFile f(directory.discardedPath());
+                    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+                }()).value().working == serverEdits);
+        QVERIFY(recovery.restore());
+        QVERIFY(doc.route() == fileEdits);
+        QVERIFY(!recovery.isAvailable());
+        QVERIFY(directory.slotsWithFiles().isEmpty());
+    }
+
+    void afterARestoreTheOthersWaitForTheNextStart()
+    {
+        QTemporaryDir dir;
+        leaveFileEdits(dir.path(), QStringLiteral("Field A"));
+        leaveFileEdits(dir.path(), QStringLiteral("Field B"));
+        {
+            RouteDocument doc;
+            AutosaveRecovery recovery(&doc, dir.path());
+            QCOMPARE(recovery.count(), 2);
+            QVERIFY(recovery.restore());
+            QCOMPARE(recovery.count(), 0); // another restore would replace the route just restored
+            QVERIFY2(recovery.message().contains(QStringLiteral("1 more autosave")), qPrintable(recovery.message()));
+        }
+        RouteDocument next;
+        AutosaveRecovery recovery(&next, dir.path());
+        QCOMPARE(recovery.count(), 1);
+    }
+
+    void aSessionOnAnotherServerOrAsAnotherUserCannotRestoreAndIsToldWhatToDo()
+    {
+        QTemporaryDir dir;
+        const mission::Route edited = leaveEdits(dir.path()); // route 42 on 127.0.0.1:3334 as admin
+        RouteDocument doc;
+        AutosaveRecovery recovery(&doc, dir.path());
+        QSignalSpy changed(&recovery, &AutosaveRecovery::changed);
+        QSignalSpy rowsChanged(&recovery, &AutosaveRecovery::dataChanged);
+
+        recovery.setSession(QStringLiteral("10.0.0.7:3334"), QStringLiteral("admin"));
+        QVERIFY(changed.count() > 0);
+        QCOMPARE(rowsChanged.count(), 1);
+        const QString blocker = recovery.restoreBlocker();
+        QVERIFY2(blocker.contains(QStringLiteral("route 42 on 127.0.0.1:3334 as admin")), qPrintable(blocker));
+        QVERIFY2(blocker.contains(QStringLiteral("signed in to 10.0.0.7:3334 as admin")), qPrintable(blocker));
+        QVERIFY2(blocker.contains(QStringLiteral("Sign out and sign in to 127.0.0.1:3334 as admin")), qPrintable(blocker));
+        QCOMPARE(recovery.data(recovery.index(0), AutosaveRecovery::RestoreBlockerRole).toString(), blocker);
+        QVERIFY(!recovery.restore());
+        QVERIFY(recovery.message().contains(blocker));
+        QVERIFY(!doc.isModified());
+        QVERIFY(doc.route().segments.empty());
+
+        recovery.setSession(QStringLiteral("127.0.0.1:3334"), QStringLiteral("operator"));
+        QVERIFY(recovery.restoreBlocker().contains(QStringLiteral("signed in to 127.0.0.1:3334 as operator")));
+        QVERIFY(!recovery.restore());
+
+        // Unsaved edits of the route open now are not replaced either.
+        recovery.setSession(QStringLiteral("127.0.0.1:3334"), QStringLiteral("admin"));
+        doc.load(test::serverRoute());
+        doc.editor()->addWaypoint(QGeoCoordinate(56.0, 24.0));
+        QVERIFY(recovery.restoreBlocker().contains(QStringLiteral("unsaved edits")));
+        QVERIFY(!recovery.restore());
+        doc.undo();
+        QVERIFY(recovery.restoreBlocker().isEmpty());
+        QVERIFY(recovery.restore());
+        QVERIFY(doc.route() == edited);
+    }
+
+    void laterHidesTheOfferUntilTheSessionChanges()
+    {
+        QTemporaryDir dir;
+        leaveEdits(dir.path());
+        RouteDocument doc;
+        AutosaveRecovery recovery(&doc, dir.path());
+        QVERIFY(recovery.isAvailable());
+        recovery.postpone(); // to sign in first
+        QVERIFY(!recovery.isAvailable());
+        QCOMPARE(recovery.count(), 1); // still held, not discarded
+        recovery.setSession(QStringLiteral("127.0.0.1:3334"), QStringLiteral("admin"));
+        QVERIFY(recovery.isAvailable());
+        QVERIFY(recovery.restore());
     }
 
     void aLiveInstancesAutosaveIsNotOffered()

@@ -17,6 +17,7 @@
 #include "SimWorld.h"
 #include "SortieUi.h"
 
+#include <QFile>
 #include <QGeoCoordinate>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
@@ -136,6 +137,67 @@ private slots:
         QTRY_COMPARE(route->visibleWaypointCount(), 13); // fitted to the map
         QVERIFY(m_missions->document()->route() == edited);
         QVERIFY(m_missions->document()->isModified());
+    }
+
+    void severalAutosavesInOneListAndAServerRouteWaitsForItsSession()
+    {
+        QTemporaryDir autosaves;
+        const QString server = QStringLiteral("127.0.0.1:%1").arg(m_server->port());
+        mission::Route edited;
+        { // a run that was editing a route of this server as admin
+            client::RouteDocument doc;
+            client::RouteAutosave autosave(&doc, autosaves.path());
+            autosave.setServer(server, QStringLiteral("admin"));
+            doc.load(test::serverRoute());
+            test::editRoute(doc);
+            edited = doc.route();
+        }
+        { // an older run editing a route from a file
+            client::RouteDocument doc;
+            client::RouteAutosave autosave(&doc, autosaves.path());
+            mission::Route route = test::serverRoute();
+            route.origin = {};
+            route.settings.name = QStringLiteral("Field B");
+            doc.load(route);
+            doc.editor()->addWaypoint(QGeoCoordinate(56.5, 24.5));
+        } // written once more as it goes
+        QFile older(client::AutosaveDirectory(autosaves.path()).filePath(2));
+        QVERIFY(older.open(QIODevice::ReadWrite));
+        QVERIFY(older.setFileTime(QDateTime::currentDateTime().addSecs(-600), QFileDevice::FileModificationTime));
+        older.close();
+        m_recovery = std::make_unique<client::AutosaveRecovery>(m_missions->document(), autosaves.path());
+        connect(m_connection.get(), &client::ConnectionController::stateChanged, m_recovery.get(), [this] {
+            const bool ready = m_connection->isReady();
+            m_recovery->setSession(ready ? m_connection->server() : QString(), ready ? m_connection->user() : QString());
+        });
+        showWindow();
+        QObject *dialog = find<QObject>("restoreDialog");
+        QTRY_VERIFY(dialog->property("visible").toBool());
+        QTRY_COMPARE(find("autosaveList")->property("count").toInt(), 2);
+        QVERIFY(find("autosaveList")->isVisible());
+        // The newest, the server route's, is chosen: not restorable before signing in, and it says so.
+        QTRY_COMPARE(find("restoreChanges")->property("count").toInt(), 3);
+        QQuickItem *blocker = find("restoreBlocker");
+        QTRY_VERIFY(blocker->isVisible());
+        QVERIFY(blocker->property("text").toString().contains(QStringLiteral("Sign in to %1 as admin").arg(server)));
+        QVERIFY(!find("restoreAutosaveButton")->isEnabled());
+        if (qEnvironmentVariableIsSet("SORTIE_SHOTS"))
+            m_window->grabWindow().save(qEnvironmentVariable("SORTIE_SHOTS") + QStringLiteral("/restore-list.png"));
+
+        click("laterAutosaveButton"); // to sign in first
+        QTRY_VERIFY(!dialog->property("visible").toBool());
+        QSignalSpy ready(m_connection.get(), &client::ConnectionController::ready);
+        m_connection->connectToServer(server, QStringLiteral("admin"), QStringLiteral("admin"));
+        QVERIFY(ready.wait(10000));
+        QTRY_VERIFY(dialog->property("visible").toBool()); // offered again, now restorable
+        QTRY_VERIFY(!blocker->isVisible());
+        QCOMPARE(m_recovery->currentRow(), 0);
+        click("restoreAutosaveButton");
+        QTRY_VERIFY(!dialog->property("visible").toBool());
+        QTRY_COMPARE(m_window->property("currentPage").toInt(), 1);
+        QVERIFY(m_missions->document()->route() == edited);
+        // The other stays on disk for the next start.
+        QCOMPARE(client::AutosaveDirectory(autosaves.path()).slotsWithFiles().size(), 1);
     }
 
     void conflictShowsBothCopiesUntilAButtonResolvesIt()
