@@ -1,6 +1,7 @@
 // sortie: wires the pieces together. Parses the command line, restores the settings, loads the
 // Sortie.Ui main window.
 #include "AppSettings.h"
+#include "PasswordVault.h"
 #include "AutosaveRecovery.h"
 #include "ComparisonController.h"
 #include "ConnectionController.h"
@@ -108,7 +109,8 @@ int main(int argc, char *argv[])
     QQuickStyle::setStyle(QStringLiteral("Fusion"));
 
     QSettings storage;
-    sortie::ui::AppSettings settings(&storage);
+    sortie::secrets::PasswordVault vault(QStringLiteral("sortie"));
+    sortie::ui::AppSettings settings(&storage, &vault);
     if (options.server)
         settings.setLastServer(options.server->toString());
     if (!options.user.isEmpty())

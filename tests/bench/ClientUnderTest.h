@@ -1,6 +1,7 @@
 #pragma once
 
 #include "AppSettings.h"
+#include "PasswordVault.h"
 #include "ConnectionController.h"
 #include "HciClient.h"
 #include "HciSession.h"
@@ -40,6 +41,7 @@ public:
 
 private:
     QTemporaryDir m_dir;
+    sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")};
     QSettings m_storage;
     ui::AppSettings m_settings;
     hci::HciSession m_session;

@@ -4,6 +4,7 @@
 // simulator: an HCI server with the demo content (three vehicles, a demo route) and VCI vehicles
 // on loopback ports. For UI tests that fly, render or inspect the real views.
 #include "AppSettings.h"
+#include "PasswordVault.h"
 #include "ConnectionController.h"
 #include "HciClient.h"
 #include "HciServer.h"
@@ -74,6 +75,7 @@ private:
     std::unique_ptr<sim::SimWorld> m_world;
     std::unique_ptr<sim::HciServer> m_server;
     std::unique_ptr<sim::SimVciFleet> m_vci;
+    sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")}; // no keyring under ctest: nothing remembered
     std::unique_ptr<QSettings> m_storage;
     std::unique_ptr<ui::AppSettings> m_settings;
     std::unique_ptr<hci::HciSession> m_session;

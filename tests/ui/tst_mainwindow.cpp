@@ -1,6 +1,7 @@
 // The main window offscreen: pages, shortcuts, help overlay, status bar, map source wiring,
 // and a PNG of each view (docs/images when SORTIE_SCREENSHOT_DIR points there).
 #include "AppSettings.h"
+#include "PasswordVault.h"
 #include "CoordinateListModel.h"
 #include "MapView.h"
 #include "QuickScene.h"
@@ -94,6 +95,7 @@ class TestMainWindow : public QObject
     Q_OBJECT
 
     QTemporaryDir m_dir;
+    sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")}; // no keyring under ctest: nothing remembered
     std::unique_ptr<QSettings> m_storage;
     std::unique_ptr<AppSettings> m_settings;
     std::unique_ptr<QQmlApplicationEngine> m_engine;
@@ -132,7 +134,7 @@ private slots:
     {
         m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
         m_storage->clear();
-        m_settings = std::make_unique<AppSettings>(m_storage.get());
+        m_settings = std::make_unique<AppSettings>(m_storage.get(), &m_vault);
         m_engine = std::make_unique<QQmlApplicationEngine>();
         addImportPaths(*m_engine);
         m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())}});
