@@ -128,7 +128,12 @@ class TestMainWindow : public QObject
     }
 
 private slots:
-    void initTestCase() { sortie::test::useSoftwareRendering(); }
+    void initTestCase()
+    {
+        sortie::test::useSoftwareRendering();
+        // No keyring, even in a desktop session: nothing listens at this session bus address.
+        qputenv("DBUS_SESSION_BUS_ADDRESS", "unix:path=/nonexistent/sortie-tst-mainwindow");
+    }
 
     void init()
     {
@@ -184,6 +189,26 @@ private slots:
         QVERIFY(grid->childItems().size() >= 16); // two labels per shortcut
         QTest::keyClick(m_window, Qt::Key_Escape);
         QTRY_VERIFY(!help->property("opened").toBool());
+    }
+
+    // Without a keyring the login view says so beside a disabled "remember" box, and a click on it
+    // remembers nothing.
+    void rememberNeedsAKeyring()
+    {
+        QTRY_COMPARE(m_vault.state(), sortie::secrets::PasswordVault::State::Unavailable);
+        auto *remember = find<QQuickItem>("rememberCheck");
+        auto *notice = find<QQuickItem>("rememberNotice");
+        QVERIFY(remember && notice);
+        QTRY_VERIFY(notice->isVisible());
+        QVERIFY(!remember->isEnabled());
+        QVERIFY(!remember->property("checked").toBool());
+        const QString text = notice->property("text").toString();
+        QVERIFY2(text.startsWith(QStringLiteral("No keyring is reachable (")) && text.contains(m_vault.unavailableReason()),
+                 qPrintable(text));
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, remember->mapToScene(QPointF(10, remember->height() / 2)).toPoint());
+        QVERIFY(!remember->property("checked").toBool());
+        QVERIFY(!m_settings->rememberPassword());
+        QVERIFY(!m_storage->value(QStringLiteral("connection/rememberPassword")).toBool());
     }
 
     void unitsAndMapSourceFollowTheSettings()
