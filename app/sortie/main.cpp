@@ -1,7 +1,6 @@
 // sortie: wires the pieces together. Parses the command line, restores the settings, loads the
 // Sortie.Ui main window.
 #include "AppSettings.h"
-#include "PasswordVault.h"
 #include "AutosaveRecovery.h"
 #include "ComparisonController.h"
 #include "ConnectionController.h"
@@ -12,6 +11,7 @@
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "PasswordVault.h"
 #include "RecordingSettings.h"
 #include "ReplayController.h"
 #include "ServerHistoryRequest.h"

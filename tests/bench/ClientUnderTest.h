@@ -1,11 +1,11 @@
 #pragma once
 
 #include "AppSettings.h"
-#include "PasswordVault.h"
 #include "ConnectionController.h"
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "PasswordVault.h"
 #include "VehicleFleet.h"
 
 #include <QQmlApplicationEngine>

@@ -4,12 +4,12 @@
 // simulator: an HCI server with the demo content (three vehicles, a demo route) and VCI vehicles
 // on loopback ports. For UI tests that fly, render or inspect the real views.
 #include "AppSettings.h"
-#include "PasswordVault.h"
 #include "ConnectionController.h"
 #include "HciClient.h"
 #include "HciServer.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "PasswordVault.h"
 #include "SimVciFleet.h"
 #include "SimWorld.h"
 #include "VehicleFleet.h"

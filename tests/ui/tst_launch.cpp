@@ -204,7 +204,7 @@ private slots:
             QTRY_COMPARE(vault.state(), PasswordVault::State::Unavailable);
             QVERIFY(!vault.unavailableReason().isEmpty());
             QVERIFY(!settings.canRememberPassword());
-            QVERIFY2(settings.passwordNotice().startsWith(QStringLiteral("No keyring is reachable (")), qPrintable(settings.passwordNotice()));
+            QVERIFY2(settings.passwordNotice().startsWith(QStringLiteral("No keyring is reachable, so the password cannot be remembered (")), qPrintable(settings.passwordNotice()));
             QVERIFY(settings.passwordNotice().contains(vault.unavailableReason()));
 
             QSignalSpy changed(&settings, &AppSettings::changed);

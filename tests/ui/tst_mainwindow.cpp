@@ -1,9 +1,9 @@
 // The main window offscreen: pages, shortcuts, help overlay, status bar, map source wiring,
 // and a PNG of each view (docs/images when SORTIE_SCREENSHOT_DIR points there).
 #include "AppSettings.h"
-#include "PasswordVault.h"
 #include "CoordinateListModel.h"
 #include "MapView.h"
+#include "PasswordVault.h"
 #include "QuickScene.h"
 #include "RouteLayer.h"
 #include "SortieUi.h"
@@ -203,7 +203,7 @@ private slots:
         QVERIFY(!remember->isEnabled());
         QVERIFY(!remember->property("checked").toBool());
         const QString text = notice->property("text").toString();
-        QVERIFY2(text.startsWith(QStringLiteral("No keyring is reachable (")) && text.contains(m_vault.unavailableReason()),
+        QVERIFY2(text.startsWith(QStringLiteral("No keyring is reachable, so the password cannot be remembered (")) && text.contains(m_vault.unavailableReason()),
                  qPrintable(text));
         QTest::mouseClick(m_window, Qt::LeftButton, {}, remember->mapToScene(QPointF(10, remember->height() / 2)).toPoint());
         QVERIFY(!remember->property("checked").toBool());

@@ -3,7 +3,6 @@
 // and a version conflict shows both copies (the banner lists the differences, their route is a
 // grey ghost on the map) until a button resolves it.
 #include "AppSettings.h"
-#include "PasswordVault.h"
 #include "AutosaveRecovery.h"
 #include "AutosaveTestRoute.h"
 #include "ConnectionController.h"
@@ -12,6 +11,7 @@
 #include "HciServer.h"
 #include "Messages.pb.h"
 #include "MissionController.h"
+#include "PasswordVault.h"
 #include "QuickScene.h"
 #include "RouteAutosave.h"
 #include "RouteLayer.h"

@@ -3,7 +3,6 @@
 // waypoints on the map and in the table, undo, save and see the server's copy change from a
 // second session, draw an area scan, upload with the progress bar moving.
 #include "AppSettings.h"
-#include "PasswordVault.h"
 #include "ConnectionController.h"
 #include "HciClient.h"
 #include "HciReply.h"
@@ -11,6 +10,7 @@
 #include "MapView.h"
 #include "Messages.pb.h"
 #include "MissionController.h"
+#include "PasswordVault.h"
 #include "QuickScene.h"
 #include "RouteLayer.h"
 #include "SimVciFleet.h"

@@ -86,7 +86,7 @@ void AppSettings::keyringChecked()
             m_vault->read(lastServer(), lastUser());
         }
     } else if (m_vault->state() == PasswordVault::State::Unavailable) {
-        QString notice = tr("No keyring is reachable (%1): the password cannot be remembered.").arg(m_vault->unavailableReason());
+        QString notice = tr("No keyring is reachable, so the password cannot be remembered (%1).").arg(m_vault->unavailableReason());
         if (std::exchange(m_plain, std::nullopt))
             notice += QLatin1Char(' ') + tr("The password an earlier version kept in the settings file was erased from it.");
         m_notice = notice;
@@ -182,7 +182,7 @@ void AppSettings::rememberLogin(const QString &server, const QString &user, cons
     setLastUser(user);
     const bool passwordChanged = password != m_password;
     m_password = password;
-    // Written on every login, so the keyring holds what last worked for this server and user.
+    // Written on every login, so the keyring holds the password last used for this server and user.
     if (rememberPassword() && !m_password.isEmpty())
         m_vault->write(server, user, m_password);
     if (passwordChanged)
