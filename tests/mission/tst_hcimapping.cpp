@@ -106,6 +106,31 @@ private slots:
         QCOMPARE(saved.settings.profile.climbRate, 4.0);  // no default rate: the maximum is the estimate
     }
 
+    void safeDistanceToTerrainBothWays()
+    {
+        // The profile's VPT_SAFE_DISTANCE_TO_TERRAIN is the terrain rule's clearance; absent, 10 m.
+        QCOMPARE(imported(savedRoute()).settings.profile.safeTerrainDistance, 10.0);
+        pb::Route withDistance = savedRoute();
+        auto *p = withDistance.mutable_vehicleprofile()->add_parameters();
+        p->set_type(pb::VPT_SAFE_DISTANCE_TO_TERRAIN);
+        p->set_value(25);
+        Route route = imported(withDistance);
+        QCOMPARE(route.settings.profile.safeTerrainDistance, 25.0);
+
+        // Edited, it goes back in the same parameter, nothing else of the profile changed.
+        route.settings.profile.safeTerrainDistance = 40;
+        const pb::Route back = routeToHci(route);
+        int found = 0;
+        for (const auto &q : back.vehicleprofile().parameters())
+            if (q.type() == pb::VPT_SAFE_DISTANCE_TO_TERRAIN) {
+                ++found;
+                QCOMPARE(q.value(), 40.0);
+            }
+        QCOMPARE(found, 1);
+        QCOMPARE(back.vehicleprofile().parameters_size(), withDistance.vehicleprofile().parameters_size());
+        QCOMPARE(imported(back).settings.profile.safeTerrainDistance, 40.0);
+    }
+
     void unchangedRouteGoesBackByteForByte()
     {
         // Also a profile with a parameter given twice, the second NaN (found by fuzz_hci_route).

@@ -23,7 +23,7 @@ Mission fullMission()
     m.name = QStringLiteral("Port survey — north pier");
     m.description = QStringLiteral("Quay inspection\nline two, \"quoted\"");
     Route r = mavlinkRoute();
-    r.settings.profile = {QStringLiteral("EMU Copter"), 12, 4, 3};
+    r.settings.profile = {QStringLiteral("EMU Copter"), 12, 4, 3, 25};
     r.settings.failsafes = {{FailsafeReason::GpsLost, FailsafeAction::Wait}, {FailsafeReason::LowBattery, FailsafeAction::Land}};
     r.settings.cornerRadius = 2;
     r.settings.takeoffHeight = 1.5;

@@ -195,7 +195,8 @@ private slots:
                 QCOMPARE(described.parameters[i].advanced, known.parameters[i].advanced);
             }
         }
-        const auto photo = mission::catalogFromProto(algorithms).byClassName(kPackage + QStringLiteral("PhotogrammetryAlgorithm"));
+        const mission::AlgorithmCatalog catalog = mission::catalogFromProto(algorithms);
+        const auto photo = catalog.byClassName(kPackage + QStringLiteral("PhotogrammetryAlgorithm"));
         QVERIFY(photo && photo->serverId > 0);
         QCOMPARE(photo->parameter(u"groundSampleDistance")->unit(), QStringLiteral("cm/px"));
         QCOMPARE(photo->parameter(u"overlapForward")->description, QStringLiteral("Forward overlap (1–90 %)"));

@@ -2,6 +2,8 @@
 // the hill and a red stretch; hovering reads the clearance; clicking a leg selects its waypoint.
 #include "ElevationProfileView.h"
 #include "ElevationService.h"
+#include "RouteDocument.h"
+#include "RouteEditor.h"
 #include "QuickScene.h"
 #include "RouteModel.h"
 #include "TerrainProfileModel.h"
@@ -46,6 +48,39 @@ Item {
     }
 }
 )";
+
+// The waypoint table with a terrain profile beside it, as the route panel places them.
+const QByteArray kTableScene = R"(
+import QtQuick
+import Sortie.Ui
+Item {
+    id: root
+    property RouteDocument doc
+    property QtObject routeModel
+    property ElevationService elevation
+    TerrainProfileModel {
+        id: terrain
+        routeModel: root.routeModel
+        service: root.elevation
+    }
+    WaypointTable {
+        anchors.fill: parent
+        doc: root.doc
+        routeModel: root.routeModel
+        terrain: terrain
+    }
+}
+)";
+
+QQuickItem *findItem(QQuickItem *root, const QString &name)
+{
+    if (root->objectName() == name)
+        return root;
+    for (QQuickItem *child : root->childItems())
+        if (QQuickItem *found = findItem(child, name))
+            return found;
+    return nullptr;
+}
 
 class HillSource : public ElevationSource
 {
@@ -152,6 +187,83 @@ private slots:
         QCOMPARE(selection.selectedRows().size(), 1);
         QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, QPoint(hillX, 100));
         QCOMPARE(selection.currentIndex().row(), 0);
+    }
+
+    // The table shows the ground under each waypoint and every altitude as AMSL or AGL, converted
+    // through the terrain; a converted cell edits the waypoint in its own type; no data stays blank.
+    void tableShowsGroundAndHeights()
+    {
+        HillSource hill;
+        ElevationService service;
+        service.setSources({&hill});
+        client::RouteDocument doc;
+        doc.editor()->setGroundLookup([&service](const mission::GeoPoint &p) -> std::optional<double> {
+            const GroundSample g = service.sample(p);
+            return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
+        });
+        mission::Route route;
+        auto add = [&route](double lon, double altitude, mission::AltitudeType type) {
+            mission::Waypoint w;
+            w.position = {56.9, lon};
+            w.altitude = altitude;
+            w.altitudeType = type;
+            route.segments.push_back(w);
+        };
+        add(24.005, 150, mission::AltitudeType::Amsl);  // the hill top: 110 m ground
+        add(24.0, 50, mission::AltitudeType::Agl);      // the plain: 10 m
+        add(24.02, 60, mission::AltitudeType::Agl);     // no data there
+        doc.load(route);
+        test::QuickScene scene(kTableScene, QSize(700, 300),
+                               {{QStringLiteral("doc"), QVariant::fromValue<QObject *>(&doc)},
+                                {QStringLiteral("routeModel"), QVariant::fromValue<QObject *>(doc.model())},
+                                {QStringLiteral("elevation"), QVariant::fromValue<QObject *>(&service)}});
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        QQuickItem *root = scene.root();
+        auto text = [root](const QString &name) {
+            QQuickItem *item = findItem(root, name);
+            return item ? item->property("text").toString() : QStringLiteral("<none>");
+        };
+        QTRY_COMPARE(text(QStringLiteral("groundCell_0")), QStringLiteral("110.0"));
+        QCOMPARE(text(QStringLiteral("groundCell_1")), QStringLiteral("10.0"));
+        QCOMPARE(text(QStringLiteral("groundCell_2")), QStringLiteral("—"));  // missing, never 0
+        auto *terrain = root->findChild<ui::TerrainProfileModel *>();
+        QVERIFY(terrain);
+        QVERIFY(terrain->groundToolTipOfRow(0).contains(QStringLiteral("EGM96")));
+        QVERIFY(terrain->groundToolTipOfRow(0).contains(QStringLiteral("test hill")));
+        QVERIFY(terrain->groundToolTipOfRow(2).startsWith(QStringLiteral("No terrain data under this waypoint")));
+        // As set: each row's own number.
+        QCOMPARE(text(QStringLiteral("altitudeCell_0")), QStringLiteral("150.0"));
+        QCOMPARE(text(QStringLiteral("altitudeCell_1")), QStringLiteral("50.0"));
+
+        QQuickItem *picker = findItem(root, QStringLiteral("heightsShown"));
+        QVERIFY(picker);
+        picker->setProperty("currentIndex", 2);  // all AGL
+        QTRY_COMPARE(text(QStringLiteral("altitudeCell_0")), QStringLiteral("40.0"));
+        QCOMPARE(text(QStringLiteral("altitudeCell_1")), QStringLiteral("50.0"));
+        QCOMPARE(text(QStringLiteral("altitudeCell_2")), QStringLiteral("60.0"));
+        picker->setProperty("currentIndex", 1);  // all AMSL
+        QTRY_COMPARE(text(QStringLiteral("altitudeCell_1")), QStringLiteral("60.0"));
+        QCOMPARE(text(QStringLiteral("altitudeCell_2")), QString());  // AGL over no data: unknown
+        QVERIFY(findItem(root, QStringLiteral("altitudeCell_2"))->property("readOnly").toBool());
+
+        // 80 m AMSL typed at the AGL waypoint on the plain: it stays AGL, 70 m above the ground.
+        QQuickItem *cell = findItem(root, QStringLiteral("altitudeCell_1"));
+        cell->setProperty("text", QStringLiteral("80"));
+        QMetaObject::invokeMethod(cell, "editingFinished");
+        const auto waypoint = [&doc](int row) { return *mission::asWaypoint(doc.model()->segment(row)); };
+        QCOMPARE(waypoint(1).altitudeType, mission::AltitudeType::Agl);
+        QVERIFY2(std::abs(waypoint(1).altitude - 70.0) < 0.01, qPrintable(QString::number(waypoint(1).altitude)));
+        QTRY_COMPARE(text(QStringLiteral("altitudeCell_1")), QStringLiteral("80.0"));
+        // And 50 m AGL typed at the AMSL hill-top waypoint: 160 m AMSL.
+        picker->setProperty("currentIndex", 2);
+        QTRY_COMPARE(text(QStringLiteral("altitudeCell_0")), QStringLiteral("40.0"));
+        cell = findItem(root, QStringLiteral("altitudeCell_0"));
+        cell->setProperty("text", QStringLiteral("50"));
+        QMetaObject::invokeMethod(cell, "editingFinished");
+        QCOMPARE(waypoint(0).altitudeType, mission::AltitudeType::Amsl);
+        QVERIFY(std::abs(waypoint(0).altitude - 160.0) < 0.01);
+        doc.undo();
+        QCOMPARE(waypoint(0).altitude, 150.0);
     }
 
     // Edits are coalesced: a burst of moves costs one recomputation.

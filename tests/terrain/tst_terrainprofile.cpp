@@ -276,6 +276,45 @@ private slots:
         QCOMPARE(wp(0).altitude, 80.0);
     }
 
+    // An altitude given as AMSL or AGL goes into each waypoint in its own type, through the ground;
+    // where the ground is unknown the whole edit is refused and nothing changes.
+    void altitudeSetInEitherFrame()
+    {
+        FormulaSource ground(QStringLiteral("g"), [](const GeoPoint &p) -> std::optional<double> {
+            return p.longitude < 24.015 ? std::optional<double>(30.0) : std::nullopt;
+        });
+        ElevationService service;
+        service.setSources({&ground});
+        sortie::mission::RouteModel model;
+        QUndoStack stack;
+        Route route = routeOf({{{56.9, 24.0}, 50}, {{56.9, 24.01}, 100}, {{56.9, 24.02}, 50}}, AltitudeType::Agl);
+        std::get<sortie::mission::Waypoint>(route.segments[1]).altitudeType = AltitudeType::Amsl;
+        model.resetRoute(route);
+        sortie::mission::RouteEditor editor(&model, &stack);
+        editor.setGroundLookup([&service](const GeoPoint &p) -> std::optional<double> {
+            const GroundSample g = service.sample(p);
+            return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
+        });
+        auto wp = [&](int row) { return *sortie::mission::asWaypoint(model.segment(row)); };
+        QVERIFY(editor.setAltitudeIn({0, 1}, 90, AltitudeType::Amsl));
+        QCOMPARE(wp(0).altitude, 60.0);  // AGL: 90 m AMSL over 30 m ground
+        QCOMPARE(wp(0).altitudeType, AltitudeType::Agl);
+        QCOMPARE(wp(1).altitude, 90.0);  // AMSL as typed
+        QCOMPARE(stack.count(), 1);      // one undo step
+        QVERIFY(editor.setAltitudeIn({1}, 40, AltitudeType::Agl));
+        QCOMPARE(wp(1).altitude, 70.0);
+        QCOMPARE(wp(1).altitudeType, AltitudeType::Amsl);
+        // Waypoint 3 has no ground under it: AMSL cannot become its AGL number, so nothing changes.
+        QSignalSpy refused(&editor, &sortie::mission::RouteEditor::refused);
+        QVERIFY(!editor.setAltitudeIn({1, 2}, 120, AltitudeType::Amsl));
+        QCOMPARE(refused.count(), 1);
+        QVERIFY(refused.at(0).at(0).toString().contains(QStringLiteral("Waypoint 3")));
+        QCOMPARE(wp(1).altitude, 70.0);
+        QCOMPARE(wp(2).altitude, 50.0);
+        QVERIFY(editor.setAltitudeIn({2}, 45, AltitudeType::Agl));  // its own type needs no ground
+        QCOMPARE(wp(2).altitude, 45.0);
+    }
+
     // A pass over a hill: points are added where the ground bends, and every probe stays in tolerance.
     void followTerrainOverAHill()
     {

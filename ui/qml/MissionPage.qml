@@ -194,6 +194,7 @@ Page {
             doc: page.doc
             units: page.units
             routeModel: page.routeModel
+            terrain: page.elevation !== null ? terrainProfile.profile : null
             waypointCount: routeLayer.count
             scanning: page.tool === "scan"
             onScanToggled: on => page.tool = on ? "scan" : ""

@@ -12,6 +12,7 @@ Pane {
     required property RouteDocument doc          // the missions' document, or null
     required property DisplayUnits units
     required property var routeModel             // the list model the table shows
+    required property TerrainProfileModel terrain // ground and heights per row, or null without terrain
     required property int waypointCount
     required property bool scanning              // the area-scan tool is on
     signal scanToggled(bool on)
@@ -237,6 +238,7 @@ Pane {
             Layout.fillHeight: true
             doc: panel.doc
             routeModel: panel.routeModel
+            terrain: panel.terrain
         }
     }
 }

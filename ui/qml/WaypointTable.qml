@@ -10,22 +10,27 @@ ColumnLayout {
     id: table
     required property RouteDocument doc   // null: the table only shows `routeModel`
     required property var routeModel
+    required property TerrainProfileModel terrain  // null: no terrain, heights only as set
     readonly property var selected: doc ? doc.selectedRows : []
+    // Which height the altitude column shows: as each row sets it, or all AMSL, or all AGL.
+    readonly property int heightsShown: terrain !== null ? heightsPicker.currentIndex : 0
+    readonly property int heightsFrame: heightsShown === 1 ? MissionEnums.Amsl : MissionEnums.Agl
     spacing: 4
 
     component Cell: TextField {
         property string role
         property var rowModel
+        property var value: rowModel[role]  // undefined: nothing to show or edit
         signal edited(real value)
-        readOnly: !table.doc || rowModel[role] === undefined
-        text: rowModel[role] === undefined ? "" : Number(rowModel[role]).toFixed(role === "latitude" || role === "longitude" ? 6 : 1)
+        readOnly: !table.doc || value === undefined
+        text: value === undefined ? "" : Number(value).toFixed(role === "latitude" || role === "longitude" ? 6 : 1)
         selectByMouse: true
         padding: 2
         onEditingFinished: {
-            const value = Number(text)
-            if (readOnly || isNaN(value) || Math.abs(value - Number(rowModel[role])) < 1e-7)
+            const typed = Number(text)
+            if (readOnly || isNaN(typed) || Math.abs(typed - Number(value)) < 1e-7)
                 return
-            edited(value)
+            edited(typed)
         }
     }
 
@@ -56,22 +61,45 @@ ColumnLayout {
         }
     }
 
+    RowLayout {
+        visible: table.terrain !== null
+        Layout.fillWidth: true
+        Label { text: qsTr("Heights:") }
+        ComboBox {
+            id: heightsPicker
+            objectName: "heightsShown"
+            model: [qsTr("as set"), qsTr("all AMSL"), qsTr("all AGL")]
+            Layout.preferredWidth: 110
+            ToolTip.visible: hovered
+            ToolTip.text: qsTr("AMSL and AGL are converted through the ground under each waypoint")
+        }
+        Label {
+            text: table.terrain ? qsTr("ground: %1").arg(table.terrain.sourceText) : ""
+            elide: Text.ElideRight
+            opacity: 0.7
+            Layout.fillWidth: true
+        }
+    }
+
     // One width per column, for the header and the rows alike; the last column takes the rest.
-    readonly property var columnWidths: [28, 84, 84, 50, 50, 52]
+    readonly property var columnWidths: [28, 78, 78, 50, 42, 52, 48]
     RowLayout {
         Layout.fillWidth: true
         spacing: 2
         Repeater {
-            model: [qsTr("#"), qsTr("Latitude"), qsTr("Longitude"), qsTr("Alt"), qsTr("Type"), qsTr("Speed"), qsTr("Actions")]
+            model: [qsTr("#"), qsTr("Latitude"), qsTr("Longitude"),
+                    table.heightsShown === 0 ? qsTr("Alt") : table.heightsShown === 1 ? qsTr("AMSL") : qsTr("AGL"),
+                    qsTr("Type"), qsTr("Ground"), qsTr("Speed"), qsTr("Actions")]
             Label {
                 required property string modelData
                 required property int index
                 text: modelData
                 font.bold: true
                 elide: Text.ElideRight
+                visible: index !== 5 || table.terrain !== null  // no Ground column without terrain
                 Layout.preferredWidth: index < table.columnWidths.length ? table.columnWidths[index] : -1
                 Layout.fillWidth: index >= table.columnWidths.length
-                leftPadding: index > 0 && index < 4 || index === 5 ? 2 : 0 // over the cells' text
+                leftPadding: index > 0 && index < 4 || index === 6 ? 2 : 0 // over the cells' text
             }
         }
     }
@@ -104,10 +132,30 @@ ColumnLayout {
                        onEdited: value => table.doc.editor.setLatitude(row.index, value) }
                 Cell { role: "longitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[2]
                        onEdited: value => table.doc.editor.setLongitude(row.index, value) }
-                Cell { role: "altitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[3]
-                       onEdited: value => table.doc.editor.setAltitude([row.index], value) }
+                Cell {
+                    objectName: "altitudeCell_" + row.index
+                    role: "altitude"
+                    rowModel: row.model
+                    // Converted heights follow the terrain profile (its revision makes the binding re-read).
+                    value: table.heightsShown === 0 ? row.model.altitude
+                         : (table.terrain.revision, table.terrain.altitudeOfRow(row.index, table.heightsFrame))
+                    Layout.preferredWidth: table.columnWidths[3]
+                    onEdited: typed => table.heightsShown === 0 ? table.doc.editor.setAltitude([row.index], typed)
+                                                                 : table.doc.editor.setAltitudeIn([row.index], typed, table.heightsFrame)
+                }
                 Label { text: row.model.altitudeType !== undefined ? row.model.altitudeType : ""; Layout.preferredWidth: table.columnWidths[4] }
-                Cell { role: "speed"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[5]
+                Label {
+                    id: ground
+                    objectName: "groundCell_" + row.index
+                    visible: table.terrain !== null
+                    text: table.terrain ? (table.terrain.revision, table.terrain.groundTextOfRow(row.index)) : ""
+                    elide: Text.ElideRight
+                    Layout.preferredWidth: table.columnWidths[5]
+                    HoverHandler { id: groundHover }
+                    ToolTip.visible: groundHover.hovered && text.length > 0
+                    ToolTip.text: table.terrain ? table.terrain.groundToolTipOfRow(row.index) : ""
+                }
+                Cell { role: "speed"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[6]
                        onEdited: value => table.doc.editor.setSpeed([row.index], value) }
                 Label {
                     text: row.model.kind === "areaScan" ? qsTr("Area scan") : row.model.actionsSummary !== undefined ? row.model.actionsSummary : ""

@@ -82,6 +82,17 @@ void TerrainProfileModel::recomputeNow()
         m_route = {};
         m_profile = {};
     }
+    m_rows.clear();
+    for (size_t i = 0; i < m_route.waypoints.size(); ++i) {
+        const int row = m_route.waypoints[i].row;
+        if (row < 0)
+            continue;
+        if (size_t(row) >= m_rows.size())
+            m_rows.resize(size_t(row) + 1);
+        RowPoints &r = m_rows[size_t(row)];
+        if (r.count++ == 0)
+            r.first = int(i);
+    }
     emit profileChanged();
 }
 
@@ -89,6 +100,8 @@ QString TerrainProfileModel::sourceText() const
 {
     if (!m_service)
         return tr("no terrain source");
+    if (m_profile.ground.empty())  // nothing asked yet: the sources that will be
+        return m_service->sourceNames().join(QStringLiteral(", "));
     // Name the sources that gave the ground, in order; "none" when no source had data.
     std::vector<int> used;
     for (const terrain::GroundSample &g : m_profile.ground)
@@ -127,6 +140,79 @@ int TerrainProfileModel::sampleAt(double distance) const
         return 0;
     const auto before = it - 1;
     return int((distance - before->distance <= it->distance - distance ? before : it) - pts.begin());
+}
+
+TerrainProfileModel::RowPoints TerrainProfileModel::pointsOfRow(int row) const
+{
+    if (row < 0 || size_t(row) >= m_rows.size() || m_profile.waypoints.size() != m_route.waypoints.size())
+        return {};
+    return m_rows[size_t(row)];
+}
+
+QVariant TerrainProfileModel::altitudeOfRow(int row, mission::AltitudeType frame) const
+{
+    const RowPoints points = pointsOfRow(row);
+    if (points.count == 0)
+        return {};
+    const terrain::ProfileWaypoint &first = m_route.waypoints[size_t(points.first)];
+    const terrain::HeightReference wanted =
+        frame == mission::AltitudeType::Amsl ? terrain::HeightReference::Amsl : terrain::HeightReference::AboveTerrain;
+    if (first.reference == wanted)  // its own type: known without the ground
+        return first.altitude;
+    if (points.count > 1)
+        return {};
+    const terrain::WaypointTerrain &w = m_profile.waypoints[size_t(points.first)];
+    const double value = frame == mission::AltitudeType::Amsl ? w.altitudeAmsl : w.altitudeAgl;
+    return std::isfinite(value) ? QVariant(value) : QVariant();
+}
+
+QString TerrainProfileModel::groundTextOfRow(int row) const
+{
+    const RowPoints points = pointsOfRow(row);
+    if (points.count == 0)
+        return {};
+    double low = INFINITY, high = -INFINITY;
+    bool pending = false;
+    for (int i = points.first; i < points.first + points.count; ++i) {
+        const terrain::GroundSample &g = m_profile.waypoints[size_t(i)].ground;
+        if (g.hasValue()) {
+            low = std::min(low, g.ground);
+            high = std::max(high, g.ground);
+        }
+        pending |= g.status == terrain::SampleStatus::Pending;
+    }
+    if (low > high)
+        return pending ? QStringLiteral("…") : QStringLiteral("—");
+    if (high - low < 0.05)
+        return QString::number(low, 'f', 1);
+    return QStringLiteral("%1–%2").arg(QString::number(low, 'f', 0), QString::number(high, 'f', 0));  // fits the column
+}
+
+QString TerrainProfileModel::groundToolTipOfRow(int row) const
+{
+    const RowPoints points = pointsOfRow(row);
+    if (points.count == 0 || !m_service)
+        return {};
+    QStringList sources;
+    bool missing = false, pending = false;
+    for (int i = points.first; i < points.first + points.count; ++i) {
+        const terrain::GroundSample &g = m_profile.waypoints[size_t(i)].ground;
+        if (g.hasValue()) {
+            const QString name = m_service->sourceName(g.source);
+            if (!sources.contains(name))
+                sources << name;
+        }
+        missing |= g.status == terrain::SampleStatus::NoData;
+        pending |= g.status == terrain::SampleStatus::Pending;
+    }
+    const QString where = points.count == 1 ? tr("under this waypoint") : tr("under this segment's points");
+    if (sources.isEmpty())
+        return pending ? tr("Asking for the ground %1…").arg(where)
+                       : tr("No terrain data %1 (tried: %2)").arg(where, m_service->triedText());
+    QString text = tr("Ground %1, metres above sea level (EGM96), from %2").arg(where, sources.join(QStringLiteral(", ")));
+    if (missing)
+        text += tr("; some points have no data (tried: %1)").arg(m_service->triedText());
+    return text;
 }
 
 } // namespace sortie::ui

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "MissionEnums.h"
 #include "TerrainProfile.h"
 
 #include <QElapsedTimer>
@@ -33,6 +34,8 @@ class TerrainProfileModel : public QObject
     Q_PROPERTY(double minClearance READ minClearance NOTIFY profileChanged)  // NaN: unknown
     Q_PROPERTY(int lowStretchCount READ lowStretchCount NOTIFY profileChanged)
     Q_PROPERTY(int noDataCount READ noDataCount NOTIFY profileChanged)
+    // Counts recomputations: a binding that calls the row functions below reads it to update.
+    Q_PROPERTY(int revision READ recomputeCount NOTIFY profileChanged)
 
 public:
     explicit TerrainProfileModel(QObject *parent = nullptr);
@@ -62,6 +65,17 @@ public:
     // Sample index nearest a distance from the start, -1 without samples.
     Q_INVOKABLE int sampleAt(double distance) const;
 
+    // The heights of a table row (a route segment) as the waypoint table shows them. A waypoint has
+    // one point; a scan has its passes' points. Unknown is `undefined`, never 0.
+    // The altitude as a height of `frame`: a waypoint's converted through the ground under it; a
+    // scan's only in its own type (over varying ground no one number is right).
+    Q_INVOKABLE QVariant altitudeOfRow(int row, sortie::mission::MissionEnums::AltitudeType frame) const;
+    // The ground under a waypoint ("23.4"); "12–48" over a scan's points; "—" without data; "…" while a
+    // source is still answering; "" for a row without points.
+    Q_INVOKABLE QString groundTextOfRow(int row) const;
+    // Says what the ground text is: its datum and source, or which sources had nothing.
+    Q_INVOKABLE QString groundToolTipOfRow(int row) const;
+
 public slots:
     void recomputeNow();
 
@@ -79,8 +93,16 @@ private:
     QPointer<terrain::ElevationService> m_service;
     double m_step = 30.0;
     QTimer m_timer;
+    struct RowPoints
+    {
+        int first = 0;
+        int count = 0;
+    };
+    RowPoints pointsOfRow(int row) const;
+
     terrain::ProfileRoute m_route;
     terrain::TerrainProfile m_profile;
+    std::vector<RowPoints> m_rows;  // by table row: its points in m_route.waypoints / m_profile.waypoints
     int m_recomputes = 0;
 };
 

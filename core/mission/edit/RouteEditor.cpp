@@ -16,6 +16,8 @@
 
 #include <QUndoStack>
 
+#include <map>
+
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -220,20 +222,24 @@ bool RouteEditor::setAltitude(const QList<int> &rows, double altitude, EditStep 
 {
     if (!std::isfinite(altitude))
         return refuse(tr("The altitude needs a number."));
+    return edit(rows, [&](int, Segment &s) { return applyAltitude(s, altitude); },
+                tr("Set altitude to %1 m").arg(altitude), QStringLiteral("altitude"), step);
+}
+
+bool RouteEditor::applyAltitude(Segment &s, double altitude)
+{
+    if (Waypoint *w = asWaypoint(s)) {
+        w->altitude = altitude;
+        return true;
+    }
+    if (AlgorithmSegment *a = asAlgorithmSegment(s); a && !parameterNames(s, catalog()).contains(QStringLiteral("height"))) {
+        if (a->figure == FigureType::Point || a->figure == FigureType::Circle)  // the point carries it
+            for (FigurePoint &p : a->points)
+                p.altitude = altitude;
+        return true;
+    }
     QString error;
-    return edit(rows, [&](int, Segment &s) {
-        if (Waypoint *w = asWaypoint(s)) {
-            w->altitude = altitude;
-            return true;
-        }
-        if (AlgorithmSegment *a = asAlgorithmSegment(s); a && !parameterNames(s, catalog()).contains(QStringLiteral("height"))) {
-            if (a->figure == FigureType::Point || a->figure == FigureType::Circle)  // the point carries it
-                for (FigurePoint &p : a->points)
-                    p.altitude = altitude;
-            return true;
-        }
-        return setParameterValue(s, QStringLiteral("height"), altitude, &error, catalog()) || refuse(error);
-    }, tr("Set altitude to %1 m").arg(altitude), QStringLiteral("altitude"), step);
+    return setParameterValue(s, QStringLiteral("height"), altitude, &error, catalog()) || refuse(error);
 }
 
 bool RouteEditor::setAltitudeType(const QList<int> &rows, AltitudeType type, bool keepHeight)
@@ -257,6 +263,36 @@ bool RouteEditor::setAltitudeType(const QList<int> &rows, AltitudeType type, boo
         }
         return setParameterValue(s, QStringLiteral("altitudeType"), QVariant::fromValue(type), &error, catalog()) || refuse(error);
     }, tr("Set altitude type to %1").arg(altitudeTypeName(type)), QStringLiteral("altitudeType"), EditStep::Done);
+}
+
+bool RouteEditor::setAltitudeIn(const QList<int> &rows, double altitude, AltitudeType frame)
+{
+    if (!std::isfinite(altitude))
+        return refuse(tr("The altitude needs a number."));
+    const QString frameName = altitudeTypeName(frame);
+    // Checked first, so that a refusal leaves every row as it was.
+    std::map<int, double> values;  // row -> the altitude in the row's own type
+    for (int row : validRows(rows)) {
+        const Segment &s = m_model->segment(row);
+        const AltitudeType own = altitudeTypeOf(s);
+        if (own == frame) {
+            values.emplace(row, altitude);
+            continue;
+        }
+        const Waypoint *w = asWaypoint(s);
+        if (!w)
+            return refuse(tr("Row %1 keeps its height %2: set it as %2, or change its altitude type first.")
+                              .arg(row + 1).arg(altitudeTypeName(own)));
+        const std::optional<double> ground = m_ground ? m_ground(w->position) : std::nullopt;
+        if (!ground)
+            return refuse(tr("Waypoint %1 is planned %2 and there is no terrain data under it: a height %3 cannot be converted.")
+                              .arg(row + 1).arg(altitudeTypeName(own), frameName));
+        values.emplace(row, frame == AltitudeType::Amsl ? altitude - *ground : altitude + *ground);
+    }
+    QList<int> valid;
+    for (const auto &v : values)
+        valid << v.first;
+    return edit(valid, [&](int row, Segment &s) { return applyAltitude(s, values.at(row)); }, tr("Set altitude to %1 m %2").arg(altitude).arg(frameName), QStringLiteral("altitude"), EditStep::Done);
 }
 
 bool RouteEditor::setSpeed(const QList<int> &rows, double speed)

@@ -63,6 +63,11 @@ public:
     // With keepHeight (and a ground lookup), a waypoint keeps the height it flies at: AGL -> AMSL adds
     // the ground under it, AMSL -> AGL subtracts it. Without terrain there, the number stays.
     Q_INVOKABLE bool setAltitudeType(const QList<int> &rows, sortie::mission::MissionEnums::AltitudeType type, bool keepHeight = true);
+    // The altitude as a height of `frame` (AMSL or AGL) whatever type each row keeps it in: a waypoint
+    // of the other type gets it converted through the ground under it, and is refused (nothing
+    // changes) where the ground is unknown. A segment's height is one number over varying ground, so
+    // it is set only in its own type.
+    Q_INVOKABLE bool setAltitudeIn(const QList<int> &rows, double altitude, sortie::mission::MissionEnums::AltitudeType frame);
     Q_INVOKABLE bool setSpeed(const QList<int> &rows, double speed);
     Q_INVOKABLE bool setTurnType(const QList<int> &rows, sortie::mission::MissionEnums::TurnType type);
     Q_INVOKABLE bool setAcceptanceRadius(const QList<int> &rows, double meters);
@@ -113,7 +118,7 @@ public:
     Waypoint newWaypointAt(int row, const GeoPoint &position) const;
 
     // The ground elevation (metres above the geoid) at a point, nullopt where unknown: set by the
-    // application from its terrain sources, used by setAltitudeType.
+    // application from its terrain sources, used by setAltitudeType and setAltitudeIn.
     using GroundLookup = std::function<std::optional<double>(const GeoPoint &)>;
     void setGroundLookup(GroundLookup lookup) { m_ground = std::move(lookup); }
 
@@ -131,6 +136,8 @@ private:
     bool edit(const QList<int> &rows, const std::function<bool(int, Segment &)> &change, const QString &text,
               const QString &kind, EditStep step);
     bool refuse(const QString &reason);
+    // A segment's altitude in its own type: a waypoint's, a point figure's, else its "height".
+    bool applyAltitude(Segment &s, double altitude);
 
     RouteModel *m_model;
     QUndoStack *m_stack;

@@ -95,8 +95,10 @@ QVariant RouteModel::data(const QModelIndex &index, int role) const
     case ActionCountRole: return w ? int(w->actions.size()) : 0;
     case ActionsSummaryRole: return w ? describeActions(w->actions) : QString();
     case ActionMarksRole: {
+        if (!w)
+            return 0;
         int marks = 0;
-        for (const WaypointAction &a : w ? w->actions : std::vector<WaypointAction>{}) {
+        for (const WaypointAction &a : w->actions) {
             const bool camera = std::holds_alternative<CameraTriggerAction>(a) || std::holds_alternative<CameraSeriesByTimeAction>(a)
                                 || std::holds_alternative<CameraSeriesByDistanceAction>(a) || std::holds_alternative<PanoramaAction>(a);
             marks |= camera ? CameraMark : OtherActionMark;

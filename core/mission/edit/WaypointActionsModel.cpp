@@ -3,6 +3,8 @@
 #include "RouteEditor.h"
 #include "RouteModel.h"
 
+#include <algorithm>
+
 namespace sortie::mission {
 
 namespace {
@@ -45,7 +47,9 @@ void WaypointActionsModel::setRows(const QList<int> &rows)
     for (int row : rows)
         if (actionsAt(*m_model, row))
             waypoints << row;
-    const bool same = rows == m_rows && waypoints == m_waypoints;
+    // Not QList's ==: Qt 6.4 memcmp()s an empty list's null data (UBSan: nonnull-attribute).
+    const auto equal = [](const QList<int> &a, const QList<int> &b) { return std::ranges::equal(a, b); };
+    const bool same = equal(rows, m_rows) && equal(waypoints, m_waypoints);
     m_rows = rows;
     m_waypoints = std::move(waypoints);
     reload();
@@ -185,9 +189,10 @@ bool WaypointActionsModel::setField(int action, const QString &name, const QVari
     const WaypointAction &current = (*shown())[size_t(action)];
     const ActionKindDescription *description = actionKindDescription(actionKindName(current));
     const ActionField *field = nullptr;
-    for (const ActionField &f : description ? description->fields : std::vector<ActionField>{})
-        if (f.name == name)
-            field = &f;
+    if (description)  // (a ?: with an empty vector would copy the fields and leave `field` dangling)
+        for (const ActionField &f : description->fields)
+            if (f.name == name)
+                field = &f;
     if (!field) {
         setProblem(tr("This action has no field \"%1\".").arg(name));
         return false;

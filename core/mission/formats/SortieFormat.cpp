@@ -331,7 +331,8 @@ Json routeJson(const Route &r)
         failsafes.push_back({{"reason", kReasons[int(f.reason)]}, {"action", kActions[int(f.action)]}});
     Json j{{"name", str(s.name)},
            {"vehicleProfile", {{"name", str(s.profile.name)}, {"maxHorizontalSpeed", s.profile.maxHorizontalSpeed},
-                               {"climbRate", s.profile.climbRate}, {"descentRate", s.profile.descentRate}}},
+                               {"climbRate", s.profile.climbRate}, {"descentRate", s.profile.descentRate},
+                               {"safeTerrainDistance", s.profile.safeTerrainDistance}}},
            {"safeAltitude", s.safeAltitude}, {"maxAltitude", s.maxAltitude}, {"initialSpeed", s.initialSpeed},
            {"maxSpeed", s.maxSpeed}, {"cornerRadius", s.cornerRadius}, {"takeoffHeight", s.takeoffHeight},
            {"failsafes", std::move(failsafes)}, {"endAction", s.endAction == EndAction::ReturnHome ? "returnHome" : "none"}};
@@ -356,6 +357,7 @@ Route readRoute(const JsonCursor &c)
         s.profile.maxHorizontalSpeed = p->numberOr("maxHorizontalSpeed", 0);
         s.profile.climbRate = p->numberOr("climbRate", s.profile.climbRate);
         s.profile.descentRate = p->numberOr("descentRate", s.profile.descentRate);
+        s.profile.safeTerrainDistance = p->numberOr("safeTerrainDistance", s.profile.safeTerrainDistance);
     }
     s.safeAltitude = c.numberOr("safeAltitude", s.safeAltitude);
     s.maxAltitude = c.numberOr("maxAltitude", s.maxAltitude);

@@ -31,6 +31,10 @@ RouteSettings settingsFromHci(const pb::Route &r)
         case pb::VPT_DEFAULT_DESCENT_RATE: s.profile.descentRate = p.value(); break;
         case pb::VPT_MAX_CLIMB_RATE: maxClimb = p.value(); break;
         case pb::VPT_MAX_DESCENT_RATE: maxDescent = p.value(); break;
+        case pb::VPT_SAFE_DISTANCE_TO_TERRAIN:
+            if (p.value() >= 0)
+                s.profile.safeTerrainDistance = p.value();
+            break;
         default: break;
         }
     }
@@ -90,6 +94,8 @@ void settingsToHci(const RouteSettings &s, const RouteSettings *before, pb::Rout
             setProfileParameter(*r.mutable_vehicleprofile(), pb::VPT_MAX_HORIZONTAL_SPEED, p.maxHorizontalSpeed);
         if (differs(b.climbRate, p.climbRate)) setProfileParameter(*r.mutable_vehicleprofile(), pb::VPT_DEFAULT_CLIMB_RATE, p.climbRate);
         if (differs(b.descentRate, p.descentRate)) setProfileParameter(*r.mutable_vehicleprofile(), pb::VPT_DEFAULT_DESCENT_RATE, p.descentRate);
+        if (differs(b.safeTerrainDistance, p.safeTerrainDistance))
+            setProfileParameter(*r.mutable_vehicleprofile(), pb::VPT_SAFE_DISTANCE_TO_TERRAIN, p.safeTerrainDistance);
     }
 }
 }
