@@ -114,6 +114,7 @@ private slots:
             // The observer logs in without a password of their own remembered yet.
             first.settings.setLastUser(QStringLiteral("observer"));
             first.settings.sync();
+            QVERIFY(!fileContains("kr-secret-2"));
         }
         {
             Start restarted(m_path);
@@ -122,6 +123,8 @@ private slots:
             QCOMPARE(read.first().at(1).toString(), QStringLiteral("observer"));
             QVERIFY(read.first().at(2).toString().isEmpty());
             QVERIFY(restarted.settings.password().isEmpty());
+            restarted.settings.sync();
+            QVERIFY(!fileContains("kr-secret-2"));
         }
         PasswordVault vault(kService);
         QTRY_VERIFY(vault.state() == PasswordVault::State::Available);
