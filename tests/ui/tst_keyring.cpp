@@ -1,12 +1,14 @@
 // The remembered password against a real Secret Service: run by CTest through run-with-keyring.sh,
 // which gives this process a D-Bus session of its own with GNOME Keyring unlocked in a throw-away
-// home folder. After every step the settings file's bytes are searched for the password.
+// home folder. After every step the settings file's bytes are searched for the password; the last
+// test drives the real login view (offscreen).
 #include "AppSettings.h"
 #include "PasswordVault.h"
+#include "QuickScene.h"
 
-#include <QCoreApplication>
 #include <QFile>
 #include <QProcess>
+#include <QQuickItem>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -43,6 +45,7 @@ class TestKeyring : public QObject
 private slots:
     void initTestCase()
     {
+        sortie::test::useSoftwareRendering();
         PasswordVault vault(kService);
         QTRY_VERIFY(vault.state() != PasswordVault::State::Checking);
         QVERIFY2(vault.state() == PasswordVault::State::Available,
@@ -211,6 +214,45 @@ private slots:
         QVERIFY(start.settings.password().isEmpty());
     }
 
+    // The real login view: the keyring's answer fills the password field after the page is up, the
+    // box is enabled and ticked, nothing to say beside it; un-ticking it by mouse removes the entry.
+    void loginViewRecallsThePassword()
+    {
+        {
+            Start first(m_path);
+            QTRY_VERIFY(first.settings.canRememberPassword());
+            first.settings.setRememberPassword(true);
+            QSignalSpy written(&first.vault, &PasswordVault::passwordWritten);
+            first.settings.rememberLogin(kServer, kUser, QStringLiteral("kr-secret-6"));
+            QVERIFY(written.wait(5000));
+            first.settings.sync();
+        }
+        Start restarted(m_path);
+        sortie::test::QuickScene scene("import Sortie.Ui\nLoginPage {}", QSize(800, 600),
+                                       {{QStringLiteral("appSettings"), QVariant::fromValue(&restarted.settings)},
+                                        {QStringLiteral("connection"), QVariant::fromValue<QObject *>(nullptr)}});
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        auto *password = scene.find<QQuickItem>(QStringLiteral("passwordField"));
+        auto *user = scene.find<QQuickItem>(QStringLiteral("userField"));
+        auto *remember = scene.find<QQuickItem>(QStringLiteral("rememberCheck"));
+        auto *notice = scene.find<QQuickItem>(QStringLiteral("rememberNotice"));
+        QVERIFY(password && user && remember && notice);
+        QTRY_COMPARE(password->property("text").toString(), QStringLiteral("kr-secret-6"));
+        QCOMPARE(user->property("text").toString(), kUser);
+        QVERIFY(remember->isEnabled());
+        QVERIFY(remember->property("checked").toBool());
+        QVERIFY(!notice->isVisible());
+
+        QSignalSpy removed(&restarted.vault, &PasswordVault::passwordRemoved);
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, remember->mapToScene(QPointF(10, remember->height() / 2)).toPoint());
+        QVERIFY(removed.wait(5000));
+        QVERIFY(!remember->property("checked").toBool());
+        QVERIFY(!restarted.settings.rememberPassword());
+        QVERIFY(secretTool(PasswordVault::entryKey(kServer, kUser)).isEmpty());
+        restarted.settings.sync();
+        QVERIFY(!fileContains("kr-secret-6"));
+    }
+
 private:
     bool fileContains(const QByteArray &text) const
     {
@@ -234,5 +276,5 @@ private:
     QString m_path;
 };
 
-QTEST_GUILESS_MAIN(TestKeyring)
+QTEST_MAIN(TestKeyring)
 #include "tst_keyring.moc"
