@@ -249,6 +249,15 @@ private slots:
         QVERIFY(!remember->property("checked").toBool());
         QVERIFY(!restarted.settings.rememberPassword());
         QVERIFY(secretTool(PasswordVault::entryKey(kServer, kUser)).isEmpty());
+
+        // Ticked again by mouse, then turned off by the settings: the box follows the settings.
+        QSignalSpy written(&restarted.vault, &PasswordVault::passwordWritten);
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, remember->mapToScene(QPointF(10, remember->height() / 2)).toPoint());
+        QVERIFY(written.wait(5000));
+        QVERIFY(remember->property("checked").toBool());
+        restarted.settings.setRememberPassword(false);
+        QVERIFY(!remember->property("checked").toBool());
+        QVERIFY(removed.wait(5000));
         restarted.settings.sync();
         QVERIFY(!fileContains("kr-secret-6"));
     }

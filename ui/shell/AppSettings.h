@@ -2,8 +2,9 @@
 
 #include <QObject>
 #include <QRect>
-#include <optional>
 #include <QtQml/qqmlregistration.h>
+
+#include <optional>
 
 class QSettings;
 
@@ -86,7 +87,6 @@ private:
     void write(const QString &key, const QVariant &value);
     bool rememberWanted() const;
     void keyringChecked();
-    void keep();
     void setNotice(const QString &notice);
 
     QSettings *m_storage;
