@@ -11,6 +11,7 @@
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "PasswordVault.h"
 #include "RecordingSettings.h"
 #include "ReplayController.h"
 #include "ServerHistoryRequest.h"
@@ -108,7 +109,8 @@ int main(int argc, char *argv[])
     QQuickStyle::setStyle(QStringLiteral("Fusion"));
 
     QSettings storage;
-    sortie::ui::AppSettings settings(&storage);
+    sortie::secrets::PasswordVault vault(QStringLiteral("sortie"));
+    sortie::ui::AppSettings settings(&storage, &vault);
     if (options.server)
         settings.setLastServer(options.server->toString());
     if (!options.user.isEmpty())

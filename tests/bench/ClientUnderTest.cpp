@@ -9,7 +9,7 @@ namespace sortie::bench {
 
 ClientUnderTest::ClientUnderTest(bool withWindow)
     : m_storage(m_dir.filePath(QStringLiteral("settings.ini")), QSettings::IniFormat)
-    , m_settings(&m_storage)
+    , m_settings(&m_storage, &m_vault)
     , m_client(&m_session)
     , m_connection(&m_session)
     , m_missions(&m_client)

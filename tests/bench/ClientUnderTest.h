@@ -5,6 +5,7 @@
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "PasswordVault.h"
 #include "VehicleFleet.h"
 
 #include <QQmlApplicationEngine>
@@ -40,6 +41,7 @@ public:
 
 private:
     QTemporaryDir m_dir;
+    sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")};
     QSettings m_storage;
     ui::AppSettings m_settings;
     hci::HciSession m_session;

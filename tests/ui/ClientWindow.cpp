@@ -34,7 +34,7 @@ ClientWindow::ClientWindow(Options options)
     if (!m_vci->start(&m_error))
         return;
     m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
-    m_settings = std::make_unique<ui::AppSettings>(m_storage.get());
+    m_settings = std::make_unique<ui::AppSettings>(m_storage.get(), &m_vault);
     m_session = std::make_unique<hci::HciSession>();
     m_client = std::make_unique<hci::HciClient>(m_session.get());
     m_connection = std::make_unique<client::ConnectionController>(m_session.get());

@@ -9,6 +9,7 @@
 #include "HciServer.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "PasswordVault.h"
 #include "SimVciFleet.h"
 #include "SimWorld.h"
 #include "VehicleFleet.h"
@@ -74,6 +75,7 @@ private:
     std::unique_ptr<sim::SimWorld> m_world;
     std::unique_ptr<sim::HciServer> m_server;
     std::unique_ptr<sim::SimVciFleet> m_vci;
+    sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")}; // no keyring under ctest: nothing remembered
     std::unique_ptr<QSettings> m_storage;
     std::unique_ptr<ui::AppSettings> m_settings;
     std::unique_ptr<hci::HciSession> m_session;

@@ -1,6 +1,7 @@
 // The command line of sortie and the settings it keeps.
 #include "AppSettings.h"
 #include "LaunchOptions.h"
+#include "PasswordVault.h"
 
 #include <QCoreApplication>
 #include <QSettings>
@@ -10,6 +11,7 @@
 
 using namespace sortie::app;
 using sortie::client::ServerAddress;
+using sortie::secrets::PasswordVault;
 using sortie::ui::AppSettings;
 
 namespace {
@@ -39,6 +41,11 @@ private slots:
     {
         QCoreApplication::setApplicationName(QStringLiteral("sortie"));
         QCoreApplication::setApplicationVersion(QStringLiteral("9.8.7"));
+        // No keyring here, wherever the test runs (a desktop session included): a session bus
+        // address where nothing listens. The keyring itself is tested by tst_keyring.
+        qputenv("DBUS_SESSION_BUS_ADDRESS", "unix:path=/nonexistent/sortie-tst-launch");
+        m_vault = std::make_unique<PasswordVault>(QStringLiteral("sortie-tests"));
+        QTRY_COMPARE(m_vault->state(), PasswordVault::State::Unavailable);
     }
 
     void serverAddresses_data()
@@ -156,7 +163,7 @@ private slots:
         const QString path = dir.filePath(QStringLiteral("sortie.ini"));
         {
             QSettings storage(path, QSettings::IniFormat);
-            AppSettings settings(&storage);
+            AppSettings settings(&storage, m_vault.get());
             QCOMPARE(settings.lastServer(), QStringLiteral("localhost:3334"));
             QCOMPARE(settings.mapSource(), QStringLiteral("offline"));
             QSignalSpy changed(&settings, &AppSettings::changed);
@@ -171,7 +178,7 @@ private slots:
             settings.sync();
         }
         QSettings storage(path, QSettings::IniFormat);
-        AppSettings settings(&storage);
+        AppSettings settings(&storage, m_vault.get());
         QCOMPARE(settings.lastServer(), QStringLiteral("ucs.local:3334"));
         QCOMPARE(settings.lastUser(), QStringLiteral("pilot"));
         QCOMPARE(settings.mapSource(), QStringLiteral("mbtiles"));
@@ -183,38 +190,86 @@ private slots:
         QVERIFY(!fileContains(path, "secret-1"));
     }
 
-    void passwordOnlyWhenRemembered()
+    // Without a keyring nothing is remembered, the login view is told why, and the file never
+    // holds the password, whatever the operator does.
+    void noKeyringNothingRemembered()
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("sortie.ini"));
         {
+            PasswordVault vault(QStringLiteral("sortie-tests"));
             QSettings storage(path, QSettings::IniFormat);
-            AppSettings settings(&storage);
-            settings.setPassword(QStringLiteral("secret-2"));
+            AppSettings settings(&storage, &vault);
+            QVERIFY(!settings.canRememberPassword()); // not before the keyring has answered either
+            QTRY_COMPARE(vault.state(), PasswordVault::State::Unavailable);
+            QVERIFY(!vault.unavailableReason().isEmpty());
+            QVERIFY(!settings.canRememberPassword());
+            QVERIFY2(settings.passwordNotice().startsWith(QStringLiteral("No keyring is reachable, so the password cannot be remembered (")), qPrintable(settings.passwordNotice()));
+            QVERIFY(settings.passwordNotice().contains(vault.unavailableReason()));
+
+            QSignalSpy changed(&settings, &AppSettings::changed);
             settings.setRememberPassword(true);
-            settings.sync();
-            QVERIFY(fileContains(path, "secret-2"));
-        }
-        {
-            QSettings storage(path, QSettings::IniFormat);
-            AppSettings settings(&storage);
-            QVERIFY(settings.rememberPassword());
-            QCOMPARE(settings.password(), QStringLiteral("secret-2"));
-            settings.setRememberPassword(false); // un-ticking erases the stored copy
+            QVERIFY(!settings.rememberPassword());
+            QCOMPARE(changed.count(), 1); // the ticked box springs back
+            settings.rememberLogin(QStringLiteral("ucs.local:3334"), QStringLiteral("pilot"), QStringLiteral("secret-2"));
+            QCOMPARE(settings.password(), QStringLiteral("secret-2")); // for this session's re-logins
+            QCOMPARE(settings.lastUser(), QStringLiteral("pilot"));
             settings.sync();
             QVERIFY(!fileContains(path, "secret-2"));
         }
-        // A password left in the file without "remember" (an older version, a hand edit) is dropped.
-        {
-            QSettings storage(path, QSettings::IniFormat);
-            storage.setValue(QStringLiteral("connection/password"), QStringLiteral("secret-3"));
-            storage.sync();
-        }
+        PasswordVault vault(QStringLiteral("sortie-tests"));
         QSettings storage(path, QSettings::IniFormat);
-        AppSettings settings(&storage);
+        AppSettings settings(&storage, &vault);
+        QTRY_COMPARE(vault.state(), PasswordVault::State::Unavailable);
         QVERIFY(settings.password().isEmpty());
+        QVERIFY(!settings.rememberPassword());
+        QVERIFY(!fileContains(path, "secret-2"));
+    }
+
+    // A plain-text password an older version wrote leaves the file at once, keyring or not; with no
+    // keyring to take it, it is dropped and the notice says so.
+    void plainPasswordErasedWithoutKeyring()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("sortie.ini"));
+        writeOldSettings(path, true, "secret-3");
+        QVERIFY(fileContains(path, "secret-3"));
+        PasswordVault vault(QStringLiteral("sortie-tests"));
+        QSettings storage(path, QSettings::IniFormat);
+        AppSettings settings(&storage, &vault);
+        QVERIFY(!fileContains(path, "secret-3")); // erased by the constructor, before any keyring answer
+        QTRY_COMPARE(vault.state(), PasswordVault::State::Unavailable);
+        QVERIFY2(settings.passwordNotice().contains(QStringLiteral("earlier version kept in the settings file was erased")),
+                 qPrintable(settings.passwordNotice()));
+        QVERIFY(settings.password().isEmpty());
+        QVERIFY(!settings.rememberPassword());
+        QCOMPARE(settings.lastUser(), QStringLiteral("pilot"));
         settings.sync();
         QVERIFY(!fileContains(path, "secret-3"));
+    }
+
+    // Without "remember" a password left in the file (a hand edit) is simply dropped.
+    void strayPasswordDropped()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("sortie.ini"));
+        writeOldSettings(path, false, "secret-4");
+        PasswordVault vault(QStringLiteral("sortie-tests"));
+        QSettings storage(path, QSettings::IniFormat);
+        AppSettings settings(&storage, &vault);
+        QVERIFY(!fileContains(path, "secret-4"));
+        QTRY_COMPARE(vault.state(), PasswordVault::State::Unavailable);
+        QVERIFY(!settings.passwordNotice().contains(QStringLiteral("earlier version")));
+        QVERIFY(settings.password().isEmpty());
+    }
+
+    void entryKeysAreDistinct()
+    {
+        QCOMPARE(PasswordVault::entryKey(QStringLiteral("ucs.local:3334"), QStringLiteral("pilot")),
+                 QStringLiteral("hci://pilot@ucs.local:3334"));
+        // A user name with "@" cannot make two server/user pairs share an entry.
+        QVERIFY(PasswordVault::entryKey(QStringLiteral("c"), QStringLiteral("a@b"))
+                != PasswordVault::entryKey(QStringLiteral("b@c"), QStringLiteral("a")));
     }
 
     void unknownMapSourceFallsBackToOffline()
@@ -222,11 +277,23 @@ private slots:
         QTemporaryDir dir;
         QSettings storage(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
         storage.setValue(QStringLiteral("map/source"), QStringLiteral("satellite-magic"));
-        AppSettings settings(&storage);
+        AppSettings settings(&storage, m_vault.get());
         QCOMPARE(settings.mapSource(), QStringLiteral("offline"));
     }
 
 private:
+    // Checked once (no keyring); the tests that watch the check itself make vaults of their own.
+    std::unique_ptr<PasswordVault> m_vault;
+
+    // The settings file as versions before the keyring wrote it: the password in plain text.
+    static void writeOldSettings(const QString &path, bool remember, const char *password)
+    {
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(QByteArray("[connection]\nserver=ucs.local:3334\nuser=pilot\nrememberPassword=")
+                   + (remember ? "true" : "false") + "\npassword=" + password + "\n");
+    }
+
     static bool fileContains(const QString &path, const QByteArray &text)
     {
         QFile file(path);

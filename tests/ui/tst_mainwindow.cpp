@@ -3,6 +3,7 @@
 #include "AppSettings.h"
 #include "CoordinateListModel.h"
 #include "MapView.h"
+#include "PasswordVault.h"
 #include "QuickScene.h"
 #include "RouteLayer.h"
 #include "SortieUi.h"
@@ -94,6 +95,7 @@ class TestMainWindow : public QObject
     Q_OBJECT
 
     QTemporaryDir m_dir;
+    sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")}; // no keyring under ctest: nothing remembered
     std::unique_ptr<QSettings> m_storage;
     std::unique_ptr<AppSettings> m_settings;
     std::unique_ptr<QQmlApplicationEngine> m_engine;
@@ -126,13 +128,18 @@ class TestMainWindow : public QObject
     }
 
 private slots:
-    void initTestCase() { sortie::test::useSoftwareRendering(); }
+    void initTestCase()
+    {
+        sortie::test::useSoftwareRendering();
+        // No keyring, even in a desktop session: nothing listens at this session bus address.
+        qputenv("DBUS_SESSION_BUS_ADDRESS", "unix:path=/nonexistent/sortie-tst-mainwindow");
+    }
 
     void init()
     {
         m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
         m_storage->clear();
-        m_settings = std::make_unique<AppSettings>(m_storage.get());
+        m_settings = std::make_unique<AppSettings>(m_storage.get(), &m_vault);
         m_engine = std::make_unique<QQmlApplicationEngine>();
         addImportPaths(*m_engine);
         m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())}});
@@ -182,6 +189,26 @@ private slots:
         QVERIFY(grid->childItems().size() >= 16); // two labels per shortcut
         QTest::keyClick(m_window, Qt::Key_Escape);
         QTRY_VERIFY(!help->property("opened").toBool());
+    }
+
+    // Without a keyring the login view says so beside a disabled "remember" box, and a click on it
+    // remembers nothing.
+    void rememberNeedsAKeyring()
+    {
+        QTRY_COMPARE(m_vault.state(), sortie::secrets::PasswordVault::State::Unavailable);
+        auto *remember = find<QQuickItem>("rememberCheck");
+        auto *notice = find<QQuickItem>("rememberNotice");
+        QVERIFY(remember && notice);
+        QTRY_VERIFY(notice->isVisible());
+        QVERIFY(!remember->isEnabled());
+        QVERIFY(!remember->property("checked").toBool());
+        const QString text = notice->property("text").toString();
+        QVERIFY2(text.startsWith(QStringLiteral("No keyring is reachable, so the password cannot be remembered (")) && text.contains(m_vault.unavailableReason()),
+                 qPrintable(text));
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, remember->mapToScene(QPointF(10, remember->height() / 2)).toPoint());
+        QVERIFY(!remember->property("checked").toBool());
+        QVERIFY(!m_settings->rememberPassword());
+        QVERIFY(!m_storage->value(QStringLiteral("connection/rememberPassword")).toBool());
     }
 
     void unitsAndMapSourceFollowTheSettings()

@@ -10,6 +10,7 @@
 #include "MapView.h"
 #include "Messages.pb.h"
 #include "MissionController.h"
+#include "PasswordVault.h"
 #include "QuickScene.h"
 #include "RouteLayer.h"
 #include "SimVciFleet.h"
@@ -55,6 +56,7 @@ class TestUiFlows : public QObject
     QTemporaryDir m_dir;
     std::unique_ptr<sim::SimWorld> m_world;
     std::unique_ptr<sim::HciServer> m_server;
+    sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")}; // no keyring under ctest: nothing remembered
     std::unique_ptr<QSettings> m_storage;
     std::unique_ptr<ui::AppSettings> m_settings;
     std::unique_ptr<hci::HciSession> m_session;
@@ -174,7 +176,7 @@ private slots:
         QVERIFY(m_server->listen(QHostAddress::LocalHost, 0));
         m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
         m_storage->clear();
-        m_settings = std::make_unique<ui::AppSettings>(m_storage.get());
+        m_settings = std::make_unique<ui::AppSettings>(m_storage.get(), &m_vault);
         m_session = std::make_unique<hci::HciSession>();
         m_client = std::make_unique<hci::HciClient>(m_session.get());
         m_connection = std::make_unique<client::ConnectionController>(m_session.get());

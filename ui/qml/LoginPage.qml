@@ -21,6 +21,15 @@ Page {
             page.connection.connectToServer(server, user, password)
     }
 
+    // The keyring answers after the page is up: its password fills the field unless one was typed.
+    Connections {
+        target: page.appSettings
+        function onPasswordRecalled() {
+            if (password.text.length === 0)
+                password.text = page.appSettings.password
+        }
+    }
+
     // A login made elsewhere (the demo, --server) shows where and as whom in the fields.
     Connections {
         target: page.connection
@@ -80,8 +89,21 @@ Page {
                 id: remember
                 objectName: "rememberCheck"
                 text: qsTr("Remember the password on this computer")
+                enabled: page.appSettings.canRememberPassword
                 checked: page.appSettings.rememberPassword
                 onToggled: page.appSettings.rememberPassword = checked
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Kept in this computer's keyring for this server and user, never in a file")
+            }
+            Label {
+                // No keyring (and why), a keyring that refused, a password moved out of the settings file.
+                objectName: "rememberNotice"
+                Layout.fillWidth: true
+                wrapMode: Text.Wrap
+                font.pixelSize: 12
+                opacity: 0.8
+                text: page.appSettings.passwordNotice
+                visible: text.length > 0
             }
             RowLayout {
                 Layout.fillWidth: true
@@ -93,10 +115,7 @@ Page {
                     highlighted: true
                     enabled: page.connection !== null && server.text.length > 0 && user.text.length > 0
                     onClicked: {
-                        page.appSettings.lastServer = server.text
-                        page.appSettings.lastUser = user.text
-                        if (remember.checked)
-                            page.appSettings.password = password.text
+                        page.appSettings.rememberLogin(server.text, user.text, password.text)
                         page.connectRequested(server.text, user.text, password.text)
                     }
                     ToolTip.visible: hovered

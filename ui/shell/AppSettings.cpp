@@ -1,8 +1,13 @@
 #include "AppSettings.h"
 
+#include "PasswordVault.h"
+
 #include <QSettings>
+#include <utility>
 
 namespace sortie::ui {
+
+using secrets::PasswordVault;
 
 namespace {
 const QString kServer = QStringLiteral("connection/server");
@@ -17,14 +22,84 @@ const QString kGeometry = QStringLiteral("window/geometry");
 const QString kMaximized = QStringLiteral("window/maximized");
 } // namespace
 
-AppSettings::AppSettings(QSettings *storage, QObject *parent)
+AppSettings::AppSettings(QSettings *storage, PasswordVault *vault, QObject *parent)
     : QObject(parent)
     , m_storage(storage)
+    , m_vault(vault)
 {
-    if (rememberPassword())
-        m_password = m_storage->value(kPassword).toString();
-    else
-        m_storage->remove(kPassword); // never keep a password nobody asked to remember
+    // Older versions kept the password here in plain text. It leaves the file now, whatever comes
+    // next: the keyring takes it once it answers, or it is dropped.
+    if (m_storage->contains(kPassword)) {
+        if (rememberWanted())
+            m_plain = PlainPassword{lastServer(), lastUser(), m_storage->value(kPassword).toString()};
+        m_storage->remove(kPassword);
+        m_storage->sync();
+    }
+    connect(m_vault, &PasswordVault::stateChanged, this, &AppSettings::keyringChecked);
+    connect(m_vault, &PasswordVault::passwordRead, this, [this](const QString &server, const QString &user, const QString &password) {
+        if (!rememberPassword() || server != lastServer() || user != lastUser() || password.isEmpty())
+            return;
+        m_password = password;
+        emit changed();
+        emit passwordRecalled();
+    });
+    connect(m_vault, &PasswordVault::passwordWritten, this, [this] {
+        if (std::exchange(m_moving, false))
+            setNotice(tr("The password an earlier version kept in the settings file is now in the keyring."));
+        else
+            setNotice({});
+    });
+    connect(m_vault, &PasswordVault::failed, this,
+            [this](PasswordVault::Operation operation, const QString &, const QString &, const QString &reason) {
+        switch (operation) {
+        case PasswordVault::Operation::Write:
+            // Not kept means not remembered: the box must not claim otherwise.
+            m_storage->setValue(kRemember, false);
+            setNotice(std::exchange(m_moving, false)
+                          ? tr("The password an earlier version kept in the settings file was erased from it; the keyring refused it (%1), so it is not remembered.").arg(reason)
+                          : tr("The keyring refused the password (%1): it is not remembered.").arg(reason));
+            break;
+        case PasswordVault::Operation::Read:
+            setNotice(tr("The remembered password could not be read from the keyring (%1).").arg(reason));
+            break;
+        case PasswordVault::Operation::Remove:
+            setNotice(tr("The password could not be removed from the keyring (%1).").arg(reason));
+            break;
+        }
+    });
+    if (m_vault->state() != PasswordVault::State::Checking)
+        keyringChecked();
+}
+
+void AppSettings::keyringChecked()
+{
+    if (m_vault->state() == PasswordVault::State::Available) {
+        if (m_plain) {
+            const PlainPassword plain = *std::exchange(m_plain, std::nullopt);
+            m_moving = true;
+            m_vault->write(plain.server, plain.user, plain.password);
+            if (plain.server == lastServer() && plain.user == lastUser() && m_password.isEmpty()) {
+                m_password = plain.password;
+                emit passwordRecalled();
+            }
+        } else if (rememberWanted()) {
+            m_vault->read(lastServer(), lastUser());
+        }
+    } else if (m_vault->state() == PasswordVault::State::Unavailable) {
+        QString notice = tr("No keyring is reachable, so the password cannot be remembered (%1).").arg(m_vault->unavailableReason());
+        if (std::exchange(m_plain, std::nullopt))
+            notice += QLatin1Char(' ') + tr("The password an earlier version kept in the settings file was erased from it.");
+        m_notice = notice;
+    }
+    emit changed();
+}
+
+void AppSettings::setNotice(const QString &notice)
+{
+    if (notice == m_notice)
+        return;
+    m_notice = notice;
+    emit changed();
 }
 
 void AppSettings::write(const QString &key, const QVariant &value)
@@ -55,20 +130,39 @@ void AppSettings::setLastUser(const QString &user)
     write(kUser, user);
 }
 
-bool AppSettings::rememberPassword() const
+bool AppSettings::rememberWanted() const
 {
     return m_storage->value(kRemember, false).toBool();
+}
+
+bool AppSettings::rememberPassword() const
+{
+    return rememberWanted() && canRememberPassword();
+}
+
+bool AppSettings::canRememberPassword() const
+{
+    return m_vault->state() == PasswordVault::State::Available;
+}
+
+QString AppSettings::passwordNotice() const
+{
+    return m_notice;
 }
 
 void AppSettings::setRememberPassword(bool remember)
 {
     if (remember == rememberPassword())
         return;
+    if (remember && !canRememberPassword()) {
+        emit changed(); // a box ticked anyway springs back; passwordNotice says why
+        return;
+    }
     m_storage->setValue(kRemember, remember);
-    if (remember)
-        m_storage->setValue(kPassword, m_password);
-    else
-        m_storage->remove(kPassword);
+    if (!remember)
+        m_vault->remove(lastServer(), lastUser());
+    else if (!m_password.isEmpty())
+        m_vault->write(lastServer(), lastUser(), m_password);
     emit changed();
 }
 
@@ -77,9 +171,22 @@ void AppSettings::setPassword(const QString &password)
     if (password == m_password)
         return;
     m_password = password;
-    if (rememberPassword())
-        m_storage->setValue(kPassword, m_password);
+    if (rememberPassword() && !m_password.isEmpty())
+        m_vault->write(lastServer(), lastUser(), m_password);
     emit changed();
+}
+
+void AppSettings::rememberLogin(const QString &server, const QString &user, const QString &password)
+{
+    setLastServer(server);
+    setLastUser(user);
+    const bool passwordChanged = password != m_password;
+    m_password = password;
+    // Written on every login, so the keyring holds the password last used for this server and user.
+    if (rememberPassword() && !m_password.isEmpty())
+        m_vault->write(server, user, m_password);
+    if (passwordChanged)
+        emit changed();
 }
 
 QString AppSettings::mapSource() const

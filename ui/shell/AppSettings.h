@@ -4,13 +4,23 @@
 #include <QRect>
 #include <QtQml/qqmlregistration.h>
 
+#include <optional>
+
 class QSettings;
+
+namespace sortie::secrets {
+class PasswordVault;
+}
 
 namespace sortie::ui {
 
-// What the operator chose last time, kept in QSettings: server, user, window geometry, map
-// source and units. The password is held in memory for the session and written only while
-// `rememberPassword` is on; turning it off erases the stored copy. Nothing here is logged.
+// What the operator chose last time, kept in QSettings: server, user, "remember the password",
+// window geometry, map source and units. The password itself never goes into the settings: it is
+// held in memory for the session and, while `rememberPassword` is on, kept in the operating
+// system's keyring by the vault, under the last server and user; turning "remember" off removes it
+// from there. Without a reachable keyring nothing is remembered (`canRememberPassword` is false and
+// `passwordNotice` says why). A plain-text password left in the settings by an older version is
+// moved to the keyring and erased from the file at start. Nothing here is logged.
 class AppSettings : public QObject
 {
     Q_OBJECT
@@ -20,6 +30,8 @@ class AppSettings : public QObject
     Q_PROPERTY(QString lastUser READ lastUser WRITE setLastUser NOTIFY changed)
     Q_PROPERTY(bool rememberPassword READ rememberPassword WRITE setRememberPassword NOTIFY changed)
     Q_PROPERTY(QString password READ password WRITE setPassword NOTIFY changed)
+    Q_PROPERTY(bool canRememberPassword READ canRememberPassword NOTIFY changed)
+    Q_PROPERTY(QString passwordNotice READ passwordNotice NOTIFY changed)
     Q_PROPERTY(QString mapSource READ mapSource WRITE setMapSource NOTIFY changed)
     Q_PROPERTY(QString tileUrlTemplate READ tileUrlTemplate WRITE setTileUrlTemplate NOTIFY changed)
     Q_PROPERTY(QString mbtilesFile READ mbtilesFile WRITE setMbtilesFile NOTIFY changed)
@@ -29,16 +41,23 @@ class AppSettings : public QObject
 
 public:
     // Map sources: "offline" (built-in base map only), "xyz" (tileUrlTemplate), "mbtiles" (mbtilesFile).
-    explicit AppSettings(QSettings *storage, QObject *parent = nullptr);
+    // `vault` keeps the remembered password; it must outlive this object.
+    AppSettings(QSettings *storage, secrets::PasswordVault *vault, QObject *parent = nullptr);
 
     QString lastServer() const;
     void setLastServer(const QString &server);
     QString lastUser() const;
     void setLastUser(const QString &user);
+    // On only while a keyring is reachable and the operator asked for it.
     bool rememberPassword() const;
     void setRememberPassword(bool remember);
+    // The password of this session: typed, or read back from the keyring for lastServer/lastUser.
     QString password() const { return m_password; }
     void setPassword(const QString &password);
+    bool canRememberPassword() const;
+    // What the login view says beside "remember": no keyring (and why), a keyring that refused, a
+    // password moved out of the settings file. Empty when there is nothing to say.
+    QString passwordNotice() const;
     QString mapSource() const;
     void setMapSource(const QString &source);
     QString tileUrlTemplate() const;
@@ -52,17 +71,38 @@ public:
     bool windowMaximized() const;
     void setWindowMaximized(bool maximized);
 
+    // The login the operator just used: becomes lastServer/lastUser, and the password is kept in
+    // the keyring for that server and user while "remember" is on.
+    Q_INVOKABLE void rememberLogin(const QString &server, const QString &user, const QString &password);
+
     // Writes everything to disk now (QSettings otherwise writes lazily).
     Q_INVOKABLE void sync();
 
 signals:
     void changed();
+    // The keyring gave back the remembered password (the login view fills an empty field with it).
+    void passwordRecalled();
 
 private:
     void write(const QString &key, const QVariant &value);
+    bool rememberWanted() const;
+    void keyringChecked();
+    void setNotice(const QString &notice);
 
     QSettings *m_storage;
+    secrets::PasswordVault *m_vault;
     QString m_password;
+    // A plain-text password an older version left in the settings, on its way to the keyring: it is
+    // out of the file already and kept in memory until the keyring has it (or is known to be absent).
+    struct PlainPassword
+    {
+        QString server;
+        QString user;
+        QString password;
+    };
+    std::optional<PlainPassword> m_plain;
+    bool m_moving = false; // the plain password's keyring write is under way
+    QString m_notice;
 };
 
 } // namespace sortie::ui
