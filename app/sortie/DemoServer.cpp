@@ -23,6 +23,7 @@ bool DemoServer::start(QString *error)
     sim::SimVciFleetOptions vci;
     vci.count = 1;
     vci.firstPort = 0; // any free port
+    vci.vehicle.terrain = &m_world->terrain();
     m_vci = std::make_unique<sim::SimVciFleet>(vci);
     return m_vci->start(error);
 }

@@ -6,6 +6,8 @@
 
 namespace sortie::sim {
 
+class SimTerrain;
+
 // One simulated VCI vehicle's settings, with the test knobs that make it misbehave on purpose.
 struct SimVciOptions
 {
@@ -13,7 +15,10 @@ struct SimVciOptions
     QString name = QStringLiteral("Sim VCI 1");
     double homeLatitude = 56.9496;   // degrees
     double homeLongitude = 24.1052;  // degrees
-    double groundElevation = 12;     // metres AMSL
+    double groundElevation = 12;     // metres AMSL (where `terrain` has no data, or without one)
+    // The world's ground (sortie-sim's, shared with the HCI vehicles): the home stands on it and the
+    // position's altitudeAgl is above the ground under the vehicle. Not owned; nullptr: flat ground.
+    const SimTerrain *terrain = nullptr;
     double telemetryRate = 10;       // NOTIFYs per second per subscribed telemetry resource
     double timeScale = 1;            // simulated seconds per real second (tests fly missions faster)
     vci::VciFraming framing = vci::VciFraming::JsonOnly; // how its bodies are delimited

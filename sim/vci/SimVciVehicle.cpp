@@ -1,5 +1,7 @@
 #include "SimVciVehicle.h"
 
+#include "SimTerrain.h"
+
 #include "VciProfile.h"
 
 #include <QDateTime>
@@ -24,7 +26,9 @@ bool is(const std::string &uri, std::string_view name) { return uri == name; }
 SimVciVehicle::SimVciVehicle(const SimVciOptions &options, QObject *parent)
     : QObject(parent)
     , m_options(options)
-    , m_model(options.homeLatitude, options.homeLongitude, options.groundElevation)
+    , m_model(options.homeLatitude, options.homeLongitude,
+              options.terrain ? options.terrain->groundOr(options.homeLatitude, options.homeLongitude, options.groundElevation)
+                              : options.groundElevation)
 {
     m_parameters["telemetry_rate"] = options.telemetryRate;
     m_parameters["takeoff_altitude"] = m_model.limits().takeoffAltitude;
@@ -110,9 +114,13 @@ std::optional<json> SimVciVehicle::resource(const std::string &uri) const
     if (is(uri, profile::kVehicle))
         return json{{"id", m_options.id.toStdString()}, {"name", m_options.name.toStdString()}, {"type", "multicopter"},
                     {"autopilot", "sortie-sim"}, {"firmware", "1.0"}, {"profile", "sortie-vci/1"}};
-    if (is(uri, profile::kPosition))
-        return json{{"latitude", s.latitude * kRad}, {"longitude", s.longitude * kRad}, {"altitudeAmsl", s.altitudeAmsl()},
-                    {"altitudeAgl", s.altitudeAgl}, {"time", now()}};
+    if (is(uri, profile::kPosition)) {
+        // The model flies above its home ground; the height above the ground below is what is reported.
+        const double amsl = s.altitudeAmsl();
+        const double agl = m_options.terrain ? amsl - m_options.terrain->groundOr(s.latitude, s.longitude, s.groundElevation) : s.altitudeAgl;
+        return json{{"latitude", s.latitude * kRad}, {"longitude", s.longitude * kRad}, {"altitudeAmsl", amsl},
+                    {"altitudeAgl", agl}, {"time", now()}};
+    }
     if (is(uri, profile::kAttitude))
         return json{{"roll", s.roll * kRad}, {"pitch", s.pitch * kRad}, {"yaw", s.heading * kRad}, {"time", now()}};
     if (is(uri, profile::kSpeed))

@@ -6,6 +6,8 @@
 #include "SimRouteProcessor.h"
 #include "SimRouteTerrain.h"
 #include "SimTerrain.h"
+#include "SimVciVehicle.h"
+#include "VciProfile.h"
 
 #include <QTemporaryDir>
 #include <QTest>
@@ -53,6 +55,28 @@ private slots:
         QCOMPARE(terrain.groundAt(56.99, 24.061), terrain.groundAt(56.99, 24.061));
         QVERIFY(std::abs(*terrain.groundAt(56.99, 24.061) - *terrain.groundAt(56.99, 24.0611)) < 0.5);
         QVERIFY(std::isfinite(*terrain.groundAt(-33.0, 151.0)));  // the built-in world has ground everywhere
+    }
+
+    // A simulated VCI vehicle stands on the same ground: at home on a hill top its home is the hill's
+    // height above sea level and it is 0 m above the ground; without the world's terrain, flat ground.
+    void vciVehicleStandsOnTheGround()
+    {
+        sim::SimTerrain terrain(10.0);
+        const auto &hill = static_cast<sim::BuiltInTerrain &>(terrain.source()).hills().front();
+        sim::SimVciOptions options;
+        options.homeLatitude = hill.latitude;
+        options.homeLongitude = hill.longitude;
+        options.terrain = &terrain;
+        sim::SimVciVehicle onHill(options);
+        const nlohmann::json home = *onHill.resource(std::string(vci::profile::kHome));
+        QCOMPARE(home["altitudeAmsl"].get<double>(), 10.0 + hill.height);
+        const nlohmann::json position = *onHill.resource(std::string(vci::profile::kPosition));
+        QCOMPARE(position["altitudeAmsl"].get<double>(), 10.0 + hill.height);
+        QVERIFY(std::abs(position["altitudeAgl"].get<double>()) < 1e-9);
+
+        options.terrain = nullptr;
+        sim::SimVciVehicle flat(options);
+        QCOMPARE((*flat.resource(std::string(vci::profile::kHome)))["altitudeAmsl"].get<double>(), options.groundElevation);
     }
 
     void demTiles()
