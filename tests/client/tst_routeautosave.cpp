@@ -125,13 +125,15 @@ private slots:
 
     void theFileIsEncodedAndWrittenOffTheGuiThread()
     {
+        // Declared before the autosave: its destructor writes the pending edits once more and the
+        // lambdas below still run then.
+        QThread *encodedOn = nullptr;
+        QThread *emittedOn = nullptr;
         QTemporaryDir dir;
         RouteDocument doc;
         RouteAutosave autosave(&doc, dir.path());
         autosave.setDelay(0);
         doc.load(test::serverRoute());
-        QThread *encodedOn = nullptr;
-        QThread *emittedOn = nullptr;
         // Direct connections run where the writer emits: the thread that encoded and wrote.
         connect(autosave.writer(), &AutosaveWriter::written, autosave.writer(),
                 [&encodedOn] { encodedOn = QThread::currentThread(); }, Qt::DirectConnection);
@@ -149,6 +151,8 @@ private slots:
 
     void aLateWriteDoesNotBringBackTheFileOfACleanDocument()
     {
+        QSemaphore gate;     // before the autosave: its writer thread may still touch them while it ends
+        QSemaphore holding;
         QTemporaryDir dir;
         RouteDocument doc;
         RouteAutosave autosave(&doc, dir.path());
@@ -156,8 +160,6 @@ private slots:
         doc.load(test::serverRoute());
         autosave.waitForWriter();
         // Hold the writer, so the write below is still pending when the document becomes clean.
-        QSemaphore gate;
-        QSemaphore holding;
         QMetaObject::invokeMethod(autosave.writer(), [&] { holding.release(); gate.acquire(); }, Qt::QueuedConnection);
         QVERIFY(holding.tryAcquire(1, 5000));
         const auto letGo = qScopeGuard([&gate] { gate.release(); }); // a failed check must not leave it held
@@ -185,14 +187,14 @@ private slots:
 
     void theNewestSnapshotWinsWhenWritesQueueUp()
     {
+        QSemaphore gate;     // before the autosave: its writer thread may still touch them while it ends
+        QSemaphore holding;
         QTemporaryDir dir;
         RouteDocument doc;
         RouteAutosave autosave(&doc, dir.path());
         autosave.setDelay(0);
         doc.load(test::serverRoute());
         autosave.waitForWriter();
-        QSemaphore gate;
-        QSemaphore holding;
         QMetaObject::invokeMethod(autosave.writer(), [&] { holding.release(); gate.acquire(); }, Qt::QueuedConnection);
         QVERIFY(holding.tryAcquire(1, 5000));
         const auto letGo = qScopeGuard([&gate] { gate.release(); }); // a failed check must not leave it held
