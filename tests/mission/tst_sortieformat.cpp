@@ -184,6 +184,22 @@ private slots:
         QCOMPARE(refused.error().jsonPath, QStringLiteral("/mission/routes/0/segments/0/parameters/overlapSide"));
     }
 
+    void oldSchemasWithWrongTypesAreErrorsNotCrashes()
+    {
+        // Found by fuzz_sortie_reader: a schema-2 segment whose "type" is a number threw out of the
+        // migration; a schema-1 altitudeType that is no string did the same.
+        const QByteArray v2 = R"({"format": "sortie-mission", "schemaVersion": 2, "mission": {"name": "m", "routes": [{"name": "r",
+            "segments": [{"type": 61386, "latitude": 56.9, "longitude": 24.1, "altitude": 20}]}]}})";
+        const Result<Mission> m2 = readSortie(v2);
+        QVERIFY(!m2.ok());
+        QVERIFY(m2.error().jsonPath.startsWith(QStringLiteral("/mission/routes/0/segments/0")));
+        const QByteArray v1 = R"({"format": "sortie-mission", "schemaVersion": 1, "mission": {"name": "m", "routes": [{"name": "r",
+            "waypoints": [{"lat": 56.9, "lon": 24.1, "alt": 20, "altitudeType": 7}]}]}})";
+        const Result<Mission> m1 = readSortie(v1);
+        QVERIFY(!m1.ok());
+        QVERIFY(m1.error().jsonPath.startsWith(QStringLiteral("/mission/routes/0/segments/0")));
+    }
+
     void refusesNewerSchema()
     {
         const Result<Mission> m = readSortie(R"({"format": "sortie-mission", "schemaVersion": 4, "mission": {"routes": []}})");

@@ -26,7 +26,7 @@ void v1ToV2(Json &doc)
             if (!w.is_object() || !w.contains("lat") || !w.contains("lon") || !w.contains("alt"))
                 throw JsonPathError{at + "/waypoints/" + std::to_string(i), QStringLiteral("schema 1 waypoint needs lat, lon and alt")};
             segments.push_back({{"type", "waypoint"}, {"latitude", w["lat"]}, {"longitude", w["lon"]},
-                                {"altitude", w["alt"]}, {"altitudeType", w.value("altitudeType", "AGL")}, {"speed", speed}});
+                                {"altitude", w["alt"]}, {"altitudeType", w.contains("altitudeType") ? w["altitudeType"] : Json("AGL")}, {"speed", speed}});
         }
         route.erase("waypoints");
         route.erase("speed");
@@ -54,7 +54,8 @@ void v2ToV3(Json &doc)
         if (!segments.is_array())
             continue;  // the reader names what is missing
         for (Json &segment : segments) {
-            if (!segment.is_object() || segment.value("type", "") != "areaScan")
+            // Compared as JSON: a "type" that is no string is the reader's to name, not a throw here.
+            if (!segment.is_object() || !segment.contains("type") || segment["type"] != "areaScan")
                 continue;
             Json parameters = Json::object();
             for (const auto &[from, to] : kRenames) {
