@@ -126,10 +126,7 @@ int main(int argc, char *argv[])
     elevation.configure(options.demPath.isEmpty() ? storage.value(QStringLiteral("terrain/demFolder")).toString() : options.demPath,
                         storage.value(QStringLiteral("terrain/sourceOrder")).toStringList());
     missions.document()->analyzer()->addRule(elevation.rule());
-    missions.document()->editor()->setGroundLookup([&elevation](const sortie::mission::GeoPoint &p) -> std::optional<double> {
-        const sortie::terrain::GroundSample g = elevation.service()->sample(p);
-        return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
-    });
+    missions.document()->editor()->setGroundLookup([&elevation](const sortie::mission::GeoPoint &p) { return elevation.service()->groundAt(p); });
     missions.setFleet(&fleet);
     // Recovery looks first, so the autosave of this run takes a slot of its own.
     const QString autosaves = autosaveDirectory(options);

@@ -6,6 +6,7 @@
 #include <QPointer>
 #include <QStringList>
 
+#include <optional>
 #include <vector>
 
 namespace sortie::terrain {
@@ -30,6 +31,12 @@ public:
     QString triedText() const;            // "SRTM tiles (/dem), UgCS server" for messages
 
     GroundSample sample(const GeoPoint &point);
+    // The ground's height, nullopt where no source has it (yet): what RouteEditor's ground lookup takes.
+    std::optional<double> groundAt(const GeoPoint &point)
+    {
+        const GroundSample g = sample(point);
+        return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
+    }
     void samplePath(const SampledPath &path, std::vector<GroundSample> &out);
 
 signals:

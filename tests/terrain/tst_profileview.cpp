@@ -197,10 +197,7 @@ private slots:
         ElevationService service;
         service.setSources({&hill});
         client::RouteDocument doc;
-        doc.editor()->setGroundLookup([&service](const mission::GeoPoint &p) -> std::optional<double> {
-            const GroundSample g = service.sample(p);
-            return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
-        });
+        doc.editor()->setGroundLookup([&service](const mission::GeoPoint &p) { return service.groundAt(p); });
         mission::Route route;
         auto add = [&route](double lon, double altitude, mission::AltitudeType type) {
             mission::Waypoint w;

@@ -258,10 +258,7 @@ private slots:
         QUndoStack stack;
         model.resetRoute(routeOf({{{56.9, 24.0}, 50}, {{56.9, 24.02}, 50}}, AltitudeType::Agl));
         sortie::mission::RouteEditor editor(&model, &stack);
-        editor.setGroundLookup([&service](const GeoPoint &p) -> std::optional<double> {
-            const GroundSample g = service.sample(p);
-            return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
-        });
+        editor.setGroundLookup([&service](const GeoPoint &p) { return service.groundAt(p); });
         QVERIFY(editor.setAltitudeType({0, 1}, AltitudeType::Amsl));
         auto wp = [&](int row) { return *sortie::mission::asWaypoint(model.segment(row)); };
         QCOMPARE(wp(0).altitude, 80.0);  // 50 m above 30 m ground
@@ -291,10 +288,7 @@ private slots:
         std::get<sortie::mission::Waypoint>(route.segments[1]).altitudeType = AltitudeType::Amsl;
         model.resetRoute(route);
         sortie::mission::RouteEditor editor(&model, &stack);
-        editor.setGroundLookup([&service](const GeoPoint &p) -> std::optional<double> {
-            const GroundSample g = service.sample(p);
-            return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
-        });
+        editor.setGroundLookup([&service](const GeoPoint &p) { return service.groundAt(p); });
         auto wp = [&](int row) { return *sortie::mission::asWaypoint(model.segment(row)); };
         QVERIFY(editor.setAltitudeIn({0, 1}, 90, AltitudeType::Amsl));
         QCOMPARE(wp(0).altitude, 60.0);  // AGL: 90 m AMSL over 30 m ground
