@@ -93,9 +93,9 @@ Result<MissionAction> vciAction(const WaypointAction &action)
             if (a.zoomLevel) fields.insert(QStringLiteral("zoom"), *a.zoomLevel);
             return MissionAction{QStringLiteral("gimbal"), fields};
         }
-        Result<MissionAction> operator()(const OpaqueAction &a) const
+        Result<MissionAction> operator()(const ServerAction &a) const
         {
-            return missionError(QStringLiteral("the action \"%1\" came from a UgCS server and has no VCI form").arg(a.description));
+            return missionError(QStringLiteral("the action \"%1\" is a UgCS server's and has no VCI form").arg(describeAction(a)));
         }
     };
     return std::visit(Visitor{}, action);

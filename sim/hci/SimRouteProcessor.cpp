@@ -12,6 +12,7 @@
 #include <QCryptographicHash>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -57,6 +58,60 @@ QString metres(double v)
     return QString::number(v, 'f', 1);
 }
 
+// Any other definition becomes the Action member of the same name ("setServoDefinition" -> setServo,
+// "poiDefinition" -> poiChange), its fields copied by name, as a UgCS server passes servos, lidar, hop,
+// drop and camera actions through. False when there is no such member or a field set in the
+// definition has no counterpart of the same type there (a POI above the ground, say).
+bool performedAsDefined(const pb::ActionDefinition &d, pb::Action *action)
+{
+    using google::protobuf::FieldDescriptor;
+    const auto *refl = d.GetReflection();
+    std::vector<const FieldDescriptor *> set;
+    refl->ListFields(d, &set);
+    for (const FieldDescriptor *member : set) {
+        if (member->cpp_type() != FieldDescriptor::CPPTYPE_MESSAGE || member->name() == "segmentDefinition")
+            continue;
+        std::string name = member->name();
+        if (name.size() > 10 && name.ends_with("Definition"))
+            name.resize(name.size() - 10);
+        name[0] = char(std::tolower(static_cast<unsigned char>(name[0])));
+        const auto *descriptor = pb::Action::descriptor();
+        const FieldDescriptor *target = descriptor->FindFieldByName(name);
+        if (!target)
+            target = descriptor->FindFieldByName(name + "Change");
+        if (!target || target->cpp_type() != FieldDescriptor::CPPTYPE_MESSAGE)
+            return false;
+        const auto &from = refl->GetMessage(d, member);
+        auto *to = action->GetReflection()->MutableMessage(action, target);
+        std::vector<const FieldDescriptor *> fields;
+        from.GetReflection()->ListFields(from, &fields);
+        for (const FieldDescriptor *f : fields) {
+            if (f->name() == "id" || f->name() == "version")
+                continue;
+            const FieldDescriptor *t = to->GetDescriptor()->FindFieldByName(f->name());
+            if (!t || t->type() != f->type() || t->is_repeated() || f->is_repeated()
+                || (f->enum_type() && f->enum_type() != t->enum_type()))
+                return false;
+            const auto *fr = from.GetReflection();
+            const auto *tr = to->GetReflection();
+            switch (f->cpp_type()) {
+            case FieldDescriptor::CPPTYPE_DOUBLE: tr->SetDouble(to, t, fr->GetDouble(from, f)); break;
+            case FieldDescriptor::CPPTYPE_FLOAT: tr->SetFloat(to, t, fr->GetFloat(from, f)); break;
+            case FieldDescriptor::CPPTYPE_INT32: tr->SetInt32(to, t, fr->GetInt32(from, f)); break;
+            case FieldDescriptor::CPPTYPE_INT64: tr->SetInt64(to, t, fr->GetInt64(from, f)); break;
+            case FieldDescriptor::CPPTYPE_UINT32: tr->SetUInt32(to, t, fr->GetUInt32(from, f)); break;
+            case FieldDescriptor::CPPTYPE_UINT64: tr->SetUInt64(to, t, fr->GetUInt64(from, f)); break;
+            case FieldDescriptor::CPPTYPE_BOOL: tr->SetBool(to, t, fr->GetBool(from, f)); break;
+            case FieldDescriptor::CPPTYPE_ENUM: tr->SetEnum(to, t, fr->GetEnum(from, f)); break;
+            case FieldDescriptor::CPPTYPE_STRING: tr->SetString(to, t, fr->GetString(from, f)); break;
+            default: return false;
+            }
+        }
+        return true;
+    }
+    return false;
+}
+
 // Actions a segment's definitions become, with the time they take.
 void addActions(const pb::SegmentDefinition &definition, pb::ProcessedSegment *segment, double *time)
 {
@@ -89,7 +144,7 @@ void addActions(const pb::SegmentDefinition &definition, pb::ProcessedSegment *s
             s->set_shotsnumber(c.shotsnumber());
             s->set_startdelay(c.startdelay());
             s->set_autocalc(c.autocalc());
-        } else {
+        } else if (!performedAsDefined(d, &a)) {
             const std::string text = "The simulator keeps this action in the route but does not perform it";
             bool said = false;
             for (const auto &m : segment->messageset().messages())

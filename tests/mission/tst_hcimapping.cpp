@@ -292,7 +292,7 @@ private slots:
         editor.replaceRoute(imported(original), QStringLiteral("Load"));
         const auto &w = std::get<Waypoint>(model.segment(1));
         QCOMPARE(int(w.actions.size()), 2);
-        QCOMPARE(std::get<OpaqueAction>(w.actions[1]).description, QStringLiteral("SetServo"));
+        QCOMPARE(describeAction(w.actions[1]), QStringLiteral("Set servo: servo 3, PWM 1900 µs"));
         QCOMPARE(routeToHci(model.route()).SerializeAsString(), original.SerializeAsString());
         editor.setAltitude({1}, 95);
         editor.addAction({1}, {{"kind", "wait"}, {"seconds", 2}});

@@ -41,7 +41,7 @@ Mission fullMission()
     auto def = std::make_shared<pb::ActionDefinition>();
     def->mutable_setservodefinition()->set_servoid(7);
     def->mutable_setservodefinition()->set_pwm(1500);
-    b.actions.push_back(OpaqueAction{QStringLiteral("Set servo"), def});
+    b.actions.push_back(ServerAction{def});
     auto origin = std::make_shared<pb::SegmentDefinition>();
     origin->set_uuid("d1e2f3a4-b5c6-4d7e-8f90-a1b2c3d4e5f6");
     origin->mutable_unknown_fields()->AddVarint(999, 42);
@@ -96,21 +96,21 @@ bool sameOrigins(const Mission &a, const Mission &b)
     const auto &wb = std::get<Waypoint>(b.routes[0].segments[2]);
     if (!wa.origin.message || !wb.origin.message)
         return false;
-    const auto &oa = std::get<OpaqueAction>(wa.actions.back());
-    const auto &ob = std::get<OpaqueAction>(wb.actions.back());
+    const auto &oa = std::get<ServerAction>(wa.actions.back());
+    const auto &ob = std::get<ServerAction>(wb.actions.back());
     return wa.origin.message->SerializeAsString() == wb.origin.message->SerializeAsString()
         && oa.definition->SerializeAsString() == ob.definition->SerializeAsString();
 }
 
-bool sameIgnoringOpaquePointers(Mission a, Mission b)
+bool sameIgnoringServerActionPointers(Mission a, Mission b)
 {
-    // Opaque actions compare by pointer; after a file round trip the objects are new.
+    // Server actions compare by bytes here, above; after a file round trip the objects are new.
     for (Mission *m : {&a, &b})
         for (Route &r : m->routes)
             for (Segment &s : r.segments)
                 if (Waypoint *w = asWaypoint(s))
                     for (auto &act : w->actions)
-                        if (auto *o = std::get_if<OpaqueAction>(&act))
+                        if (auto *o = std::get_if<ServerAction>(&act))
                             o->definition.reset();
     // The unknown algorithm's server bytes come back as they went.
     const auto &ua = std::get<AlgorithmSegment>(a.routes[0].segments.back());
@@ -131,7 +131,7 @@ private slots:
         const QByteArray bytes = writeSortie(m);
         const Result<Mission> back = readSortie(bytes);
         QVERIFY2(back.ok(), back.ok() ? "" : qPrintable(back.error().toString()));
-        QVERIFY(sameIgnoringOpaquePointers(*back, m));
+        QVERIFY(sameIgnoringServerActionPointers(*back, m));
         QVERIFY(sameOrigins(*back, m));
         QCOMPARE(writeSortie(*back), bytes);  // and the bytes are stable
     }
@@ -285,7 +285,7 @@ private slots:
         QVERIFY2(saved.ok(), saved.ok() ? "" : qPrintable(saved.error().toString()));
         const Result<LoadedMission> loaded = loadMission(path);
         QVERIFY(loaded.ok());
-        QVERIFY(sameIgnoringOpaquePointers(loaded->mission, m));
+        QVERIFY(sameIgnoringServerActionPointers(loaded->mission, m));
 
         // A route with a validation error is refused, and the file on disk stays as it was.
         std::get<Waypoint>(m.routes[1].segments[1]).altitude = 500;
@@ -293,7 +293,7 @@ private slots:
         QVERIFY(!refused.ok());
         QCOMPARE(refused.error().file, path);
         QVERIFY(refused.error().message.contains(QStringLiteral("Waypoint 2")));
-        QVERIFY(sameIgnoringOpaquePointers(loadMission(path)->mission, fullMission()));
+        QVERIFY(sameIgnoringServerActionPointers(loadMission(path)->mission, fullMission()));
         QVERIFY(saveMission(m, path, {0, ValidationOverride::AcceptErrors}).ok());
 
         // Errors name the file.

@@ -1,7 +1,11 @@
 // The waypoint actions' editor model: what it shows of a selection, and that every change goes
 // through the RouteEditor (checked, one undo step) to the right waypoints.
+#include "Domain.pb.h"
+#include "HciActionMapper.h"
+#include "MavlinkMission.h"
 #include "RouteEditor.h"
 #include "RouteModel.h"
+#include "ServerActions.h"
 #include "WaypointActionsModel.h"
 
 #include <QAbstractItemModelTester>
@@ -10,6 +14,7 @@
 #include <QUndoStack>
 
 using namespace sortie::mission;
+namespace pb = com::ugcs::ucs::proto;
 
 namespace {
 struct Fixture
@@ -154,6 +159,138 @@ private slots:
         f.actions.setRows({7});
         QVERIFY(!f.actions.isValid());
         QVERIFY(!f.actions.add(QStringLiteral("wait")));
+    }
+
+    void theServersActionsHaveEditorsFromTheSchema()
+    {
+        // Every action in the facts Sortie has no type for is offered, with its fields as the schema types them.
+        Fixture f;
+        QStringList offered;
+        for (const QVariant &k : f.actions.kinds())
+            offered << k.toMap().value(QStringLiteral("kind")).toString();
+        for (const char *kind : {"setServo", "repeatServo", "transitionFixed", "transitionVtol", "lidarRecordingControl",
+                                 "lidarCalibration", "hopAction", "drop"})
+            QVERIFY2(offered.contains(QLatin1String(kind)), kind);
+        QVERIFY(!offered.contains(QStringLiteral("segment")));
+        const ActionKindDescription *servo = actionKindDescription(QStringLiteral("repeatServo"));
+        QVERIFY(servo);
+        QStringList names;
+        for (const ActionField &field : servo->fields)
+            names << field.name;
+        QCOMPARE(names, (QStringList{"servoId", "pwm", "delay", "count"}));  // not id, version or tag
+        QCOMPARE(servo->fields[1].type, ActionField::Type::Integer);
+        QCOMPARE(servo->fields[1].unit, QStringLiteral("µs"));
+        QCOMPARE(servo->fields[2].type, ActionField::Type::Number);
+        const ActionKindDescription *lidar = actionKindDescription(QStringLiteral("lidarRecordingControl"));
+        QVERIFY(lidar);
+        QCOMPARE(lidar->fields.size(), size_t(1));
+        QCOMPARE(lidar->fields[0].type, ActionField::Type::Choice);
+        QCOMPARE(lidar->fields[0].choices, (std::vector<std::pair<QString, QString>>{{"RS_OFF", "Off"}, {"RS_ON", "On"}}));
+        QVERIFY(actionKindDescription(QStringLiteral("drop"))->fields.empty());
+    }
+
+    void aServersServoIsEditedInItsOwnTerms()
+    {
+        Fixture f;
+        pb::ActionDefinition sent;
+        sent.set_id(77);
+        sent.mutable_repeatservodefinition()->set_servoid(3);
+        sent.mutable_repeatservodefinition()->set_pwm(1900);
+        sent.mutable_repeatservodefinition()->set_tag("winch");
+        sent.mutable_repeatservodefinition()->mutable_unknown_fields()->AddVarint(99, 5);
+        Route r = f.model.route();
+        std::get<Waypoint>(r.segments[1]).actions.push_back(actionFromHci(sent));
+        f.model.resetRoute(r);
+        f.actions.setRows({1});
+        QCOMPARE(f.actions.rowCount(), 1);
+        QVERIFY(f.actions.index(0).data(WaypointActionsModel::EditableRole).toBool());
+        QCOMPARE(f.actions.index(0).data(WaypointActionsModel::KindRole).toString(), QStringLiteral("repeatServo"));
+        QCOMPARE(f.field(0, QStringLiteral("pwm")).value(QStringLiteral("value")).toInt(), 1900);
+        // Not sent: shown as missing, never as 0.
+        QVERIFY(!f.field(0, QStringLiteral("count")).value(QStringLiteral("value")).isValid());
+
+        QVERIFY(f.actions.setField(0, QStringLiteral("pwm"), QStringLiteral("1100")));
+        QVERIFY(f.actions.setField(0, QStringLiteral("count"), QStringLiteral("4")));
+        QCOMPARE(f.stack.count(), 2);
+        const auto definitionAt = [&f] { return *std::get<ServerAction>(f.at(1)[0]).definition; };
+        QCOMPARE(definitionAt().repeatservodefinition().pwm(), 1100);
+        QCOMPARE(definitionAt().repeatservodefinition().count(), 4);
+        // What the editor does not touch goes back as it came: the id, the tag, the unknown field.
+        QCOMPARE(definitionAt().id(), 77);
+        QCOMPARE(definitionAt().repeatservodefinition().tag(), std::string("winch"));
+        QCOMPARE(definitionAt().repeatservodefinition().unknown_fields().field_count(), 1);
+        QCOMPARE(f.actions.index(0).data(WaypointActionsModel::SummaryRole).toString(),
+                 QStringLiteral("Repeat servo: servo 3, PWM 1100 µs, repeats 4"));
+
+        // Out of range or not whole: refused with a reason, nothing changes.
+        QVERIFY(!f.actions.setField(0, QStringLiteral("pwm"), QStringLiteral("1500.5")));
+        QVERIFY(f.actions.problem().contains(QStringLiteral("whole number")));
+        QVERIFY(!f.actions.setField(0, QStringLiteral("servoId"), QStringLiteral("-1")));
+        QCOMPARE(f.stack.count(), 2);
+        // An emptied field is unset again: the server's default applies.
+        QVERIFY(f.actions.setField(0, QStringLiteral("count"), QString()));
+        QVERIFY(!definitionAt().repeatservodefinition().has_count());
+
+        // Undo gives back the server's bytes exactly.
+        f.stack.undo();
+        f.stack.undo();
+        f.stack.undo();
+        QCOMPARE(definitionAt().SerializeAsString(), sent.SerializeAsString());
+        pb::ActionDefinition back = sent;
+        actionToHci(f.at(1)[0], back);
+        QCOMPARE(back.SerializeAsString(), sent.SerializeAsString());
+    }
+
+    void anyServerActionCanBeAddedAndGoesToTheServer()
+    {
+        Fixture f;
+        f.actions.setRows({0, 2});
+        QVERIFY(f.actions.add(QStringLiteral("lidarRecordingControl")));
+        QVERIFY(f.actions.add(QStringLiteral("drop")));
+        QCOMPARE(f.at(2).size(), size_t(2));
+        QVERIFY(!f.field(0, QStringLiteral("targetState")).value(QStringLiteral("value")).isValid());
+        QVERIFY(f.actions.setField(0, QStringLiteral("targetState"), QStringLiteral("RS_ON")));
+        QVERIFY(!f.actions.setField(0, QStringLiteral("targetState"), QStringLiteral("RS_MAYBE")));
+        QCOMPARE(f.actions.index(0).data(WaypointActionsModel::SummaryRole).toString(), QStringLiteral("Lidar recording: recording on"));
+        QCOMPARE(f.actions.index(1).data(WaypointActionsModel::SummaryRole).toString(), QStringLiteral("Drop payload"));
+        for (int row : {0, 2}) {
+            pb::ActionDefinition lidar, drop;
+            actionToHci(f.at(row)[0], lidar);
+            actionToHci(f.at(row)[1], drop);
+            QCOMPARE(lidar.lidarrecordingcontroldefinition().targetstate(), pb::RS_ON);
+            QVERIFY(drop.has_dropdefinition());  // present, though it has nothing to set
+            QCOMPARE(actionKindName(actionFromHci(drop)), QStringLiteral("drop"));
+        }
+    }
+
+    void servosAndTransitionsAreMavlinkCommands()
+    {
+        Route r;
+        Waypoint w;
+        w.position = {56.95, 24.10};
+        w.actions.push_back(ServerAction{makeServerAction(QStringLiteral("setServo"), {{"servoId", 9}, {"pwm", 1750}})});
+        w.actions.push_back(ServerAction{makeServerAction(QStringLiteral("repeatServo"), {{"servoId", 10}, {"pwm", 1200}, {"count", 3}, {"delay", 2.5}})});
+        w.actions.push_back(ServerAction{makeServerAction(QStringLiteral("transitionFixed"), {})});
+        w.actions.push_back(ServerAction{makeServerAction(QStringLiteral("hopAction"), {{"descentAltitude", 5}})});
+        r.segments.push_back(w);
+        const formats::MavlinkExport out = formats::routeToMavlink(r, 5.0);
+        std::vector<int> commands;
+        for (const formats::MavlinkItem &i : out.items)
+            commands.push_back(i.command);
+        QCOMPARE(commands, (std::vector<int>{formats::mav::NavWaypoint, 183, 184, 3000}));
+        QCOMPARE(out.items[1].param[0], 9.0);
+        QCOMPARE(out.items[1].param[1], 1750.0);
+        QCOMPARE(out.items[2].param[3], 2.5);
+        QCOMPARE(out.items[3].param[0], 4.0);  // MAV_VTOL_STATE_FW
+        QVERIFY(out.notices.join(u' ').contains(QStringLiteral("Hop")));  // no MAVLink form: said, not silently dropped
+
+        const auto back = formats::routeFromMavlink(out.items, std::nullopt, 5.0);
+        QVERIFY(back.ok());
+        const auto &actions = std::get<Waypoint>(back.value().route.segments[0]).actions;
+        QCOMPARE(actions.size(), size_t(3));
+        QCOMPARE(actions[0], w.actions[0]);
+        QCOMPARE(actions[1], w.actions[1]);
+        QCOMPARE(actions[2], w.actions[2]);
     }
 };
 

@@ -174,6 +174,36 @@ private slots:
         QCOMPARE(out.segments(1).estimatedtime(), plain.segments(1).estimatedtime() + 5);
     }
 
+    void serversActionsComeBackAsTheirActions()
+    {
+        // A servo, lidar, drop and a gimbal go through as the Action of the same name, fields by name;
+        // a POI above the ground has no processed form here and is said to be kept, not performed.
+        pb::Route r = twoPoints();
+        auto *servo = r.mutable_segments(1)->add_actiondefinitions()->mutable_repeatservodefinition();
+        servo->set_servoid(4);
+        servo->set_pwm(1800);
+        servo->set_delay(1.5);
+        servo->set_count(3);
+        r.mutable_segments(1)->add_actiondefinitions()->mutable_lidarrecordingcontroldefinition()->set_targetstate(pb::RS_ON);
+        r.mutable_segments(1)->add_actiondefinitions()->mutable_dropdefinition();
+        r.mutable_segments(1)->add_actiondefinitions()->mutable_cameracontroldefinition()->set_tilt(1.5);
+        auto *poi = r.mutable_segments(1)->add_actiondefinitions()->mutable_poidefinition();
+        poi->set_latitude(1);
+        poi->set_aglaltitude(10);
+        const auto out = SimRouteProcessor::process(r, {}, kGround);
+        const auto &actions = out.segments(1).segmentactions();
+        QCOMPARE(actions.size(), 2 + 4);
+        QCOMPARE(actions[2].repeatservo().servoid(), 4);
+        QCOMPARE(actions[2].repeatservo().pwm(), 1800);
+        QCOMPARE(actions[2].repeatservo().delay(), 1.5);
+        QCOMPARE(actions[2].repeatservo().count(), 3);
+        QCOMPARE(actions[3].lidarrecordingcontrol().targetstate(), pb::RS_ON);
+        QVERIFY(actions[4].has_drop());
+        QCOMPARE(actions[5].cameracontrol().tilt(), 1.5);
+        QVERIFY(!actions[5].cameracontrol().has_roll());
+        QCOMPARE(firstMessage(out.segments(1)), QStringLiteral("The simulator keeps this action in the route but does not perform it"));
+    }
+
     void hashFollowsTheRoute()
     {
         const auto a = SimRouteProcessor::hash(twoPoints());

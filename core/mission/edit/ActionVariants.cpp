@@ -1,10 +1,15 @@
 #include "ActionVariants.h"
 
+#include "Domain.pb.h"
+#include "ServerActions.h"
+
 #include <QCoreApplication>
 
 #include <cmath>
 
 namespace sortie::mission {
+
+namespace pb = com::ugcs::ucs::proto;
 
 namespace {
 template<class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };
@@ -60,16 +65,43 @@ QVariantMap actionToVariant(const WaypointAction &action)
             if (a.zoomLevel) m.insert(QStringLiteral("zoomLevel"), *a.zoomLevel);
             return m;
         },
-        [](const OpaqueAction &a) { return QVariantMap{{"description", a.description}}; },
+        [](const ServerAction &a) {
+            QVariantMap m;  // a field not set has no key
+            const ServerActionKind *kind = a.definition ? serverActionKindOf(*a.definition) : nullptr;
+            if (kind)
+                for (const ServerActionField &f : kind->fields)
+                    if (const QVariant v = serverActionValue(*a.definition, *kind, f); v.isValid())
+                        m.insert(f.name, v);
+            return m;
+        },
     }, action);
     m.insert(QStringLiteral("kind"), actionKindName(action));
     m.insert(QStringLiteral("summary"), describeAction(action));
     return m;
 }
 
-std::optional<WaypointAction> actionFromVariant(const QVariantMap &m)
+namespace {
+// A server action of that kind: `base`'s definition when it is one (what Sortie does not edit stays,
+// ids and unknown fields too), else a new one; every field the map names set from it.
+std::optional<WaypointAction> serverActionFromVariant(const ServerActionKind &kind, const QVariantMap &m, const WaypointAction *base)
+{
+    const auto *was = base ? std::get_if<ServerAction>(base) : nullptr;
+    const bool sameKind = was && was->definition && serverActionKindOf(*was->definition) == &kind;
+    auto definition = sameKind ? std::make_shared<pb::ActionDefinition>(*was->definition) : newServerAction(kind);
+    for (const ServerActionField &f : kind.fields) {
+        const QVariant v = m.value(f.name);
+        if ((v.isValid() || sameKind) && !setServerActionValue(*definition, kind, f, v))
+            return std::nullopt;
+    }
+    return ServerAction{std::move(definition)};
+}
+} // namespace
+
+std::optional<WaypointAction> actionFromVariant(const QVariantMap &m, const WaypointAction *base)
 {
     const QString kind = m.value(QStringLiteral("kind")).toString();
+    if (const ServerActionKind *server = findServerActionKind(kind))
+        return serverActionFromVariant(*server, m, base);
     if (kind == QLatin1String("wait"))
         return WaitAction{num(m, "seconds", 0), m.value(QStringLiteral("waitForOperator")).toBool()};
     if (kind == QLatin1String("heading"))
@@ -156,6 +188,28 @@ ActionKindDescription kind(const char *name, const char *label, std::vector<Acti
 }
 } // namespace
 
+namespace {
+// The schema's description of a server action, in the editor's terms. Every field may be left unset:
+// the server then applies its own default.
+ActionKindDescription serverKindDescription(const ServerActionKind &k)
+{
+    using google::protobuf::FieldDescriptor;
+    ActionKindDescription d{k.kind, k.label, {}};
+    for (const ServerActionField &f : k.fields) {
+        ActionField field{f.name, f.label, ActionField::Type::Number, f.unit, f.minimum, f.maximum, f.choices, true};
+        switch (f.descriptor->cpp_type()) {
+        case FieldDescriptor::CPPTYPE_BOOL: field.type = ActionField::Type::Toggle; field.optional = false; break;
+        case FieldDescriptor::CPPTYPE_ENUM: field.type = ActionField::Type::Choice; field.optional = false; break;
+        case FieldDescriptor::CPPTYPE_DOUBLE:
+        case FieldDescriptor::CPPTYPE_FLOAT: break;
+        default: field.type = ActionField::Type::Integer; break;
+        }
+        d.fields.push_back(std::move(field));
+    }
+    return d;
+}
+} // namespace
+
 QString ActionField::check(const QVariant &value) const
 {
     switch (type) {
@@ -212,7 +266,13 @@ const std::vector<ActionKindDescription> &editableActionKinds()
                                       number("rotationSpeedDegPerSecond", "Rotation speed", "°/s", 0.1, 360),
                                       toggle("clockwise", "Clockwise"), toggle("video", "Video")}),
     };
-    return kinds;
+    static const std::vector<ActionKindDescription> all = [] {
+        std::vector<ActionKindDescription> list = kinds;
+        for (const ServerActionKind &k : serverActionKinds())
+            list.push_back(serverKindDescription(k));
+        return list;
+    }();
+    return all;
 }
 
 const ActionKindDescription *actionKindDescription(const QString &name)

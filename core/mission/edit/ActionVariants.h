@@ -12,9 +12,10 @@ namespace sortie::mission {
 // Actions as QVariantMaps for QML: {"kind": "wait", "seconds": 5}, {"kind": "cameraSeriesByDistance",
 // "intervalMeters": 20, "shots": 0, "startDelaySeconds": 0}, ... Keys are the C++ field names.
 QVariantMap actionToVariant(const WaypointAction &action);
-// nullopt for an unknown kind; missing keys take the action's defaults. Opaque actions cannot be
-// created from QML.
-std::optional<WaypointAction> actionFromVariant(const QVariantMap &map);
+// nullopt for an unknown kind or a value a server action's field cannot hold; missing keys take the
+// action's defaults. A server action (setServo, drop, ...) edits `base`'s definition when `base` is
+// one of the same kind, so what the map does not name (ids, unknown fields) is kept.
+std::optional<WaypointAction> actionFromVariant(const QVariantMap &map, const WaypointAction *base = nullptr);
 
 // What an editor shows of an action kind: its fields by the keys above, with label, unit, type
 // and range. The ranges are what a value must satisfy to be applied.
@@ -39,7 +40,7 @@ struct ActionKindDescription
     std::vector<ActionField> fields;
 };
 
-// Every kind an operator can add, in menu order.
+// Every kind an operator can add, in menu order: Sortie's own, then the server's (ServerActions.h).
 const std::vector<ActionKindDescription> &editableActionKinds();
 const ActionKindDescription *actionKindDescription(const QString &kind);
 

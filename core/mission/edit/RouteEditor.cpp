@@ -355,10 +355,13 @@ bool RouteEditor::setAction(const QList<int> &rows, int actionIndex, const QVari
 {
     const auto a = actionFromVariant(action);
     if (!a)
-        return refuse(tr("There is no action \"%1\".").arg(action.value(QStringLiteral("kind")).toString()));
-    return edit(rows, [&a, actionIndex](int, Segment &s) {
-        if (Waypoint *w = asWaypoint(s); w && actionIndex >= 0 && actionIndex < int(w->actions.size()))
-            w->actions[size_t(actionIndex)] = *a;
+        return refuse(tr("There is no action \"%1\" with these values.").arg(action.value(QStringLiteral("kind")).toString()));
+    return edit(rows, [&](int, Segment &s) {
+        if (Waypoint *w = asWaypoint(s); w && actionIndex >= 0 && actionIndex < int(w->actions.size())) {
+            // Over what is there: a server action keeps what the map does not name.
+            WaypointAction &there = w->actions[size_t(actionIndex)];
+            there = actionFromVariant(action, &there).value_or(*a);
+        }
         return true;
     }, tr("Edit action: %1").arg(describeAction(*a)), QStringLiteral("setAction"), EditStep::Done);
 }

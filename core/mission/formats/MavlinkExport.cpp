@@ -3,6 +3,7 @@
 #include "AlgorithmCatalog.h"
 
 #include "ScanPlanCache.h"
+#include "ServerActions.h"
 
 #include <QSet>
 
@@ -92,6 +93,29 @@ private:
         m_out.notices << QStringLiteral("Waypoint %1: %2 has no MAVLink equivalent and was left out.").arg(row + 1).arg(what);
     }
 
+    // Servos and VTOL transitions have MAVLink commands; the rest of what a server defines has none.
+    void serverAction(const ServerAction &x, int row)
+    {
+        const QString kind = actionKindName(x);
+        const auto value = [&x](const char *field) { return x.definition ? serverActionValue(*x.definition, QLatin1String(field)) : QVariant(); };
+        if (kind == QLatin1String("setServo") || kind == QLatin1String("repeatServo")) {
+            const QVariant servo = value("servoId"), pwm = value("pwm");
+            if (!servo.isValid() || !pwm.isValid())
+                return skipped(row, QStringLiteral("a servo action without its servo and PWM"));
+            if (kind == QLatin1String("setServo"))
+                return m_out.items.push_back(command(mav::DoSetServo, servo.toDouble(), pwm.toDouble()));
+            const QVariant count = value("count"), cycle = value("delay");
+            if (!count.isValid() || !cycle.isValid())
+                return skipped(row, QStringLiteral("a repeated servo without its count and cycle time"));
+            return m_out.items.push_back(command(mav::DoRepeatServo, servo.toDouble(), pwm.toDouble(), count.toDouble(), cycle.toDouble()));
+        }
+        if (kind == QLatin1String("transitionVtol"))
+            return m_out.items.push_back(command(mav::DoVtolTransition, mav::VtolStateMulticopter));
+        if (kind == QLatin1String("transitionFixed"))
+            return m_out.items.push_back(command(mav::DoVtolTransition, mav::VtolStateFixedWing));
+        skipped(row, QStringLiteral("\"%1\"").arg(describeAction(x)));
+    }
+
     void action(const WaypointAction &a, int row)
     {
         std::visit(Overloaded{
@@ -142,7 +166,7 @@ private:
                 i.altitude = mav::MountModeMavlinkTargeting;  // param 7: the mount mode
                 m_out.items.push_back(i);
             },
-            [&](const OpaqueAction &x) { skipped(row, x.description); },
+            [&](const ServerAction &x) { serverAction(x, row); },
         }, a);
     }
 

@@ -1,4 +1,5 @@
 #include "MavlinkMission.h"
+#include "ServerActions.h"
 
 #include <cmath>
 
@@ -23,6 +24,9 @@ QString mavCommandName(int command)
     case mav::ConditionYaw: return QStringLiteral("CONDITION_YAW");
     case mav::DoJump: return QStringLiteral("DO_JUMP");
     case mav::DoChangeSpeed: return QStringLiteral("DO_CHANGE_SPEED");
+    case mav::DoSetServo: return QStringLiteral("DO_SET_SERVO");
+    case mav::DoRepeatServo: return QStringLiteral("DO_REPEAT_SERVO");
+    case mav::DoVtolTransition: return QStringLiteral("DO_VTOL_TRANSITION");
     case mav::DoLandStart: return QStringLiteral("DO_LAND_START");
     case mav::DoSetRoiLocation: return QStringLiteral("DO_SET_ROI_LOCATION");
     case mav::DoSetRoiNone: return QStringLiteral("DO_SET_ROI_NONE");
@@ -133,6 +137,17 @@ private:
             else
                 return errorAt(item, QStringLiteral("altitude frame %1 is not supported").arg(item.frame));
             return std::nullopt;
+        case mav::DoSetServo:
+            return serverAction(item, QStringLiteral("setServo"), {{QStringLiteral("servoId"), item.param[0]}, {QStringLiteral("pwm"), item.param[1]}});
+        case mav::DoRepeatServo:
+            return serverAction(item, QStringLiteral("repeatServo"), {{QStringLiteral("servoId"), item.param[0]}, {QStringLiteral("pwm"), item.param[1]},
+                                                                      {QStringLiteral("count"), item.param[2]}, {QStringLiteral("delay"), item.param[3]}});
+        case mav::DoVtolTransition:
+            if (item.param[0] == double(mav::VtolStateMulticopter))
+                return serverAction(item, QStringLiteral("transitionVtol"), {});
+            if (item.param[0] == double(mav::VtolStateFixedWing))
+                return serverAction(item, QStringLiteral("transitionFixed"), {});
+            return errorAt(item, QStringLiteral("DO_VTOL_TRANSITION to state %1: only 3 (multicopter) and 4 (fixed-wing) are states").arg(item.param[0]));
         case mav::DoDigicamControl:
             attach(item, CameraTriggerAction{TriggerState::SingleShot});
             return std::nullopt;
@@ -241,6 +256,16 @@ private:
         m_pending.clear();
         m_out.route.segments.push_back(std::move(w));
         m_last = int(m_out.route.segments.size()) - 1;
+        return std::nullopt;
+    }
+
+    // A servo or VTOL transition, as the UgCS action that says the same.
+    std::optional<MissionError> serverAction(const MavlinkItem &item, const QString &kind, const QVariantMap &values)
+    {
+        auto definition = makeServerAction(kind, values);
+        if (!definition)
+            return errorAt(item, QStringLiteral("%1: a value does not fit (servo and PWM are whole numbers)").arg(mavCommandName(item.command)));
+        attach(item, ServerAction{std::move(definition)});
         return std::nullopt;
     }
 

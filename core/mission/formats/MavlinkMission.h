@@ -22,10 +22,11 @@ enum Command {
     NavWaypoint = 16, NavLoiterUnlimited = 17, NavLoiterTurns = 18, NavLoiterTime = 19, NavReturnToLaunch = 20,
     NavLand = 21, NavTakeoff = 22, NavLoiterToAltitude = 31, NavSplineWaypoint = 82, NavVtolTakeoff = 84,
     NavVtolLand = 85, NavDelay = 93, ConditionDelay = 112, ConditionYaw = 115, DoJump = 177, DoChangeSpeed = 178,
-    DoLandStart = 189, DoSetRoiLocation = 195, DoSetRoiNone = 197, DoSetRoi = 201, DoDigicamControl = 203,
+    DoSetServo = 183, DoRepeatServo = 184, DoLandStart = 189, DoSetRoiLocation = 195, DoSetRoiNone = 197, DoSetRoi = 201, DoDigicamControl = 203,
     DoMountControl = 205, DoSetCamTriggDist = 206, DoGimbalManagerPitchYaw = 1000, ImageStartCapture = 2000, ImageStopCapture = 2001, VideoStartCapture = 2500,
-    VideoStopCapture = 2501,
+    VideoStopCapture = 2501, DoVtolTransition = 3000,
 };
+enum VtolState { VtolStateMulticopter = 3, VtolStateFixedWing = 4 };  // DO_VTOL_TRANSITION's param 1
 enum MountMode { MountModeMavlinkTargeting = 2 };
 enum Frame { Global = 0, Mission = 2, GlobalRelativeAlt = 3, GlobalInt = 5, GlobalRelativeAltInt = 6,
              GlobalTerrainAlt = 10, GlobalTerrainAltInt = 11 };

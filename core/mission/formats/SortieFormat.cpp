@@ -79,8 +79,9 @@ Json actionJson(const WaypointAction &action)
             if (a.zoomLevel) j["zoomLevel"] = *a.zoomLevel;
             return j;
         },
-        [](const OpaqueAction &a) {
-            Json j{{"type", "opaque"}, {"description", str(a.description)}};
+        [](const ServerAction &a) {
+            // The type keeps its first name; "description" is for whoever reads the file, the definition is the action.
+            Json j{{"type", "opaque"}, {"description", str(describeAction(a))}};
             putOrigin(j, a.definition);
             return j;
         },
@@ -127,8 +128,8 @@ WaypointAction readAction(const JsonCursor &c)
     if (type == QLatin1String("opaque")) {
         auto def = takeOrigin<pb::ActionDefinition>(c);
         if (!def)
-            c.fail(QStringLiteral("an opaque action needs its \"hci\" definition"));
-        return OpaqueAction{c.stringOr("description", QStringLiteral("Action")), std::move(def)};
+            c.fail(QStringLiteral("a server action needs its \"hci\" definition"));
+        return ServerAction{std::move(def)};
     }
     c.at("type").fail(QStringLiteral("unknown action type \"%1\"").arg(type));
 }

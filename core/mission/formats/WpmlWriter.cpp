@@ -387,8 +387,8 @@ Result<Plan> planOf(const Route &route, const WpmlExportOptions &options, const 
                     return refuse(QStringLiteral("%1: only the gimbal's tilt has a WPML action here; roll, yaw and zoom do not").arg(where));
                 if (gimbal->tiltDeg)
                     at(k).actions.push_back({ActuatorFunc::GimbalRotate, -*gimbal->tiltDeg});
-            } else if (const auto *opaque = std::get_if<OpaqueAction>(&a)) {
-                return refuse(QStringLiteral("%1: the server action \"%2\" has no WPML equivalent").arg(where, opaque->description));
+            } else if (std::holds_alternative<ServerAction>(a)) {
+                return refuse(QStringLiteral("%1: the server action \"%2\" has no WPML equivalent").arg(where, describeAction(a)));
             }
         }
     }

@@ -64,24 +64,13 @@ WaypointAction actionFromHci(const pb::ActionDefinition &d)
         if (c.has_zoomlevel()) a.zoomLevel = c.zoomlevel();
         return a;
     }
-    // Anything else (servos, VTOL transitions, lidar, hop, drop) is kept verbatim.
-    QString name = QStringLiteral("Action");
-    const auto *refl = d.GetReflection();
-    std::vector<const google::protobuf::FieldDescriptor *> fields;
-    refl->ListFields(d, &fields);
-    for (const auto *f : fields) {
-        if (f->type() == google::protobuf::FieldDescriptor::TYPE_MESSAGE && f->name() != "segmentDefinition") {
-            name = QString::fromStdString(f->message_type()->name());
-            name.remove(QStringLiteral("Definition"));
-            break;
-        }
-    }
-    return OpaqueAction{name, std::make_shared<const pb::ActionDefinition>(d)};
+    // Anything else (servos, VTOL transitions, lidar, hop, drop) stays in the server's terms.
+    return ServerAction{std::make_shared<const pb::ActionDefinition>(d)};
 }
 
 void actionToHci(const WaypointAction &action, pb::ActionDefinition &def)
 {
-    if (const auto *o = std::get_if<OpaqueAction>(&action)) {
+    if (const auto *o = std::get_if<ServerAction>(&action)) {
         if (o->definition)
             def = *o->definition;
         return;
@@ -172,7 +161,7 @@ void actionToHci(const WaypointAction &action, pb::ActionDefinition &def)
                 else c->clear_zoomlevel();
             }
         },
-        [&](const OpaqueAction &) {},
+        [&](const ServerAction &) {},
     }, action);
 }
 

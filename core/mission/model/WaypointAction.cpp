@@ -1,6 +1,7 @@
 #include "WaypointAction.h"
 
 #include "Domain.pb.h"
+#include "ServerActions.h"
 
 #include <QStringList>
 
@@ -13,10 +14,8 @@ template<class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
 QString number(double v) { return QString::number(v, 'g', 10); }
 }
 
-bool OpaqueAction::operator==(const OpaqueAction &o) const
+bool ServerAction::operator==(const ServerAction &o) const
 {
-    if (description != o.description)
-        return false;
     if (definition == o.definition)
         return true;
     return definition && o.definition && definition->SerializeAsString() == o.definition->SerializeAsString();
@@ -49,7 +48,10 @@ QString actionKindName(const WaypointAction &action)
         [](const CameraSeriesByDistanceAction &) { return QStringLiteral("cameraSeriesByDistance"); },
         [](const PanoramaAction &) { return QStringLiteral("panorama"); },
         [](const CameraControlAction &) { return QStringLiteral("cameraControl"); },
-        [](const OpaqueAction &) { return QStringLiteral("opaque"); },
+        [](const ServerAction &a) {
+            const ServerActionKind *kind = a.definition ? serverActionKindOf(*a.definition) : nullptr;
+            return kind ? kind->kind : QStringLiteral("server");
+        },
     }, action);
 }
 
@@ -89,7 +91,7 @@ QString describeAction(const WaypointAction &action)
             if (a.zoomLevel) parts << QStringLiteral("zoom %1").arg(*a.zoomLevel);
             return parts.isEmpty() ? QStringLiteral("Gimbal (nothing set)") : QStringLiteral("Gimbal ") + parts.join(QStringLiteral(", "));
         },
-        [](const OpaqueAction &a) { return a.description + QStringLiteral(" (kept as received)"); },
+        [](const ServerAction &a) { return a.definition ? describeServerAction(*a.definition) : QStringLiteral("Server action"); },
     }, action);
 }
 

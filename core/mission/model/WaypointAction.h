@@ -87,23 +87,23 @@ struct CameraControlAction
     bool operator==(const CameraControlAction &) const = default;
 };
 
-// An action a server sent that Sortie does not model (servo, lidar, drop, ...). It is kept
-// verbatim so that saving the route sends it back unchanged.
-struct OpaqueAction
+// An action Sortie keeps in the server's own terms (servo, VTOL transition, lidar, hop, drop, and
+// any a newer schema adds): the UgCS ActionDefinition itself, edited field by field through its
+// schema (ServerActions.h), so whatever Sortie does not know of it goes back unchanged.
+struct ServerAction
 {
-    QString description;
     std::shared_ptr<const com::ugcs::ucs::proto::ActionDefinition> definition;
     // Equal when they hold the same definition (same object, or the same bytes).
-    bool operator==(const OpaqueAction &o) const;
+    bool operator==(const ServerAction &o) const;
 };
 
 using WaypointAction = std::variant<WaitAction, HeadingAction, PoiAction, CameraTriggerAction,
                                     CameraSeriesByTimeAction, CameraSeriesByDistanceAction, PanoramaAction,
-                                    CameraControlAction, OpaqueAction>;
+                                    CameraControlAction, ServerAction>;
 
 QString altitudeTypeName(AltitudeType type);                 // "AGL" / "AMSL"
 bool parseAltitudeType(const QString &name, AltitudeType *out);
-QString actionKindName(const WaypointAction &action);        // "wait", "heading", ...
+QString actionKindName(const WaypointAction &action);        // "wait", "heading", ..., "setServo"
 QString describeAction(const WaypointAction &action);        // "Wait 5 s", "Camera every 20 m", ...
 QString describeActions(const std::vector<WaypointAction> &actions);
 
