@@ -2,6 +2,7 @@
 
 #include "MavlinkMission.h"
 #include "MissionFiles.h"
+#include "WplFormat.h"
 #include "ScanPlanCache.h"
 
 #include <QFile>
@@ -86,32 +87,17 @@ Json terrainJson(const ProfileRoute &route, const TerrainProfile &profile, bool 
 
 std::optional<ProfileRoute> wplProfileRoute(const QByteArray &data, QString *error)
 {
+    const auto read = mission::formats::readWplItems(data);
+    if (!read) {
+        if (error)
+            *error = QStringLiteral("line %1: %2").arg(read.error().line).arg(read.error().message);
+        return std::nullopt;
+    }
     ProfileRoute route;
-    const QList<QByteArray> lines = data.split('\n');
-    bool haveHome = false;
-    int lineNo = 0;
-    for (QByteArray line : lines) {
-        ++lineNo;
-        line = line.trimmed();
-        if (line.isEmpty() || line.startsWith("QGC WPL"))
-            continue;
-        const QList<QByteArray> f = line.simplified().split(' ');
-        if (f.size() < 12)
-            continue;  // the reader has refused such a file before this runs
-        const int index = f[0].toInt(), frame = f[2].toInt(), command = f[3].toInt();
-        bool latOk = false, lonOk = false, altOk = false;
-        const double lat = f[8].toDouble(&latOk), lon = f[9].toDouble(&lonOk), alt = f[10].toDouble(&altOk);
-        if (!latOk || !lonOk || !altOk) { // never a 0 in place of an unreadable number
-            if (error)
-                *error = QStringLiteral("line %1: latitude, longitude or altitude is not a number").arg(lineNo);
-            return std::nullopt;
-        }
-        if (index == 0 && !haveHome) {
-            route.home = GeoPoint{lat, lon};
-            haveHome = true;
-            continue;
-        }
-        switch (command) {
+    if (read.value().home)
+        route.home = read.value().home->position;
+    for (const mission::formats::MavlinkItem &item : read.value().items) {
+        switch (item.command) {
         case mav::NavWaypoint: case mav::NavLoiterUnlimited: case mav::NavLoiterTurns: case mav::NavLoiterTime:
         case mav::NavLand: case mav::NavTakeoff: case mav::NavLoiterToAltitude: case mav::NavSplineWaypoint:
         case mav::NavVtolTakeoff: case mav::NavVtolLand:
@@ -120,19 +106,21 @@ std::optional<ProfileRoute> wplProfileRoute(const QByteArray &data, QString *err
             continue;  // not a place the vehicle flies to
         }
         ProfileWaypoint w;
-        switch (frame) {
+        switch (item.frame) {
         case mav::Global: case mav::GlobalInt: w.reference = HeightReference::Amsl; break;
         case mav::GlobalRelativeAlt: case mav::GlobalRelativeAltInt: w.reference = HeightReference::AboveHome; break;
         case mav::GlobalTerrainAlt: case mav::GlobalTerrainAltInt: w.reference = HeightReference::AboveTerrain; break;
         default:
-            *error = QStringLiteral("line %1: altitude frame %2 has no height reference the profile knows (0, 3 or 10)").arg(lineNo).arg(frame);
+            if (error)
+                *error = QStringLiteral("line %1: altitude frame %2 has no height reference the profile knows (0, 3 or 10)").arg(item.line).arg(item.frame);
             return std::nullopt;
         }
-        w.position = {lat, lon};
-        if (lat == 0.0 && lon == 0.0) {  // "here": home for a take-off, the previous point otherwise
-            if (command == mav::NavTakeoff || command == mav::NavVtolTakeoff || route.waypoints.empty()) {
+        w.position = {item.latitude, item.longitude};
+        if (item.latitude == 0.0 && item.longitude == 0.0) {  // "here": home for a take-off, the previous point otherwise
+            if (item.command == mav::NavTakeoff || item.command == mav::NavVtolTakeoff || route.waypoints.empty()) {
                 if (!route.home) {
-                    *error = QStringLiteral("line %1: a take-off at 0,0 needs the home item").arg(lineNo);
+                    if (error)
+                        *error = QStringLiteral("line %1: a take-off at 0,0 needs the home item").arg(item.line);
                     return std::nullopt;
                 }
                 w.position = *route.home;
@@ -140,7 +128,7 @@ std::optional<ProfileRoute> wplProfileRoute(const QByteArray &data, QString *err
                 w.position = route.waypoints.back().position;
             }
         }
-        w.altitude = alt;
+        w.altitude = item.altitude;
         w.row = int(route.waypoints.size());
         w.label = QStringLiteral("Waypoint %1").arg(route.waypoints.size() + 1);
         route.waypoints.push_back(std::move(w));

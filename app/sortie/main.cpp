@@ -134,6 +134,8 @@ int main(int argc, char *argv[])
     sortie::client::RouteAutosave autosave(missions.document(), autosaves);
     QObject::connect(&connection, &sortie::client::ConnectionController::ready, &autosave,
                      [&] { autosave.setServer(connection.server(), connection.user()); });
+    // Only a password the server accepted is remembered.
+    QObject::connect(&connection, &sortie::client::ConnectionController::ready, &settings, &sortie::ui::AppSettings::loginSucceeded);
     // A server route's autosaved edits are restored only when signed in where they belong.
     QObject::connect(&connection, &sortie::client::ConnectionController::stateChanged, &recovery, [&] {
         const bool ready = connection.isReady();

@@ -457,6 +457,7 @@ private slots:
         AreaScan scan;  // UgCS's own area scan: a plain side distance, no camera overlap
         scan.polygon = {a, b, c};
         scan.parameters.sideDistanceMeters = 25;
+        scan.parameters.toleranceMeters = 6;  // AGL tolerance: the facts' `tolerance`, metres
         syncDerivedFields(scan.parameters);
         r.segments.push_back(scan);
 
@@ -484,6 +485,7 @@ private slots:
         const pb::SegmentDefinition &areaScan = sent.segments(sent.segments_size() - 1);
         QCOMPARE(findValue(areaScan, "sideDistance")->value(), std::string("25.0"));
         QVERIFY(!findValue(areaScan, "overlapSide"));
+        QCOMPARE(findValue(areaScan, "tolerance")->value(), std::string("6.0"));
         const Route back = imported(sent);
         QCOMPARE(back.segments.size(), r.segments.size());
         for (size_t i = 0; i < r.segments.size(); ++i)

@@ -86,8 +86,15 @@ private slots:
         const int row = f.editor.addSegment(QStringLiteral("AreaScanAlgorithm"), kSquare);
         f.fields.setRow(row);
         QCOMPARE(f.fields.kind(), QStringLiteral("areaScan"));
-        for (const char *name : {"height", "overlapForward", "overlapSide", "sideDistance", "directionAngle", "overshoot", "camera"})
+        for (const char *name : {"height", "overlapForward", "overlapSide", "sideDistance", "directionAngle", "overshoot", "tolerance", "camera"})
             QVERIFY2(f.fields.indexOf(QLatin1String(name)) >= 0, name);
+        // The AGL tolerance is the server's until typed (shown empty, not 0), and is emptied back to it.
+        const int tolerance = f.fields.indexOf(QStringLiteral("tolerance"));
+        QVERIFY(!std::get<AreaScan>(f.model.segment(row)).parameters.toleranceMeters);
+        QVERIFY(f.fields.set(tolerance, QStringLiteral("5")));
+        QCOMPARE(std::get<AreaScan>(f.model.segment(row)).parameters.toleranceMeters, std::optional<double>(5.0));
+        QVERIFY(f.fields.set(tolerance, QString()));
+        QVERIFY(!std::get<AreaScan>(f.model.segment(row)).parameters.toleranceMeters);
         QCOMPARE(f.fields.index(f.fields.indexOf(QStringLiteral("overlapSide"))).data(SegmentEditorModel::UnitRole).toString(),
                  QStringLiteral("%"));
         // Choosing a camera by name brings its optics (one undo step).

@@ -49,6 +49,7 @@ Mission fullMission()
     AreaScan gsd = squareScan({56.96, 24.11}, 300);
     gsd.parameters.heightMode = ScanHeightMode::GroundSampleDistance;
     gsd.parameters.groundSampleDistanceCm = 1.7;
+    gsd.parameters.toleranceMeters = 7.5;  // kept when set; the other scan leaves it to the server
     gsd.parameters.camera = {QStringLiteral("Tiny"), 6.17, 4.55, 4.5, 4000, 3000};
     syncDerivedFields(gsd.parameters);
     r.segments.insert(r.segments.begin() + 3, gsd);

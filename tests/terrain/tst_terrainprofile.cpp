@@ -7,6 +7,7 @@
 #include "RouteAnalyzer.h"
 #include "RouteEditor.h"
 #include "RouteModel.h"
+#include "SegmentParameters.h"
 #include "TerrainFollow.h"
 #include "TerrainProfile.h"
 #include "TerrainRule.h"
@@ -384,6 +385,22 @@ private slots:
         const TerrainProfile flown = computeProfile(straight, service, 10);
         QVERIFY(flown.minClearance && flown.minClearance->clearance < 0);
         QVERIFY(!flown.lowStretches.empty());
+
+        // The scan's own tolerance, typed as the operator types it: a looser one lets the ground come closer.
+        sortie::mission::Segment loose = route.segments[0];
+        QVERIFY(sortie::mission::setParameterValue(loose, QStringLiteral("tolerance"), QStringLiteral("15")));
+        QCOMPARE(terrainFollowTolerance(loose), std::optional<double>(15.0));
+        Route looseRoute;
+        looseRoute.segments.push_back(loose);
+        const TerrainProfile looser = computeProfile(profileRouteOf(looseRoute), service, 10);
+        QVERIFY(looser.minClearance && followed.minClearance);
+        QVERIFY2(looser.minClearance->clearance > 40 - 15 - 0.5, qPrintable(QString::number(looser.minClearance->clearance)));
+        QVERIFY2(looser.minClearance->clearance < followed.minClearance->clearance - 1,
+                 qPrintable(QStringLiteral("%1 vs %2").arg(looser.minClearance->clearance).arg(followed.minClearance->clearance)));
+        // Emptied: the server's own again.
+        QVERIFY(sortie::mission::setParameterValue(loose, QStringLiteral("tolerance"), QString()));
+        QCOMPARE(terrainFollowTolerance(loose), std::optional<double>(kDefaultFollowTolerance));
+        QVERIFY(!sortie::mission::parameterValue(loose, QStringLiteral("tolerance")).isValid());
 
         // AMSL scans and waypoints fly straight.
         std::get<sortie::mission::AreaScan>(route.segments[0]).parameters.altitudeType = AltitudeType::Amsl;

@@ -38,6 +38,7 @@ ClientWindow::ClientWindow(Options options)
     m_session = std::make_unique<hci::HciSession>();
     m_client = std::make_unique<hci::HciClient>(m_session.get());
     m_connection = std::make_unique<client::ConnectionController>(m_session.get());
+    QObject::connect(m_connection.get(), &client::ConnectionController::ready, m_settings.get(), &ui::AppSettings::loginSucceeded);
     m_missions = std::make_unique<client::MissionController>(m_client.get());
     m_fleet = std::make_unique<client::VehicleFleet>(m_client.get());
     m_missions->setFleet(m_fleet.get()); // the upload chooser lists every vehicle of the fleet

@@ -84,6 +84,7 @@ private slots:
             QVERIFY(first.settings.rememberPassword());
             QSignalSpy written(&first.vault, &PasswordVault::passwordWritten);
             first.settings.rememberLogin(kServer, kUser, QStringLiteral("kr-secret-1"));
+            first.settings.loginSucceeded();
             QVERIFY(written.wait(5000));
             QCOMPARE(written.first().at(0).toString(), kServer);
             QCOMPARE(written.first().at(1).toString(), kUser);
@@ -113,6 +114,7 @@ private slots:
             first.settings.setRememberPassword(true);
             QSignalSpy written(&first.vault, &PasswordVault::passwordWritten);
             first.settings.rememberLogin(kServer, kUser, QStringLiteral("kr-secret-2"));
+            first.settings.loginSucceeded();
             QVERIFY(written.wait(5000));
             // The observer logs in without a password of their own remembered yet.
             first.settings.setLastUser(QStringLiteral("observer"));
@@ -148,6 +150,7 @@ private slots:
         start.settings.setRememberPassword(true);
         QSignalSpy written(&start.vault, &PasswordVault::passwordWritten);
         start.settings.rememberLogin(kServer, kUser, QStringLiteral("kr-secret-3"));
+        start.settings.loginSucceeded();
         QVERIFY(written.wait(5000));
         QCOMPARE(secretTool(PasswordVault::entryKey(kServer, kUser)), QStringLiteral("kr-secret-3"));
 
@@ -214,6 +217,27 @@ private slots:
         QVERIFY(start.settings.password().isEmpty());
     }
 
+    // A password the server refused never replaces the remembered one; the next accepted one does.
+    void aRefusedPasswordIsNotRemembered()
+    {
+        {
+            Start first(m_path);
+            QTRY_VERIFY(first.settings.canRememberPassword());
+            first.settings.setRememberPassword(true);
+            QSignalSpy written(&first.vault, &PasswordVault::passwordWritten);
+            first.settings.rememberLogin(kServer, kUser, QStringLiteral("kr-secret-7"));
+            first.settings.loginSucceeded();
+            QVERIFY(written.wait(5000));
+            first.settings.rememberLogin(kServer, kUser, QStringLiteral("kr-typo-7"));  // refused: no loginSucceeded
+            first.settings.sync();
+        }
+        QCOMPARE(secretTool(PasswordVault::entryKey(kServer, kUser)), QStringLiteral("kr-secret-7"));
+        Start restarted(m_path);
+        QSignalSpy recalled(&restarted.settings, &AppSettings::passwordRecalled);
+        QVERIFY(recalled.wait(5000));
+        QCOMPARE(restarted.settings.password(), QStringLiteral("kr-secret-7"));
+    }
+
     // The real login view: the keyring's answer fills the password field after the page is up, the
     // box is enabled and ticked, nothing to say beside it; un-ticking it by mouse removes the entry.
     void loginViewRecallsThePassword()
@@ -224,6 +248,7 @@ private slots:
             first.settings.setRememberPassword(true);
             QSignalSpy written(&first.vault, &PasswordVault::passwordWritten);
             first.settings.rememberLogin(kServer, kUser, QStringLiteral("kr-secret-6"));
+            first.settings.loginSucceeded();
             QVERIFY(written.wait(5000));
             first.settings.sync();
         }

@@ -182,11 +182,15 @@ void AppSettings::rememberLogin(const QString &server, const QString &user, cons
     setLastUser(user);
     const bool passwordChanged = password != m_password;
     m_password = password;
-    // Written on every login, so the keyring holds the password last used for this server and user.
-    if (rememberPassword() && !m_password.isEmpty())
-        m_vault->write(server, user, m_password);
     if (passwordChanged)
         emit changed();
+}
+
+void AppSettings::loginSucceeded()
+{
+    // Written on every accepted login, so the keyring holds the password last used for this server and user.
+    if (rememberPassword() && !m_password.isEmpty())
+        m_vault->write(lastServer(), lastUser(), m_password);
 }
 
 QString AppSettings::mapSource() const

@@ -71,9 +71,11 @@ public:
     bool windowMaximized() const;
     void setWindowMaximized(bool maximized);
 
-    // The login the operator just used: becomes lastServer/lastUser, and the password is kept in
-    // the keyring for that server and user while "remember" is on.
+    // The login the operator is trying: becomes lastServer/lastUser; the password is held in memory.
     Q_INVOKABLE void rememberLogin(const QString &server, const QString &user, const QString &password);
+    // The server accepted it: while "remember" is on, the password goes into the keyring for that
+    // server and user. A refused password never replaces the one remembered.
+    void loginSucceeded();
 
     // Writes everything to disk now (QSettings otherwise writes lazily).
     Q_INVOKABLE void sync();

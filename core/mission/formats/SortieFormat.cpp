@@ -253,6 +253,8 @@ Json segmentJson(const Segment &s)
                            {"altitudeType", str(altitudeTypeName(p.altitudeType))}, {"overlapForward", p.frontOverlapPercent},
                            {"overlapSide", p.sideOverlapPercent}, {"sideDistance", p.sideDistanceMeters},
                            {"directionAngle", p.directionDeg}, {"overshoot", p.turnaroundMeters}, {"speed", p.speed}}}};
+    if (p.toleranceMeters)
+        j["parameters"]["tolerance"] = *p.toleranceMeters;
     putOrigin(j, scan.origin.message);
     return j;
 }
@@ -314,7 +316,7 @@ Segment readSegment(const JsonCursor &c)
         Segment segment = std::move(s);
         const JsonCursor params = c.at("parameters");
         params.requireObject();
-        for (const char *name : {"altitudeType", "overlapForward", "overlapSide", "sideDistance", "directionAngle", "overshoot", "speed"})
+        for (const char *name : {"altitudeType", "overlapForward", "overlapSide", "sideDistance", "directionAngle", "overshoot", "speed", "tolerance"})
             setParameter(params, segment, name, name == std::string_view("altitudeType") || name == std::string_view("speed"));
         // The other of height and GSD is derived from this one and the camera.
         const char *last = mode == QLatin1String("altitude") ? "height" : "groundSampleDistance";

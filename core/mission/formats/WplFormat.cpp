@@ -34,7 +34,7 @@ QList<QByteArrayView> fields(QByteArrayView line)
 }
 }
 
-Result<ImportedRoute> readWpl(const QByteArray &input)
+Result<WplItems> readWplItems(const QByteArray &input)
 {
     QByteArrayView data(input);
     if (data.startsWith("\xEF\xBB\xBF"))
@@ -111,7 +111,15 @@ Result<ImportedRoute> readWpl(const QByteArray &input)
         return lineError(1, QStringLiteral("the file is empty"));
     if (expectedIndex == 0)
         return lineError(lineNo, QStringLiteral("the file has no items, not even the home position"));
-    return routeFromMavlink(items, home, kWplDefaultSpeed);
+    return WplItems{home, std::move(items)};
+}
+
+Result<ImportedRoute> readWpl(const QByteArray &input)
+{
+    const Result<WplItems> read = readWplItems(input);
+    if (!read)
+        return read.error();
+    return routeFromMavlink(read.value().items, read.value().home, kWplDefaultSpeed);
 }
 
 QByteArray writeWpl(const Route &route, QStringList *notices, ScanPlanCache *cache)

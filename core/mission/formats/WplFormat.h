@@ -12,6 +12,14 @@ namespace sortie::mission::formats {
 // Speeds before any DO_CHANGE_SPEED are the WPL default of 5 m/s.
 constexpr double kWplDefaultSpeed = 5.0;
 
+// The file's items as written (home apart, each item with its line), checked as readWpl checks them:
+// for a reader that needs what a route does not keep, such as each item's altitude frame.
+struct WplItems
+{
+    std::optional<HomePosition> home;  // item 0
+    std::vector<MavlinkItem> items;    // items 1..n
+};
+Result<WplItems> readWplItems(const QByteArray &data);
 Result<ImportedRoute> readWpl(const QByteArray &data);
 // Without a home position the first point is written as home at 0 m AMSL, with a notice.
 QByteArray writeWpl(const Route &route, QStringList *notices = nullptr, ScanPlanCache *cache = nullptr);

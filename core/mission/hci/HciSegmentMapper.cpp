@@ -336,6 +336,13 @@ void scanToHci(const AreaScan &a, const AreaScan *before, pb::SegmentDefinition 
     if (!b || differs(b->directionDeg, p.directionDeg)) setNumber(s, "directionAngle", p.directionDeg);
     if (!b || differs(b->turnaroundMeters, p.turnaroundMeters)) setNumber(s, "overshoot", p.turnaroundMeters);
     if (!b || differs(b->speed, p.speed)) setNumber(s, "speed", p.speed);
+    if (!b || b->toleranceMeters.has_value() != p.toleranceMeters.has_value()
+        || (p.toleranceMeters && differs(*b->toleranceMeters, *p.toleranceMeters))) {
+        if (p.toleranceMeters)
+            setNumber(s, "tolerance", *p.toleranceMeters);
+        else
+            eraseParam(s, "tolerance");
+    }
     if (!b || b->heightMode != p.heightMode || differs(b->groundSampleDistanceCm, p.groundSampleDistanceCm)) {
         if (p.heightMode == ScanHeightMode::GroundSampleDistance)
             setNumber(s, "groundSampleDistance", p.groundSampleDistanceCm);

@@ -136,6 +136,13 @@ bool setScan(AreaScanParameters &p, const QString &name, const QVariant &value, 
         return number(value, name, 0, kHuge, false, error, [&](double d) { p.turnaroundMeters = d; });
     if (name == QLatin1String("speed"))
         return number(value, name, 0.1, 1000, false, error, [&](double d) { p.speed = d; });
+    if (name == QLatin1String("tolerance")) {
+        if (!value.isValid() || value.toString().trimmed().isEmpty()) {
+            p.toleranceMeters.reset();  // the server's own
+            return true;
+        }
+        return number(value, name, 0, kHuge, false, error, [&](double d) { p.toleranceMeters = d; });
+    }
     if (name == QLatin1String("camera")) {
         // A camera Sortie knows brings its optics; another name only names the optics there are.
         const QString n = value.toString();
@@ -172,6 +179,7 @@ QVariant scanValue(const AreaScanParameters &p, const QString &name)
     if (name == QLatin1String("directionAngle")) return p.directionDeg;
     if (name == QLatin1String("overshoot")) return p.turnaroundMeters;
     if (name == QLatin1String("speed")) return p.speed;
+    if (name == QLatin1String("tolerance")) return p.toleranceMeters ? QVariant(*p.toleranceMeters) : QVariant();
     if (name == QLatin1String("camera")) return p.camera.name;
     if (name == QLatin1String("cameraSensorWidth")) return p.camera.sensorWidthMm;
     if (name == QLatin1String("cameraSensorHeight")) return p.camera.sensorHeightMm;
@@ -264,7 +272,8 @@ QStringList parameterNames(const Segment &segment, const AlgorithmCatalog &catal
     }
     return {QStringLiteral("height"), QStringLiteral("groundSampleDistance"), QStringLiteral("altitudeType"),
             QStringLiteral("overlapForward"), QStringLiteral("overlapSide"), QStringLiteral("sideDistance"),
-            QStringLiteral("directionAngle"), QStringLiteral("overshoot"), QStringLiteral("speed"), QStringLiteral("camera"),
+            QStringLiteral("directionAngle"), QStringLiteral("overshoot"), QStringLiteral("speed"), QStringLiteral("tolerance"),
+            QStringLiteral("camera"),
             QStringLiteral("cameraSensorWidth"), QStringLiteral("cameraSensorHeight"), QStringLiteral("cameraFocalLength"),
             QStringLiteral("cameraImageWidth"), QStringLiteral("cameraImageHeight")};
 }

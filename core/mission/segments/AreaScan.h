@@ -7,6 +7,7 @@
 
 #include <QString>
 
+#include <optional>
 #include <vector>
 
 namespace sortie::mission {
@@ -28,6 +29,9 @@ struct AreaScanParameters
     double turnaroundMeters = 10.0;         // overshoot beyond each transect end, for the turn
     double speed = 8.0;                     // m/s along the transects
     double sideDistanceMeters = 0.0;        // UgCS sideDistance: metres between passes; 0 = from footprint and side overlap
+    // UgCS tolerance, flown AGL: how far the ground may depart from a pass before terrain following
+    // adds a point there (metres). Unset: the server's own (3 m, kDefaultFollowTolerance).
+    std::optional<double> toleranceMeters;
     bool operator==(const AreaScanParameters &) const = default;
 };
 
