@@ -419,10 +419,10 @@ private slots:
 
         // Corners dragged: the first (under the segment's route marker) and another.
         STEP(dragVertex(0, QPoint(-25, -20)));
-        STEP(dragVertex(2, QPoint(60, 30)));
+        STEP(dragVertex(2, QPoint(60, 20)));
 
         STEP(insertCorner(0));
-        STEP(removeCorner(3));
+        STEP(removeCorner(4));
 
         // Two loops round the perimeter: twice the points.
         const int oneLoop = areaLayer()->transectPointCount();
