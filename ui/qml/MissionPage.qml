@@ -77,25 +77,6 @@ Page {
                 autoFit: true
             }
             AreaScanLayer {
-                id: areaLayer
-                objectName: "areaLayer"
-                anchors.fill: parent
-                map: pane.map
-                polygonModel: page.areaPolygonModel
-                transectModel: page.areaTransectModel
-                polygon: page.doc ? page.doc.scanPolygon : []
-                path: page.doc ? page.doc.scanPath : []
-                // The current scan's corners: drag one (the path follows), click an edge to add one,
-                // right-click one to remove it.
-                editable: page.editable && page.tool === "" && page.doc.scanPolygon.length > 0
-                onVertexMoved: (index, coordinate, step) => page.doc.editor.moveVertex(page.doc.currentRow, index, coordinate, step)
-                onEdgeClicked: (index, coordinate, modifiers) => page.doc.editor.insertVertex(page.doc.currentRow, index + 1, coordinate)
-                onVertexRemoveRequested: index => page.doc.editor.removeVertex(page.doc.currentRow, index)
-                closed: page.doc ? page.doc.preview.figureType !== "polyline" : true
-                radius: page.doc ? page.doc.preview.radius : 0
-                onRadiusMoved: (meters, step) => page.doc.editor.setRadius(page.doc.currentRow, meters, step)
-            }
-            AreaScanLayer {
                 objectName: "scanDraftLayer"
                 anchors.fill: parent
                 map: pane.map
@@ -128,6 +109,26 @@ Page {
                 editable: page.editable && page.tool === ""
                 onWaypointsMoved: (rows, coordinates) => page.doc.editor.moveWaypoints(rows, coordinates)
                 onLegClicked: (leg, coordinate, modifiers) => page.doc.editor.insertWaypoint(leg + 1, coordinate)
+            }
+            AreaScanLayer {
+                id: areaLayer
+                objectName: "areaLayer"
+                anchors.fill: parent
+                map: pane.map
+                polygonModel: page.areaPolygonModel
+                transectModel: page.areaTransectModel
+                polygon: page.doc ? page.doc.scanPolygon : []
+                path: page.doc ? page.doc.scanPath : []
+                // The current segment's figure: drag a corner (the path follows), click an edge to add
+                // one, right-click one to remove it, drag a circle's radius handle. Above the route:
+                // its first point lies under the segment's own route marker, which cannot drag it.
+                editable: page.editable && page.tool === "" && page.doc.scanPolygon.length > 0
+                onVertexMoved: (index, coordinate, step) => page.doc.editor.moveVertex(page.doc.currentRow, index, coordinate, step)
+                onEdgeClicked: (index, coordinate, modifiers) => page.doc.editor.insertVertex(page.doc.currentRow, index + 1, coordinate)
+                onVertexRemoveRequested: index => page.doc.editor.removeVertex(page.doc.currentRow, index)
+                closed: page.doc ? page.doc.preview.figureType !== "polyline" : true
+                radius: page.doc ? page.doc.preview.radius : 0
+                onRadiusMoved: (meters, step) => page.doc.editor.setRadius(page.doc.currentRow, meters, step)
             }
             Connections {
                 target: pane.map
