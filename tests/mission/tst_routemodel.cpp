@@ -5,6 +5,7 @@
 // persistent indexes follow reordering.
 #include "RouteEditor.h"
 #include "RouteModel.h"
+#include "Geodesy.h"
 #include "SegmentParameters.h"
 
 #include <QAbstractItemModelTester>
@@ -166,6 +167,32 @@ private slots:
         QCOMPARE(refused.count(), 3);
         f.stack.setIndex(1);
         QCOMPARE(std::get<AreaScan>(f.model.segment(row)).polygon[2].latitude, 56.905);
+    }
+
+    void aFigureDraggedByItsMarkerMovesWhole()
+    {
+        // The map drags a segment's route marker through moveWaypoints: the figure moves with it,
+        // its shape and size kept, in one undo step per gesture.
+        Fixture f(1);
+        const int row = f.editor.addAreaScan({QGeoCoordinate(56.90, 24.10), QGeoCoordinate(56.90, 24.11),
+                                              QGeoCoordinate(56.905, 24.11), QGeoCoordinate(56.905, 24.10)});
+        const std::vector<GeoPoint> before = std::get<AreaScan>(f.model.segment(row)).polygon;
+        const int steps = f.stack.count();
+        QVERIFY(f.editor.moveWaypoints({row}, {QGeoCoordinate(56.91, 24.12)}, EditStep::Continuing));
+        QVERIFY(f.editor.moveWaypoints({row}, {QGeoCoordinate(56.95, 24.30)}, EditStep::Done));
+        QCOMPARE(f.stack.count(), steps + 1);
+        const std::vector<GeoPoint> after = std::get<AreaScan>(f.model.segment(row)).polygon;
+        QCOMPARE(after.size(), before.size());
+        QVERIFY(geodesicDistance(after[0], {56.95, 24.30}) < 1e-3);
+        for (size_t i = 0; i < before.size(); ++i)
+            for (size_t j = i + 1; j < before.size(); ++j)
+                QVERIFY2(std::abs(geodesicDistance(after[i], after[j]) - geodesicDistance(before[i], before[j])) < 0.05,
+                         qPrintable(QStringLiteral("corners %1-%2").arg(i).arg(j)));
+        f.stack.undo();
+        QCOMPARE(std::get<AreaScan>(f.model.segment(row)).polygon, before);
+        QSignalSpy refused(&f.editor, &RouteEditor::refused);
+        QVERIFY(!f.editor.moveWaypoints({9}, {QGeoCoordinate(56.9, 24.1)}));
+        QCOMPARE(refused.count(), 1);
     }
 
     void areaScanParametersByWireName()

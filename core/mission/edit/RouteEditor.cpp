@@ -154,14 +154,14 @@ bool RouteEditor::moveWaypoints(const QList<int> &rows, const QList<QGeoCoordina
         const GeoPoint p = geo(to[i]);
         if (!p.isValid())
             return refuse(tr("That is not a valid position."));
-        if (rows[i] < 0 || rows[i] >= m_model->count() || !isWaypoint(m_model->segment(rows[i])))
-            return refuse(tr("Row %1 is not a waypoint.").arg(rows[i] + 1));
+        if (rows[i] < 0 || rows[i] >= m_model->count())
+            return refuse(tr("There is no row %1.").arg(rows[i] + 1));
         target[rows[i]] = p;
     }
-    const QString text = rows.size() == 1 ? tr("Move waypoint %1").arg(rows.first() + 1)
-                                          : tr("Move %n waypoint(s)", nullptr, int(rows.size()));
+    const QString text = rows.size() == 1 ? tr("Move %1").arg(segmentLabel(rows.first(), m_model->segment(rows.first())))
+                                          : tr("Move %n segment(s)", nullptr, int(rows.size()));
     return edit(rows, [&](int row, Segment &s) {
-        std::get<Waypoint>(s).position = target.at(row);
+        moveSegmentTo(s, target.at(row));  // a figure moves whole, by its anchor (its marker on the map)
         return true;
     }, text, QStringLiteral("move"), step);
 }

@@ -45,7 +45,8 @@ public:
     // route's settings). Returns the new row, or -1.
     Q_INVOKABLE int addWaypoint(const QGeoCoordinate &at);
     Q_INVOKABLE int insertWaypoint(int row, const QGeoCoordinate &at);
-    // Moves waypoints (rows and positions in the same order; rows that are no waypoint are refused).
+    // Moves rows to positions (in the same order): a waypoint goes there, any other segment moves
+    // whole by its anchor, its figure keeping its shape (a marker dragged on the map).
     Q_INVOKABLE bool moveWaypoints(const QList<int> &rows, const QList<QGeoCoordinate> &to,
                                    sortie::mission::MissionEnums::EditStep step = EditStep::Done);
     // One axis of one waypoint, as a table cell types it.

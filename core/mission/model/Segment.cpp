@@ -2,6 +2,7 @@
 
 #include "AlgorithmCatalog.h"
 #include "Camera.h"
+#include "LocalTangentPlane.h"
 
 #include <cmath>
 
@@ -25,6 +26,23 @@ GeoPoint anchorOf(const Segment &s)
         return scan->polygon.empty() ? GeoPoint{} : scan->polygon.front();
     const AlgorithmSegment &a = std::get<AlgorithmSegment>(s);
     return a.points.empty() ? GeoPoint{} : a.points.front().position;
+}
+
+void moveSegmentTo(Segment &s, const GeoPoint &anchor)
+{
+    if (Waypoint *w = asWaypoint(s)) {
+        w->position = anchor;
+        return;
+    }
+    const LocalTangentPlane from(anchorOf(s)), to(anchor);
+    const auto move = [&](GeoPoint &p) { p = to.unproject(from.project(p)); };
+    if (AreaScan *scan = asAreaScan(s)) {
+        for (GeoPoint &p : scan->polygon)
+            move(p);
+        return;
+    }
+    for (FigurePoint &p : std::get<AlgorithmSegment>(s).points)
+        move(p.position);
 }
 
 double altitudeOf(const Segment &s)

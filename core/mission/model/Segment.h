@@ -25,6 +25,9 @@ inline AlgorithmSegment *asAlgorithmSegment(Segment &s) { return std::get_if<Alg
 
 // A representative point: the waypoint itself, the polygon's first vertex, the figure's first point.
 GeoPoint anchorOf(const Segment &s);
+// Moves the whole segment so that its anchor lands on `anchor`: a waypoint goes there, a figure
+// keeps its shape and size (each point keeps its east/north offset from the anchor).
+void moveSegmentTo(Segment &s, const GeoPoint &anchor);
 // The flight altitude; NaN when a segment does not say (an unknown algorithm without `height`).
 double altitudeOf(const Segment &s);
 AltitudeType altitudeTypeOf(const Segment &s);

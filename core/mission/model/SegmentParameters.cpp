@@ -22,18 +22,6 @@ std::optional<double> toNumber(const QVariant &v)
     return ok && std::isfinite(d) ? std::optional(d) : std::nullopt;
 }
 
-std::optional<bool> toBool(const QVariant &v)
-{
-    if (v.metaType().id() == QMetaType::Bool)
-        return v.toBool();
-    const QString t = v.toString().trimmed();
-    if (t.compare(QLatin1String("true"), Qt::CaseInsensitive) == 0)
-        return true;
-    if (t.compare(QLatin1String("false"), Qt::CaseInsensitive) == 0)
-        return false;
-    return std::nullopt;
-}
-
 // Selections arrive as their wire name or as the enum itself (from QML).
 // QML hands an enum over as its number.
 std::optional<int> enumNumber(const QVariant &v, int count)
