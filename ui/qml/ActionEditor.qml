@@ -41,10 +41,15 @@ GroupBox {
                     RowLayout {
                         Layout.fillWidth: true
                         Label {
+                            id: summaryLabel
                             text: action.summary
                             font.bold: true
                             elide: Text.ElideRight
                             Layout.fillWidth: true
+                            // The whole summary where the panel is too narrow for it.
+                            HoverHandler { id: summaryHover }
+                            ToolTip.visible: summaryLabel.truncated && summaryHover.hovered
+                            ToolTip.text: action.summary
                         }
                         Button {
                             objectName: "removeAction_" + action.index
