@@ -195,8 +195,8 @@ bool AutosaveRecovery::restore()
     // The edits now live in the document (and this instance's own autosave): keep the old file
     // as the one backup rather than delete it.
     moveAside(m_current);
-    if (count() > 1)
-        addMessage(tr("%n more autosave(s) will be offered at the next start.", nullptr, count() - 1));
+    if (count() > 1)  // the dialog said so already: only the log keeps it
+        qCInfo(lcAutosave).noquote() << count() - 1 << "more autosave(s) kept for the next start";
     setOffers({}); // the others would replace what was just restored: kept for the next start
     emit restored();
     return true;
@@ -237,6 +237,14 @@ void AutosaveRecovery::moveAside(int row)
     QFile::remove(m_directory.discardedPath());
     if (!QFile::rename(path, m_directory.discardedPath()))
         addMessage(tr("The autosave %1 could not be moved aside.").arg(path));
+}
+
+void AutosaveRecovery::acknowledgeMessage()
+{
+    if (m_message.isEmpty())
+        return;
+    m_message.clear();
+    emit messageChanged();
 }
 
 void AutosaveRecovery::addMessage(const QString &text)

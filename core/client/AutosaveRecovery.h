@@ -86,6 +86,8 @@ public:
     Q_INVOKABLE bool restore();
     Q_INVOKABLE void discard();
     Q_INVOKABLE void postpone();
+    // The operator read `message` (a file kept aside, a move that failed): it is cleared.
+    Q_INVOKABLE void acknowledgeMessage();
 
 signals:
     void changed();

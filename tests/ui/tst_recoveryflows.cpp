@@ -141,6 +141,36 @@ private slots:
         QVERIFY(m_missions->document()->isModified());
     }
 
+    // An autosave that cannot be read is kept aside and the dialog says where, with nothing to
+    // restore, until the operator has read it.
+    void anUnreadableAutosaveIsSaidUntilRead()
+    {
+        QTemporaryDir autosaves;
+        {
+            client::RouteDocument doc;
+            client::RouteAutosave autosave(&doc, autosaves.path());
+            doc.load(test::serverRoute());
+            test::editRoute(doc);
+        }
+        QFile file(client::AutosaveDirectory(autosaves.path()).filePath(1));
+        QVERIFY(file.open(QIODevice::ReadWrite));
+        QVERIFY(file.resize(file.size() / 2));  // as a cut-short write would leave it
+        file.close();
+        m_recovery = std::make_unique<client::AutosaveRecovery>(m_missions->document(), autosaves.path());
+        QVERIFY(!m_recovery->isAvailable());
+        showWindow();
+        QObject *dialog = find<QObject>("restoreDialog");
+        QTRY_VERIFY(dialog->property("visible").toBool());
+        QQuickItem *message = find("recoveryMessage");
+        QTRY_VERIFY(message && message->isVisible());
+        QVERIFY2(message->property("text").toString().contains(QStringLiteral("kept as")), qPrintable(message->property("text").toString()));
+        QVERIFY(!find("restoreAutosaveButton")->isVisible());
+        QVERIFY(!find("restoreChanges")->isVisible());
+        click("acknowledgeRecoveryButton");
+        QTRY_VERIFY(!dialog->property("visible").toBool());
+        QVERIFY(m_recovery->message().isEmpty());
+    }
+
     void severalAutosavesInOneListAndAServerRouteWaitsForItsSession()
     {
         QTemporaryDir autosaves;

@@ -173,7 +173,8 @@ ApplicationWindow {
         id: restoreDialog
         objectName: "restoreDialog"
         recovery: window.recovery
-        visible: window.recovery !== null && window.recovery.available
+        // Also alone, to say what went wrong with an autosave (a file kept aside) until read.
+        visible: window.recovery !== null && (window.recovery.available || window.recovery.message.length > 0)
         onRestored: {
             window.showPage(1)
             Qt.callLater(() => missionPage.routeLayer.fitToMap(60))

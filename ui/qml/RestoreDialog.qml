@@ -7,13 +7,16 @@ import Sortie.Ui
 // saving): every such autosave in one list, newest first; for the chosen one, what it changes
 // since the last save, and Restore, Discard or Later. `recovery` is the client's
 // AutosaveRecovery; the decisions are its, including why a restore is not possible now
-// (`restoreBlocker`: another server or user, or unsaved edits open).
+// (`restoreBlocker`: another server or user, or unsaved edits open). What went wrong with an
+// autosave (`message`: an unreadable file kept aside) is shown too, alone when nothing is offered.
 Dialog {
     id: dialog
     required property AutosaveRecovery recovery
     signal restored()
     readonly property int count: recovery ? recovery.count : 0
-    title: count > 1 ? qsTr("Restore one of %1 unsaved routes?").arg(count) : qsTr("Restore unsaved edits?")
+    readonly property bool offering: recovery !== null && recovery.available
+    title: !offering ? qsTr("Autosaved edits")
+           : count > 1 ? qsTr("Restore one of %1 unsaved routes?").arg(count) : qsTr("Restore unsaved edits?")
     modal: true
     closePolicy: Popup.NoAutoClose
     anchors.centerIn: parent
@@ -24,6 +27,7 @@ Dialog {
         spacing: 8
         Label {
             objectName: "restoreIntro"
+            visible: dialog.offering
             text: !dialog.recovery ? ""
                   : dialog.count > 1 ? qsTr("Sortie did not close normally. These routes had unsaved edits, saved automatically. Choose one to see its changes; the others are kept and offered again at the next start.")
                   : qsTr("Sortie did not close normally. Edits of “%1” were saved automatically at %2.")
@@ -35,7 +39,7 @@ Dialog {
         ListView {
             id: autosaves
             objectName: "autosaveList"
-            visible: dialog.count > 1
+            visible: dialog.offering && dialog.count > 1
             Layout.fillWidth: true
             Layout.preferredHeight: Math.min(contentHeight, 180)
             clip: true
@@ -76,9 +80,10 @@ Dialog {
             opacity: 0.7
             Layout.fillWidth: true
         }
-        Label { text: qsTr("Changes since the last save:"); font.bold: true }
+        Label { visible: dialog.offering; text: qsTr("Changes since the last save:"); font.bold: true }
         ListView {
             objectName: "restoreChanges"
+            visible: dialog.offering
             Layout.fillWidth: true
             Layout.preferredHeight: Math.min(contentHeight, 180)
             clip: true
@@ -93,7 +98,23 @@ Dialog {
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }
+        Label {
+            objectName: "recoveryMessage"
+            visible: text.length > 0
+            text: dialog.recovery ? dialog.recovery.message : ""
+            color: "#c62828"
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
+        }
+        Button {
+            objectName: "acknowledgeRecoveryButton"
+            visible: !dialog.offering
+            text: qsTr("OK")
+            Layout.alignment: Qt.AlignRight
+            onClicked: dialog.recovery.acknowledgeMessage()
+        }
         RowLayout {
+            visible: dialog.offering
             Layout.alignment: Qt.AlignRight
             Button {
                 objectName: "discardAutosaveButton"
