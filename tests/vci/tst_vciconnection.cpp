@@ -156,7 +156,7 @@ void TstVciConnection::putArmModeAndRefusals()
 void TstVciConnection::uploadMissionAndSeeItFlown()
 {
     namespace profile = sortie::vci::profile;
-    const std::vector<profile::Waypoint> plan = {{rad(56.9500), rad(24.1052), 15, 10}, {rad(56.9500), rad(24.1060), 15, 10}};
+    const std::vector<profile::Waypoint> plan = {{rad(56.9500), rad(24.1052), 15, 10, 0, {}}, {rad(56.9500), rad(24.1060), 15, 10, 0, {}}};
     QSignalSpy notified(m_conn.get(), &VciConnection::notified);
     Capture upload, readBack, arm, takeoff, autoMode;
     m_conn->subscribe(QStringLiteral("/mission/progress"));

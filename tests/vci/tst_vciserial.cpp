@@ -115,8 +115,8 @@ void TstVciSerial::putArmAndMode()
 void TstVciSerial::uploadMissionAndSeeItFlown()
 {
     namespace profile = sortie::vci::profile;
-    const std::vector<profile::Waypoint> plan = {{rad(56.9499), rad(24.1052), 12, 12}, {rad(56.9499), rad(24.1057), 12, 12},
-                                                 {rad(56.9497), rad(24.1057), 12, 12}};
+    const std::vector<profile::Waypoint> plan = {{rad(56.9499), rad(24.1052), 12, 12, 0, {}}, {rad(56.9499), rad(24.1057), 12, 12, 0, {}},
+                                                 {rad(56.9497), rad(24.1057), 12, 12, 0, {}}};
     QSignalSpy notified(m_conn.get(), &VciConnection::notified);
     m_conn->subscribe(QStringLiteral("/mission/progress"));
     Capture upload, arm, takeoff, go;
