@@ -120,11 +120,11 @@ int main(int argc, char *argv[])
     sortie::hci::HciClient hciClient(&session);
     sortie::client::ConnectionController connection(&session);
     sortie::client::MissionController missions(&hciClient);
-    sortie::client::VehicleFleet fleet(&hciClient);
     // Terrain: local tiles (--dem, else the setting) and the server, in the order the settings give.
     sortie::terrain::ElevationSetup elevation(&session);
     elevation.configure(options.demPath.isEmpty() ? storage.value(QStringLiteral("terrain/demFolder")).toString() : options.demPath,
                         storage.value(QStringLiteral("terrain/sourceOrder")).toStringList());
+    sortie::client::VehicleFleet fleet(&hciClient, elevation.service());
     missions.document()->analyzer()->addRule(elevation.rule());
     missions.document()->editor()->setGroundLookup([&elevation](const sortie::mission::GeoPoint &p) { return elevation.service()->groundAt(p); });
     missions.setFleet(&fleet);

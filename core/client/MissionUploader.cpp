@@ -221,7 +221,7 @@ void MissionUploader::succeed(std::vector<vehicle::MissionItem> held)
         m_vehicle->setMission(std::move(held));
     QString text = tr("Uploaded to %1: %n waypoint(s).", nullptr, count).arg(m_vehicleName);
     if (!m_prepared.notices.isEmpty())
-        text += QLatin1Char(' ') + tr("The server said: %1").arg(m_prepared.notices.join(QStringLiteral("; ")));
+        text += QLatin1Char(' ') + tr("Note: %1").arg(m_prepared.notices.join(QStringLiteral("; ")));
     vehicle::Vehicle *target = m_vehicle;
     end(State::Done, text, CommandResult::success());
     if (target)

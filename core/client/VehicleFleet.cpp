@@ -8,6 +8,7 @@
 #include "HciVehicleLink.h"
 #include "Messages.pb.h"
 #include "VciEndpoint.h"
+#include "ElevationService.h"
 #include "VciVehicleLink.h"
 
 #include <QMetaEnum>
@@ -30,9 +31,10 @@ double degrees(double radians)
 }
 } // namespace
 
-VehicleFleet::VehicleFleet(hci::HciClient *client, QObject *parent)
+VehicleFleet::VehicleFleet(hci::HciClient *client, terrain::ElevationService *elevation, QObject *parent)
     : QAbstractListModel(parent)
     , m_client(client)
+    , m_elevation(elevation)
 {
     connect(client->session(), &hci::HciSession::ready, this, &VehicleFleet::discoverHciVehicles);
     connect(client->session(), &hci::HciSession::stateChanged, this, [this](hci::HciSession::State state) {
@@ -193,7 +195,7 @@ bool VehicleFleet::addVciVehicle(const QString &text)
         emit messageChanged();
         return false;
     }
-    add(std::make_unique<vehicle::VciVehicleLink>(*endpoint));
+    add(std::make_unique<vehicle::VciVehicleLink>(*endpoint, m_elevation.data()));
     return true;
 }
 

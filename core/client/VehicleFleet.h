@@ -14,6 +14,9 @@
 namespace sortie::hci {
 class HciClient;
 }
+namespace sortie::terrain {
+class ElevationService;
+}
 
 namespace sortie::client {
 
@@ -41,7 +44,8 @@ public:
         AltitudeAglRole, GroundSpeedRole, ModeRole, ArmedRole, BatteryRole, VehicleRole,
     };
 
-    explicit VehicleFleet(hci::HciClient *client, QObject *parent = nullptr);
+    // `elevation` (not owned, may be nullptr) gives VCI vehicles the ground under the routes they take.
+    explicit VehicleFleet(hci::HciClient *client, terrain::ElevationService *elevation = nullptr, QObject *parent = nullptr);
     ~VehicleFleet() override;
 
     int rowCount(const QModelIndex &parent = {}) const override;
@@ -82,6 +86,7 @@ private:
     void setCommandResult(const QString &text);
 
     QPointer<hci::HciClient> m_client;
+    QPointer<terrain::ElevationService> m_elevation;
     vehicle::CommandLog m_commandLog; // before the vehicles, which write to it
     CommandPolicy m_commands;
     std::vector<Entry> m_entries;

@@ -79,7 +79,7 @@ std::vector<vehicle::MissionItem> missionFromJson(const QByteArray &json, bool *
             *ok = false;
             return {};
         }
-        items.push_back({a[0].toDouble(), a[1].toDouble(), a[2].toDouble(), a[3].toDouble()});
+        items.push_back({a[0].toDouble(), a[1].toDouble(), a[2].toDouble(), a[3].toDouble(), 0, {}});
     }
     return items;
 }

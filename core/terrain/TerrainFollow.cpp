@@ -42,12 +42,16 @@ std::optional<double> terrainFollowTolerance(const mission::Segment &segment)
     return ok && value >= 0 ? value : kDefaultFollowTolerance;
 }
 
-FollowResult followTerrain(const std::vector<GeoPoint> &pass, const FollowOptions &options, ElevationService &service)
+FollowResult followTerrain(const std::vector<FollowVertex> &pass, const FollowOptions &options, ElevationService &service)
 {
     FollowResult out;
     if (pass.empty())
         return out;
-    const SampledPath path = samplePath(pass, options.probeStep);
+    std::vector<GeoPoint> corners;
+    corners.reserve(pass.size());
+    for (const FollowVertex &v : pass)
+        corners.push_back(v.position);
+    const SampledPath path = samplePath(std::move(corners), options.probeStep);
     std::vector<GroundSample> g;
     service.samplePath(path, g);
     for (size_t i = 0; i < g.size(); ++i) {
@@ -64,8 +68,11 @@ FollowResult followTerrain(const std::vector<GeoPoint> &pass, const FollowOption
         }
     }
     std::vector<bool> keep(path.points.size(), false);
-    for (const int v : path.vertexSample)
-        keep[size_t(v)] = true;
+    std::vector<int> vertexAt(path.points.size(), -1);
+    for (size_t v = 0; v < path.vertexSample.size(); ++v) {
+        keep[size_t(path.vertexSample[v])] = true;
+        vertexAt[size_t(path.vertexSample[v])] = int(v);
+    }
     std::vector<double> distance(path.points.size()), ground(g.size());
     for (size_t i = 0; i < g.size(); ++i) {
         distance[i] = path.points[i].distance;
@@ -73,9 +80,18 @@ FollowResult followTerrain(const std::vector<GeoPoint> &pass, const FollowOption
     }
     for (size_t k = 0; k + 1 < path.vertexSample.size(); ++k)
         markFollowPoints(distance, ground, options.tolerance, size_t(path.vertexSample[k]), size_t(path.vertexSample[k + 1]), keep);
-    for (size_t i = 0; i < keep.size(); ++i)
-        if (keep[i])
-            out.points.push_back({path.points[i].position, g[i].ground + options.altitudeAgl, g[i].ground});
+    for (size_t i = 0; i < keep.size(); ++i) {
+        if (!keep[i])
+            continue;
+        // The wanted height on this point's leg, linear in distance between the leg's corners.
+        const size_t leg = std::min(size_t(path.points[i].leg), pass.size() - 1);
+        const size_t next = std::min(leg + 1, pass.size() - 1);
+        const double d0 = path.vertexDistance[leg], d1 = path.vertexDistance[next];
+        const double f = vertexAt[i] >= 0 || d1 <= d0 ? 0.0 : (distance[i] - d0) / (d1 - d0);
+        const double wanted = vertexAt[i] >= 0 ? pass[size_t(vertexAt[i])].heightAgl
+                                               : pass[leg].heightAgl + f * (pass[next].heightAgl - pass[leg].heightAgl);
+        out.points.push_back({path.points[i].position, g[i].ground + wanted, g[i].ground, vertexAt[i]});
+    }
     return out;
 }
 

@@ -10,17 +10,25 @@
 
 namespace sortie::terrain {
 
+// A corner of the pass and the height to keep above the ground there (between corners the wanted
+// height goes linearly with distance).
+struct FollowVertex
+{
+    GeoPoint position;
+    double heightAgl = 50.0;
+};
+
 struct FollowPoint
 {
     GeoPoint position;
     double altitudeAmsl = 0.0;  // ground + the wanted height
     double ground = 0.0;
+    int vertex = -1;            // the pass's vertex this point is, -1 for a point following adds
 };
 
 struct FollowOptions
 {
-    double altitudeAgl = 50.0;  // the height to keep above the ground
-    double tolerance = 5.0;     // metres the flown height may stray from it between points
+    double tolerance = 5.0;     // metres the flown height may stray from the wanted one between points
     double probeStep = 10.0;    // metres between ground probes along the pass
 };
 
@@ -32,11 +40,12 @@ struct FollowResult
     bool ok() const { return status == SampleStatus::Value; }
 };
 
-// Terrain following for a scan pass: the pass's vertices are kept, and points are added where the
-// ground changes faster than the tolerance, so that flying straight (and climbing linearly) between
-// consecutive points stays within `tolerance` of altitudeAgl above every probed ground sample. Like
-// Douglas–Peucker on the height profile: split each leg at the worst probe until all fit.
-FollowResult followTerrain(const std::vector<GeoPoint> &pass, const FollowOptions &options, ElevationService &service);
+// Terrain following for a pass: the pass's vertices are kept, and points are added where the ground
+// changes faster than the tolerance, so that flying straight (and climbing linearly) between
+// consecutive points stays within `tolerance` of the wanted height above every probed ground
+// sample. Like Douglas–Peucker on the height profile: split each leg at the worst probe until all
+// fit. What VCI uploads fly (vehicle::vciMissionFor); sortie-sim's processing uses markFollowPoints.
+FollowResult followTerrain(const std::vector<FollowVertex> &pass, const FollowOptions &options, ElevationService &service);
 
 // The probes a terrain-following leg flies through: of probes first..last (their distances along the
 // path and the ground at each), marks in `keep` the ones where a straight climb between the kept

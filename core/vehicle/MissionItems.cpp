@@ -1,9 +1,13 @@
 #include "MissionItems.h"
 
+#include "AlgorithmCatalog.h"
+#include "AlgorithmSegment.h"
 #include "AreaScan.h"
+#include "ElevationService.h"
 #include "Route.h"
 #include "RouteValidator.h"
 #include "ScanPlanCache.h"
+#include "TerrainFollow.h"
 
 #include <cmath>
 #include <numbers>
@@ -101,54 +105,260 @@ Result<MissionAction> vciAction(const WaypointAction &action)
     return std::visit(Visitor{}, action);
 }
 
-MissionError at(const Route &route, int row, const QString &why)
+MissionAction seriesByDistance(double interval)
 {
-    return missionError(QStringLiteral("%1: %2").arg(segmentLabel(route, row), why));
+    return {QStringLiteral("camera_by_distance"), {{QStringLiteral("interval"), interval}, {QStringLiteral("shots"), 0}, {QStringLiteral("delay"), 0.0}}};
+}
+
+// The camera commands of a planned point, as sortie-sim's ProcessRoute turns them into actions.
+std::vector<MissionAction> cameraActions(const PlannedPoint &p)
+{
+    std::vector<MissionAction> out;
+    for (const CameraCommand &c : p.camera) {
+        switch (c.kind) {
+        case CameraCommand::Kind::FaceDown:
+            out.push_back({QStringLiteral("gimbal"), {{QStringLiteral("tilt"), 90 * kRad}, {QStringLiteral("roll"), 0.0}, {QStringLiteral("yaw"), 0.0}}});
+            break;
+        case CameraCommand::Kind::FaceHeading:
+            out.push_back({QStringLiteral("heading"), {{QStringLiteral("heading"), c.value * kRad}, {QStringLiteral("relativeToNext"), false}}});
+            out.push_back({QStringLiteral("gimbal"), {{QStringLiteral("tilt"), 0.0}}});
+            break;
+        case CameraCommand::Kind::StartSeries:
+        case CameraCommand::Kind::StopSeries:
+            out.push_back(seriesByDistance(c.value));
+            break;
+        }
+    }
+    return out;
+}
+
+// A point to fly, its height still in the route's terms.
+struct RoutePoint
+{
+    GeoPoint position;
+    double height = 0.0;
+    AltitudeType type = AltitudeType::Agl;
+    double speed = 0.0;
+    double acceptanceRadius = 0.0;
+    std::vector<MissionAction> actions;
+};
+
+// Puts the route's points into the mission, each height made relative to the vehicle's home.
+class MissionBuilder
+{
+public:
+    MissionBuilder(const Route &route, const VciHeights &heights) : m_route(route), m_heights(heights) {}
+
+    std::optional<GeoPoint> lastPosition() const
+    {
+        return m_lastPosition;
+    }
+
+    // Adds one segment's points; an AGL area tool (followTolerance set) follows the ground.
+    std::optional<MissionError> add(int row, const std::vector<RoutePoint> &points, std::optional<double> followTolerance)
+    {
+        if (points.empty())
+            return std::nullopt;
+        m_lastPosition = points.back().position;
+        if (followTolerance && canFollow(points) && follow(points, *followTolerance))
+            return std::nullopt;
+        for (const RoutePoint &p : points) {
+            const std::optional<double> altitude = aboveHome(p);
+            if (!altitude)
+                return at(row, QStringLiteral("an AMSL altitude needs the vehicle's home altitude, which it has not reported; "
+                                              "wait for its telemetry or use AGL"));
+            m_mission.items.push_back({p.position.latitude * kRad, p.position.longitude * kRad, *altitude, p.speed, p.acceptanceRadius, p.actions});
+        }
+        return std::nullopt;
+    }
+
+    VciMission finish()
+    {
+        if (m_levelGround > 0) {
+            const QString why = !m_heights.homeAmsl ? QStringLiteral("the vehicle has not reported its home")
+                              : !m_heights.elevation || m_heights.elevation->sourceCount() == 0
+                                  ? QStringLiteral("no terrain source is set")
+                                  : QStringLiteral("no ground is known under them (tried: %1)").arg(m_heights.elevation->triedText());
+            m_mission.notices << QStringLiteral("%1 point(s) fly their height above the ground as a height above home, right only over "
+                                                "level ground: %2")
+                                     .arg(m_levelGround)
+                                     .arg(why);
+        }
+        return std::move(m_mission);
+    }
+
+    MissionError at(int row, const QString &why) const
+    {
+        return missionError(QStringLiteral("%1: %2").arg(segmentLabel(m_route, row), why));
+    }
+
+private:
+    // The ground under a point, nullopt where unknown (noting a source still asking).
+    std::optional<double> ground(const GeoPoint &p)
+    {
+        if (!m_heights.elevation)
+            return std::nullopt;
+        const terrain::GroundSample g = m_heights.elevation->sample(p);
+        if (g.status == terrain::SampleStatus::Pending)
+            m_mission.waitingFor = m_heights.elevation->triedText();
+        return g.hasValue() ? std::optional<double>(g.ground) : std::nullopt;
+    }
+
+    // The point's height above home; nullopt for an AMSL height without the home's altitude.
+    std::optional<double> aboveHome(const RoutePoint &p)
+    {
+        if (p.type == AltitudeType::Amsl) {
+            if (!m_heights.homeAmsl)
+                return std::nullopt;
+            return p.height - *m_heights.homeAmsl;
+        }
+        if (m_heights.homeAmsl)
+            if (const std::optional<double> g = ground(p.position))
+                return *g + p.height - *m_heights.homeAmsl;
+        ++m_levelGround;
+        return p.height;
+    }
+
+    bool canFollow(const std::vector<RoutePoint> &points) const
+    {
+        if (!m_heights.elevation || !m_heights.homeAmsl)
+            return false;
+        for (const RoutePoint &p : points)
+            if (p.type != AltitudeType::Agl)
+                return false;
+        return true;
+    }
+
+    // The points with those terrain following adds between them (flying the leg's speed, no
+    // actions); false, leaving the mission as it was, where the ground is not known everywhere.
+    bool follow(const std::vector<RoutePoint> &points, double tolerance)
+    {
+        std::vector<terrain::FollowVertex> pass;
+        pass.reserve(points.size());
+        for (const RoutePoint &p : points)
+            pass.push_back({p.position, p.height});
+        terrain::FollowOptions options;
+        options.tolerance = tolerance;
+        options.probeStep = kFollowProbeStep;
+        const terrain::FollowResult followed = terrain::followTerrain(pass, options, *m_heights.elevation);
+        if (followed.status == terrain::SampleStatus::Pending)
+            m_mission.waitingFor = m_heights.elevation->triedText();
+        if (!followed.ok())
+            return false;
+        size_t next = 0;  // the vertex the next leg arrives at
+        for (const terrain::FollowPoint &f : followed.points) {
+            const RoutePoint &leg = points[f.vertex >= 0 ? size_t(f.vertex) : std::min(next, points.size() - 1)];
+            MissionItem item{f.position.latitude * kRad, f.position.longitude * kRad, f.altitudeAmsl - *m_heights.homeAmsl, leg.speed, 0, {}};
+            if (f.vertex >= 0) {
+                item.acceptanceRadius = leg.acceptanceRadius;
+                item.actions = leg.actions;
+                next = size_t(f.vertex) + 1;
+            }
+            m_mission.items.push_back(std::move(item));
+        }
+        return true;
+    }
+
+    // Probes every 10 m, as sortie-sim's processing does (SimRouteTerrain::kStep).
+    static constexpr double kFollowProbeStep = 10.0;
+
+    const Route &m_route;
+    const VciHeights &m_heights;
+    VciMission m_mission;
+    std::optional<GeoPoint> m_lastPosition;
+    int m_levelGround = 0;
+};
+
+// A waypoint as it is.
+Result<std::vector<RoutePoint>> waypointPoints(const Waypoint &w)
+{
+    RoutePoint p{w.position, w.altitude, w.altitudeType, w.speed, w.acceptanceRadius, {}};
+    for (const WaypointAction &a : w.actions) {
+        auto action = vciAction(a);
+        if (!action)
+            return action.error();
+        p.actions.push_back(*action);
+    }
+    if (w.role == WaypointRole::Land)
+        p.actions.push_back({QStringLiteral("land"), {}});
+    return std::vector<RoutePoint>{std::move(p)};
+}
+
+// Sortie's own area scan: its passes, the camera on from the first point to the last.
+Result<std::vector<RoutePoint>> scanPoints(const AreaScan &scan, ScanPlanCache *cache)
+{
+    AreaScanOutcome scratch;
+    const AreaScanOutcome &outcome = scanOutcome(scan, cache, scratch);
+    if (!outcome.ok() || outcome.plan->path.empty())
+        return missionError(outcome.message.isEmpty() ? QStringLiteral("cannot be planned") : outcome.message);
+    const AreaScanPlan &plan = *outcome.plan;
+    std::vector<RoutePoint> points;
+    points.reserve(plan.path.size());
+    for (const GeoPoint &p : plan.path)
+        points.push_back({p, plan.altitude, scan.parameters.altitudeType, scan.parameters.speed, 0, {}});
+    points.front().actions.push_back(seriesByDistance(plan.triggerDistance));
+    points.back().actions.push_back(seriesByDistance(0.0));
+    return points;
+}
+
+// Any other UgCS tool, planned as sortie-sim's ProcessRoute plans it: camera commands and the
+// segment's own actions where the plan runs them, a landing's "land".
+Result<std::vector<RoutePoint>> algorithmPoints(const AlgorithmSegment &segment, const Route &route, std::optional<GeoPoint> from)
+{
+    std::vector<MissionAction> own;
+    for (const WaypointAction &a : segment.actions) {
+        auto action = vciAction(a);
+        if (!action)
+            return action.error();
+        own.push_back(*action);
+    }
+    if (!AlgorithmCatalog::builtIn().byClassName(segment.algorithm))
+        return missionError(QStringLiteral("only a UgCS server that knows %1 can plan it, and a VCI vehicle flies planned points only")
+                                .arg(segment.algorithm));
+    PlanContext context = planContextOf(route.settings);
+    context.previousPosition = from;
+    const SegmentPlanOutcome outcome = planAlgorithmSegment(segment, AlgorithmCatalog::builtIn(), context);
+    if (!outcome.ok() || outcome.plan->points.empty()) {
+        const QStringList errors(outcome.errors.begin(), outcome.errors.end());
+        return missionError(errors.isEmpty() ? QStringLiteral("cannot be planned") : errors.join(QStringLiteral("; ")));
+    }
+    std::vector<RoutePoint> points;
+    points.reserve(outcome.plan->points.size());
+    for (const PlannedPoint &p : outcome.plan->points) {
+        RoutePoint point{p.position, p.height, p.frame == HeightFrame::Amsl ? AltitudeType::Amsl : AltitudeType::Agl,
+                         p.speed > 0 ? p.speed : route.settings.initialSpeed, 0, cameraActions(p)};
+        if (p.userActions)
+            point.actions.insert(point.actions.end(), own.begin(), own.end());
+        if (p.kind == PlannedPoint::Kind::Landing)
+            point.actions.push_back({QStringLiteral("land"), {}});
+        points.push_back(std::move(point));
+    }
+    return points;
 }
 
 } // namespace
 
-Result<std::vector<MissionItem>> missionItemsFor(const Route &route, ScanPlanCache *cache)
+Result<VciMission> vciMissionFor(const Route &route, const VciHeights &heights, ScanPlanCache *cache)
 {
-    std::vector<MissionItem> items;
+    MissionBuilder builder(route, heights);
     for (size_t row = 0; row < route.segments.size(); ++row) {
         const Segment &segment = route.segments[row];
-        if (const Waypoint *w = asWaypoint(segment)) {
-            if (w->altitudeType != AltitudeType::Agl)
-                return at(route, int(row), QStringLiteral("an AMSL altitude cannot be flown by a VCI vehicle, which flies above home; use AGL"));
-            MissionItem item{w->position.latitude * kRad, w->position.longitude * kRad, w->altitude, w->speed, w->acceptanceRadius, {}};
-            for (const WaypointAction &a : w->actions) {
-                auto action = vciAction(a);
-                if (!action)
-                    return at(route, int(row), action.error().message);
-                item.actions.push_back(*action);
-            }
-            if (w->role == WaypointRole::Land)
-                item.actions.push_back({QStringLiteral("land"), {}});
-            items.push_back(std::move(item));
-            continue;
-        }
-        const AreaScan &scan = std::get<AreaScan>(segment);
-        if (scan.parameters.altitudeType != AltitudeType::Agl)
-            return at(route, int(row), QStringLiteral("an AMSL altitude cannot be flown by a VCI vehicle, which flies above home; use AGL"));
-        AreaScanOutcome scratch;
-        const AreaScanOutcome &outcome = scanOutcome(scan, cache, scratch);
-        if (!outcome.ok() || outcome.plan->path.empty())
-            return at(route, int(row), outcome.message.isEmpty() ? QStringLiteral("cannot be planned") : outcome.message);
-        const AreaScanPlan &plan = *outcome.plan;
-        const size_t first = items.size();
-        for (const GeoPoint &p : plan.path)
-            items.push_back({p.latitude * kRad, p.longitude * kRad, plan.altitude, scan.parameters.speed, 0, {}});
-        items[first].actions.push_back({QStringLiteral("camera_by_distance"), {{QStringLiteral("interval"), plan.triggerDistance},
-                                                                              {QStringLiteral("shots"), 0},
-                                                                              {QStringLiteral("delay"), 0.0}}});
-        items.back().actions.push_back({QStringLiteral("camera_by_distance"), {{QStringLiteral("interval"), 0.0},
-                                                                              {QStringLiteral("shots"), 0},
-                                                                              {QStringLiteral("delay"), 0.0}}});
+        Result<std::vector<RoutePoint>> points = missionError(QStringLiteral("cannot be planned"));
+        if (const Waypoint *w = asWaypoint(segment))
+            points = waypointPoints(*w);
+        else if (const AreaScan *scan = std::get_if<AreaScan>(&segment))
+            points = scanPoints(*scan, cache);
+        else if (const AlgorithmSegment *a = asAlgorithmSegment(segment))
+            points = algorithmPoints(*a, route, builder.lastPosition());
+        if (!points)
+            return builder.at(int(row), points.error().message);
+        if (auto error = builder.add(int(row), *points, terrain::terrainFollowTolerance(segment)))
+            return *error;
     }
-    if (items.empty())
+    VciMission mission = builder.finish();
+    if (mission.items.empty())
         return missionError(QStringLiteral("the route has no waypoints to fly"));
-    return items;
+    return mission;
 }
 
 namespace {

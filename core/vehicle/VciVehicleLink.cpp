@@ -1,5 +1,6 @@
 #include "VciVehicleLink.h"
 
+#include "ElevationService.h"
 #include "MissionItems.h"
 #include "Route.h"
 #include "VciProfile.h"
@@ -7,6 +8,7 @@
 
 #include <QDateTime>
 #include <QRegularExpression>
+#include <QTimer>
 
 namespace sortie::vehicle {
 namespace {
@@ -71,9 +73,10 @@ QString stringField(const json &body, const char *key)
 
 } // namespace
 
-VciVehicleLink::VciVehicleLink(const vci::VciEndpoint &endpoint, QObject *parent)
+VciVehicleLink::VciVehicleLink(const vci::VciEndpoint &endpoint, terrain::ElevationService *elevation, QObject *parent)
     : VehicleLink(parent)
     , m_endpoint(endpoint)
+    , m_elevation(elevation)
     , m_transport(endpoint)
 {
     m_identity.id = endpoint.toString();
@@ -211,16 +214,47 @@ void VciVehicleLink::goTo(double latitude, double longitude, double altitude, do
 
 void VciVehicleLink::prepareMission(const mission::Route &route, PrepareDone done)
 {
-    // Nothing to ask the vehicle: the route is expanded here, and the answer still comes later.
-    auto items = missionItemsFor(route);
-    QMetaObject::invokeMethod(this, [done, items = std::move(items)] {
-        if (!done)
+    // Heights go up as heights above the vehicle's home: ask it where that is, then plan.
+    m_connection.get(q(profile::kHome), this, [this, route, done](const vci::VciResult &result) {
+        std::optional<double> homeAmsl;
+        if (result.ok() && result.body.is_object())
+            if (const auto it = result.body.find("altitudeAmsl"); it != result.body.end() && it->is_number())
+                homeAmsl = it->get<double>();
+        planMission(route, homeAmsl, done, QDeadlineTimer(kTerrainWaitMs));
+    });
+}
+
+void VciVehicleLink::planMission(const mission::Route &route, std::optional<double> homeAmsl, PrepareDone done, QDeadlineTimer deadline)
+{
+    auto mission = vciMissionFor(route, {m_elevation.data(), homeAmsl});
+    if (mission && !mission->waitingFor.isEmpty() && m_elevation) {
+        if (deadline.hasExpired()) {
+            if (done)
+                done(CommandResult::failure(QStringLiteral("the ground under the route did not arrive from %1 in %2 s")
+                                                .arg(mission->waitingFor)
+                                                .arg(kTerrainWaitMs / 1000)),
+                     {});
             return;
-        if (!items)
-            done(CommandResult::failure(items.error().message), {});
-        else
-            done(CommandResult::success(), PreparedMission{*items, {}, {}});
-    }, Qt::QueuedConnection);
+        }
+        // Plan again once a source has more of the ground (or when the wait is over).
+        auto *waiting = new QObject(this);
+        auto again = [this, waiting, route, homeAmsl, done, deadline] {
+            if (waiting->property("done").toBool())
+                return;
+            waiting->setProperty("done", true);
+            waiting->deleteLater();
+            planMission(route, homeAmsl, done, deadline);
+        };
+        connect(m_elevation, &terrain::ElevationService::changed, waiting, again, Qt::QueuedConnection);
+        QTimer::singleShot(std::max<qint64>(0, deadline.remainingTime()), waiting, again);
+        return;
+    }
+    if (!done)
+        return;
+    if (!mission)
+        done(CommandResult::failure(mission.error().message), {});
+    else
+        done(CommandResult::success(), PreparedMission{std::move(mission->items), std::move(mission->notices), {}});
 }
 
 void VciVehicleLink::uploadMission(const PreparedMission &mission, UploadObserver observer, Done done)

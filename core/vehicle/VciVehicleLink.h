@@ -5,17 +5,28 @@
 #include "VciTransport.h"
 #include "VehicleLink.h"
 
+#include <QDeadlineTimer>
+#include <QPointer>
+
+#include <optional>
+
+namespace sortie::terrain {
+class ElevationService;
+} // namespace sortie::terrain
+
 namespace sortie::vehicle {
 
 // A vehicle reached directly over VCI (TCP or a serial line). It keeps the line open (VciTransport
 // reconnects), subscribes to every telemetry and state resource of Sortie's profile (restored after
 // each reconnect), turns NOTIFYs into normalised telemetry, reads the identity from /vehicle and
-// maps each command to its PUT (docs/vci-profile.md).
+// maps each command to its PUT (docs/vci-profile.md). A route is planned here (vciMissionFor), its
+// heights made relative to the home the vehicle reports, over the ground `elevation` knows.
 class VciVehicleLink : public VehicleLink
 {
     Q_OBJECT
 public:
-    explicit VciVehicleLink(const vci::VciEndpoint &endpoint, QObject *parent = nullptr);
+    // `elevation` (not owned, may be nullptr) gives the ground under the points of uploaded routes.
+    explicit VciVehicleLink(const vci::VciEndpoint &endpoint, terrain::ElevationService *elevation = nullptr, QObject *parent = nullptr);
     ~VciVehicleLink() override;
 
     vci::VciConnection *connection() { return &m_connection; }
@@ -48,9 +59,14 @@ private:
     void onNotified(const QString &uri, const nlohmann::json &body);
     void put(std::string_view uri, const nlohmann::json &body, Done done);
     void setState(State state);
+    void planMission(const mission::Route &route, std::optional<double> homeAmsl, PrepareDone done, QDeadlineTimer deadline);
     static CommandResult toCommandResult(const vci::VciResult &result);
 
+    // How long an upload waits for terrain data a source is still fetching.
+    static constexpr int kTerrainWaitMs = 20000;
+
     vci::VciEndpoint m_endpoint;
+    QPointer<terrain::ElevationService> m_elevation;
     vci::VciTransport m_transport;
     vci::VciConnection m_connection;
     VehicleIdentity m_identity;

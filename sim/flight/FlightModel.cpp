@@ -229,10 +229,13 @@ void FlightModel::turnTowards(double bearing, double dt)
     m_state.heading = wrap360(m_state.heading + std::clamp(delta, -step, step));
 }
 
-void FlightModel::climbTo(double altAgl, double dt)
+void FlightModel::climbTo(double altAgl, double dt, double timeToGo)
 {
+    // Spread over the time left to the waypoint, as autopilots slide the height along a leg: the
+    // vehicle flies the straight line the plan drew (within its climb and descent rates).
     const double diff = altAgl - m_state.altitudeAgl;
-    const double rate = diff > 0 ? std::min(m_limits.climbRate, diff / dt) : std::max(-m_limits.descentRate, diff / dt);
+    const double wanted = diff / std::max(dt, timeToGo);
+    const double rate = diff > 0 ? std::min(m_limits.climbRate, wanted) : std::max(-m_limits.descentRate, wanted);
     m_state.verticalSpeed = rate;
     m_state.altitudeAgl = std::max(0.0, m_state.altitudeAgl + rate * dt);
 }
@@ -241,7 +244,7 @@ bool FlightModel::flyTowards(double lat, double lon, double altAgl, double speed
 {
     const double distance = sphericalDistance(m_state.latitude, m_state.longitude, lat, lon);
     const double cruise = std::min(speed > 0 ? speed : m_limits.cruiseSpeed, m_limits.maxSpeed);
-    climbTo(altAgl, dt);
+    climbTo(altAgl, dt, distance / cruise);
     if (distance > 0.01) {
         const double bearing = sphericalBearing(m_state.latitude, m_state.longitude, lat, lon);
         turnTowards(bearing, dt);

@@ -91,7 +91,7 @@ public:
 
 private:
     bool flyTowards(double lat, double lon, double altAgl, double speed, double dt, double radius = 0); // true when arrived
-    void climbTo(double altAgl, double dt);
+    void climbTo(double altAgl, double dt, double timeToGo = 0); // timeToGo: seconds to the waypoint, 0 for at once
     void turnTowards(double bearing, double dt);
 
     Limits m_limits;

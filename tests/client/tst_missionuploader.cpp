@@ -324,7 +324,10 @@ private slots:
                                     QStringLiteral("mode auto=done")}));
     }
 
-    void vciRefusalNamesTheWaypoint()
+    // A VCI vehicle flies heights above its home: AMSL ones go up less the home's altitude (the
+    // vehicle's own /telemetry/home); what has no VCI form is refused naming the waypoint, before
+    // anything is sent.
+    void vciHeightsAboveHomeAndRefusalNamesTheWaypoint()
     {
         sim::SimVciVehicle simVehicle(sim::SimVciOptions{});
         sim::SimVciListener listener(&simVehicle);
@@ -332,21 +335,29 @@ private slots:
         QVERIFY(m_op->fleet.addVciVehicle(QStringLiteral("tcp://127.0.0.1:%1").arg(listener.port())));
         vehicle::Vehicle *v = m_op->fleet.vehicleAt(m_op->fleet.count() - 1);
         QTRY_VERIFY_WITH_TIMEOUT(v->isConnected(), 10000);
-        // AMSL altitudes have no VCI form: refused while processing, before anything is sent.
         mission::Route route = goodRoute();
-        auto &second = std::get<mission::Waypoint>(route.segments[1]);
-        second.altitudeType = mission::AltitudeType::Amsl;
-        second.altitude = 60;
         for (auto &s : route.segments)
             std::get<mission::Waypoint>(s).altitudeType = mission::AltitudeType::Amsl; // one type: no mixed-type warning
+        std::get<mission::Waypoint>(route.segments[1]).altitude = 60;
         QSignalSpy finished(&m_op->uploader, &MissionUploader::finished);
         QVERIFY(m_op->uploader.start(route, v));
         if (m_op->uploader.state() == State::AwaitingConfirmation) // AMSL altitudes cannot be checked: a warning
             m_op->uploader.confirm();
         QVERIFY(finished.wait(10000));
+        QCOMPARE(m_op->uploader.state(), State::Done);
+        const double homeAmsl = sim::SimVciOptions{}.groundElevation;
+        QCOMPARE(simVehicle.model().mission().size(), route.segments.size());
+        QCOMPARE(simVehicle.model().mission()[1].altitudeAgl, 60 - homeAmsl);
+
+        // A wait for the operator cannot be released on a vehicle flying alone.
+        std::get<mission::Waypoint>(route.segments[1]).actions = {mission::WaitAction{0, true}};
+        QVERIFY(m_op->uploader.start(route, v));
+        if (m_op->uploader.state() == State::AwaitingConfirmation)
+            m_op->uploader.confirm();
+        QVERIFY(finished.wait(10000));
         QCOMPARE(m_op->uploader.state(), State::Failed);
-        QVERIFY2(m_op->uploader.message().contains(QLatin1String("Waypoint 1: an AMSL altitude")), qPrintable(m_op->uploader.message()));
-        QVERIFY(simVehicle.model().mission().empty());
+        QVERIFY2(m_op->uploader.message().contains(QLatin1String("Waypoint 2: a wait for the operator")), qPrintable(m_op->uploader.message()));
+        QCOMPARE(simVehicle.model().mission()[1].altitudeAgl, 60 - homeAmsl);  // the mission before stays
     }
 };
 

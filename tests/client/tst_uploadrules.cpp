@@ -2,7 +2,10 @@
 // the culprit, warnings and unsaved edits asked once), the save gate, the command policy, a route as
 // the waypoints a VCI vehicle flies, the read-back comparison, the VCI mission codec with actions,
 // and the command log.
+#include "AlgorithmCatalog.h"
+#include "AlgorithmSegment.h"
 #include "AreaScan.h"
+#include "Geodesy.h"
 #include "CommandLog.h"
 #include "CommandPolicy.h"
 #include "MissionItems.h"
@@ -148,8 +151,15 @@ private slots:
                      mission::CameraSeriesByDistanceAction{15, 0, 0}, mission::PanoramaAction{}};
         mission::Waypoint land = waypoint(56.952, 24.10, 20);
         land.role = mission::WaypointRole::Land;
-        auto items = vehicle::missionItemsFor(route({a, b, land}));
-        QVERIFY2(items, qPrintable(items ? QString() : items.error().message));
+        auto mission = vehicle::vciMissionFor(route({a, b, land}));
+        QVERIFY2(mission, qPrintable(mission ? QString() : mission.error().message));
+        // Without the home's altitude and the ground, AGL heights fly above home, and the operator is told.
+        QCOMPARE(mission->notices.size(), 1);
+        QVERIFY2(mission->notices.front().startsWith(QLatin1String("3 point(s) fly their height above the ground as a height above home")),
+                 qPrintable(mission->notices.front()));
+        QVERIFY(mission->notices.front().contains(QLatin1String("the vehicle has not reported its home")));
+        QVERIFY(mission->waitingFor.isEmpty());
+        const std::vector<MissionItem> *items = &mission->items;
         QCOMPARE(items->size(), size_t(3));
         QCOMPARE((*items)[0].latitude, 56.95 * kRad);
         QCOMPARE((*items)[1].acceptanceRadius, 4.0);
@@ -164,34 +174,122 @@ private slots:
         mission::CameraControlAction tiltOnly;
         tiltOnly.tiltDeg = 90;
         gimbal.actions = {tiltOnly};
-        items = vehicle::missionItemsFor(route({gimbal}));
-        QVERIFY(items);
+        mission = vehicle::vciMissionFor(route({gimbal}));
+        QVERIFY(mission);
+        items = &mission->items;
         QCOMPARE((*items)[0].actions.front(), (MissionAction{QStringLiteral("gimbal"), {{QStringLiteral("tilt"), 90 * kRad}}}));
 
         // What has no VCI form is refused, naming the waypoint.
         mission::Waypoint amsl = b;
         amsl.altitudeType = mission::AltitudeType::Amsl;
-        auto refused = vehicle::missionItemsFor(route({a, amsl}));
+        auto refused = vehicle::vciMissionFor(route({a, amsl}));
         QVERIFY(!refused);
-        QVERIFY2(refused.error().message.startsWith(QLatin1String("Waypoint 2: an AMSL altitude")), qPrintable(refused.error().message));
+        QVERIFY2(refused.error().message.startsWith(QLatin1String("Waypoint 2: an AMSL altitude needs the vehicle's home altitude")),
+                 qPrintable(refused.error().message));
+        // With the home's altitude, AMSL is flown above it; AGL still needs the ground.
+        auto withHome = vehicle::vciMissionFor(route({a, amsl}), {nullptr, 15.0});
+        QVERIFY(withHome);
+        QCOMPARE(withHome->items[1].altitude, 40.0 - 15.0);
+        QCOMPARE(withHome->items[0].altitude, 30.0);
+        QVERIFY(withHome->notices.front().startsWith(QLatin1String("1 point(s)")));
+        QVERIFY(withHome->notices.front().contains(QLatin1String("no terrain source is set")));
         mission::Waypoint operatorWait = a;
         operatorWait.actions = {mission::WaitAction{0, true}};
-        refused = vehicle::missionItemsFor(route({operatorWait}));
+        refused = vehicle::vciMissionFor(route({operatorWait}));
         QVERIFY(!refused);
         QVERIFY(refused.error().message.startsWith(QLatin1String("Waypoint 1: a wait for the operator")));
-        QVERIFY(!vehicle::missionItemsFor(route({})));
+        QVERIFY(!vehicle::vciMissionFor(route({})));
 
         // An area scan becomes its passes, the camera on from the first point to the last.
         mission::AreaScan scan;
         scan.polygon = {{56.950, 24.100}, {56.950, 24.104}, {56.952, 24.104}, {56.952, 24.100}};
         scan.parameters.altitude = 60;
-        items = vehicle::missionItemsFor(route({a, scan}));
-        QVERIFY2(items, qPrintable(items ? QString() : items.error().message));
+        mission = vehicle::vciMissionFor(route({a, scan}));
+        QVERIFY2(mission, qPrintable(mission ? QString() : mission.error().message));
+        items = &mission->items;
         QVERIFY(items->size() > 5);
         QCOMPARE((*items)[1].actions.front().type, QStringLiteral("camera_by_distance"));
         QVERIFY((*items)[1].actions.front().parameters.value(QStringLiteral("interval")).toDouble() > 0);
         QCOMPARE(items->back().actions.front().parameters.value(QStringLiteral("interval")).toDouble(), 0.0);
         QCOMPARE(items->back().altitude, 60.0);
+    }
+
+    // Every UgCS tool becomes the points sortie-sim's processing plans for it (a VCI vehicle has no
+    // server): an orbit on its radius, the photo tools' camera series, a landing's "land". Before,
+    // anything but a waypoint or Sortie's area scan threw out of the upload.
+    void everySegmentKindAsVciWaypoints()
+    {
+        using namespace sortie::mission;
+        const GeoPoint a{56.95, 24.10}, b{56.95, 24.104}, c{56.952, 24.104}, d{56.952, 24.10};
+        int planned = 0;
+        for (const AlgorithmDefinition &def : AlgorithmCatalog::builtIn().algorithms()) {
+            if (def.kind == AlgorithmKind::Waypoint || def.kind == AlgorithmKind::AreaScan)
+                continue;  // typed segments, above
+            AlgorithmSegment seg;
+            seg.algorithm = def.className;
+            seg.figure = def.figure;
+            const std::vector<GeoPoint> corners = def.figure == FigureType::Polygon ? std::vector{a, b, c, d}
+                                                : def.figure == FigureType::Polyline ? std::vector{a, c} : std::vector{a};
+            for (const GeoPoint &g : corners)
+                seg.points.push_back({g, 40.0, AltitudeType::Agl});
+            if (def.figure == FigureType::Circle)
+                seg.figureParameters = {35.5};
+            for (const ParameterDefinition &p : def.parameters)
+                if (!p.defaultValue.isEmpty())
+                    seg.parameters.push_back({p.name, p.defaultValue});
+            if (def.parameter(u"camera"))
+                seg.setValue(QStringLiteral("camera"), QStringLiteral("Sony RX1R II"));
+            seg.actions = {WaitAction{2, false}};
+            const Route r = route({waypoint(56.949, 24.10, 30), seg});
+            const auto mission = vehicle::vciMissionFor(r);
+            QVERIFY2(mission, qPrintable(def.displayName + QStringLiteral(": ") + (mission ? QString() : mission.error().message)));
+            const std::vector<MissionItem> &items = mission->items;
+            QVERIFY2(items.size() >= 2, qPrintable(def.displayName));
+            const SegmentPlanOutcome expected = planAlgorithmSegment(seg, AlgorithmCatalog::builtIn(), [&] {
+                PlanContext context = planContextOf(r.settings);
+                context.previousPosition = GeoPoint{56.949, 24.10};
+                return context;
+            }());
+            QVERIFY(expected.ok());
+            QCOMPARE(items.size(), 1 + expected.plan->points.size());
+            int waits = 0;
+            for (size_t i = 1; i < items.size(); ++i) {
+                const PlannedPoint &p = expected.plan->points[i - 1];
+                QCOMPARE(items[i].latitude, p.position.latitude * kRad);
+                QCOMPARE(items[i].altitude, p.height);
+                for (const MissionAction &action : items[i].actions)
+                    waits += action.type == QLatin1String("wait");
+                if (p.kind == PlannedPoint::Kind::Landing)
+                    QCOMPARE(items[i].actions.back().type, QStringLiteral("land"));
+            }
+            QVERIFY2(waits >= 1, qPrintable(def.displayName));  // the segment's own action, where the plan runs it
+            if (def.kind == AlgorithmKind::Circle) {
+                for (size_t i = 1; i < items.size(); ++i) {
+                    const GeoPoint at{items[i].latitude / kRad, items[i].longitude / kRad};
+                    QVERIFY(std::abs(geodesicDistance(a, at) - 35.5) < 1.0);
+                }
+            }
+            if (def.kind == AlgorithmKind::Photogrammetry) {
+                QCOMPARE(items[1].actions.front(), (MissionAction{QStringLiteral("gimbal"), {{QStringLiteral("tilt"), 90 * kRad},
+                                                                                             {QStringLiteral("roll"), 0.0},
+                                                                                             {QStringLiteral("yaw"), 0.0}}}));
+                bool series = false;
+                for (const MissionItem &item : items)
+                    for (const MissionAction &action : item.actions)
+                        series |= action.type == QLatin1String("camera_by_distance")
+                                  && action.parameters.value(QStringLiteral("interval")).toDouble() > 0;
+                QVERIFY(series);
+            }
+            ++planned;
+        }
+        QVERIFY(planned >= 9);
+        // A tool Sortie does not know cannot be planned here: refused, naming it.
+        AlgorithmSegment unknown;
+        unknown.algorithm = QStringLiteral("com.example.SpiralAlgorithm");
+        unknown.points = {{a, 30, AltitudeType::Agl}};
+        const auto refused = vehicle::vciMissionFor(route({waypoint(56.949, 24.10, 30), unknown}));
+        QVERIFY(!refused);
+        QVERIFY2(refused.error().message.startsWith(QLatin1String("Spiral 2: only a UgCS server that knows com.example.SpiralAlgorithm can plan it")), qPrintable(refused.error().message));
     }
 
     void readBackComparison()

@@ -317,17 +317,20 @@ private slots:
         FormulaSource hill(QStringLiteral("hill"), height);
         ElevationService service;
         service.setSources({&hill});
-        const std::vector<GeoPoint> pass{{56.9, 24.0}, {56.9, 24.02}};
+        const std::vector<FollowVertex> pass{{{56.9, 24.0}, 30}, {{56.9, 24.02}, 30}};
         FollowOptions options;
-        options.altitudeAgl = 30;
         options.tolerance = 3;
         const FollowResult r = followTerrain(pass, options, service);
         QVERIFY(r.ok());
         QVERIFY(r.points.size() > 4);
-        QCOMPARE(r.points.front().position, pass.front());
-        QCOMPARE(r.points.back().position, pass.back());
+        QCOMPARE(r.points.front().position, pass.front().position);
+        QCOMPARE(r.points.back().position, pass.back().position);
+        QCOMPARE(r.points.front().vertex, 0);
+        QCOMPARE(r.points.back().vertex, 1);
+        for (size_t i = 1; i + 1 < r.points.size(); ++i)
+            QCOMPARE(r.points[i].vertex, -1);
         // Between consecutive points, the straight climb stays within 3 m of 30 m above the ground.
-        const SampledPath probes = samplePath(pass, 2.0);
+        const SampledPath probes = samplePath({pass.front().position, pass.back().position}, 2.0);
         size_t k = 0;
         for (const PathSamplePoint &pp : probes.points) {
             while (k + 1 < r.points.size() - 1 && r.points[k + 1].position.longitude < pp.position.longitude)
@@ -341,6 +344,20 @@ private slots:
         FormulaSource flat(QStringLiteral("flat"), [](const GeoPoint &) { return 5.0; });
         service.setSources({&flat});
         QCOMPARE(followTerrain(pass, options, service).points.size(), size_t(2));
+        // A pass that climbs from 30 m to 50 m above flat ground: an added point wants the height between.
+        FormulaSource ridge(QStringLiteral("ridge"), [](const GeoPoint &p) { return p.longitude > 24.0099 && p.longitude < 24.0101 ? 80.0 : 5.0; });
+        service.setSources({&ridge});
+        const FollowResult climbing = followTerrain({{{56.9, 24.0}, 30}, {{56.9, 24.02}, 50}}, options, service);
+        QVERIFY(climbing.ok());
+        QCOMPARE(climbing.points.front().altitudeAmsl, 35.0);
+        QCOMPARE(climbing.points.back().altitudeAmsl, 55.0);
+        bool onRidge = false;
+        for (const FollowPoint &p : climbing.points)
+            if (p.ground == 80.0) {
+                onRidge = true;
+                QVERIFY(std::abs(p.altitudeAmsl - 80.0 - 40.0) < 0.5);  // halfway: 40 m wanted
+            }
+        QVERIFY(onRidge);
         NoElevationSource none;
         service.setSources({&none});
         const FollowResult refused = followTerrain(pass, options, service);

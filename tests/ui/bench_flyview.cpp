@@ -58,7 +58,7 @@ struct Fleet
             std::vector<vehicle::MissionItem> mission;
             for (int w = 0; w < 50; ++w) // a lawnmower of 50 waypoints around the vehicle's own patch
                 mission.push_back({(56.93 + (i % 5) * 0.01 + (w / 2) * 0.0004) * kRad,
-                                   (24.05 + (i / 5) * 0.02 + ((w / 2 + w) % 2) * 0.008) * kRad, 40, 8});
+                                   (24.05 + (i / 5) * 0.02 + ((w / 2 + w) % 2) * 0.008) * kRad, 40, 8, 0, {}});
             v->setMission(std::move(mission));
             auto *item = new QStandardItem;
             item->setData(QVariant::fromValue<QObject *>(v.get()), VehicleRole);

@@ -31,7 +31,7 @@ constexpr double kRad = std::numbers::pi / 180.0;
 
 vehicle::MissionItem waypoint(double latDeg, double lonDeg)
 {
-    return {latDeg * kRad, lonDeg * kRad, 30, 5};
+    return {latDeg * kRad, lonDeg * kRad, 30, 5, 0, {}};
 }
 
 // Where the vehicle is (degrees), its home, and anything else, at `time` ms.

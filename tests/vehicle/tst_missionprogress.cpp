@@ -15,7 +15,7 @@ constexpr double kMilliDegree = 6371007.2 * kRad * 0.001;
 
 MissionItem at(double latDeg, double lonDeg, double speed = 0)
 {
-    return {latDeg * kRad, lonDeg * kRad, 30, speed};
+    return {latDeg * kRad, lonDeg * kRad, 30, speed, 0, {}};
 }
 } // namespace
 
