@@ -3,6 +3,8 @@
 // mid-upload) and a simulated VCI vehicle (PUT, read back with GET, then flown on auto). Every upload
 // and command lands in the fleet's command log.
 #include "ConnectionController.h"
+#include "ElevationService.h"
+#include "ElevationSetup.h"
 #include "HciClient.h"
 #include "HciReply.h"
 #include "MissionUploader.h"
@@ -41,14 +43,17 @@ mission::Route goodRoute()
     return r;
 }
 
-// One operator with a fleet: the server's vehicles, and VCI vehicles added by address.
+// One operator with a fleet: the server's vehicles, and VCI vehicles added by address, which take
+// the ground under their routes from the server, as the program sets it up.
 struct Operator
 {
     Operator(const QString &address, const QString &user, const QString &password)
         : client(&session)
         , connection(&session)
-        , fleet(&client)
+        , elevation(&session)
+        , fleet(&client, elevation.service())
     {
+        elevation.configure(QString());
         uploader.setCommandLog(fleet.commandLog());
         QSignalSpy ready(&connection, &client::ConnectionController::ready);
         connection.connectToServer(address, user, password);
@@ -65,6 +70,7 @@ struct Operator
     hci::HciSession session;
     hci::HciClient client;
     client::ConnectionController connection;
+    terrain::ElevationSetup elevation;
     VehicleFleet fleet;
     MissionUploader uploader;
     bool ok = false;
@@ -324,8 +330,8 @@ private slots:
                                     QStringLiteral("mode auto=done")}));
     }
 
-    // A VCI vehicle flies heights above its home: AMSL ones go up less the home's altitude (the
-    // vehicle's own /telemetry/home); what has no VCI form is refused naming the waypoint, before
+    // A VCI vehicle flies heights above its home (the vehicle's own /telemetry/home): AGL ones go up
+    // through the ground under them (from the server here), AMSL ones less the home's altitude; what has no VCI form is refused naming the waypoint, before
     // anything is sent.
     void vciHeightsAboveHomeAndRefusalNamesTheWaypoint()
     {
@@ -335,17 +341,26 @@ private slots:
         QVERIFY(m_op->fleet.addVciVehicle(QStringLiteral("tcp://127.0.0.1:%1").arg(listener.port())));
         vehicle::Vehicle *v = m_op->fleet.vehicleAt(m_op->fleet.count() - 1);
         QTRY_VERIFY_WITH_TIMEOUT(v->isConnected(), 10000);
+        const double homeAmsl = sim::SimVciOptions{}.groundElevation;
+        QSignalSpy finished(&m_op->uploader, &MissionUploader::finished);
+        // AGL: the ground under each waypoint comes from the server (asked while the upload waits).
         mission::Route route = goodRoute();
+        QVERIFY(m_op->uploader.start(route, v));
+        QVERIFY(finished.wait(10000));
+        QCOMPARE(m_op->uploader.state(), State::Done);
+        QVERIFY2(!m_op->uploader.message().contains(QLatin1String("Note:")), qPrintable(m_op->uploader.message()));
+        const std::optional<double> ground = m_op->elevation.service()->groundAt(std::get<mission::Waypoint>(route.segments[1]).position);
+        QVERIFY(ground);
+        QCOMPARE(simVehicle.model().mission()[1].altitudeAgl, *ground + 35 - homeAmsl);
+
         for (auto &s : route.segments)
             std::get<mission::Waypoint>(s).altitudeType = mission::AltitudeType::Amsl; // one type: no mixed-type warning
         std::get<mission::Waypoint>(route.segments[1]).altitude = 60;
-        QSignalSpy finished(&m_op->uploader, &MissionUploader::finished);
         QVERIFY(m_op->uploader.start(route, v));
         if (m_op->uploader.state() == State::AwaitingConfirmation) // AMSL altitudes cannot be checked: a warning
             m_op->uploader.confirm();
         QVERIFY(finished.wait(10000));
         QCOMPARE(m_op->uploader.state(), State::Done);
-        const double homeAmsl = sim::SimVciOptions{}.groundElevation;
         QCOMPARE(simVehicle.model().mission().size(), route.segments.size());
         QCOMPARE(simVehicle.model().mission()[1].altitudeAgl, 60 - homeAmsl);
 
