@@ -370,6 +370,26 @@ private slots:
         QVERIFY(values.last() > values.first());
         QTRY_VERIFY2(text("missionMessage").startsWith(QStringLiteral("Uploaded to EMU-101: ")), qPrintable(text("missionMessage")));
     }
+    // The demo route to a VCI vehicle: planned in the client, its heights made relative to the
+    // vehicle's home; without a terrain source the result says its AGL heights fly above home.
+    void uploadToAVciVehicleSaysHowHeightsGoUp()
+    {
+        openDemoRoute();
+        QVERIFY(m_fleet->addVciVehicle(QStringLiteral("tcp://127.0.0.1:%1").arg(m_vci->listeners().front()->port())));
+        QObject *vehicles = find<QObject>("vehiclePicker");
+        QTRY_COMPARE(vehicles->property("count").toInt(), 4);
+        QTRY_COMPARE_WITH_TIMEOUT(m_fleet->index(3).data(client::VehicleFleet::LinkStateRole).toString(), QStringLiteral("Connected"), 10000);
+        vehicles->setProperty("currentIndex", 3);
+        QSignalSpy uploaded(m_missions.get(), &client::MissionController::uploaded);
+        click("uploadButton");
+        QVERIFY2(uploaded.wait(20000), qPrintable(text("missionMessage")));
+        QTRY_VERIFY2(text("missionMessage").contains(QStringLiteral("fly their height above the ground as a height above home")),
+                     qPrintable(text("missionMessage")));
+        QVERIFY(text("missionMessage").contains(QStringLiteral("no terrain source is set")));
+        if (qEnvironmentVariableIsSet("SORTIE_SCREENSHOT_DIR"))
+            m_window->grabWindow().save(QDir(qEnvironmentVariable("SORTIE_SCREENSHOT_DIR")).filePath(QStringLiteral("vci-upload.png")));
+    }
+
     void actionsAtAWaypoint()
     {
         openDemoRoute();
