@@ -4,6 +4,7 @@
 // under each point, and an AGL area scan follows the hill it crosses (points added within its
 // tolerance) — checked on the mission the vehicle holds and on the height it flies.
 #include "AreaScan.h"
+#include "CommandCatcher.h"
 #include "ElevationService.h"
 #include "HgtTileSource.h"
 #include "HgtWriter.h"
@@ -231,18 +232,7 @@ private slots:
     }
 
 private:
-    struct Result
-    {
-        bool done = false;
-        CommandResult result;
-        VehicleLink::Done callback()
-        {
-            return [this](const CommandResult &r) {
-                done = true;
-                result = r;
-            };
-        }
-    };
+    using Result = test::CommandCatcher;
 
     // The tiles behind a source that answers Pending until told to answer.
     class SlowSource : public terrain::ElevationSource

@@ -1,6 +1,7 @@
 // HciVehicleLink + Vehicle against the simulated UgCS server: telemetry, commands under the vehicle
 // lock, mission upload through route processing, another operator's lock; the HCI telemetry mapping;
 // and one model for both protocols (the same fields filled, in the same units, by HCI and by VCI).
+#include "CommandCatcher.h"
 #include "HciClient.h"
 #include "HciReply.h"
 #include "HciServer.h"
@@ -74,18 +75,7 @@ struct Operator
     hci::HciClient client;
 };
 
-struct Result
-{
-    bool done = false;
-    CommandResult result;
-    VehicleLink::Done callback()
-    {
-        return [this](const CommandResult &r) {
-            done = true;
-            result = r;
-        };
-    }
-};
+using Result = test::CommandCatcher;
 
 pb::Telemetry telemetry(const char *code, pb::Semantic semantic, pb::Subsystem subsystem = pb::S_FLIGHT_CONTROLLER)
 {

@@ -1,5 +1,6 @@
 // VciVehicleLink + Vehicle against a simulated VCI vehicle, over TCP and over a pseudo-terminal:
 // everything the profile offers, seen through the protocol-independent model.
+#include "CommandCatcher.h"
 #include "SimVciListener.h"
 #include "SimVciVehicle.h"
 #include "VciVehicleLink.h"
@@ -15,18 +16,7 @@ namespace {
 
 constexpr double kRad = 3.14159265358979323846 / 180;
 
-struct Result
-{
-    bool done = false;
-    CommandResult result;
-    VehicleLink::Done callback()
-    {
-        return [this](const CommandResult &r) {
-            done = true;
-            result = r;
-        };
-    }
-};
+using Result = test::CommandCatcher;
 
 } // namespace
 
