@@ -1,6 +1,6 @@
 #include "MissionUploader.h"
 
-#include "MissionItems.h"
+#include "MissionDifference.h"
 #include "VehicleLog.h"
 
 #include <QMetaEnum>

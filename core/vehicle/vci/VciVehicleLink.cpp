@@ -1,7 +1,7 @@
 #include "VciVehicleLink.h"
 
 #include "ElevationService.h"
-#include "MissionItems.h"
+#include "VciMissionPlanner.h"
 #include "Route.h"
 #include "VciProfile.h"
 #include "VciTelemetryMapper.h"

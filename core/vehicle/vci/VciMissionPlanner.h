@@ -37,22 +37,16 @@ struct VciMission
                           // again when the ElevationService signals changed()
 };
 
-// A route as the list of waypoints a VCI vehicle flies by itself (it has no server to process it):
-// waypoints as they are; every other segment planned as sortie-sim's ProcessRoute plans it (area
-// scans and photo tools as passes with the camera triggering by distance, orbits, corridors, ...),
-// with the segment's own actions where the plan runs them; area tools flown AGL follow the ground
-// within their tolerance (points added where it departs, terrain::followTerrain); actions in the
-// VCI profile's words; heights above home (VciHeights). Where the ground or the home is unknown an
+// A route as the list of waypoints a VCI vehicle flies by itself (it has no server to process it).
+// Three steps, each in its own file: every segment expanded into points as sortie-sim's ProcessRoute
+// plans it (VciRoutePoints: area scans and photo tools as passes with the camera triggering by
+// distance, orbits, corridors, ..., the segment's own actions where the plan runs them; actions in
+// the VCI profile's words, VciMissionActions); heights made relative to home (VciMissionBuilder,
+// VciHeights); area tools flown AGL following the ground within their tolerance (VciTerrainFollow). Where the ground or the home is unknown an
 // AGL height is flown above home, with a notice. Refused, naming the segment, when something has
 // no such form: an AMSL height without the home's altitude, an action only a UgCS server performs,
 // a segment that cannot be planned.
 mission::Result<VciMission> vciMissionFor(const mission::Route &route, const VciHeights &heights = {},
                                           mission::ScanPlanCache *cache = nullptr);
-
-// Empty when `readBack` is the mission that was sent, as a vehicle stores it: the same points (to a
-// millimetre), altitudes, acceptance radii and actions, and the same speeds wherever one was given
-// (a vehicle fills in its default where the speed was 0). Otherwise what differs first
-// ("waypoint 3: altitude 40 m, sent 45 m").
-QString missionDifference(const std::vector<MissionItem> &sent, const std::vector<MissionItem> &readBack);
 
 } // namespace sortie::vehicle

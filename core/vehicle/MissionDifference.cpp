@@ -1,0 +1,56 @@
+#include "MissionDifference.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace sortie::vehicle {
+
+namespace {
+
+bool sameAction(const MissionAction &a, const MissionAction &b)
+{
+    if (a.type != b.type || a.parameters.keys() != b.parameters.keys())
+        return false;
+    for (auto it = a.parameters.begin(); it != a.parameters.end(); ++it) {
+        const QVariant &other = b.parameters.value(it.key());
+        bool na = false, nb = false;
+        const double x = it.value().toDouble(&na), y = other.toDouble(&nb);
+        if (na && nb && it.value().typeId() != QMetaType::QString && other.typeId() != QMetaType::QString) {
+            if (std::abs(x - y) > 1e-9 * std::max(1.0, std::abs(x)))
+                return false;
+        } else if (it.value().toString() != other.toString()) {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+QString missionDifference(const std::vector<MissionItem> &sent, const std::vector<MissionItem> &back)
+{
+    if (sent.size() != back.size())
+        return QStringLiteral("the vehicle holds %1 waypoint(s), %2 were sent").arg(back.size()).arg(sent.size());
+    constexpr double kAngle = 1e-3 / 6378137.0; // a millimetre on the ground, in radians
+    for (size_t i = 0; i < sent.size(); ++i) {
+        const MissionItem &s = sent[i], &b = back[i];
+        const QString where = QStringLiteral("waypoint %1: ").arg(i + 1);
+        if (std::abs(s.latitude - b.latitude) > kAngle || std::abs(s.longitude - b.longitude) > kAngle)
+            return where + QStringLiteral("the vehicle holds another position");
+        if (std::abs(s.altitude - b.altitude) > 1e-3)
+            return where + QStringLiteral("altitude %1 m, sent %2 m").arg(b.altitude).arg(s.altitude);
+        if (s.speed > 0 && std::abs(s.speed - b.speed) > 1e-3)
+            return where + QStringLiteral("speed %1 m/s, sent %2 m/s").arg(b.speed).arg(s.speed);
+        if (s.acceptanceRadius > 0 && std::abs(s.acceptanceRadius - b.acceptanceRadius) > 1e-3)
+            return where + QStringLiteral("acceptance radius %1 m, sent %2 m").arg(b.acceptanceRadius).arg(s.acceptanceRadius);
+        if (s.actions.size() != b.actions.size())
+            return where + QStringLiteral("%1 action(s), sent %2").arg(b.actions.size()).arg(s.actions.size());
+        for (size_t a = 0; a < s.actions.size(); ++a) {
+            if (!sameAction(s.actions[a], b.actions[a]))
+                return where + QStringLiteral("action %1 (%2) differs").arg(a + 1).arg(s.actions[a].type);
+        }
+    }
+    return {};
+}
+
+} // namespace sortie::vehicle
