@@ -24,13 +24,6 @@ namespace pb = com::ugcs::ucs::proto;
 using vehicle::Vehicle;
 using vehicle::VehicleLink;
 
-namespace {
-double degrees(double radians)
-{
-    return radians * 180.0 / std::numbers::pi;
-}
-} // namespace
-
 VehicleFleet::VehicleFleet(hci::HciClient *client, terrain::ElevationService *elevation, QObject *parent)
     : QAbstractListModel(parent)
     , m_client(client)
@@ -82,7 +75,7 @@ QVariant VehicleFleet::data(const QModelIndex &index, int role) const
     case StaleRole: return v.isStale() || !v.isConnected();
     case LatitudeRole: return v.position().isValid() ? QVariant(v.position().latitude()) : QVariant();
     case LongitudeRole: return v.position().isValid() ? QVariant(v.position().longitude()) : QVariant();
-    case HeadingRole: return finite(degrees(v.heading()));
+    case HeadingRole: return finite(v.heading());
     case HomeLatitudeRole: return v.home().isValid() ? QVariant(v.home().latitude()) : QVariant();
     case HomeLongitudeRole: return v.home().isValid() ? QVariant(v.home().longitude()) : QVariant();
     case AltitudeAglRole: return finite(v.altitudeAgl());
@@ -208,8 +201,7 @@ void VehicleFleet::goTo(int row, double latitude, double longitude)
     const double altitude = std::isfinite(agl) && agl > 2 ? agl : 20.0;
     const QString name = v->name();
     auto logged = m_commandLog.track(name, tr("go to %1, %2 at %3 m").arg(latitude, 0, 'f', 6).arg(longitude, 0, 'f', 6).arg(altitude, 0, 'f', 0));
-    // The link takes radians (as MissionItem does); QML speaks degrees.
-    v->link()->goTo(qDegreesToRadians(latitude), qDegreesToRadians(longitude), altitude, 5.0, [this, name, logged](const vehicle::CommandResult &result) {
+    v->link()->goTo(latitude, longitude, altitude, 5.0, [this, name, logged](const vehicle::CommandResult &result) {
         logged(result);
         setCommandResult(result.ok ? tr("%1: flying to the clicked point.").arg(name)
                                    : tr("%1: go-to failed: %2").arg(name, result.message));

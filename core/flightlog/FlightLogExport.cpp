@@ -14,17 +14,9 @@ using vehicle::TelemetryField;
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
 QString utc(int64_t ms)
 {
     return QDateTime::fromMSecsSinceEpoch(ms, Qt::UTC).toString(Qt::ISODateWithMs);
-}
-
-bool isAngle(TelemetryField f)
-{
-    const std::string_view unit = vehicle::fieldUnit(f);
-    return unit == "rad";
 }
 
 // One time of one vehicle: the value of each field sent at that time (NaN for the others).
@@ -83,7 +75,7 @@ std::vector<TrackPoint> track(const FlightLog &log, int vehicle)
             lon = lo;
         if (std::isnan(lat) || std::isnan(lon))
             return;
-        points.push_back({row.time, lat * kDeg, lon * kDeg, row.time - altTime <= 2000 ? alt : std::nan("")});
+        points.push_back({row.time, lat, lon, row.time - altTime <= 2000 ? alt : std::nan("")});
     });
     return points;
 }
@@ -169,7 +161,7 @@ void writeCsv(const FlightLog &log, const std::vector<int> &vehicles, QIODevice 
     QTextStream s(out);
     s << "time,vehicle";
     for (TelemetryField f : columns) {
-        const std::string_view unit = isAngle(f) ? std::string_view("deg") : vehicle::fieldUnit(f);
+        const std::string_view unit = vehicle::fieldUnit(f);
         s << ',' << QString::fromLatin1(vehicle::fieldName(f).data(), qsizetype(vehicle::fieldName(f).size()));
         if (!unit.empty())
             s << " [" << QString::fromLatin1(unit.data(), qsizetype(unit.size())) << ']';
@@ -185,7 +177,7 @@ void writeCsv(const FlightLog &log, const std::vector<int> &vehicles, QIODevice 
                 s << ',';
                 const double value = row.values[size_t(f)];
                 if (!std::isnan(value))
-                    s << QString::number(isAngle(f) ? value * kDeg : value, 'g', isAngle(f) ? 12 : 10);
+                    s << QString::number(value, 'g', vehicle::isAngle(f) ? 12 : 10);
             }
             s << '\n';
         });

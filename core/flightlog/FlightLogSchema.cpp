@@ -1,5 +1,7 @@
 #include "FlightLogSchema.h"
 
+#include "TelemetryField.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -63,7 +65,7 @@ QByteArray missionToJson(const std::vector<vehicle::MissionItem> &items)
 {
     QJsonArray array;
     for (const vehicle::MissionItem &item : items)
-        array.append(QJsonArray{item.latitude, item.longitude, item.altitude, item.speed});
+        array.append(QJsonArray{vehicle::radiansFromDegrees(item.latitude), vehicle::radiansFromDegrees(item.longitude), item.altitude, item.speed});
     return QJsonDocument(array).toJson(QJsonDocument::Compact);
 }
 
@@ -79,7 +81,7 @@ std::vector<vehicle::MissionItem> missionFromJson(const QByteArray &json, bool *
             *ok = false;
             return {};
         }
-        items.push_back({a[0].toDouble(), a[1].toDouble(), a[2].toDouble(), a[3].toDouble(), 0, {}});
+        items.push_back({vehicle::degreesFromRadians(a[0].toDouble()), vehicle::degreesFromRadians(a[1].toDouble()), a[2].toDouble(), a[3].toDouble(), 0, {}});
     }
     return items;
 }

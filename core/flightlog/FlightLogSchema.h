@@ -22,6 +22,8 @@ bool create(QSqlDatabase &db, QString *error);
 // Opens (or creates) a SQLite file under a connection name of its own.
 QSqlDatabase open(const QString &path, const QString &connection, bool readOnly, QString *error);
 
+// The mission as the log stores it: [[lat rad, lon rad, alt m above home, speed m/s], ...]. Radians, as
+// logs have always held it; MissionItem speaks degrees, so the conversion is here.
 QByteArray missionToJson(const std::vector<vehicle::MissionItem> &items);
 std::vector<vehicle::MissionItem> missionFromJson(const QByteArray &json, bool *ok);
 

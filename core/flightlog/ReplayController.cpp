@@ -69,7 +69,7 @@ QVariant ReplayFleet::data(const QModelIndex &index, int role) const
     case StaleRole: return !v->isConnected();
     case LatitudeRole: return v->position().isValid() ? QVariant(v->position().latitude()) : QVariant();
     case LongitudeRole: return v->position().isValid() ? QVariant(v->position().longitude()) : QVariant();
-    case HeadingRole: return finite(v->heading() * 180.0 / std::numbers::pi);
+    case HeadingRole: return finite(v->heading());
     case HomeLatitudeRole: return v->home().isValid() ? QVariant(v->home().latitude()) : QVariant();
     case HomeLongitudeRole: return v->home().isValid() ? QVariant(v->home().longitude()) : QVariant();
     case AltitudeAglRole: return finite(v->altitudeAgl());

@@ -17,8 +17,6 @@ using vehicle::TelemetryField;
 
 namespace {
 
-constexpr double kDeg = 180.0 / std::numbers::pi;
-
 struct Sample
 {
     int64_t time;
@@ -69,7 +67,7 @@ std::vector<Sample> trackOf(const FlightLog &log, int vehicle, const mission::Lo
         }
         const bool lastOfTime = i + 1 == updates.size() || updates[i + 1].time != u.time;
         if (lastOfTime && std::isfinite(lat) && std::isfinite(lon))
-            out.push_back({u.time, plane.project({lat * kDeg, lon * kDeg}), amsl, agl, lat * kDeg, lon * kDeg});
+            out.push_back({u.time, plane.project({lat, lon}), amsl, agl, lat, lon});
     }
     return out;
 }

@@ -293,12 +293,15 @@ void encodeField(const FieldSamples &f, int64_t t0, const FieldSamples *&timesOf
 
 double fieldStep(TelemetryField field)
 {
+    // Angles are degrees in the store but the log's quanta stay in radians, what the protocols send:
+    // the integers on disk mean what they meant before the store spoke degrees, so every log reads
+    // the same. 1e-9 rad is 5.7e-8 degrees.
     switch (field) {
     case TelemetryField::Latitude:
     case TelemetryField::Longitude:
     case TelemetryField::HomeLatitude:
     case TelemetryField::HomeLongitude:
-        return 1e-9; // rad: 6 mm on the ground
+        return vehicle::degreesFromRadians(1e-9); // 6 mm on the ground
     case TelemetryField::AltitudeAmsl:
     case TelemetryField::AltitudeAgl:
     case TelemetryField::HomeAltitudeAmsl:
@@ -307,7 +310,7 @@ double fieldStep(TelemetryField field)
     case TelemetryField::Pitch:
     case TelemetryField::Heading:
     case TelemetryField::Course:
-        return 1e-5; // rad: 0.0006 degrees
+        return vehicle::degreesFromRadians(1e-5); // 0.0006 degrees
     case TelemetryField::GroundSpeed:
     case TelemetryField::AirSpeed:
     case TelemetryField::VerticalSpeed:

@@ -16,7 +16,7 @@ namespace sortie::flightlog {
 // I/O), so it is unit-tested and fuzzed on byte strings. See docs/flightlog.md for the layout.
 //
 // Every value is quantised to its field's step (fieldStep: 1e-9 rad for positions, 1 mm for
-// altitudes, 1e-5 rad for angles, ...), then stored as zig-zag varints of its first or second
+// altitudes, 1e-5 rad for attitude and course, ...; the values themselves in degrees, as the store), then stored as zig-zag varints of its first or second
 // difference (whichever is shorter for that field in that block); times as varints of their second
 // difference, written once for all the fields that share them (a telemetry message gives its fields
 // one time). Regular 10 Hz telemetry therefore takes one or two bytes per value. NaN (missing) is
@@ -29,7 +29,9 @@ struct FieldSamples
 
 using BlockFields = std::vector<FieldSamples>;
 
-// The quantum of a field, in its SI unit: a value is stored as round(value / step).
+// The quantum of a field, in its unit in the store (TelemetryField.h): a value is stored as
+// round(value / step). Angles' quanta are whole radians' fractions (1e-9 rad, 1e-5 rad), as the log
+// has always stored them, given here in degrees.
 double fieldStep(vehicle::TelemetryField field);
 // The value a stored value reads back as (what a reader and a replay see).
 double quantize(vehicle::TelemetryField field, double value);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace sortie::vehicle {
 
@@ -31,7 +32,7 @@ QString missionDifference(const std::vector<MissionItem> &sent, const std::vecto
 {
     if (sent.size() != back.size())
         return QStringLiteral("the vehicle holds %1 waypoint(s), %2 were sent").arg(back.size()).arg(sent.size());
-    constexpr double kAngle = 1e-3 / 6378137.0; // a millimetre on the ground, in radians
+    constexpr double kAngle = 1e-3 / 6378137.0 * (180.0 / std::numbers::pi); // a millimetre on the ground, in degrees
     for (size_t i = 0; i < sent.size(); ++i) {
         const MissionItem &s = sent[i], &b = back[i];
         const QString where = QStringLiteral("waypoint %1: ").arg(i + 1);

@@ -1,7 +1,6 @@
 #include "MissionProgress.h"
 
 #include <cmath>
-#include <numbers>
 
 namespace sortie::vehicle {
 
@@ -12,17 +11,15 @@ constexpr double kMovingSpeed = 0.5;
 
 QGeoCoordinate coordinateOf(const MissionItem &item)
 {
-    return QGeoCoordinate(item.latitude * 180.0 / std::numbers::pi, item.longitude * 180.0 / std::numbers::pi);
+    return QGeoCoordinate(item.latitude, item.longitude);
 }
 
 double bearingBetween(const QGeoCoordinate &from, const QGeoCoordinate &to)
 {
     if (!from.isValid() || !to.isValid())
         return qQNaN();
-    double radians = from.azimuthTo(to) * std::numbers::pi / 180.0;
-    if (radians < 0)
-        radians += 2 * std::numbers::pi;
-    return radians;
+    const double degrees = from.azimuthTo(to);
+    return degrees < 0 ? degrees + 360.0 : degrees;
 }
 
 MissionProgress MissionProgress::compute(const std::vector<MissionItem> &mission, int active, const QGeoCoordinate &position,

@@ -16,7 +16,7 @@ struct MissionProgress
     int active = -1;                  // index of the waypoint being flown to; -1: none
     int count = 0;                    // waypoints in the mission
     double distanceToActive = qQNaN(); // m, from the position to the active waypoint
-    double bearingToActive = qQNaN();  // rad from north, clockwise
+    double bearingToActive = qQNaN();  // deg from north, clockwise
     double distanceLeft = qQNaN();    // m: to the active waypoint, then along the remaining legs
     double timeLeft = qQNaN();        // s, each leg at its planned speed (else the given speed)
 
@@ -30,7 +30,7 @@ struct MissionProgress
 };
 
 QGeoCoordinate coordinateOf(const MissionItem &item);
-// Bearing from one point to another, rad from north in [0, 2π); NaN when either is invalid.
+// Bearing from one point to another, degrees from north in [0, 360); NaN when either is invalid.
 double bearingBetween(const QGeoCoordinate &from, const QGeoCoordinate &to);
 
 } // namespace sortie::vehicle

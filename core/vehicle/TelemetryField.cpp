@@ -15,12 +15,12 @@ struct FieldInfo
 };
 
 constexpr std::array<FieldInfo, kTelemetryFieldCount> kFields = {{
-    {"latitude", "rad"}, {"longitude", "rad"}, {"altitudeAmsl", "m"}, {"altitudeAgl", "m"},
-    {"roll", "rad"}, {"pitch", "rad"}, {"heading", "rad"}, {"course", "rad"},
+    {"latitude", "deg"}, {"longitude", "deg"}, {"altitudeAmsl", "m"}, {"altitudeAgl", "m"},
+    {"roll", "deg"}, {"pitch", "deg"}, {"heading", "deg"}, {"course", "deg"},
     {"groundSpeed", "m/s"}, {"airSpeed", "m/s"}, {"verticalSpeed", "m/s"},
     {"batteryVoltage", "V"}, {"batteryCurrent", "A"}, {"batteryRemaining", ""},
     {"gpsFix", ""}, {"satellites", ""}, {"hdop", ""},
-    {"homeLatitude", "rad"}, {"homeLongitude", "rad"}, {"homeAltitudeAmsl", "m"},
+    {"homeLatitude", "deg"}, {"homeLongitude", "deg"}, {"homeAltitudeAmsl", "m"},
     {"armed", ""}, {"mode", ""}, {"missionState", ""}, {"missionCurrent", ""}, {"missionReached", ""}, {"missionCount", ""},
 }};
 
@@ -37,6 +37,11 @@ std::string_view fieldName(TelemetryField field)
 std::string_view fieldUnit(TelemetryField field)
 {
     return size_t(field) < kFields.size() ? kFields[size_t(field)].unit : std::string_view();
+}
+
+bool isAngle(TelemetryField field)
+{
+    return fieldUnit(field) == "deg";
 }
 
 std::optional<TelemetryField> fieldFromName(std::string_view name)

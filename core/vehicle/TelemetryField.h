@@ -1,23 +1,26 @@
 #pragma once
 
 #include <cstdint>
+#include <numbers>
 #include <optional>
 #include <string_view>
 
 namespace sortie::vehicle {
 
-// Every telemetry value the client knows, whatever protocol brought it. Units are SI, angles in
-// radians (as HCI and Sortie's VCI profile send them), times in ms since the epoch. Values are
-// doubles; booleans are 0/1 and enumerations their number (FlightMode, MissionState, GPS fix).
+// Every telemetry value the client knows, whatever protocol brought it. Units are SI except angles,
+// which are degrees: HCI and Sortie's VCI profile send radians, and the links convert once, at their
+// edge (HciTelemetryMapper, VciTelemetryMapper), so nothing past a link converts. Times in ms since
+// the epoch. Values are doubles; booleans are 0/1 and enumerations their number (FlightMode,
+// MissionState, GPS fix).
 enum class TelemetryField : uint8_t {
-    Latitude,          // rad, WGS-84
-    Longitude,         // rad
+    Latitude,          // deg, WGS-84
+    Longitude,         // deg
     AltitudeAmsl,      // m above mean sea level
     AltitudeAgl,       // m above the home point's ground
-    Roll,              // rad, right wing down positive
-    Pitch,             // rad, nose up positive
-    Heading,           // rad from north, clockwise: where the nose points
-    Course,            // rad from north, clockwise: where it travels
+    Roll,              // deg, right wing down positive
+    Pitch,             // deg, nose up positive
+    Heading,           // deg from north, clockwise: where the nose points
+    Course,            // deg from north, clockwise: where it travels
     GroundSpeed,       // m/s
     AirSpeed,          // m/s
     VerticalSpeed,     // m/s, up positive
@@ -27,8 +30,8 @@ enum class TelemetryField : uint8_t {
     GpsFix,            // 0 none, 2 2D, 3 3D, 4 RTK float, 5 RTK fixed
     Satellites,        // count
     Hdop,              // horizontal dilution of precision
-    HomeLatitude,      // rad
-    HomeLongitude,     // rad
+    HomeLatitude,      // deg
+    HomeLongitude,     // deg
     HomeAltitudeAmsl,  // m
     Armed,             // 0 or 1
     Mode,              // FlightMode
@@ -43,7 +46,13 @@ inline constexpr size_t kTelemetryFieldCount = size_t(TelemetryField::Count_);
 
 // "latitude", "groundSpeed", ... the names QML and logs use.
 std::string_view fieldName(TelemetryField field);
-std::string_view fieldUnit(TelemetryField field); // "rad", "m", "m/s", "V", "A", "", ...
+std::string_view fieldUnit(TelemetryField field); // "deg", "m", "m/s", "V", "A", "", ...
+// Latitudes, longitudes, attitude, heading and course: the fields in degrees.
+bool isAngle(TelemetryField field);
+
+// The one conversion, for the links' edges (the protocols speak radians).
+constexpr double degreesFromRadians(double radians) { return radians * (180.0 / std::numbers::pi); }
+constexpr double radiansFromDegrees(double degrees) { return degrees * (std::numbers::pi / 180.0); }
 std::optional<TelemetryField> fieldFromName(std::string_view name);
 
 enum class FlightMode : uint8_t { Unknown, Manual, Hold, Takeoff, Auto, Guided, Land, ReturnHome };

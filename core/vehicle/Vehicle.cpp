@@ -5,9 +5,6 @@
 #include <cmath>
 
 namespace sortie::vehicle {
-namespace {
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
-}
 
 Vehicle::Vehicle(VehicleLink *link, QObject *parent, size_t historyCapacity)
     : QObject(parent)
@@ -184,7 +181,7 @@ QGeoCoordinate Vehicle::position() const
     if (std::isnan(lat) || std::isnan(lon))
         return {};
     const double alt = value(TelemetryField::AltitudeAmsl);
-    return std::isnan(alt) ? QGeoCoordinate(lat * kDeg, lon * kDeg) : QGeoCoordinate(lat * kDeg, lon * kDeg, alt);
+    return std::isnan(alt) ? QGeoCoordinate(lat, lon) : QGeoCoordinate(lat, lon, alt);
 }
 
 QGeoCoordinate Vehicle::home() const
@@ -193,7 +190,7 @@ QGeoCoordinate Vehicle::home() const
     if (std::isnan(lat) || std::isnan(lon))
         return {};
     const double alt = value(TelemetryField::HomeAltitudeAmsl);
-    return std::isnan(alt) ? QGeoCoordinate(lat * kDeg, lon * kDeg) : QGeoCoordinate(lat * kDeg, lon * kDeg, alt);
+    return std::isnan(alt) ? QGeoCoordinate(lat, lon) : QGeoCoordinate(lat, lon, alt);
 }
 
 QString Vehicle::mode() const

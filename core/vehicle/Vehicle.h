@@ -21,8 +21,8 @@ namespace sortie::vehicle {
 //
 // For QML the telemetry properties share one notification, telemetryChanged(), emitted at most once
 // per notifyInterval (100 ms by default) however fast telemetry arrives: the first change goes out at
-// once, later ones are gathered until the interval has passed. Values are SI and radians; `position`
-// and `home` are QGeoCoordinates (degrees, as QtPositioning defines them).
+// once, later ones are gathered until the interval has passed. Values are SI, angles in degrees
+// (TelemetryField.h); `position` and `home` are QGeoCoordinates.
 class Vehicle : public QObject
 {
     Q_OBJECT

@@ -17,7 +17,7 @@ struct Route;
 namespace sortie::vehicle {
 
 // How the client reaches one vehicle, whatever the protocol: telemetry comes out normalised
-// (TelemetryField names and units), commands go in as calls with a result callback. Two
+// (TelemetryField names and units: angles in degrees, converted here at the link's edge), commands go in as calls with a result callback. Two
 // implementations: VciVehicleLink (direct, over TCP or serial) and HciVehicleLink (through a UgCS
 // server). Callbacks run later, never inside the call; a link drops them when destroyed.
 class VehicleLink : public QObject
@@ -63,6 +63,7 @@ public:
     virtual void takeoff(double altitude, Done done) = 0; // m above home
     virtual void land(Done done) = 0;
     virtual void returnHome(Done done) = 0;
+    // latitude and longitude in degrees, altitude m above home, speed m/s.
     virtual void goTo(double latitude, double longitude, double altitude, double speed, Done done) = 0;
     // Makes a route ready for this vehicle: HCI has the UgCS server process it against the
     // vehicle's profile; VCI expands it locally (area scans into their passes) and checks that every

@@ -24,8 +24,9 @@ struct VehicleIdentity
 
 // Something the vehicle does at a waypoint, in the words of Sortie's VCI profile
 // (docs/vci-profile.md, "Mission actions"): `type` is "wait", "heading", "poi", "camera",
-// "camera_by_time", "camera_by_distance", "panorama", "gimbal" or "land"; `parameters` hold its numbers (SI units,
-// radians) and names.
+// "camera_by_time", "camera_by_distance", "panorama", "gimbal" or "land"; `parameters` hold its numbers and
+// names exactly as the profile sends them (SI units, radians): only a VCI mission carries actions, and
+// the VCI planner and link are the only code that reads or writes them.
 struct MissionAction
 {
     QString type;
@@ -37,8 +38,8 @@ struct MissionAction
 // One waypoint of the mission a vehicle carries, in the form both links upload and download.
 struct MissionItem
 {
-    double latitude = 0;         // rad
-    double longitude = 0;        // rad
+    double latitude = 0;         // deg (the links convert to what their protocol sends)
+    double longitude = 0;        // deg
     double altitude = 0;         // m above the home point
     double speed = 0;            // m/s towards it; 0: the vehicle's default
     double acceptanceRadius = 0; // m: how close counts as reached; 0: the vehicle's default

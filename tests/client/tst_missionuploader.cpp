@@ -134,7 +134,7 @@ private slots:
         QVERIFY(held.size() >= 3);
         QCOMPARE(v->mission().size(), held.size());
         QCOMPARE(missionChanged.count(), 1);
-        QVERIFY(std::abs(v->mission().back().latitude * 180 / M_PI - held.back().latitude) < 1e-9);
+        QVERIFY(std::abs(v->mission().back().latitude - held.back().latitude) < 1e-9);
         QVERIFY(!m_sim->world.locks().holder(QStringLiteral("Vehicle"), v->id().toInt()));
         QVERIFY2(m_op->uploader.message().startsWith(QStringLiteral("Uploaded to EMU-101: ")), qPrintable(m_op->uploader.message()));
         QCOMPARE(lastLogged().vehicle, QStringLiteral("EMU-101"));

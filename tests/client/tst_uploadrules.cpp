@@ -162,7 +162,7 @@ private slots:
         QVERIFY(mission->waitingFor.isEmpty());
         const std::vector<MissionItem> *items = &mission->items;
         QCOMPARE(items->size(), size_t(3));
-        QCOMPARE((*items)[0].latitude, 56.95 * kRad);
+        QCOMPARE((*items)[0].latitude, 56.95); // degrees; the link sends radians
         QCOMPARE((*items)[1].acceptanceRadius, 4.0);
         QCOMPARE((*items)[1].actions.size(), size_t(4));
         QCOMPARE((*items)[1].actions[0], (MissionAction{QStringLiteral("wait"), {{QStringLiteral("seconds"), 3.0}}}));
@@ -256,7 +256,7 @@ private slots:
             int waits = 0;
             for (size_t i = 1; i < items.size(); ++i) {
                 const PlannedPoint &p = expected.plan->points[i - 1];
-                QCOMPARE(items[i].latitude, p.position.latitude * kRad);
+                QCOMPARE(items[i].latitude, p.position.latitude);
                 QCOMPARE(items[i].altitude, p.height);
                 for (const MissionAction &action : items[i].actions)
                     waits += action.type == QLatin1String("wait");
@@ -266,7 +266,7 @@ private slots:
             QVERIFY2(waits >= 1, qPrintable(def.displayName));  // the segment's own action, where the plan runs it
             if (def.kind == AlgorithmKind::Circle) {
                 for (size_t i = 1; i < items.size(); ++i) {
-                    const GeoPoint at{items[i].latitude / kRad, items[i].longitude / kRad};
+                    const GeoPoint at{items[i].latitude, items[i].longitude};
                     QVERIFY(std::abs(geodesicDistance(a, at) - 35.5) < 1.0);
                 }
             }

@@ -16,6 +16,7 @@
 
 namespace sortie::test {
 
+// Degrees to radians: what the protocols send, and what a log stores for angles.
 inline constexpr double kRad = std::numbers::pi / 180.0;
 
 class ScriptedLink : public vehicle::VehicleLink
@@ -63,13 +64,14 @@ private:
     State m_state = State::Connected;
 };
 
-// One telemetry message of a multicopter at a position: what HCI sends at 10 Hz.
+// One telemetry message of a multicopter at a position, as a link delivers what HCI sends at 10 Hz
+// (angles in degrees; roll and pitch a hundredth of a radian or so).
 inline vehicle::TelemetryBatch telemetryAt(int64_t time, double latDeg, double lonDeg, double agl, double heading, bool armed, int mode)
 {
     using F = vehicle::TelemetryField;
-    return {{F::Latitude, latDeg * kRad, time}, {F::Longitude, lonDeg * kRad, time}, {F::AltitudeAmsl, 10 + agl, time},
-            {F::AltitudeAgl, agl, time}, {F::Roll, 0.01 * std::sin(double(time) / 900.0), time},
-            {F::Pitch, -0.02 + 0.005 * std::cos(double(time) / 700.0), time}, {F::Heading, heading, time},
+    return {{F::Latitude, latDeg, time}, {F::Longitude, lonDeg, time}, {F::AltitudeAmsl, 10 + agl, time},
+            {F::AltitudeAgl, agl, time}, {F::Roll, (0.01 * std::sin(double(time) / 900.0)) / kRad, time},
+            {F::Pitch, (-0.02 + 0.005 * std::cos(double(time) / 700.0)) / kRad, time}, {F::Heading, heading, time},
             {F::GroundSpeed, 8.0, time}, {F::VerticalSpeed, 0.0, time},
             {F::BatteryVoltage, 16.8 - double(time % 3600000) / 3600000.0, time}, {F::BatteryRemaining, 0.9, time},
             {F::GpsFix, 3, time}, {F::Satellites, 14, time}, {F::Armed, armed ? 1.0 : 0.0, time}, {F::Mode, double(mode), time}};
@@ -97,7 +99,7 @@ inline std::vector<FlightSample> flyAlong(const std::vector<mission::GeoPoint> &
             auto q = p.point;
             if (offsetEast != 0)
                 q = mission::geodesicDirect(q, 90, offsetEast).point;
-            out.push_back({t, q.latitude, q.longitude, azimuth * kRad});
+            out.push_back({t, q.latitude, q.longitude, azimuth});
             t += stepMs;
         }
     }
@@ -135,8 +137,7 @@ inline QString recordTwoFlights(const QString &folder, std::vector<FlightSample>
         qFatal("%s", qPrintable(error));
     recorder.addVehicle(&a);
     recorder.addVehicle(&b);
-    a.setMission({{kLegs[0].latitude * kRad, kLegs[0].longitude * kRad, 20, 8, 0, {}},
-                  {kLegs[1].latitude * kRad, kLegs[1].longitude * kRad, 20, 8, 0, {}}});
+    a.setMission({{kLegs[0].latitude, kLegs[0].longitude, 20, 8, 0, {}}, {kLegs[1].latitude, kLegs[1].longitude, 20, 8, 0, {}}});
     const auto pathA = flyAlong(kLegs, kT0, 100);
     const auto pathB = flyAlong(kLegs, kT0, 100, 12);
     if (flown)

@@ -34,7 +34,8 @@ qint64 threadCpuNs()
     return qint64(test::threadCpuMs() * 1e6);
 }
 
-// Everything an HCI vehicle reports, as it flies a circle: 26 fields.
+// Everything an HCI vehicle reports, as it flies a circle: 26 fields (written in radians, as HCI sends
+// them; the link gives angles in degrees).
 void telemetry(int vehicle, int64_t t, vehicle::TelemetryBatch &out)
 {
     out.clear();
@@ -46,7 +47,7 @@ void telemetry(int vehicle, int64_t t, vehicle::TelemetryBatch &out)
                         0.1 * std::cos(s / 30), 16.4 - s * 1e-4, 12 + std::sin(s / 5), 0.9 - s * 1e-5, 3, 15, 0.7,
                         0.99, 0.42, 10, 1, 4, 1, 2, 1, 5};
     for (size_t f = 0; f < vehicle::kTelemetryFieldCount; ++f)
-        out.push_back({TelemetryField(f), v[f], t});
+        out.push_back({TelemetryField(f), vehicle::isAngle(TelemetryField(f)) ? vehicle::degreesFromRadians(v[f]) : v[f], t}); // as a link delivers it
 }
 
 class FeedLink : public vehicle::VehicleLink

@@ -10,6 +10,7 @@
 
 using namespace sortie;
 using flightlog::BlockFields;
+using flightlog::FieldSamples;
 using flightlog::TelemetryBlockCodec;
 using vehicle::TelemetryField;
 
@@ -27,8 +28,8 @@ BlockFields typicalSecond(int64_t t0, QRandomGenerator &rng)
                             0.02 * std::sin(s), -0.05 + 0.01 * std::cos(s), 0.785 + 0.001 * std::sin(s / 3), 0.78,
                             8 + 0.1 * std::sin(s), 8.5, 0.01, 16.2 - s * 1e-4, 12.5, 0.8 - s * 1e-5, 3, 14, 0.8,
                             0.9943, 0.4207, 10, 1, 4, 1, 3, 2, 6};
-        for (size_t f = 0; f < vehicle::kTelemetryFieldCount; ++f)
-            fields[f].samples.push_back({t, v[f]});
+        for (size_t f = 0; f < vehicle::kTelemetryFieldCount; ++f) // angles as HCI sends them; the store speaks degrees
+            fields[f].samples.push_back({t, vehicle::isAngle(TelemetryField(f)) ? vehicle::degreesFromRadians(v[f]) : v[f]});
     }
     return fields;
 }
@@ -92,6 +93,48 @@ private slots:
         QVERIFY(out);
         QCOMPARE(out->size(), size_t(1));
         QCOMPARE(out->front().field, TelemetryField::Heading);
+    }
+
+    void logsFromBeforeDegreesReadTheSame()
+    {
+        // A block written when the store still spoke radians (the codec of 3a8ec23, fed 56.95° and
+        // 24.10°, 100 m, a heading of 90° then 270°, a roll of -0.1 then 0.2 rad, all in radians):
+        // its integers are quanta of 1e-9 rad and 1e-5 rad, and they read back as those angles in
+        // degrees. Encoding the same angles in degrees now writes the very same bytes.
+        using F = TelemetryField;
+        const std::string golden = QByteArray::fromHex(
+            "0180a0abfef962c801050002000a00c801a2cff5b307a21b01020407bcdf919103c43602020405c09a0ce80706020406b09613deac26"
+            "040204069f9c01e0d403dc3a0606").toStdString();
+        std::string error;
+        const auto out = TelemetryBlockCodec::decode(golden, &error);
+        QVERIFY2(out, error.c_str());
+        auto values = [&](F field) {
+            std::vector<double> v;
+            for (const FieldSamples &f : *out)
+                if (f.field == field)
+                    for (const auto &s : f.samples)
+                        v.push_back(s.value);
+            return v;
+        };
+        const double position = flightlog::fieldStep(F::Latitude), attitude = flightlog::fieldStep(F::Heading);
+        QVERIFY(std::fabs(position - 1e-9 * 180 / M_PI) < 1e-20);
+        QVERIFY(std::fabs(attitude - 1e-5 * 180 / M_PI) < 1e-16);
+        const auto lat = values(F::Latitude), lon = values(F::Longitude), heading = values(F::Heading), roll = values(F::Roll);
+        QCOMPARE(lat.size(), size_t(2));
+        QVERIFY(std::fabs(lat[0] - 56.95) <= position && std::fabs(lat[1] - 56.9501) <= position);
+        QVERIFY(std::fabs(lon[0] - 24.10) <= position && std::fabs(lon[1] - 24.1002) <= position);
+        QCOMPARE(values(F::AltitudeAmsl), (std::vector<double>{100.0, 100.5}));
+        QVERIFY(std::fabs(heading[0] - 90) <= attitude && std::fabs(heading[1] - 270) <= attitude);
+        QVERIFY(std::fabs(roll[0] + 0.1 * 180 / M_PI) <= attitude && std::fabs(roll[1] - 0.2 * 180 / M_PI) <= attitude);
+        QCOMPARE(TelemetryBlockCodec::encode(*out), golden);
+        const BlockFields degrees = {
+            {F::Latitude, {{1'700'000'000'000, 56.95}, {1'700'000'000'100, 56.9501}}},
+            {F::Longitude, {{1'700'000'000'000, 24.10}, {1'700'000'000'100, 24.1002}}},
+            {F::AltitudeAmsl, {{1'700'000'000'000, 100.0}, {1'700'000'000'100, 100.5}}},
+            {F::Heading, {{1'700'000'000'000, 90.0}, {1'700'000'000'100, 270.0}}},
+            {F::Roll, {{1'700'000'000'000, -0.1 * 180 / M_PI}, {1'700'000'000'100, 0.2 * 180 / M_PI}}},
+        };
+        QCOMPARE(TelemetryBlockCodec::encode(degrees), golden);
     }
 
     void typicalTelemetryTakesUnderFourBytesAValue()

@@ -4,6 +4,7 @@
 #include "FlightLog.h"
 #include "FlightLogExport.h"
 #include "FlightLogInfo.h"
+#include "FlightLogSchema.h"
 #include "FlightLogTestSupport.h"
 #include "FlightRecorder.h"
 #include "RecordingSettings.h"
@@ -16,6 +17,7 @@
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
+#include <QJsonDocument>
 #include <QDateTime>
 #include <QSettings>
 #include <QSignalSpy>
@@ -80,10 +82,18 @@ private slots:
         QCOMPARE(lat.size(), flown.size());
         for (size_t i = 0; i < flown.size(); ++i) {
             QCOMPARE(lat[i].time, flown[i].time);
-            QVERIFY(std::fabs(lat[i].value - flown[i].lat * test::kRad) <= 0.5e-9);
+            QVERIFY(std::fabs(lat[i].value - flown[i].lat) <= 0.5e-9 / test::kRad * 1.000001); // half the quantum, 1e-9 rad
         }
         QCOMPARE(va.missions.size(), size_t(1));
         QCOMPARE(va.missions.front().items.size(), size_t(2));
+        // The mission reads back in degrees, as MissionItem speaks; the log keeps it in radians, as
+        // it always has (older logs read the same).
+        QVERIFY(std::fabs(va.missions.front().items[1].latitude - kLegs[1].latitude) < 1e-12);
+        const QJsonArray stored = QJsonDocument::fromJson(flightlog::schema::missionToJson(va.missions.front().items)).array();
+        QVERIFY(std::fabs(stored[1].toArray()[0].toDouble() - kLegs[1].latitude * test::kRad) < 1e-15);
+        bool ok = false;
+        const auto older = flightlog::schema::missionFromJson(QByteArray("[[0.9939797,0.4206243,20,8]]"), &ok);
+        QVERIFY(ok && std::fabs(older[0].latitude - 0.9939797 / test::kRad) < 1e-12 && std::fabs(older[0].longitude - 24.1) < 1e-4);
 
         QStringList kinds;
         for (const FlightLog::Event &e : log->events())

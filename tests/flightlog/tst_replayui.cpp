@@ -89,9 +89,9 @@ private slots:
             double lat = 0, lon = 0;
             for (const auto &u : state) {
                 if (u.field == vehicle::TelemetryField::Latitude)
-                    lat = u.value / test::kRad;
+                    lat = u.value;
                 if (u.field == vehicle::TelemetryField::Longitude)
-                    lon = u.value / test::kRad;
+                    lon = u.value;
             }
             QPointF expected;
             QMetaObject::invokeMethod(map, "fromCoordinate", Q_RETURN_ARG(QPointF, expected), Q_ARG(QGeoCoordinate, QGeoCoordinate(lat, lon)));
@@ -339,7 +339,7 @@ private slots:
 
         // Where the server had it at the end of the range, up in the air, drawn there.
         const qint64 at = replay.end();
-        const QGeoCoordinate where(liveAt(vehicle::TelemetryField::Latitude, at) / test::kRad, liveAt(vehicle::TelemetryField::Longitude, at) / test::kRad);
+        const QGeoCoordinate where(liveAt(vehicle::TelemetryField::Latitude, at), liveAt(vehicle::TelemetryField::Longitude, at));
         const double agl = liveAt(vehicle::TelemetryField::AltitudeAgl, at);
         QVERIFY2(agl > 4, qPrintable(QString::number(agl))); // the range ends after the climb
         replay.seek(at);

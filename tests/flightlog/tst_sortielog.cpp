@@ -196,8 +196,8 @@ private slots:
         // EMU-102 is sent 60 m west once it flies towards its third waypoint.
         QTRY_VERIFY_WITH_TIMEOUT(metresTo(emu102, route102[1]) < 2.5, 30000); // reached its second waypoint
         const mission::GeoPoint west = mission::geodesicDirect(route102[1], 270, 60).point;
-        // Click-and-go, straight through the link (radians, as VehicleLink takes them).
-        emu102->link()->goTo(west.latitude * test::kRad, west.longitude * test::kRad, 12, 8, [](const vehicle::CommandResult &) {});
+        // Click-and-go, straight through the link (degrees, as VehicleLink takes them).
+        emu102->link()->goTo(west.latitude, west.longitude, 12, 8, [](const vehicle::CommandResult &) {});
 
         // Mid-flight: SIGKILL one recorder.
         QTRY_VERIFY_WITH_TIMEOUT(metresTo(emu101, route101[1]) < 2.5, 30000);

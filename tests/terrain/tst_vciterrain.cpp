@@ -77,8 +77,8 @@ double lowestAboveGround(const std::vector<MissionItem> &items, size_t from, dou
 {
     double lowest = 1e9;
     for (size_t i = from; i + 1 < items.size(); ++i) {
-        const mission::GeoPoint a{items[i].latitude / kRad, items[i].longitude / kRad};
-        const mission::GeoPoint b{items[i + 1].latitude / kRad, items[i + 1].longitude / kRad};
+        const mission::GeoPoint a{items[i].latitude, items[i].longitude};
+        const mission::GeoPoint b{items[i + 1].latitude, items[i + 1].longitude};
         const terrain::SampledPath probes = terrain::samplePath({a, b}, 5.0);
         const double length = probes.length();
         for (const terrain::PathSamplePoint &p : probes.points) {

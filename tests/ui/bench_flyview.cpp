@@ -37,7 +37,6 @@ Item {
 }
 )";
 
-constexpr double kRad = std::numbers::pi / 180.0;
 enum Role { VehicleRole = Qt::UserRole + 1, IdRole, NameRole, LatRole, LonRole, HeadingRole };
 
 struct Fleet
@@ -57,8 +56,8 @@ struct Fleet
             v->setNotifyInterval(0);
             std::vector<vehicle::MissionItem> mission;
             for (int w = 0; w < 50; ++w) // a lawnmower of 50 waypoints around the vehicle's own patch
-                mission.push_back({(56.93 + (i % 5) * 0.01 + (w / 2) * 0.0004) * kRad,
-                                   (24.05 + (i / 5) * 0.02 + ((w / 2 + w) % 2) * 0.008) * kRad, 40, 8, 0, {}});
+                mission.push_back({(56.93 + (i % 5) * 0.01 + (w / 2) * 0.0004),
+                                   (24.05 + (i / 5) * 0.02 + ((w / 2 + w) % 2) * 0.008), 40, 8, 0, {}});
             v->setMission(std::move(mission));
             auto *item = new QStandardItem;
             item->setData(QVariant::fromValue<QObject *>(v.get()), VehicleRole);
@@ -78,7 +77,7 @@ struct Fleet
             const double lat = together ? 56.95 : 56.93 + (i % 5) * 0.01 + 0.004 * std::sin(a);
             const double lon = together ? 24.10 : 24.05 + (i / 5) * 0.02 + 0.006 * std::cos(a);
             const int64_t t = 1000 + tick * 100;
-            vehicles[size_t(i)]->ingest({{TelemetryField::Latitude, lat * kRad, t}, {TelemetryField::Longitude, lon * kRad, t},
+            vehicles[size_t(i)]->ingest({{TelemetryField::Latitude, lat, t}, {TelemetryField::Longitude, lon, t},
                                          {TelemetryField::MissionCurrent, double((tick / 20) % 50), t},
                                          {TelemetryField::Armed, 1, t}, {TelemetryField::GroundSpeed, 8, t}});
             QStandardItem *item = model.item(i);

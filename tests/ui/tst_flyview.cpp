@@ -27,18 +27,16 @@ using vehicle::TelemetryField;
 using F = TelemetryField;
 
 namespace {
-constexpr double kRad = std::numbers::pi / 180.0;
-
 vehicle::MissionItem waypoint(double latDeg, double lonDeg)
 {
-    return {latDeg * kRad, lonDeg * kRad, 30, 5, 0, {}};
+    return {latDeg, lonDeg, 30, 5, 0, {}};
 }
 
 // Where the vehicle is (degrees), its home, and anything else, at `time` ms.
 void report(vehicle::Vehicle &v, int64_t time, double lat, double lon, vehicle::TelemetryBatch more = {})
 {
-    vehicle::TelemetryBatch batch{{F::Latitude, lat * kRad, time}, {F::Longitude, lon * kRad, time},
-                                  {F::HomeLatitude, 56.95 * kRad, time}, {F::HomeLongitude, 24.10 * kRad, time}};
+    vehicle::TelemetryBatch batch{{F::Latitude, lat, time}, {F::Longitude, lon, time},
+                                  {F::HomeLatitude, 56.95, time}, {F::HomeLongitude, 24.10, time}};
     batch.insert(batch.end(), more.begin(), more.end());
     v.ingest(batch);
 }
@@ -98,8 +96,8 @@ private slots:
         QTRY_COMPARE(status.activeWaypoint(), 1);
         QCOMPARE(status.progressText(), QStringLiteral("waypoint 2 of 3"));
         QVERIFY(std::abs(status.distanceToHome() - 111.2) < 0.5);
-        QVERIFY(std::abs(status.bearingToHome() - std::numbers::pi) < 1e-3); // home is due south
-        QVERIFY(std::abs(status.bearingToNext()) < 1e-3 || std::abs(status.bearingToNext() - 2 * std::numbers::pi) < 1e-3);
+        QVERIFY(std::abs(status.bearingToHome() - 180) < 0.1); // home is due south
+        QVERIFY(std::abs(status.bearingToNext()) < 0.1 || std::abs(status.bearingToNext() - 360) < 0.1);
         QVERIFY(std::abs(status.distanceLeft() - 2 * 111.2) < 1);
         QVERIFY(std::abs(status.timeLeft() - 2 * 111.2 / 5) < 0.5);
         QCOMPARE(status.flightSeconds(), 60.0);
@@ -134,15 +132,15 @@ private slots:
         vehicle::Vehicle v(nullptr);
         QVERIFY(!ui::FlightStatus::homeOf(v).isValid());
         // An HCI vehicle reports no home: where it was armed is home, also after it landed.
-        v.ingest({{F::Latitude, 56.95 * kRad, 1000}, {F::Longitude, 24.10 * kRad, 1000}, {F::Armed, 0, 1000}});
+        v.ingest({{F::Latitude, 56.95, 1000}, {F::Longitude, 24.10, 1000}, {F::Armed, 0, 1000}});
         QVERIFY(!ui::FlightStatus::homeOf(v).isValid());
-        v.ingest({{F::Latitude, 56.96 * kRad, 2000}, {F::Longitude, 24.11 * kRad, 2000}, {F::Armed, 1, 2000}});
-        v.ingest({{F::Latitude, 56.97 * kRad, 3000}, {F::Longitude, 24.12 * kRad, 3000}, {F::Armed, 1, 3000}});
+        v.ingest({{F::Latitude, 56.96, 2000}, {F::Longitude, 24.11, 2000}, {F::Armed, 1, 2000}});
+        v.ingest({{F::Latitude, 56.97, 3000}, {F::Longitude, 24.12, 3000}, {F::Armed, 1, 3000}});
         v.ingest({{F::Armed, 0, 4000}});
         QGeoCoordinate home = ui::FlightStatus::homeOf(v);
         QVERIFY(std::abs(home.latitude() - 56.96) < 1e-9 && std::abs(home.longitude() - 24.11) < 1e-9);
         // A reported home wins.
-        v.ingest({{F::HomeLatitude, 56.9 * kRad, 5000}, {F::HomeLongitude, 24.0 * kRad, 5000}});
+        v.ingest({{F::HomeLatitude, 56.9, 5000}, {F::HomeLongitude, 24.0, 5000}});
         home = ui::FlightStatus::homeOf(v);
         QVERIFY(std::abs(home.latitude() - 56.9) < 1e-9 && std::abs(home.longitude() - 24.0) < 1e-9);
     }
@@ -165,19 +163,19 @@ private slots:
         image = scene.grab();
         QVERIFY(countNear(image, QRect(60, 110, 40, 20), ground, 20) > 500);
         // Nose up 20°: the horizon drops, ground leaves the band just below the middle.
-        attitude->setPitch(20 * kRad);
+        attitude->setPitch(20);
         QTRY_VERIFY(countNear(scene.grab(), QRect(60, 95, 40, 10), sky, 20) > 200);
         // Right wing down 30°: the world turns the other way — the horizon's right end rises
         // (ground right of the middle, above it), its left end sinks (sky left, below it).
         attitude->setPitch(0);
-        attitude->setRoll(30 * kRad);
+        attitude->setRoll(30);
         QTRY_VERIFY(countNear(scene.grab(), QRect(118, 60, 12, 10), ground, 20) > 50);
         QVERIFY(countNear(scene.grab(), QRect(30, 90, 15, 10), sky, 20) > 50);
 
         // The compass: heading 90°, home due south (180°) shows on the card's right, the next
         // waypoint due north (0°) on its left.
-        compass->setHeading(90 * kRad);
-        compass->setBearingToHome(180 * kRad);
+        compass->setHeading(90);
+        compass->setBearingToHome(180);
         compass->setBearingToNext(0);
         const QPointF homeAt = compass->markPosition(compass->bearingToHome());
         const QPointF nextAt = compass->markPosition(compass->bearingToNext());

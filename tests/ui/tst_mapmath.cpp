@@ -284,11 +284,11 @@ private slots:
         QCOMPARE(units.formatDuration(245.4), QStringLiteral("4:05"));
         QCOMPARE(units.formatDuration(3723), QStringLiteral("1:02:03"));
         QCOMPARE(units.formatDuration(qQNaN()), QStringLiteral("—"));
-        QCOMPARE(units.formatAngle(M_PI / 6), QStringLiteral("30°"));
-        QCOMPARE(units.formatAngle(-0.001), QStringLiteral("0°"));
-        QCOMPARE(units.formatAngle(-M_PI / 4), QStringLiteral("-45°"));
-        QCOMPARE(units.formatHeading(-M_PI / 2), QStringLiteral("270°"));
-        QCOMPARE(units.formatHeading(2 * M_PI + 0.1), QStringLiteral("006°"));
+        QCOMPARE(units.formatAngle(30.2), QStringLiteral("30°"));
+        QCOMPARE(units.formatAngle(-0.1), QStringLiteral("0°"));
+        QCOMPARE(units.formatAngle(-45), QStringLiteral("-45°"));
+        QCOMPARE(units.formatHeading(-90), QStringLiteral("270°"));
+        QCOMPARE(units.formatHeading(366), QStringLiteral("006°"));
         QCOMPARE(units.formatHeading(qQNaN()), QStringLiteral("—"));
         // The simulator's HCI vehicles send a voltage and no level: the voltage is shown.
         QCOMPARE(units.formatBattery(22.43, qQNaN()), QStringLiteral("22.4 V"));

@@ -15,7 +15,7 @@ constexpr double kMilliDegree = 6371007.2 * kRad * 0.001;
 
 MissionItem at(double latDeg, double lonDeg, double speed = 0)
 {
-    return {latDeg * kRad, lonDeg * kRad, 30, speed, 0, {}};
+    return {latDeg, lonDeg, 30, speed, 0, {}};
 }
 } // namespace
 
@@ -37,7 +37,7 @@ private slots:
         QVERIFY(std::abs(p.distanceLeft - kMilliDegree * 1.5) < 0.05);
         // Each leg at its own planned speed: half a leg at 10 m/s, a whole one at 4 m/s.
         QVERIFY(std::abs(p.timeLeft - (kMilliDegree / 2 / 10 + kMilliDegree / 4)) < 0.01);
-        QVERIFY(std::abs(p.bearingToActive) < 1e-6 || std::abs(p.bearingToActive - 2 * std::numbers::pi) < 1e-6);
+        QVERIFY(std::abs(p.bearingToActive) < 1e-4 || std::abs(p.bearingToActive - 360) < 1e-4);
     }
 
     void legsWithoutASpeedUseTheVehiclesOrTheCruiseSpeed()
@@ -55,9 +55,9 @@ private slots:
     {
         const std::vector<MissionItem> mission{at(56.0, 24.001)};
         const auto east = MissionProgress::compute(mission, 0, QGeoCoordinate(56.0, 24.0), 5);
-        QVERIFY(std::abs(east.bearingToActive - std::numbers::pi / 2) < 1e-3);
+        QVERIFY(std::abs(east.bearingToActive - 90) < 0.06);
         const auto west = MissionProgress::compute(mission, 0, QGeoCoordinate(56.0, 24.002), 5);
-        QVERIFY(std::abs(west.bearingToActive - 3 * std::numbers::pi / 2) < 1e-3); // never negative
+        QVERIFY(std::abs(west.bearingToActive - 270) < 0.06); // never negative
         QVERIFY(std::isnan(bearingBetween(QGeoCoordinate(), QGeoCoordinate(56, 24))));
     }
 

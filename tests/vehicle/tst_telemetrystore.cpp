@@ -117,7 +117,8 @@ void TstTelemetryStore::fieldNames()
         QCOMPARE(fieldFromName(fieldName(f)), std::optional<TelemetryField>(f));
     }
     QCOMPARE(fieldName(TelemetryField::GroundSpeed), std::string_view("groundSpeed"));
-    QCOMPARE(fieldUnit(TelemetryField::Heading), std::string_view("rad"));
+    QCOMPARE(fieldUnit(TelemetryField::Heading), std::string_view("deg"));
+    QVERIFY(isAngle(TelemetryField::HomeLongitude) && isAngle(TelemetryField::Roll) && !isAngle(TelemetryField::AltitudeAgl));
     QVERIFY(!fieldFromName("warpFactor"));
     QVERIFY(modeFromName("return_home") == FlightMode::ReturnHome);
     QVERIFY(modeFromName("RTL") == FlightMode::ReturnHome);

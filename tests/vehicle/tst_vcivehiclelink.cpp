@@ -14,7 +14,6 @@ using namespace sortie::vehicle;
 
 namespace {
 
-constexpr double kRad = 3.14159265358979323846 / 180;
 
 using Result = test::CommandCatcher;
 
@@ -146,7 +145,7 @@ void TstVciVehicleLink::commandsThroughTheModel()
 void TstVciVehicleLink::missionUploadDownloadAndFlight()
 {
     startLink(QStringLiteral("tcp://127.0.0.1:%1").arg(m_listener->port()));
-    const std::vector<MissionItem> plan = {{56.9499 * kRad, 24.1052 * kRad, 10, 12, 0, {}}, {56.9499 * kRad, 24.1058 * kRad, 14, 0, 0, {}}};
+    const std::vector<MissionItem> plan = {{56.9499, 24.1052, 10, 12, 0, {}}, {56.9499, 24.1058, 14, 0, 0, {}}};
     QSignalSpy missionChanged(m_link.get(), &VehicleLink::missionChanged);
     Result upload;
     m_link->uploadMission(PreparedMission{plan, {}, {}}, {}, upload.callback());
@@ -208,7 +207,7 @@ void TstVciVehicleLink::parametersAndGoTo()
 
     Result arm, go;
     m_link->arm(true, arm.callback());
-    m_link->goTo(56.9500 * kRad, 24.1054 * kRad, 12, 10, go.callback());
+    m_link->goTo(56.9500, 24.1054, 12, 10, go.callback());
     QTRY_VERIFY(go.done);
     QVERIFY2(go.result.ok, qPrintable(go.result.message));
     QTRY_COMPARE(m_vehicle->mode(), QStringLiteral("guided"));

@@ -26,8 +26,8 @@ void TstVehicle::lastValuesAndProperties()
     QVERIFY(!v.position().isValid());
     QVERIFY(std::isnan(v.groundSpeed()));
     QCOMPARE(v.mode(), QStringLiteral("unknown"));
-    const double rad = 3.14159265358979323846 / 180;
-    v.ingest({{TelemetryField::Latitude, 56.95 * rad, 1000}, {TelemetryField::Longitude, 24.1 * rad, 1000},
+    // Angles in degrees, as every link delivers them.
+    v.ingest({{TelemetryField::Latitude, 56.95, 1000}, {TelemetryField::Longitude, 24.1, 1000},
               {TelemetryField::AltitudeAmsl, 120, 1000}, {TelemetryField::GroundSpeed, 7.5, 1000},
               {TelemetryField::Armed, 1, 1000}, {TelemetryField::Mode, double(FlightMode::ReturnHome), 1000},
               {TelemetryField::MissionState, double(MissionState::Paused), 1000}, {TelemetryField::Satellites, 12, 1000}});
@@ -106,14 +106,19 @@ void TstVehicle::vciMapping()
     };
     auto b = vciTelemetry("/telemetry/position", json{{"latitude", 0.99}, {"longitude", 0.42}, {"altitudeAmsl", 100}, {"time", 1234}}, 9);
     QCOMPARE(b.size(), size_t(3));
-    QCOMPARE(find(b, TelemetryField::Latitude)->value, 0.99);
+    // The profile's radians become degrees here, once.
+    QVERIFY(std::abs(find(b, TelemetryField::Latitude)->value - 0.99 * 180 / M_PI) < 1e-12);
+    QCOMPARE(find(b, TelemetryField::AltitudeAmsl)->value, 100.0);
     QCOMPARE(find(b, TelemetryField::Latitude)->time, int64_t(1234));
     b = vciTelemetry("/telemetry/attitude", json{{"roll", 0.1}, {"pitch", "bad"}, {"yaw", 3.0}}, 9);
     QCOMPARE(b.size(), size_t(2)); // a field of the wrong type is skipped
-    QCOMPARE(find(b, TelemetryField::Heading)->value, 3.0);
+    QVERIFY(std::abs(find(b, TelemetryField::Heading)->value - 3.0 * 180 / M_PI) < 1e-12);
+    QVERIFY(std::abs(find(b, TelemetryField::Roll)->value - 0.1 * 180 / M_PI) < 1e-12);
     QCOMPARE(find(b, TelemetryField::Heading)->time, int64_t(9)); // no "time": when it arrived
     b = vciTelemetry("/telemetry/speed", json{{"ground", 5}, {"air", 6}, {"vertical", -1}, {"course", 1.5}}, 9);
     QCOMPARE(b.size(), size_t(4));
+    QCOMPARE(find(b, TelemetryField::GroundSpeed)->value, 5.0);
+    QVERIFY(std::abs(find(b, TelemetryField::Course)->value - 1.5 * 180 / M_PI) < 1e-12);
     b = vciTelemetry("/telemetry/battery", json{{"voltage", 15.2}, {"current", 9}, {"remaining", 0.8}}, 9);
     QCOMPARE(find(b, TelemetryField::BatteryRemaining)->value, 0.8);
     b = vciTelemetry("/telemetry/gps", json{{"fix", 3}, {"satellites", 14}, {"hdop", 0.8}}, 9);

@@ -4,12 +4,10 @@
 #include <QPainterPath>
 
 #include <cmath>
-#include <numbers>
 
 namespace sortie::ui {
 
 namespace {
-constexpr double kDegree = 180.0 / std::numbers::pi;
 const QColor kSky(0x3f, 0x8f, 0xd8);
 const QColor kGround(0x8a, 0x5a, 0x2b);
 const QColor kSymbol(0xff, 0xd6, 0x00);
@@ -27,20 +25,20 @@ AttitudeIndicator::AttitudeIndicator(QQuickItem *parent)
     setImplicitSize(150, 150);
 }
 
-void AttitudeIndicator::setRoll(double radians)
+void AttitudeIndicator::setRoll(double degrees)
 {
-    if (same(radians, m_roll))
+    if (same(degrees, m_roll))
         return;
-    m_roll = radians;
+    m_roll = degrees;
     update();
     emit attitudeChanged();
 }
 
-void AttitudeIndicator::setPitch(double radians)
+void AttitudeIndicator::setPitch(double degrees)
 {
-    if (same(radians, m_pitch))
+    if (same(degrees, m_pitch))
         return;
-    m_pitch = radians;
+    m_pitch = degrees;
     update();
     emit attitudeChanged();
 }
@@ -78,11 +76,11 @@ void AttitudeIndicator::paint(QPainter *painter)
 
     // The horizon: pixels per degree of pitch so that ±30° spans the face.
     const double pixelsPerDegree = r / 30.0;
-    const double pitchDeg = std::clamp(m_pitch * kDegree, -90.0, 90.0);
+    const double pitchDeg = std::clamp(m_pitch, -90.0, 90.0);
     painter->save();
     painter->setClipPath(face);
     painter->translate(centre);
-    painter->rotate(-m_roll * kDegree);
+    painter->rotate(-m_roll);
     painter->translate(0, pitchDeg * pixelsPerDegree);
     const double big = side * 3;
     painter->fillRect(QRectF(-big, -big, 2 * big, big), kSky);
@@ -119,7 +117,7 @@ void AttitudeIndicator::paint(QPainter *painter)
         painter->drawLine(QPointF(0, -r + 1), QPointF(0, -inner));
         painter->restore();
     }
-    painter->rotate(-m_roll * kDegree);
+    painter->rotate(-m_roll);
     QPainterPath pointer;
     pointer.moveTo(0, -r + 13);
     pointer.lineTo(-6, -r + 23);

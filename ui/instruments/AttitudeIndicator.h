@@ -15,17 +15,17 @@ class AttitudeIndicator : public QQuickPaintedItem
 {
     Q_OBJECT
     QML_ELEMENT
-    Q_PROPERTY(double roll READ roll WRITE setRoll NOTIFY attitudeChanged)   // rad, right wing down positive
-    Q_PROPERTY(double pitch READ pitch WRITE setPitch NOTIFY attitudeChanged) // rad, nose up positive
+    Q_PROPERTY(double roll READ roll WRITE setRoll NOTIFY attitudeChanged)   // deg, right wing down positive
+    Q_PROPERTY(double pitch READ pitch WRITE setPitch NOTIFY attitudeChanged) // deg, nose up positive
     Q_PROPERTY(QColor textColor READ textColor WRITE setTextColor NOTIFY textColorChanged)
 
 public:
     explicit AttitudeIndicator(QQuickItem *parent = nullptr);
 
     double roll() const { return m_roll; }
-    void setRoll(double radians);
+    void setRoll(double degrees);
     double pitch() const { return m_pitch; }
-    void setPitch(double radians);
+    void setPitch(double degrees);
     QColor textColor() const { return m_text; }
     void setTextColor(const QColor &color);
     bool hasAttitude() const { return std::isfinite(m_roll) && std::isfinite(m_pitch); }

@@ -70,8 +70,7 @@ QGeoCoordinate FlightStatus::homeOf(const vehicle::Vehicle &v)
     const size_t i = lat.lowerBound(since), j = lon.lowerBound(since);
     if (i >= lat.size() || j >= lon.size())
         return {};
-    constexpr double kDeg = 180.0 / 3.14159265358979323846;
-    return QGeoCoordinate(lat.at(i).value * kDeg, lon.at(j).value * kDeg);
+    return QGeoCoordinate(lat.at(i).value, lon.at(j).value);
 }
 
 FlightStatus::FlightStatus(QObject *parent)

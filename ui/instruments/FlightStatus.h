@@ -22,8 +22,8 @@ class FlightStatus : public QObject
     Q_OBJECT
     QML_ELEMENT
     Q_PROPERTY(QObject *vehicle READ vehicleObject WRITE setVehicle NOTIFY vehicleChanged)
-    Q_PROPERTY(double roll READ roll NOTIFY changed)   // rad; NaN until reported
-    Q_PROPERTY(double pitch READ pitch NOTIFY changed) // rad
+    Q_PROPERTY(double roll READ roll NOTIFY changed)   // deg; NaN until reported
+    Q_PROPERTY(double pitch READ pitch NOTIFY changed) // deg
     Q_PROPERTY(int waypointCount READ waypointCount NOTIFY changed)
     Q_PROPERTY(int activeWaypoint READ activeWaypoint NOTIFY changed)         // 0-based, -1: none
     Q_PROPERTY(bool missionFlying READ missionFlying NOTIFY changed)
@@ -31,10 +31,10 @@ class FlightStatus : public QObject
     Q_PROPERTY(QString progressText READ progressText NOTIFY changed)
     Q_PROPERTY(double distanceLeft READ distanceLeft NOTIFY changed)         // m
     Q_PROPERTY(double timeLeft READ timeLeft NOTIFY changed)                 // s
-    Q_PROPERTY(double bearingToNext READ bearingToNext NOTIFY changed)       // rad
+    Q_PROPERTY(double bearingToNext READ bearingToNext NOTIFY changed)       // deg
     Q_PROPERTY(QGeoCoordinate home READ home NOTIFY changed)                 // reported, else the take-off point
     Q_PROPERTY(double distanceToHome READ distanceToHome NOTIFY changed)     // m
-    Q_PROPERTY(double bearingToHome READ bearingToHome NOTIFY changed)       // rad
+    Q_PROPERTY(double bearingToHome READ bearingToHome NOTIFY changed)       // deg
     Q_PROPERTY(double flightSeconds READ flightSeconds NOTIFY changed)       // since armed; NaN when disarmed
     Q_PROPERTY(double telemetryRate READ telemetryRate NOTIFY changed)       // position reports per second, last 5 s
     Q_PROPERTY(BatteryState batteryState READ batteryState NOTIFY changed)

@@ -8,10 +8,6 @@
 
 namespace sortie::ui {
 
-namespace {
-constexpr double kDegree = 180.0 / std::numbers::pi;
-} // namespace
-
 HeadingCompass::HeadingCompass(QQuickItem *parent)
     : QQuickPaintedItem(parent)
 {
@@ -28,9 +24,9 @@ void HeadingCompass::set(double &field, double value)
     emit changed();
 }
 
-void HeadingCompass::setHeading(double radians) { set(m_heading, radians); }
-void HeadingCompass::setBearingToHome(double radians) { set(m_home, radians); }
-void HeadingCompass::setBearingToNext(double radians) { set(m_next, radians); }
+void HeadingCompass::setHeading(double degrees) { set(m_heading, degrees); }
+void HeadingCompass::setBearingToHome(double degrees) { set(m_home, degrees); }
+void HeadingCompass::setBearingToNext(double degrees) { set(m_next, degrees); }
 
 void HeadingCompass::setTextColor(const QColor &color)
 {
@@ -48,7 +44,7 @@ QPointF HeadingCompass::markPosition(double bearing) const
     const double r = std::min(width(), height()) / 2 - 2;
     // The card turns so that the heading is up; without a heading north is up.
     const double up = std::isfinite(m_heading) ? m_heading : 0.0;
-    const double angle = bearing - up;
+    const double angle = (bearing - up) * std::numbers::pi / 180.0; // sin and cos take radians
     return QPointF(width() / 2 + std::sin(angle) * (r - 9), height() / 2 - std::cos(angle) * (r - 9));
 }
 
@@ -75,7 +71,7 @@ void HeadingCompass::paint(QPainter *painter)
     painter->setFont(font);
     painter->save();
     painter->translate(centre);
-    painter->rotate(-up * kDegree);
+    painter->rotate(-up);
     static const char *const kCardinal[] = {"N", "E", "S", "W"};
     for (int deg = 0; deg < 360; deg += 10) {
         painter->save();
@@ -95,7 +91,7 @@ void HeadingCompass::paint(QPainter *painter)
     auto markAt = [&](double bearing) { return markPosition(bearing) - QPointF(width() / 2, height() / 2) + centre; };
     if (std::isfinite(m_next)) {
         const QPointF at = markAt(m_next);
-        const double angle = (m_next - up) * kDegree;
+        const double angle = m_next - up;
         painter->save();
         painter->translate(at);
         painter->rotate(angle);
@@ -138,7 +134,7 @@ void HeadingCompass::paint(QPainter *painter)
     painter->setPen(m_text);
     painter->setFont(font);
     const QString figures = std::isfinite(m_heading)
-                                ? QStringLiteral("%1°").arg((int(std::lround(m_heading * kDegree)) % 360 + 360) % 360, 3, 10, QLatin1Char('0'))
+                                ? QStringLiteral("%1°").arg((int(std::lround(m_heading)) % 360 + 360) % 360, 3, 10, QLatin1Char('0'))
                                 : QStringLiteral("—");
     painter->drawText(QRectF(centre.x() - 30, centre.y() + r * 0.26, 60, 18), Qt::AlignCenter, figures);
 }

@@ -13,7 +13,7 @@ class HeadingCompass : public QQuickPaintedItem
 {
     Q_OBJECT
     QML_ELEMENT
-    Q_PROPERTY(double heading READ heading WRITE setHeading NOTIFY changed)             // rad from north
+    Q_PROPERTY(double heading READ heading WRITE setHeading NOTIFY changed)             // deg from north, clockwise (bearings too)
     Q_PROPERTY(double bearingToHome READ bearingToHome WRITE setBearingToHome NOTIFY changed)
     Q_PROPERTY(double bearingToNext READ bearingToNext WRITE setBearingToNext NOTIFY changed)
     Q_PROPERTY(QColor textColor READ textColor WRITE setTextColor NOTIFY changed)
@@ -24,11 +24,11 @@ public:
     explicit HeadingCompass(QQuickItem *parent = nullptr);
 
     double heading() const { return m_heading; }
-    void setHeading(double radians);
+    void setHeading(double degrees);
     double bearingToHome() const { return m_home; }
-    void setBearingToHome(double radians);
+    void setBearingToHome(double degrees);
     double bearingToNext() const { return m_next; }
-    void setBearingToNext(double radians);
+    void setBearingToNext(double degrees);
     QColor textColor() const { return m_text; }
     void setTextColor(const QColor &color);
 

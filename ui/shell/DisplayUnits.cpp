@@ -122,22 +122,22 @@ QString DisplayUnits::formatDuration(double seconds) const
     return QStringLiteral("%1:%2").arg(minutes).arg(rest, 2, 10, QLatin1Char('0'));
 }
 
-QString DisplayUnits::formatAngle(double radians) const
+QString DisplayUnits::formatAngle(double degrees) const
 {
-    if (!std::isfinite(radians))
+    if (!std::isfinite(degrees))
         return QStringLiteral("—");
-    const double degrees = std::round(radians * 180.0 / M_PI);
-    return QStringLiteral("%1°").arg(degrees == 0 ? 0.0 : degrees, 0, 'f', 0); // no "-0°"
+    const double whole = std::round(degrees);
+    return QStringLiteral("%1°").arg(whole == 0 ? 0.0 : whole, 0, 'f', 0); // no "-0°"
 }
 
-QString DisplayUnits::formatHeading(double radians) const
+QString DisplayUnits::formatHeading(double degrees) const
 {
-    if (!std::isfinite(radians))
+    if (!std::isfinite(degrees))
         return QStringLiteral("—");
-    int degrees = int(std::lround(radians * 180.0 / M_PI)) % 360;
-    if (degrees < 0)
-        degrees += 360;
-    return QStringLiteral("%1°").arg(degrees, 3, 10, QLatin1Char('0'));
+    int whole = int(std::lround(degrees) % 360);
+    if (whole < 0)
+        whole += 360;
+    return QStringLiteral("%1°").arg(whole, 3, 10, QLatin1Char('0'));
 }
 
 QString DisplayUnits::formatBattery(double voltage, double remaining) const

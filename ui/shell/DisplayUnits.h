@@ -42,9 +42,10 @@ public:
     Q_INVOKABLE QString formatLatLon(double latitude, double longitude) const;
     // "4:05" under an hour, "1:02:03" above; "—" when unknown.
     Q_INVOKABLE QString formatDuration(double seconds) const;
-    // Radians shown as whole degrees, "—" when unknown. A heading is folded into 0..359.
-    Q_INVOKABLE QString formatAngle(double radians) const;
-    Q_INVOKABLE QString formatHeading(double radians) const;
+    // Degrees (as the Vehicle gives every angle) shown whole, "—" when unknown. A heading is folded
+    // into 0..359.
+    Q_INVOKABLE QString formatAngle(double degrees) const;
+    Q_INVOKABLE QString formatHeading(double degrees) const;
     // What the vehicle reports of its battery: "87 %  22.4 V", "22.4 V" (voltage only),
     // "87 %" (level only), or "—" (nothing). `remaining` is 0..1.
     Q_INVOKABLE QString formatBattery(double voltage, double remaining) const;

@@ -9,7 +9,6 @@
 #include <QPainter>
 
 #include <cmath>
-#include <numbers>
 
 namespace sortie::ui {
 
@@ -21,15 +20,9 @@ const QColor kColours[] = {QColor(0x1e, 0x88, 0xe5), QColor(0xd8, 0x1b, 0x60), Q
                            QColor(0xfb, 0x8c, 0x00), QColor(0x8e, 0x24, 0xaa), QColor(0x00, 0x89, 0x7b)};
 constexpr double kAxisWidth = 48;
 
-// Angles are stored in radians: the plot shows degrees, as the instruments do.
-bool isAngle(TelemetryField field)
-{
-    return vehicle::fieldUnit(field) == "rad";
-}
-
 QString unitOf(TelemetryField field)
 {
-    if (isAngle(field))
+    if (vehicle::isAngle(field))
         return QStringLiteral("°");
     const auto unit = vehicle::fieldUnit(field);
     return QString::fromLatin1(unit.data(), qsizetype(unit.size()));
@@ -196,20 +189,19 @@ void TelemetryPlot::updatePolish()
             v->history().copyBetween(field, from, newest, samples);
             if (samples.empty())
                 continue;
-            const double scale = isAngle(field) ? 180.0 / std::numbers::pi : 1.0;
             const QString unit = unitOf(field);
             Series series;
             series.label = vehicles.size() > 1 || m_compare ? QStringLiteral("%1 %2").arg(v->name(), name) : name;
             series.colour = row >= 0 && chosen.size() == 1 ? vehicleColor(row) : kColours[m_series.size() % std::size(kColours)];
             auto group = std::find_if(m_groups.begin(), m_groups.end(), [&](const Group &g) { return g.unit == unit; });
             if (group == m_groups.end()) {
-                m_groups.push_back({unit, series.colour, samples.front().value * scale, samples.front().value * scale});
+                m_groups.push_back({unit, series.colour, samples.front().value, samples.front().value});
                 group = m_groups.end() - 1;
             }
             series.group = int(group - m_groups.begin());
             series.raw.reserve(samples.size());
             for (const auto &s : samples) {
-                const double value = s.value * scale;
+                const double value = s.value;
                 group->minimum = std::min(group->minimum, value);
                 group->maximum = std::max(group->maximum, value);
                 series.raw.emplace_back(double(s.time - from), value);

@@ -71,6 +71,8 @@ void appendHciTelemetry(const pb::Telemetry &t, int64_t now, TelemetryBatch &out
         return; // "value unavailable"
     if (*field == F::BatteryRemaining)
         *value /= 100.0;
+    else if (isAngle(*field))
+        *value = degreesFromRadians(*value);
     out.push_back({*field, *value, time});
 }
 

@@ -229,7 +229,8 @@ void HciVehicleLink::returnHome(Done done)
 
 void HciVehicleLink::goTo(double latitude, double longitude, double altitude, double speed, Done done)
 {
-    QVariantMap args{{QStringLiteral("latitude"), latitude}, {QStringLiteral("longitude"), longitude},
+    // HCI speaks radians.
+    QVariantMap args{{QStringLiteral("latitude"), radiansFromDegrees(latitude)}, {QStringLiteral("longitude"), radiansFromDegrees(longitude)},
                      {QStringLiteral("altitude_agl"), altitude}};
     if (speed > 0)
         args.insert(QStringLiteral("ground_speed"), speed);
@@ -291,9 +292,8 @@ void HciVehicleLink::prepareMission(const mission::Route &route, PrepareDone don
         prepared.native = std::make_shared<HciProcessedMission>(server);
         // Altitudes above home: the ground where the route starts is where the vehicle takes off.
         const double home = plan.waypoints.empty() ? 0.0 : plan.waypoints.front().groundElevation;
-        constexpr double kRad = std::numbers::pi / 180.0;
         for (const mission::ProcessedWaypoint &w : plan.waypoints)
-            prepared.items.push_back({w.position.latitude * kRad, w.position.longitude * kRad, w.altitudeAmsl - home, w.speed, w.acceptanceRadius, {}});
+            prepared.items.push_back({w.position.latitude, w.position.longitude, w.altitudeAmsl - home, w.speed, w.acceptanceRadius, {}});
         for (size_t i = 0; i < plan.segments.size(); ++i) {
             for (const mission::ProcessedMessage &m : plan.segments[i].messages)
                 prepared.notices << QStringLiteral("Segment %1: %2").arg(i + 1).arg(m.text);

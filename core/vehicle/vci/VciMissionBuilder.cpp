@@ -4,17 +4,9 @@
 #include "RouteValidator.h"
 #include "VciTerrainFollow.h"
 
-#include <numbers>
-
 namespace sortie::vehicle {
 
 using namespace sortie::mission;
-
-namespace {
-
-constexpr double kRad = std::numbers::pi / 180.0;
-
-} // namespace
 
 VciMissionBuilder::VciMissionBuilder(const Route &route, const VciHeights &heights) : m_route(route), m_heights(heights) {}
 
@@ -38,7 +30,7 @@ std::optional<MissionError> VciMissionBuilder::add(int row, const std::vector<Vc
         if (!altitude)
             return at(row, QStringLiteral("an AMSL altitude needs the vehicle's home altitude, which it has not reported; "
                                           "wait for its telemetry or use AGL"));
-        m_mission.items.push_back({p.position.latitude * kRad, p.position.longitude * kRad, *altitude, p.speed, p.acceptanceRadius, p.actions});
+        m_mission.items.push_back({p.position.latitude, p.position.longitude, *altitude, p.speed, p.acceptanceRadius, p.actions});
     }
     return std::nullopt;
 }

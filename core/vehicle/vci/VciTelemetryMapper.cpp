@@ -45,8 +45,11 @@ TelemetryBatch vciTelemetry(std::string_view uri, const nlohmann::json &body, in
             return out;
         for (size_t i = 0; i < m.count; ++i) {
             const auto it = body.find(m.fields[i].first);
-            if (it != body.end() && it->is_number())
-                out.push_back({m.fields[i].second, it->get<double>(), time});
+            if (it == body.end() || !it->is_number())
+                continue;
+            const TelemetryField field = m.fields[i].second;
+            const double value = it->get<double>();
+            out.push_back({field, isAngle(field) ? degreesFromRadians(value) : value, time});
         }
         return out;
     }

@@ -4,13 +4,9 @@
 #include "TerrainFollow.h"
 
 #include <algorithm>
-#include <numbers>
-
 namespace sortie::vehicle {
 
 namespace {
-
-constexpr double kRad = std::numbers::pi / 180.0;
 
 // Probes every 10 m, as sortie-sim's processing does (SimRouteTerrain::kStep).
 constexpr double kFollowProbeStep = 10.0;
@@ -36,7 +32,7 @@ VciFollowedPoints followGround(const std::vector<VciRoutePoint> &points, double 
     size_t next = 0;  // the vertex the next leg arrives at
     for (const terrain::FollowPoint &f : followed.points) {
         const VciRoutePoint &leg = points[f.vertex >= 0 ? size_t(f.vertex) : std::min(next, points.size() - 1)];
-        MissionItem item{f.position.latitude * kRad, f.position.longitude * kRad, f.altitudeAmsl - homeAmsl, leg.speed, 0, {}};
+        MissionItem item{f.position.latitude, f.position.longitude, f.altitudeAmsl - homeAmsl, leg.speed, 0, {}};
         if (f.vertex >= 0) {
             item.acceptanceRadius = leg.acceptanceRadius;
             item.actions = leg.actions;

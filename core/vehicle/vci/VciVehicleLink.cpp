@@ -43,7 +43,7 @@ json toJson(const QVariant &value)
 
 profile::Waypoint toWaypoint(const MissionItem &item)
 {
-    profile::Waypoint w{item.latitude, item.longitude, item.altitude, item.speed, item.acceptanceRadius, {}};
+    profile::Waypoint w{radiansFromDegrees(item.latitude), radiansFromDegrees(item.longitude), item.altitude, item.speed, item.acceptanceRadius, {}};
     for (const MissionAction &a : item.actions) {
         json fields = json::object();
         for (auto it = a.parameters.begin(); it != a.parameters.end(); ++it)
@@ -55,7 +55,7 @@ profile::Waypoint toWaypoint(const MissionItem &item)
 
 MissionItem toItem(const profile::Waypoint &w)
 {
-    MissionItem item{w.latitude, w.longitude, w.altitude, w.speed, w.acceptanceRadius, {}};
+    MissionItem item{degreesFromRadians(w.latitude), degreesFromRadians(w.longitude), w.altitude, w.speed, w.acceptanceRadius, {}};
     for (const profile::Action &a : w.actions) {
         MissionAction action{QString::fromStdString(a.type), {}};
         for (const auto &[name, value] : a.fields.items())
@@ -209,7 +209,8 @@ void VciVehicleLink::returnHome(Done done)
 
 void VciVehicleLink::goTo(double latitude, double longitude, double altitude, double speed, Done done)
 {
-    put(profile::kGoto, json{{"latitude", latitude}, {"longitude", longitude}, {"altitude", altitude}, {"speed", speed}}, std::move(done));
+    // The profile speaks radians.
+    put(profile::kGoto, json{{"latitude", radiansFromDegrees(latitude)}, {"longitude", radiansFromDegrees(longitude)}, {"altitude", altitude}, {"speed", speed}}, std::move(done));
 }
 
 void VciVehicleLink::prepareMission(const mission::Route &route, PrepareDone done)
