@@ -1,7 +1,6 @@
 #pragma once
 
 #include <cstdint>
-#include <numbers>
 #include <optional>
 #include <string_view>
 
@@ -50,9 +49,11 @@ std::string_view fieldUnit(TelemetryField field); // "deg", "m", "m/s", "V", "A"
 // Latitudes, longitudes, attitude, heading and course: the fields in degrees.
 bool isAngle(TelemetryField field);
 
-// The one conversion, for the links' edges (the protocols speak radians).
-constexpr double degreesFromRadians(double radians) { return radians * (180.0 / std::numbers::pi); }
-constexpr double radiansFromDegrees(double degrees) { return degrees * (std::numbers::pi / 180.0); }
+// The one conversion, for the links' edges (the protocols speak radians). π spelled out: moc reads
+// this header and cannot parse <numbers>.
+inline constexpr double kPi = 3.14159265358979323846;
+constexpr double degreesFromRadians(double radians) { return radians * (180.0 / kPi); }
+constexpr double radiansFromDegrees(double degrees) { return degrees * (kPi / 180.0); }
 std::optional<TelemetryField> fieldFromName(std::string_view name);
 
 enum class FlightMode : uint8_t { Unknown, Manual, Hold, Takeoff, Auto, Guided, Land, ReturnHome };
