@@ -177,7 +177,7 @@ void TstVciVehicleLink::missionUploadDownloadAndFlight()
     QVERIFY(std::abs(m_vehicle->position().longitude() - 24.1058) < 1e-4);
 
     Result bad;
-    m_link->uploadMission(PreparedMission{{{2.0, 0.1, 10, 0, 0, {}}}, {}, {}}, {}, bad.callback()); // latitude beyond the pole
+    m_link->uploadMission(PreparedMission{{{120.0, 5.7, 10, 0, 0, {}}}, {}, {}}, {}, bad.callback()); // latitude (degrees) beyond the pole
     QTRY_VERIFY(bad.done);
     QVERIFY(!bad.result.ok);
     QVERIFY2(bad.result.message.contains(QLatin1String("waypoints[0].latitude")), qPrintable(bad.result.message));
