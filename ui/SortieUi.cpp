@@ -1,5 +1,17 @@
 #include "SortieUi.h"
 
+#include "AppSettings.h"
+#include "AutosaveRecovery.h"
+#include "ClientGraph.h"
+#include "ComparisonController.h"
+#include "ConnectionController.h"
+#include "ElevationService.h"
+#include "MissionController.h"
+#include "RecordingSettings.h"
+#include "ReplayController.h"
+#include "ServerHistoryRequest.h"
+#include "VehicleFleet.h"
+
 #include <QQmlEngine>
 
 namespace sortie::ui {
@@ -7,6 +19,20 @@ namespace sortie::ui {
 void addImportPaths(QQmlEngine &engine)
 {
     engine.addImportPath(QStringLiteral("qrc:/qt/qml"));
+}
+
+QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settings)
+{
+    return {{QStringLiteral("appSettings"), QVariant::fromValue(&settings)},
+            {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&graph.connection())},
+            {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&graph.missions())},
+            {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(graph.fleet())},
+            {QStringLiteral("elevation"), QVariant::fromValue<QObject *>(graph.elevation())},
+            {QStringLiteral("replay"), QVariant::fromValue<QObject *>(&graph.replay())},
+            {QStringLiteral("comparison"), QVariant::fromValue<QObject *>(&graph.comparison())},
+            {QStringLiteral("serverHistory"), QVariant::fromValue<QObject *>(&graph.serverHistory())},
+            {QStringLiteral("recordingSettings"), QVariant::fromValue<QObject *>(&graph.recordingSettings())},
+            {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(graph.recovery())}};
 }
 
 } // namespace sortie::ui

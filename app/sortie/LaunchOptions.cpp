@@ -2,6 +2,8 @@
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QDir>
+#include <QStandardPaths>
 #include <QUrl>
 #include <QUrlQuery>
 
@@ -117,6 +119,30 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
         options.vci = std::get<VciEndpoint>(parsed);
     }
     return options;
+}
+
+namespace {
+
+// The environment's folder, else the demo's own, else one in the application data folder.
+QString dataFolder(const char *variable, const QString &name, bool demo)
+{
+    const QString env = qEnvironmentVariable(variable);
+    if (!env.isEmpty())
+        return env;
+    if (demo)
+        return QDir::temp().filePath(QStringLiteral("sortie-demo-") + name);
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(name);
+}
+
+} // namespace
+
+client::ClientGraph::Options LaunchOptions::graphOptions() const
+{
+    client::ClientGraph::Options graph;
+    graph.demFolder = demPath;
+    graph.autosaveDirectory = autosaveDir.isEmpty() ? dataFolder("SORTIE_AUTOSAVE_DIR", QStringLiteral("autosave"), demo) : autosaveDir;
+    graph.flightLogDirectory = dataFolder("SORTIE_FLIGHTLOG_DIR", QStringLiteral("flightlogs"), demo);
+    return graph;
 }
 
 } // namespace sortie::app

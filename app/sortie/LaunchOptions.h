@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ClientGraph.h"
 #include "ServerAddress.h"
 
 #include <QString>
@@ -43,6 +44,11 @@ struct LaunchOptions
 
     // Errors come back as one line an operator understands.
     static std::variant<LaunchOptions, QString> parse(const QStringList &arguments);
+
+    // The client graph the program builds for these options: the terrain folder, and where autosaves
+    // and flight logs go (--autosave-dir, else SORTIE_AUTOSAVE_DIR; SORTIE_FLIGHTLOG_DIR; else a folder
+    // of the demo's own, whose server lives only as long as the program; else the application data folder).
+    client::ClientGraph::Options graphOptions() const;
 };
 
 } // namespace sortie::app

@@ -36,6 +36,11 @@ VehicleFleet::VehicleFleet(hci::HciClient *client, terrain::ElevationService *el
     });
 }
 
+terrain::ElevationService *VehicleFleet::elevation() const
+{
+    return m_elevation;
+}
+
 VehicleFleet::~VehicleFleet()
 {
     // Vehicles first (they watch their links), then the links, with nothing reaching back here.

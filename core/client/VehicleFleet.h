@@ -60,6 +60,8 @@ public:
     Q_INVOKABLE sortie::vehicle::Vehicle *vehicle(const QString &id) const;
     vehicle::CommandLog *commandLog() { return &m_commandLog; }
     CommandPolicy *commands() { return &m_commands; }
+    // The ground VCI routes are planned over (nullptr: none).
+    terrain::ElevationService *elevation() const;
 
     // Connects a vehicle over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600.
     Q_INVOKABLE bool addVciVehicle(const QString &endpoint);

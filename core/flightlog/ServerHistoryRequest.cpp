@@ -23,6 +23,11 @@ ServerHistoryRequest::ServerHistoryRequest(hci::HciClient *client, ReplayControl
     connect(&m_history, &ServerHistory::finished, this, &ServerHistoryRequest::onFinished);
 }
 
+client::VehicleFleet *ServerHistoryRequest::fleet() const
+{
+    return m_fleet;
+}
+
 void ServerHistoryRequest::setFleet(client::VehicleFleet *fleet)
 {
     m_fleet = fleet;

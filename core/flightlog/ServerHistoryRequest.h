@@ -50,6 +50,7 @@ public:
 
     // Where reset() finds the server's vehicles (its HCI rows); none: setVehicles() only.
     void setFleet(client::VehicleFleet *fleet);
+    client::VehicleFleet *fleet() const;
     // Milliseconds since the epoch; the wall clock unless a test sets one.
     void setClock(std::function<qint64()> clock) { m_clock = std::move(clock); }
 

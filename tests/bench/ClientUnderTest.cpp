@@ -10,20 +10,14 @@ namespace sortie::bench {
 ClientUnderTest::ClientUnderTest(bool withWindow)
     : m_storage(m_dir.filePath(QStringLiteral("settings.ini")), QSettings::IniFormat)
     , m_settings(&m_storage, &m_vault)
-    , m_client(&m_session)
-    , m_connection(&m_session)
-    , m_missions(&m_client)
-    , m_fleet(&m_client)
+    , m_graph(&m_storage, {{}, m_dir.filePath(QStringLiteral("autosave")), m_dir.filePath(QStringLiteral("flightlogs")), true})
     , m_withWindow(withWindow)
 {
     if (!withWindow)
         return;
     m_engine = std::make_unique<QQmlApplicationEngine>();
     ui::addImportPaths(*m_engine);
-    m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(&m_settings)},
-                                   {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&m_connection)},
-                                   {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&m_missions)},
-                                   {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(&m_fleet)}});
+    m_engine->setInitialProperties(ui::mainWindowProperties(m_graph, m_settings));
     m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
     if (m_engine->rootObjects().isEmpty())
         return;
@@ -36,8 +30,8 @@ ClientUnderTest::ClientUnderTest(bool withWindow)
 
 bool ClientUnderTest::logIn(const QString &address, int timeoutMs)
 {
-    QSignalSpy ready(&m_connection, &client::ConnectionController::ready);
-    return m_connection.connectToServer(address, QStringLiteral("admin"), QStringLiteral("admin")) && ready.wait(timeoutMs);
+    QSignalSpy ready(&m_graph.connection(), &client::ConnectionController::ready);
+    return m_graph.connection().connectToServer(address, QStringLiteral("admin"), QStringLiteral("admin")) && ready.wait(timeoutMs);
 }
 
 void ClientUnderTest::showPage(int page)

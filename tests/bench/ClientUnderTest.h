@@ -1,9 +1,8 @@
 #pragma once
 
 #include "AppSettings.h"
+#include "ClientGraph.h"
 #include "ConnectionController.h"
-#include "HciClient.h"
-#include "HciSession.h"
 #include "MissionController.h"
 #include "PasswordVault.h"
 #include "VehicleFleet.h"
@@ -18,8 +17,8 @@ class QQuickWindow;
 
 namespace sortie::bench {
 
-// The desktop client wired as app/sortie wires it (session, controllers, fleet, the Sortie.Ui main
-// window shown offscreen), with settings in a temporary directory.
+// The desktop client wired as app/sortie wires it (its ClientGraph, the Sortie.Ui main window shown
+// offscreen), with settings, autosaves and flight logs in a temporary directory.
 class ClientUnderTest
 {
 public:
@@ -28,9 +27,9 @@ public:
 
     bool isReady() const { return m_window != nullptr || !m_withWindow; }
     QQuickWindow *window() const { return m_window; }
-    client::ConnectionController &connection() { return m_connection; }
-    client::MissionController &missions() { return m_missions; }
-    client::VehicleFleet &fleet() { return m_fleet; }
+    client::ConnectionController &connection() { return m_graph.connection(); }
+    client::MissionController &missions() { return m_graph.missions(); }
+    client::VehicleFleet &fleet() { return *m_graph.fleet(); }
 
     // Logs in and waits for the session; false after `timeoutMs`.
     bool logIn(const QString &address, int timeoutMs = 20000);
@@ -44,11 +43,7 @@ private:
     sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")};
     QSettings m_storage;
     ui::AppSettings m_settings;
-    hci::HciSession m_session;
-    hci::HciClient m_client;
-    client::ConnectionController m_connection;
-    client::MissionController m_missions;
-    client::VehicleFleet m_fleet;
+    client::ClientGraph m_graph;
     std::unique_ptr<QQmlApplicationEngine> m_engine;
     QQuickWindow *m_window = nullptr;
     bool m_withWindow;

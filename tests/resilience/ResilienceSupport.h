@@ -2,6 +2,7 @@
 
 // Helpers for the fault tests: the operator as the desktop app wires it, and waiting on the event
 // loop. tests/support has sortie-sim as a process, free ports and this process's memory and descriptors.
+#include "ClientGraph.h"
 #include "ConnectionController.h"
 #include "FreePort.h"
 #include "HciClient.h"
@@ -10,6 +11,8 @@
 #include "ProcessStats.h"
 #include "VehicleFleet.h"
 
+#include <QSettings>
+#include <QTemporaryDir>
 #include <QTest>
 
 #include <chrono>
@@ -45,18 +48,21 @@ bool waitUntil(Predicate done, int timeoutMs = 10000)
     return true;
 }
 
-// One operator: session, client and the controllers the views bind to. Short backoff, so a restarted
-// server is found again within a second or so.
+// One operator: the client as the program wires it (ClientGraph), with settings in a folder of its
+// own and nothing written to disk (no autosave, no flight log: these tests count descriptors and
+// threads). Short backoff, so a restarted server is found again within a second or so.
 struct Operator
 {
     // withFleet: also the vehicles (their telemetry subscriptions keep the stream busy).
     explicit Operator(bool withFleet = true)
-        : client(&session)
-        , connection(&session)
-        , missions(&client)
-        , fleet(withFleet ? std::make_unique<client::VehicleFleet>(&client) : nullptr)
+        : storage(dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat)
+        , graph(&storage, {{}, {}, {}, withFleet})
+        , session(graph.session())
+        , client(graph.hciClient())
+        , connection(graph.connection())
+        , missions(graph.missions())
+        , fleet(graph.fleet())
     {
-        missions.setFleet(fleet.get());
         session.reconnectPolicy().setDelays(100ms, 800ms);
         session.setConnectTimeout(3000ms);
         QObject::connect(&connection, &client::ConnectionController::stateChanged, &connection, [this] {
@@ -75,11 +81,14 @@ struct Operator
         return connection.isReady();
     }
 
-    hci::HciSession session;
-    hci::HciClient client;
-    client::ConnectionController connection;
-    client::MissionController missions;
-    std::unique_ptr<client::VehicleFleet> fleet;
+    QTemporaryDir dir;
+    QSettings storage;
+    client::ClientGraph graph;
+    hci::HciSession &session;
+    hci::HciClient &client;
+    client::ConnectionController &connection;
+    client::MissionController &missions;
+    client::VehicleFleet *fleet; // nullptr without the fleet
     QStringList states; // every state the operator saw, in order
 };
 

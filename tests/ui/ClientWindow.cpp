@@ -33,21 +33,20 @@ ClientWindow::ClientWindow(Options options)
     m_vci = std::make_unique<sim::SimVciFleet>(vci);
     if (!m_vci->start(&m_error))
         return;
+    if (options.beforeClient)
+        options.beforeClient(*this);
     m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
     m_settings = std::make_unique<ui::AppSettings>(m_storage.get(), &m_vault);
-    m_session = std::make_unique<hci::HciSession>();
-    m_client = std::make_unique<hci::HciClient>(m_session.get());
-    m_connection = std::make_unique<client::ConnectionController>(m_session.get());
-    QObject::connect(m_connection.get(), &client::ConnectionController::ready, m_settings.get(), &ui::AppSettings::loginSucceeded);
-    m_missions = std::make_unique<client::MissionController>(m_client.get());
-    m_fleet = std::make_unique<client::VehicleFleet>(m_client.get());
-    m_missions->setFleet(m_fleet.get()); // the upload chooser lists every vehicle of the fleet
+    // The program's graph, with the fixture's own folders where the program has the operator's.
+    client::ClientGraph::Options graph;
+    graph.autosaveDirectory = options.autosaveDirectory.isEmpty() ? m_dir.filePath(QStringLiteral("autosave"))
+                                                                   : options.autosaveDirectory;
+    graph.flightLogDirectory = m_dir.filePath(QStringLiteral("flightlogs"));
+    m_graph = std::make_unique<client::ClientGraph>(m_storage.get(), graph);
+    QObject::connect(&m_graph->connection(), &client::ConnectionController::ready, m_settings.get(), &ui::AppSettings::loginSucceeded);
     m_engine = std::make_unique<QQmlApplicationEngine>();
     ui::addImportPaths(*m_engine);
-    m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())},
-                                    {QStringLiteral("connection"), QVariant::fromValue<QObject *>(m_connection.get())},
-                                    {QStringLiteral("missions"), QVariant::fromValue<QObject *>(m_missions.get())},
-                                    {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(m_fleet.get())}});
+    m_engine->setInitialProperties(ui::mainWindowProperties(*m_graph, *m_settings));
     m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
     if (m_engine->rootObjects().isEmpty()) {
         m_error = QStringLiteral("Main.qml did not load");
@@ -59,17 +58,21 @@ ClientWindow::ClientWindow(Options options)
     if (!QTest::qWaitForWindowExposed(m_window)) {
         m_error = QStringLiteral("the window was not exposed");
         m_window = nullptr;
+        return;
+    }
+    if (options.activate) {
+        m_window->requestActivate();
+        if (!QTest::qWaitForWindowActive(m_window)) {
+            m_error = QStringLiteral("the window did not become active");
+            m_window = nullptr;
+        }
     }
 }
 
 ClientWindow::~ClientWindow()
 {
     m_engine.reset();
-    m_fleet.reset();
-    m_missions.reset();
-    m_connection.reset();
-    m_client.reset();
-    m_session.reset();
+    m_graph.reset();
     m_vci.reset();
     m_server.reset();
     m_world.reset();
@@ -77,34 +80,34 @@ ClientWindow::~ClientWindow()
 
 bool ClientWindow::logIn()
 {
-    QSignalSpy ready(m_connection.get(), &client::ConnectionController::ready);
-    if (!m_connection->connectToServer(QStringLiteral("127.0.0.1:%1").arg(m_server->port()), QStringLiteral("admin"),
+    QSignalSpy ready(&m_graph->connection(), &client::ConnectionController::ready);
+    if (!m_graph->connection().connectToServer(QStringLiteral("127.0.0.1:%1").arg(m_server->port()), QStringLiteral("admin"),
                                        QStringLiteral("admin")))
         return false;
-    return ready.wait(10000) || m_connection->isReady();
+    return ready.wait(10000) || m_graph->connection().isReady();
 }
 
 bool ClientWindow::openDemoRoute()
 {
-    auto *routes = m_missions->routes();
-    if (!QTest::qWaitFor([&] { return routes->rowCount() > 0 && !m_missions->isBusy(); }, 10000))
+    auto *routes = m_graph->missions().routes();
+    if (!QTest::qWaitFor([&] { return routes->rowCount() > 0 && !m_graph->missions().isBusy(); }, 10000))
         return false;
     const int id = routes->objectIdAt(0);
-    m_missions->openRoute(id);
-    return QTest::qWaitFor([&] { return m_missions->routeId() == id && m_missions->document()->model()->rowCount() > 0; }, 10000);
+    m_graph->missions().openRoute(id);
+    return QTest::qWaitFor([&] { return m_graph->missions().routeId() == id && m_graph->missions().document()->model()->rowCount() > 0; }, 10000);
 }
 
 bool ClientWindow::addVciVehicles()
 {
-    const int before = m_fleet->count();
+    const int before = m_graph->fleet()->count();
     for (const auto &listener : m_vci->listeners())
-        if (!m_fleet->addVciVehicle(QStringLiteral("tcp://127.0.0.1:%1").arg(listener->port())))
+        if (!m_graph->fleet()->addVciVehicle(QStringLiteral("tcp://127.0.0.1:%1").arg(listener->port())))
             return false;
     return QTest::qWaitFor([&] {
-        for (int row = before; row < m_fleet->count(); ++row)
-            if (!m_fleet->vehicleAt(row)->position().isValid())
+        for (int row = before; row < m_graph->fleet()->count(); ++row)
+            if (!m_graph->fleet()->vehicleAt(row)->position().isValid())
                 return false;
-        return m_fleet->count() == before + int(m_vci->listeners().size());
+        return m_graph->fleet()->count() == before + int(m_vci->listeners().size());
     }, 10000);
 }
 

@@ -1,13 +1,12 @@
 #pragma once
 
-// The whole client in one offscreen window, as app/sortie wires it, against the embedded
-// simulator: an HCI server with the demo content (three vehicles, a demo route) and VCI vehicles
-// on loopback ports. For UI tests that fly, render or inspect the real views.
+// The whole client in one offscreen window, wired by the program's own ClientGraph, against the
+// embedded simulator: an HCI server with the demo content (three vehicles, a demo route) and VCI
+// vehicles on loopback ports. For UI tests that fly, render or inspect the real views.
 #include "AppSettings.h"
+#include "ClientGraph.h"
 #include "ConnectionController.h"
-#include "HciClient.h"
 #include "HciServer.h"
-#include "HciSession.h"
 #include "MissionController.h"
 #include "PasswordVault.h"
 #include "SimVciFleet.h"
@@ -21,6 +20,7 @@
 #include <QSettings>
 #include <QTemporaryDir>
 
+#include <functional>
 #include <memory>
 
 namespace sortie::test {
@@ -35,6 +35,13 @@ public:
         double vciTimeScale = 1;    // simulated seconds per real second for the VCI vehicles
         int uploadStepMs = 20;
         QSize size{1280, 800};
+        bool activate = false;      // also wait until the window is active (keyboard tests)
+        // Where the client autosaves and recovers from: empty, a folder of the fixture's own (as the
+        // program has one); a test that prepares a previous run's autosaves names their folder.
+        QString autosaveDirectory;
+        // Runs once the simulator listens, before the client is built: what a previous run left
+        // behind that names this server (its autosaves).
+        std::function<void(ClientWindow &)> beforeClient;
     };
     explicit ClientWindow(Options options);
     ClientWindow() : ClientWindow(Options{}) {}
@@ -66,9 +73,10 @@ public:
     sim::HciServer &server() { return *m_server; }
     sim::SimVciFleet &vci() { return *m_vci; }
     ui::AppSettings &settings() { return *m_settings; }
-    client::ConnectionController &connection() { return *m_connection; }
-    client::MissionController &missions() { return *m_missions; }
-    client::VehicleFleet &fleet() { return *m_fleet; }
+    client::ClientGraph &graph() { return *m_graph; }
+    client::ConnectionController &connection() { return m_graph->connection(); }
+    client::MissionController &missions() { return m_graph->missions(); }
+    client::VehicleFleet &fleet() { return *m_graph->fleet(); }
 
 private:
     QTemporaryDir m_dir;
@@ -78,11 +86,7 @@ private:
     sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")}; // no keyring under ctest: nothing remembered
     std::unique_ptr<QSettings> m_storage;
     std::unique_ptr<ui::AppSettings> m_settings;
-    std::unique_ptr<hci::HciSession> m_session;
-    std::unique_ptr<hci::HciClient> m_client;
-    std::unique_ptr<client::ConnectionController> m_connection;
-    std::unique_ptr<client::MissionController> m_missions;
-    std::unique_ptr<client::VehicleFleet> m_fleet;
+    std::unique_ptr<client::ClientGraph> m_graph;
     std::unique_ptr<QQmlApplicationEngine> m_engine;
     QQuickWindow *m_window = nullptr;
     QString m_error;

@@ -4,6 +4,7 @@
 // grey ghost on the map) until a button resolves it.
 #include "AppSettings.h"
 #include "AutosaveRecovery.h"
+#include "ClientWindow.h"
 #include "AutosaveTestRoute.h"
 #include "ConnectionController.h"
 #include "HciClient.h"
@@ -38,18 +39,7 @@ class TestRecoveryFlows : public QObject
 {
     Q_OBJECT
 
-    QTemporaryDir m_dir;
-    std::unique_ptr<sim::SimWorld> m_world;
-    std::unique_ptr<sim::HciServer> m_server;
-    sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")}; // no keyring under ctest: nothing remembered
-    std::unique_ptr<QSettings> m_storage;
-    std::unique_ptr<ui::AppSettings> m_settings;
-    std::unique_ptr<hci::HciSession> m_session;
-    std::unique_ptr<hci::HciClient> m_client;
-    std::unique_ptr<client::ConnectionController> m_connection;
-    std::unique_ptr<client::MissionController> m_missions;
-    std::unique_ptr<client::AutosaveRecovery> m_recovery;
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    std::unique_ptr<test::ClientWindow> m_app; // the program's graph and window, against the simulator
     QQuickWindow *m_window = nullptr;
 
     template<typename T = QQuickItem>
@@ -62,53 +52,27 @@ class TestRecoveryFlows : public QObject
         QTest::mouseClick(m_window, Qt::LeftButton, {}, item->mapToScene(QPointF(item->width() / 2, item->height() / 2)).toPoint());
     }
 
-    void showWindow()
+    // The client as the program starts it, recovering from `autosaves` (empty: a folder of its own).
+    void showWindow(const QString &autosaves = {}, std::function<void(test::ClientWindow &)> beforeClient = {})
     {
-        m_engine = std::make_unique<QQmlApplicationEngine>();
-        ui::addImportPaths(*m_engine);
-        m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())},
-                                        {QStringLiteral("connection"), QVariant::fromValue<QObject *>(m_connection.get())},
-                                        {QStringLiteral("missions"), QVariant::fromValue<QObject *>(m_missions.get())},
-                                        {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(m_recovery.get())}});
-        m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
-        QVERIFY(!m_engine->rootObjects().isEmpty());
-        m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
-        m_window->resize(1280, 800);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
+        test::ClientWindow::Options options;
+        options.vciVehicles = 0;
+        options.autosaveDirectory = autosaves;
+        options.beforeClient = std::move(beforeClient);
+        m_app = std::make_unique<test::ClientWindow>(options);
+        QVERIFY2(m_app->isReady(), qPrintable(m_app->error()));
+        m_window = m_app->window();
     }
+    client::MissionController *missions() { return &m_app->missions(); }
+    client::AutosaveRecovery *recovery() { return m_app->graph().recovery(); }
 
 private slots:
     void initTestCase() { test::useSoftwareRendering(); }
 
-    void init()
-    {
-        sim::SimWorld::Config config;
-        config.users = {{0, QStringLiteral("admin"), QStringLiteral("admin"), true}};
-        m_world = std::make_unique<sim::SimWorld>(config);
-        m_server = std::make_unique<sim::HciServer>(*m_world);
-        QVERIFY(m_server->listen(QHostAddress::LocalHost, 0));
-        m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
-        m_storage->clear();
-        m_settings = std::make_unique<ui::AppSettings>(m_storage.get(), &m_vault);
-        m_session = std::make_unique<hci::HciSession>();
-        m_client = std::make_unique<hci::HciClient>(m_session.get());
-        m_connection = std::make_unique<client::ConnectionController>(m_session.get());
-        m_missions = std::make_unique<client::MissionController>(m_client.get());
-    }
-
     void cleanup()
     {
-        m_engine.reset();
-        m_recovery.reset();
-        m_missions.reset();
-        m_connection.reset();
-        m_client.reset();
-        m_session.reset();
-        m_settings.reset();
-        m_storage.reset();
-        m_server.reset();
-        m_world.reset();
+        m_window = nullptr;
+        m_app.reset();
     }
 
     void restoreDialogShowsTheChangesAndRestores()
@@ -122,8 +86,7 @@ private slots:
             test::editRoute(doc);
             edited = doc.route();
         }
-        m_recovery = std::make_unique<client::AutosaveRecovery>(m_missions->document(), autosaves.path());
-        showWindow();
+        showWindow(autosaves.path());
         QObject *dialog = find<QObject>("restoreDialog");
         QVERIFY(dialog);
         QTRY_VERIFY(dialog->property("visible").toBool());
@@ -137,8 +100,8 @@ private slots:
         QTRY_COMPARE(route->count(), 13);
         QTRY_COMPARE(find("waypointList")->property("count").toInt(), 13);
         QTRY_COMPARE(route->visibleWaypointCount(), 13); // fitted to the map
-        QVERIFY(m_missions->document()->route() == edited);
-        QVERIFY(m_missions->document()->isModified());
+        QVERIFY(missions()->document()->route() == edited);
+        QVERIFY(missions()->document()->isModified());
     }
 
     // An autosave that cannot be read is kept aside and the dialog says where, with nothing to
@@ -156,9 +119,8 @@ private slots:
         QVERIFY(file.open(QIODevice::ReadWrite));
         QVERIFY(file.resize(file.size() / 2));  // as a cut-short write would leave it
         file.close();
-        m_recovery = std::make_unique<client::AutosaveRecovery>(m_missions->document(), autosaves.path());
-        QVERIFY(!m_recovery->isAvailable());
-        showWindow();
+        showWindow(autosaves.path());
+        QVERIFY(!recovery()->isAvailable());
         QObject *dialog = find<QObject>("restoreDialog");
         QTRY_VERIFY(dialog->property("visible").toBool());
         QQuickItem *message = find("recoveryMessage");
@@ -168,41 +130,38 @@ private slots:
         QVERIFY(!find("restoreChanges")->isVisible());
         click("acknowledgeRecoveryButton");
         QTRY_VERIFY(!dialog->property("visible").toBool());
-        QVERIFY(m_recovery->message().isEmpty());
+        QVERIFY(recovery()->message().isEmpty());
     }
 
     void severalAutosavesInOneListAndAServerRouteWaitsForItsSession()
     {
         QTemporaryDir autosaves;
-        const QString server = QStringLiteral("127.0.0.1:%1").arg(m_server->port());
+        QString server;
         mission::Route edited;
-        { // a run that was editing a route of this server as admin
-            client::RouteDocument doc;
-            client::RouteAutosave autosave(&doc, autosaves.path());
-            autosave.setServer(server, QStringLiteral("admin"));
-            doc.load(test::serverRoute());
-            test::editRoute(doc);
-            edited = doc.route();
-        }
-        { // an older run editing a route from a file
-            client::RouteDocument doc;
-            client::RouteAutosave autosave(&doc, autosaves.path());
-            mission::Route route = test::serverRoute();
-            route.origin = {};
-            route.settings.name = QStringLiteral("Field B");
-            doc.load(route);
-            doc.editor()->addWaypoint(QGeoCoordinate(56.5, 24.5));
-        } // written once more as it goes
-        QFile older(client::AutosaveDirectory(autosaves.path()).filePath(2));
-        QVERIFY(older.open(QIODevice::ReadWrite));
-        QVERIFY(older.setFileTime(QDateTime::currentDateTime().addSecs(-600), QFileDevice::FileModificationTime));
-        older.close();
-        m_recovery = std::make_unique<client::AutosaveRecovery>(m_missions->document(), autosaves.path());
-        connect(m_connection.get(), &client::ConnectionController::stateChanged, m_recovery.get(), [this] {
-            const bool ready = m_connection->isReady();
-            m_recovery->setSession(ready ? m_connection->server() : QString(), ready ? m_connection->user() : QString());
-        });
-        showWindow();
+        showWindow(autosaves.path(), [&](test::ClientWindow &app) {
+            server = QStringLiteral("127.0.0.1:%1").arg(app.server().port());
+            { // a run that was editing a route of this server as admin
+                client::RouteDocument doc;
+                client::RouteAutosave autosave(&doc, autosaves.path());
+                autosave.setServer(server, QStringLiteral("admin"));
+                doc.load(test::serverRoute());
+                test::editRoute(doc);
+                edited = doc.route();
+            }
+            { // an older run editing a route from a file
+                client::RouteDocument doc;
+                client::RouteAutosave autosave(&doc, autosaves.path());
+                mission::Route route = test::serverRoute();
+                route.origin = {};
+                route.settings.name = QStringLiteral("Field B");
+                doc.load(route);
+                doc.editor()->addWaypoint(QGeoCoordinate(56.5, 24.5));
+            } // written once more as it goes
+            QFile older(client::AutosaveDirectory(autosaves.path()).filePath(2));
+            QVERIFY(older.open(QIODevice::ReadWrite));
+            QVERIFY(older.setFileTime(QDateTime::currentDateTime().addSecs(-600), QFileDevice::FileModificationTime));
+            older.close();
+        }); // the client starts, as the program wires it: the recovery follows the session
         QObject *dialog = find<QObject>("restoreDialog");
         QTRY_VERIFY(dialog->property("visible").toBool());
         QTRY_COMPARE(find("autosaveList")->property("count").toInt(), 2);
@@ -218,31 +177,32 @@ private slots:
 
         click("laterAutosaveButton"); // to sign in first
         QTRY_VERIFY(!dialog->property("visible").toBool());
-        QSignalSpy ready(m_connection.get(), &client::ConnectionController::ready);
-        m_connection->connectToServer(server, QStringLiteral("admin"), QStringLiteral("admin"));
+        QSignalSpy ready(&m_app->connection(), &client::ConnectionController::ready);
+        m_app->connection().connectToServer(server, QStringLiteral("admin"), QStringLiteral("admin"));
         QVERIFY(ready.wait(10000));
         QTRY_VERIFY(dialog->property("visible").toBool()); // offered again, now restorable
         QTRY_VERIFY(!blocker->isVisible());
-        QCOMPARE(m_recovery->currentRow(), 0);
+        QCOMPARE(recovery()->currentRow(), 0);
         click("restoreAutosaveButton");
         QTRY_VERIFY(!dialog->property("visible").toBool());
         QTRY_COMPARE(m_window->property("currentPage").toInt(), 1);
-        QVERIFY(m_missions->document()->route() == edited);
-        // The other stays on disk for the next start.
-        QCOMPARE(client::AutosaveDirectory(autosaves.path()).slotsWithFiles().size(), 1);
+        QVERIFY(missions()->document()->route() == edited);
+        // The other stays on disk for the next start (beside this run's own autosave, in a slot of its own).
+        QVERIFY(client::AutosaveDirectory(autosaves.path()).slotsWithFiles().contains(2));
+        QVERIFY(!client::AutosaveDirectory(autosaves.path()).slotsWithFiles().contains(1));
     }
 
     void conflictShowsBothCopiesUntilAButtonResolvesIt()
     {
         showWindow();
-        QSignalSpy ready(m_connection.get(), &client::ConnectionController::ready);
-        m_connection->connectToServer(QStringLiteral("127.0.0.1:%1").arg(m_server->port()), QStringLiteral("admin"), QStringLiteral("admin"));
+        QSignalSpy ready(&m_app->connection(), &client::ConnectionController::ready);
+        m_app->connection().connectToServer(QStringLiteral("127.0.0.1:%1").arg(m_app->server().port()), QStringLiteral("admin"), QStringLiteral("admin"));
         QVERIFY(ready.wait(10000));
-        QTRY_VERIFY(m_missions->routes()->count() > 0);
-        const int id = m_missions->routes()->objectIdAt(0);
-        m_missions->openRoute(id);
-        QTRY_COMPARE(m_missions->routeId(), id);
-        client::RouteDocument *doc = m_missions->document();
+        QTRY_VERIFY(missions()->routes()->count() > 0);
+        const int id = missions()->routes()->objectIdAt(0);
+        missions()->openRoute(id);
+        QTRY_COMPARE(missions()->routeId(), id);
+        client::RouteDocument *doc = missions()->document();
         const int count = doc->model()->count();
         doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
 
@@ -250,7 +210,7 @@ private slots:
         hci::HciSession other;
         hci::HciClient bob(&other);
         QSignalSpy otherReady(&other, &hci::HciSession::ready);
-        other.open(QStringLiteral("127.0.0.1"), m_server->port(), QStringLiteral("admin"), QStringLiteral("admin"));
+        other.open(QStringLiteral("127.0.0.1"), m_app->server().port(), QStringLiteral("admin"), QStringLiteral("admin"));
         QVERIFY(otherReady.wait(10000));
         hci::HciReply *get = bob.getObject(hci::HciObjectType::Route, id);
         QSignalSpy got(get, &hci::HciReply::finished);

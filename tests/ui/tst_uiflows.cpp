@@ -3,6 +3,7 @@
 // waypoints on the map and in the table, undo, save and see the server's copy change from a
 // second session, draw an area scan, upload with the progress bar moving.
 #include "AppSettings.h"
+#include "ClientWindow.h"
 #include "ConnectionController.h"
 #include "HciClient.h"
 #include "HciReply.h"
@@ -10,12 +11,9 @@
 #include "MapView.h"
 #include "Messages.pb.h"
 #include "MissionController.h"
-#include "PasswordVault.h"
 #include "QuickScene.h"
 #include "RouteLayer.h"
-#include "SimVciFleet.h"
 #include "SimVciListener.h"
-#include "SimWorld.h"
 #include "VehicleFleet.h"
 #include "VehicleLayer.h"
 #include "TelemetryPlot.h"
@@ -53,19 +51,7 @@ class TestUiFlows : public QObject
 {
     Q_OBJECT
 
-    QTemporaryDir m_dir;
-    std::unique_ptr<sim::SimWorld> m_world;
-    std::unique_ptr<sim::HciServer> m_server;
-    sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")}; // no keyring under ctest: nothing remembered
-    std::unique_ptr<QSettings> m_storage;
-    std::unique_ptr<ui::AppSettings> m_settings;
-    std::unique_ptr<hci::HciSession> m_session;
-    std::unique_ptr<hci::HciClient> m_client;
-    std::unique_ptr<client::ConnectionController> m_connection;
-    std::unique_ptr<client::MissionController> m_missions;
-    std::unique_ptr<client::VehicleFleet> m_fleet;
-    std::unique_ptr<sim::SimVciFleet> m_vci;
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
+    std::unique_ptr<test::ClientWindow> m_app; // the program's graph and window, against the simulator
     QQuickWindow *m_window = nullptr;
 
     // By objectName, through QObject children and the item tree (a Repeater's delegates are only in the latter).
@@ -117,7 +103,7 @@ class TestUiFlows : public QObject
     void logIn(const QString &password)
     {
         QTest::keyClick(m_window, Qt::Key_1, Qt::ControlModifier);
-        type("serverField", QStringLiteral("127.0.0.1:%1").arg(m_server->port()));
+        type("serverField", QStringLiteral("127.0.0.1:%1").arg(m_app->server().port()));
         type("userField", QStringLiteral("admin"));
         type("passwordField", password);
         click("connectButton");
@@ -129,7 +115,7 @@ class TestUiFlows : public QObject
         QTRY_COMPARE(m_window->property("currentPage").toInt(), 1);
         QObject *picker = find<QObject>("routePicker");
         QTRY_VERIFY(picker->property("count").toInt() > 0);
-        QTRY_VERIFY(!m_missions->isBusy()); // the lists have arrived and will not be reset under us
+        QTRY_VERIFY(!m_app->missions().isBusy()); // the lists have arrived and will not be reset under us
         // The keyboard way: focus the picker, Down picks the first route.
         find("routePicker")->forceActiveFocus(Qt::TabFocusReason);
         QTRY_VERIFY(find("routePicker")->hasActiveFocus());
@@ -139,7 +125,7 @@ class TestUiFlows : public QObject
         QTest::keyClick(m_window, Qt::Key_Tab);
         QTRY_VERIFY(find("openRouteButton")->hasActiveFocus());
         QTest::keyClick(m_window, Qt::Key_Space);
-        QTRY_VERIFY2(routeLayer()->count() == 4, qPrintable(m_missions->message() + QStringLiteral(" / picker value ")
+        QTRY_VERIFY2(routeLayer()->count() == 4, qPrintable(m_app->missions().message() + QStringLiteral(" / picker value ")
                                                              + picker->property("currentValue").toString()));
         QTRY_COMPARE(routeLayer()->visibleWaypointCount(), 4); // fitted to the map
     }
@@ -149,7 +135,7 @@ class TestUiFlows : public QObject
         hci::HciSession other;
         hci::HciClient client(&other);
         QSignalSpy ready(&other, &hci::HciSession::ready);
-        other.open(QStringLiteral("127.0.0.1"), m_server->port(), QStringLiteral("admin"), QStringLiteral("admin"));
+        other.open(QStringLiteral("127.0.0.1"), m_app->server().port(), QStringLiteral("admin"), QStringLiteral("admin"));
         if (!ready.wait(10000))
             return {};
         hci::HciReply *reply = client.getObject(hci::HciObjectType::Route, routeId);
@@ -168,56 +154,18 @@ private slots:
 
     void init()
     {
-        sim::SimWorld::Config config;
-        config.users = {{0, QStringLiteral("admin"), QStringLiteral("admin"), true}};
-        m_world = std::make_unique<sim::SimWorld>(config);
-        m_server = std::make_unique<sim::HciServer>(*m_world);
-        m_server->setUploadStepMs(40);
-        QVERIFY(m_server->listen(QHostAddress::LocalHost, 0));
-        m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
-        m_storage->clear();
-        m_settings = std::make_unique<ui::AppSettings>(m_storage.get(), &m_vault);
-        m_session = std::make_unique<hci::HciSession>();
-        m_client = std::make_unique<hci::HciClient>(m_session.get());
-        m_connection = std::make_unique<client::ConnectionController>(m_session.get());
-        m_missions = std::make_unique<client::MissionController>(m_client.get());
-        m_fleet = std::make_unique<client::VehicleFleet>(m_client.get());
-        m_missions->setFleet(m_fleet.get());
-        sim::SimVciFleetOptions vci;
-        vci.count = 1;
-        vci.firstPort = 0;
-        m_vci = std::make_unique<sim::SimVciFleet>(vci);
-        QString vciError;
-        QVERIFY2(m_vci->start(&vciError), qPrintable(vciError));
-        m_engine = std::make_unique<QQmlApplicationEngine>();
-        ui::addImportPaths(*m_engine);
-        m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())},
-                                        {QStringLiteral("connection"), QVariant::fromValue<QObject *>(m_connection.get())},
-                                        {QStringLiteral("missions"), QVariant::fromValue<QObject *>(m_missions.get())},
-                                        {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(m_fleet.get())}});
-        m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
-        QVERIFY(!m_engine->rootObjects().isEmpty());
-        m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
-        m_window->resize(1280, 800);
-        m_window->show();
-        QVERIFY(QTest::qWaitForWindowExposed(m_window));
-        m_window->requestActivate();
-        QVERIFY(QTest::qWaitForWindowActive(m_window));
+        test::ClientWindow::Options options;
+        options.uploadStepMs = 40;
+        options.activate = true;
+        m_app = std::make_unique<test::ClientWindow>(options);
+        QVERIFY2(m_app->isReady(), qPrintable(m_app->error()));
+        m_window = m_app->window();
     }
 
     void cleanup()
     {
-        m_engine.reset();
-        m_fleet.reset();
-        m_vci.reset();
-        m_missions.reset();
-        m_connection.reset();
-        m_client.reset();
-        m_session.reset();
-        m_settings.reset();
-        m_storage.reset();
-        m_server.reset();
-        m_world.reset();
+        m_window = nullptr;
+        m_app.reset();
     }
 
     void badPasswordThenGood()
@@ -232,13 +180,13 @@ private slots:
         QTRY_VERIFY(text("connectionStateLabel").startsWith(QStringLiteral("Ready")));
         QVERIFY(text("connectionStateLabel").contains(QStringLiteral("admin at 127.0.0.1")));
         QCOMPARE(m_window->property("currentPage").toInt(), 1); // on to the mission
-        QCOMPARE(m_settings->lastUser(), QStringLiteral("admin"));
+        QCOMPARE(m_app->settings().lastUser(), QStringLiteral("admin"));
     }
 
     void editOnTheMapUndoAndSave()
     {
         openDemoRoute();
-        const int routeId = m_missions->routeId();
+        const int routeId = m_app->missions().routeId();
         MapView *map = missionMap();
         RouteLayer *route = routeLayer();
 
@@ -249,7 +197,7 @@ private slots:
         const QGeoCoordinate where = map->toCoordinate(map->mapFromScene(at));
         QTest::mouseClick(m_window, Qt::LeftButton, {}, at);
         QTRY_COMPARE(route->count(), 5);
-        QVERIFY(std::abs(m_missions->document()->model()->index(4).data(mission::RouteModel::LatitudeRole).toDouble() - where.latitude()) < 1e-7);
+        QVERIFY(std::abs(m_app->missions().document()->model()->index(4).data(mission::RouteModel::LatitudeRole).toDouble() - where.latitude()) < 1e-7);
 
         // Drag waypoint 2 by (30, 20) pixels.
         const QPoint from = map->mapToScene(route->waypointPosition(1)).toPoint();
@@ -258,11 +206,11 @@ private slots:
         QTest::mouseMove(m_window, from + QPoint(10, 7));
         QTest::mouseMove(m_window, from + QPoint(30, 20));
         QTest::mouseRelease(m_window, Qt::LeftButton, {}, from + QPoint(30, 20));
-        const QModelIndex second = m_missions->document()->model()->index(1);
+        const QModelIndex second = m_app->missions().document()->model()->index(1);
         QTRY_VERIFY(std::abs(second.data(mission::RouteModel::LatitudeRole).toDouble() - dropped.latitude()) < 1e-7);
 
         // Del removes the selected waypoint (the one just dragged); Ctrl+Z brings it back.
-        QCOMPARE(m_missions->document()->selectedRows(), QList<int>{1});
+        QCOMPARE(m_app->missions().document()->selectedRows(), QList<int>{1});
         QTest::keyClick(m_window, Qt::Key_Delete);
         QTRY_COMPARE(route->count(), 4);
         QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
@@ -287,11 +235,11 @@ private slots:
         QTest::keyClick(m_window, Qt::Key_A, Qt::ControlModifier);
         typeText(m_window, QStringLiteral("77"));
         QTest::keyClick(m_window, Qt::Key_Return);
-        QTRY_COMPARE(m_missions->document()->model()->index(0).data(mission::RouteModel::AltitudeRole).toDouble(), 77.0);
+        QTRY_COMPARE(m_app->missions().document()->model()->index(0).data(mission::RouteModel::AltitudeRole).toDouble(), 77.0);
 
         // Ctrl+S saves under the lock; a second session sees the server's copy changed.
         missionMap()->forceActiveFocus();
-        QSignalSpy saved(m_missions.get(), &client::MissionController::saved);
+        QSignalSpy saved(&m_app->missions(), &client::MissionController::saved);
         QTest::keyClick(m_window, Qt::Key_S, Qt::ControlModifier);
         QVERIFY(saved.wait(10000));
         const pb::Route copy = serverCopy(routeId);
@@ -318,7 +266,7 @@ private slots:
         QQuickItem *area = find("areaLayer");
         QTRY_COMPARE(area->property("vertexCount").toInt(), 4);
         QVERIFY(area->property("transectPointCount").toInt() >= 4);
-        client::RouteDocument *doc = m_missions->document();
+        client::RouteDocument *doc = m_app->missions().document();
         QCOMPARE(doc->model()->index(4).data(mission::RouteModel::KindRole).toString(), QStringLiteral("areaScan"));
         QCOMPARE(doc->currentRow(), 4);
 
@@ -359,11 +307,11 @@ private slots:
         QObject *bar = find<QObject>("progressBar");
         QList<double> values;
         // The bar's binding runs first (it was connected at load): read what it shows.
-        connect(m_missions.get(), &client::MissionController::progressChanged, bar, [&values, bar] {
+        connect(&m_app->missions(), &client::MissionController::progressChanged, bar, [&values, bar] {
             if (bar->property("to").toDouble() > 1)
                 values.append(bar->property("value").toDouble());
         });
-        QSignalSpy uploaded(m_missions.get(), &client::MissionController::uploaded);
+        QSignalSpy uploaded(&m_app->missions(), &client::MissionController::uploaded);
         click("uploadButton");
         QVERIFY(uploaded.wait(20000));
         QVERIFY2(values.size() >= 3, qPrintable(QString::number(values.size())));
@@ -375,12 +323,12 @@ private slots:
     void uploadToAVciVehicleSaysHowHeightsGoUp()
     {
         openDemoRoute();
-        QVERIFY(m_fleet->addVciVehicle(QStringLiteral("tcp://127.0.0.1:%1").arg(m_vci->listeners().front()->port())));
+        QVERIFY(m_app->fleet().addVciVehicle(QStringLiteral("tcp://127.0.0.1:%1").arg(m_app->vci().listeners().front()->port())));
         QObject *vehicles = find<QObject>("vehiclePicker");
         QTRY_COMPARE(vehicles->property("count").toInt(), 4);
-        QTRY_COMPARE_WITH_TIMEOUT(m_fleet->index(3).data(client::VehicleFleet::LinkStateRole).toString(), QStringLiteral("Connected"), 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(m_app->fleet().index(3).data(client::VehicleFleet::LinkStateRole).toString(), QStringLiteral("Connected"), 10000);
         vehicles->setProperty("currentIndex", 3);
-        QSignalSpy uploaded(m_missions.get(), &client::MissionController::uploaded);
+        QSignalSpy uploaded(&m_app->missions(), &client::MissionController::uploaded);
         click("uploadButton");
         QVERIFY2(uploaded.wait(20000), qPrintable(text("missionMessage")));
         QTRY_VERIFY2(text("missionMessage").contains(QStringLiteral("fly their height above the ground as a height above home")),
@@ -394,7 +342,7 @@ private slots:
     {
         openDemoRoute();
         MapView *map = missionMap();
-        client::RouteDocument *doc = m_missions->document();
+        client::RouteDocument *doc = m_app->missions().document();
         // Click waypoint 2 on the map: its action editor appears, empty.
         QTest::mouseClick(m_window, Qt::LeftButton, {}, map->mapToScene(routeLayer()->waypointPosition(1)).toPoint());
         QTRY_COMPARE(doc->currentRow(), 1);
@@ -446,17 +394,17 @@ private slots:
         QTRY_COMPARE_WITH_TIMEOUT(layer->count(), 3, 10000);
 
         // A VCI vehicle, added by its address, beside the server's.
-        type("vciAddressField", QStringLiteral("tcp://127.0.0.1:%1").arg(m_vci->listeners().front()->port()));
+        type("vciAddressField", QStringLiteral("tcp://127.0.0.1:%1").arg(m_app->vci().listeners().front()->port()));
         click("vciConnectButton");
         QTRY_COMPARE(layer->count(), 4);
-        QCOMPARE(m_fleet->index(3).data(client::VehicleFleet::ProtocolRole).toString(), QStringLiteral("VCI"));
-        QTRY_COMPARE_WITH_TIMEOUT(m_fleet->index(3).data(client::VehicleFleet::LinkStateRole).toString(), QStringLiteral("Connected"), 10000);
+        QCOMPARE(m_app->fleet().index(3).data(client::VehicleFleet::ProtocolRole).toString(), QStringLiteral("VCI"));
+        QTRY_COMPARE_WITH_TIMEOUT(m_app->fleet().index(3).data(client::VehicleFleet::LinkStateRole).toString(), QStringLiteral("Connected"), 10000);
         QTRY_VERIFY_WITH_TIMEOUT(!layer->vehiclePosition(3).isNull(), 10000);
 
         // Choose EMU-101 on the map; its instruments fill in.
         MapView *map = m_window->property("telemetryPage").value<QObject *>()->property("map").value<MapView *>();
         QTRY_VERIFY_WITH_TIMEOUT(!layer->vehiclePosition(0).isNull(), 10000);
-        map->setCenter(m_fleet->vehicleAt(0)->position());
+        map->setCenter(m_app->fleet().vehicleAt(0)->position());
         map->setZoomLevel(17); // EMU-101 on its own under the cursor
         QTest::mouseClick(m_window, Qt::LeftButton, {}, map->mapToScene(layer->vehiclePosition(0)).toPoint());
         QTRY_COMPARE(layer->currentIndex(), 0);
@@ -475,15 +423,15 @@ private slots:
         QVERIFY(dialog->property("text").toString().contains(QStringLiteral("EMU-101")));
         QTest::keyClick(m_window, Qt::Key_Escape); // "no": nothing is sent
         QTRY_VERIFY(!dialog->property("opened").toBool());
-        QVERIFY(!m_fleet->vehicleAt(0)->armed());
+        QVERIFY(!m_app->fleet().vehicleAt(0)->armed());
         click("armButton");
         confirmYes();
-        QTRY_VERIFY_WITH_TIMEOUT(m_fleet->vehicleAt(0)->armed(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_app->fleet().vehicleAt(0)->armed(), 10000);
         QTRY_VERIFY(text("commandResult").contains(QStringLiteral("done")));
         QTRY_COMPARE(text("value_armed"), QStringLiteral("ARMED")); // at the vehicle's notify rate
         click("takeoffButton");
         confirmYes();
-        QTRY_VERIFY_WITH_TIMEOUT(m_fleet->vehicleAt(0)->altitudeAgl() > 3, 20000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_app->fleet().vehicleAt(0)->altitudeAgl() > 3, 20000);
         auto *plot = find<ui::TelemetryPlot>("telemetryPlot");
         QTRY_VERIFY(plot->sampleCount() > 5);
         QTest::qWait(200);

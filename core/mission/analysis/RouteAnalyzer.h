@@ -41,6 +41,7 @@ public:
     void setDelay(int milliseconds);
     // Runs `rule` (not owned) on every recomputation, and recomputes when it says it changed.
     void addRule(RouteRule *rule);
+    const std::vector<QPointer<RouteRule>> &rules() const { return m_rules; }
     int delay() const { return m_timer.interval(); }
 
     const RouteStatistics &statistics() const { return m_statistics; }

@@ -122,6 +122,7 @@ public:
     // application from its terrain sources, used by setAltitudeType and setAltitudeIn.
     using GroundLookup = std::function<std::optional<double>(const GeoPoint &)>;
     void setGroundLookup(GroundLookup lookup) { m_ground = std::move(lookup); }
+    bool hasGroundLookup() const { return bool(m_ground); }
 
 signals:
     // Rows an edit added (addWaypoint, insertWaypoint, addAreaScan): views select them.

@@ -1,0 +1,142 @@
+#include "ClientGraph.h"
+
+#include "AutosaveRecovery.h"
+#include "ComparisonController.h"
+#include "ConnectionController.h"
+#include "ElevationSetup.h"
+#include "FleetRecording.h"
+#include "FlightRecorder.h"
+#include "HciClient.h"
+#include "HciSession.h"
+#include "MissionController.h"
+#include "RecordingSettings.h"
+#include "ReplayController.h"
+#include "RouteAnalyzer.h"
+#include "RouteAutosave.h"
+#include "RouteDocument.h"
+#include "RouteEditor.h"
+#include "ServerHistoryRequest.h"
+#include "VehicleFleet.h"
+
+#include <QLoggingCategory>
+#include <QSettings>
+
+#include <algorithm>
+
+Q_LOGGING_CATEGORY(lcClientGraph, "sortie.client.graph")
+
+namespace sortie::client {
+
+namespace {
+
+// How much the recorder buffers before it writes: half a second of telemetry.
+constexpr int kRecorderFlushMs = 500;
+
+QString yesNo(bool on, const char *yes, const char *no)
+{
+    return QString::fromLatin1(on ? yes : no);
+}
+
+} // namespace
+
+ClientGraph::ClientGraph(QSettings *storage, Options options)
+    : m_session(std::make_unique<hci::HciSession>())
+    , m_hciClient(std::make_unique<hci::HciClient>(m_session.get()))
+    , m_connection(std::make_unique<ConnectionController>(m_session.get()))
+    , m_missions(std::make_unique<MissionController>(m_hciClient.get()))
+    , m_elevation(std::make_unique<terrain::ElevationSetup>(m_session.get()))
+{
+    Q_ASSERT(storage);
+    // Terrain: local tiles (the option, else the setting) and the server, in the order the settings give.
+    m_elevation->configure(options.demFolder.isEmpty() ? storage->value(QStringLiteral("terrain/demFolder")).toString()
+                                                       : options.demFolder,
+                           storage->value(QStringLiteral("terrain/sourceOrder")).toStringList());
+    RouteDocument *document = m_missions->document();
+    document->analyzer()->addRule(m_elevation->rule());
+    terrain::ElevationService *ground = m_elevation->service();
+    document->editor()->setGroundLookup([ground](const mission::GeoPoint &p) { return ground->groundAt(p); });
+
+    if (options.vehicles) {
+        m_fleet = std::make_unique<VehicleFleet>(m_hciClient.get(), ground);
+        m_missions->setFleet(m_fleet.get()); // the upload chooser lists every vehicle of the fleet
+    }
+
+    if (!options.autosaveDirectory.isEmpty()) {
+        // Recovery looks first, so the autosave of this run takes a slot of its own.
+        m_recovery = std::make_unique<AutosaveRecovery>(document, options.autosaveDirectory);
+        m_autosave = std::make_unique<RouteAutosave>(document, options.autosaveDirectory);
+        QObject::connect(m_connection.get(), &ConnectionController::ready, m_autosave.get(),
+                         [this] { m_autosave->setServer(m_connection->server(), m_connection->user()); });
+        // A server route's autosaved edits are restored only when signed in where they belong.
+        QObject::connect(m_connection.get(), &ConnectionController::stateChanged, m_recovery.get(), [this] {
+            const bool ready = m_connection->isReady();
+            m_recovery->setSession(ready ? m_connection->server() : QString(), ready ? m_connection->user() : QString());
+        });
+    }
+
+    // Every session is recorded without the operator asking: a log per run in the folder given.
+    const QString logPath = options.flightLogDirectory.isEmpty()
+        ? QString() : flightlog::FlightRecorder::sessionPath(options.flightLogDirectory);
+    m_recorder = std::make_unique<flightlog::FlightRecorder>(flightlog::FlightRecorder::Options{logPath, {}, kRecorderFlushMs});
+    // The operator's size cap and folder limit, applied before the recorder starts.
+    m_recordingSettings = std::make_unique<flightlog::RecordingSettings>(storage, m_recorder.get());
+    if (!logPath.isEmpty() && !m_recorder->start(&m_recorderError)) // flying goes on without a log
+        qCWarning(lcClientGraph).noquote() << "flight recorder:" << m_recorderError;
+    if (m_fleet)
+        m_fleetRecording = std::make_unique<flightlog::FleetRecording>(m_fleet.get(), m_recorder.get(), m_session.get());
+
+    m_replay = std::make_unique<flightlog::ReplayController>();
+    m_comparison = std::make_unique<flightlog::ComparisonController>(m_replay.get());
+    m_serverHistory = std::make_unique<flightlog::ServerHistoryRequest>(m_hciClient.get(), m_replay.get());
+    m_serverHistory->setFleet(m_fleet.get());
+
+    qCInfo(lcClientGraph).noquote() << "wired:" << wiring().join(QStringLiteral("; "));
+}
+
+// Torn down in the reverse order of the wiring: users before what they use.
+ClientGraph::~ClientGraph()
+{
+    m_serverHistory.reset();
+    m_comparison.reset();
+    m_replay.reset();
+    m_fleetRecording.reset();
+    m_recordingSettings.reset();
+    m_recorder.reset();
+    m_autosave.reset();
+    m_recovery.reset();
+    m_fleet.reset();
+    m_missions.reset();
+    m_elevation.reset();
+    m_connection.reset();
+    m_hciClient.reset();
+    m_session.reset();
+}
+
+terrain::ElevationService *ClientGraph::elevation()
+{
+    return m_elevation->service();
+}
+
+QStringList ClientGraph::wiring() const
+{
+    RouteDocument *document = m_missions->document();
+    const terrain::ElevationService *ground = m_elevation->service();
+    const auto &rules = document->analyzer()->rules();
+    const bool terrainRule = std::any_of(rules.begin(), rules.end(), [&](const auto &r) { return r == m_elevation->rule(); });
+    QStringList lines;
+    lines << QStringLiteral("terrain sources: %1").arg(ground->sourceNames().join(QStringLiteral(", ")))
+          << QStringLiteral("route validation: %1").arg(yesNo(terrainRule, "with the terrain rule", "without terrain"))
+          << QStringLiteral("height conversions: %1").arg(yesNo(document->editor()->hasGroundLookup(), "through the ground", "none"))
+          << QStringLiteral("vehicles: %1").arg(!m_fleet ? QStringLiteral("none")
+                                                : m_fleet->elevation() == ground ? QStringLiteral("fleet planning over the ground")
+                                                                                 : QStringLiteral("fleet without ground"))
+          << QStringLiteral("upload chooser: %1").arg(yesNo(m_fleet && m_missions->fleet() == m_fleet.get(), "the fleet", "none"))
+          << QStringLiteral("autosave: %1").arg(yesNo(m_autosave && m_autosave->isActive(), "on", "off"))
+          << QStringLiteral("recovery: %1").arg(yesNo(m_recovery != nullptr, "on", "off"))
+          << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))
+          << QStringLiteral("fleet recording: %1").arg(yesNo(m_fleetRecording != nullptr, "on", "off"))
+          << QStringLiteral("server history: %1").arg(yesNo(m_fleet && m_serverHistory->fleet() == m_fleet.get(), "from the fleet", "no fleet"));
+    return lines;
+}
+
+} // namespace sortie::client

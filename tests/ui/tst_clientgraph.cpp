@@ -1,0 +1,92 @@
+// One place builds the client: the graph a UI test fixture gets is the program's graph (the same
+// services, wired to each other the same way), and the main window is handed every one of them.
+#include "AutosaveRecovery.h"
+#include "ClientGraph.h"
+#include "ClientWindow.h"
+#include "ElevationService.h"
+#include "LaunchOptions.h"
+#include "QuickScene.h"
+#include "ReplayController.h"
+
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QtQml/qqmlextensionplugin.h>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+using namespace sortie;
+
+class TestClientGraph : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+
+    // The graph app/sortie builds when started with `arguments`, its folders in this test's own.
+    QStringList programWiring(const QStringList &arguments)
+    {
+        qputenv("SORTIE_AUTOSAVE_DIR", m_dir.filePath(QStringLiteral("autosave")).toUtf8());
+        qputenv("SORTIE_FLIGHTLOG_DIR", m_dir.filePath(QStringLiteral("flightlogs")).toUtf8());
+        const auto parsed = app::LaunchOptions::parse(QStringList{QStringLiteral("sortie")} + arguments);
+        if (!std::holds_alternative<app::LaunchOptions>(parsed))
+            return {std::get<QString>(parsed)};
+        QSettings storage(m_dir.filePath(QStringLiteral("program.ini")), QSettings::IniFormat);
+        client::ClientGraph program(&storage, std::get<app::LaunchOptions>(parsed).graphOptions());
+        return program.wiring();
+    }
+
+private slots:
+    void initTestCase() { test::useSoftwareRendering(); }
+
+    void theFixtureRunsTheProgramsWiring()
+    {
+        const QStringList program = programWiring({});
+        // What the program wires, so that a fixture and a program that both lost a service do not agree.
+        for (const char *line : {"route validation: with the terrain rule", "height conversions: through the ground",
+                                 "vehicles: fleet planning over the ground", "upload chooser: the fleet", "autosave: on",
+                                 "recovery: on", "flight recorder: recording", "fleet recording: on",
+                                 "server history: from the fleet"})
+            QVERIFY2(program.contains(QString::fromLatin1(line)), qPrintable(program.join(QLatin1Char('\n'))));
+
+        test::ClientWindow fixture;
+        QVERIFY2(fixture.isReady(), qPrintable(fixture.error()));
+        QCOMPARE(fixture.graph().wiring(), program);
+    }
+
+    void theMainWindowIsHandedEveryService()
+    {
+        test::ClientWindow fixture;
+        QVERIFY2(fixture.isReady(), qPrintable(fixture.error()));
+        client::ClientGraph &graph = fixture.graph();
+        QQuickWindow *window = fixture.window();
+        const std::pair<const char *, QObject *> expected[] = {
+            {"connection", &graph.connection()}, {"missions", &graph.missions()}, {"fleet", graph.fleet()},
+            {"elevation", graph.elevation()}, {"replay", &graph.replay()},
+            {"recovery", graph.recovery()}};
+        for (const auto &[name, object] : expected) {
+            QVERIFY2(object, name);
+            QCOMPARE(window->property(name).value<QObject *>(), object);
+        }
+        for (const char *name : {"appSettings", "comparison", "serverHistory", "recordingSettings"})
+            QVERIFY2(window->property(name).value<QObject *>(), name);
+    }
+
+    // A fixture changes what it needs through the options, and the wiring says so.
+    void optionsChangeTheGraph()
+    {
+        QSettings storage(m_dir.filePath(QStringLiteral("bare.ini")), QSettings::IniFormat);
+        client::ClientGraph bare(&storage, {{}, {}, {}, false});
+        const QStringList wiring = bare.wiring();
+        QVERIFY2(wiring.contains(QStringLiteral("vehicles: none")), qPrintable(wiring.join(QLatin1Char('\n'))));
+        QVERIFY(wiring.contains(QStringLiteral("autosave: off")));
+        QVERIFY(wiring.contains(QStringLiteral("flight recorder: off")));
+        QVERIFY(wiring.contains(QStringLiteral("route validation: with the terrain rule"))); // terrain is always wired
+        QVERIFY(!bare.fleet());
+        QVERIFY(!bare.recovery());
+        QVERIFY(bare.recorderError().isEmpty());
+    }
+};
+
+QTEST_MAIN(TestClientGraph)
+#include "tst_clientgraph.moc"
