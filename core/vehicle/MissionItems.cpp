@@ -7,6 +7,7 @@
 #include "Route.h"
 #include "RouteValidator.h"
 #include "ScanPlanCache.h"
+#include "SegmentPlanning.h"
 #include "TerrainFollow.h"
 
 #include <cmath>

@@ -11,6 +11,7 @@
 #include "MissionItems.h"
 #include "Route.h"
 #include "RouteValidator.h"
+#include "SegmentPlanning.h"
 #include "UploadReview.h"
 #include "VciProfile.h"
 
