@@ -4,6 +4,8 @@
 # says the header is not there; any other outcome (it compiles, or fails for another reason) fails.
 # The probes are excluded from the build; each test builds its own, one at a time.
 
+find_package(ZLIB REQUIRED)  # the rooms' imported link targets are visible per directory
+
 # sortie_mission_probe(<wall|open> <room> <header>): `wall` passes when the header is not found from
 # the room; `open` (a control) when it compiles there.
 function(sortie_mission_probe kind room header)
