@@ -35,17 +35,9 @@ const Message *hciMessage(const ServerOrigin &origin)
     return payload ? &payload->message : nullptr;
 }
 
-inline const com::ugcs::ucs::proto::SegmentDefinition *hciSegment(const ServerOrigin &origin)
-{
-    return hciMessage<com::ugcs::ucs::proto::SegmentDefinition>(origin);
-}
-inline const com::ugcs::ucs::proto::Route *hciRoute(const ServerOrigin &origin)
-{
-    return hciMessage<com::ugcs::ucs::proto::Route>(origin);
-}
-inline const com::ugcs::ucs::proto::Mission *hciMission(const ServerOrigin &origin)
-{
-    return hciMessage<com::ugcs::ucs::proto::Mission>(origin);
-}
+// The same for the three kinds of origin the HCI mapping fills (defined where their type is complete).
+const com::ugcs::ucs::proto::SegmentDefinition *hciSegment(const ServerOrigin &origin);
+const com::ugcs::ucs::proto::Route *hciRoute(const ServerOrigin &origin);
+const com::ugcs::ucs::proto::Mission *hciMission(const ServerOrigin &origin);
 
 } // namespace sortie::mission
