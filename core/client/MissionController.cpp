@@ -4,6 +4,7 @@
 
 #include "HciClient.h"
 #include "HciLock.h"
+#include "HciOrigin.h"
 #include "HciReply.h"
 #include "HciRouteMapper.h"
 #include "HciSession.h"
@@ -40,7 +41,7 @@ MissionController::~MissionController() = default;
 int MissionController::routeId() const
 {
     const auto &origin = m_document.route().origin;
-    return origin && origin.message->has_id() ? origin.message->id() : -1;
+    return origin && hciRoute(origin)->has_id() ? hciRoute(origin)->id() : -1;
 }
 
 bool MissionController::canSave() const
@@ -193,9 +194,9 @@ void MissionController::written(const HciReply &reply, int id)
         request(m_client->getObject(HciObjectType::Route, id), tr("Reading the server's copy"), [this, refusal](HciReply *check) {
             const pb::Route &theirs = check->response<pb::GetObjectResponse>().object().route();
             const auto &origin = m_document.route().origin;
-            if (check->isOk() && origin && theirs.version() > origin.message->version())
+            if (check->isOk() && origin && theirs.version() > hciRoute(origin)->version())
                 return setConflict(&theirs, tr("Someone else saved this route on the server (version %1) after you opened it (version %2).")
-                                                .arg(theirs.version()).arg(origin.message->version()));
+                                                .arg(theirs.version()).arg(hciRoute(origin)->version()));
             setMessage(tr("Not saved: %1").arg(refusal));
         });
         return;
@@ -247,7 +248,7 @@ void MissionController::routeEvent(const pb::EventWrapper &event)
         return;
     }
     const pb::Route &theirs = change.object().route();
-    if (!change.object().has_route() || theirs.version() <= origin.message->version())
+    if (!change.object().has_route() || theirs.version() <= hciRoute(origin)->version())
         return;
     if (!m_document.isModified()) {
         // Nothing of ours to lose: follow the server.

@@ -2,6 +2,7 @@
 
 #include "AutosaveRecord.h"
 #include "AutosaveWriter.h"
+#include "HciOrigin.h"
 #include "Messages.pb.h"
 #include "RouteDocument.h"
 
@@ -108,8 +109,8 @@ bool RouteAutosave::queueWrite()
     header.server = m_server;
     header.user = m_user;
     if (const auto &origin = m_document->route().origin) {
-        header.routeId = origin.message->has_id() ? origin.message->id() : -1;
-        header.routeVersion = origin.message->has_version() ? origin.message->version() : -1;
+        header.routeId = hciRoute(origin)->has_id() ? hciRoute(origin)->id() : -1;
+        header.routeVersion = hciRoute(origin)->has_version() ? hciRoute(origin)->version() : -1;
     }
     header.savedAt = QDateTime::currentDateTimeUtc();
     // A copy of the value: the worker encodes it while the GUI goes on editing the original.

@@ -1,5 +1,6 @@
 #include "RouteConflict.h"
 
+#include "HciOrigin.h"
 #include "HciRouteMapper.h"
 #include "Messages.pb.h"
 #include "RouteDiff.h"
@@ -28,7 +29,7 @@ bool RouteConflict::set(const pb::Route &theirs, const Route &mine, const Route 
     m_theirs = std::make_unique<pb::Route>(theirs);
     m_changes = RouteDiff::compare(imported->route, mine).texts();
     // The version both started from is the one the document was opened at.
-    m_yourVersion = mine.origin && mine.origin.message->has_version() ? mine.origin.message->version() : -1;
+    m_yourVersion = mine.origin && hciRoute(mine.origin)->has_version() ? hciRoute(mine.origin)->version() : -1;
     m_yourEdits = RouteDiff::compare(common, mine).texts();
     m_theirEdits = RouteDiff::compare(common, imported->route).texts();
     m_model.resetRoute(std::move(imported->route));

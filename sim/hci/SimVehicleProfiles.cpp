@@ -1,5 +1,6 @@
 #include "SimVehicleProfiles.h"
 
+#include "CameraProto.h"
 #include "Messages.pb.h"
 #include "SimObjectStore.h"
 

@@ -6,6 +6,7 @@
 #include "AutosaveRecord.h"
 #include "AutosaveRecovery.h"
 #include "AutosaveTestRoute.h"
+#include "HciOrigin.h"
 #include "RouteDiff.h"
 
 #include <QFile>
@@ -85,8 +86,8 @@ private slots:
         QVERIFY2(expected, expected ? "" : qPrintable(expected.error().toString()));
         QVERIFY2(doc.route() == expected->mission.routes.front(),
                  qPrintable(mission::RouteDiff::compare(expected->mission.routes.front(), doc.route()).summary()));
-        QCOMPARE(doc.route().origin.message->id(), 42);
-        QCOMPARE(doc.route().origin.message->version(), 3);
+        QCOMPARE(hciRoute(doc.route().origin)->id(), 42);
+        QCOMPARE(hciRoute(doc.route().origin)->version(), 3);
         QVERIFY(doc.isModified());
     }
 

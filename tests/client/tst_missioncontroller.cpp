@@ -4,6 +4,7 @@
 #include "ConnectionController.h"
 #include "HciClient.h"
 #include "HciReply.h"
+#include "HciOrigin.h"
 #include "HciRouteMapper.h"
 #include "Messages.pb.h"
 #include "MissionController.h"
@@ -247,7 +248,7 @@ private slots:
         QCOMPARE(doc->model()->count(), 4);
         QCOMPARE(m_alice->missions.routeName(), QStringLiteral("Bob's"));
         QVERIFY(!doc->isModified());
-        QCOMPARE(doc->route().origin.message->version(), 2);
+        QCOMPARE(hciRoute(doc->route().origin)->version(), 2);
         // Nothing of hers is lost: undo brings her edits back, unsaved.
         doc->undo();
         QVERIFY(doc->route() == mine);

@@ -7,6 +7,7 @@
 #include "AutosaveRecovery.h"
 #include "AutosaveTestRoute.h"
 #include "AutosaveWriter.h"
+#include "HciOrigin.h"
 #include "RouteAutosave.h"
 
 #include <QGeoCoordinate>
@@ -91,7 +92,7 @@ private slots:
         QCOMPARE(record.server, QStringLiteral("127.0.0.1:3334"));
         QCOMPARE(record.user, QStringLiteral("admin"));
         QVERIFY(qAbs(record.savedAt.secsTo(QDateTime::currentDateTimeUtc())) < 3600);
-        QVERIFY(record.working.origin && record.working.origin.message->id() == 42);
+        QVERIFY(record.working.origin && hciRoute(record.working.origin)->id() == 42);
         // No temporary file is left behind by the atomic write.
         QCOMPARE(QDir(dir.path()).entryList({QStringLiteral("*.json*")}, QDir::Files),
                  QStringList{QFileInfo(autosave.filePath()).fileName()});
@@ -248,7 +249,7 @@ private slots:
         QVERIFY(doc.route() == edited);
         QVERIFY(doc.isModified());
         QCOMPARE(doc.undoText(), QStringLiteral("Restore autosaved edits"));
-        QCOMPARE(doc.route().origin.message->id(), 42); // saving goes to the same server route
+        QCOMPARE(hciRoute(doc.route().origin)->id(), 42); // saving goes to the same server route
         doc.undo();
         QVERIFY(doc.route() == test::serverRoute());
         doc.redo();

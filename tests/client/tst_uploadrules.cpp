@@ -12,6 +12,7 @@
 #include "VciMissionPlanner.h"
 #include "Route.h"
 #include "RouteValidator.h"
+#include "SegmentPlanning.h"
 #include "UploadReview.h"
 #include "VciProfile.h"
 

@@ -13,6 +13,7 @@
 #include "RouteModel.h"
 #include "RouteStatistics.h"
 #include "SegmentPreview.h"
+#include "SegmentPlanning.h"
 #include "RouteValidator.h"
 #include "SortieFormat.h"
 

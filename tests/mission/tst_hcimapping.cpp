@@ -6,6 +6,7 @@
 #include "AreaScanPlanner.h"
 #include "Domain.pb.h"
 #include "FlightPath.h"
+#include "CameraProto.h"
 #include "HciActionMapper.h"
 #include "HciRouteMapper.h"
 #include "HciText.h"

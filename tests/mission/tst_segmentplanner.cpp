@@ -3,7 +3,7 @@
 // the TraverseAlgorithm mapping both ways, and each planner's geometry.
 #include "AlgorithmCatalog.h"
 #include "AlgorithmProto.h"
-#include "Camera.h"
+#include "CameraProto.h"
 #include "Domain.pb.h"
 #include "Geodesy.h"
 #include "LocalTangentPlane.h"

@@ -4,6 +4,7 @@
 #include "AlgorithmCatalog.h"
 #include "Camera.h"
 #include "Domain.pb.h"
+#include "HciOrigin.h"
 #include "MissionFiles.h"
 #include "MissionSamples.h"
 #include "SortieFormat.h"
@@ -38,14 +39,14 @@ Mission fullMission()
     gimbal.tiltDeg = 90;
     gimbal.yawDeg = -12.5;
     b.actions.push_back(gimbal);
-    auto def = std::make_shared<pb::ActionDefinition>();
-    def->mutable_setservodefinition()->set_servoid(7);
-    def->mutable_setservodefinition()->set_pwm(1500);
-    b.actions.push_back(ServerAction{def});
-    auto origin = std::make_shared<pb::SegmentDefinition>();
-    origin->set_uuid("d1e2f3a4-b5c6-4d7e-8f90-a1b2c3d4e5f6");
-    origin->mutable_unknown_fields()->AddVarint(999, 42);
-    b.origin.message = origin;
+    pb::ActionDefinition def;
+    def.mutable_setservodefinition()->set_servoid(7);
+    def.mutable_setservodefinition()->set_pwm(1500);
+    b.actions.push_back(ServerAction{QByteArray::fromStdString(def.SerializeAsString())});
+    pb::SegmentDefinition origin;
+    origin.set_uuid("d1e2f3a4-b5c6-4d7e-8f90-a1b2c3d4e5f6");
+    origin.mutable_unknown_fields()->AddVarint(999, 42);
+    b.origin = hciOrigin(origin);
     AreaScan gsd = squareScan({56.96, 24.11}, 300);
     gsd.parameters.heightMode = ScanHeightMode::GroundSampleDistance;
     gsd.parameters.groundSampleDistanceCm = 1.7;
@@ -82,10 +83,10 @@ Mission fullMission()
     unknown.parameters = {{QStringLiteral("turns"), QStringLiteral("7")}, {QStringLiteral("turns"), QStringLiteral("8")},
                           {QStringLiteral("note"), QStringLiteral("")}};
     unknown.actions.push_back(WaitAction{3, false});
-    auto unknownOrigin = std::make_shared<pb::SegmentDefinition>();
-    unknownOrigin->set_uuid("spiral");
-    unknownOrigin->mutable_unknown_fields()->AddVarint(4242, 7);
-    unknown.origin.message = unknownOrigin;
+    pb::SegmentDefinition unknownOrigin;
+    unknownOrigin.set_uuid("spiral");
+    unknownOrigin.mutable_unknown_fields()->AddVarint(4242, 7);
+    unknown.origin = hciOrigin(unknownOrigin);
     r.segments.push_back(unknown);
     m.routes = {r, mavlinkRoute()};
     return m;
@@ -95,12 +96,12 @@ bool sameOrigins(const Mission &a, const Mission &b)
 {
     const auto &wa = std::get<Waypoint>(a.routes[0].segments[2]);
     const auto &wb = std::get<Waypoint>(b.routes[0].segments[2]);
-    if (!wa.origin.message || !wb.origin.message)
+    if (!hciSegment(wa.origin) || !hciSegment(wb.origin))
         return false;
     const auto &oa = std::get<ServerAction>(wa.actions.back());
     const auto &ob = std::get<ServerAction>(wb.actions.back());
-    return wa.origin.message->SerializeAsString() == wb.origin.message->SerializeAsString()
-        && oa.definition->SerializeAsString() == ob.definition->SerializeAsString();
+    return hciSegment(wa.origin)->SerializeAsString() == hciSegment(wb.origin)->SerializeAsString()
+        && !oa.definition.isEmpty() && oa.definition == ob.definition;
 }
 
 bool sameIgnoringServerActionPointers(Mission a, Mission b)
@@ -112,11 +113,11 @@ bool sameIgnoringServerActionPointers(Mission a, Mission b)
                 if (Waypoint *w = asWaypoint(s))
                     for (auto &act : w->actions)
                         if (auto *o = std::get_if<ServerAction>(&act))
-                            o->definition.reset();
+                            o->definition.clear();
     // The unknown algorithm's server bytes come back as they went.
     const auto &ua = std::get<AlgorithmSegment>(a.routes[0].segments.back());
     const auto &ub = std::get<AlgorithmSegment>(b.routes[0].segments.back());
-    if (!ua.origin.message || !ub.origin.message || ua.origin.message->SerializeAsString() != ub.origin.message->SerializeAsString())
+    if (!hciSegment(ua.origin) || !hciSegment(ub.origin) || hciSegment(ua.origin)->SerializeAsString() != hciSegment(ub.origin)->SerializeAsString())
         return false;
     return a == b;
 }

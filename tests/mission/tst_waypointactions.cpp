@@ -212,7 +212,12 @@ private slots:
         QVERIFY(f.actions.setField(0, QStringLiteral("pwm"), QStringLiteral("1100")));
         QVERIFY(f.actions.setField(0, QStringLiteral("count"), QStringLiteral("4")));
         QCOMPARE(f.stack.count(), 2);
-        const auto definitionAt = [&f] { return *std::get<ServerAction>(f.at(1)[0]).definition; };
+        const auto definitionAt = [&f] {
+            const QByteArray &bytes = std::get<ServerAction>(f.at(1)[0]).definition;
+            pb::ActionDefinition d;
+            d.ParseFromArray(bytes.constData(), int(bytes.size()));
+            return d;
+        };
         QCOMPARE(definitionAt().repeatservodefinition().pwm(), 1100);
         QCOMPARE(definitionAt().repeatservodefinition().count(), 4);
         // What the editor does not touch goes back as it came: the id, the tag, the unknown field.
@@ -268,10 +273,10 @@ private slots:
         Route r;
         Waypoint w;
         w.position = {56.95, 24.10};
-        w.actions.push_back(ServerAction{makeServerAction(QStringLiteral("setServo"), {{"servoId", 9}, {"pwm", 1750}})});
-        w.actions.push_back(ServerAction{makeServerAction(QStringLiteral("repeatServo"), {{"servoId", 10}, {"pwm", 1200}, {"count", 3}, {"delay", 2.5}})});
-        w.actions.push_back(ServerAction{makeServerAction(QStringLiteral("transitionFixed"), {})});
-        w.actions.push_back(ServerAction{makeServerAction(QStringLiteral("hopAction"), {{"descentAltitude", 5}})});
+        w.actions.push_back(*makeServerAction(QStringLiteral("setServo"), {{"servoId", 9}, {"pwm", 1750}}));
+        w.actions.push_back(*makeServerAction(QStringLiteral("repeatServo"), {{"servoId", 10}, {"pwm", 1200}, {"count", 3}, {"delay", 2.5}}));
+        w.actions.push_back(*makeServerAction(QStringLiteral("transitionFixed"), {}));
+        w.actions.push_back(*makeServerAction(QStringLiteral("hopAction"), {{"descentAltitude", 5}}));
         r.segments.push_back(w);
         const formats::MavlinkExport out = formats::routeToMavlink(r, 5.0);
         std::vector<int> commands;

@@ -7,7 +7,7 @@
 #include "../hci/HciTestSupport.h"
 
 #include "AlgorithmProto.h"
-#include "Camera.h"
+#include "CameraProto.h"
 #include "Geodesy.h"
 #include "HciClient.h"
 #include "LocalTangentPlane.h"

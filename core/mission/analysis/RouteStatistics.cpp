@@ -5,6 +5,7 @@
 #include "FlightPath.h"
 #include "Geodesy.h"
 #include "ScanPlanCache.h"
+#include "SegmentPlanning.h"
 
 #include <algorithm>
 #include <cmath>

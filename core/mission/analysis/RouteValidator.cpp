@@ -3,6 +3,7 @@
 #include "AlgorithmCatalog.h"
 
 #include "ScanPlanCache.h"
+#include "SegmentPlanning.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,5 @@
 #include "ActionVariants.h"
 
-#include "Domain.pb.h"
 #include "ServerActions.h"
 
 #include <QCoreApplication>
@@ -9,7 +8,6 @@
 
 namespace sortie::mission {
 
-namespace pb = com::ugcs::ucs::proto;
 
 namespace {
 template<class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };
@@ -67,10 +65,9 @@ QVariantMap actionToVariant(const WaypointAction &action)
         },
         [](const ServerAction &a) {
             QVariantMap m;  // a field not set has no key
-            const ServerActionKind *kind = a.definition ? serverActionKindOf(*a.definition) : nullptr;
-            if (kind)
+            if (const ServerActionKind *kind = serverActionKindOf(a))
                 for (const ServerActionField &f : kind->fields)
-                    if (const QVariant v = serverActionValue(*a.definition, *kind, f); v.isValid())
+                    if (const QVariant v = serverActionValue(a, *kind, f); v.isValid())
                         m.insert(f.name, v);
             return m;
         },
@@ -86,14 +83,14 @@ namespace {
 std::optional<WaypointAction> serverActionFromVariant(const ServerActionKind &kind, const QVariantMap &m, const WaypointAction *base)
 {
     const auto *was = base ? std::get_if<ServerAction>(base) : nullptr;
-    const bool sameKind = was && was->definition && serverActionKindOf(*was->definition) == &kind;
-    auto definition = sameKind ? std::make_shared<pb::ActionDefinition>(*was->definition) : newServerAction(kind);
+    const bool sameKind = was && serverActionKindOf(*was) == &kind;
+    ServerAction action = sameKind ? *was : newServerAction(kind);
     for (const ServerActionField &f : kind.fields) {
         const QVariant v = m.value(f.name);
-        if ((v.isValid() || sameKind) && !setServerActionValue(*definition, kind, f, v))
+        if ((v.isValid() || sameKind) && !setServerActionValue(action, kind, f, v))
             return std::nullopt;
     }
-    return ServerAction{std::move(definition)};
+    return action;
 }
 } // namespace
 
@@ -193,16 +190,14 @@ namespace {
 // the server then applies its own default.
 ActionKindDescription serverKindDescription(const ServerActionKind &k)
 {
-    using google::protobuf::FieldDescriptor;
     ActionKindDescription d{k.kind, k.label, {}};
     for (const ServerActionField &f : k.fields) {
         ActionField field{f.name, f.label, ActionField::Type::Number, f.unit, f.minimum, f.maximum, f.choices, true};
-        switch (f.descriptor->cpp_type()) {
-        case FieldDescriptor::CPPTYPE_BOOL: field.type = ActionField::Type::Toggle; field.optional = false; break;
-        case FieldDescriptor::CPPTYPE_ENUM: field.type = ActionField::Type::Choice; field.optional = false; break;
-        case FieldDescriptor::CPPTYPE_DOUBLE:
-        case FieldDescriptor::CPPTYPE_FLOAT: break;
-        default: field.type = ActionField::Type::Integer; break;
+        switch (f.type) {
+        case ServerActionField::Type::Boolean: field.type = ActionField::Type::Toggle; field.optional = false; break;
+        case ServerActionField::Type::Choice: field.type = ActionField::Type::Choice; field.optional = false; break;
+        case ServerActionField::Type::Real: break;
+        case ServerActionField::Type::Integer: field.type = ActionField::Type::Integer; break;
         }
         d.fields.push_back(std::move(field));
     }

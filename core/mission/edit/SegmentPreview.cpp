@@ -3,6 +3,7 @@
 #include "AreaScanPlanner.h"
 #include "RouteEditor.h"
 #include "RouteModel.h"
+#include "SegmentPlanning.h"
 
 #include <QGeoCoordinate>
 

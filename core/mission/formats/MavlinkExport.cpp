@@ -3,6 +3,7 @@
 #include "AlgorithmCatalog.h"
 
 #include "ScanPlanCache.h"
+#include "SegmentPlanning.h"
 #include "ServerActions.h"
 
 #include <QSet>
@@ -97,7 +98,7 @@ private:
     void serverAction(const ServerAction &x, int row)
     {
         const QString kind = actionKindName(x);
-        const auto value = [&x](const char *field) { return x.definition ? serverActionValue(*x.definition, QLatin1String(field)) : QVariant(); };
+        const auto value = [&x](const char *field) { return serverActionValue(x, QLatin1String(field)); };
         if (kind == QLatin1String("setServo") || kind == QLatin1String("repeatServo")) {
             const QVariant servo = value("servoId"), pwm = value("pwm");
             if (!servo.isValid() || !pwm.isValid())

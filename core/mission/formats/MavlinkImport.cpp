@@ -262,10 +262,10 @@ private:
     // A servo or VTOL transition, as the UgCS action that says the same.
     std::optional<MissionError> serverAction(const MavlinkItem &item, const QString &kind, const QVariantMap &values)
     {
-        auto definition = makeServerAction(kind, values);
-        if (!definition)
+        std::optional<ServerAction> action = makeServerAction(kind, values);
+        if (!action)
             return errorAt(item, QStringLiteral("%1: a value does not fit (servo and PWM are whole numbers)").arg(mavCommandName(item.command)));
-        attach(item, ServerAction{std::move(definition)});
+        attach(item, std::move(*action));
         return std::nullopt;
     }
 

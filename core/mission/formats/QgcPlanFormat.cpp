@@ -4,6 +4,7 @@
 
 #include "AlgorithmCatalog.h"
 #include "ScanPlanCache.h"
+#include "SegmentPlanning.h"
 
 #include <cmath>
 #include <limits>

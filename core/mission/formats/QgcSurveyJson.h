@@ -3,6 +3,7 @@
 #include "AreaScanPlanner.h"
 #include "JsonCursor.h"
 #include "Segment.h"
+#include "SegmentPlanner.h"
 
 #include <QStringList>
 

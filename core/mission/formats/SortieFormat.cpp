@@ -1,8 +1,10 @@
 #include "SortieFormat.h"
 
 #include "SegmentParameters.h"
+#include "ServerActions.h"
 
 #include "Domain.pb.h"
+#include "HciOrigin.h"
 #include "JsonCursor.h"
 #include "SortieMigrations.h"
 
@@ -30,24 +32,32 @@ int indexOf(const char *const (&names)[N], const JsonCursor &c)
     c.fail(QStringLiteral("unknown value \"%1\"").arg(QString::fromStdString(s)));
 }
 
+// The server's own message, kept as the base64 of its bytes under "hci".
 template<typename Message>
-void putOrigin(Json &j, const std::shared_ptr<const Message> &m)
+void putHci(Json &j, const Message *m)
 {
     if (m)
         j["hci"] = QByteArray::fromStdString(m->SerializeAsString()).toBase64().toStdString();
 }
 
 template<typename Message>
-std::shared_ptr<const Message> takeOrigin(const JsonCursor &c)
+std::optional<Message> takeHci(const JsonCursor &c)
 {
     const auto h = c.find("hci");
     if (!h)
-        return nullptr;
-    auto m = std::make_shared<Message>();
+        return std::nullopt;
+    Message m;
     const QByteArray bytes = QByteArray::fromBase64(h->string().toLatin1(), QByteArray::AbortOnBase64DecodingErrors);
-    if (bytes.isEmpty() || !m->ParseFromArray(bytes.constData(), int(bytes.size())))
+    if (bytes.isEmpty() || !m.ParseFromArray(bytes.constData(), int(bytes.size())))
         h->fail(QStringLiteral("not a valid UgCS %1").arg(QString::fromStdString(Message::descriptor()->name())));
     return m;
+}
+
+template<typename Message>
+ServerOrigin takeOrigin(const JsonCursor &c)
+{
+    std::optional<Message> m = takeHci<Message>(c);
+    return m ? hciOrigin(std::move(*m)) : ServerOrigin();
 }
 
 Json actionJson(const WaypointAction &action)
@@ -82,7 +92,7 @@ Json actionJson(const WaypointAction &action)
         [](const ServerAction &a) {
             // The type keeps its first name; "description" is for whoever reads the file, the definition is the action.
             Json j{{"type", "opaque"}, {"description", str(describeAction(a))}};
-            putOrigin(j, a.definition);
+            j["hci"] = a.definition.toBase64().toStdString();
             return j;
         },
     }, action);
@@ -126,10 +136,14 @@ WaypointAction readAction(const JsonCursor &c)
         return a;
     }
     if (type == QLatin1String("opaque")) {
-        auto def = takeOrigin<pb::ActionDefinition>(c);
-        if (!def)
+        const auto h = c.find("hci");
+        if (!h)
             c.fail(QStringLiteral("a server action needs its \"hci\" definition"));
-        return ServerAction{std::move(def)};
+        std::optional<ServerAction> action =
+            serverActionFromBytes(QByteArray::fromBase64(h->string().toLatin1(), QByteArray::AbortOnBase64DecodingErrors));
+        if (!action)
+            h->fail(QStringLiteral("not a valid UgCS ActionDefinition"));
+        return *action;
     }
     c.at("type").fail(QStringLiteral("unknown action type \"%1\"").arg(type));
 }
@@ -219,7 +233,7 @@ Json segmentJson(const Segment &s)
                 actions.push_back(actionJson(a));
             j["actions"] = std::move(actions);
         }
-        putOrigin(j, w->origin.message);
+        putHci(j, hciSegment(w->origin));
         return j;
     }
     if (const AlgorithmSegment *a = asAlgorithmSegment(s)) {
@@ -237,7 +251,7 @@ Json segmentJson(const Segment &s)
                 actions.push_back(actionJson(action));
             j["actions"] = std::move(actions);
         }
-        putOrigin(j, a->origin.message);
+        putHci(j, hciSegment(a->origin));
         return j;
     }
     const AreaScan &scan = std::get<AreaScan>(s);
@@ -255,7 +269,7 @@ Json segmentJson(const Segment &s)
                            {"directionAngle", p.directionDeg}, {"overshoot", p.turnaroundMeters}, {"speed", p.speed}}}};
     if (p.toleranceMeters)
         j["parameters"]["tolerance"] = *p.toleranceMeters;
-    putOrigin(j, scan.origin.message);
+    putHci(j, hciSegment(scan.origin));
     return j;
 }
 
@@ -294,7 +308,7 @@ Segment readSegment(const JsonCursor &c)
         if (const auto actions = c.find("actions"))
             for (size_t i = 0; i < actions->arraySize(); ++i)
                 w.actions.push_back(readAction(actions->at(i)));
-        w.origin.message = takeOrigin<pb::SegmentDefinition>(c);
+        w.origin = takeOrigin<pb::SegmentDefinition>(c);
         return w;
     }
     if (type == "areaScan") {
@@ -322,7 +336,7 @@ Segment readSegment(const JsonCursor &c)
         const char *last = mode == QLatin1String("altitude") ? "height" : "groundSampleDistance";
         setParameter(params, segment, last, true);
         AreaScan &scan = std::get<AreaScan>(segment);
-        scan.origin.message = takeOrigin<pb::SegmentDefinition>(c);
+        scan.origin = takeOrigin<pb::SegmentDefinition>(c);
         return segment;
     }
     if (type == "algorithm") {
@@ -356,7 +370,7 @@ Segment readSegment(const JsonCursor &c)
         if (const auto actions = c.find("actions"))
             for (size_t i = 0; i < actions->arraySize(); ++i)
                 a.actions.push_back(readAction(actions->at(i)));
-        a.origin.message = takeOrigin<pb::SegmentDefinition>(c);
+        a.origin = takeOrigin<pb::SegmentDefinition>(c);
         return a;
     }
     c.failAt("type", QStringLiteral("unknown segment type \"%1\"").arg(QString::fromStdString(type)));
@@ -377,7 +391,7 @@ Json routeJson(const Route &r)
            {"failsafes", std::move(failsafes)}, {"endAction", s.endAction == EndAction::ReturnHome ? "returnHome" : "none"}};
     if (s.home)
         j["home"] = {{"latitude", s.home->position.latitude}, {"longitude", s.home->position.longitude}, {"altitudeAmsl", s.home->altitudeAmsl}};
-    putOrigin(j, r.origin.message);
+    putHci(j, hciRoute(r.origin));
     Json segments = Json::array();
     for (const Segment &seg : r.segments)
         segments.push_back(segmentJson(seg));
@@ -415,7 +429,7 @@ Route readRoute(const JsonCursor &c)
     s.endAction = end == QLatin1String("returnHome") ? EndAction::ReturnHome : EndAction::None;
     if (const auto h = c.find("home"))
         s.home = HomePosition{{h->number("latitude"), h->number("longitude")}, h->number("altitudeAmsl")};
-    r.origin.message = takeOrigin<pb::Route>(c);
+    r.origin = takeOrigin<pb::Route>(c);
     const JsonCursor segments = c.at("segments");
     const size_t n = segments.arraySize();
     r.segments.reserve(n);
@@ -463,7 +477,7 @@ QByteArray writeSortie(const Mission &mission)
     for (const Route &r : mission.routes)
         routes.push_back(routeJson(r));
     Json m{{"name", str(mission.name)}, {"description", str(mission.description)}};
-    putOrigin(m, mission.origin.message);
+    putHci(m, hciMission(mission.origin));
     m["routes"] = std::move(routes);
     const Json doc{{"format", "sortie-mission"}, {"schemaVersion", kSortieSchemaVersion}, {"mission", std::move(m)}};
     std::string out;
@@ -495,7 +509,7 @@ Result<Mission> readSortie(const QByteArray &data)
         Mission mission;
         mission.name = m.stringOr("name", QString());
         mission.description = m.stringOr("description", QString());
-        mission.origin.message = takeOrigin<pb::Mission>(m);
+        mission.origin = takeOrigin<pb::Mission>(m);
         const JsonCursor routes = m.at("routes");
         for (size_t i = 0; i < routes.arraySize(); ++i)
             mission.routes.push_back(readRoute(routes.at(i)));

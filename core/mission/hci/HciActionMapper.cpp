@@ -65,14 +65,14 @@ WaypointAction actionFromHci(const pb::ActionDefinition &d)
         return a;
     }
     // Anything else (servos, VTOL transitions, lidar, hop, drop) stays in the server's terms.
-    return ServerAction{std::make_shared<const pb::ActionDefinition>(d)};
+    return ServerAction{QByteArray::fromStdString(d.SerializeAsString())};
 }
 
 void actionToHci(const WaypointAction &action, pb::ActionDefinition &def)
 {
     if (const auto *o = std::get_if<ServerAction>(&action)) {
-        if (o->definition)
-            def = *o->definition;
+        if (!o->definition.isEmpty())
+            def.ParseFromArray(o->definition.constData(), int(o->definition.size()));
         return;
     }
     // Compare with what def already says (decoded: an absent field reads as its meaning, not

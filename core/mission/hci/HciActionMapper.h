@@ -2,6 +2,8 @@
 
 #include "WaypointAction.h"
 
+namespace com::ugcs::ucs::proto { class ActionDefinition; }
+
 namespace sortie::mission {
 
 // Waypoint actions <-> UgCS ActionDefinition. Angles and positions are radians on the wire.

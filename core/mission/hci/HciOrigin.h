@@ -1,5 +1,7 @@
 #pragma once
 
+#include "ServerOrigin.h"
+
 #include <memory>
 
 namespace com::ugcs::ucs::proto {
@@ -10,19 +12,32 @@ class Mission;
 
 namespace sortie::mission {
 
-// The protobuf object a value came from, kept beside it so that saving merges our edits into a
-// copy of what the server sent (unknown fields included). Provenance, not content: two values
-// that differ only in origin compare equal.
+// What an origin holds when the HCI mapping filled it: the protobuf message the server sent.
 template<typename Message>
-struct HciOrigin
+struct HciPayload final : ServerOrigin::Payload
 {
-    std::shared_ptr<const Message> message;
-    bool operator==(const HciOrigin &) const { return true; }
-    explicit operator bool() const { return bool(message); }
+    explicit HciPayload(Message m) : message(std::move(m)) {}
+    const Message message;
 };
 
-using SegmentOrigin = HciOrigin<com::ugcs::ucs::proto::SegmentDefinition>;
-using RouteOrigin = HciOrigin<com::ugcs::ucs::proto::Route>;
-using MissionOrigin = HciOrigin<com::ugcs::ucs::proto::Mission>;
+// An origin holding `message` (a SegmentDefinition, a Route or a Mission as the server sent it).
+template<typename Message>
+ServerOrigin hciOrigin(Message message)
+{
+    return ServerOrigin(std::make_shared<const HciPayload<Message>>(std::move(message)));
+}
+
+// The message an origin holds, or nullptr when it holds none of that type.
+template<typename Message>
+const Message *hciMessage(const ServerOrigin &origin)
+{
+    const auto *payload = dynamic_cast<const HciPayload<Message> *>(origin.payload());
+    return payload ? &payload->message : nullptr;
+}
+
+// The same for the three kinds of origin the HCI mapping fills (defined where their type is complete).
+const com::ugcs::ucs::proto::SegmentDefinition *hciSegment(const ServerOrigin &origin);
+const com::ugcs::ucs::proto::Route *hciRoute(const ServerOrigin &origin);
+const com::ugcs::ucs::proto::Mission *hciMission(const ServerOrigin &origin);
 
 } // namespace sortie::mission

@@ -1,6 +1,8 @@
 #include "HciRouteMapper.h"
 
+#include "CameraProto.h"
 #include "Domain.pb.h"
+#include "HciOrigin.h"
 #include "HciSegmentMapper.h"
 #include "HciText.h"
 
@@ -115,9 +117,9 @@ Result<HciRouteImport> routeFromHci(const pb::Route &route)
         }
         out.route.segments.push_back(std::move(s).value());
     }
-    auto origin = std::make_shared<pb::Route>(route);
-    origin->clear_segments();  // segments keep their own origins
-    out.route.origin.message = std::move(origin);
+    pb::Route origin = route;
+    origin.clear_segments();  // segments keep their own origins
+    out.route.origin = hciOrigin(std::move(origin));
     return out;
 }
 
@@ -125,13 +127,14 @@ pb::Route routeToHci(const Route &route)
 {
     pb::Route out;
     std::optional<RouteSettings> before;
-    if (route.origin.message) {
-        out = *route.origin.message;
-        before = settingsFromHci(*route.origin.message);
+    const pb::Route *origin = hciRoute(route.origin);
+    if (origin) {
+        out = *origin;
+        before = settingsFromHci(*origin);
     }
     settingsToHci(route.settings, before ? &*before : nullptr, out);
     // Segments are decoded against the original route's context, so "unchanged" means unchanged.
-    const pb::Route &contextRoute = route.origin.message ? *route.origin.message : out;
+    const pb::Route &contextRoute = origin ? *origin : out;
     const HciSegmentContext ctx{before ? before->initialSpeed : route.settings.initialSpeed,
                                 contextRoute.has_vehicleprofile() ? &contextRoute.vehicleprofile() : nullptr};
     out.clear_segments();
@@ -153,20 +156,21 @@ Result<Mission> missionFromHci(const pb::Mission &mission, QStringList *notices)
             *notices << route->notices;
         out.routes.push_back(std::move(route).value().route);
     }
-    auto origin = std::make_shared<pb::Mission>(mission);
-    origin->clear_routes();
-    out.origin.message = std::move(origin);
+    pb::Mission origin = mission;
+    origin.clear_routes();
+    out.origin = hciOrigin(std::move(origin));
     return out;
 }
 
 pb::Mission missionToHci(const Mission &mission)
 {
     pb::Mission out;
-    if (mission.origin.message)
-        out = *mission.origin.message;
-    if (!mission.origin.message || QString::fromStdString(out.name()) != mission.name)
+    const pb::Mission *origin = hciMission(mission.origin);
+    if (origin)
+        out = *origin;
+    if (!origin || QString::fromStdString(out.name()) != mission.name)
         out.set_name(mission.name.toStdString());
-    if (!mission.origin.message || QString::fromStdString(out.description()) != mission.description)
+    if (!origin || QString::fromStdString(out.description()) != mission.description)
         out.set_description(mission.description.toStdString());
     out.clear_routes();
     for (const Route &r : mission.routes)

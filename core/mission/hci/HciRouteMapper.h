@@ -5,6 +5,11 @@
 
 #include <QStringList>
 
+namespace com::ugcs::ucs::proto {
+class Mission;
+class Route;
+}
+
 namespace sortie::mission {
 
 // UgCS algorithm classes of the segments Sortie edits. The waypoint class is in the SDK; the

@@ -1,7 +1,9 @@
 #include "HciSegmentMapper.h"
 
 #include "Domain.pb.h"
+#include "CameraProto.h"
 #include "HciActionMapper.h"
+#include "HciOrigin.h"
 #include "HciRouteMapper.h"
 #include "HciText.h"
 #include "SegmentParameters.h"
@@ -364,16 +366,16 @@ void scanToHci(const AreaScan &a, const AreaScan *before, pb::SegmentDefinition 
 Result<Segment> segmentFromHci(const pb::SegmentDefinition &s, const HciSegmentContext &ctx, QStringList *notices)
 {
     const std::string &algorithm = s.algorithmclassname();
-    const auto origin = std::make_shared<const pb::SegmentDefinition>(s);
+    const ServerOrigin origin = hciOrigin(s);
     if (algorithm == kAreaScanAlgorithm && s.figure().type() == pb::FT_POLYGON && s.figure().points_size() >= 3) {
         AreaScan scan = scanFromHci(s, ctx, notices);
-        scan.origin.message = origin;
+        scan.origin = origin;
         return Segment(std::move(scan));
     }
     if (algorithm == kWaypointAlgorithm || algorithm == kTakeoffAlgorithm || algorithm == kLandingAlgorithm) {
         if (Result<Waypoint> w = waypointFromHci(s, ctx)) {
             Waypoint out = std::move(w).value();
-            out.origin.message = origin;
+            out.origin = origin;
             return Segment(std::move(out));
         } else if (notices) {
             *notices << QStringLiteral("A %1 segment could not be read as one (%2); it is kept as the server sent it.")
@@ -384,18 +386,18 @@ Result<Segment> segmentFromHci(const pb::SegmentDefinition &s, const HciSegmentC
     }
     // Any other algorithm (or one that does not read as its kind) is kept as the server described it.
     AlgorithmSegment other = algorithmSegmentFromHci(s);
-    other.origin.message = origin;
+    other.origin = origin;
     return Segment(std::move(other));
 }
 
 pb::SegmentDefinition segmentToHci(const Segment &segment, const HciSegmentContext &ctx)
 {
-    const SegmentOrigin &origin = originOf(segment);
+    const pb::SegmentDefinition *origin = hciSegment(originOf(segment));
     pb::SegmentDefinition out;
     std::optional<Segment> before;
-    if (origin.message) {
-        out = *origin.message;
-        Result<Segment> decoded = segmentFromHci(*origin.message, ctx, nullptr);
+    if (origin) {
+        out = *origin;
+        Result<Segment> decoded = segmentFromHci(*origin, ctx, nullptr);
         if (decoded && decoded.value().index() == segment.index())
             before = std::move(decoded).value();
         else

@@ -5,7 +5,10 @@
 
 #include <QStringList>
 
-namespace com::ugcs::ucs::proto { class VehicleProfile; }
+namespace com::ugcs::ucs::proto {
+class SegmentDefinition;
+class VehicleProfile;
+}
 
 namespace sortie::mission {
 

@@ -1,6 +1,7 @@
 #include "ProcessedPlan.h"
 
 #include "Domain.pb.h"
+#include "HciOrigin.h"
 
 #include <numbers>
 
@@ -16,8 +17,8 @@ int rowOfUuid(const Route *route, const std::string &uuid)
     if (!route || uuid.empty())
         return -1;
     for (size_t i = 0; i < route->segments.size(); ++i) {
-        const SegmentOrigin &o = originOf(route->segments[i]);
-        if (o.message && o.message->uuid() == uuid)
+        const pb::SegmentDefinition *o = hciSegment(originOf(route->segments[i]));
+        if (o && o->uuid() == uuid)
             return int(i);
     }
     return -1;

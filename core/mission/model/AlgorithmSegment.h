@@ -1,16 +1,13 @@
 #pragma once
 
 #include "AlgorithmDefinition.h"
-#include "SegmentPlanner.h"
 #include "GeoPoint.h"
-#include "HciOrigin.h"
+#include "ServerOrigin.h"
 #include "WaypointAction.h"
 
 #include <vector>
 
 namespace sortie::mission {
-
-class AlgorithmCatalog;
 
 // A point of a figure with the altitude it carries on the wire.
 struct FigurePoint
@@ -35,7 +32,7 @@ struct AlgorithmSegment
     std::vector<double> figureParameters;  // Figure.parameters: a circle's radius (m)
     ParameterValues parameters;            // wire names and text, in the order received
     std::vector<WaypointAction> actions;
-    SegmentOrigin origin;
+    ServerOrigin origin;
 
     AlgorithmKind kind() const;
     // The value text of a parameter, or nullptr when the segment does not carry it.
@@ -47,12 +44,5 @@ struct AlgorithmSegment
 
 // "Circle", "Photogrammetry", or the class's short name for an algorithm Sortie does not know.
 QString algorithmLabel(const AlgorithmSegment &segment);
-
-// The figure the segment planner takes (SegmentPlanner.h).
-SegmentFigure plannerFigure(const AlgorithmSegment &segment);
-// What the segment flies, planned the way sortie-sim processes it; an outcome with an error when
-// no definition in `catalog` describes the algorithm.
-SegmentPlanOutcome planAlgorithmSegment(const AlgorithmSegment &segment, const AlgorithmCatalog &catalog,
-                                        const PlanContext &context = {});
 
 } // namespace sortie::mission

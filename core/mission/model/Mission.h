@@ -1,6 +1,6 @@
 #pragma once
 
-#include "HciOrigin.h"
+#include "ServerOrigin.h"
 #include "Route.h"
 
 #include <QString>
@@ -14,7 +14,7 @@ struct Mission
     QString name;
     QString description;
     std::vector<Route> routes;
-    MissionOrigin origin;
+    ServerOrigin origin;
     bool operator==(const Mission &) const = default;
 };
 

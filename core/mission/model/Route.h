@@ -1,7 +1,7 @@
 #pragma once
 
-#include "HciOrigin.h"
 #include "Segment.h"
+#include "ServerOrigin.h"
 
 #include <QString>
 
@@ -61,14 +61,11 @@ struct RouteSettings
     bool operator==(const RouteSettings &) const = default;
 };
 
-// What planning a segment of this route locally knows: the profile's cameras, the route's speed.
-PlanContext planContextOf(const RouteSettings &settings);
-
 struct Route
 {
     RouteSettings settings;
     std::vector<Segment> segments;
-    RouteOrigin origin;
+    ServerOrigin origin;
     bool operator==(const Route &) const = default;
 };
 

@@ -82,9 +82,9 @@ double speedOf(const Segment &s)
     return numberValue(std::get<AlgorithmSegment>(s), u"speed").value_or(kMissing);
 }
 
-const SegmentOrigin &originOf(const Segment &s)
+const ServerOrigin &originOf(const Segment &s)
 {
-    return std::visit([](const auto &v) -> const SegmentOrigin & { return v.origin; }, s);
+    return std::visit([](const auto &v) -> const ServerOrigin & { return v.origin; }, s);
 }
 
 QString segmentLabel(int row, const Segment &s)

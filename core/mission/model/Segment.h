@@ -33,7 +33,7 @@ double altitudeOf(const Segment &s);
 AltitudeType altitudeTypeOf(const Segment &s);
 // m/s; NaN when the segment does not say.
 double speedOf(const Segment &s);
-const SegmentOrigin &originOf(const Segment &s);
+const ServerOrigin &originOf(const Segment &s);
 // "Waypoint 3", "Area scan 4", "Circle 5": what messages call a row.
 QString segmentLabel(int row, const Segment &s);
 // "waypoint", "takeoff", "land", "areaScan", "circle", "photogrammetry", ... "unknown".

@@ -49,7 +49,7 @@ QString enumLabel(const std::string &valueName)
 }
 
 // "setServoDefinition" -> "setServo"; "DropDefinition" -> "drop".
-QString kindOf(const FieldDescriptor *member)
+QString kindName(const FieldDescriptor *member)
 {
     QString kind = QString::fromStdString(member->name());
     if (kind.endsWith(QLatin1String("Definition")))
@@ -114,11 +114,22 @@ bool editable(const FieldDescriptor *f)
     }
 }
 
+ServerActionField::Type typeOf(const FieldDescriptor *f)
+{
+    switch (f->cpp_type()) {
+    case FieldDescriptor::CPPTYPE_BOOL: return ServerActionField::Type::Boolean;
+    case FieldDescriptor::CPPTYPE_ENUM: return ServerActionField::Type::Choice;
+    case FieldDescriptor::CPPTYPE_DOUBLE:
+    case FieldDescriptor::CPPTYPE_FLOAT: return ServerActionField::Type::Real;
+    default: return ServerActionField::Type::Integer;
+    }
+}
+
 ServerActionKind describe(const FieldDescriptor *member)
 {
     ServerActionKind kind;
-    kind.member = member;
-    kind.kind = kindOf(member);
+    kind.member = member->number();
+    kind.kind = kindName(member);
     const Known *k = known(kind.kind, nullptr);
     kind.label = k ? QCoreApplication::translate("ServerAction", k->label) : humanized(kind.kind);
     const Descriptor *message = member->message_type();
@@ -127,7 +138,8 @@ ServerActionKind describe(const FieldDescriptor *member)
         if (!editable(f))
             continue;
         ServerActionField field;
-        field.descriptor = f;
+        field.number = f->number();
+        field.type = typeOf(f);
         field.name = QString::fromStdString(f->name());
         if (const Known *kf = known(kind.kind, f->name().c_str())) {
             field.label = QCoreApplication::translate("ServerAction", kf->label);
@@ -147,40 +159,37 @@ ServerActionKind describe(const FieldDescriptor *member)
     return kind;
 }
 
+const FieldDescriptor *memberField(const ServerActionKind &kind)
+{
+    return pb::ActionDefinition::descriptor()->FindFieldByNumber(kind.member);
+}
+
+const FieldDescriptor *fieldOf(const ServerActionKind &kind, const ServerActionField &field)
+{
+    return memberField(kind)->message_type()->FindFieldByNumber(field.number);
+}
+
 const google::protobuf::Message *memberOf(const pb::ActionDefinition &d, const ServerActionKind &kind)
 {
     const auto *refl = d.GetReflection();
-    return refl->HasField(d, kind.member) ? &refl->GetMessage(d, kind.member) : nullptr;
+    const FieldDescriptor *member = memberField(kind);
+    return refl->HasField(d, member) ? &refl->GetMessage(d, member) : nullptr;
 }
 
-QString number(double v) { return QString::number(v, 'g', 10); }
-
-} // namespace
-
-const std::vector<ServerActionKind> &serverActionKinds()
+// The definition an action holds: its bytes parsed (an action without bytes holds an empty one).
+pb::ActionDefinition definitionOf(const ServerAction &action)
 {
-    static const std::vector<ServerActionKind> kinds = [] {
-        std::vector<ServerActionKind> list;
-        const Descriptor *d = pb::ActionDefinition::descriptor();
-        for (int i = 0; i < d->field_count(); ++i) {
-            const FieldDescriptor *f = d->field(i);
-            if (f->cpp_type() == FieldDescriptor::CPPTYPE_MESSAGE && !f->is_repeated() && !isModelledOrNotAnAction(f->name()))
-                list.push_back(describe(f));
-        }
-        return list;
-    }();
-    return kinds;
+    pb::ActionDefinition d;
+    d.ParseFromArray(action.definition.constData(), int(action.definition.size()));
+    return d;
 }
 
-const ServerActionKind *findServerActionKind(const QString &kind)
+ServerAction actionOf(const pb::ActionDefinition &d)
 {
-    for (const ServerActionKind &k : serverActionKinds())
-        if (k.kind == kind)
-            return &k;
-    return nullptr;
+    return ServerAction{QByteArray::fromStdString(d.SerializeAsString())};
 }
 
-const ServerActionKind *serverActionKindOf(const pb::ActionDefinition &definition)
+const ServerActionKind *kindOf(const pb::ActionDefinition &definition)
 {
     for (const ServerActionKind &k : serverActionKinds())
         if (memberOf(definition, k))
@@ -188,20 +197,13 @@ const ServerActionKind *serverActionKindOf(const pb::ActionDefinition &definitio
     return nullptr;
 }
 
-std::shared_ptr<pb::ActionDefinition> newServerAction(const ServerActionKind &kind)
-{
-    auto d = std::make_shared<pb::ActionDefinition>();
-    d->GetReflection()->MutableMessage(d.get(), kind.member);  // present, even with no field set
-    return d;
-}
-
-QVariant serverActionValue(const pb::ActionDefinition &definition, const ServerActionKind &kind, const ServerActionField &field)
+QVariant valueOf(const pb::ActionDefinition &definition, const ServerActionKind &kind, const ServerActionField &field)
 {
     const auto *m = memberOf(definition, kind);
     if (!m)
         return {};
     const auto *refl = m->GetReflection();
-    const FieldDescriptor *f = field.descriptor;
+    const FieldDescriptor *f = fieldOf(kind, field);
     if (!refl->HasField(*m, f))
         return {};  // not set: shown as missing, never as the schema's 0
     switch (f->cpp_type()) {
@@ -217,12 +219,12 @@ QVariant serverActionValue(const pb::ActionDefinition &definition, const ServerA
     }
 }
 
-bool setServerActionValue(pb::ActionDefinition &definition, const ServerActionKind &kind, const ServerActionField &field,
-                          const QVariant &value)
+bool setValue(pb::ActionDefinition &definition, const ServerActionKind &kind, const ServerActionField &field,
+              const QVariant &value)
 {
-    auto *m = definition.GetReflection()->MutableMessage(&definition, kind.member);
+    auto *m = definition.GetReflection()->MutableMessage(&definition, memberField(kind));
     const auto *refl = m->GetReflection();
-    const FieldDescriptor *f = field.descriptor;
+    const FieldDescriptor *f = fieldOf(kind, field);
     if (!value.isValid() || (value.typeId() == QMetaType::QString && value.toString().trimmed().isEmpty())) {
         refl->ClearField(m, f);
         return true;
@@ -262,36 +264,92 @@ bool setServerActionValue(pb::ActionDefinition &definition, const ServerActionKi
     }
 }
 
-std::shared_ptr<pb::ActionDefinition> makeServerAction(const QString &kind, const QVariantMap &values)
+QString number(double v) { return QString::number(v, 'g', 10); }
+
+} // namespace
+
+const std::vector<ServerActionKind> &serverActionKinds()
+{
+    static const std::vector<ServerActionKind> kinds = [] {
+        std::vector<ServerActionKind> list;
+        const Descriptor *d = pb::ActionDefinition::descriptor();
+        for (int i = 0; i < d->field_count(); ++i) {
+            const FieldDescriptor *f = d->field(i);
+            if (f->cpp_type() == FieldDescriptor::CPPTYPE_MESSAGE && !f->is_repeated() && !isModelledOrNotAnAction(f->name()))
+                list.push_back(describe(f));
+        }
+        return list;
+    }();
+    return kinds;
+}
+
+const ServerActionKind *findServerActionKind(const QString &kind)
+{
+    for (const ServerActionKind &k : serverActionKinds())
+        if (k.kind == kind)
+            return &k;
+    return nullptr;
+}
+
+const ServerActionKind *serverActionKindOf(const ServerAction &action)
+{
+    return kindOf(definitionOf(action));
+}
+
+ServerAction newServerAction(const ServerActionKind &kind)
+{
+    pb::ActionDefinition d;
+    d.GetReflection()->MutableMessage(&d, memberField(kind));  // present, even with no field set
+    return actionOf(d);
+}
+
+QVariant serverActionValue(const ServerAction &action, const ServerActionKind &kind, const ServerActionField &field)
+{
+    return valueOf(definitionOf(action), kind, field);
+}
+
+bool setServerActionValue(ServerAction &action, const ServerActionKind &kind, const ServerActionField &field,
+                          const QVariant &value)
+{
+    pb::ActionDefinition d = definitionOf(action);
+    if (!setValue(d, kind, field, value))
+        return false;
+    action = actionOf(d);
+    return true;
+}
+
+std::optional<ServerAction> makeServerAction(const QString &kind, const QVariantMap &values)
 {
     const ServerActionKind *k = findServerActionKind(kind);
     if (!k)
-        return nullptr;
-    auto d = newServerAction(*k);
+        return std::nullopt;
+    pb::ActionDefinition d;
+    d.GetReflection()->MutableMessage(&d, memberField(*k));
     for (const ServerActionField &f : k->fields)
-        if (values.contains(f.name) && !setServerActionValue(*d, *k, f, values.value(f.name)))
-            return nullptr;
-    return d;
+        if (values.contains(f.name) && !setValue(d, *k, f, values.value(f.name)))
+            return std::nullopt;
+    return actionOf(d);
 }
 
-QVariant serverActionValue(const pb::ActionDefinition &definition, const QString &field)
+QVariant serverActionValue(const ServerAction &action, const QString &field)
 {
-    const ServerActionKind *k = serverActionKindOf(definition);
-    if (k)
+    const pb::ActionDefinition d = definitionOf(action);
+    if (const ServerActionKind *k = kindOf(d))
         for (const ServerActionField &f : k->fields)
             if (f.name == field)
-                return serverActionValue(definition, *k, f);
+                return valueOf(d, *k, f);
     return {};
 }
 
-QString describeServerAction(const pb::ActionDefinition &definition)
+QString describeServerAction(const ServerAction &action)
 {
-    const ServerActionKind *kind = serverActionKindOf(definition);
+    const pb::ActionDefinition definition = definitionOf(action);
+    const ServerActionKind *kind = kindOf(definition);
     if (!kind)
         return QCoreApplication::translate("ServerAction", "Server action");
     QStringList parts;
     for (const ServerActionField &f : kind->fields) {
-        const QVariant v = serverActionValue(definition, *kind, f);
+        const QVariant v = valueOf(definition, *kind, f);
         if (!v.isValid())
             continue;
         const QString label = f.label == f.label.toUpper() ? f.label : f.label.toLower();  // "PWM" stays
@@ -308,6 +366,14 @@ QString describeServerAction(const pb::ActionDefinition &definition)
             parts << text;
     }
     return parts.isEmpty() ? kind->label : kind->label + QStringLiteral(": ") + parts.join(QStringLiteral(", "));
+}
+
+std::optional<ServerAction> serverActionFromBytes(const QByteArray &bytes)
+{
+    pb::ActionDefinition d;
+    if (bytes.isEmpty() || !d.ParseFromArray(bytes.constData(), int(bytes.size())))
+        return std::nullopt;
+    return ServerAction{bytes};
 }
 
 } // namespace sortie::mission

@@ -1,7 +1,7 @@
 #pragma once
 
 #include "GeoPoint.h"
-#include "HciOrigin.h"
+#include "ServerOrigin.h"
 #include "WaypointAction.h"
 
 #include <vector>
@@ -22,7 +22,7 @@ struct Waypoint
     double acceptanceRadius = 0.0;  // metres; 0 = the vehicle's default
     WaypointRole role = WaypointRole::Pass;
     std::vector<WaypointAction> actions;
-    SegmentOrigin origin;  // the server's SegmentDefinition this came from, if any
+    ServerOrigin origin;  // the server's SegmentDefinition this came from, if any
 
     bool operator==(const Waypoint &) const = default;
 };

@@ -1,6 +1,5 @@
 #include "WaypointAction.h"
 
-#include "Domain.pb.h"
 #include "ServerActions.h"
 
 #include <QStringList>
@@ -12,13 +11,6 @@ template<class... Ts> struct Overloaded : Ts... { using Ts::operator()...; };
 template<class... Ts> Overloaded(Ts...) -> Overloaded<Ts...>;
 
 QString number(double v) { return QString::number(v, 'g', 10); }
-}
-
-bool ServerAction::operator==(const ServerAction &o) const
-{
-    if (definition == o.definition)
-        return true;
-    return definition && o.definition && definition->SerializeAsString() == o.definition->SerializeAsString();
 }
 
 QString altitudeTypeName(AltitudeType type)
@@ -49,7 +41,7 @@ QString actionKindName(const WaypointAction &action)
         [](const PanoramaAction &) { return QStringLiteral("panorama"); },
         [](const CameraControlAction &) { return QStringLiteral("cameraControl"); },
         [](const ServerAction &a) {
-            const ServerActionKind *kind = a.definition ? serverActionKindOf(*a.definition) : nullptr;
+            const ServerActionKind *kind = serverActionKindOf(a);
             return kind ? kind->kind : QStringLiteral("server");
         },
     }, action);
@@ -91,7 +83,7 @@ QString describeAction(const WaypointAction &action)
             if (a.zoomLevel) parts << QStringLiteral("zoom %1").arg(*a.zoomLevel);
             return parts.isEmpty() ? QStringLiteral("Gimbal (nothing set)") : QStringLiteral("Gimbal ") + parts.join(QStringLiteral(", "));
         },
-        [](const ServerAction &a) { return a.definition ? describeServerAction(*a.definition) : QStringLiteral("Server action"); },
+        [](const ServerAction &a) { return describeServerAction(a); },
     }, action);
 }
 

@@ -3,14 +3,13 @@
 #include "GeoPoint.h"
 #include "MissionEnums.h"
 
+#include <QByteArray>
 #include <QString>
 
 #include <memory>
 #include <optional>
 #include <variant>
 #include <vector>
-
-namespace com::ugcs::ucs::proto { class ActionDefinition; }
 
 namespace sortie::mission {
 
@@ -88,13 +87,13 @@ struct CameraControlAction
 };
 
 // An action Sortie keeps in the server's own terms (servo, VTOL transition, lidar, hop, drop, and
-// any a newer schema adds): the UgCS ActionDefinition itself, edited field by field through its
-// schema (ServerActions.h), so whatever Sortie does not know of it goes back unchanged.
+// any a newer schema adds): the UgCS ActionDefinition itself, as its protobuf bytes, edited field by
+// field through its schema (ServerActions.h), so whatever Sortie does not know of it goes back
+// unchanged. Equal when the bytes are.
 struct ServerAction
 {
-    std::shared_ptr<const com::ugcs::ucs::proto::ActionDefinition> definition;
-    // Equal when they hold the same definition (same object, or the same bytes).
-    bool operator==(const ServerAction &o) const;
+    QByteArray definition;  // a serialized ActionDefinition; empty: none
+    bool operator==(const ServerAction &) const = default;
 };
 
 using WaypointAction = std::variant<WaitAction, HeadingAction, PoiAction, CameraTriggerAction,

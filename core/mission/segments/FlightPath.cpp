@@ -2,6 +2,7 @@
 
 #include "AlgorithmCatalog.h"
 #include "ScanPlanCache.h"
+#include "SegmentPlanning.h"
 
 #include <cmath>
 

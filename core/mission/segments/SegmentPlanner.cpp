@@ -559,19 +559,6 @@ int circlePointsPerLap(double radius)
     return std::clamp(int(std::ceil(n)), 8, 360);
 }
 
-std::optional<Camera> resolveCamera(const QString &value, const std::vector<ProfileCamera> &cameras)
-{
-    const QString v = value.trimmed();
-    if (v.isEmpty())
-        return cameras.empty() ? std::nullopt : std::optional<Camera>(cameras.front().camera);
-    bool numeric = false;
-    const int id = v.toInt(&numeric);
-    for (const ProfileCamera &c : cameras)
-        if ((numeric && c.id == id) || c.camera.name == v)
-            return c.camera;
-    return builtInCamera(v);
-}
-
 SegmentPlanOutcome planSegment(const AlgorithmDefinition &algorithm, const SegmentFigure &figure,
                                const ParameterValues &values, const PlanContext &context)
 {

@@ -99,10 +99,6 @@ struct SegmentPlanOutcome
 SegmentPlanOutcome planSegment(const AlgorithmDefinition &algorithm, const SegmentFigure &figure,
                                const ParameterValues &values, const PlanContext &context);
 
-// The camera the `camera` value names among the profile's (by id, then by name), then among the
-// built-in cameras by name; an empty value takes the profile's first camera.
-std::optional<Camera> resolveCamera(const QString &value, const std::vector<ProfileCamera> &cameras);
-
 // The number of points an orbit of `radius` gets per lap when basePointsQnt is not set: enough that a
 // chord strays at most 1 m from the circle, between 8 and 360.
 int circlePointsPerLap(double radius);

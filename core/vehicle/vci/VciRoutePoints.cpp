@@ -5,6 +5,7 @@
 #include "AreaScan.h"
 #include "Route.h"
 #include "ScanPlanCache.h"
+#include "SegmentPlanning.h"
 #include "SegmentPlanner.h"
 #include "VciMissionActions.h"
 

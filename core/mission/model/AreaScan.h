@@ -2,7 +2,7 @@
 
 #include "Camera.h"
 #include "GeoPoint.h"
-#include "HciOrigin.h"
+#include "ServerOrigin.h"
 #include "WaypointAction.h"
 
 #include <QString>
@@ -52,7 +52,7 @@ struct AreaScan
 {
     std::vector<GeoPoint> polygon;
     AreaScanParameters parameters;
-    SegmentOrigin origin;
+    ServerOrigin origin;
     bool operator==(const AreaScan &) const = default;
 };
 

@@ -2,19 +2,13 @@
 
 #include <QString>
 
-#include <functional>
 #include <optional>
 #include <vector>
-
-namespace com::ugcs::ucs::proto {
-class PayloadProfile;
-class VehicleProfile;
-}
 
 namespace sortie::mission {
 
 // A survey camera. Sizes in millimetres, as camera makers publish them (UgCS's payload profiles
-// carry metres: see cameraFromPayload). With the camera's top facing forward the image's width
+// carry metres: see CameraProto.h). With the camera's top facing forward the image's width
 // runs across the flight direction and its height along it.
 struct Camera
 {
@@ -47,14 +41,8 @@ const std::vector<Camera> &builtInCameras();
 // The built-in camera of that name, if any.
 std::optional<Camera> builtInCamera(const QString &name);
 
-// The camera a UgCS payload profile describes (PT_CAMERA with focal length, sensor size and
-// resolution; PPT_* values in SI metres and seconds), or nullopt when it is not a complete camera.
-std::optional<Camera> cameraFromPayload(const com::ugcs::ucs::proto::PayloadProfile &payload);
-// The complete cameras among a vehicle profile's payloads, in its order (the first is the default
-// a segment without `camera` flies). A payload link carrying only an id is looked up with `find`.
-std::vector<ProfileCamera> profileCameras(const com::ugcs::ucs::proto::VehicleProfile &profile,
-                                          const std::function<const com::ugcs::ucs::proto::PayloadProfile *(int id)> &find = {});
-// The payload profile a server lists for a camera (metres, PT_CAMERA).
-com::ugcs::ucs::proto::PayloadProfile payloadFromCamera(const Camera &camera, int id = 0);
+// The camera the `camera` value names among the profile's (by id, then by name), then among the
+// built-in cameras by name; an empty value takes the profile's first camera.
+std::optional<Camera> resolveCamera(const QString &value, const std::vector<ProfileCamera> &cameras);
 
 } // namespace sortie::mission
