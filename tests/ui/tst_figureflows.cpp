@@ -46,9 +46,6 @@ namespace {
 
 // The demo route has four waypoints; the figure drawn is the fifth row.
 constexpr int kRow = 4;
-// A clear stretch of the map below the demo route (the route is fitted the same way every time).
-const QPointF kBase(450, 600);
-
 // By objectName, through the item tree (a Repeater's delegates are only there).
 QQuickItem *findItem(QQuickItem *root, const QString &name)
 {
@@ -111,6 +108,9 @@ class TestFigureFlows : public QObject
     }
     // Scene position of a point of the map item.
     QPoint onMap(QPointF position) const { return map()->mapToScene(position).toPoint(); }
+    // A clear stretch of the map below the demo route (the route is fitted the same way every time),
+    // above the terrain profile.
+    QPointF base() const { return {450, map()->height() - 150}; }
     GeoPoint geoAt(QPointF position) const
     {
         const QGeoCoordinate c = map()->toCoordinate(position);
@@ -149,7 +149,7 @@ class TestFigureFlows : public QObject
     }
 
     // Picks the drawing tool of `algorithm` (short class name) in the picker, with the keyboard,
-    // and clicks `points` (map item positions, from kBase); polylines and polygons are finished
+    // and clicks `points` (map item positions, from base()); polylines and polygons are finished
     // with Create. The new segment becomes the current row and the editable figure on the map.
     void draw(const char *algorithm, const QList<QPointF> &points)
     {
@@ -174,8 +174,8 @@ class TestFigureFlows : public QObject
         QCOMPARE(picker->property("currentIndex").toInt(), wanted);
 
         for (const QPointF &p : points) {
-            QVERIFY(routeLayer()->waypointAt(kBase + p) < 0 && routeLayer()->legAt(kBase + p) < 0);
-            QTest::mouseClick(window(), Qt::LeftButton, {}, onMap(kBase + p));
+            QVERIFY(routeLayer()->waypointAt(base() + p) < 0 && routeLayer()->legAt(base() + p) < 0);
+            QTest::mouseClick(window(), Qt::LeftButton, {}, onMap(base() + p));
         }
         if (figure == QLatin1String("polygon") || figure == QLatin1String("polyline")) {
             QTRY_COMPARE(find("scanDraftLayer")->property("vertexCount").toInt(), int(points.size()));
@@ -189,7 +189,7 @@ class TestFigureFlows : public QObject
         STEP(pathCaughtUp());
         QVERIFY(areaLayer()->transectPointCount() >= 2);
         for (int i = 0; i < int(points.size()); ++i)
-            QVERIFY(metersBetween(corner(i), geoAt(kBase + points[i])) < 0.05);
+            QVERIFY(metersBetween(corner(i), geoAt(base() + points[i])) < 0.05);
     }
 
     // Drags point `vertex` of the figure by `by` pixels: it lands where the mouse let go, the path
@@ -342,7 +342,7 @@ private slots:
     {
         STEP(draw("CircleAlgorithm", {QPointF(80, 40)}));
         QCOMPARE(mission::segmentKindName(segment()), QStringLiteral("circle"));
-        const GeoPoint centre = geoAt(kBase + QPointF(80, 40));
+        const GeoPoint centre = geoAt(base() + QPointF(80, 40));
         QVERIFY(metersBetween(corner(0), centre) < 0.05);
         QCOMPARE(figureSegment().figureParameters, std::vector<double>{50.0});
         QCOMPARE(areaLayer()->radius(), 50.0);
