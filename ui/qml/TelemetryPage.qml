@@ -18,9 +18,11 @@ Page {
     property ServerHistoryRequest serverHistory: null
     property ComparisonController comparison: null
     readonly property bool replaying: replay !== null && replay.active
-    property var vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
-    property var plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
-    readonly property Vehicle current: vehicleModel && vehicleLayer.currentIndex >= 0 ? vehicleModel.vehicleAt(vehicleLayer.currentIndex) : null
+    property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
+    property list<string> plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
+    readonly property Vehicle current: vehicleLayer.currentIndex < 0 ? null
+                                       : replaying ? replay.fleet.vehicleAt(vehicleLayer.currentIndex)
+                                       : fleet ? fleet.vehicleAt(vehicleLayer.currentIndex) : null
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""

@@ -6,7 +6,7 @@ import Sortie.Ui
 // over its coalesced model (TerrainProfileModel), fed by the client's ElevationService.
 Item {
     id: panel
-    property QtObject routeModel: null
+    property AbstractItemModel routeModel: null
     property ItemSelectionModel selectionModel: null
     property ElevationService elevation: null
     property alias view: view
