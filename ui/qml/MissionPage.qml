@@ -23,14 +23,14 @@ Page {
     property ItemSelectionModel selectionModel: doc ? doc.selection : null
     property AbstractItemModel areaPolygonModel: null
     property AbstractItemModel areaTransectModel: null
-    property AbstractItemModel vehicleModel: null   // the fleet: where the vehicles are while planning
+    required property AbstractItemModel vehicleModel // the fleet: where the vehicles are while planning
     property bool editable: doc !== null
     property string tool: ""               // "" or "scan" (drawing an area-scan polygon)
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
     property bool dark: false
-    property ElevationService elevation: null       // the client's ElevationService, for the terrain profile
+    required property ElevationService elevation    // the client's ElevationService, for the terrain profile
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
     // `var`: the editor's tools are plain JS objects (name, algorithm, figure, minimumPoints).
