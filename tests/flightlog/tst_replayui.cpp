@@ -59,6 +59,7 @@ private slots:
             import Sortie.Ui
             TelemetryPage {
                 fleet: null
+                serverHistory: null
                 units: DisplayUnits {}
             }
         )", QSize(1280, 800), {{QStringLiteral("replay"), QVariant::fromValue(&replay)},
@@ -282,6 +283,7 @@ private slots:
             import QtQuick
             import Sortie.Ui
             TelemetryPage {
+                comparison: null
                 units: DisplayUnits {}
             }
         )", QSize(1280, 800), {{QStringLiteral("fleet"), QVariant::fromValue(&fleet)},

@@ -36,9 +36,9 @@ import QtQuick
 import QtQml.Models
 import Sortie.Ui
 Item {
-    property QtObject routeModel
+    property AbstractItemModel routeModel
     property ItemSelectionModel selection
-    property QtObject elevation
+    property ElevationService elevation
     TerrainProfilePanel {
         objectName: "panel"
         anchors.fill: parent
@@ -56,7 +56,7 @@ import Sortie.Ui
 Item {
     id: root
     property RouteDocument doc
-    property QtObject routeModel
+    property AbstractItemModel routeModel
     property ElevationService elevation
     TerrainProfileModel {
         id: terrain

@@ -1,6 +1,8 @@
-// Pure map arithmetic: projection, viewport, graticule, scale bar, clipping, route frames, units.
+// Pure map arithmetic: projection, viewport, graticule, scale bar, clipping, route frames, label
+// placement, units.
 #include "DisplayUnits.h"
 #include "Graticule.h"
+#include "LabelPlacer.h"
 #include "LandTileRenderer.h"
 #include "MapViewport.h"
 #include "RouteFrame.h"
@@ -258,6 +260,39 @@ private slots:
         // A short leg across the screen's middle, not one around the world.
         QVERIFY(std::abs(leg.last().x() - leg.first().x()) < 200);
         QVERIFY(leg.first().x() < 400 && leg.last().x() > 400);
+    }
+
+    // Labels beside their marks unless a label placed earlier or another mark is in the way; then
+    // stacked below it, never overlapping, and the first placed keeps its place.
+    void labelPlacerKeepsLabelsApart()
+    {
+        const QSizeF size(60, 15);
+        // Alone: beside its mark, 16 px right, its middle 10 px above.
+        LabelPlacer alone({QPointF(100, 100)});
+        const LabelPlacer::Placement single = alone.place(0, size);
+        QCOMPARE(single.rect, QRectF(116, 82.5, 60, 15));
+        QVERIFY(!single.moved);
+
+        // Three marks at one spot: the first placed stays, the others go below, one by one.
+        LabelPlacer stacked({QPointF(100, 100), QPointF(100, 100), QPointF(100, 100)});
+        std::vector<LabelPlacer::Placement> placed;
+        for (size_t mark : {size_t(2), size_t(0), size_t(1)})
+            placed.push_back(stacked.place(mark, size));
+        QVERIFY(!placed[0].moved);
+        QVERIFY(placed[1].moved && placed[2].moved);
+        for (size_t a = 0; a < placed.size(); ++a)
+            for (size_t b = a + 1; b < placed.size(); ++b)
+                QVERIFY(!placed[a].rect.intersects(placed[b].rect));
+        QVERIFY(placed[0].rect.top() < placed[1].rect.top() && placed[1].rect.top() < placed[2].rect.top());
+
+        // Another mark right of this one: the label would cover it, so it moves down and clear.
+        LabelPlacer beside({QPointF(100, 100), QPointF(140, 92)});
+        const LabelPlacer::Placement clear = beside.place(0, size);
+        QVERIFY(clear.moved);
+        QVERIFY(!clear.rect.intersects(QRectF(128, 80, 24, 24)));
+        // Far apart, nothing moves.
+        LabelPlacer apart({QPointF(100, 100), QPointF(400, 400)});
+        QVERIFY(!apart.place(0, size).moved && !apart.place(1, size).moved);
     }
 
     void displayUnits()

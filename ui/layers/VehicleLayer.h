@@ -1,30 +1,24 @@
 #pragma once
 
 #include "MapLayer.h"
-#include "TrailPicture.h"
-
-#include <QColor>
-#include <QHash>
-#include <QPolygonF>
-
-#include <deque>
-#include <vector>
+#include "VehicleCamera.h"
+#include "VehicleMark.h"
+#include "VehicleModelReader.h"
+#include "VehicleTrails.h"
 
 #include <QAbstractItemModel>
+
+#include <vector>
 
 namespace sortie::ui {
 
 // Vehicles over the map from a list model (one row per vehicle): an arrow turned to the
-// heading, a label, the home position and a trail of where the vehicle has been, which the
-// layer records from the model's position updates. Greyed when the row's stale role is true.
-// Labels that would cover one another are stacked below the first, with a leader line; the
-// current vehicle is drawn last, ringed, its label on a filled tag.
-// The layer also moves its map for the operator: fitToMap() frames every vehicle, centerOn()
-// one of them; `follow` keeps the current vehicle in the middle of the map, and `autoFit`
-// frames the fleet whenever a vehicle first reports where it is, until the operator moves the map.
-// Role names are properties so any vehicle model fits. A move strokes only the trail's new
-// piece (TrailPicture); trails are drawn whole again on a new layout, or once the points cut
-// from their old ends reach a sixteenth of `trailLength` (until then the picture keeps them).
+// heading, a label, the home position and a trail of where the vehicle has been. Greyed when
+// the row's stale role is true; the current vehicle is drawn last, ringed, its label on a
+// filled tag. Role names are properties so any vehicle model fits.
+// The layer keeps the rows (VehicleModelReader) and hands the work out: VehicleTrails records
+// and strokes the trails, LabelPlacer keeps the labels apart, VehiclePainter draws a vehicle,
+// and VehicleCamera moves the map (fitToMap, centerOn, `follow`, `autoFit`).
 class VehicleLayer : public MapLayer
 {
     Q_OBJECT
@@ -53,25 +47,25 @@ public:
     void setModel(QAbstractItemModel *model);
     int currentIndex() const { return m_current; }
     void setCurrentIndex(int row);
-    int trailLength() const { return m_trailLength; }
+    int trailLength() const { return m_trails.length(); }
     void setTrailLength(int points);
-    bool trailsVisible() const { return m_trailsVisible; }
+    bool trailsVisible() const { return m_trails.isVisible(); }
     void setTrailsVisible(bool visible);
     int count() const { return int(m_vehicles.size()); }
     int positionedCount() const;
-    bool follow() const { return m_follow; }
-    void setFollow(bool follow);
-    bool autoFit() const { return m_autoFit; }
-    void setAutoFit(bool on);
+    bool follow() const { return m_camera.follow(); }
+    void setFollow(bool follow) { m_camera.setFollow(follow); }
+    bool autoFit() const { return m_camera.autoFit(); }
+    void setAutoFit(bool on) { m_camera.setAutoFit(on); }
 
     Q_INVOKABLE int vehicleAt(QPointF position, qreal radius = 16) const;
     Q_INVOKABLE int trailPointCount(int row) const;
     Q_INVOKABLE QPointF vehiclePosition(int row) const;
     Q_INVOKABLE void clearTrails();
     // Frames every vehicle that has a position (and its home); false when none has one.
-    Q_INVOKABLE bool fitToMap(qreal margin = 60);
+    Q_INVOKABLE bool fitToMap(qreal margin = 60) { return m_camera.fitAll(margin); }
     // Moves the map so that the vehicle is in its middle; false when it has no position.
-    Q_INVOKABLE bool centerOn(int row);
+    Q_INVOKABLE bool centerOn(int row) { return m_camera.centerOn(row); }
     // Where the vehicle's label is drawn, in item pixels (empty without a label or position).
     Q_INVOKABLE QRectF labelRect(int row) const;
 
@@ -93,73 +87,37 @@ protected:
     void mouseReleaseEvent(QMouseEvent *event) override;
 
 private:
-    struct Vehicle
-    {
-        QString id;
-        QString label;
-        QPointF position{qQNaN(), qQNaN()}; // normalised
-        QPointF home{qQNaN(), qQNaN()};
-        double heading = 0;
-        bool stale = false;
-        QColor color;
-    };
+    // Where a vehicle is drawn, in paintViewport pixels: laid out in updatePolish.
     struct Drawn
     {
         QPointF position;
         QPointF home;
-        QRectF label;        // in paintViewport pixels
+        QRectF label;
         bool hasPosition = false;
         bool hasHome = false;
         bool labelMoved = false; // stacked away from its vehicle: drawn with a leader line
     };
-    struct Trail
-    {
-        std::deque<QPointF> points; // normalised, oldest first
-        qint64 dropped = 0;         // points cut from the front so far
-        qint64 drawn = 0;           // points (counted from the first ever) in the picture
-    };
     void reload();
     void reloadRows(int first, int last);
-    void resolveRoles();
-    Vehicle read(int row) const;
-    void record(const Vehicle &vehicle);
-    void redrawTrails();
-    QColor colorOf(const Vehicle &vehicle) const;
-    void layOutTrails(const MapViewport &view);
     void layOutLabels();
-    void watchMap();
-    void onMapMoved();
-    void keepCurrentInView();
+    void redraw();
 
     QPointer<QAbstractItemModel> m_model;
-    QString m_idRole = QStringLiteral("vehicleId");
-    QString m_latitudeRole = QStringLiteral("latitude");
-    QString m_longitudeRole = QStringLiteral("longitude");
-    QString m_headingRole = QStringLiteral("heading");
-    QString m_labelRole = QStringLiteral("name");
-    QString m_homeLatitudeRole = QStringLiteral("homeLatitude");
-    QString m_homeLongitudeRole = QStringLiteral("homeLongitude");
-    QString m_staleRole = QStringLiteral("stale");
-    QHash<QString, int> m_roles;
-    std::vector<Vehicle> m_vehicles;
-    QHash<QString, Trail> m_trails; // by vehicle id: survives row moves
-    std::vector<Drawn> m_drawn;     // laid out in updatePolish
-    TrailPicture m_trailPicture;
-    bool m_trailsStale = true;      // the picture must be drawn whole again
-    qint64 m_cutSinceRedraw = 0;
+    QString m_idRole = VehicleRoleNames().id;
+    QString m_latitudeRole = VehicleRoleNames().latitude;
+    QString m_longitudeRole = VehicleRoleNames().longitude;
+    QString m_headingRole = VehicleRoleNames().heading;
+    QString m_labelRole = VehicleRoleNames().label;
+    QString m_homeLatitudeRole = VehicleRoleNames().homeLatitude;
+    QString m_homeLongitudeRole = VehicleRoleNames().homeLongitude;
+    QString m_staleRole = VehicleRoleNames().stale;
+    VehicleModelReader m_reader;
+    std::vector<VehicleMark> m_vehicles;
+    std::vector<Drawn> m_drawn;
+    VehicleTrails m_trails;
+    VehicleCamera m_camera{m_vehicles};
     int m_current = -1;
-    int m_trailLength = 3000;
-    bool m_trailsVisible = true;
     int m_pressRow = -1;
-    bool m_follow = false;
-    bool m_autoFit = false;
-    bool m_movingMap = false;   // the map moves because this layer moved it
-    int m_fittedCount = 0;      // vehicles with a position when autoFit last framed them
-    QPointer<MapView> m_watchedMap;
-    struct Frame
-    {
-        double latitude = 0, longitude = 0, zoom = -1;
-    } m_framed; // where this layer last put the map
 };
 
 } // namespace sortie::ui

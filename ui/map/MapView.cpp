@@ -4,20 +4,12 @@
 #include "WebMercator.h"
 
 #include <QFontMetrics>
-#include <QGuiApplication>
 #include <QPainter>
-#include <QStyleHints>
 
 #include <algorithm>
 #include <cmath>
 
 namespace sortie::ui {
-
-namespace {
-constexpr double kWheelZoomPerNotch = 0.5;
-constexpr double kKeyPanPixels = 80.0;
-constexpr int kMaxTilesOnScreen = 600;
-} // namespace
 
 MapView::MapView(QQuickItem *parent)
     : QQuickPaintedItem(parent)
@@ -213,159 +205,34 @@ void MapView::geometryChange(const QRectF &newGeometry, const QRectF &oldGeometr
     changeViewport(next);
 }
 
+void MapView::setViewport(const MapViewport &viewport)
+{
+    MapViewport next = viewport;
+    next.setSize(m_viewport.size());
+    changeViewport(next);
+}
+
 void MapView::updatePolish()
 {
-    const int z = m_tiles.tileZoom(m_viewport.zoom());
-    const double n = std::exp2(z);
-    const double tilePixels = m_viewport.scale() / n;
-    const QRectF visible = m_viewport.visibleNormalised();
-    const QPointF origin = m_viewport.toScreenUnwrapped(QPointF(0, 0));
-    const int x0 = int(std::floor(visible.left() * n));
-    const int x1 = int(std::floor(visible.right() * n));
-    const int y0 = std::max(0, int(std::floor(visible.top() * n)));
-    const int y1 = std::min(int(n) - 1, int(std::floor(visible.bottom() * n)));
-    const QPointF middle(width() / 2, height() / 2);
-
-    m_placed.clear();
-    for (int y = y0; y <= y1; ++y) {
-        for (int x = x0; x <= x1 && m_placed.size() < kMaxTilesOnScreen; ++x) {
-            const int wrapped = ((x % int(n)) + int(n)) % int(n);
-            const QPoint topLeft(int(std::lround(origin.x() + x * tilePixels)), int(std::lround(origin.y() + y * tilePixels)));
-            const QPoint bottomRight(int(std::lround(origin.x() + (x + 1) * tilePixels)),
-                                     int(std::lround(origin.y() + (y + 1) * tilePixels)));
-            m_placed.append({TileKey{z, wrapped, y}, QRect(topLeft, bottomRight - QPoint(1, 1))});
-        }
-    }
-    std::sort(m_placed.begin(), m_placed.end(), [&middle](const PlacedTile &a, const PlacedTile &b) {
-        const QPointF da = QRectF(a.target).center() - middle;
-        const QPointF db = QRectF(b.target).center() - middle;
-        return QPointF::dotProduct(da, da) < QPointF::dotProduct(db, db);
-    });
-    QList<TileKey> keys;
-    keys.reserve(m_placed.size());
-    for (const PlacedTile &tile : std::as_const(m_placed)) {
-        if (!keys.contains(tile.key))
-            keys.append(tile.key);
-    }
-    m_tiles.require(keys);
+    m_tiles.require(m_tilePainter.layOut(m_viewport, m_tiles.tileZoom(m_viewport.zoom())));
 }
 
 void MapView::paint(QPainter *painter)
 {
-    const MapPalette palette = m_tiles.baseMap().palette();
-    painter->fillRect(QRectF(0, 0, width(), height()), palette.sea);
-    // While the zoom stays (panning), tiles are scaled once and then only blitted.
-    const bool steadyZoom = m_viewport.zoom() == m_scaledZoom;
-    if (!steadyZoom) {
-        m_scaledTiles.clear();
-        m_scaledZoom = m_viewport.zoom();
-    }
-    for (const PlacedTile &tile : std::as_const(m_placed)) {
-        const TileManager::Image image = m_tiles.best(tile.key);
-        if (!image.image)
-            continue;
-        const QRect target(tile.target.topLeft(), tile.target.size() + QSize(1, 1));
-        const bool exact = std::abs(target.width() - image.sourceRect.width()) < 0.5
-                           && std::abs(target.height() - image.sourceRect.height()) < 0.5;
-        if (exact) {
-            painter->drawImage(target.topLeft(), *image.image, image.sourceRect);
-        } else if (steadyZoom) {
-            painter->drawImage(target.topLeft(), scaledTile(image, target.size()));
-        } else {
-            painter->setRenderHint(QPainter::SmoothPixmapTransform, true);
-            painter->drawImage(QRectF(target), *image.image, image.sourceRect);
-        }
-    }
+    m_tilePainter.paint(*painter, m_viewport, m_tiles);
     if (m_graticule) {
         painter->setRenderHint(QPainter::Antialiasing, false);
-        Graticule::paint(*painter, m_viewport, palette);
+        Graticule::paint(*painter, m_viewport, m_tiles.baseMap().palette());
     }
 }
 
-const QImage &MapView::scaledTile(const TileManager::Image &image, QSize size)
-{
-    const QString key = QStringLiteral("%1/%2,%3,%4/%5x%6")
-                            .arg(image.image->cacheKey())
-                            .arg(image.sourceRect.x())
-                            .arg(image.sourceRect.y())
-                            .arg(image.sourceRect.width())
-                            .arg(size.width())
-                            .arg(size.height());
-    auto it = m_scaledTiles.find(key);
-    if (it == m_scaledTiles.end()) {
-        if (m_scaledTiles.size() > kMaxTilesOnScreen)
-            m_scaledTiles.clear();
-        const QImage source = image.image->copy(image.sourceRect.toAlignedRect());
-        it = m_scaledTiles.insert(key, source.scaled(size, Qt::IgnoreAspectRatio, Qt::SmoothTransformation));
-    }
-    return it.value();
-}
-
-void MapView::setGesture(Gesture gesture)
-{
-    const bool wasPanning = isPanning();
-    m_gesture = gesture;
-    if (wasPanning != isPanning())
-        emit panningChanged();
-}
-
-void MapView::setSelectionRect(const QRectF &rect)
-{
-    if (rect == m_selectionRect)
-        return;
-    m_selectionRect = rect;
-    emit selectionRectChanged();
-}
-
-void MapView::mousePressEvent(QMouseEvent *event)
-{
-    if (!m_interactive || event->button() != Qt::LeftButton) {
-        event->ignore();
-        return;
-    }
-    forceActiveFocus(Qt::MouseFocusReason);
-    m_pressPos = m_lastPos = event->position();
-    m_pressModifiers = event->modifiers();
-    setGesture(Gesture::Pending);
-    event->accept();
-}
-
-void MapView::mouseMoveEvent(QMouseEvent *event)
-{
-    const QPointF pos = event->position();
-    setCursorPosition(pos);
-    if (m_gesture == Gesture::Pending) {
-        const int threshold = QGuiApplication::styleHints()->startDragDistance();
-        if ((pos - m_pressPos).manhattanLength() < threshold)
-            return;
-        setGesture(m_pressModifiers & Qt::ShiftModifier ? Gesture::Select : Gesture::Pan);
-    }
-    if (m_gesture == Gesture::Pan) {
-        panBy(pos.x() - m_lastPos.x(), pos.y() - m_lastPos.y());
-    } else if (m_gesture == Gesture::Select) {
-        setSelectionRect(QRectF(m_pressPos, pos).normalized());
-    }
-    m_lastPos = pos;
-}
-
-void MapView::mouseReleaseEvent(QMouseEvent *event)
-{
-    const Gesture gesture = m_gesture;
-    setGesture(Gesture::None);
-    if (gesture == Gesture::Pending) {
-        emit clicked(toCoordinate(event->position()), int(m_pressModifiers));
-    } else if (gesture == Gesture::Select) {
-        const QRectF rect = m_selectionRect;
-        setSelectionRect({});
-        emit areaSelected(rect, int(m_pressModifiers));
-    }
-}
-
-void MapView::mouseUngrabEvent()
-{
-    setGesture(Gesture::None);
-    setSelectionRect({});
-}
+void MapView::mousePressEvent(QMouseEvent *event) { m_gestures.mousePress(event); }
+void MapView::mouseMoveEvent(QMouseEvent *event) { m_gestures.mouseMove(event); }
+void MapView::mouseReleaseEvent(QMouseEvent *event) { m_gestures.mouseRelease(event); }
+void MapView::mouseUngrabEvent() { m_gestures.mouseUngrab(); }
+void MapView::wheelEvent(QWheelEvent *event) { m_gestures.wheel(event); }
+void MapView::keyPressEvent(QKeyEvent *event) { m_gestures.keyPress(event); }
+void MapView::touchEvent(QTouchEvent *event) { m_gestures.touch(event); }
 
 void MapView::hoverMoveEvent(QHoverEvent *event)
 {
@@ -378,91 +245,6 @@ void MapView::hoverLeaveEvent(QHoverEvent *)
         return;
     m_cursorInside = false;
     emit cursorChanged();
-}
-
-void MapView::wheelEvent(QWheelEvent *event)
-{
-    if (!m_interactive) {
-        event->ignore();
-        return;
-    }
-    const double notches = event->angleDelta().y() / 120.0;
-    zoomAroundPoint(event->position(), zoomLevel() + notches * kWheelZoomPerNotch);
-    event->accept();
-}
-
-void MapView::keyPressEvent(QKeyEvent *event)
-{
-    if (!m_interactive) {
-        event->ignore();
-        return;
-    }
-    const double step = kKeyPanPixels * (event->modifiers() & Qt::ShiftModifier ? 4 : 1);
-    switch (event->key()) {
-    case Qt::Key_Left: panBy(step, 0); break;
-    case Qt::Key_Right: panBy(-step, 0); break;
-    case Qt::Key_Up: panBy(0, step); break;
-    case Qt::Key_Down: panBy(0, -step); break;
-    case Qt::Key_Plus:
-    case Qt::Key_Equal: zoomIn(); break;
-    case Qt::Key_Minus:
-    case Qt::Key_Underscore: zoomOut(); break;
-    default: event->ignore(); return;
-    }
-    event->accept();
-}
-
-void MapView::touchEvent(QTouchEvent *event)
-{
-    if (!m_interactive) {
-        event->ignore();
-        return;
-    }
-    const auto &points = event->points();
-    if (event->type() == QEvent::TouchEnd || event->type() == QEvent::TouchCancel || points.isEmpty()) {
-        // A tap is a click, as with the mouse.
-        if (m_gesture == Gesture::Pending && event->type() == QEvent::TouchEnd && !points.isEmpty())
-            emit clicked(toCoordinate(points[0].position()), int(m_pressModifiers));
-        setGesture(Gesture::None);
-        event->accept();
-        return;
-    }
-    if (points.size() >= 2) {
-        const QPointF a = points[0].position();
-        const QPointF b = points[1].position();
-        const QPointF centre = (a + b) / 2.0;
-        const double distance = std::max(1.0, std::hypot(a.x() - b.x(), a.y() - b.y()));
-        const bool started = m_gesture != Gesture::Pinch || points[0].state() == QEventPoint::Pressed
-                             || points[1].state() == QEventPoint::Pressed;
-        if (started) {
-            setGesture(Gesture::Pinch);
-            m_pinchStartDistance = distance;
-            m_pinchStartZoom = zoomLevel();
-        } else {
-            MapViewport next = m_viewport;
-            next.panByPixels(centre - m_pinchLastCentre);
-            next.zoomAround(centre, std::clamp(m_pinchStartZoom + std::log2(distance / m_pinchStartDistance),
-                                               m_minZoom, m_maxZoom));
-            changeViewport(next);
-        }
-        m_pinchLastCentre = centre;
-    } else {
-        const QPointF pos = points[0].position();
-        if (m_gesture == Gesture::Pinch) {
-            setGesture(Gesture::Pan); // one finger lifted: go on panning, never a tap
-        } else if (m_gesture == Gesture::None || points[0].state() == QEventPoint::Pressed) {
-            m_pressPos = pos;
-            m_pressModifiers = event->modifiers();
-            setGesture(Gesture::Pending);
-        } else if (m_gesture == Gesture::Pending
-                   && (pos - m_pressPos).manhattanLength() >= QGuiApplication::styleHints()->startDragDistance()) {
-            setGesture(Gesture::Pan);
-        }
-        if (m_gesture == Gesture::Pan)
-            panBy(pos.x() - m_lastPos.x(), pos.y() - m_lastPos.y());
-        m_lastPos = pos;
-    }
-    event->accept();
 }
 
 } // namespace sortie::ui

@@ -1,7 +1,9 @@
 #pragma once
 
+#include "MapGestures.h"
 #include "MapViewport.h"
 #include "TileManager.h"
+#include "TilePainter.h"
 
 #include <QGeoCoordinate>
 #include <QPointer>
@@ -10,9 +12,10 @@
 namespace sortie::ui {
 
 // The map: Web Mercator tiles from a TileSource over the built-in offline base map, with a
-// graticule. Pans by drag and arrow keys, zooms by wheel, +/- and pinch; Shift+drag draws a
-// selection rectangle; a click reports its coordinate. Layers (RouteLayer, VehicleLayer, ...)
-// are separate items that follow `viewportChanged`.
+// graticule. The item holds the viewport (where the map looks, MapViewport) and the cursor
+// readout; TilePainter lays out and draws the tiles, Graticule the grid, and MapGestures turns
+// the operator's hands into pans, zooms, clicks and Shift+drag selections. Layers (RouteLayer,
+// VehicleLayer, ...) are separate items that follow `viewportChanged`.
 class MapView : public QQuickPaintedItem
 {
     Q_OBJECT
@@ -73,8 +76,8 @@ public:
     bool isCursorInside() const { return m_cursorInside; }
     QString tileStatus() const { return m_tiles.status(); }
     QString attribution() const;
-    bool isPanning() const { return m_gesture == Gesture::Pan; }
-    QRectF selectionRect() const { return m_selectionRect; }
+    bool isPanning() const { return m_gestures.isPanning(); }
+    QRectF selectionRect() const { return m_gestures.selectionRect(); }
 
     Q_INVOKABLE QPointF fromCoordinate(const QGeoCoordinate &coordinate) const;
     Q_INVOKABLE QGeoCoordinate toCoordinate(QPointF screen) const;
@@ -86,6 +89,8 @@ public:
     Q_INVOKABLE void fitBounds(double south, double west, double north, double east, qreal margin = 40);
     // Layers that hold the mouse keep the cursor readout current through this.
     void setCursorPosition(QPointF screen);
+    // Moves the map to `viewport` (its size stays the item's): for gestures that pan and zoom at once.
+    void setViewport(const MapViewport &viewport);
 
     void paint(QPainter *painter) override;
 
@@ -119,37 +124,19 @@ protected:
     void touchEvent(QTouchEvent *event) override;
 
 private:
-    enum class Gesture { None, Pending, Pan, Select, Pinch };
-    struct PlacedTile
-    {
-        TileKey key;
-        QRect target;
-    };
     void changeViewport(const MapViewport &viewport);
-    const QImage &scaledTile(const TileManager::Image &image, QSize size);
-    void setGesture(Gesture gesture);
-    void setSelectionRect(const QRectF &rect);
 
     MapViewport m_viewport;
     TileManager m_tiles;
-    QList<PlacedTile> m_placed; // laid out in updatePolish, drawn in paint
-    QHash<QString, QImage> m_scaledTiles; // paint's own: tiles resampled for the current zoom
-    double m_scaledZoom = -1;
+    TilePainter m_tilePainter;
+    MapGestures m_gestures{*this};
     double m_minZoom = 1.0;
     double m_maxZoom = 20.0;
     bool m_graticule = true;
     bool m_interactive = true;
     QGeoCoordinate m_cursor;
     bool m_cursorInside = false;
-    Gesture m_gesture = Gesture::None;
-    QPointF m_pressPos;
-    QPointF m_lastPos;
     QPointF m_hoverPos;
-    Qt::KeyboardModifiers m_pressModifiers;
-    QRectF m_selectionRect;
-    double m_pinchStartDistance = 0;
-    double m_pinchStartZoom = 0;
-    QPointF m_pinchLastCentre;
 };
 
 } // namespace sortie::ui

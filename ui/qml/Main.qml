@@ -8,8 +8,10 @@ import Sortie.Ui
 ApplicationWindow {
     id: window
     required property AppSettings appSettings
-    // The client's controllers, made in C++ (app/sortie). Each may be missing (a test of the
-    // shell alone); the views then show what they can without it.
+    // The client's controllers, made in C++ (app/sortie). Each may still be missing here (a test
+    // of the shell alone, fixtures that make only some of them); the views then show what they can
+    // without it. They become `required` once every program and fixture builds the whole graph
+    // (core/client's ClientGraph); the pages below already require each one explicitly.
     property ConnectionController connection: null
     property MissionController missions: null
     property VehicleFleet fleet: null

@@ -10,7 +10,7 @@ import Sortie.Ui
 Item {
     id: pane
     property alias map: mapView
-    property DisplayUnits units
+    required property DisplayUnits units
     property string mapSource: "offline"        // "offline", "xyz" or "mbtiles"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
@@ -94,7 +94,7 @@ Item {
             width: 140
             height: 26
             map: mapView
-            imperial: pane.units ? pane.units.imperial : false
+            imperial: pane.units.imperial
             color: pane.dark ? "white" : "black"
         }
     }

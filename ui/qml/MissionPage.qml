@@ -1,6 +1,7 @@
 import QtQuick
 import QtQuick.Controls
 import QtQuick.Layouts
+import QtQml.Models
 import Sortie.Ui
 
 // Mission edit: the route on the map beside its panel and table. With `missions` (the client's
@@ -18,20 +19,21 @@ Page {
     required property DisplayUnits units
     readonly property RouteDocument doc: missions ? missions.document : null
     // The models the layers and the table draw (the document's, unless a test sets others).
-    property var routeModel: doc ? doc.model : null
-    property var selectionModel: doc ? doc.selection : null
-    property var areaPolygonModel: null
-    property var areaTransectModel: null
-    property var vehicleModel: null        // the fleet: where the vehicles are while planning
+    property AbstractItemModel routeModel: doc ? doc.model : null
+    property ItemSelectionModel selectionModel: doc ? doc.selection : null
+    property AbstractItemModel areaPolygonModel: null
+    property AbstractItemModel areaTransectModel: null
+    required property AbstractItemModel vehicleModel // the fleet: where the vehicles are while planning
     property bool editable: doc !== null
     property string tool: ""               // "" or "scan" (drawing an area-scan polygon)
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
     property bool dark: false
-    property ElevationService elevation: null       // the client's ElevationService, for the terrain profile
+    required property ElevationService elevation    // the client's ElevationService, for the terrain profile
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
+    // `var`: the editor's tools are plain JS objects (name, algorithm, figure, minimumPoints).
     readonly property var drawingTools: doc ? doc.editor.drawingTools() : []
     property int drawingTool: 0
     readonly property var currentTool: drawingTools.length > drawingTool ? drawingTools[drawingTool] : null

@@ -11,7 +11,7 @@ ToolBar {
     id: bar
     required property ReplayController replay
     // The connected server's history, replayed in the same controller; null when the program has none.
-    property ServerHistoryRequest serverHistory: null
+    required property ServerHistoryRequest serverHistory
     property string exportMessage
 
     FileDialog {

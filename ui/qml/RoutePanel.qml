@@ -11,7 +11,7 @@ Pane {
     required property MissionController missions // null: no client layer, the route is only shown
     required property RouteDocument doc          // the missions' document, or null
     required property DisplayUnits units
-    required property var routeModel             // the list model the table shows
+    required property AbstractItemModel routeModel // the list model the table shows
     required property TerrainProfileModel terrain // ground and heights per row, or null without terrain
     required property int waypointCount
     required property bool scanning              // the area-scan tool is on

@@ -9,8 +9,8 @@ ToolBar {
     id: bar
     property string connectionState: "Disconnected"
     property string connectionDetail: ""
-    property MapView map
-    property DisplayUnits units
+    required property MapView map
+    required property DisplayUnits units
 
     readonly property color stateColor: connectionState === "Ready" ? "#43a047"
                                       : connectionState === "Disconnected" ? "#9e9e9e"
@@ -33,18 +33,18 @@ ToolBar {
         ToolSeparator {}
         Label {
             objectName: "tileStatusLabel"
-            text: bar.map ? bar.map.tileStatus : ""
+            text: bar.map.tileStatus
             elide: Text.ElideRight
             Layout.fillWidth: true
         }
         Label {
             objectName: "cursorLabel"
-            text: bar.map && bar.map.cursorInside && bar.units ? bar.units.formatCoordinate(bar.map.cursorCoordinate) : ""
+            text: bar.map.cursorInside ? bar.units.formatCoordinate(bar.map.cursorCoordinate) : ""
             font.family: "monospace"
         }
         Label {
             objectName: "zoomLabel"
-            text: bar.map ? qsTr("zoom %1").arg(bar.map.zoomLevel.toFixed(1)) : ""
+            text: qsTr("zoom %1").arg(bar.map.zoomLevel.toFixed(1))
         }
     }
 }

@@ -13,14 +13,16 @@ Page {
     required property VehicleFleet fleet   // null: no client layer (the shell's own tests)
     required property DisplayUnits units
     // A log being replayed takes the place of the live vehicles (the timeline says so).
-    property ReplayController replay: null
+    required property ReplayController replay
     // The server's history for the replay (the timeline's Server history… dialog); null when none.
-    property ServerHistoryRequest serverHistory: null
-    property ComparisonController comparison: null
+    required property ServerHistoryRequest serverHistory
+    required property ComparisonController comparison
     readonly property bool replaying: replay !== null && replay.active
-    property var vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
-    property var plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
-    readonly property Vehicle current: vehicleModel && vehicleLayer.currentIndex >= 0 ? vehicleModel.vehicleAt(vehicleLayer.currentIndex) : null
+    property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
+    property list<string> plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
+    readonly property Vehicle current: vehicleLayer.currentIndex < 0 ? null
+                                       : replaying ? replay.fleet.vehicleAt(vehicleLayer.currentIndex)
+                                       : fleet ? fleet.vehicleAt(vehicleLayer.currentIndex) : null
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""

@@ -6,9 +6,9 @@ import Sortie.Ui
 // over its coalesced model (TerrainProfileModel), fed by the client's ElevationService.
 Item {
     id: panel
-    property QtObject routeModel: null
-    property ItemSelectionModel selectionModel: null
-    property ElevationService elevation: null
+    required property AbstractItemModel routeModel
+    required property ItemSelectionModel selectionModel
+    required property ElevationService elevation
     property alias view: view
     property alias profile: profile
     implicitHeight: 170

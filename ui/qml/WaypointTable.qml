@@ -9,9 +9,9 @@ import Sortie.Ui
 ColumnLayout {
     id: table
     required property RouteDocument doc   // null: the table only shows `routeModel`
-    required property var routeModel
+    required property AbstractItemModel routeModel
     required property TerrainProfileModel terrain  // null: no terrain, heights only as set
-    readonly property var selected: doc ? doc.selectedRows : []
+    readonly property list<int> selected: doc ? doc.selectedRows : []
     // Which height the altitude column shows: as each row sets it, or all AMSL, or all AGL.
     readonly property int heightsShown: terrain !== null ? heightsPicker.currentIndex : 0
     readonly property int heightsFrame: heightsShown === 1 ? MissionEnums.Amsl : MissionEnums.Agl
@@ -19,7 +19,7 @@ ColumnLayout {
 
     component Cell: TextField {
         property string role
-        property var rowModel
+        property var rowModel               // the delegate's row: its roles as a JS object
         property var value: rowModel[role]  // undefined: nothing to show or edit
         signal edited(real value)
         readOnly: !table.doc || value === undefined

@@ -22,10 +22,20 @@
 #include "VehicleFleet.h"
 #include "VehicleLink.h"
 
+#include <QAbstractItemModel>
 #include <QtQml/qqmlregistration.h>
 
 namespace sortie::ui::qmltypes {
 
+// Any list model, for views that take "a model with these roles" (a page's routeModel, the fly
+// view's vehicleModel): Qt 6.4's QtQml.Models knows QAbstractItemModel but gives it no QML name.
+struct AbstractItemModelForeign
+{
+    Q_GADGET
+    QML_FOREIGN(QAbstractItemModel)
+    QML_NAMED_ELEMENT(AbstractItemModel)
+    QML_UNCREATABLE("an abstract class: views are handed a model made in C++ or QML")
+};
 
 struct ConnectionControllerForeign
 {
