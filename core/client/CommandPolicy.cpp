@@ -75,50 +75,62 @@ double CommandPolicy::takeoffAltitude(const vehicle::Vehicle *vehicle) const
     return m_defaultTakeoffAltitude;
 }
 
-bool CommandPolicy::needsConfirmation(const QString &command, const vehicle::Vehicle *vehicle) const
+bool CommandPolicy::needsConfirmation(Command command, const vehicle::Vehicle *vehicle) const
 {
-    if (command == QLatin1String("arm") || command == QLatin1String("takeoff") || command == QLatin1String("auto"))
+    switch (command) {
+    case Command::Arm:
+    case Command::TakeOff:
+    case Command::Auto:
         return true;
-    if (command == QLatin1String("disarm"))
+    case Command::Disarm:
         return !knownOnGround(vehicle);
+    case Command::Hold:
+    case Command::Guided:
+    case Command::Manual:
+    case Command::Land:
+    case Command::ReturnHome:
+        return false;
+    }
     return false;
 }
 
-QString CommandPolicy::confirmation(const QString &command, const vehicle::Vehicle *vehicle) const
+QString CommandPolicy::confirmation(Command command, const vehicle::Vehicle *vehicle) const
 {
     if (!needsConfirmation(command, vehicle))
         return {};
     const QString name = vehicle ? vehicle->name() : tr("the vehicle");
-    if (command == QLatin1String("arm"))
+    if (command == Command::Arm)
         return tr("Arm %1? Its motors may start.").arg(name);
-    if (command == QLatin1String("disarm"))
+    if (command == Command::Disarm)
         return tr("Disarm %1? It may be in the air, and would fall.").arg(name);
-    if (command == QLatin1String("takeoff"))
+    if (command == Command::TakeOff)
         return tr("Take off with %1 to %2 m above home?").arg(name).arg(takeoffAltitude(vehicle), 0, 'f', 0);
     const int count = vehicle ? int(vehicle->mission().size()) : 0;
     return count > 0 ? tr("Start the mission on %1 (%n waypoint(s))?", nullptr, count).arg(name)
                      : tr("Start the mission on %1? Sortie has not seen its mission.").arg(name);
 }
 
-bool CommandPolicy::send(const QString &command, vehicle::Vehicle *vehicle) const
+bool CommandPolicy::send(Command command, vehicle::Vehicle *vehicle) const
 {
     if (!vehicle)
         return false;
-    if (command == QLatin1String("arm"))
-        vehicle->arm();
-    else if (command == QLatin1String("disarm"))
-        vehicle->disarm();
-    else if (command == QLatin1String("takeoff"))
-        vehicle->takeoff(takeoffAltitude(vehicle));
-    else if (command == QLatin1String("land"))
-        vehicle->land();
-    else if (command == QLatin1String("return_home"))
-        vehicle->returnHome();
-    else if (vehicle::modeFromName(command.toStdString()) != vehicle::FlightMode::Unknown)
-        vehicle->setMode(command);
-    else
-        return false;
-    return true;
+    // The modes go by the names the vehicle layer knows them by (VCI's /state/mode).
+    const auto switchTo = [vehicle](vehicle::FlightMode mode) {
+        const std::string_view name = vehicle::modeName(mode);
+        vehicle->setMode(QString::fromLatin1(name.data(), qsizetype(name.size())));
+    };
+    switch (command) {
+    case Command::Arm: vehicle->arm(); return true;
+    case Command::Disarm: vehicle->disarm(); return true;
+    case Command::TakeOff: vehicle->takeoff(takeoffAltitude(vehicle)); return true;
+    case Command::Auto: switchTo(vehicle::FlightMode::Auto); return true;
+    case Command::Hold: switchTo(vehicle::FlightMode::Hold); return true;
+    case Command::Guided: switchTo(vehicle::FlightMode::Guided); return true;
+    case Command::Manual: switchTo(vehicle::FlightMode::Manual); return true;
+    case Command::Land: vehicle->land(); return true;
+    case Command::ReturnHome: vehicle->returnHome(); return true;
+    }
+    return false;
 }
 
 } // namespace sortie::client

@@ -10,8 +10,7 @@ namespace sortie::client {
 // The rules for commanding a vehicle, in one place the views bind to: which commands ask first
 // (and what they ask), the take-off altitude (the vehicle's own `takeoff_altitude` parameter when
 // it reports one, else the operator's setting), and the flight modes with the names the operator
-// reads. Commands are named as VCI's /state/mode and the buttons name them: "arm", "disarm",
-// "takeoff", "auto", "hold", "land", "return_home", "guided", "manual".
+// reads. Commands are a Command, in C++ and in QML (`CommandPolicy.Arm`).
 class CommandPolicy : public QObject
 {
     Q_OBJECT
@@ -21,6 +20,11 @@ class CommandPolicy : public QObject
     Q_PROPERTY(QVariantList modes READ modes CONSTANT)
 
 public:
+    // What the command bar sends. Auto, Hold, Guided and Manual switch to that flight mode (Auto
+    // starts or resumes the mission, Hold pauses it); Land and ReturnHome are commands of their own.
+    enum class Command { Arm, Disarm, TakeOff, Auto, Hold, Guided, Manual, Land, ReturnHome };
+    Q_ENUM(Command)
+
     explicit CommandPolicy(QObject *parent = nullptr);
 
     double defaultTakeoffAltitude() const { return m_defaultTakeoffAltitude; }
@@ -31,12 +35,12 @@ public:
     // Arm, take-off and starting the mission ask; so does disarming unless the vehicle is known to
     // be on the ground. Land, hold and return home never wait for a dialog: they are what an
     // operator reaches for when something goes wrong.
-    Q_INVOKABLE bool needsConfirmation(const QString &command, const sortie::vehicle::Vehicle *vehicle) const;
+    Q_INVOKABLE bool needsConfirmation(sortie::client::CommandPolicy::Command command, const sortie::vehicle::Vehicle *vehicle) const;
     // The question to ask, naming the vehicle and what will happen; empty when none is asked.
-    Q_INVOKABLE QString confirmation(const QString &command, const sortie::vehicle::Vehicle *vehicle) const;
-    // Sends the command with the policy's arguments (take-off altitude, the mode). False for a name
-    // that is not a command.
-    Q_INVOKABLE bool send(const QString &command, sortie::vehicle::Vehicle *vehicle) const;
+    Q_INVOKABLE QString confirmation(sortie::client::CommandPolicy::Command command, const sortie::vehicle::Vehicle *vehicle) const;
+    // Sends the command with the policy's arguments (take-off altitude, the mode). False without a
+    // vehicle or for a value that is not a Command.
+    Q_INVOKABLE bool send(sortie::client::CommandPolicy::Command command, sortie::vehicle::Vehicle *vehicle) const;
     Q_INVOKABLE QString modeLabel(const QString &mode) const;
 
     static constexpr double kMinTakeoffAltitude = 2;

@@ -41,9 +41,8 @@ void SimLockService::acquire(SimCall &call)
         return;
     }
     const auto &user = *call.session->user;
-    if (const QString why = m_s.world.locks().acquire(type, r.objectid(), {call.session->clientId, user.id, user.login});
-        !why.isEmpty()) {
-        call.respond.error(why);
+    if (const hci::HciError refused = m_s.world.locks().acquire(type, r.objectid(), {call.session->clientId, user.id, user.login})) {
+        call.respond.error(refused.message());
         return;
     }
     call.respond.reply(pb::AcquireLockResponse());
@@ -52,10 +51,9 @@ void SimLockService::acquire(SimCall &call)
 void SimLockService::release(SimCall &call)
 {
     const auto &r = static_cast<const pb::ReleaseLockRequest &>(call.request);
-    const QString why = m_s.world.locks().release(QString::fromStdString(r.objecttype()), r.objectid(),
-                                                  call.session->clientId, r.ifexclusive());
-    if (!why.isEmpty()) {
-        call.respond.error(why);
+    if (const hci::HciError refused = m_s.world.locks().release(QString::fromStdString(r.objecttype()), r.objectid(),
+                                                                call.session->clientId, r.ifexclusive())) {
+        call.respond.error(refused.message());
         return;
     }
     call.respond.reply(pb::ReleaseLockResponse());

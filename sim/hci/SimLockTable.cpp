@@ -2,25 +2,32 @@
 
 namespace sortie::sim {
 
+namespace {
+hci::HciError refusal(const QString &why)
+{
+    return hci::HciError(hci::HciError::Kind::Server, why);
+}
+} // namespace
+
 SimLockTable::SimLockTable(QObject *parent)
     : QObject(parent)
 {
 }
 
-QString SimLockTable::acquire(const QString &type, int id, const Owner &owner)
+hci::HciError SimLockTable::acquire(const QString &type, int id, const Owner &owner)
 {
     const Key key(type, id);
     if (const auto it = m_locks.constFind(key); it != m_locks.cend()) {
         if (it->clientId == owner.clientId)
             return {};
-        return QStringLiteral("%1 %2 is locked by user '%3' in another session").arg(type).arg(id).arg(it->login);
+        return refusal(QStringLiteral("%1 %2 is locked by user '%3' in another session").arg(type).arg(id).arg(it->login));
     }
     m_locks.insert(key, owner);
     emit lockChanged(type, id, true);
     return {};
 }
 
-QString SimLockTable::release(const QString &type, int id, int clientId, bool ifExclusive)
+hci::HciError SimLockTable::release(const QString &type, int id, int clientId, bool ifExclusive)
 {
     const Key key(type, id);
     const auto it = m_locks.constFind(key);
@@ -29,8 +36,8 @@ QString SimLockTable::release(const QString &type, int id, int clientId, bool if
     if (it->clientId != clientId) {
         if (ifExclusive)
             return {};
-        return QStringLiteral("%1 %2 is locked by user '%3' in another session; only they can release it")
-            .arg(type).arg(id).arg(it->login);
+        return refusal(QStringLiteral("%1 %2 is locked by user '%3' in another session; only they can release it")
+                           .arg(type).arg(id).arg(it->login));
     }
     m_locks.remove(key);
     emit lockChanged(type, id, false);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "HciError.h"
+
 #include <QHash>
 #include <QObject>
 #include <QString>
@@ -24,11 +26,12 @@ public:
 
     explicit SimLockTable(QObject *parent = nullptr);
 
-    // Empty on success (also when this session already holds it), else why not.
-    QString acquire(const QString &type, int id, const Owner &owner);
+    // No error on success (also when this session already holds it), else a server error saying why
+    // not: what the simulator answers with, and what the client's HciLock sees refused.
+    hci::HciError acquire(const QString &type, int id, const Owner &owner);
     // ifExclusive: release only when this session holds the lock, and succeed quietly otherwise.
     // Without it, releasing another session's lock is refused.
-    QString release(const QString &type, int id, int clientId, bool ifExclusive);
+    hci::HciError release(const QString &type, int id, int clientId, bool ifExclusive);
     std::optional<Owner> holder(const QString &type, int id) const;
     // True when the object is free or held by this session.
     bool mayModify(const QString &type, int id, int clientId) const;

@@ -300,16 +300,16 @@ private slots:
         client::CommandPolicy &policy = *m_op->fleet.commands();
         QTRY_VERIFY(!v->parameters().isEmpty());
         QCOMPARE(policy.takeoffAltitude(v), v->parameters().value(QStringLiteral("takeoff_altitude")).toDouble());
-        QVERIFY(policy.needsConfirmation(QStringLiteral("auto"), v));
-        QVERIFY2(policy.confirmation(QStringLiteral("auto"), v).contains(QLatin1String("3 waypoint(s)")), qPrintable(policy.confirmation(QStringLiteral("auto"), v)));
+        QVERIFY(policy.needsConfirmation(client::CommandPolicy::Command::Auto, v));
+        QVERIFY2(policy.confirmation(client::CommandPolicy::Command::Auto, v).contains(QLatin1String("3 waypoint(s)")), qPrintable(policy.confirmation(client::CommandPolicy::Command::Auto, v)));
         QSignalSpy commands(v, &vehicle::Vehicle::commandFinished);
-        QVERIFY(policy.send(QStringLiteral("arm"), v));
+        QVERIFY(policy.send(client::CommandPolicy::Command::Arm, v));
         QTRY_COMPARE(commands.count(), 1);
         QVERIFY2(commands.last().at(1).toBool(), qPrintable(commands.last().at(2).toString()));
-        QVERIFY(policy.send(QStringLiteral("takeoff"), v));
+        QVERIFY(policy.send(client::CommandPolicy::Command::TakeOff, v));
         QTRY_COMPARE(commands.count(), 2);
         QVERIFY2(commands.last().at(1).toBool(), qPrintable(commands.last().at(2).toString()));
-        QVERIFY(policy.send(QStringLiteral("auto"), v));
+        QVERIFY(policy.send(client::CommandPolicy::Command::Auto, v));
         QTRY_COMPARE(commands.count(), 3);
         QVERIFY2(commands.last().at(1).toBool(), qPrintable(commands.last().at(2).toString()));
         // The vehicle advances through the mission, waits at the second waypoint, and completes it.

@@ -17,6 +17,7 @@
 #include "VciProfile.h"
 
 #include <QSettings>
+#include <QMetaEnum>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -119,21 +120,23 @@ private slots:
 
         // Vehicle without telemetry: on the ground is not known, so disarming asks.
         vehicle::Vehicle unknown(nullptr);
-        for (const char *asks : {"arm", "takeoff", "auto", "disarm"})
-            QVERIFY2(policy.needsConfirmation(QString::fromLatin1(asks), &unknown), asks);
-        for (const char *immediate : {"land", "hold", "return_home", "guided"})
-            QVERIFY2(!policy.needsConfirmation(QString::fromLatin1(immediate), &unknown), immediate);
-        QVERIFY(policy.confirmation(QStringLiteral("land"), &unknown).isEmpty());
-        QCOMPARE(policy.confirmation(QStringLiteral("takeoff"), &unknown), QStringLiteral("Take off with the vehicle to 20 m above home?").replace(QLatin1String("the vehicle"), unknown.name()));
-        QVERIFY(policy.confirmation(QStringLiteral("auto"), &unknown).contains(QLatin1String("has not seen its mission")));
+        using Command = CommandPolicy::Command;
+        const QMetaEnum commandNames = QMetaEnum::fromType<Command>();
+        for (Command asks : {Command::Arm, Command::TakeOff, Command::Auto, Command::Disarm})
+            QVERIFY2(policy.needsConfirmation(asks, &unknown), commandNames.valueToKey(int(asks)));
+        for (Command immediate : {Command::Land, Command::Hold, Command::ReturnHome, Command::Guided, Command::Manual})
+            QVERIFY2(!policy.needsConfirmation(immediate, &unknown), commandNames.valueToKey(int(immediate)));
+        QVERIFY(policy.confirmation(Command::Land, &unknown).isEmpty());
+        QCOMPARE(policy.confirmation(Command::TakeOff, &unknown), QStringLiteral("Take off with the vehicle to 20 m above home?").replace(QLatin1String("the vehicle"), unknown.name()));
+        QVERIFY(policy.confirmation(Command::Auto, &unknown).contains(QLatin1String("has not seen its mission")));
         unknown.setMission({MissionItem{}, MissionItem{}});
-        QVERIFY(policy.confirmation(QStringLiteral("auto"), &unknown).contains(QLatin1String("2 waypoint(s)")));
+        QVERIFY(policy.confirmation(Command::Auto, &unknown).contains(QLatin1String("2 waypoint(s)")));
         // Resting on the ground with fresh telemetry: disarming needs no question.
         vehicle::TelemetryBatch onGround{{vehicle::TelemetryField::AltitudeAgl, 0.1, 0}};
         unknown.ingest(onGround);
-        QVERIFY(!policy.needsConfirmation(QStringLiteral("disarm"), &unknown));
+        QVERIFY(!policy.needsConfirmation(Command::Disarm, &unknown));
         unknown.ingest({{vehicle::TelemetryField::AltitudeAgl, 12.0, 0}});
-        QVERIFY(policy.needsConfirmation(QStringLiteral("disarm"), &unknown));
+        QVERIFY(policy.needsConfirmation(Command::Disarm, &unknown));
 
         QCOMPARE(policy.modeLabel(QStringLiteral("return_home")), QStringLiteral("Return home"));
         QCOMPARE(policy.modeLabel(QStringLiteral("auto")), QStringLiteral("Auto (fly the mission)"));
@@ -141,8 +144,8 @@ private slots:
         QCOMPARE(policy.modeLabel(QString()), QStringLiteral("Unknown"));
         QCOMPARE(policy.modes().size(), 6);
         QCOMPARE(policy.modes().first().toMap().value(QStringLiteral("name")).toString(), QStringLiteral("auto"));
-        QVERIFY(!policy.send(QStringLiteral("fly-away"), &unknown));
-        QVERIFY(!policy.send(QStringLiteral("arm"), nullptr));
+        QVERIFY(!policy.send(Command(99), &unknown)); // not a command
+        QVERIFY(!policy.send(Command::Arm, nullptr));
     }
 
     void routeAsVciWaypoints()

@@ -1,6 +1,7 @@
 #pragma once
 // What the flight-log tests share: a link the test drives by hand (a live vehicle as far as the
 // recorder can tell), and synthetic flights along straight legs.
+#include "CommandLog.h"
 #include "FlightRecorder.h"
 #include "Geodesy.h"
 #include "Route.h"
@@ -131,12 +132,17 @@ inline QString recordTwoFlights(const QString &folder, std::vector<FlightSample>
     const QString path = QDir(folder).filePath(QStringLiteral("two.sortielog"));
     ScriptedLink linkA(QStringLiteral("7"), QStringLiteral("EMU-101")), linkB(QStringLiteral("8"), QStringLiteral("EMU-102"));
     vehicle::Vehicle a(&linkA), b(&linkB);
+    // The recorder takes the commands from the log the vehicles write to, as a fleet's do.
+    vehicle::CommandLog commands;
+    a.setCommandLog(&commands);
+    b.setCommandLog(&commands);
     flightlog::FlightRecorder recorder({path, {}, 100});
     QString error;
     if (!recorder.start(&error))
         qFatal("%s", qPrintable(error));
     recorder.addVehicle(&a);
     recorder.addVehicle(&b);
+    recorder.followCommands(&commands);
     a.setMission({{kLegs[0].latitude, kLegs[0].longitude, 20, 8, 0, {}}, {kLegs[1].latitude, kLegs[1].longitude, 20, 8, 0, {}}});
     const auto pathA = flyAlong(kLegs, kT0, 100);
     const auto pathB = flyAlong(kLegs, kT0, 100, 12);

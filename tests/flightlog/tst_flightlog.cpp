@@ -103,7 +103,7 @@ private slots:
                                      "link:EMU-102:Connected", "command:EMU-101:arm:1", "upload:EMU-101:Route of 2 waypoints",
                                      "session::Recording started", "session::Recording stopped"})
             QVERIFY2(kinds.contains(QString::fromLatin1(expected)), qPrintable(kinds.join(QLatin1Char('\n'))));
-        QVERIFY2(std::any_of(kinds.begin(), kinds.end(), [](const QString &k) { return k.startsWith(QLatin1String("command:EMU-102:returnHome: refused by the test:0")); }),
+        QVERIFY2(std::any_of(kinds.begin(), kinds.end(), [](const QString &k) { return k.startsWith(QLatin1String("command:EMU-102:return home: refused by the test:0")); }),
                  qPrintable(kinds.join(QLatin1Char('\n'))));
 
         // The state at a time is the last value of each field by then.

@@ -4,7 +4,9 @@
 // missing; the other is stopped with SIGTERM and closes its log. Then info, export (parsed back) and
 // compare run on the log as an operator would run them.
 #include "ConnectionController.h"
+#include "FleetRecording.h"
 #include "FlightLog.h"
+#include "FlightRecorder.h"
 #include "FlightLogTestSupport.h"
 #include "HciClient.h"
 #include "HciServer.h"
@@ -308,6 +310,57 @@ private slots:
         Run unknown = sortieLog({QStringLiteral("compare"), cleanLog, file101, QStringLiteral("--vehicle"), QStringLiteral("EMU-999")});
         QCOMPARE(unknown.exitCode, 1);
         QVERIFY2(unknown.err.contains("EMU-999") && unknown.err.contains("EMU-101"), unknown.err.constData());
+    }
+
+    // The recorder takes commands from the fleet's command log: whatever sends them (the command bar's
+    // policy, click-and-go on the map, which no vehicle signal reports), each is recorded with its result.
+    void commandsSentThroughTheFleetAreRecorded()
+    {
+        Sim sim;
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("commands.sortielog"));
+        hci::HciSession session;
+        hci::HciClient client(&session);
+        client::ConnectionController connection(&session);
+        client::VehicleFleet fleet(&client);
+        {
+            flightlog::FlightRecorder recorder({path, {}, 100});
+            QString error;
+            QVERIFY2(recorder.start(&error), qPrintable(error));
+            flightlog::FleetRecording recording(&fleet, &recorder, &session);
+            QVERIFY(connection.connectToServer(sim.address(), QStringLiteral("admin"), QStringLiteral("admin")));
+            QTRY_COMPARE_WITH_TIMEOUT(fleet.count(), 3, 10000);
+            int row = -1;
+            for (int r = 0; r < fleet.count(); ++r)
+                if (fleet.vehicleAt(r)->name() == QLatin1String("EMU-101"))
+                    row = r;
+            QVERIFY(row >= 0);
+            Vehicle *v = fleet.vehicleAt(row);
+            QTRY_VERIFY_WITH_TIMEOUT(v->position().isValid(), 10000);
+            const vehicle::CommandLog &log = *fleet.commandLog();
+            QVERIFY(fleet.commands()->send(client::CommandPolicy::Command::Arm, v));
+            fleet.goTo(row, v->position().latitude() + 0.0002, v->position().longitude());
+            QTRY_VERIFY_WITH_TIMEOUT(log.count() == 2 && log.at(0).status != vehicle::CommandLog::Status::Pending
+                                         && log.at(1).status != vehicle::CommandLog::Status::Pending, 15000);
+            QCOMPARE(log.at(0).status, vehicle::CommandLog::Status::Done);
+            recorder.stop();
+
+            QString openError;
+            const auto recorded = FlightLog::open(path, &openError);
+            QVERIFY2(recorded, qPrintable(openError));
+            QStringList commands;
+            for (const FlightLog::Event &e : recorded->events()) {
+                if (e.kind == QLatin1String("command"))
+                    commands << recorded->vehicles()[size_t(e.vehicle)].name() + QLatin1Char(':') + e.text + QStringLiteral(":%1").arg(e.ok);
+            }
+            const auto expected = [&](int i) {
+                const vehicle::CommandLog::Entry &entry = log.at(i);
+                return QStringLiteral("EMU-101:%1:%2").arg(entry.result.isEmpty() ? entry.command : entry.command + QStringLiteral(": ") + entry.result)
+                    .arg(entry.status == vehicle::CommandLog::Status::Done ? 1 : 0);
+            };
+            QCOMPARE(commands, QStringList({expected(0), expected(1)}));
+            QVERIFY2(commands.at(1).startsWith(QLatin1String("EMU-101:go to ")), qPrintable(commands.join(QLatin1Char('\n'))));
+        }
     }
 
     // The server's history of a vehicle, fetched in pages with progress, replays like a recording.

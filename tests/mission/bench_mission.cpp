@@ -34,39 +34,20 @@ using namespace sortie::mission;
 using namespace sortie::mission::formats;
 
 namespace {
-struct Timing { double wallMs; double cpuMs; };
-
+using sortie::test::judge;
 using sortie::test::loadAverage;
+using sortie::test::median;
 using sortie::test::threadCpuMs;
+using sortie::test::Timing;
 
-// Median wall and thread-CPU time of `runs` runs, in milliseconds.
-Timing median(int runs, const std::function<void()> &work)
-{
-    std::vector<double> wall, cpu;
-    for (int i = 0; i < runs; ++i) {
-        QElapsedTimer timer;
-        const double c0 = threadCpuMs();
-        timer.start();
-        work();
-        wall.push_back(timer.nsecsElapsed() / 1e6);
-        cpu.push_back(threadCpuMs() - c0);
-    }
-    std::sort(wall.begin(), wall.end());
-    std::sort(cpu.begin(), cpu.end());
-    return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
-}
-
-// The target is on wall time. On a machine busier than its cores (load average above the core
-// count) the wall time includes waiting for a core; the CPU time is then what decides.
 bool report(const char *what, Timing t, double targetMs)
 {
-    const bool busy = loadAverage() > std::thread::hardware_concurrency();
-    const bool ok = targetMs <= 0 || t.wallMs < targetMs || (busy && t.cpuMs < targetMs);
+    const auto verdict = judge(t, targetMs);
     std::printf("%-40s %10.4f ms wall %10.4f ms cpu", what, t.wallMs, t.cpuMs);
     if (targetMs > 0)
-        std::printf("   (target < %g ms)%s", targetMs, ok ? (t.wallMs < targetMs ? "" : "  met on CPU time, machine busy") : "  MISSED");
+        std::printf("   (target < %g ms)%s", targetMs, verdict.note);
     std::printf("\n");
-    return ok;
+    return verdict.met;
 }
 
 }

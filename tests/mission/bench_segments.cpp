@@ -8,7 +8,6 @@
 #include "LocalTangentPlane.h"
 #include "SegmentPlanner.h"
 
-#include <QElapsedTimer>
 
 #include <algorithm>
 #include <cmath>
@@ -26,38 +25,20 @@ namespace {
 constexpr double kFrameMs = 1000.0 / 60.0;
 const GeoPoint kCentre{56.95, 24.10};
 
-struct Timing { double wallMs; double cpuMs; double worstMs; };
-
+using sortie::test::judge;
 using sortie::test::loadAverage;
-using sortie::test::threadCpuMs;
-
-// Median wall and thread-CPU time of `runs` runs (run i gets i), and the slowest wall time.
-Timing measure(int runs, const std::function<void(int)> &work)
-{
-    std::vector<double> wall, cpu;
-    for (int i = 0; i < runs; ++i) {
-        QElapsedTimer timer;
-        const double c0 = threadCpuMs();
-        timer.start();
-        work(i);
-        wall.push_back(timer.nsecsElapsed() / 1e6);
-        cpu.push_back(threadCpuMs() - c0);
-    }
-    std::sort(wall.begin(), wall.end());
-    std::sort(cpu.begin(), cpu.end());
-    return {wall[wall.size() / 2], cpu[cpu.size() / 2], wall.back()};
-}
+using sortie::test::measure;
+using sortie::test::Timing;
 
 // The target is on the median wall time; on a machine busier than its cores, CPU time decides.
 bool report(const char *what, Timing t, double targetMs)
 {
-    const bool busy = loadAverage() > std::thread::hardware_concurrency();
-    const bool ok = targetMs <= 0 || t.wallMs < targetMs || (busy && t.cpuMs < targetMs);
+    const auto verdict = judge(t, targetMs);
     std::printf("%-44s %9.3f ms wall %9.3f ms cpu %9.3f ms worst", what, t.wallMs, t.cpuMs, t.worstMs);
     if (targetMs > 0)
-        std::printf("   (target < %.1f ms)%s", targetMs, ok ? (t.wallMs < targetMs ? "" : "  met on CPU time, machine busy") : "  MISSED");
+        std::printf("   (target < %.1f ms)%s", targetMs, verdict.note);
     std::printf("\n");
-    return ok;
+    return verdict.met;
 }
 
 SegmentFigure figureOf(const std::vector<PlanePoint> &corners, FigureType type)

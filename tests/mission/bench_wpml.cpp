@@ -1,11 +1,11 @@
 // DJI WPML benchmark: the shared 10,000-waypoint route (a wait and a photo series every 50 waypoints)
 // written as a KMZ for the Matrice 350 RTK and read back. Prints each figure with its target and the
 // KMZ's size; exits 1 if a target is missed. Run: build/tests/mission/bench_wpml
+#include "BenchClock.h"
 #include "BenchRoute.h"
 #include "WpmlFormat.h"
 
 #include <QCoreApplication>
-#include <QElapsedTimer>
 
 #include <algorithm>
 #include <cstdio>
@@ -19,35 +19,14 @@ using namespace sortie::mission::formats;
 
 namespace {
 
-double threadCpuMs()
-{
-    timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return ts.tv_sec * 1e3 + ts.tv_nsec / 1e6;
-}
-
-// Median wall and thread-CPU milliseconds of `runs` runs.
-std::pair<double, double> median(int runs, const std::function<void()> &work)
-{
-    std::vector<double> wall, cpu;
-    for (int i = 0; i < runs; ++i) {
-        QElapsedTimer timer;
-        const double c0 = threadCpuMs();
-        timer.start();
-        work();
-        wall.push_back(timer.nsecsElapsed() / 1e6);
-        cpu.push_back(threadCpuMs() - c0);
-    }
-    std::sort(wall.begin(), wall.end());
-    std::sort(cpu.begin(), cpu.end());
-    return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
-}
+using sortie::test::median;
+using sortie::test::Timing;
 
 // The target holds on CPU time: on this shared machine the wall time includes waiting for a core.
-bool report(const char *what, std::pair<double, double> t, double targetMs)
+bool report(const char *what, Timing t, double targetMs)
 {
-    const bool ok = t.second < targetMs;
-    std::printf("%-36s %10.1f ms wall %10.1f ms cpu   (target < %g ms cpu)%s\n", what, t.first, t.second, targetMs, ok ? "" : "  MISSED");
+    const bool ok = t.cpuMs < targetMs;
+    std::printf("%-36s %10.1f ms wall %10.1f ms cpu   (target < %g ms cpu)%s\n", what, t.wallMs, t.cpuMs, targetMs, ok ? "" : "  MISSED");
     return ok;
 }
 

@@ -149,11 +149,15 @@ private slots:
         SimLockTable locks;
         QSignalSpy changes(&locks, &SimLockTable::lockChanged);
         const SimLockTable::Owner alice{1, 1, QStringLiteral("alice")}, bob{2, 2, QStringLiteral("bob")};
-        QVERIFY(locks.acquire(QStringLiteral("Vehicle"), 5, alice).isEmpty());
-        QVERIFY(locks.acquire(QStringLiteral("Vehicle"), 5, alice).isEmpty()); // again: still hers
-        QVERIFY(locks.acquire(QStringLiteral("Vehicle"), 5, bob).contains(QLatin1String("'alice'")));
-        QVERIFY(locks.release(QStringLiteral("Vehicle"), 5, bob.clientId, true).isEmpty());
-        QVERIFY(!locks.release(QStringLiteral("Vehicle"), 5, bob.clientId, false).isEmpty());
+        QVERIFY(!locks.acquire(QStringLiteral("Vehicle"), 5, alice).isError());
+        QVERIFY(!locks.acquire(QStringLiteral("Vehicle"), 5, alice).isError()); // again: still hers
+        const sortie::hci::HciError taken = locks.acquire(QStringLiteral("Vehicle"), 5, bob);
+        QCOMPARE(taken.kind(), sortie::hci::HciError::Kind::Server);
+        QVERIFY(taken.message().contains(QLatin1String("'alice'")));
+        QVERIFY(!locks.release(QStringLiteral("Vehicle"), 5, bob.clientId, true).isError()); // not his: quietly nothing
+        const sortie::hci::HciError notHis = locks.release(QStringLiteral("Vehicle"), 5, bob.clientId, false);
+        QCOMPARE(notHis.kind(), sortie::hci::HciError::Kind::Server);
+        QVERIFY(notHis.message().contains(QLatin1String("only they can release it")));
         QVERIFY(!locks.mayModify(QStringLiteral("Vehicle"), 5, bob.clientId));
         locks.releaseAll(alice.clientId);
         QVERIFY(locks.mayModify(QStringLiteral("Vehicle"), 5, bob.clientId));

@@ -15,7 +15,6 @@
 #endif
 
 #include <QCoreApplication>
-#include <QElapsedTimer>
 #include <QTemporaryDir>
 
 #include <algorithm>
@@ -38,36 +37,19 @@ using namespace sortie;
 using namespace sortie::terrain;
 
 namespace {
-struct Timing { double wallMs; double cpuMs; };
-
+using sortie::test::judge;
 using sortie::test::loadAverage;
-using sortie::test::threadCpuMs;
-
-Timing median(int runs, const std::function<void()> &work)
-{
-    std::vector<double> wall, cpu;
-    for (int i = 0; i < runs; ++i) {
-        QElapsedTimer timer;
-        const double c0 = threadCpuMs();
-        timer.start();
-        work();
-        wall.push_back(timer.nsecsElapsed() / 1e6);
-        cpu.push_back(threadCpuMs() - c0);
-    }
-    std::sort(wall.begin(), wall.end());
-    std::sort(cpu.begin(), cpu.end());
-    return {wall[wall.size() / 2], cpu[cpu.size() / 2]};
-}
+using sortie::test::median;
+using sortie::test::Timing;
 
 bool report(const char *what, Timing t, double targetMs)
 {
-    const bool busy = loadAverage() > std::thread::hardware_concurrency();
-    const bool ok = targetMs <= 0 || t.wallMs < targetMs || (busy && t.cpuMs < targetMs);
+    const auto verdict = judge(t, targetMs);
     std::printf("%-52s %9.3f ms wall %9.3f ms cpu", what, t.wallMs, t.cpuMs);
     if (targetMs > 0)
-        std::printf("   (target < %g ms)%s", targetMs, ok ? (t.wallMs < targetMs ? "" : "  met on CPU time, machine busy") : "  MISSED");
+        std::printf("   (target < %g ms)%s", targetMs, verdict.note);
     std::printf("\n");
-    return ok;
+    return verdict.met;
 }
 
 // Rolling hills: a few hundred metres of relief, continuous across tile edges.

@@ -14,13 +14,13 @@ ToolBar {
 
     // Which commands ask, what they ask and with what arguments they go: the fleet's CommandPolicy.
     readonly property CommandPolicy policy: bar.fleet ? bar.fleet.commands : null
-    function command(name) {
+    function command(which) {   // a CommandPolicy.Command
         if (!bar.vehicle || !bar.policy)
             return
-        if (bar.policy.needsConfirmation(name, bar.vehicle))
-            bar.confirm(bar.policy.confirmation(name, bar.vehicle), () => bar.policy.send(name, bar.vehicle))
+        if (bar.policy.needsConfirmation(which, bar.vehicle))
+            bar.confirm(bar.policy.confirmation(which, bar.vehicle), () => bar.policy.send(which, bar.vehicle))
         else
-            bar.policy.send(name, bar.vehicle)
+            bar.policy.send(which, bar.vehicle)
     }
 
     function confirm(question, action) {
@@ -52,17 +52,17 @@ ToolBar {
         Layout.fillWidth: true
         spacing: 4
         enabled: bar.vehicle !== null
-        Button { objectName: "armButton"; text: qsTr("Arm"); onClicked: bar.command("arm") }
-        Button { objectName: "disarmButton"; text: qsTr("Disarm"); onClicked: bar.command("disarm") }
-        Button { objectName: "takeoffButton"; text: qsTr("Take off"); onClicked: bar.command("takeoff")
+        Button { objectName: "armButton"; text: qsTr("Arm"); onClicked: bar.command(CommandPolicy.Arm) }
+        Button { objectName: "disarmButton"; text: qsTr("Disarm"); onClicked: bar.command(CommandPolicy.Disarm) }
+        Button { objectName: "takeoffButton"; text: qsTr("Take off"); onClicked: bar.command(CommandPolicy.TakeOff)
                  ToolTip.visible: hovered
                  ToolTip.text: bar.vehicle ? qsTr("Climb to %1 m above home").arg(bar.policy.takeoffAltitude(bar.vehicle)) : "" }
-        Button { objectName: "autoButton"; text: qsTr("Auto"); onClicked: bar.command("auto")
+        Button { objectName: "autoButton"; text: qsTr("Auto"); onClicked: bar.command(CommandPolicy.Auto)
                  ToolTip.visible: hovered; ToolTip.text: qsTr("Fly the uploaded mission") }
-        Button { objectName: "pauseButton"; text: qsTr("Pause"); onClicked: bar.command("hold") }
-        Button { objectName: "resumeButton"; text: qsTr("Resume"); onClicked: bar.command("auto") }
-        Button { objectName: "landButton"; text: qsTr("Land"); onClicked: bar.command("land") }
-        Button { objectName: "homeButton"; text: qsTr("Return home"); onClicked: bar.command("return_home") }
+        Button { objectName: "pauseButton"; text: qsTr("Pause"); onClicked: bar.command(CommandPolicy.Hold) }
+        Button { objectName: "resumeButton"; text: qsTr("Resume"); onClicked: bar.command(CommandPolicy.Auto) }
+        Button { objectName: "landButton"; text: qsTr("Land"); onClicked: bar.command(CommandPolicy.Land) }
+        Button { objectName: "homeButton"; text: qsTr("Return home"); onClicked: bar.command(CommandPolicy.ReturnHome) }
         Button {
             objectName: "goButton"
             text: qsTr("Go here…")

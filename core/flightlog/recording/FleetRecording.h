@@ -14,8 +14,8 @@ namespace sortie::flightlog {
 
 class FlightRecorder;
 
-// Records every vehicle of a fleet, the ones there now and the ones that come, and the server
-// connection's changes. The one wiring of a recorder to the client, used by the desktop client and
+// Records every vehicle of a fleet, the ones there now and the ones that come, the commands its
+// command log sees, and the server connection's changes. The one wiring of a recorder to the client, used by the desktop client and
 // by `sortie-log record`.
 class FleetRecording : public QObject
 {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "CommandLog.h"
 #include "FlightLogWriter.h"
 #include "RecordingChunk.h"
 #include "Vehicle.h"
@@ -15,7 +16,8 @@
 namespace sortie::flightlog {
 
 // Records vehicles into a flight log while they fly: every telemetry batch their links deliver,
-// their link changes, arming and mode changes, command results, uploaded routes and identities.
+// their link changes, arming and mode changes, uploaded routes and identities; and the results of the
+// commands a command log (the fleet's) saw sent to them.
 // This object only gathers (a vector append per value) on the thread the vehicles live on; every
 // flushInterval the gathered chunk goes to a FlightLogWriter on a thread of its own, which encodes
 // and commits it. A crash loses at most the chunk being gathered and the one being written.
@@ -44,6 +46,10 @@ public:
     // destroyed or removed.
     void addVehicle(vehicle::Vehicle *vehicle);
     void removeVehicle(vehicle::Vehicle *vehicle);
+    // Records each command the log sees finish as a "command" event of the recorded vehicle it went
+    // to (the log names vehicles as Vehicle::name() does); commands to other vehicles are left out.
+    // One log at a time; nullptr stops following.
+    void followCommands(vehicle::CommandLog *log);
     // Something that happened outside any vehicle's signals (the connection to the server, a note).
     void recordEvent(vehicle::Vehicle *vehicle, const QString &kind, const QString &text, int ok = -1);
     // Hands what was gathered to the writer now.
@@ -85,6 +91,8 @@ private:
     };
 
     Recorded *find(const vehicle::Vehicle *vehicle);
+    Recorded *findNamed(const QString &name);
+    void recordCommand(const vehicle::CommandLog::Entry &entry);
     void gather(Recorded &r, const vehicle::TelemetryBatch &batch);
     void writeEvent(const Recorded &r, const QString &kind, const QString &text, int ok = -1);
     static int64_t vehicleTime(const Recorded &r) { return now() + r.clockOffset; }
@@ -95,6 +103,7 @@ private:
     FlightLogWriter *m_writer = nullptr; // lives on m_thread
     QTimer m_flushTimer;
     std::vector<std::unique_ptr<Recorded>> m_recorded;
+    QMetaObject::Connection m_commands;
     RecordingChunk m_chunk;
     QString m_error;
     FlightLogWriter::Stats m_lastStats;

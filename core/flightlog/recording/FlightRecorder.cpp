@@ -25,6 +25,7 @@ FlightRecorder::FlightRecorder(Options options, QObject *parent)
 FlightRecorder::~FlightRecorder()
 {
     stop();
+    disconnect(m_commands);
     for (const auto &r : m_recorded) {
         for (const auto &c : r->connections)
             disconnect(c);
@@ -167,11 +168,6 @@ void FlightRecorder::addVehicle(Vehicle *vehicle)
         const char *state = QMetaEnum::fromType<VehicleLink::State>().valueToKey(int(r.vehicle->linkState()));
         writeEvent(r, QStringLiteral("link"), QString::fromLatin1(state));
     }));
-    // Until the command log exists, commands are what the Vehicle reports finished.
-    r.connections.push_back(connect(vehicle, &Vehicle::commandFinished, this,
-                                    [this, &r](const QString &command, bool ok, const QString &message) {
-                                        writeEvent(r, QStringLiteral("command"), message.isEmpty() ? command : command + QStringLiteral(": ") + message, ok ? 1 : 0);
-                                    }));
     r.connections.push_back(connect(vehicle, &Vehicle::missionChanged, this, [this, &r] {
         m_chunk.missions.push_back({r.key, vehicleTime(r), r.vehicle->mission()});
         const size_t n = r.vehicle->mission().size();
@@ -207,6 +203,32 @@ void FlightRecorder::removeVehicle(Vehicle *vehicle)
             return;
         }
     }
+}
+
+FlightRecorder::Recorded *FlightRecorder::findNamed(const QString &name)
+{
+    for (const auto &r : m_recorded) {
+        if (r->vehicle && r->vehicle->name() == name)
+            return r.get();
+    }
+    return nullptr;
+}
+
+void FlightRecorder::followCommands(vehicle::CommandLog *log)
+{
+    disconnect(m_commands);
+    if (log)
+        m_commands = connect(log, &vehicle::CommandLog::finished, this, &FlightRecorder::recordCommand);
+}
+
+void FlightRecorder::recordCommand(const vehicle::CommandLog::Entry &entry)
+{
+    const Recorded *r = findNamed(entry.vehicle);
+    if (!r)
+        return;
+    // The command as the log words it ("takeoff to 20 m"), with the reason when it did not succeed.
+    const QString text = entry.result.isEmpty() ? entry.command : entry.command + QStringLiteral(": ") + entry.result;
+    writeEvent(*r, QStringLiteral("command"), text, entry.status == vehicle::CommandLog::Status::Done ? 1 : 0);
 }
 
 void FlightRecorder::recordEvent(Vehicle *vehicle, const QString &kind, const QString &text, int ok)

@@ -16,6 +16,8 @@ FleetRecording::FleetRecording(client::VehicleFleet *fleet, FlightRecorder *reco
     connect(fleet, &QAbstractItemModel::rowsInserted, this, [this](const QModelIndex &, int first, int last) { addRows(first, last); });
     // Vehicles leaving the fleet are destroyed; the recorder notices that by itself.
     addRows(0, fleet->count() - 1);
+    // Every command and upload sent to the fleet's vehicles, whoever sent it, with its result.
+    recorder->followCommands(fleet->commandLog());
     if (session) {
         connect(session, &hci::HciSession::stateChanged, this, [this](hci::HciSession::State state) {
             if (m_recorder)
