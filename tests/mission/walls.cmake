@@ -18,7 +18,7 @@ function(sortie_mission_probe kind room header)
   target_include_directories(${probe} PRIVATE ${PROJECT_SOURCE_DIR}/core/mission/${room})
   target_link_libraries(${probe} PRIVATE ${room_libs})
   add_test(NAME ${probe} COMMAND ${CMAKE_COMMAND} --build ${PROJECT_BINARY_DIR} --target ${probe})
-  set_tests_properties(${probe} PROPERTIES LABELS "unit;walls" TIMEOUT 300 RESOURCE_LOCK mission_walls)
+  set_tests_properties(${probe} PROPERTIES LABELS "unit;walls" TIMEOUT 300 RESOURCE_LOCK build_tree_probes)
   if(kind STREQUAL "wall")
     string(REPLACE "." "\\." header_regex "${header}")
     set_tests_properties(${probe} PROPERTIES
