@@ -2,6 +2,7 @@
 // fault knobs): a link that goes silent, a slow server, answers out of order, garbage between frames
 // and a frame header announcing 2 GiB. Each asserts what the operator sees and that nothing is lost.
 #include "ResilienceSupport.h"
+#include "RouteAnalyzer.h"
 
 #include "FaultProxy.h"
 #include "HciConnection.h"
@@ -98,6 +99,10 @@ private slots:
         QVERIFY(link.openDemoRoute());
         const int clientId = link.op.session.clientId();
         link.op.missions.document()->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820)); // typed before the link dies
+        // The edit is analysed and the terrain under it fetched before the link dies, so the request
+        // that times out below is the refresh, not the terrain's.
+        QTRY_VERIFY_WITH_TIMEOUT(!link.op.missions.document()->analyzer()->isPending(), 10000);
+        QTRY_COMPARE_WITH_TIMEOUT(link.connection()->pendingCount(), 0, 10000);
 
         link.proxy.setForwarding(false); // the connection stays open; nothing gets through
         link.op.missions.refresh();
@@ -195,6 +200,9 @@ private slots:
         garbage += QByteArray::fromStdString(hci::encodeRawHciFrame(6, answerType, std::string(12, '\xff')));
         garbage += QByteArray::fromStdString(hci::encodeRawHciFrame(987654, answerType, std::string()));
         garbage += header(7, answerType, -5) + noise(4000, 2);
+        // Garbage goes between frames: first the answers the client waits for (the terrain under the
+        // opened route among them) are all in, so none is cut by it.
+        QTRY_COMPARE_WITH_TIMEOUT(link.connection()->pendingCount(), 0, 10000);
         link.proxy.injectToClients(garbage);
 
         // The operator edits and saves: lock, write, release, list; every answer arrives behind garbage.
@@ -203,6 +211,7 @@ private slots:
         link.op.missions.save();
         QTRY_VERIFY_WITH_TIMEOUT(link.connection()->framesDropped() >= droppedBefore + 4, 10000);
         QVERIFY(saved.wait(10000));
+        QTRY_COMPARE_WITH_TIMEOUT(link.connection()->pendingCount(), 0, 10000);
         link.proxy.injectToClients(garbage);
         link.op.missions.process();
         QTRY_VERIFY_WITH_TIMEOUT(link.op.missions.message().startsWith(QStringLiteral("Processed")), 10000);
