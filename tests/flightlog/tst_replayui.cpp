@@ -3,6 +3,7 @@
 // jumps to an event, and each time the vehicle is drawn on the map where the log says it was. The
 // server's history of a vehicle chosen in the timeline's dialog, fetched from the simulator, replays
 // with the vehicle drawn where the server had it.
+#include "ClientGraph.h"
 #include "ComparisonController.h"
 #include "ConnectionController.h"
 #include "HciClient.h"
@@ -34,6 +35,21 @@ using namespace sortie;
 
 namespace {
 
+// The telemetry page with the client graph's controllers, as Main.qml hands them over.
+const char *const kTelemetryPage = R"(
+    import QtQuick
+    import Sortie.Ui
+    TelemetryPage { units: DisplayUnits {} }
+)";
+
+QVariantMap telemetryPageProperties(client::ClientGraph &graph)
+{
+    return {{QStringLiteral("fleet"), QVariant::fromValue<QObject *>(graph.fleet())},
+            {QStringLiteral("replay"), QVariant::fromValue<QObject *>(&graph.replay())},
+            {QStringLiteral("serverHistory"), QVariant::fromValue<QObject *>(&graph.serverHistory())},
+            {QStringLiteral("comparison"), QVariant::fromValue<QObject *>(&graph.comparison())}};
+}
+
 QPointF centre(QQuickItem *item)
 {
     return item->mapToScene(QPointF(item->width() / 2, item->height() / 2));
@@ -52,18 +68,11 @@ private slots:
     {
         QTemporaryDir dir;
         const QString path = test::recordTwoFlights(dir.path());
-        flightlog::ReplayController replay;
-        flightlog::ComparisonController comparison(&replay);
-        test::QuickScene scene(R"(
-            import QtQuick
-            import Sortie.Ui
-            TelemetryPage {
-                fleet: null
-                serverHistory: null
-                units: DisplayUnits {}
-            }
-        )", QSize(1280, 800), {{QStringLiteral("replay"), QVariant::fromValue(&replay)},
-                                                    {QStringLiteral("comparison"), QVariant::fromValue(&comparison)}});
+        QSettings storage(QDir(dir.path()).filePath(QStringLiteral("settings.ini")), QSettings::IniFormat);
+        client::ClientGraph graph(&storage, {});
+        flightlog::ReplayController &replay = graph.replay();
+        flightlog::ComparisonController &comparison = graph.comparison();
+        test::QuickScene scene(kTelemetryPage, QSize(1280, 800), telemetryPageProperties(graph));
         QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
         QVERIFY(scene.find<QQuickItem>(QStringLiteral("openLogButton")));
         auto *banner = scene.find<QQuickItem>(QStringLiteral("replayBanner"));
@@ -244,13 +253,13 @@ private slots:
         sim::SimWorld world(config);
         sim::HciServer server(world);
         QVERIFY(server.listen(QHostAddress::LocalHost, 0));
-        hci::HciSession session;
-        hci::HciClient client(&session);
-        client::ConnectionController connection(&session);
-        client::VehicleFleet fleet(&client);
-        flightlog::ReplayController replay;
-        flightlog::ServerHistoryRequest history(&client, &replay);
-        history.setFleet(&fleet);
+        QTemporaryDir dir;
+        QSettings storage(QDir(dir.path()).filePath(QStringLiteral("settings.ini")), QSettings::IniFormat);
+        client::ClientGraph graph(&storage, {});
+        client::ConnectionController &connection = graph.connection();
+        client::VehicleFleet &fleet = *graph.fleet();
+        flightlog::ReplayController &replay = graph.replay();
+        flightlog::ServerHistoryRequest &history = graph.serverHistory();
         QVERIFY(connection.connectToServer(QStringLiteral("127.0.0.1:%1").arg(server.port()), QStringLiteral("admin"), QStringLiteral("admin")));
         QTRY_COMPARE_WITH_TIMEOUT(fleet.count(), 3, 10000);
         vehicle::Vehicle *live = nullptr;
@@ -279,16 +288,7 @@ private slots:
         live->takeoff(10);
         QTRY_VERIFY_WITH_TIMEOUT(live->altitudeAgl() > 4, 15000);
 
-        test::QuickScene scene(R"(
-            import QtQuick
-            import Sortie.Ui
-            TelemetryPage {
-                comparison: null
-                units: DisplayUnits {}
-            }
-        )", QSize(1280, 800), {{QStringLiteral("fleet"), QVariant::fromValue(&fleet)},
-                                {QStringLiteral("replay"), QVariant::fromValue(&replay)},
-                                {QStringLiteral("serverHistory"), QVariant::fromValue(&history)}});
+        test::QuickScene scene(kTelemetryPage, QSize(1280, 800), telemetryPageProperties(graph));
         QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
         scene.grab();
         auto *button = scene.find<QQuickItem>(QStringLiteral("serverHistoryButton"));

@@ -2,10 +2,13 @@
 // which gives this process a D-Bus session of its own with GNOME Keyring unlocked in a throw-away
 // home folder. After every step the settings file's bytes are searched for the password; the last
 // test drives the real login view (offscreen).
+#include "ClientGraph.h"
+#include "ConnectionController.h"
 #include "AppSettings.h"
 #include "PasswordVault.h"
 #include "QuickScene.h"
 
+#include <QDir>
 #include <QFile>
 #include <QProcess>
 #include <QQuickItem>
@@ -253,9 +256,12 @@ private slots:
             first.settings.sync();
         }
         Start restarted(m_path);
+        QTemporaryDir clientDir;
+        QSettings clientStorage(QDir(clientDir.path()).filePath(QStringLiteral("client.ini")), QSettings::IniFormat);
+        sortie::client::ClientGraph client(&clientStorage, {});
         sortie::test::QuickScene scene("import Sortie.Ui\nLoginPage {}", QSize(800, 600),
                                        {{QStringLiteral("appSettings"), QVariant::fromValue(&restarted.settings)},
-                                        {QStringLiteral("connection"), QVariant::fromValue<QObject *>(nullptr)}});
+                                        {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&client.connection())}});
         QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
         auto *password = scene.find<QQuickItem>(QStringLiteral("passwordField"));
         auto *user = scene.find<QQuickItem>(QStringLiteral("userField"));

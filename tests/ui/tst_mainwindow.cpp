@@ -1,7 +1,10 @@
 // The main window offscreen: pages, shortcuts, help overlay, status bar, map source wiring,
 // and a PNG of each view (docs/images when SORTIE_SCREENSHOT_DIR points there).
 #include "AppSettings.h"
-#include "CoordinateListModel.h"
+#include "ClientGraph.h"
+#include "MissionController.h"
+#include "Route.h"
+#include "RouteDocument.h"
 #include "MapView.h"
 #include "PasswordVault.h"
 #include "QuickScene.h"
@@ -12,7 +15,6 @@
 
 #include <QDir>
 #include <QGuiApplication>
-#include <QItemSelectionModel>
 #include <QPalette>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
@@ -38,23 +40,31 @@ QString screenshotDir()
     return dir;
 }
 
-// Demonstration content for the pictures: a survey route near Riga and three vehicles.
-void fillRoute(CoordinateListModel &route, CoordinateListModel &polygon, CoordinateListModel &transects)
+// Demonstration content for the pictures: a survey route near Riga (waypoints around an area scan)
+// and three vehicles.
+sortie::mission::Route surveyRoute()
 {
-    route.append(56.9468, 24.0850, 0);
-    route.append(56.9500, 24.0950, 60);
-    for (int leg = 0; leg < 6; ++leg) {
-        const double lon = 24.1000 + leg * 0.0030;
-        const bool north = leg % 2 == 0;
-        transects.append(north ? 56.9460 : 56.9560, lon);
-        transects.append(north ? 56.9560 : 56.9460, lon);
-    }
-    route.append(56.9580, 24.1250, 60);
-    route.append(56.9520, 24.1320, 60);
-    route.append(56.9440, 24.1180, 40);
-    route.append(56.9420, 24.0900, 0);
+    using namespace sortie::mission;
+    Route route;
+    const auto waypoint = [&route](double lat, double lon, double altitude) {
+        Waypoint w;
+        w.position = {lat, lon};
+        w.altitude = altitude;
+        w.speed = 8;
+        route.segments.push_back(w);
+    };
+    waypoint(56.9468, 24.0850, 0);
+    waypoint(56.9500, 24.0950, 60);
+    AreaScan scan;
     for (const auto &[lat, lon] : {std::pair{56.9450, 24.0985}, {56.9575, 24.0985}, {56.9575, 24.1165}, {56.9450, 24.1165}})
-        polygon.append(lat, lon);
+        scan.polygon.push_back({lat, lon});
+    scan.parameters.sideDistanceMeters = 180;
+    route.segments.push_back(scan);
+    waypoint(56.9580, 24.1250, 60);
+    waypoint(56.9520, 24.1320, 60);
+    waypoint(56.9440, 24.1180, 40);
+    waypoint(56.9420, 24.0900, 0);
+    return route;
 }
 
 void fillVehicles(QStandardItemModel &vehicles)
@@ -98,6 +108,7 @@ class TestMainWindow : public QObject
     sortie::secrets::PasswordVault m_vault{QStringLiteral("sortie-tests")}; // no keyring under ctest: nothing remembered
     std::unique_ptr<QSettings> m_storage;
     std::unique_ptr<AppSettings> m_settings;
+    std::unique_ptr<sortie::client::ClientGraph> m_client; // the program's controllers, not logged in
     std::unique_ptr<QQmlApplicationEngine> m_engine;
     QQuickWindow *m_window = nullptr;
 
@@ -140,9 +151,10 @@ private slots:
         m_storage = std::make_unique<QSettings>(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
         m_storage->clear();
         m_settings = std::make_unique<AppSettings>(m_storage.get(), &m_vault);
+        m_client = std::make_unique<sortie::client::ClientGraph>(m_storage.get(), sortie::client::ClientGraph::Options{});
         m_engine = std::make_unique<QQmlApplicationEngine>();
         addImportPaths(*m_engine);
-        m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(m_settings.get())}});
+        m_engine->setInitialProperties(mainWindowProperties(*m_client, *m_settings));
         m_engine->load(QUrl(QString::fromLatin1(kMainQml)));
         QVERIFY(!m_engine->rootObjects().isEmpty());
         m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
@@ -155,6 +167,7 @@ private slots:
     void cleanup()
     {
         m_engine.reset();
+        m_client.reset();
         m_settings.reset();
         m_storage.reset();
         QGuiApplication::setPalette(QPalette());
@@ -244,16 +257,11 @@ private slots:
         verifyShown("statusBar");
         save(QStringLiteral("login.png"));
 
-        // Mission edit
-        CoordinateListModel route, polygon, transects;
-        fillRoute(route, polygon, transects);
-        QItemSelectionModel selection(&route);
-        selection.select(route.index(2), QItemSelectionModel::Select);
+        // Mission edit: the survey route in the document, its scan chosen.
+        sortie::client::RouteDocument *doc = m_client->missions().document();
+        doc->load(surveyRoute());
+        doc->selectRows({2});
         QObject *mission = page("missionPage");
-        mission->setProperty("routeModel", QVariant::fromValue(static_cast<QObject *>(&route)));
-        mission->setProperty("selectionModel", QVariant::fromValue(static_cast<QObject *>(&selection)));
-        mission->setProperty("areaPolygonModel", QVariant::fromValue(static_cast<QObject *>(&polygon)));
-        mission->setProperty("areaTransectModel", QVariant::fromValue(static_cast<QObject *>(&transects)));
         QTest::keyClick(m_window, Qt::Key_2, Qt::ControlModifier);
         auto *routeLayer = mission->property("routeLayer").value<RouteLayer *>();
         QVERIFY(routeLayer);
@@ -261,7 +269,8 @@ private slots:
         routeLayer->fitToMap(60);
         auto *map = mission->property("map").value<MapView *>();
         QTest::mouseMove(m_window, map->mapToScene(QPointF(300, 300)).toPoint());
-        QTRY_COMPARE(routeLayer->visibleWaypointCount(), route.count());
+        QTRY_COMPARE(routeLayer->visibleWaypointCount(), routeLayer->count());
+        QVERIFY(routeLayer->count() >= 6);
         verifyShown("routeLayer");
         verifyShown("waypointList");
         verifyShown("scaleBar");
@@ -293,10 +302,7 @@ private slots:
         QTest::qWait(300); // the popup's fade-in
         save(QStringLiteral("shortcuts.png"));
         QTest::keyClick(m_window, Qt::Key_Escape);
-        const QVariant none = QVariant::fromValue<QObject *>(nullptr);
-        for (const char *property : {"routeModel", "selectionModel", "areaPolygonModel", "areaTransectModel"})
-            mission->setProperty(property, none);
-        telemetry->setProperty("vehicleModel", none);
+        telemetry->setProperty("vehicleModel", QVariant::fromValue<QObject *>(nullptr));
     }
 
     void followsADarkPalette()

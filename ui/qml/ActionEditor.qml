@@ -8,15 +8,15 @@ import Sortie.Ui
 GroupBox {
     id: box
     required property WaypointActionsModel actions
-    visible: actions !== null && actions.valid
-    title: actions ? actions.title : ""
+    visible: actions.valid
+    title: actions.title
 
     ColumnLayout {
         anchors.fill: parent
         spacing: 4
 
         Label {
-            visible: box.actions !== null && box.actions.mixed
+            visible: box.actions.mixed
             text: qsTr("The selected waypoints have different actions: these are the first one's. An edit applies where they match; an added action goes to all.")
             wrapMode: Text.Wrap
             opacity: 0.8
@@ -118,7 +118,7 @@ GroupBox {
             ComboBox {
                 id: kindPicker
                 objectName: "actionKindPicker"
-                model: box.actions ? box.actions.kinds : []
+                model: box.actions.kinds
                 textRole: "label"
                 valueRole: "kind"
                 Layout.preferredWidth: 190
@@ -132,7 +132,7 @@ GroupBox {
             Button {
                 objectName: "clearActionsButton"
                 text: qsTr("Remove all")
-                visible: box.actions !== null && box.actions.count > 0
+                visible: box.actions.count > 0
                 onClicked: box.actions.clear()
             }
         }

@@ -8,14 +8,14 @@ import Sortie.Ui
 ToolBar {
     id: bar
     required property Vehicle vehicle      // null: none chosen
-    required property VehicleFleet fleet   // null: no client layer
+    required property VehicleFleet fleet
     property bool goMode: false
     property var pending: null
 
     // Which commands ask, what they ask and with what arguments they go: the fleet's CommandPolicy.
-    readonly property CommandPolicy policy: bar.fleet ? bar.fleet.commands : null
+    readonly property CommandPolicy policy: bar.fleet.commands
     function command(which) {   // a CommandPolicy.Command
-        if (!bar.vehicle || !bar.policy)
+        if (!bar.vehicle)
             return
         if (bar.policy.needsConfirmation(which, bar.vehicle))
             bar.confirm(bar.policy.confirmation(which, bar.vehicle), () => bar.policy.send(which, bar.vehicle))

@@ -3,22 +3,20 @@ import QtQuick.Controls
 import QtQuick.Layouts
 import Sortie.Ui
 
-// Server, user and password. `connection` is the client's connection controller; without one
-// (no client layer in this build) the form still edits and remembers the fields.
+// Server, user and password, handed to `connection` (the client's connection controller).
 Page {
     id: page
     required property AppSettings appSettings
-    required property ConnectionController connection // null: this window cannot log in
+    required property ConnectionController connection
     property alias serverField: server
     property alias userField: user
     property alias passwordField: password
 
-    readonly property bool connected: connection !== null && connection.state !== "Disconnected"
+    readonly property bool connected: connection.state !== "Disconnected"
 
     signal connectRequested(string server, string user, string password)
     onConnectRequested: (server, user, password) => {
-        if (page.connection)
-            page.connection.connectToServer(server, user, password)
+        page.connection.connectToServer(server, user, password)
     }
 
     // The keyring answers after the page is up: its password fills the field unless one was typed.
@@ -113,7 +111,7 @@ Page {
                     visible: !page.connected
                     text: qsTr("Connect")
                     highlighted: true
-                    enabled: page.connection !== null && server.text.length > 0 && user.text.length > 0
+                    enabled: server.text.length > 0 && user.text.length > 0
                     onClicked: {
                         page.appSettings.rememberLogin(server.text, user.text, password.text)
                         page.connectRequested(server.text, user.text, password.text)
@@ -129,7 +127,7 @@ Page {
                 }
                 BusyIndicator {
                     objectName: "busyIndicator"
-                    running: page.connection !== null && page.connection.busy === true
+                    running: page.connection.busy
                     visible: running
                     implicitWidth: 32
                     implicitHeight: 32
@@ -141,17 +139,15 @@ Page {
                 Layout.fillWidth: true
                 wrapMode: Text.Wrap
                 visible: page.connected
-                text: page.connection && page.connection.ready
-                      ? qsTr("Logged in as %1 at %2.").arg(page.connection.user).arg(page.connection.server)
-                      : page.connection ? qsTr("%1…").arg(page.connection.state) : ""
+                text: page.connection.ready ? qsTr("Logged in as %1 at %2.").arg(page.connection.user).arg(page.connection.server)
+                                            : qsTr("%1…").arg(page.connection.state)
             }
             Label {
                 objectName: "loginMessage"
                 Layout.fillWidth: true
                 wrapMode: Text.Wrap
                 color: "#e53935"
-                text: page.connection === null ? qsTr("No connection controller: this window cannot log in.")
-                                               : page.connection.errorString
+                text: page.connection.errorString
                 visible: text.length > 0
             }
         }

@@ -8,23 +8,20 @@ import Sortie.Ui
 ApplicationWindow {
     id: window
     required property AppSettings appSettings
-    // The client's controllers, made in C++ (app/sortie). Each may still be missing here (a test
-    // of the shell alone, fixtures that make only some of them); the views then show what they can
-    // without it. They become `required` once every program and fixture builds the whole graph
-    // (core/client's ClientGraph); the pages below already require each one explicitly.
-    property ConnectionController connection: null
-    property MissionController missions: null
-    property VehicleFleet fleet: null
-    property ElevationService elevation: null   // the terrain service (core/terrain), when there is one
-    // Flight-log replay (the timeline on the telemetry page); null when the program has none.
-    property ReplayController replay: null
-    property ComparisonController comparison: null
-    property ServerHistoryRequest serverHistory: null   // the server's history into the replay
-    property RecordingSettings recordingSettings: null  // the flight logs' folder and limits (Logs…)
-    // Edits a previous run left unsaved, offered at start.
-    property AutosaveRecovery recovery: null
-    property string connectionState: connection ? connection.state : "Disconnected"
-    property string connectionDetail: connection ? connection.statusDetail : ""
+    // The client's controllers: the one client graph (core/client's ClientGraph), handed over by
+    // ui::mainWindowProperties. Every one is there; only `recovery` is null, in a program or fixture
+    // that keeps no autosave folder.
+    required property ConnectionController connection
+    required property MissionController missions
+    required property VehicleFleet fleet
+    required property ElevationService elevation   // the terrain service (core/terrain; "none" at least)
+    required property ReplayController replay       // flight-log replay: the telemetry page's timeline
+    required property ComparisonController comparison
+    required property ServerHistoryRequest serverHistory   // the server's history into the replay
+    required property RecordingSettings recordingSettings  // the flight logs' folder and limits (Logs…)
+    required property AutosaveRecovery recovery     // edits a previous run left unsaved; may be null
+    property string connectionState: connection.state
+    property string connectionDetail: connection.statusDetail
 
     property alias currentPage: tabs.currentIndex
     property alias loginPage: loginPage
@@ -45,11 +42,11 @@ ApplicationWindow {
     function toggleHelp() { help.opened ? help.close() : help.open() }
     function openMapSource() { mapSourceDialog.open() }
     function focusMap() { window.activeMap.forceActiveFocus() }
-    function saveRoute() { if (missions) { showPage(1); missions.save() } }
-    function undo() { if (missions) missions.document.undo() }
-    function redo() { if (missions) missions.document.redo() }
-    function deleteSelection() { if (missions && currentPage === 1) missions.document.editor.removeRows(missions.document.selectedRows) }
-    function processRoute() { if (missions) missions.process() }
+    function saveRoute() { showPage(1); missions.save() }
+    function undo() { missions.document.undo() }
+    function redo() { missions.document.redo() }
+    function deleteSelection() { if (currentPage === 1) missions.document.editor.removeRows(missions.document.selectedRows) }
+    function processRoute() { missions.process() }
     function toggleFullScreen() { window.visibility = window.visibility === Window.FullScreen ? Window.Windowed : Window.FullScreen }
 
     Connections {
@@ -81,15 +78,13 @@ ApplicationWindow {
             }
             ToolButton {
                 objectName: "logSettingsButton"
-                visible: window.recordingSettings !== null
                 text: qsTr("Logs…")
-                onClicked: logSettingsDialog.item.open()
+                onClicked: logSettingsDialog.open()
                 ToolTip.visible: hovered
                 ToolTip.text: qsTr("Where flight logs are recorded, and how much they may take")
-                Loader {
+                FlightLogSettingsDialog {
                     id: logSettingsDialog
-                    active: window.recordingSettings !== null
-                    sourceComponent: FlightLogSettingsDialog { settings: window.recordingSettings }
+                    settings: window.recordingSettings
                 }
             }
             ToolButton {

@@ -4,9 +4,8 @@ import QtQuick.Layouts
 import QtQml.Models
 import Sortie.Ui
 
-// Mission edit: the route on the map beside its panel and table. With `missions` (the client's
-// MissionController) every gesture becomes an undoable edit of its document; without one the
-// page shows whatever list model `routeModel` is.
+// Mission edit: the route on the map beside its panel and table. Every gesture becomes an undoable
+// edit of the document of `missions` (the client's MissionController).
 Page {
     id: page
     property alias map: pane.map
@@ -15,16 +14,13 @@ Page {
     property alias areaLayer: areaLayer
     property alias pane: pane
     property alias panel: panel
-    required property MissionController missions // null: no client layer, `routeModel` is shown
+    required property MissionController missions
     required property DisplayUnits units
-    readonly property RouteDocument doc: missions ? missions.document : null
-    // The models the layers and the table draw (the document's, unless a test sets others).
-    property AbstractItemModel routeModel: doc ? doc.model : null
-    property ItemSelectionModel selectionModel: doc ? doc.selection : null
-    property AbstractItemModel areaPolygonModel: null
-    property AbstractItemModel areaTransectModel: null
+    readonly property RouteDocument doc: missions.document
+    // The models the layers and the table draw.
+    readonly property AbstractItemModel routeModel: doc.model
+    readonly property ItemSelectionModel selectionModel: doc.selection
     required property AbstractItemModel vehicleModel // the fleet: where the vehicles are while planning
-    property bool editable: doc !== null
     property string tool: ""               // "" or "scan" (drawing an area-scan polygon)
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
@@ -34,12 +30,12 @@ Page {
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
     // `var`: the editor's tools are plain JS objects (name, algorithm, figure, minimumPoints).
-    readonly property var drawingTools: doc ? doc.editor.drawingTools() : []
+    readonly property var drawingTools: doc.editor.drawingTools()
     property int drawingTool: 0
     readonly property var currentTool: drawingTools.length > drawingTool ? drawingTools[drawingTool] : null
 
     function finishScan() {
-        if (page.doc && page.currentTool && scanDraft.count >= page.currentTool.minimumPoints)
+        if (page.currentTool && scanDraft.count >= page.currentTool.minimumPoints)
             page.doc.editor.addSegment(page.currentTool.algorithm, scanDraft.coordinates())
         scanDraft.clear()
         page.tool = ""
@@ -94,8 +90,8 @@ Page {
                 objectName: "theirRouteLayer"
                 anchors.fill: parent
                 map: pane.map
-                visible: page.missions !== null && page.missions.conflict
-                model: page.missions ? page.missions.conflictDetails.theirs : null
+                visible: page.missions.conflict
+                model: page.missions.conflictDetails.theirs
                 color: "#8d8d8d"
                 opacity: 0.75
                 editable: false
@@ -108,7 +104,7 @@ Page {
                 model: page.routeModel
                 actionMarksRole: "actionMarks"
                 selectionModel: page.selectionModel
-                editable: page.editable && page.tool === ""
+                editable: page.tool === ""
                 onWaypointsMoved: (rows, coordinates) => page.doc.editor.moveWaypoints(rows, coordinates)
                 onLegClicked: (leg, coordinate, modifiers) => page.doc.editor.insertWaypoint(leg + 1, coordinate)
             }
@@ -117,19 +113,17 @@ Page {
                 objectName: "areaLayer"
                 anchors.fill: parent
                 map: pane.map
-                polygonModel: page.areaPolygonModel
-                transectModel: page.areaTransectModel
-                polygon: page.doc ? page.doc.scanPolygon : []
-                path: page.doc ? page.doc.scanPath : []
+                polygon: page.doc.scanPolygon
+                path: page.doc.scanPath
                 // The current segment's figure: drag a corner (the path follows), click an edge to add
                 // one, right-click one to remove it, drag a circle's radius handle. Above the route:
                 // its first point lies under the segment's own route marker, which cannot drag it.
-                editable: page.editable && page.tool === "" && page.doc.scanPolygon.length > 0
+                editable: page.tool === "" && page.doc.scanPolygon.length > 0
                 onVertexMoved: (index, coordinate, step) => page.doc.editor.moveVertex(page.doc.currentRow, index, coordinate, step)
                 onEdgeClicked: (index, coordinate, modifiers) => page.doc.editor.insertVertex(page.doc.currentRow, index + 1, coordinate)
                 onVertexRemoveRequested: index => page.doc.editor.removeVertex(page.doc.currentRow, index)
-                closed: page.doc ? page.doc.preview.figureType !== "polyline" : true
-                radius: page.doc ? page.doc.preview.radius : 0
+                closed: page.doc.preview.figureType !== "polyline"
+                radius: page.doc.preview.radius
                 onRadiusMoved: (meters, step) => page.doc.editor.setRadius(page.doc.currentRow, meters, step)
             }
             Connections {
@@ -181,7 +175,6 @@ Page {
         }
         TerrainProfilePanel {
             id: terrainProfile
-            visible: page.elevation !== null  // the client always has one ("none" at least)
             SplitView.preferredHeight: 170
             SplitView.minimumHeight: 90
             routeModel: page.routeModel
@@ -197,7 +190,7 @@ Page {
             doc: page.doc
             units: page.units
             routeModel: page.routeModel
-            terrain: page.elevation !== null ? terrainProfile.profile : null
+            terrain: terrainProfile.profile
             waypointCount: routeLayer.count
             scanning: page.tool === "scan"
             onScanToggled: on => page.tool = on ? "scan" : ""

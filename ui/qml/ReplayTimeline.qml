@@ -10,7 +10,7 @@ import Sortie.Ui
 ToolBar {
     id: bar
     required property ReplayController replay
-    // The connected server's history, replayed in the same controller; null when the program has none.
+    // The connected server's history, replayed in the same controller.
     required property ServerHistoryRequest serverHistory
     property string exportMessage
 
@@ -42,13 +42,11 @@ ToolBar {
             }
             Button {
                 objectName: "serverHistoryButton"
-                visible: bar.serverHistory !== null
                 text: qsTr("Server history…")
-                onClicked: historyDialog.item.open()
-                Loader {
+                onClicked: historyDialog.open()
+                ServerHistoryDialog {
                     id: historyDialog
-                    active: bar.serverHistory !== null
-                    sourceComponent: ServerHistoryDialog { request: bar.serverHistory }
+                    request: bar.serverHistory
                 }
             }
             Rectangle {

@@ -8,11 +8,11 @@ import Sortie.Ui
 // scan), how it stands (progress, messages, statistics, validation) and its table.
 Pane {
     id: panel
-    required property MissionController missions // null: no client layer, the route is only shown
-    required property RouteDocument doc          // the missions' document, or null
+    required property MissionController missions
+    required property RouteDocument doc          // the missions' document
     required property DisplayUnits units
     required property AbstractItemModel routeModel // the list model the table shows
-    required property TerrainProfileModel terrain // ground and heights per row, or null without terrain
+    required property TerrainProfileModel terrain // ground and heights per row
     required property int waypointCount
     required property bool scanning              // the area-scan tool is on
     signal scanToggled(bool on)
@@ -38,23 +38,14 @@ Pane {
         anchors.fill: parent
         spacing: 6
 
-        Label {
-            visible: panel.missions === null
-            objectName: "routeSummary"
-            text: panel.routeModel ? qsTr("%n waypoint(s)", "", panel.waypointCount) : qsTr("No route open. Log in to open a mission.")
-            wrapMode: Text.Wrap
-            Layout.fillWidth: true
-        }
-
         RowLayout {
-            visible: panel.missions !== null
             Layout.fillWidth: true
             ComboBox {
                 id: routePicker
                 objectName: "routePicker"
                 Layout.fillWidth: true
                 Layout.preferredWidth: 120
-                model: panel.missions ? panel.missions.routes : null
+                model: panel.missions.routes
                 textRole: "name"
                 valueRole: "objectId"
                 displayText: currentIndex < 0 ? qsTr("Choose a route…") : currentText
@@ -68,16 +59,15 @@ Pane {
         }
 
         Flow {
-            visible: panel.missions !== null
             Layout.fillWidth: true
             spacing: 4
-            Button { objectName: "saveButton"; text: qsTr("Save"); enabled: panel.missions !== null && panel.missions.canSave; onClicked: panel.missions.save()
+            Button { objectName: "saveButton"; text: qsTr("Save"); enabled: panel.missions.canSave; onClicked: panel.missions.save()
                      ToolTip.visible: hovered; ToolTip.text: qsTr("Save on the server, under its lock (Ctrl+S)") }
-            Button { objectName: "undoButton"; text: qsTr("Undo"); enabled: panel.doc && panel.doc.canUndo; onClicked: panel.doc.undo()
-                     ToolTip.visible: hovered; ToolTip.text: panel.doc ? qsTr("Undo %1 (Ctrl+Z)").arg(panel.doc.undoText) : "" }
-            Button { objectName: "redoButton"; text: qsTr("Redo"); enabled: panel.doc && panel.doc.canRedo; onClicked: panel.doc.redo()
-                     ToolTip.visible: hovered; ToolTip.text: panel.doc ? qsTr("Redo %1 (Ctrl+Shift+Z)").arg(panel.doc.redoText) : "" }
-            Button { text: qsTr("Delete"); enabled: panel.doc && panel.doc.selectedRows.length > 0; onClicked: panel.doc.editor.removeRows(panel.doc.selectedRows)
+            Button { objectName: "undoButton"; text: qsTr("Undo"); enabled: panel.doc.canUndo; onClicked: panel.doc.undo()
+                     ToolTip.visible: hovered; ToolTip.text: qsTr("Undo %1 (Ctrl+Z)").arg(panel.doc.undoText) }
+            Button { objectName: "redoButton"; text: qsTr("Redo"); enabled: panel.doc.canRedo; onClicked: panel.doc.redo()
+                     ToolTip.visible: hovered; ToolTip.text: qsTr("Redo %1 (Ctrl+Shift+Z)").arg(panel.doc.redoText) }
+            Button { text: qsTr("Delete"); enabled: panel.doc.selectedRows.length > 0; onClicked: panel.doc.editor.removeRows(panel.doc.selectedRows)
                      ToolTip.visible: hovered; ToolTip.text: qsTr("Delete the selected waypoints (Del)") }
             Button { objectName: "scanToolButton"; text: qsTr("Area scan"); checkable: true; checked: panel.scanning
                      onToggled: panel.scanToggled(checked)
@@ -87,7 +77,6 @@ Pane {
         }
 
         RowLayout {
-            visible: panel.missions !== null
             Layout.fillWidth: true
             Button { objectName: "processButton"; text: qsTr("Process"); onClicked: panel.missions.process()
                      ToolTip.visible: hovered; ToolTip.text: qsTr("Let the server check and prepare the route (Ctrl+P)") }
@@ -97,7 +86,7 @@ Pane {
                 Layout.fillWidth: true
                 Layout.preferredWidth: 120
                 displayText: currentIndex < 0 ? qsTr("Vehicle…") : currentText
-                model: panel.missions ? panel.missions.fleet : null // every vehicle, HCI and VCI
+                model: panel.missions.fleet // every vehicle, HCI and VCI
                 textRole: "name"
                 valueRole: "vehicleId"
             }
@@ -108,22 +97,22 @@ Pane {
         }
 
         UploadQuestion {
-            uploader: panel.missions ? panel.missions.uploader : null
+            uploader: panel.missions.uploader
             onSaveAndUpload: panel.missions.saveAndUpload()
         }
 
         Frame {
             objectName: "conflictBanner"
-            visible: panel.missions !== null && panel.missions.conflict
+            visible: panel.missions.conflict
             Layout.fillWidth: true
             background: Rectangle { color: "#fff3e0"; border.color: "#fb8c00"; radius: 3 }
             ColumnLayout {
                 anchors.fill: parent
-                Label { text: panel.missions ? panel.missions.conflictText : ""; wrapMode: Text.Wrap; Layout.fillWidth: true; color: "#5d4037" }
+                Label { text: panel.missions.conflictText; wrapMode: Text.Wrap; Layout.fillWidth: true; color: "#5d4037" }
                 Label {
                     text: qsTr("Yours (version %1, edited) against theirs (version %2, grey on the map):")
-                          .arg(panel.missions ? panel.missions.conflictDetails.yourVersion : 0)
-                          .arg(panel.missions ? panel.missions.conflictDetails.theirVersion : 0)
+                          .arg(panel.missions.conflictDetails.yourVersion)
+                          .arg(panel.missions.conflictDetails.theirVersion)
                     wrapMode: Text.Wrap; Layout.fillWidth: true; color: "#5d4037"; font.bold: true
                 }
                 ListView {
@@ -131,12 +120,12 @@ Pane {
                     Layout.fillWidth: true
                     Layout.preferredHeight: Math.min(contentHeight, 110)
                     clip: true
-                    model: panel.missions ? panel.missions.conflictDetails.changes : []
+                    model: panel.missions.conflictDetails.changes
                     delegate: Label { required property string modelData; text: "• " + modelData; color: "#5d4037"; wrapMode: Text.Wrap; width: ListView.view.width }
                 }
                 Label {
-                    visible: panel.missions !== null && panel.missions.conflictDetails.theirEdits.length > 0
-                    text: panel.missions ? qsTr("They changed: %1").arg(panel.missions.conflictDetails.theirEdits.join(", ")) : ""
+                    visible: panel.missions.conflictDetails.theirEdits.length > 0
+                    text: qsTr("They changed: %1").arg(panel.missions.conflictDetails.theirEdits.join(", "))
                     wrapMode: Text.Wrap; Layout.fillWidth: true; color: "#5d4037"; font.pointSize: 8
                 }
                 RowLayout {
@@ -147,51 +136,50 @@ Pane {
         }
 
         ColumnLayout {
-            visible: panel.missions !== null && panel.missions.busy
+            visible: panel.missions.busy
             Layout.fillWidth: true
-            Label { text: panel.missions ? panel.missions.activity + "…" : "" }
+            Label { text: panel.missions.activity + "…" }
             ProgressBar {
                 objectName: "progressBar"
                 Layout.fillWidth: true
-                indeterminate: !panel.missions || panel.missions.progressMaximum <= 0
+                indeterminate: panel.missions.progressMaximum <= 0
                 from: 0
-                to: panel.missions ? Math.max(1, panel.missions.progressMaximum) : 1
-                value: panel.missions ? panel.missions.progressValue : 0
+                to: Math.max(1, panel.missions.progressMaximum)
+                value: panel.missions.progressValue
             }
         }
 
         Label {
             objectName: "missionMessage"
             visible: text.length > 0
-            text: panel.missions ? [panel.missions.message, panel.doc.message].filter(m => m.length > 0).join("\n") : ""
+            text: [panel.missions.message, panel.doc.message].filter(m => m.length > 0).join("\n")
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }
 
         GridLayout {
             objectName: "statistics"
-            visible: panel.doc !== null
             columns: 4
             Layout.fillWidth: true
             Label { text: qsTr("Length") ; opacity: 0.7 }
-            Label { text: panel.doc ? panel.units.formatDistance(panel.doc.analyzer.lengthMeters) : "" }
+            Label { text: panel.units.formatDistance(panel.doc.analyzer.lengthMeters) }
             Label { text: qsTr("Time"); opacity: 0.7 }
-            Label { text: panel.doc ? panel.units.formatDuration(panel.doc.analyzer.flightTimeSeconds) : "" }
+            Label { text: panel.units.formatDuration(panel.doc.analyzer.flightTimeSeconds) }
             Label { text: qsTr("Waypoints"); opacity: 0.7 }
-            Label { text: panel.doc ? panel.doc.analyzer.waypointCount : "" }
+            Label { text: panel.doc.analyzer.waypointCount }
             Label { text: qsTr("Photos"); opacity: 0.7 }
-            Label { text: panel.doc ? panel.doc.analyzer.photoCount : "" }
+            Label { text: panel.doc.analyzer.photoCount }
         }
 
         SegmentEditor {
             Layout.fillWidth: true
-            editor: panel.doc ? panel.doc.segmentEditor : null
+            editor: panel.doc.segmentEditor
         }
 
         ActionEditor {
             objectName: "actionEditor"
             Layout.fillWidth: true
-            actions: panel.doc ? panel.doc.actionEditor : null
+            actions: panel.doc.actionEditor
         }
 
         ListView {
@@ -200,7 +188,7 @@ Pane {
             Layout.fillWidth: true
             Layout.preferredHeight: Math.min(contentHeight, 90)
             clip: true
-            model: panel.doc ? panel.doc.analyzer.issues : null
+            model: panel.doc.analyzer.issues
             delegate: ItemDelegate {
                 id: issue
                 required property string severity
@@ -229,7 +217,7 @@ Pane {
             Layout.fillWidth: true
             Layout.preferredHeight: Math.min(contentHeight, 70)
             clip: true
-            model: panel.missions ? panel.missions.serverMessages : []
+            model: panel.missions.serverMessages
             delegate: Label { required property string modelData; text: modelData; wrapMode: Text.Wrap; width: ListView.view.width }
         }
 

@@ -11,19 +11,19 @@ GroupBox {
     id: box
     required property SegmentEditorModel editor
     property bool showAdvanced: false
-    visible: editor !== null && editor.valid
-    title: editor ? editor.title : ""
+    visible: editor.valid
+    title: editor.title
 
     ColumnLayout {
         anchors.fill: parent
         spacing: 2
 
         RowLayout {
-            visible: box.editor !== null && !isNaN(box.editor.radius)
+            visible: !isNaN(box.editor.radius)
             Label { text: qsTr("Radius"); Layout.preferredWidth: 150 }
             TextField {
                 objectName: "segment_radius"
-                text: box.editor === null || isNaN(box.editor.radius) ? "" : Number(box.editor.radius).toFixed(1)
+                text: isNaN(box.editor.radius) ? "" : Number(box.editor.radius).toFixed(1)
                 Layout.preferredWidth: 80
                 selectByMouse: true
                 onEditingFinished: if (Number(text) !== box.editor.radius) box.editor.setRadius(Number(text))
@@ -119,7 +119,7 @@ GroupBox {
         Label {
             // What the survey gives, as the operator types.
             objectName: "segment_figures"
-            readonly property var f: box.editor ? box.editor.figures : ({})
+            readonly property var f: box.editor.figures
             visible: f.height !== undefined
             text: f.height === undefined ? "" : f.message !== undefined
                   ? f.message
@@ -133,7 +133,7 @@ GroupBox {
         Label {
             objectName: "segment_problem"
             visible: text.length > 0
-            text: box.editor ? box.editor.problem : ""
+            text: box.editor.problem
             color: "#e53935"
             wrapMode: Text.Wrap
             Layout.fillWidth: true

@@ -10,19 +10,19 @@ Page {
     property alias map: pane.map
     property alias vehicleLayer: vehicleLayer
     property alias pane: pane
-    required property VehicleFleet fleet   // null: no client layer (the shell's own tests)
+    required property VehicleFleet fleet
     required property DisplayUnits units
     // A log being replayed takes the place of the live vehicles (the timeline says so).
     required property ReplayController replay
-    // The server's history for the replay (the timeline's Server history… dialog); null when none.
+    // The server's history for the replay (the timeline's Server history… dialog).
     required property ServerHistoryRequest serverHistory
     required property ComparisonController comparison
-    readonly property bool replaying: replay !== null && replay.active
+    readonly property bool replaying: replay.active
     property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
     property list<string> plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
     readonly property Vehicle current: vehicleLayer.currentIndex < 0 ? null
                                        : replaying ? replay.fleet.vehicleAt(vehicleLayer.currentIndex)
-                                       : fleet ? fleet.vehicleAt(vehicleLayer.currentIndex) : null
+                                       : fleet.vehicleAt(vehicleLayer.currentIndex)
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
@@ -63,7 +63,6 @@ Page {
                     }
                 }
                 RowLayout {
-                    visible: page.fleet !== null
                     Layout.fillWidth: true
                     TextField {
                         id: vciAddress
@@ -82,8 +81,8 @@ Page {
                     }
                 }
                 Label {
-                    visible: page.fleet !== null && page.fleet.message.length > 0
-                    text: page.fleet ? page.fleet.message : ""
+                    visible: page.fleet.message.length > 0
+                    text: page.fleet.message
                     color: "#e53935"
                     wrapMode: Text.Wrap
                     Layout.fillWidth: true
@@ -115,8 +114,8 @@ Page {
                     objectName: "deviationLayer"
                     anchors.fill: parent
                     map: pane.map
-                    visible: page.replaying && page.comparison !== null
-                    model: page.comparison ? page.comparison.track : null
+                    visible: page.replaying
+                    model: page.comparison.track
                 }
                 VehicleLayer {
                     id: vehicleLayer
@@ -174,16 +173,16 @@ Page {
                 vehicle: page.current
                 fleet: page.fleet
             }
-            Loader {
-                objectName: "replayTimelineLoader"
+            ReplayTimeline {
+                objectName: "replayTimeline"
                 Layout.fillWidth: true
-                active: page.replay !== null
-                sourceComponent: ReplayTimeline { replay: page.replay; serverHistory: page.serverHistory }
+                replay: page.replay
+                serverHistory: page.serverHistory
             }
             Loader {
                 objectName: "comparisonPanelLoader"
                 Layout.fillWidth: true
-                active: page.replaying && page.comparison !== null
+                active: page.replaying
                 sourceComponent: ComparisonPanel {
                     comparison: page.comparison
                     vehicleIndex: vehicleLayer.currentIndex
@@ -272,7 +271,7 @@ Page {
             CommandLogView {
                 Layout.fillWidth: true
                 Layout.preferredHeight: 150
-                log: page.fleet ? page.fleet.commandLog : null
+                log: page.fleet.commandLog
             }
         }
     }

@@ -17,7 +17,7 @@ Dialog {
     anchors.centerIn: parent
     width: Math.min(560, parent ? parent.width - 40 : 560)
     closePolicy: Popup.CloseOnEscape
-    onRejected: if (uploader && uploader.asking) uploader.cancel()
+    onRejected: if (uploader.asking) uploader.cancel()
 
     Connections {
         target: dialog.uploader
@@ -37,7 +37,7 @@ Dialog {
             objectName: "uploadQuestionText"
             width: dialog.availableWidth
             wrapMode: Text.Wrap
-            text: dialog.uploader ? dialog.uploader.question : ""
+            text: dialog.uploader.question
         }
     }
 
@@ -50,7 +50,7 @@ Dialog {
         Button {
             objectName: "saveAndUploadButton"
             text: qsTr("Save and upload")
-            visible: dialog.uploader !== null && dialog.uploader.unsavedEdits
+            visible: dialog.uploader.unsavedEdits
             DialogButtonBox.buttonRole: DialogButtonBox.ApplyRole
         }
         Button {

@@ -8,12 +8,12 @@ import Sortie.Ui
 // Every edit is one call of the document's RouteEditor (one undo step).
 ColumnLayout {
     id: table
-    required property RouteDocument doc   // null: the table only shows `routeModel`
+    required property RouteDocument doc
     required property AbstractItemModel routeModel
-    required property TerrainProfileModel terrain  // null: no terrain, heights only as set
-    readonly property list<int> selected: doc ? doc.selectedRows : []
+    required property TerrainProfileModel terrain  // ground and converted heights per row
+    readonly property list<int> selected: doc.selectedRows
     // Which height the altitude column shows: as each row sets it, or all AMSL, or all AGL.
-    readonly property int heightsShown: terrain !== null ? heightsPicker.currentIndex : 0
+    readonly property int heightsShown: heightsPicker.currentIndex
     readonly property int heightsFrame: heightsShown === 1 ? MissionEnums.Amsl : MissionEnums.Agl
     spacing: 4
 
@@ -35,7 +35,6 @@ ColumnLayout {
     }
 
     RowLayout {
-        visible: table.doc !== null
         Layout.fillWidth: true
         Label { text: qsTr("%n selected:", "", table.selected.length) }
         TextField { id: bulkAltitude; objectName: "bulkAltitude"; placeholderText: qsTr("alt m"); Layout.preferredWidth: 60 }
@@ -62,7 +61,6 @@ ColumnLayout {
     }
 
     RowLayout {
-        visible: table.terrain !== null
         Layout.fillWidth: true
         Label { text: qsTr("Heights:") }
         ComboBox {
@@ -74,7 +72,7 @@ ColumnLayout {
             ToolTip.text: qsTr("AMSL and AGL are converted through the ground under each waypoint")
         }
         Label {
-            text: table.terrain ? qsTr("ground: %1").arg(table.terrain.sourceText) : ""
+            text: qsTr("ground: %1").arg(table.terrain.sourceText)
             elide: Text.ElideRight
             opacity: 0.7
             Layout.fillWidth: true
@@ -96,7 +94,6 @@ ColumnLayout {
                 text: modelData
                 font.bold: true
                 elide: Text.ElideRight
-                visible: index !== 5 || table.terrain !== null  // no Ground column without terrain
                 Layout.preferredWidth: index < table.columnWidths.length ? table.columnWidths[index] : -1
                 Layout.fillWidth: index >= table.columnWidths.length
                 leftPadding: index > 0 && index < 4 || index === 6 ? 2 : 0 // over the cells' text
@@ -147,13 +144,12 @@ ColumnLayout {
                 Label {
                     id: ground
                     objectName: "groundCell_" + row.index
-                    visible: table.terrain !== null
-                    text: table.terrain ? (table.terrain.revision, table.terrain.groundTextOfRow(row.index)) : ""
+                    text: (table.terrain.revision, table.terrain.groundTextOfRow(row.index))
                     elide: Text.ElideRight
                     Layout.preferredWidth: table.columnWidths[5]
                     HoverHandler { id: groundHover }
                     ToolTip.visible: groundHover.hovered && text.length > 0
-                    ToolTip.text: table.terrain ? table.terrain.groundToolTipOfRow(row.index) : ""
+                    ToolTip.text: table.terrain.groundToolTipOfRow(row.index)
                 }
                 Cell { role: "speed"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[6]
                        onEdited: value => table.doc.editor.setSpeed([row.index], value) }
