@@ -12,7 +12,6 @@
 #include "Messages.pb.h"
 #include "RouteValidator.h"
 #include "UploadReview.h"
-#include "VehicleFleet.h"
 
 namespace sortie::client {
 
@@ -33,7 +32,8 @@ MissionController::MissionController(hci::HciClient *client, QObject *parent)
     connect(this, &MissionController::routeChanged, this, &MissionController::canSaveChanged);
     connect(&m_document, &RouteDocument::modifiedChanged, this, &MissionController::canSaveChanged);
     connect(&m_document, &RouteDocument::loaded, this, [this] { m_opened = m_document.route(); });
-    followUploader();
+    connect(&m_preparation, &RoutePreparation::saveRequested, this, &MissionController::save);
+    connect(this, &MissionController::saved, &m_preparation, &RoutePreparation::routeSaved);
 }
 
 MissionController::~MissionController() = default;
@@ -117,7 +117,6 @@ void MissionController::openRoute(int routeId)
         if (!imported)
             return setMessage(tr("The route cannot be edited here: %1").arg(imported.error().toString()));
         setConflict(nullptr, {});
-        m_processed.setPlan({});
         m_document.load(imported->route);
         QString text = tr("Opened %1 (version %2).").arg(routeName()).arg(reply->response<pb::GetObjectResponse>().object().route().version());
         if (!imported->notices.isEmpty())
@@ -263,93 +262,11 @@ void MissionController::routeEvent(const pb::EventWrapper &event)
                              .arg(theirs.version()));
 }
 
-void MissionController::process()
-{
-    if (!m_client || !m_client->session()->isReady())
-        return setMessage(tr("Not connected: the server processes routes."));
-    request(m_client->processRoute(routeToHci(m_document.route())), tr("Processing on the server"), [this](HciReply *reply) {
-        if (!reply->isOk())
-            return setMessage(tr("Processing failed: %1").arg(reply->error().message()));
-        ProcessedPlan plan = processedPlanFromHci(reply->response<pb::ProcessRouteResponse>().processedroute(), &m_document.route());
-        setServerMessages(plan);
-        const bool flyable = plan.flyable();
-        m_processed.setPlan(std::move(plan));
-        setMessage(flyable ? tr("Processed: %1 waypoints to fly.").arg(m_processed.count())
-                           : tr("The server found problems in the route: see its messages."));
-    });
-}
-
-void MissionController::setFleet(VehicleFleet *fleet)
-{
-    if (fleet == m_fleet)
-        return;
-    m_fleet = fleet;
-    m_uploader.setCommandLog(fleet ? fleet->commandLog() : nullptr);
-    emit fleetChanged();
-}
-
-void MissionController::upload(const QString &vehicleId)
-{
-    vehicle::Vehicle *target = m_fleet ? m_fleet->vehicle(vehicleId) : nullptr;
-    if (!target)
-        return setMessage(tr("Choose a vehicle to upload to."));
-    if (m_uploader.isBusy())
-        return setMessage(m_uploader.state() == MissionUploader::State::AwaitingConfirmation
-                              ? tr("An upload is waiting for your answer.")
-                              : tr("Wait until %1 is done.").arg(m_uploader.activity().toLower()));
-    m_uploadTarget = vehicleId;
-    m_uploader.start(m_document.route(), target, m_document.isModified());
-}
-
-void MissionController::saveAndUpload()
-{
-    if (m_uploader.state() != MissionUploader::State::AwaitingConfirmation)
-        return;
-    m_uploadAfterSave = true;
-    save();
-}
-
 mission::ValidationReport MissionController::validation()
 {
     // The analyzer's report: every rule, those other libraries add to it (terrain) included.
     m_document.analyzer()->recomputeNow();
     return m_document.analyzer()->validation();
-}
-
-void MissionController::followUploader()
-{
-    // The uploader only ever gets the open document's route from here.
-    m_uploader.setValidator([this](const mission::Route &) { return validation(); });
-    connect(&m_uploader, &MissionUploader::stateChanged, this, [this] {
-        if (m_uploader.state() != MissionUploader::State::AwaitingConfirmation)
-            m_uploadAfterSave = false;
-        // While it waits for the operator nothing runs: the route can still be saved.
-        const bool running = m_uploader.isBusy() && m_uploader.state() != MissionUploader::State::AwaitingConfirmation;
-        setActivity(running ? m_uploader.activity() : QString());
-    });
-    connect(&m_uploader, &MissionUploader::progressChanged, this, [this] {
-        setProgress(m_uploader.progressValue(), m_uploader.progressMaximum());
-    });
-    connect(&m_uploader, &MissionUploader::messageChanged, this, [this] { setMessage(m_uploader.message()); });
-    connect(&m_uploader, &MissionUploader::uploaded, this, [this] { emit uploaded(m_uploadTarget); });
-    connect(this, &MissionController::saved, this, [this] {
-        if (!m_uploadAfterSave)
-            return;
-        m_uploadAfterSave = false;
-        // What goes up is the route as saved, checked again (edits made while asking are not skipped).
-        m_uploader.confirm(m_document.route(), m_document.isModified());
-    });
-}
-
-void MissionController::setServerMessages(const ProcessedPlan &plan)
-{
-    QStringList messages;
-    for (size_t i = 0; i < plan.segments.size(); ++i) {
-        for (const ProcessedMessage &m : plan.segments[i].messages)
-            messages.append(tr("Segment %1: %2%3").arg(i + 1).arg(m.error ? tr("error: ") : QString(), m.text));
-    }
-    m_serverMessages = messages;
-    emit serverMessagesChanged();
 }
 
 void MissionController::setActivity(const QString &activity)

@@ -2,12 +2,10 @@
 
 #include "AlgorithmCatalog.h"
 #include "HciProto.h"
-#include "MissionUploader.h"
-#include "ProcessedPlanModel.h"
 #include "RouteConflict.h"
 #include "RouteDocument.h"
+#include "RoutePreparation.h"
 #include "ServerObjectListModel.h"
-#include "VehicleFleet.h"
 
 #include <QObject>
 #include <QPointer>
@@ -24,22 +22,19 @@ class HciSubscription;
 
 namespace sortie::client {
 
-// Routes on the server: the list to pick from, the one open for editing (a RouteDocument), saving
-// it under a lock, noticing when someone else changed it meanwhile (and offering a clear choice:
-// keep ours or take theirs), processing it on the server to show the plan, and uploading it to any
-// vehicle of the fleet through the MissionUploader. Edits stay in the document whatever the connection does.
+// The route library: the server's routes to pick from, the one open for editing (a RouteDocument),
+// saving it under a lock, noticing when someone else changed it meanwhile (and offering a clear
+// choice: keep ours or take theirs). Edits stay in the document whatever the connection does. What
+// the open route becomes for a vehicle (Process, Upload) is its RoutePreparation's.
 class MissionController : public QObject
 {
     Q_OBJECT
     Q_PROPERTY(sortie::client::ServerObjectListModel *routes READ routes CONSTANT)
     // The server's vehicle objects (uploads go to the fleet's vehicles, HCI and VCI alike).
     Q_PROPERTY(sortie::client::ServerObjectListModel *vehicles READ vehicles CONSTANT)
-    // The vehicles a route can be uploaded to: the upload's chooser lists them (vehicleId role).
-    Q_PROPERTY(sortie::client::VehicleFleet *fleet READ fleet NOTIFY fleetChanged)
-    // The one upload service: its state, the question it asks, cancel.
-    Q_PROPERTY(sortie::client::MissionUploader *uploader READ uploader CONSTANT)
     Q_PROPERTY(sortie::client::RouteDocument *document READ document CONSTANT)
-    Q_PROPERTY(sortie::mission::ProcessedPlanModel *processed READ processed CONSTANT)
+    // The open route made ready for a vehicle: the chosen vehicle, Process, Upload.
+    Q_PROPERTY(sortie::client::RoutePreparation *preparation READ preparation CONSTANT)
     Q_PROPERTY(int routeId READ routeId NOTIFY routeChanged)
     Q_PROPERTY(QString routeName READ routeName NOTIFY routeChanged)
     // Whether Save means something: a route from the server is open, or a new one has edits.
@@ -53,7 +48,6 @@ class MissionController : public QObject
     Q_PROPERTY(int progressValue READ progressValue NOTIFY progressChanged)
     Q_PROPERTY(int progressMaximum READ progressMaximum NOTIFY progressChanged)
     Q_PROPERTY(QString message READ message NOTIFY messageChanged)
-    Q_PROPERTY(QStringList serverMessages READ serverMessages NOTIFY serverMessagesChanged)
 
 public:
     explicit MissionController(hci::HciClient *client, QObject *parent = nullptr);
@@ -61,12 +55,8 @@ public:
 
     ServerObjectListModel *routes() { return &m_routes; }
     ServerObjectListModel *vehicles() { return &m_vehicles; }
-    MissionUploader *uploader() { return &m_uploader; }
-    // The vehicles a route can be uploaded to (not owned).
-    void setFleet(VehicleFleet *fleet);
-    VehicleFleet *fleet() const { return m_fleet; }
     RouteDocument *document() { return &m_document; }
-    mission::ProcessedPlanModel *processed() { return &m_processed; }
+    RoutePreparation *preparation() { return &m_preparation; }
     int routeId() const;
     QString routeName() const { return m_document.route().settings.name; }
     bool canSave() const;
@@ -78,7 +68,6 @@ public:
     int progressValue() const { return m_progressValue; }
     int progressMaximum() const { return m_progressMaximum; }
     QString message() const { return m_message; }
-    QStringList serverMessages() const { return m_serverMessages; }
 
     // Reads the server's routes and vehicles (done by itself whenever the session becomes ready).
     Q_INVOKABLE void refresh();
@@ -91,26 +80,17 @@ public:
     // Their copy replaces ours as one undoable step (marked as saved: it is the server's), so
     // undo brings our edits back.
     Q_INVOKABLE void takeTheirs();
-    Q_INVOKABLE void process();
-    // Uploads the route on screen to a vehicle of the fleet (its `vehicleId` role, "HCI:7" or
-    // "VCI:vci-1") through the uploader: validated, processed, under the vehicle's lock, verified.
-    Q_INVOKABLE void upload(const QString &vehicleId);
-    // The answer "save, then upload" to the uploader's question about unsaved edits.
-    Q_INVOKABLE void saveAndUpload();
 
 signals:
     void routeChanged();
     void canSaveChanged();
-    void fleetChanged();
     // A route was opened from the server (not saved, not edited): views frame it.
     void routeOpened();
     void conflictChanged();
     void activityChanged();
     void progressChanged();
     void messageChanged();
-    void serverMessagesChanged();
     void saved(int version);
-    void uploaded(const QString &vehicleId);
 
 private:
     template<typename Done>
@@ -122,9 +102,7 @@ private:
     void writeLocked(const com::ugcs::ucs::proto::Route &route);
     void written(const hci::HciReply &reply, int routeId);
     void routeEvent(const com::ugcs::ucs::proto::EventWrapper &event);
-    void followUploader();
     mission::ValidationReport validation();
-    void setServerMessages(const mission::ProcessedPlan &plan);
 
     QPointer<hci::HciClient> m_client;
     ServerObjectListModel m_routes;
@@ -132,7 +110,7 @@ private:
     std::map<int, std::unique_ptr<com::ugcs::ucs::proto::Vehicle>> m_vehicleObjects;
     mission::AlgorithmCatalog m_catalog;  // the server's algorithms, once listed (the document's editor uses it)
     RouteDocument m_document;
-    mission::ProcessedPlanModel m_processed;
+    RoutePreparation m_preparation{&m_document};
     RouteConflict m_conflict; // the server's copy, when it differs
     mission::Route m_opened;  // the route as last opened or saved: what both sides of a conflict edited
     QString m_conflictText;
@@ -140,13 +118,8 @@ private:
     int m_progressValue = 0;
     int m_progressMaximum = 0;
     QString m_message;
-    QStringList m_serverMessages;
     hci::HciSubscription *m_routeEvents = nullptr;
     bool m_saving = false; // our own save's change event is not someone else's
-    MissionUploader m_uploader;
-    QPointer<VehicleFleet> m_fleet;
-    QString m_uploadTarget;
-    bool m_uploadAfterSave = false;
 };
 
 } // namespace sortie::client

@@ -32,7 +32,7 @@ struct Operator
         , missions(&client)
         , fleet(&client)
     {
-        missions.setFleet(&fleet);
+        missions.preparation()->setFleet(&fleet);
         QSignalSpy ready(&connection, &client::ConnectionController::ready);
         connection.connectToServer(address, user, password);
         ok = ready.wait(10000);
@@ -334,24 +334,31 @@ private slots:
         QTRY_COMPARE(m_alice->fleet.count(), 3);
         const QString emu = m_alice->fleet.index(0).data(client::VehicleFleet::VehicleIdRole).toString();
         QCOMPARE(emu.left(4), QStringLiteral("HCI:"));
-        m_alice->missions.process();
-        QTRY_VERIFY_WITH_TIMEOUT(m_alice->missions.processed()->count() >= 4, 10000);
-        QVERIFY(m_alice->missions.processed()->flyable());
-        QTRY_VERIFY(!m_alice->missions.isBusy());
+        client::RoutePreparation *preparation = m_alice->missions.preparation();
+        preparation->process();
+        QVERIFY2(preparation->message().startsWith(QStringLiteral("Choose the vehicle")), qPrintable(preparation->message()));
+        preparation->setVehicleId(emu);
+        preparation->process();
+        QVERIFY(preparation->isProcessing());
+        QTRY_VERIFY_WITH_TIMEOUT(!preparation->isProcessing(), 10000);
+        QVERIFY2(preparation->message().startsWith(QStringLiteral("Processed for EMU-101: ")), qPrintable(preparation->message()));
+        const int previewed = preparation->previewCount();
+        QVERIFY(previewed >= 4);
         QList<int> progress;
-        connect(&m_alice->missions, &MissionController::progressChanged, this, [&] {
-            if (m_alice->missions.progressMaximum() > 0)
-                progress.append(m_alice->missions.progressValue());
+        connect(preparation->uploader(), &client::MissionUploader::progressChanged, this, [&] {
+            if (preparation->uploader()->progressMaximum() > 0)
+                progress.append(preparation->uploader()->progressValue());
         });
-        QSignalSpy uploaded(&m_alice->missions, &MissionController::uploaded);
-        m_alice->missions.upload(emu);
+        QSignalSpy uploaded(preparation, &client::RoutePreparation::uploaded);
+        preparation->upload();
         QVERIFY(uploaded.wait(15000));
         QCOMPARE(uploaded.first().first().toString(), emu);
         QVERIFY2(progress.size() >= 3, qPrintable(QString::number(progress.size())));
         QVERIFY(std::is_sorted(progress.begin(), progress.end()));
-        QVERIFY2(m_alice->missions.message().startsWith(QStringLiteral("Uploaded to EMU-101: ")), qPrintable(m_alice->missions.message()));
+        QVERIFY2(preparation->message().startsWith(QStringLiteral("Uploaded to EMU-101: ")), qPrintable(preparation->message()));
         const int emuId = emu.mid(4).toInt();
-        QVERIFY(m_sim->world.vehicle(emuId)->model().mission().size() >= 4);
+        // The preview was what flies: the same points went up.
+        QCOMPARE(int(m_sim->world.vehicle(emuId)->model().mission().size()), previewed);
         // What the vehicle holds is what the fly view draws.
         QCOMPARE(m_alice->fleet.vehicle(emu)->mission().size(), m_sim->world.vehicle(emuId)->model().mission().size());
         // The upload is in the command log, done.
@@ -370,15 +377,17 @@ private slots:
         client::RouteDocument *doc = m_alice->missions.document();
         doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820));
         QVERIFY(doc->isModified());
-        QSignalSpy uploaded(&m_alice->missions, &MissionController::uploaded);
+        client::RoutePreparation *preparation = m_alice->missions.preparation();
+        QSignalSpy uploaded(preparation, &client::RoutePreparation::uploaded);
         QSignalSpy saved(&m_alice->missions, &MissionController::saved);
-        m_alice->missions.upload(emu);
-        client::MissionUploader *uploader = m_alice->missions.uploader();
+        preparation->setVehicleId(emu);
+        preparation->upload();
+        client::MissionUploader *uploader = preparation->uploader();
         QCOMPARE(uploader->state(), client::MissionUploader::State::AwaitingConfirmation);
         QVERIFY(uploader->hasUnsavedEdits());
         QVERIFY2(uploader->question().contains(QLatin1String("not saved")), qPrintable(uploader->question()));
         QVERIFY(!m_alice->missions.isBusy()); // asking holds nothing: saving is possible
-        m_alice->missions.saveAndUpload();
+        preparation->saveAndUpload();
         QVERIFY(uploaded.wait(15000));
         QCOMPARE(saved.count(), 1);
         QVERIFY(!doc->isModified());
@@ -395,11 +404,13 @@ private slots:
         m_alice->missions.save();
         QVERIFY2(m_alice->missions.message().startsWith(QStringLiteral("Not saved: Waypoint 3: ")), qPrintable(m_alice->missions.message()));
         const QString emu = m_alice->fleet.index(0).data(client::VehicleFleet::VehicleIdRole).toString();
-        m_alice->missions.upload(emu);
-        client::MissionUploader *uploader = m_alice->missions.uploader();
+        client::RoutePreparation *preparation = m_alice->missions.preparation();
+        preparation->setVehicleId(emu);
+        preparation->upload();
+        client::MissionUploader *uploader = preparation->uploader();
         QCOMPARE(uploader->state(), client::MissionUploader::State::Failed);
         QCOMPARE(uploader->culprit(), 2);
-        QVERIFY2(m_alice->missions.message().startsWith(QStringLiteral("Not uploaded: Waypoint 3: ")), qPrintable(m_alice->missions.message()));
+        QVERIFY2(preparation->message().startsWith(QStringLiteral("Not uploaded: Waypoint 3: ")), qPrintable(preparation->message()));
         QTest::qWait(50);
         QCOMPARE(saved.count(), 0);
         QVERIFY(m_sim->world.vehicle(emu.mid(4).toInt())->model().mission().empty());
@@ -410,13 +421,16 @@ private slots:
         QVERIFY(openDemoRoute(*m_alice) > 0);
         client::RouteDocument *doc = m_alice->missions.document();
         doc->editor()->setAltitude({1}, 500); // above the route's maximum
-        QSignalSpy messages(&m_alice->missions, &MissionController::serverMessagesChanged);
-        m_alice->missions.process();
-        QVERIFY(messages.wait(10000));
-        QVERIFY(!m_alice->missions.processed()->flyable());
-        QVERIFY(!m_alice->missions.serverMessages().isEmpty());
-        QVERIFY2(m_alice->missions.serverMessages().join(' ').contains(QStringLiteral("altitude")),
-                 qPrintable(m_alice->missions.serverMessages().join(' ')));
+        QTRY_COMPARE(m_alice->fleet.count(), 3);
+        client::RoutePreparation *preparation = m_alice->missions.preparation();
+        preparation->setVehicleId(m_alice->fleet.index(0).data(client::VehicleFleet::VehicleIdRole).toString());
+        QSignalSpy previews(preparation, &client::RoutePreparation::previewChanged);
+        preparation->process();
+        QVERIFY(previews.wait(10000));
+        QCOMPARE(preparation->previewCount(), -1); // nothing the vehicle could fly
+        QVERIFY(!preparation->notices().isEmpty());
+        QVERIFY2(preparation->notices().join(' ').contains(QStringLiteral("altitude")), qPrintable(preparation->notices().join(' ')));
+        QVERIFY2(preparation->message().startsWith(QStringLiteral("Not processed for EMU-101: ")), qPrintable(preparation->message()));
     }
 
     void filesRoundTrip()

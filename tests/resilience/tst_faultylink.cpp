@@ -145,9 +145,10 @@ private slots:
         link.op.missions.save(); // lock, write, release: three slow round trips
         QVERIFY(saved.wait(15000));
         QVERIFY2(link.op.missions.message().startsWith(QStringLiteral("Saved")), qPrintable(link.op.missions.message()));
-        link.op.missions.process();
-        QTRY_VERIFY_WITH_TIMEOUT(link.op.missions.message().startsWith(QStringLiteral("Processed")), 15000);
+        link.op.missions.refresh(); // one more slow round trip: the server's route list
+        QVERIFY(link.op.missions.isBusy());
         QTRY_VERIFY_WITH_TIMEOUT(!link.op.missions.isBusy(), 15000);
+        QVERIFY2(link.op.missions.message().startsWith(QStringLiteral("Saved")), qPrintable(link.op.missions.message()));
 
         QCOMPARE(errors.count(), 0);
         QCOMPARE(link.op.states, statesBefore); // never left Ready
@@ -213,8 +214,10 @@ private slots:
         QVERIFY(saved.wait(10000));
         QTRY_COMPARE_WITH_TIMEOUT(link.connection()->pendingCount(), 0, 10000);
         link.proxy.injectToClients(garbage);
-        link.op.missions.process();
-        QTRY_VERIFY_WITH_TIMEOUT(link.op.missions.message().startsWith(QStringLiteral("Processed")), 10000);
+        link.op.missions.refresh(); // the route list, read again behind the garbage
+        QVERIFY(link.op.missions.isBusy());
+        QTRY_VERIFY_WITH_TIMEOUT(!link.op.missions.isBusy(), 10000);
+        QVERIFY2(!link.op.missions.message().startsWith(QStringLiteral("The server's routes could not be read")), qPrintable(link.op.missions.message()));
 
         QCOMPARE(link.connection()->framesDropped(), droppedBefore + 8); // each piece of garbage reported once
         QVERIFY(!link.op.states.contains(QStringLiteral("Reconnecting"))); // no reconnect was needed

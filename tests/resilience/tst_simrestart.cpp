@@ -83,22 +83,24 @@ private slots:
         doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820)); // the operator's edit, never saved
         QCOMPARE(doc->model()->count(), 5);
 
-        QSignalSpy uploaded(&op.missions, &MissionController::uploaded);
+        client::RoutePreparation &preparation = *op.missions.preparation();
+        client::MissionUploader &uploader = *preparation.uploader();
+        QSignalSpy uploaded(&preparation, &client::RoutePreparation::uploaded);
         QTRY_COMPARE_WITH_TIMEOUT(op.fleet->count(), 3, 10000);
         const QString emu = op.fleet->index(0).data(client::VehicleFleet::VehicleIdRole).toString();
-        op.missions.upload(emu);
+        preparation.setVehicleId(emu);
+        preparation.upload();
         // The edit is not saved: the uploader asks, and the operator uploads what is on screen.
-        QTRY_COMPARE(op.missions.uploader()->state(), client::MissionUploader::State::AwaitingConfirmation);
-        QVERIFY(op.missions.uploader()->question().contains(QLatin1String("not saved")));
-        op.missions.uploader()->confirm();
+        QTRY_COMPARE(uploader.state(), client::MissionUploader::State::AwaitingConfirmation);
+        QVERIFY(uploader.question().contains(QLatin1String("not saved")));
+        uploader.confirm();
         // The transfer has begun: the server reported progress.
-        QTRY_VERIFY_WITH_TIMEOUT(op.missions.progressMaximum() > 0
-                                     && op.missions.activity().startsWith(QStringLiteral("Uploading to")), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(uploader.progressMaximum() > 0 && uploader.activity().startsWith(QStringLiteral("Uploading to")), 10000);
         sim.kill();
 
         // Reported failed, the progress is over, and the edit is still on screen.
-        QTRY_VERIFY_WITH_TIMEOUT(!op.missions.isBusy(), 10000);
-        QVERIFY2(op.missions.message().startsWith(QStringLiteral("Upload to EMU-101 failed")), qPrintable(op.missions.message()));
+        QTRY_VERIFY_WITH_TIMEOUT(!uploader.isBusy(), 10000);
+        QVERIFY2(preparation.message().startsWith(QStringLiteral("Upload to EMU-101 failed")), qPrintable(preparation.message()));
         QCOMPARE(uploaded.count(), 0);
         QCOMPARE(doc->model()->count(), 5);
         QVERIFY(doc->isModified());
@@ -110,13 +112,13 @@ private slots:
         // Uploading again works, and what goes up is the edited route.
         QTRY_COMPARE_WITH_TIMEOUT(op.fleet->count(), 3, 10000);
         QTRY_VERIFY_WITH_TIMEOUT(op.fleet->vehicle(emu) && op.fleet->vehicle(emu)->isConnected(), 10000);
-        op.missions.upload(emu);
-        QTRY_COMPARE(op.missions.uploader()->state(), client::MissionUploader::State::AwaitingConfirmation);
-        op.missions.uploader()->confirm();
+        preparation.upload();
+        QTRY_COMPARE(uploader.state(), client::MissionUploader::State::AwaitingConfirmation);
+        uploader.confirm();
         QVERIFY(uploaded.wait(15000));
         QCOMPARE(uploaded.count(), 1);
-        QVERIFY2(op.missions.message().startsWith(QStringLiteral("Uploaded to EMU-101: ")), qPrintable(op.missions.message()));
-        QVERIFY(!op.missions.isBusy());
+        QVERIFY2(preparation.message().startsWith(QStringLiteral("Uploaded to EMU-101: ")), qPrintable(preparation.message()));
+        QVERIFY(!uploader.isBusy());
         QVERIFY(op.fleet->vehicle(emu)->mission().size() >= 5);
         QCOMPARE(doc->model()->count(), 5);
     }

@@ -99,14 +99,14 @@ class TestFlight : public QObject
         QTRY_COMPARE(vehicles->property("count").toInt(), m_client->fleet().count());
         vehicles->setProperty("currentIndex", row); // the chooser lists the fleet, in its order
         QObject *bar = m_client->find<QObject>(QStringLiteral("progressBar"));
-        client::MissionController *missions = &m_client->missions();
-        connect(missions, &client::MissionController::progressChanged, bar, [values, bar] {
+        client::MissionUploader *uploader = m_client->missions().preparation()->uploader();
+        connect(uploader, &client::MissionUploader::progressChanged, bar, [values, bar] {
             if (bar->property("to").toDouble() > 1)
                 values->append(bar->property("value").toDouble());
         });
-        connect(missions, &client::MissionController::activityChanged, bar, [activities, missions] {
-            if (!missions->activity().isEmpty() && (activities->isEmpty() || activities->back() != missions->activity()))
-                activities->append(missions->activity());
+        connect(uploader, &client::MissionUploader::stateChanged, bar, [activities, uploader] {
+            if (uploader->isBusy() && !uploader->isAsking() && (activities->isEmpty() || activities->back() != uploader->activity()))
+                activities->append(uploader->activity());
         });
         click("uploadButton");
     }
@@ -232,7 +232,7 @@ private slots:
         // Upload, the progress bar moving with the server's steps.
         QStringList activities;
         QList<double> values;
-        QSignalSpy uploaded(&m_client->missions(), &client::MissionController::uploaded);
+        QSignalSpy uploaded(m_client->missions().preparation(), &client::RoutePreparation::uploaded);
         STEP(pressUpload(row, &activities, &values));
         QVERIFY(uploaded.wait(20000));
         QVERIFY2(values.size() >= 3 && values.last() > values.first(), qPrintable(QString::number(values.size())));
@@ -269,8 +269,8 @@ private slots:
         QStringList activities;
         QList<double> values;
         STEP(pressUpload(row, &activities, &values));
-        QTRY_VERIFY2(text("missionMessage").startsWith(QStringLiteral("Not uploaded: ")), qPrintable(text("missionMessage")));
-        QVERIFY2(text("missionMessage").contains(QStringLiteral("maximum")), qPrintable(text("missionMessage")));
+        QTRY_VERIFY2(text("preparationMessage").startsWith(QStringLiteral("Not uploaded: ")), qPrintable(text("preparationMessage")));
+        QVERIFY2(text("preparationMessage").contains(QStringLiteral("maximum")), qPrintable(text("preparationMessage")));
         QVERIFY(vci->mission().empty());
         QVERIFY(simulated.model().mission().empty()); // nothing reached the vehicle
 
@@ -278,7 +278,7 @@ private slots:
         STEP(typeInTable(1, "altitude", QString::number(altitude)));
         QTRY_COMPARE(model->index(1).data(mission::RouteModel::AltitudeRole).toDouble(), altitude);
         activities.clear();
-        QSignalSpy uploaded(&m_client->missions(), &client::MissionController::uploaded);
+        QSignalSpy uploaded(m_client->missions().preparation(), &client::RoutePreparation::uploaded);
         STEP(pressUpload(row, &activities, &values));
         QObject *question = m_client->find<QObject>(QStringLiteral("uploadQuestion"));
         QTRY_VERIFY(question->property("opened").toBool());
@@ -288,7 +288,7 @@ private slots:
         // The stages shown while it went: prepared for the vehicle, sent, read back and compared.
         for (const QString &stage : {QStringLiteral("Uploading to %1"), QStringLiteral("Reading the mission back from %1")})
             QVERIFY2(activities.contains(stage.arg(vci->name())), qPrintable(activities.join(QStringLiteral(" | "))));
-        QTRY_VERIFY2(text("missionMessage").startsWith(QStringLiteral("Uploaded to %1").arg(vci->name())), qPrintable(text("missionMessage")));
+        QTRY_VERIFY2(text("preparationMessage").startsWith(QStringLiteral("Uploaded to %1").arg(vci->name())), qPrintable(text("preparationMessage")));
         QCOMPARE(simulated.model().mission().size(), vci->mission().size());
 
         ui::FlightStatus *status = nullptr;

@@ -308,16 +308,16 @@ private slots:
         QObject *bar = find<QObject>("progressBar");
         QList<double> values;
         // The bar's binding runs first (it was connected at load): read what it shows.
-        connect(&m_app->missions(), &client::MissionController::progressChanged, bar, [&values, bar] {
+        connect(m_app->missions().preparation()->uploader(), &client::MissionUploader::progressChanged, bar, [&values, bar] {
             if (bar->property("to").toDouble() > 1)
                 values.append(bar->property("value").toDouble());
         });
-        QSignalSpy uploaded(&m_app->missions(), &client::MissionController::uploaded);
+        QSignalSpy uploaded(m_app->missions().preparation(), &client::RoutePreparation::uploaded);
         click("uploadButton");
         QVERIFY(uploaded.wait(20000));
         QVERIFY2(values.size() >= 3, qPrintable(QString::number(values.size())));
         QVERIFY(values.last() > values.first());
-        QTRY_VERIFY2(text("missionMessage").startsWith(QStringLiteral("Uploaded to EMU-101: ")), qPrintable(text("missionMessage")));
+        QTRY_VERIFY2(text("preparationMessage").startsWith(QStringLiteral("Uploaded to EMU-101: ")), qPrintable(text("preparationMessage")));
     }
     // The demo route to a VCI vehicle: planned in the client, its heights made relative to the
     // vehicle's home through the ground the program's terrain (the server's) gives, so the result has
@@ -330,11 +330,11 @@ private slots:
         QTRY_COMPARE(vehicles->property("count").toInt(), 4);
         QTRY_COMPARE_WITH_TIMEOUT(m_app->fleet().index(3).data(client::VehicleFleet::LinkStateRole).toString(), QStringLiteral("Connected"), 10000);
         vehicles->setProperty("currentIndex", 3);
-        QSignalSpy uploaded(&m_app->missions(), &client::MissionController::uploaded);
+        QSignalSpy uploaded(m_app->missions().preparation(), &client::RoutePreparation::uploaded);
         click("uploadButton");
-        QVERIFY2(uploaded.wait(20000), qPrintable(text("missionMessage")));
-        QTRY_VERIFY2(text("missionMessage").startsWith(QStringLiteral("Uploaded to ")), qPrintable(text("missionMessage")));
-        QVERIFY2(!text("missionMessage").contains(QStringLiteral("as a height above home")), qPrintable(text("missionMessage")));
+        QVERIFY2(uploaded.wait(20000), qPrintable(text("preparationMessage")));
+        QTRY_VERIFY2(text("preparationMessage").startsWith(QStringLiteral("Uploaded to ")), qPrintable(text("preparationMessage")));
+        QVERIFY2(!text("preparationMessage").contains(QStringLiteral("as a height above home")), qPrintable(text("preparationMessage")));
         if (qEnvironmentVariableIsSet("SORTIE_SCREENSHOT_DIR"))
             m_window->grabWindow().save(QDir(qEnvironmentVariable("SORTIE_SCREENSHOT_DIR")).filePath(QStringLiteral("vci-upload.png")));
     }

@@ -46,7 +46,7 @@ ApplicationWindow {
     function undo() { missions.document.undo() }
     function redo() { missions.document.redo() }
     function deleteSelection() { if (currentPage === 1) missions.document.editor.removeRows(missions.document.selectedRows) }
-    function processRoute() { missions.process() }
+    function processRoute() { missions.preparation.process() }
     function toggleFullScreen() { window.visibility = window.visibility === Window.FullScreen ? Window.Windowed : Window.FullScreen }
 
     Connections {

@@ -9,6 +9,8 @@ import Sortie.Ui
 Pane {
     id: panel
     required property MissionController missions
+    readonly property RoutePreparation preparation: missions.preparation
+    readonly property bool uploading: preparation.uploader.busy && !preparation.uploader.asking
     required property RouteDocument doc          // the missions' document
     required property DisplayUnits units
     required property AbstractItemModel routeModel // the list model the table shows
@@ -78,27 +80,30 @@ Pane {
 
         RowLayout {
             Layout.fillWidth: true
-            Button { objectName: "processButton"; text: qsTr("Process"); onClicked: panel.missions.process()
-                     ToolTip.visible: hovered; ToolTip.text: qsTr("Let the server check and prepare the route (Ctrl+P)") }
+            Button { objectName: "processButton"; text: qsTr("Process")
+                     enabled: vehiclePicker.currentIndex >= 0 && !panel.preparation.processing
+                     onClicked: panel.preparation.process()
+                     ToolTip.visible: hovered; ToolTip.text: qsTr("Prepare the route for the chosen vehicle, as the upload will, and show what it would fly (Ctrl+P)") }
             ComboBox {
                 id: vehiclePicker
                 objectName: "vehiclePicker"
                 Layout.fillWidth: true
                 Layout.preferredWidth: 120
                 displayText: currentIndex < 0 ? qsTr("Vehicle…") : currentText
-                model: panel.missions.fleet // every vehicle, HCI and VCI
+                model: panel.preparation.fleet // every vehicle, HCI and VCI
                 textRole: "name"
                 valueRole: "vehicleId"
+                onCurrentValueChanged: panel.preparation.vehicleId = currentIndex >= 0 ? currentValue : ""
             }
-            Button { objectName: "uploadButton"; text: qsTr("Upload"); enabled: vehiclePicker.currentIndex >= 0 && !panel.missions.uploader.busy
-                     onClicked: panel.missions.upload(vehiclePicker.currentValue) }
-            Button { objectName: "cancelUploadButton"; text: qsTr("Cancel"); visible: panel.missions.uploader.canCancel
-                     onClicked: panel.missions.uploader.cancel() }
+            Button { objectName: "uploadButton"; text: qsTr("Upload"); enabled: vehiclePicker.currentIndex >= 0 && !panel.preparation.uploader.busy
+                     onClicked: panel.preparation.upload() }
+            Button { objectName: "cancelUploadButton"; text: qsTr("Cancel"); visible: panel.preparation.uploader.canCancel
+                     onClicked: panel.preparation.uploader.cancel() }
         }
 
         UploadQuestion {
-            uploader: panel.missions.uploader
-            onSaveAndUpload: panel.missions.saveAndUpload()
+            uploader: panel.preparation.uploader
+            onSaveAndUpload: panel.preparation.saveAndUpload()
         }
 
         Frame {
@@ -136,17 +141,27 @@ Pane {
         }
 
         ColumnLayout {
-            visible: panel.missions.busy
+            // The library's work (open, save) or an upload's, whichever runs: never both at once.
+            readonly property QtObject source: panel.uploading ? panel.preparation.uploader : panel.missions
+            visible: panel.missions.busy || panel.uploading
             Layout.fillWidth: true
-            Label { text: panel.missions.activity + "…" }
+            Label { text: parent.source.activity + "…" }
             ProgressBar {
                 objectName: "progressBar"
                 Layout.fillWidth: true
-                indeterminate: panel.missions.progressMaximum <= 0
+                indeterminate: parent.source.progressMaximum <= 0
                 from: 0
-                to: Math.max(1, panel.missions.progressMaximum)
-                value: panel.missions.progressValue
+                to: Math.max(1, parent.source.progressMaximum)
+                value: parent.source.progressValue
             }
+        }
+
+        Label {
+            objectName: "preparationMessage"
+            visible: text.length > 0
+            text: panel.preparation.message
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
         }
 
         Label {
@@ -217,7 +232,7 @@ Pane {
             Layout.fillWidth: true
             Layout.preferredHeight: Math.min(contentHeight, 70)
             clip: true
-            model: panel.missions.serverMessages
+            model: panel.preparation.notices
             delegate: Label { required property string modelData; text: modelData; wrapMode: Text.Wrap; width: ListView.view.width }
         }
 

@@ -8,9 +8,9 @@
 #include "CommandPolicy.h"
 #include "ElevationService.h"
 #include "MissionUploader.h"
+#include "RoutePreparation.h"
 #include "ConnectionController.h"
 #include "MissionController.h"
-#include "ProcessedPlanModel.h"
 #include "RouteAnalyzer.h"
 #include "RouteConflict.h"
 #include "RouteDocument.h"
@@ -128,12 +128,13 @@ struct ValidationIssueModelForeign
     QML_NAMED_ELEMENT(ValidationIssueModel)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
-struct ProcessedPlanModelForeign
+
+struct RoutePreparationForeign
 {
     Q_GADGET
-    QML_FOREIGN(sortie::mission::ProcessedPlanModel)
-    QML_NAMED_ELEMENT(ProcessedPlanModel)
-    QML_UNCREATABLE("made by the program and handed to the views")
+    QML_FOREIGN(sortie::client::RoutePreparation)
+    QML_NAMED_ELEMENT(RoutePreparation)
+    QML_UNCREATABLE("made by the MissionController")
 };
 
 struct MissionUploaderForeign

@@ -58,7 +58,7 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
 
     if (options.vehicles) {
         m_fleet = std::make_unique<VehicleFleet>(m_hciClient.get(), ground);
-        m_missions->setFleet(m_fleet.get()); // the upload chooser lists every vehicle of the fleet
+        m_missions->preparation()->setFleet(m_fleet.get()); // Process and Upload choose from every vehicle of the fleet
     }
 
     if (!options.autosaveDirectory.isEmpty()) {
@@ -130,7 +130,7 @@ QStringList ClientGraph::wiring() const
           << QStringLiteral("vehicles: %1").arg(!m_fleet ? QStringLiteral("none")
                                                 : m_fleet->elevation() == ground ? QStringLiteral("fleet planning over the ground")
                                                                                  : QStringLiteral("fleet without ground"))
-          << QStringLiteral("upload chooser: %1").arg(yesNo(m_fleet && m_missions->fleet() == m_fleet.get(), "the fleet", "none"))
+          << QStringLiteral("upload chooser: %1").arg(yesNo(m_fleet && m_missions->preparation()->fleet() == m_fleet.get(), "the fleet", "none"))
           << QStringLiteral("autosave: %1").arg(yesNo(m_autosave && m_autosave->isActive(), "on", "off"))
           << QStringLiteral("recovery: %1").arg(yesNo(m_recovery != nullptr, "on", "off"))
           << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))
