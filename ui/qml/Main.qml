@@ -79,12 +79,13 @@ ApplicationWindow {
             ToolButton {
                 objectName: "logSettingsButton"
                 text: qsTr("Logs…")
-                onClicked: logSettingsDialog.open()
+                onClicked: { logSettingsDialog.active = true; logSettingsDialog.item.open() }
                 ToolTip.visible: hovered
                 ToolTip.text: qsTr("Where flight logs are recorded, and how much they may take")
-                FlightLogSettingsDialog {
+                Loader { // made when first opened: the start-up does not pay for it
                     id: logSettingsDialog
-                    settings: window.recordingSettings
+                    active: false
+                    sourceComponent: FlightLogSettingsDialog { settings: window.recordingSettings }
                 }
             }
             ToolButton {

@@ -43,10 +43,11 @@ ToolBar {
             Button {
                 objectName: "serverHistoryButton"
                 text: qsTr("Server history…")
-                onClicked: historyDialog.open()
-                ServerHistoryDialog {
+                onClicked: { historyDialog.active = true; historyDialog.item.open() }
+                Loader { // made when first opened: the start-up does not pay for it
                     id: historyDialog
-                    request: bar.serverHistory
+                    active: false
+                    sourceComponent: ServerHistoryDialog { request: bar.serverHistory }
                 }
             }
             Rectangle {
