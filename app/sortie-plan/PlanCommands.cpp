@@ -18,6 +18,7 @@
 #include <QFileInfo>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace sortie::plan {
@@ -48,6 +49,8 @@ void printNotices(const QStringList &notices, Streams io)
 
 QString duration(double seconds)
 {
+    if (!std::isfinite(seconds))
+        return QStringLiteral("unknown");  // a leg with no speed at all
     const qint64 s = qRound64(seconds);
     return QStringLiteral("%1:%2:%3").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
 }
