@@ -23,6 +23,7 @@ ApplicationWindow {
     property RecordingSettings recordingSettings: null  // the flight logs' folder and limits (Logs…)
     // Edits a previous run left unsaved, offered at start.
     property AutosaveRecovery recovery: null
+    property QtObject endurance: null   // the open route's endurance (RouteEndurance; its views are to come)
     property string connectionState: connection ? connection.state : "Disconnected"
     property string connectionDetail: connection ? connection.statusDetail : ""
 
