@@ -70,11 +70,13 @@ public:
                 start(Series::Time, t->intervalSeconds, t->shots);
         }
     }
-    void fly(double meters, double seconds)
+    // `seconds` is asked for only while a series by time runs.
+    template<typename Seconds>
+    void fly(double meters, Seconds seconds)
     {
         if (m_series == Series::None)
             return;
-        m_since += m_series == Series::Distance ? meters : seconds;
+        m_since += m_series == Series::Distance ? meters : seconds();
         while (m_since >= m_interval && m_left != 0) {
             ++m_photos;
             m_since -= m_interval;
@@ -150,13 +152,14 @@ RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
             continue;
         }
         const PathPoint &q = path[i - 1];
-        const double d = geodesicDistance(q.position, p.position);
+        // The timeline measured the leg already (leg i runs from point i-1 to point i).
+        const double d = timeline ? timeline->legs()[i - 1].distance : geodesicDistance(q.position, p.position);
         st.lengthMeters += d;
         if (p.altitudeType == q.altitudeType) {
             const double dh = p.altitude - q.altitude;
             (dh > 0 ? st.climbMeters : st.descentMeters) += std::abs(dh);
         }
-        cameraActions.fly(d, legSeconds(i - 1));
+        cameraActions.fly(d, [&] { return legSeconds(i - 1); });
         arriveAtWaypoint();
     }
     st.photoCount += cameraActions.photos();
