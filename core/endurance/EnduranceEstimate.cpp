@@ -176,6 +176,10 @@ Result<EnduranceEstimate> estimateEndurance(const Route &route, const EnergyProf
     std::vector<LegParts> parts;
     std::vector<double> startWh, endWh, startDistance;
     parts.reserve(legs.size());
+    startWh.reserve(legs.size());
+    endWh.reserve(legs.size());
+    startDistance.reserve(legs.size());
+    est.legs.reserve(legs.size());
     double used = 0.0, distance = 0.0;
     for (const TimedLeg &l : legs) {
         parts.push_back(legParts(l, profile));

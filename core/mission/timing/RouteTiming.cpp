@@ -35,23 +35,47 @@ double horizontalSeconds(double d, double v, const std::optional<double> &a, boo
     return stops == 2 ? 2 * std::sqrt(d / *a) : std::sqrt(2 * d / *a);
 }
 
-// The track's bearing for the wind triangle. A short leg (within kShortLegDegrees) is a straight
-// line on the local ellipsoid to far better than a wind's direction is known, and this is ten
-// times cheaper than Vincenty's iteration; longer legs take the geodesic's initial azimuth.
-double trackDeg(const GeoPoint &from, const GeoPoint &to)
+// The track's direction as a unit vector (east, north) for the wind triangle. A short leg (within
+// kShortLegDegrees) is a straight line on the local ellipsoid to far better than a wind's direction
+// is known, and this is many times cheaper than Vincenty's iteration; longer legs take the
+// geodesic's initial azimuth.
+struct Track
+{
+    double east = 0.0, north = 1.0;
+};
+
+Track trackOf(const GeoPoint &from, const GeoPoint &to)
 {
     const double dLat = to.latitude - from.latitude, dLon = normalizeLongitude(to.longitude - from.longitude);
     if (std::abs(dLat) > kShortLegDegrees || std::abs(dLon) > kShortLegDegrees) {
         const std::optional<GeodesicInverse> g = geodesicInverse(from, to);
-        return g ? g->azimuth1Deg : 0.0;
+        const double az = (g ? g->azimuth1Deg : 0.0) * kPi / 180.0;
+        return {std::sin(az), std::cos(az)};
     }
     constexpr Ellipsoid e = Ellipsoid::wgs84();
     const double e2 = e.f * (2 - e.f);
     const double phi = (from.latitude + to.latitude) / 2 * kPi / 180.0;
-    const double w = 1 - e2 * std::sin(phi) * std::sin(phi);
-    const double north = dLat * e.a * (1 - e2) / (w * std::sqrt(w));         // meridian radius
-    const double east = dLon * e.a / std::sqrt(w) * std::cos(phi);            // prime vertical radius
-    return std::atan2(east, north) * 180.0 / kPi;
+    const double sinPhi = std::sin(phi);
+    const double w = 1 - e2 * sinPhi * sinPhi;
+    const double north = dLat * (1 - e2) / w;                 // meridian radius / prime vertical radius
+    const double east = dLon * std::cos(phi);
+    const double length = std::hypot(east, north);
+    return length > 0 ? Track{east / length, north / length} : Track{};
+}
+
+// Ground speed along a track at an air speed in a wind given as the vector it blows towards (m/s
+// east, north); nullopt when the vehicle cannot make headway.
+std::optional<double> groundSpeedAlong(double airSpeed, const Track &t, double windEast, double windNorth)
+{
+    const double along = windEast * t.east + windNorth * t.north;
+    const double across = windNorth * t.east - windEast * t.north;
+    if (std::abs(across) >= airSpeed)
+        return std::nullopt;
+    // The heading crabs into the cross wind; what is left of the air speed goes along the track.
+    const double gs = std::sqrt(airSpeed * airSpeed - across * across) + along;
+    if (!(gs > 1e-6))
+        return std::nullopt;
+    return gs;
 }
 
 QString legName(int leg, bool home)
@@ -63,7 +87,13 @@ QString legName(int leg, bool home)
 class LegBuilder
 {
 public:
-    LegBuilder(const TimingParameters &p) : m_p(p) {}
+    explicit LegBuilder(const TimingParameters &p)
+        : m_p(p)
+        // The wind blows towards fromDeg + 180°.
+        , m_windEast(-p.wind.speed * std::sin(p.wind.fromDeg * kPi / 180.0))
+        , m_windNorth(-p.wind.speed * std::cos(p.wind.fromDeg * kPi / 180.0))
+    {
+    }
 
     // Fills the move of a leg whose ends, speeds and stops are set; an error when it cannot be flown.
     std::optional<MissionError> move(TimedLeg &leg, double speed, bool stopAtStart, bool stopAtEnd) const
@@ -74,7 +104,7 @@ public:
             if (!(leg.airSpeed > 0))
                 return MissionError{QStringLiteral("%1 has no speed, and no cruise speed is given").arg(legName(leg.leg, leg.returnHome)), {}, 0, 0, {}};
             if (m_p.wind.speed > 0) {
-                const std::optional<double> gs = groundSpeed(leg.airSpeed, trackDeg(leg.from, leg.to), m_p.wind);
+                const std::optional<double> gs = groundSpeedAlong(leg.airSpeed, trackOf(leg.from, leg.to), m_windEast, m_windNorth);
                 if (!gs)
                     return MissionError{QStringLiteral("%1 cannot be flown at %2 m/s against a %3 m/s wind from %4°")
                                             .arg(legName(leg.leg, leg.returnHome))
@@ -117,6 +147,7 @@ public:
 
 private:
     const TimingParameters &m_p;
+    double m_windEast, m_windNorth;  // m/s, the way the wind blows
     double m_clock = 0.0;
 };
 
@@ -177,16 +208,8 @@ std::optional<double> groundSpeed(double airSpeed, double trackDeg, const Wind &
 {
     if (!(wind.speed > 0))
         return airSpeed;
-    // The wind blows towards fromDeg + 180°; split it along and across the track.
-    const double delta = (wind.fromDeg + 180.0 - trackDeg) * kPi / 180.0;
-    const double along = wind.speed * std::cos(delta), across = wind.speed * std::sin(delta);
-    if (std::abs(across) >= airSpeed)
-        return std::nullopt;
-    // The heading crabs into the cross wind; what is left of the air speed goes along the track.
-    const double gs = std::sqrt(airSpeed * airSpeed - across * across) + along;
-    if (!(gs > 1e-6))
-        return std::nullopt;
-    return gs;
+    const double track = trackDeg * kPi / 180.0, from = wind.fromDeg * kPi / 180.0;
+    return groundSpeedAlong(airSpeed, {std::sin(track), std::cos(track)}, -wind.speed * std::sin(from), -wind.speed * std::cos(from));
 }
 
 RouteTimeline::RouteTimeline(std::vector<TimedLeg> legs) : m_legs(std::move(legs)) {}
