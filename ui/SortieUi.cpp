@@ -9,6 +9,7 @@
 #include "MissionController.h"
 #include "RecordingSettings.h"
 #include "ReplayController.h"
+#include "RouteEndurance.h"
 #include "ServerHistoryRequest.h"
 #include "VehicleFleet.h"
 
@@ -32,7 +33,8 @@ QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settin
             {QStringLiteral("comparison"), QVariant::fromValue<QObject *>(&graph.comparison())},
             {QStringLiteral("serverHistory"), QVariant::fromValue<QObject *>(&graph.serverHistory())},
             {QStringLiteral("recordingSettings"), QVariant::fromValue<QObject *>(&graph.recordingSettings())},
-            {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(graph.recovery())}};
+            {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(graph.recovery())},
+            {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())}};
 }
 
 } // namespace sortie::ui

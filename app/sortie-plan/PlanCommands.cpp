@@ -3,6 +3,8 @@
 #include "AreaScanPlanner.h"
 #include "DjiDroneModels.h"
 #include "ElevationService.h"
+#include "EnduranceReport.h"
+#include "EnduranceRule.h"
 #include "HgtTileSource.h"
 #include "MissionFiles.h"
 #include "ReportJson.h"
@@ -16,6 +18,7 @@
 #include <QFileInfo>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace sortie::plan {
@@ -46,6 +49,8 @@ void printNotices(const QStringList &notices, Streams io)
 
 QString duration(double seconds)
 {
+    if (!std::isfinite(seconds))
+        return QStringLiteral("unknown");  // a leg with no speed at all
     const qint64 s = qRound64(seconds);
     return QStringLiteral("%1:%2:%3").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
 }
@@ -115,9 +120,27 @@ int runStats(const QStringList &args, Streams io)
     QCommandLineParser p;
     p.addOption({QStringLiteral("json"), QStringLiteral("Machine-readable output.")});
     p.addOption({QStringLiteral("dem"), QStringLiteral("SRTM .hgt tile or folder: check the terrain rules too."), QStringLiteral("PATH")});
+    p.addOption({QStringLiteral("vehicle"), QStringLiteral("Energy profile (JSON): time and energy per leg, batteries, point of no return."),
+                 QStringLiteral("PROFILE")});
+    p.addOption({QStringLiteral("wind"), QStringLiteral("With --vehicle: wind speed (m/s) and the direction it blows from (degrees)."),
+                 QStringLiteral("SPEED,FROM_DEG")});
+    p.addOption({QStringLiteral("turns"), QStringLiteral("With --vehicle: coordinated (default) or stop (stop and turn at every waypoint)."),
+                 QStringLiteral("MODE")});
     if (!parse(p, args, 1, io))
         return Failure;
     const QString file = p.positionalArguments().at(0);
+    std::optional<EnduranceInput> endurance;
+    if (p.isSet(QStringLiteral("vehicle"))) {
+        QString error;
+        endurance = readEnduranceInput(p.value(QStringLiteral("vehicle")), p.value(QStringLiteral("wind")), p.value(QStringLiteral("turns")), &error);
+        if (!endurance) {
+            io.err << "sortie-plan: " << error << "\n";
+            return Failure;
+        }
+    } else if (p.isSet(QStringLiteral("wind")) || p.isSet(QStringLiteral("turns"))) {
+        io.err << "sortie-plan: --wind and --turns need --vehicle PROFILE.json\n";
+        return Failure;
+    }
     const Result<LoadedMission> loaded = loadMission(file);
     if (!loaded) {
         io.err << "sortie-plan: " << loaded.error().toString() << "\n";
@@ -157,11 +180,24 @@ int runStats(const QStringList &args, Streams io)
             std::stable_sort(report.issues.begin(), report.issues.end(),
                              [](const ValidationIssue &a, const ValidationIssue &b) { return a.segment < b.segment; });
         }
+        // With --vehicle, the endurance rules join the validation; a route that needs more than one
+        // battery (planned changes or not) or cannot be flown in the wind exits 2.
+        std::optional<Result<endurance::EnduranceEstimate>> estimate;
+        if (endurance) {
+            estimate = endurance::estimateEndurance(r, endurance->profile, endurance->conditions, &cache);
+            const auto found = endurance::enduranceIssues(r, endurance->profile, *estimate);
+            report.issues.insert(report.issues.end(), found.begin(), found.end());
+            std::stable_sort(report.issues.begin(), report.issues.end(),
+                             [](const ValidationIssue &a, const ValidationIssue &b) { return a.segment < b.segment; });
+            errors |= !estimate->ok() || !estimate->value().fitsOneBattery();
+        }
         errors |= report.hasErrors();
         if (p.isSet(QStringLiteral("json"))) {
             Json route{{"name", r.settings.name.toStdString()}, {"statistics", statisticsJson(st)}, {"validation", validationJson(report)}};
             if (profile)
                 route["terrain"] = terrainJson(profiles[ri], *profile, false);
+            if (estimate)
+                route["endurance"] = estimate->ok() ? enduranceJson(*endurance, estimate->value()) : Json(nullptr);
             routes.push_back(std::move(route));
             continue;
         }
@@ -182,6 +218,10 @@ int runStats(const QStringList &args, Streams io)
             else
                 io.out << "no data under the route\n";
         }
+        if (estimate && estimate->ok())
+            printEndurance(io.out, r, *endurance, estimate->value());
+        else if (estimate)
+            io.out << "  endurance: " << estimate->error().message << "\n";
         io.out << "  " << report.errorCount() << " error(s), " << report.warningCount() << " warning(s)\n";
         for (const ValidationIssue &i : report.issues)
             io.out << "    " << (i.severity == Severity::Error ? "error" : "warning") << " [" << i.rule << "] " << i.message << "\n";

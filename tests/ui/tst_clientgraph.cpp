@@ -2,6 +2,7 @@
 // services, wired to each other the same way), and the main window is handed every one of them.
 #include "AutosaveRecovery.h"
 #include "ClientGraph.h"
+#include "RouteEndurance.h"
 #include "ClientWindow.h"
 #include "ElevationService.h"
 #include "LaunchOptions.h"
@@ -63,7 +64,7 @@ private slots:
         const std::pair<const char *, QObject *> expected[] = {
             {"connection", &graph.connection()}, {"missions", &graph.missions()}, {"fleet", graph.fleet()},
             {"elevation", graph.elevation()}, {"replay", &graph.replay()},
-            {"recovery", graph.recovery()}};
+            {"recovery", graph.recovery()}, {"endurance", &graph.endurance()}};
         for (const auto &[name, object] : expected) {
             QVERIFY2(object, name);
             QCOMPARE(window->property(name).value<QObject *>(), object);

@@ -20,6 +20,7 @@ ApplicationWindow {
     required property ServerHistoryRequest serverHistory   // the server's history into the replay
     required property RecordingSettings recordingSettings  // the flight logs' folder and limits (Logs…)
     required property AutosaveRecovery recovery     // edits a previous run left unsaved; may be null
+    required property RouteEndurance endurance      // will the battery last: the open route's endurance
     property string connectionState: connection.state
     property string connectionDetail: connection.statusDetail
 

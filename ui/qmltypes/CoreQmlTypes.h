@@ -9,6 +9,7 @@
 #include "ElevationService.h"
 #include "MissionUploader.h"
 #include "RoutePreparation.h"
+#include "RouteEndurance.h"
 #include "ConnectionController.h"
 #include "MissionController.h"
 #include "RouteAnalyzer.h"
@@ -126,6 +127,14 @@ struct ValidationIssueModelForeign
     Q_GADGET
     QML_FOREIGN(sortie::mission::ValidationIssueModel)
     QML_NAMED_ELEMENT(ValidationIssueModel)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+
+struct RouteEnduranceForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::endurance::RouteEndurance)
+    QML_NAMED_ELEMENT(RouteEndurance)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 

@@ -4,6 +4,7 @@
 #include "ComparisonController.h"
 #include "ConnectionController.h"
 #include "ElevationSetup.h"
+#include "EnduranceRule.h"
 #include "FleetRecording.h"
 #include "FlightRecorder.h"
 #include "HciClient.h"
@@ -15,6 +16,8 @@
 #include "RouteAutosave.h"
 #include "RouteDocument.h"
 #include "RouteEditor.h"
+#include "RouteEndurance.h"
+#include "RouteModel.h"
 #include "ServerHistoryRequest.h"
 #include "VehicleFleet.h"
 
@@ -55,6 +58,8 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
     document->analyzer()->addRule(m_elevation->rule());
     terrain::ElevationService *ground = m_elevation->service();
     document->editor()->setGroundLookup([ground](const mission::GeoPoint &p) { return ground->groundAt(p); });
+    // The open route's endurance: the operator's energy profile (remembered in the settings) and its rule.
+    m_endurance = std::make_unique<endurance::RouteEndurance>(storage, document->analyzer(), document->model());
 
     if (options.vehicles) {
         m_fleet = std::make_unique<VehicleFleet>(m_hciClient.get(), ground);
@@ -105,6 +110,7 @@ ClientGraph::~ClientGraph()
     m_autosave.reset();
     m_recovery.reset();
     m_fleet.reset();
+    m_endurance.reset();
     m_missions.reset();
     m_elevation.reset();
     m_connection.reset();
@@ -123,9 +129,11 @@ QStringList ClientGraph::wiring() const
     const terrain::ElevationService *ground = m_elevation->service();
     const auto &rules = document->analyzer()->rules();
     const bool terrainRule = std::any_of(rules.begin(), rules.end(), [&](const auto &r) { return r == m_elevation->rule(); });
+    const bool enduranceRule = std::any_of(rules.begin(), rules.end(), [&](const auto &r) { return r == m_endurance->rule(); });
     QStringList lines;
     lines << QStringLiteral("terrain sources: %1").arg(ground->sourceNames().join(QStringLiteral(", ")))
           << QStringLiteral("route validation: %1").arg(yesNo(terrainRule, "with the terrain rule", "without terrain"))
+          << QStringLiteral("endurance: %1").arg(yesNo(enduranceRule, "the route's estimate and rule", "none"))
           << QStringLiteral("height conversions: %1").arg(yesNo(document->editor()->hasGroundLookup(), "through the ground", "none"))
           << QStringLiteral("vehicles: %1").arg(!m_fleet ? QStringLiteral("none")
                                                 : m_fleet->elevation() == ground ? QStringLiteral("fleet planning over the ground")

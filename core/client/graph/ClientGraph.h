@@ -27,6 +27,10 @@ class ReplayController;
 class ServerHistoryRequest;
 } // namespace sortie::flightlog
 
+namespace sortie::endurance {
+class RouteEndurance;
+} // namespace sortie::endurance
+
 namespace sortie::client {
 
 class AutosaveRecovery;
@@ -37,7 +41,7 @@ class VehicleFleet;
 
 // The client's object graph, built and wired in one place: the HCI session and the controllers the
 // views bind to, the terrain sources and what uses them (the fleet's VCI planning, the route's
-// validation, the editor's height conversions), autosave and recovery, the flight recorder and
+// validation, the editor's height conversions), the open route's endurance (its rule), autosave and recovery, the flight recorder and
 // replay. The program (app/sortie) and every test fixture build it, so a test runs the program's own
 // wiring; a fixture changes what it must (folders, no vehicles) through Options, never by hand.
 class ClientGraph
@@ -69,6 +73,7 @@ public:
     RouteAutosave *autosave() { return m_autosave.get(); }        // nullptr without an autosave folder
     flightlog::FlightRecorder &recorder() { return *m_recorder; }
     flightlog::RecordingSettings &recordingSettings() { return *m_recordingSettings; }
+    endurance::RouteEndurance &endurance() { return *m_endurance; }
     flightlog::ReplayController &replay() { return *m_replay; }
     flightlog::ComparisonController &comparison() { return *m_comparison; }
     flightlog::ServerHistoryRequest &serverHistory() { return *m_serverHistory; }
@@ -86,6 +91,7 @@ private:
     std::unique_ptr<ConnectionController> m_connection;
     std::unique_ptr<MissionController> m_missions;
     std::unique_ptr<terrain::ElevationSetup> m_elevation;
+    std::unique_ptr<endurance::RouteEndurance> m_endurance;
     std::unique_ptr<VehicleFleet> m_fleet;
     std::unique_ptr<AutosaveRecovery> m_recovery;
     std::unique_ptr<RouteAutosave> m_autosave;

@@ -4,11 +4,13 @@
 
 #include "FlightPath.h"
 #include "Geodesy.h"
+#include "RouteTiming.h"
 #include "ScanPlanCache.h"
 #include "SegmentPlanning.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sortie::mission {
 
@@ -68,11 +70,13 @@ public:
                 start(Series::Time, t->intervalSeconds, t->shots);
         }
     }
-    void fly(double meters, double seconds)
+    // `seconds` is asked for only while a series by time runs.
+    template<typename Seconds>
+    void fly(double meters, Seconds seconds)
     {
         if (m_series == Series::None)
             return;
-        m_since += m_series == Series::Distance ? meters : seconds;
+        m_since += m_series == Series::Distance ? meters : seconds();
         while (m_since >= m_interval && m_left != 0) {
             ++m_photos;
             m_since -= m_interval;
@@ -120,11 +124,12 @@ RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
     }
     const std::vector<PathPoint> path = flightPath(route, cache);
     st.pathPointCount = int(path.size());
-    const VehicleProfile &profile = route.settings.profile;
-    auto verticalTime = [&](double dh) {
-        if (dh > 0)
-            return profile.climbRate > 0 ? dh / profile.climbRate : 0.0;
-        return profile.descentRate > 0 ? -dh / profile.descentRate : 0.0;
+    // The time comes from the one time model (core/mission/timing); a route it cannot time (a leg
+    // with no speed at all) has no flight time rather than a wrong one.
+    const Result<RouteTimeline> timeline = timePath(route, path, timingOf(route.settings));
+    st.flightTimeSeconds = timeline ? timeline->totalSeconds() : std::numeric_limits<double>::quiet_NaN();
+    const auto legSeconds = [&](size_t leg) {
+        return timeline && leg < timeline->legs().size() ? timeline->legs()[leg].moveSeconds : 0.0;
     };
 
     std::vector<GeoPoint> positions;
@@ -138,39 +143,32 @@ RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
                 if (const Waypoint *w = asWaypoint(route.segments[size_t(p.segment)]))
                     cameraActions.arrive(w->actions);
         };
-        st.flightTimeSeconds += p.holdSeconds;
         if (p.role == WaypointRole::Takeoff && p.altitudeType == AltitudeType::Agl)
-            st.flightTimeSeconds += verticalTime(p.altitude), st.climbMeters += std::max(0.0, p.altitude);
+            st.climbMeters += std::max(0.0, p.altitude);
         if (p.role == WaypointRole::Land && p.altitudeType == AltitudeType::Agl)
-            st.flightTimeSeconds += verticalTime(-p.altitude), st.descentMeters += std::max(0.0, p.altitude);
+            st.descentMeters += std::max(0.0, p.altitude);
         if (i == 0) {
             arriveAtWaypoint();
             continue;
         }
         const PathPoint &q = path[i - 1];
-        const double d = geodesicDistance(q.position, p.position);
+        // The timeline measured the leg already (leg i runs from point i-1 to point i).
+        const double d = timeline ? timeline->legs()[i - 1].distance : geodesicDistance(q.position, p.position);
         st.lengthMeters += d;
-        double dh = 0.0;
         if (p.altitudeType == q.altitudeType) {
-            dh = p.altitude - q.altitude;
+            const double dh = p.altitude - q.altitude;
             (dh > 0 ? st.climbMeters : st.descentMeters) += std::abs(dh);
         }
-        const double horizontal = p.speed > 0 ? d / p.speed : 0.0;
-        const double legSeconds = std::max(horizontal, verticalTime(dh));
-        st.flightTimeSeconds += legSeconds;
-        cameraActions.fly(d, legSeconds);
+        cameraActions.fly(d, [&] { return legSeconds(i - 1); });
         arriveAtWaypoint();
     }
     st.photoCount += cameraActions.photos();
     const RouteSettings &rs = route.settings;
     if (rs.endAction == EndAction::ReturnHome && rs.home && !path.empty()) {
-        // Fly home at the last leg's speed, then descend from the last AGL altitude.
         const PathPoint &last = path.back();
-        const double d = geodesicDistance(last.position, rs.home->position);
-        st.lengthMeters += d;
-        st.flightTimeSeconds += last.speed > 0 ? d / last.speed : 0.0;
+        st.lengthMeters += geodesicDistance(last.position, rs.home->position);
         if (last.altitudeType == AltitudeType::Agl)
-            st.flightTimeSeconds += verticalTime(-last.altitude), st.descentMeters += std::max(0.0, last.altitude);
+            st.descentMeters += std::max(0.0, last.altitude);
         positions.push_back(rs.home->position);
     }
     st.boundingBox = boundingBoxOf(positions);
