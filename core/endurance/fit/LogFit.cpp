@@ -43,13 +43,14 @@ LoadedFlights loadFlights(const QStringList &paths, const QString &vehicle)
 
 namespace {
 
-QString figure(const char *label, const Estimate &e, const char *unit, int precision)
+QString figure(const char *label, const Estimate &e, const char *unit, int precision, const char *counted = "n = ")
 {
     const QString head = QStringLiteral("%1").arg(QLatin1String(label), -16);
     if (!e.ok())
         return head + QStringLiteral("missing: ") + e.missing;
     const QString spread = std::isfinite(e.spread) ? QStringLiteral("± %1").arg(e.spread, 0, 'f', precision) : QStringLiteral("± —");
-    return head + QStringLiteral("%1 %2 %3 (n = %4)").arg(*e.value, 8, 'f', precision).arg(QLatin1String(unit), -3).arg(spread, -9).arg(e.count);
+    return head + QStringLiteral("%1 %2 %3 (%4%5)").arg(*e.value, 8, 'f', precision).arg(QLatin1String(unit), -3).arg(spread, -9)
+                      .arg(QLatin1String(counted)).arg(e.count);
 }
 
 } // namespace
@@ -65,7 +66,7 @@ QString fitReport(const EnergyFit &fit)
     lines << figure("climb rate", fit.climbRate, "m/s", 2);
     lines << figure("descent power", fit.descentPowerW, "W", 1);
     lines << figure("descent rate", fit.descentRate, "m/s", 2);
-    lines << figure("battery", fit.batteryWh, "Wh", 1) + (fit.batteryWh.ok() ? QStringLiteral(" flights") : QString());
+    lines << figure("battery", fit.batteryWh, "Wh", 1, "flights: ");
     lines << QStringLiteral("capacity: ") + fit.capacitySource;
     for (const QString &note : fit.notes)
         lines << QStringLiteral("note: ") + note;
