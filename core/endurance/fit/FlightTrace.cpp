@@ -4,6 +4,7 @@
 
 #include <QFileInfo>
 
+#include <algorithm>
 #include <cmath>
 
 namespace sortie::endurance::fit {
@@ -20,9 +21,16 @@ class HeldValue
 {
 public:
     HeldValue(std::vector<TelemetrySample> series, int64_t maxAgeMs)
-        : m_series(std::move(series))
+        : m_series(inTimeOrder(std::move(series)))
         , m_maxAgeMs(maxAgeMs)
     {
+    }
+    // Blocks are in the order of their first sample; a vehicle whose state changes are stamped by
+    // another clock than its telemetry (a sped-up sim's) can interleave them.
+    static std::vector<TelemetrySample> inTimeOrder(std::vector<TelemetrySample> series)
+    {
+        std::stable_sort(series.begin(), series.end(), [](const TelemetrySample &a, const TelemetrySample &b) { return a.time < b.time; });
+        return series;
     }
     double at(int64_t time)
     {
@@ -56,7 +64,8 @@ FlightTrace traceOf(const flightlog::FlightLog &log, int vehicle)
     trace.name = QStringLiteral("%1: %2").arg(QFileInfo(log.path()).fileName(), log.vehicles()[size_t(vehicle)].name());
     std::vector<TelemetrySample> current = log.series(vehicle, TelemetryField::BatteryCurrent);
     trace.currentReported = anyFinite(current);
-    const std::vector<TelemetrySample> grid = trace.currentReported ? current : log.series(vehicle, TelemetryField::BatteryRemaining);
+    const std::vector<TelemetrySample> grid =
+        HeldValue::inTimeOrder(trace.currentReported ? current : log.series(vehicle, TelemetryField::BatteryRemaining));
     HeldValue groundSpeed(log.series(vehicle, TelemetryField::GroundSpeed), kFreshMs);
     HeldValue verticalSpeed(log.series(vehicle, TelemetryField::VerticalSpeed), kFreshMs);
     HeldValue altitude(log.series(vehicle, TelemetryField::AltitudeAgl), kFreshMs);

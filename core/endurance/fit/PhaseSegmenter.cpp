@@ -19,7 +19,9 @@ const char *phaseName(Phase phase)
 
 Phase classify(const PowerSample &s, const PhaseThresholds &t)
 {
-    if (s.armed == 0.0 || (std::isfinite(s.altitudeAgl) && s.altitudeAgl < t.airborneAbove))
+    // The height decides where there is one: arming is a state change, which some links stamp by
+    // the ground station's clock rather than the vehicle's (docs/endurance-fit.md).
+    if (std::isfinite(s.altitudeAgl) ? s.altitudeAgl < t.airborneAbove : s.armed == 0.0)
         return Phase::Ground;
     if (!std::isfinite(s.groundSpeed) || !std::isfinite(s.verticalSpeed))
         return Phase::Transition; // cannot tell

@@ -14,7 +14,7 @@ const char *phaseName(Phase phase);
 // Where one way of flying ends and another begins. Speeds in m/s, heights in m, times in s.
 struct PhaseThresholds
 {
-    double airborneAbove = 1.0;      // lower (or disarmed) is on the ground
+    double airborneAbove = 1.0;      // lower is on the ground (disarmed, where the height is unknown)
     double stillBelow = 0.3;         // ground speed of a hover
     double levelVerticalBelow = 0.2; // |vertical speed| of hover and level flight
     double levelFasterThan = 1.0;    // ground speed of level flight

@@ -80,10 +80,10 @@ private slots:
         QCOMPARE(at(8, 2), Phase::Transition);     // climbing along a leg: not a straight climb
         s.altitudeAgl = 0.5;
         QCOMPARE(at(0, 0), Phase::Ground);
-        s.altitudeAgl = 30;
-        s.armed = 0;
+        s.altitudeAgl = kMissing;
+        s.armed = 0;  // without a height, disarmed is on the ground
         QCOMPARE(at(0, 0), Phase::Ground);
-        s.armed = kMissing;  // unknown arming does not make it grounded
+        s.armed = kMissing;  // and unknown arming does not make it grounded
         s.groundSpeed = kMissing;
         QCOMPARE(classify(s), Phase::Transition);
     }

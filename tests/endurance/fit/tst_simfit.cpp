@@ -80,6 +80,7 @@ private slots:
     void initTestCase()
     {
         QVERIFY(m_dir.isValid());
+        m_dir.setAutoRemove(qEnvironmentVariableIsEmpty("SORTIE_KEEP_LOGS")); // to look at the logs after a failure
         const endurance::EnergyProfile known = sim::simEnergyProfile();
         QVERIFY(known.problem().isEmpty());
         // Its speeds and rates are the sim's limits: what it flies is what the profile describes.
@@ -156,7 +157,7 @@ private slots:
         for (const char *line : {"hover power", "cruise power", "cruise speed", "climb power", "climb rate", "descent power",
                                  "descent rate", "battery"})
             QVERIFY2(stdoutText.contains(QLatin1String(line)), line);
-        QVERIFY2(stdoutText.contains(QLatin1String("(n = ")) && stdoutText.contains(QLatin1String("± ")), qPrintable(stdoutText));
+        QVERIFY2(stdoutText.contains(QLatin1String("(n = ")) && stdoutText.contains(QStringLiteral("± ")), qPrintable(stdoutText));
         QVERIFY(!stdoutText.contains(QLatin1String("missing")));
         QFile file(out);
         QVERIFY(file.open(QIODevice::ReadOnly));
