@@ -1,8 +1,11 @@
 // sortie-log: record a UgCS server's vehicles into a flight log, describe a log, export its tracks,
-// compare a flight with its plan. The work is in core/flightlog; this file reads arguments.
+// compare a flight with its plan, fit a vehicle's energy profile to its flights. The work is in
+// core/flightlog and core/endurance/fit; this file reads arguments.
+#include "EnergyProfile.h"
 #include "FlightLog.h"
 #include "FlightLogExport.h"
 #include "FlightLogInfo.h"
+#include "LogFit.h"
 #include "MissionFiles.h"
 #include "RouteComparison.h"
 #include "ServerRecording.h"
@@ -173,6 +176,49 @@ int compare(const QStringList &in, QTextStream &out, QTextStream &err)
     return Ok;
 }
 
+int fit(const QStringList &in, QTextStream &out, QTextStream &err)
+{
+    const auto a = parse(in, {QStringLiteral("--vehicle"), QStringLiteral("--capacity"), QStringLiteral("--out")}, {}, err);
+    if (!a || a->positional.isEmpty())
+        return (err << kUsage, Usage);
+    endurance::fit::FitOptions options;
+    if (a->options.contains(QStringLiteral("--capacity"))) {
+        bool ok = false;
+        const double wh = a->options.value(QStringLiteral("--capacity")).toDouble(&ok);
+        if (!ok || !(wh > 0))
+            return (err << "sortie-log: --capacity takes the battery's usable energy in Wh\n", Usage);
+        options.capacityWh = wh;
+    }
+    const auto loaded = endurance::fit::loadFlights(a->positional, a->options.value(QStringLiteral("--vehicle")));
+    for (const QString &failure : loaded.failures)
+        err << "sortie-log: " << failure << "\n";
+    for (const QString &warning : loaded.warnings)
+        err << "sortie-log: " << warning << "\n";
+    if (loaded.traces.empty()) {
+        err << "sortie-log: no flight with battery telemetry to fit\n";
+        return Failed;
+    }
+    const endurance::fit::EnergyFit result = endurance::fit::fitEnergy(loaded.traces, options);
+    out << endurance::fit::fitReport(result);
+    int code = loaded.failures.isEmpty() ? Ok : Failed;
+    if (a->options.contains(QStringLiteral("--out"))) {
+        const QString path = a->options.value(QStringLiteral("--out"));
+        QString why;
+        const auto profile = result.profile(QStringLiteral("fitted from %1 flight(s)").arg(result.flights), &why);
+        if (!profile) {
+            err << "sortie-log: no profile written to " << path << ": " << why << "\n";
+            return Failed;
+        }
+        QSaveFile file(path);
+        if (!file.open(QIODevice::WriteOnly) || file.write(endurance::writeEnergyProfile(*profile)) < 0 || !file.commit()) {
+            err << "sortie-log: " << path << ": " << file.errorString() << "\n";
+            return Failed;
+        }
+        out << "profile written to " << path << "\n";
+    }
+    return code;
+}
+
 int signalPipe[2] = {-1, -1};
 
 void onSignal(int)
@@ -265,6 +311,8 @@ int main(int argc, char **argv)
         return exportTracks(args, out, err);
     if (command == QLatin1String("compare"))
         return compare(args, out, err);
+    if (command == QLatin1String("fit"))
+        return fit(args, out, err);
     err << "sortie-log: unknown command \"" << command << "\"\n\n" << kUsage;
     return Usage;
 }

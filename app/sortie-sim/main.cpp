@@ -64,6 +64,7 @@ int main(int argc, char **argv)
     std::printf("sortie-sim: HCI on %s:%u, %d vehicles, telemetry %.0f Hz\n", qPrintable(hci.address.toString()),
                 unsigned(server.port()), int(world.vehicles().size()), hci.world.telemetryRateHz);
     vci.vehicle.terrain = &world.terrain();  // one ground for every simulated vehicle
+    vci.vehicle.energy = hci.world.energy;   // and one energy profile
     sortie::sim::SimVciFleet fleet(vci);
     if (!fleet.start(&error)) {
         std::fprintf(stderr, "sortie-sim: %s\n", qPrintable(error));

@@ -22,12 +22,6 @@ double wrap180(double deg)
     return deg > 180.0 ? deg - 360.0 : deg;
 }
 
-// LiPo 4S: 16.8 V full, 14.0 V empty, roughly linear over the useful range.
-double voltageFor(double remaining)
-{
-    return 14.0 + 2.8 * std::clamp(remaining, 0.0, 1.0);
-}
-
 } // namespace
 
 double sphericalDistance(double lat1, double lon1, double lat2, double lon2)
@@ -55,6 +49,20 @@ void sphericalDestination(double lat, double lon, double bearing, double distanc
     *outLon = wrap180(l2 / kDeg);
 }
 
+FlightModel::Limits FlightModel::Limits::forProfile(const endurance::EnergyProfile &profile)
+{
+    Limits limits;
+    limits.energy = profile;
+    if (profile.cruiseSpeed > 0)
+        limits.cruiseSpeed = profile.cruiseSpeed;
+    limits.maxSpeed = std::max(limits.maxSpeed, limits.cruiseSpeed);
+    if (profile.climbRate > 0)
+        limits.climbRate = profile.climbRate;
+    if (profile.descentRate > 0)
+        limits.descentRate = profile.descentRate;
+    return limits;
+}
+
 FlightModel::FlightModel(double homeLatitude, double homeLongitude, double groundElevation)
     : FlightModel(homeLatitude, homeLongitude, groundElevation, Limits{})
 {
@@ -62,11 +70,12 @@ FlightModel::FlightModel(double homeLatitude, double homeLongitude, double groun
 
 FlightModel::FlightModel(double homeLatitude, double homeLongitude, double groundElevation, Limits limits)
     : m_limits(limits)
+    , m_battery(limits.energy.batteryWh)
 {
     m_state.latitude = m_state.homeLatitude = homeLatitude;
     m_state.longitude = m_state.homeLongitude = homeLongitude;
     m_state.groundElevation = groundElevation;
-    m_state.batteryVoltage = voltageFor(1.0);
+    m_state.batteryVoltage = m_battery.voltage();
     m_state.satellites = 14;
     m_state.gpsFix = 3;
 }
@@ -327,12 +336,20 @@ void FlightModel::tick(double dt)
         break;
     }
     }
-    if (s.armed) {
+    if (s.armed)
         m_armedSeconds += dt;
-        s.batteryRemaining = std::max(0.0, s.batteryRemaining - dt / m_limits.batteryEndurance);
-        s.batteryVoltage = voltageFor(s.batteryRemaining);
-    }
+    drainBattery(dt);
     s.roll = 0;
+}
+
+void FlightModel::drainBattery(double dt)
+{
+    // The power of what this tick did (its speeds), drawn over the tick.
+    State &s = m_state;
+    m_battery.draw(simPowerW(m_limits.energy, s.armed, s.airborne(), s.groundSpeed, s.verticalSpeed), dt);
+    s.batteryRemaining = m_battery.remaining();
+    s.batteryVoltage = m_battery.voltage();
+    s.batteryCurrent = m_battery.current();
 }
 
 } // namespace sortie::sim

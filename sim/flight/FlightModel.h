@@ -1,5 +1,8 @@
 #pragma once
 
+#include "SimBattery.h"
+#include "SimPower.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -7,8 +10,9 @@
 namespace sortie::sim {
 
 // A simulated multicopter: enough physics for a ground station to watch it arm, climb, fly a route,
-// hold, land and come home. Pure C++ (no Qt, no I/O): the HCI server and the VCI vehicles tick it and
-// translate its state into their own telemetry. Angles in degrees here; protocols convert at their edge.
+// hold, land and come home, and a battery drained by what that costs (its EnergyProfile, SimPower.h).
+// No I/O: the HCI server and the VCI vehicles tick it and translate its state into their own
+// telemetry. Angles in degrees here; protocols convert at their edge.
 class FlightModel
 {
 public:
@@ -33,8 +37,9 @@ public:
         double heading = 0;                 // degrees, 0 = north, clockwise
         double groundSpeed = 0, verticalSpeed = 0; // m/s, vertical positive up
         double roll = 0, pitch = 0;         // degrees
-        double batteryVoltage = 0;          // volts
-        double batteryRemaining = 1;        // 0..1
+        double batteryVoltage = 0;          // volts, under the present load
+        double batteryCurrent = 0;          // amperes drawn
+        double batteryRemaining = 1;        // 0..1 of the energy a full battery holds
         int satellites = 0;
         int gpsFix = 0;                     // 0 none, 2 2D, 3 3D
         bool armed = false;
@@ -59,7 +64,12 @@ public:
         double acceptanceRadius = 2; // m
         double takeoffAltitude = 20; // m AGL when none is given
         double returnAltitude = 40;  // m AGL for return-home
-        double batteryEndurance = 1500; // s of armed time from full to empty
+        // What flying costs and what the battery holds; its cruise speed and rates should be the
+        // ones above (forProfile makes them so), or the sim flies other speeds than it describes.
+        endurance::EnergyProfile energy = simEnergyProfile();
+
+        // The default limits with the profile's cruise speed, climb and descent rates.
+        static Limits forProfile(const endurance::EnergyProfile &profile);
     };
 
     FlightModel(double homeLatitude, double homeLongitude, double groundElevation);
@@ -67,6 +77,7 @@ public:
 
     const State &state() const { return m_state; }
     const Limits &limits() const { return m_limits; }
+    const SimBattery &battery() const { return m_battery; }
     const std::vector<Waypoint> &mission() const { return m_mission; }
     uint64_t missionVersion() const { return m_missionVersion; }
 
@@ -94,7 +105,10 @@ private:
     void climbTo(double altAgl, double dt, double timeToGo = 0); // timeToGo: seconds to the waypoint, 0 for at once
     void turnTowards(double bearing, double dt);
 
+    void drainBattery(double dt);
+
     Limits m_limits;
+    SimBattery m_battery;
     State m_state;
     std::vector<Waypoint> m_mission;
     uint64_t m_missionVersion = 0;

@@ -3,6 +3,7 @@
 #include "HciMessageTypes.h"
 
 #include <QCommandLineParser>
+#include <QFile>
 
 namespace sortie::sim {
 namespace {
@@ -57,6 +58,8 @@ HciSimOptions::HciSimOptions()
         {QStringLiteral("session-expiry"), QStringLiteral("Seconds a disconnected session can be re-attached (default 60)."), QStringLiteral("s")},
         {QStringLiteral("max-sessions"), QStringLiteral("Licence limit on logged-in sessions (default none)."), QStringLiteral("n")},
         {QStringLiteral("no-demo-mission"), QStringLiteral("Do not create the demo mission and route.")},
+        {QStringLiteral("energy-profile"), QStringLiteral("Every simulated vehicle's battery and powers from this energy profile (JSON; default: docs/endurance-fit.md)."),
+         QStringLiteral("file")},
         {QStringLiteral("fault-reverse"), QStringLiteral("Test: hold answers until N wait, then send them newest first."), QStringLiteral("n")},
         {QStringLiteral("fault-delay"), QStringLiteral("Test: delay every answer by this many ms."), QStringLiteral("ms")},
         {QStringLiteral("fault-drop"), QStringLiteral("Test: never answer this request type (number or name; repeatable)."), QStringLiteral("type")},
@@ -110,6 +113,19 @@ bool HciSimOptions::read(const QCommandLineParser &p, QString *error)
     world.storePath = p.value(QStringLiteral("store"));
     world.demPath = p.value(QStringLiteral("dem"));
     world.demoMission = !p.isSet(QStringLiteral("no-demo-mission"));
+    if (p.isSet(QStringLiteral("energy-profile"))) {
+        QFile file(p.value(QStringLiteral("energy-profile")));
+        if (!file.open(QIODevice::ReadOnly)) {
+            *error = QStringLiteral("--energy-profile: %1: %2").arg(file.fileName(), file.errorString());
+            return false;
+        }
+        const auto profile = endurance::readEnergyProfile(file.readAll());
+        if (!profile) {
+            *error = QStringLiteral("--energy-profile: %1: %2").arg(file.fileName(), profile.error().toString());
+            return false;
+        }
+        world.energy = *profile;
+    }
     return true;
 }
 

@@ -13,7 +13,8 @@ namespace sortie::sim {
 
 // The command-line options of the simulated HCI server, so that sortie-sim's main() only wires:
 // --port, --listen, --user, --hci-vehicles, --store, --telemetry-rate, --session-expiry,
-// --max-sessions, --no-demo-mission and the --fault-* test knobs.
+// --max-sessions, --no-demo-mission, --energy-profile (every simulated vehicle's, VCI ones too) and
+// the --fault-* test knobs.
 class HciSimOptions
 {
 public:

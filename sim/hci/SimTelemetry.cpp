@@ -37,6 +37,8 @@ void appendFast(google::protobuf::RepeatedPtrField<pb::Telemetry> *out, qint64 t
 void appendSlow(google::protobuf::RepeatedPtrField<pb::Telemetry> *out, qint64 time, const FlightModel::State &s)
 {
     add(out, time, "battery_voltage", pb::S_VOLTAGE)->mutable_value()->set_floatvalue(float(std::round(s.batteryVoltage * 100) / 100));
+    add(out, time, "battery_current", pb::S_CURRENT)->mutable_value()->set_floatvalue(float(std::round(s.batteryCurrent * 100) / 100));
+    add(out, time, "battery_level", pb::S_CAPACITY_LEVEL)->mutable_value()->set_floatvalue(float(std::round(s.batteryRemaining * 10000) / 100));
     add(out, time, "gps_fix_type", pb::S_GPS_FIX_TYPE)->mutable_value()->set_intvalue(s.gpsFix);
     add(out, time, "satellite_count", pb::S_SATELLITE_COUNT)->mutable_value()->set_intvalue(s.satellites);
     add(out, time, "control_mode", pb::S_CONTROL_MODE)->mutable_value()->set_intvalue(SimTelemetry::controlMode(s.mode));
@@ -82,7 +84,8 @@ void SimTelemetry::record(qint64 timeMs, const FlightModel::State &state, pb::Te
         m_history.pop_front();
 
     appendFast(event->mutable_telemetry(), timeMs, state);
-    const Slow slow{std::round(state.batteryVoltage * 100) / 100, state.satellites, state.gpsFix,
+    const Slow slow{std::round(state.batteryVoltage * 100) / 100, std::round(state.batteryCurrent * 100) / 100,
+                    std::round(state.batteryRemaining * 10000) / 100, state.satellites, state.gpsFix,
                     controlMode(state.mode), state.armed, state.mode};
     if (!(slow == m_lastSlow) || timeMs - m_lastSlowTime >= 1000) {
         appendSlow(event->mutable_telemetry(), timeMs, state);

@@ -35,7 +35,7 @@ public:
 
     static int controlMode(FlightModel::Mode mode);   // 0 manual, 1 automatic, 2 click & go
     static const char *flightMode(FlightModel::Mode mode);
-    static constexpr int kFieldCount = 15;
+    static constexpr int kFieldCount = 17;
 
 private:
     struct Sample
@@ -45,7 +45,7 @@ private:
     };
     struct Slow
     {
-        double voltage = -1;
+        double voltage = -1, current = -1, percent = -1;
         int satellites = -1, fix = -1, control = -1;
         bool armed = false;
         FlightModel::Mode mode = FlightModel::Mode::Manual;

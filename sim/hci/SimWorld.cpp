@@ -74,7 +74,7 @@ bool SimWorld::start(QString *error)
     for (int i = 0; i < ids.size(); ++i) {
         const auto *object = m_store.find(QStringLiteral("Vehicle"), ids[i]);
         const double homeGround = m_terrain->groundOr(homes[i].latitude, homes[i].longitude, m_config.groundElevation);
-        FlightModel model(homes[i].latitude, homes[i].longitude, homeGround);
+        FlightModel model(homes[i].latitude, homes[i].longitude, homeGround, FlightModel::Limits::forProfile(m_config.energy));
         m_vehicles.push_back(std::make_unique<SimVehicle>(object->vehicle(), std::move(model), m_config.telemetryRateHz));
         m_vehicles.back()->setTerrain(m_terrain.get());
     }

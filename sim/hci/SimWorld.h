@@ -2,6 +2,7 @@
 
 #include "SimLockTable.h"
 #include "SimObjectStore.h"
+#include "SimPower.h"
 #include "SimRoutePasses.h"
 #include "SimUsers.h"
 
@@ -40,6 +41,8 @@ public:
         QString storePath;            // empty: in memory only
         int maxSessions = 0;          // licence limit on logged-in sessions; 0: none
         bool demoMission = true;
+        // What flying costs the vehicles and what their batteries hold (their speeds and rates too).
+        endurance::EnergyProfile energy = simEnergyProfile();
     };
 
     explicit SimWorld(QObject *parent = nullptr);

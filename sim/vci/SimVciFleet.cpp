@@ -18,6 +18,7 @@ void SimVciFleetOptions::addTo(QCommandLineParser &parser) const
          QString::number(vehicle.telemetryRate)},
         {QStringLiteral("vci-time-scale"), QStringLiteral("Simulated seconds per real second."), QStringLiteral("x"),
          QString::number(vehicle.timeScale)},
+        {QStringLiteral("vci-simulated-clock"), QStringLiteral("VCI vehicles stamp telemetry with their own clock (running at --vci-time-scale).")},
         {QStringLiteral("vci-content-length"), QStringLiteral("VCI vehicles frame bodies with Content-Length (default: by the JSON).")},
         {QStringLiteral("vci-answer-delay"), QStringLiteral("Test knob: VCI vehicles answer each request this late."), QStringLiteral("ms"),
          QStringLiteral("0")},
@@ -67,6 +68,7 @@ bool SimVciFleetOptions::read(const QCommandLineParser &parser, QString *error)
     }
     firstPort = quint16(port);
     pty = parser.isSet(QStringLiteral("vci-pty"));
+    vehicle.simulatedClock = parser.isSet(QStringLiteral("vci-simulated-clock"));
     if (parser.isSet(QStringLiteral("vci-content-length")))
         vehicle.framing = vci::VciFraming::ContentLength;
     return true;

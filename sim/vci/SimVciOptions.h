@@ -1,5 +1,6 @@
 #pragma once
 
+#include "SimPower.h"
 #include "VciWriter.h"
 
 #include <QString>
@@ -21,6 +22,12 @@ struct SimVciOptions
     const SimTerrain *terrain = nullptr;
     double telemetryRate = 10;       // NOTIFYs per second per subscribed telemetry resource
     double timeScale = 1;            // simulated seconds per real second (tests fly missions faster)
+    // Telemetry times from the vehicle's own clock, which runs at timeScale (from the wall clock at
+    // its start), rather than the wall clock: a log of a sped-up flight then has the flight's own
+    // durations, so energy integrated over it is right (sortie-log fit).
+    bool simulatedClock = false;
+    // What flying costs and what its battery holds; its speeds and rates are the vehicle's limits.
+    endurance::EnergyProfile energy = simEnergyProfile();
     vci::VciFraming framing = vci::VciFraming::JsonOnly; // how its bodies are delimited
 
     // Test knobs.

@@ -17,8 +17,6 @@ using nlohmann::json;
 constexpr double kRad = 3.14159265358979323846 / 180.0;
 constexpr int kTickMs = 20;
 
-int64_t now() { return QDateTime::currentMSecsSinceEpoch(); }
-
 bool is(const std::string &uri, std::string_view name) { return uri == name; }
 
 } // namespace
@@ -28,7 +26,9 @@ SimVciVehicle::SimVciVehicle(const SimVciOptions &options, QObject *parent)
     , m_options(options)
     , m_model(options.homeLatitude, options.homeLongitude,
               options.terrain ? options.terrain->groundOr(options.homeLatitude, options.homeLongitude, options.groundElevation)
-                              : options.groundElevation)
+                              : options.groundElevation,
+              FlightModel::Limits::forProfile(options.energy))
+    , m_startMs(QDateTime::currentMSecsSinceEpoch())
 {
     m_parameters["telemetry_rate"] = options.telemetryRate;
     m_parameters["takeoff_altitude"] = m_model.limits().takeoffAltitude;
@@ -45,6 +45,7 @@ void SimVciVehicle::tick()
 {
     const double dt = double(m_clock.restart()) / 1000.0 * m_options.timeScale;
     m_model.tick(dt);
+    m_simulatedSeconds += dt;
     checkChanges();
 }
 
@@ -57,6 +58,13 @@ void SimVciVehicle::checkChanges()
             emit changed(QString::fromStdString(uri));
         }
     }
+}
+
+int64_t SimVciVehicle::now() const
+{
+    if (m_options.simulatedClock)
+        return m_startMs + int64_t(std::llround(m_simulatedSeconds * 1000.0));
+    return QDateTime::currentMSecsSinceEpoch();
 }
 
 bool SimVciVehicle::isPeriodic(const std::string &uri) const
@@ -127,8 +135,7 @@ std::optional<json> SimVciVehicle::resource(const std::string &uri) const
         return json{{"ground", s.groundSpeed}, {"air", s.groundSpeed}, {"vertical", s.verticalSpeed},
                     {"course", s.heading * kRad}, {"time", now()}};
     if (is(uri, profile::kBattery)) {
-        const double current = s.armed ? 8.0 + 1.5 * s.groundSpeed + 4.0 * std::max(0.0, s.verticalSpeed) : 0.4;
-        return json{{"voltage", s.batteryVoltage}, {"current", current}, {"remaining", s.batteryRemaining}, {"time", now()}};
+        return json{{"voltage", s.batteryVoltage}, {"current", s.batteryCurrent}, {"remaining", s.batteryRemaining}, {"time", now()}};
     }
     if (is(uri, profile::kGps))
         return json{{"fix", s.gpsFix}, {"satellites", s.satellites}, {"hdop", 0.8}, {"time", now()}};

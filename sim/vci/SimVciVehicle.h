@@ -45,6 +45,7 @@ signals:
 private:
     void tick();
     void checkChanges();
+    int64_t now() const; // ms since the epoch on the vehicle's clock (SimVciOptions::simulatedClock)
     SimVciReply put(const std::string &uri, const vci::VciMessage &request);
     SimVciReply putParameter(const std::string &name, const vci::VciMessage &request);
     nlohmann::json progress() const;
@@ -55,6 +56,8 @@ private:
     FlightModel m_model;
     QTimer m_tick;
     QElapsedTimer m_clock;
+    int64_t m_startMs = 0;          // wall clock when the vehicle started
+    double m_simulatedSeconds = 0;  // since then, on the vehicle's clock
     std::vector<vci::profile::Waypoint> m_missionAsSent; // the accepted mission with its actions, for GET
     std::map<std::string, double> m_parameters;     // the writable ones
     std::map<std::string, nlohmann::json> m_lastState; // last value of each state resource, to see changes

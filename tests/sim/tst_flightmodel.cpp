@@ -106,6 +106,52 @@ private slots:
         QVERIFY(sortie::sim::sphericalDistance(m.state().latitude, m.state().longitude, kRigaLat, kRigaLon) < 2.5);
     }
 
+    // The battery is an energy store drained by the profile's powers: hover, level flight at the
+    // cruise speed, a straight climb; nothing while disarmed; arming refused below 10 %.
+    void batteryDrainsByWhatTheVehicleDoes()
+    {
+        FlightModel m(kRigaLat, kRigaLon, 10);
+        const auto &p = m.limits().energy;
+        run(m, 60);
+        QCOMPARE(m.state().batteryRemaining, 1.0); // disarmed: kept
+        QCOMPARE(m.state().batteryCurrent, 0.0);
+        QVERIFY(std::abs(m.state().batteryVoltage - 16.8) < 1e-9); // a full 4S at rest
+        m.arm();
+        m.takeoff(30);
+        run(m, 3);
+        QVERIFY(std::abs(m.state().batteryVoltage * m.state().batteryCurrent - p.climbPowerW) < 1e-6);
+        run(m, 20);
+        QCOMPARE(m.state().mode, FlightModel::Mode::Hold);
+        const double before = m.battery().energyLeftWh();
+        run(m, 100);
+        QVERIFY(std::abs(m.state().batteryVoltage * m.state().batteryCurrent - p.hoverPowerW) < 1e-6);
+        QVERIFY(std::abs((before - m.battery().energyLeftWh()) - p.hoverPowerW * 100 / 3600) < 0.01);
+        QVERIFY(m.state().batteryVoltage < 16.8 - 0.3); // sags under load
+        double lat, lon;
+        sortie::sim::sphericalDestination(kRigaLat, kRigaLon, 90, 2000, &lat, &lon);
+        m.goTo(lat, lon, 30);
+        run(m, 20);
+        QCOMPARE(m.state().groundSpeed, p.cruiseSpeed);
+        QVERIFY(std::abs(m.state().batteryVoltage * m.state().batteryCurrent - p.cruisePowerW) < 0.5);
+        QCOMPARE(m.state().batteryRemaining, m.battery().energyLeftWh() / p.batteryWh);
+
+        // Flown down to under 10 %: landed, it may not arm again.
+        m.land();
+        run(m, 20);
+        QVERIFY(!m.state().armed);
+        QVERIFY(sortie::sim::SimBattery::cellVoltage(0.5) < sortie::sim::SimBattery::cellVoltage(0.9));
+        FlightModel::Limits small = FlightModel::Limits::forProfile(p);
+        small.energy.batteryWh = 1; // 15 s of hover
+        FlightModel low(kRigaLat, kRigaLon, 10, small);
+        low.arm();
+        low.takeoff(5);
+        run(low, 20);
+        low.land();
+        run(low, 10);
+        QVERIFY(low.state().batteryRemaining < 0.1);
+        QCOMPARE(QString::fromStdString(low.arm()), QStringLiteral("battery too low to arm"));
+    }
+
     void modesByName()
     {
         FlightModel::Mode mode;

@@ -1,0 +1,3 @@
+#include "FitLog.h"
+
+Q_LOGGING_CATEGORY(lcEnduranceFit, "sortie.endurance.fit", QtInfoMsg)
