@@ -358,8 +358,9 @@ private slots:
         QCOMPARE(int(watch.number("gps_fix_type")), 3);
 
         const qint64 now = QDateTime::currentMSecsSinceEpoch();
-        const auto history = call<pb::GetTelemetryResponse>(a.client.telemetryHistory(emu, now - 60000, now, 45));
-        QCOMPARE(history.telemetry_size(), 45);
+        // The simulator pages whole samples of its 17 fields (battery current and level among them).
+        const auto history = call<pb::GetTelemetryResponse>(a.client.telemetryHistory(emu, now - 60000, now, 51));
+        QCOMPARE(history.telemetry_size(), 51);
         QVERIFY(history.has_nexttelemetrytime());
         QVERIFY(history.telemetry(0).time() <= history.nexttelemetrytime());
         QCOMPARE(history.telemetry(0).telemetryfield().code(), std::string("latitude"));

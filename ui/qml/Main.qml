@@ -121,6 +121,7 @@ ApplicationWindow {
             missions: window.missions
             vehicleModel: window.fleet
             elevation: window.elevation
+            endurance: window.endurance
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource

@@ -27,6 +27,7 @@ Page {
     property string mbtilesFile: ""
     property bool dark: false
     required property ElevationService elevation    // the client's ElevationService, for the terrain profile
+    required property RouteEndurance endurance      // will the battery last: figures, changes, point of no return
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
     // `var`: the editor's tools are plain JS objects (name, algorithm, figure, minimumPoints).
@@ -126,10 +127,20 @@ Page {
                 radius: page.doc.preview.radius
                 onRadiusMoved: (meters, step) => page.doc.editor.setRadius(page.doc.currentRow, meters, step)
             }
+            EnduranceLayer {
+                // Where the battery runs out: its changes and the point of no return.
+                id: enduranceLayer
+                objectName: "enduranceLayer"
+                anchors.fill: parent
+                map: pane.map
+                enabled: false // clicks are for the route
+                changePoints: page.endurance.changePoints
+                pointOfNoReturn: page.endurance.pointOfNoReturn
+            }
             Connections {
                 target: pane.map
                 function onClicked(coordinate, modifiers) {
-                    if (!page.doc || modifiers !== Qt.NoModifier)
+                    if (modifiers !== Qt.NoModifier)
                         return
                     if (page.tool === "scan") {
                         scanDraft.append(coordinate.latitude, coordinate.longitude)
@@ -180,6 +191,13 @@ Page {
             routeModel: page.routeModel
             selectionModel: page.selectionModel
             elevation: page.elevation
+            markers: page.endurance.changePoints.map(c => ({distance: c.distance, latitude: c.latitude, longitude: c.longitude,
+                                                               label: qsTr("battery change"),
+                                                               color: c.planned ? "#43a047" : "#fb8c00"}))
+                     .concat(page.endurance.pointOfNoReturn ? [{distance: page.endurance.pointOfNoReturn.distance,
+                                                                latitude: page.endurance.pointOfNoReturn.latitude,
+                                                                longitude: page.endurance.pointOfNoReturn.longitude,
+                                                                label: qsTr("no return"), color: "#e53935"}] : [])
         }
         }
         RoutePanel {
@@ -191,6 +209,7 @@ Page {
             units: page.units
             routeModel: page.routeModel
             terrain: terrainProfile.profile
+            endurance: page.endurance
             waypointCount: routeLayer.count
             scanning: page.tool === "scan"
             onScanToggled: on => page.tool = on ? "scan" : ""

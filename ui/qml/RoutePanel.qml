@@ -15,6 +15,7 @@ Pane {
     required property DisplayUnits units
     required property AbstractItemModel routeModel // the list model the table shows
     required property TerrainProfileModel terrain // ground and heights per row
+    required property RouteEndurance endurance
     required property int waypointCount
     required property bool scanning              // the area-scan tool is on
     signal scanToggled(bool on)
@@ -27,6 +28,12 @@ Pane {
         title: qsTr("Import a route")
         nameFilters: [qsTr("Routes (*.sortie *.plan *.waypoints *.txt *.kml *.kmz)"), qsTr("All files (*)")]
         onAccepted: panel.doc.importFile(selectedFile)
+    }
+    FileDialog {
+        id: profileDialog
+        title: qsTr("The vehicle's energy profile")
+        nameFilters: [qsTr("Energy profiles (*.json)"), qsTr("All files (*)")]
+        onAccepted: panel.endurance.loadProfileFile(selectedFile)
     }
     FileDialog {
         id: exportDialog
@@ -184,6 +191,57 @@ Pane {
             Label { text: panel.doc.analyzer.waypointCount }
             Label { text: qsTr("Photos"); opacity: 0.7 }
             Label { text: panel.doc.analyzer.photoCount }
+        }
+
+        GridLayout {
+            // Will the battery last: the open route priced with the vehicle's energy profile.
+            objectName: "endurance"
+            columns: 4
+            columnSpacing: 8
+            Layout.fillWidth: true
+            readonly property RouteEndurance e: panel.endurance
+            Label { text: qsTr("Energy"); opacity: 0.7; visible: !parent.e.missing }
+            Label { objectName: "enduranceEnergy"; visible: !parent.e.missing
+                    text: parent.e.missing ? "" : qsTr("%1 Wh").arg(Number(parent.e.energyWh).toFixed(0)) }
+            Label { text: qsTr("At end"); opacity: 0.7; visible: !parent.e.missing }
+            Label { objectName: "enduranceAtEnd"; visible: !parent.e.missing
+                    color: parent.e.batteriesNeeded > 1 ? "#e53935" : palette.windowText
+                    text: parent.e.missing ? "" : parent.e.batteriesNeeded > 1
+                          ? qsTr("%n batteries", "", parent.e.batteriesNeeded)
+                          : qsTr("%1 % of the battery").arg(Math.round(parent.e.batteryAtEnd * 100)) }
+            Label { text: qsTr("No return"); opacity: 0.7; visible: !parent.e.missing }
+            Label { objectName: "enduranceNoReturn"; visible: !parent.e.missing; Layout.columnSpan: 3
+                    Layout.fillWidth: true; elide: Text.ElideRight
+                    text: parent.e.missing ? "" : !parent.e.homeKnown ? qsTr("unknown: the route has no home")
+                          : parent.e.pointOfNoReturn ? qsTr("after %1 (leg %2)").arg(panel.units.formatDistance(parent.e.pointOfNoReturn.distance)).arg(parent.e.pointOfNoReturn.leg)
+                          : qsTr("none: home stays in reach") }
+            Label { objectName: "enduranceProblem"; visible: parent.e.missing; Layout.columnSpan: 4; Layout.fillWidth: true
+                    wrapMode: Text.Wrap; opacity: 0.8
+                    text: parent.e.problem.length > 0 ? parent.e.problem
+                                                      : qsTr("Load the vehicle's energy profile to know whether one battery flies this route.") }
+            Label { text: qsTr("Profile"); opacity: 0.7 }
+            RowLayout {
+                Layout.columnSpan: 3
+                Layout.fillWidth: true
+                Label { objectName: "enduranceProfile"; Layout.fillWidth: true; elide: Text.ElideMiddle
+                        text: parent.parent.e.profileName.length > 0 || parent.parent.e.profileSource.length > 0
+                              ? qsTr("%1 (%2)").arg(parent.parent.e.profileName.length > 0 ? parent.parent.e.profileName : qsTr("unnamed")).arg(parent.parent.e.profileSource)
+                              : qsTr("none") }
+                Button { objectName: "energyProfileButton"; text: qsTr("Load…"); onClicked: profileDialog.open()
+                         ToolTip.visible: hovered; ToolTip.text: qsTr("The vehicle's energy profile: a JSON file, e.g. from sortie-log fit") }
+            }
+            Label { text: qsTr("Wind"); opacity: 0.7 }
+            RowLayout {
+                Layout.columnSpan: 3
+                TextField { objectName: "windSpeedField"; Layout.preferredWidth: 52; text: Number(parent.parent.e.windSpeed).toString()
+                            validator: DoubleValidator { bottom: 0; top: 60 }
+                            onEditingFinished: parent.parent.e.windSpeed = Number(text) }
+                Label { text: qsTr("m/s from") }
+                TextField { objectName: "windFromField"; Layout.preferredWidth: 52; text: Number(parent.parent.e.windFrom).toString()
+                            validator: DoubleValidator { bottom: 0; top: 360 }
+                            onEditingFinished: parent.parent.e.windFrom = Number(text) }
+                Label { text: "°" }
+            }
         }
 
         SegmentEditor {

@@ -9,6 +9,7 @@ Item {
     required property AbstractItemModel routeModel
     required property ItemSelectionModel selectionModel
     required property ElevationService elevation
+    property var markers: []   // JS objects {latitude, longitude, label, color}: ElevationProfileView.markers
     property alias view: view
     property alias profile: profile
     implicitHeight: 170
@@ -24,6 +25,7 @@ Item {
         anchors.fill: parent
         model: profile
         selectionModel: panel.selectionModel
+        markers: panel.markers
         textColor: palette.windowText
         backgroundColor: palette.base
     }

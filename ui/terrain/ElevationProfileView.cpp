@@ -41,6 +41,7 @@ ElevationProfileView::ElevationProfileView(QQuickItem *parent) : QQuickPaintedIt
     setAcceptedMouseButtons(Qt::LeftButton);
     setAntialiasing(true);
     connect(this, &ElevationProfileView::colorsChanged, this, [this] { update(); });
+    connect(this, &ElevationProfileView::markersChanged, this, [this] { update(); });
 }
 
 void ElevationProfileView::setModel(TerrainProfileModel *model)
@@ -202,6 +203,31 @@ void ElevationProfileView::mousePressEvent(QMouseEvent *event)
     event->accept();
 }
 
+double ElevationProfileView::markerDistance(int index) const
+{
+    if (!m_model || index < 0 || index >= m_markers.size() || m_model->sampleCount() < 2)
+        return qQNaN();
+    const QVariantMap marker = m_markers[index].toMap();
+    // Metres along the flown path, where the marker says: a route that passes a place twice has
+    // it twice, and only the distance tells which.
+    bool known = false;
+    if (const double d = marker.value(QStringLiteral("distance")).toDouble(&known); known && std::isfinite(d))
+        return std::clamp(d, 0.0, m_model->length());
+    const mission::GeoPoint at{marker.value(QStringLiteral("latitude")).toDouble(), marker.value(QStringLiteral("longitude")).toDouble()};
+    // Closest sample by a local flat distance: samples are tens of metres apart, markers few.
+    const double cosLat = std::cos(at.latitude * M_PI / 180.0);
+    double best = std::numeric_limits<double>::infinity(), distance = qQNaN();
+    for (const auto &sample : m_model->profile().path.points) {
+        const double dy = sample.position.latitude - at.latitude;
+        const double dx = (sample.position.longitude - at.longitude) * cosLat;
+        if (const double d2 = dx * dx + dy * dy; d2 < best) {
+            best = d2;
+            distance = sample.distance;
+        }
+    }
+    return distance;
+}
+
 void ElevationProfileView::paint(QPainter *painter)
 {
     painter->fillRect(QRectF(0, 0, width(), height()), m_background);
@@ -344,6 +370,23 @@ void ElevationProfileView::paint(QPainter *painter)
             painter->setBrush(selected ? kSelected : m_background);
             painter->drawEllipse(QPointF(x, yOf(alt)), selected ? 5.0 : 3.0, selected ? 5.0 : 3.0);
         }
+    }
+    // Markers: a line in their colour and their label, where the path passes closest to them.
+    for (int i = 0; i < m_markers.size(); ++i) {
+        const double d = markerDistance(i);
+        if (!std::isfinite(d))
+            continue;
+        const QVariantMap marker = m_markers[i].toMap();
+        const QColor colour(marker.value(QStringLiteral("color")).toString());
+        const double x = xOf(d);
+        painter->setPen(QPen(colour, 2));
+        painter->drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
+        const QString label = marker.value(QStringLiteral("label")).toString();
+        const QFontMetricsF metrics(font);
+        const double w = metrics.horizontalAdvance(label) + 6;
+        const QRectF box(std::min(x + 3, plot.right() - w), plot.top() + 3 + 15 * (i % 2), w, metrics.height());
+        painter->fillRect(box, m_background);
+        painter->drawText(box, Qt::AlignCenter, label);
     }
     // Hover: a cursor line.
     if (m_hoverX >= plot.left() && m_hoverX <= plot.right()) {

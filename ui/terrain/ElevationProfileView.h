@@ -5,6 +5,7 @@
 #include <QColor>
 #include <QItemSelectionModel>
 #include <QPointer>
+#include <QVariant>
 #include <QQuickPaintedItem>
 #include <QtQml/qqmlregistration.h>
 
@@ -30,6 +31,10 @@ class ElevationProfileView : public QQuickPaintedItem
     Q_PROPERTY(int hoveredLeg READ hoveredLeg NOTIFY readoutChanged)
     Q_PROPERTY(QColor textColor MEMBER m_textColor NOTIFY colorsChanged)
     Q_PROPERTY(QColor backgroundColor MEMBER m_background NOTIFY colorsChanged)
+    // Places marked along the profile: [{distance, latitude, longitude, label, color}], each drawn
+    // as a vertical line at its distance along the flown path (metres), or without one where the
+    // path passes closest to its position (the route's battery changes, its point of no return).
+    Q_PROPERTY(QVariantList markers MEMBER m_markers NOTIFY markersChanged)
 
 public:
     explicit ElevationProfileView(QQuickItem *parent = nullptr);
@@ -50,6 +55,8 @@ public:
     // Hover and click as the mouse does them (also for tests and keyboard users).
     Q_INVOKABLE void hoverAt(double x);
     Q_INVOKABLE void clickAt(double x);
+    // The distance along the path where marker `index` is drawn; NaN when it is not.
+    Q_INVOKABLE double markerDistance(int index) const;
 
     void paint(QPainter *painter) override;
 
@@ -58,6 +65,7 @@ signals:
     void selectionModelChanged();
     void readoutChanged();
     void colorsChanged();
+    void markersChanged();
     // A click on a leg: its index (0-based) and the route row it starts at.
     void legClicked(int leg, int row);
 
@@ -72,6 +80,7 @@ private:
     QRectF plotRect() const;
 
     QPointer<TerrainProfileModel> m_model;
+    QVariantList m_markers;
     QPointer<QItemSelectionModel> m_selection;
     QString m_readout;
     int m_hoveredLeg = -1;

@@ -4,6 +4,7 @@
 
 #include <QObject>
 #include <QPointer>
+#include <QUrl>
 #include <QVariant>
 
 #include <memory>
@@ -58,6 +59,8 @@ public:
 
     // Reads a profile file and uses it (remembered); false with `problem` set when it cannot be read.
     Q_INVOKABLE bool loadProfile(const QString &path);
+    // The same for a file a dialog chose.
+    Q_INVOKABLE bool loadProfileFile(const QUrl &file) { return loadProfile(file.toLocalFile()); }
     Q_INVOKABLE void clearProfile();
     // Energy (Wh) to fly home from a position at a height above home, with the profile and wind in
     // use; undefined without a profile, home or headway. For the fly view's advisory.

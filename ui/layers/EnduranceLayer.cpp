@@ -1,0 +1,117 @@
+#include "EnduranceLayer.h"
+
+#include <QFontMetricsF>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <cmath>
+
+namespace sortie::ui {
+
+namespace {
+QGeoCoordinate positionOf(const QVariantMap &point)
+{
+    bool latOk = false, lonOk = false;
+    const double lat = point.value(QStringLiteral("latitude")).toDouble(&latOk);
+    const double lon = point.value(QStringLiteral("longitude")).toDouble(&lonOk);
+    return latOk && lonOk ? QGeoCoordinate(lat, lon) : QGeoCoordinate();
+}
+
+// The label right of `at`, or left of `leftEnd` where it would run under the map's zoom buttons or
+// past its edge (`right`).
+void drawLabel(QPainter &p, QPointF at, double leftEnd, double right, const QString &text, const QColor &colour)
+{
+    QPainterPath path;
+    QFont font = p.font();
+    font.setBold(true);
+    const double width = QFontMetricsF(font).horizontalAdvance(text);
+    if (at.x() + width > right - 56)
+        at.setX(leftEnd - width);
+    path.addText(at, font, text);
+    p.setPen(QPen(QColor(255, 255, 255, 220), 3.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    p.setBrush(Qt::NoBrush);
+    p.drawPath(path);
+    p.setPen(Qt::NoPen);
+    p.setBrush(colour.darker(130));
+    p.drawPath(path);
+}
+} // namespace
+
+EnduranceLayer::EnduranceLayer(QQuickItem *parent)
+    : MapLayer(parent)
+{
+}
+
+void EnduranceLayer::setChangePoints(const QVariantList &points)
+{
+    if (points == m_changes)
+        return;
+    m_changes = points;
+    readMarks();
+}
+
+void EnduranceLayer::setPointOfNoReturn(const QVariant &point)
+{
+    if (point == m_noReturn)
+        return;
+    m_noReturn = point;
+    readMarks();
+}
+
+void EnduranceLayer::readMarks()
+{
+    m_marks.clear();
+    for (const QVariant &v : m_changes) {
+        const QVariantMap change = v.toMap();
+        const QGeoCoordinate at = positionOf(change);
+        if (!at.isValid())
+            continue;
+        const bool planned = change.value(QStringLiteral("planned")).toBool();
+        m_marks.push_back({at, planned ? Kind::PlannedChange : Kind::UnplannedChange,
+                           planned ? tr("Battery change") : tr("Battery change needed")});
+    }
+    if (const QGeoCoordinate at = positionOf(m_noReturn.toMap()); at.isValid())
+        m_marks.push_back({at, Kind::NoReturn, tr("No return")});
+    repaint();
+    emit marksChanged();
+}
+
+QPointF EnduranceLayer::markPosition(int index) const
+{
+    if (index < 0 || index >= markCount())
+        return {qQNaN(), qQNaN()};
+    return viewport().geoToScreen(m_marks[size_t(index)].position);
+}
+
+void EnduranceLayer::paint(QPainter *painter)
+{
+    QPainter &p = *painter;
+    p.setRenderHint(QPainter::Antialiasing);
+    const MapViewport &viewport = paintViewport();
+    const double right = width() - paintOrigin().x(); // the map's right edge in picture pixels
+    for (const Mark &mark : m_marks) {
+        const QPointF c = viewport.geoToScreen(mark.position);
+        if (mark.kind == Kind::NoReturn) {
+            // A diamond, the shape of a warning sign, in red.
+            const QPolygonF diamond{c + QPointF(0, -9), c + QPointF(9, 0), c + QPointF(0, 9), c + QPointF(-9, 0)};
+            p.setPen(QPen(Qt::white, 2));
+            p.setBrush(noReturnColour());
+            p.drawPolygon(diamond);
+            drawLabel(p, c + QPointF(13, 5), c.x() - 13, right, mark.label, noReturnColour());
+            continue;
+        }
+        // A battery: its body and terminal, above the point so the waypoint's number stays visible.
+        const QColor colour = mark.kind == Kind::PlannedChange ? plannedColour() : unplannedColour();
+        const QRectF body(c.x() - 8, c.y() - 26, 16, 10);
+        p.setPen(QPen(Qt::white, 2));
+        p.setBrush(colour);
+        p.drawRoundedRect(body, 2, 2);
+        p.setPen(Qt::NoPen);
+        p.drawRect(QRectF(body.right(), body.center().y() - 2.5, 3, 5));
+        p.setPen(QPen(colour, 2));
+        p.drawLine(c + QPointF(0, -16), c + QPointF(0, -4));
+        drawLabel(p, QPointF(body.right() + 7, body.bottom()), body.left() - 5, right, mark.label, colour);
+    }
+}
+
+} // namespace sortie::ui
