@@ -194,52 +194,56 @@ Pane {
         }
 
         GridLayout {
-            // Will the battery last: the open route priced with the vehicle's energy profile.
+            // Will the battery last: the open route priced with the vehicle's energy profile. Two
+            // rows, so the waypoint table keeps its room.
             objectName: "endurance"
             columns: 4
             columnSpacing: 8
             Layout.fillWidth: true
             readonly property RouteEndurance e: panel.endurance
             Label { text: qsTr("Energy"); opacity: 0.7; visible: !parent.e.missing }
-            Label { objectName: "enduranceEnergy"; visible: !parent.e.missing
-                    text: parent.e.missing ? "" : qsTr("%1 Wh").arg(Number(parent.e.energyWh).toFixed(0)) }
-            Label { text: qsTr("At end"); opacity: 0.7; visible: !parent.e.missing }
-            Label { objectName: "enduranceAtEnd"; visible: !parent.e.missing
-                    color: parent.e.batteriesNeeded > 1 ? "#e53935" : palette.windowText
-                    text: parent.e.missing ? "" : parent.e.batteriesNeeded > 1
-                          ? qsTr("%n batteries", "", parent.e.batteriesNeeded)
-                          : qsTr("%1 % of the battery").arg(Math.round(parent.e.batteryAtEnd * 100)) }
+            RowLayout {
+                visible: !parent.e.missing
+                Label { objectName: "enduranceEnergy"; text: parent.parent.e.missing ? "" : qsTr("%1 Wh").arg(Number(parent.parent.e.energyWh).toFixed(0)) }
+                Label { objectName: "enduranceAtEnd"
+                        color: parent.parent.e.batteriesNeeded > 1 ? "#e53935" : palette.windowText
+                        text: parent.parent.e.missing ? "" : parent.parent.e.batteriesNeeded > 1
+                              ? qsTr("%n batteries", "", parent.parent.e.batteriesNeeded)
+                              : qsTr("%1 % left").arg(Math.round(parent.parent.e.batteryAtEnd * 100)) }
+            }
             Label { text: qsTr("No return"); opacity: 0.7; visible: !parent.e.missing }
-            Label { objectName: "enduranceNoReturn"; visible: !parent.e.missing; Layout.columnSpan: 3
-                    Layout.fillWidth: true; elide: Text.ElideRight
-                    text: parent.e.missing ? "" : !parent.e.homeKnown ? qsTr("unknown: the route has no home")
+            Label { objectName: "enduranceNoReturn"; visible: !parent.e.missing; Layout.fillWidth: true; elide: Text.ElideRight
+                    text: parent.e.missing ? "" : !parent.e.homeKnown ? qsTr("unknown: no home")
                           : parent.e.pointOfNoReturn ? qsTr("after %1 (leg %2)").arg(panel.units.formatDistance(parent.e.pointOfNoReturn.distance)).arg(parent.e.pointOfNoReturn.leg)
-                          : qsTr("none: home stays in reach") }
+                          : qsTr("none: home in reach")
+                    ToolTip.visible: noReturnHover.hovered; ToolTip.text: qsTr("Beyond this point of the route, flying straight home no longer lands with the reserve")
+                    HoverHandler { id: noReturnHover } }
             Label { objectName: "enduranceProblem"; visible: parent.e.missing; Layout.columnSpan: 4; Layout.fillWidth: true
-                    wrapMode: Text.Wrap; opacity: 0.8
-                    text: parent.e.problem.length > 0 ? parent.e.problem
-                                                      : qsTr("Load the vehicle's energy profile to know whether one battery flies this route.") }
+                    elide: Text.ElideRight; opacity: 0.8
+                    text: parent.e.problem.length > 0 ? parent.e.problem : qsTr("Load an energy profile to see whether the battery lasts.")
+                    ToolTip.visible: problemHover.hovered && truncated; ToolTip.text: text
+                    HoverHandler { id: problemHover } }
             Label { text: qsTr("Profile"); opacity: 0.7 }
             RowLayout {
                 Layout.columnSpan: 3
                 Layout.fillWidth: true
+                spacing: 4
                 Label { objectName: "enduranceProfile"; Layout.fillWidth: true; elide: Text.ElideMiddle
                         text: parent.parent.e.profileName.length > 0 || parent.parent.e.profileSource.length > 0
                               ? qsTr("%1 (%2)").arg(parent.parent.e.profileName.length > 0 ? parent.parent.e.profileName : qsTr("unnamed")).arg(parent.parent.e.profileSource)
                               : qsTr("none") }
                 Button { objectName: "energyProfileButton"; text: qsTr("Load…"); onClicked: profileDialog.open()
                          ToolTip.visible: hovered; ToolTip.text: qsTr("The vehicle's energy profile: a JSON file, e.g. from sortie-log fit") }
-            }
-            Label { text: qsTr("Wind"); opacity: 0.7 }
-            RowLayout {
-                Layout.columnSpan: 3
-                TextField { objectName: "windSpeedField"; Layout.preferredWidth: 52; text: Number(parent.parent.e.windSpeed).toString()
+                Label { text: qsTr("Wind"); opacity: 0.7; leftPadding: 4 }
+                TextField { objectName: "windSpeedField"; Layout.preferredWidth: 44; text: Number(parent.parent.e.windSpeed).toString()
                             validator: DoubleValidator { bottom: 0; top: 60 }
-                            onEditingFinished: parent.parent.e.windSpeed = Number(text) }
+                            onEditingFinished: parent.parent.e.windSpeed = Number(text)
+                            ToolTip.visible: hovered; ToolTip.text: qsTr("Wind speed, m/s") }
                 Label { text: qsTr("m/s from") }
-                TextField { objectName: "windFromField"; Layout.preferredWidth: 52; text: Number(parent.parent.e.windFrom).toString()
+                TextField { objectName: "windFromField"; Layout.preferredWidth: 44; text: Number(parent.parent.e.windFrom).toString()
                             validator: DoubleValidator { bottom: 0; top: 360 }
-                            onEditingFinished: parent.parent.e.windFrom = Number(text) }
+                            onEditingFinished: parent.parent.e.windFrom = Number(text)
+                            ToolTip.visible: hovered; ToolTip.text: qsTr("The direction the wind blows from, degrees clockwise from north") }
                 Label { text: "°" }
             }
         }
