@@ -57,7 +57,7 @@ mission::Result<EnergyProfile> readEnergyProfile(const QByteArray &json)
         root.requireObject();
         EnergyProfile p;
         p.name = root.stringOr("name", {});
-        const std::string &source = root.text("source", "file");
+        const std::string source = root.text("source", "file"); // a copy: the fallback is a temporary
         if (source == "file")
             p.source = ProfileSource::File;
         else if (source == "server")
