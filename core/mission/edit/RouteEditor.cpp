@@ -1,15 +1,17 @@
 #include "RouteEditor.h"
 
 #include "ActionVariants.h"
-#include "Camera.h"
+#include "DrawingTools.h"
 #include "EditSegmentsCommand.h"
+#include "EnclosedArea.h"
+#include "FigurePoints.h"
 #include "InsertSegmentsCommand.h"
 #include "MissionLog.h"
-#include "PolygonGeometry.h"
-#include "LocalTangentPlane.h"
+#include "NewSegmentDefaults.h"
 #include "RemoveSegmentsCommand.h"
 #include "ReorderSegmentsCommand.h"
 #include "ReplaceRouteCommand.h"
+#include "RouteSettingNames.h"
 #include "RouteModel.h"
 #include "SegmentParameters.h"
 #include "SetRouteSettingsCommand.h"
@@ -30,21 +32,6 @@ GeoPoint geo(const QGeoCoordinate &c)
     return c.isValid() ? GeoPoint{c.latitude(), c.longitude()} : GeoPoint{std::nan(""), std::nan("")};
 }
 
-// Three or more valid corners enclosing some area (1 m²).
-bool enclosesArea(const std::vector<GeoPoint> &polygon)
-{
-    if (polygon.size() < 3)
-        return false;
-    for (const GeoPoint &g : polygon)
-        if (!g.isValid())
-            return false;
-    const LocalTangentPlane plane(LocalTangentPlane::centroidOf(polygon));
-    std::vector<PlanePoint> pts;
-    pts.reserve(polygon.size());
-    for (const GeoPoint &g : polygon)
-        pts.push_back(plane.project(g));
-    return std::abs(polygon::signedArea(pts)) >= 1.0;
-}
 } // namespace
 
 RouteEditor::RouteEditor(RouteModel *model, QUndoStack *stack, QObject *parent)
@@ -104,21 +91,11 @@ bool RouteEditor::edit(const QList<int> &rows, const std::function<bool(int, Seg
 
 Waypoint RouteEditor::newWaypointAt(int row, const GeoPoint &position) const
 {
-    Waypoint w;
-    const RouteSettings &rs = m_model->settings();
-    w.altitude = std::max(rs.safeAltitude, std::min(50.0, rs.maxAltitude));
-    w.speed = rs.initialSpeed;
-    for (int r = std::min(row, m_model->count()) - 1; r >= 0; --r) {
-        if (const Waypoint *prev = asWaypoint(m_model->segment(r)); prev && prev->role == WaypointRole::Pass) {
-            w.altitude = prev->altitude;
-            w.altitudeType = prev->altitudeType;
-            w.speed = prev->speed;
-            w.turnType = prev->turnType;
-            break;
-        }
-    }
-    w.position = position;
-    return w;
+    const Waypoint *previousPass = nullptr;
+    for (int r = std::min(row, m_model->count()) - 1; r >= 0 && !previousPass; --r)
+        if (const Waypoint *prev = asWaypoint(m_model->segment(r)); prev && prev->role == WaypointRole::Pass)
+            previousPass = prev;
+    return newWaypoint(m_model->settings(), previousPass, position);
 }
 
 int RouteEditor::addWaypoint(const QGeoCoordinate &at)
@@ -382,56 +359,9 @@ int RouteEditor::addAreaScan(const QList<QGeoCoordinate> &polygon)
         scan.polygon.push_back(geo(c));
     if (!enclosesArea(scan.polygon))
         return refuse(tr("An area scan needs at least three corners that enclose an area.")), -1;
-    const RouteSettings &rs = m_model->settings();
-    scan.parameters.altitude = std::max(rs.safeAltitude, std::min(60.0, rs.maxAltitude));
-    scan.parameters.speed = rs.initialSpeed;
-    syncDerivedFields(scan.parameters);
+    applyAreaScanDefaults(scan, m_model->settings());
     return insertSegments(m_model->count(), {std::move(scan)}, tr("Add area scan"));
 }
-
-namespace {
-// The points of a figure an operator edits, whatever segment holds them.
-struct FigureAccess
-{
-    std::vector<GeoPoint> *corners = nullptr;        // an area scan
-    std::vector<FigurePoint> *points = nullptr;      // any other algorithm
-    FigureType figure = FigureType::Polygon;
-
-    int size() const { return corners ? int(corners->size()) : points ? int(points->size()) : 0; }
-    int minimum() const { return figure == FigureType::Polygon ? 3 : figure == FigureType::Polyline ? 2 : 1; }
-    bool movable() const { return corners || points; }
-    bool growable() const { return figure == FigureType::Polygon || figure == FigureType::Polyline; }
-    void set(int i, const GeoPoint &p)
-    {
-        if (corners) (*corners)[size_t(i)] = p;
-        else (*points)[size_t(i)].position = p;
-    }
-    void insert(int i, const GeoPoint &p)
-    {
-        if (corners) {
-            corners->insert(corners->begin() + i, p);
-        } else {
-            FigurePoint f = points->empty() ? FigurePoint{} : (*points)[size_t(std::max(0, i - 1))];
-            f.position = p;
-            points->insert(points->begin() + i, f);
-        }
-    }
-    void erase(int i)
-    {
-        if (corners) corners->erase(corners->begin() + i);
-        else points->erase(points->begin() + i);
-    }
-};
-
-FigureAccess figureAccess(Segment &s)
-{
-    if (AreaScan *a = asAreaScan(s))
-        return {&a->polygon, nullptr, FigureType::Polygon};
-    if (AlgorithmSegment *a = asAlgorithmSegment(s))
-        return {nullptr, &a->points, a->figure};
-    return {};
-}
-} // namespace
 
 bool RouteEditor::moveVertex(int row, int vertex, const QGeoCoordinate &to, EditStep step)
 {
@@ -439,7 +369,7 @@ bool RouteEditor::moveVertex(int row, int vertex, const QGeoCoordinate &to, Edit
     if (!p.isValid())
         return refuse(tr("That is not a valid position."));
     return edit({row}, [&](int, Segment &s) {
-        FigureAccess f = figureAccess(s);
+        FigurePoints f = figurePointsOf(s);
         if (vertex < 0 || vertex >= f.size())
             return refuse(tr("Segment %1 has no point %2.").arg(row + 1).arg(vertex + 1));
         f.set(vertex, p);
@@ -453,7 +383,7 @@ bool RouteEditor::insertVertex(int row, int vertex, const QGeoCoordinate &at)
     if (!p.isValid())
         return refuse(tr("That is not a valid position."));
     return edit({row}, [&](int, Segment &s) {
-        FigureAccess f = figureAccess(s);
+        FigurePoints f = figurePointsOf(s);
         if (!f.growable() || vertex < 0 || vertex > f.size())
             return refuse(tr("Segment %1 has no edge there.").arg(row + 1));
         f.insert(vertex, p);
@@ -464,7 +394,7 @@ bool RouteEditor::insertVertex(int row, int vertex, const QGeoCoordinate &at)
 bool RouteEditor::removeVertex(int row, int vertex)
 {
     return edit({row}, [&](int, Segment &s) {
-        FigureAccess f = figureAccess(s);
+        FigurePoints f = figurePointsOf(s);
         if (vertex < 0 || vertex >= f.size())
             return refuse(tr("Segment %1 has no point %2.").arg(row + 1).arg(vertex + 1));
         if (f.size() <= f.minimum())
@@ -492,21 +422,7 @@ bool RouteEditor::setRadius(int row, double meters, EditStep step)
 
 QVariantList RouteEditor::drawingTools() const
 {
-    QVariantList tools;
-    for (const AlgorithmDefinition &d : catalog().algorithms()) {
-        if (d.kind == AlgorithmKind::Waypoint || d.kind == AlgorithmKind::TakeOff || d.kind == AlgorithmKind::Landing)
-            continue;  // a click on the map adds those
-        const QString figure = d.figure == FigureType::Polygon ? QStringLiteral("polygon")
-                             : d.figure == FigureType::Polyline ? QStringLiteral("polyline")
-                             : d.figure == FigureType::Circle ? QStringLiteral("circle") : QStringLiteral("point");
-        const QVariantMap tool{{QStringLiteral("algorithm"), d.className}, {QStringLiteral("name"), d.displayName},
-                               {QStringLiteral("figure"), figure}, {QStringLiteral("minimumPoints"), std::max(1, d.minimumPoints)}};
-        if (d.kind == AlgorithmKind::AreaScan)
-            tools.prepend(tool);
-        else
-            tools.append(tool);
-    }
-    return tools;
+    return drawingToolsOf(catalog());
 }
 
 void RouteEditor::setCatalog(const AlgorithmCatalog *catalog)
@@ -549,51 +465,18 @@ int RouteEditor::addSegment(const QString &algorithm, const QList<QGeoCoordinate
     if (int(corners.size()) < def->minimumPoints || (def->figure == FigureType::Polygon && !enclosesArea(corners)))
         return refuse(tr("%1 needs at least %n point(s)%2.", nullptr, def->minimumPoints)
                           .arg(def->displayName, def->figure == FigureType::Polygon ? tr(" enclosing an area") : QString())), -1;
-    const RouteSettings &rs = m_model->settings();
-    const double height = std::max(rs.safeAltitude, std::min(50.0, rs.maxAltitude));
-    if (def->figure == FigureType::Point || def->figure == FigureType::Circle)
-        for (FigurePoint &p : a.points)
-            p.altitude = height;  // the point tools fly at their point's altitude
-    if (def->figure == FigureType::Circle)
-        a.figureParameters = {50.0};
-    for (const ParameterDefinition &p : def->parameters) {
-        QString value = p.defaultValue;
-        if (p.name == QLatin1String("height"))
-            value = parameterNumberText(height);
-        else if (p.name == QLatin1String("camera") && value.isEmpty() && !builtInCameras().empty())
-            value = builtInCameras().front().name;  // a photo tool flies with a camera from the start
-        else if (p.name == QLatin1String("speed"))
-            value = parameterNumberText(rs.initialSpeed);
-        if (!value.isEmpty())
-            a.parameters.push_back({p.name, value});
-    }
+    applyToolDefaults(a, *def, m_model->settings());
     return insertSegments(m_model->count(), {std::move(a)}, tr("Add %1").arg(def->displayName));
 }
 
 bool RouteEditor::setRouteProperty(const QString &name, const QVariant &value)
 {
     RouteSettings s = m_model->settings();
-    bool ok = true;
-    if (name == QLatin1String("name"))
-        s.name = value.toString();
-    else if (name == QLatin1String("safeAltitude"))
-        s.safeAltitude = value.toDouble(&ok);
-    else if (name == QLatin1String("maxAltitude"))
-        s.maxAltitude = value.toDouble(&ok);
-    else if (name == QLatin1String("initialSpeed"))
-        s.initialSpeed = value.toDouble(&ok);
-    else if (name == QLatin1String("maxSpeed"))
-        s.maxSpeed = value.toDouble(&ok);
-    else if (name == QLatin1String("cornerRadius"))
-        s.cornerRadius = value.toDouble(&ok);
-    else if (name == QLatin1String("takeoffHeight"))
-        s.takeoffHeight = value.toDouble(&ok);
-    else if (name == QLatin1String("maxHorizontalSpeed"))
-        s.profile.maxHorizontalSpeed = value.toDouble(&ok);
-    else
-        return refuse(tr("A route has no setting \"%1\".").arg(name));
-    if (!ok)
-        return refuse(tr("%1 needs a number.").arg(name));
+    switch (assignRouteSetting(s, name, value)) {
+    case SettingAssignment::UnknownName: return refuse(tr("A route has no setting \"%1\".").arg(name));
+    case SettingAssignment::NotANumber: return refuse(tr("%1 needs a number.").arg(name));
+    case SettingAssignment::Set: break;
+    }
     if (!(s == m_model->settings()))
         setSettings(s, tr("Set route %1").arg(name));
     return true;

@@ -67,4 +67,16 @@ private:
 Result<Json> parseJson(const QByteArray &data);
 MissionError errorAt(const JsonPathError &e);
 
+// The index of the cursor's string in `names` (a file's spelling of an enum, in the enum's order);
+// an unknown name fails at the cursor.
+template<size_t N>
+int indexOf(const char *const (&names)[N], const JsonCursor &c)
+{
+    const std::string s = c.string().toStdString();
+    for (size_t i = 0; i < N; ++i)
+        if (s == names[i])
+            return int(i);
+    c.fail(QStringLiteral("unknown value \"%1\"").arg(QString::fromStdString(s)));
+}
+
 } // namespace sortie::mission::formats
