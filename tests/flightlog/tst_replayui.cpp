@@ -47,7 +47,8 @@ QVariantMap telemetryPageProperties(client::ClientGraph &graph)
     return {{QStringLiteral("fleet"), QVariant::fromValue<QObject *>(graph.fleet())},
             {QStringLiteral("replay"), QVariant::fromValue<QObject *>(&graph.replay())},
             {QStringLiteral("serverHistory"), QVariant::fromValue<QObject *>(&graph.serverHistory())},
-            {QStringLiteral("comparison"), QVariant::fromValue<QObject *>(&graph.comparison())}};
+            {QStringLiteral("comparison"), QVariant::fromValue<QObject *>(&graph.comparison())},
+            {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())}};
 }
 
 QPointF centre(QQuickItem *item)
