@@ -4,6 +4,7 @@
 // server's history of a vehicle chosen in the timeline's dialog, fetched from the simulator, replays
 // with the vehicle drawn where the server had it.
 #include "ClientGraph.h"
+#include "RouteEndurance.h"
 #include "ComparisonController.h"
 #include "ConnectionController.h"
 #include "HciClient.h"
@@ -47,7 +48,8 @@ QVariantMap telemetryPageProperties(client::ClientGraph &graph)
     return {{QStringLiteral("fleet"), QVariant::fromValue<QObject *>(graph.fleet())},
             {QStringLiteral("replay"), QVariant::fromValue<QObject *>(&graph.replay())},
             {QStringLiteral("serverHistory"), QVariant::fromValue<QObject *>(&graph.serverHistory())},
-            {QStringLiteral("comparison"), QVariant::fromValue<QObject *>(&graph.comparison())}};
+            {QStringLiteral("comparison"), QVariant::fromValue<QObject *>(&graph.comparison())},
+            {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())}};
 }
 
 QPointF centre(QQuickItem *item)

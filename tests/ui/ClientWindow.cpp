@@ -26,6 +26,8 @@ ClientWindow::ClientWindow(Options options)
     vci.count = options.vciVehicles;
     vci.firstPort = 0;
     vci.vehicle.timeScale = options.vciTimeScale;
+    if (options.vciEnergy)
+        vci.vehicle.energy = *options.vciEnergy;
     if (options.vciHome.isValid()) {
         vci.vehicle.homeLatitude = options.vciHome.latitude();
         vci.vehicle.homeLongitude = options.vciHome.longitude();

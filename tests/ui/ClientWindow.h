@@ -21,6 +21,7 @@
 #include <QTemporaryDir>
 
 #include <functional>
+#include <optional>
 #include <memory>
 
 namespace sortie::test {
@@ -33,6 +34,8 @@ public:
         int vciVehicles = 1;
         QGeoCoordinate vciHome;     // invalid: the simulator's default, south-east of the demo route
         double vciTimeScale = 1;    // simulated seconds per real second for the VCI vehicles
+        // The VCI vehicles' battery and powers (a small battery drains fast); empty: the sim's default.
+        std::optional<endurance::EnergyProfile> vciEnergy;
         int uploadStepMs = 20;
         QSize size{1280, 800};
         bool activate = false;      // also wait until the window is active (keyboard tests)

@@ -11,6 +11,7 @@ GroupBox {
     id: panel
     required property Vehicle vehicle      // null: none chosen
     required property DisplayUnits units
+    required property EnduranceAdvisory advisory   // for the same vehicle: battery at the end, energy home
     readonly property alias status: status
     title: vehicle ? qsTr("%1 (%2, %3)").arg(vehicle.name).arg(vehicle.protocol).arg(units.formatLinkState(vehicle.linkState))
                    : qsTr("No vehicle chosen")
@@ -98,6 +99,18 @@ GroupBox {
         Instrument {
             caption: qsTr("Left"); field: "missionLeft"; staleField: "latitude"
             value: status.missionFlying ? qsTr("%1, %2").arg(panel.units.formatDistance(status.distanceLeft)).arg(panel.units.formatDuration(status.timeLeft)) : "—"
+        }
+        Label {
+            objectName: "enduranceLine"
+            Layout.fillWidth: true
+            text: panel.advisory.summary
+            wrapMode: Text.Wrap
+            font.bold: panel.advisory.level === EnduranceAdvisory.Amber || panel.advisory.level === EnduranceAdvisory.Red
+            color: panel.advisory.level === EnduranceAdvisory.Red ? "#e53935"
+                 : panel.advisory.level === EnduranceAdvisory.Amber ? "#fb8c00" : panel.palette.windowText
+            ToolTip.visible: hoverArea.hovered && panel.advisory.problem.length > 0
+            ToolTip.text: panel.advisory.problem
+            HoverHandler { id: hoverArea }
         }
     }
 }

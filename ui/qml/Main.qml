@@ -132,6 +132,7 @@ ApplicationWindow {
             id: telemetryPage
             objectName: "telemetryPage"
             fleet: window.fleet
+            endurance: window.endurance
             replay: window.replay
             serverHistory: window.serverHistory
             comparison: window.comparison

@@ -17,6 +17,8 @@ Page {
     // The server's history for the replay (the timeline's Server history… dialog).
     required property ServerHistoryRequest serverHistory
     required property ComparisonController comparison
+    // The energy profile and wind the in-flight advice prices with (the mission page chooses them).
+    required property RouteEndurance endurance
     readonly property bool replaying: replay.active
     property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
     property list<string> plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
@@ -27,6 +29,15 @@ Page {
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
     property bool dark: false
+    readonly property alias advisory: advisory
+
+    // Will the chosen vehicle's battery bring it home? Not for a replayed flight: nothing to send.
+    EnduranceAdvisory {
+        id: advisory
+        objectName: "enduranceAdvisory"
+        vehicle: page.replaying ? null : page.current
+        endurance: page.endurance
+    }
 
     SplitView {
         anchors.fill: parent
@@ -167,6 +178,41 @@ Page {
                     }
                 }
             }
+            // Time to come home: amber, then red, with Return home behind the command bar's
+            // confirmation (the banner appears under the operator's pointer: a click meant for
+            // something else must not send the vehicle home).
+            Rectangle {
+                id: banner
+                objectName: "enduranceBanner"
+                readonly property bool red: advisory.level === EnduranceAdvisory.Red
+                Layout.fillWidth: true
+                visible: advisory.level === EnduranceAdvisory.Amber || red
+                implicitHeight: bannerRow.implicitHeight + 12
+                color: red ? "#c62828" : "#fb8c00"
+                RowLayout {
+                    id: bannerRow
+                    anchors.fill: parent
+                    anchors.margins: 6
+                    spacing: 8
+                    Label {
+                        objectName: "enduranceAdvice"
+                        Layout.fillWidth: true
+                        text: advisory.advice
+                        color: banner.red ? "white" : "black"
+                        font.bold: true
+                        wrapMode: Text.Wrap
+                    }
+                    Button {
+                        objectName: "adviceReturnHomeButton"
+                        text: qsTr("Return home")
+                        enabled: page.current !== null
+                        onClicked: {
+                            const v = page.current
+                            commands.confirm(advisory.returnHomeQuestion, () => page.fleet.commands.send(CommandPolicy.ReturnHome, v))
+                        }
+                    }
+                }
+            }
             CommandBar {
                 id: commands
                 Layout.fillWidth: true
@@ -198,6 +244,7 @@ Page {
                 Layout.fillWidth: true
                 vehicle: page.current
                 units: page.units
+                advisory: advisory
             }
             // The plot: pick fields (each its own colour; another unit gets its own axis), or
             // compare the same field across every vehicle.

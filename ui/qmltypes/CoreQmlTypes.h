@@ -10,6 +10,7 @@
 #include "MissionUploader.h"
 #include "RoutePreparation.h"
 #include "RouteEndurance.h"
+#include "EnduranceAdvisory.h"
 #include "ConnectionController.h"
 #include "MissionController.h"
 #include "RouteAnalyzer.h"
@@ -136,6 +137,15 @@ struct RouteEnduranceForeign
     QML_FOREIGN(sortie::endurance::RouteEndurance)
     QML_NAMED_ELEMENT(RouteEndurance)
     QML_UNCREATABLE("made by the program and handed to the views")
+};
+
+// Creatable: the fly view makes one for the chosen vehicle (`vehicle`, `endurance`), as it does a
+// FlightStatus; the rules are C++ (core/endurance/client), the view only shows them.
+struct EnduranceAdvisoryForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::endurance::EnduranceAdvisory)
+    QML_NAMED_ELEMENT(EnduranceAdvisory)
 };
 
 struct RoutePreparationForeign

@@ -69,6 +69,7 @@ public:
     void setProfile(const std::optional<EnergyProfile> &profile, const QString &path = {});
     const std::optional<EnergyProfile> &profile() const { return m_profile; }
     const std::optional<EnduranceEstimate> &estimate() const { return m_estimate; }
+    const FlightConditions &conditions() const { return m_conditions; }
     EnduranceRule *rule() const { return m_rule.get(); }
 
     bool isMissing() const { return !m_estimate.has_value(); }
