@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QImage>
+#include <QPalette>
 #include <QQmlEngine>
 #include <QQuickItem>
 #include <QQuickView>
@@ -12,6 +13,9 @@ namespace sortie::test {
 // Chooses what every offscreen UI test draws with: the software scene graph and the Fusion
 // style. Call before the first window exists (initTestCase).
 void useSoftwareRendering();
+
+// The dark palette the UI tests switch to (QGuiApplication::setPalette) to check the dark views.
+QPalette darkPalette();
 
 // A real QML scene in an offscreen window: QML text importing Sortie.Ui, loaded, shown and
 // exposed. Objects are found by objectName.

@@ -172,14 +172,7 @@ private slots:
         sim.knobs().timeScale = 1;
 
         // The same in the dark palette.
-        QPalette dark;
-        dark.setColor(QPalette::Window, QColor(0x2b, 0x2b, 0x2b));
-        dark.setColor(QPalette::WindowText, QColor(0xe0, 0xe0, 0xe0));
-        dark.setColor(QPalette::Base, QColor(0x1e, 0x1e, 0x1e));
-        dark.setColor(QPalette::Text, QColor(0xe0, 0xe0, 0xe0));
-        dark.setColor(QPalette::Button, QColor(0x35, 0x35, 0x35));
-        dark.setColor(QPalette::ButtonText, QColor(0xe0, 0xe0, 0xe0));
-        QGuiApplication::setPalette(dark);
+        QGuiApplication::setPalette(sortie::test::darkPalette());
         QTRY_VERIFY(m_client->window()->property("dark").toBool());
         if (banner->isVisible())
             shoot(QStringLiteral("advice-red-dark.png"));

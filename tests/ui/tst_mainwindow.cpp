@@ -307,14 +307,7 @@ private slots:
 
     void followsADarkPalette()
     {
-        QPalette dark;
-        dark.setColor(QPalette::Window, QColor(0x2b, 0x2b, 0x2b));
-        dark.setColor(QPalette::WindowText, QColor(0xe0, 0xe0, 0xe0));
-        dark.setColor(QPalette::Base, QColor(0x1e, 0x1e, 0x1e));
-        dark.setColor(QPalette::Text, QColor(0xe0, 0xe0, 0xe0));
-        dark.setColor(QPalette::Button, QColor(0x35, 0x35, 0x35));
-        dark.setColor(QPalette::ButtonText, QColor(0xe0, 0xe0, 0xe0));
-        QGuiApplication::setPalette(dark);
+        QGuiApplication::setPalette(sortie::test::darkPalette());
         QTRY_VERIFY(m_window->property("dark").toBool());
         QTest::keyClick(m_window, Qt::Key_2, Qt::ControlModifier);
         auto *map = page("missionPage")->property("map").value<MapView *>();

@@ -20,20 +20,6 @@ using namespace sortie;
 
 namespace {
 
-QPalette darkPalette()
-{
-    QPalette dark;
-    dark.setColor(QPalette::Window, QColor(0x2b, 0x2b, 0x2b));
-    dark.setColor(QPalette::WindowText, QColor(0xe0, 0xe0, 0xe0));
-    dark.setColor(QPalette::Base, QColor(0x1e, 0x1e, 0x1e));
-    dark.setColor(QPalette::AlternateBase, QColor(0x33, 0x33, 0x33));
-    dark.setColor(QPalette::Text, QColor(0xe0, 0xe0, 0xe0));
-    dark.setColor(QPalette::Button, QColor(0x35, 0x35, 0x35));
-    dark.setColor(QPalette::ButtonText, QColor(0xe0, 0xe0, 0xe0));
-    dark.setColor(QPalette::ToolTipBase, QColor(0x35, 0x35, 0x35));
-    dark.setColor(QPalette::ToolTipText, QColor(0xe0, 0xe0, 0xe0));
-    return dark;
-}
 
 QString outputDir()
 {
@@ -182,7 +168,7 @@ Item {
     {
         QFETCH(QSize, size);
         QFETCH(bool, dark);
-        QGuiApplication::setPalette(dark ? darkPalette() : QPalette());
+        QGuiApplication::setPalette(dark ? sortie::test::darkPalette() : QPalette());
         QQuickWindow *window = m_client->window();
         window->resize(size);
         QTRY_COMPARE(window->size(), size);
