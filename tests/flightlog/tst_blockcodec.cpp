@@ -177,6 +177,36 @@ private slots:
         }
     }
 
+    // Found by fuzz_telemetry_block: a block naming one field twice was decoded as two runs of it
+    // (and summarized as one). Both readers refuse it now.
+    void aFieldTwiceIsRefused()
+    {
+        BlockFields fields{{TelemetryField::Latitude, {{1000, 56.9}, {1100, 56.91}}},
+                           {TelemetryField::Longitude, {{1000, 24.1}, {1100, 24.11}}}};
+        std::string block = TelemetryBlockCodec::encode(fields);
+        QVERIFY(TelemetryBlockCodec::decode(block));
+        // Header: version, t0, span, field count (varints); then the first field: its id, count,
+        // flags, payload length and payload; the second field's id follows.
+        const auto varintEnd = [&block](size_t at) { while (uchar(block[at]) & 0x80) ++at; return at + 1; };
+        size_t at = varintEnd(varintEnd(varintEnd(1)));
+        QCOMPARE(uchar(block[at]), uchar(TelemetryField::Latitude));
+        const size_t countEnd = varintEnd(at + 1);
+        size_t lengthAt = countEnd + 1, length = 0, shift = 0;
+        for (; uchar(block[lengthAt]) & 0x80; ++lengthAt, shift += 7)
+            length |= size_t(uchar(block[lengthAt]) & 0x7f) << shift;
+        length |= size_t(uchar(block[lengthAt])) << shift;
+        const size_t second = lengthAt + 1 + length;
+        QCOMPARE(uchar(block[second]), uchar(TelemetryField::Longitude));
+        block[second] = char(TelemetryField::Latitude);
+        block.resize(block.size() - 4);
+        const uint32_t crc = flightlog::crc32(block);
+        block.append(reinterpret_cast<const char *>(&crc), 4);
+        std::string error;
+        QVERIFY(!TelemetryBlockCodec::decode(block, &error));
+        QCOMPARE(error, std::string("a field twice in one block"));
+        QVERIFY(!TelemetryBlockCodec::summarize(block, &error));
+    }
+
     void crcIsIeee()
     {
         QCOMPARE(flightlog::crc32("123456789"), 0xCBF43926u);

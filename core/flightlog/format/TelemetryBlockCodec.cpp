@@ -135,13 +135,18 @@ struct FieldHeader
     std::string_view payload;
 };
 
-bool readFieldHeader(Reader &r, FieldHeader *f, std::string *error)
+// `seen` marks the fields read so far: a field twice in one block is damage (the encoder writes each
+// once), and would make a field's samples two runs that each reader joins differently.
+bool readFieldHeader(Reader &r, FieldHeader *f, uint32_t *seen, std::string *error)
 {
     uint8_t id, flags;
     uint64_t count, length;
     if (!r.byte(&id) || id >= vehicle::kTelemetryFieldCount || !r.varint(&count) || !r.byte(&flags)
         || !r.varint(&length) || length > r.left() || count == 0 || length == 0 || count > length * 8)
         return fail(error, "bad field header");
+    if (*seen & (1u << id))
+        return fail(error, "a field twice in one block");
+    *seen |= 1u << id;
     f->field = TelemetryField(id);
     f->count = count;
     f->flags = flags;
@@ -377,9 +382,10 @@ std::optional<BlockSummary> TelemetryBlockCodec::summarize(std::string_view bloc
     s.t0 = h.t0;
     s.t1 = h.t1;
     uint64_t timesCount = 0;
+    uint32_t seen = 0;
     for (uint64_t i = 0; i < h.fieldCount; ++i) {
         FieldHeader f;
-        if (!readFieldHeader(r, &f, error))
+        if (!readFieldHeader(r, &f, &seen, error))
             return std::nullopt;
         if ((f.flags & kSameTimes) && (i == 0 || f.count != timesCount)) {
             fail(error, "shared times of another length");
@@ -403,9 +409,10 @@ std::optional<BlockFields> TelemetryBlockCodec::decode(std::string_view block, s
     BlockFields fields;
     fields.reserve(only ? 1 : size_t(h.fieldCount));
     std::vector<int64_t> times;
+    uint32_t seen = 0;
     for (uint64_t i = 0; i < h.fieldCount; ++i) {
         FieldHeader f;
-        if (!readFieldHeader(r, &f, error))
+        if (!readFieldHeader(r, &f, &seen, error))
             return std::nullopt;
         Reader payload(f.payload);
         // Times are read for every field: a later one may share them.
