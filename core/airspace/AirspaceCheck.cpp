@@ -71,7 +71,7 @@ size_t hashLeg(const FlownLeg &leg)
         mix(p.at.y);
         mix(p.along);
         for (double v : p.height)
-            mix(v);
+            mix(std::isnan(v) ? 0.0 : v);
     }
     return h;
 }

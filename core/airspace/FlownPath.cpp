@@ -87,16 +87,22 @@ FlownPath flownPath(const ProfileRoute &route, const TerrainProfile *terrain, co
     for (const ProfileWaypoint &w : route.waypoints)
         vertices.push_back(w.position);
     const LocalTangentPlane own(plane ? plane->origin() : (vertices.empty() ? GeoPoint{} : LocalTangentPlane::centroidOf(vertices)));
-    Builder b{route, terrain, plane ? *plane : own};
+    Builder b{route, terrain, plane ? *plane : own, kNaN, {}};
     b.out.plane = b.plane;
     if (terrain && terrain->homeGround.hasValue())
         b.homeGround = terrain->homeGround.ground;
     if (n == 0)
         return std::move(b.out);
 
-    std::vector<double> startOf(n, 0.0);
-    for (size_t i = 1; i < n; ++i)
-        startOf[i] = terrain ? terrain->path.vertexDistance[i] : startOf[i - 1] + mission::geodesicDistance(vertices[i - 1], vertices[i]);
+    // Each leg's length from its own ends (not a difference of running sums, whose last bits change
+    // when an earlier leg does): an unchanged leg stays equal, and the checker keeps its findings.
+    std::vector<double> lengthOf(n, 0.0), startOf(n, 0.0);
+    for (size_t i = 1; i < n; ++i) {
+        lengthOf[i] = mission::geodesicDistance(vertices[i - 1], vertices[i]);
+        startOf[i] = terrain ? terrain->path.vertexDistance[i] : startOf[i - 1] + lengthOf[i];
+    }
+    // Distances along a leg to the micrometre, for the same reason.
+    const auto micrometres = [](double v) { return std::round(v * 1e6) / 1e6; };
 
     // A lone point is one leg that goes nowhere (its take-off and landing), as the time model has it.
     const size_t legCount = std::max<size_t>(1, n - 1);
@@ -107,7 +113,7 @@ FlownPath flownPath(const ProfileRoute &route, const TerrainProfile *terrain, co
         leg.leg = int(k) + 1;
         leg.row = route.waypoints[z].row;
         leg.start = startOf[a];
-        leg.length = startOf[z] - startOf[a];
+        leg.length = z > a ? lengthOf[z] : 0.0;
         leg.points.push_back(b.vertexPoint(a, 0.0));
         // Between the ends: the profile's samples where the ground is known there (they carry the
         // terrain following and the ground an AGL zone is measured from); straight otherwise.
@@ -119,7 +125,7 @@ FlownPath flownPath(const ProfileRoute &route, const TerrainProfile *terrain, co
                 if (!g.hasValue())
                     continue;
                 const terrain::PathSamplePoint &sp = terrain->path.points[s];
-                const double along = sp.distance - startOf[a];
+                const double along = micrometres(sp.distance - startOf[a]);
                 const double f = leg.length > 0 ? along / leg.length : 0.0;
                 const double own = wa.reference == wz.reference ? wa.altitude + f * (wz.altitude - wa.altitude) : kNaN;
                 FlownPoint p{sp.position, b.plane.project(sp.position), along};

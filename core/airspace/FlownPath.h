@@ -32,7 +32,13 @@ struct FlownPoint
     std::array<double, 3> height{std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN(),
                                  std::numeric_limits<double>::quiet_NaN()};
     double in(HeightReference r) const { return height[size_t(r)]; }
-    bool operator==(const FlownPoint &) const = default;
+    // The same place, distance and heights (an unknown height equals an unknown one).
+    bool sameAs(const FlownPoint &o) const
+    {
+        const auto same = [](double a, double b) { return a == b || (a != a && b != b); };
+        return at.x == o.at.x && at.y == o.at.y && along == o.along && same(height[0], o.height[0]) && same(height[1], o.height[1])
+            && same(height[2], o.height[2]);
+    }
 };
 
 // One leg as `sortie-plan profile` numbers it (from 1; the flight home is the leg after the last),
@@ -45,7 +51,15 @@ struct FlownLeg
     double start = 0.0;     // metres from the route's start to the leg's start
     double length = 0.0;    // horizontal metres (WGS-84 geodesic)
     std::vector<FlownPoint> points;
-    bool sameShape(const FlownLeg &o) const { return length == o.length && points == o.points; }
+    bool sameShape(const FlownLeg &o) const
+    {
+        if (length != o.length || points.size() != o.points.size())
+            return false;
+        for (size_t i = 0; i < points.size(); ++i)
+            if (!points[i].sameAs(o.points[i]))
+                return false;
+        return true;
+    }
 };
 
 struct FlownPath

@@ -47,7 +47,7 @@ std::vector<Zone> benchZones(int n)
             z.shape = ZonePolygons{{ZonePolygon{{ring}}}};
         }
         if (i % 2) {
-            z.floor = HeightLimit{40 + 10 * (i % 5), HeightReference::AboveTerrain};
+            z.floor = HeightLimit{40.0 + 10 * (i % 5), HeightReference::AboveTerrain};
             z.ceiling = HeightLimit{120, HeightReference::AboveTerrain};
         }
         zones.push_back(std::move(z));

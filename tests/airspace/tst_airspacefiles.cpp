@@ -109,7 +109,7 @@ private slots:
     void kmlZones()
     {
         const QByteArray kml = R"(<?xml version="1.0" encoding="UTF-8"?>
-<kml xmlns="http://www.opengis.net/kml/2.2"><Document>
+<kml><Document>
   <Placemark><name>Prison</name><Polygon><outerBoundaryIs><LinearRing><coordinates>
     24.0,56.9,0 24.1,56.9,0 24.1,57.0,0 24.0,56.9,0
   </coordinates></LinearRing></outerBoundaryIs>

@@ -3,6 +3,7 @@
 #include "AirspaceCheck.h"
 #include "AirspaceRule.h"
 #include "Geodesy.h"
+#include "ValidationGate.h"
 
 #include <QtTest>
 
@@ -274,6 +275,45 @@ private slots:
             QVERIFY(near(again.violations[i].fromDistance, fresh.violations[i].fromDistance, 1e-9));
         }
         QCOMPARE(first.violations.size(), fresh.violations.size());
+    }
+
+    // The rule on a route: the leg into the zone is an error on the row it ends at, and the gate
+    // refuses to release the route; the flight home (the leg after the last) is checked too.
+    void theRuleBlocksRelease()
+    {
+        using namespace sortie::mission;
+        const LocalTangentPlane plane(kOrigin);
+        Route route;
+        route.settings.name = QStringLiteral("r");
+        for (const double x : {-300.0, -100.0, -50.0}) {
+            Waypoint w;
+            w.position = plane.unproject({x, 50});
+            w.altitude = 40;
+            route.segments.push_back(w);
+        }
+        std::get<Waypoint>(route.segments[2]).position = plane.unproject({250, 50});
+        AirspaceRule rule;
+        rule.setZones(std::make_shared<const ZoneSet>(std::vector<Zone>{square(plane, 0, 0, 100, 100)}));
+        std::vector<ValidationIssue> issues;
+        rule.check(route, nullptr, issues);
+        QCOMPARE(issues.size(), size_t(1));
+        QCOMPARE(issues.front().rule, QStringLiteral("airspace-exclusion"));
+        QCOMPARE(issues.front().severity, Severity::Error);
+        QCOMPARE(issues.front().segment, 2);
+        QVERIFY2(issues.front().message.startsWith(QStringLiteral("Leg 2 enters 'square' from 300 m to 400 m")), qPrintable(issues.front().message));
+        ValidationReport report;
+        report.issues = issues;
+        QVERIFY(!permitRelease(report, ValidationOverride::None, QStringLiteral("route")).ok());
+
+        // Ending at x = -100 and flying home to x = 250: the flight home (leg 3) crosses the square.
+        route.segments.pop_back();
+        route.settings.home = HomePosition{plane.unproject({250, 50}), 0};
+        route.settings.endAction = EndAction::ReturnHome;
+        const AirspaceReport home = checkAirspace(flownPath(route, nullptr, nullptr, &plane), {square(plane, 0, 0, 100, 100)});
+        QCOMPARE(home.violations.size(), size_t(1));
+        QCOMPARE(home.violations.front().leg, 2);
+        QCOMPARE(home.violations.front().row, -1);
+        QVERIFY(near(home.violations.front().fromDistance, 300) && near(home.violations.front().toDistance, 400));
     }
 };
 
