@@ -62,19 +62,6 @@ mission::GeoBox boxOf(const Zone &z)
     return b;
 }
 
-size_t hashLeg(const FlownLeg &leg)
-{
-    size_t h = std::hash<double>{}(leg.length);
-    const auto mix = [&](double v) { h ^= std::hash<double>{}(v) + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2); };
-    for (const FlownPoint &p : leg.points) {
-        mix(p.at.x);
-        mix(p.at.y);
-        mix(p.along);
-        for (double v : p.height)
-            mix(std::isnan(v) ? 0.0 : v);
-    }
-    return h;
-}
 } // namespace
 
 QString violationKindName(ViolationKind kind)
@@ -146,8 +133,7 @@ struct AirspaceChecker::LegFindings
 };
 
 AirspaceChecker::AirspaceChecker(std::shared_ptr<const ZoneSet> zones, double buffer)
-    : m_zones(std::move(zones)), m_buffer(std::max(0.0, buffer)),
-      m_memo(std::make_unique<std::unordered_multimap<size_t, std::pair<FlownLeg, std::shared_ptr<const LegFindings>>>>())
+    : m_zones(std::move(zones)), m_buffer(std::max(0.0, buffer))
 {
 }
 
@@ -252,25 +238,32 @@ AirspaceReport AirspaceChecker::check(const FlownPath &path)
     if (path.legs.empty())
         return report;
     const Frame &frame = frameFor(path);
-    auto memo = std::make_unique<std::unordered_multimap<size_t, std::pair<FlownLeg, std::shared_ptr<const LegFindings>>>>();
-    memo->reserve(path.legs.size());
-    for (const FlownLeg &leg : path.legs) {
-        const size_t h = hashLeg(leg);
-        std::shared_ptr<const LegFindings> found;
-        for (auto [it, end] = m_memo->equal_range(h); it != end && !found; ++it)
-            if (it->second.first.sameShape(leg))
-                found = it->second.second;
-        if (!found) {
-            found = std::make_shared<const LegFindings>(checkLeg(leg, frame));
+    std::vector<LegFindings> findings(path.legs.size());
+    long shift = 0;  // the previous path's leg k + shift is this one's leg k, while they match
+    for (size_t k = 0; k < path.legs.size(); ++k) {
+        const FlownLeg &leg = path.legs[k];
+        const LegFindings *before = nullptr;
+        for (const long d : {shift, shift + 1, shift - 1}) {
+            const long j = long(k) + d;
+            if (j >= 0 && size_t(j) < m_lastLegs.size() && m_lastLegs[size_t(j)].sameShape(leg)) {
+                before = &m_lastFindings[size_t(j)];
+                shift = d;
+                break;
+            }
+        }
+        if (before) {
+            findings[k] = *before;
+        } else {
+            findings[k] = checkLeg(leg, frame);
             ++m_legsChecked;
         }
-        for (const auto &v : found->violations)
+        for (const auto &v : findings[k].violations)
             report.violations.push_back({v.zone, v.kind, leg.leg, leg.row, leg.start + v.from, leg.start + v.to, v.unknown});
-        for (const auto &[zone, c] : found->warnings)
+        for (const auto &[zone, c] : findings[k].warnings)
             report.warnings.push_back({zone, leg.leg, leg.row, c});
-        memo->emplace(h, std::make_pair(leg, std::move(found)));
     }
-    m_memo = std::move(memo);
+    m_lastLegs = path.legs;  // copy-assigned: the legs' storage is reused
+    m_lastFindings = std::move(findings);
     return report;
 }
 

@@ -4,7 +4,6 @@
 #include "Zone.h"
 
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 namespace sortie::airspace {
@@ -64,7 +63,8 @@ private:
 
 // Checks flown paths against a zone set, every piece of every leg in 3D. It remembers each leg's
 // findings: checking an edited path again checks only the legs whose shape changed (dragging a
-// waypoint re-checks its two legs).
+// waypoint re-checks its two legs; a waypoint inserted or removed shifts the rest, which are
+// found one place on).
 class AirspaceChecker
 {
 public:
@@ -85,7 +85,8 @@ private:
     std::shared_ptr<const ZoneSet> m_zones;
     double m_buffer;
     std::unique_ptr<Frame> m_frame;
-    std::unique_ptr<std::unordered_multimap<size_t, std::pair<FlownLeg, std::shared_ptr<const LegFindings>>>> m_memo;
+    std::vector<FlownLeg> m_lastLegs;
+    std::vector<LegFindings> m_lastFindings;
     int m_legsChecked = 0;
 };
 

@@ -275,6 +275,10 @@ private slots:
             QVERIFY(near(again.violations[i].fromDistance, fresh.violations[i].fromDistance, 1e-9));
         }
         QCOMPARE(first.violations.size(), fresh.violations.size());
+        // A waypoint inserted: its two new legs are checked, the rest are found one place on.
+        points.insert(points.begin() + 20, At{-200, 300, 100});
+        checker.check(flownPath(routeThrough(plane, points), nullptr, {}, &plane));
+        QCOMPARE(checker.legsCheckedLastTime(), 2);
     }
 
     // The rule on a route: the leg into the zone is an error on the row it ends at, and the gate

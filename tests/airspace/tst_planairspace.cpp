@@ -1,6 +1,7 @@
 // sortie-plan airspace (and stats --zones), run as a process over route and zone files the test
 // writes: the JSON keys the issue names, legs numbered as `profile` numbers them, the exit codes.
 #include "Geodesy.h"
+#include "HgtWriter.h"
 #include "JsonCursor.h"
 #include "MissionFiles.h"
 
@@ -157,6 +158,28 @@ private slots:
         QCOMPARE(a.at("violations").at(0).at("leg").get<int>(), 2);
         QVERIFY(!a.at("violations").at(0).at("heightUnknown").get<bool>());
         QVERIFY(near(a.at("violations").at(0).at("fromDistance").get<double>(), 1210));
+    }
+
+    // An AGL route against AMSL zones: without terrain its AMSL height is unknown, so both zones'
+    // shadows count (flagged); over flat ground at 100 m (--dem) it flies at 130 m AMSL: inside the
+    // 50..150 m band, under the zone above 200 m.
+    void theGroundDecidesAglAgainstAmsl()
+    {
+        QVERIFY(QDir(m_dir.path()).mkpath(QStringLiteral("dem")));
+        QVERIFY(sortie::terrain::test::writeHgt(path("dem/N56E024.hgt"), 1201, [](int, int) { return 100; }));
+        const Run blind = run({QStringLiteral("airspace"), path("line.sortie"), QStringLiteral("--zones"), path("amsl.geojson"), QStringLiteral("--json")});
+        QCOMPARE(blind.code, 2);
+        const Json b = Json::parse(blind.out.toStdString()).at("routes").at(0).at("airspace").at("violations");
+        QCOMPARE(b.size(), size_t(2));
+        QVERIFY(b.at(0).at("heightUnknown").get<bool>() && b.at(1).at("heightUnknown").get<bool>());
+        const Run seen = run({QStringLiteral("airspace"), path("line.sortie"), QStringLiteral("--zones"), path("amsl.geojson"), QStringLiteral("--dem"),
+                              path("dem"), QStringLiteral("--json")});
+        QCOMPARE(seen.code, 2);
+        const Json v = Json::parse(seen.out.toStdString()).at("routes").at(0).at("airspace").at("violations");
+        QCOMPARE(v.size(), size_t(1));
+        QCOMPARE(v.at(0).at("zone").get<std::string>(), std::string("Band"));
+        QVERIFY(!v.at(0).at("heightUnknown").get<bool>());
+        QVERIFY(near(v.at(0).at("fromDistance").get<double>(), 1210) && near(v.at(0).at("toDistance").get<double>(), 1460));
     }
 
     void statsAddsTheZonesToTheIssues()
