@@ -1,5 +1,6 @@
 // The zone readers: GeoJSON, KML and a .plan's geofence, good files and bad ones (a bad feature is
 // named and left out, the rest kept), and the .plan geofence and rally points both ways.
+#include "MissionFiles.h"
 #include "QgcPlanFormat.h"
 #include "ZoneFiles.h"
 
@@ -202,6 +203,15 @@ private slots:
         const QByteArray empty = formats::writeQgcPlan(plain);
         QVERIFY(empty.contains("\"geoFence\"") && empty.contains("\"rallyPoints\"") && !empty.contains("breachReturn"));
         QVERIFY(formats::readQgcPlan(empty)->route.fence.empty());
+
+        // .plan -> .sortie -> .plan keeps them too.
+        QTemporaryDir dir;
+        Mission m;
+        m.routes.push_back(read->route);
+        QVERIFY(formats::saveMission(m, dir.filePath(QStringLiteral("fenced.sortie"))).ok());
+        const Result<formats::LoadedMission> loaded = formats::loadMission(dir.filePath(QStringLiteral("fenced.sortie")));
+        QVERIFY2(loaded.ok(), loaded.ok() ? "" : qPrintable(loaded.error().toString()));
+        QVERIFY(loaded->mission.routes.front().fence == fence);
     }
 
     void zoneFilesByExtension()
