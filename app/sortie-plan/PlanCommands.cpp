@@ -180,6 +180,17 @@ int runStats(const QStringList &args, Streams io)
         }
         profiles = std::move(*pr);
     }
+    // The routes as the airspace check flies them, read as `profile` reads them (a WPL file's frames).
+    std::vector<terrain::ProfileRoute> zoneRoutes;
+    if (zones && profiles.empty()) {
+        QString error;
+        auto pr = profileRoutes(file, loaded->mission, &error);
+        if (!pr) {
+            io.err << "sortie-plan: " << file << ": " << error << "\n";
+            return Failure;
+        }
+        zoneRoutes = std::move(*pr);
+    }
     ScanPlanCache cache;
     bool errors = false;
     Json routes = Json::array();
@@ -209,7 +220,9 @@ int runStats(const QStringList &args, Streams io)
         // With --zones, the airspace rules join the validation (the flown path over the ground with --dem).
         std::optional<airspace::AirspaceReport> airspaceReport;
         if (zones) {
-            const terrain::ProfileRoute pr = ri < profiles.size() ? profiles[ri] : terrain::profileRouteOf(r, &cache);
+            const terrain::ProfileRoute pr = ri < profiles.size()     ? profiles[ri]
+                                             : ri < zoneRoutes.size() ? zoneRoutes[ri]
+                                                                      : terrain::profileRouteOf(r, &cache);
             const bool wpl = formatForPath(file) == FileFormat::Wpl;
             const airspace::FlownPath path = airspace::flownPath(pr, profile ? &*profile : nullptr, wpl ? airspace::FlightEnds{} : airspace::flightEndsOf(r));
             airspace::AirspaceChecker checker(zones->zones, zones->buffer);

@@ -211,10 +211,15 @@ AirspaceChecker::LegFindings AirspaceChecker::checkLeg(const FlownLeg &leg, cons
         }
         if (!fenced)
             continue;
-        // Unknown heights inside an inclusion zone count as inside it (its limits cannot be checked).
-        for (const Span &s : complementSpans(joinSpans(permitted)))
+        // Where the height in an inclusion zone's reference is unknown, the piece may be above its
+        // ceiling: it counts as outside (to be safe) and says so.
+        std::vector<Span> known, unknown;
+        for (const Span &s : permitted)
+            (s.heightUnknown ? unknown : known).push_back(s);
+        const std::vector<Span> maybe = joinSpans(std::move(unknown));
+        for (const Span &s : complementSpans(joinSpans(std::move(known))))
             add(outside, {lastInclusion >= 0 ? lastInclusion : m_zones->activeInclusions().front(), ViolationKind::OutsideInclusion,
-                          along(s.from), along(s.to), false});
+                          along(s.from), along(s.to), !intersectSpans({s}, maybe).empty()});
     }
     for (auto &[zone, list] : inside)
         out.violations.insert(out.violations.end(), list.begin(), list.end());

@@ -22,7 +22,7 @@ struct AirspaceViolation
     int row = -1;   // the route row the leg ends at
     double fromDistance = 0.0, toDistance = 0.0;  // metres along the flown path from the route's start
     // The leg's height in the zone's reference was unknown (no ground data): the stretch is
-    // counted as inside, to be safe.
+    // counted on the safe side (inside an exclusion zone, outside an inclusion zone).
     bool heightUnknown = false;
 };
 

@@ -250,6 +250,14 @@ private slots:
         QCOMPARE(r.violations.size(), size_t(1));
         QVERIFY(r.violations.front().heightUnknown);
         QVERIFY(violationMessage(r.violations.front(), z).contains(QStringLiteral("unknown")));
+        // Inside an inclusion zone with an AMSL ceiling, the same route may be above it: outside.
+        Zone fence = square(plane, -100, 0, 200, 100, ZoneKind::Inclusion);
+        fence.ceiling = HeightLimit{300, HeightReference::Amsl};
+        const AirspaceReport f = check(plane, {{-50, 50, 60, HeightReference::AboveTerrain}, {150, 50, 60, HeightReference::AboveTerrain}}, {fence});
+        QCOMPARE(f.violations.size(), size_t(1));
+        QCOMPARE(f.violations.front().kind, ViolationKind::OutsideInclusion);
+        QVERIFY(f.violations.front().heightUnknown);
+        QVERIFY(near(f.violations.front().fromDistance, 0) && near(f.violations.front().toDistance, 200));
     }
 
     // Moving one waypoint re-checks its two legs only, and finds what a fresh check finds.
