@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <map>
 
 namespace sortie::airspace {
@@ -114,7 +113,6 @@ struct AirspaceChecker::Frame
     GeoRect covered;
     std::vector<PlaneZone> zones;
     bgi::rtree<std::pair<PlaneBox, int>, bgi::rstar<16>> tree;  // int: index into zones
-    std::map<int, int> byZone;  // zone set index -> index into zones
 };
 
 // What one leg found, distances from the leg's start (so a leg found again elsewhere in the route
@@ -151,7 +149,6 @@ const AirspaceChecker::Frame &AirspaceChecker::frameFor(const FlownPath &path)
                                 frame->covered.max_corner().x(), path.bounds.empty};
     std::vector<std::pair<PlaneBox, int>> boxes;
     for (int z : m_zones->near(cover)) {
-        frame->byZone[z] = int(frame->zones.size());
         frame->zones.emplace_back(m_zones->zones()[size_t(z)], z, path.plane);
         boxes.emplace_back(frame->zones.back().envelope(), int(frame->zones.size()) - 1);
     }

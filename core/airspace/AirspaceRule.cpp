@@ -1,6 +1,7 @@
 #include "AirspaceRule.h"
 
 #include "ElevationService.h"
+#include "Geodesy.h"
 
 #include <QLocale>
 
@@ -12,6 +13,8 @@ using mission::Severity;
 using mission::ValidationIssue;
 
 namespace {
+constexpr double kFrameDrift = 5000.0;  // metres the route's centre may move before the frame follows
+
 QString metres(double v)
 {
     return QLocale(QLocale::English).toString(std::llround(v)) + QStringLiteral(" m");
@@ -89,13 +92,15 @@ void AirspaceRule::check(const mission::Route &route, mission::ScanPlanCache *ca
     std::optional<terrain::TerrainProfile> ground;
     if (m_service)
         ground = terrain::computeProfile(pr, *m_service);
-    // One frame while the route is edited, so unchanged legs keep their findings.
-    if (!m_frameOrigin) {
-        std::vector<mission::GeoPoint> points;
-        for (const terrain::ProfileWaypoint &w : pr.waypoints)
-            points.push_back(w.position);
-        m_frameOrigin = mission::LocalTangentPlane::centroidOf(points);
-    }
+    // One frame while the route is edited, so unchanged legs keep their findings; a new one when
+    // the route's centre has moved far (another route opened).
+    std::vector<mission::GeoPoint> points;
+    points.reserve(pr.waypoints.size());
+    for (const terrain::ProfileWaypoint &w : pr.waypoints)
+        points.push_back(w.position);
+    const mission::GeoPoint centre = mission::LocalTangentPlane::centroidOf(points);
+    if (!m_frameOrigin || mission::geodesicDistance(centre, *m_frameOrigin) > kFrameDrift)
+        m_frameOrigin = centre;
     const mission::LocalTangentPlane plane(*m_frameOrigin);
     const FlownPath path = flownPath(pr, ground ? &*ground : nullptr, flightEndsOf(route), &plane);
     const AirspaceReport report = m_checker->check(path);

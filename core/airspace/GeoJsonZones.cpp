@@ -121,6 +121,8 @@ Zone feature(const JsonCursor &f, int index, const QString &origin)
     } else {
         geometry.at("type").fail(QStringLiteral("geometry %1 is not a zone (Polygon, MultiPolygon, or Point with a radius)").arg(type));
     }
+    if (const QString problem = shapeProblem(z); !problem.isEmpty())
+        coordinates.fail(problem);
     return z;
 }
 

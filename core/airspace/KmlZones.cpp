@@ -96,6 +96,11 @@ mission::Result<ZoneFile> readKmlZones(const QByteArray &data, const QString &or
                 for (const ZonePolygon &p : mark->polygons.parts)
                     if (p.rings.empty() && mark->problem.isEmpty())
                         mark->problem = QStringLiteral("a Polygon without an outer boundary");
+                if (mark->problem.isEmpty() && !mark->polygons.parts.empty()) {
+                    Zone probe;
+                    probe.shape = mark->polygons;
+                    mark->problem = shapeProblem(probe);
+                }
                 if (!mark->problem.isEmpty()) {
                     out.problems << QStringLiteral("%1 (line %2) was left out: %3").arg(label).arg(mark->line).arg(mark->problem);
                 } else if (!mark->polygons.parts.empty()) {  // a placemark without a polygon (a point, a path) is no zone

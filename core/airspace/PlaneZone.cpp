@@ -108,6 +108,30 @@ std::vector<Span> complementSpans(const std::vector<Span> &spans)
     return out;
 }
 
+QString shapeProblem(const Zone &zone)
+{
+    const auto *polygons = std::get_if<ZonePolygons>(&zone.shape);
+    if (!polygons)
+        return {};
+    // In longitude and latitude as plane coordinates: what crosses itself there crosses itself on
+    // any small zone's tangent plane too.
+    PlaneMultiPolygon geo;
+    for (const ZonePolygon &part : polygons->parts) {
+        PlanePolygon poly;
+        for (size_t r = 0; r < part.rings.size(); ++r) {
+            auto &ring = r == 0 ? poly.outer() : (poly.inners().emplace_back(), poly.inners().back());
+            for (const GeoPoint &g : part.rings[r])
+                ring.push_back({g.longitude, g.latitude});
+        }
+        geo.push_back(std::move(poly));
+    }
+    bg::correct(geo);
+    std::string why;
+    if (bg::is_valid(geo, why))
+        return {};
+    return QStringLiteral("the polygon cannot be checked: %1").arg(QString::fromStdString(why));
+}
+
 PlaneZone::PlaneZone(const Zone &zone, int index, const LocalTangentPlane &plane) : m_zone(&zone), m_index(index)
 {
     if (const auto *polygons = std::get_if<ZonePolygons>(&zone.shape)) {
@@ -147,7 +171,11 @@ std::vector<Span> PlaneZone::overPolygons(const PlaneXY &a, const PlaneXY &b) co
         return {};
     const PlaneLine line{a, b};
     bg::model::multi_linestring<PlaneLine> parts;
-    bg::intersection(line, m_polygons, parts);
+    try {
+        bg::intersection(line, m_polygons, parts);
+    } catch (const bg::exception &) {
+        return {{0, 1}};  // a shape Boost.Geometry refuses (the readers leave them out): counted as inside, to be safe
+    }
     const double dx = b.x() - a.x(), dy = b.y() - a.y(), len2 = dx * dx + dy * dy;
     std::vector<Span> out;
     for (const PlaneLine &part : parts) {

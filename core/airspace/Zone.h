@@ -84,6 +84,11 @@ QString sourceName(ZoneSource source);
 // "150 m AMSL", "ground", "unlimited"
 QString limitText(const std::optional<HeightLimit> &limit, bool ceiling);
 
+// Why a zone's polygons cannot be checked (a ring crossing itself, a hole outside its polygon, a
+// spike), as Boost.Geometry's validity check says it; empty when they can (or it has none). The
+// readers leave such a zone out naming it.
+QString shapeProblem(const Zone &zone);
+
 // A .plan's geofence as zones: "<prefix> polygon 1", "<prefix> circle 2"; the whole column (a
 // .plan fence has no altitude limits). Rally points and the breach return are not zones.
 std::vector<Zone> zonesOfFence(const mission::RouteFence &fence, const QString &prefix, ZoneSource source, const QString &origin);

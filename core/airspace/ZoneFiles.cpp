@@ -13,7 +13,12 @@ mission::Result<ZoneFile> readPlanZones(const QByteArray &data, const QString &o
     const mission::Result<mission::RouteFence> fence = mission::formats::readQgcPlanFence(data, &out.problems);
     if (!fence)
         return fence.error();
-    out.zones = zonesOfFence(*fence, QStringLiteral("geofence"), ZoneSource::File, origin);
+    for (Zone &z : zonesOfFence(*fence, QStringLiteral("geofence"), ZoneSource::File, origin)) {
+        if (const QString problem = shapeProblem(z); !problem.isEmpty())
+            out.problems << QStringLiteral("%1 was left out: %2").arg(z.name, problem);
+        else
+            out.zones.push_back(std::move(z));
+    }
     return out;
 }
 

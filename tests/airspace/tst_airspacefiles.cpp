@@ -79,6 +79,8 @@ private slots:
             "geometry": {"type": "Polygon", "coordinates": [[[24, 96], [25, 56], [25, 57]]]}})") << "/features/1/geometry/coordinates/0/0";
         QTest::newRow("two points") << QByteArray(R"({"type": "Feature", "properties": {"name": "Thin"},
             "geometry": {"type": "Polygon", "coordinates": [[[24, 56], [25, 56], [24, 56]]]}})") << "at least 3 distinct positions";
+        QTest::newRow("bow tie") << QByteArray(R"({"type": "Feature", "properties": {"name": "Bow"},
+            "geometry": {"type": "Polygon", "coordinates": [[[24, 56], [25, 57], [25, 56], [24, 57]]]}})") << "feature 2 ('Bow') (at /features/1/geometry/coordinates) was left out: the polygon cannot be checked";
         QTest::newRow("reference") << QByteArray(R"({"type": "Feature", "properties": {"name": "Ref", "reference": "FL"},
             "geometry": {"type": "Polygon", "coordinates": [[[24, 56], [25, 56], [25, 57]]]}})") << "reference \"FL\"";
     }
