@@ -180,10 +180,6 @@ QByteArray writeQgcPlan(const Route &route, QStringList *notices, ScanPlanCache 
     return QByteArray::fromStdString(doc.dump(4)) + '\n';
 }
 
-} // namespace sortie::mission::formats
-
-namespace sortie::mission::formats {
-
 Result<RouteFence> readQgcPlanFence(const QByteArray &data, QStringList *notices)
 {
     Result<Json> parsed = parseJson(data);
