@@ -2,7 +2,7 @@
 # Checks the Debian package made by scripts/package.sh without touching the system: its Depends
 # resolve against the archive (apt-get --simulate), it unpacks into a clean directory (dpkg -x) with
 # the programs, the .desktop file and the icon, and the unpacked programs run: sortie --version,
-# sortie-sim --help, and one offscreen launch of the client against its built-in simulator, which
+# sortie-sim --help, sortie-plan and sortie-log reading files, and one offscreen launch of the client against its built-in simulator, which
 # must show its first frame and quit cleanly.
 # Usage: scripts/check-package.sh [dist/sortie_*.deb]
 set -euo pipefail
@@ -15,13 +15,17 @@ echo "check-package: $deb"
 apt-get install --simulate --no-install-recommends "./$deb" >"$root/apt.log" 2>&1 \
   || { cat "$root/apt.log"; echo "check-package: the Depends do not resolve" >&2; exit 1; }
 dpkg -x "$deb" "$root/install"
-for f in usr/bin/sortie usr/bin/sortie-sim usr/bin/sortie-plan usr/bin/sortie-dump \
+for f in usr/bin/sortie usr/bin/sortie-sim usr/bin/sortie-plan usr/bin/sortie-dump usr/bin/sortie-log \
          usr/share/applications/sortie.desktop usr/share/icons/hicolor/scalable/apps/sortie.svg; do
   [ -e "$root/install/$f" ] || { echo "check-package: $f is missing from the package" >&2; exit 1; }
 done
 bin="$root/install/usr/bin"
 "$bin/sortie" --version | grep -q '^sortie [0-9]' || { echo "check-package: sortie --version failed" >&2; exit 1; }
 "$bin/sortie-sim" --help | grep -q -i 'usage' || { echo "check-package: sortie-sim --help failed" >&2; exit 1; }
+"$bin/sortie-plan" stats tests/data/samples/qgc/SectionTest.plan >/dev/null \
+  || { echo "check-package: sortie-plan stats failed" >&2; exit 1; }
+"$bin/sortie-log" info tests/fuzz/sortielog-corpus/session-4-vehicles.sortielog | grep -q '^vehicles: 4' \
+  || { echo "check-package: sortie-log info failed" >&2; exit 1; }
 # A home of its own: the launch writes settings and autosaves, never into the caller's.
 mkdir -p "$root/home"
 HOME="$root/home" XDG_CONFIG_HOME="$root/home/.config" XDG_DATA_HOME="$root/home/.local/share" \

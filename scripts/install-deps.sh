@@ -4,7 +4,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  dpkg-dev file zlib1g-dev  # dpkg-shlibdeps and file: CPack's Debian package; zlib: WPML's KMZ
+  dpkg-dev file libzip-dev  # dpkg-shlibdeps and file: CPack's Debian package; libzip: WPML's KMZ archives
   qt6-base-dev qt6-base-dev-tools qt6-declarative-dev qt6-declarative-dev-tools
   qt6-serialport-dev qt6-positioning-dev qt6-tools-dev qt6-tools-dev-tools
   libqt6sql6-sqlite libqt6opengl6-dev libgl-dev libxkbcommon-dev
@@ -14,6 +14,8 @@ packages=(
   qml6-module-qttest qml6-module-qtquick-tooling qml6-module-qtcore qml6-module-qt-labs-settings
   qml6-module-qt-labs-platform
   libprotobuf-dev protobuf-compiler nlohmann-json3-dev libbenchmark-dev
+  libboost-dev  # Boost.Geometry (header-only): the airspace check's shapes and R-tree
+  libproj-dev proj-data  # PROJ and its EGM96 grid (egm96_15.gtx): ellipsoidal heights to AMSL
   qtkeychain-qt6-dev libsecret-1-0  # the remembered password in the OS keyring (QtKeychain loads libsecret)
   dbus-daemon gnome-keyring libglib2.0-bin libsecret-tools  # tst_keyring: a session bus, a keyring, gdbus, secret-tool
   clang libclang-rt-14-dev

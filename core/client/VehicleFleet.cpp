@@ -34,6 +34,10 @@ VehicleFleet::VehicleFleet(hci::HciClient *client, terrain::ElevationService *el
         if (state == hci::HciSession::State::Disconnected)
             dropHciVehicles();
     });
+    connect(&m_group, &VehicleGroup::changed, this, [this] {
+        if (count() > 0)
+            emit dataChanged(index(0), index(count() - 1), {ChosenRole});
+    });
 }
 
 terrain::ElevationService *VehicleFleet::elevation() const
@@ -62,7 +66,7 @@ QHash<int, QByteArray> VehicleFleet::roleNames() const
             {StaleRole, "stale"}, {LatitudeRole, "latitude"}, {LongitudeRole, "longitude"}, {HeadingRole, "heading"},
             {HomeLatitudeRole, "homeLatitude"}, {HomeLongitudeRole, "homeLongitude"}, {AltitudeAglRole, "altitudeAgl"},
             {GroundSpeedRole, "groundSpeed"}, {ModeRole, "mode"}, {ArmedRole, "armed"}, {BatteryRole, "battery"},
-            {VehicleRole, "vehicle"}};
+            {VehicleRole, "vehicle"}, {ChosenRole, "chosen"}};
 }
 
 QVariant VehicleFleet::data(const QModelIndex &index, int role) const
@@ -89,6 +93,7 @@ QVariant VehicleFleet::data(const QModelIndex &index, int role) const
     case ArmedRole: return v.armed();
     case BatteryRole: return finite(v.batteryRemaining());
     case VehicleRole: return QVariant::fromValue(static_cast<QObject *>(m_entries[size_t(index.row())].vehicle.get()));
+    case ChosenRole: return m_group.contains(v.protocol() + QLatin1Char(':') + v.id());
     default: return {};
     }
 }

@@ -3,6 +3,7 @@
 #include "CommandLog.h"
 #include "CommandPolicy.h"
 #include "Vehicle.h"
+#include "VehicleGroup.h"
 
 #include <QAbstractListModel>
 #include <QPointer>
@@ -36,12 +37,14 @@ class VehicleFleet : public QAbstractListModel
     Q_PROPERTY(sortie::vehicle::CommandLog *commandLog READ commandLog CONSTANT)
     // The rules the command bar follows: what asks first, the take-off altitude, mode names.
     Q_PROPERTY(sortie::client::CommandPolicy *commands READ commands CONSTANT)
+    // The vehicles chosen to be commanded together (their rows' `chosen`), and the group commands.
+    Q_PROPERTY(sortie::client::VehicleGroup *group READ group CONSTANT)
 
 public:
     enum Roles {
         VehicleIdRole = Qt::UserRole + 1, NameRole, ProtocolRole, LinkStateRole, StaleRole,
         LatitudeRole, LongitudeRole, HeadingRole, HomeLatitudeRole, HomeLongitudeRole,
-        AltitudeAglRole, GroundSpeedRole, ModeRole, ArmedRole, BatteryRole, VehicleRole,
+        AltitudeAglRole, GroundSpeedRole, ModeRole, ArmedRole, BatteryRole, VehicleRole, ChosenRole,
     };
 
     // `elevation` (not owned, may be nullptr) gives VCI vehicles the ground under the routes they take.
@@ -60,6 +63,7 @@ public:
     Q_INVOKABLE sortie::vehicle::Vehicle *vehicle(const QString &id) const;
     vehicle::CommandLog *commandLog() { return &m_commandLog; }
     CommandPolicy *commands() { return &m_commands; }
+    VehicleGroup *group() { return &m_group; }
     // The ground VCI routes are planned over (nullptr: none).
     terrain::ElevationService *elevation() const;
 
@@ -91,6 +95,7 @@ private:
     QPointer<terrain::ElevationService> m_elevation;
     vehicle::CommandLog m_commandLog; // before the vehicles, which write to it
     CommandPolicy m_commands;
+    VehicleGroup m_group{this, &m_commands};
     std::vector<Entry> m_entries;
     QString m_commandResult;
     QString m_message;

@@ -249,6 +249,45 @@ private slots:
         STEP(followPauseResumeHomeLand(row, emu));
     }
 
+    // Two vehicles ticked in the fly view's list: the bar says it commands them, Arm asks once
+    // naming both, and both arm; the third, unticked, does not.
+    void commandTwoTickedVehiclesAtOnce()
+    {
+        STEP(start({}));
+        QTest::keyClick(m_client->window(), Qt::Key_3, Qt::ControlModifier);
+        auto *list = m_client->find(QStringLiteral("vehicleList"));
+        QTRY_COMPARE_WITH_TIMEOUT(list->property("count").toInt(), 3, 10000);
+        const auto tick = [&](int row) {
+            QQuickItem *delegate = nullptr;
+            QMetaObject::invokeMethod(list, "itemAtIndex", Q_RETURN_ARG(QQuickItem *, delegate), Q_ARG(int, row));
+            QVERIFY(delegate);
+            QQuickItem *box = nullptr;
+            for (QQuickItem *child : delegate->childItems())
+                if (child->objectName() == QStringLiteral("vehicleTick"))
+                    box = child;
+            QVERIFY(box && box->isVisible());
+            QTest::mouseClick(m_client->window(), Qt::LeftButton, {}, centreOf(box));
+            QTRY_VERIFY(box->property("checked").toBool());
+        };
+        STEP(tick(0));
+        STEP(tick(2));
+        vehicle::Vehicle *first = m_client->fleet().vehicleAt(0);
+        vehicle::Vehicle *third = m_client->fleet().vehicleAt(2);
+        QTRY_VERIFY(m_client->find(QStringLiteral("groupHeader"))->isVisible());
+        QCOMPARE(text("groupTargets"), QStringLiteral("To 2 ticked vehicle(s): %1, %2").arg(first->name(), third->name()));
+        for (int r = 0; r < 3; ++r)
+            QTRY_COMPARE_WITH_TIMEOUT(m_client->fleet().vehicleAt(r)->linkState(), vehicle::VehicleLink::State::Connected, 10000);
+        click("armButton");
+        confirm(QStringLiteral("Arm 2 vehicle(s): %1, %2?").arg(first->name(), third->name()));
+        QTRY_VERIFY_WITH_TIMEOUT(first->armed() && third->armed(), 10000);
+        QTRY_VERIFY2(text("commandResult").contains(QStringLiteral("2 of 2")), qPrintable(text("commandResult")));
+        QVERIFY(!m_client->fleet().vehicleAt(1)->armed());
+        m_client->window()->grabWindow().save(
+            QDir(qEnvironmentVariable("SORTIE_SCREENSHOT_DIR", QStringLiteral(SORTIE_SCREENSHOT_DEFAULT_DIR))).filePath(QStringLiteral("fly-group.png")));
+        click("groupClearButton");
+        QTRY_VERIFY(!m_client->find(QStringLiteral("groupHeader"))->isVisible());
+    }
+
     void flyTheDemoRouteOnAVciVehicle()
     {
         test::ClientWindow::Options options;

@@ -3,8 +3,10 @@ import QtQuick.Controls
 import QtQuick.Layouts
 import Sortie.Ui
 
-// Commands to the chosen vehicle. The ones where a mistake is dangerous ask first (the policy says
-// which); each one's result shows beside the bar. `goMode` is on while the operator picks a point on the map.
+// Commands to the chosen vehicle, or to the group when vehicles are ticked in the list. The ones
+// where a mistake is dangerous ask first (the policy says which; a group command always asks, once,
+// naming every vehicle); each one's result shows beside the bar. `goMode` is on while the operator
+// picks a point on the map.
 ToolBar {
     id: bar
     required property Vehicle vehicle      // null: none chosen
@@ -14,7 +16,13 @@ ToolBar {
 
     // Which commands ask, what they ask and with what arguments they go: the fleet's CommandPolicy.
     readonly property CommandPolicy policy: bar.fleet.commands
+    readonly property VehicleGroup group: bar.fleet.group
+    readonly property bool toGroup: bar.group.count > 0
     function command(which) {   // a CommandPolicy.Command
+        if (bar.toGroup) {
+            bar.confirm(bar.group.confirmation(which), () => bar.group.send(which))
+            return
+        }
         if (!bar.vehicle)
             return
         if (bar.policy.needsConfirmation(which, bar.vehicle))
@@ -48,10 +56,23 @@ ToolBar {
       anchors.left: parent.left
       anchors.right: parent.right
       spacing: 2
+      RowLayout {
+        objectName: "groupHeader"
+        visible: bar.toGroup
+        Layout.fillWidth: true
+        Label {
+            objectName: "groupTargets"
+            Layout.fillWidth: true
+            elide: Text.ElideRight
+            font.bold: true
+            text: qsTr("To %n ticked vehicle(s): %1", "", bar.group.count).arg(bar.group.names.join(", "))
+        }
+        Button { objectName: "groupClearButton"; text: qsTr("Untick all"); flat: true; onClicked: bar.group.clear() }
+      }
       Flow {
         Layout.fillWidth: true
         spacing: 4
-        enabled: bar.vehicle !== null
+        enabled: bar.vehicle !== null || bar.toGroup
         Button { objectName: "armButton"; text: qsTr("Arm"); onClicked: bar.command(CommandPolicy.Arm) }
         Button { objectName: "disarmButton"; text: qsTr("Disarm"); onClicked: bar.command(CommandPolicy.Disarm) }
         Button { objectName: "takeoffButton"; text: qsTr("Take off"); onClicked: bar.command(CommandPolicy.TakeOff)
@@ -67,6 +88,7 @@ ToolBar {
             objectName: "goButton"
             text: qsTr("Go here…")
             checkable: true
+            enabled: !bar.toGroup
             checked: bar.goMode
             onToggled: bar.goMode = checked
             ToolTip.visible: hovered
@@ -77,7 +99,9 @@ ToolBar {
           objectName: "commandResult"
           Layout.fillWidth: true
           elide: Text.ElideRight
-          text: bar.fleet ? bar.fleet.commandResult : qsTr("Choose a vehicle on the map or in the list.")
+          text: bar.toGroup && bar.group.result.length > 0 ? bar.group.result
+                : bar.fleet.commandResult.length > 0 ? bar.fleet.commandResult
+                : qsTr("Choose a vehicle on the map or in the list; tick several to command them together.")
       }
     }
 }

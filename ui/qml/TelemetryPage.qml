@@ -62,15 +62,29 @@ Page {
                     clip: true
                     model: page.vehicleModel
                     currentIndex: vehicleLayer.currentIndex
-                    delegate: ItemDelegate {
+                    // A tick puts the vehicle in the group the command bar commands (live fleet only).
+                    delegate: RowLayout {
+                        id: vehicleRow
                         required property int index
                         required property var model
                         width: ListView.view.width
-                        highlighted: index === vehicleLayer.currentIndex
-                        text: (model.name !== undefined ? model.name : qsTr("Vehicle %1").arg(index + 1))
-                              + (model.protocol !== undefined ? "  ·  " + model.protocol + "  ·  " + model.linkState : "")
-                        opacity: model.stale === true ? 0.5 : 1
-                        onClicked: { vehicleLayer.currentIndex = index; vehicleLayer.centerOn(index) }
+                        spacing: 0
+                        CheckBox {
+                            objectName: "vehicleTick"
+                            visible: !page.replaying
+                            checked: vehicleRow.model.chosen === true
+                            onToggled: page.fleet.group.setChosen(vehicleRow.model.vehicleId, checked)
+                            ToolTip.visible: hovered
+                            ToolTip.text: qsTr("Command together with the other ticked vehicles")
+                        }
+                        ItemDelegate {
+                            Layout.fillWidth: true
+                            highlighted: vehicleRow.index === vehicleLayer.currentIndex
+                            text: (vehicleRow.model.name !== undefined ? vehicleRow.model.name : qsTr("Vehicle %1").arg(vehicleRow.index + 1))
+                                  + (vehicleRow.model.protocol !== undefined ? "  ·  " + vehicleRow.model.protocol + "  ·  " + vehicleRow.model.linkState : "")
+                            opacity: vehicleRow.model.stale === true ? 0.5 : 1
+                            onClicked: { vehicleLayer.currentIndex = vehicleRow.index; vehicleLayer.centerOn(vehicleRow.index) }
+                        }
                     }
                 }
                 RowLayout {

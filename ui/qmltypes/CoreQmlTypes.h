@@ -22,6 +22,7 @@
 #include "ValidationIssueModel.h"
 #include "Vehicle.h"
 #include "VehicleFleet.h"
+#include "VehicleGroup.h"
 #include "VehicleLink.h"
 
 #include <QAbstractItemModel>
@@ -169,6 +170,13 @@ struct CommandPolicyForeign
     QML_FOREIGN(sortie::client::CommandPolicy)
     QML_NAMED_ELEMENT(CommandPolicy)
     QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct VehicleGroupForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::VehicleGroup)
+    QML_NAMED_ELEMENT(VehicleGroup)
+    QML_UNCREATABLE("made by the VehicleFleet")
 };
 struct CommandLogForeign
 {

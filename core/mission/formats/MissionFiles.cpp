@@ -46,14 +46,36 @@ Mission missionOf(Route route, const QString &path)
 }
 }
 
+namespace {
+// Every file type Sortie reads a mission from, by extension: the one list the file dialogs, the
+// command line and tst_fuzzcoverage (every format has its fuzz target) go by.
+struct FileType
+{
+    const char *extension;
+    FileFormat format;
+};
+constexpr FileType kFileTypes[] = {
+    {"sortie", FileFormat::Sortie}, {"plan", FileFormat::QgcPlan}, {"waypoints", FileFormat::Wpl},
+    {"wpl", FileFormat::Wpl},       {"txt", FileFormat::Wpl},      {"kml", FileFormat::Kml},
+    {"kmz", FileFormat::Wpml},
+};
+} // namespace
+
+QStringList missionFileExtensions()
+{
+    QStringList list;
+    for (const FileType &type : kFileTypes)
+        list.append(QString::fromLatin1(type.extension));
+    return list;
+}
+
 std::optional<FileFormat> formatForPath(const QString &path)
 {
     const QString suffix = QFileInfo(path).suffix().toLower();
-    if (suffix == QLatin1String("sortie")) return FileFormat::Sortie;
-    if (suffix == QLatin1String("plan")) return FileFormat::QgcPlan;
-    if (suffix == QLatin1String("waypoints") || suffix == QLatin1String("wpl") || suffix == QLatin1String("txt")) return FileFormat::Wpl;
-    if (suffix == QLatin1String("kml")) return FileFormat::Kml;
-    if (suffix == QLatin1String("kmz")) return FileFormat::Wpml;
+    for (const FileType &type : kFileTypes) {
+        if (suffix == QLatin1String(type.extension))
+            return type.format;
+    }
     return std::nullopt;
 }
 

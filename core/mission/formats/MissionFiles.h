@@ -16,6 +16,8 @@ enum class FileFormat { Sortie, QgcPlan, Wpl, Kml, Wpml };
 
 // By extension: .sortie, .plan, .waypoints / .wpl / .txt (QGC WPL), .kml, .kmz (DJI WPML).
 std::optional<FileFormat> formatForPath(const QString &path);
+// Those extensions, without the dot, lower case.
+QStringList missionFileExtensions();
 QString formatName(FileFormat format);
 
 struct LoadedMission

@@ -440,19 +440,33 @@ Result<WpmlImport> readWpml(const QByteArray &data)
     QByteArray waylines, templateKml;
     QString waylinesName = QStringLiteral("waylines.wpml");
     if (data.startsWith("PK")) {
-        const Result<std::vector<ZipEntry>> entries = readZip(data);
-        if (!entries)
-            return entries.error();
-        for (const ZipEntry &e : *entries) {
-            if (e.path.endsWith(QLatin1String("waylines.wpml"), Qt::CaseInsensitive)) {
-                waylines = e.data;
-                waylinesName = e.path;
-            } else if (e.path.endsWith(QLatin1String("template.kml"), Qt::CaseInsensitive)) {
-                templateKml = e.data;
-            }
+        // Only the two documents are inflated, within the archive limits (ZipArchive.h).
+        Result<ZipReader> opened = ZipReader::open(data);
+        if (!opened)
+            return opened.error();
+        ZipReader archive = std::move(opened).value();
+        QString waylinesPath, templatePath;
+        for (const QString &path : archive.paths()) {
+            if (waylinesPath.isEmpty() && path.endsWith(QLatin1String("waylines.wpml"), Qt::CaseInsensitive))
+                waylinesPath = path;
+            else if (templatePath.isEmpty() && path.endsWith(QLatin1String("template.kml"), Qt::CaseInsensitive))
+                templatePath = path;
+        }
+        if (waylinesPath.isEmpty())
+            return MissionError{QStringLiteral("the KMZ holds no wpmz/waylines.wpml: not a DJI WPML route"), {}, 0, 0, {}};
+        waylinesName = waylinesPath;
+        Result<QByteArray> read = archive.read(waylinesName);
+        if (!read)
+            return read.error();
+        waylines = std::move(read).value();
+        if (!templatePath.isEmpty()) {
+            Result<QByteArray> t = archive.read(templatePath);
+            if (!t)
+                return t.error();
+            templateKml = std::move(t).value();
         }
         if (waylines.isEmpty())
-            return MissionError{QStringLiteral("the KMZ holds no wpmz/waylines.wpml: not a DJI WPML route"), {}, 0, 0, {}};
+            return MissionError{QStringLiteral("the KMZ's %1 is empty").arg(waylinesName), {}, 0, 0, {}};
     } else {
         waylines = data;
     }

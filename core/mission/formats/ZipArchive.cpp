@@ -2,206 +2,272 @@
 
 #include <QtEndian>
 
-#include <zlib.h>
+#include <zip.h>
 
-#include <limits>
+#include <algorithm>
 
 namespace sortie::mission::formats {
 namespace {
 
-constexpr quint32 kLocalHeader = 0x04034b50;
-constexpr quint32 kCentralHeader = 0x02014b50;
-constexpr quint32 kEndOfCentralDirectory = 0x06054b50;
-constexpr quint16 kStored = 0;
-constexpr quint16 kDeflated = 8;
-constexpr quint16 kUtf8Names = 1 << 11;
-constexpr quint16 kVersion = 20;  // 2.0: deflate
-// 1980-01-01 00:00 in MS-DOS format: archives do not change when nothing in them changed.
-constexpr quint16 kDosTime = 0;
-constexpr quint16 kDosDate = (0 << 9) | (1 << 5) | 1;
-
-void put16(QByteArray &out, quint16 v) { char b[2]; qToLittleEndian(v, b); out.append(b, 2); }
-void put32(QByteArray &out, quint32 v) { char b[4]; qToLittleEndian(v, b); out.append(b, 4); }
-
 MissionError zipError(const QString &message) { return MissionError{message, {}, 0, 0, {}}; }
 
-quint32 crcOf(const QByteArray &data)
+// libzip's words, or ours where its words would puzzle an operator.
+QString libzipText(zip_error_t *error)
 {
-    return quint32(crc32(crc32(0, nullptr, 0), reinterpret_cast<const Bytef *>(data.constData()), uInt(data.size())));
+    switch (zip_error_code_zip(error)) {
+    case ZIP_ER_EXISTS: return QStringLiteral("two of its entries have the same name");
+    case ZIP_ER_INCONS: return QStringLiteral("its directory and its entries disagree");
+    case ZIP_ER_NOZIP: return QStringLiteral("it has no ZIP directory (truncated, or not a ZIP file)");
+    default: return QString::fromUtf8(zip_error_strerror(error));
+    }
 }
 
-// Raw deflate (no zlib header), as ZIP wants it.
-std::optional<QByteArray> deflateRaw(const QByteArray &data)
-{
-    z_stream z{};
-    if (deflateInit2(&z, Z_DEFAULT_COMPRESSION, Z_DEFLATED, -MAX_WBITS, 8, Z_DEFAULT_STRATEGY) != Z_OK)
-        return std::nullopt;
-    QByteArray out(int(deflateBound(&z, uLong(data.size()))), Qt::Uninitialized);
-    z.next_in = reinterpret_cast<Bytef *>(const_cast<char *>(data.constData()));
-    z.avail_in = uInt(data.size());
-    z.next_out = reinterpret_cast<Bytef *>(out.data());
-    z.avail_out = uInt(out.size());
-    const int rc = deflate(&z, Z_FINISH);
-    const auto written = z.total_out;
-    deflateEnd(&z);
-    if (rc != Z_STREAM_END)
-        return std::nullopt;
-    out.resize(qsizetype(written));
-    return out;
-}
+// 1980-01-01 00:00 (the earliest MS-DOS date): archives do not change when nothing in them changed.
+constexpr time_t kFixedTime = 315532800;
 
-std::optional<QByteArray> inflateRaw(const char *data, qint64 size, qint64 expected)
+// One entry's extent in the archive as the central directory records it: its local header and the
+// compressed body behind it (the local header's own name and extra lengths are read there).
+struct Extent
 {
-    z_stream z{};
-    if (inflateInit2(&z, -MAX_WBITS) != Z_OK)
-        return std::nullopt;
-    QByteArray out(qsizetype(expected), Qt::Uninitialized);
-    z.next_in = reinterpret_cast<Bytef *>(const_cast<char *>(data));
-    z.avail_in = uInt(size);
-    z.next_out = reinterpret_cast<Bytef *>(out.data());
-    z.avail_out = uInt(out.size());
-    const int rc = inflate(&z, Z_FINISH);
-    const auto produced = z.total_out;
-    inflateEnd(&z);
-    if (rc != Z_STREAM_END || qint64(produced) != expected)
-        return std::nullopt;
-    return out;
-}
-
-struct Cursor
-{
-    const QByteArray &bytes;
-    qint64 at;
-    bool has(qint64 n) const { return at >= 0 && n >= 0 && at + n <= bytes.size(); }
-    quint16 u16(qint64 offset) const { return qFromLittleEndian<quint16>(bytes.constData() + at + offset); }
-    quint32 u32(qint64 offset) const { return qFromLittleEndian<quint32>(bytes.constData() + at + offset); }
+    quint64 begin = 0, end = 0;
+    QString name;
 };
 
-} // namespace
-
-Result<QByteArray> writeZip(const std::vector<ZipEntry> &entries)
+// Reads the central directory's local-header offsets, which libzip keeps to itself, to find entries
+// that share bytes. libzip has parsed and checked this directory already (ZIP_CHECKCONS); this only
+// walks its fixed-size records. ZIP64 offsets are refused: no KMZ is near 4 GiB.
+Result<std::vector<Extent>> extentsOf(const QByteArray &archive)
 {
-    QByteArray out;
-    QByteArray central;
-    for (const ZipEntry &e : entries) {
-        const QByteArray name = e.path.toUtf8();
-        if (name.isEmpty() || name.size() > 0xffff)
-            return zipError(QStringLiteral("a ZIP entry needs a name of 1 to 65535 bytes"));
-        if (qint64(e.data.size()) >= std::numeric_limits<quint32>::max())
-            return zipError(QStringLiteral("%1 is too large for a ZIP archive without ZIP64").arg(e.path));
-        const quint32 crc = crcOf(e.data);
-        const std::optional<QByteArray> deflated = deflateRaw(e.data);
-        if (!deflated)
-            return zipError(QStringLiteral("zlib could not compress %1").arg(e.path));
-        const bool store = deflated->size() >= e.data.size();
-        const QByteArray &payload = store ? e.data : *deflated;
-        const quint32 offset = quint32(out.size());
-        auto header = [&](QByteArray &to, bool centralEntry) {
-            put32(to, centralEntry ? kCentralHeader : kLocalHeader);
-            if (centralEntry)
-                put16(to, kVersion);  // made by
-            put16(to, kVersion);      // needed to extract
-            put16(to, kUtf8Names);
-            put16(to, store ? kStored : kDeflated);
-            put16(to, kDosTime);
-            put16(to, kDosDate);
-            put32(to, crc);
-            put32(to, quint32(payload.size()));
-            put32(to, quint32(e.data.size()));
-            put16(to, quint16(name.size()));
-            put16(to, 0);  // extra field
-            if (centralEntry) {
-                put16(to, 0);  // comment
-                put16(to, 0);  // disk
-                put16(to, 0);  // internal attributes
-                put32(to, 0100644u << 16);  // external: a regular file, rw-r--r--
-                put32(to, offset);
-            }
-            to.append(name);
-        };
-        header(out, false);
-        out.append(payload);
-        header(central, true);
-        if (qint64(out.size()) >= std::numeric_limits<quint32>::max())
-            return zipError(QStringLiteral("the archive is too large for ZIP without ZIP64"));
-    }
-    if (entries.size() > 0xffff)
-        return zipError(QStringLiteral("a ZIP archive without ZIP64 holds at most 65535 entries"));
-    const quint32 centralOffset = quint32(out.size());
-    out.append(central);
-    put32(out, kEndOfCentralDirectory);
-    put16(out, 0);
-    put16(out, 0);
-    put16(out, quint16(entries.size()));
-    put16(out, quint16(entries.size()));
-    put32(out, quint32(central.size()));
-    put32(out, centralOffset);
-    put16(out, 0);  // comment length
-    return out;
-}
-
-Result<std::vector<ZipEntry>> readZip(const QByteArray &archive, qint64 maxEntryBytes)
-{
-    // The end-of-central-directory record is the last 22 bytes, unless a comment (up to 64 KiB) follows.
-    qint64 eocd = -1;
-    for (qint64 at = archive.size() - 22; at >= 0 && at >= archive.size() - 22 - 0xffff; --at) {
-        if (Cursor{archive, at}.u32(0) == kEndOfCentralDirectory) {
+    const auto u16 = [&](qsizetype at) { return qFromLittleEndian<quint16>(archive.constData() + at); };
+    const auto u32 = [&](qsizetype at) { return qFromLittleEndian<quint32>(archive.constData() + at); };
+    const qsizetype size = archive.size();
+    // The end-of-central-directory record: 22 bytes and a comment of up to 65,535.
+    qsizetype eocd = -1;
+    for (qsizetype at = size - 22; at >= 0 && at >= size - 22 - 65535; --at) {
+        if (u32(at) == 0x06054b50) {
             eocd = at;
             break;
         }
     }
     if (eocd < 0)
-        return zipError(QStringLiteral("not a ZIP archive (no end of central directory record)"));
-    const Cursor end{archive, eocd};
-    const int count = end.u16(10);
-    qint64 at = end.u32(16);
-    std::vector<ZipEntry> entries;
-    for (int i = 0; i < count; ++i) {
-        const Cursor c{archive, at};
-        if (!c.has(46) || c.u32(0) != kCentralHeader)
-            return zipError(QStringLiteral("ZIP central directory entry %1 of %2 is damaged (at byte %3)").arg(i + 1).arg(count).arg(at));
-        const quint16 flags = c.u16(8);
-        const quint16 method = c.u16(10);
-        const quint32 crc = c.u32(16);
-        const qint64 packed = c.u32(20);
-        const qint64 size = c.u32(24);
-        const int nameLength = c.u16(28), extraLength = c.u16(30), commentLength = c.u16(32);
-        const qint64 localAt = c.u32(42);
-        if (!c.has(46 + nameLength))
-            return zipError(QStringLiteral("ZIP central directory entry %1 is truncated").arg(i + 1));
-        const QByteArray rawName = archive.mid(at + 46, nameLength);
-        const QString name = (flags & kUtf8Names) ? QString::fromUtf8(rawName) : QString::fromLatin1(rawName);
+        return zipError(QStringLiteral("the archive has no end of central directory"));
+    const quint32 cdSize = u32(eocd + 12), cdOffset = u32(eocd + 16);
+    if (cdOffset == 0xffffffffu || quint64(cdOffset) + cdSize > quint64(eocd))
+        return zipError(QStringLiteral("ZIP64 archives are not read"));
+    std::vector<Extent> extents;
+    for (qsizetype at = cdOffset; at + 46 <= qsizetype(cdOffset) + qsizetype(cdSize);) {
+        if (u32(at) != 0x02014b50)
+            return zipError(QStringLiteral("a central directory record is damaged at byte %1").arg(at));
+        const quint32 compressed = u32(at + 20), offset = u32(at + 42);
+        const quint16 nameLength = u16(at + 28), extraLength = u16(at + 30), commentLength = u16(at + 32);
+        if (compressed == 0xffffffffu || offset == 0xffffffffu)
+            return zipError(QStringLiteral("ZIP64 archives are not read"));
+        if (quint64(offset) + 30 > quint64(size))
+            return zipError(QStringLiteral("an entry's local header lies outside the archive"));
+        const quint64 localName = u16(qsizetype(offset) + 26), localExtra = u16(qsizetype(offset) + 28);
+        extents.push_back({offset, offset + 30 + localName + localExtra + compressed,
+                           QString::fromUtf8(archive.constData() + at + 46, qMin<qsizetype>(nameLength, size - at - 46))});
         at += 46 + nameLength + extraLength + commentLength;
-        if (name.endsWith(QLatin1Char('/')))
-            continue;  // a directory
-        if (flags & 1)
-            return zipError(QStringLiteral("%1 is encrypted").arg(name));
-        if (size > maxEntryBytes)
-            return zipError(QStringLiteral("%1 is %2 bytes unpacked, more than the %3 allowed").arg(name).arg(size).arg(maxEntryBytes));
-        const Cursor local{archive, localAt};
-        if (!local.has(30) || local.u32(0) != kLocalHeader)
-            return zipError(QStringLiteral("the local header of %1 is missing (at byte %2)").arg(name).arg(localAt));
-        const qint64 dataAt = localAt + 30 + local.u16(26) + local.u16(28);
-        if (!Cursor{archive, dataAt}.has(packed))
-            return zipError(QStringLiteral("%1 is truncated: %2 bytes of data expected").arg(name).arg(packed));
-        QByteArray data;
-        if (method == kStored) {
-            if (packed != size)
-                return zipError(QStringLiteral("%1: stored size %2 differs from its size %3").arg(name).arg(packed).arg(size));
-            data = archive.mid(dataAt, packed);
-        } else if (method == kDeflated) {
-            const auto inflated = inflateRaw(archive.constData() + dataAt, packed, size);
-            if (!inflated)
-                return zipError(QStringLiteral("%1 does not inflate to its %2 bytes (damaged)").arg(name).arg(size));
-            data = *inflated;
-        } else {
-            return zipError(QStringLiteral("%1 uses compression method %2; only stored and deflated are read").arg(name).arg(method));
+    }
+    return extents;
+}
+
+std::optional<MissionError> overlapping(std::vector<Extent> extents)
+{
+    std::sort(extents.begin(), extents.end(), [](const Extent &a, const Extent &b) { return a.begin < b.begin; });
+    for (size_t i = 1; i < extents.size(); ++i) {
+        if (extents[i].begin < extents[i - 1].end)
+            return zipError(QStringLiteral("the entries \"%1\" and \"%2\" share bytes in the archive (a ZIP bomb's trick): not read")
+                                .arg(extents[i - 1].name, extents[i].name));
+    }
+    return std::nullopt;
+}
+
+} // namespace
+
+struct ZipReader::State
+{
+    QByteArray bytes;  // libzip reads from here: it must outlive the archive
+    zip_t *archive = nullptr;
+    ZipLimits limits;
+    qint64 inflated = 0;
+    ~State()
+    {
+        if (archive)
+            zip_discard(archive);
+    }
+};
+
+ZipReader::ZipReader(std::unique_ptr<State> state) : m_state(std::move(state)) {}
+ZipReader::ZipReader(ZipReader &&) noexcept = default;
+ZipReader &ZipReader::operator=(ZipReader &&) noexcept = default;
+ZipReader::~ZipReader() = default;
+
+Result<ZipReader> ZipReader::open(const QByteArray &archive, ZipLimits limits)
+{
+    auto state = std::make_unique<State>();
+    state->bytes = archive;
+    state->limits = limits;
+    zip_error_t error;
+    zip_error_init(&error);
+    zip_source_t *source = zip_source_buffer_create(state->bytes.constData(), zip_uint64_t(state->bytes.size()), 0, &error);
+    if (!source) {
+        const QString text = libzipText(&error);
+        zip_error_fini(&error);
+        return zipError(QStringLiteral("not a ZIP archive: %1").arg(text));
+    }
+    state->archive = zip_open_from_source(source, ZIP_RDONLY | ZIP_CHECKCONS, &error);
+    if (!state->archive) {
+        zip_source_free(source);
+        const QString text = libzipText(&error);
+        zip_error_fini(&error);
+        return zipError(QStringLiteral("not a readable ZIP archive: %1").arg(text));
+    }
+    zip_error_fini(&error);
+    const zip_int64_t count = zip_get_num_entries(state->archive, 0);
+    if (count > limits.maxEntries)
+        return zipError(QStringLiteral("the archive lists %1 entries, more than the %2 read").arg(count).arg(limits.maxEntries));
+    Result<std::vector<Extent>> extents = extentsOf(state->bytes);
+    if (!extents)
+        return extents.error();
+    if (zip_int64_t(extents->size()) != count)
+        return zipError(QStringLiteral("the central directory lists %1 entries where libzip read %2").arg(extents->size()).arg(count));
+    if (const auto overlap = overlapping(std::move(extents).value()))
+        return *overlap;
+    return ZipReader(std::move(state));
+}
+
+QStringList ZipReader::paths() const
+{
+    QStringList list;
+    const zip_int64_t count = zip_get_num_entries(m_state->archive, 0);
+    for (zip_int64_t i = 0; i < count; ++i) {
+        const char *name = zip_get_name(m_state->archive, zip_uint64_t(i), ZIP_FL_ENC_GUESS);
+        if (name && !QByteArray(name).endsWith('/'))
+            list.append(QString::fromUtf8(name));
+    }
+    return list;
+}
+
+qint64 ZipReader::inflatedBytes() const
+{
+    return m_state->inflated;
+}
+
+Result<QByteArray> ZipReader::read(const QString &path)
+{
+    const ZipLimits &limits = m_state->limits;
+    zip_stat_t stat;
+    zip_stat_init(&stat);
+    const QByteArray name = path.toUtf8();
+    if (zip_stat(m_state->archive, name.constData(), ZIP_FL_ENC_GUESS, &stat) != 0)
+        return zipError(QStringLiteral("the archive has no \"%1\"").arg(path));
+    const qint64 declared = qint64(stat.size);
+    if (declared > limits.maxEntryBytes)
+        return zipError(QStringLiteral("\"%1\" would inflate to %2 bytes, more than the %3 read from one entry")
+                            .arg(path).arg(declared).arg(limits.maxEntryBytes));
+    if (m_state->inflated + declared > limits.maxTotalBytes)
+        return zipError(QStringLiteral("reading \"%1\" would inflate the archive past %2 bytes in all").arg(path).arg(limits.maxTotalBytes));
+    if (declared > limits.ratioFloorBytes && double(declared) > limits.maxRatio * double(qMax<zip_uint64_t>(stat.comp_size, 1)))
+        return zipError(QStringLiteral("\"%1\" claims %2 bytes from %3 compressed, more than %4 times: not inflated")
+                            .arg(path).arg(declared).arg(stat.comp_size).arg(limits.maxRatio));
+    zip_file_t *file = zip_fopen_index(m_state->archive, stat.index, 0);
+    if (!file)
+        return zipError(QStringLiteral("\"%1\" cannot be read: %2").arg(path, libzipText(zip_get_error(m_state->archive))));
+    // Never more than the declared size: libzip stops there and checks the CRC at the end.
+    QByteArray data(declared, Qt::Uninitialized);
+    qint64 filled = 0;
+    while (filled < declared) {
+        const zip_int64_t n = zip_fread(file, data.data() + filled, zip_uint64_t(declared - filled));
+        if (n < 0) {
+            const QString text = libzipText(zip_file_get_error(file));
+            zip_fclose(file);
+            return zipError(QStringLiteral("\"%1\" is damaged: %2").arg(path, text));
         }
-        if (crcOf(data) != crc)
-            return zipError(QStringLiteral("%1 fails its CRC-32 check (damaged)").arg(name));
-        entries.push_back({name, std::move(data)});
+        if (n == 0)
+            break;
+        filled += n;
+    }
+    char extra;
+    const bool longer = zip_fread(file, &extra, 1) > 0;
+    const int closed = zip_fclose(file);
+    if (filled != declared || longer)
+        return zipError(QStringLiteral("\"%1\" holds a different size than the archive says (%2 bytes)").arg(path).arg(declared));
+    if (closed != 0)
+        return zipError(QStringLiteral("\"%1\" is damaged (its CRC does not match)").arg(path));
+    m_state->inflated += declared;
+    return data;
+}
+
+Result<std::vector<ZipEntry>> readZip(const QByteArray &archive, ZipLimits limits)
+{
+    Result<ZipReader> opened = ZipReader::open(archive, limits);
+    if (!opened)
+        return opened.error();
+    ZipReader reader = std::move(opened).value();
+    std::vector<ZipEntry> entries;
+    for (const QString &path : reader.paths()) {
+        Result<QByteArray> data = reader.read(path);
+        if (!data)
+            return data.error();
+        entries.push_back({path, std::move(data).value()});
     }
     return entries;
+}
+
+Result<QByteArray> writeZip(const std::vector<ZipEntry> &entries)
+{
+    zip_error_t error;
+    zip_error_init(&error);
+    zip_source_t *buffer = zip_source_buffer_create(nullptr, 0, 0, &error);
+    zip_t *archive = buffer ? zip_open_from_source(buffer, ZIP_TRUNCATE, &error) : nullptr;
+    const auto fail = [&](const QString &what) {
+        const QString text = what + QStringLiteral(": ") + libzipText(archive ? zip_get_error(archive) : &error);
+        if (archive)
+            zip_discard(archive);
+        else if (buffer)
+            zip_source_free(buffer);
+        zip_error_fini(&error);
+        return zipError(QStringLiteral("the archive could not be written: %1").arg(text));
+    };
+    if (!archive)
+        return fail(QStringLiteral("opening"));
+    zip_source_keep(buffer);  // its bytes are the result, read after the archive is closed
+    for (const ZipEntry &entry : entries) {
+        // libzip copies nothing here: the entries outlive zip_close, which reads them.
+        zip_source_t *data = zip_source_buffer(archive, entry.data.constData(), zip_uint64_t(entry.data.size()), 0);
+        const QByteArray name = entry.path.toUtf8();
+        const zip_int64_t index = data ? zip_file_add(archive, name.constData(), data, ZIP_FL_ENC_UTF_8) : -1;
+        if (index < 0) {
+            if (data)
+                zip_source_free(data);
+            zip_source_free(buffer);
+            return fail(entry.path);
+        }
+        zip_set_file_compression(archive, zip_uint64_t(index), ZIP_CM_DEFLATE, 0);
+        zip_file_set_mtime(archive, zip_uint64_t(index), kFixedTime, 0);
+    }
+    if (zip_close(archive) != 0) {
+        const QString text = libzipText(zip_get_error(archive));
+        zip_discard(archive);
+        zip_source_free(buffer);
+        zip_error_fini(&error);
+        return zipError(QStringLiteral("the archive could not be written: %1").arg(text));
+    }
+    QByteArray out;
+    zip_stat_t stat;
+    if (zip_source_stat(buffer, &stat) == 0 && zip_source_open(buffer) == 0) {
+        out.resize(qsizetype(stat.size));
+        const zip_int64_t n = zip_source_read(buffer, out.data(), stat.size);
+        zip_source_close(buffer);
+        if (n != zip_int64_t(stat.size))
+            out.clear();
+    }
+    zip_source_free(buffer);
+    zip_error_fini(&error);
+    if (out.isEmpty())
+        return zipError(QStringLiteral("the archive could not be written: its bytes could not be read back"));
+    return out;
 }
 
 } // namespace sortie::mission::formats

@@ -1,0 +1,86 @@
+// Every reader of outside bytes has a fuzz target here, with a seed corpus. The mission file types
+// come from the code's own list (missionFileExtensions), so a file type added there without a fuzz
+// target fails this test; the other readers (wire protocols, logs, terrain, profiles) are listed
+// below, and a fuzz target no reader claims fails it too (a renamed target must be re-listed).
+#include "MissionFiles.h"
+
+#include <QDir>
+#include <QFileInfo>
+#include <QTest>
+
+#include <map>
+
+using namespace sortie::mission::formats;
+
+namespace {
+const QDir kFuzzDir(QStringLiteral(SORTIE_FUZZ_DIR));
+
+// Mission file formats, by formatName, and the target that fuzzes each one's reader.
+const std::map<QString, QString> kMissionReaders{
+    {QStringLiteral("Sortie mission"), QStringLiteral("fuzz_sortie_reader")},
+    {QStringLiteral("QGroundControl plan"), QStringLiteral("fuzz_qgc_plan_reader")},
+    {QStringLiteral("QGC WPL 110 waypoints"), QStringLiteral("fuzz_wpl_reader")},
+    {QStringLiteral("KML"), QStringLiteral("fuzz_kml_reader")},
+    {QStringLiteral("DJI WPML"), QStringLiteral("fuzz_wpml_reader")},
+};
+
+// Every other reader of bytes from outside: files, wire protocols, archives.
+const std::map<QString, QString> kOtherReaders{
+    {QStringLiteral("ZIP archives (KMZ)"), QStringLiteral("fuzz_zip_archive")},
+    {QStringLiteral("HCI frames"), QStringLiteral("fuzz_hci_decoder")},
+    {QStringLiteral("HCI routes (protobuf to route)"), QStringLiteral("fuzz_hci_route")},
+    {QStringLiteral("VCI messages"), QStringLiteral("fuzz_vci")},
+    {QStringLiteral("SRTM .hgt tiles"), QStringLiteral("fuzz_hgt_tile")},
+    {QStringLiteral("energy profiles (JSON)"), QStringLiteral("fuzz_energy_profile")},
+    {QStringLiteral("flight logs (.sortielog)"), QStringLiteral("fuzz_sortielog")},
+    {QStringLiteral("telemetry blocks (.sortielog)"), QStringLiteral("fuzz_telemetry_block")},
+    {QStringLiteral("airspace zones (GeoJSON)"), QStringLiteral("fuzz_geojson_zones")},
+    {QStringLiteral("airspace zones (KML)"), QStringLiteral("fuzz_kml_zones")},
+};
+} // namespace
+
+class TestFuzzCoverage : public QObject
+{
+    Q_OBJECT
+
+    static void verifyTarget(const QString &reader, const QString &target)
+    {
+        QVERIFY2(kFuzzDir.exists(target + QStringLiteral(".cpp")), qPrintable(reader + QStringLiteral(": no ") + target + QStringLiteral(".cpp")));
+        const QDir corpus(kFuzzDir.filePath(target.mid(5) + QStringLiteral("-corpus")));
+        QVERIFY2(corpus.exists() && !corpus.entryList(QDir::Files).isEmpty(),
+                 qPrintable(reader + QStringLiteral(": no seeds in ") + corpus.path()));
+    }
+
+private slots:
+    void everyMissionFileTypeHasAFuzzTarget()
+    {
+        const QStringList extensions = missionFileExtensions();
+        QVERIFY(extensions.size() >= 5);
+        for (const QString &extension : extensions) {
+            const auto format = formatForPath(QStringLiteral("file.") + extension);
+            QVERIFY(format);
+            const auto reader = kMissionReaders.find(formatName(*format));
+            QVERIFY2(reader != kMissionReaders.end(), qPrintable(QStringLiteral(".%1 (%2) has no fuzz target").arg(extension, formatName(*format))));
+            verifyTarget(reader->first, reader->second);
+        }
+    }
+
+    void everyOtherReaderHasAFuzzTarget()
+    {
+        for (const auto &[reader, target] : kOtherReaders)
+            verifyTarget(reader, target);
+    }
+
+    void everyFuzzTargetFuzzesAListedReader()
+    {
+        QStringList claimed;
+        for (const auto *table : {&kMissionReaders, &kOtherReaders})
+            for (const auto &entry : *table)
+                claimed.append(entry.second + QStringLiteral(".cpp"));
+        for (const QString &file : kFuzzDir.entryList({QStringLiteral("fuzz_*.cpp")}, QDir::Files))
+            QVERIFY2(claimed.contains(file), qPrintable(file + QStringLiteral(" fuzzes no listed reader")));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestFuzzCoverage)
+#include "tst_fuzzcoverage.moc"
