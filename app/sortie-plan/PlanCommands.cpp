@@ -1,5 +1,7 @@
 #include "PlanCommands.h"
 
+#include "AirspaceReport.h"
+#include "AirspaceRule.h"
 #include "AreaScanPlanner.h"
 #include "DjiDroneModels.h"
 #include "ElevationService.h"
@@ -126,9 +128,22 @@ int runStats(const QStringList &args, Streams io)
                  QStringLiteral("SPEED,FROM_DEG")});
     p.addOption({QStringLiteral("turns"), QStringLiteral("With --vehicle: coordinated (default) or stop (stop and turn at every waypoint)."),
                  QStringLiteral("MODE")});
+    p.addOption({QStringLiteral("zones"), QStringLiteral("Zone file (.plan, .geojson, .json, .kml): check the airspace rules too. Repeatable."),
+                 QStringLiteral("FILE")});
     if (!parse(p, args, 1, io))
         return Failure;
     const QString file = p.positionalArguments().at(0);
+    std::optional<ZoneInput> zones;
+    if (p.isSet(QStringLiteral("zones"))) {
+        QString error;
+        zones = readZoneInput(p.values(QStringLiteral("zones")), 20.0, &error);
+        if (!zones) {
+            io.err << "sortie-plan: " << error << "\n";
+            return Failure;
+        }
+        for (const QString &n : zones->problems)
+            io.err << "note: " << n << "\n";
+    }
     std::optional<EnduranceInput> endurance;
     if (p.isSet(QStringLiteral("vehicle"))) {
         QString error;
@@ -165,6 +180,17 @@ int runStats(const QStringList &args, Streams io)
         }
         profiles = std::move(*pr);
     }
+    // The routes as the airspace check flies them, read as `profile` reads them (a WPL file's frames).
+    std::vector<terrain::ProfileRoute> zoneRoutes;
+    if (zones && profiles.empty()) {
+        QString error;
+        auto pr = profileRoutes(file, loaded->mission, &error);
+        if (!pr) {
+            io.err << "sortie-plan: " << file << ": " << error << "\n";
+            return Failure;
+        }
+        zoneRoutes = std::move(*pr);
+    }
     ScanPlanCache cache;
     bool errors = false;
     Json routes = Json::array();
@@ -191,9 +217,26 @@ int runStats(const QStringList &args, Streams io)
                              [](const ValidationIssue &a, const ValidationIssue &b) { return a.segment < b.segment; });
             errors |= !estimate->ok() || !estimate->value().fitsOneBattery();
         }
+        // With --zones, the airspace rules join the validation (the flown path over the ground with --dem).
+        std::optional<airspace::AirspaceReport> airspaceReport;
+        if (zones) {
+            const terrain::ProfileRoute pr = ri < profiles.size()     ? profiles[ri]
+                                             : ri < zoneRoutes.size() ? zoneRoutes[ri]
+                                                                      : terrain::profileRouteOf(r, &cache);
+            const bool wpl = formatForPath(file) == FileFormat::Wpl;
+            const airspace::FlownPath path = airspace::flownPath(pr, profile ? &*profile : nullptr, wpl ? airspace::FlightEnds{} : airspace::flightEndsOf(r));
+            airspace::AirspaceChecker checker(zones->zones, zones->buffer);
+            airspaceReport = checker.check(path);
+            const auto found = airspace::airspaceIssues(*airspaceReport, *zones->zones, zones->buffer);
+            report.issues.insert(report.issues.end(), found.begin(), found.end());
+            std::stable_sort(report.issues.begin(), report.issues.end(),
+                             [](const ValidationIssue &a, const ValidationIssue &b) { return a.segment < b.segment; });
+        }
         errors |= report.hasErrors();
         if (p.isSet(QStringLiteral("json"))) {
             Json route{{"name", r.settings.name.toStdString()}, {"statistics", statisticsJson(st)}, {"validation", validationJson(report)}};
+            if (airspaceReport)
+                route["airspace"] = airspaceJson(*airspaceReport, *zones);
             if (profile)
                 route["terrain"] = terrainJson(profiles[ri], *profile, false);
             if (estimate)

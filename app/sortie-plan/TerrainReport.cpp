@@ -129,6 +129,10 @@ std::optional<ProfileRoute> wplProfileRoute(const QByteArray &data, QString *err
             }
         }
         w.altitude = item.altitude;
+        if (item.command == mav::NavTakeoff || item.command == mav::NavVtolTakeoff)
+            w.role = mission::WaypointRole::Takeoff;
+        else if (item.command == mav::NavLand || item.command == mav::NavVtolLand)
+            w.role = mission::WaypointRole::Land;
         w.row = int(route.waypoints.size());
         w.label = QStringLiteral("Waypoint %1").arg(route.waypoints.size() + 1);
         route.waypoints.push_back(std::move(w));

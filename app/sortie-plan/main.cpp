@@ -1,5 +1,6 @@
 // sortie-plan: convert mission files between formats, print statistics and validation, and
 // generate area scans, for scripts and batch work. See docs/missions.md.
+#include "AirspaceCommand.h"
 #include "PlanCommands.h"
 #include "ProfileCommand.h"
 
@@ -16,13 +17,19 @@ const char *const kUsage =
     "       [--drone m300|m350|m3e|m3t] [--payload P] [--height relative|amsl|agl] [--takeoff-amsl M] [--security-height M]\n"
     "      Convert between .sortie, .plan (QGroundControl), .waypoints (QGC WPL 110), .kmz (DJI WPML) and\n"
     "      .kml (export only). The --drone.. options shape a .kmz for DJI Pilot 2.\n"
-    "  stats FILE [--dem PATH] [--vehicle PROFILE.json [--wind SPEED,FROM_DEG] [--turns coordinated|stop]] [--json]\n"
+    "  stats FILE [--dem PATH] [--vehicle PROFILE.json [--wind SPEED,FROM_DEG] [--turns coordinated|stop]]\n"
+    "       [--zones ZONES_FILE ...] [--json]\n"
     "      Print each route's statistics and validation results (with --dem, the terrain rules too; with\n"
-    "      --vehicle, time and energy per leg, batteries, battery changes and the point of no return).\n"
+    "      --vehicle, time and energy per leg, batteries, battery changes and the point of no return;\n"
+    "      with --zones, the airspace rules).\n"
     "      Exit 2 when a route has errors or cannot be flown on one battery with the reserve.\n"
     "  profile FILE --dem PATH [--step METERS] [--safe-distance METERS] [--json]\n"
     "      Ground, altitude and clearance along each route from SRTM .hgt tiles (PATH: a tile or a folder).\n"
     "      Exit 2 when a leg flies closer to the ground than the safe distance.\n"
+    "  airspace FILE --zones ZONES_FILE [--zones ZONES_FILE ...] [--dem PATH] [--buffer METERS] [--json]\n"
+    "      Check every flown leg in 3D against no-fly zones and geofences (ZONES_FILE: .plan geofence,\n"
+    "      .geojson/.json, .kml). Exit 2 when a leg enters an exclusion zone or leaves the inclusion zones;\n"
+    "      a leg within the buffer (default 20 m) of a zone is a warning.\n"
     "  scan POLYGON.kml OUT [--altitude M | --gsd CM] [--front PCT] [--side PCT] [--angle DEG]\n"
     "       [--turnaround M] [--speed M/S] [--amsl] [--camera NAME,SENSOR_W_MM,SENSOR_H_MM,FOCAL_MM,IMAGE_W_PX,IMAGE_H_PX]\n"
     "       [--json] [--force]\n"
@@ -51,6 +58,8 @@ int main(int argc, char **argv)
         return sortie::plan::runStats(args, io);
     if (command == QLatin1String("profile"))
         return sortie::plan::runProfile(args, io);
+    if (command == QLatin1String("airspace"))
+        return sortie::plan::runAirspace(args, io);
     if (command == QLatin1String("scan"))
         return sortie::plan::runScan(args, io);
     err << "sortie-plan: unknown command \"" << command << "\"\n\n" << kUsage;

@@ -28,6 +28,7 @@ ProfileRoute profileRouteOf(const mission::Route &route, mission::ScanPlanCache 
         w.altitude = p.altitude;
         w.reference = p.altitudeType == mission::AltitudeType::Amsl ? HeightReference::Amsl : HeightReference::AboveTerrain;
         w.row = p.segment;
+        w.role = p.role;
         w.label = p.segment >= 0 && size_t(p.segment) < route.segments.size() && mission::isAreaScan(route.segments[size_t(p.segment)])
                       ? QStringLiteral("%1, point %2").arg(mission::segmentLabel(route, p.segment)).arg(i + 1)
                       : QStringLiteral("Waypoint %1").arg(i + 1);

@@ -29,6 +29,7 @@ struct ProfileWaypoint
     // >= 0: the leg to the next point follows the terrain within this many metres (an AGL scan; the
     // processing adds points there, see terrainFollowTolerance); -1: a straight climb.
     double followTolerance = -1.0;
+    mission::WaypointRole role = mission::WaypointRole::Pass;  // a take-off climbs from the ground here, a landing descends to it
 };
 
 // The flown path as the profile sees it: points with their heights, legs between them.

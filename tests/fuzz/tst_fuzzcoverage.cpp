@@ -34,6 +34,8 @@ const std::map<QString, QString> kOtherReaders{
     {QStringLiteral("energy profiles (JSON)"), QStringLiteral("fuzz_energy_profile")},
     {QStringLiteral("flight logs (.sortielog)"), QStringLiteral("fuzz_sortielog")},
     {QStringLiteral("telemetry blocks (.sortielog)"), QStringLiteral("fuzz_telemetry_block")},
+    {QStringLiteral("airspace zones (GeoJSON)"), QStringLiteral("fuzz_geojson_zones")},
+    {QStringLiteral("airspace zones (KML)"), QStringLiteral("fuzz_kml_zones")},
 };
 } // namespace
 

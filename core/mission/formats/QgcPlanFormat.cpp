@@ -1,5 +1,6 @@
 #include "QgcPlanFormat.h"
 
+#include "QgcFenceJson.h"
 #include "QgcSurveyJson.h"
 
 #include "AlgorithmCatalog.h"
@@ -111,21 +112,13 @@ Result<ImportedRoute> readQgcPlan(const QByteArray &data)
                 item.at("type").fail(QStringLiteral("unknown item type \"%1\"").arg(type));
             }
         }
-        auto nonEmpty = [&](const char *section, const char *key) {
-            const auto s = root.find(section);
-            if (!s) return false;
-            const auto k = s->find(key);
-            return k && k->value().is_array() && !k->value().empty();
-        };
-        if (nonEmpty("geoFence", "polygons") || nonEmpty("geoFence", "circles"))
-            notices << QStringLiteral("The plan's geofence was not imported.");
-        if (nonEmpty("rallyPoints", "points"))
-            notices << QStringLiteral("The plan's rally points were not imported.");
+        RouteFence fence = fenceFromPlanJson(root, &notices);
 
         Result<ImportedRoute> route = routeFromMavlink(items, home, speed);
         if (!route)
             return route;
         ImportedRoute out = std::move(route).value();
+        out.route.fence = std::move(fence);
         out.notices = notices + out.notices;
         return out;
     } catch (const JsonPathError &e) {
@@ -175,16 +168,32 @@ QByteArray writeQgcPlan(const Route &route, QStringList *notices, ScanPlanCache 
     }
     const Json doc{
         {"fileType", "Plan"},
-        {"geoFence", {{"circles", Json::array()}, {"polygons", Json::array()}, {"version", 2}}},
+        {"geoFence", geoFenceJson(route.fence)},
         {"groundStation", "Sortie"},
         {"mission", {{"cruiseSpeed", speed}, {"firmwareType", 0}, {"hoverSpeed", speed}, {"items", std::move(items)},
                      {"plannedHomePosition", {home.position.latitude, home.position.longitude, home.altitudeAmsl}},
                      {"vehicleType", kMavTypeQuadrotor}, {"version", 2}}},
-        {"rallyPoints", {{"points", Json::array()}, {"version", 2}}},
+        {"rallyPoints", rallyPointsJson(route.fence)},
         {"version", 1}};
     if (notices)
         *notices << out.notices;
     return QByteArray::fromStdString(doc.dump(4)) + '\n';
+}
+
+Result<RouteFence> readQgcPlanFence(const QByteArray &data, QStringList *notices)
+{
+    Result<Json> parsed = parseJson(data);
+    if (!parsed)
+        return parsed.error();
+    try {
+        const JsonCursor root(parsed.value());
+        root.requireObject();
+        if (root.at("fileType").string() != QLatin1String("Plan"))
+            root.at("fileType").fail(QStringLiteral("not a QGroundControl plan (fileType is not \"Plan\")"));
+        return fenceFromPlanJson(root, notices);
+    } catch (const JsonPathError &e) {
+        return errorAt(e);
+    }
 }
 
 } // namespace sortie::mission::formats

@@ -5,6 +5,7 @@
 #include "Domain.pb.h"
 #include "HciOrigin.h"
 #include "JsonCursor.h"
+#include "QgcFenceJson.h"
 #include "SortieActionJson.h"
 #include "SortieMigrations.h"
 
@@ -290,6 +291,8 @@ Json routeJson(const Route &r)
            {"failsafes", std::move(failsafes)}, {"endAction", s.endAction == EndAction::ReturnHome ? "returnHome" : "none"}};
     if (s.home)
         j["home"] = {{"latitude", s.home->position.latitude}, {"longitude", s.home->position.longitude}, {"altitudeAmsl", s.home->altitudeAmsl}};
+    if (!r.fence.empty())  // a .plan's geofence and rally points, in the .plan's own form
+        j["fence"] = {{"geoFence", geoFenceJson(r.fence)}, {"rallyPoints", rallyPointsJson(r.fence)}};
     putHci(j, hciRoute(r.origin));
     Json segments = Json::array();
     for (const Segment &seg : r.segments)
@@ -328,6 +331,12 @@ Route readRoute(const JsonCursor &c)
     s.endAction = end == QLatin1String("returnHome") ? EndAction::ReturnHome : EndAction::None;
     if (const auto h = c.find("home"))
         s.home = HomePosition{{h->number("latitude"), h->number("longitude")}, h->number("altitudeAmsl")};
+    if (const auto f = c.find("fence")) {
+        QStringList problems;  // Sortie wrote it: a bad part is an error, not a notice
+        r.fence = fenceFromPlanJson(*f, &problems);
+        if (!problems.isEmpty())
+            f->fail(problems.front());
+    }
     r.origin = takeOrigin<pb::Route>(c);
     const JsonCursor segments = c.at("segments");
     const size_t n = segments.arraySize();

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "RouteFence.h"
 #include "Segment.h"
 #include "ServerOrigin.h"
 
@@ -65,6 +66,7 @@ struct Route
 {
     RouteSettings settings;
     std::vector<Segment> segments;
+    RouteFence fence;  // a .plan's geofence and rally points, kept for writing back (core/airspace checks them)
     ServerOrigin origin;
     bool operator==(const Route &) const = default;
 };

@@ -1,0 +1,111 @@
+#include "AirspaceRule.h"
+
+#include "ElevationService.h"
+#include "Geodesy.h"
+
+#include <QLocale>
+
+#include <cmath>
+
+namespace sortie::airspace {
+
+using mission::Severity;
+using mission::ValidationIssue;
+
+namespace {
+constexpr double kFrameDrift = 5000.0;  // metres the route's centre may move before the frame follows
+
+QString metres(double v)
+{
+    return QLocale(QLocale::English).toString(std::llround(v)) + QStringLiteral(" m");
+}
+
+QString limits(const Zone &z)
+{
+    return QStringLiteral("floor %1, ceiling %2").arg(limitText(z.floor, false), limitText(z.ceiling, true));
+}
+} // namespace
+
+QString violationMessage(const AirspaceViolation &v, const Zone &zone)
+{
+    const QString verb = v.kind == ViolationKind::InsideExclusion ? QStringLiteral("enters") : QStringLiteral("leaves");
+    const QString where = v.toDistance - v.fromDistance < 0.5 ? QStringLiteral("at %1").arg(metres(v.fromDistance))
+                                                              : QStringLiteral("from %1 to %2").arg(metres(v.fromDistance), metres(v.toDistance));
+    QString text = QStringLiteral("Leg %1 %2 '%3' %4 (%5)").arg(v.leg).arg(verb, zone.name, where, limits(zone));
+    if (v.heightUnknown)
+        text += QStringLiteral("; its height there is unknown (no terrain data), so it counts as inside");
+    return text + QLatin1Char('.');
+}
+
+QString warningMessage(const AirspaceWarning &w, const Zone &zone, double buffer)
+{
+    return QStringLiteral("Leg %1 passes within %2 of %3 '%4' (buffer %5).")
+        .arg(w.leg)
+        .arg(metres(std::max(0.0, w.clearance)), zone.kind == ZoneKind::Exclusion ? QStringLiteral("exclusion zone")
+                                                                                 : QStringLiteral("the edge of inclusion zone"),
+             zone.name, metres(buffer));
+}
+
+std::vector<ValidationIssue> airspaceIssues(const AirspaceReport &report, const ZoneSet &zones, double buffer)
+{
+    std::vector<ValidationIssue> out;
+    for (const AirspaceViolation &v : report.violations)
+        out.push_back({Severity::Error,
+                       v.kind == ViolationKind::InsideExclusion ? QStringLiteral("airspace-exclusion") : QStringLiteral("airspace-inclusion"),
+                       violationMessage(v, zones.zones()[size_t(v.zone)]), v.row});
+    for (const AirspaceWarning &w : report.warnings)
+        out.push_back({Severity::Warning, QStringLiteral("airspace-near"), warningMessage(w, zones.zones()[size_t(w.zone)], buffer), w.row});
+    return out;
+}
+
+AirspaceRule::AirspaceRule(terrain::ElevationService *service, QObject *parent) : RouteRule(parent), m_service(service)
+{
+    if (service)
+        connect(service, &terrain::ElevationService::changed, this, &RouteRule::changed);
+}
+
+void AirspaceRule::setZones(std::shared_ptr<const ZoneSet> zones)
+{
+    m_zones = std::move(zones);
+    m_checker.reset();
+    emit changed();
+}
+
+void AirspaceRule::setBuffer(double metres)
+{
+    if (metres == m_buffer || !(metres >= 0))
+        return;
+    m_buffer = metres;
+    m_checker.reset();
+    emit changed();
+}
+
+void AirspaceRule::check(const mission::Route &route, mission::ScanPlanCache *cache, std::vector<ValidationIssue> &issues)
+{
+    if (!m_zones || m_zones->zones().empty())
+        return;
+    if (!m_checker)
+        m_checker = std::make_unique<AirspaceChecker>(m_zones, m_buffer);
+    const terrain::ProfileRoute pr = terrain::profileRouteOf(route, cache);
+    if (pr.waypoints.empty())
+        return;
+    std::optional<terrain::TerrainProfile> ground;
+    if (m_service)
+        ground = terrain::computeProfile(pr, *m_service);
+    // One frame while the route is edited, so unchanged legs keep their findings; a new one when
+    // the route's centre has moved far (another route opened).
+    std::vector<mission::GeoPoint> points;
+    points.reserve(pr.waypoints.size());
+    for (const terrain::ProfileWaypoint &w : pr.waypoints)
+        points.push_back(w.position);
+    const mission::GeoPoint centre = mission::LocalTangentPlane::centroidOf(points);
+    if (!m_frameOrigin || mission::geodesicDistance(centre, *m_frameOrigin) > kFrameDrift)
+        m_frameOrigin = centre;
+    const mission::LocalTangentPlane plane(*m_frameOrigin);
+    const FlownPath path = flownPath(pr, ground ? &*ground : nullptr, flightEndsOf(route), &plane);
+    const AirspaceReport report = m_checker->check(path);
+    const std::vector<ValidationIssue> found = airspaceIssues(report, *m_zones, m_buffer);
+    issues.insert(issues.end(), found.begin(), found.end());
+}
+
+} // namespace sortie::airspace
