@@ -11,6 +11,7 @@
 #include "WpmlSamples.h"
 
 #include <QDomDocument>
+#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -50,6 +51,27 @@ const Waypoint &waypoint(const Route &r, size_t i) { return std::get<Waypoint>(r
 QString five(const QString &extra0 = {}, const QString &extra1 = {}, const QString &extra3 = {})
 {
     return placemark(0, 40, extra0) + placemark(1, 40, extra1) + placemark(2, 40) + placemark(3, 40, extra3) + placemark(4, 40);
+}
+
+struct Run
+{
+    int code;
+    QString err;
+};
+
+Run sortiePlan(const QStringList &args)
+{
+    QProcess p;
+    p.start(QStringLiteral(SORTIE_PLAN_BIN), args);
+    if (!p.waitForFinished(60000))
+        qFatal("sortie-plan did not finish");
+    return {p.exitCode(), QString::fromUtf8(p.readAllStandardError())};
+}
+
+bool writeFile(const QString &path, const QByteArray &data)
+{
+    QFile f(path);
+    return f.open(QIODevice::WriteOnly) && f.write(data) == data.size();
 }
 
 double undulationAt(double lat, double lon)
@@ -293,6 +315,33 @@ private slots:
         const Result<QStringList> early = saveMission(m, dir.filePath(QStringLiteral("early.kmz")));
         QVERIFY(!early.ok());
         QVERIFY2(early.error().message.contains(QStringLiteral("route 1 (\"Wayline 1\") ends by returning home")), qPrintable(early.error().message));
+    }
+
+    void sortiePlanConvertKeepsWhatTheFileHeld()
+    {
+        QTemporaryDir dir;
+        // Two waylines to a one-route format: refused with the reason; --route chooses.
+        const QString two = dir.filePath(QStringLiteral("two.kmz"));
+        QVERIFY(writeFile(two, kmz(document(drone(89, 0), folder(QStringLiteral("relativeToStartPoint"), five())
+                                                              + folder(QStringLiteral("relativeToStartPoint"), placemark(0, 60) + placemark(1, 70))))));
+        const Run refused = sortiePlan({QStringLiteral("convert"), two, dir.filePath(QStringLiteral("two.plan"))});
+        QVERIFY(refused.code != 0);
+        QVERIFY2(refused.err.contains(QStringLiteral("the mission has 2 routes")), qPrintable(refused.err));
+        QCOMPARE(sortiePlan({QStringLiteral("convert"), two, dir.filePath(QStringLiteral("two.plan")), QStringLiteral("--route"), QStringLiteral("2")}).code, 0);
+        QCOMPARE(sortiePlan({QStringLiteral("convert"), two, dir.filePath(QStringLiteral("both.kmz"))}).code, 0);
+        QCOMPARE(int(loadMission(dir.filePath(QStringLiteral("both.kmz")))->mission.routes.size()), 2);
+        // AMSL heights without --takeoff-amsl: the file's take-off point gives the altitude.
+        const QString withTakeoff = dir.filePath(QStringLiteral("takeoff.kmz"));
+        const QString takeoff = el(QStringLiteral("takeOffRefPoint"), QStringLiteral("56.9755,24.07,140.5"));
+        QVERIFY(writeFile(withTakeoff, kmz(document(drone(89, 0) + takeoff, folder(QStringLiteral("relativeToStartPoint"), five())))));
+        const Run amsl = sortiePlan({QStringLiteral("convert"), withTakeoff, dir.filePath(QStringLiteral("amsl.kmz")), QStringLiteral("--height"), QStringLiteral("amsl")});
+        QVERIFY2(amsl.code == 0, qPrintable(amsl.err));
+        QFile out(dir.filePath(QStringLiteral("amsl.kmz")));
+        QVERIFY(out.open(QIODevice::ReadOnly));
+        const Result<std::vector<ZipEntry>> entries = readZip(out.readAll());
+        QVERIFY(entries.ok());
+        QCOMPARE(texts(entries->at(1).data, QStringLiteral("executeHeight")).value(0).toDouble(), 40.0);
+        QVERIFY(texts(entries->at(0).data, QStringLiteral("takeOffRefPoint")).value(0).startsWith(QStringLiteral("56.9755,24.07,140.5")));
     }
 
     void everyKnownAircraftIsOfferedAndRecognised()

@@ -203,7 +203,7 @@ QString aircraftOf(const ReadDocument &doc, QStringList *notices)
         return {};
     const DjiDroneModel *model = findDjiDroneModel(*doc.droneEnum, doc.droneSubEnum.value_or(0));
     if (!model) {
-        *notices << QStringLiteral("droneEnumValue %1/%2 is not an aircraft Sortie knows: the routes name no DJI aircraft (an export asks for --drone)")
+        *notices << QStringLiteral("droneEnumValue %1/%2 is not an aircraft Sortie knows: the routes name no DJI aircraft (--drone chooses one on export)")
                         .arg(*doc.droneEnum).arg(doc.droneSubEnum.value_or(0));
         return {};
     }
@@ -280,7 +280,7 @@ Result<WpmlImport> readWpml(const QByteArray &data, const WpmlReadOptions &optio
                            .arg(*takeoffDoc.takeOffRefPointAglHeight);
     out.droneName = aircraftOf(*doc, &out.notices);
     if (!doc->unknown.isEmpty())
-        out.notices << QStringLiteral("the mission's %1 not kept").arg(doc->unknown.join(QStringLiteral(", ")) + (doc->unknown.size() == 1 ? QStringLiteral(" is") : QStringLiteral(" are")));
+        out.notices << QStringLiteral("mission config: not kept: %1").arg(doc->unknown.join(QStringLiteral(", ")));
     if (templ) {
         // The template is DJI's editing state; Sortie reads its EGM96 heights and take-off point.
         QStringList editing = templ->unknown;
@@ -292,7 +292,7 @@ Result<WpmlImport> readWpml(const QByteArray &data, const WpmlReadOptions &optio
         }
         editing.removeDuplicates();
         if (!editing.isEmpty())
-            out.notices << QStringLiteral("template.kml: %1 not kept (the waylines are)").arg(editing.join(QStringLiteral(", ")) + (editing.size() == 1 ? QStringLiteral(" is") : QStringLiteral(" are")));
+            out.notices << QStringLiteral("template.kml: not kept (the waylines are): %1").arg(editing.join(QStringLiteral(", ")));
     }
     const size_t count = doc->folders.size();
     for (size_t f = 0; f < count; ++f) {
