@@ -57,7 +57,7 @@ QString duration(double seconds)
     return QStringLiteral("%1:%2:%3").arg(s / 3600).arg((s / 60) % 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10, QLatin1Char('0'));
 }
 
-int saveWithGate(const Mission &mission, const QString &path, int route, bool force, Streams io,
+int saveWithGate(const Mission &mission, const QString &path, std::optional<int> route, bool force, Streams io,
                  const WpmlExportOptions &wpml = {})
 {
     const Result<QStringList> saved = saveMission(mission, path, {route, force ? ValidationOverride::AcceptErrors : ValidationOverride::None, wpml});
@@ -73,11 +73,11 @@ int saveWithGate(const Mission &mission, const QString &path, int route, bool fo
 int runConvert(const QStringList &args, Streams io)
 {
     QCommandLineParser p;
-    p.addOption({QStringLiteral("route"), QStringLiteral("Route to write (1-based) for single-route formats."), QStringLiteral("N"), QStringLiteral("1")});
+    p.addOption({QStringLiteral("route"), QStringLiteral("Route to write (1-based); default: every route (.sortie, .kmz waylines), or the only one."), QStringLiteral("N")});
     p.addOption({QStringLiteral("force"), QStringLiteral("Write even with validation errors.")});
     p.addOption({QStringLiteral("drone"), QStringLiteral("DJI WPML (.kmz): the aircraft (%1; default: the route's profile, else m350).").arg(djiDroneKeys()), QStringLiteral("MODEL")});
     p.addOption({QStringLiteral("payload"), QStringLiteral("DJI WPML: the payload (e.g. h20t, p1; default: the aircraft's camera)."), QStringLiteral("PAYLOAD")});
-    p.addOption({QStringLiteral("height"), QStringLiteral("DJI WPML heights: relative (to take-off), amsl (EGM96) or agl (terrain following)."), QStringLiteral("MODE"), QStringLiteral("relative")});
+    p.addOption({QStringLiteral("height"), QStringLiteral("DJI WPML heights: relative (to take-off), amsl (EGM96), agl (terrain following) or wgs84 (ellipsoidal)."), QStringLiteral("MODE"), QStringLiteral("relative")});
     p.addOption({QStringLiteral("takeoff-amsl"), QStringLiteral("DJI WPML: AMSL altitude of the take-off point (default: the route's home)."), QStringLiteral("M")});
     p.addOption({QStringLiteral("security-height"), QStringLiteral("DJI WPML: take-off security height, m."), QStringLiteral("M"), QStringLiteral("20")});
     if (!parse(p, args, 2, io))
@@ -87,7 +87,7 @@ int runConvert(const QStringList &args, Streams io)
     wpml.drone = p.value(QStringLiteral("drone"));
     wpml.payload = p.value(QStringLiteral("payload"));
     if (!parseWpmlHeightMode(p.value(QStringLiteral("height")), &wpml.heightMode)) {
-        io.err << "sortie-plan: --height is relative, amsl or agl\n";
+        io.err << "sortie-plan: --height is relative, amsl, agl or wgs84\n";
         return Failure;
     }
     bool numberOk = true;
@@ -105,11 +105,14 @@ int runConvert(const QStringList &args, Streams io)
         return Failure;
     }
     printNotices(loaded->notices, io);
-    bool ok = false;
-    const int route = p.value(QStringLiteral("route")).toInt(&ok) - 1;
-    if (!ok) {
-        io.err << "sortie-plan: --route needs a number\n";
-        return Failure;
+    std::optional<int> route;
+    if (p.isSet(QStringLiteral("route"))) {
+        bool ok = false;
+        route = p.value(QStringLiteral("route")).toInt(&ok) - 1;
+        if (!ok) {
+            io.err << "sortie-plan: --route needs a number\n";
+            return Failure;
+        }
     }
     const int rc = saveWithGate(loaded->mission, out, route, p.isSet(QStringLiteral("force")), io, wpml);
     if (rc == Ok)

@@ -14,7 +14,7 @@ const char *const kUsage =
     "usage: sortie-plan <command> [options]\n"
     "\n"
     "  convert IN OUT [--route N] [--force]\n"
-    "       [--drone m300|m350|m3e|m3t] [--payload P] [--height relative|amsl|agl] [--takeoff-amsl M] [--security-height M]\n"
+    "       [--drone m300|m350|m30|m30t|m3e|m3t|m3m|m3d|m3td] [--payload P] [--height relative|amsl|agl|wgs84] [--takeoff-amsl M] [--security-height M]\n"
     "      Convert between .sortie, .plan (QGroundControl), .waypoints (QGC WPL 110), .kmz (DJI WPML) and\n"
     "      .kml (export only). The --drone.. options shape a .kmz for DJI Pilot 2.\n"
     "  stats FILE [--dem PATH] [--vehicle PROFILE.json [--wind SPEED,FROM_DEG] [--turns coordinated|stop]]\n"

@@ -148,6 +148,10 @@ bool RouteDocument::importFile(const QUrl &file)
     m_selection.clear();
     m_editor.replaceRoute(std::move(route), tr("Import %1").arg(QFileInfo(path).fileName()));
     QString text = tr("Imported %n segment(s) from %1.", nullptr, m_model.count()).arg(QFileInfo(path).fileName());
+    // The editor holds one route: say so rather than drop a file's other routes unseen.
+    if (loaded->mission.routes.size() > 1)
+        text += QLatin1Char(' ') + tr("The file holds %1 routes; this is the first (\"%2\").")
+                                       .arg(loaded->mission.routes.size()).arg(loaded->mission.routes.front().settings.name);
     if (!loaded->notices.isEmpty())
         text += QLatin1Char(' ') + loaded->notices.join(QLatin1Char(' '));
     setMessage(text);

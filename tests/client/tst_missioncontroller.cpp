@@ -8,6 +8,7 @@
 #include "HciRouteMapper.h"
 #include "Messages.pb.h"
 #include "MissionController.h"
+#include "MissionFiles.h"
 #include "SimFixture.h"
 #include "SimVehicle.h"
 #include "VehicleFleet.h"
@@ -453,6 +454,16 @@ private slots:
         QVERIFY(broken.open(QIODevice::WriteOnly));
         broken.write("{ \"fileType\": \"Plan\", ");
         broken.close();
+        // A file of several routes: the editor takes the first and says so.
+        mission::Mission two;
+        two.routes = {doc->model()->route(), doc->model()->route()};
+        two.routes[0].settings.name = QStringLiteral("first");
+        const QString twoPath = dir.filePath(QStringLiteral("two.sortie"));
+        QVERIFY(mission::formats::saveMission(two, twoPath, {std::nullopt, mission::ValidationOverride::AcceptErrors, {}}).ok());
+        QVERIFY2(doc->importFile(QUrl::fromLocalFile(twoPath)), qPrintable(doc->message()));
+        QVERIFY2(doc->message().contains(QStringLiteral("holds 2 routes; this is the first (\"first\")")), qPrintable(doc->message()));
+        doc->undo();
+
         QVERIFY(!doc->importFile(QUrl::fromLocalFile(broken.fileName())));
         QVERIFY2(doc->message().contains(QStringLiteral("broken.plan")), qPrintable(doc->message()));
         QCOMPARE(doc->model()->count(), 6); // nothing lost

@@ -129,8 +129,13 @@ private slots:
         QCOMPARE(int(route.segments.size()), 2);
         const auto &climb = std::get<mission::Waypoint>(route.segments[0]);
         const auto &target = std::get<mission::Waypoint>(route.segments[1]);
-        QCOMPARE(climb.altitude, 20.0);
-        QCOMPARE(target.altitude, 30.0);
+        // The take-off point (wpml:takeOffRefPoint, the first waypoint's ground) comes back as the
+        // route's home, so the heights above it come back as AMSL: take-off + 20 m and + 30 m.
+        QVERIFY(route.settings.home);
+        const double takeoff = route.settings.home->altitudeAmsl;
+        QCOMPARE(climb.altitudeType, mission::AltitudeType::Amsl);
+        QVERIFY2(std::abs(climb.altitude - (takeoff + 20.0)) < 1e-9, qPrintable(QString::number(climb.altitude)));
+        QVERIFY2(std::abs(target.altitude - (takeoff + 30.0)) < 1e-9, qPrintable(QString::number(target.altitude)));
         QVERIFY(std::abs(target.position.latitude - 46.7740639) < 1e-9);
         QVERIFY(std::abs(target.position.longitude - 8.3350036) < 1e-9);
         QCOMPARE(imported->droneName, QStringLiteral("DJI Matrice 350 RTK"));

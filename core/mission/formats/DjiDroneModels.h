@@ -33,13 +33,16 @@ struct DjiDroneModel
     double maxDescentRate = 4.0;       // m/s
     double maxAltitudeLimit = 1500.0;  // m above take-off: the highest altitude limit the app can set
     bool followsSurface = false;       // realTimeFollowSurface (terrain following in flight) is offered
+    bool startActions = false;         // wpml:startActionGroup (actions before the wayline) is flown
 };
 
 const std::vector<DjiDroneModel> &djiDroneModels();
-// By key ("m300", "m350", "m3e", "m3t") or by name, case-insensitively; null when unknown.
+// By key ("m300", "m350", "m30", "m3e", ...) or by name, case-insensitively; null when unknown.
 const DjiDroneModel *findDjiDroneModel(const QString &keyOrName);
+// By the droneInfo a WPML file declares; null when Sortie does not know the aircraft.
+const DjiDroneModel *findDjiDroneModel(int droneEnumValue, int droneSubEnumValue);
 const DjiPayload *findDjiPayload(const DjiDroneModel &model, const QString &key);
-// "m300, m350, m3e, m3t": for error messages and --help.
+// "m300, m350, m30, ...": for error messages and --help.
 QString djiDroneKeys();
 
 } // namespace sortie::mission::formats

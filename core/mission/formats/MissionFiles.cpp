@@ -154,14 +154,25 @@ Result<QStringList> saveMission(const Mission &mission, const QString &path, con
         return format.error();
     ScanPlanCache cache;
     std::vector<const Route *> routes;
-    if (*format == FileFormat::Sortie) {
+    if (*format == FileFormat::Sortie || (*format == FileFormat::Wpml && !options.routeIndex)) {
         for (const Route &r : mission.routes)
             routes.push_back(&r);
+    } else if (options.routeIndex) {
+        if (*options.routeIndex < 0 || *options.routeIndex >= int(mission.routes.size()))
+            return MissionError{QStringLiteral("the mission has no route %1 (it has %2)").arg(*options.routeIndex + 1).arg(mission.routes.size()), path, 0, 0, {}};
+        routes.push_back(&mission.routes[size_t(*options.routeIndex)]);
+    } else if (mission.routes.size() != 1) {
+        return MissionError{mission.routes.empty()
+                                ? QStringLiteral("the mission has no route to write")
+                                : QStringLiteral("the mission has %1 routes and a %2 file holds one: choose the route to write (sortie-plan convert --route N), "
+                                                 "or write .sortie or DJI WPML (.kmz), which hold them all")
+                                      .arg(mission.routes.size()).arg(formatName(*format)),
+                            path, 0, 0, {}};
     } else {
-        if (options.routeIndex < 0 || options.routeIndex >= int(mission.routes.size()))
-            return MissionError{QStringLiteral("the mission has no route %1 (it has %2)").arg(options.routeIndex + 1).arg(mission.routes.size()), path, 0, 0, {}};
-        routes.push_back(&mission.routes[size_t(options.routeIndex)]);
+        routes.push_back(&mission.routes.front());
     }
+    if (routes.empty() && *format != FileFormat::Sortie)
+        return MissionError{QStringLiteral("the mission has no route to write"), path, 0, 0, {}};
     for (const Route *r : routes) {
         const Result<void> gate = permitRelease(validateRoute(*r, &cache), options.override,
                                                 QStringLiteral("Saving route \"%1\"").arg(r->settings.name));
@@ -176,7 +187,7 @@ Result<QStringList> saveMission(const Mission &mission, const QString &path, con
     case FileFormat::Wpl: bytes = writeWpl(*routes.front(), &notices, &cache); break;
     case FileFormat::Kml: bytes = writeKmlRoute(*routes.front(), &cache); break;
     case FileFormat::Wpml: {
-        const Result<WpmlExport> wpml = writeWpml(*routes.front(), options.wpml, &cache);
+        const Result<WpmlExport> wpml = writeWpml(routes, options.wpml, &cache);
         if (!wpml)
             return wpml.error().withFile(path);
         bytes = wpml->kmz;

@@ -35,7 +35,10 @@ Result<ImportedPolygon> loadPolygon(const QString &path);
 
 struct SaveOptions
 {
-    int routeIndex = 0;  // which route, for formats that hold one (.plan, WPL, KML)
+    // Which route to write (0-based). Unset: every route where the format holds several (.sortie,
+    // DJI WPML's waylines); for a format that holds one (.plan, WPL, KML), the mission's only route,
+    // and a mission of several is refused with the reason rather than cut to its first.
+    std::optional<int> routeIndex;
     ValidationOverride override = ValidationOverride::None;
     WpmlExportOptions wpml;  // aircraft, payload and height mode of a DJI WPML (.kmz) export
 };

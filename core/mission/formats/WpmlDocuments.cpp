@@ -45,16 +45,18 @@ void writeDocumentStart(Writer &w)
     w.kmlBegin(QStringLiteral("Document"));
 }
 
-void writeMissionConfig(Writer &w, const Plan &plan, const WpmlExportOptions &o, const DjiDroneModel &model,
-                        const DjiPayload &payload, double transitional)
+void writeMissionConfig(Writer &w, const Mission &mission, const WpmlExportOptions &o, const DjiDroneModel &model,
+                        const DjiPayload &payload, bool withTakeoff)
 {
     w.begin(QStringLiteral("missionConfig"));
     w.el(QStringLiteral("flyToWaylineMode"), QStringLiteral("safely"));
-    w.el(QStringLiteral("finishAction"), finishActionName(plan.finish));
+    w.el(QStringLiteral("finishAction"), finishActionName(mission.waylines.back().plan->finish));
     w.el(QStringLiteral("exitOnRCLost"), QStringLiteral("executeLostAction"));
     w.el(QStringLiteral("executeRCLostAction"), QStringLiteral("goBack"));
     w.el(QStringLiteral("takeOffSecurityHeight"), o.takeoffSecurityHeight);
-    w.el(QStringLiteral("globalTransitionalSpeed"), transitional);
+    if (withTakeoff && !mission.takeOffRefPoint.isEmpty())
+        w.el(QStringLiteral("takeOffRefPoint"), mission.takeOffRefPoint);
+    w.el(QStringLiteral("globalTransitionalSpeed"), mission.waylines.front().plan->points.front().speed);
     w.begin(QStringLiteral("droneInfo"));
     w.el(QStringLiteral("droneEnumValue"), QString::number(model.droneEnumValue));
     w.el(QStringLiteral("droneSubEnumValue"), QString::number(model.droneSubEnumValue));
@@ -161,23 +163,29 @@ double departingSpeed(const Plan &plan, size_t k)
     return k + 1 < plan.points.size() ? plan.points[k + 1].speed : plan.points[k].speed;
 }
 
-} // namespace
-
-QByteArray waylinesOf(const Plan &plan, const WpmlExportOptions &o, const DjiDroneModel &model, const DjiPayload &payload,
-                      double distance, double duration)
+// wpml:startActionGroup: the actions before the flight to the first waypoint.
+void writeStartGroup(Writer &w, const Plan &plan)
 {
-    QByteArray out;
-    Writer w(&out);
-    writeDocumentStart(w);
-    writeMissionConfig(w, plan, o, model, payload, plan.points.front().speed);
+    if (plan.startActions.empty())
+        return;
+    w.begin(QStringLiteral("startActionGroup"));
+    int actionId = 0;
+    for (const Action &a : plan.startActions)
+        writeAction(w, actionId++, a);
+    w.end();
+}
+
+void writeWaylineFolder(Writer &w, const Wayline &wayline, int id, const WpmlExportOptions &o, int *groupId)
+{
+    const Plan &plan = *wayline.plan;
     w.kmlBegin(QStringLiteral("Folder"));
-    w.el(QStringLiteral("templateId"), QStringLiteral("0"));
+    w.el(QStringLiteral("templateId"), QString::number(id));
     w.el(QStringLiteral("executeHeightMode"), executeHeightModeName(o.heightMode));
-    w.el(QStringLiteral("waylineId"), QStringLiteral("0"));
-    w.el(QStringLiteral("distance"), std::round(distance * 10.0) / 10.0);
-    w.el(QStringLiteral("duration"), std::round(duration * 10.0) / 10.0);
+    w.el(QStringLiteral("waylineId"), QString::number(id));
+    w.el(QStringLiteral("distance"), std::round(wayline.distance * 10.0) / 10.0);
+    w.el(QStringLiteral("duration"), std::round(wayline.duration * 10.0) / 10.0);
     w.el(QStringLiteral("autoFlightSpeed"), departingSpeed(plan, 0));
-    int groupId = 0;
+    writeStartGroup(w, plan);
     for (size_t k = 0; k < plan.points.size(); ++k) {
         const Point &p = plan.points[k];
         w.kmlBegin(QStringLiteral("Placemark"));
@@ -186,28 +194,17 @@ QByteArray waylinesOf(const Plan &plan, const WpmlExportOptions &o, const DjiDro
         w.el(QStringLiteral("executeHeight"), p.executeHeight);
         w.el(QStringLiteral("waypointSpeed"), departingSpeed(plan, k));
         writeHeadingAndTurn(w, p);
-        writeGroups(w, plan, int(k), &groupId);
+        writeGroups(w, plan, int(k), groupId);
         w.end();
     }
     w.end();
-    w.end();
-    w.end();
-    w.x.writeEndDocument();
-    return out;
 }
 
-QByteArray templateOf(const Plan &plan, const WpmlExportOptions &o, const DjiDroneModel &model, const DjiPayload &payload)
+void writeTemplateFolder(Writer &w, const Plan &plan, int id, const WpmlExportOptions &o, int *groupId)
 {
-    QByteArray out;
-    Writer w(&out);
-    writeDocumentStart(w);
-    w.el(QStringLiteral("author"), QStringLiteral("Sortie"));
-    w.el(QStringLiteral("createTime"), QString::number(o.timestampMs));
-    w.el(QStringLiteral("updateTime"), QString::number(o.timestampMs));
-    writeMissionConfig(w, plan, o, model, payload, plan.points.front().speed);
     w.kmlBegin(QStringLiteral("Folder"));
     w.el(QStringLiteral("templateType"), QStringLiteral("waypoint"));
-    w.el(QStringLiteral("templateId"), QStringLiteral("0"));
+    w.el(QStringLiteral("templateId"), QString::number(id));
     w.begin(QStringLiteral("waylineCoordinateSysParam"));
     w.el(QStringLiteral("coordinateMode"), QStringLiteral("WGS84"));
     w.el(QStringLiteral("heightMode"), templateHeightModeName(o.heightMode));
@@ -224,7 +221,6 @@ QByteArray templateOf(const Plan &plan, const WpmlExportOptions &o, const DjiDro
     w.end();
     w.el(QStringLiteral("globalWaypointTurnMode"), turnModeName(TurnMode::StopStraight));
     w.el(QStringLiteral("globalUseStraightLine"), QStringLiteral("1"));
-    int groupId = 0;
     for (size_t k = 0; k < plan.points.size(); ++k) {
         const Point &p = plan.points[k];
         w.kmlBegin(QStringLiteral("Placemark"));
@@ -237,7 +233,7 @@ QByteArray templateOf(const Plan &plan, const WpmlExportOptions &o, const DjiDro
         w.el(QStringLiteral("useGlobalHeadingParam"), QStringLiteral("0"));
         w.el(QStringLiteral("useGlobalTurnParam"), QStringLiteral("0"));
         writeHeadingAndTurn(w, p);
-        writeGroups(w, plan, int(k), &groupId);
+        writeGroups(w, plan, int(k), groupId);
         w.end();
     }
     w.begin(QStringLiteral("payloadParam"));
@@ -245,6 +241,37 @@ QByteArray templateOf(const Plan &plan, const WpmlExportOptions &o, const DjiDro
     w.el(QStringLiteral("imageFormat"), QStringLiteral("wide"));
     w.end();
     w.end();
+}
+
+} // namespace
+
+QByteArray waylinesOf(const Mission &mission, const WpmlExportOptions &o, const DjiDroneModel &model, const DjiPayload &payload)
+{
+    QByteArray out;
+    Writer w(&out);
+    writeDocumentStart(w);
+    writeMissionConfig(w, mission, o, model, payload, false);
+    int groupId = 0;  // unique within the file
+    for (size_t f = 0; f < mission.waylines.size(); ++f)
+        writeWaylineFolder(w, mission.waylines[f], int(f), o, &groupId);
+    w.end();
+    w.end();
+    w.x.writeEndDocument();
+    return out;
+}
+
+QByteArray templateOf(const Mission &mission, const WpmlExportOptions &o, const DjiDroneModel &model, const DjiPayload &payload)
+{
+    QByteArray out;
+    Writer w(&out);
+    writeDocumentStart(w);
+    w.el(QStringLiteral("author"), QStringLiteral("Sortie"));
+    w.el(QStringLiteral("createTime"), QString::number(o.timestampMs));
+    w.el(QStringLiteral("updateTime"), QString::number(o.timestampMs));
+    writeMissionConfig(w, mission, o, model, payload, true);
+    int groupId = 0;
+    for (size_t f = 0; f < mission.waylines.size(); ++f)
+        writeTemplateFolder(w, *mission.waylines[f].plan, int(f), o, &groupId);
     w.end();
     w.end();
     w.x.writeEndDocument();

@@ -4,7 +4,9 @@
 #include "AreaScanPlanner.h"
 #include "FlightPath.h"
 #include "Geodesy.h"
+#include "Egm96Geoid.h"
 #include "ScanPlanCache.h"
+#include "WpmlGeoidAccess.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,12 +31,9 @@ double normalizeHeading(double deg)  // into [-180, 180], as rotateYaw wants it
 class HeightConverter
 {
 public:
-    HeightConverter(const WpmlExportOptions &o, const Route &route)
-        : m_options(o)
+    HeightConverter(const WpmlExportOptions &o, const Route &route, GeoidAccess *geoid)
+        : m_options(o), m_takeoff(takeoffAltitude(o, route)), m_geoid(geoid)
     {
-        m_takeoff = o.takeoffAltitudeAmsl;
-        if (!m_takeoff && route.settings.home)
-            m_takeoff = route.settings.home->altitudeAmsl;
     }
 
     // {executeHeight, templateHeight}
@@ -69,6 +68,19 @@ public:
                 return refuse(QStringLiteral("AMSL heights: the executable wayline flies relative to take-off and needs the take-off's AMSL altitude (set the route's home)"));
             return std::pair{amsl - *m_takeoff, amsl};
         }
+        case WpmlHeightMode::Wgs84: {
+            double amsl = altitude;
+            if (type == AltitudeType::Agl) {
+                const auto g = ground();
+                if (!g)
+                    return refuse(QStringLiteral("%1 is AGL: writing WGS-84 heights needs the terrain elevation there").arg(where));
+                amsl = *g + altitude;
+            }
+            const auto h = ellipsoidal(p, amsl, where);
+            if (!h)
+                return h.error();
+            return std::pair{*h, amsl};
+        }
         case WpmlHeightMode::AboveGroundLevel:
             if (type == AltitudeType::Amsl) {
                 const auto g = ground();
@@ -81,12 +93,25 @@ public:
         return refuse(QStringLiteral("unknown height mode"));
     }
 
+    // An AMSL height as WGS-84 ellipsoidal, through the EGM96 geoid.
+    Result<double> ellipsoidal(const GeoPoint &p, double amsl, const QString &where)
+    {
+        const Result<const datum::Egm96Geoid *> geoid = m_geoid->get(QStringLiteral("DJI WPML: WGS-84 heights"));
+        if (!geoid)
+            return geoid.error();
+        const auto h = (*geoid)->ellipsoidalFromAmsl(p.latitude, p.longitude, amsl);
+        if (!h)
+            return refuse(QStringLiteral("%1: no EGM96 geoid height there").arg(where));
+        return *h;
+    }
+
     QStringList notices() const { return m_notices; }
     std::optional<double> takeoff() const { return m_takeoff; }
 
 private:
     const WpmlExportOptions &m_options;
     std::optional<double> m_takeoff;
+    GeoidAccess *m_geoid;
     bool m_aglNoticed = false;
     QStringList m_notices;
 };
@@ -109,13 +134,35 @@ double bearing(const GeoPoint &a, const GeoPoint &b)
     return inv ? inv->azimuth1Deg : 0.0;
 }
 
+// How many of the first waypoint's actions lead it as gimbal tilts only: the wayline's start actions.
+size_t leadingGimbalTilts(const Waypoint &w)
+{
+    size_t n = 0;
+    for (const WaypointAction &a : w.actions) {
+        const auto *gimbal = std::get_if<CameraControlAction>(&a);
+        if (!gimbal || !gimbal->tiltDeg || gimbal->rollDeg || gimbal->yawDeg || gimbal->zoomLevel)
+            break;
+        ++n;
+    }
+    return n;
+}
+
 } // namespace
 
+std::optional<double> takeoffAltitude(const WpmlExportOptions &options, const Route &route)
+{
+    if (options.takeoffAltitudeAmsl)
+        return options.takeoffAltitudeAmsl;
+    if (route.settings.home)
+        return route.settings.home->altitudeAmsl;
+    return std::nullopt;
+}
+
 Result<Plan> planOf(const Route &route, const WpmlExportOptions &options, const DjiDroneModel &model,
-                    const DjiPayload &payload, ScanPlanCache *cache)
+                    const DjiPayload &payload, ScanPlanCache *cache, GeoidAccess *geoid)
 {
     Plan plan;
-    HeightConverter heights(options, route);
+    HeightConverter heights(options, route, geoid);
     // Scans that cannot be planned would fly their first vertex only: refuse them instead.
     for (size_t i = 0; i < route.segments.size(); ++i) {
         if (const AreaScan *scan = asAreaScan(route.segments[i])) {
@@ -134,10 +181,16 @@ Result<Plan> planOf(const Route &route, const WpmlExportOptions &options, const 
         // Above the take-off spot by the security height, in every height mode (AMSL in an EGM96 template).
         climb.executeHeight = options.takeoffSecurityHeight;
         climb.templateHeight = climb.executeHeight;
-        if (options.heightMode == WpmlHeightMode::Egm96) {
+        if (options.heightMode == WpmlHeightMode::Egm96 || options.heightMode == WpmlHeightMode::Wgs84) {
             if (!heights.takeoff())
                 return refuse(QStringLiteral("AMSL heights: the climb point needs the take-off's AMSL altitude"));
             climb.templateHeight += *heights.takeoff();
+        }
+        if (options.heightMode == WpmlHeightMode::Wgs84) {
+            const auto h = heights.ellipsoidal(climb.position, climb.templateHeight, QStringLiteral("the climb point"));
+            if (!h)
+                return h.error();
+            climb.executeHeight = *h;
         }
         plan.points.push_back(climb);
     }
@@ -179,9 +232,13 @@ Result<Plan> planOf(const Route &route, const WpmlExportOptions &options, const 
         if (!(p.speed > 0.0) || p.speed > model.maxWaypointSpeed)
             return refuse(QStringLiteral("%1: speed %2 m/s is outside the %3's waypoint speed range (above 0, at most %4 m/s)")
                               .arg(where).arg(p.speed).arg(model.name).arg(model.maxWaypointSpeed));
-        if (p.executeHeight > model.maxAltitudeLimit)
+        // WGS-84 heights are checked above the take-off where its altitude is known.
+        const std::optional<double> above = options.heightMode != WpmlHeightMode::Wgs84 ? std::optional<double>(p.executeHeight)
+                                            : heights.takeoff() ? std::optional<double>(p.templateHeight - *heights.takeoff())
+                                                                : std::nullopt;
+        if (above && *above > model.maxAltitudeLimit)
             return refuse(QStringLiteral("%1: %2 m above %3 is above the %4's %5 m altitude limit")
-                              .arg(where).arg(p.executeHeight)
+                              .arg(where).arg(*above)
                               .arg(options.heightMode == WpmlHeightMode::AboveGroundLevel ? QStringLiteral("ground") : QStringLiteral("take-off"))
                               .arg(model.name).arg(model.maxAltitudeLimit));
         if (options.heightMode == WpmlHeightMode::AboveGroundLevel && p.executeHeight < 0.0)
@@ -266,7 +323,12 @@ Result<Plan> planOf(const Route &route, const WpmlExportOptions &options, const 
         }
         const double arriving = k > 0 ? bearing(plan.points[size_t(k - 1)].position, p.position)
                                       : (plan.points.size() > 1 ? bearing(p.position, plan.points[1].position) : 0.0);
-        for (const WaypointAction &a : w.actions) {
+        // The first waypoint's leading gimbal tilts are set before the wayline, where the aircraft can.
+        const size_t startActions = p.segment == 0 && model.startActions ? leadingGimbalTilts(w) : 0;
+        for (size_t s = 0; s < startActions; ++s)
+            plan.startActions.push_back({ActuatorFunc::GimbalRotate, -*std::get<CameraControlAction>(w.actions[s]).tiltDeg});
+        for (size_t actionIndex = startActions; actionIndex < w.actions.size(); ++actionIndex) {
+            const WaypointAction &a = w.actions[actionIndex];
             if (const auto *wait = std::get_if<WaitAction>(&a)) {
                 if (wait->waitForOperator)
                     return refuse(QStringLiteral("%1: \"wait for the operator\" has no WPML action; use a timed wait").arg(where));
@@ -344,11 +406,13 @@ Result<Plan> planOf(const Route &route, const WpmlExportOptions &options, const 
     }
     endSeries(int(plan.points.size()) - 1);
     std::stable_sort(plan.groups.begin(), plan.groups.end(), [](const Group &a, const Group &b) { return a.start < b.start; });
+    std::vector<Action> all = plan.startActions;
     for (const Group &g : plan.groups)
-        for (const Action &a : g.actions)
-            if (a.func == ActuatorFunc::GimbalRotate && (a.value < payload.gimbalPitchMinDeg || a.value > payload.gimbalPitchMaxDeg))
-                return refuse(QStringLiteral("gimbal pitch %1° is outside the %2's range (%3° to %4°)")
-                                  .arg(a.value).arg(payload.name).arg(payload.gimbalPitchMinDeg).arg(payload.gimbalPitchMaxDeg));
+        all.insert(all.end(), g.actions.begin(), g.actions.end());
+    for (const Action &a : all)
+        if (a.func == ActuatorFunc::GimbalRotate && (a.value < payload.gimbalPitchMinDeg || a.value > payload.gimbalPitchMaxDeg))
+            return refuse(QStringLiteral("gimbal pitch %1° is outside the %2's range (%3° to %4°)")
+                              .arg(a.value).arg(payload.name).arg(payload.gimbalPitchMinDeg).arg(payload.gimbalPitchMaxDeg));
     if (plan.finish != FinishAction::AutoLand)
         plan.finish = route.settings.endAction == EndAction::ReturnHome ? FinishAction::GoHome : FinishAction::NoAction;
     plan.notices = heights.notices() + plan.notices;

@@ -49,12 +49,19 @@ struct Plan
 {
     std::vector<Point> points;
     std::vector<Group> groups;
+    std::vector<Action> startActions;  // wpml:startActionGroup: before the flight to the first point
     FinishAction finish = FinishAction::NoAction;
     QStringList notices;
 };
 
-// Builds the points and action groups of the route, refusing what WPML cannot say.
+class GeoidAccess;
+
+// Builds the points and action groups of the route, refusing what WPML cannot say. The geoid
+// converts AMSL into ellipsoidal heights for the WGS84 height mode.
 Result<Plan> planOf(const Route &route, const WpmlExportOptions &options, const DjiDroneModel &model,
-                    const DjiPayload &payload, ScanPlanCache *cache);
+                    const DjiPayload &payload, ScanPlanCache *cache, GeoidAccess *geoid);
+
+// The take-off's AMSL altitude the export uses: the option, else the route's home.
+std::optional<double> takeoffAltitude(const WpmlExportOptions &options, const Route &route);
 
 } // namespace sortie::mission::formats::wpml

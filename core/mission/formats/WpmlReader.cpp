@@ -1,273 +1,20 @@
+// Reading a WPML KMZ: its waylines into routes, their heights into AMSL or AGL, the take-off point
+// into the route's home, and a notice for every element not kept.
 #include "WpmlFormat.h"
 
 #include "DjiDroneModels.h"
+#include "Egm96Geoid.h"
 #include "NumberText.h"
+#include "WpmlDocumentReader.h"
+#include "WpmlGeoidAccess.h"
+#include "WpmlReadActions.h"
 #include "WpmlSchema.h"
 #include "ZipArchive.h"
-
-#include <QXmlStreamReader>
-
-#include <map>
 
 namespace sortie::mission::formats {
 namespace {
 
 using namespace wpml;
-
-MissionError errorAt(const QString &file, const QXmlStreamReader &x, const QString &message)
-{
-    return MissionError{message, file, int(x.lineNumber()), int(x.columnNumber()), {}};
-}
-
-struct ReadAction
-{
-    QString func;
-    std::map<QString, QString> params;
-};
-
-struct ReadGroup
-{
-    int start = 0;
-    int end = 0;
-    QString trigger;
-    std::optional<double> interval;
-    std::vector<ReadAction> actions;
-};
-
-struct ReadPoint
-{
-    std::optional<GeoPoint> position;
-    std::optional<int> index;
-    std::optional<double> height;  // executeHeight (waylines) or height (template)
-    std::optional<double> speed;
-    QString turnMode;
-    QString headingMode;
-    QString poi;
-    bool straight = true;
-    std::vector<ReadGroup> groups;
-    int line = 0;
-};
-
-struct ReadFolder
-{
-    QString heightMode;  // executeHeightMode or the template's heightMode
-    std::vector<ReadPoint> points;
-};
-
-struct ReadDocument
-{
-    QString finishAction;
-    std::optional<double> transitionalSpeed;
-    std::optional<int> droneEnum, droneSubEnum;
-    std::vector<ReadFolder> folders;
-};
-
-// Reads the parts of a WPML document Sortie uses, by local name within the WPML and KML namespaces
-// (any wpmz version). Unknown elements are skipped.
-class DocumentReader
-{
-public:
-    DocumentReader(const QByteArray &data, QString file) : x(data), m_file(std::move(file)) {}
-
-    Result<ReadDocument> read()
-    {
-        ReadDocument doc;
-        while (x.readNextStartElement()) {
-            if (name() == QLatin1String("kml") || name() == QLatin1String("Document"))
-                continue;  // descend
-            if (name() == QLatin1String("missionConfig")) {
-                readMissionConfig(doc);
-            } else if (name() == QLatin1String("Folder")) {
-                Result<ReadFolder> f = readFolder();
-                if (!f)
-                    return f.error();
-                doc.folders.push_back(std::move(f).value());
-            } else {
-                x.skipCurrentElement();
-            }
-            if (m_error)
-                return *m_error;
-        }
-        if (x.hasError())
-            return errorAt(m_file, x, QStringLiteral("malformed XML: %1").arg(x.errorString()));
-        return doc;
-    }
-
-private:
-    QStringView name() const { return x.name(); }
-    QString text() { return x.readElementText(QXmlStreamReader::SkipChildElements).trimmed(); }
-
-    std::optional<double> number(const QString &what)
-    {
-        const QString t = text();
-        const auto v = parseNumber(t.toLatin1());
-        if (!v && !m_error)
-            m_error = errorAt(m_file, x, QStringLiteral("%1 is not a number: \"%2\"").arg(what, t));
-        return v;
-    }
-
-    void readMissionConfig(ReadDocument &doc)
-    {
-        while (x.readNextStartElement()) {
-            if (name() == QLatin1String("finishAction")) {
-                doc.finishAction = text();
-            } else if (name() == QLatin1String("globalTransitionalSpeed")) {
-                doc.transitionalSpeed = number(QStringLiteral("globalTransitionalSpeed"));
-            } else if (name() == QLatin1String("droneInfo")) {
-                while (x.readNextStartElement()) {
-                    if (name() == QLatin1String("droneEnumValue"))
-                        doc.droneEnum = text().toInt();
-                    else if (name() == QLatin1String("droneSubEnumValue"))
-                        doc.droneSubEnum = text().toInt();
-                    else
-                        x.skipCurrentElement();
-                }
-            } else {
-                x.skipCurrentElement();
-            }
-        }
-    }
-
-    Result<ReadFolder> readFolder()
-    {
-        ReadFolder f;
-        while (x.readNextStartElement()) {
-            if (name() == QLatin1String("executeHeightMode")) {
-                f.heightMode = text();
-            } else if (name() == QLatin1String("waylineCoordinateSysParam")) {
-                while (x.readNextStartElement()) {
-                    if (name() == QLatin1String("heightMode"))
-                        f.heightMode = text();
-                    else
-                        x.skipCurrentElement();
-                }
-            } else if (name() == QLatin1String("Placemark")) {
-                ReadPoint p = readPlacemark();
-                if (m_error)
-                    return *m_error;
-                f.points.push_back(std::move(p));
-            } else {
-                x.skipCurrentElement();
-            }
-            if (m_error)
-                return *m_error;
-        }
-        return f;
-    }
-
-    ReadPoint readPlacemark()
-    {
-        ReadPoint p;
-        p.line = int(x.lineNumber());
-        while (x.readNextStartElement()) {
-            const QStringView n = name();
-            if (n == QLatin1String("Point")) {
-                while (x.readNextStartElement()) {
-                    if (name() != QLatin1String("coordinates")) {
-                        x.skipCurrentElement();
-                        continue;
-                    }
-                    const QString t = text();
-                    const QStringList parts = t.split(QLatin1Char(','));
-                    const auto lon = parts.size() >= 2 ? parseNumber(parts[0].trimmed().toLatin1()) : std::nullopt;
-                    const auto lat = parts.size() >= 2 ? parseNumber(parts[1].trimmed().toLatin1()) : std::nullopt;
-                    const GeoPoint g{lat.value_or(1000.0), lon.value_or(1000.0)};
-                    if (!lat || !lon || !g.isValid()) {
-                        m_error = errorAt(m_file, x, QStringLiteral("coordinates \"%1\" are not longitude,latitude in degrees").arg(t));
-                        return p;
-                    }
-                    p.position = g;
-                }
-            } else if (n == QLatin1String("index")) {
-                bool ok = false;
-                p.index = text().toInt(&ok);
-                if (!ok) {
-                    m_error = errorAt(m_file, x, QStringLiteral("a waypoint index is not a whole number"));
-                    return p;
-                }
-            } else if (n == QLatin1String("executeHeight") || n == QLatin1String("height")) {
-                p.height = number(n.toString());
-            } else if (n == QLatin1String("waypointSpeed")) {
-                p.speed = number(QStringLiteral("waypointSpeed"));
-            } else if (n == QLatin1String("useStraightLine")) {
-                p.straight = text() != QLatin1String("0");
-            } else if (n == QLatin1String("waypointHeadingParam")) {
-                while (x.readNextStartElement()) {
-                    if (name() == QLatin1String("waypointHeadingMode"))
-                        p.headingMode = text();
-                    else if (name() == QLatin1String("waypointPoiPoint"))
-                        p.poi = text();
-                    else
-                        x.skipCurrentElement();
-                }
-            } else if (n == QLatin1String("waypointTurnParam")) {
-                while (x.readNextStartElement()) {
-                    if (name() == QLatin1String("waypointTurnMode"))
-                        p.turnMode = text();
-                    else
-                        x.skipCurrentElement();
-                }
-            } else if (n == QLatin1String("actionGroup")) {
-                p.groups.push_back(readGroup());
-            } else {
-                x.skipCurrentElement();
-            }
-            if (m_error)
-                return p;
-        }
-        return p;
-    }
-
-    ReadGroup readGroup()
-    {
-        ReadGroup g;
-        while (x.readNextStartElement()) {
-            const QStringView n = name();
-            if (n == QLatin1String("actionGroupStartIndex")) {
-                g.start = text().toInt();
-            } else if (n == QLatin1String("actionGroupEndIndex")) {
-                g.end = text().toInt();
-            } else if (n == QLatin1String("actionTrigger")) {
-                while (x.readNextStartElement()) {
-                    if (name() == QLatin1String("actionTriggerType"))
-                        g.trigger = text();
-                    else if (name() == QLatin1String("actionTriggerParam"))
-                        g.interval = number(QStringLiteral("actionTriggerParam"));
-                    else
-                        x.skipCurrentElement();
-                }
-            } else if (n == QLatin1String("action")) {
-                ReadAction a;
-                while (x.readNextStartElement()) {
-                    if (name() == QLatin1String("actionActuatorFunc")) {
-                        a.func = text();
-                    } else if (name() == QLatin1String("actionActuatorFuncParam")) {
-                        while (x.readNextStartElement()) {
-                            const QString key = name().toString();
-                            a.params[key] = text();
-                        }
-                    } else {
-                        x.skipCurrentElement();
-                    }
-                }
-                g.actions.push_back(std::move(a));
-            } else {
-                x.skipCurrentElement();
-            }
-        }
-        return g;
-    }
-
-    QXmlStreamReader x;
-    QString m_file;
-    std::optional<MissionError> m_error;
-};
-
-std::optional<double> paramNumber(const ReadAction &a, const char *key)
-{
-    const auto it = a.params.find(QString::fromLatin1(key));
-    return it == a.params.end() ? std::nullopt : parseNumber(it->second.toLatin1());
-}
 
 TurnType turnTypeOf(const ReadPoint &p, const QString &where, QStringList *notices)
 {
@@ -289,25 +36,60 @@ TurnType turnTypeOf(const ReadPoint &p, const QString &where, QStringList *notic
     return TurnType::StopAndTurn;
 }
 
-Result<Route> routeOf(const ReadFolder &wayline, const ReadFolder *templateFolder, const ReadDocument &doc,
-                      const QString &file, QStringList *notices)
+// A wayline's heights in Sortie's terms: the executeHeightMode's reference turned into AMSL where
+// the file says enough (the take-off point, the geoid), else AGL.
+class WaylineHeights
 {
-    if (wayline.points.empty())
-        return MissionError{QStringLiteral("a wayline has no waypoints"), file, 0, 0, {}};
-    // Heights: AMSL from an EGM96 template (same waypoints), else the wayline's own reference.
-    AltitudeType type = AltitudeType::Agl;
-    bool fromTemplate = false;
-    if (templateFolder && templateFolder->heightMode == QLatin1String("EGM96") && templateFolder->points.size() == wayline.points.size()) {
-        type = AltitudeType::Amsl;
-        fromTemplate = true;
-    } else if (wayline.heightMode == QLatin1String("relativeToStartPoint") || wayline.heightMode.isEmpty()) {
-        *notices << QStringLiteral("heights relative to take-off read as AGL: equal only over level ground");
-    } else if (wayline.heightMode == QLatin1String("WGS84")) {
-        type = AltitudeType::Amsl;
-        *notices << QStringLiteral("WGS-84 ellipsoid heights read as AMSL: they differ by the geoid undulation (tens of metres); check them before flight");
-    } else if (wayline.heightMode != QLatin1String("realTimeFollowSurface")) {
-        return MissionError{QStringLiteral("unknown executeHeightMode \"%1\"").arg(wayline.heightMode), file, 0, 0, {}};
+public:
+    WaylineHeights(QString mode, std::optional<HomePosition> home, GeoidAccess *geoid)
+        : m_mode(std::move(mode)), m_home(std::move(home)), m_geoid(geoid) {}
+
+    Result<std::pair<double, AltitudeType>> convert(const GeoPoint &p, double height, const QString &where)
+    {
+        if (m_mode == QLatin1String("WGS84")) {
+            const Result<const datum::Egm96Geoid *> geoid = m_geoid->get(where + QStringLiteral("'s WGS-84 ellipsoidal height"));
+            if (!geoid)
+                return geoid.error();
+            const auto amsl = (*geoid)->amslFromEllipsoidal(p.latitude, p.longitude, height);
+            if (!amsl)
+                return MissionError{QStringLiteral("%1: no EGM96 geoid height there").arg(where), {}, 0, 0, {}};
+            return std::pair{*amsl, AltitudeType::Amsl};
+        }
+        if (m_mode == QLatin1String("realTimeFollowSurface"))
+            return std::pair{height, AltitudeType::Agl};
+        if (m_home)
+            return std::pair{m_home->altitudeAmsl + height, AltitudeType::Amsl};  // above take-off: exact with its AMSL altitude
+        return std::pair{height, AltitudeType::Agl};
     }
+
+private:
+    QString m_mode;
+    std::optional<HomePosition> m_home;
+    GeoidAccess *m_geoid;
+};
+
+struct Wayline
+{
+    int number = 1;  // 1-based, for notices
+    bool last = true;
+    std::optional<HomePosition> home;
+};
+
+Result<Route> routeOf(const ReadFolder &wayline, const ReadFolder *templateFolder, const ReadDocument &doc, const Wayline &which,
+                      GeoidAccess *geoid, const QString &file, QStringList *notices)
+{
+    const QString prefix = QStringLiteral("wayline %1").arg(which.number);
+    if (wayline.points.empty())
+        return MissionError{QStringLiteral("%1 has no waypoints").arg(prefix), file, 0, 0, {}};
+    const bool fromTemplate = templateFolder && templateFolder->heightMode == QLatin1String("EGM96")
+                              && templateFolder->points.size() == wayline.points.size();
+    static const QStringList known = {QStringLiteral("WGS84"), QStringLiteral("relativeToStartPoint"), QStringLiteral("realTimeFollowSurface")};
+    if (!wayline.heightMode.isEmpty() && !known.contains(wayline.heightMode))
+        return MissionError{QStringLiteral("%1: unknown executeHeightMode \"%2\"").arg(prefix, wayline.heightMode), file, 0, 0, {}};
+    const bool relative = wayline.heightMode.isEmpty() || wayline.heightMode == QLatin1String("relativeToStartPoint");
+    if (relative && !fromTemplate && !which.home)
+        *notices << QStringLiteral("%1: heights relative to take-off read as AGL: equal only over level ground (the file holds no take-off point)").arg(prefix);
+    WaylineHeights heights(wayline.heightMode, which.home, geoid);
 
     Route route;
     const size_t n = wayline.points.size();
@@ -315,13 +97,14 @@ Result<Route> routeOf(const ReadFolder &wayline, const ReadFolder *templateFolde
     for (const ReadPoint &p : wayline.points) {
         const int i = p.index.value_or(int(&p - wayline.points.data()));
         if (i < 0 || size_t(i) >= n || byIndex[size_t(i)])
-            return MissionError{QStringLiteral("waypoint index %1 is out of order or repeated").arg(i), file, p.line, 0, {}};
+            return MissionError{QStringLiteral("%1: waypoint index %2 is out of order or repeated").arg(prefix).arg(i), file, p.line, 0, {}};
         byIndex[size_t(i)] = &p;
     }
     std::optional<QString> poi;
+    std::map<QString, std::vector<int>> headings;  // heading modes not kept, by waypoint
     for (size_t i = 0; i < n; ++i) {
         const ReadPoint &p = *byIndex[i];
-        const QString where = QStringLiteral("waypoint %1").arg(i + 1);
+        const QString where = QStringLiteral("%1, waypoint %2").arg(prefix).arg(i + 1);
         if (!p.position)
             return MissionError{QStringLiteral("%1 has no coordinates").arg(where), file, p.line, 0, {}};
         const ReadPoint &heightSource = fromTemplate ? templateFolder->points[i] : p;
@@ -329,8 +112,15 @@ Result<Route> routeOf(const ReadFolder &wayline, const ReadFolder *templateFolde
             return MissionError{QStringLiteral("%1 has no height").arg(where), file, heightSource.line, 0, {}};
         Waypoint w;
         w.position = *p.position;
-        w.altitude = *heightSource.height;
-        w.altitudeType = type;
+        if (fromTemplate) {
+            w.altitude = *heightSource.height;
+            w.altitudeType = AltitudeType::Amsl;
+        } else {
+            const auto h = heights.convert(w.position, *heightSource.height, where);
+            if (!h)
+                return h.error().withFile(file);
+            std::tie(w.altitude, w.altitudeType) = *h;
+        }
         // DJI's waypointSpeed leaves the point; Sortie's speed arrives at it.
         const auto arriving = i == 0 ? doc.transitionalSpeed : byIndex[i - 1]->speed;
         if (!arriving || !(*arriving > 0.0))
@@ -342,100 +132,94 @@ Result<Route> routeOf(const ReadFolder &wayline, const ReadFolder *templateFolde
             const auto lat = parts.size() == 3 ? parseNumber(parts[0].trimmed().toLatin1()) : std::nullopt;
             const auto lon = parts.size() == 3 ? parseNumber(parts[1].trimmed().toLatin1()) : std::nullopt;
             const auto h = parts.size() == 3 ? parseNumber(parts[2].trimmed().toLatin1()) : std::nullopt;
-            if (!lat || !lon || !h)
+            const GeoPoint at{lat.value_or(1000.0), lon.value_or(1000.0)};
+            if (!h || !at.isValid())
                 return MissionError{QStringLiteral("%1: point of interest \"%2\" is not latitude,longitude,height").arg(where, p.poi), file, p.line, 0, {}};
-            w.actions.push_back(PoiAction{GeoPoint{*lat, *lon}, *h, type});
+            const auto target = heights.convert(at, *h, where + QStringLiteral("'s point of interest"));
+            if (!target)
+                return target.error().withFile(file);
+            w.actions.push_back(PoiAction{at, target->first, target->second});
             poi = p.poi;
         } else if (p.headingMode != QLatin1String("towardPOI")) {
             poi.reset();
+            if (!p.headingMode.isEmpty() && p.headingMode != QLatin1String("followWayline"))
+                headings[p.headingMode].push_back(int(i + 1));
         }
         route.segments.push_back(std::move(w));
     }
+    for (const auto &[mode, points] : headings)
+        *notices << QStringLiteral("%1, %2: the heading mode \"%3\" is not kept; the aircraft faces along the route")
+                        .arg(prefix, waypointList(points), mode);
 
-    // Actions: groups fired on reaching a point become that waypoint's actions; repeated triggers
-    // become a photo series from their first point, stopped at their last.
-    for (size_t i = 0; i < n; ++i) {
-        for (const ReadGroup &g : byIndex[i]->groups) {
-            const QString where = QStringLiteral("waypoint %1").arg(i + 1);
-            auto *w = asWaypoint(route.segments[std::clamp<size_t>(size_t(std::max(g.start, 0)), 0, n - 1)]);
-            const bool repeated = g.trigger == QLatin1String("multipleDistance") || g.trigger == QLatin1String("multipleTiming");
-            for (const ReadAction &a : g.actions) {
-                if (repeated) {
-                    if (a.func != QLatin1String("takePhoto") || !g.interval || !(*g.interval > 0.0)) {
-                        *notices << QStringLiteral("%1: a repeated \"%2\" is not kept").arg(where, a.func);
-                        continue;
-                    }
-                    if (g.trigger == QLatin1String("multipleDistance"))
-                        w->actions.push_back(CameraSeriesByDistanceAction{*g.interval, 0, 0.0});
-                    else
-                        w->actions.push_back(CameraSeriesByTimeAction{*g.interval, 0, 0.0});
-                    const size_t last = std::clamp<size_t>(size_t(std::max(g.end, g.start)), 0, n - 1);
-                    // Stop it at its last point, unless the route ends there or a camera action follows.
-                    auto *endPoint = asWaypoint(route.segments[last]);
-                    const bool cameraAtEnd = [&] {
-                        for (const ReadGroup &other : byIndex[last]->groups)
-                            if (&other != &g && other.start == int(last))
-                                for (const ReadAction &oa : other.actions)
-                                    if (oa.func == QLatin1String("takePhoto") || oa.func.endsWith(QLatin1String("Record")))
-                                        return true;
-                        return false;
-                    }();
-                    if (last + 1 < n && !cameraAtEnd)
-                        endPoint->actions.push_back(CameraSeriesByDistanceAction{0.0, 0, 0.0});
-                    continue;
-                }
-                if (g.trigger != QLatin1String("reachPoint") && !g.trigger.isEmpty()) {
-                    *notices << QStringLiteral("%1: \"%2\" triggered %3 is done on reaching the point").arg(where, a.func, g.trigger);
-                }
-                if (a.func == QLatin1String("takePhoto")) {
-                    w->actions.push_back(CameraTriggerAction{TriggerState::SingleShot});
-                } else if (a.func == QLatin1String("startRecord")) {
-                    w->actions.push_back(CameraTriggerAction{TriggerState::StartRecording});
-                } else if (a.func == QLatin1String("stopRecord")) {
-                    w->actions.push_back(CameraTriggerAction{TriggerState::StopRecording});
-                } else if (a.func == QLatin1String("hover")) {
-                    const auto s = paramNumber(a, "hoverTime");
-                    if (!s)
-                        return MissionError{QStringLiteral("%1: hover without a hoverTime").arg(where), file, byIndex[i]->line, 0, {}};
-                    w->actions.push_back(WaitAction{*s, false});
-                } else if (a.func == QLatin1String("rotateYaw")) {
-                    const auto h = paramNumber(a, "aircraftHeading");
-                    if (!h)
-                        return MissionError{QStringLiteral("%1: rotateYaw without an aircraftHeading").arg(where), file, byIndex[i]->line, 0, {}};
-                    w->actions.push_back(HeadingAction{*h < 0.0 ? *h + 360.0 : *h, false});
-                } else if (a.func == QLatin1String("gimbalRotate")) {
-                    // Each angle counts where its enable flag is 1; WPML's pitch -90° is UgCS's tilt 90°.
-                    const auto enabled = [&a](const char *flag) { return paramNumber(a, flag).value_or(0) == 1; };
-                    CameraControlAction gimbal;
-                    if (enabled("gimbalPitchRotateEnable")) {
-                        if (const auto pitch = paramNumber(a, "gimbalPitchRotateAngle")) gimbal.tiltDeg = -*pitch;
-                    }
-                    if (enabled("gimbalRollRotateEnable")) gimbal.rollDeg = paramNumber(a, "gimbalRollRotateAngle");
-                    if (enabled("gimbalYawRotateEnable")) gimbal.yawDeg = paramNumber(a, "gimbalYawRotateAngle");
-                    if (gimbal == CameraControlAction{})
-                        *notices << QStringLiteral("%1: a gimbalRotate that turns nothing is not kept").arg(where);
-                    else
-                        w->actions.push_back(gimbal);
-                } else {
-                    *notices << QStringLiteral("%1: the WPML action \"%2\" has no Sortie equivalent and is not kept").arg(where, a.func);
-                }
-            }
+    const Result<void> actions = readActions(wayline, byIndex, route, prefix, file, notices);
+    if (!actions)
+        return actions.error();
+
+    // One finish action for the file: it ends the last wayline.
+    if (which.last) {
+        if (doc.finishAction == QLatin1String("goHome")) {
+            route.settings.endAction = EndAction::ReturnHome;
+        } else if (doc.finishAction == QLatin1String("autoLand")) {
+            asWaypoint(route.segments.back())->role = WaypointRole::Land;
+        } else if (doc.finishAction == QLatin1String("gotoFirstWaypoint")) {
+            *notices << QStringLiteral("%1: the route ends by flying back to its first waypoint; Sortie's route ends at its last waypoint").arg(prefix);
         }
     }
-
-    if (doc.finishAction == QLatin1String("goHome")) {
-        route.settings.endAction = EndAction::ReturnHome;
-    } else if (doc.finishAction == QLatin1String("autoLand")) {
-        asWaypoint(route.segments.back())->role = WaypointRole::Land;
-    } else if (doc.finishAction == QLatin1String("gotoFirstWaypoint")) {
-        *notices << QStringLiteral("the route ends by flying back to its first waypoint; Sortie's route ends at its last waypoint");
+    route.settings.home = which.home;
+    for (const auto &[element, points] : wayline.unknown) {
+        const std::vector<int> waypoints = [&] { std::vector<int> v; for (int p : points) if (p > 0) v.push_back(p); return v; }();
+        *notices << (waypoints.empty() ? QStringLiteral("%1: %2 is not kept").arg(prefix, element)
+                                       : QStringLiteral("%1, %2: %3 is not kept").arg(prefix, waypointList(waypoints), element));
     }
     return route;
 }
 
+// wpml:takeOffRefPoint: "latitude,longitude,height", the height ellipsoidal (WPML's template
+// reference), kept as the route's home with its AMSL altitude.
+Result<std::optional<HomePosition>> takeoffOf(const ReadDocument &doc, GeoidAccess *geoid, const QString &file)
+{
+    if (doc.takeOffRefPoint.isEmpty())
+        return std::optional<HomePosition>();
+    const QStringList parts = doc.takeOffRefPoint.split(QLatin1Char(','));
+    const auto lat = parts.size() == 3 ? parseNumber(parts[0].trimmed().toLatin1()) : std::nullopt;
+    const auto lon = parts.size() == 3 ? parseNumber(parts[1].trimmed().toLatin1()) : std::nullopt;
+    const auto h = parts.size() == 3 ? parseNumber(parts[2].trimmed().toLatin1()) : std::nullopt;
+    const GeoPoint at{lat.value_or(1000.0), lon.value_or(1000.0)};
+    if (!h || !at.isValid())
+        return MissionError{QStringLiteral("takeOffRefPoint \"%1\" is not latitude,longitude,height").arg(doc.takeOffRefPoint), file, 0, 0, {}};
+    const Result<const datum::Egm96Geoid *> g = geoid->get(QStringLiteral("the take-off point's ellipsoidal height"));
+    if (!g)
+        return g.error().withFile(file);
+    const auto amsl = (*g)->amslFromEllipsoidal(at.latitude, at.longitude, *h);
+    if (!amsl)
+        return MissionError{QStringLiteral("takeOffRefPoint: no EGM96 geoid height there"), file, 0, 0, {}};
+    return std::optional<HomePosition>(HomePosition{at, *amsl});
+}
+
+// The aircraft and payload the file declares, named when Sortie does not know them or keeps them not.
+QString aircraftOf(const ReadDocument &doc, QStringList *notices)
+{
+    if (!doc.droneEnum)
+        return {};
+    const DjiDroneModel *model = findDjiDroneModel(*doc.droneEnum, doc.droneSubEnum.value_or(0));
+    if (!model) {
+        *notices << QStringLiteral("droneEnumValue %1/%2 is not an aircraft Sortie knows: the routes name no DJI aircraft (--drone chooses one on export)")
+                        .arg(*doc.droneEnum).arg(doc.droneSubEnum.value_or(0));
+        return {};
+    }
+    if (doc.payloadEnum && (model->payloads.empty() || model->payloads.front().enumValue != *doc.payloadEnum)) {
+        const auto it = std::find_if(model->payloads.begin(), model->payloads.end(), [&](const DjiPayload &p) { return p.enumValue == *doc.payloadEnum; });
+        *notices << (it == model->payloads.end()
+                         ? QStringLiteral("payloadEnumValue %1 is not a payload Sortie knows on the %2 and is not kept").arg(*doc.payloadEnum).arg(model->name)
+                         : QStringLiteral("the payload %1 is not kept with the routes: an export writes the %2 unless --payload %3 is given")
+                               .arg(it->name, model->payloads.front().name, it->key));
+    }
+    return model->name;
+}
+
 } // namespace
 
-Result<WpmlImport> readWpml(const QByteArray &data)
+Result<WpmlImport> readWpml(const QByteArray &data, const WpmlReadOptions &options)
 {
     QByteArray waylines, templateKml;
     QString waylinesName = QStringLiteral("waylines.wpml");
@@ -470,30 +254,56 @@ Result<WpmlImport> readWpml(const QByteArray &data)
     } else {
         waylines = data;
     }
-    const Result<ReadDocument> doc = DocumentReader(waylines, waylinesName).read();
+    const QString templateName = QStringLiteral("wpmz/template.kml");
+    const Result<ReadDocument> doc = readDocument(waylines, waylinesName);
     if (!doc)
         return doc.error();
     std::optional<ReadDocument> templ;
     if (!templateKml.isEmpty()) {
-        Result<ReadDocument> t = DocumentReader(templateKml, QStringLiteral("wpmz/template.kml")).read();
+        Result<ReadDocument> t = readDocument(templateKml, templateName);
         if (!t)
             return t.error();
         templ = std::move(t).value();
     }
     if (doc->folders.empty())
         return MissionError{QStringLiteral("no wayline (Folder) in the document"), waylinesName, 0, 0, {}};
+
     WpmlImport out;
-    for (const DjiDroneModel &m : djiDroneModels())
-        if (doc->droneEnum == m.droneEnumValue && doc->droneSubEnum.value_or(0) == m.droneSubEnumValue)
-            out.droneName = m.name;
-    for (size_t f = 0; f < doc->folders.size(); ++f) {
-        const ReadFolder *tf = templ && doc->folders.size() == 1 && !templ->folders.empty() ? &templ->folders.front() : nullptr;
-        Result<Route> r = routeOf(doc->folders[f], tf, *doc, waylinesName, &out.notices);
+    GeoidAccess geoid(options.geoid);
+    // The take-off point: DJI's editors write it in the template, but take it from either.
+    const ReadDocument &takeoffDoc = doc->takeOffRefPoint.isEmpty() && templ ? *templ : *doc;
+    const Result<std::optional<HomePosition>> home = takeoffOf(takeoffDoc, &geoid, &takeoffDoc == &*doc ? waylinesName : templateName);
+    if (!home)
+        return home.error();
+    if (takeoffDoc.takeOffRefPointAglHeight && *takeoffDoc.takeOffRefPointAglHeight != 0.0)
+        out.notices << QStringLiteral("the take-off point's height above the ground (takeOffRefPointAGLHeight %1 m) is not kept")
+                           .arg(*takeoffDoc.takeOffRefPointAglHeight);
+    out.droneName = aircraftOf(*doc, &out.notices);
+    if (!doc->unknown.isEmpty())
+        out.notices << QStringLiteral("mission config: not kept: %1").arg(doc->unknown.join(QStringLiteral(", ")));
+    if (templ) {
+        // The template is DJI's editing state; Sortie reads its EGM96 heights and take-off point.
+        QStringList editing = templ->unknown;
+        for (const ReadFolder &f : templ->folders) {
+            if (!f.templateType.isEmpty() && f.templateType != QLatin1String("waypoint"))
+                editing << QStringLiteral("the %1 template's area and settings").arg(f.templateType);
+            for (const auto &entry : f.unknown)
+                editing << entry.first;
+        }
+        editing.removeDuplicates();
+        if (!editing.isEmpty())
+            out.notices << QStringLiteral("template.kml: not kept (the waylines are): %1").arg(editing.join(QStringLiteral(", ")));
+    }
+    const size_t count = doc->folders.size();
+    for (size_t f = 0; f < count; ++f) {
+        const ReadFolder *tf = templ && templ->folders.size() == count ? &templ->folders[f] : nullptr;
+        const Wayline which{int(f + 1), f + 1 == count, *home};
+        Result<Route> r = routeOf(doc->folders[f], tf, *doc, which, &geoid, waylinesName, &out.notices);
         if (!r)
             return r.error();
         Route route = std::move(r).value();
         route.settings.profile.name = out.droneName;
-        if (doc->folders.size() > 1)
+        if (count > 1)
             route.settings.name = QStringLiteral("Wayline %1").arg(f + 1);
         out.routes.push_back(std::move(route));
     }

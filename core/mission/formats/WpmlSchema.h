@@ -77,10 +77,17 @@ inline QString finishActionName(FinishAction a)
     return {};
 }
 
-// waylines.wpml's executeHeightMode: EGM96 heights are executed relative to take-off (see WpmlFormat.h).
+// waylines.wpml's executeHeightMode: EGM96 heights are executed relative to take-off, WGS-84 ones as
+// ellipsoidal heights (see WpmlFormat.h).
 inline QString executeHeightModeName(WpmlHeightMode m)
 {
-    return m == WpmlHeightMode::AboveGroundLevel ? QStringLiteral("realTimeFollowSurface") : QStringLiteral("relativeToStartPoint");
+    switch (m) {
+    case WpmlHeightMode::AboveGroundLevel: return QStringLiteral("realTimeFollowSurface");
+    case WpmlHeightMode::Wgs84: return QStringLiteral("WGS84");
+    case WpmlHeightMode::RelativeToTakeoff:
+    case WpmlHeightMode::Egm96: break;
+    }
+    return QStringLiteral("relativeToStartPoint");
 }
 
 // template.kml's heightMode.
@@ -88,7 +95,8 @@ inline QString templateHeightModeName(WpmlHeightMode m)
 {
     switch (m) {
     case WpmlHeightMode::RelativeToTakeoff: return QStringLiteral("relativeToStartPoint");
-    case WpmlHeightMode::Egm96: return QStringLiteral("EGM96");
+    case WpmlHeightMode::Egm96:
+    case WpmlHeightMode::Wgs84: return QStringLiteral("EGM96");
     case WpmlHeightMode::AboveGroundLevel: return QStringLiteral("realTimeFollowSurface");
     }
     return {};
