@@ -8,10 +8,10 @@
 
 namespace sortie::traffic {
 
-Traffic::Traffic(QSettings *storage, hci::HciClient *client, const QString &addressOverride, QObject *parent)
+Traffic::Traffic(QSettings *storage, hci::HciClient *client, const QString &addressOverride, TrafficPicture::Clock clock, QObject *parent)
     : QObject(parent)
     , m_storage(storage)
-    , m_picture(std::make_unique<TrafficPicture>())
+    , m_picture(std::make_unique<TrafficPicture>(std::move(clock)))
     , m_receiver(std::make_unique<SbsFeed>(m_picture.get()))
     , m_server(std::make_unique<HciTrafficSource>(client, m_picture.get()))
 {

@@ -33,8 +33,10 @@ public:
     static constexpr const char *kAddressSetting = "traffic/sbsAddress";
 
     // `storage` (not owned) keeps the receiver's address; `addressOverride`, when not empty, is used
-    // instead of the setting and not written to it (sortie --demo, --sbs).
-    Traffic(QSettings *storage, hci::HciClient *client, const QString &addressOverride = {}, QObject *parent = nullptr);
+    // instead of the setting and not written to it (sortie --demo, --sbs). `clock`: the picture's
+    // (tests age aircraft with their own); default the system clock.
+    Traffic(QSettings *storage, hci::HciClient *client, const QString &addressOverride = {}, TrafficPicture::Clock clock = {},
+            QObject *parent = nullptr);
     ~Traffic() override;
 
     TrafficPicture *picture() const { return m_picture.get(); }
