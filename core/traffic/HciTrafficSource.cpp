@@ -7,6 +7,7 @@
 #include "TrafficLog.h"
 #include "TrafficPicture.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 

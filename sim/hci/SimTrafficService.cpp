@@ -10,6 +10,7 @@
 #include <numbers>
 
 namespace sortie::sim {
+namespace pb = com::ugcs::ucs::proto;
 namespace {
 constexpr double kDeg = 180.0 / std::numbers::pi;
 } // namespace

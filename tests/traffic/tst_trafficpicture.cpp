@@ -8,6 +8,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include <limits>
 #include <numbers>
 
 using namespace sortie::traffic;

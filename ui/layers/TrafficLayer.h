@@ -9,6 +9,7 @@
 namespace sortie::traffic {
 class Traffic;
 }
+Q_MOC_INCLUDE("Traffic.h")
 
 namespace sortie::ui {
 
