@@ -152,6 +152,19 @@ private slots:
         QCOMPARE(feed.state(), SbsFeed::State::Connected);
     }
 
+    // --sbs-port is in the help; a value that is no port is refused, naming the option.
+    void sortieSimOption()
+    {
+        QProcess sim;
+        sim.start(QStringLiteral(SORTIE_SIM_PROGRAM), {QStringLiteral("--help")});
+        QVERIFY(sim.waitForFinished(15000));
+        QVERIFY(sim.readAllStandardOutput().contains("--sbs-port"));
+        sim.start(QStringLiteral(SORTIE_SIM_PROGRAM), {QStringLiteral("--port"), QStringLiteral("0"), QStringLiteral("--sbs-port"), QStringLiteral("70000")});
+        QVERIFY(sim.waitForFinished(15000));
+        QCOMPARE(sim.exitCode(), 2);
+        QVERIFY(sim.readAllStandardError().contains("--sbs-port: expected a port from 0 to 65535, got '70000'"));
+    }
+
     // In-process (as sortie --demo runs it): a new client gets every aircraft at once.
     void aNewClientGetsEveryAircraftAtOnce()
     {
