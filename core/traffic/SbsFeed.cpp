@@ -20,6 +20,13 @@ SbsFeed::SbsFeed(TrafficPicture *picture, QObject *parent)
     connect(&m_socket, &QTcpSocket::disconnected, this, [this] { onFailure(tr("the receiver closed the connection")); });
 }
 
+// The socket says goodbye as it is destroyed, after the members its handlers use: it is not heard.
+SbsFeed::~SbsFeed()
+{
+    m_socket.disconnect(this);
+    m_socket.abort();
+}
+
 bool SbsFeed::parseAddress(const QString &address, QString *host, quint16 *port)
 {
     const int colon = address.lastIndexOf(QLatin1Char(':'));

@@ -34,6 +34,7 @@ public:
     static constexpr int kConnectTimeoutMs = 10000;
 
     explicit SbsFeed(TrafficPicture *picture, QObject *parent = nullptr);
+    ~SbsFeed() override;
 
     // "host:port" (an IPv6 host in brackets); empty: off. False, with error() saying why, when the
     // address cannot be one; the feed is then off.

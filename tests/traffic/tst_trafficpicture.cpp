@@ -24,8 +24,11 @@ void feed(TrafficPicture &picture, const std::vector<std::string> &lines)
     sbs::SbsReader reader;
     for (const std::string &line : lines)
         reader.push(line + "\r\n");
-    while (auto r = reader.next())
+    while (auto r = reader.next()) {
+        if (const auto *error = std::get_if<sbs::SbsError>(&*r))
+            QFAIL(error->reason.c_str()); // a line of this test is wrong
         picture.report(reportFromSbs(std::get<sbs::SbsMessage>(*r)));
+    }
 }
 
 } // namespace
@@ -102,7 +105,7 @@ private slots:
         QVERIFY(picture.aircraft()[0].stale);
         QVERIFY(picture.data(picture.index(0), TrafficPicture::StaleRole).toBool());
         // Heard again: fresh.
-        feed(picture, {"MSG,8,1,1,4CA2D6,1," + kTime + ",,,,,,,,,,,0"});
+        feed(picture, {"MSG,8,1,1,4CA2D6,1," + kTime + ",,,,,,,,,,,,0"});
         QVERIFY(!picture.aircraft()[0].stale);
         m_now += TrafficPicture::kRemoveAfterMs - 1;
         picture.sweep();
