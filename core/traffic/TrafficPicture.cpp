@@ -83,9 +83,12 @@ void TrafficPicture::report(const TrafficReport &r)
         s.latitude = r.latitude;
         s.longitude = r.longitude;
     }
-    if (r.altitudeM) {
+    const bool msl = r.altitudeReference == AltitudeReference::MeanSeaLevel;
+    if (r.altitudeM && (msl || a.mslAltitudeMs == 0 || now - a.mslAltitudeMs >= kMslAltitudePreferredMs)) {
         s.altitudeM = r.altitudeM;
         s.altitudeReference = r.altitudeReference;
+        if (msl)
+            a.mslAltitudeMs = now;
     }
     take(s.groundSpeedMps, r.groundSpeedMps);
     take(s.trackDeg, r.trackDeg);

@@ -19,6 +19,7 @@ struct TrafficAircraft
     TrafficReport state;      // merged: a field stays until a later report brings a new value
     qint64 lastSeenMs = 0;    // the picture's clock when it was last heard
     qint64 firstSeenMs = 0;
+    qint64 mslAltitudeMs = 0; // when the last altitude above mean sea level came (0: never)
     bool stale = false;
 };
 
@@ -45,6 +46,7 @@ public:
     using Clock = std::function<qint64()>; // milliseconds; default: the system clock
     static constexpr qint64 kStaleAfterMs = 60000;
     static constexpr qint64 kRemoveAfterMs = 120000;
+    static constexpr qint64 kMslAltitudePreferredMs = 10000;
 
     enum Role {
         AddressRole = Qt::UserRole + 1, CallsignRole, LatitudeRole, LongitudeRole, AltitudeRole, AltitudeReferenceRole,
@@ -55,7 +57,9 @@ public:
     explicit TrafficPicture(Clock clock = {}, QObject *parent = nullptr);
 
     // Merges what a source heard now. A report whose sourceTimeMs equals the one already held (the
-    // server repeating an old entry) updates the fields but does not count as heard again.
+    // server repeating an old entry) updates the fields but does not count as heard again. An
+    // altitude above mean sea level (the server's) is kept over a pressure altitude (a receiver's)
+    // until none came for kMslAltitudePreferredMs, so two sources do not make it flip between them.
     void report(const TrafficReport &report);
     // Marks aircraft stale and removes the ones gone, at the clock's now.
     void sweep();

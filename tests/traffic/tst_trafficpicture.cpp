@@ -92,6 +92,28 @@ private slots:
         QCOMPARE(a->state.latitude.value(), 56.9);
     }
 
+    // Both sources about one aircraft: the server's MSL altitude is kept over the receiver's
+    // pressure altitude, until the server has said nothing for 10 s.
+    void mslAltitudeIsPreferred()
+    {
+        TrafficPicture picture(clock());
+        TrafficReport server;
+        server.address = 0x502C11;
+        server.source = TrafficSource::Server;
+        server.altitudeM = 250;
+        server.altitudeReference = AltitudeReference::MeanSeaLevel;
+        picture.report(server);
+        feed(picture, {"MSG,5,1,1,502C11,1," + kTime + ",,800,,,,,,,0,,0,0"});
+        QCOMPARE(picture.aircraft()[0].state.altitudeM.value(), 250.0);
+        QCOMPARE(picture.aircraft()[0].state.altitudeReference, AltitudeReference::MeanSeaLevel);
+        m_now += TrafficPicture::kMslAltitudePreferredMs;
+        feed(picture, {"MSG,5,1,1,502C11,1," + kTime + ",,800,,,,,,,0,,0,0"});
+        QCOMPARE(picture.aircraft()[0].state.altitudeM.value(), 800 * 0.3048);
+        QCOMPARE(picture.aircraft()[0].state.altitudeReference, AltitudeReference::Barometric);
+        picture.report(server);
+        QCOMPARE(picture.aircraft()[0].state.altitudeReference, AltitudeReference::MeanSeaLevel);
+    }
+
     void staleAfterAMinuteGoneAfterTwo()
     {
         TrafficPicture picture(clock());

@@ -191,9 +191,12 @@ void TrafficLayer::paint(QPainter *painter)
     p.setFont(font);
     for (const Mark &m : m_marks) {
         p.setOpacity(m.stale ? 0.4 : 1.0);
-        if (m.vectorEnd != m.at) {
+        if (m.vectorEnd != m.at && m.trackDeg) {
+            // From the chevron's tip on, so the line does not hide which way the chevron points.
+            const double track = *m.trackDeg * std::numbers::pi / 180.0;
+            const QPointF tip = m.at + QPointF(std::sin(track), -std::cos(track)) * 9.0;
             p.setPen(QPen(colour, 2, Qt::DashLine, Qt::RoundCap));
-            p.drawLine(m.at, m.vectorEnd);
+            p.drawLine(tip, m.vectorEnd);
         }
         p.save();
         p.translate(m.at);
