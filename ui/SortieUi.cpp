@@ -11,6 +11,7 @@
 #include "ReplayController.h"
 #include "RouteEndurance.h"
 #include "ServerHistoryRequest.h"
+#include "Traffic.h"
 #include "VehicleFleet.h"
 
 #include <QQmlEngine>
@@ -34,7 +35,8 @@ QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settin
             {QStringLiteral("serverHistory"), QVariant::fromValue<QObject *>(&graph.serverHistory())},
             {QStringLiteral("recordingSettings"), QVariant::fromValue<QObject *>(&graph.recordingSettings())},
             {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(graph.recovery())},
-            {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())}};
+            {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())},
+            {QStringLiteral("traffic"), QVariant::fromValue<QObject *>(&graph.traffic())}};
 }
 
 } // namespace sortie::ui

@@ -1,6 +1,8 @@
 // sortie-sim: the simulated UgCS server as a program. Wiring only: options -> world -> servers.
 #include "HciServer.h"
 #include "HciSimOptions.h"
+#include "SimSbsOptions.h"
+#include "SimSbsServer.h"
 #include "SimVciFleet.h"
 #include "SimWorld.h"
 
@@ -45,10 +47,12 @@ int main(int argc, char **argv)
     hci.addTo(parser);
     sortie::sim::SimVciFleetOptions vci;
     vci.addTo(parser);
+    sortie::sim::SimSbsOptions sbs;
+    sbs.addTo(parser);
     parser.process(app);
 
     QString error;
-    if (!hci.read(parser, &error) || !vci.read(parser, &error)) {
+    if (!hci.read(parser, &error) || !vci.read(parser, &error) || !sbs.read(parser, &error)) {
         std::fprintf(stderr, "sortie-sim: %s\n", qPrintable(error));
         return 2;
     }
@@ -63,6 +67,14 @@ int main(int argc, char **argv)
     }
     std::printf("sortie-sim: HCI on %s:%u, %d vehicles, telemetry %.0f Hz\n", qPrintable(hci.address.toString()),
                 unsigned(server.port()), int(world.vehicles().size()), hci.world.telemetryRateHz);
+    sortie::sim::SimSbsServer sbsServer(world.traffic());
+    if (sbs.port) {
+        if (!sbsServer.listen(hci.address, *sbs.port)) {
+            std::fprintf(stderr, "sortie-sim: --sbs-port: %s\n", qPrintable(sbsServer.errorString()));
+            return 1;
+        }
+        std::printf("sortie-sim: SBS-1 traffic on %s:%u\n", qPrintable(hci.address.toString()), unsigned(sbsServer.port()));
+    }
     vci.vehicle.terrain = &world.terrain();  // one ground for every simulated vehicle
     vci.vehicle.energy = hci.world.energy;   // and one energy profile
     sortie::sim::SimVciFleet fleet(vci);

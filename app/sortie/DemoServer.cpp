@@ -1,6 +1,7 @@
 #include "DemoServer.h"
 
 #include "HciServer.h"
+#include "SimSbsServer.h"
 #include "SimVciFleet.h"
 #include "SimVciListener.h"
 #include "SimWorld.h"
@@ -20,6 +21,11 @@ bool DemoServer::start(QString *error)
         *error = m_server->errorString();
         return false;
     }
+    m_sbs = std::make_unique<sim::SimSbsServer>(m_world->traffic());
+    if (!m_sbs->listen(QHostAddress::LocalHost, 0)) {
+        *error = m_sbs->errorString();
+        return false;
+    }
     sim::SimVciFleetOptions vci;
     vci.count = 1;
     vci.firstPort = 0; // any free port
@@ -36,6 +42,11 @@ QStringList DemoServer::vciAddresses() const
             addresses.append(QStringLiteral("tcp://127.0.0.1:%1").arg(listener->port()));
     }
     return addresses;
+}
+
+QString DemoServer::sbsAddress() const
+{
+    return m_sbs ? QStringLiteral("127.0.0.1:%1").arg(m_sbs->port()) : QString();
 }
 
 QString DemoServer::address() const

@@ -7,6 +7,7 @@
 
 namespace sortie::sim {
 class HciServer;
+class SimSbsServer;
 class SimVciFleet;
 class SimWorld;
 } // namespace sortie::sim
@@ -14,7 +15,7 @@ class SimWorld;
 namespace sortie::app {
 
 // --demo: the simulated UgCS server (with its vehicles) and a simulated VCI vehicle running inside
-// the client on free loopback ports, so the first launch has something real to talk to.
+// the client on free loopback ports (and its manned traffic as an SBS-1 feed), so the first launch has something real to talk to.
 class DemoServer
 {
 public:
@@ -24,6 +25,7 @@ public:
     bool start(QString *error);
     QString address() const;       // "127.0.0.1:<port>"
     QStringList vciAddresses() const; // "tcp://127.0.0.1:<port>", one per VCI vehicle
+    QString sbsAddress() const;       // "127.0.0.1:<port>": the simulated traffic as an SBS-1 feed
     static QString user() { return QStringLiteral("admin"); }
     static QString password() { return QStringLiteral("admin"); }
 
@@ -31,6 +33,7 @@ private:
     std::unique_ptr<sim::SimWorld> m_world;
     std::unique_ptr<sim::HciServer> m_server;
     std::unique_ptr<sim::SimVciFleet> m_vci;
+    std::unique_ptr<sim::SimSbsServer> m_sbs;
 };
 
 } // namespace sortie::app

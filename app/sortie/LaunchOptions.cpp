@@ -1,5 +1,7 @@
 #include "LaunchOptions.h"
 
+#include "SbsFeed.h"
+
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QDir>
@@ -81,7 +83,10 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     const QCommandLineOption dem(QStringLiteral("dem"),
                                  QCoreApplication::translate("sortie", "SRTM .hgt terrain tiles (a tile or a folder), asked before the server (also the setting terrain/demFolder)."),
                                  QStringLiteral("path"));
-    parser.addOptions({demo, server, user, vci, autosave, reportStartup, dem});
+    const QCommandLineOption sbs(QStringLiteral("sbs"),
+                                 QCoreApplication::translate("sortie", "An ADS-B receiver's SBS-1 feed for manned traffic, as dump1090 serves it (port 30003); also the setting traffic/sbsAddress."),
+                                 QStringLiteral("host:port"));
+    parser.addOptions({demo, server, user, vci, autosave, reportStartup, dem, sbs});
 
     if (!parser.parse(arguments))
         return parser.errorText();
@@ -112,6 +117,13 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     options.user = parser.value(user);
     options.autosaveDir = parser.value(autosave);
     options.demPath = parser.value(dem);
+    if (parser.isSet(sbs)) {
+        QString host;
+        quint16 port = 0;
+        if (!traffic::SbsFeed::parseAddress(parser.value(sbs), &host, &port))
+            return QStringLiteral("--sbs: '%1' is not host:port").arg(parser.value(sbs));
+        options.sbsAddress = parser.value(sbs).trimmed();
+    }
     if (parser.isSet(vci)) {
         auto parsed = VciEndpoint::parse(parser.value(vci));
         if (auto *error = std::get_if<QString>(&parsed))
@@ -140,6 +152,7 @@ client::ClientGraph::Options LaunchOptions::graphOptions() const
 {
     client::ClientGraph::Options graph;
     graph.demFolder = demPath;
+    graph.sbsAddress = sbsAddress;
     graph.autosaveDirectory = autosaveDir.isEmpty() ? dataFolder("SORTIE_AUTOSAVE_DIR", QStringLiteral("autosave"), demo) : autosaveDir;
     graph.flightLogDirectory = dataFolder("SORTIE_FLIGHTLOG_DIR", QStringLiteral("flightlogs"), demo);
     return graph;

@@ -7,8 +7,10 @@
 #include "HciSession.h"
 #include "LaunchOptions.h"
 #include "PasswordVault.h"
+#include "SbsFeed.h"
 #include "SortieUi.h"
 #include "StartupProbe.h"
+#include "Traffic.h"
 #include "VehicleFleet.h"
 #include "WindowGeometry.h"
 
@@ -113,6 +115,7 @@ int main(int argc, char *argv[])
         graph.connection().connectToServer(demo.address(), sortie::app::DemoServer::user(), sortie::app::DemoServer::password());
         for (const QString &vehicle : demo.vciAddresses())
             graph.fleet()->addVciVehicle(vehicle);
+        graph.traffic().receiver()->setAddress(demo.sbsAddress()); // the demo's traffic, not remembered
     }
     if (options.vci)
         graph.fleet()->addVciVehicle(options.vci->toString());

@@ -8,6 +8,7 @@
 #include "SimSessionService.h"
 #include "SimExportService.h"
 #include "SimTerrainService.h"
+#include "SimTrafficService.h"
 #include "SimVehicleService.h"
 #include "SimWorld.h"
 
@@ -35,6 +36,7 @@ HciServer::HciServer(SimWorld &world, QObject *parent)
     m_exportService = std::make_unique<SimExportService>(services);
     m_exportService->install(m_dispatcher);
     SimTerrainService::install(m_dispatcher, m_world);
+    SimTrafficService::install(m_dispatcher, m_world.traffic());
 
     connect(&m_sessions, &SimSessionTable::sessionEnded, this, [this](int clientId) { m_world.locks().releaseAll(clientId); });
     connect(&m_server, &QTcpServer::newConnection, this, &HciServer::onNewConnection);

@@ -4,6 +4,7 @@
 #include "SimObjectStore.h"
 #include "SimPower.h"
 #include "SimRoutePasses.h"
+#include "SimTraffic.h"
 #include "SimUsers.h"
 
 #include <QElapsedTimer>
@@ -62,6 +63,8 @@ public:
     double groundElevation() const { return m_config.groundElevation; }
     // The ground everywhere (GetElevationProfile, route processing, telemetry's AGL).
     const SimTerrain &terrain() const { return *m_terrain; }
+    // The manned aircraft flying through the demo area (ADS-B: the HCI list, sortie-sim --sbs-port).
+    const SimTraffic &traffic() const { return m_traffic; }
     static qint64 now();
 
     const std::vector<std::unique_ptr<SimVehicle>> &vehicles() const { return m_vehicles; }
@@ -86,6 +89,7 @@ private:
     SimLockTable m_locks;
     SimRoutePasses m_routePasses{m_store};
     std::unique_ptr<SimTerrain> m_terrain;
+    SimTraffic m_traffic;
     std::vector<std::unique_ptr<SimVehicle>> m_vehicles;
     QTimer m_ticker;
     QTimer m_saveTimer;

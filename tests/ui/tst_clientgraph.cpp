@@ -8,6 +8,7 @@
 #include "LaunchOptions.h"
 #include "QuickScene.h"
 #include "ReplayController.h"
+#include "Traffic.h"
 
 #include <QSettings>
 #include <QTemporaryDir>
@@ -47,7 +48,7 @@ private slots:
         for (const char *line : {"route validation: with the terrain rule", "height conversions: through the ground",
                                  "vehicles: fleet planning over the ground", "upload chooser: the fleet", "autosave: on",
                                  "recovery: on", "flight recorder: recording", "fleet recording: on",
-                                 "server history: from the fleet"})
+                                 "server history: from the fleet", "traffic: the server's ADS-B list; receiver off"})
             QVERIFY2(program.contains(QString::fromLatin1(line)), qPrintable(program.join(QLatin1Char('\n'))));
 
         test::ClientWindow fixture;
@@ -64,7 +65,7 @@ private slots:
         const std::pair<const char *, QObject *> expected[] = {
             {"connection", &graph.connection()}, {"missions", &graph.missions()}, {"fleet", graph.fleet()},
             {"elevation", graph.elevation()}, {"replay", &graph.replay()},
-            {"recovery", graph.recovery()}, {"endurance", &graph.endurance()}};
+            {"recovery", graph.recovery()}, {"endurance", &graph.endurance()}, {"traffic", &graph.traffic()}};
         for (const auto &[name, object] : expected) {
             QVERIFY2(object, name);
             QCOMPARE(window->property(name).value<QObject *>(), object);

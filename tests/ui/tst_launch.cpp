@@ -155,6 +155,11 @@ private slots:
         QVERIFY(failure({QStringLiteral("--vci"), QStringLiteral("ftp://x:1")}).startsWith(QStringLiteral("--vci:")));
         QVERIFY(failure({QStringLiteral("--demo"), QStringLiteral("--server"), QStringLiteral("h:1")}).contains(QStringLiteral("leave out --server")));
         QVERIFY(failure({QStringLiteral("stray")}).contains(QStringLiteral("unexpected argument")));
+        // An ADS-B receiver's feed: host:port, handed to the client graph.
+        options = parsed({QStringLiteral("--sbs"), QStringLiteral("192.168.1.20:30003")});
+        QCOMPARE(options.sbsAddress, QStringLiteral("192.168.1.20:30003"));
+        QCOMPARE(options.graphOptions().sbsAddress, QStringLiteral("192.168.1.20:30003"));
+        QCOMPARE(failure({QStringLiteral("--sbs"), QStringLiteral("receiver")}), QStringLiteral("--sbs: 'receiver' is not host:port"));
     }
 
     void settingsPersist()

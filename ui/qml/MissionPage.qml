@@ -28,6 +28,7 @@ Page {
     property bool dark: false
     required property ElevationService elevation    // the client's ElevationService, for the terrain profile
     required property RouteEndurance endurance      // will the battery last: figures, changes, point of no return
+    property Traffic traffic: null                  // manned traffic around (ADS-B)
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
     // `var`: the editor's tools are plain JS objects (name, algorithm, figure, minimumPoints).
@@ -64,6 +65,14 @@ Page {
             tileUrlTemplate: page.tileUrlTemplate
             mbtilesFile: page.mbtilesFile
             dark: page.dark
+            TrafficLayer {
+                objectName: "missionTrafficLayer"
+                anchors.fill: parent
+                map: pane.map
+                traffic: page.traffic
+                imperial: page.units.imperial
+                enabled: false // clicks are for the route
+            }
             VehicleLayer {
                 // Where the vehicles are, for planning near them; the map opens framed on them
                 // until a route is opened (which frames the route) or the operator moves the map.

@@ -19,6 +19,7 @@ Page {
     required property ComparisonController comparison
     // The energy profile and wind the in-flight advice prices with (the mission page chooses them).
     required property RouteEndurance endurance
+    property Traffic traffic: null          // manned traffic around (ADS-B)
     readonly property bool replaying: replay.active
     property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
     property list<string> plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
@@ -141,6 +142,14 @@ Page {
                     map: pane.map
                     visible: page.replaying
                     model: page.comparison.track
+                }
+                TrafficLayer {
+                    objectName: "trafficLayer"
+                    anchors.fill: parent
+                    map: pane.map
+                    traffic: page.traffic
+                    imperial: page.units.imperial
+                    enabled: false // clicks are for the vehicles
                 }
                 VehicleLayer {
                     id: vehicleLayer

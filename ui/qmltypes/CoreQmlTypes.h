@@ -7,6 +7,7 @@
 #include "CommandLog.h"
 #include "CommandPolicy.h"
 #include "ElevationService.h"
+#include "HciTrafficSource.h"
 #include "MissionUploader.h"
 #include "RoutePreparation.h"
 #include "RouteEndurance.h"
@@ -18,7 +19,10 @@
 #include "RouteDocument.h"
 #include "RouteEditor.h"
 #include "RouteModel.h"
+#include "SbsFeed.h"
 #include "ServerObjectListModel.h"
+#include "Traffic.h"
+#include "TrafficPicture.h"
 #include "ValidationIssueModel.h"
 #include "Vehicle.h"
 #include "VehicleFleet.h"
@@ -147,6 +151,36 @@ struct EnduranceAdvisoryForeign
     Q_GADGET
     QML_FOREIGN(sortie::endurance::EnduranceAdvisory)
     QML_NAMED_ELEMENT(EnduranceAdvisory)
+};
+
+// Manned traffic (core/traffic): the picture and its two sources, made by the client graph.
+struct TrafficForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::traffic::Traffic)
+    QML_NAMED_ELEMENT(Traffic)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct TrafficPictureForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::traffic::TrafficPicture)
+    QML_NAMED_ELEMENT(TrafficPicture)
+    QML_UNCREATABLE("made by Traffic")
+};
+struct SbsFeedForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::traffic::SbsFeed)
+    QML_NAMED_ELEMENT(SbsFeed)
+    QML_UNCREATABLE("made by Traffic")
+};
+struct HciTrafficSourceForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::traffic::HciTrafficSource)
+    QML_NAMED_ELEMENT(HciTrafficSource)
+    QML_UNCREATABLE("made by Traffic")
 };
 
 struct RoutePreparationForeign

@@ -18,7 +18,9 @@
 #include "RouteEditor.h"
 #include "RouteEndurance.h"
 #include "RouteModel.h"
+#include "SbsFeed.h"
 #include "ServerHistoryRequest.h"
+#include "Traffic.h"
 #include "VehicleFleet.h"
 
 #include <QLoggingCategory>
@@ -66,6 +68,9 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
         m_missions->preparation()->setFleet(m_fleet.get()); // Process and Upload choose from every vehicle of the fleet
     }
 
+    // Manned traffic: the receiver's feed (the option, else the setting) and the server's list.
+    m_traffic = std::make_unique<traffic::Traffic>(storage, m_hciClient.get(), options.sbsAddress);
+
     if (!options.autosaveDirectory.isEmpty()) {
         // Recovery looks first, so the autosave of this run takes a slot of its own.
         m_recovery = std::make_unique<AutosaveRecovery>(document, options.autosaveDirectory);
@@ -109,6 +114,7 @@ ClientGraph::~ClientGraph()
     m_recorder.reset();
     m_autosave.reset();
     m_recovery.reset();
+    m_traffic.reset();
     m_fleet.reset();
     m_endurance.reset();
     m_missions.reset();
@@ -139,6 +145,7 @@ QStringList ClientGraph::wiring() const
                                                 : m_fleet->elevation() == ground ? QStringLiteral("fleet planning over the ground")
                                                                                  : QStringLiteral("fleet without ground"))
           << QStringLiteral("upload chooser: %1").arg(yesNo(m_fleet && m_missions->preparation()->fleet() == m_fleet.get(), "the fleet", "none"))
+          << QStringLiteral("traffic: the server's ADS-B list; receiver %1").arg(m_traffic->receiverAddress().isEmpty() ? QStringLiteral("off") : m_traffic->receiverAddress())
           << QStringLiteral("autosave: %1").arg(yesNo(m_autosave && m_autosave->isActive(), "on", "off"))
           << QStringLiteral("recovery: %1").arg(yesNo(m_recovery != nullptr, "on", "off"))
           << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))

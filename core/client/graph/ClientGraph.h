@@ -31,6 +31,10 @@ namespace sortie::endurance {
 class RouteEndurance;
 } // namespace sortie::endurance
 
+namespace sortie::traffic {
+class Traffic;
+} // namespace sortie::traffic
+
 namespace sortie::client {
 
 class AutosaveRecovery;
@@ -41,7 +45,7 @@ class VehicleFleet;
 
 // The client's object graph, built and wired in one place: the HCI session and the controllers the
 // views bind to, the terrain sources and what uses them (the fleet's VCI planning, the route's
-// validation, the editor's height conversions), the open route's endurance (its rule), autosave and recovery, the flight recorder and
+// validation, the editor's height conversions), the open route's endurance (its rule), manned traffic, autosave and recovery, the flight recorder and
 // replay. The program (app/sortie) and every test fixture build it, so a test runs the program's own
 // wiring; a fixture changes what it must (folders, no vehicles) through Options, never by hand.
 class ClientGraph
@@ -53,6 +57,7 @@ public:
         QString autosaveDirectory;  // empty: no autosave and no recovery
         QString flightLogDirectory; // empty: the recorder exists (for its settings) but records nothing
         bool vehicles = true;       // false: no fleet (a fault test of the connection alone)
+        QString sbsAddress;         // an ADS-B receiver's SBS-1 feed; empty: the setting traffic/sbsAddress
     };
 
     // `storage` (not owned, required) holds the operator's settings: terrain folder and source order,
@@ -74,6 +79,8 @@ public:
     flightlog::FlightRecorder &recorder() { return *m_recorder; }
     flightlog::RecordingSettings &recordingSettings() { return *m_recordingSettings; }
     endurance::RouteEndurance &endurance() { return *m_endurance; }
+    // Manned traffic: the picture, the receiver's feed and the server's ADS-B list.
+    traffic::Traffic &traffic() { return *m_traffic; }
     flightlog::ReplayController &replay() { return *m_replay; }
     flightlog::ComparisonController &comparison() { return *m_comparison; }
     flightlog::ServerHistoryRequest &serverHistory() { return *m_serverHistory; }
@@ -93,6 +100,7 @@ private:
     std::unique_ptr<terrain::ElevationSetup> m_elevation;
     std::unique_ptr<endurance::RouteEndurance> m_endurance;
     std::unique_ptr<VehicleFleet> m_fleet;
+    std::unique_ptr<traffic::Traffic> m_traffic;
     std::unique_ptr<AutosaveRecovery> m_recovery;
     std::unique_ptr<RouteAutosave> m_autosave;
     std::unique_ptr<flightlog::FlightRecorder> m_recorder;

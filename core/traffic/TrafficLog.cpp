@@ -1,0 +1,3 @@
+#include "TrafficLog.h"
+
+Q_LOGGING_CATEGORY(lcTraffic, "sortie.traffic")
