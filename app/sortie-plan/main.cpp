@@ -1,5 +1,6 @@
 // sortie-plan: convert mission files between formats, print statistics and validation, and
 // generate area scans, for scripts and batch work. See docs/missions.md.
+#include "ConflictsCommand.h"
 #include "PlanCommands.h"
 #include "ProfileCommand.h"
 
@@ -23,6 +24,10 @@ const char *const kUsage =
     "  profile FILE --dem PATH [--step METERS] [--safe-distance METERS] [--json]\n"
     "      Ground, altitude and clearance along each route from SRTM .hgt tiles (PATH: a tile or a folder).\n"
     "      Exit 2 when a leg flies closer to the ground than the safe distance.\n"
+    "  conflicts ROUTE_FILE ROUTE_FILE [ROUTE_FILE ...] [--start SECONDS,SECONDS,...] [--speed M/S] [--separation H,V] [--json]\n"
+    "      Fly the routes (one per file) on one clock, each from its --start (default 0), in straight legs at\n"
+    "      their speeds (or --speed), and report where two come closer than H across and V in height\n"
+    "      (default 20,15 m). Exit 2 when there is a conflict.\n"
     "  scan POLYGON.kml OUT [--altitude M | --gsd CM] [--front PCT] [--side PCT] [--angle DEG]\n"
     "       [--turnaround M] [--speed M/S] [--amsl] [--camera NAME,SENSOR_W_MM,SENSOR_H_MM,FOCAL_MM,IMAGE_W_PX,IMAGE_H_PX]\n"
     "       [--json] [--force]\n"
@@ -51,6 +56,8 @@ int main(int argc, char **argv)
         return sortie::plan::runStats(args, io);
     if (command == QLatin1String("profile"))
         return sortie::plan::runProfile(args, io);
+    if (command == QLatin1String("conflicts"))
+        return sortie::plan::runConflicts(args, io);
     if (command == QLatin1String("scan"))
         return sortie::plan::runScan(args, io);
     err << "sortie-plan: unknown command \"" << command << "\"\n\n" << kUsage;
