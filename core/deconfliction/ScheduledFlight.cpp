@@ -91,6 +91,21 @@ LocalState MotionPiece::stateAt(double t) const
     return {at.east + at.vEast * dt, at.north + at.vNorth * dt, at.up + at.vUp * dt, at.vEast, at.vNorth, at.vUp};
 }
 
+std::optional<double> flownAlongLeg(const mission::RouteTimeline &timeline, int legIndex, const mission::GeoPoint &position)
+{
+    if (legIndex < 0 || legIndex >= int(timeline.legs().size()))
+        return std::nullopt;
+    const TimedLeg &l = timeline.legs()[size_t(legIndex)];
+    double along = 0.0;
+    if (l.distance > 0) {
+        const mission::LocalTangentPlane plane(l.from);
+        const mission::PlanePoint to = plane.project(l.to), at = plane.project(position);
+        const double length2 = to.x * to.x + to.y * to.y;
+        along = length2 > 0 ? std::clamp((at.x * to.x + at.y * to.y) / length2, 0.0, 1.0) : 0.0;
+    }
+    return l.start + l.takeoffSeconds + l.departHoldSeconds + along * l.moveSeconds;
+}
+
 std::vector<MotionPiece> motionPieces(const ScheduledFlight &flight, int flightIndex, const mission::LocalTangentPlane &plane)
 {
     std::vector<MotionPiece> pieces;

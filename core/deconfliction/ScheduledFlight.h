@@ -38,6 +38,11 @@ struct ScheduledFlight
     double clockAt(double timelineSeconds) const { return start + timelineSeconds - flown; }
 };
 
+// For a flying vehicle on leg `legIndex` (an index into timeline.legs()) at `position`: the seconds
+// of the timeline it has flown, taking the point of the leg's move nearest to it (clamped to the
+// leg's ends) and the time model's even progress over the move. nullopt for no such leg.
+std::optional<double> flownAlongLeg(const mission::RouteTimeline &timeline, int legIndex, const mission::GeoPoint &position);
+
 // A stretch of one flight in which it moves in a straight line at constant velocity (or holds
 // still), in local metres: a take-off climb, a hold, a move (or the part of it while the height
 // changes, and the level rest), a landing descent.

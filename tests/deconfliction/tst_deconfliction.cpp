@@ -138,6 +138,11 @@ private slots:
 
         ScheduledFlight flying = flight(route);
         flying.flown = 60;
+        // Where the caller gets `flown` from: reported at (−400, 30) on leg 2 (index 1), the nearest
+        // point of the leg is (−400, 0), 100 m of its 1500 m: 50 s + 100 / 1500 × 150 s = 60 s.
+        QNEAR(flownAlongLeg(flying.timeline, 1, samplePlane().unproject({-400, 30})).value(), 60, 1e-3);
+        QNEAR(flownAlongLeg(flying.timeline, 1, samplePlane().unproject({-900, 0})).value(), 50, 1e-3);  // before the leg: its start
+        QVERIFY(!flownAlongLeg(flying.timeline, 2, {}));
         const ConflictReport r = findConflicts({flying, other});
         QCOMPARE(r.conflicts.size(), size_t(1));
         const Conflict &c = r.conflicts.front();
