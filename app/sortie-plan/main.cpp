@@ -1,5 +1,6 @@
 // sortie-plan: convert mission files between formats, print statistics and validation, and
-// generate area scans, for scripts and batch work. See docs/missions.md.
+// generate area scans, and find where routes flown together come too close, for scripts and batch
+// work. See docs/missions.md and docs/deconfliction.md.
 #include "ConflictsCommand.h"
 #include "PlanCommands.h"
 #include "ProfileCommand.h"
