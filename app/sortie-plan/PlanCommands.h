@@ -6,7 +6,8 @@
 namespace sortie::plan {
 
 // Exit codes: 0 done; 1 bad usage or a file that cannot be read or written; 2 the route has
-// validation errors (stats) or the save was refused because of them (convert, scan).
+// validation errors (stats) or the save was refused because of them (convert, scan), or two routes
+// come too close (conflicts).
 enum Exit { Ok = 0, Failure = 1, ValidationErrors = 2 };
 
 struct Streams

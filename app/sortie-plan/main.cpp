@@ -1,6 +1,8 @@
 // sortie-plan: convert mission files between formats, print statistics and validation, and
-// generate area scans, for scripts and batch work. See docs/missions.md.
+// generate area scans, check routes against airspace, and find where routes flown together come too
+// close, for scripts and batch work. See docs/missions.md, docs/airspace.md and docs/deconfliction.md.
 #include "AirspaceCommand.h"
+#include "ConflictsCommand.h"
 #include "PlanCommands.h"
 #include "ProfileCommand.h"
 
@@ -30,6 +32,10 @@ const char *const kUsage =
     "      Check every flown leg in 3D against no-fly zones and geofences (ZONES_FILE: .plan geofence,\n"
     "      .geojson/.json, .kml). Exit 2 when a leg enters an exclusion zone or leaves the inclusion zones;\n"
     "      a leg within the buffer (default 20 m) of a zone is a warning.\n"
+    "  conflicts ROUTE_FILE ROUTE_FILE [ROUTE_FILE ...] [--start SECONDS,SECONDS,...] [--speed M/S] [--separation H,V] [--json]\n"
+    "      Fly the routes (one per file) on one clock, each from its --start (default 0), in straight legs at\n"
+    "      their speeds (or --speed), and report where two come closer than H across and V in height\n"
+    "      (default 20,15 m). Exit 2 when there is a conflict.\n"
     "  scan POLYGON.kml OUT [--altitude M | --gsd CM] [--front PCT] [--side PCT] [--angle DEG]\n"
     "       [--turnaround M] [--speed M/S] [--amsl] [--camera NAME,SENSOR_W_MM,SENSOR_H_MM,FOCAL_MM,IMAGE_W_PX,IMAGE_H_PX]\n"
     "       [--json] [--force]\n"
@@ -60,6 +66,8 @@ int main(int argc, char **argv)
         return sortie::plan::runProfile(args, io);
     if (command == QLatin1String("airspace"))
         return sortie::plan::runAirspace(args, io);
+    if (command == QLatin1String("conflicts"))
+        return sortie::plan::runConflicts(args, io);
     if (command == QLatin1String("scan"))
         return sortie::plan::runScan(args, io);
     err << "sortie-plan: unknown command \"" << command << "\"\n\n" << kUsage;
