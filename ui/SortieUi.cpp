@@ -6,6 +6,7 @@
 #include "ComparisonController.h"
 #include "ConnectionController.h"
 #include "ElevationService.h"
+#include "FleetRoutes.h"
 #include "MissionController.h"
 #include "RecordingSettings.h"
 #include "ReplayController.h"
@@ -34,7 +35,8 @@ QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settin
             {QStringLiteral("serverHistory"), QVariant::fromValue<QObject *>(&graph.serverHistory())},
             {QStringLiteral("recordingSettings"), QVariant::fromValue<QObject *>(&graph.recordingSettings())},
             {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(graph.recovery())},
-            {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())}};
+            {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())},
+            {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())}};
 }
 
 } // namespace sortie::ui

@@ -21,6 +21,7 @@ ApplicationWindow {
     required property RecordingSettings recordingSettings  // the flight logs' folder and limits (Logs…)
     required property AutosaveRecovery recovery     // edits a previous run left unsaved; may be null
     required property RouteEndurance endurance      // will the battery last: the open route's endurance
+    required property FleetRoutes fleetRoutes       // every route given to a vehicle: drawn on both maps, listed beside them
     property string connectionState: connection.state
     property string connectionDetail: connection.statusDetail
 
@@ -122,6 +123,7 @@ ApplicationWindow {
             vehicleModel: window.fleet
             elevation: window.elevation
             endurance: window.endurance
+            fleetRoutes: window.fleetRoutes
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource
@@ -133,6 +135,7 @@ ApplicationWindow {
             objectName: "telemetryPage"
             fleet: window.fleet
             endurance: window.endurance
+            fleetRoutes: window.fleetRoutes
             replay: window.replay
             serverHistory: window.serverHistory
             comparison: window.comparison

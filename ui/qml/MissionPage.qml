@@ -28,6 +28,7 @@ Page {
     property bool dark: false
     required property ElevationService elevation    // the client's ElevationService, for the terrain profile
     required property RouteEndurance endurance      // will the battery last: figures, changes, point of no return
+    required property FleetRoutes fleetRoutes       // every route given to a vehicle: on the map and in a list beside it
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
     // `var`: the editor's tools are plain JS objects (name, algorithm, figure, minimumPoints).
@@ -64,6 +65,14 @@ Page {
             tileUrlTemplate: page.tileUrlTemplate
             mbtilesFile: page.mbtilesFile
             dark: page.dark
+            FleetRoutesLayer {
+                // The other vehicles' routes, in their colours; the open one is the editor's (hideOpen).
+                objectName: "missionFleetRoutesLayer"
+                anchors.fill: parent
+                map: pane.map
+                model: page.fleetRoutes
+                hideOpen: true
+            }
             VehicleLayer {
                 // Where the vehicles are, for planning near them; the map opens framed on them
                 // until a route is opened (which frames the route) or the operator moves the map.
@@ -199,6 +208,14 @@ Page {
                                                                 longitude: page.endurance.pointOfNoReturn.longitude,
                                                                 label: qsTr("no return"), color: "#e53935"}] : [])
         }
+        }
+        FleetRoutesList {
+            objectName: "missionFleetRoutes"
+            visible: page.fleetRoutes.count > 0
+            SplitView.preferredWidth: 220
+            SplitView.minimumWidth: 160
+            routes: page.fleetRoutes
+            units: page.units
         }
         RoutePanel {
             id: panel

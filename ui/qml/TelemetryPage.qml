@@ -19,6 +19,8 @@ Page {
     required property ComparisonController comparison
     // The energy profile and wind the in-flight advice prices with (the mission page chooses them).
     required property RouteEndurance endurance
+    // Every route given to a vehicle: drawn under the flight plans, listed under the vehicles.
+    required property FleetRoutes fleetRoutes
     readonly property bool replaying: replay.active
     property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
     property list<string> plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
@@ -98,6 +100,15 @@ Page {
                     wrapMode: Text.Wrap
                     Layout.fillWidth: true
                 }
+                FleetRoutesList {
+                    objectName: "flyFleetRoutes"
+                    visible: page.fleetRoutes.count > 0 && !page.replaying
+                    Layout.fillWidth: true
+                    Layout.maximumHeight: parent.height * 0.45
+                    routes: page.fleetRoutes
+                    units: page.units
+                    currentVehicleRow: vehicleLayer.currentIndex
+                }
             }
         }
         ColumnLayout {
@@ -112,6 +123,14 @@ Page {
                 tileUrlTemplate: page.tileUrlTemplate
                 mbtilesFile: page.mbtilesFile
                 dark: page.dark
+                FleetRoutesLayer {
+                    objectName: "flyFleetRoutesLayer"
+                    anchors.fill: parent
+                    map: pane.map
+                    visible: !page.replaying
+                    model: page.fleetRoutes
+                    currentVehicleRow: vehicleLayer.currentIndex
+                }
                 FlightPlanLayer {
                     // Each vehicle's mission under it: flown, ahead, the waypoint it flies to.
                     id: planLayer

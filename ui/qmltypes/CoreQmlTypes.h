@@ -22,6 +22,7 @@
 #include "ValidationIssueModel.h"
 #include "Vehicle.h"
 #include "VehicleFleet.h"
+#include "FleetRoutes.h"
 #include "VehicleLink.h"
 
 #include <QAbstractItemModel>
@@ -86,6 +87,13 @@ struct VehicleFleetForeign
     Q_GADGET
     QML_FOREIGN(sortie::client::VehicleFleet)
     QML_NAMED_ELEMENT(VehicleFleet)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct FleetRoutesForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::FleetRoutes)
+    QML_NAMED_ELEMENT(FleetRoutes)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 struct VehicleForeign

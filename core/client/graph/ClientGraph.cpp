@@ -4,6 +4,7 @@
 #include "ComparisonController.h"
 #include "ConnectionController.h"
 #include "ElevationSetup.h"
+#include "FleetRoutes.h"
 #include "EnduranceRule.h"
 #include "FleetRecording.h"
 #include "FlightRecorder.h"
@@ -64,6 +65,8 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
     if (options.vehicles) {
         m_fleet = std::make_unique<VehicleFleet>(m_hciClient.get(), ground);
         m_missions->preparation()->setFleet(m_fleet.get()); // Process and Upload choose from every vehicle of the fleet
+        // Every route given to a vehicle (the open one chosen for it, uploads, flights), for the map and the list.
+        m_fleetRoutes = std::make_unique<FleetRoutes>(m_fleet.get(), document, m_missions->preparation());
     }
 
     if (!options.autosaveDirectory.isEmpty()) {
@@ -109,6 +112,7 @@ ClientGraph::~ClientGraph()
     m_recorder.reset();
     m_autosave.reset();
     m_recovery.reset();
+    m_fleetRoutes.reset();
     m_fleet.reset();
     m_endurance.reset();
     m_missions.reset();
@@ -139,6 +143,7 @@ QStringList ClientGraph::wiring() const
                                                 : m_fleet->elevation() == ground ? QStringLiteral("fleet planning over the ground")
                                                                                  : QStringLiteral("fleet without ground"))
           << QStringLiteral("upload chooser: %1").arg(yesNo(m_fleet && m_missions->preparation()->fleet() == m_fleet.get(), "the fleet", "none"))
+          << QStringLiteral("fleet routes: %1").arg(yesNo(m_fleetRoutes != nullptr, "the open route's vehicle and every upload", "none"))
           << QStringLiteral("autosave: %1").arg(yesNo(m_autosave && m_autosave->isActive(), "on", "off"))
           << QStringLiteral("recovery: %1").arg(yesNo(m_recovery != nullptr, "on", "off"))
           << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))
