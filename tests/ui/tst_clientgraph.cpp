@@ -5,6 +5,7 @@
 #include "RouteEndurance.h"
 #include "ClientWindow.h"
 #include "ElevationService.h"
+#include "FleetRoutes.h"
 #include "LaunchOptions.h"
 #include "QuickScene.h"
 #include "ReplayController.h"

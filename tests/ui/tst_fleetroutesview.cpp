@@ -109,6 +109,13 @@ class TestFleetRoutesView : public QObject
     void frameRoutes(const char *page)
     {
         double south = 90, west = 180, north = -90, east = -180;
+        for (const QString &name : {QStringLiteral("EMU-101"), QStringLiteral("EMU-102"), QStringLiteral("EMU-103")}) {
+            const QGeoCoordinate p = emu(name)->position();
+            south = std::min(south, p.latitude());
+            north = std::max(north, p.latitude());
+            west = std::min(west, p.longitude());
+            east = std::max(east, p.longitude());
+        }
         for (const mission::Route &route : m_routes)
             for (const mission::Segment &s : route.segments) {
                 const auto &w = std::get<mission::Waypoint>(s);
@@ -132,8 +139,14 @@ class TestFleetRoutesView : public QObject
             if (!delegate || !delegate->isVisible())
                 continue;
             QStringList texts;
-            for (const char *name : {"routeName", "routeState", "routeTimes"})
+            for (const char *name : {"routeName", "routeVehicle", "routeState", "routeTimes"})
                 texts << delegate->findChild<QObject *>(QString::fromLatin1(name))->property("text").toString();
+            // Nothing cut short: every line of the row shows all of its text.
+            for (const char *name : {"routeName", "routeState"}) {
+                auto *label = delegate->findChild<QQuickItem *>(QString::fromLatin1(name));
+                if (label->property("truncated").toBool())
+                    rows << QStringLiteral("truncated: %1").arg(label->property("text").toString());
+            }
             rows << texts.join(QStringLiteral(" | "));
         }
         return rows;
@@ -185,9 +198,9 @@ private slots:
         QVERIFY(missionLayer->routeColor(0) != missionLayer->routeColor(1));
         const QStringList missionRows = listRows(QStringLiteral("missionFleetRoutes"));
         QCOMPARE(missionRows.size(), 3);
-        QVERIFY2(missionRows[0].startsWith(QStringLiteral("West field | EMU-101  ·  uploaded ")), qPrintable(missionRows[0]));
-        QVERIFY2(missionRows[1].startsWith(QStringLiteral("Middle field | EMU-102  ·  uploaded ")), qPrintable(missionRows[1]));
-        QVERIFY2(missionRows[2].startsWith(QStringLiteral("East field | EMU-103  ·  planned | ")), qPrintable(missionRows[2]));
+        QVERIFY2(missionRows[0].startsWith(QStringLiteral("West field | EMU-101 | uploaded ")), qPrintable(missionRows[0]));
+        QVERIFY2(missionRows[1].startsWith(QStringLiteral("Middle field | EMU-102 | uploaded ")), qPrintable(missionRows[1]));
+        QVERIFY2(missionRows[2].startsWith(QStringLiteral("East field | EMU-103 | planned | ")), qPrintable(missionRows[2]));
         QVERIFY2(missionRows[2].endsWith(QStringLiteral(" flight")) && !missionRows[2].contains(QStringLiteral("—")), qPrintable(missionRows[2]));
         shoot(QStringLiteral("fleet-routes-mission.png"));
 
@@ -198,14 +211,26 @@ private slots:
         second->setMode(QStringLiteral("auto"));
         QTRY_COMPARE_WITH_TIMEOUT(routes->data(routes->index(1), client::FleetRoutes::StateRole).toString(), QStringLiteral("flying"), 15000);
         m_client->showPage(2);
+        auto *vehicles = m_client->find<QQuickItem>(QStringLiteral("vehicleLayer"));
+        vehicles->setProperty("currentIndex", fleetRow(second)); // its routes on top, its row highlighted
+        QVERIFY(test::waitForFrame(m_client->window()));
         frameRoutes("telemetryPage");
         auto *flyLayer = m_client->find<ui::FleetRoutesLayer>(QStringLiteral("flyFleetRoutesLayer"));
         QVERIFY(flyLayer);
         QTRY_COMPARE(flyLayer->routeCount(), 3);
-        QTRY_VERIFY(listRows(QStringLiteral("flyFleetRoutes")).size() == 3);
+        // Framed on the routes: every one of their points is on the map.
+        for (int row = 0; row < 3; ++row)
+            for (int i = 0; i < 4; ++i)
+                QTRY_VERIFY(QRectF(0, 0, flyLayer->width(), flyLayer->height()).contains(flyLayer->pointPosition(row, i)));
+        QTRY_COMPARE(listRows(QStringLiteral("flyFleetRoutes")).size(), 3);
         const QStringList flyRows = listRows(QStringLiteral("flyFleetRoutes"));
-        QVERIFY2(flyRows[1].contains(QStringLiteral("EMU-102  ·  flying: waypoint ")), qPrintable(flyRows[1]));
+        QVERIFY2(flyRows[1].contains(QStringLiteral("EMU-102 | flying: waypoint ")), qPrintable(flyRows[1]));
         QVERIFY2(flyRows[1].contains(QStringLiteral(" flown · ")), qPrintable(flyRows[1]));
+        // Three routes fit: no scroll bar; the vehicles above the list keep room for their rows.
+        auto *flyView = m_client->find(QStringLiteral("flyFleetRoutes"))->findChild<QQuickItem *>(QStringLiteral("fleetRoutesView"));
+        QVERIFY2(!flyView->property("overflowing").toBool(), qPrintable(QStringLiteral("%1 in %2").arg(flyView->property("contentHeight").toDouble()).arg(flyView->height())));
+        auto *vehicleList = m_client->find(QStringLiteral("vehicleList"));
+        QVERIFY2(vehicleList->height() >= 3 * 24, qPrintable(QString::number(vehicleList->height())));
         shoot(QStringLiteral("fleet-routes-fly.png"));
     }
 

@@ -75,8 +75,8 @@ FleetRoutesLayer::Route FleetRoutesLayer::read(int row) const
     route.path = at.data(roleOf(m_model, "path")).value<QPolygonF>();
     route.color = at.data(roleOf(m_model, "color")).value<QColor>();
     route.state = at.data(roleOf(m_model, "state")).toString();
-    const QVariant row = at.data(roleOf(m_model, "vehicleRow"));
-    route.vehicleRow = row.isValid() ? row.toInt() : -1;
+    const QVariant vehicleRow = at.data(roleOf(m_model, "vehicleRow"));
+    route.vehicleRow = vehicleRow.isValid() ? vehicleRow.toInt() : -1;
     route.open = at.data(roleOf(m_model, "open")).toBool();
     return route;
 }

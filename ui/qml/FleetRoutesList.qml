@@ -24,13 +24,14 @@ ColumnLayout {
         objectName: "fleetRoutesView"
         Layout.fillWidth: true
         Layout.fillHeight: true
-        Layout.preferredHeight: contentHeight
-        Layout.minimumHeight: Math.min(contentHeight, 60)
+        implicitHeight: contentHeight
         clip: true
         boundsBehavior: Flickable.StopAtBounds
         model: list.routes
-        ScrollBar.vertical: ScrollBar { policy: view.contentHeight > view.height ? ScrollBar.AlwaysOn : ScrollBar.AsNeeded }
-        delegate: Rectangle {
+        // Shown only when the rows do not fit (more than the room the page gives the list).
+        readonly property bool overflowing: contentHeight > height + 1
+        ScrollBar.vertical: ScrollBar { policy: view.overflowing ? ScrollBar.AlwaysOn : ScrollBar.AlwaysOff }
+        delegate: Item {
             id: row
             required property int index
             required property string routeName
@@ -44,11 +45,16 @@ ColumnLayout {
             objectName: "fleetRouteRow" + index
             width: ListView.view.width
             implicitHeight: lines.implicitHeight + 8
-            color: vehicleRow >= 0 && vehicleRow === list.currentVehicleRow
-                   ? Qt.rgba(list.palette.highlight.r, list.palette.highlight.g, list.palette.highlight.b, 0.25) : "transparent"
+            Rectangle {
+                // The chosen vehicle's routes.
+                anchors.fill: parent
+                visible: row.vehicleRow >= 0 && row.vehicleRow === list.currentVehicleRow
+                color: Qt.rgba(list.palette.highlight.r, list.palette.highlight.g, list.palette.highlight.b, 0.25)
+            }
             RowLayout {
                 anchors.fill: parent
                 anchors.margins: 4
+                anchors.rightMargin: view.overflowing ? 14 : 4 // clear of the scroll bar
                 spacing: 6
                 Rectangle {
                     objectName: "swatch"
@@ -71,12 +77,28 @@ ColumnLayout {
                         font.bold: true
                         elide: Text.ElideRight
                     }
-                    Label {
-                        objectName: "routeState"
+                    // The vehicle, then where the route stands; the state moves to a line of its
+                    // own rather than breaking ("waypoint 3 of 7" stays whole).
+                    Flow {
+                        id: stateLine
                         Layout.fillWidth: true
-                        text: row.vehicleName + "  ·  " + row.stateText
-                        wrapMode: Text.Wrap
-                        font.pixelSize: 12
+                        spacing: 0
+                        Label {
+                            objectName: "routeVehicle"
+                            text: row.vehicleName
+                            font.pixelSize: 12
+                        }
+                        Label {
+                            text: "  ·  "
+                            font.pixelSize: 12
+                        }
+                        Label {
+                            objectName: "routeState"
+                            text: row.stateText
+                            width: Math.min(implicitWidth, stateLine.width)
+                            elide: Text.ElideRight
+                            font.pixelSize: 12
+                        }
                     }
                     Label {
                         objectName: "routeTimes"

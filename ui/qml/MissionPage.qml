@@ -209,13 +209,17 @@ Page {
                                                                 label: qsTr("no return"), color: "#e53935"}] : [])
         }
         }
-        FleetRoutesList {
-            objectName: "missionFleetRoutes"
+        Pane {
+            // Every route given to a vehicle, beside the map (once there is one).
             visible: page.fleetRoutes.count > 0
-            SplitView.preferredWidth: 220
-            SplitView.minimumWidth: 160
-            routes: page.fleetRoutes
-            units: page.units
+            SplitView.preferredWidth: 230
+            SplitView.minimumWidth: 170
+            FleetRoutesList {
+                objectName: "missionFleetRoutes"
+                anchors.fill: parent
+                routes: page.fleetRoutes
+                units: page.units
+            }
         }
         RoutePanel {
             id: panel

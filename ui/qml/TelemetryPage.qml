@@ -104,7 +104,11 @@ Page {
                     objectName: "flyFleetRoutes"
                     visible: page.fleetRoutes.count > 0 && !page.replaying
                     Layout.fillWidth: true
-                    Layout.maximumHeight: parent.height * 0.45
+                    // Its rows, up to 40 % of the page: the vehicles above keep the rest.
+                    Layout.fillHeight: false
+                    Layout.preferredHeight: Math.min(implicitHeight, page.height * 0.4)
+                    Layout.minimumHeight: Layout.preferredHeight
+                    Layout.maximumHeight: Layout.preferredHeight
                     routes: page.fleetRoutes
                     units: page.units
                     currentVehicleRow: vehicleLayer.currentIndex
