@@ -195,10 +195,9 @@ void FleetRoutes::describe(Row &row)
 
 void FleetRoutes::watch(Vehicle *v)
 {
-    for (const auto &w : m_watched) {
-        if (w == v)
-            return;
-    }
+    std::erase_if(m_watched, [](const QPointer<Vehicle> &w) { return w.isNull(); }); // vehicles gone since
+    if (std::find(m_watched.begin(), m_watched.end(), v) != m_watched.end())
+        return;
     m_watched.emplace_back(v);
     connect(v, &Vehicle::telemetryChanged, this, [this, v] { refreshVehicle(v); });
     connect(v, &Vehicle::identityChanged, this, [this, v] {
@@ -273,7 +272,7 @@ bool FleetRoutes::track(Row &row)
             }
             FleetRouteProgress p;
             p.count = int(v->mission().size());
-            p.waypoint = std::clamp(v->missionCurrent() + 1, 0, p.count);
+            p.waypoint = std::clamp(v->missionCurrent() + 1, std::min(1, p.count), p.count); // 1 until it names one
             p.elapsedSeconds = double(r.startedAt.msecsTo(now)) / 1000.0;
             p.remainingSeconds = progress.timeLeft;
             r.progress = p;

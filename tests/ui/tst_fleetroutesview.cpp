@@ -13,6 +13,7 @@
 #include "RouteLayer.h"
 #include "RoutePreparation.h"
 #include "VehiclePalette.h"
+#include "VisualCheck.h"
 
 #include <QDir>
 #include <QSignalSpy>
@@ -151,6 +152,14 @@ class TestFleetRoutesView : public QObject
         }
         return rows;
     }
+    // The page's texts (the list's among them): none clipped, out of the window or over another.
+    void noTextProblems(const char *page)
+    {
+        QVERIFY(test::waitForFrame(m_client->window()));
+        const QStringList problems = test::inspectTexts(qobject_cast<QQuickItem *>(m_client->page(page)));
+        QVERIFY(test::lastInspectedTextCount() > 10);
+        QVERIFY2(problems.isEmpty(), qPrintable(QString::fromLatin1(page) + QStringLiteral(":\n  ") + problems.join(QStringLiteral("\n  "))));
+    }
     void shoot(const QString &name)
     {
         QVERIFY(test::waitForFrame(m_client->window()));
@@ -202,6 +211,7 @@ private slots:
         QVERIFY2(missionRows[1].startsWith(QStringLiteral("Middle field | EMU-102 | uploaded ")), qPrintable(missionRows[1]));
         QVERIFY2(missionRows[2].startsWith(QStringLiteral("East field | EMU-103 | planned | ")), qPrintable(missionRows[2]));
         QVERIFY2(missionRows[2].endsWith(QStringLiteral(" flight")) && !missionRows[2].contains(QStringLiteral("—")), qPrintable(missionRows[2]));
+        noTextProblems("missionPage");
         shoot(QStringLiteral("fleet-routes-mission.png"));
 
         // The second vehicle flies: the fly view draws every route (the planned one too) and its row says how far.
@@ -231,6 +241,7 @@ private slots:
         QVERIFY2(!flyView->property("overflowing").toBool(), qPrintable(QStringLiteral("%1 in %2").arg(flyView->property("contentHeight").toDouble()).arg(flyView->height())));
         auto *vehicleList = m_client->find(QStringLiteral("vehicleList"));
         QVERIFY2(vehicleList->height() >= 3 * 24, qPrintable(QString::number(vehicleList->height())));
+        noTextProblems("telemetryPage");
         shoot(QStringLiteral("fleet-routes-fly.png"));
     }
 
