@@ -6,6 +6,7 @@
 #include "ComparisonController.h"
 #include "ConnectionController.h"
 #include "ElevationService.h"
+#include "FleetRoutes.h"
 #include "MissionController.h"
 #include "RecordingSettings.h"
 #include "ReplayController.h"
@@ -36,7 +37,8 @@ QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settin
             {QStringLiteral("recordingSettings"), QVariant::fromValue<QObject *>(&graph.recordingSettings())},
             {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(graph.recovery())},
             {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())},
-            {QStringLiteral("traffic"), QVariant::fromValue<QObject *>(&graph.traffic())}};
+            {QStringLiteral("traffic"), QVariant::fromValue<QObject *>(&graph.traffic())},
+            {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())}};
 }
 
 } // namespace sortie::ui

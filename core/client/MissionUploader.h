@@ -69,6 +69,8 @@ public:
     QString message() const { return m_message; }
     int progressValue() const { return m_progressValue; }
     int progressMaximum() const { return m_progressMaximum; }
+    // The route of the current or last upload, as it goes up (after "save, then upload": as saved).
+    const mission::Route &route() const { return m_route; }
     // What the vehicle was sent, once processed.
     const std::vector<vehicle::MissionItem> &mission() const { return m_prepared.items; }
 

@@ -10,6 +10,7 @@
 #include "HciClient.h"
 #include "HciServer.h"
 #include "HciSession.h"
+#include "FleetRoutes.h"
 #include "FlightRecorder.h"
 #include "RecordingSettings.h"
 #include "ServerHistoryRequest.h"
@@ -49,7 +50,8 @@ QVariantMap telemetryPageProperties(client::ClientGraph &graph)
             {QStringLiteral("replay"), QVariant::fromValue<QObject *>(&graph.replay())},
             {QStringLiteral("serverHistory"), QVariant::fromValue<QObject *>(&graph.serverHistory())},
             {QStringLiteral("comparison"), QVariant::fromValue<QObject *>(&graph.comparison())},
-            {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())}};
+            {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())},
+            {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())}};
 }
 
 QPointF centre(QQuickItem *item)

@@ -5,6 +5,7 @@
 #include "RouteEndurance.h"
 #include "ClientWindow.h"
 #include "ElevationService.h"
+#include "FleetRoutes.h"
 #include "LaunchOptions.h"
 #include "QuickScene.h"
 #include "ReplayController.h"
@@ -47,6 +48,7 @@ private slots:
         // What the program wires, so that a fixture and a program that both lost a service do not agree.
         for (const char *line : {"route validation: with the terrain rule", "height conversions: through the ground",
                                  "vehicles: fleet planning over the ground", "upload chooser: the fleet", "autosave: on",
+                                 "fleet routes: the open route's vehicle and every upload",
                                  "recovery: on", "flight recorder: recording", "fleet recording: on",
                                  "server history: from the fleet", "traffic: the server's ADS-B list; receiver off"})
             QVERIFY2(program.contains(QString::fromLatin1(line)), qPrintable(program.join(QLatin1Char('\n'))));
@@ -65,7 +67,8 @@ private slots:
         const std::pair<const char *, QObject *> expected[] = {
             {"connection", &graph.connection()}, {"missions", &graph.missions()}, {"fleet", graph.fleet()},
             {"elevation", graph.elevation()}, {"replay", &graph.replay()},
-            {"recovery", graph.recovery()}, {"endurance", &graph.endurance()}, {"traffic", &graph.traffic()}};
+            {"recovery", graph.recovery()}, {"endurance", &graph.endurance()}, {"traffic", &graph.traffic()},
+            {"fleetRoutes", graph.fleetRoutes()}};
         for (const auto &[name, object] : expected) {
             QVERIFY2(object, name);
             QCOMPARE(window->property(name).value<QObject *>(), object);

@@ -209,7 +209,7 @@ private slots:
         report(v, 1000, 56.952, 24.101, {{F::MissionCurrent, 2, 1000}});
         QTRY_COMPARE(layer->activeWaypoint(0), 2);
 
-        const QColor colour = ui::vehicleColor(0), flown(0x9e, 0x9e, 0x9e), ring(0xff, 0xd6, 0x00);
+        const QColor colour = client::vehicleColor(0), flown(0x9e, 0x9e, 0x9e), ring(0xff, 0xd6, 0x00);
         auto middleOf = [&](int a, int b) { return ((layer->waypointPosition(0, a) + layer->waypointPosition(0, b)) / 2).toPoint(); };
         QTRY_VERIFY(countNear(scene.grab(), QRect(middleOf(2, 3) - QPoint(3, 3), QSize(7, 7)), colour) > 5); // ahead
         QImage image = scene.grab();
@@ -243,7 +243,7 @@ private slots:
         layer->setModel(&fleet);
         v.setMission({waypoint(56.950, 24.098), waypoint(56.952, 24.098), waypoint(56.952, 24.104), waypoint(56.950, 24.104)});
         report(v, 1000, 56.951, 24.098, {{F::MissionCurrent, 1, 1000}});
-        const QColor colour = ui::vehicleColor(0);
+        const QColor colour = client::vehicleColor(0);
         auto middleOf = [&](int a, int b) { return ((layer->waypointPosition(0, a) + layer->waypointPosition(0, b)) / 2).toPoint(); };
         auto aheadShown = [&] { return countNear(scene.grab(), QRect(middleOf(2, 3) - QPoint(3, 3), QSize(7, 7)), colour) > 5; };
         QTRY_VERIFY(aheadShown());
@@ -315,13 +315,13 @@ TelemetryPlot { objectName: "plot"; width: 400; height: 200 }
         plot->setCompare(true);
         QTRY_COMPARE(plot->seriesCount(), 2);
         QCOMPARE(plot->axisCount(), 1);
-        QCOMPARE(plot->seriesColor(0), ui::vehicleColor(0));
-        QCOMPARE(plot->seriesColor(1), ui::vehicleColor(1));
+        QCOMPARE(plot->seriesColor(0), client::vehicleColor(0));
+        QCOMPARE(plot->seriesColor(1), client::vehicleColor(1));
         QVERIFY(plot->seriesLabel(1).contains(b.name()) || plot->seriesLabel(1).contains(QStringLiteral("altitudeAgl")));
         // Both drawn.
         const QImage image = scene.grab();
-        QVERIFY(countNear(image, image.rect(), ui::vehicleColor(0), 30) > 30);
-        QVERIFY(countNear(image, image.rect(), ui::vehicleColor(1), 30) > 30);
+        QVERIFY(countNear(image, image.rect(), client::vehicleColor(0), 30) > 30);
+        QVERIFY(countNear(image, image.rect(), client::vehicleColor(1), 30) > 30);
     }
 };
 

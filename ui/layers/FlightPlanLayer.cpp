@@ -146,7 +146,7 @@ void FlightPlanLayer::paint(QPainter *painter)
             continue;
         const QRectF box(view.geoToScreen(takeoff) - QPointF(7, 7), QSizeF(14, 14));
         painter->setPen(QPen(Qt::white, 1.5));
-        painter->setBrush(vehicleColor(row).darker(120));
+        painter->setBrush(client::vehicleColor(row).darker(120));
         painter->drawRect(box);
         painter->setPen(Qt::white);
         painter->drawText(box, Qt::AlignCenter, QStringLiteral("H"));
@@ -170,7 +170,7 @@ void FlightPlanLayer::paint(QPainter *painter)
         look.numbered = look.current || m_current < 0;
         look.active = activeWaypoint(row);
         look.complete = v->missionState() == QLatin1String("complete");
-        look.color = vehicleColor(row);
+        look.color = client::vehicleColor(row);
         if (!look.current && m_current >= 0)
             look.color.setAlpha(150);
         // From the vehicle to where it flies now: it moves every frame, so it is not in the

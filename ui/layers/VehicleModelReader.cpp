@@ -44,7 +44,7 @@ VehicleMark VehicleModelReader::read(const QAbstractItemModel &model, int row) c
     const double heading = number(m_names.heading, &okHeading);
     vehicle.heading = okHeading && std::isfinite(heading) ? heading : 0.0;
     vehicle.stale = value(m_names.stale).toBool();
-    vehicle.color = vehicleColor(row);
+    vehicle.color = client::vehicleColor(row);
     return vehicle;
 }
 

@@ -22,6 +22,7 @@ ApplicationWindow {
     required property AutosaveRecovery recovery     // edits a previous run left unsaved; may be null
     required property RouteEndurance endurance      // will the battery last: the open route's endurance
     required property Traffic traffic               // manned traffic: ADS-B from a receiver and the server
+    required property FleetRoutes fleetRoutes       // every route given to a vehicle: drawn on both maps, listed beside them
     property string connectionState: connection.state
     property string connectionDetail: connection.statusDetail
 
@@ -124,6 +125,7 @@ ApplicationWindow {
             elevation: window.elevation
             endurance: window.endurance
             traffic: window.traffic
+            fleetRoutes: window.fleetRoutes
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource
@@ -136,6 +138,7 @@ ApplicationWindow {
             fleet: window.fleet
             endurance: window.endurance
             traffic: window.traffic
+            fleetRoutes: window.fleetRoutes
             replay: window.replay
             serverHistory: window.serverHistory
             comparison: window.comparison

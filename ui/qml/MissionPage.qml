@@ -29,6 +29,7 @@ Page {
     required property ElevationService elevation    // the client's ElevationService, for the terrain profile
     required property RouteEndurance endurance      // will the battery last: figures, changes, point of no return
     property Traffic traffic: null                  // manned traffic around (ADS-B)
+    required property FleetRoutes fleetRoutes       // every route given to a vehicle: on the map and in a list beside it
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
     // `var`: the editor's tools are plain JS objects (name, algorithm, figure, minimumPoints).
@@ -65,6 +66,14 @@ Page {
             tileUrlTemplate: page.tileUrlTemplate
             mbtilesFile: page.mbtilesFile
             dark: page.dark
+            FleetRoutesLayer {
+                // The other vehicles' routes, in their colours; the open one is the editor's (hideOpen).
+                objectName: "missionFleetRoutesLayer"
+                anchors.fill: parent
+                map: pane.map
+                model: page.fleetRoutes
+                hideOpen: true
+            }
             TrafficLayer {
                 objectName: "missionTrafficLayer"
                 anchors.fill: parent
@@ -208,6 +217,18 @@ Page {
                                                                 longitude: page.endurance.pointOfNoReturn.longitude,
                                                                 label: qsTr("no return"), color: "#e53935"}] : [])
         }
+        }
+        Pane {
+            // Every route given to a vehicle, beside the map (once there is one).
+            visible: page.fleetRoutes.count > 0
+            SplitView.preferredWidth: 230
+            SplitView.minimumWidth: 170
+            FleetRoutesList {
+                objectName: "missionFleetRoutes"
+                anchors.fill: parent
+                routes: page.fleetRoutes
+                units: page.units
+            }
         }
         RoutePanel {
             id: panel

@@ -20,6 +20,8 @@ Page {
     // The energy profile and wind the in-flight advice prices with (the mission page chooses them).
     required property RouteEndurance endurance
     property Traffic traffic: null          // manned traffic around (ADS-B)
+    // Every route given to a vehicle: drawn under the flight plans, listed under the vehicles.
+    required property FleetRoutes fleetRoutes
     readonly property bool replaying: replay.active
     property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
     property list<string> plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
@@ -113,6 +115,19 @@ Page {
                     wrapMode: Text.Wrap
                     Layout.fillWidth: true
                 }
+                FleetRoutesList {
+                    objectName: "flyFleetRoutes"
+                    visible: page.fleetRoutes.count > 0 && !page.replaying
+                    Layout.fillWidth: true
+                    // Its rows, up to 40 % of the page: the vehicles above keep the rest.
+                    Layout.fillHeight: false
+                    Layout.preferredHeight: Math.min(implicitHeight, page.height * 0.4)
+                    Layout.minimumHeight: Layout.preferredHeight
+                    Layout.maximumHeight: Layout.preferredHeight
+                    routes: page.fleetRoutes
+                    units: page.units
+                    currentVehicleRow: vehicleLayer.currentIndex
+                }
             }
         }
         ColumnLayout {
@@ -127,6 +142,14 @@ Page {
                 tileUrlTemplate: page.tileUrlTemplate
                 mbtilesFile: page.mbtilesFile
                 dark: page.dark
+                FleetRoutesLayer {
+                    objectName: "flyFleetRoutesLayer"
+                    anchors.fill: parent
+                    map: pane.map
+                    visible: !page.replaying
+                    model: page.fleetRoutes
+                    currentVehicleRow: vehicleLayer.currentIndex
+                }
                 FlightPlanLayer {
                     // Each vehicle's mission under it: flown, ahead, the waypoint it flies to.
                     id: planLayer

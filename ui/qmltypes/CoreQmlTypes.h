@@ -27,6 +27,7 @@
 #include "Vehicle.h"
 #include "VehicleFleet.h"
 #include "VehicleGroup.h"
+#include "FleetRoutes.h"
 #include "VehicleLink.h"
 
 #include <QAbstractItemModel>
@@ -91,6 +92,13 @@ struct VehicleFleetForeign
     Q_GADGET
     QML_FOREIGN(sortie::client::VehicleFleet)
     QML_NAMED_ELEMENT(VehicleFleet)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct FleetRoutesForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::FleetRoutes)
+    QML_NAMED_ELEMENT(FleetRoutes)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 struct VehicleForeign

@@ -192,7 +192,7 @@ void TelemetryPlot::updatePolish()
             const QString unit = unitOf(field);
             Series series;
             series.label = vehicles.size() > 1 || m_compare ? QStringLiteral("%1 %2").arg(v->name(), name) : name;
-            series.colour = row >= 0 && chosen.size() == 1 ? vehicleColor(row) : kColours[m_series.size() % std::size(kColours)];
+            series.colour = row >= 0 && chosen.size() == 1 ? client::vehicleColor(row) : kColours[m_series.size() % std::size(kColours)];
             auto group = std::find_if(m_groups.begin(), m_groups.end(), [&](const Group &g) { return g.unit == unit; });
             if (group == m_groups.end()) {
                 m_groups.push_back({unit, series.colour, samples.front().value, samples.front().value});

@@ -4,6 +4,7 @@
 #include "ComparisonController.h"
 #include "ConnectionController.h"
 #include "ElevationSetup.h"
+#include "FleetRoutes.h"
 #include "EnduranceRule.h"
 #include "FleetRecording.h"
 #include "FlightRecorder.h"
@@ -66,6 +67,8 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
     if (options.vehicles) {
         m_fleet = std::make_unique<VehicleFleet>(m_hciClient.get(), ground);
         m_missions->preparation()->setFleet(m_fleet.get()); // Process and Upload choose from every vehicle of the fleet
+        // Every route given to a vehicle (the open one chosen for it, uploads, flights), for the map and the list.
+        m_fleetRoutes = std::make_unique<FleetRoutes>(m_fleet.get(), document, m_missions->preparation());
     }
 
     // Manned traffic: the receiver's feed (the option, else the setting) and the server's list.
@@ -115,6 +118,7 @@ ClientGraph::~ClientGraph()
     m_autosave.reset();
     m_recovery.reset();
     m_traffic.reset();
+    m_fleetRoutes.reset();
     m_fleet.reset();
     m_endurance.reset();
     m_missions.reset();
@@ -146,6 +150,7 @@ QStringList ClientGraph::wiring() const
                                                                                  : QStringLiteral("fleet without ground"))
           << QStringLiteral("upload chooser: %1").arg(yesNo(m_fleet && m_missions->preparation()->fleet() == m_fleet.get(), "the fleet", "none"))
           << QStringLiteral("traffic: the server's ADS-B list; receiver %1").arg(m_traffic->receiverAddress().isEmpty() ? QStringLiteral("off") : m_traffic->receiverAddress())
+          << QStringLiteral("fleet routes: %1").arg(yesNo(m_fleetRoutes != nullptr, "the open route's vehicle and every upload", "none"))
           << QStringLiteral("autosave: %1").arg(yesNo(m_autosave && m_autosave->isActive(), "on", "off"))
           << QStringLiteral("recovery: %1").arg(yesNo(m_recovery != nullptr, "on", "off"))
           << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))

@@ -39,6 +39,7 @@ namespace sortie::client {
 
 class AutosaveRecovery;
 class ConnectionController;
+class FleetRoutes;
 class MissionController;
 class RouteAutosave;
 class VehicleFleet;
@@ -74,6 +75,7 @@ public:
     terrain::ElevationSetup &terrain() { return *m_elevation; }
     terrain::ElevationService *elevation();
     VehicleFleet *fleet() { return m_fleet.get(); }               // nullptr without vehicles
+    FleetRoutes *fleetRoutes() { return m_fleetRoutes.get(); }    // every vehicle's route; nullptr without vehicles
     AutosaveRecovery *recovery() { return m_recovery.get(); }     // nullptr without an autosave folder
     RouteAutosave *autosave() { return m_autosave.get(); }        // nullptr without an autosave folder
     flightlog::FlightRecorder &recorder() { return *m_recorder; }
@@ -101,6 +103,7 @@ private:
     std::unique_ptr<endurance::RouteEndurance> m_endurance;
     std::unique_ptr<VehicleFleet> m_fleet;
     std::unique_ptr<traffic::Traffic> m_traffic;
+    std::unique_ptr<FleetRoutes> m_fleetRoutes;
     std::unique_ptr<AutosaveRecovery> m_recovery;
     std::unique_ptr<RouteAutosave> m_autosave;
     std::unique_ptr<flightlog::FlightRecorder> m_recorder;

@@ -2,11 +2,13 @@
 
 #include <QColor>
 
+#include <algorithm>
 #include <iterator>
 
-namespace sortie::ui {
+namespace sortie::client {
 
-// The colour of the vehicle in a fleet's row: the same in every layer and plot that shows it.
+// The colour of the vehicle in a fleet's row: the same in every layer, plot and list that shows it.
+// Decided here, below the UI, because the fleet's route list (FleetRoutes) hands it to the views too.
 inline QColor vehicleColor(int row)
 {
     static constexpr QRgb kColors[] = {0xd81b60, 0x8e24aa, 0x00897b, 0xf4511e, 0x3949ab,
@@ -14,4 +16,4 @@ inline QColor vehicleColor(int row)
     return QColor::fromRgb(kColors[std::max(0, row) % int(std::size(kColors))]);
 }
 
-} // namespace sortie::ui
+} // namespace sortie::client
