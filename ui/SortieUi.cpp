@@ -38,7 +38,9 @@ QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settin
             {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(graph.recovery())},
             {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())},
             {QStringLiteral("traffic"), QVariant::fromValue<QObject *>(&graph.traffic())},
-            {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())}};
+            {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())},
+            {QStringLiteral("proximity"), QVariant::fromValue<QObject *>(graph.proximity())},
+            {QStringLiteral("deconfliction"), QVariant::fromValue<QObject *>(graph.deconfliction())}};
 }
 
 } // namespace sortie::ui

@@ -30,6 +30,7 @@ QString CommandLog::statusText(Status status)
     case Status::Done: return tr("done");
     case Status::Failed: return tr("failed");
     case Status::Cancelled: return tr("cancelled");
+    case Status::Alert: return tr("alert");
     }
     return {};
 }
@@ -47,7 +48,7 @@ QVariant CommandLog::data(const QModelIndex &index, int role) const
     case StatusRole: return int(e.status);
     case StatusTextRole: return statusText(e.status);
     case ResultRole: return e.result;
-    case FailedRole: return e.status == Status::Failed;
+    case FailedRole: return e.status == Status::Failed || e.status == Status::Alert;
     case TextRole:
     case Qt::DisplayRole:
         return e.result.isEmpty() ? tr("%1 %2: %3 %4").arg(e.sent.toLocalTime().toString(QStringLiteral("HH:mm:ss")), e.vehicle, e.command, statusText(e.status))
@@ -72,7 +73,7 @@ const CommandLog::Entry *CommandLog::find(int id) const
     return row < 0 ? nullptr : &m_entries[size_t(row)];
 }
 
-int CommandLog::begin(const QString &vehicle, const QString &command)
+CommandLog::Entry &CommandLog::append(const QString &vehicle, const QString &command)
 {
     if (count() >= m_capacity) {
         beginRemoveRows({}, 0, 0);
@@ -87,9 +88,26 @@ int CommandLog::begin(const QString &vehicle, const QString &command)
     beginInsertRows({}, count(), count());
     m_entries.push_back(e);
     endInsertRows();
-    qCInfo(lcVehicle).noquote() << vehicle << "<-" << command;
     emit countChanged();
+    return m_entries.back();
+}
+
+int CommandLog::begin(const QString &vehicle, const QString &command)
+{
+    const Entry &e = append(vehicle, command);
+    qCInfo(lcVehicle).noquote() << vehicle << "<-" << command;
     emit recorded(e);
+    return e.id;
+}
+
+int CommandLog::alert(const QString &vehicle, const QString &text)
+{
+    Entry &e = append(vehicle, text);
+    e.answered = e.sent;
+    e.status = Status::Alert;
+    qCWarning(lcVehicle).noquote() << vehicle << "alert:" << text;
+    emit recorded(e);
+    emit finished(e);
     return e.id;
 }
 

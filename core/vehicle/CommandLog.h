@@ -10,6 +10,7 @@
 namespace sortie::vehicle {
 
 // What was asked of the vehicles and what they answered: every command and upload, with the vehicle,
+// and the alerts raised about them (a predicted loss of separation: `alert`),
 // the time it was sent and the time and text of its result, newest last. Each entry is also written
 // to the sortie.vehicle logging category. A list model for the UI's command log view; `recorded`
 // and `finished` let a recorder (the flight log) follow it without polling. Holds the last
@@ -20,7 +21,7 @@ class CommandLog : public QAbstractListModel
     Q_PROPERTY(int count READ count NOTIFY countChanged)
 
 public:
-    enum class Status { Pending, Done, Failed, Cancelled };
+    enum class Status { Pending, Done, Failed, Cancelled, Alert };
     Q_ENUM(Status)
 
     struct Entry
@@ -50,6 +51,9 @@ public:
     // A command was sent; returns its id for finish().
     int begin(const QString &vehicle, const QString &command);
     void finish(int id, const CommandResult &result);
+    // An alert about a vehicle, not a command: recorded and finished at once (Status::Alert), so the
+    // view shows it with the commands and a recorder following `finished` keeps it.
+    int alert(const QString &vehicle, const QString &text);
     // begin() now and finish() when the returned callback runs (at most once).
     std::function<void(const CommandResult &)> track(const QString &vehicle, const QString &command);
 
@@ -62,6 +66,7 @@ signals:
 
 private:
     int rowOf(int id) const;
+    Entry &append(const QString &vehicle, const QString &command);
 
     std::deque<Entry> m_entries;
     int m_capacity;

@@ -68,7 +68,8 @@ private slots:
             {"connection", &graph.connection()}, {"missions", &graph.missions()}, {"fleet", graph.fleet()},
             {"elevation", graph.elevation()}, {"replay", &graph.replay()},
             {"recovery", graph.recovery()}, {"endurance", &graph.endurance()}, {"traffic", &graph.traffic()},
-            {"fleetRoutes", graph.fleetRoutes()}};
+            {"fleetRoutes", graph.fleetRoutes()}, {"proximity", graph.proximity()},
+            {"deconfliction", graph.deconfliction()}};
         for (const auto &[name, object] : expected) {
             QVERIFY2(object, name);
             QCOMPARE(window->property(name).value<QObject *>(), object);
@@ -85,6 +86,8 @@ private slots:
         const QStringList wiring = bare.wiring();
         QVERIFY2(wiring.contains(QStringLiteral("vehicles: none")), qPrintable(wiring.join(QLatin1Char('\n'))));
         QVERIFY(wiring.contains(QStringLiteral("autosave: off")));
+        QVERIFY(wiring.contains(QStringLiteral("proximity alerts: none"))); // no fleet, nothing to watch
+        QVERIFY(!bare.proximity());
         QVERIFY(wiring.contains(QStringLiteral("flight recorder: off")));
         QVERIFY(wiring.contains(QStringLiteral("route validation: with the terrain rule"))); // terrain is always wired
         QVERIFY(!bare.fleet());

@@ -23,6 +23,8 @@ ApplicationWindow {
     required property RouteEndurance endurance      // will the battery last: the open route's endurance
     required property Traffic traffic               // manned traffic: ADS-B from a receiver and the server
     required property FleetRoutes fleetRoutes       // every route given to a vehicle: drawn on both maps, listed beside them
+    required property ProximityMonitor proximity    // closest-approach alerts in flight; null without vehicles
+    required property RouteDeconfliction deconfliction  // the open route's 4D conflicts; null without vehicles
     property string connectionState: connection.state
     property string connectionDetail: connection.statusDetail
 
@@ -126,6 +128,7 @@ ApplicationWindow {
             endurance: window.endurance
             traffic: window.traffic
             fleetRoutes: window.fleetRoutes
+            deconfliction: window.deconfliction
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource
@@ -139,6 +142,7 @@ ApplicationWindow {
             endurance: window.endurance
             traffic: window.traffic
             fleetRoutes: window.fleetRoutes
+            proximity: window.proximity
             replay: window.replay
             serverHistory: window.serverHistory
             comparison: window.comparison

@@ -30,6 +30,7 @@ Page {
     required property RouteEndurance endurance      // will the battery last: figures, changes, point of no return
     property Traffic traffic: null                  // manned traffic around (ADS-B)
     required property FleetRoutes fleetRoutes       // every route given to a vehicle: on the map and in a list beside it
+    property RouteDeconfliction deconfliction: null // the open route's conflicts with them; null without vehicles
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
     // `var`: the editor's tools are plain JS objects (name, algorithm, figure, minimumPoints).
@@ -145,6 +146,14 @@ Page {
                 radius: page.doc.preview.radius
                 onRadiusMoved: (meters, step) => page.doc.editor.setRadius(page.doc.currentRow, meters, step)
             }
+            ConflictLayer {
+                // Where the open route would meet another vehicle: both at the closest approach.
+                objectName: "conflictLayer"
+                anchors.fill: parent
+                map: pane.map
+                enabled: false // clicks are for the route
+                conflicts: page.deconfliction ? page.deconfliction.conflicts : []
+            }
             EnduranceLayer {
                 // Where the battery runs out: its changes and the point of no return.
                 id: enduranceLayer
@@ -240,6 +249,7 @@ Page {
             routeModel: page.routeModel
             terrain: terrainProfile.profile
             endurance: page.endurance
+            deconfliction: page.deconfliction
             waypointCount: routeLayer.count
             scanning: page.tool === "scan"
             onScanToggled: on => page.tool = on ? "scan" : ""

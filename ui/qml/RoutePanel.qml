@@ -16,6 +16,7 @@ Pane {
     required property AbstractItemModel routeModel // the list model the table shows
     required property TerrainProfileModel terrain // ground and heights per row
     required property RouteEndurance endurance
+    property RouteDeconfliction deconfliction: null  // conflicts with the fleet's other routes; null without vehicles
     required property int waypointCount
     required property bool scanning              // the area-scan tool is on
     signal scanToggled(bool on)
@@ -191,6 +192,31 @@ Pane {
             Label { text: panel.doc.analyzer.waypointCount }
             Label { text: qsTr("Photos"); opacity: 0.7 }
             Label { text: panel.doc.analyzer.photoCount }
+        }
+
+        ColumnLayout {
+            // When, after the start, the route meets another vehicle's (the issue list says where).
+            objectName: "conflictTimeline"
+            visible: panel.deconfliction !== null && panel.deconfliction.count > 0
+            Layout.fillWidth: true
+            spacing: 0
+            Label { text: qsTr("Conflicts with other vehicles"); font.bold: true; color: "#d50000" }
+            Repeater {
+                model: panel.deconfliction ? panel.deconfliction.conflicts : []
+                delegate: Label {
+                    required property var modelData
+                    objectName: "conflictRow"
+                    Layout.fillWidth: true
+                    elide: Text.ElideRight
+                    text: qsTr("%1:%2  leg %3 · %4 (%5): %6 m across, %7 m in height")
+                          .arg(Math.floor(modelData.time / 60)).arg(String(Math.round(modelData.time % 60)).padStart(2, "0"))
+                          .arg(modelData.leg).arg(modelData.otherVehicle)
+                          .arg(modelData.flying ? qsTr("flying") : qsTr("uploaded"))
+                          .arg(Math.round(modelData.horizontal)).arg(Math.round(modelData.vertical))
+                    ToolTip.visible: conflictHover.hovered; ToolTip.text: modelData.text
+                    HoverHandler { id: conflictHover }
+                }
+            }
         }
 
         GridLayout {

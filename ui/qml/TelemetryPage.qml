@@ -22,6 +22,7 @@ Page {
     property Traffic traffic: null          // manned traffic around (ADS-B)
     // Every route given to a vehicle: drawn under the flight plans, listed under the vehicles.
     required property FleetRoutes fleetRoutes
+    property ProximityMonitor proximity: null  // closest-approach alerts (the fleet and the traffic)
     readonly property bool replaying: replay.active
     property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
     property list<string> plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
@@ -255,6 +256,33 @@ Page {
                         onClicked: {
                             const v = page.current
                             commands.confirm(advisory.returnHomeQuestion, () => page.fleet.commands.send(CommandPolicy.ReturnHome, v))
+                        }
+                    }
+                }
+            }
+            // Two of ours, or one of ours and an aircraft, predicted to come too close: every alert,
+            // most urgent first, while it is predicted (each also went into the command log).
+            Rectangle {
+                objectName: "proximityBanner"
+                Layout.fillWidth: true
+                visible: page.proximity !== null && page.proximity.count > 0 && !page.replaying
+                implicitHeight: proximityColumn.implicitHeight + 12
+                color: "#b71c1c"
+                ColumnLayout {
+                    id: proximityColumn
+                    anchors.fill: parent
+                    anchors.margins: 6
+                    spacing: 2
+                    Repeater {
+                        model: page.proximity
+                        delegate: Label {
+                            required property var model
+                            objectName: "proximityAlert"
+                            Layout.fillWidth: true
+                            text: qsTr("Too close: %1").arg(model.text)
+                            color: "white"
+                            font.bold: true
+                            wrapMode: Text.Wrap
                         }
                     }
                 }

@@ -21,6 +21,8 @@
 #include "RouteModel.h"
 #include "SbsFeed.h"
 #include "ServerObjectListModel.h"
+#include "ProximityMonitor.h"
+#include "RouteDeconfliction.h"
 #include "Traffic.h"
 #include "TrafficPicture.h"
 #include "ValidationIssueModel.h"
@@ -167,6 +169,20 @@ struct TrafficForeign
     Q_GADGET
     QML_FOREIGN(sortie::traffic::Traffic)
     QML_NAMED_ELEMENT(Traffic)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct RouteDeconflictionForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::deconfliction::RouteDeconfliction)
+    QML_NAMED_ELEMENT(RouteDeconfliction)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct ProximityMonitorForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::deconfliction::ProximityMonitor)
+    QML_NAMED_ELEMENT(ProximityMonitor)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 struct TrafficPictureForeign

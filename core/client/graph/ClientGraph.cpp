@@ -11,6 +11,9 @@
 #include "HciClient.h"
 #include "HciSession.h"
 #include "MissionController.h"
+#include "FleetConflictRule.h"
+#include "ProximityMonitor.h"
+#include "RouteDeconfliction.h"
 #include "RecordingSettings.h"
 #include "ReplayController.h"
 #include "RouteAnalyzer.h"
@@ -69,10 +72,16 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
         m_missions->preparation()->setFleet(m_fleet.get()); // Process and Upload choose from every vehicle of the fleet
         // Every route given to a vehicle (the open one chosen for it, uploads, flights), for the map and the list.
         m_fleetRoutes = std::make_unique<FleetRoutes>(m_fleet.get(), document, m_missions->preparation());
+        // The open route against every route another vehicle holds or flies: a rule on its analyzer.
+        m_deconfliction = std::make_unique<deconfliction::RouteDeconfliction>(m_fleetRoutes.get(), m_missions->preparation(),
+                                                                              document->analyzer());
     }
 
     // Manned traffic: the receiver's feed (the option, else the setting) and the server's list.
     m_traffic = std::make_unique<traffic::Traffic>(storage, m_hciClient.get(), options.sbsAddress);
+    // Closest-approach alerts: into the fleet's command log, which the flight recorder follows.
+    if (m_fleet)
+        m_proximity = std::make_unique<deconfliction::ProximityMonitor>(m_fleet.get(), m_traffic->picture());
 
     if (!options.autosaveDirectory.isEmpty()) {
         // Recovery looks first, so the autosave of this run takes a slot of its own.
@@ -117,6 +126,8 @@ ClientGraph::~ClientGraph()
     m_recorder.reset();
     m_autosave.reset();
     m_recovery.reset();
+    m_proximity.reset();
+    m_deconfliction.reset();
     m_traffic.reset();
     m_fleetRoutes.reset();
     m_fleet.reset();
@@ -151,6 +162,8 @@ QStringList ClientGraph::wiring() const
           << QStringLiteral("upload chooser: %1").arg(yesNo(m_fleet && m_missions->preparation()->fleet() == m_fleet.get(), "the fleet", "none"))
           << QStringLiteral("traffic: the server's ADS-B list; receiver %1").arg(m_traffic->receiverAddress().isEmpty() ? QStringLiteral("off") : m_traffic->receiverAddress())
           << QStringLiteral("fleet routes: %1").arg(yesNo(m_fleetRoutes != nullptr, "the open route's vehicle and every upload", "none"))
+          << QStringLiteral("route deconfliction: %1").arg(yesNo(m_deconfliction && std::any_of(rules.begin(), rules.end(), [&](const auto &r) { return r == m_deconfliction->rule(); }), "against the fleet's routes", "none"))
+          << QStringLiteral("proximity alerts: %1").arg(yesNo(m_proximity != nullptr, "the fleet and the traffic", "none"))
           << QStringLiteral("autosave: %1").arg(yesNo(m_autosave && m_autosave->isActive(), "on", "off"))
           << QStringLiteral("recovery: %1").arg(yesNo(m_recovery != nullptr, "on", "off"))
           << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))

@@ -35,6 +35,11 @@ namespace sortie::traffic {
 class Traffic;
 } // namespace sortie::traffic
 
+namespace sortie::deconfliction {
+class ProximityMonitor;
+class RouteDeconfliction;
+} // namespace sortie::deconfliction
+
 namespace sortie::client {
 
 class AutosaveRecovery;
@@ -83,6 +88,12 @@ public:
     endurance::RouteEndurance &endurance() { return *m_endurance; }
     // Manned traffic: the picture, the receiver's feed and the server's ADS-B list.
     traffic::Traffic &traffic() { return *m_traffic; }
+    // In-flight closest-approach alerts between the fleet's vehicles and against the traffic;
+    // nullptr without vehicles.
+    deconfliction::ProximityMonitor *proximity() { return m_proximity.get(); }
+    // The open route's 4D conflicts with the fleet's other routes (a rule on its analyzer);
+    // nullptr without vehicles.
+    deconfliction::RouteDeconfliction *deconfliction() { return m_deconfliction.get(); }
     flightlog::ReplayController &replay() { return *m_replay; }
     flightlog::ComparisonController &comparison() { return *m_comparison; }
     flightlog::ServerHistoryRequest &serverHistory() { return *m_serverHistory; }
@@ -104,6 +115,8 @@ private:
     std::unique_ptr<VehicleFleet> m_fleet;
     std::unique_ptr<traffic::Traffic> m_traffic;
     std::unique_ptr<FleetRoutes> m_fleetRoutes;
+    std::unique_ptr<deconfliction::RouteDeconfliction> m_deconfliction;
+    std::unique_ptr<deconfliction::ProximityMonitor> m_proximity;
     std::unique_ptr<AutosaveRecovery> m_recovery;
     std::unique_ptr<RouteAutosave> m_autosave;
     std::unique_ptr<flightlog::FlightRecorder> m_recorder;

@@ -228,7 +228,10 @@ void FlightRecorder::recordCommand(const vehicle::CommandLog::Entry &entry)
         return;
     // The command as the log words it ("takeoff to 20 m"), with the reason when it did not succeed.
     const QString text = entry.result.isEmpty() ? entry.command : entry.command + QStringLiteral(": ") + entry.result;
-    writeEvent(*r, QStringLiteral("command"), text, entry.status == vehicle::CommandLog::Status::Done ? 1 : 0);
+    if (entry.status == vehicle::CommandLog::Status::Alert)
+        writeEvent(*r, QStringLiteral("alert"), entry.command);
+    else
+        writeEvent(*r, QStringLiteral("command"), text, entry.status == vehicle::CommandLog::Status::Done ? 1 : 0);
 }
 
 void FlightRecorder::recordEvent(Vehicle *vehicle, const QString &kind, const QString &text, int ok)

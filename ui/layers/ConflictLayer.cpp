@@ -1,0 +1,83 @@
+#include "ConflictLayer.h"
+
+#include <QFontMetricsF>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <cmath>
+
+namespace sortie::ui {
+
+ConflictLayer::ConflictLayer(QQuickItem *parent)
+    : MapLayer(parent)
+{
+}
+
+void ConflictLayer::setConflicts(const QVariantList &conflicts)
+{
+    if (conflicts == m_conflicts)
+        return;
+    m_conflicts = conflicts;
+    m_marks.clear();
+    for (const QVariant &v : conflicts) {
+        const QVariantMap c = v.toMap();
+        const QGeoCoordinate own(c.value(QStringLiteral("latitude")).toDouble(), c.value(QStringLiteral("longitude")).toDouble());
+        const QGeoCoordinate other(c.value(QStringLiteral("otherLatitude")).toDouble(), c.value(QStringLiteral("otherLongitude")).toDouble());
+        if (!own.isValid() || !other.isValid())
+            continue;
+        const long s = std::lround(c.value(QStringLiteral("time")).toDouble());
+        m_marks.push_back({own, other,
+                           tr("%1 at %2:%3, %4 m / %5 m")
+                               .arg(c.value(QStringLiteral("otherVehicle")).toString())
+                               .arg(s / 60)
+                               .arg(s % 60, 2, 10, QLatin1Char('0'))
+                               .arg(c.value(QStringLiteral("horizontal")).toDouble(), 0, 'f', 0)
+                               .arg(c.value(QStringLiteral("vertical")).toDouble(), 0, 'f', 0)});
+    }
+    repaint();
+    emit conflictsChanged();
+}
+
+QPointF ConflictLayer::markPosition(int index) const
+{
+    if (index < 0 || index >= markCount())
+        return {qQNaN(), qQNaN()};
+    return viewport().geoToScreen(m_marks[size_t(index)].own);
+}
+
+void ConflictLayer::paint(QPainter *painter)
+{
+    QPainter &p = *painter;
+    p.setRenderHint(QPainter::Antialiasing);
+    const MapViewport &viewport = paintViewport();
+    const double right = width() - paintOrigin().x();
+    QFont font = p.font();
+    font.setBold(true);
+    const QFontMetricsF metrics(font);
+    for (const Mark &mark : m_marks) {
+        const QPointF a = viewport.geoToScreen(mark.own), b = viewport.geoToScreen(mark.other);
+        p.setPen(QPen(colour(), 2, Qt::DashLine));
+        p.drawLine(a, b);
+        p.setPen(QPen(colour(), 3));
+        p.setBrush(Qt::NoBrush);
+        p.drawEllipse(a, 10, 10);
+        p.setPen(QPen(Qt::white, 1.5));
+        p.setBrush(colour());
+        p.drawEllipse(b, 6, 6);
+        // The label below the ring, moved left where it would run past the map's right edge.
+        QPointF at = a + QPointF(14, 18);
+        const double w = metrics.horizontalAdvance(mark.label);
+        if (at.x() + w > right - 56)
+            at.setX(a.x() - 14 - w);
+        QPainterPath path;
+        path.addText(at, font, mark.label);
+        p.setPen(QPen(QColor(255, 255, 255, 220), 3.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.setBrush(Qt::NoBrush);
+        p.drawPath(path);
+        p.setPen(Qt::NoPen);
+        p.setBrush(colour().darker(120));
+        p.drawPath(path);
+    }
+}
+
+} // namespace sortie::ui
