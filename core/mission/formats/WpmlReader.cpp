@@ -167,7 +167,10 @@ Result<Route> routeOf(const ReadFolder &wayline, const ReadFolder *templateFolde
     }
     route.settings.home = which.home;
     for (const auto &[element, points] : wayline.unknown) {
-        const std::vector<int> waypoints = [&] { std::vector<int> v; for (int p : points) if (p > 0) v.push_back(p); return v; }();
+        std::vector<int> waypoints;  // (a loop, not a lambda: clang 14 cannot capture a structured binding)
+        for (int p : points)
+            if (p > 0)
+                waypoints.push_back(p);
         *notices << (waypoints.empty() ? QStringLiteral("%1: %2 is not kept").arg(prefix, element)
                                        : QStringLiteral("%1, %2: %3 is not kept").arg(prefix, waypointList(waypoints), element));
     }
