@@ -4,6 +4,8 @@
 #include "ClientGraph.h"
 #include "RouteEndurance.h"
 #include "ClientWindow.h"
+#include "ProximityMonitor.h"
+#include "RouteDeconfliction.h"
 #include "ElevationService.h"
 #include "FleetRoutes.h"
 #include "LaunchOptions.h"

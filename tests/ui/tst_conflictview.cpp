@@ -62,7 +62,7 @@ private slots:
 
     void aRouteThatMeetsAFlyingVehicleIsDrawnAndRefused()
     {
-        test::ClientWindow client({});
+        test::ClientWindow client{test::ClientWindow::Options{}};
         QVERIFY2(client.isReady(), qPrintable(client.error()));
         QVERIFY(client.logIn());
         QTRY_VERIFY_WITH_TIMEOUT(emu(client, QStringLiteral("EMU-101")) && emu(client, QStringLiteral("EMU-102")), 10000);
@@ -94,7 +94,14 @@ private slots:
         QVERIFY(layer);
         QTRY_VERIFY_WITH_TIMEOUT(layer->markCount() >= 1, 20000);
         QVERIFY(client.graph().deconfliction()->count() >= 1);
-        QQuickItem *row = client.find(QStringLiteral("conflictRow"));
+        // The conflict timeline's rows (Repeater delegates: the timeline's child items, not its QObject children).
+        QQuickItem *timeline = client.find(QStringLiteral("conflictTimeline"));
+        QVERIFY(timeline);
+        QTRY_VERIFY(timeline->isVisible());
+        QQuickItem *row = nullptr;
+        for (QQuickItem *child : timeline->childItems())
+            if (child->objectName() == QStringLiteral("conflictRow"))
+                row = child;
         QVERIFY(row && row->isVisible());
         const QString rowText = row->property("text").toString();
         QVERIFY2(rowText.contains(QStringLiteral("EMU-101")) && rowText.contains(QStringLiteral("flying")), qPrintable(rowText));
@@ -118,6 +125,12 @@ private slots:
 
         // Upload: refused, saying why; nothing reaches EMU-102.
         finished.clear();
+        int secondRow = -1;
+        for (int r = 0; r < client.fleet().count(); ++r)
+            if (client.fleet().vehicleAt(r) == second)
+                secondRow = r;
+        client.find<QObject>(QStringLiteral("vehiclePicker"))->setProperty("currentIndex", secondRow); // as the operator picks it
+        QCOMPARE(preparation->vehicleId(), idOf(second));
         QQuickItem *upload = client.find(QStringLiteral("uploadButton"));
         QVERIFY(upload);
         QTRY_VERIFY(upload->isVisible() && upload->isEnabled());
