@@ -343,6 +343,10 @@ private slots:
             QTRY_VERIFY_WITH_TIMEOUT(log.count() == 2 && log.at(0).status != vehicle::CommandLog::Status::Pending
                                          && log.at(1).status != vehicle::CommandLog::Status::Pending, 15000);
             QCOMPARE(log.at(0).status, vehicle::CommandLog::Status::Done);
+            // A closest-approach alert goes into the same log and is kept as an alert, not a command.
+            const QString alert = QStringLiteral("EMU-101 and EMU-102: closest in 12 s, 5 m across and 2 m in height");
+            fleet.commandLog()->alert(QStringLiteral("EMU-101"), alert);
+            QTest::qWait(300); // the recorder flushes every 100 ms
             recorder.stop();
 
             QString openError;
@@ -359,6 +363,11 @@ private slots:
                     .arg(entry.status == vehicle::CommandLog::Status::Done ? 1 : 0);
             };
             QCOMPARE(commands, QStringList({expected(0), expected(1)}));
+            QStringList alerts;
+            for (const FlightLog::Event &e : recorded->events())
+                if (e.kind == QLatin1String("alert"))
+                    alerts << recorded->vehicles()[size_t(e.vehicle)].name() + QLatin1Char(':') + e.text;
+            QCOMPARE(alerts, QStringList{QStringLiteral("EMU-101:") + alert});
             QVERIFY2(commands.at(1).startsWith(QLatin1String("EMU-101:go to ")), qPrintable(commands.join(QLatin1Char('\n'))));
         }
     }
