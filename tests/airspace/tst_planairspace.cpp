@@ -7,26 +7,16 @@
 
 #include <QProcess>
 #include <QTemporaryDir>
+#include "PlanRun.h"
+
 #include <QtTest>
 
 using namespace sortie::mission;
 using Json = sortie::mission::formats::Json;
 
 namespace {
-struct Run
-{
-    int code = -1;
-    QByteArray out, err;
-};
-
-Run run(const QStringList &args)
-{
-    QProcess p;
-    p.start(QStringLiteral(SORTIE_PLAN_BIN), args);
-    if (!p.waitForFinished(60000))
-        qFatal("sortie-plan did not finish");
-    return {p.exitCode(), p.readAllStandardOutput(), p.readAllStandardError()};
-}
+using Run = sortie::test::PlanRun;
+Run run(const QStringList &args) { return sortie::test::runPlan(args); }
 
 const GeoPoint kOrigin{56.95, 24.1};
 
