@@ -100,7 +100,8 @@ private slots:
         // A block written when the store still spoke radians (the codec of 3a8ec23, fed 56.95° and
         // 24.10°, 100 m, a heading of 90° then 270°, a roll of -0.1 then 0.2 rad, all in radians):
         // its integers are quanta of 1e-9 rad and 1e-5 rad, and they read back as those angles in
-        // degrees. Encoding the same angles in degrees now writes the very same bytes.
+        // degrees. It is a version 1 block (before constant fields): encoding the same angles in
+        // degrees now writes a version 2 block with the very same integers.
         using F = TelemetryField;
         const std::string golden = QByteArray::fromHex(
             "0180a0abfef962c801050002000a00c801a2cff5b307a21b01020407bcdf919103c43602020405c09a0ce80706020406b09613deac26"
@@ -126,7 +127,9 @@ private slots:
         QCOMPARE(values(F::AltitudeAmsl), (std::vector<double>{100.0, 100.5}));
         QVERIFY(std::fabs(heading[0] - 90) <= attitude && std::fabs(heading[1] - 270) <= attitude);
         QVERIFY(std::fabs(roll[0] + 0.1 * 180 / M_PI) <= attitude && std::fabs(roll[1] - 0.2 * 180 / M_PI) <= attitude);
-        QCOMPARE(TelemetryBlockCodec::encode(*out), golden);
+        const std::string again = TelemetryBlockCodec::encode(*out);
+        QCOMPARE(again.front(), '\x02');
+        QCOMPARE(again.substr(1, again.size() - 5), golden.substr(1, golden.size() - 5)); // no field is constant here
         const BlockFields degrees = {
             {F::Latitude, {{1'700'000'000'000, 56.95}, {1'700'000'000'100, 56.9501}}},
             {F::Longitude, {{1'700'000'000'000, 24.10}, {1'700'000'000'100, 24.1002}}},
@@ -134,7 +137,46 @@ private slots:
             {F::Heading, {{1'700'000'000'000, 90.0}, {1'700'000'000'100, 270.0}}},
             {F::Roll, {{1'700'000'000'000, -0.1 * 180 / M_PI}, {1'700'000'000'100, 0.2 * 180 / M_PI}}},
         };
-        QCOMPARE(TelemetryBlockCodec::encode(degrees), golden);
+        QCOMPARE(TelemetryBlockCodec::encode(degrees), again);
+    }
+
+    // A field whose every value is the same (a fix type, a mode, a parked vehicle) is written once.
+    void aConstantFieldIsWrittenOnce()
+    {
+        using F = TelemetryField;
+        BlockFields fields{{F::Latitude, {}}, {F::GpsFix, {}}, {F::AltitudeAmsl, {}}};
+        for (int i = 0; i < 10; ++i) {
+            const int64_t t = 1'700'000'000'000 + i * 100 + i % 3;
+            fields[0].samples.push_back({t, 56.95 + i * 1e-5});
+            fields[1].samples.push_back({t, 3});
+            fields[2].samples.push_back({t, 120.5}); // hovering
+        }
+        const std::string block = TelemetryBlockCodec::encode(fields);
+        std::string error;
+        const auto out = TelemetryBlockCodec::decode(block, &error);
+        QVERIFY2(out, error.c_str());
+        QCOMPARE(out->size(), size_t(3));
+        for (size_t f = 0; f < 3; ++f)
+            for (size_t i = 0; i < 10; ++i) {
+                QCOMPARE((*out)[f].samples[i].time, fields[f].samples[i].time);
+                QCOMPARE((*out)[f].samples[i].value, flightlog::quantize(fields[f].field, fields[f].samples[i].value));
+            }
+        QCOMPARE(TelemetryBlockCodec::summarize(block)->total, 30u);
+        // Each constant field: id, count, flags, length and one value (times shared): 5 bytes, not 14.
+        BlockFields withoutConstants{fields[0]};
+        QCOMPARE(block.size() - TelemetryBlockCodec::encode(withoutConstants).size(), size_t(4 + 1 + 4 + 2 + 1));
+        // A constant field may not claim more samples than a block can hold.
+        std::string hostile = block;
+        // The GpsFix field follows the latitude's (same header sizes: same times, one-byte field count).
+        const size_t id = TelemetryBlockCodec::encode(withoutConstants).size() - 4, count = id + 1;
+        QCOMPARE(uchar(hostile[id]), uchar(F::GpsFix));
+        QCOMPARE(uchar(hostile[count]), uchar(10));
+        hostile.replace(count, 1, std::string("\x81\x80\x02", 3)); // 32,769 samples
+        hostile.resize(hostile.size() - 4);
+        const uint32_t crc = flightlog::crc32(hostile);
+        hostile.append(reinterpret_cast<const char *>(&crc), 4);
+        QVERIFY(!TelemetryBlockCodec::decode(hostile, &error));
+        QCOMPARE(error, std::string("bad field header"));
     }
 
     void typicalTelemetryTakesUnderFourBytesAValue()

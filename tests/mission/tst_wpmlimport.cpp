@@ -161,7 +161,7 @@ private slots:
         const QString first = folder(QStringLiteral("relativeToStartPoint"), five({}, evenly + risky, repeatedVideo + risky));
         const QString second = folder(QStringLiteral("relativeToStartPoint"),
                                       five({}, group(1, 1, QStringLiteral("reachPoint"), action(QStringLiteral("customDirName")))));
-        const QString config = drone(99, 0) + el(QStringLiteral("exitOnRCLost"), QStringLiteral("goContinue")) + el(QStringLiteral("globalRTHHeight"), QStringLiteral("80"));
+        const QString config = drone(120, 0) + el(QStringLiteral("exitOnRCLost"), QStringLiteral("goContinue")) + el(QStringLiteral("globalRTHHeight"), QStringLiteral("80"));
         const Result<WpmlImport> in = readWpml(document(config, first + second));
         QVERIFY2(in.ok(), in.ok() ? "" : qPrintable(in.error().toString()));
         QCOMPARE(int(in->routes.size()), 2);
@@ -172,7 +172,7 @@ private slots:
         QCOMPARE(matching(n, QStringLiteral("startRecord")), QStringList{"wayline 1, waypoint 4: a \"startRecord\" repeated by multipleTiming is not kept"});
         QCOMPARE(matching(n, QStringLiteral("customDirName")), QStringList{"wayline 2, waypoint 2: the WPML action \"customDirName\" has no Sortie equivalent and is not kept"});
         QCOMPARE(matching(n, QStringLiteral("isRisky")), QStringList{"wayline 1, waypoints 2, 4: wpml:isRisky is not kept"});
-        QCOMPARE(matching(n, QStringLiteral("droneEnumValue 99/0 is not an aircraft Sortie knows")).size(), 1);
+        QCOMPARE(matching(n, QStringLiteral("droneEnumValue 120/0 is not an aircraft Sortie knows")).size(), 1);
         QCOMPARE(matching(n, QStringLiteral("wpml:globalRTHHeight")).size(), 1);
         QCOMPARE(matching(n, QStringLiteral("wpml:exitOnRCLost \"goContinue\" (written as \"executeLostAction\")")).size(), 1);
         QVERIFY(in->droneName.isEmpty());
@@ -377,6 +377,10 @@ private slots:
         QCOMPARE(enums("m3m"), QStringLiteral("77/2 68"));
         QCOMPARE(enums("m3d"), QStringLiteral("91/0 80"));
         QCOMPARE(enums("m3td"), QStringLiteral("91/1 81"));
+        QCOMPARE(enums("m4e"), QStringLiteral("99/0 88"));
+        QCOMPARE(enums("m4t"), QStringLiteral("99/1 89"));
+        QCOMPARE(enums("m4d"), QStringLiteral("100/0 98"));
+        QCOMPARE(enums("m4td"), QStringLiteral("100/1 99"));
         // A payload the route cannot keep is told.
         const Result<WpmlImport> h20t = readWpml(document(drone(89, 0, 43), folder(QStringLiteral("relativeToStartPoint"), placemark(0, 40) + placemark(1, 40))));
         QVERIFY(h20t.ok());

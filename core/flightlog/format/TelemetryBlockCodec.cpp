@@ -1,5 +1,6 @@
 #include "TelemetryBlockCodec.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -10,10 +11,17 @@ using vehicle::TelemetrySample;
 
 namespace {
 
-constexpr uint8_t kVersion = 1;
+// Version 2 added kConstant; version 1 blocks (logs written before) read as they always did.
+constexpr uint8_t kVersion = 2;
 constexpr uint8_t kSecondOrder = 1; // values stored as second differences
 constexpr uint8_t kHasMissing = 2;  // a bitmap of missing (NaN) values follows the times
 constexpr uint8_t kSameTimes = 4;   // no times: the same as the last field that had its own
+// Every value the same (a fix type, a mode, a parked vehicle): the value once. A quarter of what a
+// sensor reports at 10 Hz is such a field, and at a byte a zero difference it cost a byte a value.
+constexpr uint8_t kConstant = 8;
+// The most samples a constant field holds in a block: its payload no longer bounds its count, so
+// this does (a block is about a second; 16,384 is 1.6 kHz).
+constexpr uint64_t kMaxConstantRun = 16384;
 constexpr double kMaxQuantum = 9007199254740992.0; // 2^53: beyond it a value is not representable
 
 uint64_t zigzag(int64_t v) { return (uint64_t(v) << 1) ^ uint64_t(v >> 63); }
@@ -102,6 +110,7 @@ struct Header
 {
     int64_t t0 = 0, t1 = 0;
     uint64_t fieldCount = 0;
+    uint8_t version = kVersion;
 };
 
 // Checks the CRC and reads the header; `body` is left at the first field.
@@ -117,12 +126,13 @@ bool openBlock(std::string_view block, Header *h, Reader *body, std::string *err
     Reader r(content);
     uint8_t version;
     int64_t span;
-    if (!r.byte(&version) || version != kVersion)
+    if (!r.byte(&version) || version < 1 || version > kVersion)
         return fail(error, "unknown block version");
     if (!r.svarint(&h->t0) || !r.svarint(&span) || span < 0 || !r.varint(&h->fieldCount)
         || h->fieldCount > vehicle::kTelemetryFieldCount)
         return fail(error, "bad block header");
     h->t1 = plus(h->t0, span);
+    h->version = version;
     *body = r;
     return true;
 }
@@ -137,19 +147,22 @@ struct FieldHeader
 
 // `seen` marks the fields read so far: a field twice in one block is damage (the encoder writes each
 // once), and would make a field's samples two runs that each reader joins differently.
-bool readFieldHeader(Reader &r, FieldHeader *f, uint32_t *seen, std::string *error)
+bool readFieldHeader(Reader &r, uint8_t version, FieldHeader *f, uint32_t *seen, std::string *error)
 {
     uint8_t id, flags;
     uint64_t count, length;
     if (!r.byte(&id) || id >= vehicle::kTelemetryFieldCount || !r.varint(&count) || !r.byte(&flags)
-        || !r.varint(&length) || length > r.left() || count == 0 || length == 0 || count > length * 8)
+        || !r.varint(&length) || length > r.left() || count == 0 || length == 0)
+        return fail(error, "bad field header");
+    const bool constant = version >= 2 && (flags & kConstant);
+    if (constant ? count > kMaxConstantRun || (flags & kHasMissing) : count > length * 8)
         return fail(error, "bad field header");
     if (*seen & (1u << id))
         return fail(error, "a field twice in one block");
     *seen |= 1u << id;
     f->field = TelemetryField(id);
     f->count = count;
-    f->flags = flags;
+    f->flags = constant || version >= 2 ? flags : uint8_t(flags & ~kConstant);
     r.bytes(size_t(length), &f->payload);
     return true;
 }
@@ -194,6 +207,10 @@ bool decodeValues(const FieldHeader &f, Reader &r, const std::vector<int64_t> &t
     for (size_t i = 0; i < f.count; ++i) {
         if (!missing.empty() && (uint8_t(missing[i / 8]) >> (i % 8)) & 1) {
             out->samples[i].value = std::nan("");
+            continue;
+        }
+        if (present > 0 && (f.flags & kConstant)) { // the value once, for every sample
+            out->samples[i].value = double(q) * step;
             continue;
         }
         int64_t v;
@@ -269,15 +286,18 @@ void encodeField(const FieldSamples &f, int64_t t0, const FieldSamples *&timesOf
         first += varintSize(zigzag(q[j] - q[j - 1]));
         second += varintSize(zigzag(j == 1 ? q[1] - q[0] : (q[j] - q[j - 1]) - (q[j - 1] - q[j - 2])));
     }
-    const bool secondOrder = second < first;
+    const bool constant = missing.empty() && n <= kMaxConstantRun && std::all_of(q.begin(), q.end(), [&](int64_t v) { return v == q[0]; });
+    const bool secondOrder = !constant && second < first;
     uint8_t flags = secondOrder ? kSecondOrder : 0;
+    if (constant)
+        flags |= kConstant;
     if (shared)
         flags |= kSameTimes;
     if (!missing.empty()) {
         flags |= kHasMissing;
         payload += missing;
     }
-    for (size_t j = 0; j < q.size(); ++j) {
+    for (size_t j = 0; j < (constant ? 1 : q.size()); ++j) {
         int64_t v;
         if (j == 0)
             v = q[0];
@@ -385,7 +405,7 @@ std::optional<BlockSummary> TelemetryBlockCodec::summarize(std::string_view bloc
     uint32_t seen = 0;
     for (uint64_t i = 0; i < h.fieldCount; ++i) {
         FieldHeader f;
-        if (!readFieldHeader(r, &f, &seen, error))
+        if (!readFieldHeader(r, h.version, &f, &seen, error))
             return std::nullopt;
         if ((f.flags & kSameTimes) && (i == 0 || f.count != timesCount)) {
             fail(error, "shared times of another length");
@@ -412,7 +432,7 @@ std::optional<BlockFields> TelemetryBlockCodec::decode(std::string_view block, s
     uint32_t seen = 0;
     for (uint64_t i = 0; i < h.fieldCount; ++i) {
         FieldHeader f;
-        if (!readFieldHeader(r, &f, &seen, error))
+        if (!readFieldHeader(r, h.version, &f, &seen, error))
             return std::nullopt;
         Reader payload(f.payload);
         // Times are read for every field: a later one may share them.

@@ -10,7 +10,7 @@ const std::vector<DjiDroneModel> &djiDroneModels()
     // "Enumeration Values of Aircraft" and "of Camera" and the WPML common elements. Speeds and
     // limits from the aircraft's published specifications (waypoint flight: 15 m/s; M300/M350
     // altitude limit up to 1500 m, Mavic 3 Enterprise series up to 500 m above take-off). Where
-    // Sortie has no published figure (the Matrice 30 and Matrice 3D series, the Mavic 3M), the
+    // Sortie has no published figure (the Matrice 30, 3D and 4 series, the Mavic 3M), the
     // limits checked are the Mavic 3 Enterprise's, the lower ones: a route they pass flies on those
     // aircraft. realTimeFollowSurface: the M3E/M3T/M3M only; startActionGroup: the M30, M3E and M3D
     // series (WPML's "Product Support").
@@ -40,6 +40,12 @@ const std::vector<DjiDroneModel> &djiDroneModels()
             mavicClass("m3m", "DJI Mavic 3 Multispectral", 77, 2, camera("m3m-camera", "Mavic 3M camera", 68), true, true),
             mavicClass("m3d", "DJI Matrice 3D", 91, 0, camera("m3d-camera", "Matrice 3D camera", 80), false, true),
             mavicClass("m3td", "DJI Matrice 3TD", 91, 1, camera("m3td-camera", "Matrice 3TD camera", 81), false, true),
+            // The Matrice 4 series: WPML's product-support lists do not name it for startActionGroup
+            // or real-time terrain following, so neither is written for it.
+            mavicClass("m4e", "DJI Matrice 4E", 99, 0, camera("m4e-camera", "Matrice 4E camera", 88), false, false),
+            mavicClass("m4t", "DJI Matrice 4T", 99, 1, camera("m4t-camera", "Matrice 4T camera", 89), false, false),
+            mavicClass("m4d", "DJI Matrice 4D", 100, 0, camera("m4d-camera", "Matrice 4D camera", 98), false, false),
+            mavicClass("m4td", "DJI Matrice 4TD", 100, 1, camera("m4td-camera", "Matrice 4TD camera", 99), false, false),
         };
     }();
     return models;
