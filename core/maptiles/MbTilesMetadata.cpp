@@ -85,8 +85,8 @@ QList<QPair<QString, QString>> MbTilesMetadata::toPairs() const
     if (maxZoom)
         add("maxzoom", QString::number(*maxZoom));
     if (bounds)
-        add("bounds", QStringLiteral("%1,%2,%3,%4").arg(bounds->west, 0, 'f', 6).arg(bounds->south, 0, 'f', 6)
-                          .arg(bounds->east, 0, 'f', 6).arg(bounds->north, 0, 'f', 6));
+        add("bounds", QStringLiteral("%1,%2,%3,%4").arg(bounds->west, 0, 'g', 17).arg(bounds->south, 0, 'g', 17)
+                          .arg(bounds->east, 0, 'g', 17).arg(bounds->north, 0, 'g', 17));
     pairs.append(others);
     return pairs;
 }

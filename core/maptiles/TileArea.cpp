@@ -172,7 +172,10 @@ QList<TileSpan> TileArea::spans(int zoom) const
                 u0 = uAt(std::max(top, lo));
                 u1 = uAt(std::min(bottom, hi));
             }
-            columns.push_back(columnsOf(std::min(u0, u1) * n, std::max(u0, u1) * n));
+            const double from = std::min(u0, u1) * n, to = std::max(u0, u1) * n;
+            if (to - from < kTouch && std::abs(from - std::round(from)) < kTouch)
+                continue; // along a column's edge: the tiles on the area's side come from the crossings
+            columns.push_back(columnsOf(from, to));
         }
         // Between crossings of the row's middle line the tiles lie inside the area.
         std::sort(crossings.begin(), crossings.end());
