@@ -239,7 +239,8 @@ void TilePrefetch::replyFinished(QNetworkReply *reply)
             fail(tile, why);
     } else {
         // No answer: a timeout, a refused or dropped connection. The server may be back soon.
-        retryLater(pending, reply->errorString(), std::nullopt);
+        const bool timedOut = reply->error() == QNetworkReply::OperationCanceledError;
+        retryLater(pending, timedOut ? tr("no answer within %1 s").arg(m_limits.timeoutMs / 1000.0) : reply->errorString(), std::nullopt);
     }
     pump();
 }
