@@ -50,7 +50,12 @@ OfflineMaps::OfflineMaps(QSettings *storage, QObject *parent)
     }
 }
 
-OfflineMaps::~OfflineMaps() = default;
+OfflineMaps::~OfflineMaps()
+{
+    // A running download writes what arrived as it ends; nothing here should hear of it.
+    if (m_job)
+        m_job->disconnect(this);
+}
 
 void OfflineMaps::save(const char *key, const QVariant &value)
 {
