@@ -4,13 +4,18 @@
 #include "FaultyTileServer.h"
 #include "MbTilesFile.h"
 #include "OfflineMaps.h"
+#include "QuickScene.h"
 #include "XyzTileSource.h"
+
+#include <QQmlEngineExtensionPlugin>
 
 #include <QSettings>
 #include <QSignalSpy>
 #include <QStandardItemModel>
 #include <QTemporaryDir>
 #include <QTest>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
 
 using namespace sortie;
 using sortie::test::FaultyTileServer;
@@ -51,6 +56,8 @@ class TestOfflineMaps : public QObject
     Q_OBJECT
 
 private slots:
+    void initTestCase() { sortie::test::useSoftwareRendering(); }
+
     void cacheOnlyMakesNoRequest()
     {
         FaultyTileServer server;
@@ -127,6 +134,53 @@ private slots:
         QCOMPARE(again.packFile(), maps.packFile());
         QCOMPARE(again.tileCount(), maps.tileCount());
         QCOMPARE(again.attribution(), QStringLiteral("© Test"));
+    }
+
+    // The dialog offscreen: the route's area, the estimate, Download, the progress bar and its text.
+    void dialogDrivesTheController()
+    {
+        FaultyTileServer server;
+        QVERIFY(server.listen());
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        maptiles::OfflineMaps maps(&settings);
+        maps.setUrlTemplate(server.urlTemplate());
+        maps.setPackFile(dir.filePath(QStringLiteral("dialog.mbtiles")));
+        maps.setMinimumZoom(9);
+        maps.setMaximumZoom(12);
+        QStandardItemModel route;
+        route.setItemRoleNames({{Qt::UserRole, "latitude"}, {Qt::UserRole + 1, "longitude"}});
+        auto *item = new QStandardItem;
+        item->setData(56.95, Qt::UserRole);
+        item->setData(24.1, Qt::UserRole + 1);
+        route.appendRow(item);
+        sortie::test::QuickScene scene(R"(
+            import QtQuick
+            import Sortie.Ui
+            Item {
+                required property OfflineMaps maps
+                required property AbstractItemModel route
+                MapView { id: map; objectName: "map"; anchors.fill: parent }
+                OfflineMapsDialog { objectName: "dialog"; offlineMaps: maps; routeModel: route; map: map }
+            })", QSize(900, 800), {{QStringLiteral("maps"), QVariant::fromValue<QObject *>(&maps)},
+                                   {QStringLiteral("route"), QVariant::fromValue<QObject *>(&route)}});
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        QObject *dialog = scene.find(QStringLiteral("dialog"));
+        QVERIFY(dialog);
+        QMetaObject::invokeMethod(dialog, "open");
+        QTRY_VERIFY(dialog->property("opened").toBool());
+        QObject *start = scene.find(QStringLiteral("startButton"));
+        QVERIFY(start);
+        QVERIFY(!start->property("enabled").toBool()); // no area yet
+        QMetaObject::invokeMethod(scene.find(QStringLiteral("routeAreaButton")), "clicked");
+        QCOMPARE(scene.find(QStringLiteral("estimateLabel"))->property("text").toString(), maps.estimateText());
+        QVERIFY(maps.tileCount() > 0);
+        QVERIFY(start->property("enabled").toBool());
+        QMetaObject::invokeMethod(start, "clicked");
+        QTRY_VERIFY_WITH_TIMEOUT(!maps.running(), 30000);
+        QCOMPARE(scene.find(QStringLiteral("prefetchProgress"))->property("value").toDouble(), 1.0);
+        QVERIFY(scene.find(QStringLiteral("progressLabel"))->property("text").toString().endsWith(QStringLiteral("done")));
+        QCOMPARE(server.requests(), int(maps.tileCount()));
     }
 };
 
