@@ -251,8 +251,10 @@ void TilePrefetch::retryLater(const Pending &pending, const QString &why, std::o
         fail(pending.tile, tr("%1 (after %2 attempts)").arg(why).arg(pending.attempt));
         return;
     }
-    double delayMs = retryAfter ? *retryAfter * 1000.0 : m_limits.firstRetryDelayMs * std::pow(2.0, pending.attempt - 1);
-    delayMs = std::min<double>(delayMs, m_limits.longestRetryDelayMs);
+    // The server's Retry-After is honoured as given (up to an hour); our own back-off doubles to a cap.
+    const double delayMs = retryAfter ? std::min(*retryAfter * 1000.0, 3600.0 * 1000.0)
+                                      : std::min<double>(m_limits.firstRetryDelayMs * std::pow(2.0, pending.attempt - 1),
+                                                         m_limits.longestRetryDelayMs);
     if (retryAfter) {
         // The server asked everyone to wait: hold every request, not just this tile's.
         const QDeadlineTimer hold{qint64(delayMs)};

@@ -141,8 +141,12 @@ void XyzTileSource::requestTile(const TileKey &key)
     if (!m_pack->isValid() && !m_pack->file().isEmpty() && m_nextPackCheck.hasExpired()) {
         // The pack may have been written since it was set (a download just made it).
         m_nextPackCheck.setRemainingTime(kPackCheckMs);
-        if (QFileInfo::exists(m_pack->file()))
+        if (QFileInfo::exists(m_pack->file())) {
             m_pack->reopen();
+            // Tiles that failed before the pack was there are asked for again (after this request).
+            if (m_pack->isValid())
+                QMetaObject::invokeMethod(this, &XyzTileSource::invalidated, Qt::QueuedConnection);
+        }
     }
     if (m_pack->isValid()) {
         // The offline pack first: what was taken offline never costs a request.
