@@ -8,6 +8,7 @@
 #include "ElevationService.h"
 #include "FleetRoutes.h"
 #include "MissionController.h"
+#include "OfflineMaps.h"
 #include "ProximityMonitor.h"
 #include "RecordingSettings.h"
 #include "ReplayController.h"
@@ -40,6 +41,7 @@ QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settin
             {QStringLiteral("recovery"), QVariant::fromValue<QObject *>(graph.recovery())},
             {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())},
             {QStringLiteral("traffic"), QVariant::fromValue<QObject *>(&graph.traffic())},
+            {QStringLiteral("offlineMaps"), QVariant::fromValue<QObject *>(&graph.offlineMaps())},
             {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())},
             {QStringLiteral("proximity"), QVariant::fromValue<QObject *>(graph.proximity())},
             {QStringLiteral("deconfliction"), QVariant::fromValue<QObject *>(graph.deconfliction())}};

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "MbTilesFile.h"
 #include "TileSource.h"
 
 #include <QList>
@@ -8,8 +9,8 @@
 namespace sortie::ui {
 
 // Tiles from an MBTiles file (an SQLite database of raster tiles) for work without a network.
-// The file is opened read-only; its metadata gives the name, attribution and zoom range.
-// Rows in MBTiles count from the south (TMS), which this class hides.
+// The file is opened read-only (maptiles::MbTilesFile, the one the prefetch job writes); its
+// metadata gives the name, attribution and zoom range.
 class MbTilesTileSource : public TileSource
 {
     Q_OBJECT
@@ -24,7 +25,9 @@ public:
     QString file() const { return m_file; }
     // Accepts a path or a file:// URL.
     void setFile(const QString &file);
-    bool isValid() const { return !m_connection.isEmpty(); }
+    bool isValid() const { return m_pack.isOpen(); }
+    // Opens the same file again (it may have been created or filled since).
+    void reopen();
 
     void requestTile(const TileKey &key) override;
     QList<TileKey> cancelPending() override;
@@ -33,13 +36,11 @@ signals:
     void fileChanged();
 
 private:
-    bool open(const QString &path, QString *error);
-    void close();
     void readMetadata();
     void serveQueue();
 
     QString m_file;
-    QString m_connection; // QSqlDatabase connection name while open
+    maptiles::MbTilesFile m_pack;
     QList<TileKey> m_queue;
     bool m_serveScheduled = false;
 };

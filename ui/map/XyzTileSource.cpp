@@ -1,6 +1,10 @@
 #include "XyzTileSource.h"
 
+#include "MbTilesTileSource.h"
+#include "TilePrefetch.h"
+
 #include <QCoreApplication>
+#include <QFileInfo>
 #include <QLoggingCategory>
 #include <QNetworkAccessManager>
 #include <QNetworkDiskCache>
@@ -16,19 +20,23 @@ namespace {
 constexpr auto kModeProperty = "sortieCacheOnly";
 constexpr qint64 kDiskCacheBytes = 512ll * 1024 * 1024;
 constexpr int kTransferTimeoutMs = 10000;
+constexpr int kPackCheckMs = 5000;
 } // namespace
 
 XyzTileSource::XyzTileSource(QObject *parent)
     : TileSource(parent)
     , m_network(new QNetworkAccessManager(this))
     , m_diskCache(new QNetworkDiskCache(this))
+    , m_pack(new MbTilesTileSource(this))
 {
+    connect(m_pack, &TileSource::tileReady, this, &XyzTileSource::packTileReady);
+    connect(m_pack, &TileSource::tileFailed, this, [this](const TileKey &key) { packTileFailed(key); });
     setInfo(tr("Web tiles"), {}, 0, 19);
     m_diskCache->setMaximumCacheSize(kDiskCacheBytes);
     m_diskCache->setCacheDirectory(cacheDirectory());
     m_network->setCache(m_diskCache);
     connect(m_network, &QNetworkAccessManager::finished, this, &XyzTileSource::finished);
-    setReachable(false, validateTemplate(m_template));
+    setReachable(false, validateTemplate(urlTemplate()));
 }
 
 XyzTileSource::~XyzTileSource()
@@ -39,30 +47,15 @@ XyzTileSource::~XyzTileSource()
 
 QString XyzTileSource::validateTemplate(const QString &urlTemplate)
 {
-    if (urlTemplate.trimmed().isEmpty())
-        return tr("No tile URL template is set.");
-    QString sample = urlTemplate;
-    for (const char *field : {"{z}", "{x}", "{y}", "{-y}"})
-        sample.replace(QLatin1String(field), QLatin1String("0"));
-    sample.replace(QLatin1String("{s}"), QLatin1String("a"));
-    const QUrl url(sample, QUrl::StrictMode);
-    if (!url.isValid())
-        return tr("The tile URL template is not a valid URL: %1").arg(url.errorString());
-    const QString scheme = url.scheme().toLower();
-    if (scheme != QLatin1String("http") && scheme != QLatin1String("https") && scheme != QLatin1String("file"))
-        return tr("The tile URL template must start with http://, https:// or file://.");
-    const bool hasY = urlTemplate.contains(QLatin1String("{y}")) || urlTemplate.contains(QLatin1String("{-y}"));
-    if (!urlTemplate.contains(QLatin1String("{z}")) || !urlTemplate.contains(QLatin1String("{x}")) || !hasY)
-        return tr("The tile URL template needs {z}, {x} and {y} (or {-y}).");
-    return {};
+    return maptiles::TileUrlTemplate::validate(urlTemplate);
 }
 
 void XyzTileSource::setUrlTemplate(const QString &urlTemplate)
 {
-    if (urlTemplate == m_template)
+    if (urlTemplate == m_template.pattern())
         return;
-    m_template = urlTemplate;
-    const QString problem = validateTemplate(m_template);
+    m_template = maptiles::TileUrlTemplate(urlTemplate, m_template.subdomains());
+    const QString problem = m_template.problem();
     updateName();
     m_nextProbe = QDeadlineTimer(0);
     m_probing = false;
@@ -82,9 +75,9 @@ void XyzTileSource::updateName()
 
 void XyzTileSource::setSubdomains(const QString &subdomains)
 {
-    if (subdomains == m_subdomains)
+    if (subdomains == m_template.subdomains())
         return;
-    m_subdomains = subdomains;
+    m_template = maptiles::TileUrlTemplate(m_template.pattern(), subdomains);
     updateName();
     invalidateAll();
     emit urlTemplateChanged();
@@ -114,21 +107,75 @@ void XyzTileSource::setMaximumConcurrentRequests(int count)
 
 QUrl XyzTileSource::tileUrl(const TileKey &key) const
 {
-    if (!validateTemplate(m_template).isEmpty() || !key.isValid())
-        return {};
-    QString text = m_template;
-    text.replace(QLatin1String("{z}"), QString::number(key.z));
-    text.replace(QLatin1String("{x}"), QString::number(key.x));
-    text.replace(QLatin1String("{y}"), QString::number(key.y));
-    text.replace(QLatin1String("{-y}"), QString::number((1 << key.z) - 1 - key.y));
-    if (!m_subdomains.isEmpty())
-        text.replace(QLatin1String("{s}"), m_subdomains.at((key.x + key.y) % m_subdomains.size()));
-    return QUrl(text, QUrl::TolerantMode);
+    return m_template.url({key.z, key.x, key.y});
+}
+
+QString XyzTileSource::packFile() const
+{
+    return m_pack->file();
+}
+
+void XyzTileSource::setPackFile(const QString &file)
+{
+    if (file == m_pack->file())
+        return;
+    m_pack->setFile(file);
+    // The pack keeps the provider's attribution: shown when nobody set one.
+    if (attribution().isEmpty() && m_pack->isValid())
+        setAttribution(m_pack->attribution());
+    invalidateAll();
+    emit packChanged();
+}
+
+void XyzTileSource::setCacheOnly(bool cacheOnly)
+{
+    if (cacheOnly == m_cacheOnly)
+        return;
+    m_cacheOnly = cacheOnly;
+    invalidateAll();
+    emit packChanged();
 }
 
 void XyzTileSource::requestTile(const TileKey &key)
 {
-    const QString problem = validateTemplate(m_template);
+    if (!m_pack->isValid() && !m_pack->file().isEmpty() && m_nextPackCheck.hasExpired()) {
+        // The pack may have been written since it was set (a download just made it).
+        m_nextPackCheck.setRemainingTime(kPackCheckMs);
+        if (QFileInfo::exists(m_pack->file())) {
+            m_pack->reopen();
+            // Tiles that failed before the pack was there are asked for again (after this request).
+            if (m_pack->isValid())
+                QMetaObject::invokeMethod(this, &XyzTileSource::invalidated, Qt::QueuedConnection);
+        }
+    }
+    if (m_pack->isValid()) {
+        // The offline pack first: what was taken offline never costs a request.
+        m_packPending.insert(key);
+        m_pack->requestTile(key);
+        emit loadingCountChanged();
+        return;
+    }
+    queueForNetwork(key);
+}
+
+void XyzTileSource::packTileReady(const TileKey &key, const QImage &image)
+{
+    if (!m_packPending.remove(key))
+        return;
+    emit loadingCountChanged();
+    emit tileReady(key, image);
+}
+
+void XyzTileSource::packTileFailed(const TileKey &key)
+{
+    if (!m_packPending.remove(key))
+        return;
+    queueForNetwork(key);
+}
+
+void XyzTileSource::queueForNetwork(const TileKey &key)
+{
+    const QString problem = m_template.problem();
     if (!problem.isEmpty()) {
         QMetaObject::invokeMethod(this, [this, key, problem] { emit tileFailed(key, problem); }, Qt::QueuedConnection);
         return;
@@ -143,6 +190,10 @@ QList<TileKey> XyzTileSource::cancelPending()
 {
     QList<TileKey> cancelled;
     cancelled.swap(m_queue);
+    for (const TileKey &key : m_pack->cancelPending()) {
+        if (m_packPending.remove(key))
+            cancelled.append(key);
+    }
     if (!cancelled.isEmpty())
         emit loadingCountChanged();
     return cancelled;
@@ -152,7 +203,9 @@ void XyzTileSource::startNext()
 {
     while (!m_queue.isEmpty() && m_active.size() < m_maxConcurrent) {
         const TileKey key = m_queue.takeLast();
-        if (isReachable()) {
+        if (m_cacheOnly) {
+            start(key, Mode::CacheOnly); // never the network
+        } else if (isReachable()) {
             start(key, Mode::Network);
         } else if (!m_probing && m_nextProbe.hasExpired()) {
             // One request at a time finds out whether the server is back.
@@ -167,8 +220,7 @@ void XyzTileSource::startNext()
 void XyzTileSource::start(const TileKey &key, Mode mode)
 {
     QNetworkRequest request(tileUrl(key));
-    request.setHeader(QNetworkRequest::UserAgentHeader,
-                      QStringLiteral("Sortie/%1 (mission planner)").arg(QCoreApplication::applicationVersion()));
+    request.setHeader(QNetworkRequest::UserAgentHeader, maptiles::sortieUserAgent());
     request.setAttribute(QNetworkRequest::CacheLoadControlAttribute,
                          mode == Mode::CacheOnly ? QNetworkRequest::AlwaysCache : QNetworkRequest::PreferCache);
     request.setAttribute(QNetworkRequest::RedirectPolicyAttribute, QNetworkRequest::NoLessSafeRedirectPolicy);
@@ -200,6 +252,8 @@ void XyzTileSource::finished(QNetworkReply *reply)
             emit tileFailed(key, tr("Tile %1 is not an image.").arg(key.toString()));
         else
             emit tileReady(key, image.convertToFormat(QImage::Format_ARGB32_Premultiplied));
+    } else if (m_cacheOnly) {
+        emit tileFailed(key, tr("Tile %1 is neither in the offline pack nor in the cache (cache only: the network is not used).").arg(key.toString()));
     } else if (cacheOnly) {
         emit tileFailed(key, tr("Tile %1 is not in the cache and the tile server is unreachable.").arg(key.toString()));
     } else if (status.isValid() || isFile) {
@@ -229,6 +283,8 @@ void XyzTileSource::networkFailed(const TileKey &key, const QString &reason)
 void XyzTileSource::invalidateAll()
 {
     m_queue.clear();
+    m_pack->cancelPending();
+    m_packPending.clear();
     const auto replies = m_active.keys();
     m_active.clear();
     for (QNetworkReply *reply : replies)

@@ -22,6 +22,7 @@ ApplicationWindow {
     required property AutosaveRecovery recovery     // edits a previous run left unsaved; may be null
     required property RouteEndurance endurance      // will the battery last: the open route's endurance
     required property Traffic traffic               // manned traffic: ADS-B from a receiver and the server
+    required property OfflineMaps offlineMaps       // maps taken offline: the download and the cache-only setting
     required property FleetRoutes fleetRoutes       // every route given to a vehicle: drawn on both maps, listed beside them
     required property ProximityMonitor proximity    // closest-approach alerts in flight; null without vehicles
     required property RouteDeconfliction deconfliction  // the open route's 4D conflicts; null without vehicles
@@ -82,6 +83,22 @@ ApplicationWindow {
                 ToolTip.text: qsTr("Choose the map source (Ctrl+M)")
             }
             ToolButton {
+                objectName: "offlineMapsButton"
+                text: qsTr("Offline…")
+                onClicked: { offlineMapsDialog.active = true; offlineMapsDialog.item.open() }
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Download the web map of an area for work without a network")
+                Loader { // made when first opened
+                    id: offlineMapsDialog
+                    active: false
+                    sourceComponent: OfflineMapsDialog {
+                        offlineMaps: window.offlineMaps
+                        routeModel: window.missions.document.model
+                        map: window.activeMap
+                    }
+                }
+            }
+            ToolButton {
                 objectName: "logSettingsButton"
                 text: qsTr("Logs…")
                 onClicked: { logSettingsDialog.active = true; logSettingsDialog.item.open() }
@@ -134,6 +151,8 @@ ApplicationWindow {
             mapSource: window.appSettings.mapSource
             tileUrlTemplate: window.appSettings.tileUrlTemplate
             mbtilesFile: window.appSettings.mbtilesFile
+            tilePackFile: window.offlineMaps.packFile
+            tilesCacheOnly: window.offlineMaps.cacheOnly
         }
         TelemetryPage {
             id: telemetryPage
@@ -151,6 +170,8 @@ ApplicationWindow {
             mapSource: window.appSettings.mapSource
             tileUrlTemplate: window.appSettings.tileUrlTemplate
             mbtilesFile: window.appSettings.mbtilesFile
+            tilePackFile: window.offlineMaps.packFile
+            tilesCacheOnly: window.offlineMaps.cacheOnly
         }
     }
 
@@ -190,6 +211,11 @@ ApplicationWindow {
             window.showPage(1)
             Qt.callLater(() => missionPage.routeLayer.fitToMap(60))
         }
+    }
+    Binding { // the pack and the download follow the web source chosen in Map source
+        target: window.offlineMaps
+        property: "urlTemplate"
+        value: window.appSettings.tileUrlTemplate
     }
     MapSourceDialog {
         id: mapSourceDialog

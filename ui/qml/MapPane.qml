@@ -14,6 +14,8 @@ Item {
     property string mapSource: "offline"        // "offline", "xyz" or "mbtiles"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
+    property string tilePackFile: ""    // tiles taken offline for the web source (OfflineMaps)
+    property bool tilesCacheOnly: false // the web source never uses the network
     property bool dark: false
     default property alias layers: overlay.data
     readonly property real controlsTop: mapView.labelBandTop + 6
@@ -22,6 +24,8 @@ Item {
     XyzTileSource {
         id: webTiles
         urlTemplate: pane.mapSource === "xyz" ? pane.tileUrlTemplate : ""
+        packFile: pane.mapSource === "xyz" ? pane.tilePackFile : ""
+        cacheOnly: pane.tilesCacheOnly
     }
     MbTilesTileSource {
         id: fileTiles

@@ -25,6 +25,8 @@ Page {
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
+    property string tilePackFile: ""    // the web source's offline pack (OfflineMaps.packFile)
+    property bool tilesCacheOnly: false // the web source never uses the network
     property bool dark: false
     required property ElevationService elevation    // the client's ElevationService, for the terrain profile
     required property RouteEndurance endurance      // will the battery last: figures, changes, point of no return
@@ -66,6 +68,8 @@ Page {
             mapSource: page.mapSource
             tileUrlTemplate: page.tileUrlTemplate
             mbtilesFile: page.mbtilesFile
+            tilePackFile: page.tilePackFile
+            tilesCacheOnly: page.tilesCacheOnly
             dark: page.dark
             FleetRoutesLayer {
                 // The other vehicles' routes, in their colours; the open one is the editor's (hideOpen).

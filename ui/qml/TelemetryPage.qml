@@ -32,6 +32,8 @@ Page {
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
+    property string tilePackFile: ""    // the web source's offline pack (OfflineMaps.packFile)
+    property bool tilesCacheOnly: false // the web source never uses the network
     property bool dark: false
     readonly property alias advisory: advisory
 
@@ -142,6 +144,8 @@ Page {
                 mapSource: page.mapSource
                 tileUrlTemplate: page.tileUrlTemplate
                 mbtilesFile: page.mbtilesFile
+                tilePackFile: page.tilePackFile
+                tilesCacheOnly: page.tilesCacheOnly
                 dark: page.dark
                 FleetRoutesLayer {
                     objectName: "flyFleetRoutesLayer"

@@ -24,6 +24,7 @@
 #include "ProximityMonitor.h"
 #include "RouteDeconfliction.h"
 #include "Traffic.h"
+#include "OfflineMaps.h"
 #include "TrafficPicture.h"
 #include "ValidationIssueModel.h"
 #include "Vehicle.h"
@@ -169,6 +170,14 @@ struct TrafficForeign
     Q_GADGET
     QML_FOREIGN(sortie::traffic::Traffic)
     QML_NAMED_ELEMENT(Traffic)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+// Maps taken offline (core/maptiles): the Offline maps dialog's controller, made by the client graph.
+struct OfflineMapsForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::maptiles::OfflineMaps)
+    QML_NAMED_ELEMENT(OfflineMaps)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 struct RouteDeconflictionForeign

@@ -25,6 +25,7 @@
 #include "SbsFeed.h"
 #include "ServerHistoryRequest.h"
 #include "Traffic.h"
+#include "OfflineMaps.h"
 #include "VehicleFleet.h"
 
 #include <QLoggingCategory>
@@ -79,6 +80,7 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
 
     // Manned traffic: the receiver's feed (the option, else the setting) and the server's list.
     m_traffic = std::make_unique<traffic::Traffic>(storage, m_hciClient.get(), options.sbsAddress);
+    m_offlineMaps = std::make_unique<maptiles::OfflineMaps>(storage);
     // Closest-approach alerts: into the fleet's command log, which the flight recorder follows.
     if (m_fleet)
         m_proximity = std::make_unique<deconfliction::ProximityMonitor>(m_fleet.get(), m_traffic->picture());
@@ -128,6 +130,7 @@ ClientGraph::~ClientGraph()
     m_recovery.reset();
     m_proximity.reset();
     m_deconfliction.reset();
+    m_offlineMaps.reset();
     m_traffic.reset();
     m_fleetRoutes.reset();
     m_fleet.reset();

@@ -34,6 +34,9 @@ class RouteEndurance;
 namespace sortie::traffic {
 class Traffic;
 } // namespace sortie::traffic
+namespace sortie::maptiles {
+class OfflineMaps;
+} // namespace sortie::maptiles
 
 namespace sortie::deconfliction {
 class ProximityMonitor;
@@ -88,6 +91,8 @@ public:
     endurance::RouteEndurance &endurance() { return *m_endurance; }
     // Manned traffic: the picture, the receiver's feed and the server's ADS-B list.
     traffic::Traffic &traffic() { return *m_traffic; }
+    // Maps taken offline: the area, the download into an MBTiles pack, cache-only (docs/offline-maps.md).
+    maptiles::OfflineMaps &offlineMaps() { return *m_offlineMaps; }
     // In-flight closest-approach alerts between the fleet's vehicles and against the traffic;
     // nullptr without vehicles.
     deconfliction::ProximityMonitor *proximity() { return m_proximity.get(); }
@@ -114,6 +119,7 @@ private:
     std::unique_ptr<endurance::RouteEndurance> m_endurance;
     std::unique_ptr<VehicleFleet> m_fleet;
     std::unique_ptr<traffic::Traffic> m_traffic;
+    std::unique_ptr<maptiles::OfflineMaps> m_offlineMaps;
     std::unique_ptr<FleetRoutes> m_fleetRoutes;
     std::unique_ptr<deconfliction::RouteDeconfliction> m_deconfliction;
     std::unique_ptr<deconfliction::ProximityMonitor> m_proximity;

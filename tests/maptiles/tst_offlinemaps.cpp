@@ -1,0 +1,188 @@
+// The map reading a pack: the web source serves the pack's tiles without a request, and in
+// cache-only mode makes no request at all (the server counts); the Offline maps controller takes
+// the open route's area, estimates, downloads and reports progress.
+#include "FaultyTileServer.h"
+#include "MbTilesFile.h"
+#include "OfflineMaps.h"
+#include "QuickScene.h"
+#include "XyzTileSource.h"
+
+#include <QQmlEngineExtensionPlugin>
+
+#include <QSettings>
+#include <QSignalSpy>
+#include <QStandardItemModel>
+#include <QTemporaryDir>
+#include <QTest>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+using namespace sortie;
+using sortie::test::FaultyTileServer;
+
+namespace {
+std::pair<QImage, QString> fetch(ui::TileSource &source, const ui::TileKey &key)
+{
+    QSignalSpy ready(&source, &ui::TileSource::tileReady);
+    QSignalSpy failed(&source, &ui::TileSource::tileFailed);
+    source.requestTile(key);
+    for (int i = 0; i < 200 && ready.isEmpty() && failed.isEmpty(); ++i)
+        QTest::qWait(25);
+    for (const auto &args : ready)
+        if (args.at(0).value<ui::TileKey>() == key)
+            return {args.at(1).value<QImage>(), {}};
+    for (const auto &args : failed)
+        if (args.at(0).value<ui::TileKey>() == key)
+            return {{}, args.at(1).toString()};
+    return {{}, QStringLiteral("no answer")};
+}
+
+void writePack(const QString &path, const QList<maptiles::TileId> &tiles)
+{
+    maptiles::MbTilesFile file;
+    QVERIFY(file.open(path, maptiles::MbTilesFile::Mode::ReadWrite, nullptr));
+    QList<maptiles::MbTilesFile::Tile> rows;
+    for (const auto &t : tiles)
+        rows.append({t, FaultyTileServer::pngFor(t.z, t.x, t.y)});
+    QVERIFY(file.writeTiles(rows, nullptr));
+    maptiles::MbTilesMetadata meta;
+    meta.attribution = QStringLiteral("© Pack contributors");
+    QVERIFY(file.writeMetadata(meta, nullptr));
+}
+} // namespace
+
+class TestOfflineMaps : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void initTestCase() { sortie::test::useSoftwareRendering(); }
+
+    void cacheOnlyMakesNoRequest()
+    {
+        FaultyTileServer server;
+        QVERIFY(server.listen());
+        QTemporaryDir dir;
+        const QString pack = dir.filePath(QStringLiteral("pack.mbtiles"));
+        writePack(pack, {{5, 17, 9}, {6, 35, 19}});
+        ui::XyzTileSource source;
+        source.setCacheDirectory(dir.filePath(QStringLiteral("cache")));
+        source.setCacheOnly(true);
+        source.setUrlTemplate(server.urlTemplate());
+        source.setPackFile(pack);
+        QCOMPARE(source.attribution(), QStringLiteral("© Pack contributors"));
+        const auto [image, error] = fetch(source, {5, 17, 9});
+        QVERIFY2(!image.isNull(), qPrintable(error));
+        QCOMPARE(image.pixelColor(3, 3), FaultyTileServer::colourFor(5, 17, 9));
+        const auto [missing, why] = fetch(source, {5, 18, 9});
+        QVERIFY(missing.isNull());
+        QVERIFY2(why.contains(QStringLiteral("cache only")), qPrintable(why));
+        QCOMPARE(server.requests(), 0);
+
+        // Online, the pack still saves the requests it can.
+        source.setCacheOnly(false);
+        QVERIFY(!fetch(source, {6, 35, 19}).first.isNull());
+        QCOMPARE(server.requests(), 0);
+        QVERIFY(!fetch(source, {6, 36, 19}).first.isNull());
+        QCOMPARE(server.requests(), 1);
+    }
+
+    void controllerDownloadsTheRouteArea()
+    {
+        FaultyTileServer server;
+        QVERIFY(server.listen());
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        maptiles::OfflineMaps maps(&settings);
+        QCOMPARE(maps.tileCount(), -1.0);
+        QVERIFY(!maps.canStart());
+        maps.setUrlTemplate(server.urlTemplate());
+        QVERIFY2(maps.packFile().endsWith(QStringLiteral("/offline-maps/127.0.0.1.mbtiles")), qPrintable(maps.packFile()));
+        maps.setPackFile(dir.filePath(QStringLiteral("route.mbtiles")));
+        maps.setMinimumZoom(10);
+        maps.setMaximumZoom(13);
+        maps.setMarginMetres(300);
+        maps.setAttribution(QStringLiteral("© Test"));
+
+        QStandardItemModel route;
+        route.setItemRoleNames({{Qt::UserRole, "latitude"}, {Qt::UserRole + 1, "longitude"}});
+        for (const auto &[lat, lon] : {std::pair{56.95, 24.10}, {56.96, 24.12}, {56.94, 24.13}}) {
+            auto *item = new QStandardItem;
+            item->setData(lat, Qt::UserRole);
+            item->setData(lon, Qt::UserRole + 1);
+            route.appendRow(item);
+        }
+        QVERIFY(maps.useRouteArea(&route));
+        QVERIFY(maps.areaText().contains(QStringLiteral("300 m")));
+        const maptiles::TileArea expected = maptiles::TileArea::rectangle(maptiles::GeoBounds{56.94, 24.10, 56.96, 24.13}.grown(300));
+        QCOMPARE(maps.tileCount(), double(expected.tileCount(10, 13)));
+        QCOMPARE(maps.estimatedBytes(), maps.tileCount() * maptiles::OfflineMaps::kAssumedTileBytes);
+        QVERIFY2(maps.estimateText().contains(QStringLiteral("assuming")), qPrintable(maps.estimateText()));
+        QVERIFY(maps.canStart());
+        maps.start();
+        QVERIFY(maps.running());
+        QTRY_VERIFY_WITH_TIMEOUT(!maps.running(), 30000);
+        QCOMPARE(maps.progress(), 1.0);
+        QVERIFY2(maps.progressText().endsWith(QStringLiteral("done")), qPrintable(maps.progressText()));
+        QCOMPARE(server.requests(), int(maps.tileCount()));
+        // The estimate now uses what a tile of this pack weighs.
+        QVERIFY2(maps.estimateText().contains(QStringLiteral("this pack's mean")), qPrintable(maps.estimateText()));
+
+        // A restart remembers the choices and the area.
+        maptiles::OfflineMaps again(&settings);
+        QCOMPARE(again.minimumZoom(), 10);
+        QCOMPARE(again.packFile(), maps.packFile());
+        QCOMPARE(again.tileCount(), maps.tileCount());
+        QCOMPARE(again.attribution(), QStringLiteral("© Test"));
+    }
+
+    // The dialog offscreen: the route's area, the estimate, Download, the progress bar and its text.
+    void dialogDrivesTheController()
+    {
+        FaultyTileServer server;
+        QVERIFY(server.listen());
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        maptiles::OfflineMaps maps(&settings);
+        maps.setUrlTemplate(server.urlTemplate());
+        maps.setPackFile(dir.filePath(QStringLiteral("dialog.mbtiles")));
+        maps.setMinimumZoom(9);
+        maps.setMaximumZoom(12);
+        QStandardItemModel route;
+        route.setItemRoleNames({{Qt::UserRole, "latitude"}, {Qt::UserRole + 1, "longitude"}});
+        auto *item = new QStandardItem;
+        item->setData(56.95, Qt::UserRole);
+        item->setData(24.1, Qt::UserRole + 1);
+        route.appendRow(item);
+        sortie::test::QuickScene scene(R"(
+            import QtQuick
+            import Sortie.Ui
+            Item {
+                required property OfflineMaps maps
+                required property AbstractItemModel route
+                MapView { id: map; objectName: "map"; anchors.fill: parent }
+                OfflineMapsDialog { objectName: "dialog"; offlineMaps: maps; routeModel: route; map: map }
+            })", QSize(900, 800), {{QStringLiteral("maps"), QVariant::fromValue<QObject *>(&maps)},
+                                   {QStringLiteral("route"), QVariant::fromValue<QObject *>(&route)}});
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        QObject *dialog = scene.find(QStringLiteral("dialog"));
+        QVERIFY(dialog);
+        QMetaObject::invokeMethod(dialog, "open");
+        QTRY_VERIFY(dialog->property("opened").toBool());
+        QObject *start = scene.find(QStringLiteral("startButton"));
+        QVERIFY(start);
+        QVERIFY(!start->property("enabled").toBool()); // no area yet
+        QMetaObject::invokeMethod(scene.find(QStringLiteral("routeAreaButton")), "clicked");
+        QCOMPARE(scene.find(QStringLiteral("estimateLabel"))->property("text").toString(), maps.estimateText());
+        QVERIFY(maps.tileCount() > 0);
+        QVERIFY(start->property("enabled").toBool());
+        QMetaObject::invokeMethod(start, "clicked");
+        QTRY_VERIFY_WITH_TIMEOUT(!maps.running(), 30000);
+        QCOMPARE(scene.find(QStringLiteral("prefetchProgress"))->property("value").toDouble(), 1.0);
+        QVERIFY(scene.find(QStringLiteral("progressLabel"))->property("text").toString().endsWith(QStringLiteral("done")));
+        QCOMPARE(server.requests(), int(maps.tileCount()));
+    }
+};
+
+QTEST_MAIN(TestOfflineMaps)
+#include "tst_offlinemaps.moc"

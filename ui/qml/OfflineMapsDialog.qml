@@ -1,0 +1,166 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Layouts
+import Sortie.Ui
+
+// Takes the web map offline: the area (the open route with a margin, or the map's view), the zoom
+// range, the tile count and size before starting, the download with its progress, and whether the
+// map reads the pack only. OfflineMaps (core/maptiles) decides and downloads; this is a view.
+Dialog {
+    id: dialog
+    required property OfflineMaps offlineMaps
+    required property AbstractItemModel routeModel   // the open route (latitude/longitude, polygon roles)
+    required property MapView map                    // the map whose view can be the area
+
+    objectName: "offlineMapsDialog"
+    title: qsTr("Offline maps")
+    modal: true
+    parent: Overlay.overlay
+    anchors.centerIn: parent
+    width: Math.min(parent ? parent.width - 80 : 600, 600)
+    standardButtons: Dialog.Close
+
+    onAboutToShow: {
+        minZoom.value = offlineMaps.minimumZoom
+        maxZoom.value = offlineMaps.maximumZoom
+        margin.value = offlineMaps.marginMetres
+        packField.text = offlineMaps.packFile
+        attributionField.text = offlineMaps.attribution
+    }
+
+    ColumnLayout {
+        anchors.fill: parent
+        spacing: 6
+        Label {
+            Layout.fillWidth: true
+            wrapMode: Text.Wrap
+            text: dialog.offlineMaps.urlTemplate.length > 0
+                  ? qsTr("From %1").arg(dialog.offlineMaps.urlTemplate)
+                  : qsTr("Choose a web tile server in Map source first.")
+        }
+        RowLayout {
+            Button {
+                objectName: "routeAreaButton"
+                text: qsTr("The open route")
+                onClicked: dialog.offlineMaps.useRouteArea(dialog.routeModel)
+            }
+            Label { text: qsTr("and") }
+            SpinBox {
+                id: margin
+                objectName: "marginBox"
+                from: 0; to: 50000; stepSize: 100
+                editable: true
+                onValueModified: dialog.offlineMaps.marginMetres = value
+            }
+            Label { text: qsTr("m around it") }
+            Button {
+                objectName: "viewAreaButton"
+                text: qsTr("The map's view")
+                onClicked: dialog.offlineMaps.useViewArea(dialog.map.toCoordinate(Qt.point(0, dialog.map.height)),
+                                                         dialog.map.toCoordinate(Qt.point(dialog.map.width, 0)))
+            }
+        }
+        Label {
+            objectName: "areaLabel"
+            Layout.fillWidth: true
+            wrapMode: Text.Wrap
+            text: dialog.offlineMaps.areaText
+        }
+        RowLayout {
+            Label { text: qsTr("Zoom from") }
+            SpinBox {
+                id: minZoom
+                objectName: "minZoomBox"
+                from: 0; to: 22
+                onValueModified: dialog.offlineMaps.minimumZoom = value
+            }
+            Label { text: qsTr("to") }
+            SpinBox {
+                id: maxZoom
+                objectName: "maxZoomBox"
+                from: 0; to: 22
+                onValueModified: dialog.offlineMaps.maximumZoom = value
+            }
+        }
+        Label {
+            objectName: "estimateLabel"
+            Layout.fillWidth: true
+            wrapMode: Text.Wrap
+            text: dialog.offlineMaps.estimateText
+        }
+        GridLayout {
+            columns: 2
+            Layout.fillWidth: true
+            Label { text: qsTr("Pack file") }
+            TextField {
+                id: packField
+                objectName: "packField"
+                Layout.fillWidth: true
+                selectByMouse: true
+                onEditingFinished: dialog.offlineMaps.packFile = text
+            }
+            Label { text: qsTr("Attribution") }
+            TextField {
+                id: attributionField
+                objectName: "attributionField"
+                Layout.fillWidth: true
+                selectByMouse: true
+                placeholderText: qsTr("As the provider's usage policy asks, e.g. © OpenStreetMap contributors")
+                onEditingFinished: dialog.offlineMaps.attribution = text
+            }
+        }
+        CheckBox {
+            objectName: "cacheOnlyBox"
+            text: qsTr("Cache only: the map never uses the network (the pack, then the disk cache)")
+            checked: dialog.offlineMaps.cacheOnly
+            onToggled: dialog.offlineMaps.cacheOnly = checked
+        }
+        ProgressBar {
+            objectName: "prefetchProgress"
+            Layout.fillWidth: true
+            value: dialog.offlineMaps.progress
+        }
+        Label {
+            objectName: "progressLabel"
+            Layout.fillWidth: true
+            wrapMode: Text.Wrap
+            text: dialog.offlineMaps.progressText
+        }
+        Label {
+            objectName: "problemLabel"
+            Layout.fillWidth: true
+            wrapMode: Text.Wrap
+            color: "#c62828"
+            visible: text.length > 0
+            text: dialog.offlineMaps.problem
+        }
+        ListView {
+            objectName: "failureList"
+            Layout.fillWidth: true
+            Layout.preferredHeight: Math.min(contentHeight, 80)
+            clip: true
+            model: dialog.offlineMaps.failures
+            delegate: Label { required property string modelData; text: modelData; font.pixelSize: 11 }
+        }
+        RowLayout {
+            Button {
+                objectName: "startButton"
+                text: qsTr("Download")
+                enabled: dialog.offlineMaps.canStart
+                onClicked: dialog.offlineMaps.start()
+            }
+            Button {
+                objectName: "pauseButton"
+                text: dialog.offlineMaps.paused ? qsTr("Resume") : qsTr("Pause")
+                enabled: dialog.offlineMaps.running
+                onClicked: dialog.offlineMaps.paused ? dialog.offlineMaps.resume() : dialog.offlineMaps.pause()
+            }
+            Button {
+                objectName: "stopButton"
+                text: qsTr("Stop")
+                enabled: dialog.offlineMaps.running
+                onClicked: dialog.offlineMaps.stop()
+            }
+        }
+    }
+}
