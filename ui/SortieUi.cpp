@@ -42,6 +42,7 @@ QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settin
             {QStringLiteral("traffic"), QVariant::fromValue<QObject *>(&graph.traffic())},
             {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())},
             {QStringLiteral("proximity"), QVariant::fromValue<QObject *>(graph.proximity())},
+            {QStringLiteral("zoneAlerts"), QVariant::fromValue<QObject *>(graph.zoneAlerts())},
             {QStringLiteral("deconfliction"), QVariant::fromValue<QObject *>(graph.deconfliction())}};
 }
 

@@ -271,7 +271,7 @@ private slots:
         QCOMPARE(lastAlert(), QStringLiteral("fence breach: entered the exclusion zone 'upper box'; holding"));
         QVERIFY(m_vehicle->altitudeAgl() > 39);
         QCOMPARE(m_sim->model().state().mode, sim::FlightModel::Mode::Hold);
-        QCOMPARE(m_sim->model().state().groundSpeed, 0.0); // hovering where it stopped
+        QTRY_COMPARE(m_sim->model().state().groundSpeed, 0.0); // hovering where it stopped
         QCOMPARE(alerts(), 1);
     }
 };
