@@ -88,12 +88,12 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
     if (m_fleet) {
         m_zoneAlerts = std::make_unique<airspace::ZoneAlertMonitor>(m_fleet.get(), ground);
         m_zoneAlerts->setZones(std::make_shared<const airspace::ZoneSet>());
-        for (MissionUploader *uploader : {m_fleet->uploader(), m_missions->preparation()->uploader()})
-            QObject::connect(uploader, &MissionUploader::uploaded, m_zoneAlerts.get(), [this, uploader](vehicle::Vehicle *v) {
-                const mission::Route &route = uploader->route();
-                m_zoneAlerts->setVehicleZones(v->id(), airspace::zonesOfFence(route.fence, QStringLiteral("route fence"),
-                                                                              airspace::ZoneSource::VehicleFence, route.settings.name));
-            });
+        MissionUploader *uploader = m_missions->preparation()->uploader();
+        QObject::connect(uploader, &MissionUploader::uploaded, m_zoneAlerts.get(), [this, uploader](vehicle::Vehicle *v) {
+            const mission::Route &route = uploader->route();
+            m_zoneAlerts->setVehicleZones(v->id(), airspace::zonesOfFence(route.fence, QStringLiteral("route fence"),
+                                                                          airspace::ZoneSource::VehicleFence, route.settings.name));
+        });
     }
 
     if (!options.autosaveDirectory.isEmpty()) {
