@@ -9,6 +9,7 @@
 #include "FleetRoutes.h"
 #include "MissionController.h"
 #include "ProximityMonitor.h"
+#include "ZoneAlertMonitor.h"
 #include "RecordingSettings.h"
 #include "ReplayController.h"
 #include "RouteDeconfliction.h"
