@@ -14,6 +14,19 @@ Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
 
 using namespace sortie;
 
+namespace {
+// A Repeater's rows are visual children, not QObject children: looked for through childItems().
+QQuickItem *findItem(QQuickItem *root, const QString &name)
+{
+    if (!root || root->objectName() == name)
+        return root;
+    for (QQuickItem *child : root->childItems())
+        if (QQuickItem *found = findItem(child, name))
+            return found;
+    return nullptr;
+}
+} // namespace
+
 class TestZoneAlertBanner : public QObject
 {
     Q_OBJECT
@@ -54,7 +67,7 @@ private slots:
         m_client->fleet().goTo(0, beyond.latitude(), beyond.longitude());
 
         QTRY_VERIFY_WITH_TIMEOUT(banner->isVisible(), 30000);
-        auto *row = m_client->find<QObject>(QStringLiteral("zoneAlert"));
+        QQuickItem *row = findItem(banner, QStringLiteral("zoneAlert"));
         QVERIFY(row);
         const QString shown = row->property("text").toString();
         QVERIFY2(shown.startsWith(QStringLiteral("Airspace: %1 enters 'tower' in ").arg(v->name())), qPrintable(shown));
