@@ -265,6 +265,14 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(m_vehicle->missionCurrent() == 2, kFlightMs);
         QCOMPARE(m_vehicle->value(TelemetryField::FenceBreaches), 0.0);
         QCOMPARE(alerts(), 0);
+        // While it flies the mission, the fence is not replaced (as the mission is not).
+        std::optional<vci::VciResult> refused;
+        m_link->connection()->put(QStringLiteral("/fence"), profile::encodeFence({}), this, [&](const vci::VciResult &r) { refused = r; });
+        QTRY_VERIFY(refused);
+        QCOMPARE(refused->statusCode, 400);
+        QVERIFY2(refused->message.endsWith(QStringLiteral(": cannot replace the fence while flying the mission; pause first")),
+                 qPrintable(refused->message));
+        QCOMPARE(int(m_sim->fence().fence().items.size()), 1);
         // Climbing back into it: hold where the breach began.
         QTRY_COMPARE_WITH_TIMEOUT(m_vehicle->value(TelemetryField::FenceBreach), 1.0, kFlightMs);
         QTRY_COMPARE(m_vehicle->mode(), QStringLiteral("hold"));
