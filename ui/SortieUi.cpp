@@ -10,6 +10,7 @@
 #include "MissionController.h"
 #include "OfflineMaps.h"
 #include "ProximityMonitor.h"
+#include "ZoneAlertMonitor.h"
 #include "RecordingSettings.h"
 #include "ReplayController.h"
 #include "RouteDeconfliction.h"
@@ -44,6 +45,7 @@ QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settin
             {QStringLiteral("offlineMaps"), QVariant::fromValue<QObject *>(&graph.offlineMaps())},
             {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())},
             {QStringLiteral("proximity"), QVariant::fromValue<QObject *>(graph.proximity())},
+            {QStringLiteral("zoneAlerts"), QVariant::fromValue<QObject *>(graph.zoneAlerts())},
             {QStringLiteral("deconfliction"), QVariant::fromValue<QObject *>(graph.deconfliction())}};
 }
 

@@ -161,10 +161,14 @@ void MissionUploader::process()
     if (!link)
         return end(State::Failed, tr("Upload to %1 failed: the vehicle has no link.").arg(m_vehicleName), CommandResult::failure(tr("no link")));
     setState(State::Processing);
-    link->prepareMission(m_route, current([this](const CommandResult &result, const vehicle::PreparedMission &prepared) {
+    const bool keepsFence = link->capabilities().testFlag(VehicleLink::Fence);
+    link->prepareMissionWithFence(m_route, m_fence, current([this, keepsFence](const CommandResult &result, const vehicle::PreparedMission &prepared) {
         if (!result.ok)
             return end(State::Failed, tr("Not uploaded to %1: %2").arg(m_vehicleName, result.message), result);
         m_prepared = prepared;
+        // Said, not hidden: the route's fence stays on the ground for a vehicle that keeps none.
+        if (!keepsFence && (!m_route.fence.polygons.empty() || !m_route.fence.circles.empty()))
+            m_prepared.notices.append(tr("the route's fence is not sent: %1 keeps no fence (HCI)").arg(m_vehicleName));
         send();
     }));
 }

@@ -56,6 +56,10 @@ public:
     // rules other libraries add to it (terrain clearance), when the route is the open document.
     using Validator = std::function<mission::ValidationReport(const mission::Route &)>;
     void setValidator(Validator validator) { m_validator = std::move(validator); }
+    // What goes up beside the route to a vehicle that keeps a fence (VCI): the zones the client
+    // checks routes against and the breach action (return home by default). HCI vehicles keep none.
+    void setFenceSettings(vehicle::FenceSettings settings) { m_fence = std::move(settings); }
+    const vehicle::FenceSettings &fenceSettings() const { return m_fence; }
 
     State state() const { return m_state; }
     bool isBusy() const;
@@ -114,6 +118,7 @@ private:
     QPointer<vehicle::Vehicle> m_vehicle;
     QPointer<vehicle::CommandLog> m_log;
     Validator m_validator;
+    vehicle::FenceSettings m_fence;
     mission::Route m_route;
     UploadReview m_review;
     vehicle::PreparedMission m_prepared;

@@ -30,13 +30,15 @@ inline constexpr std::string_view kMission = "/mission";
 inline constexpr std::string_view kMissionProgress = "/mission/progress";
 inline constexpr std::string_view kParameters = "/parameters";
 inline constexpr std::string_view kParameterPrefix = "/parameters/";
+inline constexpr std::string_view kFence = "/fence";              // VciFence.h
+inline constexpr std::string_view kFenceStatus = "/fence/status"; // is the vehicle inside its fence
 
 // Sent at the vehicle's telemetry rate while subscribed.
 inline constexpr std::array<std::string_view, 6> kTelemetry = {kPosition, kAttitude, kSpeed, kBattery, kGps, kHome};
 // Sent when they change while subscribed (and once right after SUBSCRIBE).
-inline constexpr std::array<std::string_view, 4> kState = {kArmed, kMode, kMission, kMissionProgress};
+inline constexpr std::array<std::string_view, 6> kState = {kArmed, kMode, kMission, kMissionProgress, kFence, kFenceStatus};
 // Of those, the ones also repeated at least every kStatusRepeatMs, so a silent vehicle shows as stale.
-inline constexpr std::array<std::string_view, 3> kStatus = {kArmed, kMode, kMissionProgress};
+inline constexpr std::array<std::string_view, 4> kStatus = {kArmed, kMode, kMissionProgress, kFenceStatus};
 inline constexpr int kStatusRepeatMs = 1000;
 
 // The flight modes, as /state/mode names them.

@@ -22,6 +22,7 @@ constexpr std::array<FieldInfo, kTelemetryFieldCount> kFields = {{
     {"gpsFix", ""}, {"satellites", ""}, {"hdop", ""},
     {"homeLatitude", "deg"}, {"homeLongitude", "deg"}, {"homeAltitudeAmsl", "m"},
     {"armed", ""}, {"mode", ""}, {"missionState", ""}, {"missionCurrent", ""}, {"missionReached", ""}, {"missionCount", ""},
+    {"fenceBreach", ""}, {"fenceBreaches", ""},
 }};
 
 constexpr std::array<std::string_view, 8> kModes = {"unknown", "manual", "hold", "takeoff", "auto", "guided", "land", "return_home"};

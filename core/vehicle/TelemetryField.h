@@ -38,6 +38,8 @@ enum class TelemetryField : uint8_t {
     MissionCurrent,    // index of the waypoint being flown to, -1 for none
     MissionReached,    // waypoints reached so far
     MissionCount,      // waypoints in the mission on board
+    FenceBreach,       // 1 while the vehicle is outside its fence (VCI /fence/status), else 0
+    FenceBreaches,     // breaches since the fence was set
     Count_
 };
 

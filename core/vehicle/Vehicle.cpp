@@ -37,6 +37,11 @@ Vehicle::Vehicle(VehicleLink *link, QObject *parent, size_t historyCapacity)
         m_lastError = message;
         emit lastErrorChanged();
     });
+    // What the vehicle reports on its own (a fence breach) goes beside the commands, as an alert.
+    connect(link, &VehicleLink::alertReported, this, [this](const QString &text) {
+        if (m_commandLog)
+            m_commandLog->alert(name(), text);
+    });
     connect(link, &VehicleLink::identityChanged, this, [this](const VehicleIdentity &identity) {
         if (identity == m_identity)
             return;

@@ -49,6 +49,8 @@ class Vehicle : public QObject
     Q_PROPERTY(QString missionState READ missionState NOTIFY telemetryChanged)
     Q_PROPERTY(int missionCurrent READ missionCurrent NOTIFY telemetryChanged)
     Q_PROPERTY(int missionCount READ missionCount NOTIFY telemetryChanged)
+    // Outside its fence now (VCI /fence/status); false when it has no fence or does not say.
+    Q_PROPERTY(bool fenceBreached READ fenceBreached NOTIFY telemetryChanged)
     // The vehicle's parameters as its link reports them (VCI: /parameters; HCI: the vehicle profile's
     // VPT_* values), read after each connect; empty until then.
     Q_PROPERTY(QVariantMap parameters READ parameters NOTIFY parametersChanged)
@@ -94,6 +96,7 @@ public:
     QString missionState() const;
     int missionCurrent() const { return int(value(TelemetryField::MissionCurrent, -1)); }
     int missionCount() const { return int(value(TelemetryField::MissionCount, 0)); }
+    bool fenceBreached() const { return value(TelemetryField::FenceBreach, 0) != 0; }
 
     int notifyInterval() const { return m_notifyInterval; }
     void setNotifyInterval(int ms);

@@ -32,6 +32,7 @@ public:
         MissionDownload = 1 << 0, // the mission can be read back (an upload is then verified)
         Parameters = 1 << 1,
         GoTo = 1 << 2,
+        Fence = 1 << 3, // the vehicle keeps a fence sent with the mission and reports its breaches (VCI)
     };
     Q_DECLARE_FLAGS(Capabilities, Capability)
 
@@ -70,6 +71,13 @@ public:
     // part of it has a VCI form. Nothing is sent to the vehicle. MissionUploader is the one caller
     // that then uploads; it validates before and verifies after.
     virtual void prepareMission(const mission::Route &route, PrepareDone done) = 0;
+    // The same with the fence the vehicle should keep while flying it (a link with Fence puts it in
+    // the prepared mission, and uploadMission sends it first); the others prepare the route alone.
+    virtual void prepareMissionWithFence(const mission::Route &route, const FenceSettings &fence, PrepareDone done)
+    {
+        Q_UNUSED(fence);
+        prepareMission(route, std::move(done));
+    }
     // Sends a prepared mission to the vehicle, inside the vehicle's lock where the protocol has one
     // (HCI). `done` comes after the lock is released; ok means the vehicle (or its server) took it.
     virtual void uploadMission(const PreparedMission &mission, UploadObserver observer, Done done) = 0;
@@ -86,6 +94,9 @@ signals:
     // Something the operator should know about the link: a failed connection attempt, a lost line,
     // unreadable data. The link keeps trying; this is information, not an end.
     void errorOccurred(const QString &message);
+    // Something the vehicle itself reports that the operator must see at once (a fence breach, with
+    // what it did about it). The Vehicle puts it into the command log as an alert.
+    void alertReported(const QString &text);
 };
 
 } // namespace sortie::vehicle

@@ -8,6 +8,10 @@
 #include <memory>
 #include <vector>
 
+namespace sortie::airspace {
+class ZoneSet;
+}
+
 namespace sortie::vehicle {
 
 // Who a vehicle is, as its link reports it.
@@ -75,6 +79,18 @@ struct PreparedMission
     std::vector<MissionItem> items;
     QStringList notices;
     std::shared_ptr<const NativeMission> native;
+};
+
+// What a vehicle does when it breaks its fence: fly home and land, land where it is, or hover.
+enum class FenceBreachAction { Return, Land, Hold };
+
+// What goes up with a route to a vehicle that keeps a fence (VehicleLink::Fence): the route's own
+// fence (Route::fence) joined by the active zones of `zones` whose box meets the route's, and the
+// breach action. Links whose vehicle keeps none ignore it.
+struct FenceSettings
+{
+    std::shared_ptr<const airspace::ZoneSet> zones; // null: the route's own fence only
+    FenceBreachAction breachAction = FenceBreachAction::Return;
 };
 
 // The stages of an upload inside a link, for progress.

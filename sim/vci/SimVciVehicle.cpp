@@ -38,7 +38,8 @@ SimVciVehicle::SimVciVehicle(const SimVciOptions &options, QObject *parent)
     connect(&m_tick, &QTimer::timeout, this, &SimVciVehicle::tick);
     m_tick.start(kTickMs);
     for (std::string_view uri : profile::kState)
-        m_lastState[std::string(uri)] = *resource(std::string(uri));
+        if (uri != profile::kFence) // announced when PUT, not compared every tick (it may be large)
+            m_lastState[std::string(uri)] = *resource(std::string(uri));
 }
 
 void SimVciVehicle::tick()
@@ -46,6 +47,7 @@ void SimVciVehicle::tick()
     const double dt = double(m_clock.restart()) / 1000.0 * m_options.timeScale;
     m_model.tick(dt);
     m_simulatedSeconds += dt;
+    enforceFence();
     checkChanges();
 }
 
@@ -157,6 +159,13 @@ std::optional<json> SimVciVehicle::resource(const std::string &uri) const
     }
     if (is(uri, profile::kMissionProgress))
         return progress();
+    if (is(uri, profile::kFence)) {
+        json f = profile::encodeFence(m_fence.fence());
+        f["version"] = m_fence.version();
+        return f;
+    }
+    if (is(uri, profile::kFenceStatus))
+        return profile::encodeFenceStatus(m_fence.status(now()));
     if (is(uri, profile::kParameters))
         return parameters();
     if (uri.rfind(profile::kParameterPrefix, 0) == 0) {
@@ -258,11 +267,38 @@ SimVciReply SimVciVehicle::put(const std::string &uri, const vci::VciMessage &re
             m_missionAsSent = *waypoints;
         return refusedOrOk(refusal, *resource(std::string(profile::kMission)));
     }
+    if (is(uri, profile::kFence))
+        return putFence(body);
     if (uri.rfind(profile::kParameterPrefix, 0) == 0)
         return putParameter(uri.substr(profile::kParameterPrefix.size()), request);
     if (resource(uri))
         return SimVciReply::error(501, uri + " is read-only");
     return SimVciReply::error(501, "this vehicle has no resource " + uri);
+}
+
+SimVciReply SimVciVehicle::putFence(const json &body)
+{
+    std::string error;
+    auto fence = profile::decodeFence(body, &error);
+    if (!fence)
+        return SimVciReply::error(400, error);
+    if (m_model.state().mode == FlightModel::Mode::Auto)
+        return SimVciReply::error(400, "cannot replace the fence while flying the mission; pause first");
+    m_fence.set(std::move(*fence));
+    emit changed(QString::fromStdString(std::string(profile::kFence)));
+    return SimVciReply::ok(*resource(std::string(profile::kFence)));
+}
+
+void SimVciVehicle::enforceFence()
+{
+    const auto action = m_fence.check(m_model.state());
+    if (!action || m_model.state().mode == FlightModel::Mode::Land)
+        return; // already coming down: nothing is safer
+    switch (*action) {
+    case profile::BreachAction::Return: m_model.returnHome(); break;
+    case profile::BreachAction::Land: m_model.land(); break;
+    case profile::BreachAction::Hold: m_model.pause(); break;
+    }
 }
 
 SimVciReply SimVciVehicle::putParameter(const std::string &name, const vci::VciMessage &request)

@@ -3,6 +3,7 @@
 #include "VciProfile.h"
 
 #include "FlightModel.h"
+#include "SimFence.h"
 #include "SimVciOptions.h"
 #include "SimVciReply.h"
 #include "VciMessage.h"
@@ -28,6 +29,7 @@ public:
     const SimVciOptions &options() const { return m_options; }
     SimVciOptions &knobs() { return m_options; } // tests change the knobs while it runs
     const FlightModel &model() const { return m_model; }
+    const SimFence &fence() const { return m_fence; }
 
     // Answers a GET or PUT on one of the profile's URIs.
     SimVciReply handle(const vci::VciMessage &request);
@@ -47,6 +49,8 @@ private:
     void checkChanges();
     int64_t now() const; // ms since the epoch on the vehicle's clock (SimVciOptions::simulatedClock)
     SimVciReply put(const std::string &uri, const vci::VciMessage &request);
+    SimVciReply putFence(const nlohmann::json &body);
+    void enforceFence();
     SimVciReply putParameter(const std::string &name, const vci::VciMessage &request);
     nlohmann::json progress() const;
     nlohmann::json parameters() const;
@@ -54,6 +58,7 @@ private:
 
     SimVciOptions m_options;
     FlightModel m_model;
+    SimFence m_fence;
     QTimer m_tick;
     QElapsedTimer m_clock;
     int64_t m_startMs = 0;          // wall clock when the vehicle started

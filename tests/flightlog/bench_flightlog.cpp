@@ -54,7 +54,8 @@ void telemetry(int vehicle, int64_t t, vehicle::TelemetryBatch &out)
     const double v[] = {lat, lon, 60 + 5 * std::sin(s / 30), 50 + 5 * std::sin(s / 30), 0.05 * std::sin(s), 0.03 * std::cos(s / 2),
                         std::fmod(phase + M_PI / 2, 2 * M_PI), std::fmod(phase + M_PI / 2, 2 * M_PI), 8 + 0.2 * std::sin(s), 8.4,
                         0.1 * std::cos(s / 30), 16.4 - s * 1e-4, 12 + std::sin(s / 5), 0.9 - s * 1e-5, 3, 15, 0.7,
-                        0.99, 0.42, 10, 1, 4, 1, 2, 1, 5};
+                        0.99, 0.42, 10, 1, 4, 1, 2, 1, 5, 0, 0};
+    static_assert(sizeof(v) / sizeof(v[0]) == vehicle::kTelemetryFieldCount, "one value per telemetry field");
     for (size_t f = 0; f < vehicle::kTelemetryFieldCount; ++f)
         out.push_back({TelemetryField(f), vehicle::isAngle(TelemetryField(f)) ? vehicle::degreesFromRadians(v[f]) : v[f], t}); // as a link delivers it
 }

@@ -27,7 +27,8 @@ BlockFields typicalSecond(int64_t t0, QRandomGenerator &rng)
         const double v[] = {0.9943 + s * 1.25e-7, 0.4207 + s * 1.2e-7, 60 + 0.01 * s, 50 + 0.01 * s,
                             0.02 * std::sin(s), -0.05 + 0.01 * std::cos(s), 0.785 + 0.001 * std::sin(s / 3), 0.78,
                             8 + 0.1 * std::sin(s), 8.5, 0.01, 16.2 - s * 1e-4, 12.5, 0.8 - s * 1e-5, 3, 14, 0.8,
-                            0.9943, 0.4207, 10, 1, 4, 1, 3, 2, 6};
+                            0.9943, 0.4207, 10, 1, 4, 1, 3, 2, 6, 0, 1};
+        static_assert(sizeof(v) / sizeof(v[0]) == vehicle::kTelemetryFieldCount, "one value per telemetry field");
         for (size_t f = 0; f < vehicle::kTelemetryFieldCount; ++f) // angles as HCI sends them; the store speaks degrees
             fields[f].samples.push_back({t, vehicle::isAngle(TelemetryField(f)) ? vehicle::degreesFromRadians(v[f]) : v[f]});
     }

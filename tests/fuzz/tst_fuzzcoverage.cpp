@@ -30,6 +30,7 @@ const std::map<QString, QString> kOtherReaders{
     {QStringLiteral("HCI frames"), QStringLiteral("fuzz_hci_decoder")},
     {QStringLiteral("HCI routes (protobuf to route)"), QStringLiteral("fuzz_hci_route")},
     {QStringLiteral("VCI messages"), QStringLiteral("fuzz_vci")},
+    {QStringLiteral("VCI fences (JSON)"), QStringLiteral("fuzz_vci_fence")},
     {QStringLiteral("SRTM .hgt tiles"), QStringLiteral("fuzz_hgt_tile")},
     {QStringLiteral("energy profiles (JSON)"), QStringLiteral("fuzz_energy_profile")},
     {QStringLiteral("flight logs (.sortielog)"), QStringLiteral("fuzz_sortielog")},

@@ -5,6 +5,7 @@
 #include "RouteEndurance.h"
 #include "ClientWindow.h"
 #include "ProximityMonitor.h"
+#include "ZoneAlertMonitor.h"
 #include "RouteDeconfliction.h"
 #include "ElevationService.h"
 #include "FleetRoutes.h"
@@ -71,7 +72,7 @@ private slots:
             {"elevation", graph.elevation()}, {"replay", &graph.replay()},
             {"recovery", graph.recovery()}, {"endurance", &graph.endurance()}, {"traffic", &graph.traffic()},
             {"fleetRoutes", graph.fleetRoutes()}, {"proximity", graph.proximity()},
-            {"deconfliction", graph.deconfliction()}};
+            {"deconfliction", graph.deconfliction()}, {"zoneAlerts", graph.zoneAlerts()}};
         for (const auto &[name, object] : expected) {
             QVERIFY2(object, name);
             QCOMPARE(window->property(name).value<QObject *>(), object);

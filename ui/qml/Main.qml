@@ -25,6 +25,7 @@ ApplicationWindow {
     required property OfflineMaps offlineMaps       // maps taken offline: the download and the cache-only setting
     required property FleetRoutes fleetRoutes       // every route given to a vehicle: drawn on both maps, listed beside them
     required property ProximityMonitor proximity    // closest-approach alerts in flight; null without vehicles
+    required property ZoneAlertMonitor zoneAlerts   // zone alerts in flight; null without vehicles
     required property RouteDeconfliction deconfliction  // the open route's 4D conflicts; null without vehicles
     property string connectionState: connection.state
     property string connectionDetail: connection.statusDetail
@@ -162,6 +163,7 @@ ApplicationWindow {
             traffic: window.traffic
             fleetRoutes: window.fleetRoutes
             proximity: window.proximity
+            zoneAlerts: window.zoneAlerts
             replay: window.replay
             serverHistory: window.serverHistory
             comparison: window.comparison

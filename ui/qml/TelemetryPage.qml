@@ -23,6 +23,7 @@ Page {
     // Every route given to a vehicle: drawn under the flight plans, listed under the vehicles.
     required property FleetRoutes fleetRoutes
     property ProximityMonitor proximity: null  // closest-approach alerts (the fleet and the traffic)
+    property ZoneAlertMonitor zoneAlerts: null // a vehicle about to enter a zone or leave a fence
     readonly property bool replaying: replay.active
     property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
     property list<string> plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
@@ -264,12 +265,14 @@ Page {
                     }
                 }
             }
-            // Two of ours, or one of ours and an aircraft, predicted to come too close: every alert,
-            // most urgent first, while it is predicted (each also went into the command log).
+            // Two of ours, or one of ours and an aircraft, predicted to come too close, and a vehicle
+            // predicted to enter a zone or leave its fence: every alert, most urgent first, while it
+            // is predicted (each also went into the command log). One banner for both monitors.
             Rectangle {
                 objectName: "proximityBanner"
                 Layout.fillWidth: true
-                visible: page.proximity !== null && page.proximity.count > 0 && !page.replaying
+                visible: ((page.proximity !== null && page.proximity.count > 0) || (page.zoneAlerts !== null && page.zoneAlerts.count > 0))
+                         && !page.replaying
                 implicitHeight: proximityColumn.implicitHeight + 12
                 color: "#b71c1c"
                 ColumnLayout {
@@ -284,6 +287,18 @@ Page {
                             objectName: "proximityAlert"
                             Layout.fillWidth: true
                             text: qsTr("Too close: %1").arg(model.text)
+                            color: "white"
+                            font.bold: true
+                            wrapMode: Text.Wrap
+                        }
+                    }
+                    Repeater {
+                        model: page.zoneAlerts
+                        delegate: Label {
+                            required property var model
+                            objectName: "zoneAlert"
+                            Layout.fillWidth: true
+                            text: qsTr("Airspace: %1").arg(model.text)
                             color: "white"
                             font.bold: true
                             wrapMode: Text.Wrap

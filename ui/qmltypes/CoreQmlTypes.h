@@ -22,6 +22,7 @@
 #include "SbsFeed.h"
 #include "ServerObjectListModel.h"
 #include "ProximityMonitor.h"
+#include "ZoneAlertMonitor.h"
 #include "RouteDeconfliction.h"
 #include "Traffic.h"
 #include "OfflineMaps.h"
@@ -192,6 +193,13 @@ struct ProximityMonitorForeign
     Q_GADGET
     QML_FOREIGN(sortie::deconfliction::ProximityMonitor)
     QML_NAMED_ELEMENT(ProximityMonitor)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct ZoneAlertMonitorForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::airspace::ZoneAlertMonitor)
+    QML_NAMED_ELEMENT(ZoneAlertMonitor)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 struct TrafficPictureForeign

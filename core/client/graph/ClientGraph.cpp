@@ -27,6 +27,7 @@
 #include "Traffic.h"
 #include "OfflineMaps.h"
 #include "VehicleFleet.h"
+#include "ZoneAlertMonitor.h"
 
 #include <QLoggingCategory>
 #include <QSettings>
@@ -84,6 +85,18 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
     // Closest-approach alerts: into the fleet's command log, which the flight recorder follows.
     if (m_fleet)
         m_proximity = std::make_unique<deconfliction::ProximityMonitor>(m_fleet.get(), m_traffic->picture());
+    // Zone alerts beside them, in the same banner and log: the airspace (empty until a zone store
+    // is connected) and, per vehicle, the route fence that went up with its mission.
+    if (m_fleet) {
+        m_zoneAlerts = std::make_unique<airspace::ZoneAlertMonitor>(m_fleet.get(), ground);
+        m_zoneAlerts->setZones(std::make_shared<const airspace::ZoneSet>());
+        MissionUploader *uploader = m_missions->preparation()->uploader();
+        QObject::connect(uploader, &MissionUploader::uploaded, m_zoneAlerts.get(), [this, uploader](vehicle::Vehicle *v) {
+            const mission::Route &route = uploader->route();
+            m_zoneAlerts->setVehicleZones(v->id(), airspace::zonesOfFence(route.fence, QStringLiteral("route fence"),
+                                                                          airspace::ZoneSource::VehicleFence, route.settings.name));
+        });
+    }
 
     if (!options.autosaveDirectory.isEmpty()) {
         // Recovery looks first, so the autosave of this run takes a slot of its own.
@@ -128,6 +141,7 @@ ClientGraph::~ClientGraph()
     m_recorder.reset();
     m_autosave.reset();
     m_recovery.reset();
+    m_zoneAlerts.reset();
     m_proximity.reset();
     m_deconfliction.reset();
     m_offlineMaps.reset();
@@ -167,6 +181,7 @@ QStringList ClientGraph::wiring() const
           << QStringLiteral("fleet routes: %1").arg(yesNo(m_fleetRoutes != nullptr, "the open route's vehicle and every upload", "none"))
           << QStringLiteral("route deconfliction: %1").arg(yesNo(m_deconfliction && std::any_of(rules.begin(), rules.end(), [&](const auto &r) { return r == m_deconfliction->rule(); }), "against the fleet's routes", "none"))
           << QStringLiteral("proximity alerts: %1").arg(yesNo(m_proximity != nullptr, "the fleet and the traffic", "none"))
+          << QStringLiteral("zone alerts: %1").arg(yesNo(m_zoneAlerts != nullptr, "the fleet against the airspace and each uploaded fence", "none"))
           << QStringLiteral("autosave: %1").arg(yesNo(m_autosave && m_autosave->isActive(), "on", "off"))
           << QStringLiteral("recovery: %1").arg(yesNo(m_recovery != nullptr, "on", "off"))
           << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))

@@ -38,6 +38,10 @@ namespace sortie::maptiles {
 class OfflineMaps;
 } // namespace sortie::maptiles
 
+namespace sortie::airspace {
+class ZoneAlertMonitor;
+} // namespace sortie::airspace
+
 namespace sortie::deconfliction {
 class ProximityMonitor;
 class RouteDeconfliction;
@@ -96,6 +100,9 @@ public:
     // In-flight closest-approach alerts between the fleet's vehicles and against the traffic;
     // nullptr without vehicles.
     deconfliction::ProximityMonitor *proximity() { return m_proximity.get(); }
+    // In-flight zone alerts: each vehicle against the airspace (none yet: the client's zone store
+    // is connected with setZones) and the route fence uploaded with its mission; nullptr without vehicles.
+    airspace::ZoneAlertMonitor *zoneAlerts() { return m_zoneAlerts.get(); }
     // The open route's 4D conflicts with the fleet's other routes (a rule on its analyzer);
     // nullptr without vehicles.
     deconfliction::RouteDeconfliction *deconfliction() { return m_deconfliction.get(); }
@@ -123,6 +130,7 @@ private:
     std::unique_ptr<FleetRoutes> m_fleetRoutes;
     std::unique_ptr<deconfliction::RouteDeconfliction> m_deconfliction;
     std::unique_ptr<deconfliction::ProximityMonitor> m_proximity;
+    std::unique_ptr<airspace::ZoneAlertMonitor> m_zoneAlerts;
     std::unique_ptr<AutosaveRecovery> m_recovery;
     std::unique_ptr<RouteAutosave> m_autosave;
     std::unique_ptr<flightlog::FlightRecorder> m_recorder;

@@ -57,6 +57,14 @@ TelemetryBatch vciTelemetry(std::string_view uri, const nlohmann::json &body, in
         out.push_back({F::Armed, body.get<bool>() ? 1.0 : 0.0, time});
     } else if (uri == profile::kMode && body.is_string()) {
         out.push_back({F::Mode, double(modeFromName(body.get<std::string>())), time});
+    } else if (uri == profile::kFenceStatus && body.is_object()) {
+        // "none" and "clear" are both not breached; a count the vehicle leaves out stays unknown.
+        const auto state = body.find("state");
+        if (state != body.end() && state->is_string())
+            out.push_back({F::FenceBreach, state->get<std::string>() == "breached" ? 1.0 : 0.0, time});
+        const auto breaches = body.find("breaches");
+        if (breaches != body.end() && breaches->is_number())
+            out.push_back({F::FenceBreaches, breaches->get<double>(), time});
     } else if (uri == profile::kMissionProgress && body.is_object()) {
         const auto state = body.find("state");
         if (state != body.end() && state->is_string()) {

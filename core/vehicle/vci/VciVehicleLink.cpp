@@ -1,6 +1,8 @@
 #include "VciVehicleLink.h"
 
 #include "ElevationService.h"
+#include "VciFence.h"
+#include "VciFenceBuilder.h"
 #include "VciMissionPlanner.h"
 #include "Route.h"
 #include "VciProfile.h"
@@ -63,6 +65,26 @@ MissionItem toItem(const profile::Waypoint &w)
         item.actions.push_back(std::move(action));
     }
     return item;
+}
+
+// The fence that goes up with a prepared mission (the link's own part of it).
+struct VciNativeMission : NativeMission
+{
+    profile::Fence fence;
+};
+
+mission::GeoBox boxOf(const std::vector<MissionItem> &items)
+{
+    mission::GeoBox box;
+    for (const MissionItem &i : items) {
+        if (box.empty)
+            box = {i.latitude, i.longitude, i.latitude, i.longitude, false};
+        box.south = std::min(box.south, i.latitude);
+        box.north = std::max(box.north, i.latitude);
+        box.west = std::min(box.west, i.longitude);
+        box.east = std::max(box.east, i.longitude);
+    }
+    return box;
 }
 
 QString stringField(const json &body, const char *key)
@@ -160,10 +182,12 @@ void VciVehicleLink::onAttached()
 void VciVehicleLink::onNotified(const QString &uri, const nlohmann::json &body)
 {
     const std::string u = uri.toStdString();
-    if (u == profile::kMission) {
+    if (u == profile::kMission || u == profile::kFence) {
         emit missionChanged();
         return;
     }
+    if (u == profile::kFenceStatus)
+        onFenceStatus(body);
     TelemetryBatch batch = vciTelemetry(u, body, QDateTime::currentMSecsSinceEpoch());
     if (!batch.empty())
         emit telemetryReceived(batch);
@@ -213,19 +237,45 @@ void VciVehicleLink::goTo(double latitude, double longitude, double altitude, do
     put(profile::kGoto, json{{"latitude", radiansFromDegrees(latitude)}, {"longitude", radiansFromDegrees(longitude)}, {"altitude", altitude}, {"speed", speed}}, std::move(done));
 }
 
+void VciVehicleLink::onFenceStatus(const nlohmann::json &body)
+{
+    const auto status = profile::decodeFenceStatus(body);
+    if (!status)
+        return;
+    // A breach that began since the last status (or one already on when first heard of).
+    const bool breached = status->state == "breached";
+    const bool began = m_fenceBreaches < 0 ? breached : status->breaches > m_fenceBreaches;
+    m_fenceBreaches = status->breaches;
+    if (!began)
+        return;
+    const QString where = status->kind == "outside-inclusion" ? QStringLiteral("left its fence '%1'")
+                                                               : QStringLiteral("entered the exclusion zone '%1'");
+    const QString action = status->action == "land" ? QStringLiteral("landing")
+                           : status->action == "hold" ? QStringLiteral("holding")
+                           : status->action == "return" ? QStringLiteral("returning home")
+                                                        : QStringLiteral("action unknown");
+    emit alertReported(QStringLiteral("fence breach: %1; %2").arg(where.arg(QString::fromStdString(status->name)), action));
+}
+
 void VciVehicleLink::prepareMission(const mission::Route &route, PrepareDone done)
 {
+    prepareMissionWithFence(route, {}, std::move(done));
+}
+
+void VciVehicleLink::prepareMissionWithFence(const mission::Route &route, const FenceSettings &fence, PrepareDone done)
+{
     // Heights go up as heights above the vehicle's home: ask it where that is, then plan.
-    m_connection.get(q(profile::kHome), this, [this, route, done](const vci::VciResult &result) {
+    m_connection.get(q(profile::kHome), this, [this, route, fence, done](const vci::VciResult &result) {
         std::optional<double> homeAmsl;
         if (result.ok() && result.body.is_object())
             if (const auto it = result.body.find("altitudeAmsl"); it != result.body.end() && it->is_number())
                 homeAmsl = it->get<double>();
-        planMission(route, homeAmsl, done, QDeadlineTimer(kTerrainWaitMs));
+        planMission(route, fence, homeAmsl, done, QDeadlineTimer(kTerrainWaitMs));
     });
 }
 
-void VciVehicleLink::planMission(const mission::Route &route, std::optional<double> homeAmsl, PrepareDone done, QDeadlineTimer deadline)
+void VciVehicleLink::planMission(const mission::Route &route, const FenceSettings &fence, std::optional<double> homeAmsl, PrepareDone done,
+                                 QDeadlineTimer deadline)
 {
     auto mission = vciMissionFor(route, {m_elevation.data(), homeAmsl});
     if (mission && !mission->waitingFor.isEmpty() && m_elevation) {
@@ -239,12 +289,12 @@ void VciVehicleLink::planMission(const mission::Route &route, std::optional<doub
         }
         // Plan again once a source has more of the ground (or when the wait is over).
         auto *waiting = new QObject(this);
-        auto again = [this, waiting, route, homeAmsl, done, deadline] {
+        auto again = [this, waiting, route, fence, homeAmsl, done, deadline] {
             if (waiting->property("done").toBool())
                 return;
             waiting->setProperty("done", true);
             waiting->deleteLater();
-            planMission(route, homeAmsl, done, deadline);
+            planMission(route, fence, homeAmsl, done, deadline);
         };
         connect(m_elevation, &terrain::ElevationService::changed, waiting, again, Qt::QueuedConnection);
         QTimer::singleShot(std::max<qint64>(0, deadline.remainingTime()), waiting, again);
@@ -253,15 +303,55 @@ void VciVehicleLink::planMission(const mission::Route &route, std::optional<doub
     if (!done)
         return;
     if (!mission)
-        done(CommandResult::failure(mission.error().message), {});
-    else
-        done(CommandResult::success(), PreparedMission{std::move(mission->items), std::move(mission->notices), {}});
+        return done(CommandResult::failure(mission.error().message), {});
+    GroundLookup ground;
+    if (m_elevation)
+        ground = [service = m_elevation](const mission::GeoPoint &p) { return service ? service->groundAt(p) : std::nullopt; };
+    auto plan = vciFenceFor(route, fence, boxOf(mission->items), ground);
+    if (!plan)
+        return done(CommandResult::failure(plan.error().message), {});
+    auto native = std::make_shared<VciNativeMission>();
+    native->fence = std::move(plan->fence);
+    QStringList notices = std::move(mission->notices);
+    notices += plan->notices;
+    done(CommandResult::success(), PreparedMission{std::move(mission->items), std::move(notices), std::move(native)});
+}
+
+void VciVehicleLink::sendFence(const PreparedMission &mission, Done next)
+{
+    const auto *native = dynamic_cast<const VciNativeMission *>(mission.native.get());
+    if (!native)
+        return next(CommandResult::success()); // prepared elsewhere: no fence to send
+    const profile::Fence fence = native->fence;
+    m_connection.put(q(profile::kFence), profile::encodeFence(fence), this, [this, fence, next](const vci::VciResult &r) {
+        if (!r.ok()) {
+            // A vehicle without the resource can still take a route that needs no fence.
+            if (r.statusCode == 501 && fence.empty())
+                return next(CommandResult::success());
+            return next(CommandResult::failure(QStringLiteral("the vehicle refused the fence: %1").arg(r.message)));
+        }
+        // Read back, as the mission is: only the fence the vehicle holds counts.
+        m_connection.get(q(profile::kFence), this, [fence, next](const vci::VciResult &held) {
+            if (!held.ok())
+                return next(CommandResult::failure(QStringLiteral("the fence could not be read back: %1").arg(held.message)));
+            std::string error;
+            const auto back = profile::decodeFence(held.body, &error);
+            if (!back)
+                return next(CommandResult::failure(QStringLiteral("the vehicle's fence cannot be read: %1").arg(QString::fromStdString(error))));
+            if (!(*back == fence))
+                return next(CommandResult::failure(QStringLiteral("the vehicle holds another fence than the one sent (%1 items sent, %2 held)")
+                                                       .arg(fence.items.size())
+                                                       .arg(back->items.size())));
+            next(CommandResult::success());
+        });
+    });
 }
 
 void VciVehicleLink::uploadMission(const PreparedMission &mission, UploadObserver observer, Done done)
 {
     // VCI has no locks: the one step is the PUT.
-    QMetaObject::invokeMethod(this, [this, items = mission.items, observer, done] {
+    // The fence first: a mission never flies without the fence it was sent with.
+    QMetaObject::invokeMethod(this, [this, mission, observer, done] {
         if (observer.proceed && !observer.proceed()) {
             if (done)
                 done(CommandResult::cancel());
@@ -269,11 +359,18 @@ void VciVehicleLink::uploadMission(const PreparedMission &mission, UploadObserve
         }
         if (observer.step)
             observer.step(UploadStep::Sending, 0, 0);
-        std::vector<profile::Waypoint> waypoints;
-        waypoints.reserve(items.size());
-        for (const MissionItem &i : items)
-            waypoints.push_back(toWaypoint(i));
-        put(profile::kMission, profile::encodeMission(waypoints), done);
+        sendFence(mission, [this, items = mission.items, done](const CommandResult &fenced) {
+            if (!fenced.ok) {
+                if (done)
+                    done(fenced);
+                return;
+            }
+            std::vector<profile::Waypoint> waypoints;
+            waypoints.reserve(items.size());
+            for (const MissionItem &i : items)
+                waypoints.push_back(toWaypoint(i));
+            put(profile::kMission, profile::encodeMission(waypoints), done);
+        });
     }, Qt::QueuedConnection);
 }
 

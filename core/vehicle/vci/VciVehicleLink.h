@@ -37,7 +37,7 @@ public:
     QString protocol() const override { return QStringLiteral("VCI"); }
     VehicleIdentity identity() const override { return m_identity; }
     State state() const override { return m_state; }
-    Capabilities capabilities() const override { return MissionDownload | Parameters | GoTo; }
+    Capabilities capabilities() const override { return MissionDownload | Parameters | GoTo | Fence; }
 
     void start() override;
     void stop() override;
@@ -48,7 +48,11 @@ public:
     void land(Done done) override;
     void returnHome(Done done) override;
     void goTo(double latitude, double longitude, double altitude, double speed, Done done) override;
+    // The route's own fence only (the Process view); uploads go through prepareMissionWithFence.
     void prepareMission(const mission::Route &route, PrepareDone done) override;
+    // The route as waypoints and its fence (VciFenceBuilder.h), carried in the prepared mission;
+    // uploadMission PUTs the fence, reads it back, then PUTs the mission.
+    void prepareMissionWithFence(const mission::Route &route, const FenceSettings &fence, PrepareDone done) override;
     void uploadMission(const PreparedMission &mission, UploadObserver observer, Done done) override;
     void downloadMission(MissionDone done) override;
     void readParameters(ParametersDone done) override;
@@ -59,7 +63,10 @@ private:
     void onNotified(const QString &uri, const nlohmann::json &body);
     void put(std::string_view uri, const nlohmann::json &body, Done done);
     void setState(State state);
-    void planMission(const mission::Route &route, std::optional<double> homeAmsl, PrepareDone done, QDeadlineTimer deadline);
+    void planMission(const mission::Route &route, const FenceSettings &fence, std::optional<double> homeAmsl, PrepareDone done,
+                     QDeadlineTimer deadline);
+    void sendFence(const PreparedMission &mission, Done next);
+    void onFenceStatus(const nlohmann::json &body);
     static CommandResult toCommandResult(const vci::VciResult &result);
 
     // How long an upload waits for terrain data a source is still fetching.
@@ -72,6 +79,7 @@ private:
     VehicleIdentity m_identity;
     State m_state = State::Disconnected;
     bool m_stopping = false;
+    int m_fenceBreaches = -1; // as /fence/status last said; -1 before the first
 };
 
 } // namespace sortie::vehicle

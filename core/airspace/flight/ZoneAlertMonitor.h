@@ -1,0 +1,99 @@
+#pragma once
+
+#include "AirspaceCheck.h"
+
+#include <QAbstractListModel>
+#include <QHash>
+#include <QPointer>
+#include <QTimer>
+
+#include <memory>
+#include <vector>
+
+namespace sortie::client {
+class VehicleFleet;
+}
+namespace sortie::terrain {
+class ElevationService;
+}
+
+namespace sortie::airspace {
+
+// In-flight zone alerts: every second each airborne vehicle of the fleet is extrapolated in a
+// straight line at its present velocity (ground speed along its course, vertical speed) and the
+// line is checked in 3D against the zones (PlaneZone: the zone's shape between its floor and
+// ceiling). A vehicle predicted to enter an exclusion zone, or to leave the permitted area (outside
+// every active inclusion zone of a set), within kHorizonSeconds raises an alert; it stays while
+// predicted within kClearSeconds (the hysteresis: a prediction wavering around 30 s does not raise
+// it again and again) and goes after that. Heights: AMSL from the vehicle, above home from its
+// home's AMSL altitude, above the ground through `ground` (unknown without it: the stretch counts
+// as inside an exclusion zone, outside an inclusion zone, and the alert says so).
+//
+// Two sets of zones: the airspace the client knows (setZones, the same for every vehicle) and each
+// vehicle's own fence (setVehicleZones: what was uploaded with its mission). Each set's inclusion
+// zones are one permitted area.
+//
+// Like ProximityMonitor (the fly view shows both in one banner): a row here per alert, one entry in
+// the fleet's command log per rise (CommandLog::alert), alertRaised / alertCleared.
+class ZoneAlertMonitor : public QAbstractListModel
+{
+    Q_OBJECT
+    Q_PROPERTY(int count READ count NOTIFY countChanged)
+    Q_PROPERTY(QString headline READ headline NOTIFY countChanged)
+
+public:
+    static constexpr double kHorizonSeconds = 30.0;
+    static constexpr double kClearSeconds = 36.0;
+
+    enum class Kind { EntersExclusion, LeavesInclusion };
+    struct Alert
+    {
+        QString key;     // "<vehicle id>|<set>|<zone name>|enter" / "...|leave"
+        QString vehicle; // the vehicle's name, as the command log has it
+        QString zone;
+        Kind kind = Kind::EntersExclusion;
+        double inSeconds = 0; // 0: it is there now
+        bool heightUnknown = false;
+        QString text;
+    };
+    enum Roles { KeyRole = Qt::UserRole + 1, VehicleRole, ZoneRole, InSecondsRole, TextRole };
+
+    // `fleet` (required) and `ground` (may be nullptr) are not owned. Checks every `intervalMs`
+    // (0: only when check() is called, as tests do).
+    ZoneAlertMonitor(client::VehicleFleet *fleet, terrain::ElevationService *ground = nullptr, int intervalMs = 1000,
+                     QObject *parent = nullptr);
+    ~ZoneAlertMonitor() override;
+
+    // The airspace every vehicle is checked against (null or empty: none).
+    void setZones(std::shared_ptr<const ZoneSet> zones);
+    // One vehicle's own fence (by Vehicle::id), e.g. the route fence uploaded with its mission.
+    void setVehicleZones(const QString &vehicleId, std::vector<Zone> zones);
+
+    int rowCount(const QModelIndex &parent = {}) const override;
+    QVariant data(const QModelIndex &index, int role) const override;
+    QHash<int, QByteArray> roleNames() const override;
+    int count() const { return int(m_alerts.size()); }
+    QString headline() const { return m_alerts.empty() ? QString() : m_alerts.front().text; }
+    const std::vector<Alert> &alerts() const { return m_alerts; }
+
+    void check();
+
+signals:
+    void countChanged();
+    void alertRaised(const sortie::airspace::ZoneAlertMonitor::Alert &alert);
+    void alertCleared(const QString &key);
+
+private:
+    struct Mover;
+    std::vector<Alert> predict() const;
+    void predictAgainst(const Mover &m, const ZoneSet &zones, const QString &set, std::vector<Alert> &found) const;
+
+    QPointer<client::VehicleFleet> m_fleet;
+    QPointer<terrain::ElevationService> m_ground;
+    std::shared_ptr<const ZoneSet> m_zones;
+    QHash<QString, std::shared_ptr<const ZoneSet>> m_vehicleZones;
+    std::vector<Alert> m_alerts; // soonest first
+    QTimer m_timer;
+};
+
+} // namespace sortie::airspace
