@@ -1,5 +1,6 @@
 #include "SortieUi.h"
 
+#include "Airspace.h"
 #include "AppSettings.h"
 #include "AutosaveRecovery.h"
 #include "ClientGraph.h"
@@ -42,7 +43,8 @@ QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settin
             {QStringLiteral("traffic"), QVariant::fromValue<QObject *>(&graph.traffic())},
             {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())},
             {QStringLiteral("proximity"), QVariant::fromValue<QObject *>(graph.proximity())},
-            {QStringLiteral("deconfliction"), QVariant::fromValue<QObject *>(graph.deconfliction())}};
+            {QStringLiteral("deconfliction"), QVariant::fromValue<QObject *>(graph.deconfliction())},
+            {QStringLiteral("airspace"), QVariant::fromValue<QObject *>(&graph.airspace())}};
 }
 
 } // namespace sortie::ui

@@ -82,6 +82,8 @@ void AirspaceRule::setBuffer(double metres)
 
 void AirspaceRule::check(const mission::Route &route, mission::ScanPlanCache *cache, std::vector<ValidationIssue> &issues)
 {
+    m_lastReport = {};
+    m_lastZones = m_zones;
     if (!m_zones || m_zones->zones().empty())
         return;
     if (!m_checker)
@@ -103,8 +105,8 @@ void AirspaceRule::check(const mission::Route &route, mission::ScanPlanCache *ca
         m_frameOrigin = centre;
     const mission::LocalTangentPlane plane(*m_frameOrigin);
     const FlownPath path = flownPath(pr, ground ? &*ground : nullptr, flightEndsOf(route), &plane);
-    const AirspaceReport report = m_checker->check(path);
-    const std::vector<ValidationIssue> found = airspaceIssues(report, *m_zones, m_buffer);
+    m_lastReport = m_checker->check(path);
+    const std::vector<ValidationIssue> found = airspaceIssues(m_lastReport, *m_zones, m_buffer);
     issues.insert(issues.end(), found.begin(), found.end());
 }
 

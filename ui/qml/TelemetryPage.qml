@@ -23,6 +23,8 @@ Page {
     // Every route given to a vehicle: drawn under the flight plans, listed under the vehicles.
     required property FleetRoutes fleetRoutes
     property ProximityMonitor proximity: null  // closest-approach alerts (the fleet and the traffic)
+    required property Airspace airspace        // the zones, drawn under everything else
+    property alias zoneLayer: zoneLayer
     readonly property bool replaying: replay.active
     property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
     property list<string> plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
@@ -143,6 +145,15 @@ Page {
                 tileUrlTemplate: page.tileUrlTemplate
                 mbtilesFile: page.mbtilesFile
                 dark: page.dark
+                ZoneLayer {
+                    id: zoneLayer
+                    objectName: "flyZoneLayer"
+                    anchors.fill: parent
+                    map: pane.map
+                    airspace: page.airspace
+                    ToolTip.visible: hoverText.length > 0
+                    ToolTip.text: hoverText
+                }
                 FleetRoutesLayer {
                     objectName: "flyFleetRoutesLayer"
                     anchors.fill: parent
