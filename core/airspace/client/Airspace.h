@@ -37,6 +37,8 @@ class ZoneListModel;
 class Airspace : public QObject
 {
     Q_OBJECT
+    Q_MOC_INCLUDE("ZoneEditor.h")
+    Q_MOC_INCLUDE("ZoneListModel.h")
     Q_PROPERTY(sortie::airspace::ZoneListModel *zones READ zones CONSTANT)
     Q_PROPERTY(sortie::airspace::ZoneEditor *editor READ editor CONSTANT)
     Q_PROPERTY(int count READ count NOTIFY changed)

@@ -1,0 +1,279 @@
+// Zones where the operator plans, offscreen with the program's own wiring against sortie-sim: a
+// zone drawn with the mouse across the open route is hatched on the map, its error is in the
+// validation list (a click chooses the leg and the zone), the terrain profile shows its limits where
+// the route crosses it, and Upload is refused naming it; the drawn zone's corner dragged on the map
+// is one undo step. And the zone layer's own drawing: hatch where a zone is, green where an inclusion
+// zone's edge is, labels that never overlap, a tooltip with source and limits.
+#include "Airspace.h"
+#include "ClientWindow.h"
+#include "MapView.h"
+#include "MissionUploader.h"
+#include "QuickScene.h"
+#include "RouteAnalyzer.h"
+#include "RouteDocument.h"
+#include "RouteLayer.h"
+#include "RouteModel.h"
+#include "RoutePreparation.h"
+#include "ZoneEditor.h"
+#include "ZoneLayer.h"
+#include "ZoneProfileOverlay.h"
+
+#include <QDir>
+#include <QSettings>
+#include <QSignalSpy>
+#include <QTest>
+#include <QtQml/qqmlextensionplugin.h>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+using namespace sortie;
+
+namespace {
+
+mission::Route lineRoute(const QGeoCoordinate &origin)
+{
+    mission::Route route;
+    route.settings.name = QStringLiteral("Through the works");
+    for (int i = 0; i <= 4; ++i) {
+        const QGeoCoordinate p = origin.atDistanceAndAzimuth(100.0 * i, 90);
+        mission::Waypoint w;
+        w.position = {p.latitude(), p.longitude()};
+        w.altitude = 25;
+        w.speed = 6;
+        route.segments.push_back(w);
+    }
+    return route;
+}
+
+QPointF centreOf(QQuickItem *item)
+{
+    return item->mapToScene(QPointF(item->width() / 2, item->height() / 2));
+}
+
+void click(QQuickWindow *window, QPointF at)
+{
+    QTest::mouseClick(window, Qt::LeftButton, {}, at.toPoint());
+}
+
+// Pixels near `at` within `radius` that are `colour` (within 40 a channel).
+int countNear(const QImage &image, QPointF at, int radius, const QColor &colour)
+{
+    int n = 0;
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx) {
+            const QPoint p = (at + QPointF(dx, dy)).toPoint();
+            n += image.rect().contains(p) && test::colourDistance(image.pixel(p), colour.rgb()) < 40;
+        }
+    return n;
+}
+
+QString screenshotDir()
+{
+    return qEnvironmentVariable("SORTIE_SCREENSHOT_DIR", QStringLiteral(SORTIE_SCREENSHOT_DEFAULT_DIR));
+}
+
+const QByteArray kLayerScene = R"(
+import QtQuick
+import Sortie.Ui
+Item {
+    required property Airspace airspace
+    MapView { id: map; objectName: "map"; anchors.fill: parent; latitude: 56.95; longitude: 24.1; zoomLevel: 14 }
+    ZoneLayer { objectName: "zones"; anchors.fill: parent; map: map; airspace: parent.airspace }
+}
+)";
+
+} // namespace
+
+class TestZoneView : public QObject
+{
+    Q_OBJECT
+
+    vehicle::Vehicle *emu101(test::ClientWindow &client) const
+    {
+        for (int r = 0; r < client.fleet().count(); ++r)
+            if (client.fleet().vehicleAt(r)->name() == QStringLiteral("EMU-101"))
+                return client.fleet().vehicleAt(r);
+        return nullptr;
+    }
+
+private slots:
+    void initTestCase() { test::useSoftwareRendering(); }
+
+    void aZoneDrawnAcrossTheRouteRefusesItsUpload()
+    {
+        test::ClientWindow client;
+        QVERIFY2(client.isReady(), qPrintable(client.error()));
+        QVERIFY(client.logIn());
+        QTRY_VERIFY_WITH_TIMEOUT(emu101(client), 10000);
+        vehicle::Vehicle *emu = emu101(client);
+        client.showPage(1);
+        client::RouteDocument *doc = client.missions().document();
+        const QGeoCoordinate origin = emu->position().isValid() ? emu->position() : QGeoCoordinate(56.95, 24.1);
+        doc->load(lineRoute(origin));
+        auto *routeLayer = client.find<ui::RouteLayer>(QStringLiteral("routeLayer"));
+        QTRY_COMPARE(routeLayer->count(), 5);
+        auto *map = client.page("missionPage")->property("map").value<ui::MapView *>();
+        const QGeoCoordinate east = origin.atDistanceAndAzimuth(400, 90);
+        // The route in the map's right half: the zone panel opens over its left.
+        map->fitBounds(origin.latitude() - 0.0015, origin.longitude() - 0.005, origin.latitude() + 0.0015, east.longitude() + 0.001, 60);
+        QTest::qWait(100);
+        QCOMPARE(doc->analyzer()->validation().errorCount(), 0);
+
+        // The zone panel, the polygon tool, four corners around leg 2 (100–200 m), Create.
+        airspace::Airspace &airspace = client.graph().airspace();
+        click(client.window(), centreOf(client.find(QStringLiteral("zonesButton"))));
+        QQuickItem *panel = client.find(QStringLiteral("zonePanel"));
+        QTRY_VERIFY(panel->isVisible());
+        click(client.window(), centreOf(client.find(QStringLiteral("drawZonePolygon"))));
+        const auto onMap = [map](const QGeoCoordinate &c) { return map->mapToScene(map->fromCoordinate(c)); };
+        const QGeoCoordinate a = origin.atDistanceAndAzimuth(130, 90), b = origin.atDistanceAndAzimuth(170, 90);
+        const QGeoCoordinate corners[] = {a.atDistanceAndAzimuth(40, 180), b.atDistanceAndAzimuth(40, 180), b.atDistanceAndAzimuth(40, 0),
+                                          a.atDistanceAndAzimuth(40, 0)};
+        for (const QGeoCoordinate &c : corners)
+            click(client.window(), onMap(c));
+        QQuickItem *create = client.find(QStringLiteral("finishZoneButton"));
+        QTRY_VERIFY(create->isVisible() && create->isEnabled());
+        click(client.window(), centreOf(create));
+        QTRY_COMPARE(airspace.count(), 1);
+        QCOMPARE(doc->model()->rowCount(), 5); // the clicks drew the zone, not waypoints
+        QCOMPARE(airspace.editor()->undoStack()->count(), 1);
+
+        // The error, listed, naming the zone and where along the route.
+        QTRY_VERIFY_WITH_TIMEOUT(doc->analyzer()->validation().errorCount() > 0, 5000);
+        QQuickItem *issues = client.find(QStringLiteral("validationList"));
+        QTRY_VERIFY(issues->isVisible());
+        QQuickItem *issueRow = nullptr;
+        for (QQuickItem *child : issues->property("contentItem").value<QQuickItem *>()->childItems())
+            if (child->property("message").toString().contains(QStringLiteral("'Zone 1'")))
+                issueRow = child;
+        QVERIFY(issueRow);
+        QVERIFY2(issueRow->property("message").toString().startsWith(QStringLiteral("Leg 2 enters 'Zone 1' from 1")),
+                 qPrintable(issueRow->property("message").toString()));
+        // A click on it chooses the leg (the row it ends at) and the zone.
+        airspace.setSelectedZone(-1);
+        click(client.window(), centreOf(issueRow));
+        QTRY_COMPARE(airspace.selectedZone(), 0);
+        QCOMPARE(doc->selectedRows(), QList<int>{2});
+
+        // The terrain profile marks where the route is inside it.
+        auto *profile = client.find<ui::ZoneProfileOverlay>(QStringLiteral("zoneProfile"));
+        QVERIFY(profile);
+        QTRY_COMPARE(profile->crossings().size(), 1);
+
+        // On the map: hatched red inside the zone, its label, its tooltip.
+        auto *zones = client.find<ui::ZoneLayer>(QStringLiteral("missionZoneLayer"));
+        QTRY_VERIFY(zones->labelCount() == 1);
+        zones->hoverAt(zones->mapFromScene(onMap(origin.atDistanceAndAzimuth(150, 90).atDistanceAndAzimuth(30, 0))));
+        QVERIFY2(zones->hoverText().contains(QStringLiteral("Zone 1")) && zones->hoverText().contains(QStringLiteral("ground"))
+                     && zones->hoverText().contains(QStringLiteral("drawn")),
+                 qPrintable(zones->hoverText()));
+        QVERIFY(test::waitForFrame(client.window()));
+        const QImage image = client.window()->grabWindow();
+        image.save(QDir(screenshotDir()).filePath(QStringLiteral("zones.png")));
+        const QPointF inside = onMap(origin.atDistanceAndAzimuth(150, 90).atDistanceAndAzimuth(25, 180));
+        QVERIFY2(countNear(image, inside, 10, ui::ZoneLayer::exclusionColour()) > 4, "no red hatch inside the zone");
+
+        // Upload: refused, naming the zone; nothing reaches the vehicle.
+        client::RoutePreparation *preparation = client.missions().preparation();
+        client::MissionUploader *uploader = preparation->uploader();
+        int emuRow = -1;
+        for (int r = 0; r < client.fleet().count(); ++r)
+            if (client.fleet().vehicleAt(r) == emu)
+                emuRow = r;
+        client.find<QObject>(QStringLiteral("vehiclePicker"))->setProperty("currentIndex", emuRow);
+        QSignalSpy finished(uploader, &client::MissionUploader::finished);
+        QQuickItem *upload = client.find(QStringLiteral("uploadButton"));
+        QTRY_VERIFY(upload->isVisible() && upload->isEnabled());
+        click(client.window(), centreOf(upload));
+        QTRY_VERIFY_WITH_TIMEOUT(!finished.isEmpty(), 15000);
+        QVERIFY(uploader->state() != client::MissionUploader::State::Done);
+        const QString message = client.find<QObject>(QStringLiteral("preparationMessage"))->property("text").toString();
+        QVERIFY2(message.contains(QStringLiteral("Zone 1")), qPrintable(message));
+        QVERIFY(emu->mission().empty());
+
+        // The zone's corner dragged on the map: one undo step; Ctrl+Z (the zone panel open) takes it back.
+        const QGeoCoordinate corner = corners[1];
+        const QGeoCoordinate farther = corner.atDistanceAndAzimuth(30, 90);
+        QTest::mousePress(client.window(), Qt::LeftButton, {}, onMap(corner).toPoint());
+        for (int i = 1; i <= 5; ++i)
+            QTest::mouseMove(client.window(), (onMap(corner) + (onMap(farther) - onMap(corner)) * i / 5).toPoint());
+        QTest::mouseRelease(client.window(), Qt::LeftButton, {}, onMap(farther).toPoint());
+        QTRY_COMPARE(airspace.editor()->undoStack()->count(), 2);
+        const auto cornerNow = [&airspace] { return std::get<airspace::ZonePolygons>(airspace.zoneAt(0).shape).parts[0].rings[0][1]; };
+        QVERIFY2(std::abs(cornerNow().longitude - farther.longitude()) < 2e-5, qPrintable(QString::number(cornerNow().longitude - farther.longitude())));
+        QCOMPARE(doc->undoStack()->count(), 0); // the route is not touched
+        QMetaObject::invokeMethod(client.window(), "undo");
+        QVERIFY(std::abs(cornerNow().longitude - corner.longitude()) < 2e-5);
+
+        // The fly view draws the zone too.
+        client.showPage(2);
+        auto *flyZones = client.find<ui::ZoneLayer>(QStringLiteral("flyZoneLayer"));
+        QVERIFY(flyZones);
+        QCOMPARE(flyZones->airspace(), &airspace);
+    }
+
+    void theLayerHatchesOutlinesAndLabelsWithoutOverlap()
+    {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("settings.ini")), QSettings::IniFormat);
+        mission::RouteModel route;
+        mission::RouteAnalyzer analyzer(&route);
+        airspace::Airspace store(&settings, &analyzer, &route, nullptr);
+        // Four zones whose middles are close together (their labels would collide), and an inclusion zone.
+        const QGeoCoordinate centre(56.95, 24.1);
+        for (int i = 0; i < 4; ++i)
+            store.editor()->addCircle(centre.atDistanceAndAzimuth(40.0 * i, 45), 150 + 20 * i);
+        const QGeoCoordinate west = centre.atDistanceAndAzimuth(900, 270);
+        store.editor()->addPolygon({west.atDistanceAndAzimuth(200, 45), west.atDistanceAndAzimuth(200, 135), west.atDistanceAndAzimuth(200, 225),
+                                    west.atDistanceAndAzimuth(200, 315)});
+        QVERIFY(store.editor()->setKind(4, QStringLiteral("inclusion")));
+        QVERIFY(store.editor()->setLimits(4, QStringLiteral("20"), QStringLiteral("120"), QStringLiteral("AGL")));
+
+        test::QuickScene scene(kLayerScene, QSize(800, 600), {{QStringLiteral("airspace"), QVariant::fromValue<QObject *>(&store)}});
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        auto *layer = scene.find<ui::ZoneLayer>(QStringLiteral("zones"));
+        QVERIFY(layer);
+        QTRY_VERIFY(layer->labelCount() >= 2);
+        const QImage image = scene.grab();
+        image.save(QDir(screenshotDir()).filePath(QStringLiteral("zone-layer.png")));
+
+        // Hatched red where an exclusion zone is (off its label), green on the inclusion zone's edge.
+        const QPointF south = layer->mapToScene(scene.find<ui::MapView>(QStringLiteral("map"))->fromCoordinate(centre.atDistanceAndAzimuth(100, 200)));
+        QVERIFY2(countNear(image, south, 8, ui::ZoneLayer::exclusionColour()) > 4, "no hatch in the zone");
+        const QPointF edge = layer->mapToScene(scene.find<ui::MapView>(QStringLiteral("map"))->fromCoordinate(west.atDistanceAndAzimuth(141, 180)));
+        QVERIFY2(countNear(image, edge, 4, ui::ZoneLayer::inclusionColour()) > 2, "no green outline on the inclusion zone's edge");
+        // Nothing red in the inclusion zone's middle (outlined, not hatched), away from its label.
+        const QPointF westInside = layer->mapToScene(scene.find<ui::MapView>(QStringLiteral("map"))->fromCoordinate(west.atDistanceAndAzimuth(80, 200)));
+        QCOMPARE(countNear(image, westInside, 6, ui::ZoneLayer::exclusionColour()), 0);
+
+        // No two labels overlap; the inclusion zone's says its limits.
+        for (int i = 0; i < layer->labelCount(); ++i)
+            for (int j = i + 1; j < layer->labelCount(); ++j)
+                QVERIFY2(!layer->labelRect(i).intersects(layer->labelRect(j)), qPrintable(QStringLiteral("labels %1 and %2").arg(i).arg(j)));
+        bool inclusionLabelled = false;
+        for (int i = 0; i < layer->labelCount(); ++i)
+            inclusionLabelled |= layer->labelZone(i) == 4;
+        QVERIFY(inclusionLabelled);
+        const QString tip = layer->describe(4);
+        QVERIFY2(tip.contains(QStringLiteral("inclusion")) && tip.contains(QStringLiteral("20 m AGL")) && tip.contains(QStringLiteral("120 m AGL"))
+                     && tip.contains(QStringLiteral("drawn")),
+                 qPrintable(tip));
+        // A hover over the zone says so; off every zone, nothing.
+        layer->hoverAt(layer->mapFromScene(westInside));
+        QCOMPARE(layer->hoverText(), tip);
+        layer->hoverAt(QPointF(790, 590));
+        QVERIFY(layer->hoverText().isEmpty());
+
+        // Switched off: grey dashes, no hatch.
+        store.setActive(0, false);
+        store.setActive(1, false);
+        store.setActive(2, false);
+        store.setActive(3, false);
+        QTest::qWait(50);
+        const QImage off = scene.grab();
+        QCOMPARE(countNear(off, south, 8, ui::ZoneLayer::exclusionColour()), 0);
+    }
+};
+
+QTEST_MAIN(TestZoneView)
+#include "tst_zoneview.moc"
