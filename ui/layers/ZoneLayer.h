@@ -23,6 +23,7 @@ namespace sortie::ui {
 class ZoneLayer : public MapLayer
 {
     Q_OBJECT
+    Q_MOC_INCLUDE("Airspace.h")
     QML_ELEMENT
     Q_PROPERTY(sortie::airspace::Airspace *airspace READ airspace WRITE setAirspace NOTIFY airspaceChanged)
     Q_PROPERTY(int labelCount READ labelCount NOTIFY drawn)

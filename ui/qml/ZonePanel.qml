@@ -127,7 +127,7 @@ Frame {
                         Layout.fillWidth: true
                         Label { text: row.name; font.bold: true; elide: Text.ElideRight; Layout.fillWidth: true }
                         Label {
-                            text: row.problem.length > 0 ? row.problem : qsTr("%1 · %2 – %3").arg(row.source, row.floor, row.ceiling)
+                            text: row.problem.length > 0 ? row.problem : qsTr("%1 · %2 – %3").arg(row.source).arg(row.floor).arg(row.ceiling)
                             color: row.problem.length > 0 ? "#e53935" : palette.placeholderText
                             font.pixelSize: 11
                             elide: Text.ElideRight

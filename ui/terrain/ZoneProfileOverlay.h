@@ -1,13 +1,13 @@
 #pragma once
 
+#include "ElevationProfileView.h"
+
 #include <QPointer>
 #include <QQuickPaintedItem>
 #include <QVariant>
 #include <QtQml/qqmlregistration.h>
 
 namespace sortie::ui {
-
-class ElevationProfileView;
 
 // Over the elevation profile: where the route crosses a zone (Airspace.crossings, from the
 // airspace check: from/to metres along the flown path), the zone's floor and ceiling drawn at those
