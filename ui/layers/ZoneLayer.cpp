@@ -147,10 +147,11 @@ QString ZoneLayer::describe(int row) const
         return {};
     const Zone &z = m_airspace->zoneAt(row);
     const Airspace::Group group = m_airspace->groupOf(row);
-    const QString source = group == Airspace::Group::Server ? airspace::sourceName(z.source) : Airspace::groupName(group);
+    const QString source = group == Airspace::Group::Server ? airspace::sourceName(z.source)
+                         : group == Airspace::Group::Custom ? tr("drawn on the map") : Airspace::groupName(group);
+    const bool sayOrigin = !z.origin.isEmpty() && group != Airspace::Group::Custom;
     QString text = tr("%1 (%2 zone)\nSource: %3%4\nFloor %5, ceiling %6")
-                       .arg(z.name, airspace::kindName(z.kind), source,
-                            z.origin.isEmpty() ? QString() : QStringLiteral(" — ") + z.origin,
+                       .arg(z.name, airspace::kindName(z.kind), source, sayOrigin ? QStringLiteral(" — ") + z.origin : QString(),
                             airspace::limitText(z.floor, false), airspace::limitText(z.ceiling, true));
     if (const QString problem = m_airspace->problemOf(row); !problem.isEmpty())
         text += tr("\nNot checked: %1").arg(problem);
@@ -241,29 +242,35 @@ void ZoneLayer::paint(QPainter *painter)
         p.drawPath(path);
     }
 
-    // Labels: the chosen zone's first, then active exclusion zones, the rest after; each where it
-    // fits beside its zone's middle, left out where it would overlap another.
+    // Labels: the chosen zone's first, then active exclusion zones, the rest after; each just above
+    // its zone's outline (a route through the zone does not cover it), stacked down where another
+    // label is (a leader line back to the zone), left out where it would still overlap one.
+    const QFont nameFont = labelFont(p.font(), true), limitFont = labelFont(p.font(), false);
+    const QFontMetricsF nameMetrics(nameFont), limitMetrics(limitFont);
+    const double labelHeight = nameMetrics.height() + limitMetrics.height() + 2 * kLabelPadding;
     std::vector<int> order;
-    std::vector<QPointF> anchors(m_outlines.size());
+    std::vector<QPointF> anchors(m_outlines.size(), QPointF(-1e9, -1e9));
     const QRectF visible(QPointF(0, 0), view.size());
     for (size_t row = 0; row < m_outlines.size(); ++row) {
-        anchors[row] = m_outlines[row].centre.isValid() ? view.geoToScreen(m_outlines[row].centre) : QPointF(-1e9, -1e9);
-        if (visible.contains(anchors[row]))
-            order.push_back(int(row));
+        const QRectF box = paths[row].boundingRect();
+        if (box.isEmpty() || !visible.intersects(box))
+            continue;
+        // LabelPlacer puts a label at its mark + kOffset, centred on the mark's height.
+        anchors[row] = QPointF(box.left(), box.top() - 2 - labelHeight / 2) - LabelPlacer::kOffset;
+        order.push_back(int(row));
     }
     const auto rank = [&](int row) {
         const Zone &z = m_airspace->zoneAt(row);
         return row == selected ? 0 : z.active && z.kind == airspace::ZoneKind::Exclusion ? 1 : 2;
     };
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return rank(a) < rank(b); });
-    const QFont nameFont = labelFont(p.font(), true), limitFont = labelFont(p.font(), false);
-    const QFontMetricsF nameMetrics(nameFont), limitMetrics(limitFont);
     LabelPlacer placer(anchors);
     for (const int row : order) {
         const QStringList lines = labelText(m_airspace->zoneAt(row)).split(QLatin1Char('\n'));
         const QSizeF size(std::max(nameMetrics.horizontalAdvance(lines[0]), limitMetrics.horizontalAdvance(lines[1])) + 2 * kLabelPadding,
-                          nameMetrics.height() + limitMetrics.height() + 2 * kLabelPadding);
-        const QRectF rect = placer.place(size_t(row), size).rect;
+                          labelHeight);
+        const LabelPlacer::Placement placement = placer.place(size_t(row), size);
+        const QRectF rect = placement.rect;
         const bool overlaps = std::any_of(m_labels.begin(), m_labels.end(), [&](const Label &l) { return l.rect.intersects(rect); });
         if (overlaps)
             continue;
@@ -271,6 +278,11 @@ void ZoneLayer::paint(QPainter *painter)
         const Zone &z = m_airspace->zoneAt(row);
         const QColor ink = !z.active ? QColor(0x61, 0x61, 0x61) : z.kind == airspace::ZoneKind::Exclusion ? exclusionColour().darker(130)
                                                                                                          : inclusionColour().darker(120);
+        if (placement.moved) {
+            const QRectF box = paths[size_t(row)].boundingRect();
+            p.setPen(QPen(ink, 1, Qt::DotLine));
+            p.drawLine(QPointF(rect.left(), rect.center().y()), QPointF(box.left(), box.top()));
+        }
         p.setPen(QPen(ink, 1));
         p.setBrush(QColor(255, 255, 255, 215));
         p.drawRoundedRect(rect, 3, 3);

@@ -151,8 +151,13 @@ Page {
                     anchors.fill: parent
                     map: pane.map
                     airspace: page.airspace
-                    ToolTip.visible: hoverText.length > 0
-                    ToolTip.text: hoverText
+                    ToolTip {
+                        // Where the mouse is: the zone's source and limits.
+                        visible: parent.hoverText.length > 0
+                        text: parent.hoverText
+                        x: parent.hoverPosition.x + 12
+                        y: parent.hoverPosition.y + 16
+                    }
                 }
                 FleetRoutesLayer {
                     objectName: "flyFleetRoutesLayer"
