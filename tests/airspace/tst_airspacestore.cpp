@@ -245,6 +245,17 @@ private slots:
         f.store->setActive(1, false);
         f.store->setServerZones({aerodrome});
         QVERIFY(!f.store->zoneAt(1).active);
+        // One whose ring crosses itself is kept and listed with the reason, not checked.
+        Zone bowTie;
+        bowTie.name = QStringLiteral("Bow tie");
+        bowTie.source = ZoneSource::ServerCustom;
+        bowTie.shape = ZonePolygons{{ZonePolygon{{{{56.95, 24.10}, {56.96, 24.12}, {56.96, 24.10}, {56.95, 24.12}}}}}};
+        f.store->setServerZones({aerodrome, bowTie});
+        QCOMPARE(f.store->count(), 3);
+        QVERIFY(!f.store->zoneAt(2).active);
+        QVERIFY2(!f.store->problemOf(2).isEmpty(), "no reason given");
+        QCOMPARE(f.store->zones()->index(2).data(ZoneListModel::ProblemRole).toString(), f.store->problemOf(2));
+        QVERIFY(f.store->problemOf(1).isEmpty());
     }
 
     void drawnZonesAreKeptAcrossRestarts()

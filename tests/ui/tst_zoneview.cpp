@@ -163,16 +163,20 @@ private slots:
         // On the map: hatched red inside the zone, its label, its tooltip.
         auto *zones = client.find<ui::ZoneLayer>(QStringLiteral("missionZoneLayer"));
         QTRY_VERIFY(zones->labelCount() == 1);
-        zones->hoverAt(zones->mapFromScene(onMap(origin.atDistanceAndAzimuth(150, 90).atDistanceAndAzimuth(30, 0))));
-        QVERIFY2(zones->hoverText().contains(QStringLiteral("Zone 1")) && zones->hoverText().contains(QStringLiteral("ground"))
-                     && zones->hoverText().contains(QStringLiteral("drawn")),
-                 qPrintable(zones->hoverText()));
         QVERIFY(test::waitForFrame(client.window()));
         const QImage image = client.window()->grabWindow();
         image.save(QDir(screenshotDir()).filePath(QStringLiteral("zones.png")));
         const QPointF inside = onMap(origin.atDistanceAndAzimuth(150, 90).atDistanceAndAzimuth(25, 180));
         QVERIFY2(countNear(image, inside, 10, ui::ZoneLayer::exclusionColour()) > 4, "no red hatch inside the zone");
+        QCOMPARE(profile->bandCount(), 1);
+        const QRectF band = profile->bandRect(0);
+        QVERIFY2(countNear(image, profile->mapToScene(band.center()), 6, ui::ZoneLayer::exclusionColour()) > 2, "no red band on the profile");
 
+        // Hovered: the tooltip says where it comes from and its limits.
+        zones->hoverAt(zones->mapFromScene(onMap(origin.atDistanceAndAzimuth(150, 90).atDistanceAndAzimuth(30, 0))));
+        QVERIFY2(zones->hoverText().contains(QStringLiteral("Zone 1")) && zones->hoverText().contains(QStringLiteral("ground"))
+                     && zones->hoverText().contains(QStringLiteral("drawn")),
+                 qPrintable(zones->hoverText()));
         // Upload: refused, naming the zone; nothing reaches the vehicle.
         client::RoutePreparation *preparation = client.missions().preparation();
         client::MissionUploader *uploader = preparation->uploader();

@@ -264,7 +264,7 @@ void ZoneLayer::paint(QPainter *painter)
         return row == selected ? 0 : z.active && z.kind == airspace::ZoneKind::Exclusion ? 1 : 2;
     };
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return rank(a) < rank(b); });
-    LabelPlacer placer(anchors);
+    LabelPlacer placer(anchors, 0); // the anchors are only where labels go: the zones themselves may be covered
     for (const int row : order) {
         const QStringList lines = labelText(m_airspace->zoneAt(row)).split(QLatin1Char('\n'));
         const QSizeF size(std::max(nameMetrics.horizontalAdvance(lines[0]), limitMetrics.horizontalAdvance(lines[1])) + 2 * kLabelPadding,

@@ -198,6 +198,9 @@ bool Airspace::selectZoneOfIssue(const QString &message)
 void Airspace::setServerZones(std::vector<Zone> zones)
 {
     m_server = std::move(zones);
+    m_serverProblems.clear();
+    for (const Zone &z : m_server)
+        m_serverProblems.push_back(shapeProblem(z));
     rebuild();
 }
 
@@ -246,30 +249,34 @@ void Airspace::followRouteFence()
 }
 
 // One set per change: every source in row order, the operator's switches applied, a polygon that
-// cannot be checked kept (drawn, listed with its reason) but not checked.
+// cannot be checked kept (drawn, listed with its reason) but not checked. Validity is checked here
+// only for the drawn zones and the route's fence (a few); the server's were checked as they came,
+// and the file readers leave such a polygon out.
 void Airspace::rebuild()
 {
     std::vector<Zone> all;
     std::vector<Group> groups;
-    const auto add = [&](const std::vector<Zone> &zones, Group group) {
-        for (Zone z : zones) {
+    std::vector<QString> problems;
+    const auto add = [&](const std::vector<Zone> &zones, Group group, const std::vector<QString> *known) {
+        for (size_t i = 0; i < zones.size(); ++i) {
+            Zone z = zones[i];
             if (group != Group::Custom && m_inactive.contains(keyOf(group, z)))
                 z.active = false;
+            QString problem = known ? (i < known->size() ? (*known)[i] : QString()) : shapeProblem(z);
+            if (!problem.isEmpty())
+                z.active = false;
+            problems.push_back(std::move(problem));
             all.push_back(std::move(z));
             groups.push_back(group);
         }
     };
-    add(m_custom, Group::Custom);
-    add(m_server, Group::Server);
+    static const std::vector<QString> none;
+    add(m_custom, Group::Custom, nullptr);
+    add(m_server, Group::Server, &m_serverProblems);
     for (const LoadedFile &f : m_files)
-        add(f.zones, Group::File);
-    add(m_fence, Group::RouteFence);
-    m_shapeProblems.assign(all.size(), QString());
-    for (size_t i = 0; i < all.size(); ++i)
-        if (const QString problem = shapeProblem(all[i]); !problem.isEmpty()) {
-            m_shapeProblems[i] = problem;
-            all[i].active = false;
-        }
+        add(f.zones, Group::File, &none);
+    add(m_fence, Group::RouteFence, nullptr);
+    m_shapeProblems = std::move(problems);
     m_groups = std::move(groups);
     const int before = count();
     m_set = std::make_shared<const ZoneSet>(std::move(all));

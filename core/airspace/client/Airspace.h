@@ -140,6 +140,7 @@ private:
     std::vector<LoadedFile> m_files;
     std::vector<Group> m_groups;            // by row, as last built
     std::vector<QString> m_shapeProblems;   // by row
+    std::vector<QString> m_serverProblems;  // by server zone, found as they came
     QSet<QString> m_inactive;               // keys of zones switched off (not custom: they carry it)
     std::shared_ptr<const ZoneSet> m_set;
     double m_buffer = 20.0;
