@@ -39,6 +39,7 @@ public:
     // or without zones): the client's views draw where the route crosses which zone.
     const AirspaceReport &lastReport() const { return m_lastReport; }
     const std::shared_ptr<const ZoneSet> &lastZones() const { return m_lastZones; }
+    const FlownPath &lastPath() const { return m_lastPath; }
     void check(const mission::Route &route, mission::ScanPlanCache *cache, std::vector<mission::ValidationIssue> &issues) override;
 
 private:
@@ -49,6 +50,7 @@ private:
     std::optional<mission::GeoPoint> m_frameOrigin;
     AirspaceReport m_lastReport;
     std::shared_ptr<const ZoneSet> m_lastZones;
+    FlownPath m_lastPath;
 };
 
 } // namespace sortie::airspace

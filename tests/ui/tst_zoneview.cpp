@@ -14,6 +14,7 @@
 #include "RouteLayer.h"
 #include "RouteModel.h"
 #include "RoutePreparation.h"
+#include "ZoneCrossingLayer.h"
 #include "ZoneEditor.h"
 #include "ZoneLayer.h"
 #include "ZoneProfileOverlay.h"
@@ -170,6 +171,13 @@ private slots:
         QVERIFY(profile);
         QTRY_COMPARE(profile->crossings().size(), 1);
 
+        // On the map: the stretch of leg 2 inside the zone red over the route.
+        auto *stretches = client.find<ui::ZoneCrossingLayer>(QStringLiteral("zoneCrossingLayer"));
+        QTRY_COMPARE(stretches->stretchCount(), 1);
+        const QPointF middle = stretches->mapToScene(stretches->stretchMiddle(0));
+        const QPointF expected = onMap(origin.atDistanceAndAzimuth(150, 90));
+        QVERIFY2(QLineF(middle, expected).length() < 4, qPrintable(QStringLiteral("%1,%2 vs %3,%4").arg(middle.x()).arg(middle.y()).arg(expected.x()).arg(expected.y())));
+
         // On the map: hatched red inside the zone, its label, its tooltip.
         auto *zones = client.find<ui::ZoneLayer>(QStringLiteral("missionZoneLayer"));
         QTRY_VERIFY(zones->labelCount() == 1);
@@ -178,6 +186,9 @@ private slots:
         image.save(QDir(screenshotDir()).filePath(QStringLiteral("zones.png")));
         const QPointF inside = onMap(origin.atDistanceAndAzimuth(150, 90).atDistanceAndAzimuth(25, 180));
         QVERIFY2(countNear(image, inside, 10, ui::ZoneLayer::exclusionColour()) > 4, "no red hatch inside the zone");
+        // The leg red where it is inside (between its waypoints 2 and 3, off the selected marker).
+        QVERIFY2(countNear(image, onMap(origin.atDistanceAndAzimuth(140, 90)), 2, ui::ZoneCrossingLayer::colour()) > 2, "the leg is not red in the zone");
+        QCOMPARE(countNear(image, onMap(origin.atDistanceAndAzimuth(60, 90)), 2, ui::ZoneCrossingLayer::colour()), 0);
         QCOMPARE(profile->bandCount(), 1);
         const QRectF band = profile->bandRect(0);
         QVERIFY2(countNear(image, profile->mapToScene(band.center()), 6, ui::ZoneLayer::exclusionColour()) > 2, "no red band on the profile");

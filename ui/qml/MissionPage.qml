@@ -155,6 +155,14 @@ Page {
                 onWaypointsMoved: (rows, coordinates) => page.doc.editor.moveWaypoints(rows, coordinates)
                 onLegClicked: (leg, coordinate, modifiers) => page.doc.editor.insertWaypoint(leg + 1, coordinate)
             }
+            ZoneCrossingLayer {
+                // The stretches of the route inside a zone (the issue list's airspace errors), red over the route.
+                objectName: "zoneCrossingLayer"
+                anchors.fill: parent
+                map: pane.map
+                enabled: false // clicks are for the route
+                crossings: page.airspace.crossings
+            }
             AreaScanLayer {
                 id: areaLayer
                 objectName: "areaLayer"

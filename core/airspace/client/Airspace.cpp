@@ -11,6 +11,7 @@
 #include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
+#include <QGeoCoordinate>
 #include <QLoggingCategory>
 #include <QSettings>
 
@@ -23,6 +24,34 @@ namespace sortie::airspace {
 namespace {
 const QString kBufferKey = QStringLiteral("airspace/buffer");
 const QString kFilesKey = QStringLiteral("airspace/zoneFiles");
+
+// The flown path between two distances from the route's start along one leg, as coordinates: the
+// leg's own points between them and the two ends interpolated (pieces are short and straight).
+QVariantList stretchOf(const FlownPath &path, int legNumber, double from, double to)
+{
+    QVariantList out;
+    const auto leg = std::find_if(path.legs.begin(), path.legs.end(), [&](const FlownLeg &l) { return l.leg == legNumber; });
+    if (leg == path.legs.end() || leg->points.empty())
+        return out;
+    const auto at = [&](double d) {
+        const double along = d - leg->start;
+        const std::vector<FlownPoint> &p = leg->points;
+        for (size_t i = 1; i < p.size(); ++i)
+            if (along <= p[i].along || i + 1 == p.size()) {
+                const double span = p[i].along - p[i - 1].along;
+                const double t = span > 0 ? std::clamp((along - p[i - 1].along) / span, 0.0, 1.0) : 0.0;
+                return QGeoCoordinate(p[i - 1].position.latitude + t * (p[i].position.latitude - p[i - 1].position.latitude),
+                                      p[i - 1].position.longitude + t * (p[i].position.longitude - p[i - 1].position.longitude));
+            }
+        return QGeoCoordinate(p.front().position.latitude, p.front().position.longitude);
+    };
+    out.append(QVariant::fromValue(at(from)));
+    for (const FlownPoint &p : leg->points)
+        if (leg->start + p.along > from && leg->start + p.along < to)
+            out.append(QVariant::fromValue(QGeoCoordinate(p.position.latitude, p.position.longitude)));
+    out.append(QVariant::fromValue(at(to)));
+    return out;
+}
 
 QVariant limitValue(const std::optional<HeightLimit> &limit)
 {
@@ -297,6 +326,8 @@ void Airspace::readCrossings()
             list.append(QVariantMap{{QStringLiteral("from"), v.fromDistance},
                                     {QStringLiteral("to"), v.toDistance},
                                     {QStringLiteral("zone"), v.zone},
+                                    {QStringLiteral("leg"), v.leg},
+                                    {QStringLiteral("path"), stretchOf(m_rule->lastPath(), v.leg, v.fromDistance, v.toDistance)},
                                     {QStringLiteral("name"), z.name},
                                     {QStringLiteral("kind"), kindName(z.kind)},
                                     {QStringLiteral("floor"), limitValue(z.floor)},

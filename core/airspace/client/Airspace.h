@@ -51,8 +51,9 @@ class Airspace : public QObject
     // The chosen zone when it is a custom one (its index in the editor's terms), else -1.
     Q_PROPERTY(int selectedCustom READ selectedCustom NOTIFY selectedZoneChanged)
     // Where the route crosses zones, as the last check found: [{from, to (metres along the flown
-    // path), zone (row), name, kind, floor, ceiling ({metres, reference: "AMSL"|"AGL"|"HOME"} or
-    // null: ground / unlimited)}], by distance. The terrain profile draws them.
+    // path), leg, path (the stretch's QGeoCoordinates), zone (row), name, kind, floor, ceiling
+    // ({metres, reference: "AMSL"|"AGL"|"HOME"} or null: ground / unlimited)}], by leg and distance.
+    // The map draws the stretches red, the terrain profile the limits.
     Q_PROPERTY(QVariantList crossings READ crossings NOTIFY crossingsChanged)
 
 public:
