@@ -186,9 +186,10 @@ private slots:
         image.save(QDir(screenshotDir()).filePath(QStringLiteral("zones.png")));
         const QPointF inside = onMap(origin.atDistanceAndAzimuth(150, 90).atDistanceAndAzimuth(25, 180));
         QVERIFY2(countNear(image, inside, 10, ui::ZoneLayer::exclusionColour()) > 4, "no red hatch inside the zone");
-        // The leg red where it is inside (between its waypoints 2 and 3, off the selected marker).
-        QVERIFY2(countNear(image, onMap(origin.atDistanceAndAzimuth(140, 90)), 2, ui::ZoneCrossingLayer::colour()) > 2, "the leg is not red in the zone");
-        QCOMPARE(countNear(image, onMap(origin.atDistanceAndAzimuth(60, 90)), 2, ui::ZoneCrossingLayer::colour()), 0);
+        // The leg red where it is inside (its line's own pixels, which the route draws over the hatch),
+        // and not where it is not.
+        QVERIFY2(countNear(image, onMap(origin.atDistanceAndAzimuth(140, 90)), 1, ui::ZoneCrossingLayer::colour()) >= 5, "the leg is not red in the zone");
+        QCOMPARE(countNear(image, onMap(origin.atDistanceAndAzimuth(60, 90)), 1, ui::ZoneCrossingLayer::colour()), 0);
         QCOMPARE(profile->bandCount(), 1);
         const QRectF band = profile->bandRect(0);
         QVERIFY2(countNear(image, profile->mapToScene(band.center()), 6, ui::ZoneLayer::exclusionColour()) > 2, "no red band on the profile");
