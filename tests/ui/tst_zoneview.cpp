@@ -199,6 +199,8 @@ private slots:
         QVERIFY2(zones->hoverText().contains(QStringLiteral("Zone 1")) && zones->hoverText().contains(QStringLiteral("ground"))
                      && zones->hoverText().contains(QStringLiteral("drawn")),
                  qPrintable(zones->hoverText()));
+        zones->hoverAt(QPointF(-10, -10)); // the mouse leaves: the tooltip closes
+        QVERIFY(zones->hoverText().isEmpty());
         // Upload: refused, naming the zone; nothing reaches the vehicle.
         client::RoutePreparation *preparation = client.missions().preparation();
         client::MissionUploader *uploader = preparation->uploader();

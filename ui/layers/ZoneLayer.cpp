@@ -5,6 +5,7 @@
 #include "LabelPlacer.h"
 
 #include <QFontMetricsF>
+#include <QGuiApplication>
 #include <QHoverEvent>
 #include <QPainter>
 
@@ -190,7 +191,12 @@ void ZoneLayer::hoverAt(QPointF position)
 
 void ZoneLayer::hoverMoveEvent(QHoverEvent *event)
 {
-    hoverAt(event->position());
+    // No tooltip while a button is held: a popup opening mid-drag would take the drag from the
+    // layer that has it (a zone's corner, a waypoint).
+    if (QGuiApplication::mouseButtons() != Qt::NoButton)
+        hoverAt(QPointF(-1e9, -1e9));
+    else
+        hoverAt(event->position());
     event->ignore(); // the layers below and the map see the mouse too
 }
 
