@@ -6,6 +6,7 @@
 // zone's edge is, labels that never overlap, a tooltip with source and limits.
 #include "Airspace.h"
 #include "ClientWindow.h"
+#include "FleetRoutes.h"
 #include "MapView.h"
 #include "MissionUploader.h"
 #include "QuickScene.h"
@@ -116,21 +117,32 @@ private slots:
         auto *map = client.page("missionPage")->property("map").value<ui::MapView *>();
         const QGeoCoordinate east = origin.atDistanceAndAzimuth(400, 90);
         QCOMPARE(doc->analyzer()->validation().errorCount(), 0);
+        // The route is for EMU-101, picked as the operator picks it; the fleet's route list opens
+        // beside the map with it, so the map's layout settles before anything is drawn on it.
+        int emuRow = -1;
+        for (int r = 0; r < client.fleet().count(); ++r)
+            if (client.fleet().vehicleAt(r) == emu)
+                emuRow = r;
+        client.find<QObject>(QStringLiteral("vehiclePicker"))->setProperty("currentIndex", emuRow);
+        QTRY_VERIFY(client.graph().fleetRoutes()->count() > 0);
 
-        // The zone panel, the polygon tool, four corners around leg 2 (100–200 m), Create.
+        // The zone panel, the polygon tool, four corners around leg 4 (300–400 m), Create.
         airspace::Airspace &airspace = client.graph().airspace();
         click(client.window(), centreOf(client.find(QStringLiteral("zonesButton"))));
         QQuickItem *panel = client.find(QStringLiteral("zonePanel"));
         QTRY_VERIFY(panel->isVisible());
-        // The route in the map's right part (the zone panel is over its left), once the page's
+        // The zone's place in the map's right part (the zone panel is over its left), once the page's
         // layout has settled (the fleet's route list may have opened beside the map).
         QTest::qWait(300);
-        map->fitBounds(origin.latitude() - 0.0015, origin.longitude() - 0.008, origin.latitude() + 0.0015, east.longitude() + 0.001, 60);
+        map->fitBounds(origin.latitude() - 0.0015, origin.longitude() - 0.001, origin.latitude() + 0.0015, east.longitude() + 0.001, 60);
         QTest::qWait(100);
-        QVERIFY(map->mapToScene(map->fromCoordinate(origin)).x() > panel->mapToScene(QPointF(panel->width(), 0)).x() + 20);
+        const double zoneX = map->mapToScene(map->fromCoordinate(origin.atDistanceAndAzimuth(330, 90))).x();
+        const double panelRight = panel->mapToScene(QPointF(panel->width(), 0)).x();
+        QVERIFY2(zoneX > panelRight + 20, qPrintable(QStringLiteral("zone at x %1, panel to %2, map %3 wide at %4")
+                                                        .arg(zoneX).arg(panelRight).arg(map->width()).arg(map->mapToScene(QPointF(0, 0)).x())));
         click(client.window(), centreOf(client.find(QStringLiteral("drawZonePolygon"))));
         const auto onMap = [map](const QGeoCoordinate &c) { return map->mapToScene(map->fromCoordinate(c)); };
-        const QGeoCoordinate a = origin.atDistanceAndAzimuth(130, 90), b = origin.atDistanceAndAzimuth(170, 90);
+        const QGeoCoordinate a = origin.atDistanceAndAzimuth(330, 90), b = origin.atDistanceAndAzimuth(370, 90);
         const QGeoCoordinate corners[] = {a.atDistanceAndAzimuth(40, 180), b.atDistanceAndAzimuth(40, 180), b.atDistanceAndAzimuth(40, 0),
                                           a.atDistanceAndAzimuth(40, 0)};
         for (const QGeoCoordinate &c : corners)
@@ -155,7 +167,7 @@ private slots:
             return nullptr;
         };
         QTRY_VERIFY(issueRow());
-        QVERIFY2(issueRow()->property("message").toString().startsWith(QStringLiteral("Leg 2 enters 'Zone 1' from 1")),
+        QVERIFY2(issueRow()->property("message").toString().startsWith(QStringLiteral("Leg 4 enters 'Zone 1' from 3")),
                  qPrintable(issueRow()->property("message").toString()));
         // A click on it chooses the leg (the row it ends at) and the zone.
         airspace.setSelectedZone(-1);
@@ -164,18 +176,18 @@ private slots:
                 click(client.window(), centreOf(row));
             return airspace.selectedZone() == 0;
         })(), 10000);
-        QCOMPARE(doc->selectedRows(), QList<int>{2});
+        QCOMPARE(doc->selectedRows(), QList<int>{4});
 
         // The terrain profile marks where the route is inside it.
         auto *profile = client.find<ui::ZoneProfileOverlay>(QStringLiteral("zoneProfile"));
         QVERIFY(profile);
         QTRY_COMPARE(profile->crossings().size(), 1);
 
-        // On the map: the stretch of leg 2 inside the zone red over the route.
+        // On the map: the stretch of leg 4 inside the zone red over the route.
         auto *stretches = client.find<ui::ZoneCrossingLayer>(QStringLiteral("zoneCrossingLayer"));
         QTRY_COMPARE(stretches->stretchCount(), 1);
         const QPointF middle = stretches->mapToScene(stretches->stretchMiddle(0));
-        const QPointF expected = onMap(origin.atDistanceAndAzimuth(150, 90));
+        const QPointF expected = onMap(origin.atDistanceAndAzimuth(350, 90));
         QVERIFY2(QLineF(middle, expected).length() < 4, qPrintable(QStringLiteral("%1,%2 vs %3,%4").arg(middle.x()).arg(middle.y()).arg(expected.x()).arg(expected.y())));
 
         // On the map: hatched red inside the zone, its label, its tooltip.
@@ -184,18 +196,18 @@ private slots:
         QVERIFY(test::waitForFrame(client.window()));
         const QImage image = client.window()->grabWindow();
         image.save(QDir(screenshotDir()).filePath(QStringLiteral("zones.png")));
-        const QPointF inside = onMap(origin.atDistanceAndAzimuth(150, 90).atDistanceAndAzimuth(25, 180));
+        const QPointF inside = onMap(origin.atDistanceAndAzimuth(350, 90).atDistanceAndAzimuth(25, 180));
         QVERIFY2(countNear(image, inside, 10, ui::ZoneLayer::exclusionColour()) > 4, "no red hatch inside the zone");
         // The leg red where it is inside (its line's own pixels, which the route draws over the hatch),
         // and not where it is not.
-        QVERIFY2(countNear(image, onMap(origin.atDistanceAndAzimuth(140, 90)), 1, ui::ZoneCrossingLayer::colour()) >= 5, "the leg is not red in the zone");
-        QCOMPARE(countNear(image, onMap(origin.atDistanceAndAzimuth(60, 90)), 1, ui::ZoneCrossingLayer::colour()), 0);
+        QVERIFY2(countNear(image, onMap(origin.atDistanceAndAzimuth(340, 90)), 1, ui::ZoneCrossingLayer::colour()) >= 5, "the leg is not red in the zone");
+        QCOMPARE(countNear(image, onMap(origin.atDistanceAndAzimuth(260, 90)), 1, ui::ZoneCrossingLayer::colour()), 0);
         QCOMPARE(profile->bandCount(), 1);
         const QRectF band = profile->bandRect(0);
         QVERIFY2(countNear(image, profile->mapToScene(band.center()), 6, ui::ZoneLayer::exclusionColour()) > 2, "no red band on the profile");
 
         // Hovered: the tooltip says where it comes from and its limits.
-        zones->hoverAt(zones->mapFromScene(onMap(origin.atDistanceAndAzimuth(150, 90).atDistanceAndAzimuth(30, 0))));
+        zones->hoverAt(zones->mapFromScene(onMap(origin.atDistanceAndAzimuth(350, 90).atDistanceAndAzimuth(30, 0))));
         QVERIFY2(zones->hoverText().contains(QStringLiteral("Zone 1")) && zones->hoverText().contains(QStringLiteral("ground"))
                      && zones->hoverText().contains(QStringLiteral("drawn")),
                  qPrintable(zones->hoverText()));
@@ -204,11 +216,6 @@ private slots:
         // Upload: refused, naming the zone; nothing reaches the vehicle.
         client::RoutePreparation *preparation = client.missions().preparation();
         client::MissionUploader *uploader = preparation->uploader();
-        int emuRow = -1;
-        for (int r = 0; r < client.fleet().count(); ++r)
-            if (client.fleet().vehicleAt(r) == emu)
-                emuRow = r;
-        client.find<QObject>(QStringLiteral("vehiclePicker"))->setProperty("currentIndex", emuRow);
         QSignalSpy finished(uploader, &client::MissionUploader::finished);
         QQuickItem *upload = client.find(QStringLiteral("uploadButton"));
         QTRY_VERIFY(upload->isVisible() && upload->isEnabled());
