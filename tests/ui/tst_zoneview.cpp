@@ -293,11 +293,15 @@ private slots:
         QVERIFY2(tip.contains(QStringLiteral("inclusion")) && tip.contains(QStringLiteral("20 m AGL")) && tip.contains(QStringLiteral("120 m AGL"))
                      && tip.contains(QStringLiteral("drawn")),
                  qPrintable(tip));
-        // A hover over the zone says so; off every zone, nothing.
-        layer->hoverAt(layer->mapFromScene(westInside));
-        QCOMPARE(layer->hoverText(), tip);
-        layer->hoverAt(QPointF(790, 590));
-        QVERIFY(layer->hoverText().isEmpty());
+        // The mouse over the zone: the map still shows where the cursor is, and the tooltip says
+        // what the zone is; off every zone, nothing.
+        auto *map = scene.find<ui::MapView>(QStringLiteral("map"));
+        QTest::mouseMove(&scene.view(), westInside.toPoint());
+        QTRY_VERIFY(map->isCursorInside());
+        QTRY_COMPARE(layer->hoverText(), tip);
+        QTest::mouseMove(&scene.view(), QPoint(790, 590));
+        QTRY_VERIFY(layer->hoverText().isEmpty());
+        QVERIFY(map->isCursorInside());
 
         // Switched off: grey dashes, no hatch.
         store.setActive(0, false);

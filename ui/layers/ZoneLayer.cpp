@@ -65,8 +65,25 @@ QFont labelFont(const QFont &base, bool bold)
 ZoneLayer::ZoneLayer(QQuickItem *parent)
     : MapLayer(parent)
 {
-    setAcceptedMouseButtons(Qt::NoButton); // only drawn: clicks go on to the map
-    setAcceptHoverEvents(true);
+    // Only drawn: clicks go on to the map. Hover is the map's (it shows the cursor's position);
+    // the layer follows the map's cursor rather than taking hover events from it.
+    setAcceptedMouseButtons(Qt::NoButton);
+    connect(this, &MapLayer::mapChanged, this, [this] {
+        disconnect(m_cursorConnection);
+        if (map())
+            m_cursorConnection = connect(map(), &MapView::cursorChanged, this, &ZoneLayer::followCursor);
+    });
+}
+
+void ZoneLayer::followCursor()
+{
+    // No tooltip while a button is held: a popup opening mid-drag would take the drag from the
+    // layer that has it (a zone's corner, a waypoint).
+    if (!map() || !map()->isCursorInside() || QGuiApplication::mouseButtons() != Qt::NoButton) {
+        hoverAt(QPointF(-1e9, -1e9));
+        return;
+    }
+    hoverAt(mapFromItem(map(), map()->fromCoordinate(map()->cursorCoordinate())));
 }
 
 void ZoneLayer::setAirspace(airspace::Airspace *airspace)
@@ -187,26 +204,6 @@ void ZoneLayer::hoverAt(QPointF position)
     m_hoverText = text;
     m_hoverPosition = position;
     emit hoverChanged();
-}
-
-void ZoneLayer::hoverMoveEvent(QHoverEvent *event)
-{
-    // No tooltip while a button is held: a popup opening mid-drag would take the drag from the
-    // layer that has it (a zone's corner, a waypoint).
-    if (QGuiApplication::mouseButtons() != Qt::NoButton)
-        hoverAt(QPointF(-1e9, -1e9));
-    else
-        hoverAt(event->position());
-    event->ignore(); // the layers below and the map see the mouse too
-}
-
-void ZoneLayer::hoverLeaveEvent(QHoverEvent *event)
-{
-    if (!m_hoverText.isEmpty()) {
-        m_hoverText.clear();
-        emit hoverChanged();
-    }
-    event->ignore();
 }
 
 void ZoneLayer::paint(QPainter *painter)

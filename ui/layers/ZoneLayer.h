@@ -19,7 +19,7 @@ namespace sortie::ui {
 // zones switched off (or that cannot be checked) dashed grey, the chosen one with a halo; each
 // labelled with its name and floor – ceiling where the label fits (LabelPlacer; a label that would
 // overlap another is left out, never drawn over it). Hovering a zone shows its source and limits
-// (`hoverText`, for a ToolTip). Only drawn: clicks go on to the map and the layers above.
+// (`hoverText`, for a ToolTip; from the map's cursor). Only drawn: clicks and hover go on to the map.
 class ZoneLayer : public MapLayer
 {
     Q_OBJECT
@@ -61,10 +61,6 @@ signals:
     void hoverChanged();
     void drawn();
 
-protected:
-    void hoverMoveEvent(QHoverEvent *event) override;
-    void hoverLeaveEvent(QHoverEvent *event) override;
-
 private:
     // A zone's outline in longitude/latitude: polygons with holes, or the circle(s) as rings.
     struct Outline
@@ -79,6 +75,7 @@ private:
         QRectF rect;  // paint coordinates
     };
     void readZones();
+    void followCursor();
     QPainterPath pathOf(const Outline &outline, const MapViewport &view, QPointF offset = {}) const;
 
     QPointer<airspace::Airspace> m_airspace;
@@ -86,6 +83,7 @@ private:
     std::vector<Label> m_labels;
     QString m_hoverText;
     QPointF m_hoverPosition;
+    QMetaObject::Connection m_cursorConnection;
 };
 
 } // namespace sortie::ui
