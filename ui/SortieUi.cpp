@@ -1,5 +1,6 @@
 #include "SortieUi.h"
 
+#include "Airspace.h"
 #include "AppSettings.h"
 #include "AutosaveRecovery.h"
 #include "ClientGraph.h"
@@ -46,7 +47,8 @@ QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settin
             {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())},
             {QStringLiteral("proximity"), QVariant::fromValue<QObject *>(graph.proximity())},
             {QStringLiteral("zoneAlerts"), QVariant::fromValue<QObject *>(graph.zoneAlerts())},
-            {QStringLiteral("deconfliction"), QVariant::fromValue<QObject *>(graph.deconfliction())}};
+            {QStringLiteral("deconfliction"), QVariant::fromValue<QObject *>(graph.deconfliction())},
+            {QStringLiteral("airspace"), QVariant::fromValue<QObject *>(&graph.airspace())}};
 }
 
 } // namespace sortie::ui

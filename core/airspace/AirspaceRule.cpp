@@ -82,6 +82,9 @@ void AirspaceRule::setBuffer(double metres)
 
 void AirspaceRule::check(const mission::Route &route, mission::ScanPlanCache *cache, std::vector<ValidationIssue> &issues)
 {
+    m_lastReport = {};
+    m_lastZones = m_zones;
+    m_lastPath = {};
     if (!m_zones || m_zones->zones().empty())
         return;
     if (!m_checker)
@@ -102,9 +105,10 @@ void AirspaceRule::check(const mission::Route &route, mission::ScanPlanCache *ca
     if (!m_frameOrigin || mission::geodesicDistance(centre, *m_frameOrigin) > kFrameDrift)
         m_frameOrigin = centre;
     const mission::LocalTangentPlane plane(*m_frameOrigin);
-    const FlownPath path = flownPath(pr, ground ? &*ground : nullptr, flightEndsOf(route), &plane);
-    const AirspaceReport report = m_checker->check(path);
-    const std::vector<ValidationIssue> found = airspaceIssues(report, *m_zones, m_buffer);
+    FlownPath path = flownPath(pr, ground ? &*ground : nullptr, flightEndsOf(route), &plane);
+    m_lastReport = m_checker->check(path);
+    m_lastPath = std::move(path);  // kept (not copied) for the views: where each violation is
+    const std::vector<ValidationIssue> found = airspaceIssues(m_lastReport, *m_zones, m_buffer);
     issues.insert(issues.end(), found.begin(), found.end());
 }
 

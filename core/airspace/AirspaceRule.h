@@ -35,6 +35,11 @@ public:
     void setZones(std::shared_ptr<const ZoneSet> zones);
     void setBuffer(double metres);
     double buffer() const { return m_buffer; }
+    // What the last check found, and the zone set its zone indices refer to (none before a check
+    // or without zones): the client's views draw where the route crosses which zone.
+    const AirspaceReport &lastReport() const { return m_lastReport; }
+    const std::shared_ptr<const ZoneSet> &lastZones() const { return m_lastZones; }
+    const FlownPath &lastPath() const { return m_lastPath; }
     void check(const mission::Route &route, mission::ScanPlanCache *cache, std::vector<mission::ValidationIssue> &issues) override;
 
 private:
@@ -43,6 +48,9 @@ private:
     double m_buffer = 20.0;
     std::unique_ptr<AirspaceChecker> m_checker;
     std::optional<mission::GeoPoint> m_frameOrigin;
+    AirspaceReport m_lastReport;
+    std::shared_ptr<const ZoneSet> m_lastZones;
+    FlownPath m_lastPath;
 };
 
 } // namespace sortie::airspace

@@ -3,6 +3,7 @@
 // jumps to an event, and each time the vehicle is drawn on the map where the log says it was. The
 // server's history of a vehicle chosen in the timeline's dialog, fetched from the simulator, replays
 // with the vehicle drawn where the server had it.
+#include "Airspace.h"
 #include "ClientGraph.h"
 #include "RouteEndurance.h"
 #include "ComparisonController.h"
@@ -51,7 +52,8 @@ QVariantMap telemetryPageProperties(client::ClientGraph &graph)
             {QStringLiteral("serverHistory"), QVariant::fromValue<QObject *>(&graph.serverHistory())},
             {QStringLiteral("comparison"), QVariant::fromValue<QObject *>(&graph.comparison())},
             {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())},
-            {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())}};
+            {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())},
+            {QStringLiteral("airspace"), QVariant::fromValue<QObject *>(&graph.airspace())}};
 }
 
 QPointF centre(QQuickItem *item)

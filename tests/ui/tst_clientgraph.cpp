@@ -1,6 +1,7 @@
 // One place builds the client: the graph a UI test fixture gets is the program's graph (the same
 // services, wired to each other the same way), and the main window is handed every one of them.
 #include "AutosaveRecovery.h"
+#include "Airspace.h"
 #include "ClientGraph.h"
 #include "RouteEndurance.h"
 #include "ClientWindow.h"
@@ -72,7 +73,7 @@ private slots:
             {"elevation", graph.elevation()}, {"replay", &graph.replay()},
             {"recovery", graph.recovery()}, {"endurance", &graph.endurance()}, {"traffic", &graph.traffic()},
             {"fleetRoutes", graph.fleetRoutes()}, {"proximity", graph.proximity()},
-            {"deconfliction", graph.deconfliction()}, {"zoneAlerts", graph.zoneAlerts()}};
+            {"deconfliction", graph.deconfliction()}, {"zoneAlerts", graph.zoneAlerts()}, {"airspace", &graph.airspace()}};
         for (const auto &[name, object] : expected) {
             QVERIFY2(object, name);
             QCOMPARE(window->property(name).value<QObject *>(), object);

@@ -2,8 +2,8 @@
 
 namespace sortie::ui {
 
-LabelPlacer::LabelPlacer(std::vector<QPointF> marks)
-    : m_marks(std::move(marks))
+LabelPlacer::LabelPlacer(std::vector<QPointF> marks, qreal markSize)
+    : m_marks(std::move(marks)), m_markSize(markSize)
 {
 }
 
@@ -24,9 +24,11 @@ bool LabelPlacer::blocked(size_t mark, const QRectF &rect) const
     for (const QRectF &other : m_placed)
         if (rect.intersects(other))
             return true;
-    const QPointF half(kMarkSize / 2, kMarkSize / 2);
+    if (m_markSize <= 0)
+        return false;
+    const QPointF half(m_markSize / 2, m_markSize / 2);
     for (size_t other = 0; other < m_marks.size(); ++other)
-        if (other != mark && rect.intersects(QRectF(m_marks[other] - half, QSizeF(kMarkSize, kMarkSize))))
+        if (other != mark && rect.intersects(QRectF(m_marks[other] - half, QSizeF(m_markSize, m_markSize))))
             return true;
     return false;
 }

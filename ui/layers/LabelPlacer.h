@@ -21,8 +21,9 @@ public:
         bool moved = false; // stacked away from its mark
     };
 
-    // The marks no label may cover, except the mark's own label.
-    explicit LabelPlacer(std::vector<QPointF> marks);
+    // The marks no label may cover, except the mark's own label; `markSize` 0: the marks are only
+    // where labels go (nothing is drawn there to keep clear).
+    explicit LabelPlacer(std::vector<QPointF> marks, qreal markSize = kMarkSize);
 
     // Places the label of `marks[mark]` of this size and keeps it for the labels after it.
     Placement place(size_t mark, QSizeF size);
@@ -37,6 +38,7 @@ private:
     bool blocked(size_t mark, const QRectF &rect) const;
 
     std::vector<QPointF> m_marks;
+    qreal m_markSize;
     std::vector<QRectF> m_placed;
 };
 

@@ -27,6 +27,7 @@ ApplicationWindow {
     required property ProximityMonitor proximity    // closest-approach alerts in flight; null without vehicles
     required property ZoneAlertMonitor zoneAlerts   // zone alerts in flight; null without vehicles
     required property RouteDeconfliction deconfliction  // the open route's 4D conflicts; null without vehicles
+    required property Airspace airspace             // the zones: both maps, the zone panel, the route's airspace check
     property string connectionState: connection.state
     property string connectionDetail: connection.statusDetail
 
@@ -50,8 +51,8 @@ ApplicationWindow {
     function openMapSource() { mapSourceDialog.open() }
     function focusMap() { window.activeMap.forceActiveFocus() }
     function saveRoute() { showPage(1); missions.save() }
-    function undo() { missions.document.undo() }
-    function redo() { missions.document.redo() }
+    function undo() { if (missionPage.zoneEditing) airspace.editor.undo(); else missions.document.undo() }
+    function redo() { if (missionPage.zoneEditing) airspace.editor.redo(); else missions.document.redo() }
     function deleteSelection() { if (currentPage === 1) missions.document.editor.removeRows(missions.document.selectedRows) }
     function processRoute() { missions.preparation.process() }
     function toggleFullScreen() { window.visibility = window.visibility === Window.FullScreen ? Window.Windowed : Window.FullScreen }
@@ -147,6 +148,7 @@ ApplicationWindow {
             traffic: window.traffic
             fleetRoutes: window.fleetRoutes
             deconfliction: window.deconfliction
+            airspace: window.airspace
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource
@@ -164,6 +166,7 @@ ApplicationWindow {
             fleetRoutes: window.fleetRoutes
             proximity: window.proximity
             zoneAlerts: window.zoneAlerts
+            airspace: window.airspace
             replay: window.replay
             serverHistory: window.serverHistory
             comparison: window.comparison

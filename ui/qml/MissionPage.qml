@@ -33,6 +33,11 @@ Page {
     property Traffic traffic: null                  // manned traffic around (ADS-B)
     required property FleetRoutes fleetRoutes       // every route given to a vehicle: on the map and in a list beside it
     property RouteDeconfliction deconfliction: null // the open route's conflicts with them; null without vehicles
+    required property Airspace airspace             // the zones: on the map, in the zone panel, on the profile
+    property alias zoneLayer: zoneLayer
+    property alias zonePanel: zonePanel
+    // Ctrl+Z goes to the zone editor while the zone panel is open (zones are not part of the route).
+    readonly property bool zoneEditing: zonePanel.visible
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
     // `var`: the editor's tools are plain JS objects (name, algorithm, figure, minimumPoints).
@@ -48,6 +53,13 @@ Page {
     }
 
     CoordinateListModel { id: scanDraft }
+    CoordinateListModel { id: zoneDraft }   // the corners of a zone being drawn
+
+    function finishZone() {
+        page.airspace.editor.addPolygon(zoneDraft.coordinates())
+        zoneDraft.clear()
+        page.tool = ""
+    }
 
     Connections {
         target: page.missions
@@ -71,6 +83,21 @@ Page {
             tilePackFile: page.tilePackFile
             tilesCacheOnly: page.tilesCacheOnly
             dark: page.dark
+            ZoneLayer {
+                // Zones under everything else: exclusion hatched red, inclusion outlined green.
+                id: zoneLayer
+                objectName: "missionZoneLayer"
+                anchors.fill: parent
+                map: pane.map
+                airspace: page.airspace
+                ToolTip {
+                    // Where the mouse is: the zone's source and limits.
+                    visible: parent.hoverText.length > 0
+                    text: parent.hoverText
+                    x: parent.hoverPosition.x + 12
+                    y: parent.hoverPosition.y + 16
+                }
+            }
             FleetRoutesLayer {
                 // The other vehicles' routes, in their colours; the open one is the editor's (hideOpen).
                 objectName: "missionFleetRoutesLayer"
@@ -132,6 +159,14 @@ Page {
                 onWaypointsMoved: (rows, coordinates) => page.doc.editor.moveWaypoints(rows, coordinates)
                 onLegClicked: (leg, coordinate, modifiers) => page.doc.editor.insertWaypoint(leg + 1, coordinate)
             }
+            ZoneCrossingLayer {
+                // The stretches of the route inside a zone (the issue list's airspace errors), red over the route.
+                objectName: "zoneCrossingLayer"
+                anchors.fill: parent
+                map: pane.map
+                enabled: false // clicks are for the route
+                crossings: page.airspace.crossings
+            }
             AreaScanLayer {
                 id: areaLayer
                 objectName: "areaLayer"
@@ -149,6 +184,22 @@ Page {
                 closed: page.doc.preview.figureType !== "polyline"
                 radius: page.doc.preview.radius
                 onRadiusMoved: (meters, step) => page.doc.editor.setRadius(page.doc.currentRow, meters, step)
+            }
+            AreaScanLayer {
+                // The chosen drawn zone's corners (a circle: its centre and radius handle) and the
+                // corners of one being drawn: drag a corner, click an edge to add one, right-click to remove.
+                objectName: "zoneEditLayer"
+                anchors.fill: parent
+                map: pane.map
+                color: "#d32f2f"
+                polygonModel: page.tool === "zonePolygon" ? zoneDraft : null
+                polygon: page.tool === "zonePolygon" ? [] : page.airspace.editor.figure
+                radius: page.tool === "zonePolygon" ? 0 : page.airspace.editor.radius
+                editable: page.tool === "" && page.airspace.selectedCustom >= 0
+                onVertexMoved: (index, coordinate, step) => page.airspace.editor.moveVertex(page.airspace.selectedCustom, index, coordinate, step)
+                onEdgeClicked: (index, coordinate, modifiers) => page.airspace.editor.insertVertex(page.airspace.selectedCustom, index + 1, coordinate)
+                onVertexRemoveRequested: index => page.airspace.editor.removeVertex(page.airspace.selectedCustom, index)
+                onRadiusMoved: (meters, step) => page.airspace.editor.setRadius(page.airspace.selectedCustom, meters, step)
             }
             ConflictLayer {
                 // Where the open route would meet another vehicle: both at the closest approach.
@@ -173,7 +224,12 @@ Page {
                 function onClicked(coordinate, modifiers) {
                     if (modifiers !== Qt.NoModifier)
                         return
-                    if (page.tool === "scan") {
+                    if (page.tool === "zonePolygon") {
+                        zoneDraft.append(coordinate.latitude, coordinate.longitude)
+                    } else if (page.tool === "zoneCircle") {
+                        page.airspace.editor.addCircle(coordinate)
+                        page.tool = ""
+                    } else if (page.tool === "scan") {
                         scanDraft.append(coordinate.latitude, coordinate.longitude)
                         if (page.currentTool && (page.currentTool.figure === "point" || page.currentTool.figure === "circle"))
                             page.finishScan() // one click places it
@@ -181,6 +237,34 @@ Page {
                         page.doc.editor.addWaypoint(coordinate)
                 }
                 function onAreaSelected(rect, modifiers) { routeLayer.selectInRect(rect, modifiers) }
+            }
+            ToolButton {
+                objectName: "zonesButton"
+                anchors.left: parent.left
+                anchors.top: parent.top
+                anchors.leftMargin: pane.controlsLeft
+                anchors.topMargin: pane.controlsTop
+                text: qsTr("Zones (%1)").arg(page.airspace.count)
+                checkable: true
+                checked: zonePanel.visible
+                onToggled: zonePanel.visible = checked
+                background: Rectangle { color: page.dark ? Qt.rgba(0, 0, 0, 0.55) : Qt.rgba(1, 1, 1, 0.8); radius: 3 }
+            }
+            ZonePanel {
+                id: zonePanel
+                objectName: "zonePanel"
+                visible: false
+                anchors.left: parent.left
+                anchors.top: parent.top
+                anchors.leftMargin: pane.controlsLeft
+                anchors.topMargin: pane.controlsTop + 40
+                width: 300
+                height: Math.min(implicitHeight, parent.height - anchors.topMargin - 50)
+                airspace: page.airspace
+                tool: page.tool
+                draftCount: zoneDraft.count
+                onToolRequested: tool => { zoneDraft.clear(); page.tool = tool }
+                onFinishRequested: page.finishZone()
             }
             Frame {
                 visible: page.tool === "scan"
@@ -222,6 +306,7 @@ Page {
             routeModel: page.routeModel
             selectionModel: page.selectionModel
             elevation: page.elevation
+            zoneCrossings: page.airspace.crossings
             markers: page.endurance.changePoints.map(c => ({distance: c.distance, latitude: c.latitude, longitude: c.longitude,
                                                                label: qsTr("battery change"),
                                                                color: c.planned ? "#43a047" : "#fb8c00"}))
@@ -254,6 +339,7 @@ Page {
             terrain: terrainProfile.profile
             endurance: page.endurance
             deconfliction: page.deconfliction
+            airspace: page.airspace
             waypointCount: routeLayer.count
             scanning: page.tool === "scan"
             onScanToggled: on => page.tool = on ? "scan" : ""

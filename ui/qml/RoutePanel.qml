@@ -17,6 +17,7 @@ Pane {
     required property TerrainProfileModel terrain // ground and heights per row
     required property RouteEndurance endurance
     property RouteDeconfliction deconfliction: null  // conflicts with the fleet's other routes; null without vehicles
+    property Airspace airspace: null                 // an airspace issue also chooses its zone
     required property int waypointCount
     required property bool scanning              // the area-scan tool is on
     signal scanToggled(bool on)
@@ -308,7 +309,12 @@ Pane {
                     }
                     Label { text: issue.message; wrapMode: Text.Wrap; Layout.fillWidth: true }
                 }
-                onClicked: if (segment >= 0) panel.doc.selectRows([segment])
+                onClicked: {
+                    if (segment >= 0)
+                        panel.doc.selectRows([segment])
+                    if (panel.airspace)
+                        panel.airspace.selectZoneOfIssue(message)
+                }
                 ToolTip.visible: hovered
                 ToolTip.text: qsTr("Select the segment")
             }

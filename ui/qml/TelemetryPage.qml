@@ -24,6 +24,8 @@ Page {
     required property FleetRoutes fleetRoutes
     property ProximityMonitor proximity: null  // closest-approach alerts (the fleet and the traffic)
     property ZoneAlertMonitor zoneAlerts: null // a vehicle about to enter a zone or leave a fence
+    required property Airspace airspace        // the zones, drawn under everything else
+    property alias zoneLayer: zoneLayer
     readonly property bool replaying: replay.active
     property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names
     property list<string> plotFields: ["altitudeAgl"]   // what the plot shows, as the operator picked
@@ -148,6 +150,20 @@ Page {
                 tilePackFile: page.tilePackFile
                 tilesCacheOnly: page.tilesCacheOnly
                 dark: page.dark
+                ZoneLayer {
+                    id: zoneLayer
+                    objectName: "flyZoneLayer"
+                    anchors.fill: parent
+                    map: pane.map
+                    airspace: page.airspace
+                    ToolTip {
+                        // Where the mouse is: the zone's source and limits.
+                        visible: parent.hoverText.length > 0
+                        text: parent.hoverText
+                        x: parent.hoverPosition.x + 12
+                        y: parent.hoverPosition.y + 16
+                    }
+                }
                 FleetRoutesLayer {
                     objectName: "flyFleetRoutesLayer"
                     anchors.fill: parent

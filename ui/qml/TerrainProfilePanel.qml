@@ -9,6 +9,7 @@ Item {
     required property AbstractItemModel routeModel
     required property ItemSelectionModel selectionModel
     required property ElevationService elevation
+    property var zoneCrossings: []   // Airspace.crossings: where the route crosses zones, drawn with their limits
     property var markers: []   // JS objects {latitude, longitude, label, color}: ElevationProfileView.markers
     property alias view: view
     property alias profile: profile
@@ -28,5 +29,11 @@ Item {
         markers: panel.markers
         textColor: palette.windowText
         backgroundColor: palette.base
+    }
+    ZoneProfileOverlay {
+        objectName: "zoneProfile"
+        anchors.fill: view
+        view: view
+        crossings: panel.zoneCrossings
     }
 }

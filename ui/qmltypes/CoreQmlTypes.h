@@ -3,6 +3,7 @@
 // The core types QML views hold, registered for Sortie.Ui as uncreatable types so that views
 // declare typed properties (`required property Vehicle vehicle`) instead of `var`. The objects
 // themselves are made and wired in C++ (app/sortie, tests) and handed to the window.
+#include "Airspace.h"
 #include "AutosaveRecovery.h"
 #include "CommandLog.h"
 #include "CommandPolicy.h"
@@ -33,6 +34,8 @@
 #include "VehicleGroup.h"
 #include "FleetRoutes.h"
 #include "VehicleLink.h"
+#include "ZoneEditor.h"
+#include "ZoneListModel.h"
 
 #include <QAbstractItemModel>
 #include <QtQml/qqmlregistration.h>
@@ -179,6 +182,27 @@ struct OfflineMapsForeign
     Q_GADGET
     QML_FOREIGN(sortie::maptiles::OfflineMaps)
     QML_NAMED_ELEMENT(OfflineMaps)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct AirspaceForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::airspace::Airspace)
+    QML_NAMED_ELEMENT(Airspace)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct ZoneListModelForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::airspace::ZoneListModel)
+    QML_NAMED_ELEMENT(ZoneListModel)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct ZoneEditorForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::airspace::ZoneEditor)
+    QML_NAMED_ELEMENT(ZoneEditor)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 struct RouteDeconflictionForeign

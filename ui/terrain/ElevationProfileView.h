@@ -50,6 +50,8 @@ public:
     Q_INVOKABLE double xOf(double distance) const;
     Q_INVOKABLE double distanceAt(double x) const;
     Q_INVOKABLE double yOf(double altitude) const;
+    // Where the plot is drawn (item coordinates), for overlays that draw in its axes.
+    Q_INVOKABLE QRectF plotArea() const { return plotRect(); }
     // The leg under x, -1 outside the plot.
     Q_INVOKABLE int legAt(double x) const;
     // Hover and click as the mouse does them (also for tests and keyboard users).

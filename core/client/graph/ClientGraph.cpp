@@ -1,5 +1,7 @@
 #include "ClientGraph.h"
 
+#include "Airspace.h"
+#include "AirspaceRule.h"
 #include "AutosaveRecovery.h"
 #include "ComparisonController.h"
 #include "ConnectionController.h"
@@ -68,6 +70,10 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
     document->editor()->setGroundLookup([ground](const mission::GeoPoint &p) { return ground->groundAt(p); });
     // The open route's endurance: the operator's energy profile (remembered in the settings) and its rule.
     m_endurance = std::make_unique<endurance::RouteEndurance>(storage, document->analyzer(), document->model());
+    // Airspace: its rule on the route's analyzer; the zones drawn here kept beside the autosaves.
+    m_airspace = std::make_unique<airspace::Airspace>(
+        storage, document->analyzer(), document->model(), ground,
+        options.autosaveDirectory.isEmpty() ? QString() : options.autosaveDirectory + QStringLiteral("/drawn-zones.geojson"));
 
     if (options.vehicles) {
         m_fleet = std::make_unique<VehicleFleet>(m_hciClient.get(), ground);
@@ -148,6 +154,7 @@ ClientGraph::~ClientGraph()
     m_traffic.reset();
     m_fleetRoutes.reset();
     m_fleet.reset();
+    m_airspace.reset();
     m_endurance.reset();
     m_missions.reset();
     m_elevation.reset();
@@ -172,6 +179,8 @@ QStringList ClientGraph::wiring() const
     lines << QStringLiteral("terrain sources: %1").arg(ground->sourceNames().join(QStringLiteral(", ")))
           << QStringLiteral("route validation: %1").arg(yesNo(terrainRule, "with the terrain rule", "without terrain"))
           << QStringLiteral("endurance: %1").arg(yesNo(enduranceRule, "the route's estimate and rule", "none"))
+          << QStringLiteral("airspace: %1").arg(yesNo(std::any_of(rules.begin(), rules.end(), [&](const auto &r) { return r == m_airspace->rule(); }),
+                                                      "the zones' rule on the route", "none"))
           << QStringLiteral("height conversions: %1").arg(yesNo(document->editor()->hasGroundLookup(), "through the ground", "none"))
           << QStringLiteral("vehicles: %1").arg(!m_fleet ? QStringLiteral("none")
                                                 : m_fleet->elevation() == ground ? QStringLiteral("fleet planning over the ground")

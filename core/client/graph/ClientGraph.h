@@ -31,6 +31,10 @@ namespace sortie::endurance {
 class RouteEndurance;
 } // namespace sortie::endurance
 
+namespace sortie::airspace {
+class Airspace;
+} // namespace sortie::airspace
+
 namespace sortie::traffic {
 class Traffic;
 } // namespace sortie::traffic
@@ -93,6 +97,8 @@ public:
     flightlog::FlightRecorder &recorder() { return *m_recorder; }
     flightlog::RecordingSettings &recordingSettings() { return *m_recordingSettings; }
     endurance::RouteEndurance &endurance() { return *m_endurance; }
+    // The zones (drawn, the server's, files, the route's fence) and the airspace rule on the route.
+    airspace::Airspace &airspace() { return *m_airspace; }
     // Manned traffic: the picture, the receiver's feed and the server's ADS-B list.
     traffic::Traffic &traffic() { return *m_traffic; }
     // Maps taken offline: the area, the download into an MBTiles pack, cache-only (docs/offline-maps.md).
@@ -124,6 +130,7 @@ private:
     std::unique_ptr<MissionController> m_missions;
     std::unique_ptr<terrain::ElevationSetup> m_elevation;
     std::unique_ptr<endurance::RouteEndurance> m_endurance;
+    std::unique_ptr<airspace::Airspace> m_airspace;
     std::unique_ptr<VehicleFleet> m_fleet;
     std::unique_ptr<traffic::Traffic> m_traffic;
     std::unique_ptr<maptiles::OfflineMaps> m_offlineMaps;

@@ -1,0 +1,382 @@
+#include "Airspace.h"
+
+#include "AirspaceRule.h"
+#include "CustomZoneFile.h"
+#include "RouteAnalyzer.h"
+#include "RouteModel.h"
+#include "ZoneEditor.h"
+#include "ZoneFiles.h"
+#include "ZoneListModel.h"
+
+#include <QDateTime>
+#include <QFile>
+#include <QFileInfo>
+#include <QGeoCoordinate>
+#include <QLoggingCategory>
+#include <QSettings>
+
+#include <cmath>
+
+Q_LOGGING_CATEGORY(lcAirspace, "sortie.airspace")
+
+namespace sortie::airspace {
+
+namespace {
+const QString kBufferKey = QStringLiteral("airspace/buffer");
+const QString kFilesKey = QStringLiteral("airspace/zoneFiles");
+
+// The flown path between two distances from the route's start along one leg, as coordinates: the
+// leg's own points between them and the two ends interpolated (pieces are short and straight).
+QVariantList stretchOf(const FlownPath &path, int legNumber, double from, double to)
+{
+    QVariantList out;
+    const auto leg = std::find_if(path.legs.begin(), path.legs.end(), [&](const FlownLeg &l) { return l.leg == legNumber; });
+    if (leg == path.legs.end() || leg->points.empty())
+        return out;
+    const auto at = [&](double d) {
+        const double along = d - leg->start;
+        const std::vector<FlownPoint> &p = leg->points;
+        for (size_t i = 1; i < p.size(); ++i)
+            if (along <= p[i].along || i + 1 == p.size()) {
+                const double span = p[i].along - p[i - 1].along;
+                const double t = span > 0 ? std::clamp((along - p[i - 1].along) / span, 0.0, 1.0) : 0.0;
+                return QGeoCoordinate(p[i - 1].position.latitude + t * (p[i].position.latitude - p[i - 1].position.latitude),
+                                      p[i - 1].position.longitude + t * (p[i].position.longitude - p[i - 1].position.longitude));
+            }
+        return QGeoCoordinate(p.front().position.latitude, p.front().position.longitude);
+    };
+    out.append(QVariant::fromValue(at(from)));
+    for (const FlownPoint &p : leg->points)
+        if (leg->start + p.along > from && leg->start + p.along < to)
+            out.append(QVariant::fromValue(QGeoCoordinate(p.position.latitude, p.position.longitude)));
+    out.append(QVariant::fromValue(at(to)));
+    return out;
+}
+
+QVariant limitValue(const std::optional<HeightLimit> &limit)
+{
+    if (!limit)
+        return QVariant::fromValue(nullptr);
+    const char *reference = limit->reference == HeightReference::Amsl ? "AMSL"
+                          : limit->reference == HeightReference::AboveTerrain ? "AGL" : "HOME";
+    return QVariantMap{{QStringLiteral("metres"), limit->metres}, {QStringLiteral("reference"), QString::fromLatin1(reference)}};
+}
+} // namespace
+
+Airspace::Airspace(QSettings *settings, mission::RouteAnalyzer *analyzer, const mission::RouteModel *model,
+                   terrain::ElevationService *ground, QString customFile, QObject *parent)
+    : QObject(parent)
+    , m_settings(settings)
+    , m_analyzer(analyzer)
+    , m_route(model)
+    , m_customFile(std::move(customFile))
+    , m_rule(std::make_unique<AirspaceRule>(ground))
+    , m_set(std::make_shared<const ZoneSet>())
+{
+    Q_ASSERT(settings && analyzer && model);
+    m_model = std::make_unique<ZoneListModel>(this);
+    m_editor = std::make_unique<ZoneEditor>(this);
+    bool ok = false;
+    const double remembered = m_settings->value(kBufferKey).toDouble(&ok);
+    if (ok && remembered >= 0 && std::isfinite(remembered))
+        m_buffer = remembered;
+    m_rule->setBuffer(m_buffer);
+    analyzer->addRule(m_rule.get());
+    connect(analyzer, &mission::RouteAnalyzer::recomputed, this, &Airspace::readCrossings);
+    // The open route's own fence (a .plan's geoFence) follows the route: opened, replaced, undone.
+    connect(model, &QAbstractItemModel::modelReset, this, &Airspace::followRouteFence);
+    connect(model, &mission::RouteModel::settingsChanged, this, &Airspace::followRouteFence);
+    connect(model, &mission::RouteModel::countChanged, this, &Airspace::followRouteFence);
+
+    loadCustom();
+    QStringList problems = m_problems;
+    for (const QString &path : m_settings->value(kFilesKey).toStringList()) {
+        const mission::Result<ZoneFile> read = loadZoneFile(path);
+        if (!read) {
+            problems << read.error().toString();
+            continue;
+        }
+        m_files.push_back({path, read->zones});
+        for (const QString &p : read->problems)
+            problems << QStringLiteral("%1: %2").arg(QFileInfo(path).fileName(), p);
+    }
+    m_fence = zonesOfFence(m_route->route().fence, QStringLiteral("route fence"), ZoneSource::File, QStringLiteral("the open route"));
+    setProblems(problems);
+    rebuild();
+}
+
+Airspace::~Airspace() = default;
+
+Airspace::Group Airspace::groupOf(int row) const
+{
+    return row >= 0 && row < int(m_groups.size()) ? m_groups[size_t(row)] : Group::File;
+}
+
+QString Airspace::groupName(Group group)
+{
+    switch (group) {
+    case Group::Custom: return QStringLiteral("drawn");
+    case Group::Server: return QStringLiteral("server");
+    case Group::File: return QStringLiteral("file");
+    case Group::RouteFence: return QStringLiteral("route fence");
+    }
+    return {};
+}
+
+QString Airspace::problemOf(int row) const
+{
+    return row >= 0 && row < int(m_shapeProblems.size()) ? m_shapeProblems[size_t(row)] : QString();
+}
+
+void Airspace::setBuffer(double metres)
+{
+    if (!(metres >= 0) || !std::isfinite(metres) || metres == m_buffer)
+        return;
+    m_buffer = metres;
+    m_settings->setValue(kBufferKey, metres);
+    m_rule->setBuffer(metres);
+    emit bufferChanged();
+}
+
+QStringList Airspace::files() const
+{
+    QStringList out;
+    for (const LoadedFile &f : m_files)
+        out << f.path;
+    return out;
+}
+
+void Airspace::setSelectedZone(int row)
+{
+    if (row < -1 || row >= count())
+        row = -1;
+    if (row == m_selected)
+        return;
+    m_selected = row;
+    emit selectedZoneChanged();
+}
+
+bool Airspace::loadFile(const QString &path)
+{
+    const mission::Result<ZoneFile> read = loadZoneFile(path);
+    if (!read) {
+        setProblems({read.error().toString()});
+        qCWarning(lcAirspace).noquote() << "zone file not read:" << read.error().toString();
+        return false;
+    }
+    const auto same = std::find_if(m_files.begin(), m_files.end(), [&](const LoadedFile &f) { return f.path == path; });
+    if (same != m_files.end())
+        same->zones = read->zones;
+    else
+        m_files.push_back({path, read->zones});
+    qCInfo(lcAirspace).noquote() << read->zones.size() << "zones from" << path << "," << read->problems.size() << "left out";
+    QStringList problems;
+    for (const QString &p : read->problems)
+        problems << QStringLiteral("%1: %2").arg(QFileInfo(path).fileName(), p);
+    setProblems(problems);
+    rememberFiles();
+    rebuild();
+    return true;
+}
+
+void Airspace::removeFile(const QString &path)
+{
+    const auto before = m_files.size();
+    m_files.erase(std::remove_if(m_files.begin(), m_files.end(), [&](const LoadedFile &f) { return f.path == path; }), m_files.end());
+    if (m_files.size() == before)
+        return;
+    rememberFiles();
+    rebuild();
+}
+
+void Airspace::setActive(int row, bool active)
+{
+    if (row < 0 || row >= count() || zoneAt(row).active == active)
+        return;
+    const Group group = groupOf(row);
+    if (group == Group::Custom) {
+        m_custom[size_t(row)].active = active;
+        saveCustom();
+    } else if (active) {
+        m_inactive.remove(keyOf(group, zoneAt(row)));
+    } else {
+        m_inactive.insert(keyOf(group, zoneAt(row)));
+    }
+    rebuild();
+}
+
+bool Airspace::selectZoneOfIssue(const QString &message)
+{
+    const std::shared_ptr<const ZoneSet> &zones = m_rule->lastZones();
+    if (!zones || zones != m_set)
+        return false;
+    const AirspaceReport &report = m_rule->lastReport();
+    for (const AirspaceViolation &v : report.violations)
+        if (violationMessage(v, zones->zones()[size_t(v.zone)]) == message) {
+            setSelectedZone(v.zone);
+            return true;
+        }
+    for (const AirspaceWarning &w : report.warnings)
+        if (warningMessage(w, zones->zones()[size_t(w.zone)], m_buffer) == message) {
+            setSelectedZone(w.zone);
+            return true;
+        }
+    return false;
+}
+
+void Airspace::setServerZones(std::vector<Zone> zones)
+{
+    m_server = std::move(zones);
+    m_serverProblems.clear();
+    for (const Zone &z : m_server)
+        m_serverProblems.push_back(shapeProblem(z));
+    rebuild();
+}
+
+void Airspace::insertCustomZone(int index, Zone zone)
+{
+    index = std::clamp(index, 0, int(m_custom.size()));
+    m_custom.insert(m_custom.begin() + index, std::move(zone));
+    saveCustom();
+    rebuild();
+    setSelectedZone(index);
+}
+
+void Airspace::removeCustomZone(int index)
+{
+    if (index < 0 || index >= int(m_custom.size()))
+        return;
+    m_custom.erase(m_custom.begin() + index);
+    if (m_selected >= index)
+        setSelectedZone(m_selected == index ? -1 : m_selected - 1);
+    saveCustom();
+    rebuild();
+}
+
+void Airspace::replaceCustomZone(int index, Zone zone)
+{
+    if (index < 0 || index >= int(m_custom.size()) || m_custom[size_t(index)] == zone)
+        return;
+    m_custom[size_t(index)] = std::move(zone);
+    saveCustom();
+    rebuild();
+}
+
+QString Airspace::keyOf(Group group, const Zone &zone) const
+{
+    return groupName(group) + QLatin1Char('\n') + zone.origin + QLatin1Char('\n') + zone.name;
+}
+
+void Airspace::followRouteFence()
+{
+    std::vector<Zone> fence = zonesOfFence(m_route->route().fence, QStringLiteral("route fence"), ZoneSource::File,
+                                           QStringLiteral("the open route"));
+    if (fence == m_fence)
+        return;
+    m_fence = std::move(fence);
+    rebuild();
+}
+
+// One set per change: every source in row order, the operator's switches applied, a polygon that
+// cannot be checked kept (drawn, listed with its reason) but not checked. Validity is checked here
+// only for the drawn zones and the route's fence (a few); the server's were checked as they came,
+// and the file readers leave such a polygon out.
+void Airspace::rebuild()
+{
+    std::vector<Zone> all;
+    std::vector<Group> groups;
+    std::vector<QString> problems;
+    const auto add = [&](const std::vector<Zone> &zones, Group group, const std::vector<QString> *known) {
+        for (size_t i = 0; i < zones.size(); ++i) {
+            Zone z = zones[i];
+            if (group != Group::Custom && m_inactive.contains(keyOf(group, z)))
+                z.active = false;
+            QString problem = known ? (i < known->size() ? (*known)[i] : QString()) : shapeProblem(z);
+            if (!problem.isEmpty())
+                z.active = false;
+            problems.push_back(std::move(problem));
+            all.push_back(std::move(z));
+            groups.push_back(group);
+        }
+    };
+    static const std::vector<QString> none;
+    add(m_custom, Group::Custom, nullptr);
+    add(m_server, Group::Server, &m_serverProblems);
+    for (const LoadedFile &f : m_files)
+        add(f.zones, Group::File, &none);
+    add(m_fence, Group::RouteFence, nullptr);
+    m_shapeProblems = std::move(problems);
+    m_groups = std::move(groups);
+    const int before = count();
+    m_set = std::make_shared<const ZoneSet>(std::move(all));
+    m_model->rebuilt(before);
+    if (m_selected >= count())
+        setSelectedZone(-1);
+    m_rule->setZones(m_set);
+    emit changed();
+}
+
+void Airspace::readCrossings()
+{
+    QVariantList list;
+    const std::shared_ptr<const ZoneSet> &zones = m_rule->lastZones();
+    if (zones) {
+        for (const AirspaceViolation &v : m_rule->lastReport().violations) {
+            const Zone &z = zones->zones()[size_t(v.zone)];
+            list.append(QVariantMap{{QStringLiteral("from"), v.fromDistance},
+                                    {QStringLiteral("to"), v.toDistance},
+                                    {QStringLiteral("zone"), v.zone},
+                                    {QStringLiteral("leg"), v.leg},
+                                    {QStringLiteral("path"), stretchOf(m_rule->lastPath(), v.leg, v.fromDistance, v.toDistance)},
+                                    {QStringLiteral("name"), z.name},
+                                    {QStringLiteral("kind"), kindName(z.kind)},
+                                    {QStringLiteral("floor"), limitValue(z.floor)},
+                                    {QStringLiteral("ceiling"), limitValue(z.ceiling)}});
+        }
+    }
+    if (list == m_crossings)
+        return;
+    m_crossings = list;
+    emit crossingsChanged();
+}
+
+void Airspace::rememberFiles()
+{
+    m_settings->setValue(kFilesKey, files());
+}
+
+void Airspace::saveCustom() const
+{
+    if (m_customFile.isEmpty())
+        return;
+    QString error;
+    if (!writeCustomZones(m_customFile, m_custom, &error))
+        qCWarning(lcAirspace).noquote() << "drawn zones not kept:" << error;
+}
+
+void Airspace::loadCustom()
+{
+    if (m_customFile.isEmpty() || !QFile::exists(m_customFile))
+        return;
+    const mission::Result<ZoneFile> read = readCustomZones(m_customFile);
+    if (!read) {
+        // Kept aside, never overwritten by the next save: the operator's zones may still be in it.
+        const QString aside = m_customFile + QStringLiteral(".unreadable-") + QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMddHHmmss"));
+        QFile::rename(m_customFile, aside);
+        m_problems << QStringLiteral("%1 (kept as %2)").arg(read.error().toString(), aside);
+        qCWarning(lcAirspace).noquote() << "drawn zones not read:" << read.error().toString() << "; kept as" << aside;
+        return;
+    }
+    m_custom = read->zones;
+    m_problems << read->problems;
+}
+
+void Airspace::setProblems(QStringList problems)
+{
+    if (problems == m_problems)
+        return;
+    m_problems = std::move(problems);
+    emit problemsChanged();
+}
+
+} // namespace sortie::airspace

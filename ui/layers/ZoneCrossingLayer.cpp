@@ -1,0 +1,56 @@
+#include "ZoneCrossingLayer.h"
+
+#include <QPainter>
+
+namespace sortie::ui {
+
+ZoneCrossingLayer::ZoneCrossingLayer(QQuickItem *parent)
+    : MapLayer(parent)
+{
+    setAcceptedMouseButtons(Qt::NoButton); // only drawn: clicks go on to the route under it
+}
+
+void ZoneCrossingLayer::setCrossings(const QVariantList &crossings)
+{
+    if (crossings == m_crossings)
+        return;
+    m_crossings = crossings;
+    m_stretches.clear();
+    for (const QVariant &c : crossings) {
+        std::vector<QGeoCoordinate> stretch;
+        for (const QVariant &p : c.toMap().value(QStringLiteral("path")).toList())
+            if (const QGeoCoordinate coordinate = p.value<QGeoCoordinate>(); coordinate.isValid())
+                stretch.push_back(coordinate);
+        if (stretch.size() >= 2)
+            m_stretches.push_back(std::move(stretch));
+    }
+    repaint();
+    emit crossingsChanged();
+}
+
+QPointF ZoneCrossingLayer::stretchMiddle(int index) const
+{
+    if (index < 0 || index >= stretchCount())
+        return {qQNaN(), qQNaN()};
+    const auto &s = m_stretches[size_t(index)];
+    const QPointF a = viewport().geoToScreen(s.front()), b = viewport().geoToScreen(s.back());
+    return (a + b) / 2;
+}
+
+void ZoneCrossingLayer::paint(QPainter *painter)
+{
+    QPainter &p = *painter;
+    p.setRenderHint(QPainter::Antialiasing);
+    const MapViewport &view = paintViewport();
+    for (const auto &stretch : m_stretches) {
+        QPolygonF line;
+        for (const QGeoCoordinate &c : stretch)
+            line << view.geoToScreen(c);
+        p.setPen(QPen(QColor(255, 255, 255, 230), 9, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.drawPolyline(line);
+        p.setPen(QPen(colour(), 5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.drawPolyline(line);
+    }
+}
+
+} // namespace sortie::ui

@@ -1,0 +1,214 @@
+import QtQuick
+import QtQuick.Controls
+import QtQuick.Dialogs
+import QtQuick.Layouts
+import Sortie.Ui
+
+// The zones over the map (core/airspace/client's Airspace): load zone files, draw zones, switch
+// zones off, choose one (the map highlights it), and edit the chosen drawn zone's name, kind, floor
+// and ceiling. Every edit is the zone editor's (one undo step each); the rules are in C++.
+Frame {
+    id: panel
+    required property Airspace airspace
+    required property string tool          // the page's drawing tool ("zonePolygon", "zoneCircle" or another)
+    required property int draftCount       // corners clicked so far while drawing a polygon
+    signal toolRequested(string tool)      // "" ends drawing
+    signal finishRequested()               // make the polygon drawn so far a zone
+    readonly property ZoneEditor editor: airspace.editor
+    readonly property int chosen: airspace.selectedCustom
+    padding: 8
+
+    FileDialog {
+        id: zoneDialog
+        title: qsTr("Load zones")
+        nameFilters: [qsTr("Zones (*.geojson *.json *.kml *.plan)"), qsTr("All files (*)")]
+        onAccepted: panel.airspace.loadFileUrl(selectedFile)
+    }
+
+    ColumnLayout {
+        anchors.fill: parent
+        spacing: 4
+        RowLayout {
+            Layout.fillWidth: true
+            Label { text: qsTr("Zones (%1)").arg(panel.airspace.count); font.bold: true; Layout.fillWidth: true }
+            ToolButton { objectName: "zoneUndo"; text: qsTr("Undo"); enabled: panel.editor.canUndo; onClicked: panel.editor.undo() }
+            ToolButton { objectName: "zoneRedo"; text: qsTr("Redo"); enabled: panel.editor.canRedo; onClicked: panel.editor.redo() }
+        }
+        RowLayout {
+            Layout.fillWidth: true
+            Button { objectName: "loadZonesButton"; text: qsTr("Load…"); onClicked: zoneDialog.open() }
+            Button {
+                objectName: "drawZonePolygon"
+                text: qsTr("Polygon")
+                checkable: true
+                checked: panel.tool === "zonePolygon"
+                onToggled: panel.toolRequested(checked ? "zonePolygon" : "")
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Click the corners on the map, then Create")
+            }
+            Button {
+                objectName: "drawZoneCircle"
+                text: qsTr("Circle")
+                checkable: true
+                checked: panel.tool === "zoneCircle"
+                onToggled: panel.toolRequested(checked ? "zoneCircle" : "")
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Click the centre on the map; drag its handle for the radius")
+            }
+        }
+        RowLayout {
+            visible: panel.tool === "zonePolygon"
+            Layout.fillWidth: true
+            Label { text: qsTr("%1 corners").arg(panel.draftCount); Layout.fillWidth: true }
+            Button { objectName: "finishZoneButton"; text: qsTr("Create"); enabled: panel.draftCount >= 3; onClicked: panel.finishRequested() }
+        }
+        Label {
+            id: refusal
+            objectName: "zoneRefusal"
+            visible: text.length > 0
+            color: "#e53935"
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
+            Connections {
+                target: panel.editor
+                function onRefused(reason) { refusal.text = reason }
+                function onStackChanged() { refusal.text = "" }
+            }
+        }
+        Label {
+            objectName: "zoneProblems"
+            visible: panel.airspace.problems.length > 0
+            text: panel.airspace.problems.join("\n")
+            color: "#e53935"
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
+            Layout.maximumHeight: 80
+            elide: Text.ElideRight
+        }
+        ListView {
+            id: zoneList
+            objectName: "zoneList"
+            Layout.fillWidth: true
+            Layout.preferredHeight: Math.min(contentHeight, 160)
+            clip: true
+            model: panel.airspace.zones
+            delegate: ItemDelegate {
+                id: row
+                required property int index
+                required property string name
+                required property string kind
+                required property string source
+                required property string floor
+                required property string ceiling
+                required property bool active
+                required property bool selected
+                required property string problem
+                required property var model
+                width: ListView.view.width
+                highlighted: selected
+                onClicked: panel.airspace.selectedZone = index
+                contentItem: RowLayout {
+                    spacing: 4
+                    CheckBox {
+                        objectName: "zoneActive"
+                        checked: row.active
+                        onToggled: row.model.active = checked
+                        ToolTip.visible: hovered
+                        ToolTip.text: qsTr("Checked against the route when ticked")
+                    }
+                    Rectangle {
+                        implicitWidth: 10; implicitHeight: 10
+                        color: row.kind === "exclusion" ? "#d32f2f" : "transparent"
+                        border.color: row.kind === "exclusion" ? "#d32f2f" : "#2e7d32"
+                        border.width: 2
+                    }
+                    ColumnLayout {
+                        spacing: 0
+                        Layout.fillWidth: true
+                        Label { text: row.name; font.bold: true; elide: Text.ElideRight; Layout.fillWidth: true }
+                        Label {
+                            text: row.problem.length > 0 ? row.problem : qsTr("%1 · %2 – %3").arg(row.source).arg(row.floor).arg(row.ceiling)
+                            color: row.problem.length > 0 ? "#e53935" : palette.placeholderText
+                            font.pixelSize: 11
+                            elide: Text.ElideRight
+                            Layout.fillWidth: true
+                        }
+                    }
+                }
+            }
+        }
+        // The chosen drawn zone's fields.
+        GridLayout {
+            objectName: "zoneFields"
+            visible: panel.chosen >= 0
+            columns: 2
+            Layout.fillWidth: true
+            Label { text: qsTr("Name") }
+            TextField {
+                objectName: "zoneName"
+                Layout.fillWidth: true
+                text: panel.editor.fields.name || ""
+                onEditingFinished: if (text !== panel.editor.fields.name) panel.editor.setName(panel.chosen, text)
+            }
+            Label { text: qsTr("Kind") }
+            ComboBox {
+                objectName: "zoneKind"
+                Layout.fillWidth: true
+                model: ["exclusion", "inclusion"]
+                currentIndex: panel.editor.fields.kind === "inclusion" ? 1 : 0
+                onActivated: index => panel.editor.setKind(panel.chosen, model[index])
+            }
+            Label { text: qsTr("Floor (m)") }
+            TextField {
+                id: floorField
+                objectName: "zoneFloor"
+                Layout.fillWidth: true
+                placeholderText: qsTr("ground")
+                text: panel.editor.fields.floor === null || panel.editor.fields.floor === undefined ? "" : String(panel.editor.fields.floor)
+                onEditingFinished: panel.setLimits()
+            }
+            Label { text: qsTr("Ceiling (m)") }
+            TextField {
+                id: ceilingField
+                objectName: "zoneCeiling"
+                Layout.fillWidth: true
+                placeholderText: qsTr("unlimited")
+                text: panel.editor.fields.ceiling === null || panel.editor.fields.ceiling === undefined ? "" : String(panel.editor.fields.ceiling)
+                onEditingFinished: panel.setLimits()
+            }
+            Label { text: qsTr("Above") }
+            ComboBox {
+                id: referenceBox
+                objectName: "zoneReference"
+                Layout.fillWidth: true
+                model: ["AMSL", "AGL", "HOME"]
+                currentIndex: Math.max(0, model.indexOf(panel.editor.fields.reference || "AMSL"))
+                onActivated: panel.setLimits()
+            }
+            Button {
+                objectName: "removeZoneButton"
+                text: qsTr("Remove zone")
+                Layout.columnSpan: 2
+                onClicked: panel.editor.removeZone(panel.chosen)
+            }
+        }
+        RowLayout {
+            Layout.fillWidth: true
+            Label { text: qsTr("Warn within (m)"); Layout.fillWidth: true }
+            SpinBox {
+                objectName: "zoneBuffer"
+                from: 0
+                to: 5000
+                stepSize: 5
+                editable: true
+                value: Math.round(panel.airspace.buffer)
+                onValueModified: panel.airspace.buffer = value
+            }
+        }
+    }
+
+    // As typed: the editor reads the numbers, takes empty as ground / unlimited and refuses the rest.
+    function setLimits() {
+        panel.editor.setLimits(panel.chosen, floorField.text, ceilingField.text, referenceBox.currentText)
+    }
+}

@@ -1,0 +1,148 @@
+#include "ZoneProfileOverlay.h"
+
+#include "ElevationProfileView.h"
+
+#include <QFontMetricsF>
+#include <QPainter>
+
+#include <cmath>
+
+namespace sortie::ui {
+
+namespace {
+constexpr int kSteps = 24;  // points along each of the band's edges (AGL limits follow the ground)
+}
+
+ZoneProfileOverlay::ZoneProfileOverlay(QQuickItem *parent)
+    : QQuickPaintedItem(parent)
+{
+    setAcceptedMouseButtons(Qt::NoButton); // the profile under it takes hover and clicks
+}
+
+void ZoneProfileOverlay::setView(ElevationProfileView *view)
+{
+    if (view == m_view)
+        return;
+    if (m_view)
+        disconnect(m_view, nullptr, this, nullptr);
+    m_view = view;
+    if (m_view) {
+        connect(m_view, &ElevationProfileView::modelChanged, this, &ZoneProfileOverlay::followModel);
+        followModel();
+    }
+    update();
+    emit viewChanged();
+}
+
+void ZoneProfileOverlay::followModel()
+{
+    disconnect(m_profile);
+    if (m_view && m_view->model())
+        m_profile = connect(m_view->model(), &TerrainProfileModel::profileChanged, this, [this] { update(); });
+    update();
+}
+
+void ZoneProfileOverlay::setCrossings(const QVariantList &crossings)
+{
+    if (crossings == m_crossings)
+        return;
+    m_crossings = crossings;
+    update();
+    emit crossingsChanged();
+}
+
+QPolygonF ZoneProfileOverlay::bandOf(const QVariantMap &c) const
+{
+    const TerrainProfileModel *model = m_view ? m_view->model() : nullptr;
+    if (!model || model->sampleCount() < 2)
+        return {};
+    const terrain::TerrainProfile &profile = model->profile();
+    const QRectF plot = m_view->plotArea();
+    const double from = c.value(QStringLiteral("from")).toDouble(), to = c.value(QStringLiteral("to")).toDouble();
+    const auto groundAt = [&](double d) {
+        const int i = model->sampleAt(d);
+        return i >= 0 && profile.ground[size_t(i)].hasValue() ? profile.ground[size_t(i)].ground : qQNaN();
+    };
+    // A limit's y at a distance; NaN where its reference's ground is unknown.
+    const auto yOf = [&](const QVariant &limit, double d, bool ceiling) {
+        if (limit.isNull() || !limit.isValid()) {
+            if (ceiling)
+                return plot.top();
+            const double g = groundAt(d);
+            return std::isfinite(g) ? m_view->yOf(g) : plot.bottom();
+        }
+        const QVariantMap l = limit.toMap();
+        const double metres = l.value(QStringLiteral("metres")).toDouble();
+        const QString reference = l.value(QStringLiteral("reference")).toString();
+        const double base = reference == QLatin1String("AGL") ? groundAt(d)
+                          : reference == QLatin1String("HOME") ? (profile.homeGround.hasValue() ? profile.homeGround.ground : qQNaN())
+                                                               : 0.0;
+        return std::isfinite(base) ? std::clamp(m_view->yOf(base + metres), plot.top(), plot.bottom()) : qQNaN();
+    };
+    QPolygonF top, bottom;
+    for (int i = 0; i <= kSteps; ++i) {
+        const double d = from + (to - from) * i / kSteps;
+        const double x = m_view->xOf(d);
+        const double yTop = yOf(c.value(QStringLiteral("ceiling")), d, true);
+        const double yBottom = yOf(c.value(QStringLiteral("floor")), d, false);
+        if (!std::isfinite(yTop) || !std::isfinite(yBottom))
+            return {};  // a limit that cannot be placed is not drawn at a made-up height
+        top << QPointF(x, yTop);
+        bottom.prepend(QPointF(x, yBottom));
+    }
+    return top + bottom;
+}
+
+QRectF ZoneProfileOverlay::bandRect(int index) const
+{
+    if (index < 0 || index >= m_crossings.size())
+        return {};
+    return bandOf(m_crossings[index].toMap()).boundingRect();
+}
+
+void ZoneProfileOverlay::paint(QPainter *painter)
+{
+    QPainter &p = *painter;
+    m_bands = 0;
+    if (!m_view) {
+        emit painted();
+        return;
+    }
+    p.setRenderHint(QPainter::Antialiasing);
+    p.setClipRect(m_view->plotArea());
+    QFont font = p.font();
+    font.setPixelSize(11);
+    p.setFont(font);
+    const QFontMetricsF metrics(font);
+    double lastLabelEnd = -1e9;
+    for (const QVariant &v : m_crossings) {
+        const QVariantMap c = v.toMap();
+        const QPolygonF band = bandOf(c);
+        if (band.isEmpty())
+            continue;
+        ++m_bands;
+        const bool exclusion = c.value(QStringLiteral("kind")).toString() == QLatin1String("exclusion");
+        const QColor colour = exclusion ? QColor(0xd3, 0x2f, 0x2f) : QColor(0x2e, 0x7d, 0x32);
+        QColor wash = colour;
+        wash.setAlpha(40);
+        p.setPen(Qt::NoPen);
+        p.setBrush(wash);
+        p.drawPolygon(band);
+        p.setBrush(QBrush(colour, exclusion ? Qt::BDiagPattern : Qt::FDiagPattern));
+        p.setPen(QPen(colour, 1.5));
+        p.drawPolygon(band);
+        // The name over the band, unless the band before took that place.
+        const QRectF box = band.boundingRect();
+        const QString name = c.value(QStringLiteral("name")).toString();
+        const double w = metrics.horizontalAdvance(name);
+        const QPointF at(box.left() + 2, box.top() + metrics.ascent() + 2);
+        if (at.x() > lastLabelEnd + 4 && w + 4 <= std::max(box.width(), 60.0)) {
+            p.setPen(colour.darker(140));
+            p.drawText(at, name);
+            lastLabelEnd = at.x() + w;
+        }
+    }
+    emit painted();
+}
+
+} // namespace sortie::ui
