@@ -137,6 +137,7 @@ FlightModel::Refusal FlightModel::startMission()
     m_state.currentWaypoint = 0;
     m_state.missionComplete = false;
     m_holdLeft = -1;
+    m_climbingOut = false;
     m_state.mode = Mode::Auto;
     return {};
 }
@@ -292,6 +293,16 @@ void FlightModel::tick(double dt)
             break;
         }
         const Waypoint &wp = m_mission[size_t(s.currentWaypoint)];
+        // A multicopter leaves the ground straight up: from the ground it climbs to the waypoint's
+        // height where it stands, and only then moves across (mission::flownLegs' take-off).
+        if (!s.airborne() && wp.altitudeAgl > s.altitudeAgl + 0.5)
+            m_climbingOut = true;
+        if (m_climbingOut) {
+            climbTo(wp.altitudeAgl, dt);
+            if (std::abs(wp.altitudeAgl - s.altitudeAgl) >= 0.5)
+                break;
+            m_climbingOut = false;
+        }
         if (flyTowards(wp.latitude, wp.longitude, wp.altitudeAgl, wp.speed, dt, wp.acceptanceRadius)) {
             if (m_holdLeft < 0 && wp.holdSeconds > 0)
                 m_holdLeft = wp.holdSeconds; // arrived: start waiting

@@ -26,7 +26,7 @@ public:
         double speed = 0;      // m/s; 0 means the model's cruise speed
         double acceptanceRadius = 0; // m; 0 means the model's
         double holdSeconds = 0;      // waits this long once reached
-        bool landHere = false;       // lands once reached (and waited): the mission ends
+        bool landHere = false;       // lands once reached (and waited), straight down: the mission ends
     };
 
     struct State
@@ -115,6 +115,7 @@ private:
     Waypoint m_target; // Guided target or Takeoff altitude
     double m_armedSeconds = 0;
     double m_holdLeft = -1; // s still to wait at the current waypoint; -1 when not waiting
+    bool m_climbingOut = false; // Auto from the ground: climbing straight up before moving across
 };
 
 // Spherical-earth helpers good to a few metres over a simulated flight (the mission model has the
