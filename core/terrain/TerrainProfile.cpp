@@ -112,11 +112,11 @@ TerrainProfile computeProfile(const ProfileRoute &route, ElevationService &servi
         e.arriveAmsl = amslOver(leg.arriveHeight, leg.to);
         const int number = int(k);
         if (leg.climbAtStart)
-            out.verticals.push_back({number, int(leg.from), out.path.vertexDistance[leg.from], groundAt(leg.from), e.departAmsl});
+            out.verticals.push_back({number, int(leg.from), out.path.vertexDistance[leg.from], groundAt(leg.from), e.departAmsl, true});
         if (leg.climbAtEnd)
-            out.verticals.push_back({number, int(leg.to), out.path.vertexDistance[leg.to], groundAt(leg.to), e.arriveAmsl});
+            out.verticals.push_back({number, int(leg.to), out.path.vertexDistance[leg.to], groundAt(leg.to), e.arriveAmsl, true});
         if (leg.descentAtEnd)
-            out.verticals.push_back({number, int(leg.to), out.path.vertexDistance[leg.to], e.arriveAmsl, groundAt(leg.to)});
+            out.verticals.push_back({number, int(leg.to), out.path.vertexDistance[leg.to], e.arriveAmsl, groundAt(leg.to), false});
     }
     const auto aglOver = [&](double amsl, size_t at) { return amsl - groundAt(at); };
 

@@ -78,7 +78,7 @@ struct VerticalMove
     double distance = 0.0;  // from the route's start
     double fromAmsl = std::numeric_limits<double>::quiet_NaN();
     double toAmsl = std::numeric_limits<double>::quiet_NaN();
-    bool climb() const { return toAmsl > fromAmsl; }
+    bool climb = true;      // a take-off's climb; false: a landing's descent
 };
 
 // A stretch of one leg flown closer to the ground than the safe distance.

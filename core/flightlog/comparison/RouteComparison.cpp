@@ -1,6 +1,7 @@
 #include "RouteComparison.h"
 
 #include "FlightPath.h"
+#include "FlownLegs.h"
 #include "LocalTangentPlane.h"
 
 #include <QDateTime>
@@ -102,6 +103,9 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
     if (path.size() < 2)
         return {std::nullopt, QObject::tr("Route \"%1\" has fewer than two waypoints: there is nothing to compare.").arg(route.settings.name)};
 
+    // Each leg's heights as flown (FlownLegs.h): a take-off has climbed straight up before the leg,
+    // a landing is descended to straight down after it.
+    const std::vector<mission::LegShape> shapes = mission::flownLegs(path);
     const mission::LocalTangentPlane plane(path.front().position);
     std::vector<Planned> planned;
     for (const mission::PathPoint &p : path) {
@@ -204,7 +208,7 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
             ++l.samples;
             l.maxCrossTrack = std::max(l.maxCrossTrack, bestD);
             crossSum[best - 1] += bestD;
-            const Planned &a = planned[best - 1], &b = planned[best];
+            const Planned &a = planned[shapes[best - 1].departHeight], &b = planned[shapes[best - 1].arriveHeight];
             const double plannedAltitude = a.altitude + bestAlong * (b.altitude - a.altitude);
             const double flown = b.amsl ? track[k].amsl : track[k].agl;
             double dev = std::nan("");
