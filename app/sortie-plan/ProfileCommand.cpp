@@ -109,6 +109,9 @@ int runProfile(const QStringList &args, Streams io)
                    << QString::number(profile.minClearance->distanceAlongLeg, 'f', 1) << " m along the leg)\n";
         else
             io.out << "  lowest clearance unknown: no terrain data under the route\n";
+        for (const VerticalMove &v : profile.verticals)
+            io.out << "  vertical " << (v.climb ? "climb" : "descent") << " at " << QString::number(v.distance, 'f', 1) << " m on leg "
+                   << v.leg + 1 << ": " << cell(v.fromAmsl, 0) << " → " << cell(v.toAmsl, 0) << " m AMSL\n";
         io.out << "  " << QStringLiteral("distance").rightJustified(10) << QStringLiteral("leg").rightJustified(5)
                << QStringLiteral("latitude").rightJustified(13) << QStringLiteral("longitude").rightJustified(14)
                << QStringLiteral("ground").rightJustified(9) << QStringLiteral("altitude").rightJustified(10)

@@ -67,6 +67,12 @@ Json terrainJson(const ProfileRoute &route, const TerrainProfile &profile, bool 
                              {"distance", number(profile.path.vertexDistance[i])}});
     }
     t["waypoints"] = waypoints;
+    // The take-off climbs and landing descents, straight up and down at their points (FlownLegs.h).
+    Json verticals = Json::array();
+    for (const VerticalMove &v : profile.verticals)
+        verticals.push_back({{"leg", v.leg + 1}, {"waypoint", v.waypoint + 1}, {"distance", number(v.distance)},
+                             {"fromAmsl", number(v.fromAmsl)}, {"toAmsl", number(v.toAmsl)}});
+    t["verticals"] = verticals;
     if (withSamples) {
         Json samples = Json::array();
         for (size_t i = 0; i < profile.size(); ++i) {

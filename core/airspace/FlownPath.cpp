@@ -44,11 +44,14 @@ struct Builder
             return terrain->waypoints[i].altitudeAmsl;
         return route.waypoints[i].reference == HeightReference::Amsl ? route.waypoints[i].altitude : kNaN;
     }
-    FlownPoint vertexPoint(size_t i, double along) const
+    FlownPoint vertexPoint(size_t i, double along) const { return vertexPoint(i, i, along); }
+    // Point `at`'s place at point `whose` height (a take-off climbs to the next point's height).
+    FlownPoint vertexPoint(size_t at, size_t whose, double along) const
     {
-        const ProfileWaypoint &w = route.waypoints[i];
-        FlownPoint p{w.position, plane.project(w.position), along};
-        p.height = heights(amslAtVertex(i), groundAtVertex(i), homeGround, w.reference, w.altitude);
+        const ProfileWaypoint &w = route.waypoints[whose];
+        FlownPoint p{route.waypoints[at].position, plane.project(route.waypoints[at].position), along};
+        const double amsl = w.reference == HeightReference::AboveTerrain && at != whose ? groundAtVertex(at) + w.altitude : amslAtVertex(whose);
+        p.height = heights(amsl, groundAtVertex(at), homeGround, w.reference, w.altitude);
         return p;
     }
     // The same place on the ground (the bottom of a take-off climb or landing descent).
@@ -104,22 +107,29 @@ FlownPath flownPath(const ProfileRoute &route, const TerrainProfile *terrain, co
     // Distances along a leg to the micrometre, for the same reason.
     const auto micrometres = [](double v) { return std::round(v * 1e6) / 1e6; };
 
-    // A lone point is one leg that goes nowhere (its take-off and landing), as the time model has it.
-    const size_t legCount = std::max<size_t>(1, n - 1);
+    // Joined by the one rule (FlownLegs.h): a take-off climbs straight up to the next point's height
+    // before the leg, a landing is reached at the height the leg left at and descended to straight
+    // down. A lone point is one leg that goes nowhere (its take-off and landing), as the time model has it.
+    const std::vector<mission::LegShape> shapes = terrain ? terrain->legs : terrain::legShapesOf(route);
+    const size_t legCount = shapes.size();
     std::vector<FlownLeg> legs(legCount);
     for (size_t k = 0; k < legCount; ++k) {
-        const size_t a = k, z = std::min(k + 1, n - 1);
+        const mission::LegShape &shape = shapes[k];
+        const size_t a = shape.from, z = shape.to;
         FlownLeg &leg = legs[k];
-        leg.leg = int(k) + 1;
+        leg.leg = shape.leg;
         leg.row = route.waypoints[z].row;
         leg.start = startOf[a];
         leg.length = z > a ? lengthOf[z] : 0.0;
-        leg.points.push_back(b.vertexPoint(a, 0.0));
+        const FlownPoint departing = b.vertexPoint(a, shape.departHeight, 0.0);
+        if (shape.climbAtStart)
+            leg.points.push_back(b.groundPoint(departing, b.groundAtVertex(a)));
+        leg.points.push_back(departing);
+        const ProfileWaypoint &wa = route.waypoints[shape.departHeight], &wz = route.waypoints[shape.arriveHeight];
         // Between the ends: the profile's samples where the ground is known there (they carry the
         // terrain following and the ground an AGL zone is measured from); straight otherwise.
         if (terrain && z > a) {
             const size_t first = size_t(terrain->path.vertexSample[a]), last = size_t(terrain->path.vertexSample[z]);
-            const ProfileWaypoint &wa = route.waypoints[a], &wz = route.waypoints[z];
             for (size_t s = first + 1; s < last; ++s) {
                 const terrain::GroundSample &g = terrain->ground[s];
                 if (!g.hasValue())
@@ -133,28 +143,17 @@ FlownPath flownPath(const ProfileRoute &route, const TerrainProfile *terrain, co
                 leg.points.push_back(p);
             }
         }
-        leg.points.push_back(b.vertexPoint(z, leg.length));
-        if (route.waypoints[a].reference != route.waypoints[z].reference) {
+        leg.points.push_back(b.vertexPoint(z, shape.arriveHeight, leg.length));
+        if (wa.reference != wz.reference) {
             // Frames differ along the leg: the own-reference heights are not comparable across it.
-            for (FlownPoint &p : leg.points)
+            const size_t firstAbove = shape.climbAtStart ? 1 : 0;
+            for (size_t i = firstAbove; i < leg.points.size(); ++i)
                 for (size_t r = 0; r < 3; ++r)
-                    if (std::isnan(leg.points.front().height[r]) || std::isnan(leg.points.back().height[r]))
-                        p.height[r] = kNaN;
+                    if (std::isnan(leg.points[firstAbove].height[r]) || std::isnan(leg.points.back().height[r]))
+                        leg.points[i].height[r] = kNaN;
         }
-    }
-    // Take-off counts in the leg that leaves its point, landing in the one that reaches it.
-    for (size_t i = 0; i < n; ++i) {
-        const ProfileWaypoint &w = route.waypoints[i];
-        if (w.role == mission::WaypointRole::Takeoff) {
-            FlownLeg &leg = legs[std::min(i, legCount - 1)];
-            if (i < legCount || n == 1)
-                leg.points.insert(leg.points.begin(), b.groundPoint(leg.points.front(), b.groundAtVertex(i)));
-            else
-                leg.points.push_back(b.groundPoint(leg.points.back(), b.groundAtVertex(i)));
-        } else if (w.role == mission::WaypointRole::Land) {
-            FlownLeg &leg = legs[i == 0 ? 0 : i - 1];
-            leg.points.push_back(b.groundPoint(leg.points.back(), b.groundAtVertex(i)));
-        }
+        if (shape.climbAtEnd || shape.descentAtEnd)
+            leg.points.push_back(b.groundPoint(leg.points.back(), b.groundAtVertex(z)));
     }
     for (FlownLeg &leg : legs)
         b.add(std::move(leg));

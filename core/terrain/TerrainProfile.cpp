@@ -41,6 +41,15 @@ ProfileRoute profileRouteOf(const mission::Route &route, mission::ScanPlanCache 
     return out;
 }
 
+std::vector<mission::LegShape> legShapesOf(const ProfileRoute &route)
+{
+    std::vector<mission::VerticalPoint> points;
+    points.reserve(route.waypoints.size());
+    for (const ProfileWaypoint &w : route.waypoints)
+        points.push_back({w.role, w.reference == HeightReference::AboveTerrain && !(w.altitude > 0.0)});
+    return mission::flownLegs(points);
+}
+
 QString legLabel(const ProfileRoute &route, int leg)
 {
     const auto name = [&](int i) {
@@ -86,14 +95,40 @@ TerrainProfile computeProfile(const ProfileRoute &route, ElevationService &servi
         t.altitudeAgl = t.ground.hasValue() ? t.altitudeAmsl - t.ground.ground : kNaN;
     }
 
-    // The altitude along each leg: straight between waypoints; on a leg that follows the terrain,
+    // Each leg's ends as flown: the height of the point the rule names, over the leg's own end.
+    out.legs = legShapesOf(route);
+    out.legEnds.resize(out.legs.size());
+    const auto amslOver = [&](size_t whose, size_t at) {
+        const ProfileWaypoint &w = route.waypoints[whose];
+        if (w.reference == HeightReference::AboveTerrain)
+            return out.waypoints[at].ground.hasValue() ? out.waypoints[at].ground.ground + w.altitude : kNaN;
+        return out.waypoints[whose].altitudeAmsl;  // AMSL, or above home: the same anywhere
+    };
+    const auto groundAt = [&](size_t i) { return out.waypoints[i].ground.hasValue() ? out.waypoints[i].ground.ground : kNaN; };
+    for (size_t k = 0; k < out.legs.size(); ++k) {
+        const mission::LegShape &leg = out.legs[k];
+        LegEnds &e = out.legEnds[k];
+        e.departAmsl = amslOver(leg.departHeight, leg.from);
+        e.arriveAmsl = amslOver(leg.arriveHeight, leg.to);
+        const int number = int(k);
+        if (leg.climbAtStart)
+            out.verticals.push_back({number, int(leg.from), out.path.vertexDistance[leg.from], groundAt(leg.from), e.departAmsl, true});
+        if (leg.climbAtEnd)
+            out.verticals.push_back({number, int(leg.to), out.path.vertexDistance[leg.to], groundAt(leg.to), e.arriveAmsl, true});
+        if (leg.descentAtEnd)
+            out.verticals.push_back({number, int(leg.to), out.path.vertexDistance[leg.to], e.arriveAmsl, groundAt(leg.to), false});
+    }
+    const auto aglOver = [&](double amsl, size_t at) { return amsl - groundAt(at); };
+
+    // The altitude along each leg: straight between its ends; on a leg that follows the terrain,
     // straight between the points following adds (needs the ground all along it, else straight).
     std::vector<double> followed(n, kNaN);
     std::vector<double> distance, ground;
     for (size_t a = 0; a + 1 < route.waypoints.size(); ++a) {
         const double tolerance = route.waypoints[a].followTolerance;
         const size_t first = size_t(out.path.vertexSample[a]), last = size_t(out.path.vertexSample[a + 1]);
-        if (tolerance < 0 || last <= first + 1 || std::isnan(out.waypoints[a].altitudeAgl) || std::isnan(out.waypoints[a + 1].altitudeAgl))
+        const double agl0 = aglOver(out.legEnds[a].departAmsl, a), agl1 = aglOver(out.legEnds[a].arriveAmsl, a + 1);
+        if (tolerance < 0 || last <= first + 1 || std::isnan(agl0) || std::isnan(agl1))
             continue;
         if (!std::all_of(out.ground.begin() + long(first), out.ground.begin() + long(last) + 1,
                          [](const GroundSample &g) { return g.hasValue(); }))
@@ -109,7 +144,6 @@ TerrainProfile computeProfile(const ProfileRoute &route, ElevationService &servi
         std::vector<bool> keep(n, false);
         keep[first] = keep[last] = true;
         markFollowPoints(distance, ground, tolerance, first, last, keep);
-        const double agl0 = out.waypoints[a].altitudeAgl, agl1 = out.waypoints[a + 1].altitudeAgl;
         const auto height = [&](size_t i) {
             const double f = distance[last] > distance[first] ? (distance[i] - distance[first]) / (distance[last] - distance[first]) : 0.0;
             return ground[i] + agl0 + f * (agl1 - agl0);
@@ -134,7 +168,8 @@ TerrainProfile computeProfile(const ProfileRoute &route, ElevationService &servi
         const size_t a = size_t(p.leg), b = std::min(a + 1, out.waypoints.size() - 1);
         const double da = out.path.vertexDistance[a], db = out.path.vertexDistance[b];
         const double f = db > da ? (p.distance - da) / (db - da) : 0.0;
-        const double ha = out.waypoints[a].altitudeAmsl, hb = out.waypoints[b].altitudeAmsl;
+        const LegEnds &ends = out.legEnds[std::min(a, out.legEnds.size() - 1)];
+        const double ha = ends.departAmsl, hb = ends.arriveAmsl;
         out.altitudeAmsl[i] = std::isnan(followed[i]) ? ha + f * (hb - ha) : followed[i];
         const GroundSample &g = out.ground[i];
         out.pending |= g.status == SampleStatus::Pending;

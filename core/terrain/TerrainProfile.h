@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ElevationService.h"
+#include "FlownLegs.h"
 #include "PathSampling.h"
 #include "Route.h"
 
@@ -59,6 +60,27 @@ struct ClearancePoint
     double clearance = 0.0;         // metres above the ground (negative: below it)
 };
 
+// A leg's ends as flown (FlownLegs.h): the height it leaves its first point at and reaches its last
+// point at, AMSL (NaN: unknown). A take-off on the ground leaves at the next point's height, a
+// landing on the ground is reached at the height the leg left at.
+struct LegEnds
+{
+    double departAmsl = std::numeric_limits<double>::quiet_NaN();
+    double arriveAmsl = std::numeric_limits<double>::quiet_NaN();
+};
+
+// A vertical move at a point: a take-off's climb from the ground, a landing's descent to it. The
+// clearance rule does not judge it: that is where the vehicle is meant to touch the ground.
+struct VerticalMove
+{
+    int leg = 0;            // 0-based, the leg it belongs to (take-off: the one leaving; landing: the one arriving)
+    int waypoint = 0;       // where
+    double distance = 0.0;  // from the route's start
+    double fromAmsl = std::numeric_limits<double>::quiet_NaN();
+    double toAmsl = std::numeric_limits<double>::quiet_NaN();
+    bool climb = true;      // a take-off's climb; false: a landing's descent
+};
+
 // A stretch of one leg flown closer to the ground than the safe distance.
 struct LowStretch
 {
@@ -68,14 +90,19 @@ struct LowStretch
 };
 
 // Ground, altitude and clearance along the flown path, sampled every step metres. Sample i is at
-// path.points[i]; the altitude goes linearly with distance between waypoints, or, on a leg that
-// follows the terrain, between the points terrain following adds (markFollowPoints on the samples).
+// path.points[i]; the altitude goes linearly with distance between a leg's ends as flown (legEnds:
+// a take-off has climbed, a landing not yet descended), or, on a leg that follows the terrain,
+// between the points terrain following adds (markFollowPoints on the samples). The vertical climbs
+// and descents are `verticals`, not samples.
 struct TerrainProfile
 {
     SampledPath path;
     std::vector<GroundSample> ground;
     std::vector<double> altitudeAmsl;  // NaN where the altitude is unknown
     std::vector<WaypointTerrain> waypoints;
+    std::vector<mission::LegShape> legs;   // legShapesOf(route)
+    std::vector<LegEnds> legEnds;          // per leg
+    std::vector<VerticalMove> verticals;   // in route order
     std::vector<NoDataStretch> noData;  // per leg
     std::vector<LowStretch> lowStretches;
     std::optional<ClearancePoint> minClearance;
@@ -86,6 +113,10 @@ struct TerrainProfile
     double clearance(size_t i) const { return altitudeAmsl[i] - ground[i].ground; }  // NaN when unknown
     size_t size() const { return path.points.size(); }
 };
+
+// How the route's points are joined (the one rule, FlownLegs.h): a take-off or landing is on the
+// ground at 0 m or less above the terrain.
+std::vector<mission::LegShape> legShapesOf(const ProfileRoute &route);
 
 TerrainProfile computeProfile(const ProfileRoute &route, ElevationService &service, double step = 30.0);
 

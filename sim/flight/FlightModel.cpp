@@ -137,6 +137,7 @@ FlightModel::Refusal FlightModel::startMission()
     m_state.currentWaypoint = 0;
     m_state.missionComplete = false;
     m_holdLeft = -1;
+    m_climbingOut = false;
     m_state.mode = Mode::Auto;
     return {};
 }
@@ -246,7 +247,7 @@ void FlightModel::climbTo(double altAgl, double dt, double timeToGo)
     const double wanted = diff / std::max(dt, timeToGo);
     const double rate = diff > 0 ? std::min(m_limits.climbRate, wanted) : std::max(-m_limits.descentRate, wanted);
     m_state.verticalSpeed = rate;
-    m_state.altitudeAgl = std::max(0.0, m_state.altitudeAgl + rate * dt);
+    m_state.altitudeAgl = std::max(m_state.floor, m_state.altitudeAgl + rate * dt);
 }
 
 bool FlightModel::flyTowards(double lat, double lon, double altAgl, double speed, double dt, double radius)
@@ -273,6 +274,7 @@ void FlightModel::tick(double dt)
     if (dt <= 0)
         return;
     State &s = m_state;
+    s.floor = floorHere();
     s.verticalSpeed = 0;
     s.groundSpeed = 0;
     switch (s.mode) {
@@ -292,6 +294,16 @@ void FlightModel::tick(double dt)
             break;
         }
         const Waypoint &wp = m_mission[size_t(s.currentWaypoint)];
+        // A multicopter leaves the ground straight up: from the ground it climbs to the waypoint's
+        // height where it stands, and only then moves across (mission::flownLegs' take-off).
+        if (!s.airborne() && wp.altitudeAgl > s.altitudeAgl + 0.5)
+            m_climbingOut = true;
+        if (m_climbingOut) {
+            climbTo(wp.altitudeAgl, dt);
+            if (std::abs(wp.altitudeAgl - s.altitudeAgl) >= 0.5)
+                break;
+            m_climbingOut = false;
+        }
         if (flyTowards(wp.latitude, wp.longitude, wp.altitudeAgl, wp.speed, dt, wp.acceptanceRadius)) {
             if (m_holdLeft < 0 && wp.holdSeconds > 0)
                 m_holdLeft = wp.holdSeconds; // arrived: start waiting
@@ -318,10 +330,10 @@ void FlightModel::tick(double dt)
         if (flyTowards(m_target.latitude, m_target.longitude, m_target.altitudeAgl, m_target.speed, dt))
             s.mode = Mode::Hold;
         break;
-    case Mode::Land:
-        climbTo(0, dt);
+    case Mode::Land: // straight down to the ground under it
+        climbTo(s.floor, dt);
         if (!s.airborne()) {
-            s.altitudeAgl = 0;
+            s.altitudeAgl = s.floor;
             s.armed = false; // auto-disarm on touchdown
             s.mode = Mode::Manual;
         }
@@ -336,10 +348,19 @@ void FlightModel::tick(double dt)
         break;
     }
     }
+    s.floor = floorHere();
     if (s.armed)
         m_armedSeconds += dt;
     drainBattery(dt);
     s.roll = 0;
+}
+
+double FlightModel::floorHere() const
+{
+    if (!m_ground)
+        return 0.0;
+    const std::optional<double> g = m_ground(m_state.latitude, m_state.longitude);
+    return g ? *g - m_state.groundElevation : 0.0;
 }
 
 void FlightModel::drainBattery(double dt)

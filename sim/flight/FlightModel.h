@@ -4,6 +4,8 @@
 #include "SimPower.h"
 
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,13 +28,14 @@ public:
         double speed = 0;      // m/s; 0 means the model's cruise speed
         double acceptanceRadius = 0; // m; 0 means the model's
         double holdSeconds = 0;      // waits this long once reached
-        bool landHere = false;       // lands once reached (and waited): the mission ends
+        bool landHere = false;       // lands once reached (and waited), straight down: the mission ends
     };
 
     struct State
     {
         double latitude = 0, longitude = 0; // degrees
         double altitudeAgl = 0;             // metres above home ground
+        double floor = 0;                   // the ground under it, metres above home ground (0 without a ground)
         double groundElevation = 0;         // metres AMSL of the home ground
         double heading = 0;                 // degrees, 0 = north, clockwise
         double groundSpeed = 0, verticalSpeed = 0; // m/s, vertical positive up
@@ -48,7 +51,7 @@ public:
         bool missionComplete = false;       // its last waypoint was reached; cleared by a new mission or start
         double homeLatitude = 0, homeLongitude = 0;
         double altitudeAmsl() const { return groundElevation + altitudeAgl; }
-        bool airborne() const { return altitudeAgl > 0.2; }
+        bool airborne() const { return altitudeAgl - floor > 0.2; }
     };
 
     // Why a command was refused; empty when it was accepted.
@@ -74,6 +77,11 @@ public:
 
     FlightModel(double homeLatitude, double homeLongitude, double groundElevation);
     FlightModel(double homeLatitude, double homeLongitude, double groundElevation, Limits limits);
+
+    // The ground under a place, metres AMSL (nullopt: unknown). Without it the ground is level at
+    // home's; with it the vehicle lands on the ground under it and does not fly below it.
+    using GroundFunction = std::function<std::optional<double>(double latitude, double longitude)>;
+    void setGround(GroundFunction ground) { m_ground = std::move(ground); }
 
     const State &state() const { return m_state; }
     const Limits &limits() const { return m_limits; }
@@ -106,8 +114,10 @@ private:
     void turnTowards(double bearing, double dt);
 
     void drainBattery(double dt);
+    double floorHere() const; // the ground under the vehicle, metres above home's
 
     Limits m_limits;
+    GroundFunction m_ground;
     SimBattery m_battery;
     State m_state;
     std::vector<Waypoint> m_mission;
@@ -115,6 +125,7 @@ private:
     Waypoint m_target; // Guided target or Takeoff altitude
     double m_armedSeconds = 0;
     double m_holdLeft = -1; // s still to wait at the current waypoint; -1 when not waiting
+    bool m_climbingOut = false; // Auto from the ground: climbing straight up before moving across
 };
 
 // Spherical-earth helpers good to a few metres over a simulated flight (the mission model has the

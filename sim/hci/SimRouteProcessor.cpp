@@ -1,6 +1,7 @@
 #include "SimRouteProcessor.h"
 
 #include "Messages.pb.h"
+#include "SimFlownPoints.h"
 #include "SimVehicleProfiles.h"
 
 #include "AlgorithmCatalog.h"
@@ -429,27 +430,39 @@ std::string SimRouteProcessor::hash(const pb::Route &route)
 
 std::vector<FlightModel::Waypoint> SimRouteProcessor::flightPlan(const pb::ProcessedRoute &route, double homeGround, QString *error)
 {
-    std::vector<FlightModel::Waypoint> plan;
-    double speed = 0;
     for (int i = 0; i < route.segments_size(); ++i) {
-        const auto &segment = route.segments(i);
-        if (segment.status() != pb::RPS_PROCESSED) {
+        if (route.segments(i).status() != pb::RPS_PROCESSED) {
             *error = QStringLiteral("Segment %1 of the route was not processed successfully; fix it and process the route again").arg(i + 1);
             return {};
         }
-        for (const auto &action : segment.segmentactions()) {
-            if (action.has_speedchange() && action.speedchange().groundspeed() > 0)
-                speed = action.speedchange().groundspeed();
-            if (action.has_waypoint()) {
-                const auto &w = action.waypoint();
-                plan.push_back({w.latitude() * kDeg, w.longitude() * kDeg, w.wgs84altitude() - homeGround, speed});
-            } else if (action.has_takeoff()) {
-                const auto &t = action.takeoff();
-                plan.push_back({t.latitude() * kDeg, t.longitude() * kDeg, t.wgs84altitude() - homeGround, speed});
-            } else if (action.has_landing()) {
-                const auto &l = action.landing();
-                plan.push_back({l.latitude() * kDeg, l.longitude() * kDeg, l.elevation() - homeGround, speed});
+    }
+    // Flown as the terrain pass checked it (mission::flownLegs): over a take-off, straight up to the
+    // height the first leg leaves at; across; over a landing at the height the leg left at, where
+    // the vehicle lands (straight down).
+    const std::vector<SimFlownPoint> points = simFlownPoints(route);
+    std::vector<FlightModel::Waypoint> plan;
+    const auto add = [&](size_t at, size_t whose, bool land) {
+        const SimFlownPoint &p = points[at];
+        const double altitude = amslOver(points, whose, at) - homeGround;
+        if (!plan.empty()) {
+            const FlightModel::Waypoint &last = plan.back();
+            if (last.latitude == p.latitude && last.longitude == p.longitude && last.altitudeAgl == altitude && !last.landHere) {
+                plan.back().landHere = land;
+                return;
             }
+        }
+        FlightModel::Waypoint w{p.latitude, p.longitude, altitude, p.speed};
+        w.landHere = land;
+        plan.push_back(w);
+    };
+    for (const mission::LegShape &leg : simFlownLegs(points)) {
+        add(leg.from, leg.departHeight, false);
+        const bool last = leg.to + 1 == points.size();
+        if (leg.moves() || leg.descentAtEnd)
+            add(leg.to, leg.arriveHeight, leg.descentAtEnd && last);
+        if (leg.descentAtEnd && !last) {  // down to the ground, and the route goes on from there
+            plan.push_back(plan.back());
+            plan.back().altitudeAgl = points[leg.to].ground.value_or(points[leg.to].amsl) - homeGround;
         }
     }
     if (plan.empty())

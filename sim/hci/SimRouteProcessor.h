@@ -51,9 +51,11 @@ public:
     static pb::ProcessedRoute process(const pb::Route &route, const SimRouteLimits &limits, double groundElevation);
     // A stable hex digest of the route as processed (ProcessRouteResponse.hash).
     static std::string hash(const pb::Route &route);
-    // The waypoints a vehicle flies for an uploaded route, altitudes above its home ground: every
-    // Waypoint, the Takeoff point and the Landing point (at the ground). Empty with `error` set when the
-    // route cannot be flown (a segment not processed, no waypoint).
+    // The waypoints a vehicle flies for an uploaded route, altitudes above its home ground, joined as
+    // the terrain pass checked them (mission::flownLegs): over the Takeoff point at the height its
+    // first leg leaves at (the vehicle climbs straight up to it), every Waypoint, over the Landing
+    // point at the height the leg left at, landing there (straight down). Empty with `error` set
+    // when the route cannot be flown (a segment not processed, no waypoint).
     static std::vector<FlightModel::Waypoint> flightPlan(const pb::ProcessedRoute &route, double homeGroundElevation,
                                                          QString *error);
 };

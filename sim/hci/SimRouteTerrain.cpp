@@ -3,6 +3,7 @@
 #include "AlgorithmCatalog.h"
 #include "Messages.pb.h"
 #include "PathSampling.h"
+#include "SimFlownPoints.h"
 #include "SimTerrain.h"
 #include "TerrainFollow.h"
 
@@ -42,8 +43,8 @@ struct Point
 {
     double latitude, longitude, amsl;
     int segment;
-    int number;  // 1-based among the route's flown points
-    bool landing;
+    int number;   // 1-based among the route's flown points
+    bool placed;  // false: its height above sea level is unknown (AGL over no data)
 };
 
 // The tolerance within which a segment's AGL waypoints follow the terrain: an algorithm with a
@@ -151,6 +152,7 @@ void SimRouteTerrain::apply(pb::ProcessedRoute &route, const SimTerrain &terrain
                         fail(segment, QStringLiteral("Waypoint %1 is %2 m above the ground, but the terrain (%3) has no data there: "
                                                      "its height above sea level is unknown")
                                           .arg(number).arg(metres(height), terrain.description()));
+                        points.push_back({lat, lon, w->wgs84altitude(), s, number, false});
                         return;
                     }
                     w->set_wgs84altitude(*ground + height);
@@ -159,7 +161,7 @@ void SimRouteTerrain::apply(pb::ProcessedRoute &route, const SimTerrain &terrain
                     w->set_elevation(*ground);
                 else
                     w->clear_elevation();
-                points.push_back({lat, lon, w->wgs84altitude(), s, number, landing});
+                points.push_back({lat, lon, w->wgs84altitude(), s, number, true});
             };
             if (action.has_waypoint())
                 place(action.mutable_waypoint(), action.waypoint().altitudeframe() == pb::AF_AGL, false);
@@ -169,10 +171,22 @@ void SimRouteTerrain::apply(pb::ProcessedRoute &route, const SimTerrain &terrain
                 place(action.mutable_landing(), false, true);
         }
     }
-    for (size_t i = 1; i < points.size(); ++i) {
-        const Point &a = points[i - 1], &b = points[i];
-        if (b.landing)
-            continue;  // the descent to a landing meets the ground on purpose
+    // The legs as they are flown (mission::flownLegs): a take-off climbs straight up to the next
+    // point's height first, and is given that height as the altitude it takes off to; a landing is
+    // reached at the height the leg left at and descended to straight down. The vertical moves meet
+    // the ground on purpose and are not judged; every leg across is.
+    std::vector<SimFlownPoint> flown = simFlownPoints(route);
+    if (flown.size() != points.size())
+        return;
+    const std::vector<mission::LegShape> legs = simFlownLegs(flown);
+    for (const mission::LegShape &leg : legs)
+        if (leg.climbAtStart && leg.departHeight != leg.from && flown[leg.from].action->has_takeoff())
+            flown[leg.from].action->mutable_takeoff()->set_wgs84altitude(amslOver(flown, leg.departHeight, leg.from));
+    for (const mission::LegShape &leg : legs) {
+        const Point &a = points[leg.from], &b = points[leg.to];
+        if (!leg.moves() || !a.placed || !b.placed || !points[leg.departHeight].placed)
+            continue;  // an unknown height: its segment is refused already
+        const double fromAmsl = amslOver(flown, leg.departHeight, leg.from), toAmsl = amslOver(flown, leg.arriveHeight, leg.to);
         const terrain::SampledPath path = terrain::samplePath({{a.latitude, a.longitude}, {b.latitude, b.longitude}}, kStep);
         const double length = path.length();
         double lowest = INFINITY, at = 0;
@@ -181,7 +195,7 @@ void SimRouteTerrain::apply(pb::ProcessedRoute &route, const SimTerrain &terrain
             if (!ground)
                 continue;
             const double f = length > 0 ? p.distance / length : 0.0;
-            const double clearance = a.amsl + f * (b.amsl - a.amsl) - *ground;
+            const double clearance = fromAmsl + f * (toAmsl - fromAmsl) - *ground;
             if (clearance < lowest) {
                 lowest = clearance;
                 at = p.distance;

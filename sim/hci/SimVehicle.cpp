@@ -67,6 +67,15 @@ pb::VehicleCommandResultDto SimVehicle::execute(const pb::Command &command)
     return result;
 }
 
+void SimVehicle::setTerrain(const SimTerrain *terrain)
+{
+    m_terrain = terrain;
+    if (terrain)
+        m_model.setGround([terrain](double lat, double lon) { return terrain->groundAt(lat, lon); });
+    else
+        m_model.setGround({});
+}
+
 QString SimVehicle::upload(const pb::ProcessedRoute &route)
 {
     QString error;

@@ -36,7 +36,8 @@ public:
     const SimTelemetry &telemetry() const { return m_telemetry; }
     // The ground under the vehicle (not owned): telemetry's altitude_agl is above it. Without one,
     // above the home ground.
-    void setTerrain(const SimTerrain *terrain) { m_terrain = terrain; }
+    // The flight model lands on that ground and keeps above it.
+    void setTerrain(const SimTerrain *terrain);
 
     // Advances the flight by dt seconds and fills `event` with the telemetry batch. Returns true when
     // the set of available commands changed (a CommandEvent is due).

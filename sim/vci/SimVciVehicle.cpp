@@ -30,6 +30,8 @@ SimVciVehicle::SimVciVehicle(const SimVciOptions &options, QObject *parent)
               FlightModel::Limits::forProfile(options.energy))
     , m_startMs(QDateTime::currentMSecsSinceEpoch())
 {
+    if (options.terrain)
+        m_model.setGround([terrain = options.terrain](double lat, double lon) { return terrain->groundAt(lat, lon); });
     m_parameters["telemetry_rate"] = options.telemetryRate;
     m_parameters["takeoff_altitude"] = m_model.limits().takeoffAltitude;
     m_parameters["mission_speed"] = m_model.limits().cruiseSpeed;

@@ -281,9 +281,12 @@ private slots:
         const QJsonObject total1 = QJsonDocument::fromJson(c1.out).object().value(QStringLiteral("total")).toObject();
         QCOMPARE(total1.value(QStringLiteral("reached")).toInt(), 4);
         QCOMPARE(total1.value(QStringLiteral("missed")).toInt(), 0);
-        QVERIFY2(total1.value(QStringLiteral("maxCrossTrack")).toDouble() < 5.0, c1.out.constData()); // the model swings up to ~3 m at turns
-        // Reaching is horizontal: the climb still under way when the first waypoint is passed counts on leg 1.
-        QVERIFY2(total1.value(QStringLiteral("meanAltitude")).toDouble() < 1.5, c1.out.constData());
+        // The copter cuts each corner inside its 2 m acceptance radius: at most 2·sin 45° = 1.4 m off a
+        // right-angled turn (the approach to waypoint 1 from home is no leg: it counted 3.2 m on leg 1).
+        // It climbs straight up before it moves, so leg 1 is flown at 12 m (its slant climb towards
+        // waypoint 1 left it metres low where leg 1 begins, so only the mean was asserted).
+        QVERIFY2(total1.value(QStringLiteral("maxCrossTrack")).toDouble() < 3.0, c1.out.constData());
+        QVERIFY2(total1.value(QStringLiteral("maxAltitude")).toDouble() < 1.5, c1.out.constData());
 
         Run c2 = sortieLog({QStringLiteral("compare"), cleanLog, file102, QStringLiteral("--vehicle"), QStringLiteral("EMU-102"), QStringLiteral("--json")});
         QVERIFY2(c2.exitCode == 0, c2.err.constData());

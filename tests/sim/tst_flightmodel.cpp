@@ -72,6 +72,41 @@ private slots:
         QVERIFY(qAbs(m.state().altitudeAgl - 35) < 0.6);
     }
 
+    // A mission started on the ground begins straight up (mission::flownLegs' take-off): the vehicle
+    // stays over where it stood until it is at the first waypoint's height, then moves across; a
+    // landing waypoint is reached at its height and landed on straight down, onto the ground under it.
+    void missionLeavesTheGroundStraightUpAndLandsStraightDown()
+    {
+        FlightModel m(kRigaLat, kRigaLon, 10);
+        double lat1, lon1;
+        sortie::sim::sphericalDestination(kRigaLat, kRigaLon, 90, 150, &lat1, &lon1);
+        m.setGround([&](double lat, double lon) -> std::optional<double> {
+            return sortie::sim::sphericalDistance(lat, lon, lat1, lon1) < 20 ? 16.0 : 10.0;  // a 6 m mound at the landing point
+        });
+        FlightModel::Waypoint land{lat1, lon1, 30, 10};
+        land.landHere = true;
+        QVERIFY(m.setMission({{kRigaLat, kRigaLon, 30, 10}, land}).empty());
+        m.arm();
+        QVERIFY(m.startMission().empty());
+        double offDuringClimb = 0;
+        while (m.state().altitudeAgl < 29.5) {
+            m.tick(0.1);
+            offDuringClimb = std::max(offDuringClimb, sortie::sim::sphericalDistance(m.state().latitude, m.state().longitude, kRigaLat, kRigaLon));
+        }
+        QVERIFY2(offDuringClimb < 0.01, qPrintable(QString::number(offDuringClimb)));
+        double offDuringDescent = 0;
+        for (int i = 0; i < 1000 && m.state().armed; ++i) {
+            m.tick(0.1);
+            if (m.state().mode == FlightModel::Mode::Land)
+                offDuringDescent = std::max(offDuringDescent, sortie::sim::sphericalDistance(m.state().latitude, m.state().longitude, lat1, lon1));
+        }
+        QVERIFY(!m.state().armed);  // landed and disarmed
+        QVERIFY(m.state().missionComplete);
+        QVERIFY2(offDuringDescent < 2.5, qPrintable(QString::number(offDuringDescent)));  // within the acceptance radius
+        QVERIFY(qAbs(m.state().altitudeAmsl() - 16) < 0.01);  // on the mound, not at home's height
+        QVERIFY(!m.state().airborne());
+    }
+
     void pauseHoldsAndResumeContinues()
     {
         FlightModel m(kRigaLat, kRigaLon, 0);

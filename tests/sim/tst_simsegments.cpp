@@ -402,7 +402,9 @@ private slots:
             expected += flown(s, ground).size();
         const auto &missionPoints = sim.world.vehicle(emu.id())->model().mission();
         QCOMPARE(missionPoints.size(), expected);
-        QVERIFY(std::abs(missionPoints.back().altitudeAgl) < 1e-6);  // lands
+        // Lands straight down: reached at the height the last leg left at (the ground is level here), then landed on.
+        QVERIFY(missionPoints.back().landHere);
+        QVERIFY(std::abs(missionPoints.back().altitudeAgl - missionPoints[missionPoints.size() - 2].altitudeAgl) < 1e-6);
         const PlanePoint last = plane().project({missionPoints.back().latitude, missionPoints.back().longitude});
         QVERIFY(std::hypot(last.x + 50, last.y + 20) < 0.01);
     }

@@ -67,6 +67,31 @@ pb::SegmentDefinition waypoint(double lat, double lon, double altitude, bool agl
     return s;
 }
 
+pb::SegmentDefinition takeoffOrLanding(double lat, double lon, bool takeoff)
+{
+    // As the UgCS SDK builds them: one figure point at 0 m above the ground.
+    pb::SegmentDefinition s;
+    s.set_algorithmclassname(takeoff ? "com.ugcs.ucs.service.routing.impl.TakeOffAlgorithm"
+                                     : "com.ugcs.ucs.service.routing.impl.LandingAlgorithm");
+    s.mutable_figure()->set_type(takeoff ? pb::FT_TAKEOFF_POINT : pb::FT_LANDING_POINT);
+    auto *p = s.mutable_figure()->add_points();
+    p->set_latitude(lat * kRad);
+    p->set_longitude(lon * kRad);
+    p->set_aglaltitude(0);
+    p->set_altitudetype(pb::AT_AGL);
+    return s;
+}
+
+QString messagesOf(const pb::ProcessedRoute &route)
+{
+    QStringList all;
+    for (const auto &s : route.segments())
+        for (const auto &m : s.messageset().messages())
+            if (m.severity() == pb::MS_ERROR)
+                all << QString::fromStdString(m.defaulttext());
+    return all.join(u'\n');
+}
+
 template<typename T>
 std::pair<T, QString> call(hci::HciReply *reply)
 {
@@ -297,6 +322,65 @@ private slots:
         const auto [amsl, amslError] = call<pb::ProcessRouteResponse>(client.processRoute(route));
         QVERIFY2(amslError.isEmpty(), qPrintable(amslError));
         QCOMPARE(amsl.processedroute().segments(0).status(), pb::RPS_INVALID);
+    }
+
+    // Issue 21: a route that starts with a Take-off segment at 0 m AGL was refused ("The leg from
+    // waypoint 1 to waypoint 2 passes 0.0 m above the ground 0.0 m along it"): the first leg was
+    // judged as a slant line from the ground. The vehicle climbs straight up to the next waypoint's
+    // height and lands straight down; those vertical moves are not judged, the legs across are.
+    void takeoffAndLandingAreVertical()
+    {
+        hci::HciClient client(m_session.get());
+        pb::Route route;
+        route.set_name("take-off, waypoint, landing on the plain");
+        *route.add_segments() = takeoffOrLanding(56.95, 24.45, true);
+        *route.add_segments() = waypoint(56.95, 24.46, 50, true);
+        *route.add_segments() = takeoffOrLanding(56.95, 24.47, false);
+        const auto [response, error] = call<pb::ProcessRouteResponse>(client.processRoute(route));
+        QVERIFY2(error.isEmpty(), qPrintable(error));
+        const pb::ProcessedRoute &processed = response.processedroute();
+        for (int i = 0; i < processed.segments_size(); ++i)
+            QVERIFY2(processed.segments(i).status() == pb::RPS_PROCESSED, qPrintable(messagesOf(processed)));
+        HgtTileSource tiles(m_dir.path());
+        const double ground0 = tiles.sample({56.95, 24.45}).ground, ground2 = tiles.sample({56.95, 24.47}).ground;
+        // The take-off goes up to 50 m over its own ground (the next waypoint's height); the landing is on the ground.
+        const pb::Action *takeoff = nullptr, *landing = nullptr;
+        for (const auto &a : processed.segments(0).segmentactions())
+            takeoff = a.has_takeoff() ? &a : takeoff;
+        for (const auto &a : processed.segments(2).segmentactions())
+            landing = a.has_landing() ? &a : landing;
+        QVERIFY(takeoff && landing);
+        QCOMPARE(takeoff->takeoff().elevation(), ground0);
+        QCOMPARE(takeoff->takeoff().wgs84altitude(), ground0 + 50);
+        QCOMPARE(landing->landing().wgs84altitude(), ground2);
+        // What the vehicle flies: straight up, across, over the landing point at the height it left, down.
+        QString planError;
+        const auto plan = sim::SimRouteProcessor::flightPlan(processed, ground0, &planError);
+        QVERIFY2(planError.isEmpty(), qPrintable(planError));
+        QCOMPARE(plan.size(), size_t(3));
+        QCOMPARE(plan[0].altitudeAgl, 50.0);
+        QVERIFY(std::abs(plan[2].altitudeAgl - (ground2 + 50 - ground0)) < 1e-9);
+        QVERIFY(plan[2].landHere);
+
+        // A leg across that passes too close is still refused, after a take-off and before a landing.
+        pb::Route hill;
+        hill.set_name("take-off, then across the hill");
+        *hill.add_segments() = takeoffOrLanding(56.95, 24.45, true);
+        *hill.add_segments() = waypoint(56.95, 24.55, 50, true);  // 50 m over the take-off: ~70 m AMSL, the hill is 220 m
+        const auto [across, acrossError] = call<pb::ProcessRouteResponse>(client.processRoute(hill));
+        QVERIFY2(acrossError.isEmpty(), qPrintable(acrossError));
+        QCOMPARE(across.processedroute().segments(0).status(), pb::RPS_PROCESSED);
+        QCOMPARE(across.processedroute().segments(1).status(), pb::RPS_INVALID);
+        QVERIFY2(messagesOf(across.processedroute()).contains(QStringLiteral("The leg from waypoint 1 to waypoint 2 passes")),
+                 qPrintable(messagesOf(across.processedroute())));
+        pb::Route down;
+        down.set_name("across the hill to a landing");
+        *down.add_segments() = waypoint(56.95, 24.45, 50, true);
+        *down.add_segments() = takeoffOrLanding(56.95, 24.55, false);  // flown at ~70 m AMSL until over it
+        const auto [landed, landedError] = call<pb::ProcessRouteResponse>(client.processRoute(down));
+        QVERIFY2(landedError.isEmpty(), qPrintable(landedError));
+        QCOMPARE(landed.processedroute().segments(1).status(), pb::RPS_INVALID);
+        QVERIFY2(messagesOf(landed.processedroute()).contains(QStringLiteral("below the ground")), qPrintable(messagesOf(landed.processedroute())));
     }
 };
 

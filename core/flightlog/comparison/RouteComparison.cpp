@@ -1,6 +1,7 @@
 #include "RouteComparison.h"
 
 #include "FlightPath.h"
+#include "FlownLegs.h"
 #include "LocalTangentPlane.h"
 
 #include <QDateTime>
@@ -102,6 +103,9 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
     if (path.size() < 2)
         return {std::nullopt, QObject::tr("Route \"%1\" has fewer than two waypoints: there is nothing to compare.").arg(route.settings.name)};
 
+    // Each leg's heights as flown (FlownLegs.h): a take-off has climbed straight up before the leg,
+    // a landing is descended to straight down after it.
+    const std::vector<mission::LegShape> shapes = mission::flownLegs(path);
     const mission::LocalTangentPlane plane(path.front().position);
     std::vector<Planned> planned;
     for (const mission::PathPoint &p : path) {
@@ -165,7 +169,8 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
     // kRejoinDistance of it (a vehicle sent elsewhere mid-leg stays on the leg it left, however close a
     // later leg happens to pass).
     constexpr double kRejoinDistance = 10.0;
-    auto assign = [&](size_t fromTrack, size_t toTrack, size_t firstLeg, size_t lastLeg) { // legs by 'to' waypoint
+    // fromStart: the window begins where the route's first waypoint was reached.
+    auto assign = [&](size_t fromTrack, size_t toTrack, size_t firstLeg, size_t lastLeg, bool fromStart = false) { // legs by 'to' waypoint
         fromTrack = std::max(fromTrack, nextUnassigned);
         nextUnassigned = toTrack + 1;
         size_t current = firstLeg;
@@ -178,9 +183,14 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
             // Closing in on the waypoint just reached (inside twice its acceptance radius, not yet past it,
             // not yet moving away) is still flying the leg into it.
             const size_t turnAt = firstLeg - 1;
-            const double toTurn = turnAt >= 1 ? dist(track[k].p, planned[turnAt].p) : 0;
+            const double toTurn = dist(track[k].p, planned[turnAt].p);
             closingIn = closingIn && toTurn <= lastToTurn + 0.01;
             lastToTurn = toTurn;
+            // Closing in on the route's first waypoint, not yet 1 m along leg 1: the flight from
+            // wherever the vehicle started, which is no leg of the route (its acceptance radius is
+            // reached before the vehicle is there).
+            if (turnAt == 0 && closingIn && current == firstLeg && fromStart && bestAlong * dist(planned[0].p, planned[1].p) < 1.0)
+                continue;
             if (closingIn && current == firstLeg && turnAt >= 1 && toTurn <= 2 * planned[turnAt].radius) {
                 double along = 0;
                 const double d = toSegment(track[k].p, planned[turnAt - 1].p, planned[turnAt].p, &along);
@@ -204,7 +214,7 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
             ++l.samples;
             l.maxCrossTrack = std::max(l.maxCrossTrack, bestD);
             crossSum[best - 1] += bestD;
-            const Planned &a = planned[best - 1], &b = planned[best];
+            const Planned &a = planned[shapes[best - 1].departHeight], &b = planned[shapes[best - 1].arriveHeight];
             const double plannedAltitude = a.altitude + bestAlong * (b.altitude - a.altitude);
             const double flown = b.amsl ? track[k].amsl : track[k].agl;
             double dev = std::nan("");
@@ -222,7 +232,7 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
         if (!reachedAt[w])
             continue;
         if (previous) // from the last reached waypoint to this one: the legs between them
-            assign(*reachedAt[*previous], *reachedAt[w], *previous + 1, w);
+            assign(*reachedAt[*previous], *reachedAt[w], *previous + 1, w, *previous == 0);
         else if (w > 0) // the first waypoints were missed: from the start of the track
             assign(0, *reachedAt[w], 1, w);
         previous = w;
@@ -230,7 +240,7 @@ ComparisonResult compareRoute(const FlightLog &log, int vehicle, const mission::
     if (!previous)
         assign(0, track.size() - 1, 1, n - 1);
     else if (*previous + 1 < n) // sent elsewhere before the end: the rest of the track from the leg it left on
-        assign(*reachedAt[*previous], track.size() - 1, *previous + 1, n - 1);
+        assign(*reachedAt[*previous], track.size() - 1, *previous + 1, n - 1, *previous == 0);
 
     double crossTotal = 0, altitudeTotal = 0;
     int crossCount = 0, altitudeCount = 0;

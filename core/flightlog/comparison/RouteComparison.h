@@ -17,7 +17,10 @@ namespace sortie::flightlog {
 // reached one, that the track passes within its acceptance radius (kDefaultAcceptance when the
 // route leaves it to the vehicle), else it is missed. Each track point between the first and the
 // last reached waypoint (to the end of the track when the last one was missed) belongs to a leg:
-// the nearest of the legs between the two reached waypoints around it. Per leg: the largest and
+// the nearest of the legs between the two reached waypoints around it; but the approach to the first
+// waypoint, inside its acceptance radius until the vehicle is past it, is the flight from where the
+// vehicle started and belongs to no leg. Heights are planned as the legs are flown (FlownLegs.h:
+// a take-off climbs straight up first, a landing descends straight down after). Per leg: the largest and
 // mean cross-track distance (to the leg's segment) and altitude deviation (against the altitude
 // planned along the leg, in the route's reference: AGL or AMSL).
 struct LegDeviation

@@ -3,6 +3,7 @@
 #include "AlgorithmCatalog.h"
 
 #include "FlightPath.h"
+#include "FlownLegs.h"
 #include "Geodesy.h"
 #include "RouteTiming.h"
 #include "ScanPlanCache.h"
@@ -143,10 +144,6 @@ RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
                 if (const Waypoint *w = asWaypoint(route.segments[size_t(p.segment)]))
                     cameraActions.arrive(w->actions);
         };
-        if (p.role == WaypointRole::Takeoff && p.altitudeType == AltitudeType::Agl)
-            st.climbMeters += std::max(0.0, p.altitude);
-        if (p.role == WaypointRole::Land && p.altitudeType == AltitudeType::Agl)
-            st.descentMeters += std::max(0.0, p.altitude);
         if (i == 0) {
             arriveAtWaypoint();
             continue;
@@ -155,12 +152,24 @@ RouteStatistics computeStatistics(const Route &route, ScanPlanCache *cache)
         // The timeline measured the leg already (leg i runs from point i-1 to point i).
         const double d = timeline ? timeline->legs()[i - 1].distance : geodesicDistance(q.position, p.position);
         st.lengthMeters += d;
-        if (p.altitudeType == q.altitudeType) {
-            const double dh = p.altitude - q.altitude;
-            (dh > 0 ? st.climbMeters : st.descentMeters) += std::abs(dh);
-        }
         cameraActions.fly(d, [&] { return legSeconds(i - 1); });
         arriveAtWaypoint();
+    }
+    // Climb and descent as the legs are flown: straight up at a take-off, across, straight down at
+    // a landing (FlownLegs.h); heights in different frames are not compared.
+    const auto aboveGround = [](const PathPoint &p) { return p.altitudeType == AltitudeType::Agl ? std::max(0.0, p.altitude) : 0.0; };
+    for (const LegShape &leg : flownLegs(path)) {
+        const PathPoint &depart = path[leg.departHeight], &arrive = path[leg.arriveHeight];
+        if (leg.climbAtStart)
+            st.climbMeters += aboveGround(depart);
+        if (leg.moves() && arrive.altitudeType == depart.altitudeType) {
+            const double dh = arrive.altitude - depart.altitude;
+            (dh > 0 ? st.climbMeters : st.descentMeters) += std::abs(dh);
+        }
+        if (leg.climbAtEnd)
+            st.climbMeters += aboveGround(path[leg.to]);
+        if (leg.descentAtEnd)
+            st.descentMeters += aboveGround(arrive);
     }
     st.photoCount += cameraActions.photos();
     const RouteSettings &rs = route.settings;

@@ -1,5 +1,6 @@
 #include "RouteTiming.h"
 
+#include "FlownLegs.h"
 #include "Geodesy.h"
 
 #include <algorithm>
@@ -282,43 +283,45 @@ Result<RouteTimeline> timePath(const Route &route, const std::vector<PathPoint> 
     };
     legs.reserve(path.size() + 1);
     LegBuilder build(parameters);
-    // A lone point is one leg that goes nowhere: its take-off, holds and landing.
-    const size_t legCount = std::max<size_t>(1, last);
-    for (size_t n = 1; n <= legCount; ++n) {
-        const size_t i = std::min(n, last), from = n - 1;
+    // The one rule for take-off climbs and landing descents (FlownLegs.h). Leg n runs from point
+    // n-1 to point n; a lone point is one leg that goes nowhere: its take-off, holds and landing.
+    for (const LegShape &shape : flownLegs(path)) {
+        const size_t i = shape.to, from = shape.from;
         const PathPoint &q = path[from], &p = path[i];
+        const PathPoint &depart = path[shape.departHeight], &arrive = path[shape.arriveHeight];
         TimedLeg leg;
-        leg.leg = int(n);
+        leg.leg = shape.leg;
         leg.from = q.position;
         leg.to = p.position;
-        leg.fromAltitude = q.altitude;
-        leg.toAltitude = p.altitude;
-        leg.altitudeType = p.altitudeType;
+        leg.fromAltitude = depart.altitude;
+        leg.toAltitude = arrive.altitude;
+        leg.altitudeType = arrive.altitudeType;
         leg.fromSegment = q.segment;
         leg.toSegment = p.segment;
-        if (i != from) {
+        if (shape.moves()) {
             leg.distance = geodesicDistance(q.position, p.position);
-            leg.heightChange = p.altitudeType == q.altitudeType ? p.altitude - q.altitude : 0.0;
-            if (p.altitudeType != q.altitudeType)
-                leg.fromAltitude = p.altitude;  // frames differ: the height change is not known
+            leg.heightChange = arrive.altitudeType == depart.altitudeType ? arrive.altitude - depart.altitude : 0.0;
+            if (arrive.altitudeType != depart.altitudeType)
+                leg.fromAltitude = arrive.altitude;  // frames differ: the height change is not known
         }
         if (auto error = build.move(leg, p.speed, stopsAt(from), stopsAt(i)))
             return *error;
         // Take-off counts in the leg that leaves its point, landing in the one that reaches it.
-        if (q.role == WaypointRole::Takeoff)
-            build.takeoff(leg, groundHeight(q));
+        if (shape.climbAtStart)
+            build.takeoff(leg, groundHeight(depart));
         if (from == 0)
             leg.departHoldSeconds = holds[0];
-        if (i != from) {
+        if (shape.moves()) {
             leg.arriveHoldSeconds = holds[i];
-            if (p.role == WaypointRole::Takeoff && i == last && !goesHome)
+            if (shape.climbAtEnd && !goesHome)
                 build.takeoff(leg, groundHeight(p));  // a take-off nothing leaves from
         }
-        if (p.role == WaypointRole::Land)
-            build.landing(leg, groundHeight(p));
+        if (shape.descentAtEnd)
+            build.landing(leg, groundHeight(arrive));
         build.close(leg);
         legs.push_back(leg);
     }
+    const size_t legCount = legs.size();
     if (goesHome) {
         // Straight home at the last leg's speed, then down from the last height.
         const PathPoint &q = path[last];

@@ -52,7 +52,7 @@ struct PhaseSeconds
 // One leg on the timeline: the flight from one point of the flown path to the next, with what
 // happens at its ends. Leg n (from 1) runs from path point n-1 to point n, as `sortie-plan
 // profile` numbers them; the flight home is the leg after the last. Within a leg, in order: the
-// take-off climb at its start point, the holds there (first leg only), the move, the holds at its
+// take-off climb straight up at its start point, the holds there (first leg only), the move, the holds at its
 // end point, the landing descent there.
 struct TimedLeg
 {
@@ -60,14 +60,16 @@ struct TimedLeg
     bool returnHome = false;
     bool landsAtEnd = false;  // its end point is a landing (a Land waypoint, or home)
     GeoPoint from, to;
-    double fromAltitude = 0.0, toAltitude = 0.0;  // in toAltitudeType's frame when they match
+    // The heights the move leaves and arrives at (FlownLegs.h: over a take-off on the ground, the
+    // next point's; over a landing on the ground, the one it left at); in altitudeType's frame when they match.
+    double fromAltitude = 0.0, toAltitude = 0.0;
     AltitudeType altitudeType = AltitudeType::Agl;
     int fromSegment = -1, toSegment = -1;          // route rows, -1 for home
 
     double start = 0.0;       // seconds from the start of the route
     double duration = 0.0;
     double distance = 0.0;    // horizontal metres
-    double heightChange = 0.0;  // metres between the two points (+ up), take-off and landing apart
+    double heightChange = 0.0;  // metres from fromAltitude to toAltitude (+ up), take-off and landing apart
     double takeoffClimb = 0.0;  // metres climbed from the ground at the start point
     double landingDescent = 0.0; // metres descended to the ground at the end point
     double airSpeed = 0.0;    // m/s while moving

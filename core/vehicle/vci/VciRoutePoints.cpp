@@ -25,7 +25,7 @@ MissionError missionError(const QString &message)
 // A waypoint as it is.
 Result<std::vector<VciRoutePoint>> waypointPoints(const Waypoint &w)
 {
-    VciRoutePoint p{w.position, w.altitude, w.altitudeType, w.speed, w.acceptanceRadius, {}};
+    VciRoutePoint p{w.position, w.altitude, w.altitudeType, w.speed, w.acceptanceRadius, {}, w.role};
     for (const WaypointAction &a : w.actions) {
         auto action = vciAction(a);
         if (!action)
@@ -82,8 +82,12 @@ Result<std::vector<VciRoutePoint>> algorithmPoints(const AlgorithmSegment &segme
                          p.speed > 0 ? p.speed : route.settings.initialSpeed, 0, cameraActions(p)};
         if (p.userActions)
             point.actions.insert(point.actions.end(), own.begin(), own.end());
-        if (p.kind == PlannedPoint::Kind::Landing)
+        if (p.kind == PlannedPoint::Kind::Landing) {
             point.actions.push_back({QStringLiteral("land"), {}});
+            point.role = WaypointRole::Land;
+        }
+        if (p.kind == PlannedPoint::Kind::Takeoff)
+            point.role = WaypointRole::Takeoff;
         points.push_back(std::move(point));
     }
     return points;

@@ -3,6 +3,7 @@
 #include "GeoPoint.h"
 #include "MissionError.h"
 #include "MissionEnums.h"
+#include "Waypoint.h"
 #include "VehicleTypes.h"
 
 #include <optional>
@@ -24,6 +25,7 @@ struct VciRoutePoint
     double speed = 0.0;
     double acceptanceRadius = 0.0;
     std::vector<MissionAction> actions;
+    mission::WaypointRole role = mission::WaypointRole::Pass;  // a take-off climbs, a landing descends, straight (FlownLegs.h)
 };
 
 // The points a VCI vehicle flies for segment `row` of `route`, expanded as sortie-sim's ProcessRoute
