@@ -3,6 +3,9 @@
 #include "Zone.h"
 
 #include <QString>
+#include <QStringList>
+
+#include <google/protobuf/repeated_ptr_field.h>
 
 #include <optional>
 #include <vector>

@@ -57,7 +57,7 @@ ServerZones::ServerZones(hci::HciClient *client, QObject *parent)
 
 ServerZones::~ServerZones()
 {
-    delete m_events;  // ends it on the server too
+    delete m_events.data();  // ends it on the server too (null when the session went first)
 }
 
 void ServerZones::setViewBox(const mission::GeoBox &box)

@@ -1,6 +1,8 @@
 #pragma once
 
 #include "GeoPoint.h"
+#include "HciReply.h"
+#include "HciSubscription.h"
 #include "ServerZoneReply.h"
 #include "Zone.h"
 
@@ -19,8 +21,6 @@ class NoFlightZone;
 
 namespace sortie::hci {
 class HciClient;
-class HciReply;
-class HciSubscription;
 } // namespace sortie::hci
 
 namespace sortie::airspace {
@@ -77,7 +77,7 @@ private:
     const com::ugcs::ucs::proto::NoFlightZone *sent(const std::optional<int> &id) const;
 
     hci::HciClient *m_client;
-    hci::HciSubscription *m_events = nullptr;
+    QPointer<hci::HciSubscription> m_events;  // the session owns it
     QPointer<hci::HciReply> m_pending;
     bool m_again = false;
     mission::GeoBox m_box;
