@@ -266,6 +266,35 @@ private slots:
         QCOMPARE(m_world->store().find(QStringLiteral("NoFlightZone"), id)->noflightzone().name(), std::string("Survey hold, wider"));
     }
 
+    // A zone the server holds but Sortie cannot check is left out and named; the rest stay.
+    void anUnusableZoneIsLeftOutNamed()
+    {
+        Operator admin(port(), QStringLiteral("admin"), QStringLiteral("admin"));
+        pb::DomainObjectWrapper w;
+        auto *bad = w.mutable_noflightzone();
+        bad->set_name("Two corners");
+        bad->set_type(pb::NT_CUSTOM);
+        for (double lat : {56.980, 56.981}) {
+            auto *p = bad->mutable_prism()->add_points();
+            p->set_latitude(lat * kRad);
+            p->set_longitude(24.07 * kRad);
+        }
+        QSignalSpy changed(&admin.zones, &ServerZones::zonesChanged);
+        const int id = hci::objectId(m_world->store().save(QStringLiteral("NoFlightZone"), w, 0).object->noflightzone());
+        QVERIFY(changed.wait(kWait));  // the store's change went out as EET_NFZ_UPDATED
+        QCOMPARE(admin.zones.zones().size(), size_t(3));
+        QCOMPARE(admin.zones.problems(),
+                 QStringList{QStringLiteral("NoFlightZone %1 ('Two corners') was left out: its prism has 2 corner(s); a polygon needs 3").arg(id)});
+
+        // Without a connection nothing is sent, and the caller is told.
+        admin.session.close();
+        QTRY_VERIFY(!admin.session.isReady());
+        const Outcome offline = await(admin.zones.save(surveyHold()));
+        QVERIFY(!offline.ok);
+        QCOMPARE(offline.error, QStringLiteral("Zone 'Survey hold' was not saved: not connected to the server."));
+        QCOMPARE(admin.zones.zones().size(), size_t(3));  // still the airspace while the line is down
+    }
+
     void aerodromeZonesAreTheServers()
     {
         Operator admin(port(), QStringLiteral("admin"), QStringLiteral("admin"));

@@ -124,13 +124,11 @@ void ServerZones::onAnswer(hci::HciReply *reply)
         m_problems = problems;
         m_error.clear();
         emit zonesChanged();
-        emit stateChanged();
         emit answered();
     }
+    emit stateChanged();  // not asking (or asking again, just below), perhaps a new error
     if (m_again)
         refresh();
-    else
-        emit stateChanged();
 }
 
 void ServerZones::setError(const QString &error)
