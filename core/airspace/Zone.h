@@ -73,6 +73,10 @@ struct Zone
     ZoneSource source = ZoneSource::File;
     QString origin;  // the file (and feature) or server object it came from
     bool active = true;
+    // A server zone's object (NoFlightZone id and version): what an edit or a delete addresses.
+    // None for zones from files and fences, and for a custom zone not saved yet.
+    std::optional<int> serverId;
+    int serverVersion = 0;
     bool operator==(const Zone &) const = default;
 };
 

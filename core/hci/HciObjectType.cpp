@@ -9,7 +9,7 @@ namespace {
 
 using google::protobuf::FieldDescriptor;
 
-constexpr std::array kNames = {"Vehicle", "Route", "Mission", "VehicleProfile", "User", "TraverseAlgorithm", "CommandDefinition", "RoutePass"};
+constexpr std::array kNames = {"Vehicle", "Route", "Mission", "VehicleProfile", "User", "TraverseAlgorithm", "CommandDefinition", "RoutePass", "NoFlightZone"};
 
 const FieldDescriptor *wrapperFieldFor(const google::protobuf::Descriptor *type)
 {

@@ -10,7 +10,7 @@ namespace sortie::hci {
 
 // The domain object types the client works with. On the wire an object type is the protobuf message
 // name ("Vehicle", "Route"...), and objects travel in a DomainObjectWrapper whose field of that type is set.
-enum class HciObjectType { Vehicle, Route, Mission, VehicleProfile, User, TraverseAlgorithm, CommandDefinition, RoutePass };
+enum class HciObjectType { Vehicle, Route, Mission, VehicleProfile, User, TraverseAlgorithm, CommandDefinition, RoutePass, NoFlightZone };
 
 QString objectTypeName(HciObjectType type);
 std::optional<HciObjectType> objectTypeFromName(const QString &name);

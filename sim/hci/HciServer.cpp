@@ -4,6 +4,7 @@
 #include "SimEventService.h"
 #include "SimLockService.h"
 #include "SimLog.h"
+#include "SimNfzService.h"
 #include "SimObjectService.h"
 #include "SimSessionService.h"
 #include "SimExportService.h"
@@ -37,6 +38,7 @@ HciServer::HciServer(SimWorld &world, QObject *parent)
     m_exportService->install(m_dispatcher);
     SimTerrainService::install(m_dispatcher, m_world);
     SimTrafficService::install(m_dispatcher, m_world.traffic());
+    SimNfzService::install(m_dispatcher, m_world);
 
     connect(&m_sessions, &SimSessionTable::sessionEnded, this, [this](int clientId) { m_world.locks().releaseAll(clientId); });
     connect(&m_server, &QTcpServer::newConnection, this, &HciServer::onNewConnection);

@@ -31,7 +31,7 @@ void SimEventService::subscribe(SimCall &call)
         return;
     }
     if (!wrapper.has_telemetrysubscription() && !wrapper.has_objectmodificationsubscription() && !wrapper.has_locksubscription()
-        && !wrapper.has_commandsubscription()) {
+        && !wrapper.has_commandsubscription() && !wrapper.has_environmentsubscription()) {
         call.respond.error(QStringLiteral("The Sortie simulator does not implement %1").arg(QString::fromStdString(set[0]->name())));
         return;
     }

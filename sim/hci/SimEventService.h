@@ -7,8 +7,8 @@ namespace sortie::sim {
 class HciRequestDispatcher;
 struct SimCall;
 
-// SubscribeEvent and UnsubscribeEvent. Supports telemetry, object modification, lock and command
-// subscriptions; any other kind is refused with an Error that names it.
+// SubscribeEvent and UnsubscribeEvent. Supports telemetry, object modification, lock, command and
+// environment (no-fly zone changes) subscriptions; any other kind is refused with an Error that names it.
 class SimEventService
 {
 public:

@@ -5,6 +5,7 @@
 #include "SimSessionTable.h"
 #include "SimVehicle.h"
 #include "SimWorld.h"
+#include "SimZones.h"
 
 namespace sortie::sim {
 namespace {
@@ -76,6 +77,25 @@ void SimNotifier::onObjectChanged(int modificationType, const QString &type, int
                     event->mutable_object()->mutable_user()->clear_password();
             }
         });
+    if (type == SimZones::kType)
+        onZonesChanged(modificationType == pb::MT_DELETE ? nullptr : &object.noflightzone());
+}
+
+void SimNotifier::onZonesChanged(const pb::NoFlightZone *zone)
+{
+    // The zone's box when it has one; a deleted zone's is gone, so the event covers everything.
+    const auto box = zone ? SimZones::boxOf(*zone) : std::nullopt;
+    publish([](const pb::EventSubscriptionWrapper &s) { return s.has_environmentsubscription(); },
+            [&box](pb::EventWrapper *e) {
+                auto *event = e->mutable_environmentevent();
+                event->set_environmenteventtype(pb::EET_NFZ_UPDATED);
+                if (box) {
+                    event->set_minlatitude(box->minLatitude);
+                    event->set_minlongitude(box->minLongitude);
+                    event->set_maxlatitude(box->maxLatitude);
+                    event->set_maxlongitude(box->maxLongitude);
+                }
+            });
 }
 
 void SimNotifier::onLockChanged(const QString &type, int id, bool held)

@@ -10,6 +10,7 @@ namespace com::ugcs::ucs::proto {
 class DomainObjectWrapper;
 class EventSubscriptionWrapper;
 class EventWrapper;
+class NoFlightZone;
 class TelemetryEvent;
 } // namespace com::ugcs::ucs::proto
 
@@ -19,7 +20,8 @@ namespace pb = com::ugcs::ucs::proto;
 struct SimSession;
 
 // Publishes events to the sessions that subscribed to them, as Notification frames (instance id -1)
-// carrying each subscription's id: telemetry, object modifications, locks and vehicle commands.
+// carrying each subscription's id: telemetry, object modifications, locks, vehicle commands and
+// no-fly zone changes (EnvironmentEvent EET_NFZ_UPDATED over the zone's box).
 // Detached sessions miss what happens while they are away, as with UgCS.
 class SimNotifier : public QObject
 {
@@ -38,6 +40,8 @@ private:
     void onTelemetry(const pb::TelemetryEvent &event);
     void onObjectChanged(int modificationType, const QString &type, int id, const pb::DomainObjectWrapper &object);
     void onLockChanged(const QString &type, int id, bool held);
+    // EET_NFZ_UPDATED to environment subscribers; `zone` null after a delete.
+    void onZonesChanged(const pb::NoFlightZone *zone);
     void onCommandsChanged(int vehicleId);
 
     SimWorld &m_world;

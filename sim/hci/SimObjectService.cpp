@@ -5,6 +5,7 @@
 #include "Messages.pb.h"
 #include "SimSessionTable.h"
 #include "SimWorld.h"
+#include "SimZones.h"
 
 namespace sortie::sim {
 namespace {
@@ -135,6 +136,11 @@ void SimObjectService::createOrUpdate(SimCall &call)
             call.respond.error(why);
             return;
         }
+    if (type == SimZones::kType)
+        if (const QString why = SimZones::writeRefusal(m_s.world.store(), id, &r.object().noflightzone()); !why.isEmpty()) {
+            call.respond.error(why);
+            return;
+        }
     const auto saved = m_s.world.store().save(type, r.object(), SimWorld::now());
     if (!saved.object) {
         call.respond.error(saved.error);
@@ -180,6 +186,11 @@ void SimObjectService::updateFields(SimCall &call)
             return;
         }
     }
+    if (type == SimZones::kType)
+        if (const QString why = SimZones::writeRefusal(m_s.world.store(), id, &updated.noflightzone()); !why.isEmpty()) {
+            call.respond.error(why);
+            return;
+        }
     const auto saved = m_s.world.store().save(type, updated, SimWorld::now());
     if (!saved.object) {
         call.respond.error(saved.error);
@@ -209,6 +220,11 @@ void SimObjectService::remove(SimCall &call)
         call.respond.error(why);
         return;
     }
+    if (type == SimZones::kType)
+        if (const QString why = SimZones::writeRefusal(m_s.world.store(), r.objectid(), nullptr); !why.isEmpty()) {
+            call.respond.error(why);
+            return;
+        }
     int version = 0;
     if (!m_s.world.store().remove(type, r.objectid(), &version)) {
         call.respond.error(QStringLiteral("%1 %2 does not exist").arg(type).arg(r.objectid()));

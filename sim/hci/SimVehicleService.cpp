@@ -6,6 +6,7 @@
 #include "SimRouteProcessor.h"
 #include "SimVehicleProfiles.h"
 #include "SimRouteTerrain.h"
+#include "SimRouteZones.h"
 #include "SimSessionTable.h"
 #include "SimVehicle.h"
 #include "SimWorld.h"
@@ -154,6 +155,7 @@ void SimVehicleService::processRoute(SimCall &call)
     const auto *storedProfile = m_s.world.store().find(QStringLiteral("VehicleProfile"), route.vehicleprofile().id());
     SimRouteTerrain::apply(*response.mutable_processedroute(), m_s.world.terrain(),
                            SimRouteTerrain::safeDistance(route.vehicleprofile(), storedProfile ? &storedProfile->vehicleprofile() : nullptr));
+    SimRouteZones::apply(*response.mutable_processedroute(), route, m_s.world.store(), m_s.world.terrain());
     response.set_hash(SimRouteProcessor::hash(route));
     call.respond.reply(response);
 }

@@ -2,6 +2,7 @@
 
 #include "Messages.pb.h"
 #include "SimDemoContent.h"
+#include "SimZones.h"
 #include "SimDjiProfiles.h"
 #include "SimLog.h"
 #include "SimStoreFile.h"
@@ -70,6 +71,7 @@ bool SimWorld::start(QString *error)
     const QList<int> ids = SimDemoContent::seed(m_store, m_users, m_config.vehicles, m_config.groundElevation,
                                                 m_config.demoMission, now());
     SimDjiProfiles::seed(m_store, now());
+    SimZones::seed(m_store, m_config.demoMission, now());
     const auto homes = SimDemoContent::vehicleHomes(m_config.vehicles);
     for (int i = 0; i < ids.size(); ++i) {
         const auto *object = m_store.find(QStringLiteral("Vehicle"), ids[i]);

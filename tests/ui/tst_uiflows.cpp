@@ -248,6 +248,30 @@ private slots:
         QTRY_VERIFY(text("missionMessage").contains(QStringLiteral("Saved")));
     }
 
+    // The route's server zone checks: shown as the server sent them (the demo route checks
+    // aerodrome zones only), a click is one undo step, and the save carries it to the server.
+    void serverZoneChecksInTheRoutePanel()
+    {
+        openDemoRoute();
+        const int routeId = m_app->missions().routeId();
+        QTRY_VERIFY(find<QObject>("checkAerodromeNfz")->property("checked").toBool());
+        QVERIFY(!find<QObject>("checkCustomNfz")->property("checked").toBool());
+        click("checkCustomNfz");
+        QTRY_VERIFY(m_app->missions().document()->model()->checkCustomNfz());
+        QVERIFY(find<QObject>("checkCustomNfz")->property("checked").toBool());
+        QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
+        QTRY_VERIFY(!find<QObject>("checkCustomNfz")->property("checked").toBool());
+        click("checkCustomNfz");
+        QTRY_VERIFY(m_app->missions().document()->model()->checkCustomNfz());
+        missionMap()->forceActiveFocus();
+        QSignalSpy saved(&m_app->missions(), &client::MissionController::saved);
+        QTest::keyClick(m_window, Qt::Key_S, Qt::ControlModifier);
+        QVERIFY(saved.wait(10000));
+        const pb::Route copy = serverCopy(routeId);
+        QVERIFY(copy.checkcustomnfz());
+        QVERIFY(copy.checkaerodromenfz());
+    }
+
     void areaScanOnTheMap()
     {
         openDemoRoute();

@@ -195,6 +195,18 @@ Pane {
             Label { text: panel.doc.analyzer.photoCount }
         }
 
+        RowLayout {
+            // What the server's route processing refuses the route for (HCI checkAerodromeNfz / checkCustomNfz).
+            Layout.fillWidth: true
+            Label { text: qsTr("Server checks"); opacity: 0.7 }
+            CheckBox { objectName: "checkAerodromeNfz"; text: qsTr("Aerodrome zones"); checked: panel.doc.model.checkAerodromeNfz
+                       onToggled: panel.doc.editor.setCheckAerodromeNfz(checked)
+                       ToolTip.visible: hovered; ToolTip.text: qsTr("The server refuses the route where it crosses an aerodrome's no-fly zone") }
+            CheckBox { objectName: "checkCustomNfz"; text: qsTr("Custom zones"); checked: panel.doc.model.checkCustomNfz
+                       onToggled: panel.doc.editor.setCheckCustomNfz(checked)
+                       ToolTip.visible: hovered; ToolTip.text: qsTr("The server refuses the route where it crosses a custom no-fly zone") }
+        }
+
         ColumnLayout {
             // When, after the start, the route meets another vehicle's (the issue list says where).
             objectName: "conflictTimeline"

@@ -114,6 +114,12 @@ void RouteDiff::compareSettings(const RouteSettings &a, const RouteSettings &b)
     }
     if (a.endAction != b.endAction)
         add(Kind::Settings, -1, tr("end action %1 → %2").arg(endActionName(a.endAction), endActionName(b.endAction)));
+    auto flag = [this](bool x, bool y, const char *what) {
+        if (x != y)
+            add(Kind::Settings, -1, tr("%1 %2").arg(tr(what), y ? tr("on") : tr("off")));
+    };
+    flag(a.checkAerodromeNfz, b.checkAerodromeNfz, "aerodrome zone check");
+    flag(a.checkCustomNfz, b.checkCustomNfz, "custom zone check");
 }
 
 void RouteDiff::compareSegments(const std::vector<Segment> &a, const std::vector<Segment> &b)

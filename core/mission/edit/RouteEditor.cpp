@@ -14,6 +14,7 @@
 #include "RouteSettingNames.h"
 #include "RouteModel.h"
 #include "SegmentParameters.h"
+#include "SetNfzChecksCommand.h"
 #include "SetRouteSettingsCommand.h"
 
 #include <QUndoStack>
@@ -480,6 +481,18 @@ bool RouteEditor::setRouteProperty(const QString &name, const QVariant &value)
     if (!(s == m_model->settings()))
         setSettings(s, tr("Set route %1").arg(name));
     return true;
+}
+
+void RouteEditor::setCheckAerodromeNfz(bool check)
+{
+    if (check != m_model->settings().checkAerodromeNfz)
+        m_stack->push(new SetNfzChecksCommand(m_model, check, m_model->settings().checkCustomNfz));
+}
+
+void RouteEditor::setCheckCustomNfz(bool check)
+{
+    if (check != m_model->settings().checkCustomNfz)
+        m_stack->push(new SetNfzChecksCommand(m_model, m_model->settings().checkAerodromeNfz, check));
 }
 
 void RouteEditor::setSettings(const RouteSettings &settings, const QString &text)

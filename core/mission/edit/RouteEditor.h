@@ -109,6 +109,10 @@ public:
     const AlgorithmCatalog &catalog() const;
 
     Q_INVOKABLE bool setRouteProperty(const QString &name, const QVariant &value);
+    // Whether the server's route processing checks the route against aerodrome / custom no-fly
+    // zones (one undo step each; setting the value it has does nothing).
+    Q_INVOKABLE void setCheckAerodromeNfz(bool check);
+    Q_INVOKABLE void setCheckCustomNfz(bool check);
     // The rows a view's selection covers, sorted.
     Q_INVOKABLE QList<int> rowsOf(const QItemSelectionModel *selection) const;
 

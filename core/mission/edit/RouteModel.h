@@ -22,6 +22,9 @@ class RouteModel : public QAbstractListModel
     Q_PROPERTY(double maxAltitude READ maxAltitude NOTIFY settingsChanged)
     Q_PROPERTY(double initialSpeed READ initialSpeed NOTIFY settingsChanged)
     Q_PROPERTY(double maxSpeed READ maxSpeed NOTIFY settingsChanged)
+    // Does the server's processing refuse a route crossing an aerodrome's / a custom no-fly zone?
+    Q_PROPERTY(bool checkAerodromeNfz READ checkAerodromeNfz NOTIFY settingsChanged)
+    Q_PROPERTY(bool checkCustomNfz READ checkCustomNfz NOTIFY settingsChanged)
 
 public:
     enum Roles {
@@ -61,6 +64,8 @@ public:
     double maxAltitude() const { return m_route.settings.maxAltitude; }
     double initialSpeed() const { return m_route.settings.initialSpeed; }
     double maxSpeed() const { return m_route.settings.maxSpeed; }
+    bool checkAerodromeNfz() const { return m_route.settings.checkAerodromeNfz; }
+    bool checkCustomNfz() const { return m_route.settings.checkCustomNfz; }
 
     // Primitives for the undo commands. Rows are sorted ascending and valid.
     void insertSegments(int row, std::vector<Segment> segments);

@@ -288,7 +288,8 @@ Json routeJson(const Route &r)
                                {"safeTerrainDistance", s.profile.safeTerrainDistance}, {"cameras", profileCamerasJson(s.profile.cameras)}}},
            {"safeAltitude", s.safeAltitude}, {"maxAltitude", s.maxAltitude}, {"initialSpeed", s.initialSpeed},
            {"maxSpeed", s.maxSpeed}, {"cornerRadius", s.cornerRadius}, {"takeoffHeight", s.takeoffHeight},
-           {"failsafes", std::move(failsafes)}, {"endAction", s.endAction == EndAction::ReturnHome ? "returnHome" : "none"}};
+           {"failsafes", std::move(failsafes)}, {"endAction", s.endAction == EndAction::ReturnHome ? "returnHome" : "none"},
+           {"checkAerodromeNfz", s.checkAerodromeNfz}, {"checkCustomNfz", s.checkCustomNfz}};
     if (s.home)
         j["home"] = {{"latitude", s.home->position.latitude}, {"longitude", s.home->position.longitude}, {"altitudeAmsl", s.home->altitudeAmsl}};
     if (!r.fence.empty())  // a .plan's geofence and rally points, in the .plan's own form
@@ -329,6 +330,9 @@ Route readRoute(const JsonCursor &c)
     if (end != QLatin1String("none") && end != QLatin1String("returnHome"))
         c.at("endAction").fail(QStringLiteral("expected \"none\" or \"returnHome\""));
     s.endAction = end == QLatin1String("returnHome") ? EndAction::ReturnHome : EndAction::None;
+    // Files written before the flags existed: off, as the server reads an absent flag.
+    s.checkAerodromeNfz = c.booleanOr("checkAerodromeNfz", false);
+    s.checkCustomNfz = c.booleanOr("checkCustomNfz", false);
     if (const auto h = c.find("home"))
         s.home = HomePosition{{h->number("latitude"), h->number("longitude")}, h->number("altitudeAmsl")};
     if (const auto f = c.find("fence")) {

@@ -21,6 +21,8 @@ RouteSettings settingsFromHci(const pb::Route &r)
     if (r.has_maxspeed()) s.maxSpeed = r.maxspeed();
     s.cornerRadius = r.cornerradius();
     s.takeoffHeight = r.takeoffheight();
+    s.checkAerodromeNfz = r.checkaerodromenfz();
+    s.checkCustomNfz = r.checkcustomnfz();
     for (const auto &f : r.failsafes())
         s.failsafes.push_back({FailsafeReason(int(f.reason())), FailsafeAction(int(f.action()))});
     const pb::VehicleProfile &vp = r.vehicleprofile();
@@ -78,6 +80,9 @@ void settingsToHci(const RouteSettings &s, const RouteSettings *before, pb::Rout
     if (!before || differs(before->maxSpeed, s.maxSpeed)) r.set_maxspeed(s.maxSpeed);
     if ((!before && s.cornerRadius != 0) || (before && differs(before->cornerRadius, s.cornerRadius))) r.set_cornerradius(s.cornerRadius);
     if ((!before && s.takeoffHeight != 0) || (before && differs(before->takeoffHeight, s.takeoffHeight))) r.set_takeoffheight(s.takeoffHeight);
+    // A new route says both flags; a server's keeps them as it sent them unless they changed.
+    if (!before || before->checkAerodromeNfz != s.checkAerodromeNfz) r.set_checkaerodromenfz(s.checkAerodromeNfz);
+    if (!before || before->checkCustomNfz != s.checkCustomNfz) r.set_checkcustomnfz(s.checkCustomNfz);
     if (!before || before->failsafes != s.failsafes) {
         auto *list = r.mutable_failsafes();
         while (list->size() > int(s.failsafes.size()))

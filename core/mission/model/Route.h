@@ -59,6 +59,11 @@ struct RouteSettings
     std::vector<Failsafe> failsafes;
     std::optional<HomePosition> home;
     EndAction endAction = EndAction::None;
+    // Whether the server's route processing refuses the route where it crosses an aerodrome's or
+    // a custom no-fly zone (HCI Route.checkAerodromeNfz / checkCustomNfz). Off unless set: the
+    // schema gives them no default, and a server reads an absent flag as false.
+    bool checkAerodromeNfz = false;
+    bool checkCustomNfz = false;
     bool operator==(const RouteSettings &) const = default;
 };
 
