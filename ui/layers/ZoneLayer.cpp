@@ -101,6 +101,20 @@ void ZoneLayer::setAirspace(airspace::Airspace *airspace)
     emit airspaceChanged();
 }
 
+// The store learns where the map looks, so the server is asked for the zones there.
+void ZoneLayer::onViewportChanged()
+{
+    MapLayer::onViewportChanged();
+    if (!m_airspace || !isVisible() || !map())
+        return;
+    const MapViewport view = viewport();
+    if (view.size().isEmpty())
+        return;
+    const QGeoCoordinate northWest = view.screenToGeo(QPointF(0, 0));
+    const QGeoCoordinate southEast = view.screenToGeo(QPointF(view.size().width(), view.size().height()));
+    m_airspace->lookAt(southEast.latitude(), northWest.longitude(), northWest.latitude(), southEast.longitude());
+}
+
 void ZoneLayer::readZones()
 {
     m_outlines.clear();

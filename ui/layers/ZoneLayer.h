@@ -53,6 +53,10 @@ public:
 
     void paint(QPainter *painter) override;
 
+protected:
+    void onViewportChanged() override;
+
+public:
     static QColor exclusionColour() { return QColor(0xd3, 0x2f, 0x2f); }
     static QColor inclusionColour() { return QColor(0x2e, 0x7d, 0x32); }
 

@@ -224,6 +224,17 @@ bool Airspace::selectZoneOfIssue(const QString &message)
     return false;
 }
 
+void Airspace::lookAt(double south, double west, double north, double east)
+{
+    if (!(south < north) || !(west < east) || !std::isfinite(south + west + north + east))
+        return;
+    if (!m_area.empty && south >= m_area.south && north <= m_area.north && west >= m_area.west && east <= m_area.east)
+        return;
+    const double dLat = (north - south) / 2, dLon = (east - west) / 2;
+    m_area = {std::max(-90.0, south - dLat), std::max(-180.0, west - dLon), std::min(90.0, north + dLat), std::min(180.0, east + dLon), false};
+    emit areaChanged();
+}
+
 void Airspace::setServerZones(std::vector<Zone> zones)
 {
     m_server = std::move(zones);

@@ -101,6 +101,10 @@ public:
 
     // The server's zones (aerodromes and custom ones), replacing the ones it gave before.
     void setServerZones(std::vector<Zone> zones);
+    // Where a map looks (degrees): the area whose server zones matter. The area asked for is the
+    // view grown by half its size each way, so panning within it asks nothing new.
+    Q_INVOKABLE void lookAt(double south, double west, double north, double east);
+    const mission::GeoBox &area() const { return m_area; }
 
     // The drawn zones: what ZoneEditor's commands change (each a whole zone, so undo restores it).
     const std::vector<Zone> &customZones() const { return m_custom; }
@@ -114,6 +118,7 @@ signals:
     void problemsChanged();
     void selectedZoneChanged();
     void crossingsChanged();
+    void areaChanged();
 
 private:
     struct LoadedFile
@@ -138,6 +143,7 @@ private:
     std::unique_ptr<ZoneListModel> m_model;
     std::unique_ptr<ZoneEditor> m_editor;
     std::vector<Zone> m_custom, m_server, m_fence;
+    mission::GeoBox m_area;
     std::vector<LoadedFile> m_files;
     std::vector<Group> m_groups;            // by row, as last built
     std::vector<QString> m_shapeProblems;   // by row

@@ -29,6 +29,7 @@
 #include "Traffic.h"
 #include "OfflineMaps.h"
 #include "VehicleFleet.h"
+#include "ServerZones.h"
 #include "ZoneAlertMonitor.h"
 
 #include <QLoggingCategory>
@@ -91,11 +92,10 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
     // Closest-approach alerts: into the fleet's command log, which the flight recorder follows.
     if (m_fleet)
         m_proximity = std::make_unique<deconfliction::ProximityMonitor>(m_fleet.get(), m_traffic->picture());
-    // Zone alerts beside them, in the same banner and log: the airspace (empty until a zone store
-    // is connected) and, per vehicle, the route fence that went up with its mission.
+    // Zone alerts beside them, in the same banner and log: the zones the operator sees and, per
+    // vehicle, the route fence that went up with its mission.
     if (m_fleet) {
         m_zoneAlerts = std::make_unique<airspace::ZoneAlertMonitor>(m_fleet.get(), ground);
-        m_zoneAlerts->setZones(std::make_shared<const airspace::ZoneSet>());
         MissionUploader *uploader = m_missions->preparation()->uploader();
         QObject::connect(uploader, &MissionUploader::uploaded, m_zoneAlerts.get(), [this, uploader](vehicle::Vehicle *v) {
             const mission::Route &route = uploader->route();
@@ -103,6 +103,29 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
                                                                           airspace::ZoneSource::VehicleFence, route.settings.name));
         });
     }
+
+    // One airspace for the check, the alerts and the fence: what the operator sees is what a
+    // vehicle is warned of and carries (its route's own fence goes up with the route itself).
+    const auto shareZones = [this] {
+        if (m_zoneAlerts)
+            m_zoneAlerts->setZones(m_airspace->zoneSet());
+        std::vector<airspace::Zone> beyondRoute;
+        for (int row = 0; row < m_airspace->count(); ++row)
+            if (m_airspace->groupOf(row) != airspace::Airspace::Group::RouteFence)
+                beyondRoute.push_back(m_airspace->zoneAt(row));
+        MissionUploader *uploader = m_missions->preparation()->uploader();
+        vehicle::FenceSettings fence = uploader->fenceSettings();
+        fence.zones = std::make_shared<const airspace::ZoneSet>(std::move(beyondRoute));
+        uploader->setFenceSettings(std::move(fence));
+    };
+    shareZones();
+    QObject::connect(m_airspace.get(), &airspace::Airspace::changed, m_airspace.get(), shareZones);
+    // The server's zones where the maps look (aerodromes and custom ones), into the same store.
+    m_serverZones = std::make_unique<airspace::ServerZones>(m_hciClient.get());
+    QObject::connect(m_airspace.get(), &airspace::Airspace::areaChanged, m_serverZones.get(),
+                     [this] { m_serverZones->setViewBox(m_airspace->area()); });
+    QObject::connect(m_serverZones.get(), &airspace::ServerZones::zonesChanged, m_airspace.get(),
+                     [this] { m_airspace->setServerZones(m_serverZones->zones()); });
 
     if (!options.autosaveDirectory.isEmpty()) {
         // Recovery looks first, so the autosave of this run takes a slot of its own.
@@ -152,6 +175,7 @@ ClientGraph::~ClientGraph()
     m_deconfliction.reset();
     m_offlineMaps.reset();
     m_traffic.reset();
+    m_serverZones.reset();
     m_fleetRoutes.reset();
     m_fleet.reset();
     m_airspace.reset();

@@ -33,6 +33,7 @@ class RouteEndurance;
 
 namespace sortie::airspace {
 class Airspace;
+class ServerZones;
 } // namespace sortie::airspace
 
 namespace sortie::traffic {
@@ -99,6 +100,8 @@ public:
     endurance::RouteEndurance &endurance() { return *m_endurance; }
     // The zones (drawn, the server's, files, the route's fence) and the airspace rule on the route.
     airspace::Airspace &airspace() { return *m_airspace; }
+    // The server's no-fly zones where the maps look, fed into the airspace.
+    airspace::ServerZones &serverZones() { return *m_serverZones; }
     // Manned traffic: the picture, the receiver's feed and the server's ADS-B list.
     traffic::Traffic &traffic() { return *m_traffic; }
     // Maps taken offline: the area, the download into an MBTiles pack, cache-only (docs/offline-maps.md).
@@ -106,8 +109,8 @@ public:
     // In-flight closest-approach alerts between the fleet's vehicles and against the traffic;
     // nullptr without vehicles.
     deconfliction::ProximityMonitor *proximity() { return m_proximity.get(); }
-    // In-flight zone alerts: each vehicle against the airspace (none yet: the client's zone store
-    // is connected with setZones) and the route fence uploaded with its mission; nullptr without vehicles.
+    // In-flight zone alerts: each vehicle against the airspace and the route fence uploaded with
+    // its mission; nullptr without vehicles.
     airspace::ZoneAlertMonitor *zoneAlerts() { return m_zoneAlerts.get(); }
     // The open route's 4D conflicts with the fleet's other routes (a rule on its analyzer);
     // nullptr without vehicles.
@@ -132,6 +135,7 @@ private:
     std::unique_ptr<endurance::RouteEndurance> m_endurance;
     std::unique_ptr<airspace::Airspace> m_airspace;
     std::unique_ptr<VehicleFleet> m_fleet;
+    std::unique_ptr<airspace::ServerZones> m_serverZones;
     std::unique_ptr<traffic::Traffic> m_traffic;
     std::unique_ptr<maptiles::OfflineMaps> m_offlineMaps;
     std::unique_ptr<FleetRoutes> m_fleetRoutes;
