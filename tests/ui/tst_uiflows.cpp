@@ -256,11 +256,14 @@ private slots:
         const int routeId = m_app->missions().routeId();
         QTRY_VERIFY(find<QObject>("checkAerodromeNfz")->property("checked").toBool());
         QVERIFY(!find<QObject>("checkCustomNfz")->property("checked").toBool());
+        click("nfzChecksButton");
         click("checkCustomNfz");
         QTRY_VERIFY(m_app->missions().document()->model()->checkCustomNfz());
         QVERIFY(find<QObject>("checkCustomNfz")->property("checked").toBool());
+        missionMap()->forceActiveFocus();
         QTest::keyClick(m_window, Qt::Key_Z, Qt::ControlModifier);
         QTRY_VERIFY(!find<QObject>("checkCustomNfz")->property("checked").toBool());
+        click("nfzChecksButton");
         click("checkCustomNfz");
         QTRY_VERIFY(m_app->missions().document()->model()->checkCustomNfz());
         missionMap()->forceActiveFocus();

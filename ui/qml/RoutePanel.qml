@@ -85,6 +85,19 @@ Pane {
                      ToolTip.visible: hovered; ToolTip.text: qsTr("Draw an area to scan: click its corners on the map") }
             Button { text: qsTr("Import…"); onClicked: importDialog.open() }
             Button { text: qsTr("Export…"); onClicked: exportDialog.open() }
+            // What the server's route processing refuses the route for (HCI checkAerodromeNfz /
+            // checkCustomNfz): a menu, so the waypoint table keeps its room.
+            Button { objectName: "nfzChecksButton"; text: qsTr("Zone checks…"); onClicked: nfzChecksMenu.open()
+                     ToolTip.visible: hovered; ToolTip.text: qsTr("Which no-fly zones the server's processing refuses the route for")
+                Menu {
+                    id: nfzChecksMenu
+                    y: parent.height
+                    MenuItem { objectName: "checkAerodromeNfz"; text: qsTr("Refuse crossing aerodrome zones"); checkable: true
+                               checked: panel.doc.model.checkAerodromeNfz; onToggled: panel.doc.editor.setCheckAerodromeNfz(checked) }
+                    MenuItem { objectName: "checkCustomNfz"; text: qsTr("Refuse crossing custom zones"); checkable: true
+                               checked: panel.doc.model.checkCustomNfz; onToggled: panel.doc.editor.setCheckCustomNfz(checked) }
+                }
+            }
         }
 
         RowLayout {
@@ -193,18 +206,6 @@ Pane {
             Label { text: panel.doc.analyzer.waypointCount }
             Label { text: qsTr("Photos"); opacity: 0.7 }
             Label { text: panel.doc.analyzer.photoCount }
-        }
-
-        RowLayout {
-            // What the server's route processing refuses the route for (HCI checkAerodromeNfz / checkCustomNfz).
-            Layout.fillWidth: true
-            Label { text: qsTr("Server checks"); opacity: 0.7 }
-            CheckBox { objectName: "checkAerodromeNfz"; text: qsTr("Aerodrome zones"); checked: panel.doc.model.checkAerodromeNfz
-                       onToggled: panel.doc.editor.setCheckAerodromeNfz(checked)
-                       ToolTip.visible: hovered; ToolTip.text: qsTr("The server refuses the route where it crosses an aerodrome's no-fly zone") }
-            CheckBox { objectName: "checkCustomNfz"; text: qsTr("Custom zones"); checked: panel.doc.model.checkCustomNfz
-                       onToggled: panel.doc.editor.setCheckCustomNfz(checked)
-                       ToolTip.visible: hovered; ToolTip.text: qsTr("The server refuses the route where it crosses a custom no-fly zone") }
         }
 
         ColumnLayout {
