@@ -13,8 +13,9 @@ using terrain::TerrainProfile;
 
 namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr size_t kAmsl = size_t(HeightReference::Amsl), kAgl = size_t(HeightReference::AboveTerrain),
-                 kHome = size_t(HeightReference::AboveHome);
+// heights() gives them in HeightReference's order.
+static_assert(size_t(HeightReference::Amsl) == 0 && size_t(HeightReference::AboveTerrain) == 1
+              && size_t(HeightReference::AboveHome) == 2);
 
 // The heights at a place from its AMSL altitude and the ground there and at home (any may be NaN);
 // a reference that cannot be converted keeps `own` (the route's own height in its own reference).

@@ -3,6 +3,10 @@
 #include "AutosaveRecovery.h"
 #include "Airspace.h"
 #include "ClientGraph.h"
+#include "MissionController.h"
+#include "MissionUploader.h"
+#include "RoutePreparation.h"
+#include "AirspaceCheck.h"
 #include "RouteEndurance.h"
 #include "ClientWindow.h"
 #include "ProximityMonitor.h"
@@ -80,6 +84,34 @@ private slots:
         }
         for (const char *name : {"appSettings", "comparison", "serverHistory", "recordingSettings"})
             QVERIFY2(window->property(name).value<QObject *>(), name);
+    }
+
+    // The server's zones reach the one store where a map looks, and from it the alerts and the
+    // fence a VCI vehicle is sent: sortie-sim's aerodromes near Riga and its custom "Crane works".
+    void theServersZonesReachTheAirspace()
+    {
+        test::ClientWindow fixture;
+        QVERIFY2(fixture.isReady(), qPrintable(fixture.error()));
+        QVERIFY(fixture.logIn());
+        client::ClientGraph &graph = fixture.graph();
+        airspace::Airspace &store = graph.airspace();
+        auto serverZones = [&store] {
+            QStringList names;
+            for (int row = 0; row < store.count(); ++row)
+                if (store.groupOf(row) == airspace::Airspace::Group::Server)
+                    names << store.zoneAt(row).name;
+            names.sort();
+            return names;
+        };
+        store.lookAt(56.90, 23.90, 57.02, 24.20);
+        QTRY_COMPARE_WITH_TIMEOUT(serverZones(), (QStringList{"Crane works", "RIX CTR", "Spilve airfield"}), 10000);
+        // The same set is what the fence is built from and what the alerts watch.
+        const vehicle::FenceSettings &fence = graph.missions().preparation()->uploader()->fenceSettings();
+        QVERIFY(fence.zones);
+        QCOMPARE(int(fence.zones->zones().size()), store.count());
+        // A map looking elsewhere asks again: nothing of the server's there.
+        store.lookAt(-34.0, 151.0, -33.8, 151.3);
+        QTRY_VERIFY_WITH_TIMEOUT(serverZones().isEmpty(), 10000);
     }
 
     // A fixture changes what it needs through the options, and the wiring says so.
