@@ -3,6 +3,8 @@
 #include "AutosaveRecovery.h"
 #include "Airspace.h"
 #include "ClientGraph.h"
+#include "ServerZones.h"
+#include "ServerZoneReply.h"
 #include "MissionController.h"
 #include "MissionUploader.h"
 #include "RoutePreparation.h"
@@ -109,9 +111,18 @@ private slots:
         const vehicle::FenceSettings &fence = graph.missions().preparation()->uploader()->fenceSettings();
         QVERIFY(fence.zones);
         QCOMPARE(int(fence.zones->zones().size()), store.count());
-        // A map looking elsewhere asks again: nothing of the server's there.
-        store.lookAt(-34.0, 151.0, -33.8, 151.3);
-        QTRY_VERIFY_WITH_TIMEOUT(serverZones().isEmpty(), 10000);
+        // A custom zone saved to the server (under its lock) comes back into the store.
+        airspace::Zone pier;
+        pier.name = QStringLiteral("Test pier");
+        pier.shape = airspace::ZonePolygons{{airspace::ZonePolygon{{{{56.9700, 24.1000}, {56.9700, 24.1030}, {56.9720, 24.1030}, {56.9720, 24.1000}}}}}};
+        pier.ceiling = airspace::HeightLimit{80, terrain::HeightReference::AboveTerrain};
+        airspace::ServerZoneReply *reply = graph.serverZones().save(pier);
+        std::optional<QString> error; // the reply deletes itself once finished
+        connect(reply, &airspace::ServerZoneReply::finished, this, [&] { error = reply->error(); });
+        QTRY_VERIFY_WITH_TIMEOUT(error.has_value(), 10000);
+        QVERIFY2(error->isEmpty(), qPrintable(*error));
+        QTRY_COMPARE_WITH_TIMEOUT(serverZones(), (QStringList{"Crane works", "RIX CTR", "Spilve airfield", "Test pier"}), 10000);
+        QCOMPARE(int(graph.missions().preparation()->uploader()->fenceSettings().zones->zones().size()), store.count());
     }
 
     // A fixture changes what it needs through the options, and the wiring says so.
