@@ -357,6 +357,8 @@ private slots:
         for (const auto *w : m_world->store().list(QStringLiteral("Route")))
             demo = w;
         QVERIFY(demo);
+        // The store's object is replaced by the save below: keep its id, not the pointer.
+        const int demoId = demo->route().id();
         auto read = mission::routeFromHci(demo->route());
         QVERIFY(read);
         QCOMPARE(read->route.settings.checkAerodromeNfz, true);  // the demo route's flags
@@ -366,7 +368,7 @@ private slots:
         route.settings.checkCustomNfz = true;
         auto saved = answer<pb::CreateOrUpdateObjectResponse>(admin.client.createOrUpdate(mission::routeToHci(route)));
         QVERIFY2(saved->isOk(), qPrintable(saved->error().toString()));
-        auto got = answer<pb::GetObjectResponse>(admin.client.getObject(hci::HciObjectType::Route, demo->route().id()));
+        auto got = answer<pb::GetObjectResponse>(admin.client.getObject(hci::HciObjectType::Route, demoId));
         QVERIFY(got->isOk());
         const pb::Route &stored = got->response<pb::GetObjectResponse>().object().route();
         QCOMPARE(stored.checkaerodromenfz(), false);
