@@ -18,6 +18,7 @@
 #include "RouteEndurance.h"
 #include "ServerHistoryRequest.h"
 #include "Traffic.h"
+#include "ZoneSharing.h"
 #include "VehicleFleet.h"
 
 #include <QQmlEngine>
@@ -48,7 +49,8 @@ QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settin
             {QStringLiteral("proximity"), QVariant::fromValue<QObject *>(graph.proximity())},
             {QStringLiteral("zoneAlerts"), QVariant::fromValue<QObject *>(graph.zoneAlerts())},
             {QStringLiteral("deconfliction"), QVariant::fromValue<QObject *>(graph.deconfliction())},
-            {QStringLiteral("airspace"), QVariant::fromValue<QObject *>(&graph.airspace())}};
+            {QStringLiteral("airspace"), QVariant::fromValue<QObject *>(&graph.airspace())},
+            {QStringLiteral("zoneSharing"), QVariant::fromValue<QObject *>(&graph.zoneSharing())}};
 }
 
 } // namespace sortie::ui

@@ -247,6 +247,48 @@ private slots:
         QMetaObject::invokeMethod(client.window(), "undo");
         QVERIFY(std::abs(cornerNow().longitude - corner.longitude()) < 2e-5);
 
+        // Sent to the server from the zone panel: listed once, as the server's, and still chosen.
+        QQuickItem *send = client.find(QStringLiteral("sendZoneButton"));
+        QTRY_VERIFY(send->isVisible() && send->isEnabled());
+        QCOMPARE(send->property("text").toString(), QStringLiteral("Send to server"));
+        click(client.window(), centreOf(send));
+        QTRY_VERIFY_WITH_TIMEOUT(airspace.customZones().empty(), 10000);
+        const auto rowsNamed = [&airspace](const QString &name) {
+            QList<int> rows;
+            for (int r = 0; r < airspace.count(); ++r)
+                if (airspace.zoneAt(r).name == name)
+                    rows << r;
+            return rows;
+        };
+        QTRY_COMPARE_WITH_TIMEOUT(rowsNamed(QStringLiteral("Zone 1")).size(), 1, 10000);
+        const int stored = rowsNamed(QStringLiteral("Zone 1")).first();
+        QCOMPARE(airspace.groupOf(stored), airspace::Airspace::Group::Server);
+        QTRY_COMPARE(airspace.selectedZone(), stored);
+        QCOMPARE(client.find<QObject>(QStringLiteral("zoneSharingStatus"))->property("text").toString(),
+                 QStringLiteral("Zone 'Zone 1' is on the server."));
+        // The server's zone edited here: a drawn copy, sent back as an update; discarded, the
+        // server's comes back; deleted after the question, it is gone.
+        QQuickItem *editHere = client.find(QStringLiteral("editServerZone"));
+        QTRY_VERIFY(editHere->isVisible());
+        click(client.window(), centreOf(editHere));
+        QTRY_COMPARE(airspace.customZones().size(), size_t(1));
+        QVERIFY(airspace.customZones()[0].serverId);
+        QTRY_COMPARE(send->property("text").toString(), QStringLiteral("Update on server"));
+        QCOMPARE(rowsNamed(QStringLiteral("Zone 1")), QList<int>{0});
+        QQuickItem *discard = client.find(QStringLiteral("removeZoneButton"));
+        QCOMPARE(discard->property("text").toString(), QStringLiteral("Discard copy"));
+        click(client.window(), centreOf(discard));
+        QTRY_VERIFY(airspace.customZones().empty());
+        QCOMPARE(rowsNamed(QStringLiteral("Zone 1")).size(), 1);
+        airspace.setSelectedZone(rowsNamed(QStringLiteral("Zone 1")).first());
+        QQuickItem *deleteButton = client.find(QStringLiteral("deleteServerZone"));
+        QTRY_VERIFY(deleteButton->isVisible() && deleteButton->isEnabled());
+        click(client.window(), centreOf(deleteButton));
+        QObject *question = client.find<QObject>(QStringLiteral("deleteZoneQuestion"));
+        QTRY_VERIFY(question->property("opened").toBool());
+        QMetaObject::invokeMethod(question, "accept");
+        QTRY_VERIFY_WITH_TIMEOUT(rowsNamed(QStringLiteral("Zone 1")).isEmpty(), 10000);
+
         // The fly view draws the zone too.
         client.showPage(2);
         auto *flyZones = client.find<ui::ZoneLayer>(QStringLiteral("flyZoneLayer"));

@@ -28,6 +28,7 @@ ApplicationWindow {
     required property ZoneAlertMonitor zoneAlerts   // zone alerts in flight; null without vehicles
     required property RouteDeconfliction deconfliction  // the open route's 4D conflicts; null without vehicles
     required property Airspace airspace             // the zones: both maps, the zone panel, the route's airspace check
+    required property ZoneSharing zoneSharing       // drawn zones to the server; the server's custom zones edited, deleted
     property string connectionState: connection.state
     property string connectionDetail: connection.statusDetail
 
@@ -149,6 +150,7 @@ ApplicationWindow {
             fleetRoutes: window.fleetRoutes
             deconfliction: window.deconfliction
             airspace: window.airspace
+            zoneSharing: window.zoneSharing
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource

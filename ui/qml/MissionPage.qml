@@ -34,6 +34,7 @@ Page {
     required property FleetRoutes fleetRoutes       // every route given to a vehicle: on the map and in a list beside it
     property RouteDeconfliction deconfliction: null // the open route's conflicts with them; null without vehicles
     required property Airspace airspace             // the zones: on the map, in the zone panel, on the profile
+    required property ZoneSharing zoneSharing       // the zone panel's server actions
     property alias zoneLayer: zoneLayer
     property alias zonePanel: zonePanel
     // Ctrl+Z goes to the zone editor while the zone panel is open (zones are not part of the route).
@@ -261,6 +262,7 @@ Page {
                 width: 300
                 height: Math.min(implicitHeight, parent.height - anchors.topMargin - 50)
                 airspace: page.airspace
+                sharing: page.zoneSharing
                 tool: page.tool
                 draftCount: zoneDraft.count
                 onToolRequested: tool => { zoneDraft.clear(); page.tool = tool }

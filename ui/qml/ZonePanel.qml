@@ -10,6 +10,7 @@ import Sortie.Ui
 Frame {
     id: panel
     required property Airspace airspace
+    required property ZoneSharing sharing  // send a drawn zone; edit or delete a server custom zone
     required property string tool          // the page's drawing tool ("zonePolygon", "zoneCircle" or another)
     required property int draftCount       // corners clicked so far while drawing a polygon
     signal toolRequested(string tool)      // "" ends drawing
@@ -185,12 +186,50 @@ Frame {
                 currentIndex: Math.max(0, model.indexOf(panel.editor.fields.reference || "AMSL"))
                 onActivated: panel.setLimits()
             }
-            Button {
-                objectName: "removeZoneButton"
-                text: qsTr("Remove zone")
+            RowLayout {
                 Layout.columnSpan: 2
-                onClicked: panel.editor.removeZone(panel.chosen)
+                Layout.fillWidth: true
+                Button {
+                    objectName: "removeZoneButton"
+                    text: panel.sharing.sendUpdates ? qsTr("Discard copy") : qsTr("Remove zone")
+                    onClicked: panel.editor.removeZone(panel.chosen)
+                    ToolTip.visible: hovered && panel.sharing.sendUpdates
+                    ToolTip.text: qsTr("The server's zone stays as it is")
+                }
+                Button {
+                    objectName: "sendZoneButton"
+                    text: panel.sharing.sendUpdates ? qsTr("Update on server") : qsTr("Send to server")
+                    enabled: !panel.sharing.busy
+                    onClicked: panel.sharing.send(panel.chosen)
+                }
             }
+        }
+        // The chosen zone is one of the server's custom zones: edit a copy here, or delete it.
+        RowLayout {
+            objectName: "serverZoneActions"
+            visible: panel.sharing.canEditOnServer
+            Layout.fillWidth: true
+            Button {
+                objectName: "editServerZone"
+                text: qsTr("Edit here")
+                onClicked: panel.sharing.editCopy(panel.airspace.selectedZone)
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Draw a copy to edit; Update on server stores it")
+            }
+            Button {
+                objectName: "deleteServerZone"
+                text: qsTr("Delete on server")
+                enabled: !panel.sharing.busy
+                onClicked: deleteQuestion.open()
+            }
+        }
+        Label {
+            objectName: "zoneSharingStatus"
+            visible: text.length > 0
+            text: panel.sharing.busy ? qsTr("Waiting for the server…") : panel.sharing.status
+            color: panel.sharing.failed ? "#e53935" : palette.text
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
         }
         RowLayout {
             Layout.fillWidth: true
@@ -205,6 +244,26 @@ Frame {
                 onValueModified: panel.airspace.buffer = value
             }
         }
+    }
+
+    Dialog {
+        id: deleteQuestion
+        objectName: "deleteZoneQuestion"
+        parent: Overlay.overlay
+        anchors.centerIn: parent
+        modal: true
+        title: qsTr("Delete zone")
+        standardButtons: Dialog.Yes | Dialog.No
+        // Which zone is read when asked: the selection may change while the question is open.
+        property int row: -1
+        onAboutToShow: row = panel.airspace.selectedZone
+        width: 380
+        Label {
+            width: deleteQuestion.availableWidth
+            wrapMode: Text.Wrap
+            text: qsTr("Delete '%1' on the server, for every operator?").arg(panel.airspace.zoneName(deleteQuestion.row))
+        }
+        onAccepted: panel.sharing.removeFromServer(row)
     }
 
     // As typed: the editor reads the numbers, takes empty as ground / unlimited and refuses the rest.

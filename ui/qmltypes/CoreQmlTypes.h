@@ -35,6 +35,7 @@
 #include "FleetRoutes.h"
 #include "VehicleLink.h"
 #include "ZoneEditor.h"
+#include "ZoneSharing.h"
 #include "ZoneListModel.h"
 
 #include <QAbstractItemModel>
@@ -203,6 +204,13 @@ struct ZoneEditorForeign
     Q_GADGET
     QML_FOREIGN(sortie::airspace::ZoneEditor)
     QML_NAMED_ELEMENT(ZoneEditor)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct ZoneSharingForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::airspace::ZoneSharing)
+    QML_NAMED_ELEMENT(ZoneSharing)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 struct RouteDeconflictionForeign

@@ -150,10 +150,49 @@ void Airspace::setSelectedZone(int row)
 {
     if (row < -1 || row >= count())
         row = -1;
+    const Group group = groupOf(row);
+    m_selectedKey = row < 0 || group == Group::Custom ? QString() : keyOf(group, zoneAt(row));
     if (row == m_selected)
         return;
     m_selected = row;
     emit selectedZoneChanged();
+}
+
+// After a rebuild the chosen zone keeps being chosen where its row went (server zones come and go
+// above the files); a drawn zone's row is its index, which the edits keep up to date.
+void Airspace::followSelection()
+{
+    int row = m_selected;
+    if (!m_selectedKey.isEmpty()) {
+        row = -1;
+        for (int r = 0; r < count() && row < 0; ++r)
+            if (m_groups[size_t(r)] != Group::Custom && keyOf(m_groups[size_t(r)], zoneAt(r)) == m_selectedKey)
+                row = r;
+    } else if (row >= int(m_custom.size())) {
+        row = -1;
+    }
+    if (row == m_selected)
+        return;
+    m_selected = row;
+    if (row < 0)
+        m_selectedKey.clear();
+    emit selectedZoneChanged();
+}
+
+int Airspace::draftOf(int serverId) const
+{
+    for (size_t i = 0; i < m_custom.size(); ++i)
+        if (m_custom[i].serverId == serverId)
+            return int(i);
+    return -1;
+}
+
+int Airspace::rowOfServerZone(int serverId) const
+{
+    for (int r = 0; r < count(); ++r)
+        if (m_groups[size_t(r)] == Group::Server && zoneAt(r).serverId == serverId)
+            return r;
+    return -1;
 }
 
 bool Airspace::loadFile(const QString &path)
@@ -258,8 +297,10 @@ void Airspace::removeCustomZone(int index)
     if (index < 0 || index >= int(m_custom.size()))
         return;
     m_custom.erase(m_custom.begin() + index);
-    if (m_selected >= index)
-        setSelectedZone(m_selected == index ? -1 : m_selected - 1);
+    if (m_selectedKey.isEmpty() && m_selected >= index) {  // a drawn zone is chosen: its row moves up
+        m_selected = m_selected == index ? -1 : m_selected - 1;
+        emit selectedZoneChanged();
+    }
     saveCustom();
     rebuild();
 }
@@ -312,7 +353,15 @@ void Airspace::rebuild()
     };
     static const std::vector<QString> none;
     add(m_custom, Group::Custom, nullptr);
-    add(m_server, Group::Server, &m_serverProblems);
+    // A server zone the operator is editing here is drawn once: as the draft (ZoneSharing).
+    std::vector<Zone> server;
+    std::vector<QString> serverProblems;
+    for (size_t i = 0; i < m_server.size(); ++i)
+        if (!m_server[i].serverId || draftOf(*m_server[i].serverId) < 0) {
+            server.push_back(m_server[i]);
+            serverProblems.push_back(i < m_serverProblems.size() ? m_serverProblems[i] : QString());
+        }
+    add(server, Group::Server, &serverProblems);
     for (const LoadedFile &f : m_files)
         add(f.zones, Group::File, &none);
     add(m_fence, Group::RouteFence, nullptr);
@@ -321,8 +370,7 @@ void Airspace::rebuild()
     const int before = count();
     m_set = std::make_shared<const ZoneSet>(std::move(all));
     m_model->rebuilt(before);
-    if (m_selected >= count())
-        setSelectedZone(-1);
+    followSelection();
     m_rule->setZones(m_set);
     emit changed();
 }

@@ -75,6 +75,7 @@ public:
     // The zone at a row as checked (with the operator's active switch applied).
     const Zone &zoneAt(int row) const { return m_set->zones()[size_t(row)]; }
     Group groupOf(int row) const;
+    Q_INVOKABLE QString zoneName(int row) const { return row >= 0 && row < count() ? zoneAt(row).name : QString(); }
     static QString groupName(Group group);  // "drawn", "server", "file", "route fence"
     // Why a zone is not checked although active (a polygon that crosses itself); empty when it is.
     QString problemOf(int row) const;
@@ -106,6 +107,11 @@ public:
     Q_INVOKABLE void lookAt(double south, double west, double north, double east);
     const mission::GeoBox &area() const { return m_area; }
 
+    // The drawn zone that is a copy of the server's zone `serverId` (edited here, to be sent back), or -1.
+    int draftOf(int serverId) const;
+    // The row of the server's zone `serverId` as listed (-1 when it is not, or while a draft hides it).
+    int rowOfServerZone(int serverId) const;
+
     // The drawn zones: what ZoneEditor's commands change (each a whole zone, so undo restores it).
     const std::vector<Zone> &customZones() const { return m_custom; }
     void insertCustomZone(int index, Zone zone);
@@ -129,6 +135,7 @@ private:
     QString keyOf(Group group, const Zone &zone) const;
     void followRouteFence();
     void rebuild();
+    void followSelection();
     void readCrossings();
     void rememberFiles();
     void saveCustom() const;
@@ -153,6 +160,7 @@ private:
     double m_buffer = 20.0;
     QStringList m_problems;
     int m_selected = -1;
+    QString m_selectedKey;  // the chosen zone when it is not a drawn one (keyOf): rows move, it does not
     QVariantList m_crossings;
 };
 

@@ -1,5 +1,6 @@
 #include "CustomZoneFile.h"
 
+#include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -33,6 +34,10 @@ QJsonObject feature(const Zone &z)
     QJsonObject properties{{QStringLiteral("name"), z.name},
                            {QStringLiteral("kind"), kindName(z.kind)},
                            {QStringLiteral("active"), z.active}};
+    if (z.serverId) {  // a copy of a server zone being edited here: what sending it back updates
+        properties.insert(QStringLiteral("serverId"), *z.serverId);
+        properties.insert(QStringLiteral("serverVersion"), z.serverVersion);
+    }
     if (z.floor)
         properties.insert(QStringLiteral("floor"), z.floor->metres);
     if (z.ceiling)
@@ -92,6 +97,24 @@ mission::Result<ZoneFile> readCustomZones(const QString &path)
     for (Zone &z : out.zones) {
         z.source = ZoneSource::ServerCustom;
         z.origin = QStringLiteral("drawn on the map");
+    }
+    // The server ids the GeoJSON reader does not know, by feature; only when every feature was
+    // read (else which zone is which is not certain, and a draft becomes a new zone).
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly))
+        return out;
+    const QJsonArray features = QJsonDocument::fromJson(file.readAll()).object().value(QStringLiteral("features")).toArray();
+    if (features.size() != qsizetype(out.zones.size()))
+        return out;
+    for (qsizetype i = 0; i < features.size(); ++i) {
+        const QJsonObject properties = features[i].toObject().value(QStringLiteral("properties")).toObject();
+        const QJsonValue id = properties.value(QStringLiteral("serverId"));
+        if (!id.isDouble())
+            continue;
+        Zone &z = out.zones[size_t(i)];
+        z.serverId = id.toInt();
+        z.serverVersion = properties.value(QStringLiteral("serverVersion")).toInt();
+        z.origin = QStringLiteral("server zone %1, edited here").arg(*z.serverId);
     }
     return out;
 }

@@ -129,9 +129,14 @@ int ZoneEditor::addCircle(const QGeoCoordinate &centre, double radius)
 
 bool ZoneEditor::removeZone(int zone)
 {
+    return removeZoneAs(zone, tr("Remove zone"));
+}
+
+bool ZoneEditor::removeZoneAs(int zone, const QString &text)
+{
     if (zone < 0 || zone >= int(m_store->customZones().size()))
         return refuse(tr("There is no drawn zone %1.").arg(zone + 1));
-    m_stack.push(new RemoveZoneCommand(m_store, zone, m_store->customZones()[size_t(zone)], tr("Remove zone")));
+    m_stack.push(new RemoveZoneCommand(m_store, zone, m_store->customZones()[size_t(zone)], text));
     return true;
 }
 

@@ -51,6 +51,10 @@ public:
     static constexpr double kDefaultRadius = 200.0;  // metres, a circle placed with one click
     Q_INVOKABLE int addCircle(const QGeoCoordinate &centre, double radius = kDefaultRadius);
     Q_INVOKABLE bool removeZone(int zone);
+    // For ZoneSharing: a server zone's copy drawn here to be edited (one step, `text`), and a
+    // drawn zone that went to the server taken off the drawn ones (one step: undo brings the draft back).
+    int adopt(Zone zone, const QString &text) { return add(std::move(zone), text); }
+    bool removeZoneAs(int zone, const QString &text);
 
     Q_INVOKABLE bool moveVertex(int zone, int vertex, const QGeoCoordinate &to,
                                 sortie::mission::MissionEnums::EditStep step = sortie::mission::EditStep::Done);

@@ -30,6 +30,7 @@
 #include "OfflineMaps.h"
 #include "VehicleFleet.h"
 #include "ServerZones.h"
+#include "ZoneSharing.h"
 #include "ZoneAlertMonitor.h"
 
 #include <QLoggingCategory>
@@ -126,6 +127,7 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
                      [this] { m_serverZones->setViewBox(m_airspace->area()); });
     QObject::connect(m_serverZones.get(), &airspace::ServerZones::zonesChanged, m_airspace.get(),
                      [this] { m_airspace->setServerZones(m_serverZones->zones()); });
+    m_zoneSharing = std::make_unique<airspace::ZoneSharing>(m_airspace.get(), m_serverZones.get());
 
     if (!options.autosaveDirectory.isEmpty()) {
         // Recovery looks first, so the autosave of this run takes a slot of its own.
@@ -175,6 +177,7 @@ ClientGraph::~ClientGraph()
     m_deconfliction.reset();
     m_offlineMaps.reset();
     m_traffic.reset();
+    m_zoneSharing.reset();
     m_serverZones.reset();
     m_fleetRoutes.reset();
     m_fleet.reset();

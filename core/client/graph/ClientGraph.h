@@ -34,6 +34,7 @@ class RouteEndurance;
 namespace sortie::airspace {
 class Airspace;
 class ServerZones;
+class ZoneSharing;
 } // namespace sortie::airspace
 
 namespace sortie::traffic {
@@ -102,6 +103,8 @@ public:
     airspace::Airspace &airspace() { return *m_airspace; }
     // The server's no-fly zones where the maps look, fed into the airspace.
     airspace::ServerZones &serverZones() { return *m_serverZones; }
+    // Drawn zones sent to the server; the server's custom zones edited on the map and deleted.
+    airspace::ZoneSharing &zoneSharing() { return *m_zoneSharing; }
     // Manned traffic: the picture, the receiver's feed and the server's ADS-B list.
     traffic::Traffic &traffic() { return *m_traffic; }
     // Maps taken offline: the area, the download into an MBTiles pack, cache-only (docs/offline-maps.md).
@@ -136,6 +139,7 @@ private:
     std::unique_ptr<airspace::Airspace> m_airspace;
     std::unique_ptr<VehicleFleet> m_fleet;
     std::unique_ptr<airspace::ServerZones> m_serverZones;
+    std::unique_ptr<airspace::ZoneSharing> m_zoneSharing;
     std::unique_ptr<traffic::Traffic> m_traffic;
     std::unique_ptr<maptiles::OfflineMaps> m_offlineMaps;
     std::unique_ptr<FleetRoutes> m_fleetRoutes;
