@@ -1,0 +1,3924 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de">
+<context>
+    <name>ActionEditor</name>
+    <message>
+        <source>The selected waypoints have different actions: these are the first one&apos;s. An edit applies where they match; an added action goes to all.</source>
+        <translation>Die ausgewählten Wegpunkte haben unterschiedliche Aktionen; angezeigt werden die des ersten. Eine Änderung gilt dort, wo sie übereinstimmen; eine hinzugefügte Aktion gilt für alle.</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Sent by the server; kept and sent back unchanged.</source>
+        <translation>Vom Server gesendet; wird unverändert behalten und zurückgesendet.</translation>
+    </message>
+    <message>
+        <source>Add action</source>
+        <translation>Aktion hinzufügen</translation>
+    </message>
+    <message>
+        <source>Remove all</source>
+        <translation>Alle entfernen</translation>
+    </message>
+</context>
+<context>
+    <name>AtomicFile</name>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>%1 kann nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>AutosaveWriter</name>
+    <message>
+        <source>Cannot remove %1: %2</source>
+        <translation>%1 kann nicht entfernt werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>CommandBar</name>
+    <message>
+        <source>Are you sure?</source>
+        <translation>Sind Sie sicher?</translation>
+    </message>
+    <message numerus="yes">
+        <source>To %n ticked vehicle(s): %1</source>
+        <translation>
+            <numerusform>An %n markiertes Fahrzeug: %1</numerusform>
+            <numerusform>An %n markierte Fahrzeuge: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Untick all</source>
+        <translation>Markierungen aufheben</translation>
+    </message>
+    <message>
+        <source>Arm</source>
+        <translation>Scharf schalten</translation>
+    </message>
+    <message>
+        <source>Disarm</source>
+        <translation>Entschärfen</translation>
+    </message>
+    <message>
+        <source>Take off</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <source>Climb to %1 m above home</source>
+        <translation>Auf %1 m über dem Home-Punkt steigen</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Fly the uploaded mission</source>
+        <translation>Die hochgeladene Mission fliegen</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Land</source>
+        <translation>Landen</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Rückkehr</translation>
+    </message>
+    <message>
+        <source>Go here…</source>
+        <translation>Hierhin fliegen…</translation>
+    </message>
+    <message>
+        <source>Then click on the map where the vehicle should fly</source>
+        <translation>Dann auf der Karte klicken, wohin das Fahrzeug fliegen soll</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle on the map or in the list; tick several to command them together.</source>
+        <translation>Wählen Sie ein Fahrzeug auf der Karte oder in der Liste; markieren Sie mehrere, um sie gemeinsam zu steuern.</translation>
+    </message>
+</context>
+<context>
+    <name>CommandLogView</name>
+    <message>
+        <source>Command log</source>
+        <translation>Befehlsprotokoll</translation>
+    </message>
+</context>
+<context>
+    <name>ComparisonPanel</name>
+    <message>
+        <source>Compare with a route</source>
+        <translation>Mit einer Route vergleichen</translation>
+    </message>
+    <message>
+        <source>Routes (*.sortie *.plan *.waypoints *.wpl *.txt)</source>
+        <translation>Routen (*.sortie *.plan *.waypoints *.wpl *.txt)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Compare with route…</source>
+        <translation>Mit Route vergleichen…</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Leeren</translation>
+    </message>
+    <message>
+        <source>leg</source>
+        <translation>Teilstrecke</translation>
+    </message>
+    <message>
+        <source>samples</source>
+        <translation>Punkte</translation>
+    </message>
+    <message>
+        <source>cross-track max</source>
+        <translation>Querablage max</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>altitude max</source>
+        <translation>Höhe max</translation>
+    </message>
+    <message>
+        <source>reached</source>
+        <translation>erreicht</translation>
+    </message>
+</context>
+<context>
+    <name>FleetRoutesList</name>
+    <message>
+        <source>Routes</source>
+        <translation>Routen</translation>
+    </message>
+    <message>
+        <source>%1 flight</source>
+        <translation>%1 Flug</translation>
+    </message>
+    <message>
+        <source>%1 flight · %2 flown · %3 left</source>
+        <translation>%1 Flug · %2 geflogen · %3 verbleibend</translation>
+    </message>
+</context>
+<context>
+    <name>FlightLogSettingsDialog</name>
+    <message>
+        <source>Flight logs</source>
+        <translation>Flugprotokolle</translation>
+    </message>
+    <message>
+        <source>Folder</source>
+        <translation>Ordner</translation>
+    </message>
+    <message>
+        <source>Holds</source>
+        <translation>Enthält</translation>
+    </message>
+    <message>
+        <source>Recording to</source>
+        <translation>Aufzeichnung in</translation>
+    </message>
+    <message>
+        <source>not recording</source>
+        <translation>keine Aufzeichnung</translation>
+    </message>
+    <message>
+        <source>A log up to (MB)</source>
+        <translation>Ein Protokoll bis (MB)</translation>
+    </message>
+    <message>
+        <source>The folder up to (MB)</source>
+        <translation>Der Ordner bis (MB)</translation>
+    </message>
+    <message>
+        <source>0: no limit. A log over its size continues in a new part; beyond the folder&apos;s size the oldest logs are deleted, never the one being written.</source>
+        <translation>0: keine Grenze. Ein Protokoll über seiner Größe wird in einem neuen Teil fortgesetzt; über der Ordnergröße werden die ältesten Protokolle gelöscht, nie das gerade geschriebene.</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Übernehmen</translation>
+    </message>
+</context>
+<context>
+    <name>InstrumentPanel</name>
+    <message>
+        <source>%1 (%2, %3)</source>
+        <translation>%1 (%2, %3)</translation>
+    </message>
+    <message>
+        <source>No vehicle chosen</source>
+        <translation>Kein Fahrzeug gewählt</translation>
+    </message>
+    <message>
+        <source>Altitude AGL</source>
+        <translation>Höhe AGL</translation>
+    </message>
+    <message>
+        <source>Altitude AMSL</source>
+        <translation>Höhe AMSL</translation>
+    </message>
+    <message>
+        <source>Ground speed</source>
+        <translation>Grundgeschw.</translation>
+    </message>
+    <message>
+        <source>Vertical speed</source>
+        <translation>Steigrate</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Kurs</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Akku</translation>
+    </message>
+    <message>
+        <source>GPS</source>
+        <translation>GPS</translation>
+    </message>
+    <message>
+        <source>fix %1, %2 satellites</source>
+        <translation>Fix %1, %2 Satelliten</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modus</translation>
+    </message>
+    <message>
+        <source>Armed</source>
+        <translation>Scharf</translation>
+    </message>
+    <message>
+        <source>ARMED</source>
+        <translation>SCHARF</translation>
+    </message>
+    <message>
+        <source>disarmed</source>
+        <translation>entschärft</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Verbindung</translation>
+    </message>
+    <message>
+        <source> (no data)</source>
+        <translation> (keine Daten)</translation>
+    </message>
+    <message>
+        <source>%1, %2 Hz</source>
+        <translation>%1, %2 Hz</translation>
+    </message>
+    <message>
+        <source>Flight time</source>
+        <translation>Flugzeit</translation>
+    </message>
+    <message>
+        <source>To home</source>
+        <translation>Zum Home-Punkt</translation>
+    </message>
+    <message>
+        <source>Mission</source>
+        <translation>Mission</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Verbleibend</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>LoginPage</name>
+    <message>
+        <source>Connect to a UgCS server</source>
+        <translation>Mit einem UgCS-Server verbinden</translation>
+    </message>
+    <message>
+        <source>Server (host:port)</source>
+        <translation>Server (Host:Port)</translation>
+    </message>
+    <message>
+        <source>Host name or address and HCI port of the UgCS server</source>
+        <translation>Hostname oder Adresse und HCI-Port des UgCS-Servers</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Benutzer</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Passwort</translation>
+    </message>
+    <message>
+        <source>Remember the password on this computer</source>
+        <translation>Passwort auf diesem Computer speichern</translation>
+    </message>
+    <message>
+        <source>Kept in this computer&apos;s keyring for this server and user, never in a file</source>
+        <translation>Wird im Schlüsselbund dieses Computers für diesen Server und Benutzer gespeichert, nie in einer Datei</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>Log in (Enter in the password field)</source>
+        <translation>Anmelden (Enter im Passwortfeld)</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Trennen</translation>
+    </message>
+    <message>
+        <source>Logged in as %1 at %2.</source>
+        <translation>Angemeldet als %1 bei %2.</translation>
+    </message>
+    <message>
+        <source>%1…</source>
+        <translation>%1…</translation>
+    </message>
+</context>
+<context>
+    <name>Main</name>
+    <message>
+        <source>Sortie</source>
+        <translation>Sortie</translation>
+    </message>
+    <message>
+        <source>Login</source>
+        <translation>Anmeldung</translation>
+    </message>
+    <message>
+        <source>Mission</source>
+        <translation>Mission</translation>
+    </message>
+    <message>
+        <source>Live telemetry</source>
+        <translation>Live-Telemetrie</translation>
+    </message>
+    <message>
+        <source>Map…</source>
+        <translation>Karte…</translation>
+    </message>
+    <message>
+        <source>Choose the map source (Ctrl+M)</source>
+        <translation>Kartenquelle wählen (Strg+M)</translation>
+    </message>
+    <message>
+        <source>Offline…</source>
+        <translation>Offline…</translation>
+    </message>
+    <message>
+        <source>Download the web map of an area for work without a network</source>
+        <translation>Die Webkarte eines Gebiets für die Arbeit ohne Netzwerk herunterladen</translation>
+    </message>
+    <message>
+        <source>Logs…</source>
+        <translation>Protokolle…</translation>
+    </message>
+    <message>
+        <source>Where flight logs are recorded, and how much they may take</source>
+        <translation>Wo Flugprotokolle aufgezeichnet werden und wie viel Platz sie belegen dürfen</translation>
+    </message>
+    <message>
+        <source>ft, mph</source>
+        <translation>ft, mph</translation>
+    </message>
+    <message>
+        <source>m, m/s</source>
+        <translation>m, m/s</translation>
+    </message>
+    <message>
+        <source>Switch between metric and imperial units</source>
+        <translation>Zwischen metrischen und imperialen Einheiten wechseln</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts (F1)</source>
+        <translation>Tastenkürzel (F1)</translation>
+    </message>
+</context>
+<context>
+    <name>MapPane</name>
+    <message>
+        <source>Zoom in (+, wheel)</source>
+        <translation>Vergrößern (+, Mausrad)</translation>
+    </message>
+    <message>
+        <source>Zoom out (−, wheel)</source>
+        <translation>Verkleinern (−, Mausrad)</translation>
+    </message>
+</context>
+<context>
+    <name>MapSourceDialog</name>
+    <message>
+        <source>Map source</source>
+        <translation>Kartenquelle</translation>
+    </message>
+    <message>
+        <source>Offline base map (land outlines, always available)</source>
+        <translation>Offline-Grundkarte (Landumrisse, immer verfügbar)</translation>
+    </message>
+    <message>
+        <source>Web tiles from a URL template</source>
+        <translation>Web-Kacheln aus einer URL-Vorlage</translation>
+    </message>
+    <message>
+        <source>{z}, {x} and {y} (or {-y}) are replaced per tile; {s} by a subdomain</source>
+        <translation>{z}, {x} und {y} (oder {-y}) werden pro Kachel ersetzt; {s} durch eine Subdomain</translation>
+    </message>
+    <message>
+        <source>MBTiles file (offline raster tiles)</source>
+        <translation>MBTiles-Datei (Offline-Rasterkacheln)</translation>
+    </message>
+    <message>
+        <source>/path/to/area.mbtiles</source>
+        <translation>/pfad/zu/gebiet.mbtiles</translation>
+    </message>
+</context>
+<context>
+    <name>MissionPage</name>
+    <message>
+        <source>Zones (%1)</source>
+        <translation>Zonen (%1)</translation>
+    </message>
+    <message>
+        <source>Click the centre line (%1 so far)</source>
+        <translation>Mittellinie anklicken (bisher %1)</translation>
+    </message>
+    <message>
+        <source>Click the corners of the area (%1 so far)</source>
+        <translation>Ecken des Gebiets anklicken (bisher %1)</translation>
+    </message>
+    <message>
+        <source>Click where it goes</source>
+        <translation>Klicken, wo es hin soll</translation>
+    </message>
+    <message>
+        <source>Create</source>
+        <translation>Erstellen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>battery change</source>
+        <translation>Akkuwechsel</translation>
+    </message>
+    <message>
+        <source>no return</source>
+        <translation>keine Rückkehr</translation>
+    </message>
+</context>
+<context>
+    <name>OfflineMapsDialog</name>
+    <message>
+        <source>Offline maps</source>
+        <translation>Offline-Karten</translation>
+    </message>
+    <message>
+        <source>From %1</source>
+        <translation>Von %1</translation>
+    </message>
+    <message>
+        <source>Choose a web tile server in Map source first.</source>
+        <translation>Wählen Sie zuerst unter Kartenquelle einen Web-Kachelserver.</translation>
+    </message>
+    <message>
+        <source>The open route</source>
+        <translation>Die geöffnete Route</translation>
+    </message>
+    <message>
+        <source>and</source>
+        <translation>und</translation>
+    </message>
+    <message>
+        <source>m around it</source>
+        <translation>m darum herum</translation>
+    </message>
+    <message>
+        <source>The map&apos;s view</source>
+        <translation>Der Kartenausschnitt</translation>
+    </message>
+    <message>
+        <source>Zoom from</source>
+        <translation>Zoom von</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>bis</translation>
+    </message>
+    <message>
+        <source>Pack file</source>
+        <translation>Paketdatei</translation>
+    </message>
+    <message>
+        <source>Attribution</source>
+        <translation>Namensnennung</translation>
+    </message>
+    <message>
+        <source>As the provider&apos;s usage policy asks, e.g. © OpenStreetMap contributors</source>
+        <translation>Wie es die Nutzungsrichtlinie des Anbieters verlangt, z. B. © OpenStreetMap-Mitwirkende</translation>
+    </message>
+    <message>
+        <source>Cache only: the map never uses the network (the pack, then the disk cache)</source>
+        <translation>Nur Cache: Die Karte nutzt nie das Netzwerk (erst das Paket, dann der Festplatten-Cache)</translation>
+    </message>
+    <message>
+        <source>Download</source>
+        <translation>Herunterladen</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Fortsetzen</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stopp</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source> in %1 s</source>
+        <translation> in %1 s</translation>
+    </message>
+    <message>
+        <source>Arm</source>
+        <translation>Scharf schalten</translation>
+    </message>
+    <message>
+        <source>Disarm</source>
+        <translation>Entschärfen</translation>
+    </message>
+    <message>
+        <source>Take off</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Guided</source>
+        <translation>Geführt</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>Manuell</translation>
+    </message>
+    <message>
+        <source>Land</source>
+        <translation>Landen</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Rückkehr</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 km</source>
+        <translation>%1 km</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>missed</source>
+        <translation>verpasst</translation>
+    </message>
+    <message>
+        <source>That vehicle is not in this log (it holds %1).</source>
+        <translation>Dieses Fahrzeug ist nicht in diesem Protokoll (es enthält %1).</translation>
+    </message>
+    <message>
+        <source>no vehicle</source>
+        <translation>kein Fahrzeug</translation>
+    </message>
+    <message>
+        <source>Route &quot;%1&quot; has fewer than two waypoints: there is nothing to compare.</source>
+        <translation>Route „%1“ hat weniger als zwei Wegpunkte: Es gibt nichts zu vergleichen.</translation>
+    </message>
+    <message>
+        <source>%1 has no track in this log to compare with.</source>
+        <translation>%1 hat in diesem Protokoll keinen Track zum Vergleichen.</translation>
+    </message>
+    <message>
+        <source>Route &quot;%1&quot; does not match %2: its waypoints are %3 km from anywhere %2 flew in this log.</source>
+        <translation>Route „%1“ passt nicht zu %2: Ihre Wegpunkte liegen %3 km von allem entfernt, was %2 in diesem Protokoll geflogen ist.</translation>
+    </message>
+    <message>
+        <source>%1 flown by %2, %3 to %4
+</source>
+        <translation>%1 geflogen von %2, %3 bis %4
+</translation>
+    </message>
+    <message>
+        <source>
+waypoint  reached                    closest
+</source>
+        <translation>
+Wegpunkt  erreicht                   geringster Abstand
+</translation>
+    </message>
+    <message>
+        <source>
+leg      samples  cross-track max  mean      altitude max  mean
+</source>
+        <translation>
+Teilstr.  Punkte   Querablage max   Mittel    Höhe max      Mittel
+</translation>
+    </message>
+    <message>
+        <source>
+total: %1 reached, %2 missed; cross-track max %3, mean %4; altitude max %5, mean %6
+</source>
+        <translation>
+Gesamt: %1 erreicht, %2 verpasst; Querablage max %3, Mittel %4; Höhe max %5, Mittel %6
+</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1: Datei nicht vorhanden</translation>
+    </message>
+    <message>
+        <source>%1: cannot be opened: %2</source>
+        <translation>%1: kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>no Sortie flight log header</source>
+        <translation>kein Sortie-Flugprotokoll-Header</translation>
+    </message>
+    <message>
+        <source>%1 is not a Sortie flight log (%2)</source>
+        <translation>%1 ist kein Sortie-Flugprotokoll (%2)</translation>
+    </message>
+    <message>
+        <source>%1: the vehicles cannot be read: %2</source>
+        <translation>%1: Die Fahrzeuge können nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>the vehicle list is damaged: %1</source>
+        <translation>Die Fahrzeugliste ist beschädigt: %1</translation>
+    </message>
+    <message>
+        <source>block %1 (after %2 good ones, %3) is damaged: %4</source>
+        <translation>Block %1 (nach %2 guten, %3) ist beschädigt: %4</translation>
+    </message>
+    <message>
+        <source>at the start</source>
+        <translation>am Anfang</translation>
+    </message>
+    <message>
+        <source>unknown vehicle</source>
+        <translation>unbekanntes Fahrzeug</translation>
+    </message>
+    <message>
+        <source>stopped after %1 good blocks (%2): %3</source>
+        <translation>nach %1 guten Blöcken angehalten (%2): %3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>the telemetry cannot be read: %1</source>
+        <translation>Die Telemetrie kann nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>the events stop after %1: %2</source>
+        <translation>Die Ereignisse enden nach %1: %2</translation>
+    </message>
+    <message>
+        <source>the events cannot be read: %1</source>
+        <translation>Die Ereignisse können nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>the routes stop early: %1</source>
+        <translation>Die Routen enden vorzeitig: %1</translation>
+    </message>
+    <message>
+        <source>the routes cannot be read: %1</source>
+        <translation>Die Routen können nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>file:     %1
+</source>
+        <translation>Datei:      %1
+</translation>
+    </message>
+    <message>
+        <source>span:     %1 to %2 (%3 s)
+</source>
+        <translation>Zeitraum:   %1 bis %2 (%3 s)
+</translation>
+    </message>
+    <message>
+        <source>DAMAGED:  read up to the last good record; %1
+</source>
+        <translation>BESCHÄDIGT: bis zum letzten guten Datensatz gelesen; %1
+</translation>
+    </message>
+    <message>
+        <source>vehicles: %1
+</source>
+        <translation>Fahrzeuge:  %1
+</translation>
+    </message>
+    <message>
+        <source>, %1 to %2</source>
+        <translation>, %1 bis %2</translation>
+    </message>
+    <message>
+        <source>    route uploaded %1: %2 waypoints
+</source>
+        <translation>    Route hochgeladen %1: %2 Wegpunkte
+</translation>
+    </message>
+    <message>
+        <source>
+events:   %1
+</source>
+        <translation>
+Ereignisse: %1
+</translation>
+    </message>
+    <message>
+        <source> (failed)</source>
+        <translation> (fehlgeschlagen)</translation>
+    </message>
+    <message>
+        <source>a replayed vehicle takes no commands</source>
+        <translation>Ein wiedergegebenes Fahrzeug nimmt keine Befehle an</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayTimeline</name>
+    <message>
+        <source>Open a flight log</source>
+        <translation>Flugprotokoll öffnen</translation>
+    </message>
+    <message>
+        <source>Flight logs (*.sortielog)</source>
+        <translation>Flugprotokolle (*.sortielog)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Export tracks</source>
+        <translation>Tracks exportieren</translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation>Exportiert nach %1.</translation>
+    </message>
+    <message>
+        <source>Open log…</source>
+        <translation>Protokoll öffnen…</translation>
+    </message>
+    <message>
+        <source>Server history…</source>
+        <translation>Serververlauf…</translation>
+    </message>
+    <message>
+        <source>REPLAY — %1</source>
+        <translation>WIEDERGABE — %1</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Abspielen</translation>
+    </message>
+    <message>
+        <source>Previous event</source>
+        <translation>Vorheriges Ereignis</translation>
+    </message>
+    <message>
+        <source>Next event</source>
+        <translation>Nächstes Ereignis</translation>
+    </message>
+    <message>
+        <source>Jump to event (%1)</source>
+        <translation>Zu Ereignis springen (%1)</translation>
+    </message>
+    <message>
+        <source>Loading plots…</source>
+        <translation>Diagramme werden geladen…</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportieren…</translation>
+    </message>
+    <message>
+        <source>Back to live</source>
+        <translation>Zurück zu live</translation>
+    </message>
+</context>
+<context>
+    <name>RestoreDialog</name>
+    <message>
+        <source>Autosaved edits</source>
+        <translation>Automatisch gesicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>Restore one of %1 unsaved routes?</source>
+        <translation>Eine von %1 Routen mit ungespeicherten Änderungen wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Restore unsaved edits?</source>
+        <translation>Ungespeicherte Änderungen wiederherstellen?</translation>
+    </message>
+    <message>
+        <source>Sortie did not close normally. These routes had unsaved edits, saved automatically. Choose one to see its changes; the others are kept and offered again at the next start.</source>
+        <translation>Sortie wurde nicht normal beendet. Diese Routen hatten ungespeicherte Änderungen, die automatisch gesichert wurden. Wählen Sie eine, um ihre Änderungen zu sehen; die anderen bleiben erhalten und werden beim nächsten Start erneut angeboten.</translation>
+    </message>
+    <message>
+        <source>Sortie did not close normally. Edits of “%1” were saved automatically at %2.</source>
+        <translation>Sortie wurde nicht normal beendet. Änderungen an „%1“ wurden um %2 automatisch gesichert.</translation>
+    </message>
+    <message>
+        <source>%1 — saved %2</source>
+        <translation>%1 — gesichert %2</translation>
+    </message>
+    <message>
+        <source>It belongs to %1.</source>
+        <translation>Sie gehört zu %1.</translation>
+    </message>
+    <message>
+        <source>Changes since the last save:</source>
+        <translation>Änderungen seit dem letzten Speichern:</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <source>Start without these edits (the file is kept as a backup)</source>
+        <translation>Ohne diese Änderungen starten (die Datei bleibt als Sicherung erhalten)</translation>
+    </message>
+    <message>
+        <source>Later</source>
+        <translation>Später</translation>
+    </message>
+    <message>
+        <source>Keep them and decide after signing in</source>
+        <translation>Behalten und nach der Anmeldung entscheiden</translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation>Wiederherstellen</translation>
+    </message>
+</context>
+<context>
+    <name>RoutePanel</name>
+    <message>
+        <source>Import a route</source>
+        <translation>Route importieren</translation>
+    </message>
+    <message>
+        <source>Routes (*.sortie *.plan *.waypoints *.txt *.kml *.kmz)</source>
+        <translation>Routen (*.sortie *.plan *.waypoints *.txt *.kml *.kmz)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>The vehicle&apos;s energy profile</source>
+        <translation>Energieprofil des Fahrzeugs</translation>
+    </message>
+    <message>
+        <source>Energy profiles (*.json)</source>
+        <translation>Energieprofile (*.json)</translation>
+    </message>
+    <message>
+        <source>Export the route</source>
+        <translation>Route exportieren</translation>
+    </message>
+    <message>
+        <source>Sortie (*.sortie)</source>
+        <translation>Sortie (*.sortie)</translation>
+    </message>
+    <message>
+        <source>QGroundControl plan (*.plan)</source>
+        <translation>QGroundControl-Plan (*.plan)</translation>
+    </message>
+    <message>
+        <source>Waypoint list (*.waypoints)</source>
+        <translation>Wegpunktliste (*.waypoints)</translation>
+    </message>
+    <message>
+        <source>KML (*.kml)</source>
+        <translation>KML (*.kml)</translation>
+    </message>
+    <message>
+        <source>DJI Pilot 2 route, WPML (*.kmz)</source>
+        <translation>DJI-Pilot-2-Route, WPML (*.kmz)</translation>
+    </message>
+    <message>
+        <source>Choose a route…</source>
+        <translation>Route wählen…</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Öffnen</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>Save on the server, under its lock (Ctrl+S)</source>
+        <translation>Auf dem Server speichern, unter seiner Sperre (Strg+S)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <source>Undo %1 (Ctrl+Z)</source>
+        <translation>%1 rückgängig machen (Strg+Z)</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <source>Redo %1 (Ctrl+Shift+Z)</source>
+        <translation>%1 wiederholen (Strg+Umschalt+Z)</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>Delete the selected waypoints (Del)</source>
+        <translation>Die ausgewählten Wegpunkte löschen (Entf)</translation>
+    </message>
+    <message>
+        <source>Area scan</source>
+        <translation>Flächenscan</translation>
+    </message>
+    <message>
+        <source>Draw an area to scan: click its corners on the map</source>
+        <translation>Ein zu scannendes Gebiet zeichnen: seine Ecken auf der Karte anklicken</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importieren…</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportieren…</translation>
+    </message>
+    <message>
+        <source>Zone checks…</source>
+        <translation>Zonenprüfung…</translation>
+    </message>
+    <message>
+        <source>Which no-fly zones the server&apos;s processing refuses the route for</source>
+        <translation>Für welche Flugverbotszonen die Verarbeitung auf dem Server die Route ablehnt</translation>
+    </message>
+    <message>
+        <source>Refuse crossing aerodrome zones</source>
+        <translation>Queren von Flugplatzzonen ablehnen</translation>
+    </message>
+    <message>
+        <source>Refuse crossing custom zones</source>
+        <translation>Queren eigener Zonen ablehnen</translation>
+    </message>
+    <message>
+        <source>Process</source>
+        <translation>Verarbeiten</translation>
+    </message>
+    <message>
+        <source>Prepare the route for the chosen vehicle, as the upload will, and show what it would fly (Ctrl+P)</source>
+        <translation>Die Route für das gewählte Fahrzeug so vorbereiten, wie es der Upload tut, und zeigen, was es fliegen würde (Strg+P)</translation>
+    </message>
+    <message>
+        <source>Vehicle…</source>
+        <translation>Fahrzeug…</translation>
+    </message>
+    <message>
+        <source>Upload</source>
+        <translation>Hochladen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Yours (version %1, edited) against theirs (version %2, grey on the map):</source>
+        <translation>Ihre Fassung (Version %1, bearbeitet) gegen die andere (Version %2, grau auf der Karte):</translation>
+    </message>
+    <message>
+        <source>They changed: %1</source>
+        <translation>Dort geändert: %1</translation>
+    </message>
+    <message>
+        <source>Keep mine (overwrite theirs)</source>
+        <translation>Meine behalten (andere überschreiben)</translation>
+    </message>
+    <message>
+        <source>Take theirs (undo brings mine back)</source>
+        <translation>Andere übernehmen (Rückgängig holt meine zurück)</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Zeit</translation>
+    </message>
+    <message>
+        <source>Waypoints</source>
+        <translation>Wegpunkte</translation>
+    </message>
+    <message>
+        <source>Photos</source>
+        <translation>Fotos</translation>
+    </message>
+    <message>
+        <source>Conflicts with other vehicles</source>
+        <translation>Konflikte mit anderen Fahrzeugen</translation>
+    </message>
+    <message>
+        <source>%1:%2  leg %3 · %4 (%5): %6 m across, %7 m in height</source>
+        <translation>%1:%2  Teilstrecke %3 · %4 (%5): %6 m seitlich, %7 m in der Höhe</translation>
+    </message>
+    <message>
+        <source>flying</source>
+        <translation>fliegt</translation>
+    </message>
+    <message>
+        <source>uploaded</source>
+        <translation>hochgeladen</translation>
+    </message>
+    <message>
+        <source>Energy</source>
+        <translation>Energie</translation>
+    </message>
+    <message>
+        <source>%1 Wh</source>
+        <translation>%1 Wh</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n batteries</source>
+        <translation>
+            <numerusform>%n Akku</numerusform>
+            <numerusform>%n Akkus</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 % left</source>
+        <translation>%1 % übrig</translation>
+    </message>
+    <message>
+        <source>No return</source>
+        <translation>Keine Rückkehr</translation>
+    </message>
+    <message>
+        <source>unknown: no home</source>
+        <translation>unbekannt: kein Home-Punkt</translation>
+    </message>
+    <message>
+        <source>after %1 (leg %2)</source>
+        <translation>nach %1 (Teilstrecke %2)</translation>
+    </message>
+    <message>
+        <source>none: home in reach</source>
+        <translation>nirgends: Home-Punkt in Reichweite</translation>
+    </message>
+    <message>
+        <source>Beyond this point of the route, flying straight home no longer lands with the reserve</source>
+        <translation>Ab diesem Punkt der Route landet ein direkter Rückflug zum Home-Punkt nicht mehr mit der Reserve</translation>
+    </message>
+    <message>
+        <source>Load an energy profile to see whether the battery lasts.</source>
+        <translation>Laden Sie ein Energieprofil, um zu sehen, ob der Akku reicht.</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Profil</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>unnamed</source>
+        <translation>unbenannt</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keins</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Laden…</translation>
+    </message>
+    <message>
+        <source>The vehicle&apos;s energy profile: a JSON file, e.g. from sortie-log fit</source>
+        <translation>Das Energieprofil des Fahrzeugs: eine JSON-Datei, z. B. aus sortie-log fit</translation>
+    </message>
+    <message>
+        <source>Wind</source>
+        <translation>Wind</translation>
+    </message>
+    <message>
+        <source>Wind speed, m/s</source>
+        <translation>Windgeschwindigkeit, m/s</translation>
+    </message>
+    <message>
+        <source>m/s from</source>
+        <translation>m/s aus</translation>
+    </message>
+    <message>
+        <source>The direction the wind blows from, degrees clockwise from north</source>
+        <translation>Richtung, aus der der Wind weht, in Grad im Uhrzeigersinn ab Nord</translation>
+    </message>
+    <message>
+        <source>Select the segment</source>
+        <translation>Segment auswählen</translation>
+    </message>
+</context>
+<context>
+    <name>SegmentEditor</name>
+    <message>
+        <source>Radius</source>
+        <translation>Radius</translation>
+    </message>
+    <message>
+        <source>Advanced parameters</source>
+        <translation>Erweiterte Parameter</translation>
+    </message>
+    <message>
+        <source>%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos</source>
+        <translation>%1 m hoch · %2 cm/px · Abdeckung %3 × %4 m · Bahnabstand %5 m · Foto alle %6 m · %7 Fotos</translation>
+    </message>
+</context>
+<context>
+    <name>ServerAction</name>
+    <message>
+        <source>Server action</source>
+        <translation>Serveraktion</translation>
+    </message>
+</context>
+<context>
+    <name>ServerHistoryDialog</name>
+    <message>
+        <source>Server history</source>
+        <translation>Serververlauf</translation>
+    </message>
+    <message>
+        <source>Vehicle</source>
+        <translation>Fahrzeug</translation>
+    </message>
+    <message>
+        <source>From (UTC)</source>
+        <translation>Von (UTC)</translation>
+    </message>
+    <message>
+        <source>To (UTC)</source>
+        <translation>Bis (UTC)</translation>
+    </message>
+    <message>
+        <source>Last hour</source>
+        <translation>Letzte Stunde</translation>
+    </message>
+    <message>
+        <source>Fetch and replay</source>
+        <translation>Abrufen und wiedergeben</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+</context>
+<context>
+    <name>ShortcutHelp</name>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>On the map</source>
+        <translation>Auf der Karte</translation>
+    </message>
+    <message>
+        <source>Esc closes this help.</source>
+        <translation>Esc schließt diese Hilfe.</translation>
+    </message>
+</context>
+<context>
+    <name>Shortcuts</name>
+    <message>
+        <source>Pan the map (Shift: faster)</source>
+        <translation>Karte verschieben (Umschalt: schneller)</translation>
+    </message>
+    <message>
+        <source>Zoom in / out (also the mouse wheel and pinch)</source>
+        <translation>Vergrößern / verkleinern (auch Mausrad und Zwei-Finger-Zoom)</translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation>Ziehen</translation>
+    </message>
+    <message>
+        <source>Pan the map</source>
+        <translation>Karte verschieben</translation>
+    </message>
+    <message>
+        <source>Shift+Drag</source>
+        <translation>Umschalt+Ziehen</translation>
+    </message>
+    <message>
+        <source>Select waypoints in a rectangle (Ctrl+Shift adds)</source>
+        <translation>Wegpunkte in einem Rechteck auswählen (Strg+Umschalt fügt hinzu)</translation>
+    </message>
+    <message>
+        <source>Click</source>
+        <translation>Klick</translation>
+    </message>
+    <message>
+        <source>Add a waypoint; on a leg: insert one; on a waypoint: select (Ctrl toggles, Shift extends)</source>
+        <translation>Wegpunkt hinzufügen; auf einer Teilstrecke: einen einfügen; auf einem Wegpunkt: auswählen (Strg schaltet um, Umschalt erweitert)</translation>
+    </message>
+    <message>
+        <source>Drag a waypoint</source>
+        <translation>Wegpunkt ziehen</translation>
+    </message>
+    <message>
+        <source>Move it, or the whole selection</source>
+        <translation>Ihn verschieben, oder die ganze Auswahl</translation>
+    </message>
+    <message>
+        <source>Show or hide this help</source>
+        <translation>Diese Hilfe ein- oder ausblenden</translation>
+    </message>
+    <message>
+        <source>Login page</source>
+        <translation>Anmeldeseite</translation>
+    </message>
+    <message>
+        <source>Mission page</source>
+        <translation>Missionsseite</translation>
+    </message>
+    <message>
+        <source>Live telemetry page</source>
+        <translation>Live-Telemetrie-Seite</translation>
+    </message>
+    <message>
+        <source>Save the route on the server</source>
+        <translation>Route auf dem Server speichern</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <source>Delete the selected waypoints</source>
+        <translation>Ausgewählte Wegpunkte löschen</translation>
+    </message>
+    <message>
+        <source>Process the route on the server</source>
+        <translation>Route auf dem Server verarbeiten</translation>
+    </message>
+    <message>
+        <source>Choose the map source</source>
+        <translation>Kartenquelle wählen</translation>
+    </message>
+    <message>
+        <source>Focus the map (then arrows and +/− move it)</source>
+        <translation>Karte fokussieren (dann bewegen Pfeiltasten und +/− sie)</translation>
+    </message>
+    <message>
+        <source>Full screen on or off</source>
+        <translation>Vollbild ein oder aus</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Beenden</translation>
+    </message>
+</context>
+<context>
+    <name>StatusBar</name>
+    <message>
+        <source>zoom %1</source>
+        <translation>Zoom %1</translation>
+    </message>
+</context>
+<context>
+    <name>TelemetryPage</name>
+    <message>
+        <source>Vehicles</source>
+        <translation>Fahrzeuge</translation>
+    </message>
+    <message>
+        <source>No vehicles. Log in to a server or connect a VCI vehicle.</source>
+        <translation>Keine Fahrzeuge. Melden Sie sich an einem Server an oder verbinden Sie ein VCI-Fahrzeug.</translation>
+    </message>
+    <message>
+        <source>Command together with the other ticked vehicles</source>
+        <translation>Zusammen mit den anderen markierten Fahrzeugen steuern</translation>
+    </message>
+    <message>
+        <source>Vehicle %1</source>
+        <translation>Fahrzeug %1</translation>
+    </message>
+    <message>
+        <source>A vehicle reached directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600</source>
+        <translation>Ein direkt über VCI erreichtes Fahrzeug: tcp://host:port oder serial:///dev/ttyX?baud=57600</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Hinzufügen</translation>
+    </message>
+    <message>
+        <source>Fit all</source>
+        <translation>Alle zeigen</translation>
+    </message>
+    <message>
+        <source>Show every vehicle on the map</source>
+        <translation>Alle Fahrzeuge auf der Karte zeigen</translation>
+    </message>
+    <message>
+        <source>Follow</source>
+        <translation>Folgen</translation>
+    </message>
+    <message>
+        <source>Keep the chosen vehicle in the middle of the map</source>
+        <translation>Das gewählte Fahrzeug in der Kartenmitte halten</translation>
+    </message>
+    <message>
+        <source>Fly %1 to %2?</source>
+        <translation>%1 nach %2 fliegen lassen?</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Rückkehr</translation>
+    </message>
+    <message>
+        <source>Too close: %1</source>
+        <translation>Zu nah: %1</translation>
+    </message>
+    <message>
+        <source>Airspace: %1</source>
+        <translation>Luftraum: %1</translation>
+    </message>
+    <message>
+        <source>Plot this field too</source>
+        <translation>Dieses Feld auch darstellen</translation>
+    </message>
+    <message>
+        <source>1 min</source>
+        <translation>1 min</translation>
+    </message>
+    <message>
+        <source>5 min</source>
+        <translation>5 min</translation>
+    </message>
+    <message>
+        <source>30 min</source>
+        <translation>30 min</translation>
+    </message>
+    <message>
+        <source>Remove from the plot</source>
+        <translation>Aus dem Diagramm entfernen</translation>
+    </message>
+    <message>
+        <source>All vehicles</source>
+        <translation>Alle Fahrzeuge</translation>
+    </message>
+    <message>
+        <source>Compare these fields across every vehicle</source>
+        <translation>Diese Felder über alle Fahrzeuge vergleichen</translation>
+    </message>
+</context>
+<context>
+    <name>UploadQuestion</name>
+    <message>
+        <source>Upload the route?</source>
+        <translation>Route hochladen?</translation>
+    </message>
+    <message>
+        <source>Upload without saving</source>
+        <translation>Ohne Speichern hochladen</translation>
+    </message>
+    <message>
+        <source>Upload</source>
+        <translation>Hochladen</translation>
+    </message>
+    <message>
+        <source>Save and upload</source>
+        <translation>Speichern und hochladen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
+    <name>WaypointTable</name>
+    <message numerus="yes">
+        <source>%n selected:</source>
+        <translation>
+            <numerusform>%n ausgewählt:</numerusform>
+            <numerusform>%n ausgewählt:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>alt m</source>
+        <translation>Höhe m</translation>
+    </message>
+    <message>
+        <source>Set</source>
+        <translation>Setzen</translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>Altitude above ground (AGL) or above mean sea level (AMSL)</source>
+        <translation>Höhe über Grund (AGL) oder über dem mittleren Meeresspiegel (AMSL)</translation>
+    </message>
+    <message>
+        <source>Heights:</source>
+        <translation>Höhen:</translation>
+    </message>
+    <message>
+        <source>as set</source>
+        <translation>wie gesetzt</translation>
+    </message>
+    <message>
+        <source>all AMSL</source>
+        <translation>alle AMSL</translation>
+    </message>
+    <message>
+        <source>all AGL</source>
+        <translation>alle AGL</translation>
+    </message>
+    <message>
+        <source>AMSL and AGL are converted through the ground under each waypoint</source>
+        <translation>AMSL und AGL werden über das Gelände unter jedem Wegpunkt umgerechnet</translation>
+    </message>
+    <message>
+        <source>ground: %1</source>
+        <translation>Gelände: %1</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <source>Latitude</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Longitude</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>Alt</source>
+        <translation>Höhe</translation>
+    </message>
+    <message>
+        <source>AMSL</source>
+        <translation>AMSL</translation>
+    </message>
+    <message>
+        <source>AGL</source>
+        <translation>AGL</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Ground</source>
+        <translation>Gelände</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Geschw.</translation>
+    </message>
+    <message>
+        <source>Actions</source>
+        <translation>Aktionen</translation>
+    </message>
+    <message>
+        <source>Area scan</source>
+        <translation>Flächenscan</translation>
+    </message>
+</context>
+<context>
+    <name>ZonePanel</name>
+    <message>
+        <source>Load zones</source>
+        <translation>Zonen laden</translation>
+    </message>
+    <message>
+        <source>Zones (*.geojson *.json *.kml *.plan)</source>
+        <translation>Zonen (*.geojson *.json *.kml *.plan)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Zones (%1)</source>
+        <translation>Zonen (%1)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Rückgängig</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Wiederholen</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Laden…</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Polygon</translation>
+    </message>
+    <message>
+        <source>Click the corners on the map, then Create</source>
+        <translation>Ecken auf der Karte anklicken, dann Erstellen</translation>
+    </message>
+    <message>
+        <source>Circle</source>
+        <translation>Kreis</translation>
+    </message>
+    <message>
+        <source>Click the centre on the map; drag its handle for the radius</source>
+        <translation>Mittelpunkt auf der Karte anklicken; den Griff ziehen, um den Radius einzustellen</translation>
+    </message>
+    <message>
+        <source>%1 corners</source>
+        <translation>%1 Ecken</translation>
+    </message>
+    <message>
+        <source>Create</source>
+        <translation>Erstellen</translation>
+    </message>
+    <message>
+        <source>Checked against the route when ticked</source>
+        <translation>Wird bei Haken gegen die Route geprüft</translation>
+    </message>
+    <message>
+        <source>%1 · %2 – %3</source>
+        <translation>%1 · %2 – %3</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Art</translation>
+    </message>
+    <message>
+        <source>Floor (m)</source>
+        <translation>Untergrenze (m)</translation>
+    </message>
+    <message>
+        <source>ground</source>
+        <translation>Boden</translation>
+    </message>
+    <message>
+        <source>Ceiling (m)</source>
+        <translation>Obergrenze (m)</translation>
+    </message>
+    <message>
+        <source>unlimited</source>
+        <translation>unbegrenzt</translation>
+    </message>
+    <message>
+        <source>Above</source>
+        <translation>Bezug</translation>
+    </message>
+    <message>
+        <source>Remove zone</source>
+        <translation>Zone entfernen</translation>
+    </message>
+    <message>
+        <source>Warn within (m)</source>
+        <translation>Warnen innerhalb (m)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie</name>
+    <message>
+        <source>Sortie: mission planning and live telemetry for UgCS servers and VCI vehicles.</source>
+        <translation>Sortie: Missionsplanung und Live-Telemetrie für UgCS-Server und VCI-Fahrzeuge.</translation>
+    </message>
+    <message>
+        <source>Start the built-in simulator on this computer and connect to it.</source>
+        <translation>Den eingebauten Simulator auf diesem Computer starten und sich mit ihm verbinden.</translation>
+    </message>
+    <message>
+        <source>UgCS server to connect to.</source>
+        <translation>UgCS-Server, mit dem verbunden wird.</translation>
+    </message>
+    <message>
+        <source>User name to log in with.</source>
+        <translation>Benutzername für die Anmeldung.</translation>
+    </message>
+    <message>
+        <source>Connect a vehicle directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600.</source>
+        <translation>Ein Fahrzeug direkt über VCI verbinden: tcp://host:port oder serial:///dev/ttyX?baud=57600.</translation>
+    </message>
+    <message>
+        <source>Print the start-up time and memory in use, then quit (for benchmarks).</source>
+        <translation>Startzeit und belegten Speicher ausgeben, dann beenden (für Benchmarks).</translation>
+    </message>
+    <message>
+        <source>Folder for autosaved edits (default: the application data folder; also SORTIE_AUTOSAVE_DIR).</source>
+        <translation>Ordner für automatisch gesicherte Änderungen (Standard: der Anwendungsdatenordner; auch SORTIE_AUTOSAVE_DIR).</translation>
+    </message>
+    <message>
+        <source>SRTM .hgt terrain tiles (a tile or a folder), asked before the server (also the setting terrain/demFolder).</source>
+        <translation>SRTM-.hgt-Geländekacheln (eine Kachel oder ein Ordner), vor dem Server abgefragt (auch die Einstellung terrain/demFolder).</translation>
+    </message>
+    <message>
+        <source>An ADS-B receiver&apos;s SBS-1 feed for manned traffic, as dump1090 serves it (port 30003); also the setting traffic/sbsAddress.</source>
+        <translation>SBS-1-Feed eines ADS-B-Empfängers für bemannten Verkehr, wie ihn dump1090 liefert (Port 30003); auch die Einstellung traffic/sbsAddress.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ServerZones</name>
+    <message>
+        <source>Zones across the ±180° meridian are not supported; the view was not asked about.</source>
+        <translation>Zonen über den Meridian ±180° hinweg werden nicht unterstützt; für diesen Ausschnitt wurde nicht angefragt.</translation>
+    </message>
+    <message>
+        <source>The server&apos;s no-fly zones could not be read: %1</source>
+        <translation>Die Flugverbotszonen des Servers konnten nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not saved: not connected to the server.</source>
+        <translation>Zone „%1“ wurde nicht gespeichert: keine Verbindung zum Server.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; cannot be saved on the server: %2.</source>
+        <translation>Zone „%1“ kann nicht auf dem Server gespeichert werden: %2.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not saved: %2</source>
+        <translation>Zone „%1“ wurde nicht gespeichert: %2</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not saved: it is locked (%2)</source>
+        <translation>Zone „%1“ wurde nicht gespeichert: Sie ist gesperrt (%2)</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was saved, but the server&apos;s answer cannot be read back: %2</source>
+        <translation>Zone „%1“ wurde gespeichert, aber die Antwort des Servers kann nicht zurückgelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: it is not on the server.</source>
+        <translation>Zone „%1“ wurde nicht gelöscht: nicht auf dem Server vorhanden.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: aerodrome zones are the server&apos;s own.</source>
+        <translation>Zone „%1“ wurde nicht gelöscht: Flugplatzzonen gehören dem Server.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: not connected to the server.</source>
+        <translation>Zone „%1“ wurde nicht gelöscht: keine Verbindung zum Server.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: it is locked (%2)</source>
+        <translation>Zone „%1“ wurde nicht gelöscht: gesperrt (%2)</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: %2</source>
+        <translation>Zone „%1“ wurde nicht gelöscht: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ZoneAlertMonitor</name>
+    <message>
+        <source>%1 is inside &apos;%2&apos;</source>
+        <translation>%1 ist in „%2“</translation>
+    </message>
+    <message>
+        <source>%1 enters &apos;%2&apos;%3</source>
+        <translation>%1 fliegt in „%2“ ein%3</translation>
+    </message>
+    <message>
+        <source>%1 is outside &apos;%2&apos;</source>
+        <translation>%1 ist außerhalb von „%2“</translation>
+    </message>
+    <message>
+        <source>%1 leaves &apos;%2&apos;%3</source>
+        <translation>%1 verlässt „%2“%3</translation>
+    </message>
+    <message>
+        <source> (its height there is unknown)</source>
+        <translation> (seine Höhe dort ist unbekannt)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ZoneEditor</name>
+    <message>
+        <source>A zone needs at least three corners.</source>
+        <translation>Eine Zone braucht mindestens drei Ecken.</translation>
+    </message>
+    <message>
+        <source>This polygon cannot be a zone: %1</source>
+        <translation>Dieses Polygon kann keine Zone sein: %1</translation>
+    </message>
+    <message>
+        <source>Draw zone</source>
+        <translation>Zone zeichnen</translation>
+    </message>
+    <message>
+        <source>A circular zone needs a centre and a radius above 0 m.</source>
+        <translation>Eine Kreiszone braucht einen Mittelpunkt und einen Radius über 0 m.</translation>
+    </message>
+    <message>
+        <source>Draw circular zone</source>
+        <translation>Kreiszone zeichnen</translation>
+    </message>
+    <message>
+        <source>There is no drawn zone %1.</source>
+        <translation>Es gibt keine gezeichnete Zone %1.</translation>
+    </message>
+    <message>
+        <source>Remove zone</source>
+        <translation>Zone entfernen</translation>
+    </message>
+    <message>
+        <source>That is not a position.</source>
+        <translation>Das ist keine Position.</translation>
+    </message>
+    <message>
+        <source>A circle has only its centre to move.</source>
+        <translation>Bei einem Kreis lässt sich nur der Mittelpunkt verschieben.</translation>
+    </message>
+    <message>
+        <source>The zone has no corner %1.</source>
+        <translation>Die Zone hat keine Ecke %1.</translation>
+    </message>
+    <message>
+        <source>Move zone corner</source>
+        <translation>Zonenecke verschieben</translation>
+    </message>
+    <message>
+        <source>A corner can be added only to a polygon, on one of its edges.</source>
+        <translation>Eine Ecke kann nur einem Polygon hinzugefügt werden, auf einer seiner Kanten.</translation>
+    </message>
+    <message>
+        <source>Add zone corner</source>
+        <translation>Zonenecke hinzufügen</translation>
+    </message>
+    <message>
+        <source>A zone keeps at least three corners.</source>
+        <translation>Eine Zone behält mindestens drei Ecken.</translation>
+    </message>
+    <message>
+        <source>Remove zone corner</source>
+        <translation>Zonenecke entfernen</translation>
+    </message>
+    <message>
+        <source>The radius must be above 0 m.</source>
+        <translation>Der Radius muss über 0 m liegen.</translation>
+    </message>
+    <message>
+        <source>Only a circular zone has a radius.</source>
+        <translation>Nur eine Kreiszone hat einen Radius.</translation>
+    </message>
+    <message>
+        <source>Zone radius</source>
+        <translation>Zonenradius</translation>
+    </message>
+    <message>
+        <source>A zone needs a name.</source>
+        <translation>Eine Zone braucht einen Namen.</translation>
+    </message>
+    <message>
+        <source>Rename zone</source>
+        <translation>Zone umbenennen</translation>
+    </message>
+    <message>
+        <source>A zone is an exclusion or an inclusion zone, not &quot;%1&quot;.</source>
+        <translation>Eine Zone ist eine Ausschluss- oder Einschlusszone (exclusion/inclusion), nicht „%1“.</translation>
+    </message>
+    <message>
+        <source>Zone kind</source>
+        <translation>Zonenart</translation>
+    </message>
+    <message>
+        <source>Heights are AMSL, AGL or HOME, not &quot;%1&quot;.</source>
+        <translation>Höhen sind AMSL, AGL oder HOME, nicht „%1“.</translation>
+    </message>
+    <message>
+        <source>A floor or ceiling is a number of metres, or empty.</source>
+        <translation>Eine Unter- oder Obergrenze ist eine Zahl in Metern oder leer.</translation>
+    </message>
+    <message>
+        <source>The ceiling (%1 m) must be above the floor (%2 m).</source>
+        <translation>Die Obergrenze (%1 m) muss über der Untergrenze (%2 m) liegen.</translation>
+    </message>
+    <message>
+        <source>Zone floor and ceiling</source>
+        <translation>Unter- und Obergrenze der Zone</translation>
+    </message>
+    <message>
+        <source>The zone would not be a valid polygon: %1</source>
+        <translation>Die Zone wäre kein gültiges Polygon: %1</translation>
+    </message>
+    <message>
+        <source>Zone %1</source>
+        <translation>Zone %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client</name>
+    <message>
+        <source>%1 Fix it before %2.</source>
+        <translation>%1 Bitte vor dem %2 beheben.</translation>
+    </message>
+    <message>
+        <source>%1 (and %n more error(s)) Fix them before %2.</source>
+        <translation>%1 (und weitere Fehler: %n) Bitte vor dem %2 beheben.</translation>
+    </message>
+    <message>
+        <source>Upload</source>
+        <translation>Hochladen</translation>
+    </message>
+    <message>
+        <source>uploading</source>
+        <translation>Hochladen</translation>
+    </message>
+    <message>
+        <source>Saving</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>saving</source>
+        <translation>Speichern</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::AutosaveRecovery</name>
+    <message>
+        <source>The autosaved edits in %1 cannot be read: %2</source>
+        <translation>Die automatisch gesicherten Änderungen in %1 können nicht gelesen werden: %2</translation>
+    </message>
+    <message>
+        <source>The autosaved edits in %1 cannot be read (%2). The file was kept as %3.</source>
+        <translation>Die automatisch gesicherten Änderungen in %1 können nicht gelesen werden (%2). Die Datei wurde als %3 aufbewahrt.</translation>
+    </message>
+    <message>
+        <source>The autosaved edits in %1 cannot be read (%2).</source>
+        <translation>Die automatisch gesicherten Änderungen in %1 können nicht gelesen werden (%2).</translation>
+    </message>
+    <message>
+        <source>Untitled route</source>
+        <translation>Unbenannte Route</translation>
+    </message>
+    <message>
+        <source>route %1, version %2</source>
+        <translation>Route %1, Version %2</translation>
+    </message>
+    <message>
+        <source>, on %1</source>
+        <translation>, auf %1</translation>
+    </message>
+    <message>
+        <source> as %1</source>
+        <translation> als %1</translation>
+    </message>
+    <message>
+        <source>The route open now has unsaved edits, and restoring would replace it: save or undo them first.</source>
+        <translation>Die geöffnete Route hat ungespeicherte Änderungen, und das Wiederherstellen würde sie ersetzen: Speichern Sie sie zuerst oder machen Sie sie rückgängig.</translation>
+    </message>
+    <message>
+        <source>%1 as %2</source>
+        <translation>%1 als %2</translation>
+    </message>
+    <message>
+        <source>These edits belong to route %1 on %2, and saving them updates that route. Sign in to %2 to restore them: choose Later, sign in, and they are offered again.</source>
+        <translation>Diese Änderungen gehören zu Route %1 auf %2, und ihr Speichern aktualisiert diese Route. Melden Sie sich bei %2 an, um sie wiederherzustellen: Wählen Sie Später, melden Sie sich an, dann werden sie erneut angeboten.</translation>
+    </message>
+    <message>
+        <source>These edits belong to route %1 on %2, but this session is signed in to %3 as %4. Sign out and sign in to %2 to restore them; until then they are kept and offered again at each start.</source>
+        <translation>Diese Änderungen gehören zu Route %1 auf %2, aber diese Sitzung ist bei %3 als %4 angemeldet. Melden Sie sich ab und bei %2 an, um sie wiederherzustellen; bis dahin bleiben sie erhalten und werden bei jedem Start erneut angeboten.</translation>
+    </message>
+    <message>
+        <source>Restore autosaved edits</source>
+        <translation>Automatisch gesicherte Änderungen wiederherstellen</translation>
+    </message>
+    <message>
+        <source>The autosave %1 could not be moved aside.</source>
+        <translation>Die automatische Sicherung %1 konnte nicht beiseitegelegt werden.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::CommandPolicy</name>
+    <message>
+        <source>Manual</source>
+        <translation>Manuell</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Halten</translation>
+    </message>
+    <message>
+        <source>Taking off</source>
+        <translation>Startet</translation>
+    </message>
+    <message>
+        <source>Auto (fly the mission)</source>
+        <translation>Auto (Mission fliegen)</translation>
+    </message>
+    <message>
+        <source>Guided</source>
+        <translation>Geführt</translation>
+    </message>
+    <message>
+        <source>Land</source>
+        <translation>Landung</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Rückkehr</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Unbekannt</translation>
+    </message>
+    <message>
+        <source>the vehicle</source>
+        <translation>das Fahrzeug</translation>
+    </message>
+    <message>
+        <source>Arm %1? Its motors may start.</source>
+        <translation>Soll %1 scharf geschaltet werden? Die Motoren können anlaufen.</translation>
+    </message>
+    <message>
+        <source>Disarm %1? It may be in the air, and would fall.</source>
+        <translation>Soll %1 entschärft werden? Ist es in der Luft, stürzt es ab.</translation>
+    </message>
+    <message>
+        <source>Take off with %1 to %2 m above home?</source>
+        <translation>Soll %1 auf %2 m über dem Home-Punkt starten?</translation>
+    </message>
+    <message numerus="yes">
+        <source>Start the mission on %1 (%n waypoint(s))?</source>
+        <translation>
+            <numerusform>Mission auf %1 starten (%n Wegpunkt)?</numerusform>
+            <numerusform>Mission auf %1 starten (%n Wegpunkte)?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Start the mission on %1? Sortie has not seen its mission.</source>
+        <translation>Mission auf %1 starten? Sortie kennt die Mission an Bord nicht.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::ConnectionController</name>
+    <message>
+        <source>connection lost; attempt %1 in %2 s</source>
+        <translation>Verbindung verloren; Versuch %1 in %2 s</translation>
+    </message>
+    <message>
+        <source>reconnected in a new session</source>
+        <translation>in einer neuen Sitzung wieder verbunden</translation>
+    </message>
+    <message>
+        <source>%1 at %2</source>
+        <translation>%1 bei %2</translation>
+    </message>
+    <message>
+        <source>The server address is not usable: %1.</source>
+        <translation>Die Serveradresse ist nicht verwendbar: %1.</translation>
+    </message>
+    <message>
+        <source>Enter a user name.</source>
+        <translation>Geben Sie einen Benutzernamen ein.</translation>
+    </message>
+    <message>
+        <source>%1. Check the server&apos;s address and this computer&apos;s network.</source>
+        <translation>%1. Prüfen Sie die Serveradresse und das Netzwerk dieses Computers.</translation>
+    </message>
+    <message>
+        <source>%1. Is the UgCS server running, and is the port right?</source>
+        <translation>%1. Läuft der UgCS-Server, und stimmt der Port?</translation>
+    </message>
+    <message>
+        <source>Wrong user name or password (%1).</source>
+        <translation>Falscher Benutzername oder falsches Passwort (%1).</translation>
+    </message>
+    <message>
+        <source>%1. This server cannot be used with Sortie.</source>
+        <translation>%1. Dieser Server kann nicht mit Sortie verwendet werden.</translation>
+    </message>
+    <message>
+        <source>The server&apos;s licence allows no more connections (%1). Close another client or extend the licence.</source>
+        <translation>Die Lizenz des Servers erlaubt keine weiteren Verbindungen (%1). Schließen Sie einen anderen Client oder erweitern Sie die Lizenz.</translation>
+    </message>
+    <message>
+        <source>The server did not answer in time (%1). It may be overloaded or not a UgCS server.</source>
+        <translation>Der Server hat nicht rechtzeitig geantwortet (%1). Er ist möglicherweise überlastet oder kein UgCS-Server.</translation>
+    </message>
+    <message>
+        <source>The connection was closed (%1).</source>
+        <translation>Die Verbindung wurde geschlossen (%1).</translation>
+    </message>
+    <message>
+        <source>The server answered something Sortie cannot use (%1).</source>
+        <translation>Der Server hat etwas geantwortet, das Sortie nicht verwenden kann (%1).</translation>
+    </message>
+    <message>
+        <source>The server refused: %1</source>
+        <translation>Der Server hat abgelehnt: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::FleetRoutes</name>
+    <message>
+        <source>Unnamed route</source>
+        <translation>Unbenannte Route</translation>
+    </message>
+    <message>
+        <source>planned</source>
+        <translation>geplant</translation>
+    </message>
+    <message>
+        <source>uploaded %1</source>
+        <translation>hochgeladen %1</translation>
+    </message>
+    <message>
+        <source>paused: waypoint %1 of %2</source>
+        <translation>pausiert: Wegpunkt %1 von %2</translation>
+    </message>
+    <message>
+        <source>flying: waypoint %1 of %2</source>
+        <translation>fliegt: Wegpunkt %1 von %2</translation>
+    </message>
+    <message>
+        <source>flown</source>
+        <translation>geflogen</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::MissionController</name>
+    <message>
+        <source>Reading the server&apos;s routes</source>
+        <translation>Routen des Servers werden gelesen</translation>
+    </message>
+    <message>
+        <source>The server&apos;s routes could not be read: %1</source>
+        <translation>Die Routen des Servers konnten nicht gelesen werden: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1%n segment(s)</source>
+        <translation>
+            <numerusform>%1%n Segment</numerusform>
+            <numerusform>%1%n Segmente</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Reading the server&apos;s vehicles</source>
+        <translation>Fahrzeuge des Servers werden gelesen</translation>
+    </message>
+    <message>
+        <source>Opening the route</source>
+        <translation>Route wird geöffnet</translation>
+    </message>
+    <message>
+        <source>The route could not be opened: %1</source>
+        <translation>Die Route konnte nicht geöffnet werden: %1</translation>
+    </message>
+    <message>
+        <source>The route cannot be edited here: %1</source>
+        <translation>Die Route kann hier nicht bearbeitet werden: %1</translation>
+    </message>
+    <message>
+        <source>Opened %1 (version %2).</source>
+        <translation>%1 geöffnet (Version %2).</translation>
+    </message>
+    <message>
+        <source>Not connected: your edits are kept; save again when the connection is back.</source>
+        <translation>Keine Verbindung: Ihre Änderungen bleiben erhalten; speichern Sie erneut, wenn die Verbindung wieder besteht.</translation>
+    </message>
+    <message>
+        <source>Wait until %1 is done.</source>
+        <translation>Bitte warten, bis der laufende Vorgang abgeschlossen ist: %1.</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>Nicht gespeichert: %1</translation>
+    </message>
+    <message>
+        <source>Saving</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>Locking the route</source>
+        <translation>Route wird gesperrt</translation>
+    </message>
+    <message>
+        <source>Not saved: the route is locked (%1).</source>
+        <translation>Nicht gespeichert: Die Route ist gesperrt (%1).</translation>
+    </message>
+    <message>
+        <source>Reading the server&apos;s copy</source>
+        <translation>Fassung des Servers wird gelesen</translation>
+    </message>
+    <message>
+        <source>Someone else saved this route on the server (version %1) after you opened it (version %2).</source>
+        <translation>Jemand anderes hat diese Route auf dem Server gespeichert (Version %1), nachdem Sie sie geöffnet haben (Version %2).</translation>
+    </message>
+    <message>
+        <source>Saved, but the server&apos;s answer cannot be read back: %1</source>
+        <translation>Gespeichert, aber die Antwort des Servers kann nicht zurückgelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1 (version %2).</source>
+        <translation>%1 gespeichert (Version %2).</translation>
+    </message>
+    <message>
+        <source>Take the server&apos;s version</source>
+        <translation>Fassung des Servers übernehmen</translation>
+    </message>
+    <message>
+        <source>This is the server&apos;s copy now. Undo brings your edits back.</source>
+        <translation>Dies ist jetzt die Fassung des Servers. Rückgängig holt Ihre Änderungen zurück.</translation>
+    </message>
+    <message>
+        <source>This route was deleted on the server. Your copy stays open.</source>
+        <translation>Diese Route wurde auf dem Server gelöscht. Ihre Kopie bleibt geöffnet.</translation>
+    </message>
+    <message>
+        <source>Updated from the server (version %1).</source>
+        <translation>Vom Server aktualisiert (Version %1).</translation>
+    </message>
+    <message>
+        <source>Someone else saved this route on the server (version %1) while you were editing it.</source>
+        <translation>Jemand anderes hat diese Route auf dem Server gespeichert (Version %1), während Sie sie bearbeitet haben.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::MissionUploader</name>
+    <message>
+        <source>Checking the route</source>
+        <translation>Route wird geprüft</translation>
+    </message>
+    <message>
+        <source>Waiting for your answer</source>
+        <translation>Warten auf Ihre Antwort</translation>
+    </message>
+    <message>
+        <source>Processing for %1</source>
+        <translation>Verarbeitung für %1</translation>
+    </message>
+    <message>
+        <source>Taking control of %1</source>
+        <translation>Kontrolle über %1 wird übernommen</translation>
+    </message>
+    <message>
+        <source>Uploading to %1</source>
+        <translation>Hochladen auf %1</translation>
+    </message>
+    <message>
+        <source>Releasing %1</source>
+        <translation>%1 wird freigegeben</translation>
+    </message>
+    <message>
+        <source>Reading the mission back from %1</source>
+        <translation>Mission wird von %1 zurückgelesen</translation>
+    </message>
+    <message>
+        <source>upload &quot;%1&quot;</source>
+        <translation>„%1“ hochladen</translation>
+    </message>
+    <message>
+        <source>route</source>
+        <translation>Route</translation>
+    </message>
+    <message>
+        <source>Upload to %1 failed: the vehicle is gone (its connection was closed).</source>
+        <translation>Hochladen auf %1 fehlgeschlagen: Das Fahrzeug ist nicht mehr da (seine Verbindung wurde geschlossen).</translation>
+    </message>
+    <message>
+        <source>the vehicle is gone</source>
+        <translation>das Fahrzeug ist nicht mehr da</translation>
+    </message>
+    <message>
+        <source>Not uploaded: %1</source>
+        <translation>Nicht hochgeladen: %1</translation>
+    </message>
+    <message>
+        <source>Too late to cancel: the mission is being sent to %1.</source>
+        <translation>Zu spät zum Abbrechen: Die Mission wird gerade an %1 gesendet.</translation>
+    </message>
+    <message>
+        <source>Upload to %1 cancelled; nothing was sent.</source>
+        <translation>Hochladen auf %1 abgebrochen; es wurde nichts gesendet.</translation>
+    </message>
+    <message>
+        <source>Upload to %1 failed: the vehicle has no link.</source>
+        <translation>Hochladen auf %1 fehlgeschlagen: Das Fahrzeug hat keine Verbindung.</translation>
+    </message>
+    <message>
+        <source>no link</source>
+        <translation>keine Verbindung</translation>
+    </message>
+    <message>
+        <source>Not uploaded to %1: %2</source>
+        <translation>Nicht auf %1 hochgeladen: %2</translation>
+    </message>
+    <message>
+        <source>the route&apos;s fence is not sent: %1 keeps no fence (HCI)</source>
+        <translation>der Geofence der Route wird nicht gesendet: %1 speichert keinen Geofence (HCI)</translation>
+    </message>
+    <message>
+        <source>Upload to %1 failed: %2</source>
+        <translation>Hochladen auf %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>Uploaded to %1, but it could not be read back: %2</source>
+        <translation>Auf %1 hochgeladen, aber das Zurücklesen schlug fehl: %2</translation>
+    </message>
+    <message>
+        <source>Uploaded to %1, but it holds something else: %2</source>
+        <translation>Auf %1 hochgeladen, aber es enthält etwas anderes: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Uploaded to %1: %n waypoint(s).</source>
+        <translation>
+            <numerusform>Auf %1 hochgeladen: %n Wegpunkt.</numerusform>
+            <numerusform>Auf %1 hochgeladen: %n Wegpunkte.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Note: %1</source>
+        <translation>Hinweis: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::RouteAutosave</name>
+    <message>
+        <source>No free autosave slot in %1: edits are not autosaved.</source>
+        <translation>Kein freier Platz für automatische Sicherungen in %1: Änderungen werden nicht automatisch gesichert.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::RouteDocument</name>
+    <message>
+        <source>Import failed: %1</source>
+        <translation>Import fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Import failed: %1 holds no route.</source>
+        <translation>Import fehlgeschlagen: %1 enthält keine Route.</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Import von %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n segment(s) from %1.</source>
+        <translation>
+            <numerusform>%n Segment aus %1 importiert.</numerusform>
+            <numerusform>%n Segmente aus %1 importiert.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The file holds %1 routes; this is the first (&quot;%2&quot;).</source>
+        <translation>Die Datei enthält %1 Routen; dies ist die erste („%2“).</translation>
+    </message>
+    <message>
+        <source>Export failed: %1</source>
+        <translation>Export fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation>Exportiert nach %1.</translation>
+    </message>
+    <message>
+        <source>Not representable there: %1</source>
+        <translation>Dort nicht darstellbar: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::RoutePreparation</name>
+    <message>
+        <source>Choose the vehicle to %1 for.</source>
+        <translation>Wählen Sie das Fahrzeug, für das %1 werden soll.</translation>
+    </message>
+    <message>
+        <source>process the route</source>
+        <translation>die Route verarbeitet</translation>
+    </message>
+    <message>
+        <source>%1 has no link.</source>
+        <translation>%1 hat keine Verbindung.</translation>
+    </message>
+    <message>
+        <source>Processing for %1…</source>
+        <translation>Verarbeitung für %1…</translation>
+    </message>
+    <message>
+        <source>Not processed for %1: %2</source>
+        <translation>Nicht für %1 verarbeitet: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Processed for %1: %n waypoint(s) to fly.</source>
+        <translation>
+            <numerusform>Für %1 verarbeitet: %n Wegpunkt zu fliegen.</numerusform>
+            <numerusform>Für %1 verarbeitet: %n Wegpunkte zu fliegen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>upload</source>
+        <translation>hochgeladen</translation>
+    </message>
+    <message>
+        <source>An upload is waiting for your answer.</source>
+        <translation>Ein Upload wartet auf Ihre Antwort.</translation>
+    </message>
+    <message>
+        <source>Wait until %1 is done.</source>
+        <translation>Bitte warten, bis der laufende Vorgang abgeschlossen ist: %1.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::UploadReview</name>
+    <message>
+        <source>The route has edits that are not saved: the vehicle would fly what is on screen, not what the server holds.</source>
+        <translation>Die Route hat ungespeicherte Änderungen: Das Fahrzeug würde fliegen, was auf dem Bildschirm ist, nicht was der Server hat.</translation>
+    </message>
+    <message>
+        <source>The route has %n warning(s):</source>
+        <translation>Die Route hat %n Warnung(en):</translation>
+    </message>
+    <message>
+        <source>Upload to %1?</source>
+        <translation>Auf %1 hochladen?</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::VehicleFleet</name>
+    <message>
+        <source>%1: %2 done.</source>
+        <translation>%1: %2 erledigt.</translation>
+    </message>
+    <message>
+        <source>%1: %2 failed: %3</source>
+        <translation>%1: %2 fehlgeschlagen: %3</translation>
+    </message>
+    <message>
+        <source>The server&apos;s vehicles could not be read: %1</source>
+        <translation>Die Fahrzeuge des Servers konnten nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>Not a VCI address: %1</source>
+        <translation>Keine VCI-Adresse: %1</translation>
+    </message>
+    <message>
+        <source>go to %1, %2 at %3 m</source>
+        <translation>Flug zu %1, %2 auf %3 m</translation>
+    </message>
+    <message>
+        <source>%1: flying to the clicked point.</source>
+        <translation>%1: fliegt zum angeklickten Punkt.</translation>
+    </message>
+    <message>
+        <source>%1: go-to failed: %2</source>
+        <translation>%1: Flug zum Punkt fehlgeschlagen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::VehicleGroup</name>
+    <message>
+        <source>%1 (%2 m)</source>
+        <translation>%1 (%2 m)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%n waypoint(s))</source>
+        <translation>
+            <numerusform>%1 (%n Wegpunkt)</numerusform>
+            <numerusform>%1 (%n Wegpunkte)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Arm %n vehicle(s): %1? Their motors may start.</source>
+        <translation>
+            <numerusform>%n Fahrzeug scharf schalten: %1? Die Motoren können anlaufen.</numerusform>
+            <numerusform>%n Fahrzeuge scharf schalten: %1? Die Motoren können anlaufen.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Disarm %n vehicle(s): %1? One in the air would fall.</source>
+        <translation>
+            <numerusform>%n Fahrzeug entschärfen: %1? Ist es in der Luft, stürzt es ab.</numerusform>
+            <numerusform>%n Fahrzeuge entschärfen: %1? Eines in der Luft würde abstürzen.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Take off with %n vehicle(s) to their altitudes above home: %1?</source>
+        <translation>
+            <numerusform>Mit %n Fahrzeug auf seine Höhe über dem Home-Punkt starten: %1?</numerusform>
+            <numerusform>Mit %n Fahrzeugen auf ihre Höhen über dem Home-Punkt starten: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Start or resume the mission on %n vehicle(s): %1?</source>
+        <translation>
+            <numerusform>Mission auf %n Fahrzeug starten oder fortsetzen: %1?</numerusform>
+            <numerusform>Mission auf %n Fahrzeugen starten oder fortsetzen: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Pause %n vehicle(s) where they are: %1?</source>
+        <translation>
+            <numerusform>%n Fahrzeug an Ort und Stelle pausieren: %1?</numerusform>
+            <numerusform>%n Fahrzeuge an Ort und Stelle pausieren: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Land %n vehicle(s) where they are: %1?</source>
+        <translation>
+            <numerusform>%n Fahrzeug an Ort und Stelle landen: %1?</numerusform>
+            <numerusform>%n Fahrzeuge an Ort und Stelle landen: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Send %n vehicle(s) home: %1?</source>
+        <translation>
+            <numerusform>%n Fahrzeug zum Home-Punkt schicken: %1?</numerusform>
+            <numerusform>%n Fahrzeuge zum Home-Punkt schicken: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Switch %n vehicle(s) to %2: %1?</source>
+        <translation>
+            <numerusform>%n Fahrzeug in den Modus %2 schalten: %1?</numerusform>
+            <numerusform>%n Fahrzeuge in den Modus %2 schalten: %1?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not sent</source>
+        <translation>nicht gesendet</translation>
+    </message>
+    <message>
+        <source>%1 waiting</source>
+        <translation>%1 wartet</translation>
+    </message>
+    <message>
+        <source>%1 done</source>
+        <translation>%1 erledigt</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 fehlgeschlagen: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %2 of %n vehicle(s) answered — %3.</source>
+        <translation>
+            <numerusform>%1: %2 von %n Fahrzeug hat geantwortet — %3.</numerusform>
+            <numerusform>%1: %2 von %n Fahrzeugen haben geantwortet — %3.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>sortie::deconfliction::FleetConflictRule</name>
+    <message>
+        <source>%1, flying &quot;%2&quot; (its leg %3)</source>
+        <translation>%1 (fliegt „%2“, dort Teilstrecke %3)</translation>
+    </message>
+    <message>
+        <source>%1&apos;s uploaded &quot;%2&quot; (its leg %3) if it starts now</source>
+        <translation>der hochgeladenen Route „%2“ von %1 (dort Teilstrecke %3), falls es jetzt startet</translation>
+    </message>
+    <message>
+        <source>Leg %1 comes within %2 m across and %3 m in height of %4, %5 after the start%6.</source>
+        <translation>Teilstrecke %1 nähert sich %4 auf %2 m seitlich und %3 m in der Höhe, %5 nach dem Start%6.</translation>
+    </message>
+    <message>
+        <source> (heights in different frames: judged across only)</source>
+        <translation> (Höhen in verschiedenen Bezugssystemen: nur seitlich beurteilt)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::deconfliction::ProximityMonitor</name>
+    <message>
+        <source>now</source>
+        <translation>jetzt</translation>
+    </message>
+    <message>
+        <source>in %1 s</source>
+        <translation>in %1 s</translation>
+    </message>
+    <message>
+        <source>%1 and traffic %2: closest %3, %4 across and %5 in height</source>
+        <translation>%1 und Verkehr %2: geringster Abstand %3, %4 seitlich und %5 in der Höhe</translation>
+    </message>
+    <message>
+        <source>%1 and %2: closest %3, %4 across and %5 in height</source>
+        <translation>%1 und %2: geringster Abstand %3, %4 seitlich und %5 in der Höhe</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::endurance::EnduranceAdvisory</name>
+    <message>
+        <source>No vehicle chosen</source>
+        <translation>Kein Fahrzeug gewählt</translation>
+    </message>
+    <message>
+        <source>No energy profile: choose the vehicle&apos;s profile file on the mission page</source>
+        <translation>Kein Energieprofil: Wählen Sie die Profildatei des Fahrzeugs auf der Missionsseite</translation>
+    </message>
+    <message>
+        <source>The vehicle reports no remaining battery</source>
+        <translation>Das Fahrzeug meldet keine Akku-Restkapazität</translation>
+    </message>
+    <message>
+        <source>The vehicle reports no home</source>
+        <translation>Das Fahrzeug meldet keinen Home-Punkt</translation>
+    </message>
+    <message>
+        <source>The vehicle reports no position</source>
+        <translation>Das Fahrzeug meldet keine Position</translation>
+    </message>
+    <message>
+        <source>No mission on board</source>
+        <translation>Keine Mission an Bord</translation>
+    </message>
+    <message>
+        <source>The vehicle cannot make headway home against the wind</source>
+        <translation>Das Fahrzeug kommt gegen den Wind nicht zum Home-Punkt voran</translation>
+    </message>
+    <message>
+        <source>Battery at end of route: %1 · home needs %2</source>
+        <translation>Akku am Routenende: %1 · Rückflug braucht %2</translation>
+    </message>
+    <message>
+        <source>Battery: time to come home — no headway home against the wind</source>
+        <translation>Akku: Zeit für die Rückkehr — gegen den Wind kein Vorankommen zum Home-Punkt</translation>
+    </message>
+    <message>
+        <source>Battery: time to come home — %1 left, home needs %2: the %3 reserve is being used</source>
+        <translation>Akku: Zeit für die Rückkehr — %1 übrig, Rückflug braucht %2: Die Reserve von %3 wird angegriffen</translation>
+    </message>
+    <message>
+        <source>Battery: time to come home — %1 left, home needs %2 and the reserve %3: %4 to spare</source>
+        <translation>Akku: Zeit für die Rückkehr — %1 übrig, Rückflug braucht %2 und die Reserve %3: %4 Spielraum</translation>
+    </message>
+    <message>
+        <source>Return %1 home now? %2</source>
+        <translation>%1 jetzt zum Home-Punkt zurückholen? %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ComparisonController</name>
+    <message>
+        <source>Open a flight log first.</source>
+        <translation>Öffnen Sie zuerst ein Flugprotokoll.</translation>
+    </message>
+    <message>
+        <source>%1 holds no route.</source>
+        <translation>%1 enthält keine Route.</translation>
+    </message>
+    <message>
+        <source>Choose the vehicle to compare on the map or in the list.</source>
+        <translation>Wählen Sie das zu vergleichende Fahrzeug auf der Karte oder in der Liste.</translation>
+    </message>
+    <message>
+        <source>%1 on &quot;%2&quot;: %3 of %4 waypoints reached; cross-track max %5 m, mean %6 m; altitude max %7 m</source>
+        <translation>%1 auf „%2“: %3 von %4 Wegpunkten erreicht; Querablage max %5 m, Mittel %6 m; Höhe max %7 m</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::FlightLogWriter</name>
+    <message>
+        <source>%1: the log cannot use a write-ahead journal</source>
+        <translation>%1: Das Protokoll kann kein Write-Ahead-Journal verwenden</translation>
+    </message>
+    <message>
+        <source>Recording to %1 failed: %2</source>
+        <translation>Aufzeichnung in %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>Recording could not continue in %1: %2</source>
+        <translation>Aufzeichnung konnte in %1 nicht fortgesetzt werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::FlightRecorder</name>
+    <message>
+        <source>The flight log %1 cannot be written: %2</source>
+        <translation>Das Flugprotokoll %1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Recording started</source>
+        <translation>Aufzeichnung gestartet</translation>
+    </message>
+    <message>
+        <source>Recording stopped</source>
+        <translation>Aufzeichnung beendet</translation>
+    </message>
+    <message>
+        <source>Route of 1 waypoint</source>
+        <translation>Route mit 1 Wegpunkt</translation>
+    </message>
+    <message>
+        <source>Route of %1 waypoints</source>
+        <translation>Route mit %1 Wegpunkten</translation>
+    </message>
+    <message>
+        <source>Armed</source>
+        <translation>Scharf geschaltet</translation>
+    </message>
+    <message>
+        <source>Disarmed</source>
+        <translation>Entschärft</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::RecordingSettings</name>
+    <message>
+        <source>In force: %1; %2.</source>
+        <translation>Gültig: %1; %2.</translation>
+    </message>
+    <message>
+        <source>a log up to %1 MB</source>
+        <translation>ein Protokoll bis %1 MB</translation>
+    </message>
+    <message>
+        <source>logs of any size</source>
+        <translation>Protokolle beliebiger Größe</translation>
+    </message>
+    <message>
+        <source>the folder up to %1 MB</source>
+        <translation>der Ordner bis %1 MB</translation>
+    </message>
+    <message>
+        <source>the folder without limit</source>
+        <translation>der Ordner ohne Grenze</translation>
+    </message>
+    <message>
+        <source>A log&apos;s size must be between 1 and %1 MB, or 0 for no limit.</source>
+        <translation>Die Größe eines Protokolls muss zwischen 1 und %1 MB liegen, oder 0 für keine Grenze.</translation>
+    </message>
+    <message>
+        <source>The folder&apos;s size must be between 1 and %1 MB, or 0 for no limit.</source>
+        <translation>Die Größe des Ordners muss zwischen 1 und %1 MB liegen, oder 0 für keine Grenze.</translation>
+    </message>
+    <message>
+        <source>The folder must hold at least one whole log: make its limit at least a log&apos;s size (%1 MB).</source>
+        <translation>Der Ordner muss mindestens ein ganzes Protokoll fassen: Setzen Sie seine Grenze mindestens auf die Protokollgröße (%1 MB).</translation>
+    </message>
+    <message>
+        <source>%1 in 1 log</source>
+        <translation>%1 in 1 Protokoll</translation>
+    </message>
+    <message>
+        <source>%1 in %2 logs</source>
+        <translation>%1 in %2 Protokollen</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ReplayController</name>
+    <message>
+        <source>%1 of 1 vehicle</source>
+        <translation>%1 von 1 Fahrzeug</translation>
+    </message>
+    <message>
+        <source>%1 of %2 vehicles</source>
+        <translation>%1 von %2 Fahrzeugen</translation>
+    </message>
+    <message>
+        <source>No log is open.</source>
+        <translation>Kein Protokoll geöffnet.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an export format (gpx, kml or csv).</source>
+        <translation>„%1“ ist kein Exportformat (gpx, kml oder csv).</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>%1 konnte nicht geschrieben werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ServerHistory</name>
+    <message>
+        <source>not connected to a server</source>
+        <translation>nicht mit einem Server verbunden</translation>
+    </message>
+    <message>
+        <source>The server&apos;s history could not be read: %1</source>
+        <translation>Der Verlauf des Servers konnte nicht gelesen werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ServerHistoryRequest</name>
+    <message>
+        <source>The server lists no vehicles: connect to a server first.</source>
+        <translation>Der Server listet keine Fahrzeuge: Verbinden Sie sich zuerst mit einem Server.</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle.</source>
+        <translation>Wählen Sie ein Fahrzeug.</translation>
+    </message>
+    <message>
+        <source>The start &quot;%1&quot; is not a time like %2 (UTC).</source>
+        <translation>Der Beginn „%1“ ist keine Zeit wie %2 (UTC).</translation>
+    </message>
+    <message>
+        <source>The end &quot;%1&quot; is not a time like %2 (UTC).</source>
+        <translation>Das Ende „%1“ ist keine Zeit wie %2 (UTC).</translation>
+    </message>
+    <message>
+        <source>The start must be before the end.</source>
+        <translation>Der Beginn muss vor dem Ende liegen.</translation>
+    </message>
+    <message>
+        <source>The start is in the future.</source>
+        <translation>Der Beginn liegt in der Zukunft.</translation>
+    </message>
+    <message>
+        <source>At most 24 hours at a time.</source>
+        <translation>Höchstens 24 Stunden auf einmal.</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>The server has no telemetry of %1 from %2 to %3 UTC.</source>
+        <translation>Der Server hat keine Telemetrie von %1 zwischen %2 und %3 UTC.</translation>
+    </message>
+    <message>
+        <source>There is no replay to show it in.</source>
+        <translation>Es gibt keine Wiedergabe, in der sie gezeigt werden kann.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ServerRecording</name>
+    <message>
+        <source>logged in to %1 as %2; recording to %3</source>
+        <translation>angemeldet bei %1 als %2; Aufzeichnung in %3</translation>
+    </message>
+    <message>
+        <source>server: %1</source>
+        <translation>Server: %1</translation>
+    </message>
+    <message>
+        <source>1 vehicle</source>
+        <translation>1 Fahrzeug</translation>
+    </message>
+    <message>
+        <source>%1 vehicles</source>
+        <translation>%1 Fahrzeuge</translation>
+    </message>
+    <message>
+        <source>log closed: %1</source>
+        <translation>Protokoll geschlossen: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles</name>
+    <message>
+        <source>%1: &apos;%2&apos; is not a zoom level (0 to 30).</source>
+        <translation>%1: „%2“ ist keine Zoomstufe (0 bis 30).</translation>
+    </message>
+    <message>
+        <source>bounds: &apos;%1&apos; is not west,south,east,north in degrees.</source>
+        <translation>bounds: „%1“ ist nicht West,Süd,Ost,Nord in Grad.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::MbTilesFile</name>
+    <message>
+        <source>No MBTiles file is set.</source>
+        <translation>Keine MBTiles-Datei festgelegt.</translation>
+    </message>
+    <message>
+        <source>The MBTiles file %1 does not exist.</source>
+        <translation>Die MBTiles-Datei %1 existiert nicht.</translation>
+    </message>
+    <message>
+        <source>Cannot open the MBTiles file %1: %2</source>
+        <translation>Die MBTiles-Datei %1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not an MBTiles file Sortie can write: %2</source>
+        <translation>%1 ist keine MBTiles-Datei, die Sortie schreiben kann: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not an MBTiles file (it has no tiles table).</source>
+        <translation>%1 ist keine MBTiles-Datei (sie hat keine Tabelle „tiles“).</translation>
+    </message>
+    <message>
+        <source>The MBTiles file %1 has no readable metadata: %2</source>
+        <translation>Die MBTiles-Datei %1 hat keine lesbaren Metadaten: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write to the MBTiles file %1: %2</source>
+        <translation>In die MBTiles-Datei %1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write the metadata of %1: %2</source>
+        <translation>Die Metadaten von %1 können nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Reading tile %1 failed: %2</source>
+        <translation>Lesen der Kachel %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>Writing %1 tiles to %2 failed: %3</source>
+        <translation>Schreiben von %1 Kacheln nach %2 fehlgeschlagen: %3</translation>
+    </message>
+    <message>
+        <source>Reading the tiles of %1 failed: %2</source>
+        <translation>Lesen der Kacheln von %1 fehlgeschlagen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::MbTilesMetadata</name>
+    <message>
+        <source>minzoom %1 is above maxzoom %2.</source>
+        <translation>minzoom %1 liegt über maxzoom %2.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::OfflineMaps</name>
+    <message>
+        <source>No route is open.</source>
+        <translation>Keine Route geöffnet.</translation>
+    </message>
+    <message>
+        <source>The open route has no waypoints to take the area from.</source>
+        <translation>Die geöffnete Route hat keine Wegpunkte, aus denen sich das Gebiet ergibt.</translation>
+    </message>
+    <message>
+        <source>The route is a single point: give a margin around it.</source>
+        <translation>Die Route ist ein einzelner Punkt: Geben Sie einen Rand darum an.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The open route (%n point(s)) and %1 m around it</source>
+        <translation>
+            <numerusform>Die geöffnete Route (%n Punkt) und %1 m darum herum</numerusform>
+            <numerusform>Die geöffnete Route (%n Punkte) und %1 m darum herum</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The map&apos;s view is not an area (%1 to %2).</source>
+        <translation>Der Kartenausschnitt ist kein Gebiet (%1 bis %2).</translation>
+    </message>
+    <message>
+        <source>The map&apos;s view</source>
+        <translation>Der Kartenausschnitt</translation>
+    </message>
+    <message>
+        <source>The lowest zoom is above the highest.</source>
+        <translation>Die niedrigste Zoomstufe liegt über der höchsten.</translation>
+    </message>
+    <message>
+        <source>Choose an area.</source>
+        <translation>Wählen Sie ein Gebiet.</translation>
+    </message>
+    <message>
+        <source>%1 tiles, about %2</source>
+        <translation>%1 Kacheln, etwa %2</translation>
+    </message>
+    <message>
+        <source> (at this pack&apos;s mean of %1 a tile)</source>
+        <translation> (beim Mittelwert dieses Pakets von %1 pro Kachel)</translation>
+    </message>
+    <message>
+        <source> (assuming %1 a tile)</source>
+        <translation> (angenommen %1 pro Kachel)</translation>
+    </message>
+    <message>
+        <source>: more than the limit of %1 tiles, choose a smaller area or fewer zoom levels</source>
+        <translation>: mehr als die Grenze von %1 Kacheln; wählen Sie ein kleineres Gebiet oder weniger Zoomstufen</translation>
+    </message>
+    <message>
+        <source>Choose a web tile server in Map source first: %1</source>
+        <translation>Wählen Sie zuerst unter Kartenquelle einen Web-Kachelserver: %1</translation>
+    </message>
+    <message>
+        <source>%1 of %2 tiles</source>
+        <translation>%1 von %2 Kacheln</translation>
+    </message>
+    <message>
+        <source> · %1 already in the pack</source>
+        <translation> · %1 schon im Paket</translation>
+    </message>
+    <message>
+        <source> · %1 not stored</source>
+        <translation> · %1 nicht gespeichert</translation>
+    </message>
+    <message>
+        <source> · paused</source>
+        <translation> · pausiert</translation>
+    </message>
+    <message>
+        <source> · done</source>
+        <translation> · fertig</translation>
+    </message>
+    <message>
+        <source> · stopped</source>
+        <translation> · gestoppt</translation>
+    </message>
+    <message>
+        <source> · failed</source>
+        <translation> · fehlgeschlagen</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::TileArea</name>
+    <message>
+        <source>The area is not a valid latitude/longitude box (south %1, west %2, north %3, east %4).</source>
+        <translation>Das Gebiet ist kein gültiges Breiten-/Längen-Rechteck (Süd %1, West %2, Nord %3, Ost %4).</translation>
+    </message>
+    <message>
+        <source>An area needs at least three corners (it has %1).</source>
+        <translation>Ein Gebiet braucht mindestens drei Ecken (es hat %1).</translation>
+    </message>
+    <message>
+        <source>Corner %1 of the area is not a latitude/longitude (%2, %3).</source>
+        <translation>Ecke %1 des Gebiets ist keine Breite/Länge (%2, %3).</translation>
+    </message>
+    <message>
+        <source>The area&apos;s edge from corner %1 crosses the antimeridian: draw it as two areas.</source>
+        <translation>Die Kante des Gebiets ab Ecke %1 quert den Antimeridian: Zeichnen Sie es als zwei Gebiete.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::TilePrefetch</name>
+    <message>
+        <source>No area is chosen.</source>
+        <translation>Kein Gebiet gewählt.</translation>
+    </message>
+    <message>
+        <source>The zoom range %1 to %2 is not within 0 to %3.</source>
+        <translation>Der Zoombereich %1 bis %2 liegt nicht innerhalb von 0 bis %3.</translation>
+    </message>
+    <message>
+        <source>The area needs %1 tiles, more than the limit of %2: choose a smaller area or fewer zoom levels.</source>
+        <translation>Das Gebiet braucht %1 Kacheln, mehr als die Grenze von %2: Wählen Sie ein kleineres Gebiet oder weniger Zoomstufen.</translation>
+    </message>
+    <message>
+        <source>Tiles from %1, taken offline by %2</source>
+        <translation>Kacheln von %1, offline gespeichert mit %2</translation>
+    </message>
+    <message>
+        <source>not an image (%1, %2 bytes)</source>
+        <translation>kein Bild (%1, %2 Bytes)</translation>
+    </message>
+    <message>
+        <source>no answer within %1 s</source>
+        <translation>keine Antwort innerhalb von %1 s</translation>
+    </message>
+    <message>
+        <source>%1 (after %2 attempts)</source>
+        <translation>%1 (nach %2 Versuchen)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::TileUrlTemplate</name>
+    <message>
+        <source>No tile URL template is set.</source>
+        <translation>Keine Kachel-URL-Vorlage festgelegt.</translation>
+    </message>
+    <message>
+        <source>The tile URL template is not a valid URL: %1</source>
+        <translation>Die Kachel-URL-Vorlage ist keine gültige URL: %1</translation>
+    </message>
+    <message>
+        <source>The tile URL template must start with http://, https:// or file://.</source>
+        <translation>Die Kachel-URL-Vorlage muss mit http://, https:// oder file:// beginnen.</translation>
+    </message>
+    <message>
+        <source>The tile URL template needs {z}, {x} and {y} (or {-y}).</source>
+        <translation>Die Kachel-URL-Vorlage braucht {z}, {x} und {y} (oder {-y}).</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission</name>
+    <message>
+        <source>WP %1</source>
+        <translation>WP %1</translation>
+    </message>
+    <message>
+        <source>Scan %1</source>
+        <translation>Scan %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>return home</source>
+        <translation>Rückkehr</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::RouteDiff</name>
+    <message>
+        <source>No changes</source>
+        <translation>Keine Änderungen</translation>
+    </message>
+    <message>
+        <source>1 change: </source>
+        <translation>1 Änderung: </translation>
+    </message>
+    <message>
+        <source>%1 changes: </source>
+        <translation>%1 Änderungen: </translation>
+    </message>
+    <message>
+        <source> and %1 more</source>
+        <translation> und %1 weitere</translation>
+    </message>
+    <message>
+        <source>name %1 → %2</source>
+        <translation>Name %1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3 %4</source>
+        <translation>%1 %2 → %3 %4</translation>
+    </message>
+    <message>
+        <source>vehicle profile %1 → %2</source>
+        <translation>Fahrzeugprofil %1 → %2</translation>
+    </message>
+    <message>
+        <source>vehicle profile %1 changed</source>
+        <translation>Fahrzeugprofil %1 geändert</translation>
+    </message>
+    <message>
+        <source>failsafe actions changed</source>
+        <translation>Failsafe-Aktionen geändert</translation>
+    </message>
+    <message>
+        <source>home set</source>
+        <translation>Home-Punkt gesetzt</translation>
+    </message>
+    <message>
+        <source>home removed</source>
+        <translation>Home-Punkt entfernt</translation>
+    </message>
+    <message>
+        <source>home moved %1 m</source>
+        <translation>Home-Punkt um %1 m verschoben</translation>
+    </message>
+    <message>
+        <source>home altitude %1 → %2 m</source>
+        <translation>Höhe des Home-Punkts %1 → %2 m</translation>
+    </message>
+    <message>
+        <source>end action %1 → %2</source>
+        <translation>Endaktion %1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>ein</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>%1 removed</source>
+        <translation>%1 entfernt</translation>
+    </message>
+    <message>
+        <source>%1 added</source>
+        <translation>%1 hinzugefügt</translation>
+    </message>
+    <message>
+        <source>%1 changed</source>
+        <translation>%1 geändert</translation>
+    </message>
+    <message>
+        <source>%1 moved %2 m</source>
+        <translation>%1 um %2 m verschoben</translation>
+    </message>
+    <message>
+        <source>altitude of %1 %2 m %3 → %4 m %5</source>
+        <translation>Höhe von %1 %2 m %3 → %4 m %5</translation>
+    </message>
+    <message>
+        <source>altitude of %1 %2 → %3 m</source>
+        <translation>Höhe von %1 %2 → %3 m</translation>
+    </message>
+    <message>
+        <source>speed of %1 %2 → %3 m/s</source>
+        <translation>Geschwindigkeit von %1 %2 → %3 m/s</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>actions of %1: %2 → %3</source>
+        <translation>Aktionen von %1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>turn at %1 %2 → %3</source>
+        <translation>Kurvenart bei %1 %2 → %3</translation>
+    </message>
+    <message>
+        <source>acceptance radius of %1 %2 → %3 m</source>
+        <translation>Akzeptanzradius von %1 %2 → %3 m</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3</source>
+        <translation>%1 %2 → %3</translation>
+    </message>
+    <message>
+        <source>figure of %1 reshaped</source>
+        <translation>Figur von %1 umgeformt</translation>
+    </message>
+    <message>
+        <source>%1 of %2 %3 → %4</source>
+        <translation>%1 von %2 %3 → %4</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 removed</source>
+        <translation>%1 von %2 entfernt</translation>
+    </message>
+    <message>
+        <source>actions of %1 changed</source>
+        <translation>Aktionen von %1 geändert</translation>
+    </message>
+    <message>
+        <source>area of %1 reshaped</source>
+        <translation>Fläche von %1 umgeformt</translation>
+    </message>
+    <message>
+        <source>area of %1 reshaped (%2 → %3 corners)</source>
+        <translation>Fläche von %1 umgeformt (%2 → %3 Ecken)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 %3 → %4 %5</source>
+        <translation>%1 von %2 %3 → %4 %5</translation>
+    </message>
+    <message>
+        <source>altitude of %1 now %2</source>
+        <translation>Höhe von %1 jetzt %2</translation>
+    </message>
+    <message>
+        <source>%1 now flies by ground sample distance</source>
+        <translation>%1 fliegt jetzt nach Bodenauflösung (GSD)</translation>
+    </message>
+    <message>
+        <source>%1 now flies by altitude</source>
+        <translation>%1 fliegt jetzt nach Höhe</translation>
+    </message>
+    <message>
+        <source>camera of %1 %2 → %3</source>
+        <translation>Kamera von %1 %2 → %3</translation>
+    </message>
+    <message>
+        <source>camera of %1 changed</source>
+        <translation>Kamera von %1 geändert</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::RouteEditor</name>
+    <message>
+        <source>Nothing is selected.</source>
+        <translation>Nichts ausgewählt.</translation>
+    </message>
+    <message>
+        <source>That is not a valid position.</source>
+        <translation>Das ist keine gültige Position.</translation>
+    </message>
+    <message>
+        <source>There is no row %1 to insert at.</source>
+        <translation>Es gibt keine Zeile %1 zum Einfügen.</translation>
+    </message>
+    <message>
+        <source>Add waypoint %1</source>
+        <translation>Wegpunkt %1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>A move needs one position per waypoint.</source>
+        <translation>Zum Verschieben wird eine Position pro Wegpunkt benötigt.</translation>
+    </message>
+    <message>
+        <source>There is no row %1.</source>
+        <translation>Es gibt keine Zeile %1.</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>%1 verschieben</translation>
+    </message>
+    <message numerus="yes">
+        <source>Move %n segment(s)</source>
+        <translation>
+            <numerusform>%n Segment verschieben</numerusform>
+            <numerusform>%n Segmente verschieben</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Row %1 is not a waypoint.</source>
+        <translation>Zeile %1 ist kein Wegpunkt.</translation>
+    </message>
+    <message>
+        <source>The altitude needs a number.</source>
+        <translation>Die Höhe braucht eine Zahl.</translation>
+    </message>
+    <message>
+        <source>Set altitude to %1 m</source>
+        <translation>Höhe auf %1 m setzen</translation>
+    </message>
+    <message>
+        <source>Set altitude type to %1</source>
+        <translation>Höhenbezug auf %1 setzen</translation>
+    </message>
+    <message>
+        <source>Row %1 keeps its height %2: set it as %2, or change its altitude type first.</source>
+        <translation>Zeile %1 behält ihre Höhe %2: Setzen Sie sie als %2 oder ändern Sie zuerst ihren Höhenbezug.</translation>
+    </message>
+    <message>
+        <source>Waypoint %1 is planned %2 and there is no terrain data under it: a height %3 cannot be converted.</source>
+        <translation>Wegpunkt %1 ist %2 geplant, und unter ihm gibt es keine Geländedaten: Eine Höhe %3 kann nicht umgerechnet werden.</translation>
+    </message>
+    <message>
+        <source>Set altitude to %1 m %2</source>
+        <translation>Höhe auf %1 m %2 setzen</translation>
+    </message>
+    <message>
+        <source>Set turn type to %1</source>
+        <translation>Kurvenart auf %1 setzen</translation>
+    </message>
+    <message>
+        <source>No selected segment has a parameter &quot;%1&quot;.</source>
+        <translation>Kein ausgewähltes Segment hat einen Parameter „%1“.</translation>
+    </message>
+    <message>
+        <source>Set %1 to %2</source>
+        <translation>%1 auf %2 setzen</translation>
+    </message>
+    <message>
+        <source>There is no action &quot;%1&quot;.</source>
+        <translation>Es gibt keine Aktion „%1“.</translation>
+    </message>
+    <message>
+        <source>Add action: %1</source>
+        <translation>Aktion hinzufügen: %1</translation>
+    </message>
+    <message>
+        <source>Remove action</source>
+        <translation>Aktion entfernen</translation>
+    </message>
+    <message>
+        <source>There is no action &quot;%1&quot; with these values.</source>
+        <translation>Es gibt keine Aktion „%1“ mit diesen Werten.</translation>
+    </message>
+    <message>
+        <source>Edit action: %1</source>
+        <translation>Aktion bearbeiten: %1</translation>
+    </message>
+    <message>
+        <source>Clear actions</source>
+        <translation>Aktionen löschen</translation>
+    </message>
+    <message>
+        <source>An area scan needs at least three corners that enclose an area.</source>
+        <translation>Ein Flächenscan braucht mindestens drei Ecken, die eine Fläche einschließen.</translation>
+    </message>
+    <message>
+        <source>Add area scan</source>
+        <translation>Flächenscan hinzufügen</translation>
+    </message>
+    <message>
+        <source>Segment %1 has no point %2.</source>
+        <translation>Segment %1 hat keinen Punkt %2.</translation>
+    </message>
+    <message>
+        <source>Move point %1 of segment %2</source>
+        <translation>Punkt %1 von Segment %2 verschieben</translation>
+    </message>
+    <message>
+        <source>Segment %1 has no edge there.</source>
+        <translation>Segment %1 hat dort keine Kante.</translation>
+    </message>
+    <message>
+        <source>Add a point to segment %1</source>
+        <translation>Punkt zu Segment %1 hinzufügen</translation>
+    </message>
+    <message numerus="yes">
+        <source>This figure keeps at least %n point(s).</source>
+        <translation>
+            <numerusform>Diese Figur behält mindestens %n Punkt.</numerusform>
+            <numerusform>Diese Figur behält mindestens %n Punkte.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remove point %1 of segment %2</source>
+        <translation>Punkt %1 von Segment %2 entfernen</translation>
+    </message>
+    <message>
+        <source>A radius is above 0 m.</source>
+        <translation>Ein Radius liegt über 0 m.</translation>
+    </message>
+    <message>
+        <source>Segment %1 is no circle.</source>
+        <translation>Segment %1 ist kein Kreis.</translation>
+    </message>
+    <message>
+        <source>Set the radius of segment %1 to %2 m</source>
+        <translation>Radius von Segment %1 auf %2 m setzen</translation>
+    </message>
+    <message>
+        <source>A point segment needs one valid position.</source>
+        <translation>Ein Punktsegment braucht eine gültige Position.</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>%1 hinzufügen</translation>
+    </message>
+    <message>
+        <source>Sortie has no description of the algorithm %1.</source>
+        <translation>Sortie hat keine Beschreibung des Algorithmus %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 needs at least %n point(s)%2.</source>
+        <translation>
+            <numerusform>%1 braucht mindestens %n Punkt%2.</numerusform>
+            <numerusform>%1 braucht mindestens %n Punkte%2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> enclosing an area</source>
+        <translation>, die eine Fläche einschließen</translation>
+    </message>
+    <message>
+        <source>A route has no setting &quot;%1&quot;.</source>
+        <translation>Eine Route hat keine Einstellung „%1“.</translation>
+    </message>
+    <message>
+        <source>%1 needs a number.</source>
+        <translation>%1 braucht eine Zahl.</translation>
+    </message>
+    <message>
+        <source>Set route %1</source>
+        <translation>Routeneinstellung %1 setzen</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::SegmentEditorModel</name>
+    <message>
+        <source>A parameter Sortie has no description of: kept and sent as typed.</source>
+        <translation>Ein Parameter, den Sortie nicht beschreibt: wird so behalten und gesendet, wie eingegeben.</translation>
+    </message>
+    <message>
+        <source>%1 (vehicle profile)</source>
+        <translation>%1 (Fahrzeugprofil)</translation>
+    </message>
+    <message>
+        <source>%1 needs a number, not &quot;%2&quot;.</source>
+        <translation>%1 braucht eine Zahl, nicht „%2“.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::SegmentPreview</name>
+    <message>
+        <source>This segment cannot be planned.</source>
+        <translation>Dieses Segment kann nicht geplant werden.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::WaypointActionsModel</name>
+    <message>
+        <source>Actions at waypoint %1</source>
+        <translation>Aktionen an Wegpunkt %1</translation>
+    </message>
+    <message>
+        <source>Actions at %1 waypoints</source>
+        <translation>Aktionen an %1 Wegpunkten</translation>
+    </message>
+    <message>
+        <source>There is no action &quot;%1&quot;.</source>
+        <translation>Es gibt keine Aktion „%1“.</translation>
+    </message>
+    <message>
+        <source>This action has no field &quot;%1&quot;.</source>
+        <translation>Diese Aktion hat kein Feld „%1“.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::secrets::PasswordVault</name>
+    <message>
+        <source>the keyring did not answer</source>
+        <translation>der Schlüsselbund hat nicht geantwortet</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::traffic::SbsFeed</name>
+    <message>
+        <source>no answer within %1 s</source>
+        <translation>keine Antwort innerhalb von %1 s</translation>
+    </message>
+    <message>
+        <source>the receiver closed the connection</source>
+        <translation>der Empfänger hat die Verbindung geschlossen</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not host:port</source>
+        <translation>„%1“ ist nicht Host:Port</translation>
+    </message>
+    <message>
+        <source>receiver off</source>
+        <translation>Empfänger aus</translation>
+    </message>
+    <message>
+        <source>receiver: %1</source>
+        <translation>Empfänger: %1</translation>
+    </message>
+    <message>
+        <source>receiver: connecting to %1</source>
+        <translation>Empfänger: Verbindung zu %1 wird aufgebaut</translation>
+    </message>
+    <message>
+        <source>receiver %1</source>
+        <translation>Empfänger %1</translation>
+    </message>
+    <message>
+        <source>receiver: %1; again in %2 s</source>
+        <translation>Empfänger: %1; neuer Versuch in %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::AppSettings</name>
+    <message>
+        <source>The password an earlier version kept in the settings file is now in the keyring.</source>
+        <translation>Das Passwort, das eine frühere Version in der Einstellungsdatei abgelegt hatte, liegt jetzt im Schlüsselbund.</translation>
+    </message>
+    <message>
+        <source>The password an earlier version kept in the settings file was erased from it; the keyring refused it (%1), so it is not remembered.</source>
+        <translation>Das Passwort, das eine frühere Version in der Einstellungsdatei abgelegt hatte, wurde dort gelöscht; der Schlüsselbund hat es abgelehnt (%1), daher wird es nicht gespeichert.</translation>
+    </message>
+    <message>
+        <source>The keyring refused the password (%1): it is not remembered.</source>
+        <translation>Der Schlüsselbund hat das Passwort abgelehnt (%1): Es wird nicht gespeichert.</translation>
+    </message>
+    <message>
+        <source>The remembered password could not be read from the keyring (%1).</source>
+        <translation>Das gespeicherte Passwort konnte nicht aus dem Schlüsselbund gelesen werden (%1).</translation>
+    </message>
+    <message>
+        <source>The password could not be removed from the keyring (%1).</source>
+        <translation>Das Passwort konnte nicht aus dem Schlüsselbund entfernt werden (%1).</translation>
+    </message>
+    <message>
+        <source>No keyring is reachable, so the password cannot be remembered (%1).</source>
+        <translation>Kein Schlüsselbund erreichbar, daher kann das Passwort nicht gespeichert werden (%1).</translation>
+    </message>
+    <message>
+        <source>The password an earlier version kept in the settings file was erased from it.</source>
+        <translation>Das Passwort, das eine frühere Version in der Einstellungsdatei abgelegt hatte, wurde dort gelöscht.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::AttitudeIndicator</name>
+    <message>
+        <source>no attitude</source>
+        <translation>keine Fluglage</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::ConflictLayer</name>
+    <message>
+        <source>%1 at %2:%3, %4 m / %5 m</source>
+        <translation>%1 um %2:%3, %4 m / %5 m</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::DisplayUnits</name>
+    <message>
+        <source>%1 mi</source>
+        <translation>%1 mi</translation>
+    </message>
+    <message>
+        <source>%1 ft</source>
+        <translation>%1 ft</translation>
+    </message>
+    <message>
+        <source>%1 km</source>
+        <translation>%1 km</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 mph</source>
+        <translation>%1 mph</translation>
+    </message>
+    <message>
+        <source>%1 m/s</source>
+        <translation>%1 m/s</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 V</source>
+        <translation>%1 V</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>verbindet</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>verbunden</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>Verbindung verloren</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::ElevationProfileView</name>
+    <message>
+        <source>Leg %1 · %2 · ground %3 · altitude %4 · clearance %5</source>
+        <translation>Teilstrecke %1 · %2 · Gelände %3 · Höhe %4 · Bodenabstand %5</translation>
+    </message>
+    <message>
+        <source>no data</source>
+        <translation>keine Daten</translation>
+    </message>
+    <message>
+        <source>Add two waypoints to see the terrain profile</source>
+        <translation>Fügen Sie zwei Wegpunkte hinzu, um das Geländeprofil zu sehen</translation>
+    </message>
+    <message>
+        <source>No terrain source</source>
+        <translation>Keine Geländequelle</translation>
+    </message>
+    <message>
+        <source>Ground: %1</source>
+        <translation>Gelände: %1</translation>
+    </message>
+    <message>
+        <source>lowest clearance %1</source>
+        <translation>geringster Bodenabstand %1</translation>
+    </message>
+    <message>
+        <source>clearance unknown</source>
+        <translation>Bodenabstand unbekannt</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::EnduranceLayer</name>
+    <message>
+        <source>Battery change</source>
+        <translation>Akkuwechsel</translation>
+    </message>
+    <message>
+        <source>Battery change needed</source>
+        <translation>Akkuwechsel nötig</translation>
+    </message>
+    <message>
+        <source>No return</source>
+        <translation>Keine Rückkehr</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::FlightStatus</name>
+    <message>
+        <source>mission complete</source>
+        <translation>Mission abgeschlossen</translation>
+    </message>
+    <message>
+        <source>waypoint %1 of %2</source>
+        <translation>Wegpunkt %1 von %2</translation>
+    </message>
+    <message>
+        <source>1 waypoint on board</source>
+        <translation>1 Wegpunkt an Bord</translation>
+    </message>
+    <message>
+        <source>%1 waypoints on board</source>
+        <translation>%1 Wegpunkte an Bord</translation>
+    </message>
+    <message>
+        <source>no mission on board</source>
+        <translation>keine Mission an Bord</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::MbTilesTileSource</name>
+    <message>
+        <source>MBTiles</source>
+        <translation>MBTiles</translation>
+    </message>
+    <message>
+        <source>No MBTiles file is set.</source>
+        <translation>Keine MBTiles-Datei festgelegt.</translation>
+    </message>
+    <message>
+        <source>The MBTiles file has no tile %1.</source>
+        <translation>Die MBTiles-Datei hat keine Kachel %1.</translation>
+    </message>
+    <message>
+        <source>Tile %1 in the MBTiles file is not a raster image.</source>
+        <translation>Kachel %1 in der MBTiles-Datei ist kein Rasterbild.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::OfflineTileSource</name>
+    <message>
+        <source>Offline base map</source>
+        <translation>Offline-Grundkarte</translation>
+    </message>
+    <message>
+        <source>Land outlines: Natural Earth</source>
+        <translation>Landumrisse: Natural Earth</translation>
+    </message>
+    <message>
+        <source>The built-in land outlines could not be read: %1</source>
+        <translation>Die eingebauten Landumrisse konnten nicht gelesen werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TelemetryPlot</name>
+    <message>
+        <source>−%1 s</source>
+        <translation>−%1 s</translation>
+    </message>
+    <message>
+        <source>now</source>
+        <translation>jetzt</translation>
+    </message>
+    <message>
+        <source>No data yet</source>
+        <translation>Noch keine Daten</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle</source>
+        <translation>Fahrzeug wählen</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TerrainProfileModel</name>
+    <message>
+        <source>no terrain source</source>
+        <translation>keine Geländequelle</translation>
+    </message>
+    <message>
+        <source>no terrain data (tried: %1)</source>
+        <translation>keine Geländedaten (versucht: %1)</translation>
+    </message>
+    <message>
+        <source> · loading…</source>
+        <translation> · wird geladen…</translation>
+    </message>
+    <message>
+        <source>under this waypoint</source>
+        <translation>unter diesem Wegpunkt</translation>
+    </message>
+    <message>
+        <source>under this segment&apos;s points</source>
+        <translation>unter den Punkten dieses Segments</translation>
+    </message>
+    <message>
+        <source>Asking for the ground %1…</source>
+        <translation>Gelände %1 wird abgefragt…</translation>
+    </message>
+    <message>
+        <source>No terrain data %1 (tried: %2)</source>
+        <translation>Keine Geländedaten %1 (versucht: %2)</translation>
+    </message>
+    <message>
+        <source>Ground %1, metres above sea level (EGM96), from %2</source>
+        <translation>Gelände %1, Meter über dem Meeresspiegel (EGM96), aus %2</translation>
+    </message>
+    <message>
+        <source>; some points have no data (tried: %1)</source>
+        <translation>; einige Punkte haben keine Daten (versucht: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TileManager</name>
+    <message>
+        <source>Offline base map</source>
+        <translation>Offline-Grundkarte</translation>
+    </message>
+    <message>
+        <source>%1 — offline base map shown</source>
+        <translation>%1 — Offline-Grundkarte angezeigt</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: loading %n tile(s)</source>
+        <translation>
+            <numerusform>%1: %n Kachel wird geladen</numerusform>
+            <numerusform>%1: %n Kacheln werden geladen</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n tile(s) missing — %2</source>
+        <translation>
+            <numerusform>%1: %n Kachel fehlt — %2</numerusform>
+            <numerusform>%1: %n Kacheln fehlen — %2</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TrafficLayer</name>
+    <message>
+        <source>%1 ft</source>
+        <translation>%1 ft</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source> std</source>
+        <translation> STD</translation>
+    </message>
+    <message>
+        <source> climbing</source>
+        <translation> steigend</translation>
+    </message>
+    <message>
+        <source> descending</source>
+        <translation> sinkend</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::XyzTileSource</name>
+    <message>
+        <source>Web tiles</source>
+        <translation>Web-Kacheln</translation>
+    </message>
+    <message>
+        <source>Tile %1 is not an image.</source>
+        <translation>Kachel %1 ist kein Bild.</translation>
+    </message>
+    <message>
+        <source>Tile %1 is neither in the offline pack nor in the cache (cache only: the network is not used).</source>
+        <translation>Kachel %1 ist weder im Offline-Paket noch im Cache (nur Cache: Das Netzwerk wird nicht genutzt).</translation>
+    </message>
+    <message>
+        <source>Tile %1 is not in the cache and the tile server is unreachable.</source>
+        <translation>Kachel %1 ist nicht im Cache, und der Kachelserver ist nicht erreichbar.</translation>
+    </message>
+    <message>
+        <source>No tile file %1.</source>
+        <translation>Keine Kacheldatei %1.</translation>
+    </message>
+    <message>
+        <source>The tile server answered HTTP %1 for tile %2.</source>
+        <translation>Der Kachelserver antwortete mit HTTP %1 für Kachel %2.</translation>
+    </message>
+    <message>
+        <source>Tile server unreachable (%1).</source>
+        <translation>Kachelserver nicht erreichbar (%1).</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::ZoneLayer</name>
+    <message>
+        <source>drawn on the map</source>
+        <translation>auf der Karte gezeichnet</translation>
+    </message>
+    <message>
+        <source>%1 (%2 zone)
+Source: %3%4
+Floor %5, ceiling %6</source>
+        <translation>%1 (Zone: %2)
+Quelle: %3%4
+Untergrenze %5, Obergrenze %6</translation>
+    </message>
+    <message>
+        <source>
+Not checked: %1</source>
+        <translation>
+Nicht geprüft: %1</translation>
+    </message>
+    <message>
+        <source>
+Switched off: not checked</source>
+        <translation>
+Ausgeschaltet: nicht geprüft</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::vehicle::CommandLog</name>
+    <message>
+        <source>sent</source>
+        <translation>gesendet</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>erledigt</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>alert</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 %4</source>
+        <translation>%1 %2: %3 %4</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 %4: %5</source>
+        <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+</TS>
