@@ -2553,7 +2553,7 @@ eventos:   %1
     </message>
     <message>
         <source>%1&apos;s uploaded &quot;%2&quot; (its leg %3) if it starts now</source>
-        <translation>«%2» subida a %1 (su tramo %3) si empieza ahora</translation>
+        <translation>la ruta «%2» subida a %1 (su tramo %3) si empieza ahora</translation>
     </message>
     <message>
         <source>Leg %1 comes within %2 m across and %3 m in height of %4, %5 after the start%6.</source>
