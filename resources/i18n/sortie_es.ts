@@ -1,0 +1,3924 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="es">
+<context>
+    <name>ActionEditor</name>
+    <message>
+        <source>The selected waypoints have different actions: these are the first one&apos;s. An edit applies where they match; an added action goes to all.</source>
+        <translation>Los waypoints seleccionados tienen acciones distintas: estas son las del primero. Una modificación se aplica donde coinciden; una acción añadida va a todos.</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Quitar</translation>
+    </message>
+    <message>
+        <source>Sent by the server; kept and sent back unchanged.</source>
+        <translation>Enviada por el servidor; se conserva y se devuelve sin cambios.</translation>
+    </message>
+    <message>
+        <source>Add action</source>
+        <translation>Añadir acción</translation>
+    </message>
+    <message>
+        <source>Remove all</source>
+        <translation>Quitar todas</translation>
+    </message>
+</context>
+<context>
+    <name>AtomicFile</name>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>No se puede escribir %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>AutosaveWriter</name>
+    <message>
+        <source>Cannot remove %1: %2</source>
+        <translation>No se puede eliminar %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>CommandBar</name>
+    <message>
+        <source>Are you sure?</source>
+        <translation>¿Está seguro?</translation>
+    </message>
+    <message numerus="yes">
+        <source>To %n ticked vehicle(s): %1</source>
+        <translation>
+            <numerusform>A %n vehículo marcado: %1</numerusform>
+            <numerusform>A los %n vehículos marcados: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Untick all</source>
+        <translation>Desmarcar todos</translation>
+    </message>
+    <message>
+        <source>Arm</source>
+        <translation>Armar</translation>
+    </message>
+    <message>
+        <source>Disarm</source>
+        <translation>Desarmar</translation>
+    </message>
+    <message>
+        <source>Take off</source>
+        <translation>Despegar</translation>
+    </message>
+    <message>
+        <source>Climb to %1 m above home</source>
+        <translation>Subir a %1 m sobre el origen</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Fly the uploaded mission</source>
+        <translation>Volar la misión subida</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Reanudar</translation>
+    </message>
+    <message>
+        <source>Land</source>
+        <translation>Aterrizar</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Volver al origen</translation>
+    </message>
+    <message>
+        <source>Go here…</source>
+        <translation>Ir aquí…</translation>
+    </message>
+    <message>
+        <source>Then click on the map where the vehicle should fly</source>
+        <translation>Después haga clic en el mapa donde debe volar el vehículo</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle on the map or in the list; tick several to command them together.</source>
+        <translation>Elija un vehículo en el mapa o en la lista; marque varios para darles órdenes a la vez.</translation>
+    </message>
+</context>
+<context>
+    <name>CommandLogView</name>
+    <message>
+        <source>Command log</source>
+        <translation>Registro de órdenes</translation>
+    </message>
+</context>
+<context>
+    <name>ComparisonPanel</name>
+    <message>
+        <source>Compare with a route</source>
+        <translation>Comparar con una ruta</translation>
+    </message>
+    <message>
+        <source>Routes (*.sortie *.plan *.waypoints *.wpl *.txt)</source>
+        <translation>Rutas (*.sortie *.plan *.waypoints *.wpl *.txt)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Compare with route…</source>
+        <translation>Comparar con ruta…</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Borrar</translation>
+    </message>
+    <message>
+        <source>leg</source>
+        <translation>tramo</translation>
+    </message>
+    <message>
+        <source>samples</source>
+        <translation>muestras</translation>
+    </message>
+    <message>
+        <source>cross-track max</source>
+        <translation>desvío lateral máx.</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>media</translation>
+    </message>
+    <message>
+        <source>altitude max</source>
+        <translation>altitud máx.</translation>
+    </message>
+    <message>
+        <source>reached</source>
+        <translation>alcanzado</translation>
+    </message>
+</context>
+<context>
+    <name>FleetRoutesList</name>
+    <message>
+        <source>Routes</source>
+        <translation>Rutas</translation>
+    </message>
+    <message>
+        <source>%1 flight</source>
+        <translation>%1 de vuelo</translation>
+    </message>
+    <message>
+        <source>%1 flight · %2 flown · %3 left</source>
+        <translation>%1 de vuelo · volado %2 · quedan %3</translation>
+    </message>
+</context>
+<context>
+    <name>FlightLogSettingsDialog</name>
+    <message>
+        <source>Flight logs</source>
+        <translation>Registros de vuelo</translation>
+    </message>
+    <message>
+        <source>Folder</source>
+        <translation>Carpeta</translation>
+    </message>
+    <message>
+        <source>Holds</source>
+        <translation>Contiene</translation>
+    </message>
+    <message>
+        <source>Recording to</source>
+        <translation>Grabando en</translation>
+    </message>
+    <message>
+        <source>not recording</source>
+        <translation>sin grabar</translation>
+    </message>
+    <message>
+        <source>A log up to (MB)</source>
+        <translation>Un registro hasta (MB)</translation>
+    </message>
+    <message>
+        <source>The folder up to (MB)</source>
+        <translation>La carpeta hasta (MB)</translation>
+    </message>
+    <message>
+        <source>0: no limit. A log over its size continues in a new part; beyond the folder&apos;s size the oldest logs are deleted, never the one being written.</source>
+        <translation>0: sin límite. Un registro que supera su tamaño continúa en una nueva parte; por encima del tamaño de la carpeta se eliminan los registros más antiguos, nunca el que se está escribiendo.</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Aplicar</translation>
+    </message>
+</context>
+<context>
+    <name>InstrumentPanel</name>
+    <message>
+        <source>%1 (%2, %3)</source>
+        <translation>%1 (%2, %3)</translation>
+    </message>
+    <message>
+        <source>No vehicle chosen</source>
+        <translation>Ningún vehículo elegido</translation>
+    </message>
+    <message>
+        <source>Altitude AGL</source>
+        <translation>Altitud AGL</translation>
+    </message>
+    <message>
+        <source>Altitude AMSL</source>
+        <translation>Altitud AMSL</translation>
+    </message>
+    <message>
+        <source>Ground speed</source>
+        <translation>Velocidad respecto al suelo</translation>
+    </message>
+    <message>
+        <source>Vertical speed</source>
+        <translation>Velocidad vertical</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Rumbo</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Batería</translation>
+    </message>
+    <message>
+        <source>GPS</source>
+        <translation>GPS</translation>
+    </message>
+    <message>
+        <source>fix %1, %2 satellites</source>
+        <translation>fix %1, %2 satélites</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Modo</translation>
+    </message>
+    <message>
+        <source>Armed</source>
+        <translation>Armado</translation>
+    </message>
+    <message>
+        <source>ARMED</source>
+        <translation>ARMADO</translation>
+    </message>
+    <message>
+        <source>disarmed</source>
+        <translation>desarmado</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Enlace</translation>
+    </message>
+    <message>
+        <source> (no data)</source>
+        <translation> (sin datos)</translation>
+    </message>
+    <message>
+        <source>%1, %2 Hz</source>
+        <translation>%1, %2 Hz</translation>
+    </message>
+    <message>
+        <source>Flight time</source>
+        <translation>Tiempo de vuelo</translation>
+    </message>
+    <message>
+        <source>To home</source>
+        <translation>Al origen</translation>
+    </message>
+    <message>
+        <source>Mission</source>
+        <translation>Misión</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Restante</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>LoginPage</name>
+    <message>
+        <source>Connect to a UgCS server</source>
+        <translation>Conectar a un servidor UgCS</translation>
+    </message>
+    <message>
+        <source>Server (host:port)</source>
+        <translation>Servidor (host:puerto)</translation>
+    </message>
+    <message>
+        <source>Host name or address and HCI port of the UgCS server</source>
+        <translation>Nombre de host o dirección y puerto HCI del servidor UgCS</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Usuario</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Contraseña</translation>
+    </message>
+    <message>
+        <source>Remember the password on this computer</source>
+        <translation>Recordar la contraseña en este equipo</translation>
+    </message>
+    <message>
+        <source>Kept in this computer&apos;s keyring for this server and user, never in a file</source>
+        <translation>Se guarda en el llavero de este equipo para este servidor y usuario, nunca en un archivo</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Conectar</translation>
+    </message>
+    <message>
+        <source>Log in (Enter in the password field)</source>
+        <translation>Iniciar sesión (Intro en el campo de contraseña)</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Desconectar</translation>
+    </message>
+    <message>
+        <source>Logged in as %1 at %2.</source>
+        <translation>Sesión iniciada como %1 en %2.</translation>
+    </message>
+    <message>
+        <source>%1…</source>
+        <translation>%1…</translation>
+    </message>
+</context>
+<context>
+    <name>Main</name>
+    <message>
+        <source>Sortie</source>
+        <translation>Sortie</translation>
+    </message>
+    <message>
+        <source>Login</source>
+        <translation>Inicio de sesión</translation>
+    </message>
+    <message>
+        <source>Mission</source>
+        <translation>Misión</translation>
+    </message>
+    <message>
+        <source>Live telemetry</source>
+        <translation>Telemetría en vivo</translation>
+    </message>
+    <message>
+        <source>Map…</source>
+        <translation>Mapa…</translation>
+    </message>
+    <message>
+        <source>Choose the map source (Ctrl+M)</source>
+        <translation>Elegir la fuente del mapa (Ctrl+M)</translation>
+    </message>
+    <message>
+        <source>Offline…</source>
+        <translation>Sin conexión…</translation>
+    </message>
+    <message>
+        <source>Download the web map of an area for work without a network</source>
+        <translation>Descargar el mapa web de una zona para trabajar sin red</translation>
+    </message>
+    <message>
+        <source>Logs…</source>
+        <translation>Registros…</translation>
+    </message>
+    <message>
+        <source>Where flight logs are recorded, and how much they may take</source>
+        <translation>Dónde se graban los registros de vuelo y cuánto pueden ocupar</translation>
+    </message>
+    <message>
+        <source>ft, mph</source>
+        <translation>ft, mph</translation>
+    </message>
+    <message>
+        <source>m, m/s</source>
+        <translation>m, m/s</translation>
+    </message>
+    <message>
+        <source>Switch between metric and imperial units</source>
+        <translation>Cambiar entre unidades métricas e imperiales</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts (F1)</source>
+        <translation>Atajos de teclado (F1)</translation>
+    </message>
+</context>
+<context>
+    <name>MapPane</name>
+    <message>
+        <source>Zoom in (+, wheel)</source>
+        <translation>Acercar (+, rueda)</translation>
+    </message>
+    <message>
+        <source>Zoom out (−, wheel)</source>
+        <translation>Alejar (−, rueda)</translation>
+    </message>
+</context>
+<context>
+    <name>MapSourceDialog</name>
+    <message>
+        <source>Map source</source>
+        <translation>Fuente del mapa</translation>
+    </message>
+    <message>
+        <source>Offline base map (land outlines, always available)</source>
+        <translation>Mapa base sin conexión (contornos de tierra, siempre disponible)</translation>
+    </message>
+    <message>
+        <source>Web tiles from a URL template</source>
+        <translation>Teselas web desde una plantilla de URL</translation>
+    </message>
+    <message>
+        <source>{z}, {x} and {y} (or {-y}) are replaced per tile; {s} by a subdomain</source>
+        <translation>{z}, {x} e {y} (o {-y}) se sustituyen en cada tesela; {s}, por un subdominio</translation>
+    </message>
+    <message>
+        <source>MBTiles file (offline raster tiles)</source>
+        <translation>Archivo MBTiles (teselas ráster sin conexión)</translation>
+    </message>
+    <message>
+        <source>/path/to/area.mbtiles</source>
+        <translation>/ruta/a/zona.mbtiles</translation>
+    </message>
+</context>
+<context>
+    <name>MissionPage</name>
+    <message>
+        <source>Zones (%1)</source>
+        <translation>Zonas (%1)</translation>
+    </message>
+    <message>
+        <source>Click the centre line (%1 so far)</source>
+        <translation>Haga clic en la línea central (%1 hasta ahora)</translation>
+    </message>
+    <message>
+        <source>Click the corners of the area (%1 so far)</source>
+        <translation>Haga clic en las esquinas del área (%1 hasta ahora)</translation>
+    </message>
+    <message>
+        <source>Click where it goes</source>
+        <translation>Haga clic donde debe ir</translation>
+    </message>
+    <message>
+        <source>Create</source>
+        <translation>Crear</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>battery change</source>
+        <translation>cambio de batería</translation>
+    </message>
+    <message>
+        <source>no return</source>
+        <translation>sin retorno</translation>
+    </message>
+</context>
+<context>
+    <name>OfflineMapsDialog</name>
+    <message>
+        <source>Offline maps</source>
+        <translation>Mapas sin conexión</translation>
+    </message>
+    <message>
+        <source>From %1</source>
+        <translation>Desde %1</translation>
+    </message>
+    <message>
+        <source>Choose a web tile server in Map source first.</source>
+        <translation>Elija primero un servidor de teselas web en Fuente del mapa.</translation>
+    </message>
+    <message>
+        <source>The open route</source>
+        <translation>La ruta abierta</translation>
+    </message>
+    <message>
+        <source>and</source>
+        <translation>y</translation>
+    </message>
+    <message>
+        <source>m around it</source>
+        <translation>m alrededor</translation>
+    </message>
+    <message>
+        <source>The map&apos;s view</source>
+        <translation>La vista del mapa</translation>
+    </message>
+    <message>
+        <source>Zoom from</source>
+        <translation>Zoom de</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>a</translation>
+    </message>
+    <message>
+        <source>Pack file</source>
+        <translation>Archivo de paquete</translation>
+    </message>
+    <message>
+        <source>Attribution</source>
+        <translation>Atribución</translation>
+    </message>
+    <message>
+        <source>As the provider&apos;s usage policy asks, e.g. © OpenStreetMap contributors</source>
+        <translation>Según pida la política de uso del proveedor, p. ej. © colaboradores de OpenStreetMap</translation>
+    </message>
+    <message>
+        <source>Cache only: the map never uses the network (the pack, then the disk cache)</source>
+        <translation>Solo caché: el mapa nunca usa la red (primero el paquete, luego la caché en disco)</translation>
+    </message>
+    <message>
+        <source>Download</source>
+        <translation>Descargar</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Reanudar</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Detener</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source> in %1 s</source>
+        <translation> en %1 s</translation>
+    </message>
+    <message>
+        <source>Arm</source>
+        <translation>Armar</translation>
+    </message>
+    <message>
+        <source>Disarm</source>
+        <translation>Desarmar</translation>
+    </message>
+    <message>
+        <source>Take off</source>
+        <translation>Despegar</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>Guided</source>
+        <translation>Guiado</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>Manual</translation>
+    </message>
+    <message>
+        <source>Land</source>
+        <translation>Aterrizar</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Volver al origen</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 km</source>
+        <translation>%1 km</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>missed</source>
+        <translation>no alcanzado</translation>
+    </message>
+    <message>
+        <source>That vehicle is not in this log (it holds %1).</source>
+        <translation>Ese vehículo no está en este registro (contiene %1).</translation>
+    </message>
+    <message>
+        <source>no vehicle</source>
+        <translation>ningún vehículo</translation>
+    </message>
+    <message>
+        <source>Route &quot;%1&quot; has fewer than two waypoints: there is nothing to compare.</source>
+        <translation>La ruta «%1» tiene menos de dos waypoints: no hay nada que comparar.</translation>
+    </message>
+    <message>
+        <source>%1 has no track in this log to compare with.</source>
+        <translation>%1 no tiene traza en este registro con la que comparar.</translation>
+    </message>
+    <message>
+        <source>Route &quot;%1&quot; does not match %2: its waypoints are %3 km from anywhere %2 flew in this log.</source>
+        <translation>La ruta «%1» no corresponde a %2: sus waypoints están a %3 km de cualquier punto por el que %2 voló en este registro.</translation>
+    </message>
+    <message>
+        <source>%1 flown by %2, %3 to %4
+</source>
+        <translation>%1 volada por %2, de %3 a %4
+</translation>
+    </message>
+    <message>
+        <source>
+waypoint  reached                    closest
+</source>
+        <translation>
+waypoint  alcanzado                  más cercano
+</translation>
+    </message>
+    <message>
+        <source>
+leg      samples  cross-track max  mean      altitude max  mean
+</source>
+        <translation>
+tramo   muestras  desvío lat. máx  media     altitud máx.  media
+</translation>
+    </message>
+    <message>
+        <source>
+total: %1 reached, %2 missed; cross-track max %3, mean %4; altitude max %5, mean %6
+</source>
+        <translation>
+total: %1 alcanzados, %2 no alcanzados; desvío lateral máx. %3, media %4; altitud máx. %5, media %6
+</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1: no existe el archivo</translation>
+    </message>
+    <message>
+        <source>%1: cannot be opened: %2</source>
+        <translation>%1: no se puede abrir: %2</translation>
+    </message>
+    <message>
+        <source>no Sortie flight log header</source>
+        <translation>sin cabecera de registro de vuelo de Sortie</translation>
+    </message>
+    <message>
+        <source>%1 is not a Sortie flight log (%2)</source>
+        <translation>%1 no es un registro de vuelo de Sortie (%2)</translation>
+    </message>
+    <message>
+        <source>%1: the vehicles cannot be read: %2</source>
+        <translation>%1: no se pueden leer los vehículos: %2</translation>
+    </message>
+    <message>
+        <source>the vehicle list is damaged: %1</source>
+        <translation>la lista de vehículos está dañada: %1</translation>
+    </message>
+    <message>
+        <source>block %1 (after %2 good ones, %3) is damaged: %4</source>
+        <translation>el bloque %1 (tras %2 correctos, %3) está dañado: %4</translation>
+    </message>
+    <message>
+        <source>at the start</source>
+        <translation>al principio</translation>
+    </message>
+    <message>
+        <source>unknown vehicle</source>
+        <translation>vehículo desconocido</translation>
+    </message>
+    <message>
+        <source>stopped after %1 good blocks (%2): %3</source>
+        <translation>se detuvo tras %1 bloques correctos (%2): %3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>the telemetry cannot be read: %1</source>
+        <translation>no se puede leer la telemetría: %1</translation>
+    </message>
+    <message>
+        <source>the events stop after %1: %2</source>
+        <translation>los eventos se interrumpen tras %1: %2</translation>
+    </message>
+    <message>
+        <source>the events cannot be read: %1</source>
+        <translation>no se pueden leer los eventos: %1</translation>
+    </message>
+    <message>
+        <source>the routes stop early: %1</source>
+        <translation>las rutas se interrumpen antes de tiempo: %1</translation>
+    </message>
+    <message>
+        <source>the routes cannot be read: %1</source>
+        <translation>no se pueden leer las rutas: %1</translation>
+    </message>
+    <message>
+        <source>file:     %1
+</source>
+        <translation>archivo:   %1
+</translation>
+    </message>
+    <message>
+        <source>span:     %1 to %2 (%3 s)
+</source>
+        <translation>periodo:   %1 a %2 (%3 s)
+</translation>
+    </message>
+    <message>
+        <source>DAMAGED:  read up to the last good record; %1
+</source>
+        <translation>DAÑADO:    leído hasta el último registro correcto; %1
+</translation>
+    </message>
+    <message>
+        <source>vehicles: %1
+</source>
+        <translation>vehículos: %1
+</translation>
+    </message>
+    <message>
+        <source>, %1 to %2</source>
+        <translation>, %1 a %2</translation>
+    </message>
+    <message>
+        <source>    route uploaded %1: %2 waypoints
+</source>
+        <translation>    ruta subida %1: %2 waypoints
+</translation>
+    </message>
+    <message>
+        <source>
+events:   %1
+</source>
+        <translation>
+eventos:   %1
+</translation>
+    </message>
+    <message>
+        <source> (failed)</source>
+        <translation> (fallido)</translation>
+    </message>
+    <message>
+        <source>a replayed vehicle takes no commands</source>
+        <translation>un vehículo reproducido no acepta órdenes</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayTimeline</name>
+    <message>
+        <source>Open a flight log</source>
+        <translation>Abrir un registro de vuelo</translation>
+    </message>
+    <message>
+        <source>Flight logs (*.sortielog)</source>
+        <translation>Registros de vuelo (*.sortielog)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Export tracks</source>
+        <translation>Exportar trazas</translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation>Exportado a %1.</translation>
+    </message>
+    <message>
+        <source>Open log…</source>
+        <translation>Abrir registro…</translation>
+    </message>
+    <message>
+        <source>Server history…</source>
+        <translation>Historial del servidor…</translation>
+    </message>
+    <message>
+        <source>REPLAY — %1</source>
+        <translation>REPRODUCCIÓN — %1</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Reproducir</translation>
+    </message>
+    <message>
+        <source>Previous event</source>
+        <translation>Evento anterior</translation>
+    </message>
+    <message>
+        <source>Next event</source>
+        <translation>Evento siguiente</translation>
+    </message>
+    <message>
+        <source>Jump to event (%1)</source>
+        <translation>Saltar al evento (%1)</translation>
+    </message>
+    <message>
+        <source>Loading plots…</source>
+        <translation>Cargando gráficas…</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportar…</translation>
+    </message>
+    <message>
+        <source>Back to live</source>
+        <translation>Volver a en vivo</translation>
+    </message>
+</context>
+<context>
+    <name>RestoreDialog</name>
+    <message>
+        <source>Autosaved edits</source>
+        <translation>Ediciones guardadas automáticamente</translation>
+    </message>
+    <message>
+        <source>Restore one of %1 unsaved routes?</source>
+        <translation>¿Restaurar una de las %1 rutas sin guardar?</translation>
+    </message>
+    <message>
+        <source>Restore unsaved edits?</source>
+        <translation>¿Restaurar las ediciones sin guardar?</translation>
+    </message>
+    <message>
+        <source>Sortie did not close normally. These routes had unsaved edits, saved automatically. Choose one to see its changes; the others are kept and offered again at the next start.</source>
+        <translation>Sortie no se cerró correctamente. Estas rutas tenían ediciones sin guardar, que se guardaron automáticamente. Elija una para ver sus cambios; las demás se conservan y se ofrecen de nuevo en el próximo inicio.</translation>
+    </message>
+    <message>
+        <source>Sortie did not close normally. Edits of “%1” were saved automatically at %2.</source>
+        <translation>Sortie no se cerró correctamente. Las ediciones de «%1» se guardaron automáticamente a las %2.</translation>
+    </message>
+    <message>
+        <source>%1 — saved %2</source>
+        <translation>%1 — guardado %2</translation>
+    </message>
+    <message>
+        <source>It belongs to %1.</source>
+        <translation>Pertenece a %1.</translation>
+    </message>
+    <message>
+        <source>Changes since the last save:</source>
+        <translation>Cambios desde el último guardado:</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>Aceptar</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Descartar</translation>
+    </message>
+    <message>
+        <source>Start without these edits (the file is kept as a backup)</source>
+        <translation>Iniciar sin estas ediciones (el archivo se conserva como copia de seguridad)</translation>
+    </message>
+    <message>
+        <source>Later</source>
+        <translation>Más tarde</translation>
+    </message>
+    <message>
+        <source>Keep them and decide after signing in</source>
+        <translation>Conservarlas y decidir después de iniciar sesión</translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation>Restaurar</translation>
+    </message>
+</context>
+<context>
+    <name>RoutePanel</name>
+    <message>
+        <source>Import a route</source>
+        <translation>Importar una ruta</translation>
+    </message>
+    <message>
+        <source>Routes (*.sortie *.plan *.waypoints *.txt *.kml *.kmz)</source>
+        <translation>Rutas (*.sortie *.plan *.waypoints *.txt *.kml *.kmz)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>The vehicle&apos;s energy profile</source>
+        <translation>Perfil energético del vehículo</translation>
+    </message>
+    <message>
+        <source>Energy profiles (*.json)</source>
+        <translation>Perfiles energéticos (*.json)</translation>
+    </message>
+    <message>
+        <source>Export the route</source>
+        <translation>Exportar la ruta</translation>
+    </message>
+    <message>
+        <source>Sortie (*.sortie)</source>
+        <translation>Sortie (*.sortie)</translation>
+    </message>
+    <message>
+        <source>QGroundControl plan (*.plan)</source>
+        <translation>Plan de QGroundControl (*.plan)</translation>
+    </message>
+    <message>
+        <source>Waypoint list (*.waypoints)</source>
+        <translation>Lista de waypoints (*.waypoints)</translation>
+    </message>
+    <message>
+        <source>KML (*.kml)</source>
+        <translation>KML (*.kml)</translation>
+    </message>
+    <message>
+        <source>DJI Pilot 2 route, WPML (*.kmz)</source>
+        <translation>Ruta de DJI Pilot 2, WPML (*.kmz)</translation>
+    </message>
+    <message>
+        <source>Choose a route…</source>
+        <translation>Elegir una ruta…</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Abrir</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Guardar</translation>
+    </message>
+    <message>
+        <source>Save on the server, under its lock (Ctrl+S)</source>
+        <translation>Guardar en el servidor, bajo su bloqueo (Ctrl+S)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Deshacer</translation>
+    </message>
+    <message>
+        <source>Undo %1 (Ctrl+Z)</source>
+        <translation>Deshacer %1 (Ctrl+Z)</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Rehacer</translation>
+    </message>
+    <message>
+        <source>Redo %1 (Ctrl+Shift+Z)</source>
+        <translation>Rehacer %1 (Ctrl+Mayús+Z)</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Eliminar</translation>
+    </message>
+    <message>
+        <source>Delete the selected waypoints (Del)</source>
+        <translation>Eliminar los waypoints seleccionados (Supr)</translation>
+    </message>
+    <message>
+        <source>Area scan</source>
+        <translation>Escaneo de área</translation>
+    </message>
+    <message>
+        <source>Draw an area to scan: click its corners on the map</source>
+        <translation>Dibuje un área que escanear: haga clic en sus esquinas en el mapa</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Importar…</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exportar…</translation>
+    </message>
+    <message>
+        <source>Zone checks…</source>
+        <translation>Comprobación de zonas…</translation>
+    </message>
+    <message>
+        <source>Which no-fly zones the server&apos;s processing refuses the route for</source>
+        <translation>Por qué zonas de no vuelo rechaza la ruta el procesamiento del servidor</translation>
+    </message>
+    <message>
+        <source>Refuse crossing aerodrome zones</source>
+        <translation>Rechazar si cruza zonas de aeródromo</translation>
+    </message>
+    <message>
+        <source>Refuse crossing custom zones</source>
+        <translation>Rechazar si cruza zonas personalizadas</translation>
+    </message>
+    <message>
+        <source>Process</source>
+        <translation>Procesar</translation>
+    </message>
+    <message>
+        <source>Prepare the route for the chosen vehicle, as the upload will, and show what it would fly (Ctrl+P)</source>
+        <translation>Preparar la ruta para el vehículo elegido, como lo hará la subida, y mostrar lo que volaría (Ctrl+P)</translation>
+    </message>
+    <message>
+        <source>Vehicle…</source>
+        <translation>Vehículo…</translation>
+    </message>
+    <message>
+        <source>Upload</source>
+        <translation>Subir</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Yours (version %1, edited) against theirs (version %2, grey on the map):</source>
+        <translation>La suya (versión %1, editada) frente a la otra (versión %2, en gris en el mapa):</translation>
+    </message>
+    <message>
+        <source>They changed: %1</source>
+        <translation>Cambiaron: %1</translation>
+    </message>
+    <message>
+        <source>Keep mine (overwrite theirs)</source>
+        <translation>Conservar la mía (sobrescribir la otra)</translation>
+    </message>
+    <message>
+        <source>Take theirs (undo brings mine back)</source>
+        <translation>Tomar la otra (Deshacer recupera la mía)</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Longitud</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Tiempo</translation>
+    </message>
+    <message>
+        <source>Waypoints</source>
+        <translation>Waypoints</translation>
+    </message>
+    <message>
+        <source>Photos</source>
+        <translation>Fotos</translation>
+    </message>
+    <message>
+        <source>Conflicts with other vehicles</source>
+        <translation>Conflictos con otros vehículos</translation>
+    </message>
+    <message>
+        <source>%1:%2  leg %3 · %4 (%5): %6 m across, %7 m in height</source>
+        <translation>%1:%2  tramo %3 · %4 (%5): %6 m en horizontal, %7 m en altura</translation>
+    </message>
+    <message>
+        <source>flying</source>
+        <translation>en vuelo</translation>
+    </message>
+    <message>
+        <source>uploaded</source>
+        <translation>subida</translation>
+    </message>
+    <message>
+        <source>Energy</source>
+        <translation>Energía</translation>
+    </message>
+    <message>
+        <source>%1 Wh</source>
+        <translation>%1 Wh</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n batteries</source>
+        <translation>
+            <numerusform>%n batería</numerusform>
+            <numerusform>%n baterías</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 % left</source>
+        <translation>%1 % restante</translation>
+    </message>
+    <message>
+        <source>No return</source>
+        <translation>Sin retorno</translation>
+    </message>
+    <message>
+        <source>unknown: no home</source>
+        <translation>desconocido: sin origen</translation>
+    </message>
+    <message>
+        <source>after %1 (leg %2)</source>
+        <translation>tras %1 (tramo %2)</translation>
+    </message>
+    <message>
+        <source>none: home in reach</source>
+        <translation>ninguno: origen al alcance</translation>
+    </message>
+    <message>
+        <source>Beyond this point of the route, flying straight home no longer lands with the reserve</source>
+        <translation>Pasado este punto de la ruta, volar en línea recta al origen ya no permite aterrizar con la reserva</translation>
+    </message>
+    <message>
+        <source>Load an energy profile to see whether the battery lasts.</source>
+        <translation>Cargue un perfil energético para ver si la batería alcanza.</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Perfil</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>unnamed</source>
+        <translation>sin nombre</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Cargar…</translation>
+    </message>
+    <message>
+        <source>The vehicle&apos;s energy profile: a JSON file, e.g. from sortie-log fit</source>
+        <translation>Perfil energético del vehículo: un archivo JSON, p. ej. de sortie-log fit</translation>
+    </message>
+    <message>
+        <source>Wind</source>
+        <translation>Viento</translation>
+    </message>
+    <message>
+        <source>Wind speed, m/s</source>
+        <translation>Velocidad del viento, m/s</translation>
+    </message>
+    <message>
+        <source>m/s from</source>
+        <translation>m/s desde</translation>
+    </message>
+    <message>
+        <source>The direction the wind blows from, degrees clockwise from north</source>
+        <translation>Dirección desde la que sopla el viento, en grados en sentido horario desde el norte</translation>
+    </message>
+    <message>
+        <source>Select the segment</source>
+        <translation>Seleccionar el segmento</translation>
+    </message>
+</context>
+<context>
+    <name>SegmentEditor</name>
+    <message>
+        <source>Radius</source>
+        <translation>Radio</translation>
+    </message>
+    <message>
+        <source>Advanced parameters</source>
+        <translation>Parámetros avanzados</translation>
+    </message>
+    <message>
+        <source>%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos</source>
+        <translation>%1 m de altura · %2 cm/px · huella %3 × %4 m · pasadas cada %5 m · foto cada %6 m · %7 fotos</translation>
+    </message>
+</context>
+<context>
+    <name>ServerAction</name>
+    <message>
+        <source>Server action</source>
+        <translation>Acción del servidor</translation>
+    </message>
+</context>
+<context>
+    <name>ServerHistoryDialog</name>
+    <message>
+        <source>Server history</source>
+        <translation>Historial del servidor</translation>
+    </message>
+    <message>
+        <source>Vehicle</source>
+        <translation>Vehículo</translation>
+    </message>
+    <message>
+        <source>From (UTC)</source>
+        <translation>Desde (UTC)</translation>
+    </message>
+    <message>
+        <source>To (UTC)</source>
+        <translation>Hasta (UTC)</translation>
+    </message>
+    <message>
+        <source>Last hour</source>
+        <translation>Última hora</translation>
+    </message>
+    <message>
+        <source>Fetch and replay</source>
+        <translation>Obtener y reproducir</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Cerrar</translation>
+    </message>
+</context>
+<context>
+    <name>ShortcutHelp</name>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>Atajos de teclado</translation>
+    </message>
+    <message>
+        <source>On the map</source>
+        <translation>En el mapa</translation>
+    </message>
+    <message>
+        <source>Esc closes this help.</source>
+        <translation>Esc cierra esta ayuda.</translation>
+    </message>
+</context>
+<context>
+    <name>Shortcuts</name>
+    <message>
+        <source>Pan the map (Shift: faster)</source>
+        <translation>Desplazar el mapa (Mayús: más rápido)</translation>
+    </message>
+    <message>
+        <source>Zoom in / out (also the mouse wheel and pinch)</source>
+        <translation>Acercar / alejar (también con la rueda del ratón y pellizcando)</translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation>Arrastrar</translation>
+    </message>
+    <message>
+        <source>Pan the map</source>
+        <translation>Desplazar el mapa</translation>
+    </message>
+    <message>
+        <source>Shift+Drag</source>
+        <translation>Mayús+Arrastrar</translation>
+    </message>
+    <message>
+        <source>Select waypoints in a rectangle (Ctrl+Shift adds)</source>
+        <translation>Seleccionar waypoints en un rectángulo (Ctrl+Mayús añade)</translation>
+    </message>
+    <message>
+        <source>Click</source>
+        <translation>Clic</translation>
+    </message>
+    <message>
+        <source>Add a waypoint; on a leg: insert one; on a waypoint: select (Ctrl toggles, Shift extends)</source>
+        <translation>Añadir un waypoint; sobre un tramo: insertar uno; sobre un waypoint: seleccionar (Ctrl alterna, Mayús amplía)</translation>
+    </message>
+    <message>
+        <source>Drag a waypoint</source>
+        <translation>Arrastrar un waypoint</translation>
+    </message>
+    <message>
+        <source>Move it, or the whole selection</source>
+        <translation>Moverlo, o toda la selección</translation>
+    </message>
+    <message>
+        <source>Show or hide this help</source>
+        <translation>Mostrar u ocultar esta ayuda</translation>
+    </message>
+    <message>
+        <source>Login page</source>
+        <translation>Página de inicio de sesión</translation>
+    </message>
+    <message>
+        <source>Mission page</source>
+        <translation>Página de misión</translation>
+    </message>
+    <message>
+        <source>Live telemetry page</source>
+        <translation>Página de telemetría en vivo</translation>
+    </message>
+    <message>
+        <source>Save the route on the server</source>
+        <translation>Guardar la ruta en el servidor</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Deshacer</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Rehacer</translation>
+    </message>
+    <message>
+        <source>Delete the selected waypoints</source>
+        <translation>Eliminar los waypoints seleccionados</translation>
+    </message>
+    <message>
+        <source>Process the route on the server</source>
+        <translation>Procesar la ruta en el servidor</translation>
+    </message>
+    <message>
+        <source>Choose the map source</source>
+        <translation>Elegir la fuente del mapa</translation>
+    </message>
+    <message>
+        <source>Focus the map (then arrows and +/− move it)</source>
+        <translation>Enfocar el mapa (después las flechas y +/− lo mueven)</translation>
+    </message>
+    <message>
+        <source>Full screen on or off</source>
+        <translation>Activar o desactivar pantalla completa</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Salir</translation>
+    </message>
+</context>
+<context>
+    <name>StatusBar</name>
+    <message>
+        <source>zoom %1</source>
+        <translation>zoom %1</translation>
+    </message>
+</context>
+<context>
+    <name>TelemetryPage</name>
+    <message>
+        <source>Vehicles</source>
+        <translation>Vehículos</translation>
+    </message>
+    <message>
+        <source>No vehicles. Log in to a server or connect a VCI vehicle.</source>
+        <translation>No hay vehículos. Inicie sesión en un servidor o conecte un vehículo VCI.</translation>
+    </message>
+    <message>
+        <source>Command together with the other ticked vehicles</source>
+        <translation>Dar órdenes junto con los demás vehículos marcados</translation>
+    </message>
+    <message>
+        <source>Vehicle %1</source>
+        <translation>Vehículo %1</translation>
+    </message>
+    <message>
+        <source>A vehicle reached directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600</source>
+        <translation>Un vehículo conectado directamente por VCI: tcp://host:puerto o serial:///dev/ttyX?baud=57600</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Añadir</translation>
+    </message>
+    <message>
+        <source>Fit all</source>
+        <translation>Ver todos</translation>
+    </message>
+    <message>
+        <source>Show every vehicle on the map</source>
+        <translation>Mostrar todos los vehículos en el mapa</translation>
+    </message>
+    <message>
+        <source>Follow</source>
+        <translation>Seguir</translation>
+    </message>
+    <message>
+        <source>Keep the chosen vehicle in the middle of the map</source>
+        <translation>Mantener el vehículo elegido en el centro del mapa</translation>
+    </message>
+    <message>
+        <source>Fly %1 to %2?</source>
+        <translation>¿Volar %1 a %2?</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Volver al origen</translation>
+    </message>
+    <message>
+        <source>Too close: %1</source>
+        <translation>Demasiado cerca: %1</translation>
+    </message>
+    <message>
+        <source>Airspace: %1</source>
+        <translation>Espacio aéreo: %1</translation>
+    </message>
+    <message>
+        <source>Plot this field too</source>
+        <translation>Representar también este campo</translation>
+    </message>
+    <message>
+        <source>1 min</source>
+        <translation>1 min</translation>
+    </message>
+    <message>
+        <source>5 min</source>
+        <translation>5 min</translation>
+    </message>
+    <message>
+        <source>30 min</source>
+        <translation>30 min</translation>
+    </message>
+    <message>
+        <source>Remove from the plot</source>
+        <translation>Quitar de la gráfica</translation>
+    </message>
+    <message>
+        <source>All vehicles</source>
+        <translation>Todos los vehículos</translation>
+    </message>
+    <message>
+        <source>Compare these fields across every vehicle</source>
+        <translation>Comparar estos campos entre todos los vehículos</translation>
+    </message>
+</context>
+<context>
+    <name>UploadQuestion</name>
+    <message>
+        <source>Upload the route?</source>
+        <translation>¿Subir la ruta?</translation>
+    </message>
+    <message>
+        <source>Upload without saving</source>
+        <translation>Subir sin guardar</translation>
+    </message>
+    <message>
+        <source>Upload</source>
+        <translation>Subir</translation>
+    </message>
+    <message>
+        <source>Save and upload</source>
+        <translation>Guardar y subir</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
+    <name>WaypointTable</name>
+    <message numerus="yes">
+        <source>%n selected:</source>
+        <translation>
+            <numerusform>%n seleccionado:</numerusform>
+            <numerusform>%n seleccionados:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>alt m</source>
+        <translation>alt m</translation>
+    </message>
+    <message>
+        <source>Set</source>
+        <translation>Fijar</translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>Altitude above ground (AGL) or above mean sea level (AMSL)</source>
+        <translation>Altitud sobre el terreno (AGL) o sobre el nivel medio del mar (AMSL)</translation>
+    </message>
+    <message>
+        <source>Heights:</source>
+        <translation>Alturas:</translation>
+    </message>
+    <message>
+        <source>as set</source>
+        <translation>como están</translation>
+    </message>
+    <message>
+        <source>all AMSL</source>
+        <translation>todas AMSL</translation>
+    </message>
+    <message>
+        <source>all AGL</source>
+        <translation>todas AGL</translation>
+    </message>
+    <message>
+        <source>AMSL and AGL are converted through the ground under each waypoint</source>
+        <translation>AMSL y AGL se convierten a través del terreno bajo cada waypoint</translation>
+    </message>
+    <message>
+        <source>ground: %1</source>
+        <translation>terreno: %1</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <source>Latitude</source>
+        <translation>Latitud</translation>
+    </message>
+    <message>
+        <source>Longitude</source>
+        <translation>Longitud</translation>
+    </message>
+    <message>
+        <source>Alt</source>
+        <translation>Alt</translation>
+    </message>
+    <message>
+        <source>AMSL</source>
+        <translation>AMSL</translation>
+    </message>
+    <message>
+        <source>AGL</source>
+        <translation>AGL</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Tipo</translation>
+    </message>
+    <message>
+        <source>Ground</source>
+        <translation>Terreno</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Velocidad</translation>
+    </message>
+    <message>
+        <source>Actions</source>
+        <translation>Acciones</translation>
+    </message>
+    <message>
+        <source>Area scan</source>
+        <translation>Escaneo de área</translation>
+    </message>
+</context>
+<context>
+    <name>ZonePanel</name>
+    <message>
+        <source>Load zones</source>
+        <translation>Cargar zonas</translation>
+    </message>
+    <message>
+        <source>Zones (*.geojson *.json *.kml *.plan)</source>
+        <translation>Zonas (*.geojson *.json *.kml *.plan)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Zones (%1)</source>
+        <translation>Zonas (%1)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Deshacer</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Rehacer</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Cargar…</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Polígono</translation>
+    </message>
+    <message>
+        <source>Click the corners on the map, then Create</source>
+        <translation>Haga clic en las esquinas en el mapa y después en Crear</translation>
+    </message>
+    <message>
+        <source>Circle</source>
+        <translation>Círculo</translation>
+    </message>
+    <message>
+        <source>Click the centre on the map; drag its handle for the radius</source>
+        <translation>Haga clic en el centro en el mapa; arrastre su tirador para el radio</translation>
+    </message>
+    <message>
+        <source>%1 corners</source>
+        <translation>%1 esquinas</translation>
+    </message>
+    <message>
+        <source>Create</source>
+        <translation>Crear</translation>
+    </message>
+    <message>
+        <source>Checked against the route when ticked</source>
+        <translation>Se comprueba contra la ruta si está marcada</translation>
+    </message>
+    <message>
+        <source>%1 · %2 – %3</source>
+        <translation>%1 · %2 – %3</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Clase</translation>
+    </message>
+    <message>
+        <source>Floor (m)</source>
+        <translation>Base (m)</translation>
+    </message>
+    <message>
+        <source>ground</source>
+        <translation>suelo</translation>
+    </message>
+    <message>
+        <source>Ceiling (m)</source>
+        <translation>Techo (m)</translation>
+    </message>
+    <message>
+        <source>unlimited</source>
+        <translation>ilimitado</translation>
+    </message>
+    <message>
+        <source>Above</source>
+        <translation>Sobre</translation>
+    </message>
+    <message>
+        <source>Remove zone</source>
+        <translation>Quitar zona</translation>
+    </message>
+    <message>
+        <source>Warn within (m)</source>
+        <translation>Avisar a menos de (m)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie</name>
+    <message>
+        <source>Sortie: mission planning and live telemetry for UgCS servers and VCI vehicles.</source>
+        <translation>Sortie: planificación de misiones y telemetría en vivo para servidores UgCS y vehículos VCI.</translation>
+    </message>
+    <message>
+        <source>Start the built-in simulator on this computer and connect to it.</source>
+        <translation>Iniciar el simulador integrado en este equipo y conectarse a él.</translation>
+    </message>
+    <message>
+        <source>UgCS server to connect to.</source>
+        <translation>Servidor UgCS al que conectarse.</translation>
+    </message>
+    <message>
+        <source>User name to log in with.</source>
+        <translation>Nombre de usuario con el que iniciar sesión.</translation>
+    </message>
+    <message>
+        <source>Connect a vehicle directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600.</source>
+        <translation>Conectar un vehículo directamente por VCI: tcp://host:puerto o serial:///dev/ttyX?baud=57600.</translation>
+    </message>
+    <message>
+        <source>Print the start-up time and memory in use, then quit (for benchmarks).</source>
+        <translation>Mostrar el tiempo de arranque y la memoria en uso y salir (para pruebas de rendimiento).</translation>
+    </message>
+    <message>
+        <source>Folder for autosaved edits (default: the application data folder; also SORTIE_AUTOSAVE_DIR).</source>
+        <translation>Carpeta para las ediciones guardadas automáticamente (por defecto: la carpeta de datos de la aplicación; también SORTIE_AUTOSAVE_DIR).</translation>
+    </message>
+    <message>
+        <source>SRTM .hgt terrain tiles (a tile or a folder), asked before the server (also the setting terrain/demFolder).</source>
+        <translation>Teselas de terreno SRTM .hgt (una tesela o una carpeta), consultadas antes que el servidor (también el ajuste terrain/demFolder).</translation>
+    </message>
+    <message>
+        <source>An ADS-B receiver&apos;s SBS-1 feed for manned traffic, as dump1090 serves it (port 30003); also the setting traffic/sbsAddress.</source>
+        <translation>Flujo SBS-1 de un receptor ADS-B para el tráfico tripulado, tal como lo sirve dump1090 (puerto 30003); también el ajuste traffic/sbsAddress.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ServerZones</name>
+    <message>
+        <source>Zones across the ±180° meridian are not supported; the view was not asked about.</source>
+        <translation>No se admiten zonas que crucen el meridiano de ±180°; no se consultó la vista.</translation>
+    </message>
+    <message>
+        <source>The server&apos;s no-fly zones could not be read: %1</source>
+        <translation>No se pudieron leer las zonas de no vuelo del servidor: %1</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not saved: not connected to the server.</source>
+        <translation>La zona «%1» no se guardó: no hay conexión con el servidor.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; cannot be saved on the server: %2.</source>
+        <translation>La zona «%1» no se puede guardar en el servidor: %2.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not saved: %2</source>
+        <translation>La zona «%1» no se guardó: %2</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not saved: it is locked (%2)</source>
+        <translation>La zona «%1» no se guardó: está bloqueada (%2)</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was saved, but the server&apos;s answer cannot be read back: %2</source>
+        <translation>La zona «%1» se guardó, pero no se puede leer la respuesta del servidor: %2</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: it is not on the server.</source>
+        <translation>La zona «%1» no se eliminó: no está en el servidor.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: aerodrome zones are the server&apos;s own.</source>
+        <translation>La zona «%1» no se eliminó: las zonas de aeródromo son del propio servidor.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: not connected to the server.</source>
+        <translation>La zona «%1» no se eliminó: no hay conexión con el servidor.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: it is locked (%2)</source>
+        <translation>La zona «%1» no se eliminó: está bloqueada (%2)</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: %2</source>
+        <translation>La zona «%1» no se eliminó: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ZoneAlertMonitor</name>
+    <message>
+        <source>%1 is inside &apos;%2&apos;</source>
+        <translation>%1 está dentro de «%2»</translation>
+    </message>
+    <message>
+        <source>%1 enters &apos;%2&apos;%3</source>
+        <translation>%1 entra en «%2»%3</translation>
+    </message>
+    <message>
+        <source>%1 is outside &apos;%2&apos;</source>
+        <translation>%1 está fuera de «%2»</translation>
+    </message>
+    <message>
+        <source>%1 leaves &apos;%2&apos;%3</source>
+        <translation>%1 sale de «%2»%3</translation>
+    </message>
+    <message>
+        <source> (its height there is unknown)</source>
+        <translation> (se desconoce su altura allí)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ZoneEditor</name>
+    <message>
+        <source>A zone needs at least three corners.</source>
+        <translation>Una zona necesita al menos tres esquinas.</translation>
+    </message>
+    <message>
+        <source>This polygon cannot be a zone: %1</source>
+        <translation>Este polígono no puede ser una zona: %1</translation>
+    </message>
+    <message>
+        <source>Draw zone</source>
+        <translation>Dibujar zona</translation>
+    </message>
+    <message>
+        <source>A circular zone needs a centre and a radius above 0 m.</source>
+        <translation>Una zona circular necesita un centro y un radio mayor que 0 m.</translation>
+    </message>
+    <message>
+        <source>Draw circular zone</source>
+        <translation>Dibujar zona circular</translation>
+    </message>
+    <message>
+        <source>There is no drawn zone %1.</source>
+        <translation>No hay ninguna zona dibujada %1.</translation>
+    </message>
+    <message>
+        <source>Remove zone</source>
+        <translation>Quitar zona</translation>
+    </message>
+    <message>
+        <source>That is not a position.</source>
+        <translation>Eso no es una posición.</translation>
+    </message>
+    <message>
+        <source>A circle has only its centre to move.</source>
+        <translation>De un círculo solo se puede mover el centro.</translation>
+    </message>
+    <message>
+        <source>The zone has no corner %1.</source>
+        <translation>La zona no tiene esquina %1.</translation>
+    </message>
+    <message>
+        <source>Move zone corner</source>
+        <translation>Mover esquina de zona</translation>
+    </message>
+    <message>
+        <source>A corner can be added only to a polygon, on one of its edges.</source>
+        <translation>Solo se puede añadir una esquina a un polígono, sobre uno de sus lados.</translation>
+    </message>
+    <message>
+        <source>Add zone corner</source>
+        <translation>Añadir esquina de zona</translation>
+    </message>
+    <message>
+        <source>A zone keeps at least three corners.</source>
+        <translation>Una zona conserva al menos tres esquinas.</translation>
+    </message>
+    <message>
+        <source>Remove zone corner</source>
+        <translation>Quitar esquina de zona</translation>
+    </message>
+    <message>
+        <source>The radius must be above 0 m.</source>
+        <translation>El radio debe ser mayor que 0 m.</translation>
+    </message>
+    <message>
+        <source>Only a circular zone has a radius.</source>
+        <translation>Solo una zona circular tiene radio.</translation>
+    </message>
+    <message>
+        <source>Zone radius</source>
+        <translation>Radio de zona</translation>
+    </message>
+    <message>
+        <source>A zone needs a name.</source>
+        <translation>Una zona necesita un nombre.</translation>
+    </message>
+    <message>
+        <source>Rename zone</source>
+        <translation>Renombrar zona</translation>
+    </message>
+    <message>
+        <source>A zone is an exclusion or an inclusion zone, not &quot;%1&quot;.</source>
+        <translation>Una zona es de exclusión o de inclusión, no «%1».</translation>
+    </message>
+    <message>
+        <source>Zone kind</source>
+        <translation>Clase de zona</translation>
+    </message>
+    <message>
+        <source>Heights are AMSL, AGL or HOME, not &quot;%1&quot;.</source>
+        <translation>Las alturas son AMSL, AGL o HOME, no «%1».</translation>
+    </message>
+    <message>
+        <source>A floor or ceiling is a number of metres, or empty.</source>
+        <translation>Una base o un techo es un número de metros, o vacío.</translation>
+    </message>
+    <message>
+        <source>The ceiling (%1 m) must be above the floor (%2 m).</source>
+        <translation>El techo (%1 m) debe estar por encima de la base (%2 m).</translation>
+    </message>
+    <message>
+        <source>Zone floor and ceiling</source>
+        <translation>Base y techo de zona</translation>
+    </message>
+    <message>
+        <source>The zone would not be a valid polygon: %1</source>
+        <translation>La zona no sería un polígono válido: %1</translation>
+    </message>
+    <message>
+        <source>Zone %1</source>
+        <translation>Zona %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client</name>
+    <message>
+        <source>%1 Fix it before %2.</source>
+        <translation>%1 Corríjalo antes de %2.</translation>
+    </message>
+    <message>
+        <source>%1 (and %n more error(s)) Fix them before %2.</source>
+        <translation>%1 (y errores adicionales: %n) Corríjalos antes de %2.</translation>
+    </message>
+    <message>
+        <source>Upload</source>
+        <translation>Subida</translation>
+    </message>
+    <message>
+        <source>uploading</source>
+        <translation>subir</translation>
+    </message>
+    <message>
+        <source>Saving</source>
+        <translation>Guardado</translation>
+    </message>
+    <message>
+        <source>saving</source>
+        <translation>guardar</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::AutosaveRecovery</name>
+    <message>
+        <source>The autosaved edits in %1 cannot be read: %2</source>
+        <translation>No se pueden leer las ediciones guardadas automáticamente en %1: %2</translation>
+    </message>
+    <message>
+        <source>The autosaved edits in %1 cannot be read (%2). The file was kept as %3.</source>
+        <translation>No se pueden leer las ediciones guardadas automáticamente en %1 (%2). El archivo se conservó como %3.</translation>
+    </message>
+    <message>
+        <source>The autosaved edits in %1 cannot be read (%2).</source>
+        <translation>No se pueden leer las ediciones guardadas automáticamente en %1 (%2).</translation>
+    </message>
+    <message>
+        <source>Untitled route</source>
+        <translation>Ruta sin título</translation>
+    </message>
+    <message>
+        <source>route %1, version %2</source>
+        <translation>ruta %1, versión %2</translation>
+    </message>
+    <message>
+        <source>, on %1</source>
+        <translation>, en %1</translation>
+    </message>
+    <message>
+        <source> as %1</source>
+        <translation> como %1</translation>
+    </message>
+    <message>
+        <source>The route open now has unsaved edits, and restoring would replace it: save or undo them first.</source>
+        <translation>La ruta abierta tiene ediciones sin guardar y restaurar la reemplazaría: guárdelas o deshágalas primero.</translation>
+    </message>
+    <message>
+        <source>%1 as %2</source>
+        <translation>%1 como %2</translation>
+    </message>
+    <message>
+        <source>These edits belong to route %1 on %2, and saving them updates that route. Sign in to %2 to restore them: choose Later, sign in, and they are offered again.</source>
+        <translation>Estas ediciones pertenecen a la ruta %1 en %2, y guardarlas actualiza esa ruta. Inicie sesión en %2 para restaurarlas: elija Más tarde, inicie sesión y se le ofrecerán de nuevo.</translation>
+    </message>
+    <message>
+        <source>These edits belong to route %1 on %2, but this session is signed in to %3 as %4. Sign out and sign in to %2 to restore them; until then they are kept and offered again at each start.</source>
+        <translation>Estas ediciones pertenecen a la ruta %1 en %2, pero esta sesión está iniciada en %3 como %4. Cierre la sesión e inicie sesión en %2 para restaurarlas; hasta entonces se conservan y se ofrecen de nuevo en cada inicio.</translation>
+    </message>
+    <message>
+        <source>Restore autosaved edits</source>
+        <translation>Restaurar ediciones guardadas automáticamente</translation>
+    </message>
+    <message>
+        <source>The autosave %1 could not be moved aside.</source>
+        <translation>No se pudo apartar el guardado automático %1.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::CommandPolicy</name>
+    <message>
+        <source>Manual</source>
+        <translation>Manual</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Espera</translation>
+    </message>
+    <message>
+        <source>Taking off</source>
+        <translation>Despegando</translation>
+    </message>
+    <message>
+        <source>Auto (fly the mission)</source>
+        <translation>Auto (volar la misión)</translation>
+    </message>
+    <message>
+        <source>Guided</source>
+        <translation>Guiado</translation>
+    </message>
+    <message>
+        <source>Land</source>
+        <translation>Aterrizaje</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Vuelta al origen</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Desconocido</translation>
+    </message>
+    <message>
+        <source>the vehicle</source>
+        <translation>el vehículo</translation>
+    </message>
+    <message>
+        <source>Arm %1? Its motors may start.</source>
+        <translation>¿Armar %1? Sus motores pueden arrancar.</translation>
+    </message>
+    <message>
+        <source>Disarm %1? It may be in the air, and would fall.</source>
+        <translation>¿Desarmar %1? Puede estar en el aire, y caería.</translation>
+    </message>
+    <message>
+        <source>Take off with %1 to %2 m above home?</source>
+        <translation>¿Despegar con %1 hasta %2 m sobre el origen?</translation>
+    </message>
+    <message numerus="yes">
+        <source>Start the mission on %1 (%n waypoint(s))?</source>
+        <translation>
+            <numerusform>¿Iniciar la misión en %1 (%n waypoint)?</numerusform>
+            <numerusform>¿Iniciar la misión en %1 (%n waypoints)?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Start the mission on %1? Sortie has not seen its mission.</source>
+        <translation>¿Iniciar la misión en %1? Sortie no ha visto su misión.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::ConnectionController</name>
+    <message>
+        <source>connection lost; attempt %1 in %2 s</source>
+        <translation>conexión perdida; intento %1 en %2 s</translation>
+    </message>
+    <message>
+        <source>reconnected in a new session</source>
+        <translation>reconectado en una nueva sesión</translation>
+    </message>
+    <message>
+        <source>%1 at %2</source>
+        <translation>%1 en %2</translation>
+    </message>
+    <message>
+        <source>The server address is not usable: %1.</source>
+        <translation>La dirección del servidor no es utilizable: %1.</translation>
+    </message>
+    <message>
+        <source>Enter a user name.</source>
+        <translation>Introduzca un nombre de usuario.</translation>
+    </message>
+    <message>
+        <source>%1. Check the server&apos;s address and this computer&apos;s network.</source>
+        <translation>%1. Compruebe la dirección del servidor y la red de este equipo.</translation>
+    </message>
+    <message>
+        <source>%1. Is the UgCS server running, and is the port right?</source>
+        <translation>%1. ¿Está en marcha el servidor UgCS y es correcto el puerto?</translation>
+    </message>
+    <message>
+        <source>Wrong user name or password (%1).</source>
+        <translation>Nombre de usuario o contraseña incorrectos (%1).</translation>
+    </message>
+    <message>
+        <source>%1. This server cannot be used with Sortie.</source>
+        <translation>%1. Este servidor no se puede usar con Sortie.</translation>
+    </message>
+    <message>
+        <source>The server&apos;s licence allows no more connections (%1). Close another client or extend the licence.</source>
+        <translation>La licencia del servidor no admite más conexiones (%1). Cierre otro cliente o amplíe la licencia.</translation>
+    </message>
+    <message>
+        <source>The server did not answer in time (%1). It may be overloaded or not a UgCS server.</source>
+        <translation>El servidor no respondió a tiempo (%1). Puede estar sobrecargado o no ser un servidor UgCS.</translation>
+    </message>
+    <message>
+        <source>The connection was closed (%1).</source>
+        <translation>Se cerró la conexión (%1).</translation>
+    </message>
+    <message>
+        <source>The server answered something Sortie cannot use (%1).</source>
+        <translation>El servidor respondió algo que Sortie no puede usar (%1).</translation>
+    </message>
+    <message>
+        <source>The server refused: %1</source>
+        <translation>El servidor se negó: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::FleetRoutes</name>
+    <message>
+        <source>Unnamed route</source>
+        <translation>Ruta sin nombre</translation>
+    </message>
+    <message>
+        <source>planned</source>
+        <translation>planificada</translation>
+    </message>
+    <message>
+        <source>uploaded %1</source>
+        <translation>subida %1</translation>
+    </message>
+    <message>
+        <source>paused: waypoint %1 of %2</source>
+        <translation>en pausa: waypoint %1 de %2</translation>
+    </message>
+    <message>
+        <source>flying: waypoint %1 of %2</source>
+        <translation>en vuelo: waypoint %1 de %2</translation>
+    </message>
+    <message>
+        <source>flown</source>
+        <translation>volada</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::MissionController</name>
+    <message>
+        <source>Reading the server&apos;s routes</source>
+        <translation>Leyendo las rutas del servidor</translation>
+    </message>
+    <message>
+        <source>The server&apos;s routes could not be read: %1</source>
+        <translation>No se pudieron leer las rutas del servidor: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1%n segment(s)</source>
+        <translation>
+            <numerusform>%1%n segmento</numerusform>
+            <numerusform>%1%n segmentos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Reading the server&apos;s vehicles</source>
+        <translation>Leyendo los vehículos del servidor</translation>
+    </message>
+    <message>
+        <source>Opening the route</source>
+        <translation>Abriendo la ruta</translation>
+    </message>
+    <message>
+        <source>The route could not be opened: %1</source>
+        <translation>No se pudo abrir la ruta: %1</translation>
+    </message>
+    <message>
+        <source>The route cannot be edited here: %1</source>
+        <translation>La ruta no se puede editar aquí: %1</translation>
+    </message>
+    <message>
+        <source>Opened %1 (version %2).</source>
+        <translation>Abierta %1 (versión %2).</translation>
+    </message>
+    <message>
+        <source>Not connected: your edits are kept; save again when the connection is back.</source>
+        <translation>Sin conexión: sus ediciones se conservan; guarde de nuevo cuando vuelva la conexión.</translation>
+    </message>
+    <message>
+        <source>Wait until %1 is done.</source>
+        <translation>Espere a que termine la operación en curso (%1).</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>No guardado: %1</translation>
+    </message>
+    <message>
+        <source>Saving</source>
+        <translation>Guardando</translation>
+    </message>
+    <message>
+        <source>Locking the route</source>
+        <translation>Bloqueando la ruta</translation>
+    </message>
+    <message>
+        <source>Not saved: the route is locked (%1).</source>
+        <translation>No guardado: la ruta está bloqueada (%1).</translation>
+    </message>
+    <message>
+        <source>Reading the server&apos;s copy</source>
+        <translation>Leyendo la copia del servidor</translation>
+    </message>
+    <message>
+        <source>Someone else saved this route on the server (version %1) after you opened it (version %2).</source>
+        <translation>Otra persona guardó esta ruta en el servidor (versión %1) después de que usted la abriera (versión %2).</translation>
+    </message>
+    <message>
+        <source>Saved, but the server&apos;s answer cannot be read back: %1</source>
+        <translation>Guardado, pero no se puede leer la respuesta del servidor: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1 (version %2).</source>
+        <translation>Guardada %1 (versión %2).</translation>
+    </message>
+    <message>
+        <source>Take the server&apos;s version</source>
+        <translation>Tomar la versión del servidor</translation>
+    </message>
+    <message>
+        <source>This is the server&apos;s copy now. Undo brings your edits back.</source>
+        <translation>Ahora esta es la copia del servidor. Deshacer recupera sus ediciones.</translation>
+    </message>
+    <message>
+        <source>This route was deleted on the server. Your copy stays open.</source>
+        <translation>Esta ruta se eliminó en el servidor. Su copia sigue abierta.</translation>
+    </message>
+    <message>
+        <source>Updated from the server (version %1).</source>
+        <translation>Actualizada desde el servidor (versión %1).</translation>
+    </message>
+    <message>
+        <source>Someone else saved this route on the server (version %1) while you were editing it.</source>
+        <translation>Otra persona guardó esta ruta en el servidor (versión %1) mientras usted la editaba.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::MissionUploader</name>
+    <message>
+        <source>Checking the route</source>
+        <translation>Comprobando la ruta</translation>
+    </message>
+    <message>
+        <source>Waiting for your answer</source>
+        <translation>Esperando su respuesta</translation>
+    </message>
+    <message>
+        <source>Processing for %1</source>
+        <translation>Procesando para %1</translation>
+    </message>
+    <message>
+        <source>Taking control of %1</source>
+        <translation>Tomando el control de %1</translation>
+    </message>
+    <message>
+        <source>Uploading to %1</source>
+        <translation>Subiendo a %1</translation>
+    </message>
+    <message>
+        <source>Releasing %1</source>
+        <translation>Liberando %1</translation>
+    </message>
+    <message>
+        <source>Reading the mission back from %1</source>
+        <translation>Leyendo de nuevo la misión desde %1</translation>
+    </message>
+    <message>
+        <source>upload &quot;%1&quot;</source>
+        <translation>subir «%1»</translation>
+    </message>
+    <message>
+        <source>route</source>
+        <translation>ruta</translation>
+    </message>
+    <message>
+        <source>Upload to %1 failed: the vehicle is gone (its connection was closed).</source>
+        <translation>Falló la subida a %1: el vehículo ya no está (se cerró su conexión).</translation>
+    </message>
+    <message>
+        <source>the vehicle is gone</source>
+        <translation>el vehículo ya no está</translation>
+    </message>
+    <message>
+        <source>Not uploaded: %1</source>
+        <translation>No subida: %1</translation>
+    </message>
+    <message>
+        <source>Too late to cancel: the mission is being sent to %1.</source>
+        <translation>Demasiado tarde para cancelar: la misión se está enviando a %1.</translation>
+    </message>
+    <message>
+        <source>Upload to %1 cancelled; nothing was sent.</source>
+        <translation>Subida a %1 cancelada; no se envió nada.</translation>
+    </message>
+    <message>
+        <source>Upload to %1 failed: the vehicle has no link.</source>
+        <translation>Falló la subida a %1: el vehículo no tiene enlace.</translation>
+    </message>
+    <message>
+        <source>no link</source>
+        <translation>sin enlace</translation>
+    </message>
+    <message>
+        <source>Not uploaded to %1: %2</source>
+        <translation>No subida a %1: %2</translation>
+    </message>
+    <message>
+        <source>the route&apos;s fence is not sent: %1 keeps no fence (HCI)</source>
+        <translation>no se envía la geocerca de la ruta: %1 no guarda geocerca (HCI)</translation>
+    </message>
+    <message>
+        <source>Upload to %1 failed: %2</source>
+        <translation>Falló la subida a %1: %2</translation>
+    </message>
+    <message>
+        <source>Uploaded to %1, but it could not be read back: %2</source>
+        <translation>Subida a %1, pero no se pudo leer de vuelta: %2</translation>
+    </message>
+    <message>
+        <source>Uploaded to %1, but it holds something else: %2</source>
+        <translation>Subida a %1, pero contiene otra cosa: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Uploaded to %1: %n waypoint(s).</source>
+        <translation>
+            <numerusform>Subida a %1: %n waypoint.</numerusform>
+            <numerusform>Subida a %1: %n waypoints.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Note: %1</source>
+        <translation>Nota: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::RouteAutosave</name>
+    <message>
+        <source>No free autosave slot in %1: edits are not autosaved.</source>
+        <translation>No hay ninguna ranura libre de guardado automático en %1: las ediciones no se guardan automáticamente.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::RouteDocument</name>
+    <message>
+        <source>Import failed: %1</source>
+        <translation>Falló la importación: %1</translation>
+    </message>
+    <message>
+        <source>Import failed: %1 holds no route.</source>
+        <translation>Falló la importación: %1 no contiene ninguna ruta.</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importar %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n segment(s) from %1.</source>
+        <translation>
+            <numerusform>Importado %n segmento de %1.</numerusform>
+            <numerusform>Importados %n segmentos de %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The file holds %1 routes; this is the first (&quot;%2&quot;).</source>
+        <translation>El archivo contiene %1 rutas; esta es la primera («%2»).</translation>
+    </message>
+    <message>
+        <source>Export failed: %1</source>
+        <translation>Falló la exportación: %1</translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation>Exportado a %1.</translation>
+    </message>
+    <message>
+        <source>Not representable there: %1</source>
+        <translation>No representable allí: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::RoutePreparation</name>
+    <message>
+        <source>Choose the vehicle to %1 for.</source>
+        <translation>Elija el vehículo para el que %1.</translation>
+    </message>
+    <message>
+        <source>process the route</source>
+        <translation>procesar la ruta</translation>
+    </message>
+    <message>
+        <source>%1 has no link.</source>
+        <translation>%1 no tiene enlace.</translation>
+    </message>
+    <message>
+        <source>Processing for %1…</source>
+        <translation>Procesando para %1…</translation>
+    </message>
+    <message>
+        <source>Not processed for %1: %2</source>
+        <translation>No procesada para %1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Processed for %1: %n waypoint(s) to fly.</source>
+        <translation>
+            <numerusform>Procesada para %1: %n waypoint que volar.</numerusform>
+            <numerusform>Procesada para %1: %n waypoints que volar.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>upload</source>
+        <translation>subir</translation>
+    </message>
+    <message>
+        <source>An upload is waiting for your answer.</source>
+        <translation>Una subida espera su respuesta.</translation>
+    </message>
+    <message>
+        <source>Wait until %1 is done.</source>
+        <translation>Espere a que termine la operación en curso (%1).</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::UploadReview</name>
+    <message>
+        <source>The route has edits that are not saved: the vehicle would fly what is on screen, not what the server holds.</source>
+        <translation>La ruta tiene ediciones sin guardar: el vehículo volaría lo que hay en pantalla, no lo que guarda el servidor.</translation>
+    </message>
+    <message>
+        <source>The route has %n warning(s):</source>
+        <translation>Advertencias de la ruta (%n):</translation>
+    </message>
+    <message>
+        <source>Upload to %1?</source>
+        <translation>¿Subir a %1?</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::VehicleFleet</name>
+    <message>
+        <source>%1: %2 done.</source>
+        <translation>%1: %2 completado.</translation>
+    </message>
+    <message>
+        <source>%1: %2 failed: %3</source>
+        <translation>%1: falló %2: %3</translation>
+    </message>
+    <message>
+        <source>The server&apos;s vehicles could not be read: %1</source>
+        <translation>No se pudieron leer los vehículos del servidor: %1</translation>
+    </message>
+    <message>
+        <source>Not a VCI address: %1</source>
+        <translation>No es una dirección VCI: %1</translation>
+    </message>
+    <message>
+        <source>go to %1, %2 at %3 m</source>
+        <translation>ir a %1, %2 a %3 m</translation>
+    </message>
+    <message>
+        <source>%1: flying to the clicked point.</source>
+        <translation>%1: volando al punto pulsado.</translation>
+    </message>
+    <message>
+        <source>%1: go-to failed: %2</source>
+        <translation>%1: falló el ir a: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::VehicleGroup</name>
+    <message>
+        <source>%1 (%2 m)</source>
+        <translation>%1 (%2 m)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%n waypoint(s))</source>
+        <translation>
+            <numerusform>%1 (%n waypoint)</numerusform>
+            <numerusform>%1 (%n waypoints)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Arm %n vehicle(s): %1? Their motors may start.</source>
+        <translation>
+            <numerusform>¿Armar %n vehículo: %1? Sus motores pueden arrancar.</numerusform>
+            <numerusform>¿Armar %n vehículos: %1? Sus motores pueden arrancar.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Disarm %n vehicle(s): %1? One in the air would fall.</source>
+        <translation>
+            <numerusform>¿Desarmar %n vehículo: %1? Si está en el aire, caería.</numerusform>
+            <numerusform>¿Desarmar %n vehículos: %1? Uno que esté en el aire caería.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Take off with %n vehicle(s) to their altitudes above home: %1?</source>
+        <translation>
+            <numerusform>¿Despegar con %n vehículo hasta su altitud sobre el origen: %1?</numerusform>
+            <numerusform>¿Despegar con %n vehículos hasta sus altitudes sobre el origen: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Start or resume the mission on %n vehicle(s): %1?</source>
+        <translation>
+            <numerusform>¿Iniciar o reanudar la misión en %n vehículo: %1?</numerusform>
+            <numerusform>¿Iniciar o reanudar la misión en %n vehículos: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Pause %n vehicle(s) where they are: %1?</source>
+        <translation>
+            <numerusform>¿Pausar %n vehículo donde está: %1?</numerusform>
+            <numerusform>¿Pausar %n vehículos donde están: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Land %n vehicle(s) where they are: %1?</source>
+        <translation>
+            <numerusform>¿Aterrizar %n vehículo donde está: %1?</numerusform>
+            <numerusform>¿Aterrizar %n vehículos donde están: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Send %n vehicle(s) home: %1?</source>
+        <translation>
+            <numerusform>¿Enviar %n vehículo al origen: %1?</numerusform>
+            <numerusform>¿Enviar %n vehículos al origen: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Switch %n vehicle(s) to %2: %1?</source>
+        <translation>
+            <numerusform>¿Cambiar %n vehículo a %2: %1?</numerusform>
+            <numerusform>¿Cambiar %n vehículos a %2: %1?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not sent</source>
+        <translation>no enviado</translation>
+    </message>
+    <message>
+        <source>%1 waiting</source>
+        <translation>%1 en espera</translation>
+    </message>
+    <message>
+        <source>%1 done</source>
+        <translation>%1 completado</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 falló: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %2 of %n vehicle(s) answered — %3.</source>
+        <translation>
+            <numerusform>%1: respondió %2 de %n vehículo — %3.</numerusform>
+            <numerusform>%1: respondieron %2 de %n vehículos — %3.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>sortie::deconfliction::FleetConflictRule</name>
+    <message>
+        <source>%1, flying &quot;%2&quot; (its leg %3)</source>
+        <translation>%1, volando «%2» (su tramo %3)</translation>
+    </message>
+    <message>
+        <source>%1&apos;s uploaded &quot;%2&quot; (its leg %3) if it starts now</source>
+        <translation>la ruta «%2» subida a %1 (su tramo %3) si empieza ahora</translation>
+    </message>
+    <message>
+        <source>Leg %1 comes within %2 m across and %3 m in height of %4, %5 after the start%6.</source>
+        <translation>El tramo %1 pasa a menos de %2 m en horizontal y %3 m en altura de %4, %5 después del inicio%6.</translation>
+    </message>
+    <message>
+        <source> (heights in different frames: judged across only)</source>
+        <translation> (alturas en referencias distintas: solo se juzga en horizontal)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::deconfliction::ProximityMonitor</name>
+    <message>
+        <source>now</source>
+        <translation>ahora</translation>
+    </message>
+    <message>
+        <source>in %1 s</source>
+        <translation>en %1 s</translation>
+    </message>
+    <message>
+        <source>%1 and traffic %2: closest %3, %4 across and %5 in height</source>
+        <translation>%1 y el tráfico %2: máxima aproximación %3, %4 en horizontal y %5 en altura</translation>
+    </message>
+    <message>
+        <source>%1 and %2: closest %3, %4 across and %5 in height</source>
+        <translation>%1 y %2: máxima aproximación %3, %4 en horizontal y %5 en altura</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::endurance::EnduranceAdvisory</name>
+    <message>
+        <source>No vehicle chosen</source>
+        <translation>Ningún vehículo elegido</translation>
+    </message>
+    <message>
+        <source>No energy profile: choose the vehicle&apos;s profile file on the mission page</source>
+        <translation>Sin perfil energético: elija el archivo de perfil del vehículo en la página de misión</translation>
+    </message>
+    <message>
+        <source>The vehicle reports no remaining battery</source>
+        <translation>El vehículo no informa de la batería restante</translation>
+    </message>
+    <message>
+        <source>The vehicle reports no home</source>
+        <translation>El vehículo no informa de su origen</translation>
+    </message>
+    <message>
+        <source>The vehicle reports no position</source>
+        <translation>El vehículo no informa de su posición</translation>
+    </message>
+    <message>
+        <source>No mission on board</source>
+        <translation>No hay misión a bordo</translation>
+    </message>
+    <message>
+        <source>The vehicle cannot make headway home against the wind</source>
+        <translation>El vehículo no puede avanzar hacia el origen contra el viento</translation>
+    </message>
+    <message>
+        <source>Battery at end of route: %1 · home needs %2</source>
+        <translation>Batería al final de la ruta: %1 · el regreso necesita %2</translation>
+    </message>
+    <message>
+        <source>Battery: time to come home — no headway home against the wind</source>
+        <translation>Batería: hora de volver — sin avance hacia el origen contra el viento</translation>
+    </message>
+    <message>
+        <source>Battery: time to come home — %1 left, home needs %2: the %3 reserve is being used</source>
+        <translation>Batería: hora de volver — quedan %1, el regreso necesita %2: se está usando la reserva de %3</translation>
+    </message>
+    <message>
+        <source>Battery: time to come home — %1 left, home needs %2 and the reserve %3: %4 to spare</source>
+        <translation>Batería: hora de volver — quedan %1, el regreso necesita %2 y la reserva %3: sobran %4</translation>
+    </message>
+    <message>
+        <source>Return %1 home now? %2</source>
+        <translation>¿Enviar %1 al origen ahora? %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ComparisonController</name>
+    <message>
+        <source>Open a flight log first.</source>
+        <translation>Abra primero un registro de vuelo.</translation>
+    </message>
+    <message>
+        <source>%1 holds no route.</source>
+        <translation>%1 no contiene ninguna ruta.</translation>
+    </message>
+    <message>
+        <source>Choose the vehicle to compare on the map or in the list.</source>
+        <translation>Elija el vehículo que comparar en el mapa o en la lista.</translation>
+    </message>
+    <message>
+        <source>%1 on &quot;%2&quot;: %3 of %4 waypoints reached; cross-track max %5 m, mean %6 m; altitude max %7 m</source>
+        <translation>%1 en «%2»: %3 de %4 waypoints alcanzados; desvío lateral máx. %5 m, media %6 m; altitud máx. %7 m</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::FlightLogWriter</name>
+    <message>
+        <source>%1: the log cannot use a write-ahead journal</source>
+        <translation>%1: el registro no puede usar un diario de escritura anticipada</translation>
+    </message>
+    <message>
+        <source>Recording to %1 failed: %2</source>
+        <translation>Falló la grabación en %1: %2</translation>
+    </message>
+    <message>
+        <source>Recording could not continue in %1: %2</source>
+        <translation>La grabación no pudo continuar en %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::FlightRecorder</name>
+    <message>
+        <source>The flight log %1 cannot be written: %2</source>
+        <translation>No se puede escribir el registro de vuelo %1: %2</translation>
+    </message>
+    <message>
+        <source>Recording started</source>
+        <translation>Grabación iniciada</translation>
+    </message>
+    <message>
+        <source>Recording stopped</source>
+        <translation>Grabación detenida</translation>
+    </message>
+    <message>
+        <source>Route of 1 waypoint</source>
+        <translation>Ruta de 1 waypoint</translation>
+    </message>
+    <message>
+        <source>Route of %1 waypoints</source>
+        <translation>Ruta de %1 waypoints</translation>
+    </message>
+    <message>
+        <source>Armed</source>
+        <translation>Armado</translation>
+    </message>
+    <message>
+        <source>Disarmed</source>
+        <translation>Desarmado</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::RecordingSettings</name>
+    <message>
+        <source>In force: %1; %2.</source>
+        <translation>En vigor: %1; %2.</translation>
+    </message>
+    <message>
+        <source>a log up to %1 MB</source>
+        <translation>un registro hasta %1 MB</translation>
+    </message>
+    <message>
+        <source>logs of any size</source>
+        <translation>registros de cualquier tamaño</translation>
+    </message>
+    <message>
+        <source>the folder up to %1 MB</source>
+        <translation>la carpeta hasta %1 MB</translation>
+    </message>
+    <message>
+        <source>the folder without limit</source>
+        <translation>la carpeta sin límite</translation>
+    </message>
+    <message>
+        <source>A log&apos;s size must be between 1 and %1 MB, or 0 for no limit.</source>
+        <translation>El tamaño de un registro debe estar entre 1 y %1 MB, o 0 para no limitarlo.</translation>
+    </message>
+    <message>
+        <source>The folder&apos;s size must be between 1 and %1 MB, or 0 for no limit.</source>
+        <translation>El tamaño de la carpeta debe estar entre 1 y %1 MB, o 0 para no limitarlo.</translation>
+    </message>
+    <message>
+        <source>The folder must hold at least one whole log: make its limit at least a log&apos;s size (%1 MB).</source>
+        <translation>La carpeta debe admitir al menos un registro completo: su límite debe ser al menos el tamaño de un registro (%1 MB).</translation>
+    </message>
+    <message>
+        <source>%1 in 1 log</source>
+        <translation>%1 en 1 registro</translation>
+    </message>
+    <message>
+        <source>%1 in %2 logs</source>
+        <translation>%1 en %2 registros</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ReplayController</name>
+    <message>
+        <source>%1 of 1 vehicle</source>
+        <translation>%1 de 1 vehículo</translation>
+    </message>
+    <message>
+        <source>%1 of %2 vehicles</source>
+        <translation>%1 de %2 vehículos</translation>
+    </message>
+    <message>
+        <source>No log is open.</source>
+        <translation>No hay ningún registro abierto.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an export format (gpx, kml or csv).</source>
+        <translation>«%1» no es un formato de exportación (gpx, kml o csv).</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>No se pudo escribir %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ServerHistory</name>
+    <message>
+        <source>not connected to a server</source>
+        <translation>sin conexión con un servidor</translation>
+    </message>
+    <message>
+        <source>The server&apos;s history could not be read: %1</source>
+        <translation>No se pudo leer el historial del servidor: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ServerHistoryRequest</name>
+    <message>
+        <source>The server lists no vehicles: connect to a server first.</source>
+        <translation>El servidor no muestra ningún vehículo: conéctese primero a un servidor.</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle.</source>
+        <translation>Elija un vehículo.</translation>
+    </message>
+    <message>
+        <source>The start &quot;%1&quot; is not a time like %2 (UTC).</source>
+        <translation>El inicio «%1» no es una hora con el formato %2 (UTC).</translation>
+    </message>
+    <message>
+        <source>The end &quot;%1&quot; is not a time like %2 (UTC).</source>
+        <translation>El fin «%1» no es una hora con el formato %2 (UTC).</translation>
+    </message>
+    <message>
+        <source>The start must be before the end.</source>
+        <translation>El inicio debe ser anterior al fin.</translation>
+    </message>
+    <message>
+        <source>The start is in the future.</source>
+        <translation>El inicio está en el futuro.</translation>
+    </message>
+    <message>
+        <source>At most 24 hours at a time.</source>
+        <translation>Como máximo 24 horas cada vez.</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Cancelado.</translation>
+    </message>
+    <message>
+        <source>The server has no telemetry of %1 from %2 to %3 UTC.</source>
+        <translation>El servidor no tiene telemetría de %1 entre %2 y %3 UTC.</translation>
+    </message>
+    <message>
+        <source>There is no replay to show it in.</source>
+        <translation>No hay ninguna reproducción en la que mostrarlo.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ServerRecording</name>
+    <message>
+        <source>logged in to %1 as %2; recording to %3</source>
+        <translation>sesión iniciada en %1 como %2; grabando en %3</translation>
+    </message>
+    <message>
+        <source>server: %1</source>
+        <translation>servidor: %1</translation>
+    </message>
+    <message>
+        <source>1 vehicle</source>
+        <translation>1 vehículo</translation>
+    </message>
+    <message>
+        <source>%1 vehicles</source>
+        <translation>%1 vehículos</translation>
+    </message>
+    <message>
+        <source>log closed: %1</source>
+        <translation>registro cerrado: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles</name>
+    <message>
+        <source>%1: &apos;%2&apos; is not a zoom level (0 to 30).</source>
+        <translation>%1: «%2» no es un nivel de zoom (0 a 30).</translation>
+    </message>
+    <message>
+        <source>bounds: &apos;%1&apos; is not west,south,east,north in degrees.</source>
+        <translation>bounds: «%1» no es oeste,sur,este,norte en grados.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::MbTilesFile</name>
+    <message>
+        <source>No MBTiles file is set.</source>
+        <translation>No se ha indicado ningún archivo MBTiles.</translation>
+    </message>
+    <message>
+        <source>The MBTiles file %1 does not exist.</source>
+        <translation>El archivo MBTiles %1 no existe.</translation>
+    </message>
+    <message>
+        <source>Cannot open the MBTiles file %1: %2</source>
+        <translation>No se puede abrir el archivo MBTiles %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not an MBTiles file Sortie can write: %2</source>
+        <translation>%1 no es un archivo MBTiles en el que Sortie pueda escribir: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not an MBTiles file (it has no tiles table).</source>
+        <translation>%1 no es un archivo MBTiles (no tiene tabla de teselas).</translation>
+    </message>
+    <message>
+        <source>The MBTiles file %1 has no readable metadata: %2</source>
+        <translation>El archivo MBTiles %1 no tiene metadatos legibles: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write to the MBTiles file %1: %2</source>
+        <translation>No se puede escribir en el archivo MBTiles %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write the metadata of %1: %2</source>
+        <translation>No se pueden escribir los metadatos de %1: %2</translation>
+    </message>
+    <message>
+        <source>Reading tile %1 failed: %2</source>
+        <translation>Falló la lectura de la tesela %1: %2</translation>
+    </message>
+    <message>
+        <source>Writing %1 tiles to %2 failed: %3</source>
+        <translation>Falló la escritura de %1 teselas en %2: %3</translation>
+    </message>
+    <message>
+        <source>Reading the tiles of %1 failed: %2</source>
+        <translation>Falló la lectura de las teselas de %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::MbTilesMetadata</name>
+    <message>
+        <source>minzoom %1 is above maxzoom %2.</source>
+        <translation>minzoom %1 es mayor que maxzoom %2.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::OfflineMaps</name>
+    <message>
+        <source>No route is open.</source>
+        <translation>No hay ninguna ruta abierta.</translation>
+    </message>
+    <message>
+        <source>The open route has no waypoints to take the area from.</source>
+        <translation>La ruta abierta no tiene waypoints de los que tomar el área.</translation>
+    </message>
+    <message>
+        <source>The route is a single point: give a margin around it.</source>
+        <translation>La ruta es un solo punto: indique un margen a su alrededor.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The open route (%n point(s)) and %1 m around it</source>
+        <translation>
+            <numerusform>La ruta abierta (%n punto) y %1 m alrededor</numerusform>
+            <numerusform>La ruta abierta (%n puntos) y %1 m alrededor</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The map&apos;s view is not an area (%1 to %2).</source>
+        <translation>La vista del mapa no es un área (%1 a %2).</translation>
+    </message>
+    <message>
+        <source>The map&apos;s view</source>
+        <translation>La vista del mapa</translation>
+    </message>
+    <message>
+        <source>The lowest zoom is above the highest.</source>
+        <translation>El zoom mínimo es mayor que el máximo.</translation>
+    </message>
+    <message>
+        <source>Choose an area.</source>
+        <translation>Elija un área.</translation>
+    </message>
+    <message>
+        <source>%1 tiles, about %2</source>
+        <translation>%1 teselas, unos %2</translation>
+    </message>
+    <message>
+        <source> (at this pack&apos;s mean of %1 a tile)</source>
+        <translation> (con la media de este paquete, %1 por tesela)</translation>
+    </message>
+    <message>
+        <source> (assuming %1 a tile)</source>
+        <translation> (suponiendo %1 por tesela)</translation>
+    </message>
+    <message>
+        <source>: more than the limit of %1 tiles, choose a smaller area or fewer zoom levels</source>
+        <translation>: más que el límite de %1 teselas; elija un área más pequeña o menos niveles de zoom</translation>
+    </message>
+    <message>
+        <source>Choose a web tile server in Map source first: %1</source>
+        <translation>Elija primero un servidor de teselas web en Fuente del mapa: %1</translation>
+    </message>
+    <message>
+        <source>%1 of %2 tiles</source>
+        <translation>%1 de %2 teselas</translation>
+    </message>
+    <message>
+        <source> · %1 already in the pack</source>
+        <translation> · %1 ya en el paquete</translation>
+    </message>
+    <message>
+        <source> · %1 not stored</source>
+        <translation> · %1 no guardadas</translation>
+    </message>
+    <message>
+        <source> · paused</source>
+        <translation> · en pausa</translation>
+    </message>
+    <message>
+        <source> · done</source>
+        <translation> · terminado</translation>
+    </message>
+    <message>
+        <source> · stopped</source>
+        <translation> · detenido</translation>
+    </message>
+    <message>
+        <source> · failed</source>
+        <translation> · fallido</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::TileArea</name>
+    <message>
+        <source>The area is not a valid latitude/longitude box (south %1, west %2, north %3, east %4).</source>
+        <translation>El área no es un rectángulo válido de latitud/longitud (sur %1, oeste %2, norte %3, este %4).</translation>
+    </message>
+    <message>
+        <source>An area needs at least three corners (it has %1).</source>
+        <translation>Un área necesita al menos tres esquinas (tiene %1).</translation>
+    </message>
+    <message>
+        <source>Corner %1 of the area is not a latitude/longitude (%2, %3).</source>
+        <translation>La esquina %1 del área no es una latitud/longitud (%2, %3).</translation>
+    </message>
+    <message>
+        <source>The area&apos;s edge from corner %1 crosses the antimeridian: draw it as two areas.</source>
+        <translation>El lado del área que parte de la esquina %1 cruza el antimeridiano: dibújela como dos áreas.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::TilePrefetch</name>
+    <message>
+        <source>No area is chosen.</source>
+        <translation>No se ha elegido ningún área.</translation>
+    </message>
+    <message>
+        <source>The zoom range %1 to %2 is not within 0 to %3.</source>
+        <translation>El rango de zoom %1 a %2 no está entre 0 y %3.</translation>
+    </message>
+    <message>
+        <source>The area needs %1 tiles, more than the limit of %2: choose a smaller area or fewer zoom levels.</source>
+        <translation>El área necesita %1 teselas, más que el límite de %2: elija un área más pequeña o menos niveles de zoom.</translation>
+    </message>
+    <message>
+        <source>Tiles from %1, taken offline by %2</source>
+        <translation>Teselas de %1, descargadas para uso sin conexión por %2</translation>
+    </message>
+    <message>
+        <source>not an image (%1, %2 bytes)</source>
+        <translation>no es una imagen (%1, %2 bytes)</translation>
+    </message>
+    <message>
+        <source>no answer within %1 s</source>
+        <translation>sin respuesta en %1 s</translation>
+    </message>
+    <message>
+        <source>%1 (after %2 attempts)</source>
+        <translation>%1 (tras %2 intentos)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::TileUrlTemplate</name>
+    <message>
+        <source>No tile URL template is set.</source>
+        <translation>No se ha indicado ninguna plantilla de URL de teselas.</translation>
+    </message>
+    <message>
+        <source>The tile URL template is not a valid URL: %1</source>
+        <translation>La plantilla de URL de teselas no es una URL válida: %1</translation>
+    </message>
+    <message>
+        <source>The tile URL template must start with http://, https:// or file://.</source>
+        <translation>La plantilla de URL de teselas debe empezar por http://, https:// o file://.</translation>
+    </message>
+    <message>
+        <source>The tile URL template needs {z}, {x} and {y} (or {-y}).</source>
+        <translation>La plantilla de URL de teselas necesita {z}, {x} e {y} (o {-y}).</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission</name>
+    <message>
+        <source>WP %1</source>
+        <translation>WP %1</translation>
+    </message>
+    <message>
+        <source>Scan %1</source>
+        <translation>Escaneo %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(ninguno)</translation>
+    </message>
+    <message>
+        <source>return home</source>
+        <translation>volver al origen</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguna</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::RouteDiff</name>
+    <message>
+        <source>No changes</source>
+        <translation>Sin cambios</translation>
+    </message>
+    <message>
+        <source>1 change: </source>
+        <translation>1 cambio: </translation>
+    </message>
+    <message>
+        <source>%1 changes: </source>
+        <translation>%1 cambios: </translation>
+    </message>
+    <message>
+        <source> and %1 more</source>
+        <translation> y %1 más</translation>
+    </message>
+    <message>
+        <source>name %1 → %2</source>
+        <translation>nombre %1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3 %4</source>
+        <translation>%1 %2 → %3 %4</translation>
+    </message>
+    <message>
+        <source>vehicle profile %1 → %2</source>
+        <translation>perfil de vehículo %1 → %2</translation>
+    </message>
+    <message>
+        <source>vehicle profile %1 changed</source>
+        <translation>perfil de vehículo %1 modificado</translation>
+    </message>
+    <message>
+        <source>failsafe actions changed</source>
+        <translation>acciones de failsafe modificadas</translation>
+    </message>
+    <message>
+        <source>home set</source>
+        <translation>origen fijado</translation>
+    </message>
+    <message>
+        <source>home removed</source>
+        <translation>origen eliminado</translation>
+    </message>
+    <message>
+        <source>home moved %1 m</source>
+        <translation>origen desplazado %1 m</translation>
+    </message>
+    <message>
+        <source>home altitude %1 → %2 m</source>
+        <translation>altitud del origen %1 → %2 m</translation>
+    </message>
+    <message>
+        <source>end action %1 → %2</source>
+        <translation>acción final %1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>activada</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>desactivada</translation>
+    </message>
+    <message>
+        <source>%1 removed</source>
+        <translation>%1 eliminado</translation>
+    </message>
+    <message>
+        <source>%1 added</source>
+        <translation>%1 añadido</translation>
+    </message>
+    <message>
+        <source>%1 changed</source>
+        <translation>%1 modificado</translation>
+    </message>
+    <message>
+        <source>%1 moved %2 m</source>
+        <translation>%1 desplazado %2 m</translation>
+    </message>
+    <message>
+        <source>altitude of %1 %2 m %3 → %4 m %5</source>
+        <translation>altitud de %1: %2 m %3 → %4 m %5</translation>
+    </message>
+    <message>
+        <source>altitude of %1 %2 → %3 m</source>
+        <translation>altitud de %1: %2 → %3 m</translation>
+    </message>
+    <message>
+        <source>speed of %1 %2 → %3 m/s</source>
+        <translation>velocidad de %1: %2 → %3 m/s</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguna</translation>
+    </message>
+    <message>
+        <source>actions of %1: %2 → %3</source>
+        <translation>acciones de %1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>turn at %1 %2 → %3</source>
+        <translation>giro en %1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>acceptance radius of %1 %2 → %3 m</source>
+        <translation>radio de aceptación de %1: %2 → %3 m</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3</source>
+        <translation>%1 %2 → %3</translation>
+    </message>
+    <message>
+        <source>figure of %1 reshaped</source>
+        <translation>figura de %1 modificada</translation>
+    </message>
+    <message>
+        <source>%1 of %2 %3 → %4</source>
+        <translation>%1 de %2: %3 → %4</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(ninguno)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 removed</source>
+        <translation>%1 de %2 eliminado</translation>
+    </message>
+    <message>
+        <source>actions of %1 changed</source>
+        <translation>acciones de %1 modificadas</translation>
+    </message>
+    <message>
+        <source>area of %1 reshaped</source>
+        <translation>área de %1 modificada</translation>
+    </message>
+    <message>
+        <source>area of %1 reshaped (%2 → %3 corners)</source>
+        <translation>área de %1 modificada (%2 → %3 esquinas)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 %3 → %4 %5</source>
+        <translation>%1 de %2: %3 → %4 %5</translation>
+    </message>
+    <message>
+        <source>altitude of %1 now %2</source>
+        <translation>altitud de %1 ahora %2</translation>
+    </message>
+    <message>
+        <source>%1 now flies by ground sample distance</source>
+        <translation>%1 vuela ahora por distancia de muestreo (GSD)</translation>
+    </message>
+    <message>
+        <source>%1 now flies by altitude</source>
+        <translation>%1 vuela ahora por altitud</translation>
+    </message>
+    <message>
+        <source>camera of %1 %2 → %3</source>
+        <translation>cámara de %1 %2 → %3</translation>
+    </message>
+    <message>
+        <source>camera of %1 changed</source>
+        <translation>cámara de %1 modificada</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::RouteEditor</name>
+    <message>
+        <source>Nothing is selected.</source>
+        <translation>No hay nada seleccionado.</translation>
+    </message>
+    <message>
+        <source>That is not a valid position.</source>
+        <translation>Esa no es una posición válida.</translation>
+    </message>
+    <message>
+        <source>There is no row %1 to insert at.</source>
+        <translation>No hay ninguna fila %1 en la que insertar.</translation>
+    </message>
+    <message>
+        <source>Add waypoint %1</source>
+        <translation>Añadir waypoint %1</translation>
+    </message>
+    <message>
+        <source>A move needs one position per waypoint.</source>
+        <translation>Un desplazamiento necesita una posición por waypoint.</translation>
+    </message>
+    <message>
+        <source>There is no row %1.</source>
+        <translation>No hay ninguna fila %1.</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Mover %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Move %n segment(s)</source>
+        <translation>
+            <numerusform>Mover %n segmento</numerusform>
+            <numerusform>Mover %n segmentos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Row %1 is not a waypoint.</source>
+        <translation>La fila %1 no es un waypoint.</translation>
+    </message>
+    <message>
+        <source>The altitude needs a number.</source>
+        <translation>La altitud necesita un número.</translation>
+    </message>
+    <message>
+        <source>Set altitude to %1 m</source>
+        <translation>Fijar altitud en %1 m</translation>
+    </message>
+    <message>
+        <source>Set altitude type to %1</source>
+        <translation>Fijar tipo de altitud en %1</translation>
+    </message>
+    <message>
+        <source>Row %1 keeps its height %2: set it as %2, or change its altitude type first.</source>
+        <translation>La fila %1 conserva su altura %2: indíquela en %2 o cambie antes su tipo de altitud.</translation>
+    </message>
+    <message>
+        <source>Waypoint %1 is planned %2 and there is no terrain data under it: a height %3 cannot be converted.</source>
+        <translation>El waypoint %1 está planificado en %2 y no hay datos de terreno bajo él: no se puede convertir una altura %3.</translation>
+    </message>
+    <message>
+        <source>Set altitude to %1 m %2</source>
+        <translation>Fijar altitud en %1 m %2</translation>
+    </message>
+    <message>
+        <source>Set turn type to %1</source>
+        <translation>Fijar tipo de giro en %1</translation>
+    </message>
+    <message>
+        <source>No selected segment has a parameter &quot;%1&quot;.</source>
+        <translation>Ningún segmento seleccionado tiene un parámetro «%1».</translation>
+    </message>
+    <message>
+        <source>Set %1 to %2</source>
+        <translation>Fijar %1 en %2</translation>
+    </message>
+    <message>
+        <source>There is no action &quot;%1&quot;.</source>
+        <translation>No existe la acción «%1».</translation>
+    </message>
+    <message>
+        <source>Add action: %1</source>
+        <translation>Añadir acción: %1</translation>
+    </message>
+    <message>
+        <source>Remove action</source>
+        <translation>Quitar acción</translation>
+    </message>
+    <message>
+        <source>There is no action &quot;%1&quot; with these values.</source>
+        <translation>No existe la acción «%1» con estos valores.</translation>
+    </message>
+    <message>
+        <source>Edit action: %1</source>
+        <translation>Editar acción: %1</translation>
+    </message>
+    <message>
+        <source>Clear actions</source>
+        <translation>Borrar acciones</translation>
+    </message>
+    <message>
+        <source>An area scan needs at least three corners that enclose an area.</source>
+        <translation>Un escaneo de área necesita al menos tres esquinas que encierren un área.</translation>
+    </message>
+    <message>
+        <source>Add area scan</source>
+        <translation>Añadir escaneo de área</translation>
+    </message>
+    <message>
+        <source>Segment %1 has no point %2.</source>
+        <translation>El segmento %1 no tiene punto %2.</translation>
+    </message>
+    <message>
+        <source>Move point %1 of segment %2</source>
+        <translation>Mover el punto %1 del segmento %2</translation>
+    </message>
+    <message>
+        <source>Segment %1 has no edge there.</source>
+        <translation>El segmento %1 no tiene ningún lado ahí.</translation>
+    </message>
+    <message>
+        <source>Add a point to segment %1</source>
+        <translation>Añadir un punto al segmento %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>This figure keeps at least %n point(s).</source>
+        <translation>
+            <numerusform>Esta figura conserva al menos %n punto.</numerusform>
+            <numerusform>Esta figura conserva al menos %n puntos.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remove point %1 of segment %2</source>
+        <translation>Quitar el punto %1 del segmento %2</translation>
+    </message>
+    <message>
+        <source>A radius is above 0 m.</source>
+        <translation>Un radio es mayor que 0 m.</translation>
+    </message>
+    <message>
+        <source>Segment %1 is no circle.</source>
+        <translation>El segmento %1 no es un círculo.</translation>
+    </message>
+    <message>
+        <source>Set the radius of segment %1 to %2 m</source>
+        <translation>Fijar el radio del segmento %1 en %2 m</translation>
+    </message>
+    <message>
+        <source>A point segment needs one valid position.</source>
+        <translation>Un segmento de punto necesita una posición válida.</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>Añadir %1</translation>
+    </message>
+    <message>
+        <source>Sortie has no description of the algorithm %1.</source>
+        <translation>Sortie no tiene descripción del algoritmo %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 needs at least %n point(s)%2.</source>
+        <translation>
+            <numerusform>%1 necesita al menos %n punto%2.</numerusform>
+            <numerusform>%1 necesita al menos %n puntos%2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> enclosing an area</source>
+        <translation> que encierren un área</translation>
+    </message>
+    <message>
+        <source>A route has no setting &quot;%1&quot;.</source>
+        <translation>Una ruta no tiene ningún ajuste «%1».</translation>
+    </message>
+    <message>
+        <source>%1 needs a number.</source>
+        <translation>%1 necesita un número.</translation>
+    </message>
+    <message>
+        <source>Set route %1</source>
+        <translation>Fijar %1 de la ruta</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::SegmentEditorModel</name>
+    <message>
+        <source>A parameter Sortie has no description of: kept and sent as typed.</source>
+        <translation>Un parámetro que Sortie no tiene descrito: se conserva y se envía tal como se escribió.</translation>
+    </message>
+    <message>
+        <source>%1 (vehicle profile)</source>
+        <translation>%1 (perfil de vehículo)</translation>
+    </message>
+    <message>
+        <source>%1 needs a number, not &quot;%2&quot;.</source>
+        <translation>%1 necesita un número, no «%2».</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::SegmentPreview</name>
+    <message>
+        <source>This segment cannot be planned.</source>
+        <translation>Este segmento no se puede planificar.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::WaypointActionsModel</name>
+    <message>
+        <source>Actions at waypoint %1</source>
+        <translation>Acciones en el waypoint %1</translation>
+    </message>
+    <message>
+        <source>Actions at %1 waypoints</source>
+        <translation>Acciones en %1 waypoints</translation>
+    </message>
+    <message>
+        <source>There is no action &quot;%1&quot;.</source>
+        <translation>No existe la acción «%1».</translation>
+    </message>
+    <message>
+        <source>This action has no field &quot;%1&quot;.</source>
+        <translation>Esta acción no tiene ningún campo «%1».</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::secrets::PasswordVault</name>
+    <message>
+        <source>the keyring did not answer</source>
+        <translation>el llavero no respondió</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::traffic::SbsFeed</name>
+    <message>
+        <source>no answer within %1 s</source>
+        <translation>sin respuesta en %1 s</translation>
+    </message>
+    <message>
+        <source>the receiver closed the connection</source>
+        <translation>el receptor cerró la conexión</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not host:port</source>
+        <translation>«%1» no es host:puerto</translation>
+    </message>
+    <message>
+        <source>receiver off</source>
+        <translation>receptor apagado</translation>
+    </message>
+    <message>
+        <source>receiver: %1</source>
+        <translation>receptor: %1</translation>
+    </message>
+    <message>
+        <source>receiver: connecting to %1</source>
+        <translation>receptor: conectando a %1</translation>
+    </message>
+    <message>
+        <source>receiver %1</source>
+        <translation>receptor %1</translation>
+    </message>
+    <message>
+        <source>receiver: %1; again in %2 s</source>
+        <translation>receptor: %1; nuevo intento en %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::AppSettings</name>
+    <message>
+        <source>The password an earlier version kept in the settings file is now in the keyring.</source>
+        <translation>La contraseña que una versión anterior guardaba en el archivo de ajustes está ahora en el llavero.</translation>
+    </message>
+    <message>
+        <source>The password an earlier version kept in the settings file was erased from it; the keyring refused it (%1), so it is not remembered.</source>
+        <translation>La contraseña que una versión anterior guardaba en el archivo de ajustes se borró de él; el llavero la rechazó (%1), así que no se recuerda.</translation>
+    </message>
+    <message>
+        <source>The keyring refused the password (%1): it is not remembered.</source>
+        <translation>El llavero rechazó la contraseña (%1): no se recuerda.</translation>
+    </message>
+    <message>
+        <source>The remembered password could not be read from the keyring (%1).</source>
+        <translation>No se pudo leer del llavero la contraseña recordada (%1).</translation>
+    </message>
+    <message>
+        <source>The password could not be removed from the keyring (%1).</source>
+        <translation>No se pudo quitar la contraseña del llavero (%1).</translation>
+    </message>
+    <message>
+        <source>No keyring is reachable, so the password cannot be remembered (%1).</source>
+        <translation>No hay ningún llavero accesible, así que no se puede recordar la contraseña (%1).</translation>
+    </message>
+    <message>
+        <source>The password an earlier version kept in the settings file was erased from it.</source>
+        <translation>La contraseña que una versión anterior guardaba en el archivo de ajustes se borró de él.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::AttitudeIndicator</name>
+    <message>
+        <source>no attitude</source>
+        <translation>sin actitud</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::ConflictLayer</name>
+    <message>
+        <source>%1 at %2:%3, %4 m / %5 m</source>
+        <translation>%1 en %2:%3, %4 m / %5 m</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::DisplayUnits</name>
+    <message>
+        <source>%1 mi</source>
+        <translation>%1 mi</translation>
+    </message>
+    <message>
+        <source>%1 ft</source>
+        <translation>%1 ft</translation>
+    </message>
+    <message>
+        <source>%1 km</source>
+        <translation>%1 km</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 mph</source>
+        <translation>%1 mph</translation>
+    </message>
+    <message>
+        <source>%1 m/s</source>
+        <translation>%1 m/s</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 V</source>
+        <translation>%1 V</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>desconectado</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>conectando</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>conectado</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>enlace perdido</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::ElevationProfileView</name>
+    <message>
+        <source>Leg %1 · %2 · ground %3 · altitude %4 · clearance %5</source>
+        <translation>Tramo %1 · %2 · terreno %3 · altitud %4 · margen %5</translation>
+    </message>
+    <message>
+        <source>no data</source>
+        <translation>sin datos</translation>
+    </message>
+    <message>
+        <source>Add two waypoints to see the terrain profile</source>
+        <translation>Añada dos waypoints para ver el perfil del terreno</translation>
+    </message>
+    <message>
+        <source>No terrain source</source>
+        <translation>Sin fuente de terreno</translation>
+    </message>
+    <message>
+        <source>Ground: %1</source>
+        <translation>Terreno: %1</translation>
+    </message>
+    <message>
+        <source>lowest clearance %1</source>
+        <translation>margen mínimo %1</translation>
+    </message>
+    <message>
+        <source>clearance unknown</source>
+        <translation>margen desconocido</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::EnduranceLayer</name>
+    <message>
+        <source>Battery change</source>
+        <translation>Cambio de batería</translation>
+    </message>
+    <message>
+        <source>Battery change needed</source>
+        <translation>Se necesita cambio de batería</translation>
+    </message>
+    <message>
+        <source>No return</source>
+        <translation>Sin retorno</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::FlightStatus</name>
+    <message>
+        <source>mission complete</source>
+        <translation>misión completada</translation>
+    </message>
+    <message>
+        <source>waypoint %1 of %2</source>
+        <translation>waypoint %1 de %2</translation>
+    </message>
+    <message>
+        <source>1 waypoint on board</source>
+        <translation>1 waypoint a bordo</translation>
+    </message>
+    <message>
+        <source>%1 waypoints on board</source>
+        <translation>%1 waypoints a bordo</translation>
+    </message>
+    <message>
+        <source>no mission on board</source>
+        <translation>ninguna misión a bordo</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::MbTilesTileSource</name>
+    <message>
+        <source>MBTiles</source>
+        <translation>MBTiles</translation>
+    </message>
+    <message>
+        <source>No MBTiles file is set.</source>
+        <translation>No se ha indicado ningún archivo MBTiles.</translation>
+    </message>
+    <message>
+        <source>The MBTiles file has no tile %1.</source>
+        <translation>El archivo MBTiles no tiene la tesela %1.</translation>
+    </message>
+    <message>
+        <source>Tile %1 in the MBTiles file is not a raster image.</source>
+        <translation>La tesela %1 del archivo MBTiles no es una imagen ráster.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::OfflineTileSource</name>
+    <message>
+        <source>Offline base map</source>
+        <translation>Mapa base sin conexión</translation>
+    </message>
+    <message>
+        <source>Land outlines: Natural Earth</source>
+        <translation>Contornos de tierra: Natural Earth</translation>
+    </message>
+    <message>
+        <source>The built-in land outlines could not be read: %1</source>
+        <translation>No se pudieron leer los contornos de tierra integrados: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TelemetryPlot</name>
+    <message>
+        <source>−%1 s</source>
+        <translation>−%1 s</translation>
+    </message>
+    <message>
+        <source>now</source>
+        <translation>ahora</translation>
+    </message>
+    <message>
+        <source>No data yet</source>
+        <translation>Aún no hay datos</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle</source>
+        <translation>Elija un vehículo</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TerrainProfileModel</name>
+    <message>
+        <source>no terrain source</source>
+        <translation>sin fuente de terreno</translation>
+    </message>
+    <message>
+        <source>no terrain data (tried: %1)</source>
+        <translation>sin datos de terreno (se probó: %1)</translation>
+    </message>
+    <message>
+        <source> · loading…</source>
+        <translation> · cargando…</translation>
+    </message>
+    <message>
+        <source>under this waypoint</source>
+        <translation>bajo este waypoint</translation>
+    </message>
+    <message>
+        <source>under this segment&apos;s points</source>
+        <translation>bajo los puntos de este segmento</translation>
+    </message>
+    <message>
+        <source>Asking for the ground %1…</source>
+        <translation>Consultando el terreno %1…</translation>
+    </message>
+    <message>
+        <source>No terrain data %1 (tried: %2)</source>
+        <translation>No hay datos de terreno %1 (se probó: %2)</translation>
+    </message>
+    <message>
+        <source>Ground %1, metres above sea level (EGM96), from %2</source>
+        <translation>Terreno %1, metros sobre el nivel del mar (EGM96), de %2</translation>
+    </message>
+    <message>
+        <source>; some points have no data (tried: %1)</source>
+        <translation>; algunos puntos no tienen datos (se probó: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TileManager</name>
+    <message>
+        <source>Offline base map</source>
+        <translation>Mapa base sin conexión</translation>
+    </message>
+    <message>
+        <source>%1 — offline base map shown</source>
+        <translation>%1 — se muestra el mapa base sin conexión</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: loading %n tile(s)</source>
+        <translation>
+            <numerusform>%1: cargando %n tesela</numerusform>
+            <numerusform>%1: cargando %n teselas</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n tile(s) missing — %2</source>
+        <translation>
+            <numerusform>%1: falta %n tesela — %2</numerusform>
+            <numerusform>%1: faltan %n teselas — %2</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TrafficLayer</name>
+    <message>
+        <source>%1 ft</source>
+        <translation>%1 ft</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source> std</source>
+        <translation> std</translation>
+    </message>
+    <message>
+        <source> climbing</source>
+        <translation> ascendiendo</translation>
+    </message>
+    <message>
+        <source> descending</source>
+        <translation> descendiendo</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::XyzTileSource</name>
+    <message>
+        <source>Web tiles</source>
+        <translation>Teselas web</translation>
+    </message>
+    <message>
+        <source>Tile %1 is not an image.</source>
+        <translation>La tesela %1 no es una imagen.</translation>
+    </message>
+    <message>
+        <source>Tile %1 is neither in the offline pack nor in the cache (cache only: the network is not used).</source>
+        <translation>La tesela %1 no está ni en el paquete sin conexión ni en la caché (solo caché: no se usa la red).</translation>
+    </message>
+    <message>
+        <source>Tile %1 is not in the cache and the tile server is unreachable.</source>
+        <translation>La tesela %1 no está en la caché y el servidor de teselas no es accesible.</translation>
+    </message>
+    <message>
+        <source>No tile file %1.</source>
+        <translation>No existe el archivo de tesela %1.</translation>
+    </message>
+    <message>
+        <source>The tile server answered HTTP %1 for tile %2.</source>
+        <translation>El servidor de teselas respondió HTTP %1 para la tesela %2.</translation>
+    </message>
+    <message>
+        <source>Tile server unreachable (%1).</source>
+        <translation>Servidor de teselas no accesible (%1).</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::ZoneLayer</name>
+    <message>
+        <source>drawn on the map</source>
+        <translation>dibujada en el mapa</translation>
+    </message>
+    <message>
+        <source>%1 (%2 zone)
+Source: %3%4
+Floor %5, ceiling %6</source>
+        <translation>%1 (zona: %2)
+Fuente: %3%4
+Base %5, techo %6</translation>
+    </message>
+    <message>
+        <source>
+Not checked: %1</source>
+        <translation>
+No comprobada: %1</translation>
+    </message>
+    <message>
+        <source>
+Switched off: not checked</source>
+        <translation>
+Desactivada: no comprobada</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::vehicle::CommandLog</name>
+    <message>
+        <source>sent</source>
+        <translation>enviada</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>completada</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>fallida</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>cancelada</translation>
+    </message>
+    <message>
+        <source>alert</source>
+        <translation>alerta</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 %4</source>
+        <translation>%1 %2: %3 %4</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 %4: %5</source>
+        <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+</TS>
