@@ -488,7 +488,7 @@
     </message>
     <message>
         <source>no return</source>
-        <translation>неповернення</translation>
+        <translation>точка неповернення</translation>
     </message>
 </context>
 <context>
@@ -853,7 +853,7 @@ events:   %1
     </message>
     <message>
         <source>Back to live</source>
-        <translation>До наживо</translation>
+        <translation>До реального часу</translation>
     </message>
 </context>
 <context>
@@ -1123,7 +1123,7 @@ events:   %1
     </message>
     <message>
         <source>No return</source>
-        <translation>Неповернення</translation>
+        <translation>Точка неповернення</translation>
     </message>
     <message>
         <source>unknown: no home</source>
@@ -1143,7 +1143,7 @@ events:   %1
     </message>
     <message>
         <source>Load an energy profile to see whether the battery lasts.</source>
-        <translation>Завантажте енергетичний профіль, щоб побачити, чи вистачить батареї.</translation>
+        <translation>Виберіть енергетичний профіль, щоб побачити, чи вистачить батареї.</translation>
     </message>
     <message>
         <source>Profile</source>
@@ -1163,7 +1163,7 @@ events:   %1
     </message>
     <message>
         <source>Load…</source>
-        <translation>Завантажити…</translation>
+        <translation>Вибрати…</translation>
     </message>
     <message>
         <source>The vehicle&apos;s energy profile: a JSON file, e.g. from sortie-log fit</source>
@@ -1412,7 +1412,7 @@ events:   %1
     </message>
     <message>
         <source>Return home</source>
-        <translation>Повернення додому</translation>
+        <translation>Додому</translation>
     </message>
     <message>
         <source>Too close: %1</source>
@@ -1573,7 +1573,7 @@ events:   %1
     <name>ZonePanel</name>
     <message>
         <source>Load zones</source>
-        <translation>Завантажити зони</translation>
+        <translation>Імпорт зон</translation>
     </message>
     <message>
         <source>Zones (*.geojson *.json *.kml *.plan)</source>
@@ -1597,7 +1597,7 @@ events:   %1
     </message>
     <message>
         <source>Load…</source>
-        <translation>Завантажити…</translation>
+        <translation>Імпорт…</translation>
     </message>
     <message>
         <source>Polygon</source>
@@ -3688,7 +3688,7 @@ events:   %1
     </message>
     <message>
         <source>No return</source>
-        <translation>Неповернення</translation>
+        <translation>Точка неповернення</translation>
     </message>
 </context>
 <context>
