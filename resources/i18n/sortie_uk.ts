@@ -1,0 +1,3948 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="uk">
+<context>
+    <name>ActionEditor</name>
+    <message>
+        <source>The selected waypoints have different actions: these are the first one&apos;s. An edit applies where they match; an added action goes to all.</source>
+        <translation>Вибрані точки мають різні дії: показано дії першої. Зміна застосовується там, де вони збігаються; додана дія додається до всіх.</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Видалити</translation>
+    </message>
+    <message>
+        <source>Sent by the server; kept and sent back unchanged.</source>
+        <translation>Надіслано сервером; зберігається й повертається без змін.</translation>
+    </message>
+    <message>
+        <source>Add action</source>
+        <translation>Додати дію</translation>
+    </message>
+    <message>
+        <source>Remove all</source>
+        <translation>Видалити всі</translation>
+    </message>
+</context>
+<context>
+    <name>AtomicFile</name>
+    <message>
+        <source>Cannot write %1: %2</source>
+        <translation>Не вдається записати %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>AutosaveWriter</name>
+    <message>
+        <source>Cannot remove %1: %2</source>
+        <translation>Не вдається видалити %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>CommandBar</name>
+    <message>
+        <source>Are you sure?</source>
+        <translation>Ви впевнені?</translation>
+    </message>
+    <message numerus="yes">
+        <source>To %n ticked vehicle(s): %1</source>
+        <translation>
+            <numerusform>Для %n позначеного апарата: %1</numerusform>
+            <numerusform>Для %n позначених апаратів: %1</numerusform>
+            <numerusform>Для %n позначених апаратів: %1</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Untick all</source>
+        <translation>Зняти всі позначки</translation>
+    </message>
+    <message>
+        <source>Arm</source>
+        <translation>Розблокувати</translation>
+    </message>
+    <message>
+        <source>Disarm</source>
+        <translation>Заблокувати</translation>
+    </message>
+    <message>
+        <source>Take off</source>
+        <translation>Зліт</translation>
+    </message>
+    <message>
+        <source>Climb to %1 m above home</source>
+        <translation>Набрати %1 m над точкою дому</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Авто</translation>
+    </message>
+    <message>
+        <source>Fly the uploaded mission</source>
+        <translation>Виконати завантажену місію</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Продовжити</translation>
+    </message>
+    <message>
+        <source>Land</source>
+        <translation>Посадка</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Додому</translation>
+    </message>
+    <message>
+        <source>Go here…</source>
+        <translation>Летіти сюди…</translation>
+    </message>
+    <message>
+        <source>Then click on the map where the vehicle should fly</source>
+        <translation>Потім клацніть на карті, куди має летіти апарат</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle on the map or in the list; tick several to command them together.</source>
+        <translation>Виберіть апарат на карті або в списку; позначте кілька, щоб керувати ними разом.</translation>
+    </message>
+</context>
+<context>
+    <name>CommandLogView</name>
+    <message>
+        <source>Command log</source>
+        <translation>Журнал команд</translation>
+    </message>
+</context>
+<context>
+    <name>ComparisonPanel</name>
+    <message>
+        <source>Compare with a route</source>
+        <translation>Порівняти з маршрутом</translation>
+    </message>
+    <message>
+        <source>Routes (*.sortie *.plan *.waypoints *.wpl *.txt)</source>
+        <translation>Маршрути (*.sortie *.plan *.waypoints *.wpl *.txt)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Усі файли (*)</translation>
+    </message>
+    <message>
+        <source>Compare with route…</source>
+        <translation>Порівняти з маршрутом…</translation>
+    </message>
+    <message>
+        <source>Clear</source>
+        <translation>Очистити</translation>
+    </message>
+    <message>
+        <source>leg</source>
+        <translation>ділянка</translation>
+    </message>
+    <message>
+        <source>samples</source>
+        <translation>відліки</translation>
+    </message>
+    <message>
+        <source>cross-track max</source>
+        <translation>бічн. відх. макс</translation>
+    </message>
+    <message>
+        <source>mean</source>
+        <translation>середнє</translation>
+    </message>
+    <message>
+        <source>altitude max</source>
+        <translation>висота макс</translation>
+    </message>
+    <message>
+        <source>reached</source>
+        <translation>досягнуто</translation>
+    </message>
+</context>
+<context>
+    <name>FleetRoutesList</name>
+    <message>
+        <source>Routes</source>
+        <translation>Маршрути</translation>
+    </message>
+    <message>
+        <source>%1 flight</source>
+        <translation>політ: %1</translation>
+    </message>
+    <message>
+        <source>%1 flight · %2 flown · %3 left</source>
+        <translation>політ: %1 · пройдено: %2 · лишилося: %3</translation>
+    </message>
+</context>
+<context>
+    <name>FlightLogSettingsDialog</name>
+    <message>
+        <source>Flight logs</source>
+        <translation>Журнали польотів</translation>
+    </message>
+    <message>
+        <source>Folder</source>
+        <translation>Тека</translation>
+    </message>
+    <message>
+        <source>Holds</source>
+        <translation>Вміст</translation>
+    </message>
+    <message>
+        <source>Recording to</source>
+        <translation>Запис у</translation>
+    </message>
+    <message>
+        <source>not recording</source>
+        <translation>запис не ведеться</translation>
+    </message>
+    <message>
+        <source>A log up to (MB)</source>
+        <translation>Журнал до (МБ)</translation>
+    </message>
+    <message>
+        <source>The folder up to (MB)</source>
+        <translation>Тека до (МБ)</translation>
+    </message>
+    <message>
+        <source>0: no limit. A log over its size continues in a new part; beyond the folder&apos;s size the oldest logs are deleted, never the one being written.</source>
+        <translation>0: без обмеження. Журнал, що перевищив розмір, продовжується в новій частині; понад розмір теки видаляються найстаріші журнали, але ніколи не той, що записується.</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Застосувати</translation>
+    </message>
+</context>
+<context>
+    <name>InstrumentPanel</name>
+    <message>
+        <source>%1 (%2, %3)</source>
+        <translation>%1 (%2, %3)</translation>
+    </message>
+    <message>
+        <source>No vehicle chosen</source>
+        <translation>Апарат не вибрано</translation>
+    </message>
+    <message>
+        <source>Altitude AGL</source>
+        <translation>Висота AGL</translation>
+    </message>
+    <message>
+        <source>Altitude AMSL</source>
+        <translation>Висота AMSL</translation>
+    </message>
+    <message>
+        <source>Ground speed</source>
+        <translation>Шляхова швидкість</translation>
+    </message>
+    <message>
+        <source>Vertical speed</source>
+        <translation>Вертикальна швидкість</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Курс</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Батарея</translation>
+    </message>
+    <message>
+        <source>GPS</source>
+        <translation>GPS</translation>
+    </message>
+    <message>
+        <source>fix %1, %2 satellites</source>
+        <translation>фікс %1, супутників: %2</translation>
+    </message>
+    <message>
+        <source>Mode</source>
+        <translation>Режим</translation>
+    </message>
+    <message>
+        <source>Armed</source>
+        <translation>Розблоковано</translation>
+    </message>
+    <message>
+        <source>ARMED</source>
+        <translation>РОЗБЛОКОВАНО</translation>
+    </message>
+    <message>
+        <source>disarmed</source>
+        <translation>заблоковано</translation>
+    </message>
+    <message>
+        <source>Link</source>
+        <translation>Зв’язок</translation>
+    </message>
+    <message>
+        <source> (no data)</source>
+        <translation> (немає даних)</translation>
+    </message>
+    <message>
+        <source>%1, %2 Hz</source>
+        <translation>%1, %2 Hz</translation>
+    </message>
+    <message>
+        <source>Flight time</source>
+        <translation>Час польоту</translation>
+    </message>
+    <message>
+        <source>To home</source>
+        <translation>До дому</translation>
+    </message>
+    <message>
+        <source>Mission</source>
+        <translation>Місія</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Лишилося</translation>
+    </message>
+    <message>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>LoginPage</name>
+    <message>
+        <source>Connect to a UgCS server</source>
+        <translation>Підключення до сервера UgCS</translation>
+    </message>
+    <message>
+        <source>Server (host:port)</source>
+        <translation>Сервер (host:port)</translation>
+    </message>
+    <message>
+        <source>Host name or address and HCI port of the UgCS server</source>
+        <translation>Ім’я або адреса хоста та порт HCI сервера UgCS</translation>
+    </message>
+    <message>
+        <source>User</source>
+        <translation>Користувач</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Пароль</translation>
+    </message>
+    <message>
+        <source>Remember the password on this computer</source>
+        <translation>Запам’ятати пароль на цьому комп’ютері</translation>
+    </message>
+    <message>
+        <source>Kept in this computer&apos;s keyring for this server and user, never in a file</source>
+        <translation>Зберігається в сховищі паролів цього комп’ютера для цього сервера й користувача, ніколи не у файлі</translation>
+    </message>
+    <message>
+        <source>Connect</source>
+        <translation>Підключитися</translation>
+    </message>
+    <message>
+        <source>Log in (Enter in the password field)</source>
+        <translation>Увійти (Enter у полі пароля)</translation>
+    </message>
+    <message>
+        <source>Disconnect</source>
+        <translation>Відключитися</translation>
+    </message>
+    <message>
+        <source>Logged in as %1 at %2.</source>
+        <translation>Ви увійшли як %1 на %2.</translation>
+    </message>
+    <message>
+        <source>%1…</source>
+        <translation>%1…</translation>
+    </message>
+</context>
+<context>
+    <name>Main</name>
+    <message>
+        <source>Sortie</source>
+        <translation>Sortie</translation>
+    </message>
+    <message>
+        <source>Login</source>
+        <translation>Вхід</translation>
+    </message>
+    <message>
+        <source>Mission</source>
+        <translation>Місія</translation>
+    </message>
+    <message>
+        <source>Live telemetry</source>
+        <translation>Телеметрія</translation>
+    </message>
+    <message>
+        <source>Map…</source>
+        <translation>Карта…</translation>
+    </message>
+    <message>
+        <source>Choose the map source (Ctrl+M)</source>
+        <translation>Вибрати джерело карти (Ctrl+M)</translation>
+    </message>
+    <message>
+        <source>Offline…</source>
+        <translation>Офлайн…</translation>
+    </message>
+    <message>
+        <source>Download the web map of an area for work without a network</source>
+        <translation>Завантажити веб-карту району для роботи без мережі</translation>
+    </message>
+    <message>
+        <source>Logs…</source>
+        <translation>Журнали…</translation>
+    </message>
+    <message>
+        <source>Where flight logs are recorded, and how much they may take</source>
+        <translation>Куди записуються журнали польотів і скільки місця вони можуть займати</translation>
+    </message>
+    <message>
+        <source>ft, mph</source>
+        <translation>ft, mph</translation>
+    </message>
+    <message>
+        <source>m, m/s</source>
+        <translation>m, m/s</translation>
+    </message>
+    <message>
+        <source>Switch between metric and imperial units</source>
+        <translation>Перемкнути метричні та імперські одиниці</translation>
+    </message>
+    <message>
+        <source>Keyboard shortcuts (F1)</source>
+        <translation>Гарячі клавіші (F1)</translation>
+    </message>
+</context>
+<context>
+    <name>MapPane</name>
+    <message>
+        <source>Zoom in (+, wheel)</source>
+        <translation>Наблизити (+, коліщатко)</translation>
+    </message>
+    <message>
+        <source>Zoom out (−, wheel)</source>
+        <translation>Віддалити (−, коліщатко)</translation>
+    </message>
+</context>
+<context>
+    <name>MapSourceDialog</name>
+    <message>
+        <source>Map source</source>
+        <translation>Джерело карти</translation>
+    </message>
+    <message>
+        <source>Offline base map (land outlines, always available)</source>
+        <translation>Офлайн-базова карта (контури суходолу, завжди доступна)</translation>
+    </message>
+    <message>
+        <source>Web tiles from a URL template</source>
+        <translation>Веб-тайли за шаблоном URL</translation>
+    </message>
+    <message>
+        <source>{z}, {x} and {y} (or {-y}) are replaced per tile; {s} by a subdomain</source>
+        <translation>{z}, {x} і {y} (або {-y}) підставляються для кожного тайла; {s} — піддомен</translation>
+    </message>
+    <message>
+        <source>MBTiles file (offline raster tiles)</source>
+        <translation>Файл MBTiles (офлайн растрові тайли)</translation>
+    </message>
+    <message>
+        <source>/path/to/area.mbtiles</source>
+        <translation>/шлях/до/району.mbtiles</translation>
+    </message>
+</context>
+<context>
+    <name>MissionPage</name>
+    <message>
+        <source>Zones (%1)</source>
+        <translation>Зони (%1)</translation>
+    </message>
+    <message>
+        <source>Click the centre line (%1 so far)</source>
+        <translation>Клацніть осьову лінію (поки що %1)</translation>
+    </message>
+    <message>
+        <source>Click the corners of the area (%1 so far)</source>
+        <translation>Клацніть кути району (поки що %1)</translation>
+    </message>
+    <message>
+        <source>Click where it goes</source>
+        <translation>Клацніть місце розміщення</translation>
+    </message>
+    <message>
+        <source>Create</source>
+        <translation>Створити</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Скасувати</translation>
+    </message>
+    <message>
+        <source>battery change</source>
+        <translation>заміна батареї</translation>
+    </message>
+    <message>
+        <source>no return</source>
+        <translation>точка неповернення</translation>
+    </message>
+</context>
+<context>
+    <name>OfflineMapsDialog</name>
+    <message>
+        <source>Offline maps</source>
+        <translation>Офлайн-карти</translation>
+    </message>
+    <message>
+        <source>From %1</source>
+        <translation>З %1</translation>
+    </message>
+    <message>
+        <source>Choose a web tile server in Map source first.</source>
+        <translation>Спочатку виберіть веб-сервер тайлів у «Джерело карти».</translation>
+    </message>
+    <message>
+        <source>The open route</source>
+        <translation>Відкритий маршрут</translation>
+    </message>
+    <message>
+        <source>and</source>
+        <translation>і</translation>
+    </message>
+    <message>
+        <source>m around it</source>
+        <translation>m навколо нього</translation>
+    </message>
+    <message>
+        <source>The map&apos;s view</source>
+        <translation>Видима область карти</translation>
+    </message>
+    <message>
+        <source>Zoom from</source>
+        <translation>Масштаб від</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>до</translation>
+    </message>
+    <message>
+        <source>Pack file</source>
+        <translation>Файл пакета</translation>
+    </message>
+    <message>
+        <source>Attribution</source>
+        <translation>Атрибуція</translation>
+    </message>
+    <message>
+        <source>As the provider&apos;s usage policy asks, e.g. © OpenStreetMap contributors</source>
+        <translation>Як вимагають правила постачальника, напр. © OpenStreetMap contributors</translation>
+    </message>
+    <message>
+        <source>Cache only: the map never uses the network (the pack, then the disk cache)</source>
+        <translation>Лише кеш: карта ніколи не використовує мережу (пакет, потім дисковий кеш)</translation>
+    </message>
+    <message>
+        <source>Download</source>
+        <translation>Завантажити</translation>
+    </message>
+    <message>
+        <source>Resume</source>
+        <translation>Продовжити</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Зупинити</translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source> in %1 s</source>
+        <translation> через %1 s</translation>
+    </message>
+    <message>
+        <source>Arm</source>
+        <translation>Розблокувати</translation>
+    </message>
+    <message>
+        <source>Disarm</source>
+        <translation>Заблокувати</translation>
+    </message>
+    <message>
+        <source>Take off</source>
+        <translation>Зліт</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Авто</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <source>Guided</source>
+        <translation>Керований</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>Ручний</translation>
+    </message>
+    <message>
+        <source>Land</source>
+        <translation>Посадка</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Повернення додому</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 km</source>
+        <translation>%1 km</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>missed</source>
+        <translation>пропущено</translation>
+    </message>
+    <message>
+        <source>That vehicle is not in this log (it holds %1).</source>
+        <translation>Цього апарата немає в журналі (у ньому: %1).</translation>
+    </message>
+    <message>
+        <source>no vehicle</source>
+        <translation>немає апарата</translation>
+    </message>
+    <message>
+        <source>Route &quot;%1&quot; has fewer than two waypoints: there is nothing to compare.</source>
+        <translation>Маршрут «%1» має менше двох точок: немає чого порівнювати.</translation>
+    </message>
+    <message>
+        <source>%1 has no track in this log to compare with.</source>
+        <translation>%1 не має треку в цьому журналі для порівняння.</translation>
+    </message>
+    <message>
+        <source>Route &quot;%1&quot; does not match %2: its waypoints are %3 km from anywhere %2 flew in this log.</source>
+        <translation>Маршрут «%1» не відповідає %2: його точки за %3 km від будь-якого місця, де %2 літав у цьому журналі.</translation>
+    </message>
+    <message>
+        <source>%1 flown by %2, %3 to %4
+</source>
+        <translation>%1, виконав %2, з %3 до %4
+</translation>
+    </message>
+    <message>
+        <source>
+waypoint  reached                    closest
+</source>
+        <translation>
+   точка  досягнуто                  найближче
+</translation>
+    </message>
+    <message>
+        <source>
+leg      samples  cross-track max  mean      altitude max  mean
+</source>
+        <translation>
+ділянка  відліки  бічн.відх.макс  середнє   висота макс   середнє
+</translation>
+    </message>
+    <message>
+        <source>
+total: %1 reached, %2 missed; cross-track max %3, mean %4; altitude max %5, mean %6
+</source>
+        <translation>
+разом: досягнуто %1, пропущено %2; бічне відхилення макс %3, середнє %4; висота макс %5, середня %6
+</translation>
+    </message>
+    <message>
+        <source>%1: no such file</source>
+        <translation>%1: файлу не існує</translation>
+    </message>
+    <message>
+        <source>%1: cannot be opened: %2</source>
+        <translation>%1: не вдається відкрити: %2</translation>
+    </message>
+    <message>
+        <source>no Sortie flight log header</source>
+        <translation>немає заголовка журналу польоту Sortie</translation>
+    </message>
+    <message>
+        <source>%1 is not a Sortie flight log (%2)</source>
+        <translation>%1 не є журналом польоту Sortie (%2)</translation>
+    </message>
+    <message>
+        <source>%1: the vehicles cannot be read: %2</source>
+        <translation>%1: не вдається прочитати апарати: %2</translation>
+    </message>
+    <message>
+        <source>the vehicle list is damaged: %1</source>
+        <translation>список апаратів пошкоджено: %1</translation>
+    </message>
+    <message>
+        <source>block %1 (after %2 good ones, %3) is damaged: %4</source>
+        <translation>блок %1 (після %2 цілих, %3) пошкоджено: %4</translation>
+    </message>
+    <message>
+        <source>at the start</source>
+        <translation>на початку</translation>
+    </message>
+    <message>
+        <source>unknown vehicle</source>
+        <translation>невідомий апарат</translation>
+    </message>
+    <message>
+        <source>stopped after %1 good blocks (%2): %3</source>
+        <translation>зупинено після %1 цілих блоків (%2): %3</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>немає</translation>
+    </message>
+    <message>
+        <source>the telemetry cannot be read: %1</source>
+        <translation>не вдається прочитати телеметрію: %1</translation>
+    </message>
+    <message>
+        <source>the events stop after %1: %2</source>
+        <translation>події обриваються після %1: %2</translation>
+    </message>
+    <message>
+        <source>the events cannot be read: %1</source>
+        <translation>не вдається прочитати події: %1</translation>
+    </message>
+    <message>
+        <source>the routes stop early: %1</source>
+        <translation>маршрути обриваються передчасно: %1</translation>
+    </message>
+    <message>
+        <source>the routes cannot be read: %1</source>
+        <translation>не вдається прочитати маршрути: %1</translation>
+    </message>
+    <message>
+        <source>file:     %1
+</source>
+        <translation>файл:     %1
+</translation>
+    </message>
+    <message>
+        <source>span:     %1 to %2 (%3 s)
+</source>
+        <translation>період:   з %1 до %2 (%3 s)
+</translation>
+    </message>
+    <message>
+        <source>DAMAGED:  read up to the last good record; %1
+</source>
+        <translation>ПОШКОДЖЕНО: прочитано до останнього цілого запису; %1
+</translation>
+    </message>
+    <message>
+        <source>vehicles: %1
+</source>
+        <translation>апарати:  %1
+</translation>
+    </message>
+    <message>
+        <source>, %1 to %2</source>
+        <translation>, з %1 до %2</translation>
+    </message>
+    <message>
+        <source>    route uploaded %1: %2 waypoints
+</source>
+        <translation>    маршрут завантажено %1: точок: %2
+</translation>
+    </message>
+    <message>
+        <source>
+events:   %1
+</source>
+        <translation>
+події:    %1
+</translation>
+    </message>
+    <message>
+        <source> (failed)</source>
+        <translation> (невдало)</translation>
+    </message>
+    <message>
+        <source>a replayed vehicle takes no commands</source>
+        <translation>апарат у відтворенні не приймає команд</translation>
+    </message>
+</context>
+<context>
+    <name>ReplayTimeline</name>
+    <message>
+        <source>Open a flight log</source>
+        <translation>Відкрити журнал польоту</translation>
+    </message>
+    <message>
+        <source>Flight logs (*.sortielog)</source>
+        <translation>Журнали польотів (*.sortielog)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Усі файли (*)</translation>
+    </message>
+    <message>
+        <source>Export tracks</source>
+        <translation>Експорт треків</translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation>Експортовано в %1.</translation>
+    </message>
+    <message>
+        <source>Open log…</source>
+        <translation>Відкрити журнал…</translation>
+    </message>
+    <message>
+        <source>Server history…</source>
+        <translation>Історія сервера…</translation>
+    </message>
+    <message>
+        <source>REPLAY — %1</source>
+        <translation>ВІДТВОРЕННЯ — %1</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Відтворити</translation>
+    </message>
+    <message>
+        <source>Previous event</source>
+        <translation>Попередня подія</translation>
+    </message>
+    <message>
+        <source>Next event</source>
+        <translation>Наступна подія</translation>
+    </message>
+    <message>
+        <source>Jump to event (%1)</source>
+        <translation>Перейти до події (%1)</translation>
+    </message>
+    <message>
+        <source>Loading plots…</source>
+        <translation>Завантаження графіків…</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Експорт…</translation>
+    </message>
+    <message>
+        <source>Back to live</source>
+        <translation>До реального часу</translation>
+    </message>
+</context>
+<context>
+    <name>RestoreDialog</name>
+    <message>
+        <source>Autosaved edits</source>
+        <translation>Автозбережені зміни</translation>
+    </message>
+    <message>
+        <source>Restore one of %1 unsaved routes?</source>
+        <translation>Відновити один із незбережених маршрутів (%1)?</translation>
+    </message>
+    <message>
+        <source>Restore unsaved edits?</source>
+        <translation>Відновити незбережені зміни?</translation>
+    </message>
+    <message>
+        <source>Sortie did not close normally. These routes had unsaved edits, saved automatically. Choose one to see its changes; the others are kept and offered again at the next start.</source>
+        <translation>Sortie не завершився належним чином. Ці маршрути мали незбережені зміни, збережені автоматично. Виберіть один, щоб переглянути його зміни; решта зберігаються й будуть запропоновані знову під час наступного запуску.</translation>
+    </message>
+    <message>
+        <source>Sortie did not close normally. Edits of “%1” were saved automatically at %2.</source>
+        <translation>Sortie не завершився належним чином. Зміни «%1» збережено автоматично о %2.</translation>
+    </message>
+    <message>
+        <source>%1 — saved %2</source>
+        <translation>%1 — збережено %2</translation>
+    </message>
+    <message>
+        <source>It belongs to %1.</source>
+        <translation>Належить: %1.</translation>
+    </message>
+    <message>
+        <source>Changes since the last save:</source>
+        <translation>Зміни після останнього збереження:</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Відкинути</translation>
+    </message>
+    <message>
+        <source>Start without these edits (the file is kept as a backup)</source>
+        <translation>Почати без цих змін (файл зберігається як резервна копія)</translation>
+    </message>
+    <message>
+        <source>Later</source>
+        <translation>Пізніше</translation>
+    </message>
+    <message>
+        <source>Keep them and decide after signing in</source>
+        <translation>Зберегти їх і вирішити після входу</translation>
+    </message>
+    <message>
+        <source>Restore</source>
+        <translation>Відновити</translation>
+    </message>
+</context>
+<context>
+    <name>RoutePanel</name>
+    <message>
+        <source>Import a route</source>
+        <translation>Імпорт маршруту</translation>
+    </message>
+    <message>
+        <source>Routes (*.sortie *.plan *.waypoints *.txt *.kml *.kmz)</source>
+        <translation>Маршрути (*.sortie *.plan *.waypoints *.txt *.kml *.kmz)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Усі файли (*)</translation>
+    </message>
+    <message>
+        <source>The vehicle&apos;s energy profile</source>
+        <translation>Енергетичний профіль апарата</translation>
+    </message>
+    <message>
+        <source>Energy profiles (*.json)</source>
+        <translation>Енергетичні профілі (*.json)</translation>
+    </message>
+    <message>
+        <source>Export the route</source>
+        <translation>Експорт маршруту</translation>
+    </message>
+    <message>
+        <source>Sortie (*.sortie)</source>
+        <translation>Sortie (*.sortie)</translation>
+    </message>
+    <message>
+        <source>QGroundControl plan (*.plan)</source>
+        <translation>План QGroundControl (*.plan)</translation>
+    </message>
+    <message>
+        <source>Waypoint list (*.waypoints)</source>
+        <translation>Список точок (*.waypoints)</translation>
+    </message>
+    <message>
+        <source>KML (*.kml)</source>
+        <translation>KML (*.kml)</translation>
+    </message>
+    <message>
+        <source>DJI Pilot 2 route, WPML (*.kmz)</source>
+        <translation>Маршрут DJI Pilot 2, WPML (*.kmz)</translation>
+    </message>
+    <message>
+        <source>Choose a route…</source>
+        <translation>Виберіть маршрут…</translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <translation>Відкрити</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Зберегти</translation>
+    </message>
+    <message>
+        <source>Save on the server, under its lock (Ctrl+S)</source>
+        <translation>Зберегти на сервері під його блокуванням (Ctrl+S)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Вернути</translation>
+    </message>
+    <message>
+        <source>Undo %1 (Ctrl+Z)</source>
+        <translation>Вернути: %1 (Ctrl+Z)</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторити</translation>
+    </message>
+    <message>
+        <source>Redo %1 (Ctrl+Shift+Z)</source>
+        <translation>Повторити: %1 (Ctrl+Shift+Z)</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Видалити</translation>
+    </message>
+    <message>
+        <source>Delete the selected waypoints (Del)</source>
+        <translation>Видалити вибрані точки (Del)</translation>
+    </message>
+    <message>
+        <source>Area scan</source>
+        <translation>Сканування площі</translation>
+    </message>
+    <message>
+        <source>Draw an area to scan: click its corners on the map</source>
+        <translation>Намалюйте район для сканування: клацніть його кути на карті</translation>
+    </message>
+    <message>
+        <source>Import…</source>
+        <translation>Імпорт…</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Експорт…</translation>
+    </message>
+    <message>
+        <source>Zone checks…</source>
+        <translation>Перевірка зон…</translation>
+    </message>
+    <message>
+        <source>Which no-fly zones the server&apos;s processing refuses the route for</source>
+        <translation>Через які заборонені зони обробка на сервері відхиляє маршрут</translation>
+    </message>
+    <message>
+        <source>Refuse crossing aerodrome zones</source>
+        <translation>Відхиляти перетин зон аеродромів</translation>
+    </message>
+    <message>
+        <source>Refuse crossing custom zones</source>
+        <translation>Відхиляти перетин власних зон</translation>
+    </message>
+    <message>
+        <source>Process</source>
+        <translation>Обробити</translation>
+    </message>
+    <message>
+        <source>Prepare the route for the chosen vehicle, as the upload will, and show what it would fly (Ctrl+P)</source>
+        <translation>Підготувати маршрут для вибраного апарата, як це зробить завантаження, і показати, що він пролетить (Ctrl+P)</translation>
+    </message>
+    <message>
+        <source>Vehicle…</source>
+        <translation>Апарат…</translation>
+    </message>
+    <message>
+        <source>Upload</source>
+        <translation>Завантажити</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Скасувати</translation>
+    </message>
+    <message>
+        <source>Yours (version %1, edited) against theirs (version %2, grey on the map):</source>
+        <translation>Ваша (версія %1, змінена) проти їхньої (версія %2, сіра на карті):</translation>
+    </message>
+    <message>
+        <source>They changed: %1</source>
+        <translation>Вони змінили: %1</translation>
+    </message>
+    <message>
+        <source>Keep mine (overwrite theirs)</source>
+        <translation>Залишити мою (перезаписати їхню)</translation>
+    </message>
+    <message>
+        <source>Take theirs (undo brings mine back)</source>
+        <translation>Взяти їхню («Вернути» поверне мою)</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Довжина</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Час</translation>
+    </message>
+    <message>
+        <source>Waypoints</source>
+        <translation>Точки</translation>
+    </message>
+    <message>
+        <source>Photos</source>
+        <translation>Фото</translation>
+    </message>
+    <message>
+        <source>Conflicts with other vehicles</source>
+        <translation>Конфлікти з іншими апаратами</translation>
+    </message>
+    <message>
+        <source>%1:%2  leg %3 · %4 (%5): %6 m across, %7 m in height</source>
+        <translation>%1:%2  ділянка %3 · %4 (%5): %6 m по горизонталі, %7 m по висоті</translation>
+    </message>
+    <message>
+        <source>flying</source>
+        <translation>у польоті</translation>
+    </message>
+    <message>
+        <source>uploaded</source>
+        <translation>завантажено</translation>
+    </message>
+    <message>
+        <source>Energy</source>
+        <translation>Енергія</translation>
+    </message>
+    <message>
+        <source>%1 Wh</source>
+        <translation>%1 Wh</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n batteries</source>
+        <translation>
+            <numerusform>%n батарея</numerusform>
+            <numerusform>%n батареї</numerusform>
+            <numerusform>%n батарей</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 % left</source>
+        <translation>лишиться %1 %</translation>
+    </message>
+    <message>
+        <source>No return</source>
+        <translation>Точка неповернення</translation>
+    </message>
+    <message>
+        <source>unknown: no home</source>
+        <translation>невідомо: немає дому</translation>
+    </message>
+    <message>
+        <source>after %1 (leg %2)</source>
+        <translation>після %1 (ділянка %2)</translation>
+    </message>
+    <message>
+        <source>none: home in reach</source>
+        <translation>немає: дім у межах досяжності</translation>
+    </message>
+    <message>
+        <source>Beyond this point of the route, flying straight home no longer lands with the reserve</source>
+        <translation>Після цієї точки маршруту прямий політ додому вже не завершиться посадкою з резервом</translation>
+    </message>
+    <message>
+        <source>Load an energy profile to see whether the battery lasts.</source>
+        <translation>Виберіть енергетичний профіль, щоб побачити, чи вистачить батареї.</translation>
+    </message>
+    <message>
+        <source>Profile</source>
+        <translation>Профіль</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>unnamed</source>
+        <translation>без назви</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>немає</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Вибрати…</translation>
+    </message>
+    <message>
+        <source>The vehicle&apos;s energy profile: a JSON file, e.g. from sortie-log fit</source>
+        <translation>Енергетичний профіль апарата: файл JSON, напр. від sortie-log fit</translation>
+    </message>
+    <message>
+        <source>Wind</source>
+        <translation>Вітер</translation>
+    </message>
+    <message>
+        <source>Wind speed, m/s</source>
+        <translation>Швидкість вітру, m/s</translation>
+    </message>
+    <message>
+        <source>m/s from</source>
+        <translation>m/s, з</translation>
+    </message>
+    <message>
+        <source>The direction the wind blows from, degrees clockwise from north</source>
+        <translation>Напрямок, звідки дме вітер, у градусах за годинниковою стрілкою від півночі</translation>
+    </message>
+    <message>
+        <source>Select the segment</source>
+        <translation>Вибрати сегмент</translation>
+    </message>
+</context>
+<context>
+    <name>SegmentEditor</name>
+    <message>
+        <source>Radius</source>
+        <translation>Радіус</translation>
+    </message>
+    <message>
+        <source>Advanced parameters</source>
+        <translation>Додаткові параметри</translation>
+    </message>
+    <message>
+        <source>%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos</source>
+        <translation>висота %1 m · %2 cm/px · кадр %3 × %4 m · проходи через %5 m · фото кожні %6 m · фото: %7</translation>
+    </message>
+</context>
+<context>
+    <name>ServerAction</name>
+    <message>
+        <source>Server action</source>
+        <translation>Серверна дія</translation>
+    </message>
+</context>
+<context>
+    <name>ServerHistoryDialog</name>
+    <message>
+        <source>Server history</source>
+        <translation>Історія сервера</translation>
+    </message>
+    <message>
+        <source>Vehicle</source>
+        <translation>Апарат</translation>
+    </message>
+    <message>
+        <source>From (UTC)</source>
+        <translation>Від (UTC)</translation>
+    </message>
+    <message>
+        <source>To (UTC)</source>
+        <translation>До (UTC)</translation>
+    </message>
+    <message>
+        <source>Last hour</source>
+        <translation>Остання година</translation>
+    </message>
+    <message>
+        <source>Fetch and replay</source>
+        <translation>Отримати й відтворити</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Скасувати</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Закрити</translation>
+    </message>
+</context>
+<context>
+    <name>ShortcutHelp</name>
+    <message>
+        <source>Keyboard shortcuts</source>
+        <translation>Гарячі клавіші</translation>
+    </message>
+    <message>
+        <source>On the map</source>
+        <translation>На карті</translation>
+    </message>
+    <message>
+        <source>Esc closes this help.</source>
+        <translation>Esc закриває цю довідку.</translation>
+    </message>
+</context>
+<context>
+    <name>Shortcuts</name>
+    <message>
+        <source>Pan the map (Shift: faster)</source>
+        <translation>Пересунути карту (Shift: швидше)</translation>
+    </message>
+    <message>
+        <source>Zoom in / out (also the mouse wheel and pinch)</source>
+        <translation>Наблизити / віддалити (також коліщатко миші й жест щипка)</translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation>Перетягування</translation>
+    </message>
+    <message>
+        <source>Pan the map</source>
+        <translation>Пересунути карту</translation>
+    </message>
+    <message>
+        <source>Shift+Drag</source>
+        <translation>Shift+перетягування</translation>
+    </message>
+    <message>
+        <source>Select waypoints in a rectangle (Ctrl+Shift adds)</source>
+        <translation>Вибрати точки прямокутником (Ctrl+Shift додає)</translation>
+    </message>
+    <message>
+        <source>Click</source>
+        <translation>Клацання</translation>
+    </message>
+    <message>
+        <source>Add a waypoint; on a leg: insert one; on a waypoint: select (Ctrl toggles, Shift extends)</source>
+        <translation>Додати точку; на ділянці: вставити; на точці: вибрати (Ctrl перемикає, Shift розширює)</translation>
+    </message>
+    <message>
+        <source>Drag a waypoint</source>
+        <translation>Перетягування точки</translation>
+    </message>
+    <message>
+        <source>Move it, or the whole selection</source>
+        <translation>Пересунути її або весь вибір</translation>
+    </message>
+    <message>
+        <source>Show or hide this help</source>
+        <translation>Показати або сховати цю довідку</translation>
+    </message>
+    <message>
+        <source>Login page</source>
+        <translation>Сторінка входу</translation>
+    </message>
+    <message>
+        <source>Mission page</source>
+        <translation>Сторінка місії</translation>
+    </message>
+    <message>
+        <source>Live telemetry page</source>
+        <translation>Сторінка телеметрії</translation>
+    </message>
+    <message>
+        <source>Save the route on the server</source>
+        <translation>Зберегти маршрут на сервері</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Вернути</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторити</translation>
+    </message>
+    <message>
+        <source>Delete the selected waypoints</source>
+        <translation>Видалити вибрані точки</translation>
+    </message>
+    <message>
+        <source>Process the route on the server</source>
+        <translation>Обробити маршрут на сервері</translation>
+    </message>
+    <message>
+        <source>Choose the map source</source>
+        <translation>Вибрати джерело карти</translation>
+    </message>
+    <message>
+        <source>Focus the map (then arrows and +/− move it)</source>
+        <translation>Фокус на карту (потім стрілки й +/− рухають її)</translation>
+    </message>
+    <message>
+        <source>Full screen on or off</source>
+        <translation>Повноекранний режим увімк./вимк.</translation>
+    </message>
+    <message>
+        <source>Quit</source>
+        <translation>Вийти</translation>
+    </message>
+</context>
+<context>
+    <name>StatusBar</name>
+    <message>
+        <source>zoom %1</source>
+        <translation>масштаб %1</translation>
+    </message>
+</context>
+<context>
+    <name>TelemetryPage</name>
+    <message>
+        <source>Vehicles</source>
+        <translation>Апарати</translation>
+    </message>
+    <message>
+        <source>No vehicles. Log in to a server or connect a VCI vehicle.</source>
+        <translation>Немає апаратів. Увійдіть на сервер або підключіть апарат VCI.</translation>
+    </message>
+    <message>
+        <source>Command together with the other ticked vehicles</source>
+        <translation>Керувати разом з іншими позначеними апаратами</translation>
+    </message>
+    <message>
+        <source>Vehicle %1</source>
+        <translation>Апарат %1</translation>
+    </message>
+    <message>
+        <source>A vehicle reached directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600</source>
+        <translation>Апарат, підключений напряму через VCI: tcp://host:port або serial:///dev/ttyX?baud=57600</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Додати</translation>
+    </message>
+    <message>
+        <source>Fit all</source>
+        <translation>Показати всі</translation>
+    </message>
+    <message>
+        <source>Show every vehicle on the map</source>
+        <translation>Показати всі апарати на карті</translation>
+    </message>
+    <message>
+        <source>Follow</source>
+        <translation>Стежити</translation>
+    </message>
+    <message>
+        <source>Keep the chosen vehicle in the middle of the map</source>
+        <translation>Тримати вибраний апарат у центрі карти</translation>
+    </message>
+    <message>
+        <source>Fly %1 to %2?</source>
+        <translation>Летіти %1 до %2?</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Додому</translation>
+    </message>
+    <message>
+        <source>Too close: %1</source>
+        <translation>Надто близько: %1</translation>
+    </message>
+    <message>
+        <source>Airspace: %1</source>
+        <translation>Повітряний простір: %1</translation>
+    </message>
+    <message>
+        <source>Plot this field too</source>
+        <translation>Додати це поле на графік</translation>
+    </message>
+    <message>
+        <source>1 min</source>
+        <translation>1 min</translation>
+    </message>
+    <message>
+        <source>5 min</source>
+        <translation>5 min</translation>
+    </message>
+    <message>
+        <source>30 min</source>
+        <translation>30 min</translation>
+    </message>
+    <message>
+        <source>Remove from the plot</source>
+        <translation>Прибрати з графіка</translation>
+    </message>
+    <message>
+        <source>All vehicles</source>
+        <translation>Усі апарати</translation>
+    </message>
+    <message>
+        <source>Compare these fields across every vehicle</source>
+        <translation>Порівняти ці поля для всіх апаратів</translation>
+    </message>
+</context>
+<context>
+    <name>UploadQuestion</name>
+    <message>
+        <source>Upload the route?</source>
+        <translation>Завантажити маршрут?</translation>
+    </message>
+    <message>
+        <source>Upload without saving</source>
+        <translation>Завантажити без збереження</translation>
+    </message>
+    <message>
+        <source>Upload</source>
+        <translation>Завантажити</translation>
+    </message>
+    <message>
+        <source>Save and upload</source>
+        <translation>Зберегти й завантажити</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Скасувати</translation>
+    </message>
+</context>
+<context>
+    <name>WaypointTable</name>
+    <message numerus="yes">
+        <source>%n selected:</source>
+        <translation>
+            <numerusform>Вибрано %n:</numerusform>
+            <numerusform>Вибрано %n:</numerusform>
+            <numerusform>Вибрано %n:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>alt m</source>
+        <translation>вис. m</translation>
+    </message>
+    <message>
+        <source>Set</source>
+        <translation>Задати</translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>Altitude above ground (AGL) or above mean sea level (AMSL)</source>
+        <translation>Висота над поверхнею (AGL) або над середнім рівнем моря (AMSL)</translation>
+    </message>
+    <message>
+        <source>Heights:</source>
+        <translation>Висоти:</translation>
+    </message>
+    <message>
+        <source>as set</source>
+        <translation>як задано</translation>
+    </message>
+    <message>
+        <source>all AMSL</source>
+        <translation>усі AMSL</translation>
+    </message>
+    <message>
+        <source>all AGL</source>
+        <translation>усі AGL</translation>
+    </message>
+    <message>
+        <source>AMSL and AGL are converted through the ground under each waypoint</source>
+        <translation>AMSL і AGL перераховуються через рельєф під кожною точкою</translation>
+    </message>
+    <message>
+        <source>ground: %1</source>
+        <translation>рельєф: %1</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>#</translation>
+    </message>
+    <message>
+        <source>Latitude</source>
+        <translation>Широта</translation>
+    </message>
+    <message>
+        <source>Longitude</source>
+        <translation>Довгота</translation>
+    </message>
+    <message>
+        <source>Alt</source>
+        <translation>Вис.</translation>
+    </message>
+    <message>
+        <source>AMSL</source>
+        <translation>AMSL</translation>
+    </message>
+    <message>
+        <source>AGL</source>
+        <translation>AGL</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Тип</translation>
+    </message>
+    <message>
+        <source>Ground</source>
+        <translation>Рельєф</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Швидкість</translation>
+    </message>
+    <message>
+        <source>Actions</source>
+        <translation>Дії</translation>
+    </message>
+    <message>
+        <source>Area scan</source>
+        <translation>Сканування площі</translation>
+    </message>
+</context>
+<context>
+    <name>ZonePanel</name>
+    <message>
+        <source>Load zones</source>
+        <translation>Імпорт зон</translation>
+    </message>
+    <message>
+        <source>Zones (*.geojson *.json *.kml *.plan)</source>
+        <translation>Зони (*.geojson *.json *.kml *.plan)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Усі файли (*)</translation>
+    </message>
+    <message>
+        <source>Zones (%1)</source>
+        <translation>Зони (%1)</translation>
+    </message>
+    <message>
+        <source>Undo</source>
+        <translation>Вернути</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <translation>Повторити</translation>
+    </message>
+    <message>
+        <source>Load…</source>
+        <translation>Імпорт…</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Полігон</translation>
+    </message>
+    <message>
+        <source>Click the corners on the map, then Create</source>
+        <translation>Клацніть кути на карті, потім «Створити»</translation>
+    </message>
+    <message>
+        <source>Circle</source>
+        <translation>Коло</translation>
+    </message>
+    <message>
+        <source>Click the centre on the map; drag its handle for the radius</source>
+        <translation>Клацніть центр на карті; тягніть маркер, щоб задати радіус</translation>
+    </message>
+    <message>
+        <source>%1 corners</source>
+        <translation>кутів: %1</translation>
+    </message>
+    <message>
+        <source>Create</source>
+        <translation>Створити</translation>
+    </message>
+    <message>
+        <source>Checked against the route when ticked</source>
+        <translation>Перевіряється щодо маршруту, якщо позначено</translation>
+    </message>
+    <message>
+        <source>%1 · %2 – %3</source>
+        <translation>%1 · %2 – %3</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Назва</translation>
+    </message>
+    <message>
+        <source>Kind</source>
+        <translation>Тип</translation>
+    </message>
+    <message>
+        <source>Floor (m)</source>
+        <translation>Нижня межа (m)</translation>
+    </message>
+    <message>
+        <source>ground</source>
+        <translation>поверхня</translation>
+    </message>
+    <message>
+        <source>Ceiling (m)</source>
+        <translation>Верхня межа (m)</translation>
+    </message>
+    <message>
+        <source>unlimited</source>
+        <translation>без обмеження</translation>
+    </message>
+    <message>
+        <source>Above</source>
+        <translation>Відносно</translation>
+    </message>
+    <message>
+        <source>Remove zone</source>
+        <translation>Видалити зону</translation>
+    </message>
+    <message>
+        <source>Warn within (m)</source>
+        <translation>Попереджати за (m)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie</name>
+    <message>
+        <source>Sortie: mission planning and live telemetry for UgCS servers and VCI vehicles.</source>
+        <translation>Sortie: планування місій і телеметрія в реальному часі для серверів UgCS та апаратів VCI.</translation>
+    </message>
+    <message>
+        <source>Start the built-in simulator on this computer and connect to it.</source>
+        <translation>Запустити вбудований симулятор на цьому комп’ютері й підключитися до нього.</translation>
+    </message>
+    <message>
+        <source>UgCS server to connect to.</source>
+        <translation>Сервер UgCS для підключення.</translation>
+    </message>
+    <message>
+        <source>User name to log in with.</source>
+        <translation>Ім’я користувача для входу.</translation>
+    </message>
+    <message>
+        <source>Connect a vehicle directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600.</source>
+        <translation>Підключити апарат напряму через VCI: tcp://host:port або serial:///dev/ttyX?baud=57600.</translation>
+    </message>
+    <message>
+        <source>Print the start-up time and memory in use, then quit (for benchmarks).</source>
+        <translation>Вивести час запуску й використану пам’ять, потім вийти (для бенчмарків).</translation>
+    </message>
+    <message>
+        <source>Folder for autosaved edits (default: the application data folder; also SORTIE_AUTOSAVE_DIR).</source>
+        <translation>Тека для автозбережених змін (типово: тека даних застосунку; також SORTIE_AUTOSAVE_DIR).</translation>
+    </message>
+    <message>
+        <source>SRTM .hgt terrain tiles (a tile or a folder), asked before the server (also the setting terrain/demFolder).</source>
+        <translation>Тайли рельєфу SRTM .hgt (тайл або тека), запитуються раніше за сервер (також налаштування terrain/demFolder).</translation>
+    </message>
+    <message>
+        <source>An ADS-B receiver&apos;s SBS-1 feed for manned traffic, as dump1090 serves it (port 30003); also the setting traffic/sbsAddress.</source>
+        <translation>Потік SBS-1 приймача ADS-B для пілотованих повітряних суден, як його віддає dump1090 (порт 30003); також налаштування traffic/sbsAddress.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ServerZones</name>
+    <message>
+        <source>Zones across the ±180° meridian are not supported; the view was not asked about.</source>
+        <translation>Зони через меридіан ±180° не підтримуються; запит для цієї області не надсилався.</translation>
+    </message>
+    <message>
+        <source>The server&apos;s no-fly zones could not be read: %1</source>
+        <translation>Не вдалося прочитати заборонені зони сервера: %1</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not saved: not connected to the server.</source>
+        <translation>Зону «%1» не збережено: немає підключення до сервера.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; cannot be saved on the server: %2.</source>
+        <translation>Зону «%1» не можна зберегти на сервері: %2.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not saved: %2</source>
+        <translation>Зону «%1» не збережено: %2</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not saved: it is locked (%2)</source>
+        <translation>Зону «%1» не збережено: її заблоковано (%2)</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was saved, but the server&apos;s answer cannot be read back: %2</source>
+        <translation>Зону «%1» збережено, але не вдається прочитати відповідь сервера: %2</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: it is not on the server.</source>
+        <translation>Зону «%1» не видалено: її немає на сервері.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: aerodrome zones are the server&apos;s own.</source>
+        <translation>Зону «%1» не видалено: зони аеродромів належать серверу.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: not connected to the server.</source>
+        <translation>Зону «%1» не видалено: немає підключення до сервера.</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: it is locked (%2)</source>
+        <translation>Зону «%1» не видалено: її заблоковано (%2)</translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was not deleted: %2</source>
+        <translation>Зону «%1» не видалено: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ZoneAlertMonitor</name>
+    <message>
+        <source>%1 is inside &apos;%2&apos;</source>
+        <translation>%1 усередині «%2»</translation>
+    </message>
+    <message>
+        <source>%1 enters &apos;%2&apos;%3</source>
+        <translation>%1 входить у «%2»%3</translation>
+    </message>
+    <message>
+        <source>%1 is outside &apos;%2&apos;</source>
+        <translation>%1 поза «%2»</translation>
+    </message>
+    <message>
+        <source>%1 leaves &apos;%2&apos;%3</source>
+        <translation>%1 виходить із «%2»%3</translation>
+    </message>
+    <message>
+        <source> (its height there is unknown)</source>
+        <translation> (його висота там невідома)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ZoneEditor</name>
+    <message>
+        <source>A zone needs at least three corners.</source>
+        <translation>Зоні потрібно щонайменше три кути.</translation>
+    </message>
+    <message>
+        <source>This polygon cannot be a zone: %1</source>
+        <translation>Цей полігон не може бути зоною: %1</translation>
+    </message>
+    <message>
+        <source>Draw zone</source>
+        <translation>Намалювати зону</translation>
+    </message>
+    <message>
+        <source>A circular zone needs a centre and a radius above 0 m.</source>
+        <translation>Круговій зоні потрібні центр і радіус більше 0 m.</translation>
+    </message>
+    <message>
+        <source>Draw circular zone</source>
+        <translation>Намалювати кругову зону</translation>
+    </message>
+    <message>
+        <source>There is no drawn zone %1.</source>
+        <translation>Немає намальованої зони %1.</translation>
+    </message>
+    <message>
+        <source>Remove zone</source>
+        <translation>Видалити зону</translation>
+    </message>
+    <message>
+        <source>That is not a position.</source>
+        <translation>Це не позиція.</translation>
+    </message>
+    <message>
+        <source>A circle has only its centre to move.</source>
+        <translation>У кола можна пересунути лише центр.</translation>
+    </message>
+    <message>
+        <source>The zone has no corner %1.</source>
+        <translation>Зона не має кута %1.</translation>
+    </message>
+    <message>
+        <source>Move zone corner</source>
+        <translation>Пересунути кут зони</translation>
+    </message>
+    <message>
+        <source>A corner can be added only to a polygon, on one of its edges.</source>
+        <translation>Кут можна додати лише до полігона, на одному з його ребер.</translation>
+    </message>
+    <message>
+        <source>Add zone corner</source>
+        <translation>Додати кут зони</translation>
+    </message>
+    <message>
+        <source>A zone keeps at least three corners.</source>
+        <translation>Зона зберігає щонайменше три кути.</translation>
+    </message>
+    <message>
+        <source>Remove zone corner</source>
+        <translation>Видалити кут зони</translation>
+    </message>
+    <message>
+        <source>The radius must be above 0 m.</source>
+        <translation>Радіус має бути більше 0 m.</translation>
+    </message>
+    <message>
+        <source>Only a circular zone has a radius.</source>
+        <translation>Радіус має лише кругова зона.</translation>
+    </message>
+    <message>
+        <source>Zone radius</source>
+        <translation>Радіус зони</translation>
+    </message>
+    <message>
+        <source>A zone needs a name.</source>
+        <translation>Зоні потрібна назва.</translation>
+    </message>
+    <message>
+        <source>Rename zone</source>
+        <translation>Перейменувати зону</translation>
+    </message>
+    <message>
+        <source>A zone is an exclusion or an inclusion zone, not &quot;%1&quot;.</source>
+        <translation>Зона може бути лише exclusion (заборонна) або inclusion (дозвільна), а не «%1».</translation>
+    </message>
+    <message>
+        <source>Zone kind</source>
+        <translation>Тип зони</translation>
+    </message>
+    <message>
+        <source>Heights are AMSL, AGL or HOME, not &quot;%1&quot;.</source>
+        <translation>Висоти задаються як AMSL, AGL або HOME, а не «%1».</translation>
+    </message>
+    <message>
+        <source>A floor or ceiling is a number of metres, or empty.</source>
+        <translation>Нижня чи верхня межа — це число метрів або порожнє поле.</translation>
+    </message>
+    <message>
+        <source>The ceiling (%1 m) must be above the floor (%2 m).</source>
+        <translation>Верхня межа (%1 m) має бути вище нижньої (%2 m).</translation>
+    </message>
+    <message>
+        <source>Zone floor and ceiling</source>
+        <translation>Нижня й верхня межі зони</translation>
+    </message>
+    <message>
+        <source>The zone would not be a valid polygon: %1</source>
+        <translation>Зона не була б коректним полігоном: %1</translation>
+    </message>
+    <message>
+        <source>Zone %1</source>
+        <translation>Зона %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client</name>
+    <message>
+        <source>%1 Fix it before %2.</source>
+        <translation>%1 Виправте це перед %2.</translation>
+    </message>
+    <message>
+        <source>%1 (and %n more error(s)) Fix them before %2.</source>
+        <translation>%1 (і ще помилок: %n) Виправте їх перед %2.</translation>
+    </message>
+    <message>
+        <source>Upload</source>
+        <translation>Завантаження</translation>
+    </message>
+    <message>
+        <source>uploading</source>
+        <translation>завантаженням</translation>
+    </message>
+    <message>
+        <source>Saving</source>
+        <translation>Збереження</translation>
+    </message>
+    <message>
+        <source>saving</source>
+        <translation>збереженням</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::AutosaveRecovery</name>
+    <message>
+        <source>The autosaved edits in %1 cannot be read: %2</source>
+        <translation>Не вдається прочитати автозбережені зміни в %1: %2</translation>
+    </message>
+    <message>
+        <source>The autosaved edits in %1 cannot be read (%2). The file was kept as %3.</source>
+        <translation>Не вдається прочитати автозбережені зміни в %1 (%2). Файл збережено як %3.</translation>
+    </message>
+    <message>
+        <source>The autosaved edits in %1 cannot be read (%2).</source>
+        <translation>Не вдається прочитати автозбережені зміни в %1 (%2).</translation>
+    </message>
+    <message>
+        <source>Untitled route</source>
+        <translation>Маршрут без назви</translation>
+    </message>
+    <message>
+        <source>route %1, version %2</source>
+        <translation>маршрут %1, версія %2</translation>
+    </message>
+    <message>
+        <source>, on %1</source>
+        <translation>, на %1</translation>
+    </message>
+    <message>
+        <source> as %1</source>
+        <translation> як %1</translation>
+    </message>
+    <message>
+        <source>The route open now has unsaved edits, and restoring would replace it: save or undo them first.</source>
+        <translation>Відкритий зараз маршрут має незбережені зміни, і відновлення замінить його: спершу збережіть або поверніть їх.</translation>
+    </message>
+    <message>
+        <source>%1 as %2</source>
+        <translation>%1 як %2</translation>
+    </message>
+    <message>
+        <source>These edits belong to route %1 on %2, and saving them updates that route. Sign in to %2 to restore them: choose Later, sign in, and they are offered again.</source>
+        <translation>Ці зміни належать маршруту %1 на %2, і їх збереження оновить той маршрут. Увійдіть на %2, щоб відновити їх: виберіть «Пізніше», увійдіть, і їх буде запропоновано знову.</translation>
+    </message>
+    <message>
+        <source>These edits belong to route %1 on %2, but this session is signed in to %3 as %4. Sign out and sign in to %2 to restore them; until then they are kept and offered again at each start.</source>
+        <translation>Ці зміни належать маршруту %1 на %2, але цей сеанс увійшов на %3 як %4. Вийдіть і увійдіть на %2, щоб відновити їх; доти вони зберігаються й пропонуються знову під час кожного запуску.</translation>
+    </message>
+    <message>
+        <source>Restore autosaved edits</source>
+        <translation>Відновити автозбережені зміни</translation>
+    </message>
+    <message>
+        <source>The autosave %1 could not be moved aside.</source>
+        <translation>Не вдалося перемістити автозбереження %1 убік.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::CommandPolicy</name>
+    <message>
+        <source>Manual</source>
+        <translation>Ручний</translation>
+    </message>
+    <message>
+        <source>Hold</source>
+        <translation>Утримання</translation>
+    </message>
+    <message>
+        <source>Taking off</source>
+        <translation>Зліт</translation>
+    </message>
+    <message>
+        <source>Auto (fly the mission)</source>
+        <translation>Авто (виконання місії)</translation>
+    </message>
+    <message>
+        <source>Guided</source>
+        <translation>Керований</translation>
+    </message>
+    <message>
+        <source>Land</source>
+        <translation>Посадка</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Повернення додому</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Невідомий</translation>
+    </message>
+    <message>
+        <source>the vehicle</source>
+        <translation>апарат</translation>
+    </message>
+    <message>
+        <source>Arm %1? Its motors may start.</source>
+        <translation>Розблокувати %1? Його мотори можуть запуститися.</translation>
+    </message>
+    <message>
+        <source>Disarm %1? It may be in the air, and would fall.</source>
+        <translation>Заблокувати %1? Він може бути в повітрі й упаде.</translation>
+    </message>
+    <message>
+        <source>Take off with %1 to %2 m above home?</source>
+        <translation>Зліт %1 на висоту %2 m над точкою дому?</translation>
+    </message>
+    <message numerus="yes">
+        <source>Start the mission on %1 (%n waypoint(s))?</source>
+        <translation>
+            <numerusform>Почати місію на %1 (%n точка)?</numerusform>
+            <numerusform>Почати місію на %1 (%n точки)?</numerusform>
+            <numerusform>Почати місію на %1 (%n точок)?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Start the mission on %1? Sortie has not seen its mission.</source>
+        <translation>Почати місію на %1? Sortie не бачив його місії.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::ConnectionController</name>
+    <message>
+        <source>connection lost; attempt %1 in %2 s</source>
+        <translation>зв’язок втрачено; спроба %1 через %2 s</translation>
+    </message>
+    <message>
+        <source>reconnected in a new session</source>
+        <translation>перепідключено в новому сеансі</translation>
+    </message>
+    <message>
+        <source>%1 at %2</source>
+        <translation>%1 на %2</translation>
+    </message>
+    <message>
+        <source>The server address is not usable: %1.</source>
+        <translation>Адреса сервера непридатна: %1.</translation>
+    </message>
+    <message>
+        <source>Enter a user name.</source>
+        <translation>Введіть ім’я користувача.</translation>
+    </message>
+    <message>
+        <source>%1. Check the server&apos;s address and this computer&apos;s network.</source>
+        <translation>%1. Перевірте адресу сервера й мережу цього комп’ютера.</translation>
+    </message>
+    <message>
+        <source>%1. Is the UgCS server running, and is the port right?</source>
+        <translation>%1. Чи запущено сервер UgCS і чи правильний порт?</translation>
+    </message>
+    <message>
+        <source>Wrong user name or password (%1).</source>
+        <translation>Неправильне ім’я користувача або пароль (%1).</translation>
+    </message>
+    <message>
+        <source>%1. This server cannot be used with Sortie.</source>
+        <translation>%1. Цей сервер не можна використовувати із Sortie.</translation>
+    </message>
+    <message>
+        <source>The server&apos;s licence allows no more connections (%1). Close another client or extend the licence.</source>
+        <translation>Ліцензія сервера не дозволяє більше підключень (%1). Закрийте інший клієнт або розширте ліцензію.</translation>
+    </message>
+    <message>
+        <source>The server did not answer in time (%1). It may be overloaded or not a UgCS server.</source>
+        <translation>Сервер не відповів вчасно (%1). Можливо, він перевантажений або це не сервер UgCS.</translation>
+    </message>
+    <message>
+        <source>The connection was closed (%1).</source>
+        <translation>З’єднання закрито (%1).</translation>
+    </message>
+    <message>
+        <source>The server answered something Sortie cannot use (%1).</source>
+        <translation>Сервер відповів чимось, що Sortie не може використати (%1).</translation>
+    </message>
+    <message>
+        <source>The server refused: %1</source>
+        <translation>Сервер відмовив: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::FleetRoutes</name>
+    <message>
+        <source>Unnamed route</source>
+        <translation>Маршрут без назви</translation>
+    </message>
+    <message>
+        <source>planned</source>
+        <translation>заплановано</translation>
+    </message>
+    <message>
+        <source>uploaded %1</source>
+        <translation>завантажено %1</translation>
+    </message>
+    <message>
+        <source>paused: waypoint %1 of %2</source>
+        <translation>пауза: точка %1 з %2</translation>
+    </message>
+    <message>
+        <source>flying: waypoint %1 of %2</source>
+        <translation>у польоті: точка %1 з %2</translation>
+    </message>
+    <message>
+        <source>flown</source>
+        <translation>виконано</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::MissionController</name>
+    <message>
+        <source>Reading the server&apos;s routes</source>
+        <translation>Читання маршрутів сервера</translation>
+    </message>
+    <message>
+        <source>The server&apos;s routes could not be read: %1</source>
+        <translation>Не вдалося прочитати маршрути сервера: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1%n segment(s)</source>
+        <translation>
+            <numerusform>%1%n сегмент</numerusform>
+            <numerusform>%1%n сегменти</numerusform>
+            <numerusform>%1%n сегментів</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Reading the server&apos;s vehicles</source>
+        <translation>Читання апаратів сервера</translation>
+    </message>
+    <message>
+        <source>Opening the route</source>
+        <translation>Відкриття маршруту</translation>
+    </message>
+    <message>
+        <source>The route could not be opened: %1</source>
+        <translation>Не вдалося відкрити маршрут: %1</translation>
+    </message>
+    <message>
+        <source>The route cannot be edited here: %1</source>
+        <translation>Маршрут не можна редагувати тут: %1</translation>
+    </message>
+    <message>
+        <source>Opened %1 (version %2).</source>
+        <translation>Відкрито %1 (версія %2).</translation>
+    </message>
+    <message>
+        <source>Not connected: your edits are kept; save again when the connection is back.</source>
+        <translation>Немає підключення: ваші зміни збережено; збережіть знову, коли зв’язок відновиться.</translation>
+    </message>
+    <message>
+        <source>Wait until %1 is done.</source>
+        <translation>Зачекайте, доки завершиться: %1.</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>Не збережено: %1</translation>
+    </message>
+    <message>
+        <source>Saving</source>
+        <translation>Збереження</translation>
+    </message>
+    <message>
+        <source>Locking the route</source>
+        <translation>Блокування маршруту</translation>
+    </message>
+    <message>
+        <source>Not saved: the route is locked (%1).</source>
+        <translation>Не збережено: маршрут заблоковано (%1).</translation>
+    </message>
+    <message>
+        <source>Reading the server&apos;s copy</source>
+        <translation>Читання копії сервера</translation>
+    </message>
+    <message>
+        <source>Someone else saved this route on the server (version %1) after you opened it (version %2).</source>
+        <translation>Хтось інший зберіг цей маршрут на сервері (версія %1) після того, як ви його відкрили (версія %2).</translation>
+    </message>
+    <message>
+        <source>Saved, but the server&apos;s answer cannot be read back: %1</source>
+        <translation>Збережено, але не вдається прочитати відповідь сервера: %1</translation>
+    </message>
+    <message>
+        <source>Saved %1 (version %2).</source>
+        <translation>Збережено %1 (версія %2).</translation>
+    </message>
+    <message>
+        <source>Take the server&apos;s version</source>
+        <translation>Взяти версію сервера</translation>
+    </message>
+    <message>
+        <source>This is the server&apos;s copy now. Undo brings your edits back.</source>
+        <translation>Тепер це копія сервера. «Вернути» поверне ваші зміни.</translation>
+    </message>
+    <message>
+        <source>This route was deleted on the server. Your copy stays open.</source>
+        <translation>Цей маршрут видалено на сервері. Ваша копія залишається відкритою.</translation>
+    </message>
+    <message>
+        <source>Updated from the server (version %1).</source>
+        <translation>Оновлено із сервера (версія %1).</translation>
+    </message>
+    <message>
+        <source>Someone else saved this route on the server (version %1) while you were editing it.</source>
+        <translation>Хтось інший зберіг цей маршрут на сервері (версія %1), поки ви його редагували.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::MissionUploader</name>
+    <message>
+        <source>Checking the route</source>
+        <translation>Перевірка маршруту</translation>
+    </message>
+    <message>
+        <source>Waiting for your answer</source>
+        <translation>Очікування вашої відповіді</translation>
+    </message>
+    <message>
+        <source>Processing for %1</source>
+        <translation>Обробка для %1</translation>
+    </message>
+    <message>
+        <source>Taking control of %1</source>
+        <translation>Отримання керування %1</translation>
+    </message>
+    <message>
+        <source>Uploading to %1</source>
+        <translation>Завантаження в %1</translation>
+    </message>
+    <message>
+        <source>Releasing %1</source>
+        <translation>Звільнення керування %1</translation>
+    </message>
+    <message>
+        <source>Reading the mission back from %1</source>
+        <translation>Зчитування місії з %1</translation>
+    </message>
+    <message>
+        <source>upload &quot;%1&quot;</source>
+        <translation>завантаження «%1»</translation>
+    </message>
+    <message>
+        <source>route</source>
+        <translation>маршрут</translation>
+    </message>
+    <message>
+        <source>Upload to %1 failed: the vehicle is gone (its connection was closed).</source>
+        <translation>Не вдалося завантажити в %1: апарат зник (його з’єднання закрито).</translation>
+    </message>
+    <message>
+        <source>the vehicle is gone</source>
+        <translation>апарат зник</translation>
+    </message>
+    <message>
+        <source>Not uploaded: %1</source>
+        <translation>Не завантажено: %1</translation>
+    </message>
+    <message>
+        <source>Too late to cancel: the mission is being sent to %1.</source>
+        <translation>Запізно скасовувати: місія вже надсилається в %1.</translation>
+    </message>
+    <message>
+        <source>Upload to %1 cancelled; nothing was sent.</source>
+        <translation>Завантаження в %1 скасовано; нічого не надіслано.</translation>
+    </message>
+    <message>
+        <source>Upload to %1 failed: the vehicle has no link.</source>
+        <translation>Не вдалося завантажити в %1: апарат не має зв’язку.</translation>
+    </message>
+    <message>
+        <source>no link</source>
+        <translation>немає зв’язку</translation>
+    </message>
+    <message>
+        <source>Not uploaded to %1: %2</source>
+        <translation>Не завантажено в %1: %2</translation>
+    </message>
+    <message>
+        <source>the route&apos;s fence is not sent: %1 keeps no fence (HCI)</source>
+        <translation>геозону маршруту не надіслано: %1 не зберігає геозону (HCI)</translation>
+    </message>
+    <message>
+        <source>Upload to %1 failed: %2</source>
+        <translation>Не вдалося завантажити в %1: %2</translation>
+    </message>
+    <message>
+        <source>Uploaded to %1, but it could not be read back: %2</source>
+        <translation>Завантажено в %1, але не вдалося зчитати назад: %2</translation>
+    </message>
+    <message>
+        <source>Uploaded to %1, but it holds something else: %2</source>
+        <translation>Завантажено в %1, але на борту інше: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Uploaded to %1: %n waypoint(s).</source>
+        <translation>
+            <numerusform>Завантажено в %1: %n точка.</numerusform>
+            <numerusform>Завантажено в %1: %n точки.</numerusform>
+            <numerusform>Завантажено в %1: %n точок.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Note: %1</source>
+        <translation>Примітка: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::RouteAutosave</name>
+    <message>
+        <source>No free autosave slot in %1: edits are not autosaved.</source>
+        <translation>Немає вільного слота автозбереження в %1: зміни не автозберігаються.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::RouteDocument</name>
+    <message>
+        <source>Import failed: %1</source>
+        <translation>Імпорт не вдався: %1</translation>
+    </message>
+    <message>
+        <source>Import failed: %1 holds no route.</source>
+        <translation>Імпорт не вдався: %1 не містить маршруту.</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Імпорт %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Imported %n segment(s) from %1.</source>
+        <translation>
+            <numerusform>Імпортовано %n сегмент із %1.</numerusform>
+            <numerusform>Імпортовано %n сегменти з %1.</numerusform>
+            <numerusform>Імпортовано %n сегментів з %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The file holds %1 routes; this is the first (&quot;%2&quot;).</source>
+        <translation>Файл містить маршрутів: %1; це перший («%2»).</translation>
+    </message>
+    <message>
+        <source>Export failed: %1</source>
+        <translation>Експорт не вдався: %1</translation>
+    </message>
+    <message>
+        <source>Exported to %1.</source>
+        <translation>Експортовано в %1.</translation>
+    </message>
+    <message>
+        <source>Not representable there: %1</source>
+        <translation>Не можна там відобразити: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::RoutePreparation</name>
+    <message>
+        <source>Choose the vehicle to %1 for.</source>
+        <translation>Виберіть апарат, щоб %1.</translation>
+    </message>
+    <message>
+        <source>process the route</source>
+        <translation>обробити маршрут</translation>
+    </message>
+    <message>
+        <source>%1 has no link.</source>
+        <translation>%1 не має зв’язку.</translation>
+    </message>
+    <message>
+        <source>Processing for %1…</source>
+        <translation>Обробка для %1…</translation>
+    </message>
+    <message>
+        <source>Not processed for %1: %2</source>
+        <translation>Не оброблено для %1: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Processed for %1: %n waypoint(s) to fly.</source>
+        <translation>
+            <numerusform>Оброблено для %1: до польоту %n точка.</numerusform>
+            <numerusform>Оброблено для %1: до польоту %n точки.</numerusform>
+            <numerusform>Оброблено для %1: до польоту %n точок.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>upload</source>
+        <translation>завантажити</translation>
+    </message>
+    <message>
+        <source>An upload is waiting for your answer.</source>
+        <translation>Завантаження очікує вашої відповіді.</translation>
+    </message>
+    <message>
+        <source>Wait until %1 is done.</source>
+        <translation>Зачекайте, доки завершиться: %1.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::UploadReview</name>
+    <message>
+        <source>The route has edits that are not saved: the vehicle would fly what is on screen, not what the server holds.</source>
+        <translation>Маршрут має незбережені зміни: апарат полетить те, що на екрані, а не те, що зберігає сервер.</translation>
+    </message>
+    <message>
+        <source>The route has %n warning(s):</source>
+        <translation>Маршрут має попередження (%n):</translation>
+    </message>
+    <message>
+        <source>Upload to %1?</source>
+        <translation>Завантажити в %1?</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::VehicleFleet</name>
+    <message>
+        <source>%1: %2 done.</source>
+        <translation>%1: %2 — виконано.</translation>
+    </message>
+    <message>
+        <source>%1: %2 failed: %3</source>
+        <translation>%1: %2 — помилка: %3</translation>
+    </message>
+    <message>
+        <source>The server&apos;s vehicles could not be read: %1</source>
+        <translation>Не вдалося прочитати апарати сервера: %1</translation>
+    </message>
+    <message>
+        <source>Not a VCI address: %1</source>
+        <translation>Це не адреса VCI: %1</translation>
+    </message>
+    <message>
+        <source>go to %1, %2 at %3 m</source>
+        <translation>летіти до %1, %2 на %3 m</translation>
+    </message>
+    <message>
+        <source>%1: flying to the clicked point.</source>
+        <translation>%1: летить до вказаної точки.</translation>
+    </message>
+    <message>
+        <source>%1: go-to failed: %2</source>
+        <translation>%1: переліт не вдався: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::VehicleGroup</name>
+    <message>
+        <source>%1 (%2 m)</source>
+        <translation>%1 (%2 m)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (%n waypoint(s))</source>
+        <translation>
+            <numerusform>%1 (%n точка)</numerusform>
+            <numerusform>%1 (%n точки)</numerusform>
+            <numerusform>%1 (%n точок)</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Arm %n vehicle(s): %1? Their motors may start.</source>
+        <translation>
+            <numerusform>Розблокувати %n апарат: %1? Їхні мотори можуть запуститися.</numerusform>
+            <numerusform>Розблокувати %n апарати: %1? Їхні мотори можуть запуститися.</numerusform>
+            <numerusform>Розблокувати %n апаратів: %1? Їхні мотори можуть запуститися.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Disarm %n vehicle(s): %1? One in the air would fall.</source>
+        <translation>
+            <numerusform>Заблокувати %n апарат: %1? Той, що в повітрі, впаде.</numerusform>
+            <numerusform>Заблокувати %n апарати: %1? Той, що в повітрі, впаде.</numerusform>
+            <numerusform>Заблокувати %n апаратів: %1? Той, що в повітрі, впаде.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Take off with %n vehicle(s) to their altitudes above home: %1?</source>
+        <translation>
+            <numerusform>Зліт %n апарата на їхні висоти над точкою дому: %1?</numerusform>
+            <numerusform>Зліт %n апаратів на їхні висоти над точкою дому: %1?</numerusform>
+            <numerusform>Зліт %n апаратів на їхні висоти над точкою дому: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Start or resume the mission on %n vehicle(s): %1?</source>
+        <translation>
+            <numerusform>Почати або продовжити місію на %n апараті: %1?</numerusform>
+            <numerusform>Почати або продовжити місію на %n апаратах: %1?</numerusform>
+            <numerusform>Почати або продовжити місію на %n апаратах: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Pause %n vehicle(s) where they are: %1?</source>
+        <translation>
+            <numerusform>Призупинити %n апарат на місці: %1?</numerusform>
+            <numerusform>Призупинити %n апарати на місці: %1?</numerusform>
+            <numerusform>Призупинити %n апаратів на місці: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Land %n vehicle(s) where they are: %1?</source>
+        <translation>
+            <numerusform>Посадити %n апарат на місці: %1?</numerusform>
+            <numerusform>Посадити %n апарати на місці: %1?</numerusform>
+            <numerusform>Посадити %n апаратів на місці: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Send %n vehicle(s) home: %1?</source>
+        <translation>
+            <numerusform>Відправити %n апарат додому: %1?</numerusform>
+            <numerusform>Відправити %n апарати додому: %1?</numerusform>
+            <numerusform>Відправити %n апаратів додому: %1?</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Switch %n vehicle(s) to %2: %1?</source>
+        <translation>
+            <numerusform>Перемкнути %n апарат у %2: %1?</numerusform>
+            <numerusform>Перемкнути %n апарати в %2: %1?</numerusform>
+            <numerusform>Перемкнути %n апаратів у %2: %1?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>not sent</source>
+        <translation>не надіслано</translation>
+    </message>
+    <message>
+        <source>%1 waiting</source>
+        <translation>%1 очікує</translation>
+    </message>
+    <message>
+        <source>%1 done</source>
+        <translation>%1 виконано</translation>
+    </message>
+    <message>
+        <source>%1 failed: %2</source>
+        <translation>%1 помилка: %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %2 of %n vehicle(s) answered — %3.</source>
+        <translation>
+            <numerusform>%1: відповіли %2 з %n апарата — %3.</numerusform>
+            <numerusform>%1: відповіли %2 з %n апаратів — %3.</numerusform>
+            <numerusform>%1: відповіли %2 з %n апаратів — %3.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>sortie::deconfliction::FleetConflictRule</name>
+    <message>
+        <source>%1, flying &quot;%2&quot; (its leg %3)</source>
+        <translation>%1, виконує «%2» (його ділянка %3)</translation>
+    </message>
+    <message>
+        <source>%1&apos;s uploaded &quot;%2&quot; (its leg %3) if it starts now</source>
+        <translation>«%2», завантажений у %1 (його ділянка %3), якщо він стартує зараз</translation>
+    </message>
+    <message>
+        <source>Leg %1 comes within %2 m across and %3 m in height of %4, %5 after the start%6.</source>
+        <translation>Ділянка %1 наближається до %4 на %2 m по горизонталі та %3 m по висоті через %5 після старту%6.</translation>
+    </message>
+    <message>
+        <source> (heights in different frames: judged across only)</source>
+        <translation> (висоти в різних системах відліку: оцінено лише по горизонталі)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::deconfliction::ProximityMonitor</name>
+    <message>
+        <source>now</source>
+        <translation>зараз</translation>
+    </message>
+    <message>
+        <source>in %1 s</source>
+        <translation>через %1 s</translation>
+    </message>
+    <message>
+        <source>%1 and traffic %2: closest %3, %4 across and %5 in height</source>
+        <translation>%1 і борт %2: найближче %3, %4 по горизонталі та %5 по висоті</translation>
+    </message>
+    <message>
+        <source>%1 and %2: closest %3, %4 across and %5 in height</source>
+        <translation>%1 і %2: найближче %3, %4 по горизонталі та %5 по висоті</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::endurance::EnduranceAdvisory</name>
+    <message>
+        <source>No vehicle chosen</source>
+        <translation>Апарат не вибрано</translation>
+    </message>
+    <message>
+        <source>No energy profile: choose the vehicle&apos;s profile file on the mission page</source>
+        <translation>Немає енергетичного профілю: виберіть файл профілю апарата на сторінці місії</translation>
+    </message>
+    <message>
+        <source>The vehicle reports no remaining battery</source>
+        <translation>Апарат не повідомляє залишок батареї</translation>
+    </message>
+    <message>
+        <source>The vehicle reports no home</source>
+        <translation>Апарат не повідомляє точку дому</translation>
+    </message>
+    <message>
+        <source>The vehicle reports no position</source>
+        <translation>Апарат не повідомляє позицію</translation>
+    </message>
+    <message>
+        <source>No mission on board</source>
+        <translation>Немає місії на борту</translation>
+    </message>
+    <message>
+        <source>The vehicle cannot make headway home against the wind</source>
+        <translation>Апарат не може просуватися додому проти вітру</translation>
+    </message>
+    <message>
+        <source>Battery at end of route: %1 · home needs %2</source>
+        <translation>Батарея в кінці маршруту: %1 · додому потрібно %2</translation>
+    </message>
+    <message>
+        <source>Battery: time to come home — no headway home against the wind</source>
+        <translation>Батарея: час повертатися — проти вітру додому не просунутися</translation>
+    </message>
+    <message>
+        <source>Battery: time to come home — %1 left, home needs %2: the %3 reserve is being used</source>
+        <translation>Батарея: час повертатися — лишилося %1, додому потрібно %2: резерв %3 витрачається</translation>
+    </message>
+    <message>
+        <source>Battery: time to come home — %1 left, home needs %2 and the reserve %3: %4 to spare</source>
+        <translation>Батарея: час повертатися — лишилося %1, додому потрібно %2 і резерв %3: запас %4</translation>
+    </message>
+    <message>
+        <source>Return %1 home now? %2</source>
+        <translation>Повернути %1 додому зараз? %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ComparisonController</name>
+    <message>
+        <source>Open a flight log first.</source>
+        <translation>Спочатку відкрийте журнал польоту.</translation>
+    </message>
+    <message>
+        <source>%1 holds no route.</source>
+        <translation>%1 не містить маршруту.</translation>
+    </message>
+    <message>
+        <source>Choose the vehicle to compare on the map or in the list.</source>
+        <translation>Виберіть апарат для порівняння на карті або в списку.</translation>
+    </message>
+    <message>
+        <source>%1 on &quot;%2&quot;: %3 of %4 waypoints reached; cross-track max %5 m, mean %6 m; altitude max %7 m</source>
+        <translation>%1 на «%2»: досягнуто %3 з %4 точок; бічне відхилення макс %5 m, середнє %6 m; висота макс %7 m</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::FlightLogWriter</name>
+    <message>
+        <source>%1: the log cannot use a write-ahead journal</source>
+        <translation>%1: журнал не може використовувати режим WAL (попередній запис)</translation>
+    </message>
+    <message>
+        <source>Recording to %1 failed: %2</source>
+        <translation>Запис у %1 не вдався: %2</translation>
+    </message>
+    <message>
+        <source>Recording could not continue in %1: %2</source>
+        <translation>Запис не вдалося продовжити в %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::FlightRecorder</name>
+    <message>
+        <source>The flight log %1 cannot be written: %2</source>
+        <translation>Не вдається записати журнал польоту %1: %2</translation>
+    </message>
+    <message>
+        <source>Recording started</source>
+        <translation>Запис розпочато</translation>
+    </message>
+    <message>
+        <source>Recording stopped</source>
+        <translation>Запис зупинено</translation>
+    </message>
+    <message>
+        <source>Route of 1 waypoint</source>
+        <translation>Маршрут з 1 точки</translation>
+    </message>
+    <message>
+        <source>Route of %1 waypoints</source>
+        <translation>Маршрут, точок: %1</translation>
+    </message>
+    <message>
+        <source>Armed</source>
+        <translation>Розблоковано</translation>
+    </message>
+    <message>
+        <source>Disarmed</source>
+        <translation>Заблоковано</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::RecordingSettings</name>
+    <message>
+        <source>In force: %1; %2.</source>
+        <translation>Діє: %1; %2.</translation>
+    </message>
+    <message>
+        <source>a log up to %1 MB</source>
+        <translation>журнал до %1 МБ</translation>
+    </message>
+    <message>
+        <source>logs of any size</source>
+        <translation>журнали будь-якого розміру</translation>
+    </message>
+    <message>
+        <source>the folder up to %1 MB</source>
+        <translation>тека до %1 МБ</translation>
+    </message>
+    <message>
+        <source>the folder without limit</source>
+        <translation>тека без обмеження</translation>
+    </message>
+    <message>
+        <source>A log&apos;s size must be between 1 and %1 MB, or 0 for no limit.</source>
+        <translation>Розмір журналу має бути від 1 до %1 МБ або 0 без обмеження.</translation>
+    </message>
+    <message>
+        <source>The folder&apos;s size must be between 1 and %1 MB, or 0 for no limit.</source>
+        <translation>Розмір теки має бути від 1 до %1 МБ або 0 без обмеження.</translation>
+    </message>
+    <message>
+        <source>The folder must hold at least one whole log: make its limit at least a log&apos;s size (%1 MB).</source>
+        <translation>Тека має вміщувати щонайменше один цілий журнал: задайте її обмеження не менше за розмір журналу (%1 МБ).</translation>
+    </message>
+    <message>
+        <source>%1 in 1 log</source>
+        <translation>%1 в 1 журналі</translation>
+    </message>
+    <message>
+        <source>%1 in %2 logs</source>
+        <translation>%1, журналів: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ReplayController</name>
+    <message>
+        <source>%1 of 1 vehicle</source>
+        <translation>%1, 1 апарат</translation>
+    </message>
+    <message>
+        <source>%1 of %2 vehicles</source>
+        <translation>%1, апаратів: %2</translation>
+    </message>
+    <message>
+        <source>No log is open.</source>
+        <translation>Журнал не відкрито.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an export format (gpx, kml or csv).</source>
+        <translation>«%1» не є форматом експорту (gpx, kml або csv).</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2</source>
+        <translation>Не вдалося записати %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ServerHistory</name>
+    <message>
+        <source>not connected to a server</source>
+        <translation>немає підключення до сервера</translation>
+    </message>
+    <message>
+        <source>The server&apos;s history could not be read: %1</source>
+        <translation>Не вдалося прочитати історію сервера: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ServerHistoryRequest</name>
+    <message>
+        <source>The server lists no vehicles: connect to a server first.</source>
+        <translation>Сервер не має апаратів: спершу підключіться до сервера.</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle.</source>
+        <translation>Виберіть апарат.</translation>
+    </message>
+    <message>
+        <source>The start &quot;%1&quot; is not a time like %2 (UTC).</source>
+        <translation>Початок «%1» не є часом у форматі %2 (UTC).</translation>
+    </message>
+    <message>
+        <source>The end &quot;%1&quot; is not a time like %2 (UTC).</source>
+        <translation>Кінець «%1» не є часом у форматі %2 (UTC).</translation>
+    </message>
+    <message>
+        <source>The start must be before the end.</source>
+        <translation>Початок має бути раніше за кінець.</translation>
+    </message>
+    <message>
+        <source>The start is in the future.</source>
+        <translation>Початок — у майбутньому.</translation>
+    </message>
+    <message>
+        <source>At most 24 hours at a time.</source>
+        <translation>Не більше 24 годин за раз.</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Скасовано.</translation>
+    </message>
+    <message>
+        <source>The server has no telemetry of %1 from %2 to %3 UTC.</source>
+        <translation>Сервер не має телеметрії %1 з %2 до %3 UTC.</translation>
+    </message>
+    <message>
+        <source>There is no replay to show it in.</source>
+        <translation>Немає відтворення, у якому це показати.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::ServerRecording</name>
+    <message>
+        <source>logged in to %1 as %2; recording to %3</source>
+        <translation>вхід на %1 як %2; запис у %3</translation>
+    </message>
+    <message>
+        <source>server: %1</source>
+        <translation>сервер: %1</translation>
+    </message>
+    <message>
+        <source>1 vehicle</source>
+        <translation>1 апарат</translation>
+    </message>
+    <message>
+        <source>%1 vehicles</source>
+        <translation>апаратів: %1</translation>
+    </message>
+    <message>
+        <source>log closed: %1</source>
+        <translation>журнал закрито: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles</name>
+    <message>
+        <source>%1: &apos;%2&apos; is not a zoom level (0 to 30).</source>
+        <translation>%1: «%2» не є рівнем масштабу (від 0 до 30).</translation>
+    </message>
+    <message>
+        <source>bounds: &apos;%1&apos; is not west,south,east,north in degrees.</source>
+        <translation>bounds: «%1» не є west,south,east,north у градусах.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::MbTilesFile</name>
+    <message>
+        <source>No MBTiles file is set.</source>
+        <translation>Файл MBTiles не задано.</translation>
+    </message>
+    <message>
+        <source>The MBTiles file %1 does not exist.</source>
+        <translation>Файл MBTiles %1 не існує.</translation>
+    </message>
+    <message>
+        <source>Cannot open the MBTiles file %1: %2</source>
+        <translation>Не вдається відкрити файл MBTiles %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not an MBTiles file Sortie can write: %2</source>
+        <translation>%1 не є файлом MBTiles, у який Sortie може записувати: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not an MBTiles file (it has no tiles table).</source>
+        <translation>%1 не є файлом MBTiles (немає таблиці tiles).</translation>
+    </message>
+    <message>
+        <source>The MBTiles file %1 has no readable metadata: %2</source>
+        <translation>Файл MBTiles %1 не має придатних для читання метаданих: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write to the MBTiles file %1: %2</source>
+        <translation>Не вдається записати у файл MBTiles %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write the metadata of %1: %2</source>
+        <translation>Не вдається записати метадані %1: %2</translation>
+    </message>
+    <message>
+        <source>Reading tile %1 failed: %2</source>
+        <translation>Не вдалося прочитати тайл %1: %2</translation>
+    </message>
+    <message>
+        <source>Writing %1 tiles to %2 failed: %3</source>
+        <translation>Не вдалося записати тайли (кількість: %1) у %2: %3</translation>
+    </message>
+    <message>
+        <source>Reading the tiles of %1 failed: %2</source>
+        <translation>Не вдалося прочитати тайли %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::MbTilesMetadata</name>
+    <message>
+        <source>minzoom %1 is above maxzoom %2.</source>
+        <translation>minzoom %1 більший за maxzoom %2.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::OfflineMaps</name>
+    <message>
+        <source>No route is open.</source>
+        <translation>Жоден маршрут не відкрито.</translation>
+    </message>
+    <message>
+        <source>The open route has no waypoints to take the area from.</source>
+        <translation>Відкритий маршрут не має точок, за якими визначити район.</translation>
+    </message>
+    <message>
+        <source>The route is a single point: give a margin around it.</source>
+        <translation>Маршрут — це одна точка: задайте відступ навколо неї.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The open route (%n point(s)) and %1 m around it</source>
+        <translation>
+            <numerusform>Відкритий маршрут (%n точка) і %1 m навколо нього</numerusform>
+            <numerusform>Відкритий маршрут (%n точки) і %1 m навколо нього</numerusform>
+            <numerusform>Відкритий маршрут (%n точок) і %1 m навколо нього</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The map&apos;s view is not an area (%1 to %2).</source>
+        <translation>Видима область карти не є районом (від %1 до %2).</translation>
+    </message>
+    <message>
+        <source>The map&apos;s view</source>
+        <translation>Видима область карти</translation>
+    </message>
+    <message>
+        <source>The lowest zoom is above the highest.</source>
+        <translation>Найменший масштаб більший за найбільший.</translation>
+    </message>
+    <message>
+        <source>Choose an area.</source>
+        <translation>Виберіть район.</translation>
+    </message>
+    <message>
+        <source>%1 tiles, about %2</source>
+        <translation>Тайлів: %1, приблизно %2</translation>
+    </message>
+    <message>
+        <source> (at this pack&apos;s mean of %1 a tile)</source>
+        <translation> (за середнім для цього пакета %1 на тайл)</translation>
+    </message>
+    <message>
+        <source> (assuming %1 a tile)</source>
+        <translation> (за припущення %1 на тайл)</translation>
+    </message>
+    <message>
+        <source>: more than the limit of %1 tiles, choose a smaller area or fewer zoom levels</source>
+        <translation>: більше за ліміт у %1 тайлів, виберіть менший район або менше рівнів масштабу</translation>
+    </message>
+    <message>
+        <source>Choose a web tile server in Map source first: %1</source>
+        <translation>Спочатку виберіть веб-сервер тайлів у «Джерело карти»: %1</translation>
+    </message>
+    <message>
+        <source>%1 of %2 tiles</source>
+        <translation>%1 з %2 тайлів</translation>
+    </message>
+    <message>
+        <source> · %1 already in the pack</source>
+        <translation> · уже в пакеті: %1</translation>
+    </message>
+    <message>
+        <source> · %1 not stored</source>
+        <translation> · не збережено: %1</translation>
+    </message>
+    <message>
+        <source> · paused</source>
+        <translation> · пауза</translation>
+    </message>
+    <message>
+        <source> · done</source>
+        <translation> · готово</translation>
+    </message>
+    <message>
+        <source> · stopped</source>
+        <translation> · зупинено</translation>
+    </message>
+    <message>
+        <source> · failed</source>
+        <translation> · помилка</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::TileArea</name>
+    <message>
+        <source>The area is not a valid latitude/longitude box (south %1, west %2, north %3, east %4).</source>
+        <translation>Район не є коректним прямокутником широти/довготи (південь %1, захід %2, північ %3, схід %4).</translation>
+    </message>
+    <message>
+        <source>An area needs at least three corners (it has %1).</source>
+        <translation>Районові потрібно щонайменше три кути (має %1).</translation>
+    </message>
+    <message>
+        <source>Corner %1 of the area is not a latitude/longitude (%2, %3).</source>
+        <translation>Кут %1 району не є широтою/довготою (%2, %3).</translation>
+    </message>
+    <message>
+        <source>The area&apos;s edge from corner %1 crosses the antimeridian: draw it as two areas.</source>
+        <translation>Ребро району від кута %1 перетинає антимеридіан: намалюйте його як два райони.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::TilePrefetch</name>
+    <message>
+        <source>No area is chosen.</source>
+        <translation>Район не вибрано.</translation>
+    </message>
+    <message>
+        <source>The zoom range %1 to %2 is not within 0 to %3.</source>
+        <translation>Діапазон масштабу від %1 до %2 не в межах від 0 до %3.</translation>
+    </message>
+    <message>
+        <source>The area needs %1 tiles, more than the limit of %2: choose a smaller area or fewer zoom levels.</source>
+        <translation>Для району потрібно тайлів: %1, більше за ліміт %2: виберіть менший район або менше рівнів масштабу.</translation>
+    </message>
+    <message>
+        <source>Tiles from %1, taken offline by %2</source>
+        <translation>Тайли з %1, збережені для офлайну програмою %2</translation>
+    </message>
+    <message>
+        <source>not an image (%1, %2 bytes)</source>
+        <translation>не зображення (%1, %2 байт)</translation>
+    </message>
+    <message>
+        <source>no answer within %1 s</source>
+        <translation>немає відповіді протягом %1 s</translation>
+    </message>
+    <message>
+        <source>%1 (after %2 attempts)</source>
+        <translation>%1 (спроб: %2)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::maptiles::TileUrlTemplate</name>
+    <message>
+        <source>No tile URL template is set.</source>
+        <translation>Шаблон URL тайлів не задано.</translation>
+    </message>
+    <message>
+        <source>The tile URL template is not a valid URL: %1</source>
+        <translation>Шаблон URL тайлів не є коректним URL: %1</translation>
+    </message>
+    <message>
+        <source>The tile URL template must start with http://, https:// or file://.</source>
+        <translation>Шаблон URL тайлів має починатися з http://, https:// або file://.</translation>
+    </message>
+    <message>
+        <source>The tile URL template needs {z}, {x} and {y} (or {-y}).</source>
+        <translation>Шаблону URL тайлів потрібні {z}, {x} і {y} (або {-y}).</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission</name>
+    <message>
+        <source>WP %1</source>
+        <translation>ТМ %1</translation>
+    </message>
+    <message>
+        <source>Scan %1</source>
+        <translation>Сканування %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(немає)</translation>
+    </message>
+    <message>
+        <source>return home</source>
+        <translation>повернення додому</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>немає</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::RouteDiff</name>
+    <message>
+        <source>No changes</source>
+        <translation>Без змін</translation>
+    </message>
+    <message>
+        <source>1 change: </source>
+        <translation>1 зміна: </translation>
+    </message>
+    <message>
+        <source>%1 changes: </source>
+        <translation>Змін: %1: </translation>
+    </message>
+    <message>
+        <source> and %1 more</source>
+        <translation> і ще %1</translation>
+    </message>
+    <message>
+        <source>name %1 → %2</source>
+        <translation>назва %1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3 %4</source>
+        <translation>%1 %2 → %3 %4</translation>
+    </message>
+    <message>
+        <source>vehicle profile %1 → %2</source>
+        <translation>профіль апарата %1 → %2</translation>
+    </message>
+    <message>
+        <source>vehicle profile %1 changed</source>
+        <translation>профіль апарата %1 змінено</translation>
+    </message>
+    <message>
+        <source>failsafe actions changed</source>
+        <translation>аварійні дії змінено</translation>
+    </message>
+    <message>
+        <source>home set</source>
+        <translation>точку дому задано</translation>
+    </message>
+    <message>
+        <source>home removed</source>
+        <translation>точку дому видалено</translation>
+    </message>
+    <message>
+        <source>home moved %1 m</source>
+        <translation>точку дому зміщено на %1 m</translation>
+    </message>
+    <message>
+        <source>home altitude %1 → %2 m</source>
+        <translation>висота точки дому %1 → %2 m</translation>
+    </message>
+    <message>
+        <source>end action %1 → %2</source>
+        <translation>дія в кінці %1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>увімк.</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>вимк.</translation>
+    </message>
+    <message>
+        <source>%1 removed</source>
+        <translation>%1 видалено</translation>
+    </message>
+    <message>
+        <source>%1 added</source>
+        <translation>%1 додано</translation>
+    </message>
+    <message>
+        <source>%1 changed</source>
+        <translation>%1 змінено</translation>
+    </message>
+    <message>
+        <source>%1 moved %2 m</source>
+        <translation>%1 зміщено на %2 m</translation>
+    </message>
+    <message>
+        <source>altitude of %1 %2 m %3 → %4 m %5</source>
+        <translation>висота %1: %2 m %3 → %4 m %5</translation>
+    </message>
+    <message>
+        <source>altitude of %1 %2 → %3 m</source>
+        <translation>висота %1: %2 → %3 m</translation>
+    </message>
+    <message>
+        <source>speed of %1 %2 → %3 m/s</source>
+        <translation>швидкість %1: %2 → %3 m/s</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>немає</translation>
+    </message>
+    <message>
+        <source>actions of %1: %2 → %3</source>
+        <translation>дії %1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>turn at %1 %2 → %3</source>
+        <translation>поворот у %1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>acceptance radius of %1 %2 → %3 m</source>
+        <translation>радіус досягнення %1: %2 → %3 m</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3</source>
+        <translation>%1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>figure of %1 reshaped</source>
+        <translation>фігуру %1 змінено</translation>
+    </message>
+    <message>
+        <source>%1 of %2 %3 → %4</source>
+        <translation>%1 для %2: %3 → %4</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(немає)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 removed</source>
+        <translation>%1 для %2 видалено</translation>
+    </message>
+    <message>
+        <source>actions of %1 changed</source>
+        <translation>дії %1 змінено</translation>
+    </message>
+    <message>
+        <source>area of %1 reshaped</source>
+        <translation>район %1 змінено</translation>
+    </message>
+    <message>
+        <source>area of %1 reshaped (%2 → %3 corners)</source>
+        <translation>район %1 змінено (кутів: %2 → %3)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 %3 → %4 %5</source>
+        <translation>%1 для %2: %3 → %4 %5</translation>
+    </message>
+    <message>
+        <source>altitude of %1 now %2</source>
+        <translation>висота %1 тепер %2</translation>
+    </message>
+    <message>
+        <source>%1 now flies by ground sample distance</source>
+        <translation>%1 тепер летить за GSD (розмір пікселя на місцевості)</translation>
+    </message>
+    <message>
+        <source>%1 now flies by altitude</source>
+        <translation>%1 тепер летить за висотою</translation>
+    </message>
+    <message>
+        <source>camera of %1 %2 → %3</source>
+        <translation>камера %1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>camera of %1 changed</source>
+        <translation>камеру %1 змінено</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::RouteEditor</name>
+    <message>
+        <source>Nothing is selected.</source>
+        <translation>Нічого не вибрано.</translation>
+    </message>
+    <message>
+        <source>That is not a valid position.</source>
+        <translation>Це некоректна позиція.</translation>
+    </message>
+    <message>
+        <source>There is no row %1 to insert at.</source>
+        <translation>Немає рядка %1 для вставлення.</translation>
+    </message>
+    <message>
+        <source>Add waypoint %1</source>
+        <translation>Додати точку %1</translation>
+    </message>
+    <message>
+        <source>A move needs one position per waypoint.</source>
+        <translation>Для переміщення потрібна одна позиція на кожну точку.</translation>
+    </message>
+    <message>
+        <source>There is no row %1.</source>
+        <translation>Немає рядка %1.</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Пересунути %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>Move %n segment(s)</source>
+        <translation>
+            <numerusform>Пересунути %n сегмент</numerusform>
+            <numerusform>Пересунути %n сегменти</numerusform>
+            <numerusform>Пересунути %n сегментів</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Row %1 is not a waypoint.</source>
+        <translation>Рядок %1 не є точкою маршруту.</translation>
+    </message>
+    <message>
+        <source>The altitude needs a number.</source>
+        <translation>Для висоти потрібне число.</translation>
+    </message>
+    <message>
+        <source>Set altitude to %1 m</source>
+        <translation>Задати висоту %1 m</translation>
+    </message>
+    <message>
+        <source>Set altitude type to %1</source>
+        <translation>Задати тип висоти %1</translation>
+    </message>
+    <message>
+        <source>Row %1 keeps its height %2: set it as %2, or change its altitude type first.</source>
+        <translation>Рядок %1 зберігає свою висоту %2: задайте її як %2 або спершу змініть тип висоти.</translation>
+    </message>
+    <message>
+        <source>Waypoint %1 is planned %2 and there is no terrain data under it: a height %3 cannot be converted.</source>
+        <translation>Точку %1 заплановано в %2, і під нею немає даних рельєфу: висоту %3 не можна перерахувати.</translation>
+    </message>
+    <message>
+        <source>Set altitude to %1 m %2</source>
+        <translation>Задати висоту %1 m %2</translation>
+    </message>
+    <message>
+        <source>Set turn type to %1</source>
+        <translation>Задати тип повороту %1</translation>
+    </message>
+    <message>
+        <source>No selected segment has a parameter &quot;%1&quot;.</source>
+        <translation>Жоден вибраний сегмент не має параметра «%1».</translation>
+    </message>
+    <message>
+        <source>Set %1 to %2</source>
+        <translation>Задати %1: %2</translation>
+    </message>
+    <message>
+        <source>There is no action &quot;%1&quot;.</source>
+        <translation>Немає дії «%1».</translation>
+    </message>
+    <message>
+        <source>Add action: %1</source>
+        <translation>Додати дію: %1</translation>
+    </message>
+    <message>
+        <source>Remove action</source>
+        <translation>Видалити дію</translation>
+    </message>
+    <message>
+        <source>There is no action &quot;%1&quot; with these values.</source>
+        <translation>Немає дії «%1» з такими значеннями.</translation>
+    </message>
+    <message>
+        <source>Edit action: %1</source>
+        <translation>Змінити дію: %1</translation>
+    </message>
+    <message>
+        <source>Clear actions</source>
+        <translation>Очистити дії</translation>
+    </message>
+    <message>
+        <source>An area scan needs at least three corners that enclose an area.</source>
+        <translation>Скануванню площі потрібні щонайменше три кути, що охоплюють площу.</translation>
+    </message>
+    <message>
+        <source>Add area scan</source>
+        <translation>Додати сканування площі</translation>
+    </message>
+    <message>
+        <source>Segment %1 has no point %2.</source>
+        <translation>Сегмент %1 не має точки %2.</translation>
+    </message>
+    <message>
+        <source>Move point %1 of segment %2</source>
+        <translation>Пересунути точку %1 сегмента %2</translation>
+    </message>
+    <message>
+        <source>Segment %1 has no edge there.</source>
+        <translation>Сегмент %1 не має там ребра.</translation>
+    </message>
+    <message>
+        <source>Add a point to segment %1</source>
+        <translation>Додати точку до сегмента %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>This figure keeps at least %n point(s).</source>
+        <translation>
+            <numerusform>У цієї фігури лишається щонайменше %n точка.</numerusform>
+            <numerusform>У цієї фігури лишаються щонайменше %n точки.</numerusform>
+            <numerusform>У цієї фігури лишається щонайменше %n точок.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Remove point %1 of segment %2</source>
+        <translation>Видалити точку %1 сегмента %2</translation>
+    </message>
+    <message>
+        <source>A radius is above 0 m.</source>
+        <translation>Радіус має бути більше 0 m.</translation>
+    </message>
+    <message>
+        <source>Segment %1 is no circle.</source>
+        <translation>Сегмент %1 не є колом.</translation>
+    </message>
+    <message>
+        <source>Set the radius of segment %1 to %2 m</source>
+        <translation>Задати радіус сегмента %1: %2 m</translation>
+    </message>
+    <message>
+        <source>A point segment needs one valid position.</source>
+        <translation>Точковому сегменту потрібна одна коректна позиція.</translation>
+    </message>
+    <message>
+        <source>Add %1</source>
+        <translation>Додати %1</translation>
+    </message>
+    <message>
+        <source>Sortie has no description of the algorithm %1.</source>
+        <translation>Sortie не має опису алгоритму %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 needs at least %n point(s)%2.</source>
+        <translation>
+            <numerusform>Для %1 потрібна щонайменше %n точка%2.</numerusform>
+            <numerusform>Для %1 потрібні щонайменше %n точки%2.</numerusform>
+            <numerusform>Для %1 потрібно щонайменше %n точок%2.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source> enclosing an area</source>
+        <translation>, що охоплюють площу</translation>
+    </message>
+    <message>
+        <source>A route has no setting &quot;%1&quot;.</source>
+        <translation>Маршрут не має налаштування «%1».</translation>
+    </message>
+    <message>
+        <source>%1 needs a number.</source>
+        <translation>Для %1 потрібне число.</translation>
+    </message>
+    <message>
+        <source>Set route %1</source>
+        <translation>Задати для маршруту: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::SegmentEditorModel</name>
+    <message>
+        <source>A parameter Sortie has no description of: kept and sent as typed.</source>
+        <translation>Параметр, якого Sortie не знає: зберігається й надсилається як введено.</translation>
+    </message>
+    <message>
+        <source>%1 (vehicle profile)</source>
+        <translation>%1 (профіль апарата)</translation>
+    </message>
+    <message>
+        <source>%1 needs a number, not &quot;%2&quot;.</source>
+        <translation>Для %1 потрібне число, а не «%2».</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::SegmentPreview</name>
+    <message>
+        <source>This segment cannot be planned.</source>
+        <translation>Цей сегмент не можна спланувати.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::mission::WaypointActionsModel</name>
+    <message>
+        <source>Actions at waypoint %1</source>
+        <translation>Дії в точці %1</translation>
+    </message>
+    <message>
+        <source>Actions at %1 waypoints</source>
+        <translation>Дії в точках (%1)</translation>
+    </message>
+    <message>
+        <source>There is no action &quot;%1&quot;.</source>
+        <translation>Немає дії «%1».</translation>
+    </message>
+    <message>
+        <source>This action has no field &quot;%1&quot;.</source>
+        <translation>Ця дія не має поля «%1».</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::secrets::PasswordVault</name>
+    <message>
+        <source>the keyring did not answer</source>
+        <translation>сховище паролів не відповіло</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::traffic::SbsFeed</name>
+    <message>
+        <source>no answer within %1 s</source>
+        <translation>немає відповіді протягом %1 s</translation>
+    </message>
+    <message>
+        <source>the receiver closed the connection</source>
+        <translation>приймач закрив з’єднання</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not host:port</source>
+        <translation>«%1» не у форматі host:port</translation>
+    </message>
+    <message>
+        <source>receiver off</source>
+        <translation>приймач вимкнено</translation>
+    </message>
+    <message>
+        <source>receiver: %1</source>
+        <translation>приймач: %1</translation>
+    </message>
+    <message>
+        <source>receiver: connecting to %1</source>
+        <translation>приймач: підключення до %1</translation>
+    </message>
+    <message>
+        <source>receiver %1</source>
+        <translation>приймач %1</translation>
+    </message>
+    <message>
+        <source>receiver: %1; again in %2 s</source>
+        <translation>приймач: %1; повтор через %2 s</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::AppSettings</name>
+    <message>
+        <source>The password an earlier version kept in the settings file is now in the keyring.</source>
+        <translation>Пароль, який попередня версія зберігала у файлі налаштувань, тепер у сховищі паролів.</translation>
+    </message>
+    <message>
+        <source>The password an earlier version kept in the settings file was erased from it; the keyring refused it (%1), so it is not remembered.</source>
+        <translation>Пароль, який попередня версія зберігала у файлі налаштувань, стерто з нього; сховище паролів його не прийняло (%1), тож його не запам’ятано.</translation>
+    </message>
+    <message>
+        <source>The keyring refused the password (%1): it is not remembered.</source>
+        <translation>Сховище паролів не прийняло пароль (%1): його не запам’ятано.</translation>
+    </message>
+    <message>
+        <source>The remembered password could not be read from the keyring (%1).</source>
+        <translation>Не вдалося прочитати запам’ятований пароль зі сховища паролів (%1).</translation>
+    </message>
+    <message>
+        <source>The password could not be removed from the keyring (%1).</source>
+        <translation>Не вдалося видалити пароль зі сховища паролів (%1).</translation>
+    </message>
+    <message>
+        <source>No keyring is reachable, so the password cannot be remembered (%1).</source>
+        <translation>Сховище паролів недоступне, тому пароль не можна запам’ятати (%1).</translation>
+    </message>
+    <message>
+        <source>The password an earlier version kept in the settings file was erased from it.</source>
+        <translation>Пароль, який попередня версія зберігала у файлі налаштувань, стерто з нього.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::AttitudeIndicator</name>
+    <message>
+        <source>no attitude</source>
+        <translation>немає орієнтації</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::ConflictLayer</name>
+    <message>
+        <source>%1 at %2:%3, %4 m / %5 m</source>
+        <translation>%1 о %2:%3, %4 m / %5 m</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::DisplayUnits</name>
+    <message>
+        <source>%1 mi</source>
+        <translation>%1 mi</translation>
+    </message>
+    <message>
+        <source>%1 ft</source>
+        <translation>%1 ft</translation>
+    </message>
+    <message>
+        <source>%1 km</source>
+        <translation>%1 km</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 mph</source>
+        <translation>%1 mph</translation>
+    </message>
+    <message>
+        <source>%1 m/s</source>
+        <translation>%1 m/s</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 V</source>
+        <translation>%1 V</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>відключено</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>підключення</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>підключено</translation>
+    </message>
+    <message>
+        <source>link lost</source>
+        <translation>зв’язок втрачено</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::ElevationProfileView</name>
+    <message>
+        <source>Leg %1 · %2 · ground %3 · altitude %4 · clearance %5</source>
+        <translation>Ділянка %1 · %2 · рельєф %3 · висота %4 · запас висоти %5</translation>
+    </message>
+    <message>
+        <source>no data</source>
+        <translation>немає даних</translation>
+    </message>
+    <message>
+        <source>Add two waypoints to see the terrain profile</source>
+        <translation>Додайте дві точки, щоб побачити профіль рельєфу</translation>
+    </message>
+    <message>
+        <source>No terrain source</source>
+        <translation>Немає джерела рельєфу</translation>
+    </message>
+    <message>
+        <source>Ground: %1</source>
+        <translation>Рельєф: %1</translation>
+    </message>
+    <message>
+        <source>lowest clearance %1</source>
+        <translation>найменший запас висоти %1</translation>
+    </message>
+    <message>
+        <source>clearance unknown</source>
+        <translation>запас висоти невідомий</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::EnduranceLayer</name>
+    <message>
+        <source>Battery change</source>
+        <translation>Заміна батареї</translation>
+    </message>
+    <message>
+        <source>Battery change needed</source>
+        <translation>Потрібна заміна батареї</translation>
+    </message>
+    <message>
+        <source>No return</source>
+        <translation>Точка неповернення</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::FlightStatus</name>
+    <message>
+        <source>mission complete</source>
+        <translation>місію виконано</translation>
+    </message>
+    <message>
+        <source>waypoint %1 of %2</source>
+        <translation>точка %1 з %2</translation>
+    </message>
+    <message>
+        <source>1 waypoint on board</source>
+        <translation>1 точка на борту</translation>
+    </message>
+    <message>
+        <source>%1 waypoints on board</source>
+        <translation>Точок на борту: %1</translation>
+    </message>
+    <message>
+        <source>no mission on board</source>
+        <translation>немає місії на борту</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::MbTilesTileSource</name>
+    <message>
+        <source>MBTiles</source>
+        <translation>MBTiles</translation>
+    </message>
+    <message>
+        <source>No MBTiles file is set.</source>
+        <translation>Файл MBTiles не задано.</translation>
+    </message>
+    <message>
+        <source>The MBTiles file has no tile %1.</source>
+        <translation>Файл MBTiles не має тайла %1.</translation>
+    </message>
+    <message>
+        <source>Tile %1 in the MBTiles file is not a raster image.</source>
+        <translation>Тайл %1 у файлі MBTiles не є растровим зображенням.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::OfflineTileSource</name>
+    <message>
+        <source>Offline base map</source>
+        <translation>Офлайн-базова карта</translation>
+    </message>
+    <message>
+        <source>Land outlines: Natural Earth</source>
+        <translation>Контури суходолу: Natural Earth</translation>
+    </message>
+    <message>
+        <source>The built-in land outlines could not be read: %1</source>
+        <translation>Не вдалося прочитати вбудовані контури суходолу: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TelemetryPlot</name>
+    <message>
+        <source>−%1 s</source>
+        <translation>−%1 s</translation>
+    </message>
+    <message>
+        <source>now</source>
+        <translation>зараз</translation>
+    </message>
+    <message>
+        <source>No data yet</source>
+        <translation>Даних ще немає</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle</source>
+        <translation>Виберіть апарат</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TerrainProfileModel</name>
+    <message>
+        <source>no terrain source</source>
+        <translation>немає джерела рельєфу</translation>
+    </message>
+    <message>
+        <source>no terrain data (tried: %1)</source>
+        <translation>немає даних рельєфу (спробувано: %1)</translation>
+    </message>
+    <message>
+        <source> · loading…</source>
+        <translation> · завантаження…</translation>
+    </message>
+    <message>
+        <source>under this waypoint</source>
+        <translation>під цією точкою</translation>
+    </message>
+    <message>
+        <source>under this segment&apos;s points</source>
+        <translation>під точками цього сегмента</translation>
+    </message>
+    <message>
+        <source>Asking for the ground %1…</source>
+        <translation>Запит рельєфу %1…</translation>
+    </message>
+    <message>
+        <source>No terrain data %1 (tried: %2)</source>
+        <translation>Немає даних рельєфу %1 (спробувано: %2)</translation>
+    </message>
+    <message>
+        <source>Ground %1, metres above sea level (EGM96), from %2</source>
+        <translation>Рельєф %1, метри над рівнем моря (EGM96), джерело: %2</translation>
+    </message>
+    <message>
+        <source>; some points have no data (tried: %1)</source>
+        <translation>; для деяких точок немає даних (спробувано: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TileManager</name>
+    <message>
+        <source>Offline base map</source>
+        <translation>Офлайн-базова карта</translation>
+    </message>
+    <message>
+        <source>%1 — offline base map shown</source>
+        <translation>%1 — показано офлайн-базову карту</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: loading %n tile(s)</source>
+        <translation>
+            <numerusform>%1: завантаження %n тайла</numerusform>
+            <numerusform>%1: завантаження %n тайлів</numerusform>
+            <numerusform>%1: завантаження %n тайлів</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n tile(s) missing — %2</source>
+        <translation>
+            <numerusform>%1: бракує %n тайла — %2</numerusform>
+            <numerusform>%1: бракує %n тайлів — %2</numerusform>
+            <numerusform>%1: бракує %n тайлів — %2</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::TrafficLayer</name>
+    <message>
+        <source>%1 ft</source>
+        <translation>%1 ft</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source> std</source>
+        <translation> std</translation>
+    </message>
+    <message>
+        <source> climbing</source>
+        <translation> набирає висоту</translation>
+    </message>
+    <message>
+        <source> descending</source>
+        <translation> знижується</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::XyzTileSource</name>
+    <message>
+        <source>Web tiles</source>
+        <translation>Веб-тайли</translation>
+    </message>
+    <message>
+        <source>Tile %1 is not an image.</source>
+        <translation>Тайл %1 не є зображенням.</translation>
+    </message>
+    <message>
+        <source>Tile %1 is neither in the offline pack nor in the cache (cache only: the network is not used).</source>
+        <translation>Тайла %1 немає ні в офлайн-пакеті, ні в кеші (лише кеш: мережа не використовується).</translation>
+    </message>
+    <message>
+        <source>Tile %1 is not in the cache and the tile server is unreachable.</source>
+        <translation>Тайла %1 немає в кеші, а сервер тайлів недоступний.</translation>
+    </message>
+    <message>
+        <source>No tile file %1.</source>
+        <translation>Немає файлу тайла %1.</translation>
+    </message>
+    <message>
+        <source>The tile server answered HTTP %1 for tile %2.</source>
+        <translation>Сервер тайлів відповів HTTP %1 для тайла %2.</translation>
+    </message>
+    <message>
+        <source>Tile server unreachable (%1).</source>
+        <translation>Сервер тайлів недоступний (%1).</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::ZoneLayer</name>
+    <message>
+        <source>drawn on the map</source>
+        <translation>намальовано на карті</translation>
+    </message>
+    <message>
+        <source>%1 (%2 zone)
+Source: %3%4
+Floor %5, ceiling %6</source>
+        <translation>%1 (зона: %2)
+Джерело: %3%4
+Нижня межа %5, верхня межа %6</translation>
+    </message>
+    <message>
+        <source>
+Not checked: %1</source>
+        <translation>
+Не перевіряється: %1</translation>
+    </message>
+    <message>
+        <source>
+Switched off: not checked</source>
+        <translation>
+Вимкнено: не перевіряється</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::vehicle::CommandLog</name>
+    <message>
+        <source>sent</source>
+        <translation>надіслано</translation>
+    </message>
+    <message>
+        <source>done</source>
+        <translation>виконано</translation>
+    </message>
+    <message>
+        <source>failed</source>
+        <translation>помилка</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>скасовано</translation>
+    </message>
+    <message>
+        <source>alert</source>
+        <translation>тривога</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 %4</source>
+        <translation>%1 %2: %3 %4</translation>
+    </message>
+    <message>
+        <source>%1 %2: %3 %4: %5</source>
+        <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+</TS>
