@@ -1,5 +1,6 @@
 #include "ProximityMonitor.h"
 
+#include "AlertChanges.h"
 #include "LocalTangentPlane.h"
 #include "TrafficPicture.h"
 #include "Vehicle.h"
@@ -150,30 +151,21 @@ std::vector<ProximityMonitor::Alert> ProximityMonitor::predict() const
 void ProximityMonitor::check()
 {
     std::vector<Alert> now = predict();
-    const auto has = [](const std::vector<Alert> &list, const QString &key) {
-        return std::any_of(list.begin(), list.end(), [&key](const Alert &a) { return a.key == key; });
-    };
-    std::vector<QString> cleared;
-    for (const Alert &old : m_alerts)
-        if (!has(now, old.key))
-            cleared.push_back(old.key);
-    std::vector<Alert> raised;
-    for (const Alert &a : now)
-        if (!has(m_alerts, a.key))
-            raised.push_back(a);
+    if (now.empty() && m_alerts.empty())
+        return;  // a quiet sky: the banner's model is not reset (nothing to draw again)
+    const client::AlertChanges<Alert> changes(m_alerts, now);
     const bool countChange = now.size() != m_alerts.size();
     beginResetModel();
     m_alerts = std::move(now);
     endResetModel();
-    if (m_fleet) {
-        for (const Alert &a : raised)
+    if (m_fleet)
+        for (const Alert &a : changes.raised)
             m_fleet->commandLog()->alert(a.vehicle, a.text);
-    }
-    for (const Alert &a : raised)
+    for (const Alert &a : changes.raised)
         emit alertRaised(a);
-    for (const QString &key : cleared)
+    for (const QString &key : changes.cleared)
         emit alertCleared(key);
-    if (countChange || !raised.empty())
+    if (countChange || !changes.raised.empty())
         emit countChanged();
 }
 
