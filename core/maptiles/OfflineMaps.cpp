@@ -33,15 +33,25 @@ OfflineMaps::OfflineMaps(QSettings *storage, QObject *parent)
         m_packFile = m_storage->value(settingKey("packFile")).toString();
         m_cacheOnly = m_storage->value(settingKey("cacheOnly"), false).toBool();
         m_attribution = m_storage->value(settingKey("attribution")).toString();
-        m_minZoom = m_storage->value(settingKey("minZoom"), m_minZoom).toInt();
-        m_maxZoom = m_storage->value(settingKey("maxZoom"), m_maxZoom).toInt();
-        m_margin = m_storage->value(settingKey("margin"), m_margin).toDouble();
-        m_limits.maximumConcurrent = m_storage->value(settingKey("maxConcurrent"), m_limits.maximumConcurrent).toInt();
-        m_limits.maximumTiles = m_storage->value(settingKey("maxTiles"), m_limits.maximumTiles).toLongLong();
+        // A hand-edited value that is not a number in range keeps the default (never 0 by accident).
+        const auto number = [this](const char *key, double fallback, double lowest, double highest) {
+            bool ok = false;
+            const double v = m_storage->value(settingKey(key)).toDouble(&ok);
+            return ok && std::isfinite(v) && v >= lowest && v <= highest ? v : fallback;
+        };
+        m_minZoom = int(number("minZoom", m_minZoom, 0, TileArea::kMaximumZoom));
+        m_maxZoom = int(number("maxZoom", m_maxZoom, m_minZoom, TileArea::kMaximumZoom));
+        m_margin = number("margin", m_margin, 0, 100000);
+        m_limits.maximumConcurrent = int(number("maxConcurrent", m_limits.maximumConcurrent, 1, 64));
+        m_limits.maximumTiles = qint64(number("maxTiles", double(m_limits.maximumTiles), 1, 1e9));
         // The last area, so a download cut short by a restart can be resumed as it was.
         const QStringList box = m_storage->value(settingKey("area")).toString().split(QLatin1Char(','));
-        if (box.size() == 4) {
-            const GeoBounds bounds{box[0].toDouble(), box[1].toDouble(), box[2].toDouble(), box[3].toDouble()};
+        bool read = box.size() == 4;
+        double edge[4] = {};
+        for (int i = 0; read && i < 4; ++i)
+            edge[i] = box[i].toDouble(&read);
+        if (read) {
+            const GeoBounds bounds{edge[0], edge[1], edge[2], edge[3]};
             if (bounds.isValid()) {
                 m_area = TileArea::rectangle(bounds);
                 m_areaText = m_storage->value(settingKey("areaText")).toString();

@@ -87,6 +87,38 @@ private slots:
         QCOMPARE(server.requests(), 1);
     }
 
+    // A settings file edited by hand: what is not a number in range keeps its default, never 0.
+    void unreadableSettingsKeepTheirDefaults()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("s.ini"));
+        int defaultMin = 0, defaultMax = 0;
+        double defaultMargin = 0;
+        {
+            QSettings fresh(dir.filePath(QStringLiteral("fresh.ini")), QSettings::IniFormat);
+            maptiles::OfflineMaps maps(&fresh);
+            defaultMin = maps.minimumZoom();
+            defaultMax = maps.maximumZoom();
+            defaultMargin = maps.marginMetres();
+        }
+        QVERIFY(defaultMargin > 0);
+        {
+            QSettings settings(path, QSettings::IniFormat);
+            settings.setValue(QStringLiteral("offlineMaps/minZoom"), QStringLiteral("twelve"));
+            settings.setValue(QStringLiteral("offlineMaps/maxZoom"), 99);
+            settings.setValue(QStringLiteral("offlineMaps/margin"), QStringLiteral("-5"));
+            settings.setValue(QStringLiteral("offlineMaps/maxConcurrent"), QStringLiteral("many"));
+            settings.setValue(QStringLiteral("offlineMaps/area"), QStringLiteral("56.9,x,57.0,24.2"));
+        }
+        QSettings settings(path, QSettings::IniFormat);
+        maptiles::OfflineMaps maps(&settings);
+        QCOMPARE(maps.minimumZoom(), defaultMin);
+        QCOMPARE(maps.maximumZoom(), defaultMax);
+        QCOMPARE(maps.marginMetres(), defaultMargin);
+        QCOMPARE(maps.limits().maximumConcurrent, maptiles::PrefetchLimits{}.maximumConcurrent);
+        QCOMPARE(maps.tileCount(), -1.0);  // no area: the broken one is not taken as 0,0
+    }
+
     void controllerDownloadsTheRouteArea()
     {
         FaultyTileServer server;
