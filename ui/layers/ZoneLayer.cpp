@@ -19,6 +19,8 @@ using airspace::Zone;
 namespace {
 constexpr int kCircleSteps = 72;   // a circle drawn as a polygon of this many geodesic points
 constexpr double kLabelPadding = 3;
+constexpr double kHatchedSize = 12;   // pixels: a smaller zone is not hatched
+constexpr double kLabelledSize = 12;  // pixels: a smaller zone gets no label unless it is the chosen one
 
 std::vector<QGeoCoordinate> circleRing(const mission::GeoPoint &centre, double radius)
 {
@@ -143,6 +145,15 @@ void ZoneLayer::readZones()
             o.hole.push_back(false);
             o.centre = QGeoCoordinate(cone->center.latitude, cone->center.longitude);
         }
+        double west = 180, east = -180, south = 90, north = -90;
+        for (const auto &ring : o.rings)
+            for (const QGeoCoordinate &c : ring) {
+                west = std::min(west, c.longitude());
+                east = std::max(east, c.longitude());
+                south = std::min(south, c.latitude());
+                north = std::max(north, c.latitude());
+            }
+        o.box = west <= east ? QRectF(QPointF(west, south), QPointF(east, north)) : QRectF();
         m_outlines.push_back(std::move(o));
     }
     repaint();
@@ -155,8 +166,13 @@ QPainterPath ZoneLayer::pathOf(const Outline &outline, const MapViewport &view, 
     for (const auto &ring : outline.rings) {
         QPolygonF polygon;
         polygon.reserve(qsizetype(ring.size()) + 1);
-        for (const QGeoCoordinate &c : ring)
-            polygon << view.geoToScreen(c) + offset;
+        // Corners closer than half a pixel to the last one kept add nothing but work (a 72-point
+        // circle a few pixels wide, a detailed coastline zoomed out).
+        for (const QGeoCoordinate &c : ring) {
+            const QPointF point = view.geoToScreen(c) + offset;
+            if (polygon.isEmpty() || std::abs(point.x() - polygon.last().x()) + std::abs(point.y() - polygon.last().y()) >= 0.5)
+                polygon << point;
+        }
         if (!polygon.isEmpty())
             polygon << polygon.first();
         path.addPolygon(polygon);
@@ -164,12 +180,24 @@ QPainterPath ZoneLayer::pathOf(const Outline &outline, const MapViewport &view, 
     return path;
 }
 
+// A zone's extent on the screen: its corners' box projected (Web Mercator keeps the box a box).
+QRectF ZoneLayer::screenBox(const Outline &outline, const MapViewport &view)
+{
+    if (outline.box.isNull())
+        return {};
+    const QPointF northWest = view.geoToScreen(QGeoCoordinate(outline.box.bottom(), outline.box.left()));
+    const QPointF southEast = view.geoToScreen(QGeoCoordinate(outline.box.top(), outline.box.right()));
+    return QRectF(northWest, southEast).normalized();
+}
+
 int ZoneLayer::zoneAt(QPointF position) const
 {
     const MapViewport view = viewport();
-    for (int row = int(m_outlines.size()) - 1; row >= 0; --row)
-        if (pathOf(m_outlines[size_t(row)], view).contains(position))
+    for (int row = int(m_outlines.size()) - 1; row >= 0; --row) {
+        const Outline &outline = m_outlines[size_t(row)];
+        if (screenBox(outline, view).adjusted(-1, -1, 1, 1).contains(position) && pathOf(outline, view).contains(position))
             return row;
+    }
     return -1;
 }
 
@@ -232,8 +260,12 @@ void ZoneLayer::paint(QPainter *painter)
     const MapViewport &view = paintViewport();
     const int selected = m_airspace->selectedZone();
     std::vector<QPainterPath> paths(m_outlines.size());
+    // Drawn: what reaches into the painted area (halos and pens included).
+    const QRectF painted = QRectF(QPointF(0, 0), view.size()).adjusted(-8, -8, 8, 8);
     for (size_t row = 0; row < m_outlines.size(); ++row) {
         const Zone &z = m_airspace->zoneAt(int(row));
+        if (!painted.intersects(screenBox(m_outlines[row], view)))
+            continue;
         paths[row] = pathOf(m_outlines[row], view);
         const QPainterPath &path = paths[row];
         if (int(row) == selected) {
@@ -247,10 +279,16 @@ void ZoneLayer::paint(QPainter *painter)
         } else if (z.kind == airspace::ZoneKind::Exclusion) {
             QColor wash = exclusionColour();
             wash.setAlpha(28);
-            p.setPen(Qt::NoPen);
-            p.setBrush(wash);
-            p.drawPath(path);
-            p.setBrush(QBrush(exclusionColour(), Qt::BDiagPattern));
+            // A hatch needs room to show: a zone a few pixels wide is its wash and outline, drawn at once.
+            const QRectF box = path.boundingRect();
+            if (std::max(box.width(), box.height()) >= kHatchedSize) {
+                p.setPen(Qt::NoPen);
+                p.setBrush(wash);
+                p.drawPath(path);
+                p.setBrush(QBrush(exclusionColour(), Qt::BDiagPattern));
+            } else {
+                p.setBrush(wash);
+            }
             p.setPen(QPen(exclusionColour(), 2));
         } else {
             p.setPen(QPen(inclusionColour(), 3));
@@ -270,7 +308,7 @@ void ZoneLayer::paint(QPainter *painter)
     const QRectF visible(QPointF(0, 0), view.size());
     for (size_t row = 0; row < m_outlines.size(); ++row) {
         const QRectF box = paths[row].boundingRect();
-        if (box.isEmpty() || !visible.intersects(box))
+        if (box.isEmpty() || !visible.intersects(box) || (std::max(box.width(), box.height()) < kLabelledSize && int(row) != selected))
             continue;
         // LabelPlacer puts a label at its mark + kOffset, centred on the mark's height.
         anchors[row] = QPointF(box.left(), box.top() - 2 - labelHeight / 2) - LabelPlacer::kOffset;

@@ -72,6 +72,7 @@ private:
         std::vector<std::vector<QGeoCoordinate>> rings;  // closed by the painter
         std::vector<bool> hole;
         QGeoCoordinate centre;  // where the label is anchored
+        QRectF box;             // longitude (x) and latitude (y) extent: what is off screen is not drawn
     };
     struct Label
     {
@@ -81,6 +82,7 @@ private:
     void readZones();
     void followCursor();
     QPainterPath pathOf(const Outline &outline, const MapViewport &view, QPointF offset = {}) const;
+    static QRectF screenBox(const Outline &outline, const MapViewport &view);
 
     QPointer<airspace::Airspace> m_airspace;
     std::vector<Outline> m_outlines;  // by row
