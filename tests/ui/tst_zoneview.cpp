@@ -270,6 +270,8 @@ private slots:
         // server's comes back; deleted after the question, it is gone.
         QQuickItem *editHere = client.find(QStringLiteral("editServerZone"));
         QTRY_VERIFY(editHere->isVisible());
+        QVERIFY(test::waitForFrame(client.window()));
+        client.window()->grabWindow().save(QDir(screenshotDir()).filePath(QStringLiteral("zone-sharing.png")));
         click(client.window(), centreOf(editHere));
         QTRY_COMPARE(airspace.customZones().size(), size_t(1));
         QVERIFY(airspace.customZones()[0].serverId);
