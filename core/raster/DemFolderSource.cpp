@@ -16,6 +16,14 @@ QString DemFolderSource::name() const
     return QStringLiteral("DEM folder (%1)").arg(QDir::toNativeSeparators(m_folder));
 }
 
+QStringList DemFolderSource::problems() const
+{
+    QStringList all;
+    for (const auto &part : m_parts)
+        all << part->problems();
+    return all;
+}
+
 terrain::ElevationSample DemFolderSource::sample(const terrain::GeoPoint &point)
 {
     for (const auto &part : m_parts) {

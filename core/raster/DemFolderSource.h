@@ -19,6 +19,7 @@ public:
 
     QString name() const override;
     terrain::ElevationSample sample(const terrain::GeoPoint &point) override;
+    QStringList problems() const override;
 
 private:
     QString m_folder;

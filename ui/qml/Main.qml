@@ -154,6 +154,8 @@ ApplicationWindow {
             mapSource: window.appSettings.mapSource
             tileUrlTemplate: window.appSettings.tileUrlTemplate
             mbtilesFile: window.appSettings.mbtilesFile
+            orthophotoFile: window.appSettings.orthophotoFile
+            orthophotoOpacity: window.appSettings.orthophotoOpacity
             tilePackFile: window.offlineMaps.packFile
             tilesCacheOnly: window.offlineMaps.cacheOnly
         }
@@ -175,6 +177,8 @@ ApplicationWindow {
             mapSource: window.appSettings.mapSource
             tileUrlTemplate: window.appSettings.tileUrlTemplate
             mbtilesFile: window.appSettings.mbtilesFile
+            orthophotoFile: window.appSettings.orthophotoFile
+            orthophotoOpacity: window.appSettings.orthophotoOpacity
             tilePackFile: window.offlineMaps.packFile
             tilesCacheOnly: window.offlineMaps.cacheOnly
         }
