@@ -71,22 +71,22 @@ int main(int argc, char **argv)
                 return int(hills(57 - r / 3600.0, west + c / 3600.0));
             }))
             return 1;
-    test::GeoTiffSpec wgs;
+    raster::test::GeoTiffSpec wgs;
     wgs.width = 7200, wgs.height = 3600;
     const double gtWgs[6] = {24.0, 1 / 3600.0, 0, 57.0, 0, -1 / 3600.0};
     std::copy(gtWgs, gtWgs + 6, wgs.geoTransform);
     wgs.tiled = true;
     const QString wgsPath = dir.filePath(QStringLiteral("dem-4326.tif"));
-    if (!test::writeGeoTiff(wgsPath, wgs, [](int, int r, int c) { return hills(57 - (r + 0.5) / 3600.0, 24 + (c + 0.5) / 3600.0); }))
+    if (!raster::test::writeGeoTiff(wgsPath, wgs, [](int, int r, int c) { return hills(57 - (r + 0.5) / 3600.0, 24 + (c + 0.5) / 3600.0); }))
         return 1;
-    test::GeoTiffSpec utm;
+    raster::test::GeoTiffSpec utm;
     utm.width = 4000, utm.height = 4000;  // 30 m pixels: 120 km
     const double gtUtm[6] = {250000, 30, 0, 6320000, 0, -30};
     std::copy(gtUtm, gtUtm + 6, utm.geoTransform);
     utm.crs = QStringLiteral("EPSG:32635");
     utm.tiled = true;
     const QString utmPath = dir.filePath(QStringLiteral("dem-utm.tif"));
-    if (!test::writeGeoTiff(utmPath, utm, [](int, int r, int c) { return 100 + 0.01 * r + 0.02 * c; }))
+    if (!raster::test::writeGeoTiff(utmPath, utm, [](int, int r, int c) { return 100 + 0.01 * r + 0.02 * c; }))
         return 1;
     std::printf("%-60s %9.0f ms\n", "(setup: writing the rasters)", double(setup.elapsed()));
 
@@ -124,7 +124,7 @@ int main(int argc, char **argv)
 
     // A large orthophoto: 8192² RGB pixels of 0.5 m in UTM 35N (4 km), tiled, with and without overviews.
     for (bool overviews : {false, true}) {
-        test::GeoTiffSpec photo;
+        raster::test::GeoTiffSpec photo;
         photo.width = photo.height = 8192;
         const double gt[6] = {310000, 0.5, 0, 6320000, 0, -0.5};
         std::copy(gt, gt + 6, photo.geoTransform);
@@ -136,7 +136,7 @@ int main(int argc, char **argv)
             photo.overviews = {2, 4, 8, 16, 32};
         const QString photoPath = dir.filePath(overviews ? QStringLiteral("photo-ovr.tif") : QStringLiteral("photo.tif"));
         setup.restart();
-        if (!test::writeGeoTiff(photoPath, photo, [](int b, int r, int c) { return double((r * (b + 1) + c * 3) & 0xff); }))
+        if (!raster::test::writeGeoTiff(photoPath, photo, [](int b, int r, int c) { return double((r * (b + 1) + c * 3) & 0xff); }))
             return 1;
         std::printf("%-60s %9.0f ms\n", overviews ? "(setup: 8192² orthophoto with 5 overviews)" : "(setup: 8192² orthophoto)", double(setup.elapsed()));
         auto renderer = OrthophotoRenderer::open(photoPath, &error);

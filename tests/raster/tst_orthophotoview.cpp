@@ -2,12 +2,15 @@
 // have) given a UTM orthophoto with coloured quadrants draws each quadrant where it belongs, above
 // the base map and below the page's layers, blended with the chosen opacity; a bad file is refused
 // with GDAL's reason, as the map source dialog shows it.
+#include "AppSettings.h"
 #include "GeoTiffWriter.h"
+#include "PasswordVault.h"
 #include "MapView.h"
 #include "OrthophotoLayer.h"
 #include "QuickScene.h"
 #include "RasterFileCheck.h"
 
+#include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QtQml/qqmlextensionplugin.h>
@@ -28,7 +31,7 @@ import QtQuick
 import Sortie.Ui
 Item {
     property alias file: pane.orthophotoFile
-    property alias opacity: pane.orthophotoOpacity
+    property alias orthoOpacity: pane.orthophotoOpacity
     MapPane {
         id: pane
         objectName: "pane"
@@ -56,6 +59,7 @@ private slots:
     void initTestCase();
     void quadrantsAreDrawnInPlaceWithTheOpacity();
     void badFileShowsGdalsReason();
+    void dialogKeepsTheRastersOrSaysWhyNot();
 };
 
 void TestOrthophotoView::initTestCase()
@@ -103,12 +107,11 @@ void TestOrthophotoView::quadrantsAreDrawnInPlaceWithTheOpacity()
     auto *layer = scene.find<OrthophotoLayer>(QStringLiteral("orthophotoLayer"));
     QVERIFY(map && layer);
     map->setCenter(QGeoCoordinate(56.952, 24.133));
-    map->setZoomLevel(13.5);
-    const QImage without = scene.grab();  // the base map alone
+    map->setZoomLevel(12.5);
     QVERIFY(!layer->isVisible());
 
     scene.root()->setProperty("file", m_file);
-    scene.root()->setProperty("opacity", 1.0);
+    scene.root()->setProperty("orthoOpacity", 1.0);
     QVERIFY2(layer->isValid(), qPrintable(layer->errorString()));
     QVERIFY(layer->isVisible());
     QTRY_VERIFY(layer->drawnTiles() > 0 && layer->pendingTiles() == 0);
@@ -120,14 +123,24 @@ void TestOrthophotoView::quadrantsAreDrawnInPlaceWithTheOpacity()
         QVERIFY2(sortie::test::colourDistance(opaque.pixel(at), kQuadrant[q].rgb()) <= 2,
                  qPrintable(QStringLiteral("quadrant %1: %2").arg(q).arg(QColor(opaque.pixel(at)).name())));
     }
-    // Outside the image the base map shows through; the page's own layer is drawn over the image.
-    QCOMPARE(opaque.pixel(790, 10), without.pixel(790, 10));
+    // The page's own layer is drawn over the image's layer.
     QCOMPARE(QColor(opaque.pixel(40, 540)), QColor(255, 0, 255));
 
     // Half opacity: each quadrant half its colour, half the base map's.
-    scene.root()->setProperty("opacity", 0.5);
+    scene.root()->setProperty("orthoOpacity", 0.5);
     QTRY_VERIFY(scene.grab().pixel(map->fromCoordinate(m_quadrantCentre[0]).toPoint()) != kQuadrant[0].rgb());
     const QImage half = scene.grab();
+
+    // No orthophoto: the base map alone. Outside the image (2 km and more west of it) nothing changed.
+    scene.root()->setProperty("file", QString());
+    QTRY_VERIFY(!layer->isVisible());
+    QTRY_VERIFY(scene.grab().pixel(map->fromCoordinate(m_quadrantCentre[0]).toPoint()) != half.pixel(map->fromCoordinate(m_quadrantCentre[0]).toPoint()));
+    const QImage without = scene.grab();
+    if (qEnvironmentVariableIsSet("SORTIE_SAVE_GRABS"))
+        without.save(QStringLiteral("/tmp/ortho-without.png")), opaque.save(QStringLiteral("/tmp/ortho-opaque.png")), half.save(QStringLiteral("/tmp/ortho-half.png"));
+    QVERIFY(map->toCoordinate(QPointF(100, 300)).longitude() < m_quadrantCentre[0].longitude() - 0.03);
+    QCOMPARE(opaque.pixel(100, 300), without.pixel(100, 300));
+    QCOMPARE(half.pixel(100, 300), without.pixel(100, 300));
     for (int q = 0; q < 4; ++q) {
         const QPoint at = map->fromCoordinate(m_quadrantCentre[q]).toPoint();
         const QColor base(without.pixel(at)), colour = kQuadrant[q], got(half.pixel(at));
@@ -158,6 +171,63 @@ void TestOrthophotoView::badFileShowsGdalsReason()
     QVERIFY(!layer->isValid());
     QVERIFY(!layer->isVisible());
     QVERIFY(layer->errorString().startsWith(bad));
+}
+
+void TestOrthophotoView::dialogKeepsTheRastersOrSaysWhyNot()
+{
+    QSettings storage(m_dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
+    sortie::secrets::PasswordVault vault(QStringLiteral("sortie-tests"));
+    AppSettings settings(&storage, &vault);
+    QCOMPARE(settings.orthophotoOpacity(), 0.8);
+    QuickScene scene(R"(
+import QtQuick
+import Sortie.Ui
+Item {
+    id: root
+    required property AppSettings appSettings
+    MapSourceDialog { objectName: "dialog"; appSettings: root.appSettings }
+}
+)", QSize(800, 760), {{QStringLiteral("appSettings"), QVariant::fromValue(&settings)}});
+    QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+    QObject *dialog = scene.find(QStringLiteral("dialog"));
+    QVERIFY(dialog);
+    QMetaObject::invokeMethod(dialog, "open");
+    QTRY_VERIFY(dialog->property("opened").toBool());
+    QObject *orthophoto = scene.find(QStringLiteral("orthophotoField"));
+    QObject *dem = scene.find(QStringLiteral("demField"));
+    QObject *problem = scene.find(QStringLiteral("orthophotoProblem"));
+    QObject *opacity = scene.find(QStringLiteral("orthophotoOpacity"));
+    QVERIFY(orthophoto && dem && problem && opacity);
+
+    // A file GDAL cannot read: its reason under the field, and OK waits.
+    const QString bad = m_dir.filePath(QStringLiteral("garbage.tif"));
+    QFile f(bad);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("garbage");
+    f.close();
+    orthophoto->setProperty("text", bad);
+    QVERIFY2(problem->property("text").toString().startsWith(bad + QLatin1String(": ")), qPrintable(problem->property("text").toString()));
+    QVERIFY(!dialog->property("rastersUsable").toBool());
+    dem->setProperty("text", bad);
+    QVERIFY(scene.find(QStringLiteral("demProblem"))->property("text").toString().startsWith(bad));
+
+    // Usable files: kept in the settings with the opacity.
+    GeoTiffSpec s;
+    s.width = s.height = 4;
+    const double gt[6] = {24.0, 0.1, 0, 57.0, 0, -0.1};
+    std::copy(gt, gt + 6, s.geoTransform);
+    const QString demFile = m_dir.filePath(QStringLiteral("dem.tif"));
+    QVERIFY(writeGeoTiff(demFile, s, [](int, int, int) { return 12.0; }));
+    orthophoto->setProperty("text", m_file);
+    dem->setProperty("text", demFile);
+    opacity->setProperty("value", 0.5);
+    QVERIFY(dialog->property("rastersUsable").toBool());
+    QVERIFY(problem->property("text").toString().isEmpty());
+    QMetaObject::invokeMethod(dialog, "accept");
+    QCOMPARE(settings.orthophotoFile(), m_file);
+    QCOMPARE(settings.demPath(), demFile);
+    QCOMPARE(settings.orthophotoOpacity(), 0.5);
+    QCOMPARE(storage.value(QStringLiteral("terrain/demFolder")).toString(), demFile);  // what the terrain reads at start
 }
 
 QTEST_MAIN(TestOrthophotoView)

@@ -18,10 +18,11 @@ Dialog {
 
     readonly property string orthophotoProblem: rasterCheck.orthophotoProblem(orthophotoField.text)
     readonly property string demProblem: rasterCheck.demProblem(demField.text)
+    readonly property bool rastersUsable: orthophotoProblem === "" && demProblem === ""
 
     RasterFileCheck { id: rasterCheck }
 
-    Component.onCompleted: standardButton(Dialog.Ok).enabled = Qt.binding(() => orthophotoProblem === "" && demProblem === "")
+    Component.onCompleted: standardButton(Dialog.Ok).enabled = Qt.binding(() => rastersUsable)
 
     onAboutToShow: {
         offline.checked = appSettings.mapSource === "offline"
@@ -82,6 +83,8 @@ Dialog {
         }
         MenuSeparator { Layout.fillWidth: true }
         Label {
+            Layout.fillWidth: true
+            wrapMode: Text.Wrap
             text: qsTr("Orthophoto over the base map (GeoTIFF or any raster GDAL reads, any CRS)")
         }
         TextField {
@@ -112,6 +115,8 @@ Dialog {
             Label { text: qsTr("%1 %").arg(Math.round(opacitySlider.value * 100)) }
         }
         Label {
+            Layout.fillWidth: true
+            wrapMode: Text.Wrap
             text: qsTr("Terrain: a DEM file (GeoTIFF, .hgt, ...) or a folder of them")
         }
         TextField {
