@@ -20,6 +20,8 @@
 #include <cmath>
 #include <cstdio>
 #include <thread>
+#include <utility>
+#include <vector>
 
 using namespace sortie;
 using namespace sortie::raster;
@@ -80,7 +82,7 @@ int main(int argc, char **argv)
     if (!raster::test::writeGeoTiff(wgsPath, wgs, [](int, int r, int c) { return hills(57 - (r + 0.5) / 3600.0, 24 + (c + 0.5) / 3600.0); }))
         return 1;
     raster::test::GeoTiffSpec utm;
-    utm.width = 4000, utm.height = 4000;  // 30 m pixels: 120 km
+    utm.width = 6000, utm.height = 6000;  // 30 m pixels: 180 km, the whole path
     const double gtUtm[6] = {250000, 30, 0, 6320000, 0, -30};
     std::copy(gtUtm, gtUtm + 6, utm.geoTransform);
     utm.crs = QStringLiteral("EPSG:32635");
@@ -97,7 +99,9 @@ int main(int argc, char **argv)
     QString error;
     {
         terrain::HgtTileSource tiles(dir.path());
-        report("hand-written .hgt reader: first pass (maps and checks 2 tiles)", median(1, [&] { sampleAll(tiles, path); }), 0);
+        int values = 0;
+        report("hand-written .hgt reader: first pass (maps and checks 2 tiles)", median(1, [&] { values = sampleAll(tiles, path); }), 0);
+        std::printf("%-60s %9d of %zu\n", "  samples with a value", values, path.points.size());
         ok &= report("hand-written .hgt reader: 100 km path", median(21, [&] { sampleAll(tiles, path); }), 20);
     }
     {
@@ -118,7 +122,9 @@ int main(int argc, char **argv)
         auto tif = openDem(utmPath, &error);
         if (!tif)
             return std::fprintf(stderr, "%s\n", qPrintable(error)), 1;
-        report("GDAL GeoTIFF UTM 35N (PROJ per point): first pass", median(1, [&] { sampleAll(*tif, path); }), 0);
+        int values = 0;
+        report("GDAL GeoTIFF UTM 35N (PROJ per point): first pass", median(1, [&] { values = sampleAll(*tif, path); }), 0);
+        std::printf("%-60s %9d of %zu\n", "  samples with a value", values, path.points.size());
         ok &= report("GDAL GeoTIFF UTM 35N: 100 km path", median(21, [&] { sampleAll(*tif, path); }), 40);
     }
 
@@ -143,20 +149,28 @@ int main(int argc, char **argv)
         if (!renderer)
             return std::fprintf(stderr, "%s\n", qPrintable(error)), 1;
         const double lat = (renderer->north() + renderer->south()) / 2, lon = (renderer->west() + renderer->east()) / 2;
-        for (int z : {12, 14, 16, 18}) {
+        for (int z : {11, 12, 13, 14, 15, 16, 17, 18}) {
+            // The tiles of the image nearest its middle, as a screen asks for them (up to 9).
             const double n = 1 << z;
-            const int x = int((lon + 180) / 360 * n);
+            const double cx = (lon + 180) / 360 * n;
             const double s = std::sin(lat * M_PI / 180);
-            const int y = int((0.5 - std::log((1 + s) / (1 - s)) / (4 * M_PI)) * n);
-            int i = 0;
-            // A 3×3 block of tiles around the middle, as a screen asks for them.
+            const double cy = (0.5 - std::log((1 + s) / (1 - s)) / (4 * M_PI)) * n;
+            std::vector<std::pair<int, int>> keys;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    if (renderer->touches(z, int(cx) + dx, int(cy) + dy))
+                        keys.emplace_back(int(cx) + dx, int(cy) + dy);
+            int i = 0, covered = 0;
             const Timing t = median(9, [&] {
-                renderer->render(z, x + (i % 3) - 1, y + (i / 3 % 3) - 1, 256, &error);
-                ++i;
+                const auto [x, y] = keys[size_t(i++) % keys.size()];
+                covered += renderer->render(z, x, y, 256, &error).covered ? 1 : 0;
             });
             char what[96];
-            std::snprintf(what, sizeof what, "orthophoto tile z%d, %s", z, overviews ? "with overviews" : "no overviews");
+            std::snprintf(what, sizeof what, "orthophoto tile z%d (%zu tile(s) of it), %s", z, keys.size(),
+                          overviews ? "with overviews" : "no overviews");
             report(what, t, 0);
+            if (covered != 9)
+                return std::fprintf(stderr, "a tile of the image came out empty\n"), 1;
         }
     }
     return ok ? 0 : 1;
