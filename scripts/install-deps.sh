@@ -16,6 +16,7 @@ packages=(
   libprotobuf-dev protobuf-compiler nlohmann-json3-dev libbenchmark-dev
   libboost-dev  # Boost.Geometry (header-only): the airspace check's shapes and R-tree
   libproj-dev proj-data  # PROJ and its EGM96 grid (egm96_15.gtx): ellipsoidal heights to AMSL
+  libgdal-dev  # GDAL: DEM rasters (GeoTIFF, COG, Copernicus, .hgt...) and orthophotos in any CRS (core/raster)
   qtkeychain-qt6-dev libsecret-1-0  # the remembered password in the OS keyring (QtKeychain loads libsecret)
   dbus-daemon gnome-keyring libglib2.0-bin libsecret-tools  # tst_keyring: a session bus, a keyring, gdbus, secret-tool
   clang libclang-rt-14-dev

@@ -4,7 +4,7 @@
 #include "AirspaceRule.h"
 #include "ElevationService.h"
 #include "FlownPath.h"
-#include "HgtTileSource.h"
+#include "DemOpener.h"
 #include "MissionFiles.h"
 #include "TerrainReport.h"
 
@@ -22,7 +22,7 @@ int runAirspace(const QStringList &args, Streams io)
     QCommandLineParser p;
     p.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
     p.addOption({QStringLiteral("zones"), QStringLiteral("A zone file: .plan (geofence), .geojson / .json, .kml. Repeatable."), QStringLiteral("FILE")});
-    p.addOption({QStringLiteral("dem"), QStringLiteral("An SRTM .hgt tile or a folder of them (AGL heights, terrain following)."), QStringLiteral("PATH")});
+    p.addOption({QStringLiteral("dem"), QStringLiteral("A DEM (any raster GDAL reads, an SRTM .hgt tile) or a folder of them (AGL heights, terrain following)."), QStringLiteral("PATH")});
     p.addOption({QStringLiteral("buffer"), QStringLiteral("Warn when a leg comes this close to a zone, m."), QStringLiteral("METERS"), QStringLiteral("20")});
     p.addOption({QStringLiteral("json"), QStringLiteral("Machine-readable output.")});
     if (!p.parse(QStringList{QStringLiteral("sortie-plan")} + args)) {
@@ -49,12 +49,13 @@ int runAirspace(const QStringList &args, Streams io)
         io.err << "sortie-plan: " << error << "\n";
         return Failure;
     }
-    std::unique_ptr<terrain::HgtTileSource> tiles;
+    std::unique_ptr<terrain::ElevationSource> tiles;
     terrain::ElevationService service;
     if (p.isSet(QStringLiteral("dem"))) {
-        tiles = std::make_unique<terrain::HgtTileSource>(p.value(QStringLiteral("dem")));
-        if (!tiles->isUsable()) {
-            io.err << "sortie-plan: " << tiles->error() << "\n";
+        QString demError;
+        tiles = raster::openDem(p.value(QStringLiteral("dem")), &demError);
+        if (!tiles) {
+            io.err << "sortie-plan: " << demError << "\n";
             return Failure;
         }
         service.setSources({tiles.get()});

@@ -7,7 +7,7 @@
 #include "ElevationService.h"
 #include "EnduranceReport.h"
 #include "EnduranceRule.h"
-#include "HgtTileSource.h"
+#include "DemOpener.h"
 #include "MissionFiles.h"
 #include "ReportJson.h"
 #include "RouteStatistics.h"
@@ -124,7 +124,7 @@ int runStats(const QStringList &args, Streams io)
 {
     QCommandLineParser p;
     p.addOption({QStringLiteral("json"), QStringLiteral("Machine-readable output.")});
-    p.addOption({QStringLiteral("dem"), QStringLiteral("SRTM .hgt tile or folder: check the terrain rules too."), QStringLiteral("PATH")});
+    p.addOption({QStringLiteral("dem"), QStringLiteral("A DEM (any raster GDAL reads, an SRTM .hgt tile) or a folder of them: check the terrain rules too."), QStringLiteral("PATH")});
     p.addOption({QStringLiteral("vehicle"), QStringLiteral("Energy profile (JSON): time and energy per leg, batteries, point of no return."),
                  QStringLiteral("PROFILE")});
     p.addOption({QStringLiteral("wind"), QStringLiteral("With --vehicle: wind speed (m/s) and the direction it blows from (degrees)."),
@@ -165,13 +165,14 @@ int runStats(const QStringList &args, Streams io)
         return Failure;
     }
     // With --dem, each route's terrain profile adds its issues (see profile).
-    std::unique_ptr<terrain::HgtTileSource> tiles;
+    std::unique_ptr<terrain::ElevationSource> tiles;
     terrain::ElevationService elevation;
     std::vector<terrain::ProfileRoute> profiles;
     if (p.isSet(QStringLiteral("dem"))) {
-        tiles = std::make_unique<terrain::HgtTileSource>(p.value(QStringLiteral("dem")));
-        if (!tiles->isUsable()) {
-            io.err << "sortie-plan: " << tiles->error() << "\n";
+        QString demError;
+        tiles = raster::openDem(p.value(QStringLiteral("dem")), &demError);
+        if (!tiles) {
+            io.err << "sortie-plan: " << demError << "\n";
             return Failure;
         }
         elevation.setSources({tiles.get()});

@@ -1,7 +1,7 @@
 #include "ProfileCommand.h"
 
 #include "ElevationService.h"
-#include "HgtTileSource.h"
+#include "DemOpener.h"
 #include "MissionFiles.h"
 #include "TerrainReport.h"
 #include "TerrainRule.h"
@@ -29,7 +29,7 @@ int runProfile(const QStringList &args, Streams io)
 {
     QCommandLineParser p;
     p.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
-    p.addOption({QStringLiteral("dem"), QStringLiteral("An SRTM .hgt tile or a folder of them."), QStringLiteral("PATH")});
+    p.addOption({QStringLiteral("dem"), QStringLiteral("A DEM: any raster GDAL reads (GeoTIFF, .hgt, ...) or a folder of them."), QStringLiteral("PATH")});
     p.addOption({QStringLiteral("step"), QStringLiteral("Sampling step, m."), QStringLiteral("METERS"), QStringLiteral("30")});
     p.addOption({QStringLiteral("safe-distance"), QStringLiteral("Clearance to keep from the ground, m (default: the route's vehicle profile, 10)."),
                  QStringLiteral("METERS")});
@@ -43,7 +43,7 @@ int runProfile(const QStringList &args, Streams io)
         return Failure;
     }
     if (!p.isSet(QStringLiteral("dem"))) {
-        io.err << "sortie-plan: profile needs --dem PATH (an SRTM .hgt tile or a folder of them)\n";
+        io.err << "sortie-plan: profile needs --dem PATH (a DEM file GDAL reads, an SRTM .hgt tile, or a folder of them)\n";
         return Failure;
     }
     bool ok = false;
@@ -60,13 +60,14 @@ int runProfile(const QStringList &args, Streams io)
             return Failure;
         }
     }
-    HgtTileSource tiles(p.value(QStringLiteral("dem")));
-    if (!tiles.isUsable()) {
-        io.err << "sortie-plan: " << tiles.error() << "\n";
+    QString demError;
+    const std::unique_ptr<ElevationSource> dem = raster::openDem(p.value(QStringLiteral("dem")), &demError);
+    if (!dem) {
+        io.err << "sortie-plan: " << demError << "\n";
         return Failure;
     }
     ElevationService service;
-    service.setSources({&tiles});
+    service.setSources({dem.get()});
     const QString file = p.positionalArguments().at(0);
     const Result<LoadedMission> loaded = loadMission(file);
     if (!loaded) {
@@ -129,9 +130,9 @@ int runProfile(const QStringList &args, Streams io)
         io.out << QString::fromStdString(Json{{"file", file.toStdString()}, {"dem", p.value(QStringLiteral("dem")).toStdString()},
                                               {"routes", std::move(out)}}.dump(2)) << "\n";
     // A tile that turned out corrupt when the path reached it: the output shows no data there; say why.
-    for (const QString &problem : tiles.problems())
+    for (const QString &problem : dem->problems())
         io.err << "sortie-plan: " << problem << "\n";
-    if (!tiles.problems().isEmpty())
+    if (!dem->problems().isEmpty())
         return Failure;
     return errors ? ValidationErrors : Ok;
 }

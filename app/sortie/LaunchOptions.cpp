@@ -1,5 +1,6 @@
 #include "LaunchOptions.h"
 
+#include "DemOpener.h"
 #include "SbsFeed.h"
 
 #include <QCommandLineParser>
@@ -81,7 +82,7 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
                                       QCoreApplication::translate("sortie", "Folder for autosaved edits (default: the application data folder; also SORTIE_AUTOSAVE_DIR)."),
                                       QStringLiteral("folder"));
     const QCommandLineOption dem(QStringLiteral("dem"),
-                                 QCoreApplication::translate("sortie", "SRTM .hgt terrain tiles (a tile or a folder), asked before the server (also the setting terrain/demFolder)."),
+                                 QCoreApplication::translate("sortie", "A DEM for the terrain: any raster GDAL reads (GeoTIFF, COG, Copernicus DEM, .hgt, ...) or a folder of them, asked before the server (also the setting terrain/demFolder)."),
                                  QStringLiteral("path"));
     const QCommandLineOption sbs(QStringLiteral("sbs"),
                                  QCoreApplication::translate("sortie", "An ADS-B receiver's SBS-1 feed for manned traffic, as dump1090 serves it (port 30003); also the setting traffic/sbsAddress."),
@@ -117,6 +118,12 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     options.user = parser.value(user);
     options.autosaveDir = parser.value(autosave);
     options.demPath = parser.value(dem);
+    if (!options.demPath.isEmpty()) {
+        // A DEM that cannot be read stops the start with the file and GDAL's reason, not a silent flat world.
+        QString error;
+        if (!raster::openDem(options.demPath, &error))
+            return QStringLiteral("--dem: %1").arg(error);
+    }
     if (parser.isSet(sbs)) {
         QString host;
         quint16 port = 0;

@@ -37,7 +37,7 @@ struct LaunchOptions
     std::optional<VciEndpoint> vci;
     bool reportStartup = false; // print start-up time and memory, then quit
     QString autosaveDir; // --autosave-dir; empty: SORTIE_AUTOSAVE_DIR, else the default
-    QString demPath;     // --dem: SRTM .hgt tiles for the terrain; empty: the setting terrain/demFolder
+    QString demPath;     // --dem: a DEM file or folder for the terrain; empty: the setting terrain/demFolder
     QString sbsAddress;  // --sbs: an ADS-B receiver's SBS-1 feed, host:port; empty: the setting traffic/sbsAddress
 
     bool exitNow = false;

@@ -2,6 +2,7 @@
 // Sortie.Ui main window.
 #include "AppSettings.h"
 #include "ClientGraph.h"
+#include "ElevationSetup.h"
 #include "ConnectionController.h"
 #include "DemoServer.h"
 #include "HciSession.h"
@@ -82,6 +83,15 @@ int main(int argc, char *argv[])
     sortie::client::ClientGraph graph(&storage, options.graphOptions());
     if (!graph.recorderError().isEmpty())
         std::fprintf(stderr, "sortie: %s\n", qPrintable(graph.recorderError())); // flying goes on without a log
+    // The terrain follows the DEM chosen in the map source dialog (the setting the graph read at start;
+    // --dem wins until the operator picks another).
+    QObject::connect(&settings, &sortie::ui::AppSettings::changed, &settings,
+                     [&graph, &settings, &storage, chosen = settings.demPath()]() mutable {
+        if (settings.demPath() == chosen)
+            return;
+        chosen = settings.demPath();
+        graph.terrain().configure(chosen, storage.value(QStringLiteral("terrain/sourceOrder")).toStringList());
+    });
     // Only a password the server accepted is remembered.
     QObject::connect(&graph.connection(), &sortie::client::ConnectionController::ready, &settings,
                      &sortie::ui::AppSettings::loginSucceeded);

@@ -21,14 +21,20 @@ ElevationSetup::~ElevationSetup() = default;
 void ElevationSetup::configure(const QString &demFolder, const QStringList &order)
 {
     m_tiles.reset();
+    m_demError.clear();
     if (!demFolder.isEmpty()) {
-        m_tiles = std::make_unique<HgtTileSource>(demFolder);
-        if (!m_tiles->isUsable()) {
-            qCWarning(lcTerrain).noquote() << "terrain tiles:" << m_tiles->error();
-            m_tiles.reset();
+        if (m_opener) {
+            m_tiles = m_opener(demFolder, &m_demError);
         } else {
-            qCInfo(lcTerrain).noquote() << m_tiles->tileCount() << "SRTM tile(s) in" << demFolder;
+            auto tiles = std::make_unique<HgtTileSource>(demFolder);
+            m_demError = tiles->error();
+            if (tiles->isUsable())
+                m_tiles = std::move(tiles);
         }
+        if (!m_tiles)
+            qCWarning(lcTerrain).noquote() << "terrain DEM:" << m_demError;
+        else
+            qCInfo(lcTerrain).noquote() << "terrain DEM:" << m_tiles->name();
     }
     QStringList names = order;
     for (const QString &n : {QStringLiteral("tiles"), QStringLiteral("server")})

@@ -5,6 +5,7 @@
 
 #include <QStringList>
 
+#include <functional>
 #include <memory>
 
 namespace sortie::hci {
@@ -17,9 +18,11 @@ class HciElevationSource;
 class HgtTileSource;
 class NoElevationSource;
 
-// The client's terrain: the sources an operator has (a folder of SRTM tiles, the UgCS server the
+// The client's terrain: the sources an operator has (a DEM file or folder, the UgCS server the
 // client is logged in to), in the order the settings give, behind one ElevationService, plus the
-// validation rule that uses it. Source names in `order`: "tiles", "server".
+// validation rule that uses it. Source names in `order`: "tiles", "server". The local DEM is opened
+// by the opener the owner gives (ClientGraph gives core/raster's, which reads any GDAL raster);
+// without one, by HgtTileSource (SRTM .hgt only): core/terrain sits below core/raster.
 class ElevationSetup : public QObject
 {
     Q_OBJECT
@@ -28,16 +31,24 @@ public:
     explicit ElevationSetup(hci::HciSession *session, QObject *parent = nullptr);
     ~ElevationSetup() override;
 
-    // An empty folder means no local tiles. The default order is tiles, then server.
+    // Opens a DEM path as one source; null with the reason (naming the file) when it is unusable.
+    using DemOpener = std::function<std::unique_ptr<ElevationSource>(const QString &path, QString *error)>;
+    void setDemOpener(DemOpener opener) { m_opener = std::move(opener); }
+
+    // An empty path means no local DEM. The default order is tiles, then server.
     void configure(const QString &demFolder, const QStringList &order = {});
     ElevationService *service() { return &m_service; }
     TerrainRule *rule() { return m_rule.get(); }
-    HgtTileSource *tiles() const { return m_tiles.get(); }
+    ElevationSource *tiles() const { return m_tiles.get(); }
+    // Why the last configured DEM path is not used (empty when it is, or none was given).
+    QString demError() const { return m_demError; }
 
 private:
     ElevationService m_service;
     std::unique_ptr<HciElevationSource> m_server;
-    std::unique_ptr<HgtTileSource> m_tiles;
+    DemOpener m_opener;
+    std::unique_ptr<ElevationSource> m_tiles;
+    QString m_demError;
     std::unique_ptr<NoElevationSource> m_none;
     std::unique_ptr<TerrainRule> m_rule;
 };

@@ -5,6 +5,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 
 #include <vector>
 
@@ -36,6 +37,8 @@ public:
     // One sample per path.points[i]. The default asks sample() for each point; a remote source asks
     // for the whole path at once.
     virtual void samplePath(const SampledPath &path, std::vector<ElevationSample> &out);
+    // Files found unusable while answering (each naming its file): their places gave NoData.
+    virtual QStringList problems() const { return {}; }
 
     // The stretches of a sampled path where `samples` have no data (Pending is not "no data").
     static std::vector<NoDataStretch> noDataStretches(const SampledPath &path, const std::vector<ElevationSample> &samples);

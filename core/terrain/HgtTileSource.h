@@ -35,7 +35,7 @@ public:
     int tileCount() const { return int(m_files.size()); }
     // Opens every tile now (a single-file source does so at once); false when one is corrupt.
     bool openAll();
-    QStringList problems() const { return m_problems; }
+    QStringList problems() const override { return m_problems; }
 
 private:
     struct Loaded

@@ -52,7 +52,7 @@ HciSimOptions::HciSimOptions()
         {QStringLiteral("user"), QStringLiteral("An account, login:password (repeatable; default admin:admin)."), QStringLiteral("login:password")},
         {QStringLiteral("hci-vehicles"), QStringLiteral("Number of emulator vehicles EMU-101... (default 3)."), QStringLiteral("n")},
         {QStringLiteral("store"), QStringLiteral("Keep the objects in this JSON file (loaded at start, saved on change)."), QStringLiteral("file")},
-        {QStringLiteral("dem"), QStringLiteral("The ground from SRTM .hgt tiles (a tile or a folder); default: built-in hills near Riga."),
+        {QStringLiteral("dem"), QStringLiteral("The ground from a DEM: any raster GDAL reads (GeoTIFF, .hgt, ...) or a folder of them; default: built-in hills near Riga."),
          QStringLiteral("path")},
         {QStringLiteral("telemetry-rate"), QStringLiteral("Telemetry rate in Hz (default 10)."), QStringLiteral("hz")},
         {QStringLiteral("session-expiry"), QStringLiteral("Seconds a disconnected session can be re-attached (default 60)."), QStringLiteral("s")},

@@ -1,5 +1,6 @@
 #include "SimTerrain.h"
 
+#include "DemOpener.h"
 #include "HgtTileSource.h"
 
 #include <cmath>
@@ -53,14 +54,18 @@ SimTerrain::~SimTerrain() = default;
 
 std::unique_ptr<SimTerrain> SimTerrain::fromDem(const QString &path, QString *error)
 {
-    auto tiles = std::make_unique<terrain::HgtTileSource>(path);
-    if (!tiles->isUsable() || tiles->tileCount() == 0) {
+    QString why;
+    std::unique_ptr<terrain::ElevationSource> dem = raster::openDem(path, &why);
+    // A folder with nothing to read would be a world without ground.
+    if (auto *tiles = qobject_cast<terrain::HgtTileSource *>(dem.get()); tiles && tiles->tileCount() == 0)
+        why = QStringLiteral("%1: no DEM there (no SRTM tile NxxEyyy.hgt, no raster GDAL reads)").arg(path), dem.reset();
+    if (!dem) {
         if (error)
-            *error = tiles->isUsable() ? QStringLiteral("%1: no SRTM tile (NxxEyyy.hgt) there").arg(path) : tiles->error();
+            *error = why;
         return nullptr;
     }
     std::unique_ptr<SimTerrain> t(new SimTerrain);
-    t->m_source = std::move(tiles);
+    t->m_source = std::move(dem);
     return t;
 }
 

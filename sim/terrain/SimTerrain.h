@@ -36,13 +36,14 @@ private:
     std::vector<Hill> m_hills;
 };
 
-// The simulated world's ground, one for the whole server: from SRTM tiles (--dem) or built in.
+// The simulated world's ground, one for the whole server: from a DEM (--dem: any raster GDAL reads,
+// .hgt tiles, a folder) or built in.
 class SimTerrain
 {
 public:
     // Built in, flat at `base` away from the hills.
     explicit SimTerrain(double base);
-    // From a .hgt tile or a folder of them; nullptr with `error` when the path is not usable.
+    // From a DEM file or folder (raster::openDem); nullptr with `error` when the path is not usable.
     static std::unique_ptr<SimTerrain> fromDem(const QString &path, QString *error);
     ~SimTerrain();
 

@@ -156,6 +156,8 @@ ApplicationWindow {
             mapSource: window.appSettings.mapSource
             tileUrlTemplate: window.appSettings.tileUrlTemplate
             mbtilesFile: window.appSettings.mbtilesFile
+            orthophotoFile: window.appSettings.orthophotoFile
+            orthophotoOpacity: window.appSettings.orthophotoOpacity
             tilePackFile: window.offlineMaps.packFile
             tilesCacheOnly: window.offlineMaps.cacheOnly
         }
@@ -177,6 +179,8 @@ ApplicationWindow {
             mapSource: window.appSettings.mapSource
             tileUrlTemplate: window.appSettings.tileUrlTemplate
             mbtilesFile: window.appSettings.mbtilesFile
+            orthophotoFile: window.appSettings.orthophotoFile
+            orthophotoOpacity: window.appSettings.orthophotoOpacity
             tilePackFile: window.offlineMaps.packFile
             tilesCacheOnly: window.offlineMaps.cacheOnly
         }

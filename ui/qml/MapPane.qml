@@ -16,6 +16,8 @@ Item {
     property string mbtilesFile: ""
     property string tilePackFile: ""    // tiles taken offline for the web source (OfflineMaps)
     property bool tilesCacheOnly: false // the web source never uses the network
+    property string orthophotoFile: ""  // the operator's orthophoto over the base map (empty: none)
+    property real orthophotoOpacity: 0.8
     property bool dark: false
     default property alias layers: overlay.data
     readonly property real controlsTop: mapView.labelBandTop + 6
@@ -38,6 +40,17 @@ Item {
         anchors.fill: parent
         dark: pane.dark
         tileSource: pane.mapSource === "xyz" ? webTiles : pane.mapSource === "mbtiles" ? fileTiles : null
+    }
+
+    OrthophotoLayer {
+        // Above the base map, below every layer the page declares (zones, routes, vehicles).
+        id: orthophoto
+        objectName: "orthophotoLayer"
+        anchors.fill: parent
+        map: mapView
+        file: pane.orthophotoFile
+        opacity: pane.orthophotoOpacity
+        visible: valid
     }
 
     Item {

@@ -4,7 +4,9 @@ import QtQuick.Layouts
 import Sortie.Ui
 
 // Chooses where map tiles come from: the built-in offline base map, a web tile server (XYZ
-// URL template, cached on disk) or an MBTiles file.
+// URL template, cached on disk) or an MBTiles file; and the operator's own rasters: an orthophoto
+// drawn over the base map (with its opacity) and a DEM file or folder for the terrain. A raster
+// GDAL cannot use shows GDAL's reason (RasterFileCheck) and OK waits until it is fixed or cleared.
 Dialog {
     id: dialog
     required property AppSettings appSettings
@@ -14,17 +16,31 @@ Dialog {
     anchors.centerIn: Overlay.overlay
     width: Math.min(parent ? parent.width - 80 : 560, 560)
 
+    readonly property string orthophotoProblem: rasterCheck.orthophotoProblem(orthophotoField.text)
+    readonly property string demProblem: rasterCheck.demProblem(demField.text)
+    readonly property bool rastersUsable: orthophotoProblem === "" && demProblem === ""
+
+    RasterFileCheck { id: rasterCheck }
+
+    Component.onCompleted: standardButton(Dialog.Ok).enabled = Qt.binding(() => rastersUsable)
+
     onAboutToShow: {
         offline.checked = appSettings.mapSource === "offline"
         web.checked = appSettings.mapSource === "xyz"
         file.checked = appSettings.mapSource === "mbtiles"
         urlField.text = appSettings.tileUrlTemplate
         fileField.text = appSettings.mbtilesFile
+        orthophotoField.text = appSettings.orthophotoFile
+        opacitySlider.value = appSettings.orthophotoOpacity
+        demField.text = appSettings.demPath
     }
     onAccepted: {
         appSettings.tileUrlTemplate = urlField.text
         appSettings.mbtilesFile = fileField.text
         appSettings.mapSource = web.checked ? "xyz" : file.checked ? "mbtiles" : "offline"
+        appSettings.orthophotoFile = rasterCheck.localPath(orthophotoField.text.trim())
+        appSettings.orthophotoOpacity = opacitySlider.value
+        appSettings.demPath = rasterCheck.localPath(demField.text.trim())
     }
 
     ColumnLayout {
@@ -64,6 +80,59 @@ Dialog {
             enabled: file.checked
             placeholderText: qsTr("/path/to/area.mbtiles")
             selectByMouse: true
+        }
+        MenuSeparator { Layout.fillWidth: true }
+        Label {
+            Layout.fillWidth: true
+            wrapMode: Text.Wrap
+            text: qsTr("Orthophoto over the base map (GeoTIFF or any raster GDAL reads, any CRS)")
+        }
+        TextField {
+            id: orthophotoField
+            objectName: "orthophotoField"
+            Layout.fillWidth: true
+            placeholderText: qsTr("/path/to/orthophoto.tif (empty: none)")
+            selectByMouse: true
+        }
+        Label {
+            objectName: "orthophotoProblem"
+            Layout.fillWidth: true
+            visible: text.length > 0
+            text: dialog.orthophotoProblem
+            color: "#c62828"
+            wrapMode: Text.Wrap
+        }
+        RowLayout {
+            Label { text: qsTr("Opacity") }
+            Slider {
+                id: opacitySlider
+                objectName: "orthophotoOpacity"
+                Layout.fillWidth: true
+                from: 0.1
+                to: 1.0
+                stepSize: 0.05
+            }
+            Label { text: qsTr("%1 %").arg(Math.round(opacitySlider.value * 100)) }
+        }
+        Label {
+            Layout.fillWidth: true
+            wrapMode: Text.Wrap
+            text: qsTr("Terrain: a DEM file (GeoTIFF, .hgt, ...) or a folder of them")
+        }
+        TextField {
+            id: demField
+            objectName: "demField"
+            Layout.fillWidth: true
+            placeholderText: qsTr("/path/to/dem.tif or /path/to/dem-folder (empty: none)")
+            selectByMouse: true
+        }
+        Label {
+            objectName: "demProblem"
+            Layout.fillWidth: true
+            visible: text.length > 0
+            text: dialog.demProblem
+            color: "#c62828"
+            wrapMode: Text.Wrap
         }
     }
 }

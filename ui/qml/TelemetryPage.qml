@@ -35,6 +35,8 @@ Page {
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
+    property string orthophotoFile: ""
+    property real orthophotoOpacity: 0.8
     property string tilePackFile: ""    // the web source's offline pack (OfflineMaps.packFile)
     property bool tilesCacheOnly: false // the web source never uses the network
     property bool dark: false
@@ -147,6 +149,8 @@ Page {
                 mapSource: page.mapSource
                 tileUrlTemplate: page.tileUrlTemplate
                 mbtilesFile: page.mbtilesFile
+                orthophotoFile: page.orthophotoFile
+                orthophotoOpacity: page.orthophotoOpacity
                 tilePackFile: page.tilePackFile
                 tilesCacheOnly: page.tilesCacheOnly
                 dark: page.dark

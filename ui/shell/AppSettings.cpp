@@ -3,6 +3,8 @@
 #include "PasswordVault.h"
 
 #include <QSettings>
+
+#include <algorithm>
 #include <utility>
 
 namespace sortie::ui {
@@ -17,6 +19,9 @@ const QString kPassword = QStringLiteral("connection/password");
 const QString kMapSource = QStringLiteral("map/source");
 const QString kTemplate = QStringLiteral("map/urlTemplate");
 const QString kMbtiles = QStringLiteral("map/mbtiles");
+const QString kOrthophoto = QStringLiteral("map/orthophoto");
+const QString kOrthophotoOpacity = QStringLiteral("map/orthophotoOpacity");
+const QString kDem = QStringLiteral("terrain/demFolder");  // the key ClientGraph reads at start
 const QString kUnits = QStringLiteral("display/units");
 const QString kGeometry = QStringLiteral("window/geometry");
 const QString kMaximized = QStringLiteral("window/maximized");
@@ -222,6 +227,36 @@ QString AppSettings::mbtilesFile() const
 void AppSettings::setMbtilesFile(const QString &file)
 {
     write(kMbtiles, file);
+}
+
+QString AppSettings::orthophotoFile() const
+{
+    return m_storage->value(kOrthophoto).toString();
+}
+
+void AppSettings::setOrthophotoFile(const QString &file)
+{
+    write(kOrthophoto, file);
+}
+
+double AppSettings::orthophotoOpacity() const
+{
+    return std::clamp(m_storage->value(kOrthophotoOpacity, 0.8).toDouble(), 0.0, 1.0);
+}
+
+void AppSettings::setOrthophotoOpacity(double opacity)
+{
+    write(kOrthophotoOpacity, std::clamp(opacity, 0.0, 1.0));
+}
+
+QString AppSettings::demPath() const
+{
+    return m_storage->value(kDem).toString();
+}
+
+void AppSettings::setDemPath(const QString &path)
+{
+    write(kDem, path);
 }
 
 QString AppSettings::units() const

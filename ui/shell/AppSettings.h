@@ -35,6 +35,11 @@ class AppSettings : public QObject
     Q_PROPERTY(QString mapSource READ mapSource WRITE setMapSource NOTIFY changed)
     Q_PROPERTY(QString tileUrlTemplate READ tileUrlTemplate WRITE setTileUrlTemplate NOTIFY changed)
     Q_PROPERTY(QString mbtilesFile READ mbtilesFile WRITE setMbtilesFile NOTIFY changed)
+    // The operator's own rasters (docs/rasters.md): an orthophoto over the base map, and a DEM file or
+    // folder (the setting terrain/demFolder the terrain reads; empty: none).
+    Q_PROPERTY(QString orthophotoFile READ orthophotoFile WRITE setOrthophotoFile NOTIFY changed)
+    Q_PROPERTY(double orthophotoOpacity READ orthophotoOpacity WRITE setOrthophotoOpacity NOTIFY changed)
+    Q_PROPERTY(QString demPath READ demPath WRITE setDemPath NOTIFY changed)
     Q_PROPERTY(QString units READ units WRITE setUnits NOTIFY changed)
     Q_PROPERTY(QRect windowGeometry READ windowGeometry WRITE setWindowGeometry NOTIFY changed)
     Q_PROPERTY(bool windowMaximized READ windowMaximized WRITE setWindowMaximized NOTIFY changed)
@@ -64,6 +69,13 @@ public:
     void setTileUrlTemplate(const QString &urlTemplate);
     QString mbtilesFile() const;
     void setMbtilesFile(const QString &file);
+    QString orthophotoFile() const;
+    void setOrthophotoFile(const QString &file);
+    // 0..1, 0.8 when never chosen.
+    double orthophotoOpacity() const;
+    void setOrthophotoOpacity(double opacity);
+    QString demPath() const;
+    void setDemPath(const QString &path);
     QString units() const;
     void setUnits(const QString &units);
     QRect windowGeometry() const;

@@ -5,6 +5,7 @@
 #include "AutosaveRecovery.h"
 #include "ComparisonController.h"
 #include "ConnectionController.h"
+#include "DemOpener.h"
 #include "ElevationSetup.h"
 #include "FleetRoutes.h"
 #include "EnduranceRule.h"
@@ -62,7 +63,9 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
     , m_elevation(std::make_unique<terrain::ElevationSetup>(m_session.get()))
 {
     Q_ASSERT(storage);
-    // Terrain: local tiles (the option, else the setting) and the server, in the order the settings give.
+    // Terrain: a local DEM (the option, else the setting; any raster GDAL reads) and the server, in
+    // the order the settings give.
+    m_elevation->setDemOpener(raster::openDem);
     m_elevation->configure(options.demFolder.isEmpty() ? storage->value(QStringLiteral("terrain/demFolder")).toString()
                                                        : options.demFolder,
                            storage->value(QStringLiteral("terrain/sourceOrder")).toStringList());

@@ -72,7 +72,7 @@ class ClientGraph
 public:
     struct Options
     {
-        QString demFolder;          // SRTM tiles; empty: the setting terrain/demFolder (none when unset)
+        QString demFolder;          // a DEM file or folder (core/raster); empty: the setting terrain/demFolder (none when unset)
         QString autosaveDirectory;  // empty: no autosave and no recovery
         QString flightLogDirectory; // empty: the recorder exists (for its settings) but records nothing
         bool vehicles = true;       // false: no fleet (a fault test of the connection alone)

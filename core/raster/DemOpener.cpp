@@ -1,0 +1,80 @@
+#include "DemOpener.h"
+
+#include "DemFolderSource.h"
+#include "GdalDemSource.h"
+#include "HgtTile.h"
+#include "HgtTileSource.h"
+#include "RasterLog.h"
+
+#include <QDir>
+#include <QFileInfo>
+
+namespace sortie::raster {
+
+namespace {
+
+std::unique_ptr<terrain::ElevationSource> hgtSource(const QString &path, QString *error)
+{
+    auto tiles = std::make_unique<terrain::HgtTileSource>(path);
+    if (!tiles->isUsable()) {
+        if (error)
+            *error = tiles->error();
+        return nullptr;
+    }
+    return tiles;
+}
+
+std::unique_ptr<terrain::ElevationSource> openFolder(const QString &path, QString *error)
+{
+    const QDir dir(path);
+    QStringList rasters;
+    bool hasHgt = false;
+    for (const QFileInfo &f : dir.entryInfoList(QDir::Files | QDir::Readable, QDir::Name)) {
+        const QString suffix = f.suffix().toLower();
+        if (suffix == QLatin1String("hgt"))
+            hasHgt = true;
+        else if (demFileSuffixes().contains(suffix))
+            rasters << f.filePath();
+    }
+    if (rasters.isEmpty())
+        return hgtSource(path, error);  // an SRTM folder, as before (an empty one has no tiles)
+    auto gdal = GdalDemSource::open(path, rasters, error);
+    if (!gdal)
+        return nullptr;
+    qCInfo(lcRaster).noquote() << rasters.size() << "raster(s) through GDAL in" << path;
+    if (!hasHgt)
+        return gdal;
+    std::vector<std::unique_ptr<terrain::ElevationSource>> parts;
+    auto tiles = hgtSource(path, error);
+    if (!tiles)
+        return nullptr;
+    parts.push_back(std::move(tiles));
+    parts.push_back(std::move(gdal));
+    return std::make_unique<DemFolderSource>(path, std::move(parts));
+}
+
+} // namespace
+
+QStringList demFileSuffixes()
+{
+    return {QStringLiteral("tif"), QStringLiteral("tiff"), QStringLiteral("vrt"), QStringLiteral("dt0"), QStringLiteral("dt1"),
+            QStringLiteral("dt2"), QStringLiteral("asc"), QStringLiteral("img"), QStringLiteral("bil"), QStringLiteral("flt"),
+            QStringLiteral("dem")};
+}
+
+std::unique_ptr<terrain::ElevationSource> openDem(const QString &path, QString *error)
+{
+    const QFileInfo info(path);
+    if (info.isDir())
+        return openFolder(path, error);
+    if (!info.exists()) {
+        if (error)
+            *error = QStringLiteral("%1: no such file or folder").arg(path);
+        return nullptr;
+    }
+    if (info.suffix().compare(QLatin1String("hgt"), Qt::CaseInsensitive) == 0 && terrain::parseHgtName(info.fileName()))
+        return hgtSource(path, error);
+    return GdalDemSource::open(path, {path}, error);
+}
+
+} // namespace sortie::raster

@@ -1,0 +1,46 @@
+#include "GdalDataset.h"
+
+#include <cpl_error.h>
+#include <gdal_priv.h>
+
+#include <QFileInfo>
+
+#include <mutex>
+
+namespace sortie::raster {
+
+void GdalDatasetCloser::operator()(GDALDataset *dataset) const
+{
+    GDALClose(GDALDataset::ToHandle(dataset));
+}
+
+QString lastGdalError(const QString &fallback)
+{
+    const char *message = CPLGetLastErrorMsg();
+    return message && *message ? QString::fromUtf8(message) : fallback;
+}
+
+GdalDatasetPtr openRaster(const QString &path, QString *error)
+{
+    static std::once_flag registered;
+    std::call_once(registered, [] { GDALAllRegister(); });
+    auto fail = [&](const QString &why) {
+        if (error)
+            *error = QStringLiteral("%1: %2").arg(path, why);
+        return GdalDatasetPtr();
+    };
+    if (!QFileInfo::exists(path))
+        return fail(QStringLiteral("no such file"));
+    // GDAL reports its reasons through the error handler; keep them for the message instead of stderr.
+    CPLErrorReset();
+    CPLPushErrorHandler(CPLQuietErrorHandler);
+    GdalDatasetPtr dataset(GDALDataset::Open(path.toUtf8().constData(), GDAL_OF_RASTER | GDAL_OF_READONLY));
+    CPLPopErrorHandler();
+    if (!dataset)
+        return fail(lastGdalError(QStringLiteral("GDAL knows no raster format for this file")));
+    if (dataset->GetRasterCount() < 1)
+        return fail(QStringLiteral("the file has no raster band"));
+    return dataset;
+}
+
+} // namespace sortie::raster

@@ -1,0 +1,3 @@
+#include "RasterLog.h"
+
+Q_LOGGING_CATEGORY(lcRaster, "sortie.raster")
