@@ -273,6 +273,10 @@ private slots:
         QVERIFY2(go.result.ok, qPrintable(go.result.message));
         QTRY_VERIFY_WITH_TIMEOUT(vehicle.missionState() == QLatin1String("complete"), 60000);
         QTRY_VERIFY_WITH_TIMEOUT(!vehicle.armed(), 30000);  // landed and disarmed
+        // The disarm is read at once, the samples are notified at most every 20 ms: the last ones
+        // (on the ground) may come just after it.
+        QTRY_VERIFY2_WITH_TIMEOUT(!flight.empty() && std::abs(flight.back().amsl - landGround) < 1.0,
+                                  qPrintable(QString::number(flight.empty() ? qQNaN() : flight.back().amsl)), 5000);
 
         // Until it is 40 m up (less 1 m), within 3 m of the take-off point; then it moves away.
         size_t i = 0;
