@@ -3,7 +3,9 @@
 #include "AppSettings.h"
 #include "ClientGraph.h"
 #include "ConnectionController.h"
+#include "DemoScene.h"
 #include "DemoServer.h"
+#include "FrameLog.h"
 #include "HciSession.h"
 #include "LaunchOptions.h"
 #include "PasswordVault.h"
@@ -88,7 +90,10 @@ int main(int argc, char *argv[])
     sortie::app::DemoServer demo;
     if (options.demo) {
         QString error;
-        if (!demo.start(&error)) {
+        const auto scene = options.demoScene == QLatin1String("parked")   ? sortie::app::DemoServer::Scene::Parked
+                           : options.demoScene == QLatin1String("flying") ? sortie::app::DemoServer::Scene::Flying
+                                                                          : sortie::app::DemoServer::Scene::Full;
+        if (!demo.start(&error, scene)) {
             std::fprintf(stderr, "sortie: the demo simulator could not start: %s\n", qPrintable(error));
             return 1;
         }
@@ -110,6 +115,9 @@ int main(int argc, char *argv[])
     });
     if (options.reportStartup)
         new sortie::app::StartupProbe(window, sinceMain);
+    new sortie::app::FrameLog(window);
+    if (!demo.flyingVehicleName().isEmpty())
+        new sortie::app::DemoScene(window, graph.fleet(), demo.flyingVehicleName());
     window->show();
     if (options.demo) {
         graph.connection().connectToServer(demo.address(), sortie::app::DemoServer::user(), sortie::app::DemoServer::password());
