@@ -10,6 +10,7 @@
 #include "LaunchOptions.h"
 #include "PasswordVault.h"
 #include "SbsFeed.h"
+#include "SceneGraphChoice.h"
 #include "SortieUi.h"
 #include "StartupProbe.h"
 #include "Traffic.h"
@@ -71,6 +72,7 @@ int main(int argc, char *argv[])
     // A fixed style makes every machine (and the offscreen tests) draw the same controls;
     // Fusion takes its colours from the system palette, light or dark.
     QQuickStyle::setStyle(QStringLiteral("Fusion"));
+    sortie::app::chooseSceneGraph();
 
     QSettings storage;
     sortie::secrets::PasswordVault vault(QStringLiteral("sortie"));
