@@ -1,5 +1,7 @@
 #include "SceneGraphChoice.h"
 
+#include <QDir>
+#include <QElapsedTimer>
 #include <QLoggingCategory>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
@@ -30,6 +32,16 @@ QString openGlRenderer()
     return renderer;
 }
 
+// A GPU an OpenGL driver could use: a DRM device (Mesa's drivers, nvidia-drm), NVIDIA's own, or
+// WSL's. Without one, Mesa can only draw on the CPU, and asking OpenGL (which loads Mesa, 50 MB,
+// and took 100-200 ms under Xvfb) would only say so. A GPU behind another device: QSG_RHI_BACKEND=opengl.
+bool hasGpuDevice()
+{
+    const auto filters = QDir::System | QDir::NoDotAndDotDot;
+    return !QDir(QStringLiteral("/dev/dri")).entryList(filters).isEmpty()
+        || !QDir(QStringLiteral("/dev")).entryList({QStringLiteral("nvidia[0-9]*"), QStringLiteral("dxg")}, filters).isEmpty();
+}
+
 bool drawnByTheCpu(const QString &renderer)
 {
     for (const char *software : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer"})
@@ -44,13 +56,23 @@ void chooseSceneGraph()
 {
     if (qEnvironmentVariableIsSet("QT_QUICK_BACKEND") || qEnvironmentVariableIsSet("QSG_RHI_BACKEND"))
         return;
+    if (!hasGpuDevice()) {
+        QQuickWindow::setGraphicsApi(QSGRendererInterface::Software);
+        qCInfo(lcSceneGraph).noquote() << "drawing with the software scene graph: no GPU device (/dev/dri, /dev/nvidia*)";
+        return;
+    }
+    QElapsedTimer asking;
+    asking.start();
     const QString renderer = openGlRenderer();
+    const qint64 ms = asking.elapsed();
     if (!drawnByTheCpu(renderer)) {
-        qCDebug(lcSceneGraph).noquote() << "OpenGL renderer" << (renderer.isEmpty() ? QStringLiteral("none") : renderer);
+        qCDebug(lcSceneGraph).noquote() << "OpenGL renderer" << (renderer.isEmpty() ? QStringLiteral("none") : renderer)
+                                        << "(asked in" << ms << "ms)";
         return;
     }
     QQuickWindow::setGraphicsApi(QSGRendererInterface::Software);
-    qCInfo(lcSceneGraph).noquote() << "drawing with the software scene graph: OpenGL would be" << renderer;
+    qCInfo(lcSceneGraph).noquote() << "drawing with the software scene graph: OpenGL would be" << renderer
+                                   << "(asked in" << ms << "ms)";
 }
 
 } // namespace sortie::app
