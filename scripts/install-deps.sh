@@ -21,6 +21,7 @@ packages=(
   dbus-daemon gnome-keyring libglib2.0-bin libsecret-tools  # tst_keyring: a session bus, a keyring, gdbus, secret-tool
   clang libclang-rt-14-dev
   llvm-14  # llvm-symbolizer: the sanitizer scripts need it to match the leak suppressions
+  xvfb xauth  # scripts/bench-idle.sh: the client on a virtual X display (a benchmark, not a test)
 )
 
 missing=()

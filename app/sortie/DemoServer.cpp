@@ -4,17 +4,60 @@
 #include "SimSbsServer.h"
 #include "SimVciFleet.h"
 #include "SimVciListener.h"
+#include "SimVehicle.h"
 #include "SimWorld.h"
+
+#include "Messages.pb.h"
 
 namespace sortie::app {
 
 DemoServer::DemoServer() = default;
 DemoServer::~DemoServer() = default;
 
-bool DemoServer::start(QString *error)
+namespace {
+
+namespace pb = com::ugcs::ucs::proto;
+
+void addArgument(pb::Command &command, const char *code, double value)
+{
+    auto *argument = command.add_arguments();
+    argument->set_code(code);
+    argument->mutable_value()->set_doublevalue(value);
+}
+
+// Arms the vehicle and sends it 5 km north at 60 m and 10 m/s: several minutes of flight over the
+// demo area (away from the airport's zone), through the simulator's own commands.
+bool flyNorth(sim::SimVehicle &vehicle, QString *error)
+{
+    constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
+    constexpr double kNorthDeg = 5000.0 / 111320.0; // 5 km of latitude
+    pb::Command arm;
+    arm.set_code("arm");
+    pb::Command go;
+    go.set_code("waypoint");
+    const auto &state = vehicle.model().state();
+    addArgument(go, "latitude", (state.latitude + kNorthDeg) * kRadPerDeg);
+    addArgument(go, "longitude", state.longitude * kRadPerDeg);
+    addArgument(go, "altitude_agl", 60);
+    addArgument(go, "ground_speed", 10);
+    for (const pb::Command &command : {arm, go}) {
+        const auto result = vehicle.execute(command);
+        if (result.commandstatus() != pb::CS_SUCCEEDED) {
+            *error = QStringLiteral("the demo vehicle refused %1: %2")
+                         .arg(QString::fromStdString(command.code()), QString::fromStdString(result.errormessage()));
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+bool DemoServer::start(QString *error, Scene scene)
 {
     sim::SimWorld::Config config;
     config.users = {{0, user(), password(), true}};
+    config.mannedTraffic = scene == Scene::Full;
     m_world = std::make_unique<sim::SimWorld>(config);
     m_server = std::make_unique<sim::HciServer>(*m_world);
     if (!m_server->listen(QHostAddress::LocalHost, 0)) {
@@ -26,6 +69,16 @@ bool DemoServer::start(QString *error)
         *error = m_sbs->errorString();
         return false;
     }
+    if (scene == Scene::Flying) {
+        if (!m_world->start(error) || m_world->vehicles().empty())
+            return false;
+        sim::SimVehicle &first = *m_world->vehicles().front();
+        if (!flyNorth(first, error))
+            return false;
+        m_flyingVehicle = QString::fromStdString(first.vehicle().name());
+    }
+    if (scene != Scene::Full)
+        return true; // no VCI vehicle: it would be a fourth one on the map
     sim::SimVciFleetOptions vci;
     vci.count = 1;
     vci.firstPort = 0; // any free port

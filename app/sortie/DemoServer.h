@@ -19,10 +19,17 @@ namespace sortie::app {
 class DemoServer
 {
 public:
+    // What moves in the demo. Full: everything above. Parked: the server's three vehicles on the
+    // ground, an empty sky and no VCI vehicle (nothing on screen moves). Flying: Parked, but the
+    // server's first vehicle flies 5 km north as soon as the simulator starts (benchmarks).
+    enum class Scene { Full, Parked, Flying };
+
     DemoServer();
     ~DemoServer();
 
-    bool start(QString *error);
+    bool start(QString *error, Scene scene = Scene::Full);
+    // The vehicle Scene::Flying sends off ("EMU-101"); empty in the other scenes.
+    QString flyingVehicleName() const { return m_flyingVehicle; }
     QString address() const;       // "127.0.0.1:<port>"
     QStringList vciAddresses() const; // "tcp://127.0.0.1:<port>", one per VCI vehicle
     QString sbsAddress() const;       // "127.0.0.1:<port>": the simulated traffic as an SBS-1 feed
@@ -34,6 +41,7 @@ private:
     std::unique_ptr<sim::HciServer> m_server;
     std::unique_ptr<sim::SimVciFleet> m_vci;
     std::unique_ptr<sim::SimSbsServer> m_sbs;
+    QString m_flyingVehicle;
 };
 
 } // namespace sortie::app

@@ -69,6 +69,9 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     const QCommandLineOption version = parser.addVersionOption();
     const QCommandLineOption demo(QStringLiteral("demo"),
                                   QCoreApplication::translate("sortie", "Start the built-in simulator on this computer and connect to it."));
+    const QCommandLineOption demoScene(QStringLiteral("demo-scene"),
+                                       QCoreApplication::translate("sortie", "--demo with only the server's three vehicles: \"parked\" (nothing moves) or \"flying\" (one flies, followed in the fly view); for benchmarks."),
+                                       QStringLiteral("scene"));
     const QCommandLineOption server(QStringLiteral("server"),
                                     QCoreApplication::translate("sortie", "UgCS server to connect to."), QStringLiteral("host:port"));
     const QCommandLineOption user(QStringLiteral("user"), QCoreApplication::translate("sortie", "User name to log in with."),
@@ -87,7 +90,7 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     const QCommandLineOption sbs(QStringLiteral("sbs"),
                                  QCoreApplication::translate("sortie", "An ADS-B receiver's SBS-1 feed for manned traffic, as dump1090 serves it (port 30003); also the setting traffic/sbsAddress."),
                                  QStringLiteral("host:port"));
-    parser.addOptions({demo, server, user, vci, autosave, reportStartup, dem, sbs});
+    parser.addOptions({demo, demoScene, server, user, vci, autosave, reportStartup, dem, sbs});
 
     if (!parser.parse(arguments))
         return parser.errorText();
@@ -105,7 +108,12 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
         options.output = QStringLiteral("%1 %2\n").arg(QCoreApplication::applicationName(), QCoreApplication::applicationVersion());
         return options;
     }
-    options.demo = parser.isSet(demo);
+    options.demo = parser.isSet(demo) || parser.isSet(demoScene);
+    if (parser.isSet(demoScene)) {
+        options.demoScene = parser.value(demoScene);
+        if (options.demoScene != QLatin1String("parked") && options.demoScene != QLatin1String("flying"))
+            return QStringLiteral("--demo-scene: '%1' is neither parked nor flying").arg(options.demoScene);
+    }
     options.reportStartup = parser.isSet(reportStartup);
     if (parser.isSet(server)) {
         auto parsed = ServerAddress::parse(parser.value(server));

@@ -32,6 +32,9 @@ struct VciEndpoint
 struct LaunchOptions
 {
     bool demo = false;
+    // --demo-scene: what moves in the demo (implies --demo): "parked" (the server's three vehicles
+    // on the ground, nothing else) or "flying" (one of them flying, followed in the fly view); empty: everything.
+    QString demoScene;
     std::optional<ServerAddress> server;
     QString user;
     std::optional<VciEndpoint> vci;

@@ -4,11 +4,14 @@
 #include "ClientGraph.h"
 #include "ElevationSetup.h"
 #include "ConnectionController.h"
+#include "DemoScene.h"
 #include "DemoServer.h"
+#include "FrameLog.h"
 #include "HciSession.h"
 #include "LaunchOptions.h"
 #include "PasswordVault.h"
 #include "SbsFeed.h"
+#include "SceneGraphChoice.h"
 #include "SortieUi.h"
 #include "StartupProbe.h"
 #include "Traffic.h"
@@ -70,6 +73,7 @@ int main(int argc, char *argv[])
     // A fixed style makes every machine (and the offscreen tests) draw the same controls;
     // Fusion takes its colours from the system palette, light or dark.
     QQuickStyle::setStyle(QStringLiteral("Fusion"));
+    sortie::app::chooseSceneGraph();
 
     QSettings storage;
     sortie::secrets::PasswordVault vault(QStringLiteral("sortie"));
@@ -98,7 +102,10 @@ int main(int argc, char *argv[])
     sortie::app::DemoServer demo;
     if (options.demo) {
         QString error;
-        if (!demo.start(&error)) {
+        const auto scene = options.demoScene == QLatin1String("parked")   ? sortie::app::DemoServer::Scene::Parked
+                           : options.demoScene == QLatin1String("flying") ? sortie::app::DemoServer::Scene::Flying
+                                                                          : sortie::app::DemoServer::Scene::Full;
+        if (!demo.start(&error, scene)) {
             std::fprintf(stderr, "sortie: the demo simulator could not start: %s\n", qPrintable(error));
             return 1;
         }
@@ -120,6 +127,9 @@ int main(int argc, char *argv[])
     });
     if (options.reportStartup)
         new sortie::app::StartupProbe(window, sinceMain);
+    new sortie::app::FrameLog(window);
+    if (!demo.flyingVehicleName().isEmpty())
+        new sortie::app::DemoScene(window, graph.fleet(), demo.flyingVehicleName());
     window->show();
     if (options.demo) {
         graph.connection().connectToServer(demo.address(), sortie::app::DemoServer::user(), sortie::app::DemoServer::password());

@@ -199,7 +199,9 @@ void FleetRoutes::watch(Vehicle *v)
     if (std::find(m_watched.begin(), m_watched.end(), v) != m_watched.end())
         return;
     m_watched.emplace_back(v);
-    connect(v, &Vehicle::telemetryChanged, this, [this, v] { refreshVehicle(v); });
+    // Every sample, not only new values: the elapsed time is the clock's, and runs on while a vehicle
+    // hovers with the same values (track() tells whether the row changed).
+    connect(v, &Vehicle::historyChanged, this, [this, v] { refreshVehicle(v); });
     connect(v, &Vehicle::identityChanged, this, [this, v] {
         for (size_t row = 0; row < m_rows.size(); ++row) {
             if (m_rows[row].vehicle == v)

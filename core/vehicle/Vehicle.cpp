@@ -6,6 +6,14 @@
 
 namespace sortie::vehicle {
 
+namespace {
+// Equal values, NaN (a value the vehicle does not have) equal to NaN.
+bool sameValue(double a, double b)
+{
+    return a == b || (std::isnan(a) && std::isnan(b));
+}
+} // namespace
+
 Vehicle::Vehicle(VehicleLink *link, QObject *parent, size_t historyCapacity)
     : QObject(parent)
     , m_link(link)
@@ -57,6 +65,8 @@ void Vehicle::ingest(const TelemetryBatch &batch)
     const qint64 now = m_clock.elapsed();
     for (const TelemetryUpdate &u : batch) {
         Last &last = m_last[size_t(u.field)];
+        if (last.receivedAt < 0 || !sameValue(last.sample.value, u.value))
+            m_dirty = true; // a new value, not the same one again with a later time
         last.sample = {u.time, u.value};
         last.receivedAt = now;
         if (m_staleFields.test(size_t(u.field))) {
@@ -65,6 +75,7 @@ void Vehicle::ingest(const TelemetryBatch &batch)
         }
     }
     m_history.ingest(batch);
+    m_historyDirty = true;
     m_lastReceivedAt = now;
     if (m_stale) {
         m_stale = false;
@@ -76,12 +87,14 @@ void Vehicle::ingest(const TelemetryBatch &batch)
 void Vehicle::replaceHistory(TelemetryStore history)
 {
     m_history = std::move(history);
-    scheduleNotify(); // the plots redraw on telemetryChanged
+    m_historyDirty = true; // the plots redraw on historyChanged
+    scheduleNotify();
 }
 
 void Vehicle::scheduleNotify()
 {
-    m_dirty = true;
+    if (!m_dirty && !m_historyDirty && !m_staleDirty)
+        return;
     if (m_notifyTimer.isActive())
         return; // already gathering
     const qint64 since = m_clock.elapsed() - m_lastNotifyAt;
@@ -102,6 +115,10 @@ void Vehicle::emitNotify()
         m_dirty = false;
         ++m_notifications;
         emit telemetryChanged();
+    }
+    if (m_historyDirty) {
+        m_historyDirty = false;
+        emit historyChanged();
     }
 }
 

@@ -21,7 +21,9 @@ namespace sortie::vehicle {
 //
 // For QML the telemetry properties share one notification, telemetryChanged(), emitted at most once
 // per notifyInterval (100 ms by default) however fast telemetry arrives: the first change goes out at
-// once, later ones are gathered until the interval has passed. Values are SI, angles in degrees
+// once, later ones are gathered until the interval has passed. It means a value changed: a parked
+// vehicle repeating the same values raises none (so nothing redraws for it); historyChanged, gathered
+// the same way, says the history grew (the plots, whose time axis moves with every sample). Values are SI, angles in degrees
 // (TelemetryField.h); `position` and `home` are QGeoCoordinates.
 class Vehicle : public QObject
 {
@@ -132,6 +134,7 @@ public:
 
 signals:
     void telemetryChanged();
+    void historyChanged();
     void staleChanged();
     void linkStateChanged();
     void lastErrorChanged();
@@ -171,7 +174,7 @@ private:
     int m_notifyInterval = 100;
     int m_staleAfter = 3000;
     qint64 m_lastNotifyAt = -1000000;
-    bool m_dirty = false, m_staleDirty = false;
+    bool m_dirty = false, m_historyDirty = false, m_staleDirty = false;
     quint64 m_notifications = 0;
 };
 

@@ -24,6 +24,7 @@ SimWorld::SimWorld(Config config, QObject *parent)
     , m_config(std::move(config))
     , m_users(m_config.users.isEmpty() ? SimUsers() : SimUsers(m_config.users))
     , m_terrain(std::make_unique<SimTerrain>(m_config.groundElevation))
+    , m_traffic(m_config.mannedTraffic)
 {
     m_ticker.setTimerType(Qt::PreciseTimer);
     connect(&m_ticker, &QTimer::timeout, this, &SimWorld::tick);

@@ -42,6 +42,7 @@ public:
         QString storePath;            // empty: in memory only
         int maxSessions = 0;          // licence limit on logged-in sessions; 0: none
         bool demoMission = true;
+        bool mannedTraffic = true;    // the three aircraft through the demo area; false: an empty sky
         // What flying costs the vehicles and what their batteries hold (their speeds and rates too).
         endurance::EnergyProfile energy = simEnergyProfile();
     };

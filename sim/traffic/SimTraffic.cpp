@@ -61,7 +61,8 @@ double distanceM(double lat1, double lon1, double lat2, double lon2)
 
 } // namespace
 
-SimTraffic::SimTraffic()
+SimTraffic::SimTraffic(bool flying)
+    : m_flying(flying)
 {
     m_clock.start();
 }
@@ -69,6 +70,8 @@ SimTraffic::SimTraffic()
 std::vector<SimAircraft> SimTraffic::aircraftAt(double seconds) const
 {
     std::vector<SimAircraft> out;
+    if (!m_flying)
+        return out;
     for (const Orbit &orbit : kOrbits)
         out.push_back(orbit.at(seconds));
     return out;

@@ -30,7 +30,8 @@ public:
     static constexpr double kCentreLatitude = 56.9765;
     static constexpr double kCentreLongitude = 24.0760;
 
-    SimTraffic();
+    // An empty sky (no aircraft) for a demo where nothing may move (sortie --demo-scene).
+    explicit SimTraffic(bool flying = true);
 
     std::vector<SimAircraft> aircraftAt(double seconds) const;
     std::vector<SimAircraft> aircraftNow() const { return aircraftAt(secondsSinceStart()); }
@@ -41,6 +42,7 @@ public:
 
 private:
     QElapsedTimer m_clock;
+    bool m_flying = true;
 };
 
 } // namespace sortie::sim

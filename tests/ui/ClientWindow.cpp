@@ -15,6 +15,7 @@ ClientWindow::ClientWindow(Options options)
 {
     sim::SimWorld::Config config;
     config.users = {{0, QStringLiteral("admin"), QStringLiteral("admin"), true}};
+    config.mannedTraffic = options.mannedTraffic;
     m_world = std::make_unique<sim::SimWorld>(config);
     m_server = std::make_unique<sim::HciServer>(*m_world);
     m_server->setUploadStepMs(options.uploadStepMs);

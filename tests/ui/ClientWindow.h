@@ -32,6 +32,7 @@ public:
     struct Options
     {
         int vciVehicles = 1;
+        bool mannedTraffic = true;  // the simulator's three aircraft; false: an empty sky
         QGeoCoordinate vciHome;     // invalid: the simulator's default, south-east of the demo route
         double vciTimeScale = 1;    // simulated seconds per real second for the VCI vehicles
         // The VCI vehicles' battery and powers (a small battery drains fast); empty: the sim's default.

@@ -160,6 +160,15 @@ private slots:
         QCOMPARE(options.sbsAddress, QStringLiteral("192.168.1.20:30003"));
         QCOMPARE(options.graphOptions().sbsAddress, QStringLiteral("192.168.1.20:30003"));
         QCOMPARE(failure({QStringLiteral("--sbs"), QStringLiteral("receiver")}), QStringLiteral("--sbs: 'receiver' is not host:port"));
+        // The benchmark's demo scenes: --demo with less in it.
+        options = parsed({QStringLiteral("--demo-scene"), QStringLiteral("parked")});
+        QVERIFY(options.demo);
+        QCOMPARE(options.demoScene, QStringLiteral("parked"));
+        QCOMPARE(parsed({QStringLiteral("--demo-scene"), QStringLiteral("flying")}).demoScene, QStringLiteral("flying"));
+        QVERIFY(parsed({QStringLiteral("--demo")}).demoScene.isEmpty());
+        QCOMPARE(failure({QStringLiteral("--demo-scene"), QStringLiteral("busy")}), QStringLiteral("--demo-scene: 'busy' is neither parked nor flying"));
+        QVERIFY(failure({QStringLiteral("--demo-scene"), QStringLiteral("parked"), QStringLiteral("--server"), QStringLiteral("h:1")})
+                    .contains(QStringLiteral("leave out --server")));
     }
 
     void settingsPersist()

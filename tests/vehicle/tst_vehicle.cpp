@@ -15,6 +15,7 @@ class TstVehicle : public QObject
 private slots:
     void lastValuesAndProperties();
     void notificationsAreCoalesced();
+    void repeatedValuesNotifyOnlyTheHistory();
     void staleDetection();
     void historyIsFilled();
     void vciMapping();
@@ -60,6 +61,34 @@ void TstVehicle::notificationsAreCoalesced()
     QTest::qWait(120);
     QCOMPARE(changed.count(), 2); // nothing new, nothing sent
     QCOMPARE(v.telemetryNotifications(), quint64(2));
+}
+
+// A parked vehicle repeats its values with later times: the properties QML binds to have not
+// changed (no telemetryChanged, so nothing redraws for it), the history has (historyChanged, for the
+// plots). A changed value is a telemetryChanged again; NaN (a value the vehicle lacks) repeated is none.
+void TstVehicle::repeatedValuesNotifyOnlyTheHistory()
+{
+    Vehicle v(nullptr);
+    v.setNotifyInterval(0);
+    QSignalSpy values(&v, &Vehicle::telemetryChanged);
+    QSignalSpy history(&v, &Vehicle::historyChanged);
+    const auto parked = [](int64_t time) {
+        return TelemetryBatch{{TelemetryField::Latitude, 56.95, time}, {TelemetryField::Longitude, 24.1, time},
+                              {TelemetryField::Heading, 90, time}, {TelemetryField::AltitudeAgl, qQNaN(), time}};
+    };
+    v.ingest(parked(1000));
+    QCOMPARE(values.count(), 1); // the first values are news
+    QCOMPARE(history.count(), 1);
+    for (int i = 1; i <= 30; ++i)
+        v.ingest(parked(1000 + 100 * i));
+    QCOMPARE(values.count(), 1);
+    QCOMPARE(history.count(), 31);
+    QCOMPARE(v.history().series(TelemetryField::Latitude).size(), size_t(31));
+    QCOMPARE(v.last(TelemetryField::Latitude)->time, int64_t(4000)); // the time is always current
+    QCOMPARE(v.telemetryNotifications(), quint64(1));
+    v.ingest({{TelemetryField::Heading, 91, 4100}});
+    QCOMPARE(values.count(), 2);
+    QCOMPARE(v.heading(), 91.0);
 }
 
 void TstVehicle::staleDetection()

@@ -93,7 +93,8 @@ void FlightStatus::setVehicle(QObject *object)
         disconnect(m_vehicle, nullptr, this, nullptr);
     m_vehicle = v;
     if (m_vehicle) {
-        connect(m_vehicle, &vehicle::Vehicle::telemetryChanged, this, &FlightStatus::refresh);
+        // Its flight time and telemetry rate come from the history: they move with every sample.
+        connect(m_vehicle, &vehicle::Vehicle::historyChanged, this, &FlightStatus::refresh);
         connect(m_vehicle, &vehicle::Vehicle::missionChanged, this, &FlightStatus::refresh);
         connect(m_vehicle, &QObject::destroyed, this, &FlightStatus::refresh);
     }

@@ -69,8 +69,13 @@ void FlightPlanLayer::reload()
             emit plansChanged();
             repaint();
         });
-        // Telemetry moves the vehicle's line to its waypoint, the active waypoint, the take-off point.
-        connect(v, &vehicle::Vehicle::telemetryChanged, this, &FlightPlanLayer::repaint);
+        // Telemetry moves the vehicle's line to its waypoint, the active waypoint, the take-off point
+        // (drawn for a vehicle that reports no home): nothing of it is drawn for a vehicle with a
+        // reported home and no mission.
+        connect(v, &vehicle::Vehicle::telemetryChanged, this, [this, v] {
+            if (!v->mission().empty() || !v->home().isValid())
+                repaint();
+        });
     }
     m_plans.resize(m_vehicles.size());
     emit plansChanged();

@@ -14,6 +14,7 @@ LayerCanvas::LayerCanvas(QQuickItem *parent, Painter painter)
 
 void LayerCanvas::paint(QPainter *painter)
 {
+    ++m_paints;
     if (m_painter)
         m_painter(*painter);
 }

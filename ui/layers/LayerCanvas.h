@@ -18,9 +18,11 @@ public:
     LayerCanvas(QQuickItem *parent, Painter painter);
 
     void paint(QPainter *painter) override;
+    int paintCount() const { return m_paints; } // test hook: pictures drawn
 
 private:
     Painter m_painter;
+    int m_paints = 0;
 };
 
 } // namespace sortie::ui

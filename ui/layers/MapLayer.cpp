@@ -47,13 +47,28 @@ QPointF MapLayer::paintOrigin() const
 
 void MapLayer::repaint()
 {
+    if (!isVisible())
+        return; // update() on a hidden item still costs the window a frame
+    ++m_repaintRequests;
     m_canvas->update();
+}
+
+void MapLayer::relayout()
+{
+    if (!isVisible())
+        return; // so does polish()
+    polish();
+    repaint();
+}
+
+int MapLayer::paintCount() const
+{
+    return m_canvas->paintCount();
 }
 
 void MapLayer::onViewportChanged()
 {
-    polish();
-    repaint();
+    relayout();
 }
 
 void MapLayer::setPanMargin(int pixels)

@@ -48,12 +48,20 @@ public:
     // Draws the layer in paintViewport's pixels.
     virtual void paint(QPainter *painter) = 0;
 
+    // Test hooks: how often the layer asked for its picture to be drawn again, and how often it was.
+    int repaintRequests() const { return m_repaintRequests; }
+    int paintCount() const;
+
 signals:
     void mapChanged();
 
 protected:
-    // What the layer shows changed: draw the picture again (for the same paintViewport).
+    // What the layer shows changed: draw the picture again (for the same paintViewport). The one
+    // place a layer asks for a frame: a hidden layer (a page not shown) asks for none, it is laid
+    // out and drawn anew when it shows (followViewport).
     void repaint();
+    // What the layer lays out changed too: polish (updatePolish), then repaint; nothing while hidden.
+    void relayout();
     // The picture needs a new layout for a new paintViewport: by default, polish and draw again.
     virtual void onViewportChanged();
     void setPanMargin(int pixels);
@@ -72,6 +80,7 @@ private:
     MapViewport m_paintViewport;
     int m_margin = kDefaultPanMargin;
     int m_pictureMargin = 0;
+    int m_repaintRequests = 0;
 };
 
 } // namespace sortie::ui

@@ -75,8 +75,7 @@ void VehicleLayer::setTrailsVisible(bool visible)
 
 void VehicleLayer::redraw()
 {
-    polish();
-    repaint();
+    relayout();
 }
 
 void VehicleLayer::onViewportChanged()
@@ -104,16 +103,23 @@ void VehicleLayer::reload()
 void VehicleLayer::reloadRows(int first, int last)
 {
     bool positioned = false;
+    bool changed = false;
     for (int row = std::max(0, first); row <= last && row < int(m_vehicles.size()); ++row) {
         VehicleMark &vehicle = m_vehicles[size_t(row)];
+        VehicleMark next = m_reader.read(*m_model, row);
+        if (next == vehicle)
+            continue; // the row changed in something this layer does not draw
+        changed = true;
         const QColor before = vehicle.shownColor();
         const bool had = vehicle.hasPosition();
-        vehicle = m_reader.read(*m_model, row);
+        vehicle = std::move(next);
         positioned = positioned || had != vehicle.hasPosition();
         if (vehicle.shownColor() != before)
             m_trails.redrawAll();
         m_trails.record(vehicle);
     }
+    if (!changed)
+        return;
     if (positioned)
         emit vehiclesChanged();
     m_camera.keepInView();

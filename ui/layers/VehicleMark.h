@@ -23,6 +23,17 @@ struct VehicleMark
     bool hasHome() const { return !std::isnan(home.x()); }
     // What it is drawn in: grey while its data is stale.
     QColor shownColor() const { return stale ? QColor(0x90, 0x90, 0x90) : color; }
+
+    // Drawn the same: a row read again with nothing new in it (no position equals no position).
+    friend bool operator==(const VehicleMark &a, const VehicleMark &b)
+    {
+        const auto same = [](QPointF p, QPointF q) {
+            return (std::isnan(p.x()) && std::isnan(q.x())) || p == q;
+        };
+        return a.id == b.id && a.label == b.label && same(a.position, b.position) && same(a.home, b.home)
+            && (a.heading == b.heading || (std::isnan(a.heading) && std::isnan(b.heading))) && a.stale == b.stale
+            && a.color == b.color;
+    }
 };
 
 } // namespace sortie::ui

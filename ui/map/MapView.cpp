@@ -21,10 +21,7 @@ MapView::MapView(QQuickItem *parent)
     setActiveFocusOnTab(true);
     setOpaquePainting(true);
     setFlag(ItemHasContents, true);
-    connect(&m_tiles, &TileManager::tilesChanged, this, [this] {
-        polish();
-        update();
-    });
+    connect(&m_tiles, &TileManager::tilesChanged, this, &MapView::redraw);
     connect(&m_tiles, &TileManager::statusChanged, this, &MapView::tileStatusChanged);
 }
 
@@ -85,7 +82,7 @@ void MapView::setDark(bool dark)
         return;
     m_tiles.baseMap().setDark(dark);
     emit darkChanged();
-    update();
+    redraw();
 }
 
 void MapView::setGraticuleVisible(bool visible)
@@ -94,7 +91,7 @@ void MapView::setGraticuleVisible(bool visible)
         return;
     m_graticule = visible;
     emit graticuleVisibleChanged();
-    update();
+    redraw();
 }
 
 qreal MapView::labelBandTop() const
@@ -192,9 +189,25 @@ void MapView::changeViewport(const MapViewport &viewport)
     m_viewport = viewport;
     if (m_cursorInside)
         setCursorPosition(m_hoverPos);
+    redraw();
+    emit viewportChanged();
+}
+
+void MapView::redraw()
+{
+    // A hidden map (a page not shown, whose vehicles still move its viewport) would still cost the
+    // window a frame for polish() and update(): it is laid out and drawn when it shows.
+    if (!isVisible())
+        return;
     polish();
     update();
-    emit viewportChanged();
+}
+
+void MapView::itemChange(ItemChange change, const ItemChangeData &value)
+{
+    QQuickPaintedItem::itemChange(change, value);
+    if (change == ItemVisibleHasChanged)
+        redraw();
 }
 
 void MapView::geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry)

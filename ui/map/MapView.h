@@ -112,6 +112,7 @@ signals:
 
 protected:
     void geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry) override;
+    void itemChange(ItemChange change, const ItemChangeData &value) override;
     void updatePolish() override;
     void mousePressEvent(QMouseEvent *event) override;
     void mouseMoveEvent(QMouseEvent *event) override;
@@ -125,6 +126,7 @@ protected:
 
 private:
     void changeViewport(const MapViewport &viewport);
+    void redraw(); // lay out and draw again, while shown
 
     MapViewport m_viewport;
     TileManager m_tiles;

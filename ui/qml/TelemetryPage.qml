@@ -355,7 +355,7 @@ Page {
             InstrumentPanel {
                 objectName: "instrumentPanel"
                 Layout.fillWidth: true
-                vehicle: page.current
+                vehicle: page.visible ? page.current : null // hidden, its texts would still cost frames
                 units: page.units
                 advisory: advisory
             }

@@ -36,6 +36,21 @@ TelemetryPlot::TelemetryPlot(QQuickItem *parent)
     setAntialiasing(true);
 }
 
+void TelemetryPlot::redraw()
+{
+    if (!isVisible())
+        return; // a hidden plot (a page not shown) would still cost the window a frame: drawn when shown
+    polish();
+    update();
+}
+
+void TelemetryPlot::itemChange(ItemChange change, const ItemChangeData &value)
+{
+    QQuickPaintedItem::itemChange(change, value);
+    if (change == ItemVisibleHasChanged)
+        redraw();
+}
+
 QObject *TelemetryPlot::vehicle() const
 {
     return m_vehicle.data();
@@ -103,10 +118,9 @@ void TelemetryPlot::watch()
     m_watched.clear();
     for (const auto &[v, row] : sources()) {
         m_watched.emplace_back(v);
-        connect(v, &vehicle::Vehicle::telemetryChanged, this, [this] { polish(); update(); });
+        connect(v, &vehicle::Vehicle::historyChanged, this, &TelemetryPlot::redraw); // its time axis moves with every sample
     }
-    polish();
-    update();
+    redraw();
 }
 
 void TelemetryPlot::setFields(const QStringList &fields)
@@ -114,8 +128,7 @@ void TelemetryPlot::setFields(const QStringList &fields)
     if (fields == m_fields)
         return;
     m_fields = fields;
-    polish();
-    update();
+    redraw();
     emit fieldsChanged();
 }
 
@@ -124,8 +137,7 @@ void TelemetryPlot::setWindowSeconds(double seconds)
     if (seconds == m_windowSeconds || seconds <= 0)
         return;
     m_windowSeconds = seconds;
-    polish();
-    update();
+    redraw();
     emit windowSecondsChanged();
 }
 

@@ -71,6 +71,7 @@ signals:
 
 protected:
     void updatePolish() override;
+    void itemChange(ItemChange change, const ItemChangeData &value) override;
 
 private:
     struct Series
@@ -90,6 +91,7 @@ private:
         double maximum = 0;
     };
     QRectF plotArea() const;
+    void redraw(); // lay out and draw again, while shown
     void watch();
     std::vector<std::pair<vehicle::Vehicle *, int>> sources() const; // vehicle and its colour row
 
