@@ -7,6 +7,7 @@
 #include "Airspace.h"
 #include "ClientWindow.h"
 #include "FleetRoutes.h"
+#include "LabelPlacer.h"
 #include "MapView.h"
 #include "MissionUploader.h"
 #include "QuickScene.h"
@@ -15,6 +16,7 @@
 #include "RouteLayer.h"
 #include "RouteModel.h"
 #include "RoutePreparation.h"
+#include "VehicleLayer.h"
 #include "ZoneCrossingLayer.h"
 #include "ZoneEditor.h"
 #include "ZoneLayer.h"
@@ -22,6 +24,7 @@
 
 #include <QDir>
 #include <QSettings>
+#include <QStandardItemModel>
 #include <QSignalSpy>
 #include <QTest>
 #include <QtQml/qqmlextensionplugin.h>
@@ -81,6 +84,19 @@ Item {
     required property Airspace airspace
     MapView { id: map; objectName: "map"; anchors.fill: parent; latitude: 56.95; longitude: 24.1; zoomLevel: 14 }
     ZoneLayer { objectName: "zones"; anchors.fill: parent; map: map; airspace: parent.airspace }
+}
+)";
+
+// The zone layer under a vehicle layer whose labels keep clear of the zones' (as both pages have them).
+const QByteArray kLabelsScene = R"(
+import QtQuick
+import Sortie.Ui
+Item {
+    required property Airspace airspace
+    required property var vehicles
+    MapView { id: map; objectName: "map"; anchors.fill: parent; latitude: 56.95; longitude: 24.1; zoomLevel: 14 }
+    ZoneLayer { id: zones; objectName: "zones"; anchors.fill: parent; map: map; airspace: parent.airspace }
+    VehicleLayer { objectName: "vehicles"; anchors.fill: parent; map: map; model: parent.vehicles; labelsBelow: zones }
 }
 )";
 
@@ -296,6 +312,50 @@ private slots:
         auto *flyZones = client.find<ui::ZoneLayer>(QStringLiteral("flyZoneLayer"));
         QVERIFY(flyZones);
         QCOMPARE(flyZones->airspace(), &airspace);
+    }
+
+    // A vehicle whose label would sit on a zone's: the vehicle's gives way (the moving label, so
+    // the zones are not drawn again as it moves); without labelsBelow the two would overlap.
+    void vehicleLabelsGiveWayToZoneLabels()
+    {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("settings.ini")), QSettings::IniFormat);
+        mission::RouteModel route;
+        mission::RouteAnalyzer analyzer(&route);
+        airspace::Airspace store(&settings, &analyzer, &route, nullptr);
+        store.editor()->addCircle(QGeoCoordinate(56.95, 24.1), 150);
+        QStandardItemModel vehicles;
+        vehicles.setItemRoleNames({{Qt::UserRole + 1, "vehicleId"}, {Qt::UserRole + 2, "name"}, {Qt::UserRole + 3, "latitude"},
+                                   {Qt::UserRole + 4, "longitude"}, {Qt::UserRole + 5, "heading"}});
+        test::QuickScene scene(kLabelsScene, QSize(800, 600),
+                               {{QStringLiteral("airspace"), QVariant::fromValue<QObject *>(&store)},
+                                {QStringLiteral("vehicles"), QVariant::fromValue<QObject *>(&vehicles)}});
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        auto *zones = scene.find<ui::ZoneLayer>(QStringLiteral("zones"));
+        auto *layer = scene.find<ui::VehicleLayer>(QStringLiteral("vehicles"));
+        auto *map = scene.find<ui::MapView>(QStringLiteral("map"));
+        QTRY_COMPARE(zones->labelCount(), 1);
+        const QRectF zoneLabel = zones->labelRect(0);
+        // Where the vehicle's label would start on the zone label's left half, its mark just left of it.
+        const QPointF mark = zoneLabel.topLeft() + QPointF(8, zoneLabel.height() / 2) - ui::LabelPlacer::kOffset;
+        const QGeoCoordinate at = map->toCoordinate(map->mapFromItem(layer, mark));
+        auto *item = new QStandardItem;
+        item->setData(QStringLiteral("v1"), Qt::UserRole + 1);
+        item->setData(QStringLiteral("EMU-101 with a long name"), Qt::UserRole + 2);
+        item->setData(at.latitude(), Qt::UserRole + 3);
+        item->setData(at.longitude(), Qt::UserRole + 4);
+        item->setData(90.0, Qt::UserRole + 5);
+        vehicles.appendRow(item);
+        QTRY_VERIFY(!layer->labelRect(0).isEmpty());
+        scene.grab();
+        QVERIFY2(!layer->labelRect(0).intersects(zones->labelRect(0)),
+                 qPrintable(QStringLiteral("vehicle label %1,%2 %3x%4 on the zone's %5,%6 %7x%8")
+                                .arg(layer->labelRect(0).x()).arg(layer->labelRect(0).y()).arg(layer->labelRect(0).width()).arg(layer->labelRect(0).height())
+                                .arg(zoneLabel.x()).arg(zoneLabel.y()).arg(zoneLabel.width()).arg(zoneLabel.height())));
+        scene.grab().save(QDir(screenshotDir()).filePath(QStringLiteral("zone-vehicle-labels.png")));
+        // The control: without the zones' labels to keep clear of, it lands on them.
+        layer->setLabelsBelow(nullptr);
+        QTRY_VERIFY(layer->labelRect(0).intersects(zones->labelRect(0)));
     }
 
     void theLayerHatchesOutlinesAndLabelsWithoutOverlap()

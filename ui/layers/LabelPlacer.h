@@ -27,6 +27,8 @@ public:
 
     // Places the label of `marks[mark]` of this size and keeps it for the labels after it.
     Placement place(size_t mark, QSizeF size);
+    // A label another layer drew there: the labels placed after keep clear of it.
+    void keepClear(const QRectF &label) { m_placed.push_back(label); }
 
     // How far from its mark a label starts, and how large a mark is kept clear.
     static constexpr QPointF kOffset{16, -10};

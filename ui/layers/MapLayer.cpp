@@ -19,6 +19,30 @@ MapLayer::MapLayer(QQuickItem *parent)
     setClip(true); // the picture reaches beyond the map
 }
 
+void MapLayer::setLabelsBelow(MapLayer *layer)
+{
+    if (layer == m_labelsBelow || layer == this)
+        return;
+    if (m_labelsBelow)
+        disconnect(m_labelsBelow, &MapLayer::labelsPlaced, this, nullptr);
+    m_labelsBelow = layer;
+    if (m_labelsBelow)
+        connect(m_labelsBelow, &MapLayer::labelsPlaced, this, &MapLayer::relayout);
+    relayout();
+    emit labelsBelowChanged();
+}
+
+std::vector<QRectF> MapLayer::labelsToKeepClearOf() const
+{
+    std::vector<QRectF> out;
+    if (!m_labelsBelow)
+        return out;
+    const QPointF origin = paintOrigin();
+    for (const QRectF &label : m_labelsBelow->placedLabels())
+        out.push_back(mapRectFromItem(m_labelsBelow, label).translated(-origin));
+    return out;
+}
+
 void MapLayer::setMap(MapView *map)
 {
     if (map == m_map)

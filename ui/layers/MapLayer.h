@@ -27,6 +27,10 @@ class MapLayer : public QQuickItem
     QML_ELEMENT
     QML_UNCREATABLE("MapLayer is a base class")
     Q_PROPERTY(sortie::ui::MapView *map READ map WRITE setMap NOTIFY mapChanged)
+    // A layer underneath whose labels this layer's labels keep clear of (the vehicles' and the
+    // traffic's of the zones'): the moving labels give way, so the zones are not drawn again
+    // whenever something moves.
+    Q_PROPERTY(sortie::ui::MapLayer *labelsBelow READ labelsBelow WRITE setLabelsBelow NOTIFY labelsBelowChanged)
 
 public:
     static constexpr int kDefaultPanMargin = 256;
@@ -47,6 +51,10 @@ public:
 
     // Draws the layer in paintViewport's pixels.
     virtual void paint(QPainter *painter) = 0;
+    // The labels this layer drew, in this item's coordinates (labelsPlaced() when they change).
+    virtual std::vector<QRectF> placedLabels() const { return {}; }
+    MapLayer *labelsBelow() const { return m_labelsBelow; }
+    void setLabelsBelow(MapLayer *layer);
 
     // Test hooks: how often the layer asked for its picture to be drawn again, and how often it was.
     int repaintRequests() const { return m_repaintRequests; }
@@ -54,6 +62,8 @@ public:
 
 signals:
     void mapChanged();
+    void labelsBelowChanged();
+    void labelsPlaced();
 
 protected:
     // What the layer shows changed: draw the picture again (for the same paintViewport). The one
@@ -65,6 +75,8 @@ protected:
     // The picture needs a new layout for a new paintViewport: by default, polish and draw again.
     virtual void onViewportChanged();
     void setPanMargin(int pixels);
+    // The labels of `labelsBelow` in paintViewport's pixels, for this layer's LabelPlacer.
+    std::vector<QRectF> labelsToKeepClearOf() const;
     // An extra picture that moves with the main one, drawn over it; the layer sets its geometry
     // (in paintViewport pixels) and calls update() on it.
     LayerCanvas *createOverlay(std::function<void(QPainter &)> painter);
@@ -76,6 +88,7 @@ private:
     void dropPicture();
 
     QPointer<MapView> m_map;
+    QPointer<MapLayer> m_labelsBelow;
     LayerCanvas *m_canvas = nullptr;
     MapViewport m_paintViewport;
     int m_margin = kDefaultPanMargin;

@@ -144,6 +144,8 @@ void TrafficLayer::layOut()
         order[i] = i;
     std::stable_partition(order.begin(), order.end(), [this](size_t i) { return !m_marks[i].stale; });
     LabelPlacer placer(std::move(points));
+    for (const QRectF &label : labelsToKeepClearOf())
+        placer.keepClear(label);
     for (size_t i : order) {
         const auto placement = placer.place(i, labelSize(m_marks[i].callsign, m_marks[i].altitude));
         m_marks[i].label = placement.rect;

@@ -200,6 +200,8 @@ void VehicleLayer::layOutLabels()
     }
     std::stable_partition(order.begin(), order.end(), [this](size_t row) { return int(row) == m_current; });
     LabelPlacer placer(std::move(arrows));
+    for (const QRectF &label : labelsToKeepClearOf())
+        placer.keepClear(label);
     for (size_t row : order) {
         const LabelPlacer::Placement placement = placer.place(arrowOf[row], VehiclePainter::labelSize(m_vehicles[row].label));
         m_drawn[row].label = placement.rect;

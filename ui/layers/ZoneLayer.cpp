@@ -227,6 +227,14 @@ QPointF ZoneLayer::zoneCentre(int row) const
     return viewport().geoToScreen(m_outlines[size_t(row)].centre);
 }
 
+std::vector<QRectF> ZoneLayer::placedLabels() const
+{
+    std::vector<QRectF> out;
+    for (int i = 0; i < labelCount(); ++i)
+        out.push_back(labelRect(i));
+    return out;
+}
+
 QRectF ZoneLayer::labelRect(int index) const
 {
     return index >= 0 && index < labelCount() ? m_labels[size_t(index)].rect.translated(paintOrigin()) : QRectF();
@@ -252,9 +260,17 @@ void ZoneLayer::paint(QPainter *painter)
 {
     QPainter &p = *painter;
     p.setRenderHint(QPainter::Antialiasing);
+    const std::vector<Label> before = std::move(m_labels);
     m_labels.clear();
-    if (!m_airspace) {
+    const auto done = [&] {
+        const bool moved = before.size() != m_labels.size()
+            || !std::equal(before.begin(), before.end(), m_labels.begin(), [](const Label &a, const Label &b) { return a.rect == b.rect; });
         emit drawn();
+        if (moved)
+            emit labelsPlaced();  // the layers above keep their labels clear of these
+    };
+    if (!m_airspace) {
+        done();
         return;
     }
     const MapViewport &view = paintViewport();
@@ -346,7 +362,7 @@ void ZoneLayer::paint(QPainter *painter)
         p.setFont(limitFont);
         p.drawText(QPointF(rect.left() + kLabelPadding, rect.top() + kLabelPadding + nameMetrics.height() + limitMetrics.ascent()), lines[1]);
     }
-    emit drawn();
+    done();
 }
 
 } // namespace sortie::ui

@@ -52,6 +52,7 @@ public:
     Q_INVOKABLE void hoverAt(QPointF position);
 
     void paint(QPainter *painter) override;
+    std::vector<QRectF> placedLabels() const override;
 
 protected:
     void onViewportChanged() override;

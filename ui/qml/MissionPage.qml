@@ -117,6 +117,7 @@ Page {
                 map: pane.map
                 traffic: page.traffic
                 imperial: page.units.imperial
+                labelsBelow: zoneLayer
                 enabled: false // clicks are for the route
             }
             VehicleLayer {
@@ -127,6 +128,7 @@ Page {
                 anchors.fill: parent
                 map: pane.map
                 model: page.vehicleModel
+                labelsBelow: zoneLayer
                 enabled: false // clicks are for the route
                 autoFit: true
             }

@@ -198,6 +198,7 @@ Page {
                     map: pane.map
                     traffic: page.traffic
                     imperial: page.units.imperial
+                    labelsBelow: zoneLayer
                     enabled: false // clicks are for the vehicles
                 }
                 VehicleLayer {
@@ -206,6 +207,7 @@ Page {
                     anchors.fill: parent
                     map: pane.map
                     model: page.vehicleModel
+                    labelsBelow: zoneLayer
                     autoFit: true // the fleet framed as it reports, until the operator moves the map
                 }
                 Row {
