@@ -20,7 +20,7 @@ constexpr auto kAbortedProperty = "sortiePrefetchAborted";
 
 QString sortieUserAgent()
 {
-    return QStringLiteral("Sortie/%1 (drone ground station)").arg(QStringLiteral(SORTIE_VERSION));
+    return QCoreApplication::translate("TilePrefetch", "Sortie/%1 (drone ground station)").arg(QStringLiteral(SORTIE_VERSION));
 }
 
 TilePrefetch::TilePrefetch(QNetworkAccessManager *network, PrefetchPlan plan, PrefetchLimits limits, QObject *parent)

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::terrain {
 
@@ -65,7 +66,7 @@ std::optional<HgtTile> HgtTile::fromData(QByteArrayView data, TileCell cell, con
         for (int c = 0; c < size; ++c) {
             const int v = tile.raw(r, c);
             if (v != kVoid && (v < kLowest || v > kHighest))
-                return fail(QStringLiteral("height %1 m at row %2, column %3 is not a terrain height; the file is corrupt")
+                return fail(QCoreApplication::translate("HgtTile", "height %1 m at row %2, column %3 is not a terrain height; the file is corrupt")
                                 .arg(v).arg(r).arg(c));
         }
     }

@@ -3,6 +3,7 @@
 #include "CommandLog.h"
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::vehicle {
 
@@ -261,7 +262,7 @@ void Vehicle::setMode(const QString &mode)
     const FlightMode m = modeFromName(mode.toStdString());
     const QString logged = QStringLiteral("mode %1").arg(mode);
     if (m == FlightMode::Unknown) {
-        finisher(QStringLiteral("mode"), logged)(CommandResult::failure(QStringLiteral("\"%1\" is not a flight mode").arg(mode)));
+        finisher(QStringLiteral("mode"), logged)(CommandResult::failure(QCoreApplication::translate("Vehicle", "\"%1\" is not a flight mode").arg(mode)));
         return;
     }
     if (m_link)
@@ -271,7 +272,7 @@ void Vehicle::setMode(const QString &mode)
 void Vehicle::takeoff(double altitude)
 {
     if (m_link)
-        m_link->takeoff(altitude, finisher(QStringLiteral("takeoff"), QStringLiteral("takeoff to %1 m").arg(altitude)));
+        m_link->takeoff(altitude, finisher(QStringLiteral("takeoff"), QCoreApplication::translate("Vehicle", "takeoff to %1 m").arg(altitude)));
 }
 
 void Vehicle::land()
@@ -283,7 +284,7 @@ void Vehicle::land()
 void Vehicle::returnHome()
 {
     if (m_link)
-        m_link->returnHome(finisher(QStringLiteral("returnHome"), QStringLiteral("return home")));
+        m_link->returnHome(finisher(QStringLiteral("returnHome"), QCoreApplication::translate("Vehicle", "return home")));
 }
 
 } // namespace sortie::vehicle

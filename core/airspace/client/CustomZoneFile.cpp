@@ -4,6 +4,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
+#include <QCoreApplication>
 
 namespace sortie::airspace {
 
@@ -91,7 +92,7 @@ mission::Result<ZoneFile> readCustomZones(const QString &path)
     ZoneFile out = std::move(read).value();
     for (Zone &z : out.zones) {
         z.source = ZoneSource::ServerCustom;
-        z.origin = QStringLiteral("drawn on the map");
+        z.origin = QCoreApplication::translate("CustomZoneFile", "drawn on the map");
     }
     return out;
 }

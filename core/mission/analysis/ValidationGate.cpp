@@ -1,6 +1,7 @@
 #include "ValidationGate.h"
 
 #include <QStringList>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -18,7 +19,7 @@ Result<void> permitRelease(const ValidationReport &report, ValidationOverride ov
         }
         first << i.message;
     }
-    return MissionError{QStringLiteral("%1 refused: the route has %2 validation error(s). %3 Fix them, or override explicitly.")
+    return MissionError{QCoreApplication::translate("ValidationGate", "%1 refused: the route has %2 validation error(s). %3 Fix them, or override explicitly.")
                             .arg(what).arg(report.errorCount()).arg(first.join(QLatin1Char(' '))), {}, 0, 0, {}};
 }
 

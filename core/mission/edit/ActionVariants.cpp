@@ -209,12 +209,12 @@ QString ActionField::check(const QVariant &value) const
 {
     switch (type) {
     case Type::Toggle:
-        return value.canConvert<bool>() ? QString() : QStringLiteral("%1 is either on or off").arg(label);
+        return value.canConvert<bool>() ? QString() : QCoreApplication::translate("ActionVariants", "%1 is either on or off").arg(label);
     case Type::Choice:
         for (const auto &c : choices)
             if (c.first == value.toString())
                 return {};
-        return QStringLiteral("%1: \"%2\" is not one of its choices").arg(label, value.toString());
+        return QCoreApplication::translate("ActionVariants", "%1: \"%2\" is not one of its choices").arg(label, value.toString());
     case Type::Number:
     case Type::Integer: {
         if (optional && value.toString().trimmed().isEmpty())
@@ -222,13 +222,13 @@ QString ActionField::check(const QVariant &value) const
         bool ok = false;
         const double v = value.toString().trimmed().isEmpty() ? std::nan("") : value.toDouble(&ok);
         if (!ok || !std::isfinite(v))
-            return QStringLiteral("%1: \"%2\" is not a number").arg(label, value.toString());
+            return QCoreApplication::translate("ActionVariants", "%1: \"%2\" is not a number").arg(label, value.toString());
         if (type == Type::Integer && std::floor(v) != v)
-            return QStringLiteral("%1: %2 is not a whole number").arg(label, value.toString());
+            return QCoreApplication::translate("ActionVariants", "%1: %2 is not a whole number").arg(label, value.toString());
         if (minimum && v < *minimum)
-            return QStringLiteral("%1: %2 is below %3 %4").arg(label, QString::number(v), QString::number(*minimum), unit).trimmed();
+            return QCoreApplication::translate("ActionVariants", "%1: %2 is below %3 %4").arg(label, QString::number(v), QString::number(*minimum), unit).trimmed();
         if (maximum && v > *maximum)
-            return QStringLiteral("%1: %2 is above %3 %4").arg(label, QString::number(v), QString::number(*maximum), unit).trimmed();
+            return QCoreApplication::translate("ActionVariants", "%1: %2 is above %3 %4").arg(label, QString::number(v), QString::number(*maximum), unit).trimmed();
         return {};
     }
     }
