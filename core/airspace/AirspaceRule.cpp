@@ -30,7 +30,7 @@ QString limits(const Zone &z)
 QString violationMessage(const AirspaceViolation &v, const Zone &zone)
 {
     const QString verb = v.kind == ViolationKind::InsideExclusion ? QStringLiteral("enters") : QStringLiteral("leaves");
-    const QString where = v.toDistance - v.fromDistance < 0.5 ? QStringLiteral("at %1").arg(metres(v.fromDistance))
+    const QString where = v.toDistance - v.fromDistance < 0.5 ? QCoreApplication::translate("AirspaceRule", "at %1").arg(metres(v.fromDistance))
                                                               : QCoreApplication::translate("AirspaceRule", "from %1 to %2").arg(metres(v.fromDistance), metres(v.toDistance));
     QString text = QCoreApplication::translate("AirspaceRule", "Leg %1 %2 '%3' %4 (%5)").arg(v.leg).arg(verb, zone.name, where, limits(zone));
     if (v.heightUnknown)

@@ -92,7 +92,7 @@ mission::Result<ZoneFile> readKmlZones(const QByteArray &data, const QString &or
             else if (name == QLatin1String("innerBoundaryIs"))
                 inner = false;
             else if (name == QLatin1String("Placemark") && mark) {
-                const QString label = mark->name.isEmpty() ? QStringLiteral("Placemark %1").arg(count)
+                const QString label = mark->name.isEmpty() ? QCoreApplication::translate("KmlZones", "Placemark %1").arg(count)
                                                            : QCoreApplication::translate("KmlZones", "Placemark '%1'").arg(mark->name);
                 for (const ZonePolygon &p : mark->polygons.parts)
                     if (p.rings.empty() && mark->problem.isEmpty())
@@ -106,7 +106,7 @@ mission::Result<ZoneFile> readKmlZones(const QByteArray &data, const QString &or
                     out.problems << QCoreApplication::translate("KmlZones", "%1 (line %2) was left out: %3").arg(label).arg(mark->line).arg(mark->problem);
                 } else if (!mark->polygons.parts.empty()) {  // a placemark without a polygon (a point, a path) is no zone
                     Zone z;
-                    z.name = mark->name.isEmpty() ? QStringLiteral("Placemark %1").arg(count) : mark->name;
+                    z.name = mark->name.isEmpty() ? QCoreApplication::translate("KmlZones", "Placemark %1").arg(count) : mark->name;
                     z.kind = ZoneKind::Exclusion;
                     z.shape = std::move(mark->polygons);
                     z.origin = origin.isEmpty() ? z.name : QStringLiteral("%1, %2").arg(origin, z.name);

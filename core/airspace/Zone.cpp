@@ -43,7 +43,7 @@ std::vector<Zone> zonesOfFence(const mission::RouteFence &fence, const QString &
     int n = 0;
     for (const mission::FencePolygon &p : fence.polygons) {
         Zone z;
-        z.name = QStringLiteral("%1 polygon %2").arg(prefix).arg(++n);
+        z.name = QCoreApplication::translate("Zone", "%1 polygon %2").arg(prefix).arg(++n);
         z.kind = p.inclusion ? ZoneKind::Inclusion : ZoneKind::Exclusion;
         z.shape = ZonePolygons{{ZonePolygon{{p.vertices}}}};
         z.source = source;
@@ -53,7 +53,7 @@ std::vector<Zone> zonesOfFence(const mission::RouteFence &fence, const QString &
     n = 0;
     for (const mission::FenceCircle &c : fence.circles) {
         Zone z;
-        z.name = QStringLiteral("%1 circle %2").arg(prefix).arg(++n);
+        z.name = QCoreApplication::translate("Zone", "%1 circle %2").arg(prefix).arg(++n);
         z.kind = c.inclusion ? ZoneKind::Inclusion : ZoneKind::Exclusion;
         z.shape = ZoneCircle{c.center, c.radius};
         z.source = source;

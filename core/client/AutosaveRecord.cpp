@@ -61,9 +61,9 @@ QByteArray encodeAutosave(const AutosaveRecord &header, const QByteArray &workin
     QByteArray out = QByteArray::fromStdString(head.dump(1));
     out.chop(2); // "\n}"
     out.reserve(out.size() + working.size() + baseline.size() + 40);
-    out += ",\n \"working\": ";
+    out += ",\n \"working\": "; // i18n: not text (JSON)
     out += working.trimmed();
-    out += ",\n \"baseline\": ";
+    out += ",\n \"baseline\": "; // i18n: not text (JSON)
     out += baseline.trimmed();
     out += "\n}\n";
     return out;

@@ -21,12 +21,12 @@ constexpr int32_t kLastOperationType = 6; // 3..6: streams and cancellation, nev
 QString typeName(int32_t type)
 {
     const auto name = HciMessageTypes::name(type);
-    return name.empty() ? QStringLiteral("type %1").arg(type) : QString::fromLatin1(name.data(), qsizetype(name.size()));
+    return name.empty() ? QCoreApplication::translate("HciConnection", "type %1").arg(type) : QString::fromLatin1(name.data(), qsizetype(name.size()));
 }
 
 QString seconds(std::chrono::milliseconds ms)
 {
-    return ms.count() % 1000 ? QStringLiteral("%1 ms").arg(ms.count()) : QStringLiteral("%1 s").arg(ms.count() / 1000);
+    return ms.count() % 1000 ? QCoreApplication::translate("HciConnection", "%1 ms").arg(ms.count()) : QStringLiteral("%1 s").arg(ms.count() / 1000);
 }
 
 } // namespace

@@ -58,7 +58,7 @@ std::optional<HgtTile> HgtTile::fromData(QByteArrayView data, TileCell cell, con
     else if (data.size() == qsizetype(2) * 3601 * 3601)
         size = 3601;
     else
-        return fail(QStringLiteral("%1 bytes is not an SRTM tile (2884802 bytes for 3″ 1201×1201, 25934402 for 1″ 3601×3601); "
+        return fail(QCoreApplication::translate("HgtTile", "%1 bytes is not an SRTM tile (2884802 bytes for 3″ 1201×1201, 25934402 for 1″ 3601×3601); "
                                    "the file is truncated or not a .hgt tile")
                         .arg(data.size()));
     HgtTile tile(data.data(), size, cell);

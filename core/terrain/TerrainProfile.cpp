@@ -32,7 +32,7 @@ ProfileRoute profileRouteOf(const mission::Route &route, mission::ScanPlanCache 
         w.role = p.role;
         w.label = p.segment >= 0 && size_t(p.segment) < route.segments.size() && mission::isAreaScan(route.segments[size_t(p.segment)])
                       ? QCoreApplication::translate("TerrainProfile", "%1, point %2").arg(mission::segmentLabel(route, p.segment)).arg(i + 1)
-                      : QStringLiteral("Waypoint %1").arg(i + 1);
+                      : QCoreApplication::translate("TerrainProfile", "Waypoint %1").arg(i + 1);
         // Within one following segment, the leg to its next point follows the ground.
         if (p.segment >= 0 && size_t(p.segment) < follow.size() && follow[size_t(p.segment)] && i + 1 < path.size()
             && path[i + 1].segment == p.segment)
@@ -56,7 +56,7 @@ QString legLabel(const ProfileRoute &route, int leg)
     const auto name = [&](int i) {
         return i >= 0 && size_t(i) < route.waypoints.size() && !route.waypoints[size_t(i)].label.isEmpty()
                    ? route.waypoints[size_t(i)].label
-                   : QStringLiteral("Waypoint %1").arg(i + 1);
+                   : QCoreApplication::translate("TerrainProfile", "Waypoint %1").arg(i + 1);
     };
     return QCoreApplication::translate("TerrainProfile", "Leg %1 (%2 → %3)").arg(leg + 1).arg(name(leg), name(leg + 1));
 }

@@ -13,7 +13,7 @@ QString metres(double v) { return QString::number(v, 'f', 1); }
 
 QString waypointName(const ProfileRoute &route, size_t i)
 {
-    return route.waypoints[i].label.isEmpty() ? QStringLiteral("Waypoint %1").arg(i + 1) : route.waypoints[i].label;
+    return route.waypoints[i].label.isEmpty() ? QCoreApplication::translate("TerrainRule", "Waypoint %1").arg(i + 1) : route.waypoints[i].label;
 }
 
 int rowOf(const ProfileRoute &route, int waypoint)
@@ -41,9 +41,9 @@ std::vector<ValidationIssue> terrainIssues(const ProfileRoute &route, const Terr
             ++last;
         const bool home = route.waypoints[i].reference == HeightReference::AboveHome;
         const QString who = last == i ? waypointName(route, i)
-                                      : QStringLiteral("%1 to %2").arg(waypointName(route, i), waypointName(route, last));
+                                      : QCoreApplication::translate("TerrainRule", "%1 to %2").arg(waypointName(route, i), waypointName(route, last));
         out.push_back({Severity::Error, QStringLiteral("terrain-agl-no-data"),
-                       QStringLiteral("%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height "
+                       QCoreApplication::translate("TerrainRule", "%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height "
                                       "above sea level is unknown.")
                            .arg(who, home ? QStringLiteral("home") : QCoreApplication::translate("TerrainRule", "the ground"),
                                 home ? QCoreApplication::translate("TerrainRule", "at home") : QStringLiteral("there"), tried),

@@ -15,6 +15,7 @@ QString describeRequest(VciVerb verb, const QString &uri)
 
 } // namespace
 
+// i18n: not text below (the error's name, for logs and the dump)
 const char *toString(VciResult::Error error)
 {
     switch (error) {
@@ -28,6 +29,7 @@ const char *toString(VciResult::Error error)
     }
     return "?";
 }
+// i18n: text again
 
 VciConnection::VciConnection(QObject *parent)
     : QObject(parent)
@@ -265,7 +267,8 @@ void VciConnection::handle(VciMessage &&m)
         answer(reply.status, reply.body);
         return;
     }
-    answer(501, nlohmann::json{{"error", "Sortie serves no " + std::string(toString(m.verb)) + " " + m.uri}});
+    answer(501, nlohmann::json{{"error", "Sortie serves no " // i18n: not text (an answer to the vehicle)
+                                                   + std::string(toString(m.verb)) + " " + m.uri}});
 }
 
 void VciConnection::handle(const VciParseError &e)

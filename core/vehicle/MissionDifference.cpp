@@ -32,7 +32,7 @@ bool sameAction(const MissionAction &a, const MissionAction &b)
 QString missionDifference(const std::vector<MissionItem> &sent, const std::vector<MissionItem> &back)
 {
     if (sent.size() != back.size())
-        return QCoreApplication::translate("MissionDifference", "the vehicle holds %1 waypoint(s), %2 were sent").arg(back.size()).arg(sent.size());
+        return QCoreApplication::translate("MissionDifference", "the vehicle holds %n waypoint(s), %1 were sent", nullptr, int(back.size())).arg(sent.size());
     constexpr double kAngle = 1e-3 / 6378137.0 * (180.0 / std::numbers::pi); // a millimetre on the ground, in degrees
     for (size_t i = 0; i < sent.size(); ++i) {
         const MissionItem &s = sent[i], &b = back[i];
@@ -46,7 +46,7 @@ QString missionDifference(const std::vector<MissionItem> &sent, const std::vecto
         if (s.acceptanceRadius > 0 && std::abs(s.acceptanceRadius - b.acceptanceRadius) > 1e-3)
             return where + QCoreApplication::translate("MissionDifference", "acceptance radius %1 m, sent %2 m").arg(b.acceptanceRadius).arg(s.acceptanceRadius);
         if (s.actions.size() != b.actions.size())
-            return where + QCoreApplication::translate("MissionDifference", "%1 action(s), sent %2").arg(b.actions.size()).arg(s.actions.size());
+            return where + QCoreApplication::translate("MissionDifference", "%n action(s), sent %1", nullptr, int(b.actions.size())).arg(s.actions.size());
         for (size_t a = 0; a < s.actions.size(); ++a) {
             if (!sameAction(s.actions[a], b.actions[a]))
                 return where + QCoreApplication::translate("MissionDifference", "action %1 (%2) differs").arg(a + 1).arg(s.actions[a].type);

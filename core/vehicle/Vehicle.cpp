@@ -260,7 +260,7 @@ void Vehicle::disarm()
 void Vehicle::setMode(const QString &mode)
 {
     const FlightMode m = modeFromName(mode.toStdString());
-    const QString logged = QStringLiteral("mode %1").arg(mode);
+    const QString logged = QCoreApplication::translate("Vehicle", "mode %1").arg(mode);
     if (m == FlightMode::Unknown) {
         finisher(QStringLiteral("mode"), logged)(CommandResult::failure(QCoreApplication::translate("Vehicle", "\"%1\" is not a flight mode").arg(mode)));
         return;

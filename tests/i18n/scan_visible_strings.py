@@ -39,6 +39,7 @@ import os
 import re
 import sys
 
+REGEX = re.compile(r"^\^.*\$$")
 QML_PROPERTIES = r"(?:text|title|placeholderText|ToolTip\.text|label|description|displayText|message|" \
                  r"informativeText|detailedText|heading|subtitle|prefix|suffix|unit)"
 TRANSLATING_CALLS = {"qsTr", "qsTranslate", "qsTrId", "tr", "translate", "QT_TR_NOOP", "QT_TRANSLATE_NOOP",
@@ -154,14 +155,15 @@ def statement_start(code, pos):
 
 
 def is_words(text, qml):
+    spaced = " " in text.strip()
     text = re.sub(r"%(?:\d+|n|L\d+)|\\.", " ", text)  # placeholders and escapes ("\n") are no words
     if not (LETTER if qml else WORDS).search(text) or COLOUR.match(text):
         return False
-    if SQL.match(text) or PROJ.match(text) or DATE_FORMAT.match(re.sub(r"'[^']*'", "", text)) or URLISH.match(text.strip()):
+    if SQL.match(text) or PROJ.match(text) or REGEX.match(text) or DATE_FORMAT.match(re.sub(r"'[^']*'", "", text)) or URLISH.match(text.strip()):
         return False
     if qml:
         return True
-    return " " in text.strip()
+    return spaced
 
 
 def compared(code, start, end):
@@ -169,6 +171,12 @@ def compared(code, start, end):
     before = code[max(0, start - 30):start].rstrip()
     after = code[end:end + 30].lstrip()
     return before.endswith(("==", "!=", "indexOf(", "contains(", "startsWith(", "endsWith(")) or after.startswith(("==", "!="))
+
+
+def keyed(code, start):
+    """A QML literal that is the value of an object's key other than a visible one ({value: "AGL"})."""
+    m = re.search(r"([\w.]+)\s*:\s*$", code[max(0, start - 60):start])
+    return bool(m) and not re.fullmatch(QML_PROPERTIES, m.group(1))
 
 
 def qt_free(path):
@@ -203,13 +211,15 @@ def scan_cpp(path, rel, findings):
     code = blank_comments(raw, qml=False)
     lines = raw.split("\n")
     skipped = opted_out(lines)
+    masked = mask_strings(code)
     for start, end, text in literals(code):
         line = code.count("\n", 0, start) + 1
         if line in skipped:
             continue
-        calls = open_calls(code, start)
-        statement = statement_start(code, start)
-        if set(calls) & NOT_TEXT_CALLS or NOT_TEXT_STATEMENT.search(statement) or SQL_IN.search(statement):
+        calls = open_calls(masked, start)
+        statement = statement_start(masked, start)
+        if set(calls) & NOT_TEXT_CALLS or NOT_TEXT_STATEMENT.search(statement) \
+                or SQL_IN.search(code[start - len(statement):start]):
             continue
         if code[max(0, start - 12):start].rstrip().endswith("#include") or compared(code, start, end):
             continue
@@ -287,12 +297,12 @@ def scan_qml(path, rel, findings):
             line = code.count("\n", 0, start) + 1
             if line in skipped:
                 continue
-            calls = open_calls(code, start)
+            calls = open_calls(masked, start)
             if set(calls) & TRANSLATING_CALLS:
                 if plural_finding(text):
                     findings.append(f"{rel}:{line}: count with a %n plural form: \"{text}\"")
                 continue
-            if is_words(text, qml=True) and not compared(code, start, stop):
+            if is_words(text, qml=True) and not compared(code, start, stop) and not keyed(code, start):
                 findings.append(f"{rel}:{line}: \"{text}\"")
 
 

@@ -152,7 +152,7 @@ bool ZoneEditor::moveVertex(int zone, int vertex, const QGeoCoordinate &to, miss
             return refuse(tr("The zone has no corner %1.").arg(vertex + 1));
         (*ring)[size_t(vertex)] = pointOf(to);
         return true;
-    }, tr("Move zone corner"), QStringLiteral("vertex %1").arg(vertex), step);
+    }, tr("Move zone corner"), QCoreApplication::translate("ZoneEditor", "vertex %1").arg(vertex), step);
 }
 
 bool ZoneEditor::insertVertex(int zone, int vertex, const QGeoCoordinate &at)

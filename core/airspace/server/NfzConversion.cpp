@@ -61,7 +61,7 @@ bool prismToZone(const pb::Prism &prism, Zone &z, QString *why)
     if (ring.size() > 1 && ring.front() == ring.back())
         ring.pop_back();  // a closed ring: Zone's rings are open
     if (ring.size() < 3)
-        return *why = QCoreApplication::translate("NfzConversion", "its prism has %1 corner(s); a polygon needs 3").arg(ring.size()), false;
+        return *why = QCoreApplication::translate("NfzConversion", "its prism has %n corner(s); a polygon needs 3", nullptr, int(ring.size())), false;
     z.shape = ZonePolygons{{ZonePolygon{{std::move(ring)}}}};
     return limitsOf(prism.has_basealtitude(), prism.basealtitude(), prism.has_height(), prism.height(), prism.altitudetype(), true, z, why);
 }
@@ -119,7 +119,7 @@ void putLimits(const Zone &zone, pb::AltitudeType type, Volume *v)
 QString nameOf(const pb::NoFlightZone &nfz)
 {
     const QString name = QString::fromStdString(nfz.name()).trimmed();
-    return name.isEmpty() ? QStringLiteral("NoFlightZone %1").arg(nfz.id()) : name;
+    return name.isEmpty() ? QCoreApplication::translate("NfzConversion", "NoFlightZone %1").arg(nfz.id()) : name;
 }
 
 std::optional<Zone> toZone(const pb::NoFlightZone &nfz, QString *why)
@@ -175,13 +175,14 @@ std::optional<pb::NoFlightZone> toNfz(const Zone &zone, const pb::NoFlightZone *
     nfz.set_type(pb::NT_CUSTOM);
     if (const auto *polygons = std::get_if<ZonePolygons>(&zone.shape)) {
         if (polygons->parts.size() != 1 || polygons->parts[0].rings.size() != 1)
-            return *why = QCoreApplication::translate("NfzConversion", "a server zone is one polygon without holes (this one has %1 part(s), %2 ring(s))")
-                              .arg(polygons->parts.size())
-                              .arg(polygons->parts.empty() ? 0 : polygons->parts[0].rings.size()),
+            return *why = QCoreApplication::translate("NfzConversion", "a server zone is one polygon without holes (this one has %n part(s), %1)",
+                                                      nullptr, int(polygons->parts.size()))
+                              .arg(QCoreApplication::translate("NfzConversion", "%n ring(s)", nullptr,
+                                                               int(polygons->parts.empty() ? 0 : polygons->parts[0].rings.size()))),
                    std::nullopt;
         const auto &ring = polygons->parts[0].rings[0];
         if (ring.size() < 3)
-            return *why = QCoreApplication::translate("NfzConversion", "its polygon has %1 corner(s); it needs 3").arg(ring.size()), std::nullopt;
+            return *why = QCoreApplication::translate("NfzConversion", "its polygon has %n corner(s); it needs 3", nullptr, int(ring.size())), std::nullopt;
         nfz.clear_conefrustum();
         pb::Prism *prism = nfz.mutable_prism();
         prism->clear_points();

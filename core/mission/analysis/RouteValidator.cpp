@@ -88,8 +88,9 @@ public:
                 QCoreApplication::translate("RouteValidator", "The route needs at least two points; it has %1.").arg(points), -1});
         if (uncheckedAmsl > 0)
             m_report.issues.insert(m_report.issues.begin(), {Severity::Warning, QStringLiteral("altitude-unchecked"),
-                QStringLiteral("%1 AMSL altitude(s), the first at %2, were not checked against the route's limits: "
-                               "the take-off elevation is unknown.").arg(uncheckedAmsl).arg(label(firstUnchecked)),
+                QCoreApplication::translate("RouteValidator", "%n AMSL altitude(s), the first at %1, were not checked against the "
+                                            "route's limits: the take-off elevation is unknown.", nullptr, int(uncheckedAmsl))
+                    .arg(label(firstUnchecked)),
                 firstUnchecked});
         return std::move(m_report);
     }

@@ -5,6 +5,8 @@
 #include "RouteModel.h"
 #include "SegmentParameters.h"
 
+#include <QCoreApplication>
+
 #include <algorithm>
 #include <cmath>
 
@@ -38,20 +40,20 @@ std::optional<ParameterDefinition> sortieDefinition(const QString &name)
 {
     struct Own { const char *name; const char *label; ParameterType type; Quantity quantity; double minimum; };
     static const Own kOwn[] = {
-        {"acceptanceRadius", "Acceptance radius", ParameterType::Double, Quantity::Distance, 0},
-        {"cameraSensorWidth", "Sensor width (mm)", ParameterType::Double, Quantity::None, 0.01},
-        {"cameraSensorHeight", "Sensor height (mm)", ParameterType::Double, Quantity::None, 0.01},
-        {"cameraFocalLength", "Focal length (mm)", ParameterType::Double, Quantity::None, 0.01},
-        {"cameraImageWidth", "Image width (px)", ParameterType::Integer, Quantity::Count, 1},
-        {"cameraImageHeight", "Image height (px)", ParameterType::Integer, Quantity::Count, 1},
-        {"height", "Height", ParameterType::Double, Quantity::Altitude, 0.1},
-        {"sideDistance", "Side distance (0: from the camera)", ParameterType::Double, Quantity::Distance, 0},
+        {"acceptanceRadius", QT_TRANSLATE_NOOP("SegmentEditorModel", "Acceptance radius"), ParameterType::Double, Quantity::Distance, 0},
+        {"cameraSensorWidth", QT_TRANSLATE_NOOP("SegmentEditorModel", "Sensor width (mm)"), ParameterType::Double, Quantity::None, 0.01},
+        {"cameraSensorHeight", QT_TRANSLATE_NOOP("SegmentEditorModel", "Sensor height (mm)"), ParameterType::Double, Quantity::None, 0.01},
+        {"cameraFocalLength", QT_TRANSLATE_NOOP("SegmentEditorModel", "Focal length (mm)"), ParameterType::Double, Quantity::None, 0.01},
+        {"cameraImageWidth", QT_TRANSLATE_NOOP("SegmentEditorModel", "Image width (px)"), ParameterType::Integer, Quantity::Count, 1},
+        {"cameraImageHeight", QT_TRANSLATE_NOOP("SegmentEditorModel", "Image height (px)"), ParameterType::Integer, Quantity::Count, 1},
+        {"height", QT_TRANSLATE_NOOP("SegmentEditorModel", "Height"), ParameterType::Double, Quantity::Altitude, 0.1},
+        {"sideDistance", QT_TRANSLATE_NOOP("SegmentEditorModel", "Side distance (0: from the camera)"), ParameterType::Double, Quantity::Distance, 0},
     };
     for (const Own &o : kOwn) {
         if (name == QLatin1String(o.name)) {
             ParameterDefinition d;
             d.name = name;
-            d.displayName = QString::fromLatin1(o.label);
+            d.displayName = QCoreApplication::translate("SegmentEditorModel", o.label);
             d.type = o.type;
             d.quantity = o.quantity;
             d.minimum = o.minimum;

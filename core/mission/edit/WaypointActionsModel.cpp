@@ -111,7 +111,7 @@ QVariantList WaypointActionsModel::kinds() const
 {
     QVariantList list;
     for (const ActionKindDescription &k : editableActionKinds())
-        list << QVariantMap{{QStringLiteral("kind"), k.kind}, {QStringLiteral("label"), k.label}};
+        list << QVariantMap{{QStringLiteral("kind"), k.kind}, {QStringLiteral("label"), actionText(k.label)}};
     return list;
 }
 
@@ -135,7 +135,7 @@ QVariant WaypointActionsModel::data(const QModelIndex &index, int role) const
     const ActionKindDescription *description = actionKindDescription(actionKindName(action));
     switch (role) {
     case KindRole: return actionKindName(action);
-    case LabelRole: return description ? description->label : describeAction(action);
+    case LabelRole: return description ? actionText(description->label) : describeAction(action);
     case SummaryRole: return describeAction(action);
     case EditableRole: return description != nullptr;  // a server's action Sortie does not model is kept, not edited
     case FieldsRole: {
@@ -146,9 +146,9 @@ QVariant WaypointActionsModel::data(const QModelIndex &index, int role) const
         for (const ActionField &f : description->fields) {
             QVariantList choices;
             for (const auto &[value, label] : f.choices)
-                choices << QVariantMap{{QStringLiteral("value"), value}, {QStringLiteral("text"), label}};
-            fields << QVariantMap{{QStringLiteral("action"), index.row()}, {QStringLiteral("name"), f.name}, {QStringLiteral("label"), f.label},
-                                  {QStringLiteral("type"), typeName(f.type)}, {QStringLiteral("unit"), f.unit},
+                choices << QVariantMap{{QStringLiteral("value"), value}, {QStringLiteral("text"), actionText(label)}};
+            fields << QVariantMap{{QStringLiteral("action"), index.row()}, {QStringLiteral("name"), f.name}, {QStringLiteral("label"), actionText(f.label)},
+                                  {QStringLiteral("type"), typeName(f.type)}, {QStringLiteral("unit"), actionText(f.unit)},
                                   {QStringLiteral("value"), values.value(f.name)}, {QStringLiteral("choices"), choices},
                                   {QStringLiteral("optional"), f.optional}};
         }

@@ -165,7 +165,7 @@ Result<QStringList> saveMission(const Mission &mission, const QString &path, con
     } else if (mission.routes.size() != 1) {
         return MissionError{mission.routes.empty()
                                 ? QCoreApplication::translate("MissionFiles", "the mission has no route to write")
-                                : QStringLiteral("the mission has %1 routes and a %2 file holds one: choose the route to write (sortie-plan convert --route N), "
+                                : QCoreApplication::translate("MissionFiles", "the mission has %1 routes and a %2 file holds one: choose the route to write (sortie-plan convert --route N), "
                                                  "or write .sortie or DJI WPML (.kmz), which hold them all")
                                       .arg(mission.routes.size()).arg(formatName(*format)),
                             path, 0, 0, {}};

@@ -137,7 +137,7 @@ std::vector<FigurePoint> pointsAt(const JsonCursor &list, size_t minimum, const 
         points.push_back({g, 0.0, AltitudeType::Agl});
     }
     if (points.size() < minimum)
-        list.fail(QCoreApplication::translate("QgcSurveyJson", "a %1 needs at least %2 points, found %3").arg(QLatin1String(what)).arg(minimum).arg(points.size()));
+        list.fail(QCoreApplication::translate("QgcSurveyJson", "a %1 needs at least %2 points, found %3").arg(QCoreApplication::translate("QgcSurveyJson", what)).arg(minimum).arg(points.size()));
     return points;
 }
 
@@ -176,7 +176,7 @@ AlgorithmSegment corridorFromJson(const JsonCursor &item, QStringList *notices)
     AlgorithmSegment a;
     a.algorithm = algorithmClassName(AlgorithmKind::Corridor);
     a.figure = FigureType::Polyline;
-    a.points = pointsAt(item.at("polyline"), 2, "corridor centre line");
+    a.points = pointsAt(item.at("polyline"), 2, QT_TRANSLATE_NOOP("QgcSurveyJson", "corridor centre line"));
     a.setValue(QStringLiteral("width"), number(item.number("CorridorWidth")));
     cameraCalcInto(item.at("TransectStyleComplexItem").at("CameraCalc"), a, notices);
     return a;
@@ -220,7 +220,7 @@ AlgorithmSegment structureScanFromJson(const JsonCursor &item, QStringList *noti
     AlgorithmSegment a;
     a.algorithm = algorithmClassName(AlgorithmKind::Perimeter);
     a.figure = FigureType::Polygon;
-    a.points = pointsAt(item.at("polygon"), 3, "structure polygon");
+    a.points = pointsAt(item.at("polygon"), 3, QT_TRANSLATE_NOOP("QgcSurveyJson", "structure polygon"));
     const JsonCursor cam = item.at("CameraCalc");
     const bool amsl = cam.find("DistanceMode") ? cam.at("DistanceMode").integer() == kAltitudeModeAmsl
                                                : !cam.booleanOr("DistanceToSurfaceRelative", true);

@@ -134,7 +134,7 @@ QByteArray writeWpl(const Route &route, QStringList *notices, ScanPlanCache *cac
             home.position = anchorOf(route.segments.front());
         out.notices.prepend(QCoreApplication::translate("WplFormat", "The route has no home position: the first point was written as home, at 0 m AMSL."));
     }
-    QByteArray text = "QGC WPL 110\n";
+    QByteArray text = "QGC WPL 110\n"; // i18n: not text (the file format's header)
     auto line = [&](int index, int current, int frame, int command, const double p[4], double lat, double lon, double alt, bool autoContinue) {
         text += QByteArray::number(index) + '\t' + QByteArray::number(current) + '\t' + QByteArray::number(frame) + '\t'
               + QByteArray::number(command);

@@ -81,7 +81,7 @@ QString describeAction(const WaypointAction &action)
             if (a.tiltDeg) parts << QCoreApplication::translate("WaypointAction", "tilt %1°").arg(number(*a.tiltDeg));
             if (a.rollDeg) parts << QCoreApplication::translate("WaypointAction", "roll %1°").arg(number(*a.rollDeg));
             if (a.yawDeg) parts << QCoreApplication::translate("WaypointAction", "yaw %1°").arg(number(*a.yawDeg));
-            if (a.zoomLevel) parts << QStringLiteral("zoom %1").arg(*a.zoomLevel);
+            if (a.zoomLevel) parts << QCoreApplication::translate("WaypointAction", "zoom %1").arg(*a.zoomLevel);
             return parts.isEmpty() ? QCoreApplication::translate("WaypointAction", "Gimbal (nothing set)") : QStringLiteral("Gimbal ") + parts.join(QStringLiteral(", "));
         },
         [](const ServerAction &a) { return describeServerAction(a); },

@@ -79,8 +79,10 @@ SegmentPlanOutcome planCircle(const SegmentFigure &f, const ParameterReader &r, 
     for (int k = 0; k <= perLap * loops; ++k)
         plan.points.push_back(point(geodesicDirect(centre, start + step * (k % perLap), radius).point, height, f.pointFrame, c.speed));
     plan.passes = loops;
-    plan.notes.push_back(QCoreApplication::translate("SegmentPlanner", "Orbit of %1 m radius: %2 lap(s) of %3 points, %4")
-                             .arg(m1(radius)).arg(loops).arg(perLap).arg(clockwise ? QStringLiteral("clockwise") : QStringLiteral("counter-clockwise")));
+    plan.notes.push_back(QCoreApplication::translate("SegmentPlanner", "Orbit of %1 m radius: %n lap(s) of %2 points, %3", nullptr, int(loops))
+                             .arg(m1(radius)).arg(perLap)
+                             .arg(clockwise ? QCoreApplication::translate("SegmentPlanner", "clockwise")
+                                            : QCoreApplication::translate("SegmentPlanner", "counter-clockwise")));
     return {std::move(plan), {}, -1};
 }
 

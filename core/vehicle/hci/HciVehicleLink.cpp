@@ -326,7 +326,7 @@ void HciVehicleLink::uploadMission(const PreparedMission &mission, UploadObserve
             connect(reply, &HciReply::progress, this, [step](const QString &, int value, int maximum) { step(UploadStep::Sending, value, maximum); });
             onFinished(reply, [this, finish, count](const HciReply &uploaded) {
                 if (!uploaded.isOk()) {
-                    finish(CommandResult::failure(QStringLiteral("upload: %1").arg(uploaded.error().message())));
+                    finish(CommandResult::failure(QCoreApplication::translate("HciVehicleLink", "upload: %1").arg(uploaded.error().message())));
                     return;
                 }
                 m_routePass.setUploadedCount(count);

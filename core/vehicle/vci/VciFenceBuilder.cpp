@@ -107,7 +107,7 @@ mission::Result<Limits> limitsOf(const Zone &zone, const GroundLookup &ground, Q
     const std::optional<GroundRange> range = agl ? groundUnder(zone, ground) : std::nullopt;
     if (agl && !range) {
         if (!keepOut)
-            return failure(QStringLiteral("zone '%1': its AGL limits need the ground under it, which no terrain source has; "
+            return failure(QCoreApplication::translate("VciFenceBuilder", "zone '%1': its AGL limits need the ground under it, which no terrain source has; "
                                                      "a vehicle cannot be given it")
                                              .arg(zone.name));
         notices->append(QCoreApplication::translate("VciFenceBuilder", "zone '%1': no ground under it, so its AGL limits were dropped (the vehicle keeps out of the whole column)")
@@ -215,12 +215,12 @@ mission::Result<VciFencePlan> vciFenceFor(const mission::Route &route, const Fen
     if (const std::string problem = profile::fenceLimitProblem(plan.fence); !problem.empty())
         return failure(QCoreApplication::translate("VciFenceBuilder", "the fence cannot be sent: %1").arg(QString::fromStdString(problem)));
     if (!plan.fence.empty())
-        plan.notices.prepend(QCoreApplication::translate("VciFenceBuilder", "fence: %1 of the route's own, %2 airspace zone(s) near it; on a breach the vehicle will %3")
+        plan.notices.prepend(QCoreApplication::translate("VciFenceBuilder", "fence: %1 of the route's own, %n airspace zone(s) near it; on a breach the vehicle will %2",
+                                                             nullptr, int(zones.size() - own))
                                  .arg(own)
-                                 .arg(zones.size() - own)
-                                 .arg(QString::fromLatin1(settings.breachAction == FenceBreachAction::Return ? "return home"
-                                                          : settings.breachAction == FenceBreachAction::Land ? "land"
-                                                                                                             : "hold")));
+                                 .arg(settings.breachAction == FenceBreachAction::Return ? QCoreApplication::translate("VciFenceBuilder", "return home")
+                                      : settings.breachAction == FenceBreachAction::Land ? QCoreApplication::translate("VciFenceBuilder", "land")
+                                                                                         : QCoreApplication::translate("VciFenceBuilder", "hold")));
     return plan;
 }
 
