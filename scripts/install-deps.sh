@@ -20,6 +20,8 @@ packages=(
   dbus-daemon gnome-keyring libglib2.0-bin libsecret-tools  # tst_keyring: a session bus, a keyring, gdbus, secret-tool
   clang libclang-rt-14-dev
   llvm-14  # llvm-symbolizer: the sanitizer scripts need it to match the leak suppressions
+  qt6-l10n-tools  # lupdate and lrelease: the translations (resources/i18n) compiled into the program
+  python3  # the translation checks run by ctest (tests/i18n: visible strings, complete .ts files)
 )
 
 missing=()

@@ -58,7 +58,6 @@ OPT_OUT_BELOW, OPT_IN = "i18n: not text below", "i18n: text again"
 WORDS = re.compile(r"[^\W\d_]{2,}")
 LETTER = re.compile(r"[^\W\d_]")  # QML: a unit alone ("m") is text too
 COLOUR = re.compile(r"^#[0-9a-fA-F]{3,8}$")
-SQL_IN = re.compile(r'"\s*(?:SELECT|INSERT|CREATE|UPDATE|DELETE|PRAGMA|REPLACE|DROP|ALTER)\b')
 PROJ = re.compile(r"^\s*\+\w+")  # a PROJ pipeline
 SQL = re.compile(r"^\s*(SELECT|INSERT|CREATE|UPDATE|DELETE|PRAGMA|BEGIN|COMMIT|REPLACE|DROP|ALTER|WITH)\b")
 DATE_FORMAT = re.compile(r"^(?=.*(?:yy|MM|dd|HH|hh|mm|ss))[yMdHhmszapAPt:\-./ ,'T]+$")
@@ -166,10 +165,14 @@ def is_words(text, qml):
     return spaced
 
 
+WRAPPER_BEFORE = re.compile(r"(?:QStringLiteral|QLatin1String|QLatin1StringView|QStringView|QString|u8?)\s*\(?\s*$")
+WRAPPER_AFTER = re.compile(r"^\)")
+
+
 def compared(code, start, end):
     """A literal compared with something (`figure === "polygon"`) or looked up is a key, not text."""
-    before = code[max(0, start - 30):start].rstrip()
-    after = code[end:end + 30].lstrip()
+    before = WRAPPER_BEFORE.sub("", code[max(0, start - 60):start].rstrip()).rstrip()
+    after = WRAPPER_AFTER.sub("", code[end:end + 30].lstrip(), count=1).lstrip()
     return before.endswith(("==", "!=", "indexOf(", "contains(", "startsWith(", "endsWith(")) or after.startswith(("==", "!="))
 
 
@@ -212,14 +215,19 @@ def scan_cpp(path, rel, findings):
     lines = raw.split("\n")
     skipped = opted_out(lines)
     masked = mask_strings(code)
+    run_text = {}  # a literal's start -> the text of the first literal of its run ("a" "b" is one string)
+    previous_end, previous_text = -1, None
+    for start, end, text in literals(code):
+        joined = previous_end >= 0 and not masked[previous_end:start].strip()
+        run_text[start] = run_text[previous_start] if joined else text
+        previous_start, previous_end = start, end
     for start, end, text in literals(code):
         line = code.count("\n", 0, start) + 1
         if line in skipped:
             continue
         calls = open_calls(masked, start)
         statement = statement_start(masked, start)
-        if set(calls) & NOT_TEXT_CALLS or NOT_TEXT_STATEMENT.search(statement) \
-                or SQL_IN.search(code[start - len(statement):start]):
+        if set(calls) & NOT_TEXT_CALLS or NOT_TEXT_STATEMENT.search(statement) or SQL.match(run_text[start]):
             continue
         if code[max(0, start - 12):start].rstrip().endswith("#include") or compared(code, start, end):
             continue

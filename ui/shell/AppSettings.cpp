@@ -18,6 +18,7 @@ const QString kMapSource = QStringLiteral("map/source");
 const QString kTemplate = QStringLiteral("map/urlTemplate");
 const QString kMbtiles = QStringLiteral("map/mbtiles");
 const QString kUnits = QStringLiteral("display/units");
+const QString kLanguage = QStringLiteral("display/language");
 const QString kGeometry = QStringLiteral("window/geometry");
 const QString kMaximized = QStringLiteral("window/maximized");
 } // namespace
@@ -232,6 +233,17 @@ QString AppSettings::units() const
 void AppSettings::setUnits(const QString &units)
 {
     write(kUnits, units);
+}
+
+QString AppSettings::language() const
+{
+    return m_storage->value(kLanguage).toString();
+}
+
+void AppSettings::setLanguage(const QString &language)
+{
+    if (language != this->language())
+        write(kLanguage, language);
 }
 
 QRect AppSettings::windowGeometry() const
