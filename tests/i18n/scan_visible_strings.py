@@ -22,8 +22,13 @@ Not counted (not visible, or not words):
     strings ("%1, %2", "%1:%2"), JSON/XML keys, enum and state names, object names, roles,
     file suffixes ("gpx"), settings keys (single words are keys far more often than text, so
     they are reviewed by hand, not by this scan);
-  - SQL statements, date/time format patterns, URL and host:port examples (placeholders
-    that show syntax, e.g. "tcp://host:5760");
+  - SQL statements, regular expressions, PROJ pipelines, date/time format patterns, colours,
+    URL and host:port examples (placeholders that show syntax, e.g. "tcp://host:5760");
+  - a literal compared (==, !=) or looked up (indexOf, contains, startsWith...): a key; in QML,
+    the value of an object's key that is not a visible property ({value: "AGL"});
+  - C++ that includes no Qt header (the Qt-free codecs: core/hci's frame codec, core/vci's codec,
+    core/traffic/sbs): it cannot call tr(); its messages are protocol diagnostics, and they reach
+    the operator untranslated, as the detail of a connection or protocol error;
   - the command-line programs' own output (app/sortie-plan, sortie-log, sortie-dump, sortie-sim)
     and sim/: they are not translated;
   - core code that only those programs run: core/endurance/fit (sortie-log fit), and sortie's own

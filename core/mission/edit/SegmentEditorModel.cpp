@@ -1,4 +1,5 @@
 #include "SegmentEditorModel.h"
+#include "LanguageChange.h"
 
 #include "AreaScanPlanner.h"
 #include "RouteEditor.h"
@@ -105,6 +106,7 @@ QString textOf(const QVariant &v)
 SegmentEditorModel::SegmentEditorModel(RouteModel *model, RouteEditor *editor, QObject *parent)
     : QAbstractListModel(parent), m_model(model), m_editor(editor)
 {
+    i18n::onLanguageChange(this, [this] { rebuild(); }); // the fields' names are made in the language of the day
     connect(model, &QAbstractItemModel::dataChanged, this, [this](const QModelIndex &from, const QModelIndex &to) {
         if (m_row >= from.row() && m_row <= to.row())
             refreshValues();

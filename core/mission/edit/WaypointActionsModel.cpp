@@ -1,4 +1,5 @@
 #include "WaypointActionsModel.h"
+#include "LanguageChange.h"
 
 #include "RouteEditor.h"
 #include "RouteModel.h"
@@ -29,6 +30,7 @@ const std::vector<WaypointAction> *actionsAt(const RouteModel &model, int row)
 WaypointActionsModel::WaypointActionsModel(RouteModel *model, RouteEditor *editor, QObject *parent)
     : QAbstractListModel(parent), m_model(model), m_editor(editor)
 {
+    i18n::refreshOnLanguageChange(this); // labels, units and summaries are translated in data()
     connect(model, &QAbstractItemModel::dataChanged, this, [this](const QModelIndex &from, const QModelIndex &to) {
         for (int row : std::as_const(m_waypoints))
             if (row >= from.row() && row <= to.row())
