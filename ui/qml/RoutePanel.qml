@@ -199,7 +199,7 @@ Pane {
             columns: 4
             Layout.fillWidth: true
             Label { text: qsTr("Length") ; opacity: 0.7 }
-            Label { objectName: "routeLength"; text: panel.units.formatDistance(panel.doc.analyzer.lengthMeters) }
+            Label { text: panel.units.formatDistance(panel.doc.analyzer.lengthMeters) }
             Label { text: qsTr("Time"); opacity: 0.7 }
             Label { text: panel.units.formatDuration(panel.doc.analyzer.flightTimeSeconds) }
             Label { text: qsTr("Waypoints"); opacity: 0.7 }

@@ -15,9 +15,12 @@ Q_LOGGING_CATEGORY(lcTranslations, "sortie.ui.translations")
 namespace {
 const QString kPrefix = QStringLiteral("sortie_");
 
-// "Deutsch", "Español", "Українська": the name a speaker reads, capitalised as a menu item.
+// "Deutsch", "Español", "Українська": the name a speaker reads, capitalised as a menu item. English
+// is the source language, without a country ("American English" is what the locale would say).
 QString nativeName(const QString &code)
 {
+    if (code == QLatin1String("en"))
+        return QStringLiteral("English");
     QString name = QLocale(code).nativeLanguageName();
     if (!name.isEmpty())
         name[0] = name[0].toUpper();
