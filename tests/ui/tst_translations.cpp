@@ -53,6 +53,9 @@ private slots:
         m_client = std::make_unique<test::ClientWindow>(options);
         QVERIFY2(m_client->isReady(), qPrintable(m_client->error()));
         QVERIFY(m_client->logIn());
+        QVERIFY(m_client->openDemoRoute());
+        // The server's three vehicles first: addVciVehicles counts on the fleet it finds.
+        QTRY_COMPARE_WITH_TIMEOUT(m_client->fleet().count(), 3, 10000);
         QVERIFY(m_client->addVciVehicles());
         // A vehicle chosen, so the fly view's instruments show numbers.
         m_client->showPage(2);
