@@ -18,6 +18,7 @@
 #include "RouteEndurance.h"
 #include "ServerHistoryRequest.h"
 #include "Traffic.h"
+#include "Translations.h"
 #include "ZoneSharing.h"
 #include "VehicleFleet.h"
 
@@ -30,9 +31,10 @@ void addImportPaths(QQmlEngine &engine)
     engine.addImportPath(QStringLiteral("qrc:/qt/qml"));
 }
 
-QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settings)
+QVariantMap mainWindowProperties(client::ClientGraph &graph, AppSettings &settings, Translations &translations)
 {
     return {{QStringLiteral("appSettings"), QVariant::fromValue(&settings)},
+            {QStringLiteral("translations"), QVariant::fromValue(&translations)},
             {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&graph.connection())},
             {QStringLiteral("missions"), QVariant::fromValue<QObject *>(&graph.missions())},
             {QStringLiteral("fleet"), QVariant::fromValue<QObject *>(graph.fleet())},

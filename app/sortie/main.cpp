@@ -15,6 +15,7 @@
 #include "SortieUi.h"
 #include "StartupProbe.h"
 #include "Traffic.h"
+#include "Translations.h"
 #include "VehicleFleet.h"
 #include "WindowGeometry.h"
 
@@ -113,7 +114,8 @@ int main(int argc, char *argv[])
 
     QQmlApplicationEngine engine;
     sortie::ui::addImportPaths(engine);
-    engine.setInitialProperties(sortie::ui::mainWindowProperties(graph, settings));
+    sortie::ui::Translations translations(settings, engine); // the settings' language, before the first word is shown
+    engine.setInitialProperties(sortie::ui::mainWindowProperties(graph, settings, translations));
     engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));
     if (engine.rootObjects().isEmpty())
         return 1;

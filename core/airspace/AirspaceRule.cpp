@@ -6,6 +6,7 @@
 #include <QLocale>
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::airspace {
 
@@ -22,27 +23,27 @@ QString metres(double v)
 
 QString limits(const Zone &z)
 {
-    return QStringLiteral("floor %1, ceiling %2").arg(limitText(z.floor, false), limitText(z.ceiling, true));
+    return QCoreApplication::translate("AirspaceRule", "floor %1, ceiling %2").arg(limitText(z.floor, false), limitText(z.ceiling, true));
 }
 } // namespace
 
 QString violationMessage(const AirspaceViolation &v, const Zone &zone)
 {
     const QString verb = v.kind == ViolationKind::InsideExclusion ? QStringLiteral("enters") : QStringLiteral("leaves");
-    const QString where = v.toDistance - v.fromDistance < 0.5 ? QStringLiteral("at %1").arg(metres(v.fromDistance))
-                                                              : QStringLiteral("from %1 to %2").arg(metres(v.fromDistance), metres(v.toDistance));
-    QString text = QStringLiteral("Leg %1 %2 '%3' %4 (%5)").arg(v.leg).arg(verb, zone.name, where, limits(zone));
+    const QString where = v.toDistance - v.fromDistance < 0.5 ? QCoreApplication::translate("AirspaceRule", "at %1").arg(metres(v.fromDistance))
+                                                              : QCoreApplication::translate("AirspaceRule", "from %1 to %2").arg(metres(v.fromDistance), metres(v.toDistance));
+    QString text = QCoreApplication::translate("AirspaceRule", "Leg %1 %2 '%3' %4 (%5)").arg(v.leg).arg(verb, zone.name, where, limits(zone));
     if (v.heightUnknown)
-        text += QStringLiteral("; its height there is unknown (no terrain data), so it counts as inside");
+        text += QCoreApplication::translate("AirspaceRule", "; its height there is unknown (no terrain data), so it counts as inside");
     return text + QLatin1Char('.');
 }
 
 QString warningMessage(const AirspaceWarning &w, const Zone &zone, double buffer)
 {
-    return QStringLiteral("Leg %1 passes within %2 of %3 '%4' (buffer %5).")
+    return QCoreApplication::translate("AirspaceRule", "Leg %1 passes within %2 of %3 '%4' (buffer %5).")
         .arg(w.leg)
-        .arg(metres(std::max(0.0, w.clearance)), zone.kind == ZoneKind::Exclusion ? QStringLiteral("exclusion zone")
-                                                                                 : QStringLiteral("the edge of inclusion zone"),
+        .arg(metres(std::max(0.0, w.clearance)), zone.kind == ZoneKind::Exclusion ? QCoreApplication::translate("AirspaceRule", "exclusion zone")
+                                                                                 : QCoreApplication::translate("AirspaceRule", "the edge of inclusion zone"),
              zone.name, metres(buffer));
 }
 

@@ -4,6 +4,7 @@
 
 #include <QRegularExpression>
 #include <QXmlStreamReader>
+#include <QCoreApplication>
 
 namespace sortie::airspace {
 
@@ -17,12 +18,12 @@ std::optional<std::vector<GeoPoint>> ring(const QString &text, QString *why)
         const auto lon = parts.size() >= 2 ? mission::formats::parseNumber(parts[0].toLatin1()) : std::nullopt;
         const auto lat = parts.size() >= 2 ? mission::formats::parseNumber(parts[1].toLatin1()) : std::nullopt;
         if (parts.size() > 3 || !lon || !lat || (parts.size() == 3 && !mission::formats::parseNumber(parts[2].toLatin1()))) {
-            *why = QStringLiteral("bad coordinate \"%1\": expected longitude,latitude[,altitude]").arg(tuple.left(60));
+            *why = QCoreApplication::translate("KmlZones", "bad coordinate \"%1\": expected longitude,latitude[,altitude]").arg(tuple.left(60));
             return std::nullopt;
         }
         const GeoPoint g{*lat, *lon};
         if (!g.isValid()) {
-            *why = QStringLiteral("coordinate \"%1\" is out of range").arg(tuple.left(60));
+            *why = QCoreApplication::translate("KmlZones", "coordinate \"%1\" is out of range").arg(tuple.left(60));
             return std::nullopt;
         }
         out.push_back(g);
@@ -30,7 +31,7 @@ std::optional<std::vector<GeoPoint>> ring(const QString &text, QString *why)
     if (out.size() > 1 && out.front() == out.back())
         out.pop_back();
     if (out.size() < 3) {
-        *why = QStringLiteral("a boundary needs at least 3 distinct coordinates, found %1").arg(out.size());
+        *why = QCoreApplication::translate("KmlZones", "a boundary needs at least 3 distinct coordinates, found %1").arg(out.size());
         return std::nullopt;
     }
     return out;
@@ -74,14 +75,14 @@ mission::Result<ZoneFile> readKmlZones(const QByteArray &data, const QString &or
                 QString why;
                 const auto points = ring(xml.readElementText(), &why);
                 if (!points && mark->problem.isEmpty())
-                    mark->problem = QStringLiteral("line %1: %2").arg(line).arg(why);
+                    mark->problem = QCoreApplication::translate("KmlZones", "line %1: %2").arg(line).arg(why);
                 if (!points)
                     continue;
                 auto &rings = mark->polygons.parts.back().rings;
                 if (outer && !rings.empty() && mark->problem.isEmpty())
-                    mark->problem = QStringLiteral("line %1: a polygon with two outer boundaries").arg(line);
+                    mark->problem = QCoreApplication::translate("KmlZones", "line %1: a polygon with two outer boundaries").arg(line);
                 if (inner && rings.empty() && mark->problem.isEmpty())
-                    mark->problem = QStringLiteral("line %1: an inner boundary before the outer one").arg(line);
+                    mark->problem = QCoreApplication::translate("KmlZones", "line %1: an inner boundary before the outer one").arg(line);
                 rings.push_back(*points);
             }
         } else if (xml.isEndElement()) {
@@ -91,21 +92,21 @@ mission::Result<ZoneFile> readKmlZones(const QByteArray &data, const QString &or
             else if (name == QLatin1String("innerBoundaryIs"))
                 inner = false;
             else if (name == QLatin1String("Placemark") && mark) {
-                const QString label = mark->name.isEmpty() ? QStringLiteral("Placemark %1").arg(count)
-                                                           : QStringLiteral("Placemark '%1'").arg(mark->name);
+                const QString label = mark->name.isEmpty() ? QCoreApplication::translate("KmlZones", "Placemark %1").arg(count)
+                                                           : QCoreApplication::translate("KmlZones", "Placemark '%1'").arg(mark->name);
                 for (const ZonePolygon &p : mark->polygons.parts)
                     if (p.rings.empty() && mark->problem.isEmpty())
-                        mark->problem = QStringLiteral("a Polygon without an outer boundary");
+                        mark->problem = QCoreApplication::translate("KmlZones", "a Polygon without an outer boundary");
                 if (mark->problem.isEmpty() && !mark->polygons.parts.empty()) {
                     Zone probe;
                     probe.shape = mark->polygons;
                     mark->problem = shapeProblem(probe);
                 }
                 if (!mark->problem.isEmpty()) {
-                    out.problems << QStringLiteral("%1 (line %2) was left out: %3").arg(label).arg(mark->line).arg(mark->problem);
+                    out.problems << QCoreApplication::translate("KmlZones", "%1 (line %2) was left out: %3").arg(label).arg(mark->line).arg(mark->problem);
                 } else if (!mark->polygons.parts.empty()) {  // a placemark without a polygon (a point, a path) is no zone
                     Zone z;
-                    z.name = mark->name.isEmpty() ? QStringLiteral("Placemark %1").arg(count) : mark->name;
+                    z.name = mark->name.isEmpty() ? QCoreApplication::translate("KmlZones", "Placemark %1").arg(count) : mark->name;
                     z.kind = ZoneKind::Exclusion;
                     z.shape = std::move(mark->polygons);
                     z.origin = origin.isEmpty() ? z.name : QStringLiteral("%1, %2").arg(origin, z.name);
@@ -116,7 +117,7 @@ mission::Result<ZoneFile> readKmlZones(const QByteArray &data, const QString &or
         }
     }
     if (xml.hasError())
-        return mission::MissionError{QStringLiteral("not well-formed KML: %1").arg(xml.errorString()), {}, int(xml.lineNumber()),
+        return mission::MissionError{QCoreApplication::translate("KmlZones", "not well-formed KML: %1").arg(xml.errorString()), {}, int(xml.lineNumber()),
                                      int(xml.columnNumber()), {}};
     return out;
 }

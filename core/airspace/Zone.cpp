@@ -1,4 +1,5 @@
 #include "Zone.h"
+#include <QCoreApplication>
 
 namespace sortie::airspace {
 
@@ -7,7 +8,7 @@ QString referenceName(HeightReference reference)
     switch (reference) {
     case HeightReference::Amsl: return QStringLiteral("AMSL");
     case HeightReference::AboveTerrain: return QStringLiteral("AGL");
-    case HeightReference::AboveHome: return QStringLiteral("above home");
+    case HeightReference::AboveHome: return QCoreApplication::translate("Zone", "above home");
     }
     return {};
 }
@@ -21,9 +22,9 @@ QString sourceName(ZoneSource source)
 {
     switch (source) {
     case ZoneSource::File: return QStringLiteral("file");
-    case ZoneSource::ServerAerodrome: return QStringLiteral("server aerodrome");
-    case ZoneSource::ServerCustom: return QStringLiteral("server custom");
-    case ZoneSource::VehicleFence: return QStringLiteral("vehicle fence");
+    case ZoneSource::ServerAerodrome: return QCoreApplication::translate("Zone", "server aerodrome");
+    case ZoneSource::ServerCustom: return QCoreApplication::translate("Zone", "server custom");
+    case ZoneSource::VehicleFence: return QCoreApplication::translate("Zone", "vehicle fence");
     }
     return {};
 }
@@ -42,7 +43,7 @@ std::vector<Zone> zonesOfFence(const mission::RouteFence &fence, const QString &
     int n = 0;
     for (const mission::FencePolygon &p : fence.polygons) {
         Zone z;
-        z.name = QStringLiteral("%1 polygon %2").arg(prefix).arg(++n);
+        z.name = QCoreApplication::translate("Zone", "%1 polygon %2").arg(prefix).arg(++n);
         z.kind = p.inclusion ? ZoneKind::Inclusion : ZoneKind::Exclusion;
         z.shape = ZonePolygons{{ZonePolygon{{p.vertices}}}};
         z.source = source;
@@ -52,7 +53,7 @@ std::vector<Zone> zonesOfFence(const mission::RouteFence &fence, const QString &
     n = 0;
     for (const mission::FenceCircle &c : fence.circles) {
         Zone z;
-        z.name = QStringLiteral("%1 circle %2").arg(prefix).arg(++n);
+        z.name = QCoreApplication::translate("Zone", "%1 circle %2").arg(prefix).arg(++n);
         z.kind = c.inclusion ? ZoneKind::Inclusion : ZoneKind::Exclusion;
         z.shape = ZoneCircle{c.center, c.radius};
         z.source = source;

@@ -4,6 +4,7 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QCoreApplication>
 
 namespace sortie::airspace {
 
@@ -15,7 +16,7 @@ mission::Result<ZoneFile> readPlanZones(const QByteArray &data, const QString &o
         return fence.error();
     for (Zone &z : zonesOfFence(*fence, QStringLiteral("geofence"), ZoneSource::File, origin)) {
         if (const QString problem = shapeProblem(z); !problem.isEmpty())
-            out.problems << QStringLiteral("%1 was left out: %2").arg(z.name, problem);
+            out.problems << QCoreApplication::translate("ZoneFiles", "%1 was left out: %2").arg(z.name, problem);
         else
             out.zones.push_back(std::move(z));
     }
@@ -33,7 +34,7 @@ mission::Result<ZoneFile> loadZoneFile(const QString &path)
     else if (suffix == QLatin1String("kml"))
         reader = readKmlZones;
     else
-        return mission::MissionError{QStringLiteral("unknown zone file type \".%1\" (Sortie reads .plan, .geojson, .json and .kml)").arg(suffix),
+        return mission::MissionError{QCoreApplication::translate("ZoneFiles", "unknown zone file type \".%1\" (Sortie reads .plan, .geojson, .json and .kml)").arg(suffix),
                                      path, 0, 0, {}};
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))

@@ -2,6 +2,7 @@
 
 #include "JsonCursor.h"
 #include "SortieFormat.h"
+#include <QCoreApplication>
 
 namespace sortie::client {
 
@@ -17,7 +18,7 @@ Result<Route> readRoute(const Json &doc, const char *key)
     const auto it = doc.find(key);
     if (it == doc.end() || !it->is_object()) {
         MissionError e;
-        e.message = QStringLiteral("the autosave holds no \"%1\" route").arg(QLatin1String(key));
+        e.message = QCoreApplication::translate("AutosaveRecord", "the autosave holds no \"%1\" route").arg(QLatin1String(key));
         e.jsonPath = QStringLiteral("/%1").arg(QLatin1String(key));
         return e;
     }
@@ -30,8 +31,8 @@ Result<Route> readRoute(const Json &doc, const char *key)
     }
     if (mission->routes.size() != 1) {
         MissionError e;
-        e.message = QStringLiteral("the \"%1\" document holds %2 routes, not one").arg(QLatin1String(key)).arg(mission->routes.size());
-        e.jsonPath = QStringLiteral("/%1/mission/routes").arg(QLatin1String(key));
+        e.message = QCoreApplication::translate("AutosaveRecord", "the \"%1\" document holds %2 routes, not one").arg(QLatin1String(key)).arg(mission->routes.size());
+        e.jsonPath = QCoreApplication::translate("AutosaveRecord", "/%1/mission/routes").arg(QLatin1String(key));
         return e;
     }
     return mission->routes.front();
@@ -60,9 +61,9 @@ QByteArray encodeAutosave(const AutosaveRecord &header, const QByteArray &workin
     QByteArray out = QByteArray::fromStdString(head.dump(1));
     out.chop(2); // "\n}"
     out.reserve(out.size() + working.size() + baseline.size() + 40);
-    out += ",\n \"working\": ";
+    out += ",\n \"working\": "; // i18n: not text (JSON)
     out += working.trimmed();
-    out += ",\n \"baseline\": ";
+    out += ",\n \"baseline\": "; // i18n: not text (JSON)
     out += baseline.trimmed();
     out += "\n}\n";
     return out;
@@ -86,10 +87,10 @@ Result<AutosaveRecord> decodeAutosave(const QByteArray &data)
         return e;
     };
     if (!doc.is_object() || doc.value("format", Json()) != "sortie-autosave")
-        return fail(QStringLiteral("not a Sortie autosave (\"format\" is not \"sortie-autosave\")"), QStringLiteral("/format"));
+        return fail(QCoreApplication::translate("AutosaveRecord", "not a Sortie autosave (\"format\" is not \"sortie-autosave\")"), QStringLiteral("/format"));
     const Json version = doc.value("formatVersion", Json());
     if (!version.is_number_integer() || version.get<int>() < 1 || version.get<int>() > kFormatVersion)
-        return fail(QStringLiteral("autosave format version %1 is not one this Sortie reads (1)").arg(QString::fromStdString(version.dump())),
+        return fail(QCoreApplication::translate("AutosaveRecord", "autosave format version %1 is not one this Sortie reads (1)").arg(QString::fromStdString(version.dump())),
                     QStringLiteral("/formatVersion"));
     AutosaveRecord record;
     auto text = [&doc](const char *key) {
@@ -102,7 +103,7 @@ Result<AutosaveRecord> decodeAutosave(const QByteArray &data)
     };
     record.savedAt = QDateTime::fromString(text("savedAt"), Qt::ISODateWithMs);
     if (!record.savedAt.isValid())
-        return fail(QStringLiteral("\"savedAt\" is not a date and time"), QStringLiteral("/savedAt"));
+        return fail(QCoreApplication::translate("AutosaveRecord", "\"savedAt\" is not a date and time"), QStringLiteral("/savedAt"));
     record.server = text("server");
     record.user = text("user");
     record.routeId = integer("routeId");

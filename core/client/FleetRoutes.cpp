@@ -1,4 +1,5 @@
 #include "FleetRoutes.h"
+#include "LanguageChange.h"
 
 #include "FlightPath.h"
 #include "MissionProgress.h"
@@ -54,6 +55,7 @@ FleetRoutes::FleetRoutes(VehicleFleet *fleet, RouteDocument *document, RoutePrep
     , m_document(document)
     , m_preparation(preparation)
 {
+    i18n::refreshOnLanguageChange(this); // states ("uploaded 14:02") are worded in data()
     Q_ASSERT(fleet);
     Q_ASSERT(!document == !preparation);
     // A vehicle that comes or goes moves the others' rows, so their colours.

@@ -3,6 +3,7 @@
 #include <QHostAddress>
 
 #include <optional>
+#include <QCoreApplication>
 
 namespace sortie::client {
 
@@ -23,37 +24,37 @@ std::variant<ServerAddress, QString> ServerAddress::parse(const QString &text)
 {
     const QString trimmed = text.trimmed();
     if (trimmed.isEmpty())
-        return QStringLiteral("the server address is empty (expected host:port)");
+        return QCoreApplication::translate("ServerAddress", "the server address is empty (expected host:port)");
     if (trimmed.contains(QLatin1String("://")))
-        return QStringLiteral("\"%1\" is a URL: give the server as host:port, e.g. localhost:3334").arg(trimmed);
+        return QCoreApplication::translate("ServerAddress", "\"%1\" is a URL: give the server as host:port, e.g. localhost:3334").arg(trimmed);
     ServerAddress address;
     QString portText;
     if (trimmed.startsWith(QLatin1Char('['))) {
         const qsizetype close = trimmed.indexOf(QLatin1Char(']'));
         if (close < 0)
-            return QStringLiteral("\"%1\" opens an IPv6 address with [ but never closes it").arg(trimmed);
+            return QCoreApplication::translate("ServerAddress", "\"%1\" opens an IPv6 address with [ but never closes it").arg(trimmed);
         address.host = trimmed.mid(1, close - 1);
         const QString rest = trimmed.mid(close + 1);
         if (!rest.isEmpty() && !rest.startsWith(QLatin1Char(':')))
-            return QStringLiteral("\"%1\" has text after the IPv6 address that is not :port").arg(trimmed);
+            return QCoreApplication::translate("ServerAddress", "\"%1\" has text after the IPv6 address that is not :port").arg(trimmed);
         portText = rest.mid(1);
         if (QHostAddress(address.host).protocol() != QAbstractSocket::IPv6Protocol)
-            return QStringLiteral("\"%1\" is not an IPv6 address").arg(address.host);
+            return QCoreApplication::translate("ServerAddress", "\"%1\" is not an IPv6 address").arg(address.host);
     } else {
         const qsizetype colon = trimmed.lastIndexOf(QLatin1Char(':'));
         if (colon >= 0 && trimmed.indexOf(QLatin1Char(':')) != colon)
-            return QStringLiteral("write an IPv6 server address in brackets: [%1]:3334").arg(trimmed);
+            return QCoreApplication::translate("ServerAddress", "write an IPv6 server address in brackets: [%1]:3334").arg(trimmed);
         address.host = colon >= 0 ? trimmed.left(colon) : trimmed;
         portText = colon >= 0 ? trimmed.mid(colon + 1) : QString();
     }
     if (address.host.isEmpty())
-        return QStringLiteral("\"%1\" has no host name").arg(trimmed);
+        return QCoreApplication::translate("ServerAddress", "\"%1\" has no host name").arg(trimmed);
     if (address.host.contains(QLatin1Char('/')) || address.host.contains(QLatin1Char(' ')))
-        return QStringLiteral("\"%1\" is not a host name (expected host:port, e.g. localhost:3334)").arg(address.host);
+        return QCoreApplication::translate("ServerAddress", "\"%1\" is not a host name (expected host:port, e.g. localhost:3334)").arg(address.host);
     if (!portText.isEmpty() || trimmed.endsWith(QLatin1Char(':'))) {
         const auto port = parsePort(portText);
         if (!port)
-            return QStringLiteral("\"%1\" is not a port number (1 to 65535)").arg(portText);
+            return QCoreApplication::translate("ServerAddress", "\"%1\" is not a port number (1 to 65535)").arg(portText);
         address.port = *port;
     }
     return address;

@@ -1,4 +1,5 @@
 #include "VehicleFleet.h"
+#include "LanguageChange.h"
 
 #include <QtMath>
 
@@ -29,6 +30,7 @@ VehicleFleet::VehicleFleet(hci::HciClient *client, terrain::ElevationService *el
     , m_client(client)
     , m_elevation(elevation)
 {
+    i18n::refreshOnLanguageChange(this);
     connect(client->session(), &hci::HciSession::ready, this, &VehicleFleet::discoverHciVehicles);
     connect(client->session(), &hci::HciSession::stateChanged, this, [this](hci::HciSession::State state) {
         if (state == hci::HciSession::State::Disconnected)

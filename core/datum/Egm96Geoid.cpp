@@ -5,6 +5,7 @@
 #include <proj.h>
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::datum {
 
@@ -18,7 +19,7 @@ std::unique_ptr<Egm96Geoid> Egm96Geoid::open(const QString &gridPath, QString *e
     // Checked first so the reason names the file rather than PROJ's generic grid error.
     const QFileInfo file(gridPath);
     if (!file.isFile() || !file.isReadable()) {
-        *error = QStringLiteral("the EGM96 geoid grid %1 is missing (Debian: install proj-data): ellipsoidal heights cannot be converted to AMSL").arg(gridPath);
+        *error = QCoreApplication::translate("Egm96Geoid", "the EGM96 geoid grid %1 is missing (Debian: install proj-data): ellipsoidal heights cannot be converted to AMSL").arg(gridPath);
         return nullptr;
     }
     PJ_CONTEXT *context = proj_context_create();
@@ -33,7 +34,7 @@ std::unique_ptr<Egm96Geoid> Egm96Geoid::open(const QString &gridPath, QString *e
                                       .toUtf8();
     PJ *shift = proj_create(context, definition.constData());
     if (!shift) {
-        *error = QStringLiteral("the EGM96 geoid grid %1 cannot be used: %2")
+        *error = QCoreApplication::translate("Egm96Geoid", "the EGM96 geoid grid %1 cannot be used: %2")
                      .arg(gridPath, QString::fromUtf8(proj_context_errno_string(context, proj_context_errno(context))));
         proj_context_destroy(context);
         return nullptr;

@@ -3,6 +3,7 @@
 #include "JsonCursor.h"
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::endurance {
 
@@ -29,11 +30,11 @@ QString EnergyProfile::problem() const
                              {"climbPowerW", climbPowerW}, {"descentPowerW", descentPowerW}};
     for (const Figure &f : needed)
         if (!(f.value > 0) || !std::isfinite(f.value))
-            return QStringLiteral("%1 must be a positive number").arg(QLatin1String(f.name));
+            return QCoreApplication::translate("EnergyProfile", "%1 must be a positive number").arg(QLatin1String(f.name));
     if (!(reserve >= 0 && reserve < 1))
-        return QStringLiteral("reserve must be a fraction from 0 up to (not including) 1");
+        return QCoreApplication::translate("EnergyProfile", "reserve must be a fraction from 0 up to (not including) 1");
     if (acceleration && !(*acceleration > 0))
-        return QStringLiteral("acceleration must be a positive number");
+        return QCoreApplication::translate("EnergyProfile", "acceleration must be a positive number");
     return {};
 }
 
@@ -65,7 +66,7 @@ mission::Result<EnergyProfile> readEnergyProfile(const QByteArray &json)
         else if (source == "fit")
             p.source = ProfileSource::Fit;
         else
-            root.failAt("source", QStringLiteral("expected \"file\", \"server\" or \"fit\""));
+            root.failAt("source", QCoreApplication::translate("EnergyProfile", "expected \"file\", \"server\" or \"fit\""));
         p.batteryWh = root.number("batteryWh");
         p.reserve = root.numberOr("reserve", 0.2);
         p.cruiseSpeed = root.number("cruiseSpeed");

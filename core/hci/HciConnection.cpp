@@ -8,6 +8,7 @@
 
 #include <QScopeGuard>
 #include <QTcpSocket>
+#include <QCoreApplication>
 
 namespace sortie::hci {
 namespace {
@@ -20,12 +21,12 @@ constexpr int32_t kLastOperationType = 6; // 3..6: streams and cancellation, nev
 QString typeName(int32_t type)
 {
     const auto name = HciMessageTypes::name(type);
-    return name.empty() ? QStringLiteral("type %1").arg(type) : QString::fromLatin1(name.data(), qsizetype(name.size()));
+    return name.empty() ? QCoreApplication::translate("HciConnection", "type %1").arg(type) : QString::fromLatin1(name.data(), qsizetype(name.size()));
 }
 
 QString seconds(std::chrono::milliseconds ms)
 {
-    return ms.count() % 1000 ? QStringLiteral("%1 ms").arg(ms.count()) : QStringLiteral("%1 s").arg(ms.count() / 1000);
+    return ms.count() % 1000 ? QCoreApplication::translate("HciConnection", "%1 ms").arg(ms.count()) : QStringLiteral("%1 s").arg(ms.count() / 1000);
 }
 
 } // namespace
@@ -37,13 +38,13 @@ HciConnection::HciConnection(QObject *parent)
     m_connectTimer.setSingleShot(true);
     connect(&m_connectTimer, &QTimer::timeout, this, [this] {
         closeWith({HciError::Kind::Unreachable,
-                   QStringLiteral("No answer from %1 within %2: check the address and the network").arg(m_peer, seconds(m_connectTimeout))});
+                   QCoreApplication::translate("HciConnection", "No answer from %1 within %2: check the address and the network").arg(m_peer, seconds(m_connectTimeout))});
     });
     connect(m_socket, &QTcpSocket::connected, this, &HciConnection::onConnected);
     connect(m_socket, &QTcpSocket::readyRead, this, &HciConnection::onReadyRead);
     connect(m_socket, &QTcpSocket::errorOccurred, this, &HciConnection::onSocketError);
     connect(m_socket, &QTcpSocket::disconnected, this, [this] {
-        closeWith({HciError::Kind::Disconnected, QStringLiteral("The server at %1 closed the connection").arg(m_peer)});
+        closeWith({HciError::Kind::Disconnected, QCoreApplication::translate("HciConnection", "The server at %1 closed the connection").arg(m_peer)});
     });
 }
 
@@ -60,7 +61,7 @@ HciConnection::~HciConnection()
     const auto pending = std::exchange(m_pending, {});
     for (const auto &reply : pending)
         if (reply)
-            reply->fail({HciError::Kind::Cancelled, QStringLiteral("The connection was closed by the application")});
+            reply->fail({HciError::Kind::Cancelled, QCoreApplication::translate("HciConnection", "The connection was closed by the application")});
 }
 
 void HciConnection::connectToServer(const QString &host, quint16 port)
@@ -77,7 +78,7 @@ void HciConnection::connectToServer(const QString &host, quint16 port)
 
 void HciConnection::disconnectFromServer()
 {
-    closeWith({HciError::Kind::Disconnected, QStringLiteral("Disconnected from %1").arg(m_peer)});
+    closeWith({HciError::Kind::Disconnected, QCoreApplication::translate("HciConnection", "Disconnected from %1").arg(m_peer)});
 }
 
 void HciConnection::drop(const HciError &reason)
@@ -105,20 +106,20 @@ void HciConnection::onSocketError()
         switch (error) {
         case QAbstractSocket::ConnectionRefusedError:
             closeWith({HciError::Kind::Refused,
-                       QStringLiteral("%1 refused the connection").arg(m_peer)});
+                       QCoreApplication::translate("HciConnection", "%1 refused the connection").arg(m_peer)});
             return;
         case QAbstractSocket::HostNotFoundError:
-            closeWith({HciError::Kind::Unreachable, QStringLiteral("The host in %1 cannot be found").arg(m_peer)});
+            closeWith({HciError::Kind::Unreachable, QCoreApplication::translate("HciConnection", "The host in %1 cannot be found").arg(m_peer)});
             return;
         default:
-            closeWith({HciError::Kind::Unreachable, QStringLiteral("Cannot reach %1: %2").arg(m_peer, m_socket->errorString())});
+            closeWith({HciError::Kind::Unreachable, QCoreApplication::translate("HciConnection", "Cannot reach %1: %2").arg(m_peer, m_socket->errorString())});
             return;
         }
     }
     if (error == QAbstractSocket::RemoteHostClosedError)
-        closeWith({HciError::Kind::Disconnected, QStringLiteral("The server at %1 closed the connection").arg(m_peer)});
+        closeWith({HciError::Kind::Disconnected, QCoreApplication::translate("HciConnection", "The server at %1 closed the connection").arg(m_peer)});
     else
-        closeWith({HciError::Kind::Disconnected, QStringLiteral("Connection to %1 lost: %2").arg(m_peer, m_socket->errorString())});
+        closeWith({HciError::Kind::Disconnected, QCoreApplication::translate("HciConnection", "Connection to %1 lost: %2").arg(m_peer, m_socket->errorString())});
 }
 
 void HciConnection::closeWith(const HciError &reason)
@@ -137,7 +138,7 @@ void HciConnection::closeWith(const HciError &reason)
     for (const auto &reply : pending) {
         if (reply)
             reply->fail({HciError::Kind::Disconnected,
-                         QStringLiteral("%1 got no answer: %2").arg(reply->requestName(), reason.message())});
+                         QCoreApplication::translate("HciConnection", "%1 got no answer: %2").arg(reply->requestName(), reason.message())});
         if (!self)
             return;
     }
@@ -169,19 +170,19 @@ HciReply *HciConnection::send(const google::protobuf::Message &request, std::chr
     auto *reply = new HciReply(-1, type.value_or(-1), this);
     if (!type) {
         reply->failLater({HciError::Kind::Protocol,
-                          QStringLiteral("%1 is not an HCI message").arg(QString::fromStdString(request.GetDescriptor()->name()))});
+                          QCoreApplication::translate("HciConnection", "%1 is not an HCI message").arg(QString::fromStdString(request.GetDescriptor()->name()))});
         return reply;
     }
     if (m_state != State::Connected) {
         reply->failLater({HciError::Kind::Disconnected,
-                          QStringLiteral("%1 not sent: not connected to the server").arg(typeName(*type))});
+                          QCoreApplication::translate("HciConnection", "%1 not sent: not connected to the server").arg(typeName(*type))});
         return reply;
     }
     const int32_t id = nextInstanceId();
     m_outBuffer.clear();
     if (!appendHciFrame(m_outBuffer, id, request)) {
         reply->failLater({HciError::Kind::Protocol,
-                          QStringLiteral("%1 not sent: missing %2")
+                          QCoreApplication::translate("HciConnection", "%1 not sent: missing %2")
                               .arg(typeName(*type), QString::fromStdString(request.InitializationErrorString()))});
         return reply;
     }
@@ -206,7 +207,7 @@ void HciConnection::onTimeout(int32_t instanceId)
     if (!reply)
         return;
     qCWarning(lcHci).noquote() << reply->requestName() << instanceId << "timed out";
-    reply->fail({HciError::Kind::Timeout, QStringLiteral("No answer to %1 within %2")
+    reply->fail({HciError::Kind::Timeout, QCoreApplication::translate("HciConnection", "No answer to %1 within %2")
                                               .arg(reply->requestName(), seconds(std::chrono::milliseconds(reply->m_timeout.interval())))});
 }
 
@@ -238,7 +239,7 @@ void HciConnection::onReadyRead()
                 dispatch(*frame);
             } else {
                 const auto &dropped = std::get<HciDroppedFrame>(*result);
-                dropFrame(QStringLiteral("%1 at byte %2: %3")
+                dropFrame(QCoreApplication::translate("HciConnection", "%1 at byte %2: %3")
                               .arg(QString::fromLatin1(toString(dropped.reason)))
                               .arg(dropped.offset)
                               .arg(QString::fromStdString(dropped.detail)));
@@ -266,14 +267,14 @@ void HciConnection::dispatch(HciFrame &frame)
         if (type == kNotificationType)
             dispatchNotification(frame);
         else
-            dropFrame(QStringLiteral("%1 with instance id -1 is not a notification").arg(typeName(type)));
+            dropFrame(QCoreApplication::translate("HciConnection", "%1 with instance id -1 is not a notification").arg(typeName(type)));
         if (self) // a subscriber may have deleted us
             m_decoder.recycle(std::move(frame.message));
         return;
     }
     const QPointer<HciReply> reply = m_pending.value(id);
     if (!reply) {
-        dropFrame(QStringLiteral("%1 for instance id %2, which no request waits for (answered after its timeout?)")
+        dropFrame(QCoreApplication::translate("HciConnection", "%1 for instance id %2, which no request waits for (answered after its timeout?)")
                       .arg(typeName(type))
                       .arg(id));
         return;
@@ -298,7 +299,7 @@ void HciConnection::dispatch(HciFrame &frame)
     }
     const auto expected = HciMessageTypes::responseFor(reply->requestType());
     if (expected && *expected != type) {
-        reply->fail({HciError::Kind::Protocol, QStringLiteral("The server answered %1 with %2 instead of %3")
+        reply->fail({HciError::Kind::Protocol, QCoreApplication::translate("HciConnection", "The server answered %1 with %2 instead of %3")
                                                    .arg(reply->requestName(), typeName(type), typeName(*expected))});
         return;
     }

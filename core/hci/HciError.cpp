@@ -3,6 +3,7 @@
 #include "Messages.pb.h"
 
 #include <QMetaEnum>
+#include <QCoreApplication>
 
 namespace sortie::hci {
 
@@ -29,19 +30,19 @@ HciError HciError::fromServer(const pb::Error &error)
         if (e.m_message.isEmpty()) {
             const auto &licence = detail.licenseconstrainterrordetail();
             e.m_message = licence.has_permission()
-                ? QStringLiteral("The server's licence does not allow this (%1)").arg(QString::fromStdString(licence.permission()))
-                : QStringLiteral("The server's licence does not allow this");
+                ? QCoreApplication::translate("HciError", "The server's licence does not allow this (%1)").arg(QString::fromStdString(licence.permission()))
+                : QCoreApplication::translate("HciError", "The server's licence does not allow this");
         }
     } else if (detail.has_unsupportedprotocolversiondetail()) {
         e.m_kind = Kind::Version;
         const auto &server = detail.unsupportedprotocolversiondetail().serverversion();
         const QString version = QStringLiteral("%1.%2").arg(server.major()).arg(server.minor());
-        e.m_message = QStringLiteral("The server speaks HCI protocol %1; Sortie speaks 2.0%2")
+        e.m_message = QCoreApplication::translate("HciError", "The server speaks HCI protocol %1; Sortie speaks 2.0%2")
                           .arg(version, e.m_message.isEmpty() ? QString() : QStringLiteral(" (") + e.m_message + u')');
     }
     if (e.m_message.isEmpty())
-        e.m_message = e.m_code ? QStringLiteral("The server refused the request (error %1)").arg(e.m_code)
-                               : QStringLiteral("The server refused the request without a reason");
+        e.m_message = e.m_code ? QCoreApplication::translate("HciError", "The server refused the request (error %1)").arg(e.m_code)
+                               : QCoreApplication::translate("HciError", "The server refused the request without a reason");
     return e;
 }
 
@@ -61,10 +62,10 @@ QString HciError::kindName(Kind kind)
 QString HciError::toString() const
 {
     if (!isError())
-        return QStringLiteral("no error");
+        return QCoreApplication::translate("HciError", "no error");
     QString s = kindName(m_kind) + QStringLiteral(": ") + m_message;
     if (m_code)
-        s += QStringLiteral(" (code %1)").arg(m_code);
+        s += QCoreApplication::translate("HciError", " (code %1)").arg(m_code);
     return s;
 }
 

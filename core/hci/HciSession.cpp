@@ -7,6 +7,7 @@
 #include "Messages.pb.h"
 
 #include <QLocale>
+#include <QCoreApplication>
 
 namespace sortie::hci {
 namespace {
@@ -148,7 +149,7 @@ HciReply *HciSession::failedReply(const google::protobuf::Message &request, cons
 {
     const auto *descriptor = request.GetDescriptor();
     auto *reply = new HciReply(-1, -1, m_connection);
-    reply->failLater(HciError(error.kind(), QString::fromStdString(descriptor->name()) + QStringLiteral(" not sent: ")
+    reply->failLater(HciError(error.kind(), QString::fromStdString(descriptor->name()) + QCoreApplication::translate("HciSession", " not sent: ")
                                                 + error.message()));
     return reply;
 }
@@ -157,8 +158,8 @@ HciReply *HciSession::send(const google::protobuf::Message &request, std::chrono
 {
     if (m_state != State::Ready) {
         const QString why = m_state == State::Reconnecting
-            ? QStringLiteral("the connection to the server is being re-established")
-            : QStringLiteral("not logged in to a server");
+            ? QCoreApplication::translate("HciSession", "the connection to the server is being re-established")
+            : QCoreApplication::translate("HciSession", "not logged in to a server");
         return failedReply(request, {HciError::Kind::Disconnected, why});
     }
     std::unique_ptr<google::protobuf::Message> stamped(request.New());
@@ -181,7 +182,7 @@ void HciSession::watchForSilence(HciReply *reply)
             return;
         qCWarning(lcHci).noquote() << "nothing from the server since" << reply->requestName() << "was sent; the link seems dead";
         m_connection->drop({HciError::Kind::Disconnected,
-                            QStringLiteral("The server sent nothing while %1 waited (%2); the link seems dead")
+                            QCoreApplication::translate("HciSession", "The server sent nothing while %1 waited (%2); the link seems dead")
                                 .arg(reply->requestName(), reply->error().message())});
     });
 }
@@ -219,7 +220,7 @@ void HciSession::authorize(int32_t clientId)
         }
         const auto &response = reply->response<pb::AuthorizeHciResponse>();
         if (response.has_serverversion() && response.serverversion().major() != kProtocolMajor) {
-            handshakeFailed({HciError::Kind::Version, QStringLiteral("The server speaks HCI protocol %1.%2; Sortie speaks %3.%4")
+            handshakeFailed({HciError::Kind::Version, QCoreApplication::translate("HciSession", "The server speaks HCI protocol %1.%2; Sortie speaks %3.%4")
                                                           .arg(response.serverversion().major())
                                                           .arg(response.serverversion().minor())
                                                           .arg(kProtocolMajor)
@@ -254,7 +255,7 @@ void HciSession::logIn()
             const HciError &e = reply->error();
             if (e.kind() == HciError::Kind::Server)
                 handshakeFailed(e.as(HciError::Kind::Authentication,
-                                     QStringLiteral("The server rejected the login '%1': %2").arg(m_login, e.message())));
+                                     QCoreApplication::translate("HciSession", "The server rejected the login '%1': %2").arg(m_login, e.message())));
             else
                 handshakeFailed(e);
             return;

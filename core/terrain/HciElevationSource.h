@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <vector>
+#include <QCoreApplication>
 
 namespace sortie::hci {
 class HciSession;
@@ -34,7 +35,7 @@ public:
 
     explicit HciElevationSource(hci::HciSession *session, QObject *parent = nullptr);
 
-    QString name() const override { return QStringLiteral("UgCS server"); }
+    QString name() const override { return QCoreApplication::translate("HciElevationSource", "UgCS server"); }
     ElevationSample sample(const GeoPoint &point) override;
     void samplePath(const SampledPath &path, std::vector<ElevationSample> &out) override;
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::terrain {
 
@@ -57,7 +58,7 @@ std::optional<HgtTile> HgtTile::fromData(QByteArrayView data, TileCell cell, con
     else if (data.size() == qsizetype(2) * 3601 * 3601)
         size = 3601;
     else
-        return fail(QStringLiteral("%1 bytes is not an SRTM tile (2884802 bytes for 3″ 1201×1201, 25934402 for 1″ 3601×3601); "
+        return fail(QCoreApplication::translate("HgtTile", "%1 bytes is not an SRTM tile (2884802 bytes for 3″ 1201×1201, 25934402 for 1″ 3601×3601); "
                                    "the file is truncated or not a .hgt tile")
                         .arg(data.size()));
     HgtTile tile(data.data(), size, cell);
@@ -65,7 +66,7 @@ std::optional<HgtTile> HgtTile::fromData(QByteArrayView data, TileCell cell, con
         for (int c = 0; c < size; ++c) {
             const int v = tile.raw(r, c);
             if (v != kVoid && (v < kLowest || v > kHighest))
-                return fail(QStringLiteral("height %1 m at row %2, column %3 is not a terrain height; the file is corrupt")
+                return fail(QCoreApplication::translate("HgtTile", "height %1 m at row %2, column %3 is not a terrain height; the file is corrupt")
                                 .arg(v).arg(r).arg(c));
         }
     }

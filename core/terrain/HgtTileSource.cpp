@@ -6,6 +6,7 @@
 #include <QFileInfo>
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::terrain {
 
@@ -25,12 +26,12 @@ HgtTileSource::HgtTileSource(const QString &path, QObject *parent)
         return;
     }
     if (!info.exists()) {
-        m_error = QStringLiteral("%1: no such file or folder").arg(path);
+        m_error = QCoreApplication::translate("HgtTileSource", "%1: no such file or folder").arg(path);
         return;
     }
     const auto cell = parseHgtName(info.fileName());
     if (!cell) {
-        m_error = QStringLiteral("%1: not an SRTM tile name (NxxEyyy.hgt names the tile's south-west corner)").arg(path);
+        m_error = QCoreApplication::translate("HgtTileSource", "%1: not an SRTM tile name (NxxEyyy.hgt names the tile's south-west corner)").arg(path);
         return;
     }
     m_files.insert(cell->key(), path);
@@ -42,7 +43,7 @@ HgtTileSource::~HgtTileSource() = default;
 
 QString HgtTileSource::name() const
 {
-    return QStringLiteral("SRTM tiles (%1)").arg(QDir::toNativeSeparators(m_path));
+    return QCoreApplication::translate("HgtTileSource", "SRTM tiles (%1)").arg(QDir::toNativeSeparators(m_path));
 }
 
 bool HgtTileSource::openAll()
@@ -73,7 +74,7 @@ const HgtTile *HgtTileSource::tileFor(TileCell cell)
             const qint64 size = loaded.file->size();
             const uchar *data = size > 0 ? loaded.file->map(0, size) : nullptr;
             if (!data && size > 0)
-                error = QStringLiteral("%1: cannot be mapped: %2").arg(*file, loaded.file->errorString());
+                error = QCoreApplication::translate("HgtTileSource", "%1: cannot be mapped: %2").arg(*file, loaded.file->errorString());
             else
                 loaded.tile = HgtTile::fromData(QByteArrayView(reinterpret_cast<const char *>(data), size), cell, *file, &error);
         }

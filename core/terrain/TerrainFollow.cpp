@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::terrain {
 
@@ -57,12 +58,12 @@ FollowResult followTerrain(const std::vector<FollowVertex> &pass, const FollowOp
     for (size_t i = 0; i < g.size(); ++i) {
         if (g[i].status == SampleStatus::Pending) {
             out.status = SampleStatus::Pending;
-            out.message = QStringLiteral("Waiting for terrain data from %1").arg(service.triedText());
+            out.message = QCoreApplication::translate("TerrainFollow", "Waiting for terrain data from %1").arg(service.triedText());
             return out;
         }
         if (!g[i].hasValue()) {
             out.status = SampleStatus::NoData;
-            out.message = QStringLiteral("No terrain data %1 m along the pass (tried: %2): terrain following needs the ground everywhere")
+            out.message = QCoreApplication::translate("TerrainFollow", "No terrain data %1 m along the pass (tried: %2): terrain following needs the ground everywhere")
                               .arg(QString::number(path.points[i].distance, 'f', 0), service.triedText());
             return out;
         }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::terrain {
 
@@ -30,8 +31,8 @@ ProfileRoute profileRouteOf(const mission::Route &route, mission::ScanPlanCache 
         w.row = p.segment;
         w.role = p.role;
         w.label = p.segment >= 0 && size_t(p.segment) < route.segments.size() && mission::isAreaScan(route.segments[size_t(p.segment)])
-                      ? QStringLiteral("%1, point %2").arg(mission::segmentLabel(route, p.segment)).arg(i + 1)
-                      : QStringLiteral("Waypoint %1").arg(i + 1);
+                      ? QCoreApplication::translate("TerrainProfile", "%1, point %2").arg(mission::segmentLabel(route, p.segment)).arg(i + 1)
+                      : QCoreApplication::translate("TerrainProfile", "Waypoint %1").arg(i + 1);
         // Within one following segment, the leg to its next point follows the ground.
         if (p.segment >= 0 && size_t(p.segment) < follow.size() && follow[size_t(p.segment)] && i + 1 < path.size()
             && path[i + 1].segment == p.segment)
@@ -55,9 +56,9 @@ QString legLabel(const ProfileRoute &route, int leg)
     const auto name = [&](int i) {
         return i >= 0 && size_t(i) < route.waypoints.size() && !route.waypoints[size_t(i)].label.isEmpty()
                    ? route.waypoints[size_t(i)].label
-                   : QStringLiteral("Waypoint %1").arg(i + 1);
+                   : QCoreApplication::translate("TerrainProfile", "Waypoint %1").arg(i + 1);
     };
-    return QStringLiteral("Leg %1 (%2 → %3)").arg(leg + 1).arg(name(leg), name(leg + 1));
+    return QCoreApplication::translate("TerrainProfile", "Leg %1 (%2 → %3)").arg(leg + 1).arg(name(leg), name(leg + 1));
 }
 
 TerrainProfile computeProfile(const ProfileRoute &route, ElevationService &service, double step)

@@ -1,6 +1,7 @@
 #include "TerrainRule.h"
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::terrain {
 
@@ -12,7 +13,7 @@ QString metres(double v) { return QString::number(v, 'f', 1); }
 
 QString waypointName(const ProfileRoute &route, size_t i)
 {
-    return route.waypoints[i].label.isEmpty() ? QStringLiteral("Waypoint %1").arg(i + 1) : route.waypoints[i].label;
+    return route.waypoints[i].label.isEmpty() ? QCoreApplication::translate("TerrainRule", "Waypoint %1").arg(i + 1) : route.waypoints[i].label;
 }
 
 int rowOf(const ProfileRoute &route, int waypoint)
@@ -40,12 +41,12 @@ std::vector<ValidationIssue> terrainIssues(const ProfileRoute &route, const Terr
             ++last;
         const bool home = route.waypoints[i].reference == HeightReference::AboveHome;
         const QString who = last == i ? waypointName(route, i)
-                                      : QStringLiteral("%1 to %2").arg(waypointName(route, i), waypointName(route, last));
+                                      : QCoreApplication::translate("TerrainRule", "%1 to %2").arg(waypointName(route, i), waypointName(route, last));
         out.push_back({Severity::Error, QStringLiteral("terrain-agl-no-data"),
-                       QStringLiteral("%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height "
+                       QCoreApplication::translate("TerrainRule", "%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height "
                                       "above sea level is unknown.")
-                           .arg(who, home ? QStringLiteral("home") : QStringLiteral("the ground"),
-                                home ? QStringLiteral("at home") : QStringLiteral("there"), tried),
+                           .arg(who, home ? QStringLiteral("home") : QCoreApplication::translate("TerrainRule", "the ground"),
+                                home ? QCoreApplication::translate("TerrainRule", "at home") : QStringLiteral("there"), tried),
                        rowOf(route, int(i))});
         i = last + 1;
     }
@@ -54,14 +55,14 @@ std::vector<ValidationIssue> terrainIssues(const ProfileRoute &route, const Terr
     for (const LowStretch &s : profile.lowStretches) {
         const double legStart = profile.path.vertexDistance[size_t(s.leg)];
         const double c = s.lowest.clearance;
-        const QString how = c >= 0 ? QStringLiteral("%1 m above the ground").arg(metres(c))
-                                   : QStringLiteral("%1 m below the ground").arg(metres(-c));
+        const QString how = c >= 0 ? QCoreApplication::translate("TerrainRule", "%1 m above the ground").arg(metres(c))
+                                   : QCoreApplication::translate("TerrainRule", "%1 m below the ground").arg(metres(-c));
         const QString span = s.toDistance > s.fromDistance
-                                 ? QStringLiteral(" (too low from %1 m to %2 m along it)").arg(metres(s.fromDistance - legStart),
+                                 ? QCoreApplication::translate("TerrainRule", " (too low from %1 m to %2 m along it)").arg(metres(s.fromDistance - legStart),
                                                                                               metres(s.toDistance - legStart))
                                  : QString();
         out.push_back({Severity::Error, QStringLiteral("terrain-clearance"),
-                       QStringLiteral("%1 flies %2 at %3 m along it%4, closer than the safe distance of %5 m.")
+                       QCoreApplication::translate("TerrainRule", "%1 flies %2 at %3 m along it%4, closer than the safe distance of %5 m.")
                            .arg(legLabel(route, s.leg), how, metres(s.lowest.distanceAlongLeg), span, metres(route.safeDistance)),
                        rowOf(route, s.leg)});
     }
@@ -78,13 +79,13 @@ std::vector<ValidationIssue> terrainIssues(const ProfileRoute &route, const Terr
         const double aStart = profile.path.vertexDistance[size_t(a.leg)], bStart = profile.path.vertexDistance[size_t(b.leg)];
         QString where;
         if (last == i)
-            where = QStringLiteral("%1: no terrain data from %2 m to %3 m along it").arg(legLabel(route, a.leg),
+            where = QCoreApplication::translate("TerrainRule", "%1: no terrain data from %2 m to %3 m along it").arg(legLabel(route, a.leg),
                                                                                        metres(a.fromDistance - aStart), metres(a.toDistance - aStart));
         else
-            where = QStringLiteral("No terrain data from %1 m along %2 to %3 m along %4")
+            where = QCoreApplication::translate("TerrainRule", "No terrain data from %1 m along %2 to %3 m along %4")
                         .arg(metres(a.fromDistance - aStart), legLabel(route, a.leg), metres(b.toDistance - bStart), legLabel(route, b.leg));
         out.push_back({Severity::Warning, QStringLiteral("terrain-no-data"),
-                       QStringLiteral("%1 (tried: %2); the clearance there is not checked.").arg(where, tried), rowOf(route, a.leg)});
+                       QCoreApplication::translate("TerrainRule", "%1 (tried: %2); the clearance there is not checked.").arg(where, tried), rowOf(route, a.leg)});
         i = last + 1;
     }
     return out;

@@ -2,6 +2,7 @@
 
 #include "TrafficLog.h"
 #include "TrafficPicture.h"
+#include <QCoreApplication>
 
 namespace sortie::traffic {
 
@@ -103,7 +104,7 @@ void SbsFeed::onReadyRead()
         } else {
             const auto &dropped = std::get<sbs::SbsError>(*result);
             ++m_dropped;
-            m_lastDropped = QStringLiteral("line %1: %2").arg(dropped.line).arg(QString::fromStdString(dropped.reason));
+            m_lastDropped = QCoreApplication::translate("SbsFeed", "line %1: %2").arg(dropped.line).arg(QString::fromStdString(dropped.reason));
             qCDebug(lcTraffic).noquote() << "SBS feed" << m_address << "dropped" << m_lastDropped;
         }
     }

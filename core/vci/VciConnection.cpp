@@ -3,6 +3,7 @@
 #include "VciLog.h"
 
 #include <QIODevice>
+#include <QCoreApplication>
 
 namespace sortie::vci {
 namespace {
@@ -14,6 +15,7 @@ QString describeRequest(VciVerb verb, const QString &uri)
 
 } // namespace
 
+// i18n: not text below (the error's name, for logs and the dump)
 const char *toString(VciResult::Error error)
 {
     switch (error) {
@@ -27,6 +29,7 @@ const char *toString(VciResult::Error error)
     }
     return "?";
 }
+// i18n: text again
 
 VciConnection::VciConnection(QObject *parent)
     : QObject(parent)
@@ -61,7 +64,7 @@ void VciConnection::attach(QIODevice *device, const QString &reasonForDetach)
     m_lineHeld = false;
     m_restoring = 0;
 
-    const QString why = reasonForDetach.isEmpty() ? QStringLiteral("the connection to the vehicle was closed") : reasonForDetach;
+    const QString why = reasonForDetach.isEmpty() ? QCoreApplication::translate("VciConnection", "the connection to the vehicle was closed") : reasonForDetach;
     if (m_inFlight) {
         Pending p = std::move(*m_inFlight);
         m_inFlight.reset();
@@ -82,10 +85,10 @@ void VciConnection::attach(QIODevice *device, const QString &reasonForDetach)
     }
     m_deviceConnections << connect(device, &QIODevice::readyRead, this, &VciConnection::onReadyRead);
     m_deviceConnections << connect(device, &QIODevice::aboutToClose, this,
-                                   [this] { setDevice(nullptr, QStringLiteral("the device was closed")); });
+                                   [this] { setDevice(nullptr, QCoreApplication::translate("VciConnection", "the device was closed")); });
     m_deviceConnections << connect(device, &QObject::destroyed, this, [this] {
         m_deviceConnections.clear(); // they die with it
-        attach(nullptr, QStringLiteral("the device was destroyed"));
+        attach(nullptr, QCoreApplication::translate("VciConnection", "the device was destroyed"));
     });
     emit attached();
     if (generation != m_generation)
@@ -152,11 +155,11 @@ quint64 VciConnection::request(VciVerb verb, const QString &uri, const nlohmann:
     const quint64 id = p.id;
 
     if (!VciWriter::isValidUri(uri.toStdString()) || (uri == QLatin1String("*") && verb != VciVerb::Unsubscribe)) {
-        finishLater(p, failure(p, VciResult::Error::InvalidRequest, QStringLiteral("\"%1\" is not a valid VCI URI").arg(uri)));
+        finishLater(p, failure(p, VciResult::Error::InvalidRequest, QCoreApplication::translate("VciConnection", "\"%1\" is not a valid VCI URI").arg(uri)));
     } else if (verb == VciVerb::Notify) {
-        finishLater(p, failure(p, VciResult::Error::InvalidRequest, QStringLiteral("a ground station does not send NOTIFY")));
+        finishLater(p, failure(p, VciResult::Error::InvalidRequest, QCoreApplication::translate("VciConnection", "a ground station does not send NOTIFY")));
     } else if (!m_device) {
-        finishLater(p, failure(p, VciResult::Error::NotConnected, QStringLiteral("not connected to the vehicle")));
+        finishLater(p, failure(p, VciResult::Error::NotConnected, QCoreApplication::translate("VciConnection", "not connected to the vehicle")));
     } else {
         m_queue.push_back(std::move(p));
         pump();
@@ -185,7 +188,7 @@ void VciConnection::pump()
         m_queue.pop_front();
         if (p.deadline.hasExpired()) {
             ++m_stats.timeouts;
-            finishLater(p, failure(p, VciResult::Error::Timeout, QStringLiteral("no answer in time (it waited behind other requests)")));
+            finishLater(p, failure(p, VciResult::Error::Timeout, QCoreApplication::translate("VciConnection", "no answer in time (it waited behind other requests)")));
             continue;
         }
         std::string bytes;
@@ -203,7 +206,7 @@ void VciConnection::write(const std::string &bytes)
         return;
     const qint64 n = m_device->write(bytes.data(), qint64(bytes.size()));
     if (n != qint64(bytes.size())) {
-        const QString why = QStringLiteral("writing to the vehicle failed: %1").arg(m_device->errorString());
+        const QString why = QCoreApplication::translate("VciConnection", "writing to the vehicle failed: %1").arg(m_device->errorString());
         qCWarning(lcVci) << why;
         setDevice(nullptr, why);
         return;
@@ -246,7 +249,7 @@ void VciConnection::handle(VciMessage &&m)
             m_lineHeld = false;
             qCInfo(lcVci) << "dropped a late answer to a request that had timed out:" << m.status;
         } else {
-            const QString why = QStringLiteral("the vehicle sent an answer (%1) to no request").arg(m.status);
+            const QString why = QCoreApplication::translate("VciConnection", "the vehicle sent an answer (%1) to no request").arg(m.status);
             qCWarning(lcVci) << why;
             emit protocolError(why);
         }
@@ -264,13 +267,14 @@ void VciConnection::handle(VciMessage &&m)
         answer(reply.status, reply.body);
         return;
     }
-    answer(501, nlohmann::json{{"error", "Sortie serves no " + std::string(toString(m.verb)) + " " + m.uri}});
+    answer(501, nlohmann::json{{"error", "Sortie serves no " // i18n: not text (an answer to the vehicle)
+                                                   + std::string(toString(m.verb)) + " " + m.uri}});
 }
 
 void VciConnection::handle(const VciParseError &e)
 {
     ++m_stats.parseErrors;
-    const QString why = QStringLiteral("unreadable message from the vehicle at byte %1: %2").arg(e.offset).arg(QString::fromStdString(e.message));
+    const QString why = QCoreApplication::translate("VciConnection", "unreadable message from the vehicle at byte %1: %2").arg(e.offset).arg(QString::fromStdString(e.message));
     qCWarning(lcVci) << why;
     if (e.kindKnown && e.kind == VciMessageKind::Response) {
         if (m_inFlight) {
@@ -305,7 +309,7 @@ VciResult VciConnection::resultFor(const Pending &p, VciMessage &&m) const
     if (m.status / 100 == 2)
         return r;
     r.error = VciResult::Error::Status;
-    r.message = QStringLiteral("%1: the vehicle answered %2 %3").arg(describeRequest(p.verb, p.uri)).arg(m.status).arg(r.reason);
+    r.message = QCoreApplication::translate("VciConnection", "%1: the vehicle answered %2 %3").arg(describeRequest(p.verb, p.uri)).arg(m.status).arg(r.reason);
     if (r.body.is_object() && r.body.contains("error") && r.body["error"].is_string())
         r.message += QStringLiteral(": ") + QString::fromStdString(r.body["error"].get<std::string>());
     return r;
@@ -342,7 +346,7 @@ void VciConnection::onTimer()
         ++m_stats.timeouts;
         m_lineHeld = true; // until its late answer comes or the grace passes
         m_heldUntil = QDeadlineTimer(m_lateReplyGrace);
-        complete(p, failure(p, VciResult::Error::Timeout, QStringLiteral("the vehicle did not answer in time")));
+        complete(p, failure(p, VciResult::Error::Timeout, QCoreApplication::translate("VciConnection", "the vehicle did not answer in time")));
     }
     if (m_lineHeld && m_heldUntil.hasExpired()) {
         m_lineHeld = false;
@@ -359,7 +363,7 @@ void VciConnection::onTimer()
     }
     for (Pending &p : expired) {
         ++m_stats.timeouts;
-        complete(p, failure(p, VciResult::Error::Timeout, QStringLiteral("no answer in time (it waited behind other requests)")));
+        complete(p, failure(p, VciResult::Error::Timeout, QCoreApplication::translate("VciConnection", "no answer in time (it waited behind other requests)")));
     }
     pump();
 }

@@ -2,6 +2,7 @@
 
 #include <QUrl>
 #include <QUrlQuery>
+#include <QCoreApplication>
 
 namespace sortie::vci {
 namespace {
@@ -19,7 +20,7 @@ std::optional<VciEndpoint> VciEndpoint::parse(const QString &text, QString *erro
 {
     const QUrl url(text, QUrl::StrictMode);
     if (!url.isValid())
-        return failWith(error, QStringLiteral("\"%1\" is not a URL: %2").arg(text, url.errorString()));
+        return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\" is not a URL: %2").arg(text, url.errorString()));
     VciEndpoint e;
     const QString scheme = url.scheme().toLower();
     if (scheme == QLatin1String("tcp")) {
@@ -27,17 +28,17 @@ std::optional<VciEndpoint> VciEndpoint::parse(const QString &text, QString *erro
         e.host = url.host();
         const int port = url.port(-1);
         if (e.host.isEmpty() || port <= 0 || port > 65535)
-            return failWith(error, QStringLiteral("\"%1\" needs a host and a port: tcp://host:port").arg(text));
+            return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\" needs a host and a port: tcp://host:port").arg(text));
         e.port = quint16(port);
         return e;
     }
     if (scheme != QLatin1String("serial"))
-        return failWith(error, QStringLiteral("\"%1\": use tcp://host:port or serial:/dev/name").arg(text));
+        return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\": use tcp://host:port or serial:/dev/name").arg(text));
 
     e.kind = Kind::Serial;
     e.device = url.path();
     if (e.device.isEmpty())
-        return failWith(error, QStringLiteral("\"%1\" names no serial device").arg(text));
+        return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\" names no serial device").arg(text));
     const QUrlQuery query(url);
     for (const auto &[key, value] : query.queryItems(QUrl::FullyDecoded)) {
         const QString k = key.toLower(), v = value.toLower();
@@ -67,10 +68,10 @@ std::optional<VciEndpoint> VciEndpoint::parse(const QString &text, QString *erro
             else if (v == QLatin1String("software")) e.flowControl = QSerialPort::SoftwareControl;
             else good = false;
         } else {
-            return failWith(error, QStringLiteral("\"%1\": unknown serial setting \"%2\" (baud, databits, parity, stopbits, flow)").arg(text, key));
+            return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\": unknown serial setting \"%2\" (baud, databits, parity, stopbits, flow)").arg(text, key));
         }
         if (!good)
-            return failWith(error, QStringLiteral("\"%1\": %2=%3 is not a valid value").arg(text, key, value));
+            return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\": %2=%3 is not a valid value").arg(text, key, value));
     }
     return e;
 }
@@ -82,7 +83,7 @@ QString VciEndpoint::toString() const
     static const char *parities[] = {"none", "?", "even", "odd", "space", "mark"};
     const char *stop = stopBits == QSerialPort::TwoStop ? "2" : stopBits == QSerialPort::OneAndHalfStop ? "1.5" : "1";
     const char *flow = flowControl == QSerialPort::HardwareControl ? "hardware" : flowControl == QSerialPort::SoftwareControl ? "software" : "none";
-    return QStringLiteral("serial:%1?baud=%2&databits=%3&parity=%4&stopbits=%5&flow=%6")
+    return QCoreApplication::translate("VciEndpoint", "serial:%1?baud=%2&databits=%3&parity=%4&stopbits=%5&flow=%6")
         .arg(device)
         .arg(baudRate)
         .arg(int(dataBits))

@@ -4,6 +4,7 @@
 
 #include <QSerialPort>
 #include <QTcpSocket>
+#include <QCoreApplication>
 
 namespace sortie::vci {
 
@@ -48,14 +49,14 @@ void VciTransport::open()
 void VciTransport::close()
 {
     m_retry.stop();
-    drop(QStringLiteral("closed by the operator"));
+    drop(QCoreApplication::translate("VciTransport", "closed by the operator"));
     setState(State::Closed);
 }
 
 void VciTransport::reopen()
 {
     m_retry.stop();
-    drop(QStringLiteral("reconnecting at the operator's request"));
+    drop(QCoreApplication::translate("VciTransport", "reconnecting at the operator's request"));
     m_delay = m_firstDelay;
     attempt();
 }
@@ -69,7 +70,7 @@ void VciTransport::attempt()
         connect(socket, &QTcpSocket::connected, this, &VciTransport::onOpened);
         connect(socket, &QAbstractSocket::errorOccurred, this, [this, socket] { onFailed(socket, socket->errorString()); });
         connect(socket, &QAbstractSocket::disconnected, this,
-                [this, socket] { onFailed(socket, QStringLiteral("the vehicle closed the connection")); });
+                [this, socket] { onFailed(socket, QCoreApplication::translate("VciTransport", "the vehicle closed the connection")); });
         socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
         socket->connectToHost(m_endpoint.host, m_endpoint.port);
         return;
@@ -83,7 +84,7 @@ void VciTransport::attempt()
     port->setStopBits(m_endpoint.stopBits);
     port->setFlowControl(m_endpoint.flowControl);
     if (!port->open(QIODevice::ReadWrite)) {
-        onFailed(port, QStringLiteral("cannot open %1: %2").arg(m_endpoint.device, port->errorString()));
+        onFailed(port, QCoreApplication::translate("VciTransport", "cannot open %1: %2").arg(m_endpoint.device, port->errorString()));
         return;
     }
     connect(port, &QSerialPort::errorOccurred, this, [this, port](QSerialPort::SerialPortError e) {

@@ -3,6 +3,7 @@
 #include "CommandLog.h"
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::vehicle {
 
@@ -276,9 +277,9 @@ void Vehicle::disarm()
 void Vehicle::setMode(const QString &mode)
 {
     const FlightMode m = modeFromName(mode.toStdString());
-    const QString logged = QStringLiteral("mode %1").arg(mode);
+    const QString logged = QCoreApplication::translate("Vehicle", "mode %1").arg(mode);
     if (m == FlightMode::Unknown) {
-        finisher(QStringLiteral("mode"), logged)(CommandResult::failure(QStringLiteral("\"%1\" is not a flight mode").arg(mode)));
+        finisher(QStringLiteral("mode"), logged)(CommandResult::failure(QCoreApplication::translate("Vehicle", "\"%1\" is not a flight mode").arg(mode)));
         return;
     }
     if (m_link)
@@ -288,7 +289,7 @@ void Vehicle::setMode(const QString &mode)
 void Vehicle::takeoff(double altitude)
 {
     if (m_link)
-        m_link->takeoff(altitude, finisher(QStringLiteral("takeoff"), QStringLiteral("takeoff to %1 m").arg(altitude)));
+        m_link->takeoff(altitude, finisher(QStringLiteral("takeoff"), QCoreApplication::translate("Vehicle", "takeoff to %1 m").arg(altitude)));
 }
 
 void Vehicle::land()
@@ -300,7 +301,7 @@ void Vehicle::land()
 void Vehicle::returnHome()
 {
     if (m_link)
-        m_link->returnHome(finisher(QStringLiteral("returnHome"), QStringLiteral("return home")));
+        m_link->returnHome(finisher(QStringLiteral("returnHome"), QCoreApplication::translate("Vehicle", "return home")));
 }
 
 } // namespace sortie::vehicle

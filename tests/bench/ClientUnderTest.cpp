@@ -17,7 +17,8 @@ ClientUnderTest::ClientUnderTest(bool withWindow)
         return;
     m_engine = std::make_unique<QQmlApplicationEngine>();
     ui::addImportPaths(*m_engine);
-    m_engine->setInitialProperties(ui::mainWindowProperties(m_graph, m_settings));
+    m_translations = std::make_unique<ui::Translations>(m_settings, *m_engine);
+    m_engine->setInitialProperties(ui::mainWindowProperties(m_graph, m_settings, *m_translations));
     m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
     if (m_engine->rootObjects().isEmpty())
         return;

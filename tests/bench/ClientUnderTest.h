@@ -5,6 +5,7 @@
 #include "ConnectionController.h"
 #include "MissionController.h"
 #include "PasswordVault.h"
+#include "Translations.h"
 #include "VehicleFleet.h"
 
 #include <QQmlApplicationEngine>
@@ -45,6 +46,7 @@ private:
     ui::AppSettings m_settings;
     client::ClientGraph m_graph;
     std::unique_ptr<QQmlApplicationEngine> m_engine;
+    std::unique_ptr<ui::Translations> m_translations;
     QQuickWindow *m_window = nullptr;
     bool m_withWindow;
 };

@@ -49,7 +49,10 @@ ClientWindow::ClientWindow(Options options)
     QObject::connect(&m_graph->connection(), &client::ConnectionController::ready, m_settings.get(), &ui::AppSettings::loginSucceeded);
     m_engine = std::make_unique<QQmlApplicationEngine>();
     ui::addImportPaths(*m_engine);
-    m_engine->setInitialProperties(ui::mainWindowProperties(*m_graph, *m_settings));
+    m_translations = std::make_unique<ui::Translations>(*m_settings, *m_engine,
+                                                        options.translationsFolder.isEmpty() ? QString::fromLatin1(ui::Translations::kBuiltIn)
+                                                                                             : options.translationsFolder);
+    m_engine->setInitialProperties(ui::mainWindowProperties(*m_graph, *m_settings, *m_translations));
     m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
     if (m_engine->rootObjects().isEmpty()) {
         m_error = QStringLiteral("Main.qml did not load");
@@ -75,6 +78,7 @@ ClientWindow::ClientWindow(Options options)
 ClientWindow::~ClientWindow()
 {
     m_engine.reset();
+    m_translations.reset();
     m_graph.reset();
     m_vci.reset();
     m_server.reset();

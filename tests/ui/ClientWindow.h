@@ -11,6 +11,7 @@
 #include "PasswordVault.h"
 #include "SimVciFleet.h"
 #include "SimWorld.h"
+#include "Translations.h"
 #include "VehicleFleet.h"
 
 #include <QGeoCoordinate>
@@ -46,6 +47,8 @@ public:
         // Runs once the simulator listens, before the client is built: what a previous run left
         // behind that names this server (its autosaves).
         std::function<void(ClientWindow &)> beforeClient;
+        // Where the translations (sortie_<code>.qm) are: empty, the program's own resources.
+        QString translationsFolder;
     };
     explicit ClientWindow(Options options);
     ClientWindow() : ClientWindow(Options{}) {}
@@ -77,6 +80,7 @@ public:
     sim::HciServer &server() { return *m_server; }
     sim::SimVciFleet &vci() { return *m_vci; }
     ui::AppSettings &settings() { return *m_settings; }
+    ui::Translations &translations() { return *m_translations; }
     client::ClientGraph &graph() { return *m_graph; }
     client::ConnectionController &connection() { return m_graph->connection(); }
     client::MissionController &missions() { return m_graph->missions(); }
@@ -92,6 +96,7 @@ private:
     std::unique_ptr<ui::AppSettings> m_settings;
     std::unique_ptr<client::ClientGraph> m_graph;
     std::unique_ptr<QQmlApplicationEngine> m_engine;
+    std::unique_ptr<ui::Translations> m_translations;
     QQuickWindow *m_window = nullptr;
     QString m_error;
 };

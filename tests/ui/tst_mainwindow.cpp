@@ -11,6 +11,7 @@
 #include "RouteLayer.h"
 #include "SortieUi.h"
 #include "TileHttpServer.h"
+#include "Translations.h"
 #include "VehicleLayer.h"
 
 #include <QDir>
@@ -110,6 +111,7 @@ class TestMainWindow : public QObject
     std::unique_ptr<AppSettings> m_settings;
     std::unique_ptr<sortie::client::ClientGraph> m_client; // the program's controllers, not logged in
     std::unique_ptr<QQmlApplicationEngine> m_engine;
+    std::unique_ptr<sortie::ui::Translations> m_translations;
     QQuickWindow *m_window = nullptr;
 
     template <typename T = QObject>
@@ -154,7 +156,8 @@ private slots:
         m_client = std::make_unique<sortie::client::ClientGraph>(m_storage.get(), sortie::client::ClientGraph::Options{});
         m_engine = std::make_unique<QQmlApplicationEngine>();
         addImportPaths(*m_engine);
-        m_engine->setInitialProperties(mainWindowProperties(*m_client, *m_settings));
+        m_translations = std::make_unique<sortie::ui::Translations>(*m_settings, *m_engine);
+        m_engine->setInitialProperties(mainWindowProperties(*m_client, *m_settings, *m_translations));
         m_engine->load(QUrl(QString::fromLatin1(kMainQml)));
         QVERIFY(!m_engine->rootObjects().isEmpty());
         m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
@@ -167,6 +170,7 @@ private slots:
     void cleanup()
     {
         m_engine.reset();
+        m_translations.reset();
         m_client.reset();
         m_settings.reset();
         m_storage.reset();

@@ -4,6 +4,7 @@
 
 #include <QFile>
 #include <QtEndian>
+#include <QCoreApplication>
 
 namespace sortie::ui {
 
@@ -47,11 +48,11 @@ std::optional<LandOutlines> LandOutlines::fromData(const QByteArray &compressed,
 {
     const QByteArray data = qUncompress(compressed);
     if (data.isEmpty()) {
-        *error = QStringLiteral("the land outline file is not compressed data");
+        *error = QCoreApplication::translate("LandOutlines", "the land outline file is not compressed data");
         return std::nullopt;
     }
     if (!data.startsWith(kMagic)) {
-        *error = QStringLiteral("the land outline file does not start with %1").arg(QLatin1String(kMagic.data()));
+        *error = QCoreApplication::translate("LandOutlines", "the land outline file does not start with %1").arg(QLatin1String(kMagic.data()));
         return std::nullopt;
     }
     Reader reader(data);
@@ -59,7 +60,7 @@ std::optional<LandOutlines> LandOutlines::fromData(const QByteArray &compressed,
     LandOutlines outlines;
     quint32 polygonCount = 0;
     if (!reader.read(&polygonCount) || polygonCount > reader.remaining() / 4) {
-        *error = QStringLiteral("the land outline file is truncated at its polygon count");
+        *error = QCoreApplication::translate("LandOutlines", "the land outline file is truncated at its polygon count");
         return std::nullopt;
     }
     outlines.m_polygons.reserve(polygonCount);
@@ -67,13 +68,13 @@ std::optional<LandOutlines> LandOutlines::fromData(const QByteArray &compressed,
         Polygon polygon;
         quint32 ringCount = 0;
         if (!reader.read(&ringCount) || ringCount > reader.remaining() / 4) {
-            *error = QStringLiteral("the land outline file is truncated in polygon %1").arg(p);
+            *error = QCoreApplication::translate("LandOutlines", "the land outline file is truncated in polygon %1").arg(p);
             return std::nullopt;
         }
         for (quint32 r = 0; r < ringCount; ++r) {
             quint32 pointCount = 0;
             if (!reader.read(&pointCount) || pointCount > reader.remaining() / 8) {
-                *error = QStringLiteral("the land outline file is truncated in polygon %1, ring %2").arg(p).arg(r);
+                *error = QCoreApplication::translate("LandOutlines", "the land outline file is truncated in polygon %1, ring %2").arg(p).arg(r);
                 return std::nullopt;
             }
             std::vector<QPointF> ring;
@@ -112,7 +113,7 @@ std::optional<LandOutlines> LandOutlines::fromResource(QString *error)
 {
     QFile file(QString::fromLatin1(kResourcePath));
     if (!file.open(QIODevice::ReadOnly)) {
-        *error = QStringLiteral("the built-in land outlines (%1) are missing").arg(file.fileName());
+        *error = QCoreApplication::translate("LandOutlines", "the built-in land outlines (%1) are missing").arg(file.fileName());
         return std::nullopt;
     }
     return fromData(file.readAll(), error);

@@ -1,6 +1,7 @@
 #include "ScaleBarLength.h"
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::ui {
 
@@ -29,16 +30,16 @@ ScaleBarLength ScaleBarLength::choose(double metersPerPixel, double maxPixels, b
     const double maxMeters = metersPerPixel * maxPixels;
     if (!imperial) {
         const double meters = roundDown(maxMeters);
-        const QString label = meters >= 1000 ? QStringLiteral("%1 km").arg(meters / 1000.0)
+        const QString label = meters >= 1000 ? QCoreApplication::translate("ScaleBarLength", "%1 km").arg(meters / 1000.0)
                                              : QStringLiteral("%1 m").arg(meters);
         return {meters / metersPerPixel, label};
     }
     if (maxMeters >= kMile) {
         const double miles = roundDown(maxMeters / kMile);
-        return {miles * kMile / metersPerPixel, QStringLiteral("%1 mi").arg(miles)};
+        return {miles * kMile / metersPerPixel, QCoreApplication::translate("ScaleBarLength", "%1 mi").arg(miles)};
     }
     const double feet = roundDown(maxMeters / kFoot);
-    return {feet * kFoot / metersPerPixel, QStringLiteral("%1 ft").arg(feet)};
+    return {feet * kFoot / metersPerPixel, QCoreApplication::translate("ScaleBarLength", "%1 ft").arg(feet)};
 }
 
 } // namespace sortie::ui

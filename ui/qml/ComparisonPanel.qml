@@ -65,10 +65,10 @@ ColumnLayout {
             Rectangle { width: 8; height: 8; radius: 4; color: ["#43a047", "#fb8c00", "#e53935"][level] }
             Label { text: leg; Layout.fillWidth: true }
             Label { text: samples; Layout.fillWidth: true }
-            Label { text: maxCrossTrack + " m"; Layout.fillWidth: true }
-            Label { text: meanCrossTrack + " m"; Layout.fillWidth: true }
-            Label { text: maxAltitude + " m"; Layout.fillWidth: true }
-            Label { text: meanAltitude + " m"; Layout.fillWidth: true }
+            Label { text: qsTr("%1 m").arg(maxCrossTrack); Layout.fillWidth: true }
+            Label { text: qsTr("%1 m").arg(meanCrossTrack); Layout.fillWidth: true }
+            Label { text: qsTr("%1 m").arg(maxAltitude); Layout.fillWidth: true }
+            Label { text: qsTr("%1 m").arg(meanAltitude); Layout.fillWidth: true }
             Label { text: reached; Layout.fillWidth: true }
         }
     }

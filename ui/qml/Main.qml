@@ -8,6 +8,7 @@ import Sortie.Ui
 ApplicationWindow {
     id: window
     required property AppSettings appSettings
+    required property Translations translations     // the UI's language: the selector's list, the one in use
     // The client's controllers: the one client graph (core/client's ClientGraph), handed over by
     // ui::mainWindowProperties. Every one is there; only `recovery` is null, in a program or fixture
     // that keeps no autosave folder.
@@ -66,6 +67,7 @@ ApplicationWindow {
     DisplayUnits {
         id: units
         systemName: window.appSettings.units
+        language: window.translations.active   // numbers in the language's format
     }
 
     header: ToolBar {
@@ -119,6 +121,20 @@ ApplicationWindow {
                 onClicked: window.appSettings.units = units.imperial ? "metric" : "imperial"
                 ToolTip.visible: hovered
                 ToolTip.text: qsTr("Switch between metric and imperial units")
+            }
+            ComboBox {
+                id: languageBox
+                objectName: "languageBox"
+                model: window.translations.languages
+                textRole: "name"
+                valueRole: "code"
+                // The list is made anew in each language: the choice is found again in it.
+                onModelChanged: currentIndex = Qt.binding(() => Math.max(0, indexOfValue(window.appSettings.language)))
+                // Wide enough for the longest name in the list, not more.
+                implicitContentWidthPolicy: ComboBox.WidestText
+                onActivated: window.appSettings.language = currentValue
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("The language of Sortie, applied at once")
             }
             ToolButton {
                 text: "?"

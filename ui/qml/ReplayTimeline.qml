@@ -143,7 +143,7 @@ ToolBar {
                 Menu {
                     id: exportMenu
                     Repeater {
-                        model: ["gpx", "kml", "csv"]
+                        model: ["gpx", "kml", "csv"] // i18n: not text (file formats, shown as GPX, KML, CSV)
                         MenuItem {
                             required property string modelData
                             text: modelData.toUpperCase()

@@ -28,7 +28,7 @@ GroupBox {
                 selectByMouse: true
                 onEditingFinished: if (Number(text) !== box.editor.radius) box.editor.setRadius(Number(text))
             }
-            Label { text: "m"; opacity: 0.7 }
+            Label { text: qsTr("m"); opacity: 0.7 }
         }
 
         Repeater {

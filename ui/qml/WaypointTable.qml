@@ -51,7 +51,7 @@ ColumnLayout {
             onClicked: table.doc.editor.setSpeed(table.selected, Number(bulkSpeed.text))
         }
         ComboBox {
-            model: ["AGL", "AMSL"]
+            model: ["AGL", "AMSL"] // i18n: not text (aviation abbreviations, the same in every language)
             enabled: table.selected.length > 0
             Layout.preferredWidth: 76
             onActivated: table.doc.editor.setAltitudeType(table.selected, currentIndex === 0 ? MissionEnums.Agl : MissionEnums.Amsl)

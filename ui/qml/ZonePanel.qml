@@ -155,9 +155,11 @@ Frame {
             ComboBox {
                 objectName: "zoneKind"
                 Layout.fillWidth: true
-                model: ["exclusion", "inclusion"]
+                textRole: "text"
+                valueRole: "value"
+                model: [{value: "exclusion", text: qsTr("exclusion")}, {value: "inclusion", text: qsTr("inclusion")}]
                 currentIndex: panel.editor.fields.kind === "inclusion" ? 1 : 0
-                onActivated: index => panel.editor.setKind(panel.chosen, model[index])
+                onActivated: index => panel.editor.setKind(panel.chosen, model[index].value)
             }
             Label { text: qsTr("Floor (m)") }
             TextField {
@@ -182,8 +184,11 @@ Frame {
                 id: referenceBox
                 objectName: "zoneReference"
                 Layout.fillWidth: true
-                model: ["AMSL", "AGL", "HOME"]
-                currentIndex: Math.max(0, model.indexOf(panel.editor.fields.reference || "AMSL"))
+                textRole: "text"
+                valueRole: "value"
+                // AMSL and AGL are aviation abbreviations, the same in every language; "above home" is not
+                model: [{value: "AMSL", text: "AMSL"}, {value: "AGL", text: "AGL"}, {value: "HOME", text: qsTr("HOME")}] // i18n: not text (AMSL, AGL)
+                currentIndex: Math.max(0, indexOfValue(panel.editor.fields.reference || "AMSL"))
                 onActivated: panel.setLimits()
             }
             RowLayout {
@@ -268,6 +273,6 @@ Frame {
 
     // As typed: the editor reads the numbers, takes empty as ground / unlimited and refuses the rest.
     function setLimits() {
-        panel.editor.setLimits(panel.chosen, floorField.text, ceilingField.text, referenceBox.currentText)
+        panel.editor.setLimits(panel.chosen, floorField.text, ceilingField.text, referenceBox.currentValue)
     }
 }

@@ -23,6 +23,7 @@ const QString kOrthophoto = QStringLiteral("map/orthophoto");
 const QString kOrthophotoOpacity = QStringLiteral("map/orthophotoOpacity");
 const QString kDem = QStringLiteral("terrain/demFolder");  // the key ClientGraph reads at start
 const QString kUnits = QStringLiteral("display/units");
+const QString kLanguage = QStringLiteral("display/language");
 const QString kGeometry = QStringLiteral("window/geometry");
 const QString kMaximized = QStringLiteral("window/maximized");
 } // namespace
@@ -267,6 +268,17 @@ QString AppSettings::units() const
 void AppSettings::setUnits(const QString &units)
 {
     write(kUnits, units);
+}
+
+QString AppSettings::language() const
+{
+    return m_storage->value(kLanguage).toString();
+}
+
+void AppSettings::setLanguage(const QString &language)
+{
+    if (language != this->language())
+        write(kLanguage, language);
 }
 
 QRect AppSettings::windowGeometry() const

@@ -15,7 +15,7 @@ class PasswordVault;
 namespace sortie::ui {
 
 // What the operator chose last time, kept in QSettings: server, user, "remember the password",
-// window geometry, map source and units. The password itself never goes into the settings: it is
+// window geometry, map source, units and language. The password itself never goes into the settings: it is
 // held in memory for the session and, while `rememberPassword` is on, kept in the operating
 // system's keyring by the vault, under the last server and user; turning "remember" off removes it
 // from there. Without a reachable keyring nothing is remembered (`canRememberPassword` is false and
@@ -41,6 +41,7 @@ class AppSettings : public QObject
     Q_PROPERTY(double orthophotoOpacity READ orthophotoOpacity WRITE setOrthophotoOpacity NOTIFY changed)
     Q_PROPERTY(QString demPath READ demPath WRITE setDemPath NOTIFY changed)
     Q_PROPERTY(QString units READ units WRITE setUnits NOTIFY changed)
+    Q_PROPERTY(QString language READ language WRITE setLanguage NOTIFY changed)
     Q_PROPERTY(QRect windowGeometry READ windowGeometry WRITE setWindowGeometry NOTIFY changed)
     Q_PROPERTY(bool windowMaximized READ windowMaximized WRITE setWindowMaximized NOTIFY changed)
 
@@ -78,6 +79,10 @@ public:
     void setDemPath(const QString &path);
     QString units() const;
     void setUnits(const QString &units);
+    // The UI's language: "" follows the system, else a language code ("en", "de", "es", "uk");
+    // Translations applies it, without a restart.
+    QString language() const;
+    void setLanguage(const QString &language);
     QRect windowGeometry() const;
     void setWindowGeometry(const QRect &geometry);
     bool windowMaximized() const;

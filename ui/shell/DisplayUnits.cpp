@@ -2,6 +2,8 @@
 
 #include "VehicleLink.h"
 
+#include <QLocale>
+
 #include <algorithm>
 #include <cmath>
 
@@ -9,6 +11,15 @@ namespace sortie::ui {
 
 namespace {
 constexpr double kFoot = 0.3048;
+
+// A number in the language's format (QLocale's default, which Translations sets): "12,5" in German.
+// No thousands separators, as before: "1500 ft".
+QString number(double value, int decimals)
+{
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return locale.toString(value, 'f', decimals);
+}
 constexpr double kMile = 1609.344;
 
 QString dms(double value, QChar positive, QChar negative)
@@ -55,6 +66,14 @@ void DisplayUnits::setCoordinateFormat(CoordinateFormat format)
     emit changed();
 }
 
+void DisplayUnits::setLanguage(const QString &language)
+{
+    if (language == m_language)
+        return;
+    m_language = language;
+    emit changed();
+}
+
 QString DisplayUnits::systemName() const
 {
     return isImperial() ? QStringLiteral("imperial") : QStringLiteral("metric");
@@ -71,12 +90,12 @@ QString DisplayUnits::formatDistance(double meters) const
         return QStringLiteral("—");
     if (isImperial()) {
         if (std::abs(meters) >= kMile)
-            return tr("%1 mi").arg(meters / kMile, 0, 'f', 2);
+            return tr("%1 mi").arg(number(meters / kMile, 2));
         return tr("%1 ft").arg(std::round(meters / kFoot));
     }
     if (std::abs(meters) >= 1000)
-        return tr("%1 km").arg(meters / 1000.0, 0, 'f', 2);
-    return tr("%1 m").arg(meters, 0, 'f', std::abs(meters) < 10 ? 1 : 0);
+        return tr("%1 km").arg(number(meters / 1000.0, 2));
+    return tr("%1 m").arg(number(meters, std::abs(meters) < 10 ? 1 : 0));
 }
 
 QString DisplayUnits::formatAltitude(double meters) const
@@ -85,7 +104,7 @@ QString DisplayUnits::formatAltitude(double meters) const
         return QStringLiteral("—");
     if (isImperial())
         return tr("%1 ft").arg(std::round(meters / kFoot));
-    return tr("%1 m").arg(meters, 0, 'f', 1);
+    return tr("%1 m").arg(number(meters, 1));
 }
 
 QString DisplayUnits::formatSpeed(double metersPerSecond) const
@@ -93,8 +112,8 @@ QString DisplayUnits::formatSpeed(double metersPerSecond) const
     if (!std::isfinite(metersPerSecond))
         return QStringLiteral("—");
     if (isImperial())
-        return tr("%1 mph").arg(metersPerSecond * 3600.0 / kMile, 0, 'f', 1);
-    return tr("%1 m/s").arg(metersPerSecond, 0, 'f', 1);
+        return tr("%1 mph").arg(number(metersPerSecond * 3600.0 / kMile, 1));
+    return tr("%1 m/s").arg(number(metersPerSecond, 1));
 }
 
 QString DisplayUnits::formatCoordinate(const QGeoCoordinate &coordinate) const
@@ -108,6 +127,7 @@ QString DisplayUnits::formatLatLon(double latitude, double longitude) const
 {
     if (m_coordinates == CoordinateFormat::DegreesMinutesSeconds)
         return dms(latitude, u'N', u'S') + QLatin1Char(' ') + dms(longitude, u'E', u'W');
+    // Coordinates keep the dot in every language: "56.950000, 24.100000" is how they are typed and pasted.
     return QStringLiteral("%1, %2").arg(latitude, 0, 'f', 6).arg(longitude, 0, 'f', 6);
 }
 
@@ -144,7 +164,7 @@ QString DisplayUnits::formatBattery(double voltage, double remaining) const
 {
     const bool hasLevel = std::isfinite(remaining), hasVoltage = std::isfinite(voltage);
     const QString level = hasLevel ? tr("%1 %").arg(std::lround(std::clamp(remaining, 0.0, 1.0) * 100)) : QString();
-    const QString volts = hasVoltage ? tr("%1 V").arg(voltage, 0, 'f', 1) : QString();
+    const QString volts = hasVoltage ? tr("%1 V").arg(number(voltage, 1)) : QString();
     if (hasLevel && hasVoltage)
         return level + QStringLiteral("  ") + volts;
     if (hasLevel)

@@ -6,8 +6,9 @@
 
 namespace sortie::ui {
 
-// How numbers are shown to the operator: metric or imperial distances, speeds and altitudes,
-// and decimal or degrees-minutes-seconds coordinates. Views format through it; nothing else
+// How numbers are shown to the operator: metric or imperial distances, speeds and altitudes in the
+// language's number format (12,5 m in German), and decimal or degrees-minutes-seconds coordinates
+// (always with a dot). Views format through it; nothing else
 // converts units.
 class DisplayUnits : public QObject
 {
@@ -17,6 +18,9 @@ class DisplayUnits : public QObject
     Q_PROPERTY(CoordinateFormat coordinateFormat READ coordinateFormat WRITE setCoordinateFormat NOTIFY changed)
     Q_PROPERTY(QString systemName READ systemName WRITE setSystemName NOTIFY changed)
     Q_PROPERTY(bool imperial READ isImperial NOTIFY changed)
+    // The UI's language (Translations::active): numbers follow its format (QLocale's default), so a
+    // change re-formats every bound value.
+    Q_PROPERTY(QString language READ language WRITE setLanguage NOTIFY changed)
 
 public:
     enum class System { Metric, Imperial };
@@ -34,6 +38,8 @@ public:
     QString systemName() const;
     void setSystemName(const QString &name);
     bool isImperial() const { return m_system == System::Imperial; }
+    QString language() const { return m_language; }
+    void setLanguage(const QString &language);
 
     Q_INVOKABLE QString formatDistance(double meters) const;
     Q_INVOKABLE QString formatAltitude(double meters) const;
@@ -58,6 +64,7 @@ signals:
 private:
     System m_system = System::Metric;
     CoordinateFormat m_coordinates = CoordinateFormat::Decimal;
+    QString m_language;
 };
 
 } // namespace sortie::ui

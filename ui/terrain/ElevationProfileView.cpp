@@ -12,6 +12,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <QCoreApplication>
 
 namespace sortie::ui {
 
@@ -31,7 +32,7 @@ QString metres(double v)
 
 QString distanceText(double m)
 {
-    return m >= 1000 ? QStringLiteral("%1 km").arg(m / 1000, 0, 'f', m >= 10000 ? 1 : 2) : QStringLiteral("%1 m").arg(m, 0, 'f', 0);
+    return m >= 1000 ? QCoreApplication::translate("ElevationProfileView", "%1 km").arg(m / 1000, 0, 'f', m >= 10000 ? 1 : 2) : QStringLiteral("%1 m").arg(m, 0, 'f', 0);
 }
 } // namespace
 

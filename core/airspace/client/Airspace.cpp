@@ -16,6 +16,7 @@
 #include <QSettings>
 
 #include <cmath>
+#include <QCoreApplication>
 
 Q_LOGGING_CATEGORY(lcAirspace, "sortie.airspace")
 
@@ -100,7 +101,7 @@ Airspace::Airspace(QSettings *settings, mission::RouteAnalyzer *analyzer, const 
         for (const QString &p : read->problems)
             problems << QStringLiteral("%1: %2").arg(QFileInfo(path).fileName(), p);
     }
-    m_fence = zonesOfFence(m_route->route().fence, QStringLiteral("route fence"), ZoneSource::File, QStringLiteral("the open route"));
+    m_fence = zonesOfFence(m_route->route().fence, QCoreApplication::translate("Airspace", "route fence"), ZoneSource::File, QCoreApplication::translate("Airspace", "the open route"));
     setProblems(problems);
     rebuild();
 }
@@ -118,7 +119,7 @@ QString Airspace::groupName(Group group)
     case Group::Custom: return QStringLiteral("drawn");
     case Group::Server: return QStringLiteral("server");
     case Group::File: return QStringLiteral("file");
-    case Group::RouteFence: return QStringLiteral("route fence");
+    case Group::RouteFence: return QCoreApplication::translate("Airspace", "route fence");
     }
     return {};
 }
@@ -321,8 +322,8 @@ QString Airspace::keyOf(Group group, const Zone &zone) const
 
 void Airspace::followRouteFence()
 {
-    std::vector<Zone> fence = zonesOfFence(m_route->route().fence, QStringLiteral("route fence"), ZoneSource::File,
-                                           QStringLiteral("the open route"));
+    std::vector<Zone> fence = zonesOfFence(m_route->route().fence, QCoreApplication::translate("Airspace", "route fence"), ZoneSource::File,
+                                           QCoreApplication::translate("Airspace", "the open route"));
     if (fence == m_fence)
         return;
     m_fence = std::move(fence);
@@ -422,7 +423,7 @@ void Airspace::loadCustom()
         // Kept aside, never overwritten by the next save: the operator's zones may still be in it.
         const QString aside = m_customFile + QStringLiteral(".unreadable-") + QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMddHHmmss"));
         QFile::rename(m_customFile, aside);
-        m_problems << QStringLiteral("%1 (kept as %2)").arg(read.error().toString(), aside);
+        m_problems << QCoreApplication::translate("Airspace", "%1 (kept as %2)").arg(read.error().toString(), aside);
         qCWarning(lcAirspace).noquote() << "drawn zones not read:" << read.error().toString() << "; kept as" << aside;
         return;
     }

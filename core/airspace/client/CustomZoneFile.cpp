@@ -5,6 +5,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QSaveFile>
+#include <QCoreApplication>
 
 namespace sortie::airspace {
 
@@ -96,7 +97,7 @@ mission::Result<ZoneFile> readCustomZones(const QString &path)
     ZoneFile out = std::move(read).value();
     for (Zone &z : out.zones) {
         z.source = ZoneSource::ServerCustom;
-        z.origin = QStringLiteral("drawn on the map");
+        z.origin = QCoreApplication::translate("CustomZoneFile", "drawn on the map");
     }
     // The server ids the GeoJSON reader does not know, by feature; only when every feature was
     // read (else which zone is which is not certain, and a draft becomes a new zone).

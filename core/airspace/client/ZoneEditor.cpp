@@ -6,6 +6,7 @@
 #include "RemoveZoneCommand.h"
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::airspace {
 
@@ -103,7 +104,7 @@ int ZoneEditor::addPolygon(const QList<QGeoCoordinate> &corners)
     z.name = nextName();
     z.shape = ZonePolygons{{polygon}};
     z.source = ZoneSource::ServerCustom;
-    z.origin = QStringLiteral("drawn on the map");
+    z.origin = QCoreApplication::translate("ZoneEditor", "drawn on the map");
     if (const QString problem = shapeProblem(z); !problem.isEmpty())
         {
         refuse(tr("This polygon cannot be a zone: %1").arg(problem));
@@ -123,7 +124,7 @@ int ZoneEditor::addCircle(const QGeoCoordinate &centre, double radius)
     z.name = nextName();
     z.shape = ZoneCircle{pointOf(centre), radius};
     z.source = ZoneSource::ServerCustom;
-    z.origin = QStringLiteral("drawn on the map");
+    z.origin = QCoreApplication::translate("ZoneEditor", "drawn on the map");
     return add(std::move(z), tr("Draw circular zone"));
 }
 
@@ -156,7 +157,7 @@ bool ZoneEditor::moveVertex(int zone, int vertex, const QGeoCoordinate &to, miss
             return refuse(tr("The zone has no corner %1.").arg(vertex + 1));
         (*ring)[size_t(vertex)] = pointOf(to);
         return true;
-    }, tr("Move zone corner"), QStringLiteral("vertex %1").arg(vertex), step);
+    }, tr("Move zone corner"), QCoreApplication::translate("ZoneEditor", "vertex %1").arg(vertex), step);
 }
 
 bool ZoneEditor::insertVertex(int zone, int vertex, const QGeoCoordinate &at)

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <QCoreApplication>
 
 namespace sortie::airspace::NfzConversion {
 namespace {
@@ -35,9 +36,9 @@ bool limitsOf(bool hasBase, double base, bool hasHeight, double height, pb::Alti
 {
     const HeightReference reference = referenceOf(type);
     if (hasBase && !std::isfinite(base))
-        return *why = QStringLiteral("its baseAltitude is not a number"), false;
+        return *why = QCoreApplication::translate("NfzConversion", "its baseAltitude is not a number"), false;
     if (hasHeight && (!std::isfinite(height) || height < 0))
-        return *why = QStringLiteral("its height %1 m is not a height (it must be 0 or more)").arg(metres(height)), false;
+        return *why = QCoreApplication::translate("NfzConversion", "its height %1 m is not a height (it must be 0 or more)").arg(metres(height)), false;
     const double floor = hasBase ? base : 0.0;
     const bool fromGround = groundFloor && (!hasBase || (reference == HeightReference::AboveTerrain && base <= 0));
     if (!fromGround)
@@ -54,13 +55,13 @@ bool prismToZone(const pb::Prism &prism, Zone &z, QString *why)
         const auto &p = prism.points(i);
         const auto at = p.has_latitude() && p.has_longitude() ? position(p.latitude(), p.longitude()) : std::nullopt;
         if (!at)
-            return *why = QStringLiteral("point %1 of its prism is not a position (latitude and longitude in radians)").arg(i + 1), false;
+            return *why = QCoreApplication::translate("NfzConversion", "point %1 of its prism is not a position (latitude and longitude in radians)").arg(i + 1), false;
         ring.push_back(*at);
     }
     if (ring.size() > 1 && ring.front() == ring.back())
         ring.pop_back();  // a closed ring: Zone's rings are open
     if (ring.size() < 3)
-        return *why = QStringLiteral("its prism has %1 corner(s); a polygon needs 3").arg(ring.size()), false;
+        return *why = QCoreApplication::translate("NfzConversion", "its prism has %n corner(s); a polygon needs 3", nullptr, int(ring.size())), false;
     z.shape = ZonePolygons{{ZonePolygon{{std::move(ring)}}}};
     return limitsOf(prism.has_basealtitude(), prism.basealtitude(), prism.has_height(), prism.height(), prism.altitudetype(), true, z, why);
 }
@@ -70,16 +71,16 @@ bool coneToZone(const pb::ConeFrustum &cone, Zone &z, QString *why)
     const auto center = cone.has_baselatitude() && cone.has_baselongitude() ? position(cone.baselatitude(), cone.baselongitude())
                                                                               : std::nullopt;
     if (!center)
-        return *why = QStringLiteral("its cone frustum has no centre (baseLatitude, baseLongitude in radians)"), false;
+        return *why = QCoreApplication::translate("NfzConversion", "its cone frustum has no centre (baseLatitude, baseLongitude in radians)"), false;
     const double bottom = cone.baseradius(), top = cone.has_topradius() ? cone.topradius() : bottom;
     if (!cone.has_baseradius() || !std::isfinite(bottom) || bottom < 0 || !std::isfinite(top) || top < 0 || (bottom <= 0 && top <= 0))
-        return *why = QStringLiteral("its cone frustum's radii (base %1 m, top %2 m) are not a circle").arg(metres(bottom), metres(top)), false;
+        return *why = QCoreApplication::translate("NfzConversion", "its cone frustum's radii (base %1 m, top %2 m) are not a circle").arg(metres(bottom), metres(top)), false;
     if (bottom == top) {
         z.shape = ZoneCircle{*center, bottom};
         return limitsOf(cone.has_basealtitude(), cone.basealtitude(), cone.has_height(), cone.height(), cone.altitudetype(), true, z, why);
     }
     if (!cone.has_height())
-        return *why = QStringLiteral("its cone frustum has two radii but no height"), false;
+        return *why = QCoreApplication::translate("NfzConversion", "its cone frustum has two radii but no height"), false;
     z.shape = ZoneConeFrustum{*center, bottom, top};
     // The radius changes between floor and ceiling: keep the floor even at the ground.
     return limitsOf(cone.has_basealtitude(), cone.basealtitude(), true, cone.height(), cone.altitudetype(), false, z, why);
@@ -89,14 +90,14 @@ std::optional<pb::AltitudeType> altitudeTypeOf(const Zone &zone, QString *why)
 {
     const auto &f = zone.floor, &c = zone.ceiling;
     if (f && c && f->reference != c->reference)
-        return *why = QStringLiteral("its floor (%1) and ceiling (%2) are in different references; a server zone has one")
+        return *why = QCoreApplication::translate("NfzConversion", "its floor (%1) and ceiling (%2) are in different references; a server zone has one")
                           .arg(limitText(f, false), limitText(c, true)),
                std::nullopt;
     const HeightReference r = f ? f->reference : c ? c->reference : HeightReference::AboveTerrain;
     if (r == HeightReference::AboveHome)
-        return *why = QStringLiteral("its heights are above home; a server zone's are AMSL or AGL"), std::nullopt;
+        return *why = QCoreApplication::translate("NfzConversion", "its heights are above home; a server zone's are AMSL or AGL"), std::nullopt;
     if (!f && r == HeightReference::Amsl)
-        return *why = QStringLiteral("it starts from the ground with an AMSL ceiling; give it an AMSL floor or an AGL ceiling"),
+        return *why = QCoreApplication::translate("NfzConversion", "it starts from the ground with an AMSL ceiling; give it an AMSL floor or an AGL ceiling"),
                std::nullopt;
     return r == HeightReference::Amsl ? pb::AT_WGS84 : pb::AT_AGL;
 }
@@ -118,7 +119,7 @@ void putLimits(const Zone &zone, pb::AltitudeType type, Volume *v)
 QString nameOf(const pb::NoFlightZone &nfz)
 {
     const QString name = QString::fromStdString(nfz.name()).trimmed();
-    return name.isEmpty() ? QStringLiteral("NoFlightZone %1").arg(nfz.id()) : name;
+    return name.isEmpty() ? QCoreApplication::translate("NfzConversion", "NoFlightZone %1").arg(nfz.id()) : name;
 }
 
 std::optional<Zone> toZone(const pb::NoFlightZone &nfz, QString *why)
@@ -127,12 +128,12 @@ std::optional<Zone> toZone(const pb::NoFlightZone &nfz, QString *why)
     z.name = nameOf(nfz);
     z.kind = ZoneKind::Exclusion;
     z.source = nfz.type() == pb::NT_AERODROME ? ZoneSource::ServerAerodrome : ZoneSource::ServerCustom;
-    z.origin = QStringLiteral("UgCS server, NoFlightZone %1").arg(nfz.id());
+    z.origin = QCoreApplication::translate("NfzConversion", "UgCS server, NoFlightZone %1").arg(nfz.id());
     if (nfz.has_id())
         z.serverId = nfz.id();
     z.serverVersion = nfz.version();
     if (nfz.has_prism() && nfz.has_conefrustum())
-        return *why = QStringLiteral("it has both a prism and a cone frustum"), std::nullopt;
+        return *why = QCoreApplication::translate("NfzConversion", "it has both a prism and a cone frustum"), std::nullopt;
     if (nfz.has_prism()) {
         if (!prismToZone(nfz.prism(), z, why))
             return std::nullopt;
@@ -140,10 +141,10 @@ std::optional<Zone> toZone(const pb::NoFlightZone &nfz, QString *why)
         if (!coneToZone(nfz.conefrustum(), z, why))
             return std::nullopt;
     } else {
-        return *why = QStringLiteral("it has no volume (neither a prism nor a cone frustum)"), std::nullopt;
+        return *why = QCoreApplication::translate("NfzConversion", "it has no volume (neither a prism nor a cone frustum)"), std::nullopt;
     }
     if (z.floor && z.ceiling && z.ceiling->metres < z.floor->metres)
-        return *why = QStringLiteral("its ceiling is below its floor"), std::nullopt;
+        return *why = QCoreApplication::translate("NfzConversion", "its ceiling is below its floor"), std::nullopt;
     if (const QString problem = shapeProblem(z); !problem.isEmpty())
         return *why = problem, std::nullopt;
     return z;
@@ -152,11 +153,11 @@ std::optional<Zone> toZone(const pb::NoFlightZone &nfz, QString *why)
 std::optional<pb::NoFlightZone> toNfz(const Zone &zone, const pb::NoFlightZone *before, QString *why)
 {
     if (zone.kind != ZoneKind::Exclusion)
-        return *why = QStringLiteral("the server's no-fly zones keep vehicles out; an inclusion zone cannot be one"), std::nullopt;
+        return *why = QCoreApplication::translate("NfzConversion", "the server's no-fly zones keep vehicles out; an inclusion zone cannot be one"), std::nullopt;
     if (zone.source == ZoneSource::ServerAerodrome || (before && before->type() == pb::NT_AERODROME))
-        return *why = QStringLiteral("aerodrome zones are the server's own; only custom zones are changed"), std::nullopt;
+        return *why = QCoreApplication::translate("NfzConversion", "aerodrome zones are the server's own; only custom zones are changed"), std::nullopt;
     if (zone.floor && zone.ceiling && zone.ceiling->metres < zone.floor->metres)
-        return *why = QStringLiteral("its ceiling is below its floor"), std::nullopt;
+        return *why = QCoreApplication::translate("NfzConversion", "its ceiling is below its floor"), std::nullopt;
     const auto type = altitudeTypeOf(zone, why);
     if (!type)
         return std::nullopt;
@@ -174,13 +175,14 @@ std::optional<pb::NoFlightZone> toNfz(const Zone &zone, const pb::NoFlightZone *
     nfz.set_type(pb::NT_CUSTOM);
     if (const auto *polygons = std::get_if<ZonePolygons>(&zone.shape)) {
         if (polygons->parts.size() != 1 || polygons->parts[0].rings.size() != 1)
-            return *why = QStringLiteral("a server zone is one polygon without holes (this one has %1 part(s), %2 ring(s))")
-                              .arg(polygons->parts.size())
-                              .arg(polygons->parts.empty() ? 0 : polygons->parts[0].rings.size()),
+            return *why = QCoreApplication::translate("NfzConversion", "a server zone is one polygon without holes (this one has %n part(s), %1)",
+                                                      nullptr, int(polygons->parts.size()))
+                              .arg(QCoreApplication::translate("NfzConversion", "%n ring(s)", nullptr,
+                                                               int(polygons->parts.empty() ? 0 : polygons->parts[0].rings.size()))),
                    std::nullopt;
         const auto &ring = polygons->parts[0].rings[0];
         if (ring.size() < 3)
-            return *why = QStringLiteral("its polygon has %1 corner(s); it needs 3").arg(ring.size()), std::nullopt;
+            return *why = QCoreApplication::translate("NfzConversion", "its polygon has %n corner(s); it needs 3", nullptr, int(ring.size())), std::nullopt;
         nfz.clear_conefrustum();
         pb::Prism *prism = nfz.mutable_prism();
         prism->clear_points();
@@ -202,7 +204,7 @@ std::optional<pb::NoFlightZone> toNfz(const Zone &zone, const pb::NoFlightZone *
     } else {
         const auto &frustum = std::get<ZoneConeFrustum>(zone.shape);
         if (!zone.ceiling)
-            return *why = QStringLiteral("a cone frustum needs a ceiling"), std::nullopt;
+            return *why = QCoreApplication::translate("NfzConversion", "a cone frustum needs a ceiling"), std::nullopt;
         center = frustum.center;
         cone->set_baseradius(frustum.bottomRadius);
         cone->set_topradius(frustum.topRadius);
@@ -224,7 +226,7 @@ std::vector<Zone> toZones(const google::protobuf::RepeatedPtrField<pb::NoFlightZ
             continue;
         }
         const QString name = QString::fromStdString(nfz.name()).trimmed();
-        problems->append(QStringLiteral("NoFlightZone %1%2 was left out: %3")
+        problems->append(QCoreApplication::translate("NfzConversion", "NoFlightZone %1%2 was left out: %3")
                              .arg(nfz.id())
                              .arg(name.isEmpty() ? QString() : QStringLiteral(" ('%1')").arg(name), why));
     }

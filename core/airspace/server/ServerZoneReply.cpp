@@ -1,6 +1,7 @@
 #include "ServerZoneReply.h"
 
 #include <QTimer>
+#include <QCoreApplication>
 
 namespace sortie::airspace {
 
@@ -21,7 +22,7 @@ void ServerZoneReply::fail(const QString &error)
 {
     if (m_finished)
         return;
-    m_error = error.isEmpty() ? QStringLiteral("the server gave no reason") : error;
+    m_error = error.isEmpty() ? QCoreApplication::translate("ServerZoneReply", "the server gave no reason") : error;
     finish();
 }
 

@@ -38,6 +38,7 @@
 #include <QSettings>
 
 #include <algorithm>
+#include <QCoreApplication>
 
 Q_LOGGING_CATEGORY(lcClientGraph, "sortie.client.graph")
 
@@ -103,7 +104,7 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
         MissionUploader *uploader = m_missions->preparation()->uploader();
         QObject::connect(uploader, &MissionUploader::uploaded, m_zoneAlerts.get(), [this, uploader](vehicle::Vehicle *v) {
             const mission::Route &route = uploader->route();
-            m_zoneAlerts->setVehicleZones(v->id(), airspace::zonesOfFence(route.fence, QStringLiteral("route fence"),
+            m_zoneAlerts->setVehicleZones(v->id(), airspace::zonesOfFence(route.fence, QCoreApplication::translate("ClientGraph", "route fence"),
                                                                           airspace::ZoneSource::VehicleFence, route.settings.name));
         });
     }
@@ -198,6 +199,7 @@ terrain::ElevationService *ClientGraph::elevation()
     return m_elevation->service();
 }
 
+// i18n: not text below (the wiring is a diagnostic for the log and the tests, not for the operator)
 QStringList ClientGraph::wiring() const
 {
     RouteDocument *document = m_missions->document();

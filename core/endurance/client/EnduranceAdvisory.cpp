@@ -6,6 +6,7 @@
 #include <QLoggingCategory>
 
 #include <cmath>
+#include <QCoreApplication>
 
 Q_LOGGING_CATEGORY(lcAdvisory, "sortie.endurance.advisory")
 
@@ -19,7 +20,7 @@ std::optional<double> finite(double v)
 
 QString wh(double value)
 {
-    return QStringLiteral("%1 Wh").arg(value, 0, 'f', std::abs(value) < 10 ? 1 : 0);
+    return QCoreApplication::translate("EnduranceAdvisory", "%1 Wh").arg(value, 0, 'f', std::abs(value) < 10 ? 1 : 0);
 }
 
 QString percent(double fraction)

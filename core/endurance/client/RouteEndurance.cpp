@@ -9,6 +9,7 @@
 #include <QSettings>
 
 #include <cmath>
+#include <QCoreApplication>
 
 Q_LOGGING_CATEGORY(lcEndurance, "sortie.endurance")
 
@@ -91,9 +92,9 @@ void RouteEndurance::refresh()
     const mission::Route &route = m_model->route();
     m_home = route.settings.home;
     if (!m_profile) {
-        problem = QStringLiteral("No energy profile: choose the vehicle's profile file");
+        problem = QCoreApplication::translate("RouteEndurance", "No energy profile: choose the vehicle's profile file");
     } else if (route.segments.empty()) {
-        problem = QStringLiteral("The route has no points");
+        problem = QCoreApplication::translate("RouteEndurance", "The route has no points");
     } else if (const mission::Result<EnduranceEstimate> e = estimateEndurance(route, *m_profile, m_conditions); e) {
         estimate = e.value();
     } else {

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <QCoreApplication>
 
 namespace sortie::flightlog {
 
@@ -125,7 +126,7 @@ void writeKml(const FlightLog &log, const std::vector<int> &vehicles, QIODevice 
     xml.writeDefaultNamespace(QStringLiteral("http://www.opengis.net/kml/2.2"));
     xml.writeNamespace(QStringLiteral("http://www.google.com/kml/ext/2.2"), QStringLiteral("gx"));
     xml.writeStartElement(QStringLiteral("Document"));
-    xml.writeTextElement(QStringLiteral("name"), QStringLiteral("Flight log %1").arg(utc(log.start())));
+    xml.writeTextElement(QStringLiteral("name"), QCoreApplication::translate("FlightLogExport", "Flight log %1").arg(utc(log.start())));
     const QString gx = QStringLiteral("http://www.google.com/kml/ext/2.2");
     for (int v : vehicles) {
         xml.writeStartElement(QStringLiteral("Placemark"));

@@ -2,6 +2,7 @@
 
 #include <QDateTime>
 #include <QJsonArray>
+#include <QCoreApplication>
 
 namespace sortie::flightlog {
 
@@ -68,7 +69,7 @@ QString logInfoText(const FlightLog &log)
         out += QObject::tr("DAMAGED:  read up to the last good record; %1\n").arg(log.stoppedAt());
     out += QObject::tr("vehicles: %1\n").arg(log.vehicles().size());
     for (const FlightLog::Vehicle &v : log.vehicles()) {
-        out += QStringLiteral("\n  %1 (%2%3%4): %5 samples").arg(v.name(), v.identity.protocol,
+        out += QCoreApplication::translate("FlightLogInfo", "\n  %1 (%2%3%4): %5 samples").arg(v.name(), v.identity.protocol,
                                                                 v.identity.type.isEmpty() ? QString() : QStringLiteral(", ") + v.identity.type,
                                                                 v.identity.autopilot.isEmpty() ? QString() : QStringLiteral(", ") + v.identity.autopilot)
                    .arg(v.sampleCount());

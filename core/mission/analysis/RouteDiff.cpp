@@ -13,7 +13,6 @@ namespace {
 
 using Kind = RouteChange::Kind;
 
-QString tr(const char *text) { return QCoreApplication::translate("RouteDiff", text); }
 
 // Up to two decimals, no trailing zeros: 80, 100.5, 0.25.
 QString num(double v) { return QString::number(std::round(v * 100.0) / 100.0, 'g', 12); }
@@ -24,15 +23,15 @@ QString meters(double v) { return v >= 10 ? QString::number(std::lround(v)) : QS
 QString label(const Segment &s, int row)
 {
     if (isWaypoint(s))
-        return tr("WP %1").arg(row + 1);
+        return RouteDiff::tr("WP %1").arg(row + 1);
     if (isAreaScan(s))
-        return tr("Scan %1").arg(row + 1);
-    return tr("%1 %2").arg(algorithmLabel(std::get<AlgorithmSegment>(s))).arg(row + 1);
+        return RouteDiff::tr("Scan %1").arg(row + 1);
+    return RouteDiff::tr("%1 %2").arg(algorithmLabel(std::get<AlgorithmSegment>(s))).arg(row + 1);
 }
 
-QString quoted(const QString &s) { return s.isEmpty() ? tr("(none)") : QStringLiteral("\"%1\"").arg(s); }
+QString quoted(const QString &s) { return s.isEmpty() ? RouteDiff::tr("(none)") : QStringLiteral("\"%1\"").arg(s); }
 
-QString endActionName(EndAction a) { return a == EndAction::ReturnHome ? tr("return home") : tr("none"); }
+QString endActionName(EndAction a) { return a == EndAction::ReturnHome ? RouteDiff::tr("return home") : RouteDiff::tr("none"); }
 
 // Cost of pairing two segments as "the same one, changed", against 1 for an addition and 1 for a
 // removal: less than both together for anything of the same kind, closer ones cheaper.
@@ -90,12 +89,12 @@ void RouteDiff::compareSettings(const RouteSettings &a, const RouteSettings &b)
         if (x != y)
             add(Kind::Settings, -1, tr("%1 %2 → %3 %4").arg(tr(what), num(x), num(y), tr(unit)));
     };
-    value(a.safeAltitude, b.safeAltitude, "safe altitude", "m");
-    value(a.maxAltitude, b.maxAltitude, "maximum altitude", "m");
-    value(a.initialSpeed, b.initialSpeed, "initial speed", "m/s");
-    value(a.maxSpeed, b.maxSpeed, "maximum speed", "m/s");
-    value(a.cornerRadius, b.cornerRadius, "corner radius", "m");
-    value(a.takeoffHeight, b.takeoffHeight, "takeoff height", "m");
+    value(a.safeAltitude, b.safeAltitude, QT_TRANSLATE_NOOP("RouteDiff", "safe altitude"), QT_TRANSLATE_NOOP("RouteDiff", "m"));
+    value(a.maxAltitude, b.maxAltitude, QT_TRANSLATE_NOOP("RouteDiff", "maximum altitude"), QT_TRANSLATE_NOOP("RouteDiff", "m"));
+    value(a.initialSpeed, b.initialSpeed, QT_TRANSLATE_NOOP("RouteDiff", "initial speed"), QT_TRANSLATE_NOOP("RouteDiff", "m/s"));
+    value(a.maxSpeed, b.maxSpeed, QT_TRANSLATE_NOOP("RouteDiff", "maximum speed"), QT_TRANSLATE_NOOP("RouteDiff", "m/s"));
+    value(a.cornerRadius, b.cornerRadius, QT_TRANSLATE_NOOP("RouteDiff", "corner radius"), QT_TRANSLATE_NOOP("RouteDiff", "m"));
+    value(a.takeoffHeight, b.takeoffHeight, QT_TRANSLATE_NOOP("RouteDiff", "takeoff height"), QT_TRANSLATE_NOOP("RouteDiff", "m"));
     if (a.profile != b.profile)
         add(Kind::Settings, -1, a.profile.name != b.profile.name
                                     ? tr("vehicle profile %1 → %2").arg(quoted(a.profile.name), quoted(b.profile.name))
@@ -118,8 +117,8 @@ void RouteDiff::compareSettings(const RouteSettings &a, const RouteSettings &b)
         if (x != y)
             add(Kind::Settings, -1, tr("%1 %2").arg(tr(what), y ? tr("on") : tr("off")));
     };
-    flag(a.checkAerodromeNfz, b.checkAerodromeNfz, "aerodrome zone check");
-    flag(a.checkCustomNfz, b.checkCustomNfz, "custom zone check");
+    flag(a.checkAerodromeNfz, b.checkAerodromeNfz, QT_TRANSLATE_NOOP("RouteDiff", "aerodrome zone check"));
+    flag(a.checkCustomNfz, b.checkCustomNfz, QT_TRANSLATE_NOOP("RouteDiff", "custom zone check"));
 }
 
 void RouteDiff::compareSegments(const std::vector<Segment> &a, const std::vector<Segment> &b)
@@ -259,17 +258,17 @@ void RouteDiff::compareFields(const Segment &before, const Segment &after, int r
         if (x != y)
             add(Kind::AreaScan, row, tr("%1 of %2 %3 → %4 %5").arg(tr(what), name, num(x), num(y), tr(unit)));
     };
-    value(scanAltitude(p), scanAltitude(q), "altitude", "m");
+    value(scanAltitude(p), scanAltitude(q), QT_TRANSLATE_NOOP("RouteDiff", "altitude"), QT_TRANSLATE_NOOP("RouteDiff", "m"));
     if (p.altitudeType != q.altitudeType)
         add(Kind::AreaScan, row, tr("altitude of %1 now %2").arg(name, altitudeTypeName(q.altitudeType)));
     if (p.heightMode != q.heightMode)
         add(Kind::AreaScan, row, q.heightMode == ScanHeightMode::GroundSampleDistance ? tr("%1 now flies by ground sample distance").arg(name)
                                                                                       : tr("%1 now flies by altitude").arg(name));
-    value(p.frontOverlapPercent, q.frontOverlapPercent, "front overlap", "%");
-    value(p.sideOverlapPercent, q.sideOverlapPercent, "side overlap", "%");
-    value(p.directionDeg, q.directionDeg, "direction", "°");
-    value(p.turnaroundMeters, q.turnaroundMeters, "turnaround", "m");
-    value(p.speed, q.speed, "speed", "m/s");
+    value(p.frontOverlapPercent, q.frontOverlapPercent, QT_TRANSLATE_NOOP("RouteDiff", "front overlap"), "%");
+    value(p.sideOverlapPercent, q.sideOverlapPercent, QT_TRANSLATE_NOOP("RouteDiff", "side overlap"), "%");
+    value(p.directionDeg, q.directionDeg, QT_TRANSLATE_NOOP("RouteDiff", "direction"), "°");
+    value(p.turnaroundMeters, q.turnaroundMeters, QT_TRANSLATE_NOOP("RouteDiff", "turnaround"), QT_TRANSLATE_NOOP("RouteDiff", "m"));
+    value(p.speed, q.speed, QT_TRANSLATE_NOOP("RouteDiff", "speed"), QT_TRANSLATE_NOOP("RouteDiff", "m/s"));
     if (p.camera != q.camera)
         add(Kind::AreaScan, row, p.camera.name != q.camera.name ? tr("camera of %1 %2 → %3").arg(name, quoted(p.camera.name), quoted(q.camera.name))
                                                                 : tr("camera of %1 changed").arg(name));

@@ -2,6 +2,7 @@
 
 #include "Route.h"
 
+#include <QCoreApplication>
 #include <QString>
 #include <QStringList>
 
@@ -29,6 +30,8 @@ struct RouteChange
 // provenance differs but the content is the same, there is no change.
 class RouteDiff
 {
+    Q_DECLARE_TR_FUNCTIONS(RouteDiff) // its words are translated in the context "RouteDiff"
+
 public:
     static RouteDiff compare(const Route &before, const Route &after);
 

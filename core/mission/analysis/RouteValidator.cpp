@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -45,7 +46,7 @@ public:
             if (const Waypoint *w = asWaypoint(s)) {
                 ++points;
                 if (!w->position.isValid() || !std::isfinite(w->altitude)) {
-                    add(Severity::Error, "invalid-position", row, QStringLiteral("%1: the position is not valid.").arg(label(row)));
+                    add(Severity::Error, "invalid-position", row, QCoreApplication::translate("RouteValidator", "%1: the position is not valid.").arg(label(row)));
                     continue;
                 }
                 if (!checkAltitude(row, w->altitude, w->altitudeType, w->role) && firstUnchecked < 0)
@@ -84,11 +85,12 @@ public:
         }
         if (points < 2)
             m_report.issues.insert(m_report.issues.begin(), {Severity::Error, QStringLiteral("too-few-points"),
-                QStringLiteral("The route needs at least two points; it has %1.").arg(points), -1});
+                QCoreApplication::translate("RouteValidator", "The route needs at least two points; it has %1.").arg(points), -1});
         if (uncheckedAmsl > 0)
             m_report.issues.insert(m_report.issues.begin(), {Severity::Warning, QStringLiteral("altitude-unchecked"),
-                QStringLiteral("%1 AMSL altitude(s), the first at %2, were not checked against the route's limits: "
-                               "the take-off elevation is unknown.").arg(uncheckedAmsl).arg(label(firstUnchecked)),
+                QCoreApplication::translate("RouteValidator", "%n AMSL altitude(s), the first at %1, were not checked against the "
+                                            "route's limits: the take-off elevation is unknown.", nullptr, int(uncheckedAmsl))
+                    .arg(label(firstUnchecked)),
                 firstUnchecked});
         return std::move(m_report);
     }
@@ -113,10 +115,10 @@ private:
         }
         auto shown = [&] { return QStringLiteral("%1 m %2").arg(num(altitude), altitudeTypeName(type)); };
         if (agl > rs.maxAltitude)
-            add(Severity::Error, "altitude-above-max", row, QStringLiteral("%1: altitude %2 is above the route's maximum of %3 m.")
+            add(Severity::Error, "altitude-above-max", row, QCoreApplication::translate("RouteValidator", "%1: altitude %2 is above the route's maximum of %3 m.")
                 .arg(label(row), shown(), num(rs.maxAltitude)));
         else if (agl < rs.safeAltitude && role == WaypointRole::Pass)
-            add(Severity::Warning, "altitude-below-safe", row, QStringLiteral("%1: altitude %2 is below the route's safe altitude of %3 m.")
+            add(Severity::Warning, "altitude-below-safe", row, QCoreApplication::translate("RouteValidator", "%1: altitude %2 is below the route's safe altitude of %3 m.")
                 .arg(label(row), shown(), num(rs.safeAltitude)));
         return true;
     }
@@ -125,9 +127,9 @@ private:
     {
         const double limit = m_route.settings.profile.maxHorizontalSpeed;
         if (!(speed > 0))
-            add(Severity::Error, "speed-not-positive", row, QStringLiteral("%1: the speed must be positive.").arg(label(row)));
+            add(Severity::Error, "speed-not-positive", row, QCoreApplication::translate("RouteValidator", "%1: the speed must be positive.").arg(label(row)));
         else if (limit > 0 && speed > limit)
-            add(Severity::Error, "speed-above-limit", row, QStringLiteral("%1: speed %2 m/s is above the vehicle's limit of %3 m/s.")
+            add(Severity::Error, "speed-above-limit", row, QCoreApplication::translate("RouteValidator", "%1: speed %2 m/s is above the vehicle's limit of %3 m/s.")
                 .arg(label(row), num(speed), num(limit)));
     }
 
@@ -139,7 +141,7 @@ private:
         const AlgorithmDefinition *def = AlgorithmCatalog::builtIn().byClassName(a.algorithm);
         if (!def) {
             add(Severity::Warning, "unknown-algorithm", row,
-                QStringLiteral("%1: Sortie does not know the algorithm %2; the server checks it when it processes the route.")
+                QCoreApplication::translate("RouteValidator", "%1: Sortie does not know the algorithm %2; the server checks it when it processes the route.")
                     .arg(label(row), a.algorithm));
             return;
         }
@@ -160,10 +162,10 @@ private:
         const Waypoint *a = asWaypoint(prev), *b = asWaypoint(cur);
         if (a && b && a->altitudeType == b->altitudeType && nearDistance(a->position, b->position) < kDuplicateMeters
             && std::abs(a->altitude - b->altitude) < kDuplicateAltitude && a->role == b->role)
-            add(Severity::Warning, "duplicate-waypoint", row, QStringLiteral("%1 repeats %2.").arg(label(row), label(row - 1)));
+            add(Severity::Warning, "duplicate-waypoint", row, QCoreApplication::translate("RouteValidator", "%1 repeats %2.").arg(label(row), label(row - 1)));
         if (altitudeTypeOf(prev) != altitudeTypeOf(cur))
             add(Severity::Warning, "mixed-altitude-types", row,
-                QStringLiteral("%1 is %2 but %3 is %4: the climb between them is not estimated.")
+                QCoreApplication::translate("RouteValidator", "%1 is %2 but %3 is %4: the climb between them is not estimated.")
                     .arg(label(row), altitudeTypeName(altitudeTypeOf(cur)), label(row - 1), altitudeTypeName(altitudeTypeOf(prev))));
     }
 
@@ -186,7 +188,7 @@ int ValidationReport::warningCount() const
 QString segmentLabel(const Route &route, int row)
 {
     if (row < 0 || row >= int(route.segments.size()))
-        return QStringLiteral("The route");
+        return QCoreApplication::translate("RouteValidator", "The route");
     return segmentLabel(row, route.segments[size_t(row)]);
 }
 

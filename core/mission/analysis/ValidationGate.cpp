@@ -1,6 +1,7 @@
 #include "ValidationGate.h"
 
 #include <QStringList>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -18,8 +19,9 @@ Result<void> permitRelease(const ValidationReport &report, ValidationOverride ov
         }
         first << i.message;
     }
-    return MissionError{QStringLiteral("%1 refused: the route has %2 validation error(s). %3 Fix them, or override explicitly.")
-                            .arg(what).arg(report.errorCount()).arg(first.join(QLatin1Char(' '))), {}, 0, 0, {}};
+    return MissionError{QCoreApplication::translate("ValidationGate", "%1 refused: the route has %n validation error(s). %2 Fix them, or override explicitly.",
+                                                    nullptr, int(report.errorCount()))
+                            .arg(what, first.join(QLatin1Char(' '))), {}, 0, 0, {}};
 }
 
 } // namespace sortie::mission

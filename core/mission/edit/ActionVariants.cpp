@@ -205,16 +205,22 @@ ActionKindDescription serverKindDescription(const ServerActionKind &k)
 }
 } // namespace
 
+QString actionText(const QString &source)
+{
+    return source.isEmpty() ? source : QCoreApplication::translate("ActionVariants", source.toUtf8().constData());
+}
+
 QString ActionField::check(const QVariant &value) const
 {
+    const QString shownLabel = actionText(label), shownUnit = actionText(unit);
     switch (type) {
     case Type::Toggle:
-        return value.canConvert<bool>() ? QString() : QStringLiteral("%1 is either on or off").arg(label);
+        return value.canConvert<bool>() ? QString() : QCoreApplication::translate("ActionVariants", "%1 is either on or off").arg(shownLabel);
     case Type::Choice:
         for (const auto &c : choices)
             if (c.first == value.toString())
                 return {};
-        return QStringLiteral("%1: \"%2\" is not one of its choices").arg(label, value.toString());
+        return QCoreApplication::translate("ActionVariants", "%1: \"%2\" is not one of its choices").arg(shownLabel, value.toString());
     case Type::Number:
     case Type::Integer: {
         if (optional && value.toString().trimmed().isEmpty())
@@ -222,13 +228,13 @@ QString ActionField::check(const QVariant &value) const
         bool ok = false;
         const double v = value.toString().trimmed().isEmpty() ? std::nan("") : value.toDouble(&ok);
         if (!ok || !std::isfinite(v))
-            return QStringLiteral("%1: \"%2\" is not a number").arg(label, value.toString());
+            return QCoreApplication::translate("ActionVariants", "%1: \"%2\" is not a number").arg(shownLabel, value.toString());
         if (type == Type::Integer && std::floor(v) != v)
-            return QStringLiteral("%1: %2 is not a whole number").arg(label, value.toString());
+            return QCoreApplication::translate("ActionVariants", "%1: %2 is not a whole number").arg(shownLabel, value.toString());
         if (minimum && v < *minimum)
-            return QStringLiteral("%1: %2 is below %3 %4").arg(label, QString::number(v), QString::number(*minimum), unit).trimmed();
+            return QCoreApplication::translate("ActionVariants", "%1: %2 is below %3 %4").arg(shownLabel, QString::number(v), QString::number(*minimum), shownUnit).trimmed();
         if (maximum && v > *maximum)
-            return QStringLiteral("%1: %2 is above %3 %4").arg(label, QString::number(v), QString::number(*maximum), unit).trimmed();
+            return QCoreApplication::translate("ActionVariants", "%1: %2 is above %3 %4").arg(shownLabel, QString::number(v), QString::number(*maximum), shownUnit).trimmed();
         return {};
     }
     }
@@ -238,28 +244,47 @@ QString ActionField::check(const QVariant &value) const
 const std::vector<ActionKindDescription> &editableActionKinds()
 {
     using T = ActionField::Type;
+    // Labels and units stay in English here (the source text): actionText() translates them when shown.
     static const std::vector<ActionKindDescription> kinds{
-        kind("cameraTrigger", "Camera", {choice("state", "Camera", {{"singleShot", "Take a photo"}, {"startRecording", "Start video"},
-                                                                   {"stopRecording", "Stop video"}, {"toggleRecording", "Toggle video"}})}),
-        kind("cameraSeriesByDistance", "Photos by distance", {number("intervalMeters", "Every", "m", 0, 10000),
-                                                              number("shots", "Shots (0: until stopped)", "", 0, 100000, T::Integer),
-                                                              number("startDelaySeconds", "Start after", "s", 0, 3600)}),
-        kind("cameraSeriesByTime", "Photos by time", {number("intervalSeconds", "Every", "s", 0.1, 3600),
-                                                      number("shots", "Shots (0: until stopped)", "", 0, 100000, T::Integer),
-                                                      number("startDelaySeconds", "Start after", "s", 0, 3600)}),
-        kind("wait", "Wait", {number("seconds", "For", "s", 0, 86400), toggle("waitForOperator", "Until the operator continues")}),
-        kind("heading", "Heading", {number("headingDeg", "Heading", "°", 0, 360), toggle("relativeToNextWaypoint", "From the course")}),
-        kind("poi", "Point of interest", {number("latitude", "Latitude", "°", -90, 90), number("longitude", "Longitude", "°", -180, 180),
-                                          number("altitude", "Altitude", "m", -500, 10000),
-                                          choice("altitudeType", "Altitude type", {{"AGL", "Above ground (AGL)"}, {"AMSL", "Above sea level (AMSL)"}})}),
-        kind("cameraControl", "Gimbal and zoom", {optional(number("tiltDeg", "Tilt (90: down)", "°", -90, 180)),
-                                                  optional(number("rollDeg", "Roll", "°", -90, 90)),
-                                                  optional(number("yawDeg", "Yaw", "°", -360, 360)),
-                                                  optional(number("zoomLevel", "Zoom level", "", 0, 1000, T::Integer))}),
-        kind("panorama", "Panorama", {number("angleDeg", "Angle", "°", 1, 360), number("stepAngleDeg", "Step", "°", 0, 360),
-                                      number("stepDelaySeconds", "Pause per step", "s", 0, 600),
-                                      number("rotationSpeedDegPerSecond", "Rotation speed", "°/s", 0.1, 360),
-                                      toggle("clockwise", "Clockwise"), toggle("video", "Video")}),
+        kind("cameraTrigger", QT_TRANSLATE_NOOP("ActionVariants", "Camera"),
+             {choice("state", QT_TRANSLATE_NOOP("ActionVariants", "Camera"),
+                     {{"singleShot", QT_TRANSLATE_NOOP("ActionVariants", "Take a photo")},
+                      {"startRecording", QT_TRANSLATE_NOOP("ActionVariants", "Start video")},
+                      {"stopRecording", QT_TRANSLATE_NOOP("ActionVariants", "Stop video")},
+                      {"toggleRecording", QT_TRANSLATE_NOOP("ActionVariants", "Toggle video")}})}),
+        kind("cameraSeriesByDistance", QT_TRANSLATE_NOOP("ActionVariants", "Photos by distance"),
+             {number("intervalMeters", QT_TRANSLATE_NOOP("ActionVariants", "Every"), QT_TRANSLATE_NOOP("ActionVariants", "m"), 0, 10000),
+              number("shots", QT_TRANSLATE_NOOP("ActionVariants", "Shots (0: until stopped)"), "", 0, 100000, T::Integer),
+              number("startDelaySeconds", QT_TRANSLATE_NOOP("ActionVariants", "Start after"), QT_TRANSLATE_NOOP("ActionVariants", "s"), 0, 3600)}),
+        kind("cameraSeriesByTime", QT_TRANSLATE_NOOP("ActionVariants", "Photos by time"),
+             {number("intervalSeconds", QT_TRANSLATE_NOOP("ActionVariants", "Every"), QT_TRANSLATE_NOOP("ActionVariants", "s"), 0.1, 3600),
+              number("shots", QT_TRANSLATE_NOOP("ActionVariants", "Shots (0: until stopped)"), "", 0, 100000, T::Integer),
+              number("startDelaySeconds", QT_TRANSLATE_NOOP("ActionVariants", "Start after"), QT_TRANSLATE_NOOP("ActionVariants", "s"), 0, 3600)}),
+        kind("wait", QT_TRANSLATE_NOOP("ActionVariants", "Wait"),
+             {number("seconds", QT_TRANSLATE_NOOP("ActionVariants", "For"), QT_TRANSLATE_NOOP("ActionVariants", "s"), 0, 86400),
+              toggle("waitForOperator", QT_TRANSLATE_NOOP("ActionVariants", "Until the operator continues"))}),
+        kind("heading", QT_TRANSLATE_NOOP("ActionVariants", "Heading"),
+             {number("headingDeg", QT_TRANSLATE_NOOP("ActionVariants", "Heading"), "°", 0, 360),
+              toggle("relativeToNextWaypoint", QT_TRANSLATE_NOOP("ActionVariants", "From the course"))}),
+        kind("poi", QT_TRANSLATE_NOOP("ActionVariants", "Point of interest"),
+             {number("latitude", QT_TRANSLATE_NOOP("ActionVariants", "Latitude"), "°", -90, 90),
+              number("longitude", QT_TRANSLATE_NOOP("ActionVariants", "Longitude"), "°", -180, 180),
+              number("altitude", QT_TRANSLATE_NOOP("ActionVariants", "Altitude"), QT_TRANSLATE_NOOP("ActionVariants", "m"), -500, 10000),
+              choice("altitudeType", QT_TRANSLATE_NOOP("ActionVariants", "Altitude type"),
+                     {{"AGL", QT_TRANSLATE_NOOP("ActionVariants", "Above ground (AGL)")},
+                      {"AMSL", QT_TRANSLATE_NOOP("ActionVariants", "Above sea level (AMSL)")}})}),
+        kind("cameraControl", QT_TRANSLATE_NOOP("ActionVariants", "Gimbal and zoom"),
+             {optional(number("tiltDeg", QT_TRANSLATE_NOOP("ActionVariants", "Tilt (90: down)"), "°", -90, 180)),
+              optional(number("rollDeg", QT_TRANSLATE_NOOP("ActionVariants", "Roll"), "°", -90, 90)),
+              optional(number("yawDeg", QT_TRANSLATE_NOOP("ActionVariants", "Yaw"), "°", -360, 360)),
+              optional(number("zoomLevel", QT_TRANSLATE_NOOP("ActionVariants", "Zoom level"), "", 0, 1000, T::Integer))}),
+        kind("panorama", QT_TRANSLATE_NOOP("ActionVariants", "Panorama"),
+             {number("angleDeg", QT_TRANSLATE_NOOP("ActionVariants", "Angle"), "°", 1, 360),
+              number("stepAngleDeg", QT_TRANSLATE_NOOP("ActionVariants", "Step"), "°", 0, 360),
+              number("stepDelaySeconds", QT_TRANSLATE_NOOP("ActionVariants", "Pause per step"), QT_TRANSLATE_NOOP("ActionVariants", "s"), 0, 600),
+              number("rotationSpeedDegPerSecond", QT_TRANSLATE_NOOP("ActionVariants", "Rotation speed"), QT_TRANSLATE_NOOP("ActionVariants", "°/s"), 0.1, 360),
+              toggle("clockwise", QT_TRANSLATE_NOOP("ActionVariants", "Clockwise")),
+              toggle("video", QT_TRANSLATE_NOOP("ActionVariants", "Video"))}),
     };
     static const std::vector<ActionKindDescription> all = [] {
         std::vector<ActionKindDescription> list = kinds;

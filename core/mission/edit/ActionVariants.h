@@ -44,4 +44,8 @@ struct ActionKindDescription
 const std::vector<ActionKindDescription> &editableActionKinds();
 const ActionKindDescription *actionKindDescription(const QString &kind);
 
+// The operator's words for a label, unit or choice of the tables above (and ServerActions'): they
+// keep the English source text, so that they stay the same values however the UI is translated.
+QString actionText(const QString &source);
+
 } // namespace sortie::mission

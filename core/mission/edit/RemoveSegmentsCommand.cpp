@@ -3,6 +3,7 @@
 #include "RouteModel.h"
 
 #include <algorithm>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -11,8 +12,8 @@ RemoveSegmentsCommand::RemoveSegmentsCommand(RouteModel *model, std::vector<int>
 {
     std::sort(m_rows.begin(), m_rows.end());
     m_rows.erase(std::unique(m_rows.begin(), m_rows.end()), m_rows.end());
-    setText(m_rows.size() == 1 ? QStringLiteral("Delete %1").arg(RouteModel::segmentLabelFor(m_rows.front(), model->segment(m_rows.front())))
-                               : QStringLiteral("Delete %1 rows").arg(m_rows.size()));
+    setText(m_rows.size() == 1 ? QCoreApplication::translate("RemoveSegmentsCommand", "Delete %1").arg(RouteModel::segmentLabelFor(m_rows.front(), model->segment(m_rows.front())))
+                               : QCoreApplication::translate("RemoveSegmentsCommand", "Delete %1 rows").arg(m_rows.size()));
 }
 
 void RemoveSegmentsCommand::redo()

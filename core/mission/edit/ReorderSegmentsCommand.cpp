@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -24,8 +25,8 @@ ReorderSegmentsCommand *ReorderSegmentsCommand::moveRows(RouteModel *model, std:
             order.push_back(i);
     }
     return new ReorderSegmentsCommand(model, std::move(order),
-                                      rows.size() == 1 ? QStringLiteral("Move row %1").arg(rows.front() + 1)
-                                                       : QStringLiteral("Move %1 rows").arg(rows.size()));
+                                      rows.size() == 1 ? QCoreApplication::translate("ReorderSegmentsCommand", "Move row %1").arg(rows.front() + 1)
+                                                       : QCoreApplication::translate("ReorderSegmentsCommand", "Move %1 rows").arg(rows.size()));
 }
 
 ReorderSegmentsCommand *ReorderSegmentsCommand::reverse(RouteModel *model, int first, int last)
@@ -33,7 +34,7 @@ ReorderSegmentsCommand *ReorderSegmentsCommand::reverse(RouteModel *model, int f
     std::vector<int> order(size_t(model->count()));
     std::iota(order.begin(), order.end(), 0);
     std::reverse(order.begin() + first, order.begin() + last + 1);
-    return new ReorderSegmentsCommand(model, std::move(order), QStringLiteral("Reverse rows %1-%2").arg(first + 1).arg(last + 1));
+    return new ReorderSegmentsCommand(model, std::move(order), QCoreApplication::translate("ReorderSegmentsCommand", "Reverse rows %1-%2").arg(first + 1).arg(last + 1));
 }
 
 ReorderSegmentsCommand::ReorderSegmentsCommand(RouteModel *model, std::vector<int> order, const QString &text)

@@ -1,4 +1,5 @@
 #include "RouteModel.h"
+#include "LanguageChange.h"
 
 #include "ActionVariants.h"
 #include "AreaScanPlanner.h"
@@ -50,7 +51,10 @@ std::vector<std::pair<int, int>> contiguousRuns(const std::vector<int> &rows)
     return runs;
 }
 
-RouteModel::RouteModel(QObject *parent) : QAbstractListModel(parent) {}
+RouteModel::RouteModel(QObject *parent) : QAbstractListModel(parent)
+{
+    i18n::refreshOnLanguageChange(this); // segment names and summaries are translated in data()
+}
 
 int RouteModel::rowCount(const QModelIndex &parent) const
 {

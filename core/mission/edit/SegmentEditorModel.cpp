@@ -1,9 +1,12 @@
 #include "SegmentEditorModel.h"
+#include "LanguageChange.h"
 
 #include "AreaScanPlanner.h"
 #include "RouteEditor.h"
 #include "RouteModel.h"
 #include "SegmentParameters.h"
+
+#include <QCoreApplication>
 
 #include <algorithm>
 #include <cmath>
@@ -38,20 +41,20 @@ std::optional<ParameterDefinition> sortieDefinition(const QString &name)
 {
     struct Own { const char *name; const char *label; ParameterType type; Quantity quantity; double minimum; };
     static const Own kOwn[] = {
-        {"acceptanceRadius", "Acceptance radius", ParameterType::Double, Quantity::Distance, 0},
-        {"cameraSensorWidth", "Sensor width (mm)", ParameterType::Double, Quantity::None, 0.01},
-        {"cameraSensorHeight", "Sensor height (mm)", ParameterType::Double, Quantity::None, 0.01},
-        {"cameraFocalLength", "Focal length (mm)", ParameterType::Double, Quantity::None, 0.01},
-        {"cameraImageWidth", "Image width (px)", ParameterType::Integer, Quantity::Count, 1},
-        {"cameraImageHeight", "Image height (px)", ParameterType::Integer, Quantity::Count, 1},
-        {"height", "Height", ParameterType::Double, Quantity::Altitude, 0.1},
-        {"sideDistance", "Side distance (0: from the camera)", ParameterType::Double, Quantity::Distance, 0},
+        {"acceptanceRadius", QT_TRANSLATE_NOOP("SegmentEditorModel", "Acceptance radius"), ParameterType::Double, Quantity::Distance, 0},
+        {"cameraSensorWidth", QT_TRANSLATE_NOOP("SegmentEditorModel", "Sensor width (mm)"), ParameterType::Double, Quantity::None, 0.01},
+        {"cameraSensorHeight", QT_TRANSLATE_NOOP("SegmentEditorModel", "Sensor height (mm)"), ParameterType::Double, Quantity::None, 0.01},
+        {"cameraFocalLength", QT_TRANSLATE_NOOP("SegmentEditorModel", "Focal length (mm)"), ParameterType::Double, Quantity::None, 0.01},
+        {"cameraImageWidth", QT_TRANSLATE_NOOP("SegmentEditorModel", "Image width (px)"), ParameterType::Integer, Quantity::Count, 1},
+        {"cameraImageHeight", QT_TRANSLATE_NOOP("SegmentEditorModel", "Image height (px)"), ParameterType::Integer, Quantity::Count, 1},
+        {"height", QT_TRANSLATE_NOOP("SegmentEditorModel", "Height"), ParameterType::Double, Quantity::Altitude, 0.1},
+        {"sideDistance", QT_TRANSLATE_NOOP("SegmentEditorModel", "Side distance (0: from the camera)"), ParameterType::Double, Quantity::Distance, 0},
     };
     for (const Own &o : kOwn) {
         if (name == QLatin1String(o.name)) {
             ParameterDefinition d;
             d.name = name;
-            d.displayName = QString::fromLatin1(o.label);
+            d.displayName = QCoreApplication::translate("SegmentEditorModel", o.label);
             d.type = o.type;
             d.quantity = o.quantity;
             d.minimum = o.minimum;
@@ -103,6 +106,7 @@ QString textOf(const QVariant &v)
 SegmentEditorModel::SegmentEditorModel(RouteModel *model, RouteEditor *editor, QObject *parent)
     : QAbstractListModel(parent), m_model(model), m_editor(editor)
 {
+    i18n::onLanguageChange(this, [this] { rebuild(); }); // the fields' names are made in the language of the day
     connect(model, &QAbstractItemModel::dataChanged, this, [this](const QModelIndex &from, const QModelIndex &to) {
         if (m_row >= from.row() && m_row <= to.row())
             refreshValues();

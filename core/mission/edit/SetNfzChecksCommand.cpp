@@ -9,8 +9,10 @@ namespace sortie::mission {
 namespace {
 QString textOf(bool aerodromeChanged, bool on)
 {
-    const char *what = aerodromeChanged ? (on ? "Check aerodrome zones" : "Do not check aerodrome zones")
-                                        : (on ? "Check custom zones" : "Do not check custom zones");
+    const char *what = aerodromeChanged ? (on ? QT_TRANSLATE_NOOP("SetNfzChecksCommand", "Check aerodrome zones")
+                                              : QT_TRANSLATE_NOOP("SetNfzChecksCommand", "Do not check aerodrome zones"))
+                                        : (on ? QT_TRANSLATE_NOOP("SetNfzChecksCommand", "Check custom zones")
+                                              : QT_TRANSLATE_NOOP("SetNfzChecksCommand", "Do not check custom zones"));
     return QCoreApplication::translate("SetNfzChecksCommand", what);
 }
 } // namespace

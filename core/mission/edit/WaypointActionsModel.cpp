@@ -1,4 +1,5 @@
 #include "WaypointActionsModel.h"
+#include "LanguageChange.h"
 
 #include "RouteEditor.h"
 #include "RouteModel.h"
@@ -29,6 +30,7 @@ const std::vector<WaypointAction> *actionsAt(const RouteModel &model, int row)
 WaypointActionsModel::WaypointActionsModel(RouteModel *model, RouteEditor *editor, QObject *parent)
     : QAbstractListModel(parent), m_model(model), m_editor(editor)
 {
+    i18n::refreshOnLanguageChange(this); // labels, units and summaries are translated in data()
     connect(model, &QAbstractItemModel::dataChanged, this, [this](const QModelIndex &from, const QModelIndex &to) {
         for (int row : std::as_const(m_waypoints))
             if (row >= from.row() && row <= to.row())
@@ -111,7 +113,7 @@ QVariantList WaypointActionsModel::kinds() const
 {
     QVariantList list;
     for (const ActionKindDescription &k : editableActionKinds())
-        list << QVariantMap{{QStringLiteral("kind"), k.kind}, {QStringLiteral("label"), k.label}};
+        list << QVariantMap{{QStringLiteral("kind"), k.kind}, {QStringLiteral("label"), actionText(k.label)}};
     return list;
 }
 
@@ -135,7 +137,7 @@ QVariant WaypointActionsModel::data(const QModelIndex &index, int role) const
     const ActionKindDescription *description = actionKindDescription(actionKindName(action));
     switch (role) {
     case KindRole: return actionKindName(action);
-    case LabelRole: return description ? description->label : describeAction(action);
+    case LabelRole: return description ? actionText(description->label) : describeAction(action);
     case SummaryRole: return describeAction(action);
     case EditableRole: return description != nullptr;  // a server's action Sortie does not model is kept, not edited
     case FieldsRole: {
@@ -146,9 +148,9 @@ QVariant WaypointActionsModel::data(const QModelIndex &index, int role) const
         for (const ActionField &f : description->fields) {
             QVariantList choices;
             for (const auto &[value, label] : f.choices)
-                choices << QVariantMap{{QStringLiteral("value"), value}, {QStringLiteral("text"), label}};
-            fields << QVariantMap{{QStringLiteral("action"), index.row()}, {QStringLiteral("name"), f.name}, {QStringLiteral("label"), f.label},
-                                  {QStringLiteral("type"), typeName(f.type)}, {QStringLiteral("unit"), f.unit},
+                choices << QVariantMap{{QStringLiteral("value"), value}, {QStringLiteral("text"), actionText(label)}};
+            fields << QVariantMap{{QStringLiteral("action"), index.row()}, {QStringLiteral("name"), f.name}, {QStringLiteral("label"), actionText(f.label)},
+                                  {QStringLiteral("type"), typeName(f.type)}, {QStringLiteral("unit"), actionText(f.unit)},
                                   {QStringLiteral("value"), values.value(f.name)}, {QStringLiteral("choices"), choices},
                                   {QStringLiteral("optional"), f.optional}};
         }

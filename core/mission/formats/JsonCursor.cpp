@@ -3,6 +3,7 @@
 #include <QRegularExpression>
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::mission::formats {
 
@@ -32,7 +33,7 @@ void JsonCursor::fail(const QString &message) const
 void JsonCursor::requireObject() const
 {
     if (!m_value->is_object())
-        fail(QStringLiteral("expected an object, found %1").arg(QLatin1String(typeName(*m_value))));
+        fail(QCoreApplication::translate("JsonCursor", "expected an object, found %1").arg(QLatin1String(typeName(*m_value))));
 }
 
 std::optional<JsonCursor> JsonCursor::find(const char *key) const
@@ -48,20 +49,20 @@ JsonCursor JsonCursor::at(const char *key) const
 {
     if (auto c = find(key))
         return *c;
-    fail(QStringLiteral("missing required key \"%1\"").arg(QLatin1String(key)));
+    fail(QCoreApplication::translate("JsonCursor", "missing required key \"%1\"").arg(QLatin1String(key)));
 }
 
 size_t JsonCursor::arraySize() const
 {
     if (!m_value->is_array())
-        fail(QStringLiteral("expected an array, found %1").arg(QLatin1String(typeName(*m_value))));
+        fail(QCoreApplication::translate("JsonCursor", "expected an array, found %1").arg(QLatin1String(typeName(*m_value))));
     return m_value->size();
 }
 
 JsonCursor JsonCursor::at(size_t index) const
 {
     if (index >= arraySize())
-        fail(QStringLiteral("expected at least %1 elements, found %2").arg(index + 1).arg(m_value->size()));
+        fail(QCoreApplication::translate("JsonCursor", "expected at least %1 elements, found %2").arg(index + 1).arg(m_value->size()));
     return JsonCursor((*m_value)[index], m_path + "/" + std::to_string(index));
 }
 
@@ -81,10 +82,10 @@ double JsonCursor::toNumber(const Json &v, const JsonCursor &where, const char *
 {
     auto fail = [&](const QString &m) { key ? where.failAt(key, m) : where.fail(m); };
     if (!v.is_number())
-        fail(QStringLiteral("expected a number, found %1").arg(QLatin1String(typeName(v))));
+        fail(QCoreApplication::translate("JsonCursor", "expected a number, found %1").arg(QLatin1String(typeName(v))));
     const double d = v.get<double>();
     if (!std::isfinite(d))
-        fail(QStringLiteral("the number is not finite"));
+        fail(QCoreApplication::translate("JsonCursor", "the number is not finite"));
     return d;
 }
 
@@ -97,7 +98,7 @@ double JsonCursor::number(const char *key) const
 {
     const Json *v = member(key);
     if (!v)
-        failAt(key, QStringLiteral("missing required key \"%1\"").arg(QLatin1String(key)));
+        failAt(key, QCoreApplication::translate("JsonCursor", "missing required key \"%1\"").arg(QLatin1String(key)));
     return toNumber(*v, *this, key);
 }
 
@@ -111,7 +112,7 @@ int JsonCursor::integer() const
 {
     const double v = number();
     if (v != std::floor(v) || std::abs(v) > 2147483647.0)
-        fail(QStringLiteral("expected an integer, found %1").arg(v));
+        fail(QCoreApplication::translate("JsonCursor", "expected an integer, found %1").arg(v));
     return int(v);
 }
 
@@ -124,7 +125,7 @@ int JsonCursor::integerOr(const char *key, int fallback) const
 bool JsonCursor::boolean() const
 {
     if (!m_value->is_boolean())
-        fail(QStringLiteral("expected true or false, found %1").arg(QLatin1String(typeName(*m_value))));
+        fail(QCoreApplication::translate("JsonCursor", "expected true or false, found %1").arg(QLatin1String(typeName(*m_value))));
     return m_value->get<bool>();
 }
 
@@ -134,7 +135,7 @@ bool JsonCursor::booleanOr(const char *key, bool fallback) const
     if (!v || v->is_null())
         return fallback;
     if (!v->is_boolean())
-        failAt(key, QStringLiteral("expected true or false, found %1").arg(QLatin1String(typeName(*v))));
+        failAt(key, QCoreApplication::translate("JsonCursor", "expected true or false, found %1").arg(QLatin1String(typeName(*v))));
     return v->get<bool>();
 }
 
@@ -144,14 +145,14 @@ const std::string &JsonCursor::text(const char *key, const std::string &fallback
     if (!v || v->is_null())
         return fallback;
     if (!v->is_string())
-        failAt(key, QStringLiteral("expected a string, found %1").arg(QLatin1String(typeName(*v))));
+        failAt(key, QCoreApplication::translate("JsonCursor", "expected a string, found %1").arg(QLatin1String(typeName(*v))));
     return v->get_ref<const std::string &>();
 }
 
 QString JsonCursor::string() const
 {
     if (!m_value->is_string())
-        fail(QStringLiteral("expected a string, found %1").arg(QLatin1String(typeName(*m_value))));
+        fail(QCoreApplication::translate("JsonCursor", "expected a string, found %1").arg(QLatin1String(typeName(*m_value))));
     return QString::fromStdString(m_value->get_ref<const std::string &>());
 }
 
@@ -161,7 +162,7 @@ QString JsonCursor::stringOr(const char *key, const QString &fallback) const
     if (!v || v->is_null())
         return fallback;
     if (!v->is_string())
-        failAt(key, QStringLiteral("expected a string, found %1").arg(QLatin1String(typeName(*v))));
+        failAt(key, QCoreApplication::translate("JsonCursor", "expected a string, found %1").arg(QLatin1String(typeName(*v))));
     return QString::fromStdString(v->get_ref<const std::string &>());
 }
 
@@ -173,7 +174,7 @@ MissionError syntaxError(const QByteArray &data, qsizetype byte, QString what)
         if (data[i] == '\n') { ++line; column = 1; }
         else ++column;
     }
-    return MissionError{QStringLiteral("not valid JSON: %1").arg(what), {}, line, column, {}};
+    return MissionError{QCoreApplication::translate("JsonCursor", "not valid JSON: %1").arg(what), {}, line, column, {}};
 }
 }
 
@@ -187,7 +188,7 @@ Result<Json> parseJson(const QByteArray &data)
         const qsizetype colon = what.indexOf(QStringLiteral(": "));
         if (colon >= 0)
             what = what.mid(colon + 2);
-        static const QRegularExpression lastRead(QStringLiteral("; last read: '.*'"), QRegularExpression::DotMatchesEverythingOption);
+        static const QRegularExpression lastRead(QCoreApplication::translate("JsonCursor", "; last read: '.*'"), QRegularExpression::DotMatchesEverythingOption);
         what.remove(lastRead);
         return syntaxError(data, qsizetype(e.byte) - 1, what);  // e.byte is 1-based, just past the error
     } catch (const Json::exception &e) {

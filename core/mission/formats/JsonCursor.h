@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <QCoreApplication>
 
 namespace sortie::mission::formats {
 
@@ -76,7 +77,7 @@ int indexOf(const char *const (&names)[N], const JsonCursor &c)
     for (size_t i = 0; i < N; ++i)
         if (s == names[i])
             return int(i);
-    c.fail(QStringLiteral("unknown value \"%1\"").arg(QString::fromStdString(s)));
+    c.fail(QCoreApplication::translate("JsonCursor", "unknown value \"%1\"").arg(QString::fromStdString(s)));
 }
 
 } // namespace sortie::mission::formats

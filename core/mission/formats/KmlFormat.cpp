@@ -5,6 +5,7 @@
 
 #include <QXmlStreamReader>
 #include <QXmlStreamWriter>
+#include <QCoreApplication>
 
 namespace sortie::mission::formats {
 
@@ -34,13 +35,13 @@ Result<std::vector<GeoPoint>> parseCoordinates(const QString &text, int startLin
         const QString tuple = text.mid(start, i - start);
         const QStringList parts = tuple.split(QLatin1Char(','));
         if (parts.size() < 2 || parts.size() > 3)
-            return xmlError(line, 0, QStringLiteral("bad coordinate \"%1\": expected longitude,latitude[,altitude]").arg(tuple.left(60)));
+            return xmlError(line, 0, QCoreApplication::translate("KmlFormat", "bad coordinate \"%1\": expected longitude,latitude[,altitude]").arg(tuple.left(60)));
         const auto lon = parseNumber(parts[0].toLatin1()), lat = parseNumber(parts[1].toLatin1());
         if (!lon || !lat || (parts.size() == 3 && !parseNumber(parts[2].toLatin1())))
-            return xmlError(line, 0, QStringLiteral("bad coordinate \"%1\": not a number").arg(tuple.left(60)));
+            return xmlError(line, 0, QCoreApplication::translate("KmlFormat", "bad coordinate \"%1\": not a number").arg(tuple.left(60)));
         const GeoPoint g{*lat, *lon};
         if (!g.isValid())
-            return xmlError(line, 0, QStringLiteral("coordinate \"%1\" is out of range").arg(tuple.left(60)));
+            return xmlError(line, 0, QCoreApplication::translate("KmlFormat", "coordinate \"%1\" is out of range").arg(tuple.left(60)));
         out.push_back(g);
     }
     return out;
@@ -103,7 +104,7 @@ Result<ImportedPolygon> readKmlPolygon(const QByteArray &data)
                 if (closed)
                     ring.pop_back();
                 if (ring.size() < 3 && (closed || context == QLatin1String("Polygon")))
-                    return xmlError(line, 0, QStringLiteral("a boundary needs at least 3 distinct points, found %1").arg(ring.size()));
+                    return xmlError(line, 0, QCoreApplication::translate("KmlFormat", "a boundary needs at least 3 distinct points, found %1").arg(ring.size()));
                 shapes.push_back({context == QLatin1String("Polygon"), closed, line, std::move(ring), placemarkName});
                 context.clear();
             }
@@ -121,7 +122,7 @@ Result<ImportedPolygon> readKmlPolygon(const QByteArray &data)
         }
     }
     if (xml.hasError())
-        return xmlError(int(xml.lineNumber()), int(xml.columnNumber()), QStringLiteral("not valid KML: %1").arg(xml.errorString()));
+        return xmlError(int(xml.lineNumber()), int(xml.columnNumber()), QCoreApplication::translate("KmlFormat", "not valid KML: %1").arg(xml.errorString()));
     // A Polygon first; else a closed LineString.
     const Shape *chosen = nullptr;
     int usable = 0;
@@ -134,16 +135,16 @@ Result<ImportedPolygon> readKmlPolygon(const QByteArray &data)
     }
     if (!chosen) {
         for (const Shape &sh : shapes)
-            return xmlError(sh.line, 0, QStringLiteral("this LineString is open, so it encloses no area; close it (last point = first) to use it as a boundary"));
+            return xmlError(sh.line, 0, QCoreApplication::translate("KmlFormat", "this LineString is open, so it encloses no area; close it (last point = first) to use it as a boundary"));
         if (firstBarePlacemarkLine)
-            return xmlError(firstBarePlacemarkLine, 0, QStringLiteral("this Placemark has no Polygon (with an outerBoundaryIs LinearRing) or closed LineString"));
-        return xmlError(int(xml.lineNumber()), 0, QStringLiteral("the document has no Polygon or closed LineString"));
+            return xmlError(firstBarePlacemarkLine, 0, QCoreApplication::translate("KmlFormat", "this Placemark has no Polygon (with an outerBoundaryIs LinearRing) or closed LineString"));
+        return xmlError(int(xml.lineNumber()), 0, QCoreApplication::translate("KmlFormat", "the document has no Polygon or closed LineString"));
     }
     ImportedPolygon out;
     out.name = chosen->name;
     out.polygon = chosen->points;
     if (usable > 1)
-        out.notices << QStringLiteral("The file holds %1 closed shapes; the one at line %2 was imported.").arg(usable).arg(chosen->line);
+        out.notices << QCoreApplication::translate("KmlFormat", "The file holds %1 closed shapes; the one at line %2 was imported.").arg(usable).arg(chosen->line);
     return out;
 }
 
@@ -173,8 +174,8 @@ QByteArray writeKmlRoute(const Route &route, ScanPlanCache *cache)
             ++i;
         }
         w.writeStartElement(QStringLiteral("Placemark"));
-        w.writeTextElement(QStringLiteral("name"), part++ == 0 && i == path.size() ? QStringLiteral("Flight path")
-                                                                                  : QStringLiteral("Flight path, part %1").arg(part));
+        w.writeTextElement(QStringLiteral("name"), part++ == 0 && i == path.size() ? QCoreApplication::translate("KmlFormat", "Flight path")
+                                                                                  : QCoreApplication::translate("KmlFormat", "Flight path, part %1").arg(part));
         w.writeStartElement(QStringLiteral("LineString"));
         w.writeTextElement(QStringLiteral("altitudeMode"), altitudeMode(t));
         writeCoordinates(w, run);

@@ -7,6 +7,7 @@
 #include "ServerActions.h"
 
 #include <QSet>
+#include <QCoreApplication>
 
 namespace sortie::mission::formats {
 
@@ -73,7 +74,7 @@ private:
         case WaypointRole::Pass:
             nav.command = w.turnType == TurnType::Spline ? mav::NavSplineWaypoint : mav::NavWaypoint;
             if (w.turnType == TurnType::StopAndTurn || w.turnType == TurnType::BankTurn)
-                m_once.insert(QStringLiteral("MAVLink has no stop-and-turn or bank-turn waypoints: they were written as plain waypoints."));
+                m_once.insert(QCoreApplication::translate("MavlinkExport", "MAVLink has no stop-and-turn or bank-turn waypoints: they were written as plain waypoints."));
             // A leading wait is the waypoint's own hold time.
             if (!w.actions.empty())
                 if (const auto *wait = std::get_if<WaitAction>(&w.actions.front()); wait && !wait->waitForOperator && wait->seconds > 0) {
@@ -91,7 +92,7 @@ private:
 
     void skipped(int row, const QString &what)
     {
-        m_out.notices << QStringLiteral("Waypoint %1: %2 has no MAVLink equivalent and was left out.").arg(row + 1).arg(what);
+        m_out.notices << QCoreApplication::translate("MavlinkExport", "Waypoint %1: %2 has no MAVLink equivalent and was left out.").arg(row + 1).arg(what);
     }
 
     // Servos and VTOL transitions have MAVLink commands; the rest of what a server defines has none.
@@ -102,12 +103,12 @@ private:
         if (kind == QLatin1String("setServo") || kind == QLatin1String("repeatServo")) {
             const QVariant servo = value("servoId"), pwm = value("pwm");
             if (!servo.isValid() || !pwm.isValid())
-                return skipped(row, QStringLiteral("a servo action without its servo and PWM"));
+                return skipped(row, QCoreApplication::translate("MavlinkExport", "a servo action without its servo and PWM"));
             if (kind == QLatin1String("setServo"))
                 return m_out.items.push_back(command(mav::DoSetServo, servo.toDouble(), pwm.toDouble()));
             const QVariant count = value("count"), cycle = value("delay");
             if (!count.isValid() || !cycle.isValid())
-                return skipped(row, QStringLiteral("a repeated servo without its count and cycle time"));
+                return skipped(row, QCoreApplication::translate("MavlinkExport", "a repeated servo without its count and cycle time"));
             return m_out.items.push_back(command(mav::DoRepeatServo, servo.toDouble(), pwm.toDouble(), count.toDouble(), cycle.toDouble()));
         }
         if (kind == QLatin1String("transitionVtol"))
@@ -121,11 +122,11 @@ private:
     {
         std::visit(Overloaded{
             [&](const WaitAction &x) {
-                if (x.waitForOperator) skipped(row, QStringLiteral("waiting for the operator"));
+                if (x.waitForOperator) skipped(row, QCoreApplication::translate("MavlinkExport", "waiting for the operator"));
                 else m_out.items.push_back(command(mav::NavDelay, x.seconds, -1, -1, -1));
             },
             [&](const HeadingAction &x) {
-                if (x.relativeToNextWaypoint) skipped(row, QStringLiteral("a heading relative to the course"));
+                if (x.relativeToNextWaypoint) skipped(row, QCoreApplication::translate("MavlinkExport", "a heading relative to the course"));
                 else m_out.items.push_back(command(mav::ConditionYaw, x.headingDeg, 0, 0, 0));
             },
             [&](const PoiAction &x) {
@@ -141,18 +142,18 @@ private:
                 case TriggerState::SingleShot: m_out.items.push_back(command(mav::ImageStartCapture, 0, 0, 1, 0)); break;
                 case TriggerState::StartRecording: m_out.items.push_back(command(mav::VideoStartCapture)); break;
                 case TriggerState::StopRecording: m_out.items.push_back(command(mav::VideoStopCapture)); break;
-                case TriggerState::ToggleRecording: skipped(row, QStringLiteral("toggling video")); break;
+                case TriggerState::ToggleRecording: skipped(row, QCoreApplication::translate("MavlinkExport", "toggling video")); break;
                 }
             },
             [&](const CameraSeriesByTimeAction &x) {
-                if (x.startDelaySeconds != 0) skipped(row, QStringLiteral("the series' start delay"));
+                if (x.startDelaySeconds != 0) skipped(row, QCoreApplication::translate("MavlinkExport", "the series' start delay"));
                 m_out.items.push_back(command(mav::ImageStartCapture, 0, x.intervalSeconds, x.shots, 0));
             },
             [&](const CameraSeriesByDistanceAction &x) {
-                if (x.shots != 0 || x.startDelaySeconds != 0) skipped(row, QStringLiteral("the series' shot count and start delay"));
+                if (x.shots != 0 || x.startDelaySeconds != 0) skipped(row, QCoreApplication::translate("MavlinkExport", "the series' shot count and start delay"));
                 m_out.items.push_back(command(mav::DoSetCamTriggDist, x.intervalMeters, 0, 0, 0));
             },
-            [&](const PanoramaAction &) { skipped(row, QStringLiteral("a panorama")); },
+            [&](const PanoramaAction &) { skipped(row, QCoreApplication::translate("MavlinkExport", "a panorama")); },
             [&](const CameraControlAction &x) {
                 // DO_MOUNT_CONTROL has no "leave as it is": an angle not set is written as 0, and said so.
                 QStringList unset;
@@ -160,9 +161,9 @@ private:
                 if (!x.rollDeg) unset << QStringLiteral("roll");
                 if (!x.yawDeg) unset << QStringLiteral("yaw");
                 if (!unset.isEmpty())
-                    m_out.notices << QStringLiteral("Waypoint %1: the gimbal's %2 was not set and is written as 0° (MAVLink has no \"unchanged\").")
+                    m_out.notices << QCoreApplication::translate("MavlinkExport", "Waypoint %1: the gimbal's %2 was not set and is written as 0° (MAVLink has no \"unchanged\").")
                                          .arg(row + 1).arg(unset.join(QStringLiteral(", ")));
-                if (x.zoomLevel) skipped(row, QStringLiteral("a zoom level"));
+                if (x.zoomLevel) skipped(row, QCoreApplication::translate("MavlinkExport", "a zoom level"));
                 MavlinkItem i = command(mav::DoMountControl, -x.tiltDeg.value_or(0.0), x.rollDeg.value_or(0.0), x.yawDeg.value_or(0.0), 0);
                 i.altitude = mav::MountModeMavlinkTargeting;  // param 7: the mount mode
                 m_out.items.push_back(i);
@@ -183,8 +184,8 @@ private:
         }
         const SegmentPlanOutcome o = planAlgorithmSegment(a, AlgorithmCatalog::builtIn(), {m_cameras, m_speed, std::nullopt});
         if (!o.ok()) {
-            m_out.notices << QStringLiteral("%1 was left out: %2").arg(segmentLabel(row, Segment(a)),
-                                                                       o.errors.empty() ? QStringLiteral("it cannot be planned") : o.errors.front());
+            m_out.notices << QCoreApplication::translate("MavlinkExport", "%1 was left out: %2").arg(segmentLabel(row, Segment(a)),
+                                                                       o.errors.empty() ? QCoreApplication::translate("MavlinkExport", "it cannot be planned") : o.errors.front());
             return;
         }
         for (const PlannedPoint &p : o.plan->points) {
@@ -203,7 +204,7 @@ private:
                     m_out.items.push_back(command(mav::DoSetCamTriggDist, 0, 0, 0, 0));
             }
         }
-        m_once.insert(QStringLiteral("Segments without a MAVLink equivalent (circle, perimeter...) were written as the waypoints Sortie plans for them."));
+        m_once.insert(QCoreApplication::translate("MavlinkExport", "Segments without a MAVLink equivalent (circle, perimeter...) were written as the waypoints Sortie plans for them."));
     }
 
     void scan(const AreaScan &s, int row)
@@ -218,7 +219,7 @@ private:
         AreaScanOutcome scratch;
         const AreaScanOutcome &o = scanOutcome(s, m_cache, scratch);
         if (!o.ok()) {
-            m_out.notices << QStringLiteral("Area scan %1 was left out: %2").arg(row + 1).arg(o.message);
+            m_out.notices << QCoreApplication::translate("MavlinkExport", "Area scan %1 was left out: %2").arg(row + 1).arg(o.message);
             return;
         }
         speed(s.parameters.speed);
@@ -243,7 +244,7 @@ private:
             m_out.items.push_back(command(mav::DoSetCamTriggDist, 0, 0, 0, 0));
             if (turnarounds) point(o.plan->path[k++]);
         }
-        m_out.notices << QStringLiteral("Area scan %1 was written as %2 waypoints with distance triggering.").arg(row + 1).arg(o.plan->path.size());
+        m_out.notices << QCoreApplication::translate("MavlinkExport", "Area scan %1 was written as %2 waypoints with distance triggering.").arg(row + 1).arg(o.plan->path.size());
     }
 
     double m_speed;

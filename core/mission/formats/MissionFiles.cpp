@@ -11,6 +11,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QSaveFile>
+#include <QCoreApplication>
 
 namespace sortie::mission::formats {
 
@@ -21,9 +22,9 @@ Result<QByteArray> readAll(const QString &path)
 {
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))
-        return MissionError{QStringLiteral("cannot open: %1").arg(f.errorString()), path, 0, 0, {}};
+        return MissionError{QCoreApplication::translate("MissionFiles", "cannot open: %1").arg(f.errorString()), path, 0, 0, {}};
     if (f.size() > kMaxFileBytes)
-        return MissionError{QStringLiteral("the file is larger than 256 MiB"), path, 0, 0, {}};
+        return MissionError{QCoreApplication::translate("MissionFiles", "the file is larger than 256 MiB"), path, 0, 0, {}};
     return f.readAll();
 }
 
@@ -31,7 +32,7 @@ Result<FileFormat> formatOf(const QString &path)
 {
     if (const auto f = formatForPath(path))
         return *f;
-    return MissionError{QStringLiteral("unknown file type: use .sortie, .plan, .waypoints, .kml or .kmz"), path, 0, 0, {}};
+    return MissionError{QCoreApplication::translate("MissionFiles", "unknown file type: use .sortie, .plan, .waypoints, .kml or .kmz"), path, 0, 0, {}};
 }
 
 Mission missionOf(Route route, const QString &path)
@@ -82,11 +83,11 @@ std::optional<FileFormat> formatForPath(const QString &path)
 QString formatName(FileFormat format)
 {
     switch (format) {
-    case FileFormat::Sortie: return QStringLiteral("Sortie mission");
-    case FileFormat::QgcPlan: return QStringLiteral("QGroundControl plan");
-    case FileFormat::Wpl: return QStringLiteral("QGC WPL 110 waypoints");
+    case FileFormat::Sortie: return QCoreApplication::translate("MissionFiles", "Sortie mission");
+    case FileFormat::QgcPlan: return QCoreApplication::translate("MissionFiles", "QGroundControl plan");
+    case FileFormat::Wpl: return QCoreApplication::translate("MissionFiles", "QGC WPL 110 waypoints");
     case FileFormat::Kml: return QStringLiteral("KML");
-    case FileFormat::Wpml: return QStringLiteral("DJI WPML");
+    case FileFormat::Wpml: return QCoreApplication::translate("MissionFiles", "DJI WPML");
     }
     return {};
 }
@@ -131,7 +132,7 @@ Result<LoadedMission> loadMission(const QString &path)
         return LoadedMission{std::move(m), imported.notices};
     }
     case FileFormat::Kml:
-        return MissionError{QStringLiteral("a KML file holds a polygon, not a mission: import it as an area-scan boundary"), path, 0, 0, {}};
+        return MissionError{QCoreApplication::translate("MissionFiles", "a KML file holds a polygon, not a mission: import it as an area-scan boundary"), path, 0, 0, {}};
     }
     return MissionError{QStringLiteral("unreachable"), path, 0, 0, {}};
 }
@@ -159,12 +160,12 @@ Result<QStringList> saveMission(const Mission &mission, const QString &path, con
             routes.push_back(&r);
     } else if (options.routeIndex) {
         if (*options.routeIndex < 0 || *options.routeIndex >= int(mission.routes.size()))
-            return MissionError{QStringLiteral("the mission has no route %1 (it has %2)").arg(*options.routeIndex + 1).arg(mission.routes.size()), path, 0, 0, {}};
+            return MissionError{QCoreApplication::translate("MissionFiles", "the mission has no route %1 (it has %2)").arg(*options.routeIndex + 1).arg(mission.routes.size()), path, 0, 0, {}};
         routes.push_back(&mission.routes[size_t(*options.routeIndex)]);
     } else if (mission.routes.size() != 1) {
         return MissionError{mission.routes.empty()
-                                ? QStringLiteral("the mission has no route to write")
-                                : QStringLiteral("the mission has %1 routes and a %2 file holds one: choose the route to write (sortie-plan convert --route N), "
+                                ? QCoreApplication::translate("MissionFiles", "the mission has no route to write")
+                                : QCoreApplication::translate("MissionFiles", "the mission has %1 routes and a %2 file holds one: choose the route to write (sortie-plan convert --route N), "
                                                  "or write .sortie or DJI WPML (.kmz), which hold them all")
                                       .arg(mission.routes.size()).arg(formatName(*format)),
                             path, 0, 0, {}};
@@ -172,10 +173,10 @@ Result<QStringList> saveMission(const Mission &mission, const QString &path, con
         routes.push_back(&mission.routes.front());
     }
     if (routes.empty() && *format != FileFormat::Sortie)
-        return MissionError{QStringLiteral("the mission has no route to write"), path, 0, 0, {}};
+        return MissionError{QCoreApplication::translate("MissionFiles", "the mission has no route to write"), path, 0, 0, {}};
     for (const Route *r : routes) {
         const Result<void> gate = permitRelease(validateRoute(*r, &cache), options.override,
-                                                QStringLiteral("Saving route \"%1\"").arg(r->settings.name));
+                                                QCoreApplication::translate("MissionFiles", "Saving route \"%1\"").arg(r->settings.name));
         if (!gate)
             return gate.error().withFile(path);
     }
@@ -197,7 +198,7 @@ Result<QStringList> saveMission(const Mission &mission, const QString &path, con
     }
     QSaveFile f(path);
     if (!f.open(QIODevice::WriteOnly) || f.write(bytes) != bytes.size() || !f.commit())
-        return MissionError{QStringLiteral("cannot write: %1").arg(f.errorString()), path, 0, 0, {}};
+        return MissionError{QCoreApplication::translate("MissionFiles", "cannot write: %1").arg(f.errorString()), path, 0, 0, {}};
     qCInfo(lcMission) << "saved" << path << "as" << formatName(*format);
     return notices;
 }

@@ -1,4 +1,5 @@
 #include "QgcFenceJson.h"
+#include <QCoreApplication>
 
 namespace sortie::mission::formats {
 
@@ -6,17 +7,17 @@ namespace {
 GeoPoint latLon(const JsonCursor &pair)
 {
     if (pair.arraySize() < 2)
-        pair.fail(QStringLiteral("expected [latitude, longitude]"));
+        pair.fail(QCoreApplication::translate("QgcFenceJson", "expected [latitude, longitude]"));
     const GeoPoint p{pair.at(size_t(0)).number(), pair.at(size_t(1)).number()};
     if (!p.isValid())
-        pair.fail(QStringLiteral("latitude or longitude out of range"));
+        pair.fail(QCoreApplication::translate("QgcFenceJson", "latitude or longitude out of range"));
     return p;
 }
 
 FencePoint pointWithAltitude(const JsonCursor &c)
 {
     if (c.arraySize() != 3)
-        c.fail(QStringLiteral("expected [latitude, longitude, altitude]"));
+        c.fail(QCoreApplication::translate("QgcFenceJson", "expected [latitude, longitude, altitude]"));
     return {latLon(c), c.at(size_t(2)).number()};
 }
 
@@ -33,12 +34,12 @@ void eachOf(const JsonCursor &section, const char *key, QStringList *notices, co
                 read(list->at(i));
             } catch (const JsonPathError &e) {
                 if (notices)
-                    *notices << QStringLiteral("%1 at %2 was left out: %3").arg(what, QString::fromStdString(e.path), e.message);
+                    *notices << QCoreApplication::translate("QgcFenceJson", "%1 at %2 was left out: %3").arg(what, QString::fromStdString(e.path), e.message);
             }
         }
     } catch (const JsonPathError &e) {
         if (notices)
-            *notices << QStringLiteral("The %1s at %2 were left out: %3").arg(what.toLower(), QString::fromStdString(e.path), e.message);
+            *notices << QCoreApplication::translate("QgcFenceJson", "The %1s at %2 were left out: %3").arg(what.toLower(), QString::fromStdString(e.path), e.message);
     }
 }
 } // namespace
@@ -47,14 +48,14 @@ RouteFence fenceFromPlanJson(const JsonCursor &root, QStringList *notices)
 {
     RouteFence fence;
     if (const auto geo = root.find("geoFence"); geo && !geo->isNull()) {
-        eachOf(*geo, "polygons", notices, QStringLiteral("Geofence polygon"), [&](const JsonCursor &c) {
+        eachOf(*geo, "polygons", notices, QCoreApplication::translate("QgcFenceJson", "Geofence polygon"), [&](const JsonCursor &c) {
             FencePolygon p;
             p.inclusion = c.booleanOr("inclusion", true);
             const JsonCursor ring = c.at("polygon");
             for (size_t k = 0; k < ring.arraySize(); ++k)
                 p.vertices.push_back(latLon(ring.at(k)));
             if (p.vertices.size() < 3)
-                ring.fail(QStringLiteral("a polygon needs at least 3 vertices, found %1").arg(p.vertices.size()));
+                ring.fail(QCoreApplication::translate("QgcFenceJson", "a polygon needs at least 3 vertices, found %1").arg(p.vertices.size()));
             fence.polygons.push_back(std::move(p));
         });
         // Version 1 had one inclusion polygon, "polygon": [[lat, lon], ...].
@@ -64,21 +65,21 @@ RouteFence fenceFromPlanJson(const JsonCursor &root, QStringList *notices)
                 for (size_t k = 0; k < old->arraySize(); ++k)
                     p.vertices.push_back(latLon(old->at(k)));
                 if (p.vertices.size() < 3)
-                    old->fail(QStringLiteral("a polygon needs at least 3 vertices, found %1").arg(p.vertices.size()));
+                    old->fail(QCoreApplication::translate("QgcFenceJson", "a polygon needs at least 3 vertices, found %1").arg(p.vertices.size()));
                 fence.polygons.push_back(std::move(p));
             } catch (const JsonPathError &e) {
                 if (notices)
-                    *notices << QStringLiteral("Geofence polygon at %1 was left out: %2").arg(QString::fromStdString(e.path), e.message);
+                    *notices << QCoreApplication::translate("QgcFenceJson", "Geofence polygon at %1 was left out: %2").arg(QString::fromStdString(e.path), e.message);
             }
         }
-        eachOf(*geo, "circles", notices, QStringLiteral("Geofence circle"), [&](const JsonCursor &c) {
+        eachOf(*geo, "circles", notices, QCoreApplication::translate("QgcFenceJson", "Geofence circle"), [&](const JsonCursor &c) {
             FenceCircle circle;
             circle.inclusion = c.booleanOr("inclusion", true);
             const JsonCursor shape = c.at("circle");
             circle.center = latLon(shape.at("center"));
             circle.radius = shape.number("radius");
             if (!(circle.radius > 0))
-                shape.failAt("radius", QStringLiteral("the radius must be positive metres"));
+                shape.failAt("radius", QCoreApplication::translate("QgcFenceJson", "the radius must be positive metres"));
             fence.circles.push_back(circle);
         });
         if (const auto back = geo->find("breachReturn"); back && !back->isNull()) {
@@ -86,12 +87,12 @@ RouteFence fenceFromPlanJson(const JsonCursor &root, QStringList *notices)
                 fence.breachReturn = pointWithAltitude(*back);
             } catch (const JsonPathError &e) {
                 if (notices)
-                    *notices << QStringLiteral("The geofence's breach return point at %1 was left out: %2").arg(QString::fromStdString(e.path), e.message);
+                    *notices << QCoreApplication::translate("QgcFenceJson", "The geofence's breach return point at %1 was left out: %2").arg(QString::fromStdString(e.path), e.message);
             }
         }
     }
     if (const auto rally = root.find("rallyPoints"); rally && !rally->isNull())
-        eachOf(*rally, "points", notices, QStringLiteral("Rally point"),
+        eachOf(*rally, "points", notices, QCoreApplication::translate("QgcFenceJson", "Rally point"),
                [&](const JsonCursor &c) { fence.rallyPoints.push_back(pointWithAltitude(c)); });
     return fence;
 }

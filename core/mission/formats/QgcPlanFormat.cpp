@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <QCoreApplication>
 
 namespace sortie::mission::formats {
 
@@ -31,7 +32,7 @@ MavlinkItem simpleFromJson(const JsonCursor &item)
     const JsonCursor params = item.at("params");
     const size_t n = params.arraySize();
     if (n != 7 && n != 4)
-        params.fail(QStringLiteral("expected 7 params (or 4 and a \"coordinate\"), found %1").arg(n));
+        params.fail(QCoreApplication::translate("QgcPlanFormat", "expected 7 params (or 4 and a \"coordinate\"), found %1").arg(n));
     for (size_t i = 0; i < 4; ++i) {
         const double v = paramOrNan(params.at(i));
         m.param[i] = std::isnan(v) ? 0.0 : v;  // QGroundControl writes unset params as null
@@ -70,17 +71,17 @@ Result<ImportedRoute> readQgcPlan(const QByteArray &data)
         const JsonCursor root(doc);
         root.requireObject();
         if (root.at("fileType").string() != QLatin1String("Plan"))
-            root.at("fileType").fail(QStringLiteral("not a QGroundControl plan (fileType is not \"Plan\")"));
+            root.at("fileType").fail(QCoreApplication::translate("QgcPlanFormat", "not a QGroundControl plan (fileType is not \"Plan\")"));
         if (const int v = root.at("version").integer(); v != 1)
-            root.at("version").fail(QStringLiteral("plan version %1 is not supported (Sortie reads version 1)").arg(v));
+            root.at("version").fail(QCoreApplication::translate("QgcPlanFormat", "plan version %1 is not supported (Sortie reads version 1)").arg(v));
         const JsonCursor mission = root.at("mission");
         if (const int v = mission.at("version").integer(); v != 2)
-            mission.at("version").fail(QStringLiteral("mission version %1 is not supported (Sortie reads version 2)").arg(v));
+            mission.at("version").fail(QCoreApplication::translate("QgcPlanFormat", "mission version %1 is not supported (Sortie reads version 2)").arg(v));
         std::optional<HomePosition> home;
         if (const auto h = mission.find("plannedHomePosition")) {
             home = HomePosition{{h->at(size_t(0)).number(), h->at(size_t(1)).number()}, h->at(size_t(2)).number()};
             if (!home->position.isValid())
-                h->fail(QStringLiteral("the planned home position is out of range"));
+                h->fail(QCoreApplication::translate("QgcPlanFormat", "the planned home position is out of range"));
         }
         const bool fixedWing = mission.integerOr("vehicleType", kMavTypeQuadrotor) == kMavTypeFixedWing;
         double speed = fixedWing ? mission.numberOr("cruiseSpeed", 0) : mission.numberOr("hoverSpeed", 0);
@@ -106,10 +107,10 @@ Result<ImportedRoute> readQgcPlan(const QByteArray &data)
                 else if (kind == QLatin1String("StructureScan"))
                     m.segment = std::make_shared<const AlgorithmSegment>(structureScanFromJson(item, &notices));
                 else
-                    item.at("complexItemType").fail(QStringLiteral("complex item \"%1\" is not supported; Sortie imports surveys, corridor and structure scans").arg(kind));
+                    item.at("complexItemType").fail(QCoreApplication::translate("QgcPlanFormat", "complex item \"%1\" is not supported; Sortie imports surveys, corridor and structure scans").arg(kind));
                 items.push_back(std::move(m));
             } else {
-                item.at("type").fail(QStringLiteral("unknown item type \"%1\"").arg(type));
+                item.at("type").fail(QCoreApplication::translate("QgcPlanFormat", "unknown item type \"%1\"").arg(type));
             }
         }
         RouteFence fence = fenceFromPlanJson(root, &notices);
@@ -136,7 +137,7 @@ QByteArray writeQgcPlan(const Route &route, QStringList *notices, ScanPlanCache 
         if (i.segment) {
             const SegmentPlanOutcome o = planAlgorithmSegment(*i.segment, AlgorithmCatalog::builtIn(), planContextOf(route.settings));
             if (!o.ok()) {
-                out.notices << QStringLiteral("A corridor was left out: %1").arg(o.errors.empty() ? QString() : o.errors.front());
+                out.notices << QCoreApplication::translate("QgcPlanFormat", "A corridor was left out: %1").arg(o.errors.empty() ? QString() : o.errors.front());
                 continue;
             }
             int used = 0;
@@ -151,7 +152,7 @@ QByteArray writeQgcPlan(const Route &route, QStringList *notices, ScanPlanCache 
         AreaScanOutcome scratch;
         const AreaScanOutcome &o = scanOutcome(*i.scan, cache, scratch);
         if (!o.ok()) {
-            out.notices << QStringLiteral("An area scan was left out: %1").arg(o.message);
+            out.notices << QCoreApplication::translate("QgcPlanFormat", "An area scan was left out: %1").arg(o.message);
             continue;
         }
         int used = 0;
@@ -164,7 +165,7 @@ QByteArray writeQgcPlan(const Route &route, QStringList *notices, ScanPlanCache 
     } else {
         if (!route.segments.empty())
             home.position = anchorOf(route.segments.front());
-        out.notices.prepend(QStringLiteral("The route has no home position: the first point was written as home, at 0 m AMSL."));
+        out.notices.prepend(QCoreApplication::translate("QgcPlanFormat", "The route has no home position: the first point was written as home, at 0 m AMSL."));
     }
     const Json doc{
         {"fileType", "Plan"},
@@ -189,7 +190,7 @@ Result<RouteFence> readQgcPlanFence(const QByteArray &data, QStringList *notices
         const JsonCursor root(parsed.value());
         root.requireObject();
         if (root.at("fileType").string() != QLatin1String("Plan"))
-            root.at("fileType").fail(QStringLiteral("not a QGroundControl plan (fileType is not \"Plan\")"));
+            root.at("fileType").fail(QCoreApplication::translate("QgcPlanFormat", "not a QGroundControl plan (fileType is not \"Plan\")"));
         return fenceFromPlanJson(root, notices);
     } catch (const JsonPathError &e) {
         return errorAt(e);

@@ -5,6 +5,7 @@
 #include "Photogrammetry.h"
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::mission::formats {
 
@@ -29,11 +30,11 @@ AreaScan surveyFromJson(const JsonCursor &item, QStringList *notices)
         const JsonCursor v = polygon.at(i);
         const GeoPoint g{v.at(size_t(0)).number(), v.at(size_t(1)).number()};
         if (!g.isValid())
-            v.fail(QStringLiteral("latitude/longitude out of range"));
+            v.fail(QCoreApplication::translate("QgcSurveyJson", "latitude/longitude out of range"));
         scan.polygon.push_back(g);
     }
     if (scan.polygon.size() < 3)
-        polygon.fail(QStringLiteral("a survey polygon needs at least 3 vertices, found %1").arg(scan.polygon.size()));
+        polygon.fail(QCoreApplication::translate("QgcSurveyJson", "a survey polygon needs at least 3 vertices, found %1").arg(scan.polygon.size()));
     AreaScanParameters &p = scan.parameters;
     p.directionDeg = item.numberOr("angle", 0);
     const JsonCursor transect = item.at("TransectStyleComplexItem");
@@ -49,7 +50,7 @@ AreaScan surveyFromJson(const JsonCursor &item, QStringList *notices)
         amsl = !cam.booleanOr("DistanceToSurfaceRelative", true);
     p.altitudeType = amsl ? AltitudeType::Amsl : AltitudeType::Agl;
     if (cam.find("SensorWidth") && cam.find("FocalLength")) {
-        p.camera.name = cam.stringOr("CameraName", QStringLiteral("Custom Camera"));
+        p.camera.name = cam.stringOr("CameraName", QCoreApplication::translate("QgcSurveyJson", "Custom Camera"));
         p.camera.sensorWidthMm = cam.number("SensorWidth");
         p.camera.sensorHeightMm = cam.number("SensorHeight");
         p.camera.focalLengthMm = cam.number("FocalLength");
@@ -63,14 +64,14 @@ AreaScan surveyFromJson(const JsonCursor &item, QStringList *notices)
         // A "manual" camera gives only the footprints: make a camera with those footprints at that distance.
         const double side = cam.number("AdjustedFootprintSide"), frontal = cam.number("AdjustedFootprintFrontal");
         if (!(side > 0 && frontal > 0 && distance > 0))
-            cam.fail(QStringLiteral("the survey's camera has neither a sensor nor footprints"));
+            cam.fail(QCoreApplication::translate("QgcSurveyJson", "the survey's camera has neither a sensor nor footprints"));
         p.camera.name = cam.stringOr("CameraName", QStringLiteral("Manual"));
         p.camera.focalLengthMm = distance;
         p.camera.sensorWidthMm = side / (1 - p.sideOverlapPercent / 100.0);
         p.camera.sensorHeightMm = frontal / (1 - p.frontOverlapPercent / 100.0);
         p.camera.imageWidthPx = p.camera.imageHeightPx = 1000;
         if (notices)
-            *notices << QStringLiteral("%1: the survey's manual camera was replaced by one with the same footprints").arg(cam.pathText());
+            *notices << QCoreApplication::translate("QgcSurveyJson", "%1: the survey's manual camera was replaced by one with the same footprints").arg(cam.pathText());
     }
     if (cam.booleanOr("ValueSetIsDistance", true)) {
         p.heightMode = ScanHeightMode::Altitude;
@@ -132,11 +133,11 @@ std::vector<FigurePoint> pointsAt(const JsonCursor &list, size_t minimum, const 
         const JsonCursor v = list.at(i);
         const GeoPoint g{v.at(size_t(0)).number(), v.at(size_t(1)).number()};
         if (!g.isValid())
-            v.fail(QStringLiteral("latitude/longitude out of range"));
+            v.fail(QCoreApplication::translate("QgcSurveyJson", "latitude/longitude out of range"));
         points.push_back({g, 0.0, AltitudeType::Agl});
     }
     if (points.size() < minimum)
-        list.fail(QStringLiteral("a %1 needs at least %2 points, found %3").arg(QLatin1String(what)).arg(minimum).arg(points.size()));
+        list.fail(QCoreApplication::translate("QgcSurveyJson", "a %1 needs at least %2 points, found %3").arg(QCoreApplication::translate("QgcSurveyJson", what)).arg(minimum).arg(points.size()));
     return points;
 }
 
@@ -154,7 +155,7 @@ void cameraCalcInto(const JsonCursor &cam, AlgorithmSegment &a, QStringList *not
         camera = Camera{name, cam.number("SensorWidth"), cam.number("SensorHeight"), cam.number("FocalLength"),
                         cam.at("ImageWidth").integer(), cam.at("ImageHeight").integer(), 0.0};
         if (notices)
-            *notices << QStringLiteral("%1: the camera \"%2\" is not one Sortie knows; it is kept by name, and the server must know it.")
+            *notices << QCoreApplication::translate("QgcSurveyJson", "%1: the camera \"%2\" is not one Sortie knows; it is kept by name, and the server must know it.")
                             .arg(cam.pathText(), name);
     }
     if (!name.isEmpty())
@@ -165,7 +166,7 @@ void cameraCalcInto(const JsonCursor &cam, AlgorithmSegment &a, QStringList *not
     else if (camera && camera->isValid())
         a.setValue(QStringLiteral("groundSampleDistance"), number(photogrammetry::gsdAtHeight(*camera, cam.number("DistanceToSurface"))));
     else
-        cam.fail(QStringLiteral("the corridor's camera has no sensor to turn its distance into a ground sample distance"));
+        cam.fail(QCoreApplication::translate("QgcSurveyJson", "the corridor's camera has no sensor to turn its distance into a ground sample distance"));
     a.setValue(QStringLiteral("camTopFacingForward"), cam.booleanOr("Landscape", true) ? QStringLiteral("true") : QStringLiteral("false"));
 }
 } // namespace
@@ -175,7 +176,7 @@ AlgorithmSegment corridorFromJson(const JsonCursor &item, QStringList *notices)
     AlgorithmSegment a;
     a.algorithm = algorithmClassName(AlgorithmKind::Corridor);
     a.figure = FigureType::Polyline;
-    a.points = pointsAt(item.at("polyline"), 2, "corridor centre line");
+    a.points = pointsAt(item.at("polyline"), 2, QT_TRANSLATE_NOOP("QgcSurveyJson", "corridor centre line"));
     a.setValue(QStringLiteral("width"), number(item.number("CorridorWidth")));
     cameraCalcInto(item.at("TransectStyleComplexItem").at("CameraCalc"), a, notices);
     return a;
@@ -219,7 +220,7 @@ AlgorithmSegment structureScanFromJson(const JsonCursor &item, QStringList *noti
     AlgorithmSegment a;
     a.algorithm = algorithmClassName(AlgorithmKind::Perimeter);
     a.figure = FigureType::Polygon;
-    a.points = pointsAt(item.at("polygon"), 3, "structure polygon");
+    a.points = pointsAt(item.at("polygon"), 3, QT_TRANSLATE_NOOP("QgcSurveyJson", "structure polygon"));
     const JsonCursor cam = item.at("CameraCalc");
     const bool amsl = cam.find("DistanceMode") ? cam.at("DistanceMode").integer() == kAltitudeModeAmsl
                                                : !cam.booleanOr("DistanceToSurfaceRelative", true);
@@ -228,9 +229,9 @@ AlgorithmSegment structureScanFromJson(const JsonCursor &item, QStringList *noti
     const int layers = std::max(1, item.integerOr("Layers", 1));
     a.setValue(QStringLiteral("loops"), QString::number(layers));
     if (notices)
-        *notices << QStringLiteral("%1: the structure scan became a perimeter flight at %2 m%3.")
+        *notices << QCoreApplication::translate("QgcSurveyJson", "%1: the structure scan became a perimeter flight at %2 m%3.")
                         .arg(item.pathText(), number(item.number("Altitude")),
-                             layers > 1 ? QStringLiteral(", its %1 layers as %1 loops at one height").arg(layers) : QString());
+                             layers > 1 ? QCoreApplication::translate("QgcSurveyJson", ", its %1 layers as %1 loops at one height").arg(layers) : QString());
     return a;
 }
 

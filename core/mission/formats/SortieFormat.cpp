@@ -8,6 +8,7 @@
 #include "QgcFenceJson.h"
 #include "SortieActionJson.h"
 #include "SortieMigrations.h"
+#include <QCoreApplication>
 
 namespace sortie::mission::formats {
 
@@ -36,7 +37,7 @@ std::optional<Message> takeHci(const JsonCursor &c)
     Message m;
     const QByteArray bytes = QByteArray::fromBase64(h->string().toLatin1(), QByteArray::AbortOnBase64DecodingErrors);
     if (bytes.isEmpty() || !m.ParseFromArray(bytes.constData(), int(bytes.size())))
-        h->fail(QStringLiteral("not a valid UgCS %1").arg(QString::fromStdString(Message::descriptor()->name())));
+        h->fail(QCoreApplication::translate("SortieFormat", "not a valid UgCS %1").arg(QString::fromStdString(Message::descriptor()->name())));
     return m;
 }
 
@@ -57,7 +58,7 @@ AltitudeType altitudeTypeAt(const JsonCursor &c, const char *key)
         return AltitudeType::Agl;
     if (v == "AMSL")
         return AltitudeType::Amsl;
-    c.failAt(key, v.empty() ? QStringLiteral("missing \"AGL\" or \"AMSL\"") : QStringLiteral("expected \"AGL\" or \"AMSL\""));
+    c.failAt(key, v.empty() ? QCoreApplication::translate("SortieFormat", "missing \"AGL\" or \"AMSL\"") : QCoreApplication::translate("SortieFormat", "expected \"AGL\" or \"AMSL\""));
 }
 
 // Enum names are compared as UTF-8 bytes: no QString per field on the hot path of a big file.
@@ -70,7 +71,7 @@ E enumAt(const JsonCursor &c, const char *key, const char *fallback, const std::
     for (const auto &[name, value] : names)
         if (s == name)
             return value;
-    c.failAt(key, QStringLiteral("unknown value \"%1\"").arg(QString::fromStdString(v)));
+    c.failAt(key, QCoreApplication::translate("SortieFormat", "unknown value \"%1\"").arg(QString::fromStdString(v)));
 }
 
 constexpr std::pair<const char *, WaypointRole> kRoles[] = {
@@ -197,9 +198,9 @@ Segment readSegment(const JsonCursor &c)
         w.role = enumAt(c, "role", "waypoint", kRoles);
         w.position = {c.number("latitude"), c.number("longitude")};
         if (!(w.position.latitude >= -90 && w.position.latitude <= 90))
-            c.failAt("latitude", QStringLiteral("latitude out of range"));
+            c.failAt("latitude", QCoreApplication::translate("SortieFormat", "latitude out of range"));
         if (!w.position.isValid())
-            c.failAt("longitude", QStringLiteral("longitude out of range"));
+            c.failAt("longitude", QCoreApplication::translate("SortieFormat", "longitude out of range"));
         w.altitude = c.number("altitude");
         w.altitudeType = altitudeTypeAt(c, "altitudeType");
         w.speed = c.number("speed");
@@ -218,14 +219,14 @@ Segment readSegment(const JsonCursor &c)
             const JsonCursor v = polygon.at(i);
             const GeoPoint g{v.at(size_t(0)).number(), v.at(size_t(1)).number()};
             if (!g.isValid())
-                v.fail(QStringLiteral("latitude/longitude out of range"));
+                v.fail(QCoreApplication::translate("SortieFormat", "latitude/longitude out of range"));
             s.polygon.push_back(g);
         }
         AreaScanParameters &p = s.parameters;
         p.camera = readCamera(c.at("camera"));
         const QString mode = c.stringOr("heightMode", QStringLiteral("altitude"));
         if (mode != QLatin1String("altitude") && mode != QLatin1String("groundSampleDistance"))
-            c.at("heightMode").fail(QStringLiteral("expected \"altitude\" or \"groundSampleDistance\""));
+            c.at("heightMode").fail(QCoreApplication::translate("SortieFormat", "expected \"altitude\" or \"groundSampleDistance\""));
         // The one parameter reader; the height mode's own value goes last, since it sets the mode.
         Segment segment = std::move(s);
         const JsonCursor params = c.at("parameters");
@@ -244,7 +245,7 @@ Segment readSegment(const JsonCursor &c)
         a.algorithm = c.at("algorithm").string();
         const int figure = c.at("figure").integer();
         if (figure < 0 || figure > int(FigureType::Polyline))
-            c.at("figure").fail(QStringLiteral("no figure type %1").arg(figure));
+            c.at("figure").fail(QCoreApplication::translate("SortieFormat", "no figure type %1").arg(figure));
         a.figure = FigureType(figure);
         const JsonCursor points = c.at("points");
         for (size_t i = 0; i < points.arraySize(); ++i) {
@@ -252,11 +253,11 @@ Segment readSegment(const JsonCursor &c)
             FigurePoint fp;
             fp.position = {p.at(size_t(0)).number(), p.at(size_t(1)).number()};
             if (!fp.position.isValid())
-                p.fail(QStringLiteral("latitude/longitude out of range"));
+                p.fail(QCoreApplication::translate("SortieFormat", "latitude/longitude out of range"));
             fp.altitude = p.at(size_t(2)).number();
             const QString type = p.at(size_t(3)).string();
             if (!parseAltitudeType(type, &fp.altitudeType))
-                p.at(size_t(3)).fail(QStringLiteral("expected \"AGL\" or \"AMSL\""));
+                p.at(size_t(3)).fail(QCoreApplication::translate("SortieFormat", "expected \"AGL\" or \"AMSL\""));
             a.points.push_back(fp);
         }
         const JsonCursor figureParameters = c.at("figureParameters");
@@ -273,7 +274,7 @@ Segment readSegment(const JsonCursor &c)
         a.origin = takeOrigin<pb::SegmentDefinition>(c);
         return a;
     }
-    c.failAt("type", QStringLiteral("unknown segment type \"%1\"").arg(QString::fromStdString(type)));
+    c.failAt("type", QCoreApplication::translate("SortieFormat", "unknown segment type \"%1\"").arg(QString::fromStdString(type)));
 }
 
 Json routeJson(const Route &r)
@@ -328,7 +329,7 @@ Route readRoute(const JsonCursor &c)
             s.failsafes.push_back({FailsafeReason(indexOf(kReasons, f->at(i).at("reason"))), FailsafeAction(indexOf(kActions, f->at(i).at("action")))});
     const QString end = c.stringOr("endAction", QStringLiteral("none"));
     if (end != QLatin1String("none") && end != QLatin1String("returnHome"))
-        c.at("endAction").fail(QStringLiteral("expected \"none\" or \"returnHome\""));
+        c.at("endAction").fail(QCoreApplication::translate("SortieFormat", "expected \"none\" or \"returnHome\""));
     s.endAction = end == QLatin1String("returnHome") ? EndAction::ReturnHome : EndAction::None;
     // Files written before the flags existed: off, as the server reads an absent flag.
     s.checkAerodromeNfz = c.booleanOr("checkAerodromeNfz", false);
@@ -408,12 +409,12 @@ Result<Mission> readSortie(const QByteArray &data)
         const JsonCursor root(doc);
         root.requireObject();
         if (root.stringOr("format", QString()) != QLatin1String("sortie-mission"))
-            root.fail(QStringLiteral("not a Sortie mission file (\"format\" is not \"sortie-mission\")"));
+            root.fail(QCoreApplication::translate("SortieFormat", "not a Sortie mission file (\"format\" is not \"sortie-mission\")"));
         const int version = root.at("schemaVersion").integer();
         if (version < 1)
-            root.at("schemaVersion").fail(QStringLiteral("schema version %1 does not exist").arg(version));
+            root.at("schemaVersion").fail(QCoreApplication::translate("SortieFormat", "schema version %1 does not exist").arg(version));
         if (version > kSortieSchemaVersion)
-            root.at("schemaVersion").fail(QStringLiteral("written by a newer Sortie (schema %1); this one reads up to schema %2")
+            root.at("schemaVersion").fail(QCoreApplication::translate("SortieFormat", "written by a newer Sortie (schema %1); this one reads up to schema %2")
                                              .arg(version).arg(kSortieSchemaVersion));
         if (version < kSortieSchemaVersion)
             migrateSortie(doc, version);

@@ -5,6 +5,7 @@
 #include "NumberText.h"
 
 #include <QList>
+#include <QCoreApplication>
 
 namespace sortie::mission::formats {
 
@@ -57,10 +58,10 @@ Result<WplItems> readWplItems(const QByteArray &input)
         if (!headerSeen) {
             const QByteArray header = line.toByteArray().trimmed();
             if (!header.startsWith("QGC WPL"))
-                return lineError(lineNo, QStringLiteral("not a waypoint file: expected \"QGC WPL 110\", found \"%1\"")
+                return lineError(lineNo, QCoreApplication::translate("WplFormat", "not a waypoint file: expected \"QGC WPL 110\", found \"%1\"")
                                              .arg(QString::fromUtf8(header.left(40))));
             if (header != "QGC WPL 110")
-                return lineError(lineNo, QStringLiteral("unsupported waypoint file version \"%1\"; Sortie reads QGC WPL 110")
+                return lineError(lineNo, QCoreApplication::translate("WplFormat", "unsupported waypoint file version \"%1\"; Sortie reads QGC WPL 110")
                                              .arg(QString::fromUtf8(header)));
             headerSeen = true;
             continue;
@@ -69,27 +70,27 @@ Result<WplItems> readWplItems(const QByteArray &input)
         if (f.isEmpty())
             continue;
         if (f.size() != 12)
-            return lineError(lineNo, QStringLiteral("expected 12 tab-separated fields, found %1").arg(f.size()));
+            return lineError(lineNo, QCoreApplication::translate("WplFormat", "expected 12 tab-separated fields, found %1").arg(f.size()));
         double v[12];
         for (int i = 0; i < 12; ++i) {
             const auto n = parseNumber(f[i]);
             if (!n)
-                return lineError(lineNo, QStringLiteral("field %1 (%2) is not a number: \"%3\"")
+                return lineError(lineNo, QCoreApplication::translate("WplFormat", "field %1 (%2) is not a number: \"%3\"")
                                              .arg(i + 1).arg(QLatin1String(kFieldNames[i])).arg(QString::fromUtf8(f[i].toByteArray().left(40))));
             v[i] = *n;
         }
         for (int i : {0, 1, 2, 3, 11})
             // Range first: converting a double beyond int's range to int is undefined (a fuzz finding).
             if (!(v[i] >= 0 && v[i] <= 2147483647.0) || v[i] != std::floor(v[i]))
-                return lineError(lineNo, QStringLiteral("field %1 (%2) must be a whole number, found %3")
+                return lineError(lineNo, QCoreApplication::translate("WplFormat", "field %1 (%2) must be a whole number, found %3")
                                              .arg(i + 1).arg(QLatin1String(kFieldNames[i])).arg(v[i]));
         if (int(v[0]) != expectedIndex)
-            return lineError(lineNo, QStringLiteral("item %1 where item %2 was expected").arg(int(v[0])).arg(expectedIndex));
+            return lineError(lineNo, QCoreApplication::translate("WplFormat", "item %1 where item %2 was expected").arg(int(v[0])).arg(expectedIndex));
         ++expectedIndex;
         if (expectedIndex == 1) {
             const GeoPoint g{v[8], v[9]};
             if (!g.isValid())
-                return lineError(lineNo, QStringLiteral("the home position %1, %2 is not a position").arg(v[8]).arg(v[9]));
+                return lineError(lineNo, QCoreApplication::translate("WplFormat", "the home position %1, %2 is not a position").arg(v[8]).arg(v[9]));
             home = HomePosition{g, v[10]};
             continue;
         }
@@ -108,9 +109,9 @@ Result<WplItems> readWplItems(const QByteArray &input)
             break;
     }
     if (!headerSeen)
-        return lineError(1, QStringLiteral("the file is empty"));
+        return lineError(1, QCoreApplication::translate("WplFormat", "the file is empty"));
     if (expectedIndex == 0)
-        return lineError(lineNo, QStringLiteral("the file has no items, not even the home position"));
+        return lineError(lineNo, QCoreApplication::translate("WplFormat", "the file has no items, not even the home position"));
     return WplItems{home, std::move(items)};
 }
 
@@ -131,9 +132,9 @@ QByteArray writeWpl(const Route &route, QStringList *notices, ScanPlanCache *cac
     } else {
         if (!route.segments.empty())
             home.position = anchorOf(route.segments.front());
-        out.notices.prepend(QStringLiteral("The route has no home position: the first point was written as home, at 0 m AMSL."));
+        out.notices.prepend(QCoreApplication::translate("WplFormat", "The route has no home position: the first point was written as home, at 0 m AMSL."));
     }
-    QByteArray text = "QGC WPL 110\n";
+    QByteArray text = "QGC WPL 110\n"; // i18n: not text (the file format's header)
     auto line = [&](int index, int current, int frame, int command, const double p[4], double lat, double lon, double alt, bool autoContinue) {
         text += QByteArray::number(index) + '\t' + QByteArray::number(current) + '\t' + QByteArray::number(frame) + '\t'
               + QByteArray::number(command);

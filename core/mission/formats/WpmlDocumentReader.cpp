@@ -6,6 +6,7 @@
 #include <QXmlStreamReader>
 
 #include <set>
+#include <QCoreApplication>
 
 namespace sortie::mission::formats::wpml {
 namespace {
@@ -72,7 +73,7 @@ public:
                 return *m_error;
         }
         if (x.hasError())
-            return errorAt(m_file, x, QStringLiteral("malformed XML: %1").arg(x.errorString()));
+            return errorAt(m_file, x, QCoreApplication::translate("WpmlDocumentReader", "malformed XML: %1").arg(x.errorString()));
         doc.unknown.removeDuplicates();
         return doc;
     }
@@ -102,7 +103,7 @@ private:
         const QString t = text();
         const auto v = parseNumber(t.toLatin1());
         if (!v && !m_error)
-            m_error = errorAt(m_file, x, QStringLiteral("%1 is not a number: \"%2\"").arg(what, t));
+            m_error = errorAt(m_file, x, QCoreApplication::translate("WpmlDocumentReader", "%1 is not a number: \"%2\"").arg(what, t));
         return v;
     }
 
@@ -112,7 +113,7 @@ private:
         const QString t = text();
         const int v = t.toInt(&ok);
         if (!ok && !m_error)
-            m_error = errorAt(m_file, x, QStringLiteral("%1 is not a whole number: \"%2\"").arg(what, t));
+            m_error = errorAt(m_file, x, QCoreApplication::translate("WpmlDocumentReader", "%1 is not a whole number: \"%2\"").arg(what, t));
         return ok ? std::optional<int>(v) : std::nullopt;
     }
 
@@ -143,7 +144,7 @@ private:
                 const QString qualified = x.qualifiedName().toString();
                 const QString value = text();
                 if (value != it->second)
-                    doc.unknown << QStringLiteral("%1 \"%2\" (written as \"%3\")").arg(qualified, value, it->second);
+                    doc.unknown << QCoreApplication::translate("WpmlDocumentReader", "%1 \"%2\" (written as \"%3\")").arg(qualified, value, it->second);
             } else {
                 skip(&doc.unknown);
             }
@@ -198,7 +199,7 @@ private:
                     const auto lat = parts.size() >= 2 ? parseNumber(parts[1].trimmed().toLatin1()) : std::nullopt;
                     const GeoPoint g{lat.value_or(1000.0), lon.value_or(1000.0)};
                     if (!lat || !lon || !g.isValid()) {
-                        m_error = errorAt(m_file, x, QStringLiteral("coordinates \"%1\" are not longitude,latitude in degrees").arg(t));
+                        m_error = errorAt(m_file, x, QCoreApplication::translate("WpmlDocumentReader", "coordinates \"%1\" are not longitude,latitude in degrees").arg(t));
                         return p;
                     }
                     p.position = g;
@@ -207,7 +208,7 @@ private:
                 bool ok = false;
                 p.index = text().toInt(&ok);
                 if (!ok) {
-                    m_error = errorAt(m_file, x, QStringLiteral("a waypoint index is not a whole number"));
+                    m_error = errorAt(m_file, x, QCoreApplication::translate("WpmlDocumentReader", "a waypoint index is not a whole number"));
                     return p;
                 }
             } else if (is(n, "executeHeight") || is(n, "height")) {

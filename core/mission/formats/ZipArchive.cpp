@@ -5,6 +5,7 @@
 #include <zip.h>
 
 #include <algorithm>
+#include <QCoreApplication>
 
 namespace sortie::mission::formats {
 namespace {
@@ -15,9 +16,9 @@ MissionError zipError(const QString &message) { return MissionError{message, {},
 QString libzipText(zip_error_t *error)
 {
     switch (zip_error_code_zip(error)) {
-    case ZIP_ER_EXISTS: return QStringLiteral("two of its entries have the same name");
-    case ZIP_ER_INCONS: return QStringLiteral("its directory and its entries disagree");
-    case ZIP_ER_NOZIP: return QStringLiteral("it has no ZIP directory (truncated, or not a ZIP file)");
+    case ZIP_ER_EXISTS: return QCoreApplication::translate("ZipArchive", "two of its entries have the same name");
+    case ZIP_ER_INCONS: return QCoreApplication::translate("ZipArchive", "its directory and its entries disagree");
+    case ZIP_ER_NOZIP: return QCoreApplication::translate("ZipArchive", "it has no ZIP directory (truncated, or not a ZIP file)");
     default: return QString::fromUtf8(zip_error_strerror(error));
     }
 }
@@ -50,20 +51,20 @@ Result<std::vector<Extent>> extentsOf(const QByteArray &archive)
         }
     }
     if (eocd < 0)
-        return zipError(QStringLiteral("the archive has no end of central directory"));
+        return zipError(QCoreApplication::translate("ZipArchive", "the archive has no end of central directory"));
     const quint32 cdSize = u32(eocd + 12), cdOffset = u32(eocd + 16);
     if (cdOffset == 0xffffffffu || quint64(cdOffset) + cdSize > quint64(eocd))
-        return zipError(QStringLiteral("ZIP64 archives are not read"));
+        return zipError(QCoreApplication::translate("ZipArchive", "ZIP64 archives are not read"));
     std::vector<Extent> extents;
     for (qsizetype at = cdOffset; at + 46 <= qsizetype(cdOffset) + qsizetype(cdSize);) {
         if (u32(at) != 0x02014b50)
-            return zipError(QStringLiteral("a central directory record is damaged at byte %1").arg(at));
+            return zipError(QCoreApplication::translate("ZipArchive", "a central directory record is damaged at byte %1").arg(at));
         const quint32 compressed = u32(at + 20), offset = u32(at + 42);
         const quint16 nameLength = u16(at + 28), extraLength = u16(at + 30), commentLength = u16(at + 32);
         if (compressed == 0xffffffffu || offset == 0xffffffffu)
-            return zipError(QStringLiteral("ZIP64 archives are not read"));
+            return zipError(QCoreApplication::translate("ZipArchive", "ZIP64 archives are not read"));
         if (quint64(offset) + 30 > quint64(size))
-            return zipError(QStringLiteral("an entry's local header lies outside the archive"));
+            return zipError(QCoreApplication::translate("ZipArchive", "an entry's local header lies outside the archive"));
         const quint64 localName = u16(qsizetype(offset) + 26), localExtra = u16(qsizetype(offset) + 28);
         extents.push_back({offset, offset + 30 + localName + localExtra + compressed,
                            QString::fromUtf8(archive.constData() + at + 46, qMin<qsizetype>(nameLength, size - at - 46))});
@@ -77,7 +78,7 @@ std::optional<MissionError> overlapping(std::vector<Extent> extents)
     std::sort(extents.begin(), extents.end(), [](const Extent &a, const Extent &b) { return a.begin < b.begin; });
     for (size_t i = 1; i < extents.size(); ++i) {
         if (extents[i].begin < extents[i - 1].end)
-            return zipError(QStringLiteral("the entries \"%1\" and \"%2\" share bytes in the archive (a ZIP bomb's trick): not read")
+            return zipError(QCoreApplication::translate("ZipArchive", "the entries \"%1\" and \"%2\" share bytes in the archive (a ZIP bomb's trick): not read")
                                 .arg(extents[i - 1].name, extents[i].name));
     }
     return std::nullopt;
@@ -114,24 +115,24 @@ Result<ZipReader> ZipReader::open(const QByteArray &archive, ZipLimits limits)
     if (!source) {
         const QString text = libzipText(&error);
         zip_error_fini(&error);
-        return zipError(QStringLiteral("not a ZIP archive: %1").arg(text));
+        return zipError(QCoreApplication::translate("ZipArchive", "not a ZIP archive: %1").arg(text));
     }
     state->archive = zip_open_from_source(source, ZIP_RDONLY | ZIP_CHECKCONS, &error);
     if (!state->archive) {
         zip_source_free(source);
         const QString text = libzipText(&error);
         zip_error_fini(&error);
-        return zipError(QStringLiteral("not a readable ZIP archive: %1").arg(text));
+        return zipError(QCoreApplication::translate("ZipArchive", "not a readable ZIP archive: %1").arg(text));
     }
     zip_error_fini(&error);
     const zip_int64_t count = zip_get_num_entries(state->archive, 0);
     if (count > limits.maxEntries)
-        return zipError(QStringLiteral("the archive lists %1 entries, more than the %2 read").arg(count).arg(limits.maxEntries));
+        return zipError(QCoreApplication::translate("ZipArchive", "the archive lists %1 entries, more than the %2 read").arg(count).arg(limits.maxEntries));
     Result<std::vector<Extent>> extents = extentsOf(state->bytes);
     if (!extents)
         return extents.error();
     if (zip_int64_t(extents->size()) != count)
-        return zipError(QStringLiteral("the central directory lists %1 entries where libzip read %2").arg(extents->size()).arg(count));
+        return zipError(QCoreApplication::translate("ZipArchive", "the central directory lists %1 entries where libzip read %2").arg(extents->size()).arg(count));
     if (const auto overlap = overlapping(std::move(extents).value()))
         return *overlap;
     return ZipReader(std::move(state));
@@ -161,19 +162,19 @@ Result<QByteArray> ZipReader::read(const QString &path)
     zip_stat_init(&stat);
     const QByteArray name = path.toUtf8();
     if (zip_stat(m_state->archive, name.constData(), ZIP_FL_ENC_GUESS, &stat) != 0)
-        return zipError(QStringLiteral("the archive has no \"%1\"").arg(path));
+        return zipError(QCoreApplication::translate("ZipArchive", "the archive has no \"%1\"").arg(path));
     const qint64 declared = qint64(stat.size);
     if (declared > limits.maxEntryBytes)
-        return zipError(QStringLiteral("\"%1\" would inflate to %2 bytes, more than the %3 read from one entry")
+        return zipError(QCoreApplication::translate("ZipArchive", "\"%1\" would inflate to %2 bytes, more than the %3 read from one entry")
                             .arg(path).arg(declared).arg(limits.maxEntryBytes));
     if (m_state->inflated + declared > limits.maxTotalBytes)
-        return zipError(QStringLiteral("reading \"%1\" would inflate the archive past %2 bytes in all").arg(path).arg(limits.maxTotalBytes));
+        return zipError(QCoreApplication::translate("ZipArchive", "reading \"%1\" would inflate the archive past %2 bytes in all").arg(path).arg(limits.maxTotalBytes));
     if (declared > limits.ratioFloorBytes && double(declared) > limits.maxRatio * double(qMax<zip_uint64_t>(stat.comp_size, 1)))
-        return zipError(QStringLiteral("\"%1\" claims %2 bytes from %3 compressed, more than %4 times: not inflated")
+        return zipError(QCoreApplication::translate("ZipArchive", "\"%1\" claims %2 bytes from %3 compressed, more than %4 times: not inflated")
                             .arg(path).arg(declared).arg(stat.comp_size).arg(limits.maxRatio));
     zip_file_t *file = zip_fopen_index(m_state->archive, stat.index, 0);
     if (!file)
-        return zipError(QStringLiteral("\"%1\" cannot be read: %2").arg(path, libzipText(zip_get_error(m_state->archive))));
+        return zipError(QCoreApplication::translate("ZipArchive", "\"%1\" cannot be read: %2").arg(path, libzipText(zip_get_error(m_state->archive))));
     // Never more than the declared size: libzip stops there and checks the CRC at the end.
     QByteArray data(declared, Qt::Uninitialized);
     qint64 filled = 0;
@@ -182,7 +183,7 @@ Result<QByteArray> ZipReader::read(const QString &path)
         if (n < 0) {
             const QString text = libzipText(zip_file_get_error(file));
             zip_fclose(file);
-            return zipError(QStringLiteral("\"%1\" is damaged: %2").arg(path, text));
+            return zipError(QCoreApplication::translate("ZipArchive", "\"%1\" is damaged: %2").arg(path, text));
         }
         if (n == 0)
             break;
@@ -192,9 +193,9 @@ Result<QByteArray> ZipReader::read(const QString &path)
     const bool longer = zip_fread(file, &extra, 1) > 0;
     const int closed = zip_fclose(file);
     if (filled != declared || longer)
-        return zipError(QStringLiteral("\"%1\" holds a different size than the archive says (%2 bytes)").arg(path).arg(declared));
+        return zipError(QCoreApplication::translate("ZipArchive", "\"%1\" holds a different size than the archive says (%2 bytes)").arg(path).arg(declared));
     if (closed != 0)
-        return zipError(QStringLiteral("\"%1\" is damaged (its CRC does not match)").arg(path));
+        return zipError(QCoreApplication::translate("ZipArchive", "\"%1\" is damaged (its CRC does not match)").arg(path));
     m_state->inflated += declared;
     return data;
 }
@@ -228,7 +229,7 @@ Result<QByteArray> writeZip(const std::vector<ZipEntry> &entries)
         else if (buffer)
             zip_source_free(buffer);
         zip_error_fini(&error);
-        return zipError(QStringLiteral("the archive could not be written: %1").arg(text));
+        return zipError(QCoreApplication::translate("ZipArchive", "the archive could not be written: %1").arg(text));
     };
     if (!archive)
         return fail(QStringLiteral("opening"));
@@ -252,7 +253,7 @@ Result<QByteArray> writeZip(const std::vector<ZipEntry> &entries)
         zip_discard(archive);
         zip_source_free(buffer);
         zip_error_fini(&error);
-        return zipError(QStringLiteral("the archive could not be written: %1").arg(text));
+        return zipError(QCoreApplication::translate("ZipArchive", "the archive could not be written: %1").arg(text));
     }
     QByteArray out;
     zip_stat_t stat;
@@ -266,7 +267,7 @@ Result<QByteArray> writeZip(const std::vector<ZipEntry> &entries)
     zip_source_free(buffer);
     zip_error_fini(&error);
     if (out.isEmpty())
-        return zipError(QStringLiteral("the archive could not be written: its bytes could not be read back"));
+        return zipError(QCoreApplication::translate("ZipArchive", "the archive could not be written: its bytes could not be read back"));
     return out;
 }
 

@@ -5,6 +5,7 @@
 #include "HciOrigin.h"
 #include "HciSegmentMapper.h"
 #include "HciText.h"
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -117,7 +118,7 @@ Result<HciRouteImport> routeFromHci(const pb::Route &route)
         Result<Segment> s = segmentFromHci(route.segments(i), ctx, &out.notices);
         if (!s) {
             MissionError e = s.error();
-            e.message = QStringLiteral("Route \"%1\", segment %2: %3").arg(out.route.settings.name).arg(i + 1).arg(e.message);
+            e.message = QCoreApplication::translate("HciRouteMapper", "Route \"%1\", segment %2: %3").arg(out.route.settings.name).arg(i + 1).arg(e.message);
             return e;
         }
         out.route.segments.push_back(std::move(s).value());

@@ -9,6 +9,7 @@
 #include "SegmentParameters.h"
 
 #include <numbers>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -89,11 +90,11 @@ Result<Waypoint> waypointFromHci(const pb::SegmentDefinition &s, const HciSegmen
     w.role = (algorithm == kTakeoffAlgorithm || ft == pb::FT_TAKEOFF_POINT) ? WaypointRole::Takeoff
            : (algorithm == kLandingAlgorithm || ft == pb::FT_LANDING_POINT) ? WaypointRole::Land : WaypointRole::Pass;
     if (s.figure().points_size() < 1)
-        return MissionError{QStringLiteral("the waypoint has no figure point"), {}, 0, 0, {}};
+        return MissionError{QCoreApplication::translate("HciSegmentMapper", "the waypoint has no figure point"), {}, 0, 0, {}};
     const pb::FigurePoint &p = s.figure().points(0);
     w.position = {p.latitude() / kDeg, p.longitude() / kDeg};
     if (!w.position.isValid())
-        return MissionError{QStringLiteral("the waypoint's position is out of range"), {}, 0, 0, {}};
+        return MissionError{QCoreApplication::translate("HciSegmentMapper", "the waypoint's position is out of range"), {}, 0, 0, {}};
     w.altitudeType = altitudeTypeOf(s, &p);
     w.altitude = w.altitudeType == AltitudeType::Amsl ? p.wgs84altitude() : p.aglaltitude();
     w.speed = ctx.defaultSpeed;
@@ -138,7 +139,7 @@ AreaScan scanFromHci(const pb::SegmentDefinition &s, const HciSegmentContext &ct
             continue;  // kept in the origin, written back as it came
         if (!setParameterValue(segment, key, QString::fromStdString(v.value()), &error)) {
             if (notices)
-                *notices << QStringLiteral("An area scan's %1: %2 It keeps Sortie's default.").arg(name, error);
+                *notices << QCoreApplication::translate("HciSegmentMapper", "An area scan's %1: %2 It keeps Sortie's default.").arg(name, error);
             continue;
         }
         customCamera |= key.startsWith(QLatin1String("camera"))
@@ -152,7 +153,7 @@ AreaScan scanFromHci(const pb::SegmentDefinition &s, const HciSegmentContext &ct
         if (const auto c = profileCamera(ctx.profile)) {
             p.camera = *c;
         } else if (p.sideDistanceMeters <= 0 && notices) {
-            *notices << QStringLiteral("An area scan came without a camera; Sortie's default camera (%1) was assumed.").arg(p.camera.name);
+            *notices << QCoreApplication::translate("HciSegmentMapper", "An area scan came without a camera; Sortie's default camera (%1) was assumed.").arg(p.camera.name);
         }
     }
     syncDerivedFields(p);
@@ -378,11 +379,11 @@ Result<Segment> segmentFromHci(const pb::SegmentDefinition &s, const HciSegmentC
             out.origin = origin;
             return Segment(std::move(out));
         } else if (notices) {
-            *notices << QStringLiteral("A %1 segment could not be read as one (%2); it is kept as the server sent it.")
+            *notices << QCoreApplication::translate("HciSegmentMapper", "A %1 segment could not be read as one (%2); it is kept as the server sent it.")
                             .arg(QString::fromStdString(algorithm).section(QLatin1Char('.'), -1), w.error().message);
         }
     } else if (algorithm == kAreaScanAlgorithm && notices) {
-        *notices << QStringLiteral("An area scan without a polygon of three corners is kept as the server sent it.");
+        *notices << QCoreApplication::translate("HciSegmentMapper", "An area scan without a polygon of three corners is kept as the server sent it.");
     }
     // Any other algorithm (or one that does not read as its kind) is kept as the server described it.
     AlgorithmSegment other = algorithmSegmentFromHci(s);

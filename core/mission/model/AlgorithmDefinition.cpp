@@ -3,6 +3,7 @@
 #include <QRegularExpression>
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -61,7 +62,7 @@ QString ParameterDefinition::check(const QString &value) const
 {
     if (value.trimmed().isEmpty()) {
         if (mandatory && defaultValue.isEmpty())
-            return QStringLiteral("%1 must be set").arg(name);
+            return QCoreApplication::translate("AlgorithmDefinition", "%1 must be set").arg(name);
         return {};
     }
     switch (type) {
@@ -69,18 +70,18 @@ QString ParameterDefinition::check(const QString &value) const
     case ParameterType::Double: {
         const auto v = parseParameterNumber(value);
         if (!v)
-            return QStringLiteral("%1: '%2' is not a number").arg(name, value);
+            return QCoreApplication::translate("AlgorithmDefinition", "%1: '%2' is not a number").arg(name, value);
         if (type == ParameterType::Integer && std::floor(*v) != *v)
-            return QStringLiteral("%1: '%2' is not a whole number").arg(name, value);
+            return QCoreApplication::translate("AlgorithmDefinition", "%1: '%2' is not a whole number").arg(name, value);
         if (minimum && *v < *minimum)
-            return QStringLiteral("%1: %2 is below the minimum of %3").arg(name, parameterNumberText(*v), withUnit(*minimum, *this));
+            return QCoreApplication::translate("AlgorithmDefinition", "%1: %2 is below the minimum of %3").arg(name, parameterNumberText(*v), withUnit(*minimum, *this));
         if (maximum && *v > *maximum)
-            return QStringLiteral("%1: %2 is above the maximum of %3").arg(name, parameterNumberText(*v), withUnit(*maximum, *this));
+            return QCoreApplication::translate("AlgorithmDefinition", "%1: %2 is above the maximum of %3").arg(name, parameterNumberText(*v), withUnit(*maximum, *this));
         break;
     }
     case ParameterType::Boolean:
         if (!parseParameterBoolean(value))
-            return QStringLiteral("%1: '%2' is neither true nor false").arg(name, value);
+            return QCoreApplication::translate("AlgorithmDefinition", "%1: '%2' is neither true nor false").arg(name, value);
         break;
     case ParameterType::Selection:
         if (!choices.empty()) {
@@ -88,7 +89,7 @@ QString ParameterDefinition::check(const QString &value) const
             for (const ParameterChoice &c : choices)
                 known = known || c.value == value.trimmed();
             if (!known)
-                return QStringLiteral("%1: '%2' is not one of its choices").arg(name, value);
+                return QCoreApplication::translate("AlgorithmDefinition", "%1: '%2' is not one of its choices").arg(name, value);
         }
         break;
     case ParameterType::String:
@@ -97,7 +98,7 @@ QString ParameterDefinition::check(const QString &value) const
     if (!validationRegex.isEmpty()) {
         const QRegularExpression re(QRegularExpression::anchoredPattern(validationRegex));
         if (re.isValid() && !re.match(value).hasMatch())
-            return QStringLiteral("%1: '%2' does not have the expected form").arg(name, value);
+            return QCoreApplication::translate("AlgorithmDefinition", "%1: '%2' does not have the expected form").arg(name, value);
     }
     return {};
 }

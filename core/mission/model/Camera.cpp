@@ -1,4 +1,5 @@
 #include "Camera.h"
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -6,16 +7,16 @@ const std::vector<Camera> &builtInCameras()
 {
     // Sensor width × height (mm), focal length (mm), pixels, shortest interval (s) where published.
     static const std::vector<Camera> cameras{
-        {QStringLiteral("DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)"), 13.2, 8.8, 8.8, 5472, 3648, 0.0},
-        {QStringLiteral("DJI Phantom 4 (FC330)"), 6.17, 4.55, 3.61, 4000, 3000, 0.0},
-        {QStringLiteral("DJI Mavic 2 Pro (Hasselblad L1D-20c)"), 13.2, 8.8, 10.26, 5472, 3648, 0.0},
-        {QStringLiteral("DJI Mavic 3 Enterprise (wide)"), 17.3, 13.0, 12.29, 5280, 3956, 0.7},
-        {QStringLiteral("DJI Zenmuse P1 24 mm"), 35.9, 24.0, 24.0, 8192, 5460, 0.7},
-        {QStringLiteral("DJI Zenmuse P1 35 mm"), 35.9, 24.0, 35.0, 8192, 5460, 0.7},
-        {QStringLiteral("Sony RX1R II"), 35.9, 24.0, 35.0, 7952, 5304, 0.0},
-        {QStringLiteral("senseFly S.O.D.A."), 13.2, 8.8, 10.6, 5472, 3648, 0.0},
-        {QStringLiteral("MicaSense RedEdge-MX"), 4.8, 3.6, 5.4, 1280, 960, 1.0},
-        {QStringLiteral("GoPro Hero3 Black Edition"), 6.17, 4.55, 2.8, 4000, 3000, 1.0},
+        {QCoreApplication::translate("Camera", "DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)"), 13.2, 8.8, 8.8, 5472, 3648, 0.0},
+        {QCoreApplication::translate("Camera", "DJI Phantom 4 (FC330)"), 6.17, 4.55, 3.61, 4000, 3000, 0.0},
+        {QCoreApplication::translate("Camera", "DJI Mavic 2 Pro (Hasselblad L1D-20c)"), 13.2, 8.8, 10.26, 5472, 3648, 0.0},
+        {QCoreApplication::translate("Camera", "DJI Mavic 3 Enterprise (wide)"), 17.3, 13.0, 12.29, 5280, 3956, 0.7},
+        {QCoreApplication::translate("Camera", "DJI Zenmuse P1 24 mm"), 35.9, 24.0, 24.0, 8192, 5460, 0.7},
+        {QCoreApplication::translate("Camera", "DJI Zenmuse P1 35 mm"), 35.9, 24.0, 35.0, 8192, 5460, 0.7},
+        {QCoreApplication::translate("Camera", "Sony RX1R II"), 35.9, 24.0, 35.0, 7952, 5304, 0.0},
+        {QCoreApplication::translate("Camera", "senseFly S.O.D.A."), 13.2, 8.8, 10.6, 5472, 3648, 0.0},
+        {QCoreApplication::translate("Camera", "MicaSense RedEdge-MX"), 4.8, 3.6, 5.4, 1280, 960, 1.0},
+        {QCoreApplication::translate("Camera", "GoPro Hero3 Black Edition"), 6.17, 4.55, 2.8, 4000, 3000, 1.0},
     };
     return cameras;
 }

@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <vector>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -12,7 +13,7 @@ namespace sortie::mission {
 // runs across the flight direction and its height along it.
 struct Camera
 {
-    QString name = QStringLiteral("Generic 1\" 20 MP");
+    QString name = QCoreApplication::translate("Camera", "Generic 1\" 20 MP");
     double sensorWidthMm = 13.2;
     double sensorHeightMm = 8.8;
     double focalLengthMm = 8.8;

@@ -1,4 +1,5 @@
 #include "MissionError.h"
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -11,7 +12,7 @@ QString MissionError::toString() const
             where += QStringLiteral(":%1").arg(column);
     }
     if (!jsonPath.isEmpty())
-        where += (where.isEmpty() ? QString() : QStringLiteral(" ")) + QStringLiteral("(at %1)").arg(jsonPath);
+        where += (where.isEmpty() ? QString() : QStringLiteral(" ")) + QCoreApplication::translate("MissionError", "(at %1)").arg(jsonPath);
     return where.isEmpty() ? message : where + QStringLiteral(": ") + message;
 }
 

@@ -3,6 +3,7 @@
 #include "Camera.h"
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -84,9 +85,9 @@ bool number(const QVariant &value, const QString &name, double min, double max, 
 {
     const auto d = toNumber(value);
     if (!d)
-        return fail(error, QStringLiteral("%1 needs a number, not \"%2\".").arg(name, value.toString()));
+        return fail(error, QCoreApplication::translate("SegmentParameters", "%1 needs a number, not \"%2\".").arg(name, value.toString()));
     if (*d < min || *d > max || (maxOpen && *d == max))
-        return fail(error, QStringLiteral("%1 must be from %2 to %3%4.").arg(name).arg(min).arg(maxOpen ? QStringLiteral("below ") : QString()).arg(max));
+        return fail(error, QCoreApplication::translate("SegmentParameters", "%1 must be from %2 to %3%4.").arg(name).arg(min).arg(maxOpen ? QStringLiteral("below ") : QString()).arg(max));
     apply(*d);
     return true;
 }
@@ -108,7 +109,7 @@ bool setScan(AreaScanParameters &p, const QString &name, const QVariant &value, 
     if (name == QLatin1String("altitudeType")) {
         const auto t = toAltitudeType(value);
         if (!t)
-            return fail(error, QStringLiteral("altitudeType is AGL or AMSL, not \"%1\".").arg(value.toString()));
+            return fail(error, QCoreApplication::translate("SegmentParameters", "altitudeType is AGL or AMSL, not \"%1\".").arg(value.toString()));
         p.altitudeType = *t;
         return true;
     }
@@ -135,7 +136,7 @@ bool setScan(AreaScanParameters &p, const QString &name, const QVariant &value, 
         // A camera Sortie knows brings its optics; another name only names the optics there are.
         const QString n = value.toString();
         if (n.isEmpty())
-            return fail(error, QStringLiteral("camera needs a name."));
+            return fail(error, QCoreApplication::translate("SegmentParameters", "camera needs a name."));
         if (const auto known = builtInCamera(n))
             p.camera = *known;
         else
@@ -153,7 +154,7 @@ bool setScan(AreaScanParameters &p, const QString &name, const QVariant &value, 
         return number(value, name, 1, 1e6, false, error, [&](double d) { p.camera.imageWidthPx = int(d); });
     if (name == QLatin1String("cameraImageHeight"))
         return number(value, name, 1, 1e6, false, error, [&](double d) { p.camera.imageHeightPx = int(d); });
-    return fail(error, QStringLiteral("An area scan has no parameter \"%1\".").arg(name));
+    return fail(error, QCoreApplication::translate("SegmentParameters", "An area scan has no parameter \"%1\".").arg(name));
 }
 
 QVariant scanValue(const AreaScanParameters &p, const QString &name)
@@ -184,20 +185,20 @@ bool setWaypoint(Waypoint &w, const QString &name, const QVariant &value, QStrin
     if (name == QLatin1String("wpTurnType")) {
         const auto t = toTurnType(value);
         if (!t)
-            return fail(error, QStringLiteral("wpTurnType is STOP_AND_TURN, STRAIGHT, SPLINE or BANK_TURN, not \"%1\".").arg(value.toString()));
+            return fail(error, QCoreApplication::translate("SegmentParameters", "wpTurnType is STOP_AND_TURN, STRAIGHT, SPLINE or BANK_TURN, not \"%1\".").arg(value.toString()));
         w.turnType = *t;
         return true;
     }
     if (name == QLatin1String("altitudeType")) {
         const auto t = toAltitudeType(value);
         if (!t)
-            return fail(error, QStringLiteral("altitudeType is AGL or AMSL, not \"%1\".").arg(value.toString()));
+            return fail(error, QCoreApplication::translate("SegmentParameters", "altitudeType is AGL or AMSL, not \"%1\".").arg(value.toString()));
         w.altitudeType = *t;
         return true;
     }
     if (name == QLatin1String("acceptanceRadius"))
         return number(value, name, 0, kHuge, false, error, [&](double d) { w.acceptanceRadius = d; });
-    return fail(error, QStringLiteral("A waypoint has no parameter \"%1\".").arg(name));
+    return fail(error, QCoreApplication::translate("SegmentParameters", "A waypoint has no parameter \"%1\".").arg(name));
 }
 
 QVariant waypointValue(const Waypoint &w, const QString &name)
@@ -293,16 +294,16 @@ bool setParameterValue(Segment &segment, const QString &name, const QVariant &va
         const AlgorithmDefinition *def = catalog.byClassName(a->algorithm);
         const ParameterDefinition *p = def ? def->parameter(name) : nullptr;
         if (!p && !a->value(name))
-            return fail(error, QStringLiteral("%1 has no parameter \"%2\".").arg(algorithmLabel(*a), name));
+            return fail(error, QCoreApplication::translate("SegmentParameters", "%1 has no parameter \"%2\".").arg(algorithmLabel(*a), name));
         std::optional<QString> text = wireText(value);
         if (p && p->type == ParameterType::Selection && value.metaType() == QMetaType::fromType<AltitudeType>())
             text = altitudeTypeName(value.value<AltitudeType>());
         if (!text)
-            return fail(error, QStringLiteral("%1 cannot take that value.").arg(name));
+            return fail(error, QCoreApplication::translate("SegmentParameters", "%1 cannot take that value.").arg(name));
         if (p) {
             if (p->type == ParameterType::Boolean && value.metaType().id() != QMetaType::Bool && !parseParameterBoolean(*text)
                 && !text->isEmpty())
-                return fail(error, QStringLiteral("%1 is true or false, not \"%2\".").arg(name, *text));
+                return fail(error, QCoreApplication::translate("SegmentParameters", "%1 is true or false, not \"%2\".").arg(name, *text));
             if (const QString problem = p->check(*text); !problem.isEmpty())
                 return fail(error, problem);
         }

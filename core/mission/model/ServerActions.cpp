@@ -61,30 +61,32 @@ QString kindName(const FieldDescriptor *member)
 
 struct Known { const char *kind; const char *field; const char *label; const char *unit; std::optional<double> minimum, maximum; };
 
-// What Sortie knows better than a field's name. Units follow from the names (UgCS publishes none for
+// What Sortie knows better than a field's name. Labels and units are kept in English (the source
+// text) and translated where shown (actionText(), describeServerAction()), in the context
+// "ActionVariants" that the editable actions' labels share. Units follow from the names (UgCS publishes none for
 // these); PWM is a pulse width in microseconds, as MAVLink's DO_SET_SERVO takes it.
 const Known kKnown[] = {
-    {"setServo", nullptr, "Set servo", "", {}, {}},
-    {"setServo", "servoId", "Servo", "", 0, 255},
-    {"setServo", "pwm", "PWM", "µs", 0, 65535},
-    {"repeatServo", nullptr, "Repeat servo", "", {}, {}},
-    {"repeatServo", "servoId", "Servo", "", 0, 255},
-    {"repeatServo", "pwm", "PWM", "µs", 0, 65535},
-    {"repeatServo", "delay", "Cycle time", "s", 0, 3600},
-    {"repeatServo", "count", "Repeats", "", 0, 100000},
-    {"transitionVtol", nullptr, "Switch to hover (VTOL)", "", {}, {}},
-    {"transitionFixed", nullptr, "Switch to fixed-wing", "", {}, {}},
-    {"lidarRecordingControl", nullptr, "Lidar recording", "", {}, {}},
-    {"lidarRecordingControl", "targetState", "Recording", "", {}, {}},
-    {"lidarCalibration", nullptr, "Lidar calibration", "", {}, {}},
-    {"lidarCalibration", "distance", "Distance", "m", 0, 10000},
-    {"lidarCalibration", "times", "Times", "", 0, 1000},
-    {"hopAction", nullptr, "Hop", "", {}, {}},
-    {"hopAction", "descentAltitude", "Descent altitude", "m", 0, 10000},
-    {"hopAction", "waitTime", "Wait", "s", 0, 86400},
-    {"hopAction", "dropAction", "Drop payload", "", {}, {}},
-    {"hopAction", "descentSpeed", "Descent speed", "m/s", 0, 100},
-    {"drop", nullptr, "Drop payload", "", {}, {}},
+    {"setServo", nullptr, QT_TRANSLATE_NOOP("ActionVariants", "Set servo"), "", {}, {}},
+    {"setServo", "servoId", QT_TRANSLATE_NOOP("ActionVariants", "Servo"), "", 0, 255},
+    {"setServo", "pwm", QT_TRANSLATE_NOOP("ActionVariants", "PWM"), "µs", 0, 65535},
+    {"repeatServo", nullptr, QT_TRANSLATE_NOOP("ActionVariants", "Repeat servo"), "", {}, {}},
+    {"repeatServo", "servoId", QT_TRANSLATE_NOOP("ActionVariants", "Servo"), "", 0, 255},
+    {"repeatServo", "pwm", QT_TRANSLATE_NOOP("ActionVariants", "PWM"), "µs", 0, 65535},
+    {"repeatServo", "delay", QT_TRANSLATE_NOOP("ActionVariants", "Cycle time"), QT_TRANSLATE_NOOP("ActionVariants", "s"), 0, 3600},
+    {"repeatServo", "count", QT_TRANSLATE_NOOP("ActionVariants", "Repeats"), "", 0, 100000},
+    {"transitionVtol", nullptr, QT_TRANSLATE_NOOP("ActionVariants", "Switch to hover (VTOL)"), "", {}, {}},
+    {"transitionFixed", nullptr, QT_TRANSLATE_NOOP("ActionVariants", "Switch to fixed-wing"), "", {}, {}},
+    {"lidarRecordingControl", nullptr, QT_TRANSLATE_NOOP("ActionVariants", "Lidar recording"), "", {}, {}},
+    {"lidarRecordingControl", "targetState", QT_TRANSLATE_NOOP("ActionVariants", "Recording"), "", {}, {}},
+    {"lidarCalibration", nullptr, QT_TRANSLATE_NOOP("ActionVariants", "Lidar calibration"), "", {}, {}},
+    {"lidarCalibration", "distance", QT_TRANSLATE_NOOP("ActionVariants", "Distance"), QT_TRANSLATE_NOOP("ActionVariants", "m"), 0, 10000},
+    {"lidarCalibration", "times", QT_TRANSLATE_NOOP("ActionVariants", "Times"), "", 0, 1000},
+    {"hopAction", nullptr, QT_TRANSLATE_NOOP("ActionVariants", "Hop"), "", {}, {}},
+    {"hopAction", "descentAltitude", QT_TRANSLATE_NOOP("ActionVariants", "Descent altitude"), QT_TRANSLATE_NOOP("ActionVariants", "m"), 0, 10000},
+    {"hopAction", "waitTime", QT_TRANSLATE_NOOP("ActionVariants", "Wait"), QT_TRANSLATE_NOOP("ActionVariants", "s"), 0, 86400},
+    {"hopAction", "dropAction", QT_TRANSLATE_NOOP("ActionVariants", "Drop payload"), "", {}, {}},
+    {"hopAction", "descentSpeed", QT_TRANSLATE_NOOP("ActionVariants", "Descent speed"), QT_TRANSLATE_NOOP("ActionVariants", "m/s"), 0, 100},
+    {"drop", nullptr, QT_TRANSLATE_NOOP("ActionVariants", "Drop payload"), "", {}, {}},
 };
 
 const Known *known(const QString &kind, const char *field)
@@ -131,7 +133,7 @@ ServerActionKind describe(const FieldDescriptor *member)
     kind.member = member->number();
     kind.kind = kindName(member);
     const Known *k = known(kind.kind, nullptr);
-    kind.label = k ? QCoreApplication::translate("ServerAction", k->label) : humanized(kind.kind);
+    kind.label = k ? QString::fromUtf8(k->label) : humanized(kind.kind);
     const Descriptor *message = member->message_type();
     for (int i = 0; i < message->field_count(); ++i) {
         const FieldDescriptor *f = message->field(i);
@@ -142,7 +144,7 @@ ServerActionKind describe(const FieldDescriptor *member)
         field.type = typeOf(f);
         field.name = QString::fromStdString(f->name());
         if (const Known *kf = known(kind.kind, f->name().c_str())) {
-            field.label = QCoreApplication::translate("ServerAction", kf->label);
+            field.label = QString::fromUtf8(kf->label);
             field.unit = QString::fromUtf8(kf->unit);
             field.minimum = kf->minimum;
             field.maximum = kf->maximum;
@@ -352,7 +354,8 @@ QString describeServerAction(const ServerAction &action)
         const QVariant v = valueOf(definition, *kind, f);
         if (!v.isValid())
             continue;
-        const QString label = f.label == f.label.toUpper() ? f.label : f.label.toLower();  // "PWM" stays
+        const QString shown = QCoreApplication::translate("ActionVariants", f.label.toUtf8().constData());
+        const QString label = shown == shown.toUpper() ? shown : shown.toLower();  // "PWM" stays
         QString text;
         if (v.typeId() == QMetaType::Bool)
             text = v.toBool() ? label : QString();
@@ -361,11 +364,12 @@ QString describeServerAction(const ServerAction &action)
                 if (name == v.toString())
                     text = label + u' ' + choice.toLower();
         } else
-            text = (label + u' ' + number(v.toDouble()) + u' ' + f.unit).trimmed();
+            text = (label + u' ' + number(v.toDouble()) + u' ' + QCoreApplication::translate("ActionVariants", f.unit.toUtf8().constData())).trimmed();
         if (!text.isEmpty())
             parts << text;
     }
-    return parts.isEmpty() ? kind->label : kind->label + QStringLiteral(": ") + parts.join(QStringLiteral(", "));
+    const QString kindLabel = QCoreApplication::translate("ActionVariants", kind->label.toUtf8().constData());
+    return parts.isEmpty() ? kindLabel : kindLabel + QStringLiteral(": ") + parts.join(QStringLiteral(", "));
 }
 
 std::optional<ServerAction> serverActionFromBytes(const QByteArray &bytes)

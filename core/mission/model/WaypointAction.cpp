@@ -3,6 +3,7 @@
 #include "ServerActions.h"
 
 #include <QStringList>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -51,37 +52,37 @@ QString describeAction(const WaypointAction &action)
 {
     return std::visit(Overloaded{
         [](const WaitAction &a) {
-            return a.waitForOperator ? QStringLiteral("Wait for operator") : QStringLiteral("Wait %1 s").arg(number(a.seconds));
+            return a.waitForOperator ? QCoreApplication::translate("WaypointAction", "Wait for operator") : QCoreApplication::translate("WaypointAction", "Wait %1 s").arg(number(a.seconds));
         },
         [](const HeadingAction &a) {
-            return QStringLiteral("Heading %1°%2").arg(number(a.headingDeg),
-                a.relativeToNextWaypoint ? QStringLiteral(" from course") : QString());
+            return QCoreApplication::translate("WaypointAction", "Heading %1°%2").arg(number(a.headingDeg),
+                a.relativeToNextWaypoint ? QCoreApplication::translate("WaypointAction", " from course") : QString());
         },
         [](const PoiAction &a) {
-            return QStringLiteral("Look at %1, %2").arg(number(a.position.latitude), number(a.position.longitude));
+            return QCoreApplication::translate("WaypointAction", "Look at %1, %2").arg(number(a.position.latitude), number(a.position.longitude));
         },
         [](const CameraTriggerAction &a) {
             switch (a.state) {
-            case TriggerState::SingleShot: return QStringLiteral("Take photo");
-            case TriggerState::StartRecording: return QStringLiteral("Start video");
-            case TriggerState::StopRecording: return QStringLiteral("Stop video");
-            case TriggerState::ToggleRecording: return QStringLiteral("Toggle video");
+            case TriggerState::SingleShot: return QCoreApplication::translate("WaypointAction", "Take photo");
+            case TriggerState::StartRecording: return QCoreApplication::translate("WaypointAction", "Start video");
+            case TriggerState::StopRecording: return QCoreApplication::translate("WaypointAction", "Stop video");
+            case TriggerState::ToggleRecording: return QCoreApplication::translate("WaypointAction", "Toggle video");
             }
             return QString();
         },
-        [](const CameraSeriesByTimeAction &a) { return QStringLiteral("Photo every %1 s").arg(number(a.intervalSeconds)); },
+        [](const CameraSeriesByTimeAction &a) { return QCoreApplication::translate("WaypointAction", "Photo every %1 s").arg(number(a.intervalSeconds)); },
         [](const CameraSeriesByDistanceAction &a) {
-            return a.intervalMeters > 0 ? QStringLiteral("Photo every %1 m").arg(number(a.intervalMeters))
-                                        : QStringLiteral("Stop photos");
+            return a.intervalMeters > 0 ? QCoreApplication::translate("WaypointAction", "Photo every %1 m").arg(number(a.intervalMeters))
+                                        : QCoreApplication::translate("WaypointAction", "Stop photos");
         },
-        [](const PanoramaAction &a) { return QStringLiteral("Panorama %1°").arg(number(a.angleDeg)); },
+        [](const PanoramaAction &a) { return QCoreApplication::translate("WaypointAction", "Panorama %1°").arg(number(a.angleDeg)); },
         [](const CameraControlAction &a) {
             QStringList parts;
-            if (a.tiltDeg) parts << QStringLiteral("tilt %1°").arg(number(*a.tiltDeg));
-            if (a.rollDeg) parts << QStringLiteral("roll %1°").arg(number(*a.rollDeg));
-            if (a.yawDeg) parts << QStringLiteral("yaw %1°").arg(number(*a.yawDeg));
-            if (a.zoomLevel) parts << QStringLiteral("zoom %1").arg(*a.zoomLevel);
-            return parts.isEmpty() ? QStringLiteral("Gimbal (nothing set)") : QStringLiteral("Gimbal ") + parts.join(QStringLiteral(", "));
+            if (a.tiltDeg) parts << QCoreApplication::translate("WaypointAction", "tilt %1°").arg(number(*a.tiltDeg));
+            if (a.rollDeg) parts << QCoreApplication::translate("WaypointAction", "roll %1°").arg(number(*a.rollDeg));
+            if (a.yawDeg) parts << QCoreApplication::translate("WaypointAction", "yaw %1°").arg(number(*a.yawDeg));
+            if (a.zoomLevel) parts << QCoreApplication::translate("WaypointAction", "zoom %1").arg(*a.zoomLevel);
+            return parts.isEmpty() ? QCoreApplication::translate("WaypointAction", "Gimbal (nothing set)") : QStringLiteral("Gimbal ") + parts.join(QStringLiteral(", "));
         },
         [](const ServerAction &a) { return describeServerAction(a); },
     }, action);

@@ -3,6 +3,7 @@
 #include "Photogrammetry.h"
 
 #include <cmath>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -25,15 +26,15 @@ AreaScanOutcome planAreaScan(const AreaScan &scan)
 
     const Camera &cam = params.camera;
     if (!cam.isValid())
-        return refuse(ScanProblem::InvalidCamera, QStringLiteral("The camera needs a positive sensor size, focal length and image size."));
+        return refuse(ScanProblem::InvalidCamera, QCoreApplication::translate("AreaScanPlanner", "The camera needs a positive sensor size, focal length and image size."));
     for (double o : {params.frontOverlapPercent, params.sideOverlapPercent})
         if (!(o >= 0 && o <= 95))
-            return refuse(ScanProblem::InvalidOverlap, QStringLiteral("Overlaps must be between 0 and 95 %."));
+            return refuse(ScanProblem::InvalidOverlap, QCoreApplication::translate("AreaScanPlanner", "Overlaps must be between 0 and 95 %."));
     const double altitude = scanAltitude(params);
     if (!(altitude > 0) || !std::isfinite(altitude))
-        return refuse(ScanProblem::InvalidAltitude, QStringLiteral("The scan altitude (or ground sample distance) must be positive."));
+        return refuse(ScanProblem::InvalidAltitude, QCoreApplication::translate("AreaScanPlanner", "The scan altitude (or ground sample distance) must be positive."));
     if (!(params.turnaroundMeters >= 0) || !std::isfinite(params.turnaroundMeters))
-        return refuse(ScanProblem::InvalidTurnaround, QStringLiteral("The turnaround distance must not be negative."));
+        return refuse(ScanProblem::InvalidTurnaround, QCoreApplication::translate("AreaScanPlanner", "The turnaround distance must not be negative."));
     if (!projected.polygon)
         return refuse(projected.problem, projected.message);
     const PlanarPolygon &shape = *projected.polygon;

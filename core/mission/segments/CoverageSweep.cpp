@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -93,10 +94,10 @@ PlanarPolygonOutcome planarPolygon(std::vector<GeoPoint> polygon)
     if (polygon.size() > 1 && polygon.front() == polygon.back())
         polygon.pop_back();  // tolerate a closed ring (UgCS sends them closed)
     if (polygon.size() < 3)
-        return refusePolygon(ScanProblem::TooFewVertices, QStringLiteral("An area scan needs a polygon of at least 3 vertices."));
+        return refusePolygon(ScanProblem::TooFewVertices, QCoreApplication::translate("CoverageSweep", "An area scan needs a polygon of at least 3 vertices."));
     for (size_t i = 0; i < polygon.size(); ++i)
         if (!polygon[i].isValid())
-            return refusePolygon(ScanProblem::InvalidVertex, QStringLiteral("Polygon vertex %1 is not a valid position.").arg(i + 1), int(i));
+            return refusePolygon(ScanProblem::InvalidVertex, QCoreApplication::translate("CoverageSweep", "Polygon vertex %1 is not a valid position.").arg(i + 1), int(i));
 
     const LocalTangentPlane plane(LocalTangentPlane::centroidOf(polygon));
     std::vector<PlanePoint> pts;
@@ -104,15 +105,15 @@ PlanarPolygonOutcome planarPolygon(std::vector<GeoPoint> polygon)
     for (size_t i = 0; i < polygon.size(); ++i) {
         const PlanePoint p = plane.project(polygon[i]);
         if (std::hypot(p.x, p.y) > kMaxScanRadiusMeters)
-            return refusePolygon(ScanProblem::TooLarge, QStringLiteral("The polygon spans more than 100 km; split it into smaller scans."), int(i));
+            return refusePolygon(ScanProblem::TooLarge, QCoreApplication::translate("CoverageSweep", "The polygon spans more than 100 km; split it into smaller scans."), int(i));
         pts.push_back(p);
     }
     if (auto hit = polygon::firstSelfIntersection(pts))
-        return refusePolygon(ScanProblem::SelfIntersecting, QStringLiteral("The scan polygon crosses itself (edges %1 and %2).")
+        return refusePolygon(ScanProblem::SelfIntersecting, QCoreApplication::translate("CoverageSweep", "The scan polygon crosses itself (edges %1 and %2).")
                              .arg(hit->first + 1).arg(hit->second + 1), hit->second);
     const double area = std::abs(polygon::signedArea(pts));
     if (area < 1.0)
-        return refusePolygon(ScanProblem::NoArea, QStringLiteral("The scan polygon has no area."));
+        return refusePolygon(ScanProblem::NoArea, QCoreApplication::translate("CoverageSweep", "The scan polygon has no area."));
     PlanarPolygonOutcome o;
     o.polygon = PlanarPolygon{plane, std::move(pts), area};
     return o;
@@ -122,7 +123,7 @@ SweepOutcome sweepPolygon(const std::vector<PlanePoint> &pts, double spacing, do
                           const std::optional<PlanePoint> &start)
 {
     if (!(spacing > 0) || !std::isfinite(spacing))
-        return refuseSweep(ScanProblem::NoTransects, QStringLiteral("The distance between passes must be positive."));
+        return refuseSweep(ScanProblem::NoTransects, QCoreApplication::translate("CoverageSweep", "The distance between passes must be positive."));
     // Sweep coordinates: u along the passes (bearing directionDeg), v to their right.
     const double theta = directionDeg * kDeg;
     const double dx = std::sin(theta), dy = std::cos(theta);
@@ -138,7 +139,7 @@ SweepOutcome sweepPolygon(const std::vector<PlanePoint> &pts, double spacing, do
     const double height = vmax - vmin;
     const double lineCount = std::max(1.0, std::ceil(height / spacing - 1e-9));
     if (lineCount > kMaxTransects)
-        return refuseSweep(ScanProblem::TooManyTransects, QStringLiteral("The scan would need %1 transects; raise the altitude or lower the side overlap.")
+        return refuseSweep(ScanProblem::TooManyTransects, QCoreApplication::translate("CoverageSweep", "The scan would need %1 transects; raise the altitude or lower the side overlap.")
                            .arg(qint64(lineCount)));
     const int lines = int(lineCount);
     const double v0 = vmin + (height - (lines - 1) * spacing) / 2;  // centred
@@ -152,7 +153,7 @@ SweepOutcome sweepPolygon(const std::vector<PlanePoint> &pts, double spacing, do
     }
     const std::vector<Cell> cells = decompose(intervals);
     if (cells.empty())
-        return refuseSweep(ScanProblem::NoTransects, QStringLiteral("The scan yields no transects: the polygon is too narrow."));
+        return refuseSweep(ScanProblem::NoTransects, QCoreApplication::translate("CoverageSweep", "The scan yields no transects: the polygon is too narrow."));
 
     // Fly the cells, each time entering the unvisited cell whose entry is nearest.
     std::vector<PlaneSegment> order;

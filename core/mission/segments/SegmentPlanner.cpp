@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <QCoreApplication>
 
 namespace sortie::mission {
 
@@ -33,9 +34,9 @@ double pointAltitude(const SegmentFigure &f, size_t i)
 SegmentPlanOutcome planPointTool(AlgorithmKind kind, const SegmentFigure &f, const Common &c)
 {
     if (f.points.empty())
-        return fail(QStringLiteral("The segment has no point"), 0);
+        return fail(QCoreApplication::translate("SegmentPlanner", "The segment has no point"), 0);
     if (!f.points[0].isValid())
-        return fail(QStringLiteral("Point 1 is not a position on the globe"), 0);
+        return fail(QCoreApplication::translate("SegmentPlanner", "Point 1 is not a position on the globe"), 0);
     SegmentPlan plan;
     PlannedPoint p = point(f.points[0], pointAltitude(f, 0), f.pointFrame, c.speed);
     if (kind == AlgorithmKind::TakeOff)
@@ -52,21 +53,21 @@ SegmentPlanOutcome planPointTool(AlgorithmKind kind, const SegmentFigure &f, con
 SegmentPlanOutcome planCircle(const SegmentFigure &f, const ParameterReader &r, const Common &c, const PlanContext &ctx)
 {
     if (f.points.empty())
-        return fail(QStringLiteral("The circle has no centre point"), 0);
+        return fail(QCoreApplication::translate("SegmentPlanner", "The circle has no centre point"), 0);
     const GeoPoint centre = f.points[0];
     if (!centre.isValid())
-        return fail(QStringLiteral("The circle's centre is not a position on the globe"), 0);
+        return fail(QCoreApplication::translate("SegmentPlanner", "The circle's centre is not a position on the globe"), 0);
     const double radius = f.parameters.empty() ? 0.0 : f.parameters[0];
     if (!(radius > 0) || !std::isfinite(radius))
-        return fail(QStringLiteral("The circle needs a positive radius (metres, the figure's first parameter)"));
+        return fail(QCoreApplication::translate("SegmentPlanner", "The circle needs a positive radius (metres, the figure's first parameter)"));
     if (radius > kMaxScanRadiusMeters)
-        return fail(QStringLiteral("The circle's radius of %1 m is over the %2 m a segment may span").arg(m1(radius), m1(kMaxScanRadiusMeters)));
+        return fail(QCoreApplication::translate("SegmentPlanner", "The circle's radius of %1 m is over the %2 m a segment may span").arg(m1(radius), m1(kMaxScanRadiusMeters)));
     const int loops = int(r.number(QStringLiteral("loops"), 1.0));
     const bool clockwise = r.boolean(QStringLiteral("flightClockwise"), true);
     const auto given = r.number(QStringLiteral("basePointsQnt"));
     const int perLap = given ? int(*given) : circlePointsPerLap(radius);
     if (size_t(perLap) * size_t(loops) > size_t(kMaxPlannedPoints))
-        return fail(QStringLiteral("loops: %1 laps of %2 points are too many").arg(loops).arg(perLap));
+        return fail(QCoreApplication::translate("SegmentPlanner", "loops: %1 laps of %2 points are too many").arg(loops).arg(perLap));
 
     double start = 0.0;  // bearing of the first point from the centre: towards where the vehicle comes from
     if (ctx.previousPosition && ctx.previousPosition->isValid() && !(*ctx.previousPosition == centre))
@@ -78,8 +79,10 @@ SegmentPlanOutcome planCircle(const SegmentFigure &f, const ParameterReader &r, 
     for (int k = 0; k <= perLap * loops; ++k)
         plan.points.push_back(point(geodesicDirect(centre, start + step * (k % perLap), radius).point, height, f.pointFrame, c.speed));
     plan.passes = loops;
-    plan.notes.push_back(QStringLiteral("Orbit of %1 m radius: %2 lap(s) of %3 points, %4")
-                             .arg(m1(radius)).arg(loops).arg(perLap).arg(clockwise ? QStringLiteral("clockwise") : QStringLiteral("counter-clockwise")));
+    plan.notes.push_back(QCoreApplication::translate("SegmentPlanner", "Orbit of %1 m radius: %n lap(s) of %2 points, %3", nullptr, int(loops))
+                             .arg(m1(radius)).arg(perLap)
+                             .arg(clockwise ? QCoreApplication::translate("SegmentPlanner", "clockwise")
+                                            : QCoreApplication::translate("SegmentPlanner", "counter-clockwise")));
     return {std::move(plan), {}, -1};
 }
 
@@ -116,10 +119,10 @@ SegmentPlanOutcome planSegment(const AlgorithmDefinition &algorithm, const Segme
         return o;
     }
     if (const int bad = firstInvalidPoint(figure); bad >= 0)
-        return fail(QStringLiteral("Point %1 is not a position on the globe (latitude and longitude in range)").arg(bad + 1), bad);
+        return fail(QCoreApplication::translate("SegmentPlanner", "Point %1 is not a position on the globe (latitude and longitude in range)").arg(bad + 1), bad);
     const Common common = commonOf(reader, context);
     if (!(common.speed > 0))
-        return fail(QStringLiteral("speed: the segment needs a positive speed"));
+        return fail(QCoreApplication::translate("SegmentPlanner", "speed: the segment needs a positive speed"));
 
     SegmentPlanOutcome out;
     switch (algorithm.kind) {
@@ -135,7 +138,7 @@ SegmentPlanOutcome planSegment(const AlgorithmDefinition &algorithm, const Segme
     case AlgorithmKind::ExpandingSquare: out = planExpandingSquare(figure, reader, common, context); break;
     case AlgorithmKind::FacadeScanner: out = planFacade(figure, reader, common, context); break;
     case AlgorithmKind::Unknown:
-        return fail(QStringLiteral("No planner knows the algorithm '%1'").arg(algorithm.className));
+        return fail(QCoreApplication::translate("SegmentPlanner", "No planner knows the algorithm '%1'").arg(algorithm.className));
     }
     if (!out.plan)
         return out;

@@ -4,6 +4,7 @@
 #include "TelemetryField.h"
 
 #include <algorithm>
+#include <QCoreApplication>
 
 namespace sortie::vehicle {
 
@@ -36,11 +37,11 @@ HciRoutePassTracker::Outcome HciRoutePassTracker::apply(const pb::ObjectModifica
 {
     const int id = event.objectid();
     if (event.objecttype() != "RoutePass")
-        return dropped(QStringLiteral("a RoutePass event names the object type \"%1\"").arg(QString::fromStdString(event.objecttype())));
+        return dropped(QCoreApplication::translate("HciRoutePass", "a RoutePass event names the object type \"%1\"").arg(QString::fromStdString(event.objecttype())));
     if (event.modificationtype() == pb::MT_DELETE)
         return removed(id, timeMs);
     if (!event.object().has_routepass())
-        return dropped(QStringLiteral("RoutePass %1: the event carries no RoutePass").arg(id));
+        return dropped(QCoreApplication::translate("HciRoutePass", "RoutePass %1: the event carries no RoutePass").arg(id));
     return update(event.object().routepass(), id, timeMs);
 }
 
@@ -52,14 +53,14 @@ HciRoutePassTracker::Outcome HciRoutePassTracker::apply(const pb::RoutePass &pas
 HciRoutePassTracker::Outcome HciRoutePassTracker::update(const pb::RoutePass &pass, int objectId, int64_t timeMs)
 {
     if (!pass.has_vehicle() || !pass.vehicle().has_id())
-        return dropped(QStringLiteral("RoutePass %1 names no vehicle").arg(objectId));
+        return dropped(QCoreApplication::translate("HciRoutePass", "RoutePass %1 names no vehicle").arg(objectId));
     if (pass.vehicle().id() != m_vehicleId)
         return {}; // another vehicle's route
     if (!pass.has_waypointcount() || pass.waypointcount() < 1)
-        return dropped(QStringLiteral("RoutePass %1 has no waypoint count").arg(objectId));
+        return dropped(QCoreApplication::translate("HciRoutePass", "RoutePass %1 has no waypoint count").arg(objectId));
     const int serverCount = pass.waypointcount();
     if (pass.has_waypointindex() && (pass.waypointindex() < 0 || pass.waypointindex() >= serverCount))
-        return dropped(QStringLiteral("RoutePass %1: waypoint index %2 is outside the route's %3 waypoints")
+        return dropped(QCoreApplication::translate("HciRoutePass", "RoutePass %1: waypoint index %2 is outside the route's %3 waypoints")
                            .arg(objectId).arg(pass.waypointindex()).arg(serverCount));
     // One more waypoint than we uploaded: the server put the vehicle's own position first (UploadRoute's
     // addFirstWaypoint), which is not a waypoint of the mission the fly view draws.

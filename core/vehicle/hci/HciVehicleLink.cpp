@@ -14,6 +14,7 @@
 #include <QDateTime>
 
 #include <numbers>
+#include <QCoreApplication>
 
 namespace sortie::vehicle {
 
@@ -156,7 +157,7 @@ void HciVehicleLink::underLock(const QString &what, Work work, Done done)
     hci::underLock<CommandResult>(m_client, HciObjectType::Vehicle, m_vehicle->id(), this, {
         std::move(work),
         [this, what](const hci::HciError &refusal) {
-            return CommandResult::failure(QStringLiteral("%1: cannot take control of %2: %3").arg(what, m_identity.name, refusal.message()));
+            return CommandResult::failure(QCoreApplication::translate("HciVehicleLink", "%1: cannot take control of %2: %3").arg(what, m_identity.name, refusal.message()));
         },
         [done](CommandResult result) {
             if (done)
@@ -186,7 +187,7 @@ void HciVehicleLink::command(const QString &code, const QVariantMap &arguments, 
                 }
                 return;
             }
-            finish(CommandResult::failure(QStringLiteral("%1: the server sent no result for this vehicle").arg(code)));
+            finish(CommandResult::failure(QCoreApplication::translate("HciVehicleLink", "%1: the server sent no result for this vehicle").arg(code)));
         });
     }, std::move(done));
 }
@@ -209,7 +210,7 @@ void HciVehicleLink::setMode(FlightMode mode, Done done)
     case FlightMode::ReturnHome: command(QStringLiteral("return_to_home"), {}, std::move(done)); return;
     case FlightMode::Unknown: break;
     }
-    failLater(std::move(done), QStringLiteral("there is no such flight mode"));
+    failLater(std::move(done), QCoreApplication::translate("HciVehicleLink", "there is no such flight mode"));
 }
 
 void HciVehicleLink::takeoff(double altitude, Done done)
@@ -261,7 +262,7 @@ QString processingProblem(const mission::ProcessedPlan &plan)
             if (m.error)
                 break;
         }
-        return QStringLiteral("Segment %1: %2").arg(i + 1).arg(why.isEmpty() ? QStringLiteral("the server could not process it") : why);
+        return QCoreApplication::translate("HciVehicleLink", "Segment %1: %2").arg(i + 1).arg(why.isEmpty() ? QCoreApplication::translate("HciVehicleLink", "the server could not process it") : why);
     }
     return {};
 }
@@ -274,12 +275,12 @@ void HciVehicleLink::prepareMission(const mission::Route &route, PrepareDone don
     if (!hciRoute.has_vehicleprofile() && m_vehicle->has_profile())
         *hciRoute.mutable_vehicleprofile() = m_vehicle->profile();
     if (hciRoute.name().empty())
-        hciRoute.set_name(QStringLiteral("Sortie upload to %1").arg(m_identity.name).toStdString());
+        hciRoute.set_name(QCoreApplication::translate("HciVehicleLink", "Sortie upload to %1").arg(m_identity.name).toStdString());
     onFinished(m_client->processRoute(hciRoute), [route, done](const HciReply &processed) {
         if (!done)
             return;
         if (!processed.isOk()) {
-            done(CommandResult::failure(QStringLiteral("route processing: %1").arg(processed.error().message())), {});
+            done(CommandResult::failure(QCoreApplication::translate("HciVehicleLink", "route processing: %1").arg(processed.error().message())), {});
             return;
         }
         const pb::ProcessedRoute &server = processed.response<pb::ProcessRouteResponse>().processedroute();
@@ -296,7 +297,7 @@ void HciVehicleLink::prepareMission(const mission::Route &route, PrepareDone don
             prepared.items.push_back({w.position.latitude, w.position.longitude, w.altitudeAmsl - home, w.speed, w.acceptanceRadius, {}});
         for (size_t i = 0; i < plan.segments.size(); ++i) {
             for (const mission::ProcessedMessage &m : plan.segments[i].messages)
-                prepared.notices << QStringLiteral("Segment %1: %2").arg(i + 1).arg(m.text);
+                prepared.notices << QCoreApplication::translate("HciVehicleLink", "Segment %1: %2").arg(i + 1).arg(m.text);
         }
         done(CommandResult::success(), prepared);
     });
@@ -306,7 +307,7 @@ void HciVehicleLink::uploadMission(const PreparedMission &mission, UploadObserve
 {
     const auto processed = std::dynamic_pointer_cast<const HciProcessedMission>(mission.native);
     if (!processed) {
-        failLater(std::move(done), QStringLiteral("upload: the mission was not prepared by the UgCS server"));
+        failLater(std::move(done), QCoreApplication::translate("HciVehicleLink", "upload: the mission was not prepared by the UgCS server"));
         return;
     }
     auto step = [observer](UploadStep s, int value, int maximum) {
@@ -325,7 +326,7 @@ void HciVehicleLink::uploadMission(const PreparedMission &mission, UploadObserve
             connect(reply, &HciReply::progress, this, [step](const QString &, int value, int maximum) { step(UploadStep::Sending, value, maximum); });
             onFinished(reply, [this, finish, count](const HciReply &uploaded) {
                 if (!uploaded.isOk()) {
-                    finish(CommandResult::failure(QStringLiteral("upload: %1").arg(uploaded.error().message())));
+                    finish(CommandResult::failure(QCoreApplication::translate("HciVehicleLink", "upload: %1").arg(uploaded.error().message())));
                     return;
                 }
                 m_routePass.setUploadedCount(count);
@@ -334,7 +335,7 @@ void HciVehicleLink::uploadMission(const PreparedMission &mission, UploadObserve
             });
         },
         [this](const hci::HciError &refusal) {
-            return CommandResult::failure(QStringLiteral("upload: cannot take control of %1: %2").arg(m_identity.name, refusal.message()));
+            return CommandResult::failure(QCoreApplication::translate("HciVehicleLink", "upload: cannot take control of %1: %2").arg(m_identity.name, refusal.message()));
         },
         [done](CommandResult result) {
             if (done)
@@ -348,7 +349,7 @@ void HciVehicleLink::downloadMission(MissionDone done)
 {
     QMetaObject::invokeMethod(this, [done] {
         if (done)
-            done(CommandResult::failure(QStringLiteral("a UgCS server does not read a vehicle's mission back")), {});
+            done(CommandResult::failure(QCoreApplication::translate("HciVehicleLink", "a UgCS server does not read a vehicle's mission back")), {});
     }, Qt::QueuedConnection);
 }
 
@@ -365,7 +366,7 @@ void HciVehicleLink::readParameters(ParametersDone done)
 
 void HciVehicleLink::setParameter(const QString &name, double, Done done)
 {
-    failLater(std::move(done), QStringLiteral("%1: parameters are set in the vehicle profile on the UgCS server").arg(name));
+    failLater(std::move(done), QCoreApplication::translate("HciVehicleLink", "%1: parameters are set in the vehicle profile on the UgCS server").arg(name));
 }
 
 } // namespace sortie::vehicle

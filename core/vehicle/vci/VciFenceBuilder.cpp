@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <QCoreApplication>
 
 namespace sortie::vehicle {
 namespace {
@@ -106,10 +107,10 @@ mission::Result<Limits> limitsOf(const Zone &zone, const GroundLookup &ground, Q
     const std::optional<GroundRange> range = agl ? groundUnder(zone, ground) : std::nullopt;
     if (agl && !range) {
         if (!keepOut)
-            return failure(QStringLiteral("zone '%1': its AGL limits need the ground under it, which no terrain source has; "
+            return failure(QCoreApplication::translate("VciFenceBuilder", "zone '%1': its AGL limits need the ground under it, which no terrain source has; "
                                                      "a vehicle cannot be given it")
                                              .arg(zone.name));
-        notices->append(QStringLiteral("zone '%1': no ground under it, so its AGL limits were dropped (the vehicle keeps out of the whole column)")
+        notices->append(QCoreApplication::translate("VciFenceBuilder", "zone '%1': no ground under it, so its AGL limits were dropped (the vehicle keeps out of the whole column)")
                             .arg(zone.name));
     }
     const auto convert = [&](const std::optional<HeightLimit> &limit, bool isFloor) -> std::optional<profile::FenceLimit> {
@@ -130,7 +131,7 @@ mission::Result<Limits> limitsOf(const Zone &zone, const GroundLookup &ground, Q
     out.floor = convert(zone.floor, true);
     out.ceiling = convert(zone.ceiling, false);
     if (out.floor && out.ceiling && out.floor->reference == out.ceiling->reference && !(out.ceiling->altitude > out.floor->altitude))
-        return failure(QStringLiteral("zone '%1': over ground from %2 to %3 m its AGL limits leave no room in AMSL")
+        return failure(QCoreApplication::translate("VciFenceBuilder", "zone '%1': over ground from %2 to %3 m its AGL limits leave no room in AMSL")
                                          .arg(zone.name)
                                          .arg(range ? range->lowest : 0.0, 0, 'f', 0)
                                          .arg(range ? range->highest : 0.0, 0, 'f', 0));
@@ -163,13 +164,13 @@ mission::Result<void> addZone(const Zone &zone, const GroundLookup &ground, prof
                 }
                 profile::FenceItem hole = item; // a hole in what keeps in keeps out, at the same heights
                 hole.kind = profile::FenceKind::Exclusion;
-                hole.name = nameOf(QStringLiteral("%1 (hole %2)").arg(zone.name).arg(h));
+                hole.name = nameOf(QCoreApplication::translate("VciFenceBuilder", "%1 (hole %2)").arg(zone.name).arg(h));
                 hole.polygon = ringOf(part.rings[h]);
                 fence->items.push_back(std::move(hole));
             }
         }
         if (closedHoles)
-            notices->append(QStringLiteral("zone '%1': its holes are closed on the vehicle (a fence polygon has none)").arg(zone.name));
+            notices->append(QCoreApplication::translate("VciFenceBuilder", "zone '%1': its holes are closed on the vehicle (a fence polygon has none)").arg(zone.name));
     } else if (const auto *c = std::get_if<airspace::ZoneCircle>(&zone.shape)) {
         item.center = vertexOf(c->center);
         item.radius = c->radius;
@@ -178,8 +179,8 @@ mission::Result<void> addZone(const Zone &zone, const GroundLookup &ground, prof
         item.center = vertexOf(cone->center);
         item.radius = keepOut ? std::max(cone->bottomRadius, cone->topRadius) : std::min(cone->bottomRadius, cone->topRadius);
         if (!(item.radius > 0))
-            return failure(QStringLiteral("zone '%1': a cone that narrows to a point cannot keep a vehicle in").arg(zone.name));
-        notices->append(QStringLiteral("zone '%1': its cone is a cylinder of radius %2 m on the vehicle").arg(zone.name).arg(item.radius, 0, 'f', 0));
+            return failure(QCoreApplication::translate("VciFenceBuilder", "zone '%1': a cone that narrows to a point cannot keep a vehicle in").arg(zone.name));
+        notices->append(QCoreApplication::translate("VciFenceBuilder", "zone '%1': its cone is a cylinder of radius %2 m on the vehicle").arg(zone.name).arg(item.radius, 0, 'f', 0));
         fence->items.push_back(std::move(item));
     }
     return {};
@@ -202,7 +203,7 @@ mission::Result<VciFencePlan> vciFenceFor(const mission::Route &route, const Fen
 {
     VciFencePlan plan;
     plan.fence.breachAction = profileBreachAction(settings.breachAction);
-    std::vector<Zone> zones = airspace::zonesOfFence(route.fence, QStringLiteral("route fence"), airspace::ZoneSource::VehicleFence,
+    std::vector<Zone> zones = airspace::zonesOfFence(route.fence, QCoreApplication::translate("VciFenceBuilder", "route fence"), airspace::ZoneSource::VehicleFence,
                                                      route.settings.name);
     const size_t own = zones.size();
     if (settings.zones && !routeBox.empty)
@@ -212,14 +213,14 @@ mission::Result<VciFencePlan> vciFenceFor(const mission::Route &route, const Fen
         if (auto added = addZone(zone, ground, &plan.fence, &plan.notices); !added)
             return added.error();
     if (const std::string problem = profile::fenceLimitProblem(plan.fence); !problem.empty())
-        return failure(QStringLiteral("the fence cannot be sent: %1").arg(QString::fromStdString(problem)));
+        return failure(QCoreApplication::translate("VciFenceBuilder", "the fence cannot be sent: %1").arg(QString::fromStdString(problem)));
     if (!plan.fence.empty())
-        plan.notices.prepend(QStringLiteral("fence: %1 of the route's own, %2 airspace zone(s) near it; on a breach the vehicle will %3")
+        plan.notices.prepend(QCoreApplication::translate("VciFenceBuilder", "fence: %1 of the route's own, %n airspace zone(s) near it; on a breach the vehicle will %2",
+                                                             nullptr, int(zones.size() - own))
                                  .arg(own)
-                                 .arg(zones.size() - own)
-                                 .arg(QString::fromLatin1(settings.breachAction == FenceBreachAction::Return ? "return home"
-                                                          : settings.breachAction == FenceBreachAction::Land ? "land"
-                                                                                                             : "hold")));
+                                 .arg(settings.breachAction == FenceBreachAction::Return ? QCoreApplication::translate("VciFenceBuilder", "return home")
+                                      : settings.breachAction == FenceBreachAction::Land ? QCoreApplication::translate("VciFenceBuilder", "land")
+                                                                                         : QCoreApplication::translate("VciFenceBuilder", "hold")));
     return plan;
 }
 

@@ -8,6 +8,7 @@
 #include "VciRoutePoints.h"
 
 #include <tuple>
+#include <QCoreApplication>
 
 namespace sortie::vehicle {
 
@@ -65,7 +66,7 @@ Result<VciMission> vciMissionFor(const Route &route, const VciHeights &heights, 
     VciMission mission = builder.finish();
     if (mission.items.empty()) {
         MissionError e;
-        e.message = QStringLiteral("the route has no waypoints to fly");
+        e.message = QCoreApplication::translate("VciMissionPlanner", "the route has no waypoints to fly");
         return e;
     }
     return mission;

@@ -11,6 +11,7 @@
 #include <QDateTime>
 #include <QRegularExpression>
 #include <QTimer>
+#include <QCoreApplication>
 
 namespace sortie::vehicle {
 namespace {
@@ -114,7 +115,7 @@ VciVehicleLink::VciVehicleLink(const vci::VciEndpoint &endpoint, terrain::Elevat
     connect(&m_transport, &vci::VciTransport::attemptFailed, this, &VehicleLink::errorOccurred);
     connect(&m_transport, &vci::VciTransport::lost, this, [this](const QString &why) {
         if (!m_stopping)
-            emit errorOccurred(QStringLiteral("connection to %1 lost: %2").arg(m_identity.name, why));
+            emit errorOccurred(QCoreApplication::translate("VciVehicleLink", "connection to %1 lost: %2").arg(m_identity.name, why));
     });
     connect(&m_connection, &vci::VciConnection::protocolError, this, &VehicleLink::errorOccurred);
     connect(&m_connection, &vci::VciConnection::attached, this, &VciVehicleLink::onAttached);
@@ -152,7 +153,7 @@ void VciVehicleLink::stop()
     m_stopping = true;
     m_transport.close();
     m_stopping = false;
-    m_connection.setDevice(nullptr, QStringLiteral("disconnected by the operator"));
+    m_connection.setDevice(nullptr, QCoreApplication::translate("VciVehicleLink", "disconnected by the operator"));
     m_connection.unsubscribe(QStringLiteral("*")); // forgets them; there is no line to send it on
     setState(State::Disconnected);
 }
@@ -248,13 +249,13 @@ void VciVehicleLink::onFenceStatus(const nlohmann::json &body)
     m_fenceBreaches = status->breaches;
     if (!began)
         return;
-    const QString where = status->kind == "outside-inclusion" ? QStringLiteral("left its fence '%1'")
-                                                               : QStringLiteral("entered the exclusion zone '%1'");
+    const QString where = status->kind == "outside-inclusion" ? QCoreApplication::translate("VciVehicleLink", "left its fence '%1'")
+                                                               : QCoreApplication::translate("VciVehicleLink", "entered the exclusion zone '%1'");
     const QString action = status->action == "land" ? QStringLiteral("landing")
                            : status->action == "hold" ? QStringLiteral("holding")
-                           : status->action == "return" ? QStringLiteral("returning home")
-                                                        : QStringLiteral("action unknown");
-    emit alertReported(QStringLiteral("fence breach: %1; %2").arg(where.arg(QString::fromStdString(status->name)), action));
+                           : status->action == "return" ? QCoreApplication::translate("VciVehicleLink", "returning home")
+                                                        : QCoreApplication::translate("VciVehicleLink", "action unknown");
+    emit alertReported(QCoreApplication::translate("VciVehicleLink", "fence breach: %1; %2").arg(where.arg(QString::fromStdString(status->name)), action));
 }
 
 void VciVehicleLink::prepareMission(const mission::Route &route, PrepareDone done)
@@ -281,7 +282,7 @@ void VciVehicleLink::planMission(const mission::Route &route, const FenceSetting
     if (mission && !mission->waitingFor.isEmpty() && m_elevation) {
         if (deadline.hasExpired()) {
             if (done)
-                done(CommandResult::failure(QStringLiteral("the ground under the route did not arrive from %1 in %2 s")
+                done(CommandResult::failure(QCoreApplication::translate("VciVehicleLink", "the ground under the route did not arrive from %1 in %2 s")
                                                 .arg(mission->waitingFor)
                                                 .arg(kTerrainWaitMs / 1000)),
                      {});
@@ -328,18 +329,18 @@ void VciVehicleLink::sendFence(const PreparedMission &mission, Done next)
             // A vehicle without the resource can still take a route that needs no fence.
             if (r.statusCode == 501 && fence.empty())
                 return next(CommandResult::success());
-            return next(CommandResult::failure(QStringLiteral("the vehicle refused the fence: %1").arg(r.message)));
+            return next(CommandResult::failure(QCoreApplication::translate("VciVehicleLink", "the vehicle refused the fence: %1").arg(r.message)));
         }
         // Read back, as the mission is: only the fence the vehicle holds counts.
         m_connection.get(q(profile::kFence), this, [fence, next](const vci::VciResult &held) {
             if (!held.ok())
-                return next(CommandResult::failure(QStringLiteral("the fence could not be read back: %1").arg(held.message)));
+                return next(CommandResult::failure(QCoreApplication::translate("VciVehicleLink", "the fence could not be read back: %1").arg(held.message)));
             std::string error;
             const auto back = profile::decodeFence(held.body, &error);
             if (!back)
-                return next(CommandResult::failure(QStringLiteral("the vehicle's fence cannot be read: %1").arg(QString::fromStdString(error))));
+                return next(CommandResult::failure(QCoreApplication::translate("VciVehicleLink", "the vehicle's fence cannot be read: %1").arg(QString::fromStdString(error))));
             if (!(*back == fence))
-                return next(CommandResult::failure(QStringLiteral("the vehicle holds another fence than the one sent (%1 items sent, %2 held)")
+                return next(CommandResult::failure(QCoreApplication::translate("VciVehicleLink", "the vehicle holds another fence than the one sent (%1 items sent, %2 held)")
                                                        .arg(fence.items.size())
                                                        .arg(back->items.size())));
             next(CommandResult::success());
@@ -385,7 +386,7 @@ void VciVehicleLink::downloadMission(MissionDone done)
         std::string error;
         const auto waypoints = profile::decodeMission(r.body, &error);
         if (!waypoints) {
-            done(CommandResult::failure(QStringLiteral("the vehicle's mission cannot be read: %1").arg(QString::fromStdString(error))), items);
+            done(CommandResult::failure(QCoreApplication::translate("VciVehicleLink", "the vehicle's mission cannot be read: %1").arg(QString::fromStdString(error))), items);
             return;
         }
         for (const auto &w : *waypoints)
@@ -418,7 +419,7 @@ void VciVehicleLink::setParameter(const QString &name, double value, Done done)
     if (!valid.match(name).hasMatch()) {
         QMetaObject::invokeMethod(this, [done, name] {
             if (done)
-                done(CommandResult::failure(QStringLiteral("\"%1\" is not a parameter name").arg(name)));
+                done(CommandResult::failure(QCoreApplication::translate("VciVehicleLink", "\"%1\" is not a parameter name").arg(name)));
         }, Qt::QueuedConnection);
         return;
     }

@@ -1,0 +1,137 @@
+// The main pages (login, mission, fly) in the longest language: no text clipped, past its frame or
+// over another (VisualCheck, as tst_visualquality judges English). The longest language is made
+// here: a pseudo-translation that lengthens every word by 40 % (German, the longest of the three,
+// runs some 30 % over English), installed above Sortie's translators so that every context, Qt's
+// included, is lengthened. When the real German has landed it is judged too. The renderings are
+// saved beside the test's binary (longest/).
+// What VisualCheck does not judge, and the pseudo renderings show: a text cut at the side by a
+// clipping panel (the mission panel's Upload button and AGL box run past its right edge), and a
+// frame's content running past the frame's border (the login page's title and "remember" box).
+// Those layouts do not grow with their words yet.
+#include "ClientWindow.h"
+#include "QuickScene.h"
+#include "VehicleLayer.h"
+#include "VisualCheck.h"
+
+#include <QDir>
+#include <QFile>
+#include <QQmlEngine>
+#include <QRegularExpression>
+#include <QTest>
+#include <QTranslator>
+#include <QtQml/qqmlextensionplugin.h>
+
+#include <cmath>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+using namespace sortie;
+
+namespace {
+
+// Every word 40 % longer ("Login" -> "LoginLo"); placeholders (%1, %n, %L1), tags and entities kept.
+class PseudoTranslator : public QTranslator
+{
+public:
+    static QString lengthen(const QString &source)
+    {
+        static const QRegularExpression parts(QStringLiteral("(<[^>]*>|&\\w+;|%L?\\d+|%n)|([^\\W\\d_]+)"));
+        QString out;
+        qsizetype at = 0;
+        for (auto m = parts.globalMatch(source); m.hasNext();) {
+            const auto match = m.next();
+            out += source.mid(at, match.capturedStart() - at);
+            out += match.captured(0);
+            if (match.hasCaptured(2)) {
+                const QString word = match.captured(2);
+                out += word.left(qsizetype(std::ceil(word.size() * 0.4)));
+            }
+            at = match.capturedEnd();
+        }
+        return out + source.mid(at);
+    }
+
+    bool isEmpty() const override { return false; }
+    QString translate(const char *, const char *source, const char *, int) const override
+    {
+        return lengthen(QString::fromUtf8(source));
+    }
+};
+
+QString outputDir()
+{
+    const QString dir = QStringLiteral(SORTIE_LONGEST_DIR);
+    QDir().mkpath(dir);
+    return dir;
+}
+
+} // namespace
+
+class TestLongestLanguage : public QObject
+{
+    Q_OBJECT
+
+    std::unique_ptr<test::ClientWindow> m_client;
+    PseudoTranslator m_pseudo;
+
+    void judgeThePages(const QString &language)
+    {
+        QQuickWindow *window = m_client->window();
+        qmlEngine(window)->retranslate(); // what Translations does on a change of language
+        for (const auto &[page, name] : {std::pair{0, "login"}, {1, "mission"}, {2, "fly"}}) {
+            m_client->showPage(page);
+            QVERIFY(test::waitForFrame(window));
+            const QStringList problems = test::inspectTexts(window->contentItem());
+            const QString file = QDir(outputDir()).filePath(language + QLatin1Char('-') + QString::fromLatin1(name) + QStringLiteral(".png"));
+            window->grabWindow().save(file);
+            QVERIFY2(test::lastInspectedTextCount() > 3, qPrintable(file + QStringLiteral(": hardly any text seen")));
+            QVERIFY2(problems.isEmpty(), qPrintable(file + QStringLiteral(":\n  ") + problems.join(QStringLiteral("\n  "))));
+        }
+    }
+
+private slots:
+    void initTestCase()
+    {
+        test::useSoftwareRendering();
+        m_client = std::make_unique<test::ClientWindow>();
+        QVERIFY2(m_client->isReady(), qPrintable(m_client->error()));
+        QVERIFY(m_client->logIn());
+        QVERIFY(m_client->openDemoRoute());
+        QVERIFY(m_client->addVciVehicles());
+        // A vehicle chosen, so the instruments show values rather than dashes.
+        m_client->showPage(2);
+        auto *layer = m_client->find<ui::VehicleLayer>(QStringLiteral("vehicleLayer"));
+        QVERIFY(layer);
+        layer->setCurrentIndex(0);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->fleet().vehicleAt(0)->position().isValid(), 10000);
+    }
+
+    void cleanupTestCase() { m_client.reset(); }
+
+    void thePseudoTranslationLengthens()
+    {
+        QCOMPARE(PseudoTranslator::lengthen(QStringLiteral("Login")), QStringLiteral("LoginLo"));
+        QCOMPARE(PseudoTranslator::lengthen(QStringLiteral("%n zone(s) at %1")), QStringLiteral("%n zonezo(ss) ata %1"));
+        QCOMPARE(PseudoTranslator::lengthen(QStringLiteral("<b>Go</b>")), QStringLiteral("<b>GoG</b>"));
+    }
+
+    void pseudoLongest()
+    {
+        QCoreApplication::installTranslator(&m_pseudo);
+        judgeThePages(QStringLiteral("pseudo"));
+        QCoreApplication::removeTranslator(&m_pseudo);
+    }
+
+    void german()
+    {
+        if (!QFile::exists(QStringLiteral(":/i18n/sortie_de.qm")))
+            QSKIP("resources/i18n/sortie_de.ts has not landed: the pseudo-translation stood in for it");
+        m_client->settings().setLanguage(QStringLiteral("de"));
+        QTRY_COMPARE(m_client->translations().active(), QStringLiteral("de"));
+        judgeThePages(QStringLiteral("de"));
+        m_client->settings().setLanguage(QString());
+    }
+};
+
+QTEST_MAIN(TestLongestLanguage)
+#include "tst_longestlanguage.moc"

@@ -1,0 +1,141 @@
+// The language chosen at runtime, without a restart: the whole client (ClientWindow, the program's
+// wiring) against the embedded simulator. The header's selector lists the languages by their own
+// names; choosing one re-words the tabs and re-formats the numbers (a German decimal comma in the
+// fly view's altitude). The words come from a small German .ts of the tests' own (tests/i18n/data); the
+// real German (resources/i18n/sortie_de.ts, compiled into the program) is checked when it is there.
+#include "ClientWindow.h"
+#include "DisplayUnits.h"
+#include "QuickScene.h"
+#include "Translations.h"
+#include "VehicleLayer.h"
+
+#include <QFile>
+#include <QLocale>
+#include <QRegularExpression>
+#include <QTest>
+#include <QTranslator>
+#include <QtQml/qqmlextensionplugin.h>
+
+Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
+
+using namespace sortie;
+
+namespace {
+
+QString textOf(test::ClientWindow &client, const char *name)
+{
+    QObject *item = client.find<QObject>(QString::fromLatin1(name));
+    return item ? item->property("text").toString() : QStringLiteral("<no %1>").arg(QString::fromLatin1(name));
+}
+
+QStringList codesOf(const QVariantList &languages)
+{
+    QStringList codes;
+    for (const QVariant &l : languages)
+        codes << l.toMap().value(QStringLiteral("code")).toString();
+    return codes;
+}
+
+} // namespace
+
+class TestTranslations : public QObject
+{
+    Q_OBJECT
+
+    std::unique_ptr<test::ClientWindow> m_client;
+
+private slots:
+    void initTestCase()
+    {
+        test::useSoftwareRendering();
+        test::ClientWindow::Options options;
+        options.translationsFolder = QStringLiteral(SORTIE_TEST_TRANSLATIONS);
+        m_client = std::make_unique<test::ClientWindow>(options);
+        QVERIFY2(m_client->isReady(), qPrintable(m_client->error()));
+        QVERIFY(m_client->logIn());
+        QVERIFY(m_client->openDemoRoute());
+        // The server's three vehicles first: addVciVehicles counts on the fleet it finds.
+        QTRY_COMPARE_WITH_TIMEOUT(m_client->fleet().count(), 3, 10000);
+        QVERIFY(m_client->addVciVehicles());
+        // A vehicle chosen, so the fly view's instruments show numbers.
+        m_client->showPage(2);
+        auto *layer = m_client->find<ui::VehicleLayer>(QStringLiteral("vehicleLayer"));
+        QVERIFY(layer);
+        layer->setCurrentIndex(0);
+        QTRY_VERIFY_WITH_TIMEOUT(textOf(*m_client, "value_altitudeAmsl").endsWith(QLatin1String(" m")), 10000);
+    }
+
+    void cleanupTestCase() { m_client.reset(); }
+
+    // System, English and each compiled translation, named in its own language.
+    void theSelectorListsTheLanguages()
+    {
+        const QVariantList languages = m_client->translations().languages();
+        QCOMPARE(codesOf(languages), (QStringList{QString(), QStringLiteral("en"), QStringLiteral("de")}));
+        QCOMPARE(languages.at(1).toMap().value(QStringLiteral("name")).toString(), QStringLiteral("English"));
+        QCOMPARE(languages.at(2).toMap().value(QStringLiteral("name")).toString(), QStringLiteral("Deutsch"));
+        auto *box = m_client->find<QObject>(QStringLiteral("languageBox"));
+        QVERIFY(box);
+        QCOMPARE(box->property("count").toInt(), 3);
+    }
+
+    // Chosen in the selector: the tabs are German at once, the altitude has a decimal comma; back to
+    // English, both come back. The choice is kept in the settings.
+    void switchingRewordsAndReformatsAtOnce()
+    {
+        static const QRegularExpression englishAltitude(QStringLiteral("^-?\\d+\\.\\d m$"));
+        static const QRegularExpression germanAltitude(QStringLiteral("^-?\\d+,\\d m$"));
+        QCOMPARE(textOf(*m_client, "loginTab"), QStringLiteral("Login"));
+        QCOMPARE(textOf(*m_client, "missionTab"), QStringLiteral("Mission"));
+        QVERIFY2(englishAltitude.match(textOf(*m_client, "value_altitudeAmsl")).hasMatch(), qPrintable(textOf(*m_client, "value_altitudeAmsl")));
+
+        auto *box = m_client->find<QObject>(QStringLiteral("languageBox"));
+        QVERIFY(box);
+        const int german = codesOf(m_client->translations().languages()).indexOf(QStringLiteral("de"));
+        box->setProperty("currentIndex", german);
+        QMetaObject::invokeMethod(box, "activated", Q_ARG(int, german)); // as a click on "Deutsch" does
+        QCOMPARE(m_client->settings().language(), QStringLiteral("de"));
+        QCOMPARE(m_client->translations().active(), QStringLiteral("de"));
+        QTRY_COMPARE(textOf(*m_client, "loginTab"), QStringLiteral("Anmeldung"));
+        QCOMPARE(textOf(*m_client, "missionTab"), QStringLiteral("Einsatz"));
+        QCOMPARE(textOf(*m_client, "telemetryTab"), QStringLiteral("Live-Telemetrie"));
+        QTRY_VERIFY2(germanAltitude.match(textOf(*m_client, "value_altitudeAmsl")).hasMatch(), qPrintable(textOf(*m_client, "value_altitudeAmsl")));
+        // The selector still shows the choice, in a list now made in German.
+        QTRY_COMPARE(box->property("displayText").toString(), QStringLiteral("Deutsch"));
+        QCOMPARE(m_client->translations().languages().at(0).toMap().value(QStringLiteral("name")).toString(),
+                 QStringLiteral("Sprache des Systems"));
+        // Numbers anywhere DisplayUnits formats them, dates by the default locale.
+        ui::DisplayUnits units;
+        QCOMPARE(units.formatAltitude(12.5), QStringLiteral("12,5 m"));
+        QCOMPARE(units.formatSpeed(3.26), QStringLiteral("3,3 m/s"));
+        QCOMPARE(QLocale().decimalPoint(), QStringLiteral(","));
+
+        m_client->settings().setLanguage(QStringLiteral("en"));
+        QTRY_COMPARE(textOf(*m_client, "loginTab"), QStringLiteral("Login"));
+        QTRY_VERIFY2(englishAltitude.match(textOf(*m_client, "value_altitudeAmsl")).hasMatch(), qPrintable(textOf(*m_client, "value_altitudeAmsl")));
+        QCOMPARE(units.formatAltitude(12.5), QStringLiteral("12.5 m"));
+        QTRY_COMPARE(box->property("displayText").toString(), QStringLiteral("English"));
+    }
+
+    // The real German, compiled into the program, once it has landed: the tabs read what its
+    // translator says, not English.
+    void theProgramsGerman()
+    {
+        QTranslator german;
+        if (!german.load(QStringLiteral(":/i18n/sortie_de.qm")))
+            QSKIP("resources/i18n/sortie_de.ts has not landed: no German compiled into the program yet");
+        const QString login = german.translate("Main", "Login");
+        QVERIFY2(!login.isEmpty() && login != QLatin1String("Login"), qPrintable(login));
+        test::ClientWindow client; // the program's own translations
+        QVERIFY2(client.isReady(), qPrintable(client.error()));
+        QVERIFY(codesOf(client.translations().languages()).contains(QStringLiteral("de")));
+        client.settings().setLanguage(QStringLiteral("de"));
+        QTRY_COMPARE(textOf(client, "loginTab"), login);
+        QCOMPARE(ui::DisplayUnits().formatAltitude(12.5), QStringLiteral("12,5 m"));
+        client.settings().setLanguage(QStringLiteral("en"));
+        QTRY_COMPARE(textOf(client, "loginTab"), QStringLiteral("Login"));
+    }
+};
+
+QTEST_MAIN(TestTranslations)
+#include "tst_translations.moc"
