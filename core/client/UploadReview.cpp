@@ -7,10 +7,6 @@
 namespace sortie::client {
 
 namespace {
-QString tr(const char *text, int n = -1)
-{
-    return QCoreApplication::translate("sortie::client::UploadReview", text, nullptr, n);
-}
 // "Waypoint 3: the speed must be positive. Fix it before uploading." The gate decides; this names the
 // first culprit and how many more there are.
 QString refusal(const mission::ValidationReport &report, const QString &verb)
@@ -24,8 +20,8 @@ QString refusal(const mission::ValidationReport &report, const QString &verb)
     }
     const int more = report.errorCount() - 1;
     if (more == 0)
-        return tr("%1 Fix it before %2.").arg(first, verb);
-    return tr("%1 (and %n more error(s)) Fix them before %2.", more).arg(first, verb);
+        return QCoreApplication::translate("UploadReview", "%1 Fix it before %2.").arg(first, verb);
+    return QCoreApplication::translate("UploadReview", "%1 (and %n more error(s)) Fix them before %2.", nullptr, more).arg(first, verb);
 }
 
 } // namespace
@@ -34,8 +30,8 @@ UploadReview reviewUpload(const mission::ValidationReport &report, bool unsavedE
 {
     UploadReview review;
     review.unsavedEdits = unsavedEdits;
-    if (!mission::permitRelease(report, mission::ValidationOverride::None, tr("Upload"))) {
-        review.blocked = refusal(report, tr("uploading"));
+    if (!mission::permitRelease(report, mission::ValidationOverride::None, QCoreApplication::translate("UploadReview", "Upload"))) {
+        review.blocked = refusal(report, QCoreApplication::translate("UploadReview", "uploading"));
         for (const mission::ValidationIssue &issue : report.issues) {
             if (issue.severity == mission::Severity::Error) {
                 review.culprit = issue.segment;
@@ -55,19 +51,19 @@ QString UploadReview::question(const QString &vehicleName) const
 {
     QStringList parts;
     if (unsavedEdits)
-        parts << tr("The route has edits that are not saved: the vehicle would fly what is on screen, not what the server holds.");
+        parts << QCoreApplication::translate("UploadReview", "The route has edits that are not saved: the vehicle would fly what is on screen, not what the server holds.");
     if (!warnings.isEmpty()) {
-        parts << tr("The route has %n warning(s):", int(warnings.size()));
+        parts << QCoreApplication::translate("UploadReview", "The route has %n warning(s):", nullptr, int(warnings.size()));
         for (const QString &w : warnings)
             parts << QStringLiteral("• ") + w;
     }
-    parts << tr("Upload to %1?").arg(vehicleName);
+    parts << QCoreApplication::translate("UploadReview", "Upload to %1?").arg(vehicleName);
     return parts.join(QLatin1Char('\n'));
 }
 
 QString saveRefusal(const mission::ValidationReport &report)
 {
-    return mission::permitRelease(report, mission::ValidationOverride::None, tr("Saving")) ? QString() : refusal(report, tr("saving"));
+    return mission::permitRelease(report, mission::ValidationOverride::None, QCoreApplication::translate("UploadReview", "Saving")) ? QString() : refusal(report, QCoreApplication::translate("UploadReview", "saving"));
 }
 
 } // namespace sortie::client

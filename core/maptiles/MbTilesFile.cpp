@@ -11,7 +11,6 @@
 namespace sortie::maptiles {
 
 namespace {
-QString tr(const char *text) { return QCoreApplication::translate("sortie::ui::MbTilesTileSource", text); }
 
 void setError(QString *error, const QString &text)
 {
@@ -37,11 +36,11 @@ bool MbTilesFile::open(const QString &path, Mode mode, QString *error)
 {
     close();
     if (path.isEmpty()) {
-        setError(error, tr("No MBTiles file is set."));
+        setError(error, QCoreApplication::translate("MbTilesFile", "No MBTiles file is set."));
         return false;
     }
     if (mode == Mode::ReadOnly && !QFileInfo(path).isFile()) {
-        setError(error, tr("The MBTiles file %1 does not exist.").arg(path));
+        setError(error, QCoreApplication::translate("MbTilesFile", "The MBTiles file %1 does not exist.").arg(path));
         return false;
     }
     if (mode == Mode::ReadWrite)
@@ -54,19 +53,19 @@ bool MbTilesFile::open(const QString &path, Mode mode, QString *error)
         if (mode == Mode::ReadOnly)
             db.setConnectOptions(QStringLiteral("QSQLITE_OPEN_READONLY"));
         if (!db.open()) {
-            problem = tr("Cannot open the MBTiles file %1: %2").arg(path, db.lastError().text());
+            problem = QCoreApplication::translate("MbTilesFile", "Cannot open the MBTiles file %1: %2").arg(path, db.lastError().text());
         } else {
             QSqlQuery query(db);
             if (mode == Mode::ReadWrite) {
                 for (const char *statement : kSchema) {
                     if (!query.exec(QString::fromLatin1(statement))) {
-                        problem = tr("%1 is not an MBTiles file Sortie can write: %2").arg(path, query.lastError().text());
+                        problem = QCoreApplication::translate("MbTilesFile", "%1 is not an MBTiles file Sortie can write: %2").arg(path, query.lastError().text());
                         break;
                     }
                 }
             }
             if (problem.isEmpty() && !query.exec(QStringLiteral("SELECT zoom_level, tile_column, tile_row, tile_data FROM tiles LIMIT 1")))
-                problem = tr("%1 is not an MBTiles file (it has no tiles table).").arg(path);
+                problem = QCoreApplication::translate("MbTilesFile", "%1 is not an MBTiles file (it has no tiles table).").arg(path);
         }
         if (!problem.isEmpty())
             db.close();
@@ -99,7 +98,7 @@ MbTilesMetadata MbTilesFile::metadata(QString *error) const
     QList<QPair<QString, QString>> pairs;
     QSqlQuery query(QSqlDatabase::database(m_connection, false));
     if (!query.exec(QStringLiteral("SELECT name, value FROM metadata"))) {
-        setError(error, tr("The MBTiles file %1 has no readable metadata: %2").arg(m_path, query.lastError().text()));
+        setError(error, QCoreApplication::translate("MbTilesFile", "The MBTiles file %1 has no readable metadata: %2").arg(m_path, query.lastError().text()));
         return {};
     }
     while (query.next())
@@ -111,7 +110,7 @@ bool MbTilesFile::writeMetadata(const MbTilesMetadata &metadata, QString *error)
 {
     QSqlDatabase db = QSqlDatabase::database(m_connection, false);
     if (!db.transaction()) {
-        setError(error, tr("Cannot write to the MBTiles file %1: %2").arg(m_path, db.lastError().text()));
+        setError(error, QCoreApplication::translate("MbTilesFile", "Cannot write to the MBTiles file %1: %2").arg(m_path, db.lastError().text()));
         return false;
     }
     QSqlQuery query(db);
@@ -125,7 +124,7 @@ bool MbTilesFile::writeMetadata(const MbTilesMetadata &metadata, QString *error)
         ok = query.exec();
     }
     if (!ok || !db.commit()) {
-        setError(error, tr("Cannot write the metadata of %1: %2").arg(m_path, query.lastError().text()));
+        setError(error, QCoreApplication::translate("MbTilesFile", "Cannot write the metadata of %1: %2").arg(m_path, query.lastError().text()));
         db.rollback();
         return false;
     }
@@ -140,7 +139,7 @@ std::optional<QByteArray> MbTilesFile::tile(const TileId &id, QString *error) co
     query.addBindValue(id.x);
     query.addBindValue(id.tmsRow());
     if (!query.exec()) {
-        setError(error, tr("Reading tile %1 failed: %2").arg(id.toString(), query.lastError().text()));
+        setError(error, QCoreApplication::translate("MbTilesFile", "Reading tile %1 failed: %2").arg(id.toString(), query.lastError().text()));
         return std::nullopt;
     }
     if (!query.next())
@@ -154,7 +153,7 @@ bool MbTilesFile::writeTiles(const QList<Tile> &tiles, QString *error)
         return true;
     QSqlDatabase db = QSqlDatabase::database(m_connection, false);
     if (!db.transaction()) {
-        setError(error, tr("Cannot write to the MBTiles file %1: %2").arg(m_path, db.lastError().text()));
+        setError(error, QCoreApplication::translate("MbTilesFile", "Cannot write to the MBTiles file %1: %2").arg(m_path, db.lastError().text()));
         return false;
     }
     QSqlQuery query(db);
@@ -169,7 +168,7 @@ bool MbTilesFile::writeTiles(const QList<Tile> &tiles, QString *error)
         ok = query.exec();
     }
     if (!ok || !db.commit()) {
-        setError(error, tr("Writing %1 tiles to %2 failed: %3").arg(tiles.size()).arg(m_path, query.lastError().text()));
+        setError(error, QCoreApplication::translate("MbTilesFile", "Writing %1 tiles to %2 failed: %3").arg(tiles.size()).arg(m_path, query.lastError().text()));
         db.rollback();
         return false;
     }
@@ -185,7 +184,7 @@ QSet<quint64> MbTilesFile::storedTiles(int minZoom, int maxZoom, QString *error)
     query.addBindValue(minZoom);
     query.addBindValue(maxZoom);
     if (!query.exec()) {
-        setError(error, tr("Reading the tiles of %1 failed: %2").arg(m_path, query.lastError().text()));
+        setError(error, QCoreApplication::translate("MbTilesFile", "Reading the tiles of %1 failed: %2").arg(m_path, query.lastError().text()));
         return stored;
     }
     while (query.next()) {

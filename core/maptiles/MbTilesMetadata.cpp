@@ -7,7 +7,6 @@
 namespace sortie::maptiles {
 
 namespace {
-QString tr(const char *text) { return QCoreApplication::translate("sortie::maptiles::MbTilesMetadata", text); }
 
 std::optional<int> zoomLevel(const QString &key, const QString &value, QStringList &problems)
 {
@@ -15,7 +14,7 @@ std::optional<int> zoomLevel(const QString &key, const QString &value, QStringLi
     const int zoom = value.trimmed().toInt(&ok);
     if (ok && zoom >= 0 && zoom <= 30)
         return zoom;
-    problems.append(tr("%1: '%2' is not a zoom level (0 to 30).").arg(key, value.left(40)));
+    problems.append(QCoreApplication::translate("MbTilesMetadata", "%1: '%2' is not a zoom level (0 to 30).").arg(key, value.left(40)));
     return std::nullopt;
 }
 
@@ -32,7 +31,7 @@ std::optional<GeoBounds> boundsOf(const QString &value, QStringList &problems)
     const GeoBounds bounds{numbers[1], numbers[0], numbers[3], numbers[2]};
     if (ok && bounds.isValid())
         return bounds;
-    problems.append(tr("bounds: '%1' is not west,south,east,north in degrees.").arg(value.left(80)));
+    problems.append(QCoreApplication::translate("MbTilesMetadata", "bounds: '%1' is not west,south,east,north in degrees.").arg(value.left(80)));
     return std::nullopt;
 }
 } // namespace
@@ -61,7 +60,7 @@ MbTilesMetadata MbTilesMetadata::fromPairs(const QList<QPair<QString, QString>> 
             m.others.append({key, value});
     }
     if (m.minZoom && m.maxZoom && *m.minZoom > *m.maxZoom) {
-        m.problems.append(tr("minzoom %1 is above maxzoom %2.").arg(*m.minZoom).arg(*m.maxZoom));
+        m.problems.append(QCoreApplication::translate("MbTilesMetadata", "minzoom %1 is above maxzoom %2.").arg(*m.minZoom).arg(*m.maxZoom));
         m.minZoom.reset();
         m.maxZoom.reset();
     }

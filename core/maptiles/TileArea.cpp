@@ -14,7 +14,6 @@ constexpr double kMetresPerDegree = 2 * kPi * 6378137.0 / 360.0; // along a meri
 // by this fraction of a tile before rounding outwards.
 constexpr double kTouch = 1e-9;
 
-QString tr(const char *text) { return QCoreApplication::translate("sortie::maptiles::TileArea", text); }
 
 double mercatorU(double longitude) { return (longitude + 180.0) / 360.0; }
 double mercatorV(double latitude)
@@ -94,7 +93,7 @@ TileArea TileArea::rectangle(const GeoBounds &bounds)
 {
     TileArea area;
     if (!bounds.isValid()) {
-        area.m_problem = tr("The area is not a valid latitude/longitude box (south %1, west %2, north %3, east %4).")
+        area.m_problem = QCoreApplication::translate("TileArea", "The area is not a valid latitude/longitude box (south %1, west %2, north %3, east %4).")
                              .arg(bounds.south).arg(bounds.west).arg(bounds.north).arg(bounds.east);
         return area;
     }
@@ -111,7 +110,7 @@ TileArea TileArea::polygon(const QList<QPointF> &lonLat)
 {
     TileArea area;
     if (lonLat.size() < 3) {
-        area.m_problem = tr("An area needs at least three corners (it has %1).").arg(lonLat.size());
+        area.m_problem = QCoreApplication::translate("TileArea", "An area needs at least three corners (it has %1).").arg(lonLat.size());
         return area;
     }
     GeoBounds box{90, 180, -90, -180};
@@ -119,11 +118,11 @@ TileArea TileArea::polygon(const QList<QPointF> &lonLat)
         const QPointF p = lonLat.at(i);
         const QPointF next = lonLat.at((i + 1) % lonLat.size());
         if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || std::abs(p.y()) > 90 || std::abs(p.x()) > 180) {
-            area.m_problem = tr("Corner %1 of the area is not a latitude/longitude (%2, %3).").arg(i + 1).arg(p.y()).arg(p.x());
+            area.m_problem = QCoreApplication::translate("TileArea", "Corner %1 of the area is not a latitude/longitude (%2, %3).").arg(i + 1).arg(p.y()).arg(p.x());
             return area;
         }
         if (std::abs(next.x() - p.x()) > 180) {
-            area.m_problem = tr("The area's edge from corner %1 crosses the antimeridian: draw it as two areas.").arg(i + 1);
+            area.m_problem = QCoreApplication::translate("TileArea", "The area's edge from corner %1 crosses the antimeridian: draw it as two areas.").arg(i + 1);
             return area;
         }
         box = {std::min(box.south, p.y()), std::min(box.west, p.x()), std::max(box.north, p.y()), std::max(box.east, p.x())};

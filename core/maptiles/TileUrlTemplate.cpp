@@ -5,7 +5,6 @@
 namespace sortie::maptiles {
 
 namespace {
-QString tr(const char *text) { return QCoreApplication::translate("sortie::ui::XyzTileSource", text); }
 }
 
 TileUrlTemplate::TileUrlTemplate(QString pattern, QString subdomains)
@@ -17,20 +16,20 @@ TileUrlTemplate::TileUrlTemplate(QString pattern, QString subdomains)
 QString TileUrlTemplate::validate(const QString &pattern)
 {
     if (pattern.trimmed().isEmpty())
-        return tr("No tile URL template is set.");
+        return QCoreApplication::translate("TileUrlTemplate", "No tile URL template is set.");
     QString sample = pattern;
     for (const char *field : {"{z}", "{x}", "{y}", "{-y}"})
         sample.replace(QLatin1String(field), QLatin1String("0"));
     sample.replace(QLatin1String("{s}"), QLatin1String("a"));
     const QUrl url(sample, QUrl::StrictMode);
     if (!url.isValid())
-        return tr("The tile URL template is not a valid URL: %1").arg(url.errorString());
+        return QCoreApplication::translate("TileUrlTemplate", "The tile URL template is not a valid URL: %1").arg(url.errorString());
     const QString scheme = url.scheme().toLower();
     if (scheme != QLatin1String("http") && scheme != QLatin1String("https") && scheme != QLatin1String("file"))
-        return tr("The tile URL template must start with http://, https:// or file://.");
+        return QCoreApplication::translate("TileUrlTemplate", "The tile URL template must start with http://, https:// or file://.");
     const bool hasY = pattern.contains(QLatin1String("{y}")) || pattern.contains(QLatin1String("{-y}"));
     if (!pattern.contains(QLatin1String("{z}")) || !pattern.contains(QLatin1String("{x}")) || !hasY)
-        return tr("The tile URL template needs {z}, {x} and {y} (or {-y}).");
+        return QCoreApplication::translate("TileUrlTemplate", "The tile URL template needs {z}, {x} and {y} (or {-y}).");
     return {};
 }
 

@@ -25,6 +25,357 @@
     </message>
 </context>
 <context>
+    <name>ActionVariants</name>
+    <message>
+        <source>%1 is either on or off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not one of its choices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &quot;%2&quot; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 is not a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 is below %3 %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 is above %3 %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Take a photo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toggle video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Photos by distance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Every</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shots (0: until stopped)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Photos by time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wait</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>For</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Until the operator continues</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Kurs</translation>
+    </message>
+    <message>
+        <source>From the course</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point of interest</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Latitude</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Longitude</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>Altitude</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Altitude type</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Above ground (AGL)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Above sea level (AMSL)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gimbal and zoom</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tilt (90: down)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Roll</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Yaw</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom level</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Panorama</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause per step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rotation speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>°/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clockwise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set servo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Servo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>PWM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Repeat servo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cycle time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Repeats</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch to hover (VTOL)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Switch to fixed-wing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lidar recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Recording</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lidar calibration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Times</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Descent altitude</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drop payload</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Descent speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+</context>
+<context>
+    <name>Airspace</name>
+    <message>
+        <source>route fence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the open route</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (kept as %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>AirspaceRule</name>
+    <message>
+        <source>floor %1, ceiling %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>from %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leg %1 %2 &apos;%3&apos; %4 (%5)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; its height there is unknown (no terrain data), so it counts as inside</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leg %1 passes within %2 of %3 &apos;%4&apos; (buffer %5).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>exclusion zone</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the edge of inclusion zone</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>AlgorithmDefinition</name>
+    <message>
+        <source>%1 must be set</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 is below the minimum of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: %2 is above the maximum of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is neither true nor false</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is not one of its choices</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; does not have the expected form</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>AreaScanPlanner</name>
+    <message>
+        <source>The camera needs a positive sensor size, focal length and image size.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Overlaps must be between 0 and 95 %.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The scan altitude (or ground sample distance) must be positive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The turnaround distance must not be negative.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>AtomicFile</name>
     <message>
         <source>Cannot write %1: %2</source>
@@ -32,10 +383,114 @@
     </message>
 </context>
 <context>
+    <name>AutosaveDirectory</name>
+    <message>
+        <source>autosave-%1.json</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>autosave-%1.lock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>autosave-%1.unreadable-%2.json</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>autosave-%1.unreadable-%2-%3.json</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot create the autosave folder %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>AutosaveRecord</name>
+    <message>
+        <source>the autosave holds no &quot;%1&quot; route</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the &quot;%1&quot; document holds %2 routes, not one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>/%1/mission/routes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a Sortie autosave (&quot;format&quot; is not &quot;sortie-autosave&quot;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>autosave format version %1 is not one this Sortie reads (1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;savedAt&quot; is not a date and time</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>AutosaveWriter</name>
     <message>
         <source>Cannot remove %1: %2</source>
         <translation>%1 kann nicht entfernt werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>Camera</name>
+    <message>
+        <source>DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DJI Phantom 4 (FC330)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DJI Mavic 2 Pro (Hasselblad L1D-20c)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DJI Mavic 3 Enterprise (wide)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DJI Zenmuse P1 24 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DJI Zenmuse P1 35 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sony RX1R II</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>senseFly S.O.D.A.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>MicaSense RedEdge-MX</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GoPro Hero3 Black Edition</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Generic 1&quot; 20 MP</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ClientGraph</name>
+    <message>
+        <source>route fence</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -161,6 +616,96 @@
         <source>reached</source>
         <translation>erreicht</translation>
     </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+</context>
+<context>
+    <name>CoverageSweep</name>
+    <message>
+        <source>An area scan needs a polygon of at least 3 vertices.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Polygon vertex %1 is not a valid position.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The polygon spans more than 100 km; split it into smaller scans.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The scan polygon crosses itself (edges %1 and %2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The scan polygon has no area.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The distance between passes must be positive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The scan would need %1 transects; raise the altitude or lower the side overlap.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The scan yields no transects: the polygon is too narrow.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>CustomZoneFile</name>
+    <message>
+        <source>drawn on the map</source>
+        <translation>auf der Karte gezeichnet</translation>
+    </message>
+</context>
+<context>
+    <name>Egm96Geoid</name>
+    <message>
+        <source>the EGM96 geoid grid %1 is missing (Debian: install proj-data): ellipsoidal heights cannot be converted to AMSL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the EGM96 geoid grid %1 cannot be used: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ElevationProfileView</name>
+    <message>
+        <source>%1 km</source>
+        <translation>%1 km</translation>
+    </message>
+</context>
+<context>
+    <name>EnduranceAdvisory</name>
+    <message>
+        <source>%1 Wh</source>
+        <translation>%1 Wh</translation>
+    </message>
+</context>
+<context>
+    <name>EnergyProfile</name>
+    <message>
+        <source>%1 must be a positive number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reserve must be a fraction from 0 up to (not including) 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>acceleration must be a positive number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;file&quot;, &quot;server&quot; or &quot;fit&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>FleetRoutesList</name>
@@ -175,6 +720,21 @@
     <message>
         <source>%1 flight · %2 flown · %3 left</source>
         <translation>%1 Flug · %2 geflogen · %3 verbleibend</translation>
+    </message>
+</context>
+<context>
+    <name>FlightLogExport</name>
+    <message>
+        <source>Flight log %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FlightLogInfo</name>
+    <message>
+        <source>
+  %1 (%2%3%4): %5 samples</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -214,6 +774,288 @@
     <message>
         <source>Apply</source>
         <translation>Übernehmen</translation>
+    </message>
+</context>
+<context>
+    <name>HciConnection</name>
+    <message>
+        <source>type %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No answer from %1 within %2: check the address and the network</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The server at %1 closed the connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The connection was closed by the application</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Disconnected from %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 refused the connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The host in %1 cannot be found</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot reach %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Connection to %1 lost: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 got no answer: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not an HCI message</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 not sent: not connected to the server</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 not sent: missing %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No answer to %1 within %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 at byte %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 with instance id -1 is not a notification</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 for instance id %2, which no request waits for (answered after its timeout?)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The server answered %1 with %2 instead of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>HciElevationSource</name>
+    <message>
+        <source>UgCS server</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>HciError</name>
+    <message>
+        <source>The server&apos;s licence does not allow this (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The server&apos;s licence does not allow this</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The server speaks HCI protocol %1; Sortie speaks 2.0%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The server refused the request (error %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The server refused the request without a reason</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (code %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>HciRouteMapper</name>
+    <message>
+        <source>Route &quot;%1&quot;, segment %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>HciRoutePass</name>
+    <message>
+        <source>a RoutePass event names the object type &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RoutePass %1: the event carries no RoutePass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RoutePass %1 names no vehicle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RoutePass %1 has no waypoint count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RoutePass %1: waypoint index %2 is outside the route&apos;s %3 waypoints</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>HciSegmentMapper</name>
+    <message>
+        <source>the waypoint has no figure point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the waypoint&apos;s position is out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>An area scan&apos;s %1: %2 It keeps Sortie&apos;s default.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>An area scan came without a camera; Sortie&apos;s default camera (%1) was assumed.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A %1 segment could not be read as one (%2); it is kept as the server sent it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>An area scan without a polygon of three corners is kept as the server sent it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>HciSession</name>
+    <message>
+        <source> not sent: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the connection to the server is being re-established</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not logged in to a server</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The server sent nothing while %1 waited (%2); the link seems dead</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The server speaks HCI protocol %1.%2; Sortie speaks %3.%4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The server rejected the login &apos;%1&apos;: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>HciVehicleLink</name>
+    <message>
+        <source>%1: cannot take control of %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the server sent no result for this vehicle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>there is no such flight mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Segment %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the server could not process it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sortie upload to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>route processing: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>upload: the mission was not prepared by the UgCS server</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>upload: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>upload: cannot take control of %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a UgCS server does not read a vehicle&apos;s mission back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: parameters are set in the vehicle profile on the UgCS server</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>HgtTile</name>
+    <message>
+        <source>%1 bytes is not an SRTM tile (2884802 bytes for 3″ 1201×1201, 25934402 for 1″ 3601×3601); the file is truncated or not a .hgt tile</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>height %1 m at row %2, column %3 is not a terrain height; the file is corrupt</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>HgtTileSource</name>
+    <message>
+        <source>%1: no such file or folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: not an SRTM tile name (NxxEyyy.hgt names the tile&apos;s south-west corner)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>SRTM tiles (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: cannot be mapped: %2</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -305,6 +1147,178 @@
     <message>
         <source>%1, %2</source>
         <translation>%1, %2</translation>
+    </message>
+</context>
+<context>
+    <name>JsonCursor</name>
+    <message>
+        <source>expected an object, found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing required key &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected an array, found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected at least %1 elements, found %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a number, found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the number is not finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected an integer, found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected true or false, found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected a string, found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not valid JSON: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; last read: &apos;.*&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown value &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>KmlFormat</name>
+    <message>
+        <source>bad coordinate &quot;%1&quot;: expected longitude,latitude[,altitude]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bad coordinate &quot;%1&quot;: not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coordinate &quot;%1&quot; is out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a boundary needs at least 3 distinct points, found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not valid KML: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this LineString is open, so it encloses no area; close it (last point = first) to use it as a boundary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this Placemark has no Polygon (with an outerBoundaryIs LinearRing) or closed LineString</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the document has no Polygon or closed LineString</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The file holds %1 closed shapes; the one at line %2 was imported.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Flight path</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Flight path, part %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>KmlZones</name>
+    <message>
+        <source>bad coordinate &quot;%1&quot;: expected longitude,latitude[,altitude]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coordinate &quot;%1&quot; is out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a boundary needs at least 3 distinct coordinates, found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line %1: a polygon with two outer boundaries</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>line %1: an inner boundary before the outer one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Placemark %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Placemark &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a Polygon without an outer boundary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (line %2) was left out: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not well-formed KML: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>LandOutlines</name>
+    <message>
+        <source>the land outline file is not compressed data</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the land outline file does not start with %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the land outline file is truncated at its polygon count</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the land outline file is truncated in polygon %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the land outline file is truncated in polygon %1, ring %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the built-in land outlines (%1) are missing</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -416,6 +1430,10 @@
         <source>Keyboard shortcuts (F1)</source>
         <translation>Tastenkürzel (F1)</translation>
     </message>
+    <message>
+        <source>The language of Sortie, applied at once</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>MapPane</name>
@@ -454,6 +1472,266 @@
         <source>/path/to/area.mbtiles</source>
         <translation>/pfad/zu/gebiet.mbtiles</translation>
     </message>
+    <message>
+        <source>Orthophoto over the base map (GeoTIFF or any raster GDAL reads, any CRS)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>/path/to/orthophoto.tif (empty: none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Terrain: a DEM file (GeoTIFF, .hgt, ...) or a folder of them</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>/path/to/dem.tif or /path/to/dem-folder (empty: none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>MavlinkExport</name>
+    <message>
+        <source>MAVLink has no stop-and-turn or bank-turn waypoints: they were written as plain waypoints.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waypoint %1: %2 has no MAVLink equivalent and was left out.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a servo action without its servo and PWM</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a repeated servo without its count and cycle time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>waiting for the operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a heading relative to the course</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>toggling video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the series&apos; start delay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the series&apos; shot count and start delay</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a panorama</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waypoint %1: the gimbal&apos;s %2 was not set and is written as 0° (MAVLink has no &quot;unchanged&quot;).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a zoom level</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 was left out: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it cannot be planned</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Segments without a MAVLink equivalent (circle, perimeter...) were written as the waypoints Sortie plans for them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Area scan %1 was left out: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Area scan %1 was written as %2 waypoints with distance triggering.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>MbTilesFile</name>
+    <message>
+        <source>No MBTiles file is set.</source>
+        <translation>Keine MBTiles-Datei festgelegt.</translation>
+    </message>
+    <message>
+        <source>The MBTiles file %1 does not exist.</source>
+        <translation>Die MBTiles-Datei %1 existiert nicht.</translation>
+    </message>
+    <message>
+        <source>Cannot open the MBTiles file %1: %2</source>
+        <translation>Die MBTiles-Datei %1 kann nicht geöffnet werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not an MBTiles file Sortie can write: %2</source>
+        <translation>%1 ist keine MBTiles-Datei, die Sortie schreiben kann: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not an MBTiles file (it has no tiles table).</source>
+        <translation>%1 ist keine MBTiles-Datei (sie hat keine Tabelle „tiles“).</translation>
+    </message>
+    <message>
+        <source>The MBTiles file %1 has no readable metadata: %2</source>
+        <translation>Die MBTiles-Datei %1 hat keine lesbaren Metadaten: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write to the MBTiles file %1: %2</source>
+        <translation>In die MBTiles-Datei %1 kann nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot write the metadata of %1: %2</source>
+        <translation>Die Metadaten von %1 können nicht geschrieben werden: %2</translation>
+    </message>
+    <message>
+        <source>Reading tile %1 failed: %2</source>
+        <translation>Lesen der Kachel %1 fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>Writing %1 tiles to %2 failed: %3</source>
+        <translation>Schreiben von %1 Kacheln nach %2 fehlgeschlagen: %3</translation>
+    </message>
+    <message>
+        <source>Reading the tiles of %1 failed: %2</source>
+        <translation>Lesen der Kacheln von %1 fehlgeschlagen: %2</translation>
+    </message>
+</context>
+<context>
+    <name>MbTilesMetadata</name>
+    <message>
+        <source>%1: &apos;%2&apos; is not a zoom level (0 to 30).</source>
+        <translation>%1: „%2“ ist keine Zoomstufe (0 bis 30).</translation>
+    </message>
+    <message>
+        <source>bounds: &apos;%1&apos; is not west,south,east,north in degrees.</source>
+        <translation>bounds: „%1“ ist nicht West,Süd,Ost,Nord in Grad.</translation>
+    </message>
+    <message>
+        <source>minzoom %1 is above maxzoom %2.</source>
+        <translation>minzoom %1 liegt über maxzoom %2.</translation>
+    </message>
+</context>
+<context>
+    <name>MissionDifference</name>
+    <message numerus="yes">
+        <source>the vehicle holds %n waypoint(s), %1 were sent</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>waypoint %1: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the vehicle holds another position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>altitude %1 m, sent %2 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>speed %1 m/s, sent %2 m/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>acceptance radius %1 m, sent %2 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n action(s), sent %1</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>action %1 (%2) differs</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>MissionError</name>
+    <message>
+        <source>(at %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>MissionFiles</name>
+    <message>
+        <source>cannot open: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file is larger than 256 MiB</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown file type: use .sortie, .plan, .waypoints, .kml or .kmz</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sortie mission</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>QGroundControl plan</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>QGC WPL 110 waypoints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>DJI WPML</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a KML file holds a polygon, not a mission: import it as an area-scan boundary</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the mission has no route %1 (it has %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the mission has no route to write</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the mission has %1 routes and a %2 file holds one: choose the route to write (sortie-plan convert --route N), or write .sortie or DJI WPML (.kmz), which hold them all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saving route &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot write: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>MissionPage</name>
@@ -488,6 +1766,109 @@
     <message>
         <source>no return</source>
         <translation>keine Rückkehr</translation>
+    </message>
+</context>
+<context>
+    <name>NfzConversion</name>
+    <message>
+        <source>its baseAltitude is not a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its height %1 m is not a height (it must be 0 or more)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>point %1 of its prism is not a position (latitude and longitude in radians)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>its prism has %n corner(s); a polygon needs 3</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>its cone frustum has no centre (baseLatitude, baseLongitude in radians)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its cone frustum&apos;s radii (base %1 m, top %2 m) are not a circle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its cone frustum has two radii but no height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its floor (%1) and ceiling (%2) are in different references; a server zone has one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its heights are above home; a server zone&apos;s are AMSL or AGL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it starts from the ground with an AMSL ceiling; give it an AMSL floor or an AGL ceiling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NoFlightZone %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>UgCS server, NoFlightZone %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it has both a prism and a cone frustum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it has no volume (neither a prism nor a cone frustum)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its ceiling is below its floor</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the server&apos;s no-fly zones keep vehicles out; an inclusion zone cannot be one</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>aerodrome zones are the server&apos;s own; only custom zones are changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n ring(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>a server zone is one polygon without holes (this one has %n part(s), %1)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>its polygon has %n corner(s); it needs 3</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>a cone frustum needs a ceiling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>NoFlightZone %1%2 was left out: %3</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -789,6 +2170,177 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>QgcFenceJson</name>
+    <message>
+        <source>expected [latitude, longitude]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>latitude or longitude out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected [latitude, longitude, altitude]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 at %2 was left out: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The %1s at %2 were left out: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Geofence polygon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a polygon needs at least 3 vertices, found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Geofence polygon at %1 was left out: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Geofence circle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the radius must be positive metres</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The geofence&apos;s breach return point at %1 was left out: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rally point</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>QgcPlanFormat</name>
+    <message>
+        <source>expected 7 params (or 4 and a &quot;coordinate&quot;), found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a QGroundControl plan (fileType is not &quot;Plan&quot;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>plan version %1 is not supported (Sortie reads version 1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>mission version %1 is not supported (Sortie reads version 2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the planned home position is out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>complex item &quot;%1&quot; is not supported; Sortie imports surveys, corridor and structure scans</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown item type &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A corridor was left out: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>An area scan was left out: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The route has no home position: the first point was written as home, at 0 m AMSL.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>QgcSurveyJson</name>
+    <message>
+        <source>latitude/longitude out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a survey polygon needs at least 3 vertices, found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Custom Camera</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the survey&apos;s camera has neither a sensor nor footprints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the survey&apos;s manual camera was replaced by one with the same footprints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a %1 needs at least %2 points, found %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the camera &quot;%2&quot; is not one Sortie knows; it is kept by name, and the server must know it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the corridor&apos;s camera has no sensor to turn its distance into a ground sample distance</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>corridor centre line</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>structure polygon</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the structure scan became a perimeter flight at %2 m%3.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, its %1 layers as %1 loops at one height</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>RemoveSegmentsCommand</name>
+    <message>
+        <source>Delete %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete %1 rows</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ReorderSegmentsCommand</name>
+    <message>
+        <source>Move row %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move %1 rows</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reverse rows %1-%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>ReplayTimeline</name>
     <message>
         <source>Open a flight log</source>
@@ -912,6 +2464,264 @@ Ereignisse: %1
     <message>
         <source>Restore</source>
         <translation>Wiederherstellen</translation>
+    </message>
+</context>
+<context>
+    <name>RouteDiff</name>
+    <message>
+        <source>WP %1</source>
+        <translation>WP %1</translation>
+    </message>
+    <message>
+        <source>Scan %1</source>
+        <translation>Scan %1</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>return home</source>
+        <translation>Rückkehr</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>No changes</source>
+        <translation>Keine Änderungen</translation>
+    </message>
+    <message>
+        <source>1 change: </source>
+        <translation>1 Änderung: </translation>
+    </message>
+    <message>
+        <source>%1 changes: </source>
+        <translation>%1 Änderungen: </translation>
+    </message>
+    <message>
+        <source> and %1 more</source>
+        <translation> und %1 weitere</translation>
+    </message>
+    <message>
+        <source>name %1 → %2</source>
+        <translation>Name %1 → %2</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3 %4</source>
+        <translation>%1 %2 → %3 %4</translation>
+    </message>
+    <message>
+        <source>safe altitude</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>maximum altitude</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>initial speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>m/s</source>
+        <translation>m/s</translation>
+    </message>
+    <message>
+        <source>maximum speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>corner radius</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>takeoff height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vehicle profile %1 → %2</source>
+        <translation>Fahrzeugprofil %1 → %2</translation>
+    </message>
+    <message>
+        <source>vehicle profile %1 changed</source>
+        <translation>Fahrzeugprofil %1 geändert</translation>
+    </message>
+    <message>
+        <source>failsafe actions changed</source>
+        <translation>Failsafe-Aktionen geändert</translation>
+    </message>
+    <message>
+        <source>home set</source>
+        <translation>Home-Punkt gesetzt</translation>
+    </message>
+    <message>
+        <source>home removed</source>
+        <translation>Home-Punkt entfernt</translation>
+    </message>
+    <message>
+        <source>home moved %1 m</source>
+        <translation>Home-Punkt um %1 m verschoben</translation>
+    </message>
+    <message>
+        <source>home altitude %1 → %2 m</source>
+        <translation>Höhe des Home-Punkts %1 → %2 m</translation>
+    </message>
+    <message>
+        <source>end action %1 → %2</source>
+        <translation>Endaktion %1 → %2</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>ein</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>aerodrome zone check</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>custom zone check</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 removed</source>
+        <translation>%1 entfernt</translation>
+    </message>
+    <message>
+        <source>%1 added</source>
+        <translation>%1 hinzugefügt</translation>
+    </message>
+    <message>
+        <source>%1 changed</source>
+        <translation>%1 geändert</translation>
+    </message>
+    <message>
+        <source>%1 moved %2 m</source>
+        <translation>%1 um %2 m verschoben</translation>
+    </message>
+    <message>
+        <source>altitude of %1 %2 m %3 → %4 m %5</source>
+        <translation>Höhe von %1 %2 m %3 → %4 m %5</translation>
+    </message>
+    <message>
+        <source>altitude of %1 %2 → %3 m</source>
+        <translation>Höhe von %1 %2 → %3 m</translation>
+    </message>
+    <message>
+        <source>speed of %1 %2 → %3 m/s</source>
+        <translation>Geschwindigkeit von %1 %2 → %3 m/s</translation>
+    </message>
+    <message>
+        <source>actions of %1: %2 → %3</source>
+        <translation>Aktionen von %1: %2 → %3</translation>
+    </message>
+    <message>
+        <source>turn at %1 %2 → %3</source>
+        <translation>Kurvenart bei %1 %2 → %3</translation>
+    </message>
+    <message>
+        <source>acceptance radius of %1 %2 → %3 m</source>
+        <translation>Akzeptanzradius von %1 %2 → %3 m</translation>
+    </message>
+    <message>
+        <source>%1 %2 → %3</source>
+        <translation>%1 %2 → %3</translation>
+    </message>
+    <message>
+        <source>figure of %1 reshaped</source>
+        <translation>Figur von %1 umgeformt</translation>
+    </message>
+    <message>
+        <source>%1 of %2 %3 → %4</source>
+        <translation>%1 von %2 %3 → %4</translation>
+    </message>
+    <message>
+        <source>%1 of %2 removed</source>
+        <translation>%1 von %2 entfernt</translation>
+    </message>
+    <message>
+        <source>actions of %1 changed</source>
+        <translation>Aktionen von %1 geändert</translation>
+    </message>
+    <message>
+        <source>area of %1 reshaped</source>
+        <translation>Fläche von %1 umgeformt</translation>
+    </message>
+    <message>
+        <source>area of %1 reshaped (%2 → %3 corners)</source>
+        <translation>Fläche von %1 umgeformt (%2 → %3 Ecken)</translation>
+    </message>
+    <message>
+        <source>%1 of %2 %3 → %4 %5</source>
+        <translation>%1 von %2 %3 → %4 %5</translation>
+    </message>
+    <message>
+        <source>altitude</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>altitude of %1 now %2</source>
+        <translation>Höhe von %1 jetzt %2</translation>
+    </message>
+    <message>
+        <source>%1 now flies by ground sample distance</source>
+        <translation>%1 fliegt jetzt nach Bodenauflösung (GSD)</translation>
+    </message>
+    <message>
+        <source>%1 now flies by altitude</source>
+        <translation>%1 fliegt jetzt nach Höhe</translation>
+    </message>
+    <message>
+        <source>front overlap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>side overlap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>turnaround</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>camera of %1 %2 → %3</source>
+        <translation>Kamera von %1 %2 → %3</translation>
+    </message>
+    <message>
+        <source>camera of %1 changed</source>
+        <translation>Kamera von %1 geändert</translation>
+    </message>
+</context>
+<context>
+    <name>RouteEndurance</name>
+    <message>
+        <source>No energy profile: choose the vehicle&apos;s profile file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The route has no points</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1189,6 +2999,78 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>RouteValidator</name>
+    <message>
+        <source>%1: the position is not valid.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The route needs at least two points; it has %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n AMSL altitude(s), the first at %1, were not checked against the route&apos;s limits: the take-off elevation is unknown.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: altitude %2 is above the route&apos;s maximum of %3 m.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: altitude %2 is below the route&apos;s safe altitude of %3 m.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the speed must be positive.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: speed %2 m/s is above the vehicle&apos;s limit of %3 m/s.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: Sortie does not know the algorithm %2; the server checks it when it processes the route.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 repeats %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is %2 but %3 is %4: the climb between them is not estimated.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The route</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SbsFeed</name>
+    <message>
+        <source>line %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ScaleBarLength</name>
+    <message>
+        <source>%1 km</source>
+        <translation>%1 km</translation>
+    </message>
+    <message>
+        <source>%1 mi</source>
+        <translation>%1 mi</translation>
+    </message>
+    <message>
+        <source>%1 ft</source>
+        <translation>%1 ft</translation>
+    </message>
+</context>
+<context>
     <name>SegmentEditor</name>
     <message>
         <source>Radius</source>
@@ -1202,12 +3084,191 @@ Ereignisse: %1
         <source>%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos</source>
         <translation>%1 m hoch · %2 cm/px · Abdeckung %3 × %4 m · Bahnabstand %5 m · Foto alle %6 m · %7 Fotos</translation>
     </message>
+    <message>
+        <source>m</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SegmentEditorModel</name>
+    <message>
+        <source>Acceptance radius</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sensor width (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sensor height (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Focal length (mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Image width (px)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Image height (px)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Side distance (0: from the camera)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SegmentParameters</name>
+    <message>
+        <source>%1 needs a number, not &quot;%2&quot;.</source>
+        <translation>%1 braucht eine Zahl, nicht „%2“.</translation>
+    </message>
+    <message>
+        <source>%1 must be from %2 to %3%4.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>altitudeType is AGL or AMSL, not &quot;%1&quot;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>camera needs a name.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>An area scan has no parameter &quot;%1&quot;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>wpTurnType is STOP_AND_TURN, STRAIGHT, SPLINE or BANK_TURN, not &quot;%1&quot;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A waypoint has no parameter &quot;%1&quot;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 has no parameter &quot;%2&quot;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cannot take that value.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is true or false, not &quot;%2&quot;.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SegmentPlanner</name>
+    <message>
+        <source>The segment has no point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point 1 is not a position on the globe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The circle has no centre point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The circle&apos;s centre is not a position on the globe</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The circle needs a positive radius (metres, the figure&apos;s first parameter)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The circle&apos;s radius of %1 m is over the %2 m a segment may span</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>loops: %1 laps of %2 points are too many</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Orbit of %1 m radius: %n lap(s) of %2 points, %3</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>clockwise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>counter-clockwise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point %1 is not a position on the globe (latitude and longitude in range)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>speed: the segment needs a positive speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No planner knows the algorithm &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>ServerAction</name>
     <message>
         <source>Server action</source>
         <translation>Serveraktion</translation>
+    </message>
+</context>
+<context>
+    <name>ServerAddress</name>
+    <message>
+        <source>the server address is empty (expected host:port)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a URL: give the server as host:port, e.g. localhost:3334</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; opens an IPv6 address with [ but never closes it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has text after the IPv6 address that is not :port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not an IPv6 address</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>write an IPv6 server address in brackets: [%1]:3334</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; has no host name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a host name (expected host:port, e.g. localhost:3334)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a port number (1 to 65535)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1243,6 +3304,32 @@ Ereignisse: %1
     <message>
         <source>Close</source>
         <translation>Schließen</translation>
+    </message>
+</context>
+<context>
+    <name>ServerZoneReply</name>
+    <message>
+        <source>the server gave no reason</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SetNfzChecksCommand</name>
+    <message>
+        <source>Check aerodrome zones</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Do not check aerodrome zones</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check custom zones</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Do not check custom zones</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1356,6 +3443,65 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>SortieFormat</name>
+    <message>
+        <source>not a valid UgCS %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing &quot;AGL&quot; or &quot;AMSL&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;AGL&quot; or &quot;AMSL&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown value &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>latitude out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>longitude out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>latitude/longitude out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;altitude&quot; or &quot;groundSampleDistance&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no figure type %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown segment type &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected &quot;none&quot; or &quot;returnHome&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a Sortie mission file (&quot;format&quot; is not &quot;sortie-mission&quot;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>schema version %1 does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>written by a newer Sortie (schema %1); this one reads up to schema %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>StatusBar</name>
     <message>
         <source>zoom %1</source>
@@ -1450,6 +3596,132 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>TerrainFollow</name>
+    <message>
+        <source>Waiting for terrain data from %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No terrain data %1 m along the pass (tried: %2): terrain following needs the ground everywhere</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>TerrainProfile</name>
+    <message>
+        <source>%1, point %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waypoint %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leg %1 (%2 → %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>TerrainRule</name>
+    <message>
+        <source>Waypoint %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height above sea level is unknown.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the ground</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>at home</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 m above the ground</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 m below the ground</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (too low from %1 m to %2 m along it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 flies %2 at %3 m along it%4, closer than the safe distance of %5 m.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: no terrain data from %2 m to %3 m along it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No terrain data from %1 m along %2 to %3 m along %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (tried: %2); the clearance there is not checked.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>TileArea</name>
+    <message>
+        <source>The area is not a valid latitude/longitude box (south %1, west %2, north %3, east %4).</source>
+        <translation>Das Gebiet ist kein gültiges Breiten-/Längen-Rechteck (Süd %1, West %2, Nord %3, Ost %4).</translation>
+    </message>
+    <message>
+        <source>An area needs at least three corners (it has %1).</source>
+        <translation>Ein Gebiet braucht mindestens drei Ecken (es hat %1).</translation>
+    </message>
+    <message>
+        <source>Corner %1 of the area is not a latitude/longitude (%2, %3).</source>
+        <translation>Ecke %1 des Gebiets ist keine Breite/Länge (%2, %3).</translation>
+    </message>
+    <message>
+        <source>The area&apos;s edge from corner %1 crosses the antimeridian: draw it as two areas.</source>
+        <translation>Die Kante des Gebiets ab Ecke %1 quert den Antimeridian: Zeichnen Sie es als zwei Gebiete.</translation>
+    </message>
+</context>
+<context>
+    <name>TilePrefetch</name>
+    <message>
+        <source>Sortie/%1 (drone ground station)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HTTP %1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>TileUrlTemplate</name>
+    <message>
+        <source>No tile URL template is set.</source>
+        <translation>Keine Kachel-URL-Vorlage festgelegt.</translation>
+    </message>
+    <message>
+        <source>The tile URL template is not a valid URL: %1</source>
+        <translation>Die Kachel-URL-Vorlage ist keine gültige URL: %1</translation>
+    </message>
+    <message>
+        <source>The tile URL template must start with http://, https:// or file://.</source>
+        <translation>Die Kachel-URL-Vorlage muss mit http://, https:// oder file:// beginnen.</translation>
+    </message>
+    <message>
+        <source>The tile URL template needs {z}, {x} and {y} (or {-y}).</source>
+        <translation>Die Kachel-URL-Vorlage braucht {z}, {x} und {y} (oder {-y}).</translation>
+    </message>
+</context>
+<context>
     <name>UploadQuestion</name>
     <message>
         <source>Upload the route?</source>
@@ -1470,6 +3742,380 @@ Ereignisse: %1
     <message>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
+    <name>UploadReview</name>
+    <message>
+        <source>%1 Fix it before %2.</source>
+        <translation>%1 Bitte vor dem %2 beheben.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 (and %n more error(s)) Fix them before %2.</source>
+        <translation type="unfinished">
+            <numerusform>%1 (und weitere Fehler: %n) Bitte vor dem %2 beheben.</numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Upload</source>
+        <translation>Hochladen</translation>
+    </message>
+    <message>
+        <source>uploading</source>
+        <translation>Hochladen</translation>
+    </message>
+    <message>
+        <source>The route has edits that are not saved: the vehicle would fly what is on screen, not what the server holds.</source>
+        <translation>Die Route hat ungespeicherte Änderungen: Das Fahrzeug würde fliegen, was auf dem Bildschirm ist, nicht was der Server hat.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The route has %n warning(s):</source>
+        <translation type="unfinished">
+            <numerusform>Die Route hat %n Warnung(en):</numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Upload to %1?</source>
+        <translation>Auf %1 hochladen?</translation>
+    </message>
+    <message>
+        <source>Saving</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>saving</source>
+        <translation>Speichern</translation>
+    </message>
+</context>
+<context>
+    <name>ValidationGate</name>
+    <message numerus="yes">
+        <source>%1 refused: the route has %n validation error(s). %2 Fix them, or override explicitly.</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>VciConnection</name>
+    <message>
+        <source>the connection to the vehicle was closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device was closed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the device was destroyed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a valid VCI URI</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a ground station does not send NOTIFY</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not connected to the vehicle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no answer in time (it waited behind other requests)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>writing to the vehicle failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the vehicle sent an answer (%1) to no request</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unreadable message from the vehicle at byte %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the vehicle answered %2 %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the vehicle did not answer in time</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>VciEndpoint</name>
+    <message>
+        <source>&quot;%1&quot; is not a URL: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; needs a host and a port: tcp://host:port</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: use tcp://host:port or serial:/dev/name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; names no serial device</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: unknown serial setting &quot;%2&quot; (baud, databits, parity, stopbits, flow)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: %2=%3 is not a valid value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>serial:%1?baud=%2&amp;databits=%3&amp;parity=%4&amp;stopbits=%5&amp;flow=%6</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>VciFenceBuilder</name>
+    <message>
+        <source>zone &apos;%1&apos;: its AGL limits need the ground under it, which no terrain source has; a vehicle cannot be given it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zone &apos;%1&apos;: no ground under it, so its AGL limits were dropped (the vehicle keeps out of the whole column)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zone &apos;%1&apos;: over ground from %2 to %3 m its AGL limits leave no room in AMSL</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (hole %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zone &apos;%1&apos;: its holes are closed on the vehicle (a fence polygon has none)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zone &apos;%1&apos;: a cone that narrows to a point cannot keep a vehicle in</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zone &apos;%1&apos;: its cone is a cylinder of radius %2 m on the vehicle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>route fence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the fence cannot be sent: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>fence: %1 of the route&apos;s own, %n airspace zone(s) near it; on a breach the vehicle will %2</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>return home</source>
+        <translation>Rückkehr</translation>
+    </message>
+    <message>
+        <source>land</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>hold</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>VciMissionPlanner</name>
+    <message>
+        <source>the route has no waypoints to fly</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>VciTransport</name>
+    <message>
+        <source>closed by the operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reconnecting at the operator&apos;s request</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the vehicle closed the connection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot open %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>VciVehicleLink</name>
+    <message>
+        <source>connection to %1 lost: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>disconnected by the operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>left its fence &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>entered the exclusion zone &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>returning home</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>action unknown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fence breach: %1; %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the ground under the route did not arrive from %1 in %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the vehicle refused the fence: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the fence could not be read back: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the vehicle&apos;s fence cannot be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the vehicle holds another fence than the one sent (%1 items sent, %2 held)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the vehicle&apos;s mission cannot be read: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a parameter name</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Vehicle</name>
+    <message>
+        <source>mode %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a flight mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>takeoff to %1 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>return home</source>
+        <translation>Rückkehr</translation>
+    </message>
+</context>
+<context>
+    <name>WaypointAction</name>
+    <message>
+        <source>Wait for operator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wait %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Heading %1°%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> from course</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Look at %1, %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Take photo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Toggle video</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Photo every %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Photo every %1 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop photos</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Panorama %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tilt %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>roll %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>yaw %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>zoom %1</source>
+        <translation>Zoom %1</translation>
+    </message>
+    <message>
+        <source>Gimbal (nothing set)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1564,6 +4210,216 @@ Ereignisse: %1
     <message>
         <source>Area scan</source>
         <translation>Flächenscan</translation>
+    </message>
+</context>
+<context>
+    <name>WplFormat</name>
+    <message>
+        <source>not a waypoint file: expected &quot;QGC WPL 110&quot;, found &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unsupported waypoint file version &quot;%1&quot;; Sortie reads QGC WPL 110</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>expected 12 tab-separated fields, found %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>field %1 (%2) is not a number: &quot;%3&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>field %1 (%2) must be a whole number, found %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>item %1 where item %2 was expected</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the home position %1, %2 is not a position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file has no items, not even the home position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The route has no home position: the first point was written as home, at 0 m AMSL.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>WpmlDocumentReader</name>
+    <message>
+        <source>malformed XML: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not a number: &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is not a whole number: &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 &quot;%2&quot; (written as &quot;%3&quot;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>coordinates &quot;%1&quot; are not longitude,latitude in degrees</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a waypoint index is not a whole number</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ZipArchive</name>
+    <message>
+        <source>two of its entries have the same name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its directory and its entries disagree</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>it has no ZIP directory (truncated, or not a ZIP file)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the archive has no end of central directory</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ZIP64 archives are not read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a central directory record is damaged at byte %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an entry&apos;s local header lies outside the archive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the entries &quot;%1&quot; and &quot;%2&quot; share bytes in the archive (a ZIP bomb&apos;s trick): not read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a ZIP archive: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a readable ZIP archive: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the archive lists %1 entries, more than the %2 read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the central directory lists %1 entries where libzip read %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the archive has no &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; would inflate to %2 bytes, more than the %3 read from one entry</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>reading &quot;%1&quot; would inflate the archive past %2 bytes in all</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; claims %2 bytes from %3 compressed, more than %4 times: not inflated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; cannot be read: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is damaged: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; holds a different size than the archive says (%2 bytes)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is damaged (its CRC does not match)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the archive could not be written: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the archive could not be written: its bytes could not be read back</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Zone</name>
+    <message>
+        <source>above home</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>server aerodrome</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>server custom</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>vehicle fence</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 polygon %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 circle %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ZoneEditor</name>
+    <message>
+        <source>drawn on the map</source>
+        <translation>auf der Karte gezeichnet</translation>
+    </message>
+    <message>
+        <source>vertex %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>ZoneFiles</name>
+    <message>
+        <source>%1 was left out: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown zone file type &quot;.%1&quot; (Sortie reads .plan, .geojson, .json and .kml)</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1664,6 +4520,58 @@ Ereignisse: %1
         <source>Warn within (m)</source>
         <translation>Warnen innerhalb (m)</translation>
     </message>
+    <message>
+        <source>exclusion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>inclusion</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>HOME</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Discard copy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The server&apos;s zone stays as it is</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Update on server</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Send to server</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edit here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Draw a copy to edit; Update on server stores it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete on server</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waiting for the server…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete zone</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Delete &apos;%1&apos; on the server, for every operator?</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>sortie</name>
@@ -1696,12 +4604,16 @@ Ereignisse: %1
         <translation>Ordner für automatisch gesicherte Änderungen (Standard: der Anwendungsdatenordner; auch SORTIE_AUTOSAVE_DIR).</translation>
     </message>
     <message>
-        <source>SRTM .hgt terrain tiles (a tile or a folder), asked before the server (also the setting terrain/demFolder).</source>
-        <translation>SRTM-.hgt-Geländekacheln (eine Kachel oder ein Ordner), vor dem Server abgefragt (auch die Einstellung terrain/demFolder).</translation>
-    </message>
-    <message>
         <source>An ADS-B receiver&apos;s SBS-1 feed for manned traffic, as dump1090 serves it (port 30003); also the setting traffic/sbsAddress.</source>
         <translation>SBS-1-Feed eines ADS-B-Empfängers für bemannten Verkehr, wie ihn dump1090 liefert (Port 30003); auch die Einstellung traffic/sbsAddress.</translation>
+    </message>
+    <message>
+        <source>--demo with only the server&apos;s three vehicles: &quot;parked&quot; (nothing moves) or &quot;flying&quot; (one flies, followed in the fly view); for benchmarks.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A DEM for the terrain: any raster GDAL reads (GeoTIFF, COG, Copernicus DEM, .hgt, ...) or a folder of them, asked before the server (also the setting terrain/demFolder).</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -1894,30 +4806,50 @@ Ereignisse: %1
     </message>
 </context>
 <context>
-    <name>sortie::client</name>
+    <name>sortie::airspace::ZoneSharing</name>
     <message>
-        <source>%1 Fix it before %2.</source>
-        <translation>%1 Bitte vor dem %2 beheben.</translation>
+        <source>Wait: the server has not answered the last change yet.</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 (and %n more error(s)) Fix them before %2.</source>
-        <translation>%1 (und weitere Fehler: %n) Bitte vor dem %2 beheben.</translation>
+        <source>Only a zone drawn here can be sent to the server.</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Upload</source>
-        <translation>Hochladen</translation>
+        <source>Zone &apos;%1&apos; was changed on the server since you copied it (version %2, now %3). Remove your copy and edit the server&apos;s zone again.</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>uploading</source>
-        <translation>Hochladen</translation>
+        <source>Zone &apos;%1&apos; is on the server; you changed it since sending, so your copy stays.</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Saving</source>
-        <translation>Speichern</translation>
+        <source>Send zone &apos;%1&apos; to the server</source>
+        <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>saving</source>
-        <translation>Speichern</translation>
+        <source>Zone &apos;%1&apos; is on the server.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only the server&apos;s custom zones can be edited here; aerodrome zones are the server&apos;s own.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edit server zone &apos;%1&apos;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; is drawn here to edit; send it to store the change on the server.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Only the server&apos;s custom zones can be deleted here.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zone &apos;%1&apos; was deleted on the server.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>
@@ -2407,21 +5339,6 @@ Ereignisse: %1
     </message>
 </context>
 <context>
-    <name>sortie::client::UploadReview</name>
-    <message>
-        <source>The route has edits that are not saved: the vehicle would fly what is on screen, not what the server holds.</source>
-        <translation>Die Route hat ungespeicherte Änderungen: Das Fahrzeug würde fliegen, was auf dem Bildschirm ist, nicht was der Server hat.</translation>
-    </message>
-    <message>
-        <source>The route has %n warning(s):</source>
-        <translation>Die Route hat %n Warnung(en):</translation>
-    </message>
-    <message>
-        <source>Upload to %1?</source>
-        <translation>Auf %1 hochladen?</translation>
-    </message>
-</context>
-<context>
     <name>sortie::client::VehicleFleet</name>
     <message>
         <source>%1: %2 done.</source>
@@ -2843,71 +5760,6 @@ Ereignisse: %1
     </message>
 </context>
 <context>
-    <name>sortie::maptiles</name>
-    <message>
-        <source>%1: &apos;%2&apos; is not a zoom level (0 to 30).</source>
-        <translation>%1: „%2“ ist keine Zoomstufe (0 bis 30).</translation>
-    </message>
-    <message>
-        <source>bounds: &apos;%1&apos; is not west,south,east,north in degrees.</source>
-        <translation>bounds: „%1“ ist nicht West,Süd,Ost,Nord in Grad.</translation>
-    </message>
-</context>
-<context>
-    <name>sortie::maptiles::MbTilesFile</name>
-    <message>
-        <source>No MBTiles file is set.</source>
-        <translation>Keine MBTiles-Datei festgelegt.</translation>
-    </message>
-    <message>
-        <source>The MBTiles file %1 does not exist.</source>
-        <translation>Die MBTiles-Datei %1 existiert nicht.</translation>
-    </message>
-    <message>
-        <source>Cannot open the MBTiles file %1: %2</source>
-        <translation>Die MBTiles-Datei %1 kann nicht geöffnet werden: %2</translation>
-    </message>
-    <message>
-        <source>%1 is not an MBTiles file Sortie can write: %2</source>
-        <translation>%1 ist keine MBTiles-Datei, die Sortie schreiben kann: %2</translation>
-    </message>
-    <message>
-        <source>%1 is not an MBTiles file (it has no tiles table).</source>
-        <translation>%1 ist keine MBTiles-Datei (sie hat keine Tabelle „tiles“).</translation>
-    </message>
-    <message>
-        <source>The MBTiles file %1 has no readable metadata: %2</source>
-        <translation>Die MBTiles-Datei %1 hat keine lesbaren Metadaten: %2</translation>
-    </message>
-    <message>
-        <source>Cannot write to the MBTiles file %1: %2</source>
-        <translation>In die MBTiles-Datei %1 kann nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <source>Cannot write the metadata of %1: %2</source>
-        <translation>Die Metadaten von %1 können nicht geschrieben werden: %2</translation>
-    </message>
-    <message>
-        <source>Reading tile %1 failed: %2</source>
-        <translation>Lesen der Kachel %1 fehlgeschlagen: %2</translation>
-    </message>
-    <message>
-        <source>Writing %1 tiles to %2 failed: %3</source>
-        <translation>Schreiben von %1 Kacheln nach %2 fehlgeschlagen: %3</translation>
-    </message>
-    <message>
-        <source>Reading the tiles of %1 failed: %2</source>
-        <translation>Lesen der Kacheln von %1 fehlgeschlagen: %2</translation>
-    </message>
-</context>
-<context>
-    <name>sortie::maptiles::MbTilesMetadata</name>
-    <message>
-        <source>minzoom %1 is above maxzoom %2.</source>
-        <translation>minzoom %1 liegt über maxzoom %2.</translation>
-    </message>
-</context>
-<context>
     <name>sortie::maptiles::OfflineMaps</name>
     <message>
         <source>No route is open.</source>
@@ -2994,25 +5846,6 @@ Ereignisse: %1
     </message>
 </context>
 <context>
-    <name>sortie::maptiles::TileArea</name>
-    <message>
-        <source>The area is not a valid latitude/longitude box (south %1, west %2, north %3, east %4).</source>
-        <translation>Das Gebiet ist kein gültiges Breiten-/Längen-Rechteck (Süd %1, West %2, Nord %3, Ost %4).</translation>
-    </message>
-    <message>
-        <source>An area needs at least three corners (it has %1).</source>
-        <translation>Ein Gebiet braucht mindestens drei Ecken (es hat %1).</translation>
-    </message>
-    <message>
-        <source>Corner %1 of the area is not a latitude/longitude (%2, %3).</source>
-        <translation>Ecke %1 des Gebiets ist keine Breite/Länge (%2, %3).</translation>
-    </message>
-    <message>
-        <source>The area&apos;s edge from corner %1 crosses the antimeridian: draw it as two areas.</source>
-        <translation>Die Kante des Gebiets ab Ecke %1 quert den Antimeridian: Zeichnen Sie es als zwei Gebiete.</translation>
-    </message>
-</context>
-<context>
     <name>sortie::maptiles::TilePrefetch</name>
     <message>
         <source>No area is chosen.</source>
@@ -3041,223 +5874,6 @@ Ereignisse: %1
     <message>
         <source>%1 (after %2 attempts)</source>
         <translation>%1 (nach %2 Versuchen)</translation>
-    </message>
-</context>
-<context>
-    <name>sortie::maptiles::TileUrlTemplate</name>
-    <message>
-        <source>No tile URL template is set.</source>
-        <translation>Keine Kachel-URL-Vorlage festgelegt.</translation>
-    </message>
-    <message>
-        <source>The tile URL template is not a valid URL: %1</source>
-        <translation>Die Kachel-URL-Vorlage ist keine gültige URL: %1</translation>
-    </message>
-    <message>
-        <source>The tile URL template must start with http://, https:// or file://.</source>
-        <translation>Die Kachel-URL-Vorlage muss mit http://, https:// oder file:// beginnen.</translation>
-    </message>
-    <message>
-        <source>The tile URL template needs {z}, {x} and {y} (or {-y}).</source>
-        <translation>Die Kachel-URL-Vorlage braucht {z}, {x} und {y} (oder {-y}).</translation>
-    </message>
-</context>
-<context>
-    <name>sortie::mission</name>
-    <message>
-        <source>WP %1</source>
-        <translation>WP %1</translation>
-    </message>
-    <message>
-        <source>Scan %1</source>
-        <translation>Scan %1</translation>
-    </message>
-    <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
-        <source>(none)</source>
-        <translation>(keine)</translation>
-    </message>
-    <message>
-        <source>return home</source>
-        <translation>Rückkehr</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>keine</translation>
-    </message>
-</context>
-<context>
-    <name>sortie::mission::RouteDiff</name>
-    <message>
-        <source>No changes</source>
-        <translation>Keine Änderungen</translation>
-    </message>
-    <message>
-        <source>1 change: </source>
-        <translation>1 Änderung: </translation>
-    </message>
-    <message>
-        <source>%1 changes: </source>
-        <translation>%1 Änderungen: </translation>
-    </message>
-    <message>
-        <source> and %1 more</source>
-        <translation> und %1 weitere</translation>
-    </message>
-    <message>
-        <source>name %1 → %2</source>
-        <translation>Name %1 → %2</translation>
-    </message>
-    <message>
-        <source>%1 %2 → %3 %4</source>
-        <translation>%1 %2 → %3 %4</translation>
-    </message>
-    <message>
-        <source>vehicle profile %1 → %2</source>
-        <translation>Fahrzeugprofil %1 → %2</translation>
-    </message>
-    <message>
-        <source>vehicle profile %1 changed</source>
-        <translation>Fahrzeugprofil %1 geändert</translation>
-    </message>
-    <message>
-        <source>failsafe actions changed</source>
-        <translation>Failsafe-Aktionen geändert</translation>
-    </message>
-    <message>
-        <source>home set</source>
-        <translation>Home-Punkt gesetzt</translation>
-    </message>
-    <message>
-        <source>home removed</source>
-        <translation>Home-Punkt entfernt</translation>
-    </message>
-    <message>
-        <source>home moved %1 m</source>
-        <translation>Home-Punkt um %1 m verschoben</translation>
-    </message>
-    <message>
-        <source>home altitude %1 → %2 m</source>
-        <translation>Höhe des Home-Punkts %1 → %2 m</translation>
-    </message>
-    <message>
-        <source>end action %1 → %2</source>
-        <translation>Endaktion %1 → %2</translation>
-    </message>
-    <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
-        <source>on</source>
-        <translation>ein</translation>
-    </message>
-    <message>
-        <source>off</source>
-        <translation>aus</translation>
-    </message>
-    <message>
-        <source>%1 removed</source>
-        <translation>%1 entfernt</translation>
-    </message>
-    <message>
-        <source>%1 added</source>
-        <translation>%1 hinzugefügt</translation>
-    </message>
-    <message>
-        <source>%1 changed</source>
-        <translation>%1 geändert</translation>
-    </message>
-    <message>
-        <source>%1 moved %2 m</source>
-        <translation>%1 um %2 m verschoben</translation>
-    </message>
-    <message>
-        <source>altitude of %1 %2 m %3 → %4 m %5</source>
-        <translation>Höhe von %1 %2 m %3 → %4 m %5</translation>
-    </message>
-    <message>
-        <source>altitude of %1 %2 → %3 m</source>
-        <translation>Höhe von %1 %2 → %3 m</translation>
-    </message>
-    <message>
-        <source>speed of %1 %2 → %3 m/s</source>
-        <translation>Geschwindigkeit von %1 %2 → %3 m/s</translation>
-    </message>
-    <message>
-        <source>none</source>
-        <translation>keine</translation>
-    </message>
-    <message>
-        <source>actions of %1: %2 → %3</source>
-        <translation>Aktionen von %1: %2 → %3</translation>
-    </message>
-    <message>
-        <source>turn at %1 %2 → %3</source>
-        <translation>Kurvenart bei %1 %2 → %3</translation>
-    </message>
-    <message>
-        <source>acceptance radius of %1 %2 → %3 m</source>
-        <translation>Akzeptanzradius von %1 %2 → %3 m</translation>
-    </message>
-    <message>
-        <source>%1 %2 → %3</source>
-        <translation>%1 %2 → %3</translation>
-    </message>
-    <message>
-        <source>figure of %1 reshaped</source>
-        <translation>Figur von %1 umgeformt</translation>
-    </message>
-    <message>
-        <source>%1 of %2 %3 → %4</source>
-        <translation>%1 von %2 %3 → %4</translation>
-    </message>
-    <message>
-        <source>(none)</source>
-        <translation>(keine)</translation>
-    </message>
-    <message>
-        <source>%1 of %2 removed</source>
-        <translation>%1 von %2 entfernt</translation>
-    </message>
-    <message>
-        <source>actions of %1 changed</source>
-        <translation>Aktionen von %1 geändert</translation>
-    </message>
-    <message>
-        <source>area of %1 reshaped</source>
-        <translation>Fläche von %1 umgeformt</translation>
-    </message>
-    <message>
-        <source>area of %1 reshaped (%2 → %3 corners)</source>
-        <translation>Fläche von %1 umgeformt (%2 → %3 Ecken)</translation>
-    </message>
-    <message>
-        <source>%1 of %2 %3 → %4 %5</source>
-        <translation>%1 von %2 %3 → %4 %5</translation>
-    </message>
-    <message>
-        <source>altitude of %1 now %2</source>
-        <translation>Höhe von %1 jetzt %2</translation>
-    </message>
-    <message>
-        <source>%1 now flies by ground sample distance</source>
-        <translation>%1 fliegt jetzt nach Bodenauflösung (GSD)</translation>
-    </message>
-    <message>
-        <source>%1 now flies by altitude</source>
-        <translation>%1 fliegt jetzt nach Höhe</translation>
-    </message>
-    <message>
-        <source>camera of %1 %2 → %3</source>
-        <translation>Kamera von %1 %2 → %3</translation>
-    </message>
-    <message>
-        <source>camera of %1 changed</source>
-        <translation>Kamera von %1 geändert</translation>
     </message>
 </context>
 <context>
@@ -3830,6 +6446,13 @@ Ereignisse: %1
     <message>
         <source> descending</source>
         <translation> sinkend</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::Translations</name>
+    <message>
+        <source>System language</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

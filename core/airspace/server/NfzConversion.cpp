@@ -174,12 +174,16 @@ std::optional<pb::NoFlightZone> toNfz(const Zone &zone, const pb::NoFlightZone *
     nfz.set_name(zone.name.toStdString());
     nfz.set_type(pb::NT_CUSTOM);
     if (const auto *polygons = std::get_if<ZonePolygons>(&zone.shape)) {
-        if (polygons->parts.size() != 1 || polygons->parts[0].rings.size() != 1)
-            return *why = QCoreApplication::translate("NfzConversion", "a server zone is one polygon without holes (this one has %n part(s), %1)",
-                                                      nullptr, int(polygons->parts.size()))
-                              .arg(QCoreApplication::translate("NfzConversion", "%n ring(s)", nullptr,
-                                                               int(polygons->parts.empty() ? 0 : polygons->parts[0].rings.size()))),
-                   std::nullopt;
+        if (polygons->parts.size() != 1 || polygons->parts[0].rings.size() != 1) {
+            // In steps: lupdate 6.4 does not come back from this message written as one nested call.
+            const int parts = int(polygons->parts.size());
+            const int rings = parts == 0 ? 0 : int(polygons->parts[0].rings.size());
+            const QString ringText = QCoreApplication::translate("NfzConversion", "%n ring(s)", nullptr, rings);
+            *why = QCoreApplication::translate("NfzConversion", "a server zone is one polygon without holes (this one has %n part(s), %1)",
+                                               nullptr, parts)
+                       .arg(ringText);
+            return std::nullopt;
+        }
         const auto &ring = polygons->parts[0].rings[0];
         if (ring.size() < 3)
             return *why = QCoreApplication::translate("NfzConversion", "its polygon has %n corner(s); it needs 3", nullptr, int(ring.size())), std::nullopt;

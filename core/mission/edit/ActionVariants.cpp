@@ -158,7 +158,7 @@ namespace {
 ActionField number(const char *name, const char *label, const char *unit, std::optional<double> minimum,
                    std::optional<double> maximum = std::nullopt, ActionField::Type type = ActionField::Type::Number)
 {
-    return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), type,
+    return {QString::fromLatin1(name), QCoreApplication::translate("ActionVariants", label), type,
             QString::fromUtf8(unit), minimum, maximum, {}, false};
 }
 
@@ -170,18 +170,18 @@ ActionField optional(ActionField f)
 
 ActionField toggle(const char *name, const char *label)
 {
-    return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), ActionField::Type::Toggle, {}, {}, {}, {}, false};
+    return {QString::fromLatin1(name), QCoreApplication::translate("ActionVariants", label), ActionField::Type::Toggle, {}, {}, {}, {}, false};
 }
 
 ActionField choice(const char *name, const char *label, std::vector<std::pair<QString, QString>> choices)
 {
-    return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), ActionField::Type::Choice, {}, {}, {},
+    return {QString::fromLatin1(name), QCoreApplication::translate("ActionVariants", label), ActionField::Type::Choice, {}, {}, {},
             std::move(choices), false};
 }
 
 ActionKindDescription kind(const char *name, const char *label, std::vector<ActionField> fields)
 {
-    return {QString::fromLatin1(name), QCoreApplication::translate("ActionField", label), std::move(fields)};
+    return {QString::fromLatin1(name), QCoreApplication::translate("ActionVariants", label), std::move(fields)};
 }
 } // namespace
 
