@@ -28,87 +28,87 @@
     <name>ActionVariants</name>
     <message>
         <source>%1 is either on or off</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ist entweder ein oder aus</translation>
     </message>
     <message>
         <source>%1: &quot;%2&quot; is not one of its choices</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: „%2“ ist keine der Auswahlmöglichkeiten</translation>
     </message>
     <message>
         <source>%1: &quot;%2&quot; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: „%2“ ist keine Zahl</translation>
     </message>
     <message>
         <source>%1: %2 is not a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 ist keine ganze Zahl</translation>
     </message>
     <message>
         <source>%1: %2 is below %3 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 liegt unter %3 %4</translation>
     </message>
     <message>
         <source>%1: %2 is above %3 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 liegt über %3 %4</translation>
     </message>
     <message>
         <source>Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>Kamera</translation>
     </message>
     <message>
         <source>Take a photo</source>
-        <translation type="unfinished"></translation>
+        <translation>Foto aufnehmen</translation>
     </message>
     <message>
         <source>Start video</source>
-        <translation type="unfinished"></translation>
+        <translation>Video starten</translation>
     </message>
     <message>
         <source>Stop video</source>
-        <translation type="unfinished"></translation>
+        <translation>Video stoppen</translation>
     </message>
     <message>
         <source>Toggle video</source>
-        <translation type="unfinished"></translation>
+        <translation>Video umschalten</translation>
     </message>
     <message>
         <source>Photos by distance</source>
-        <translation type="unfinished"></translation>
+        <translation>Fotos nach Strecke</translation>
     </message>
     <message>
         <source>Every</source>
-        <translation type="unfinished"></translation>
+        <translation>Alle</translation>
     </message>
     <message>
         <source>m</source>
-        <translation type="unfinished"></translation>
+        <translation>m</translation>
     </message>
     <message>
         <source>Shots (0: until stopped)</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufnahmen (0: bis zum Stopp)</translation>
     </message>
     <message>
         <source>Start after</source>
-        <translation type="unfinished"></translation>
+        <translation>Start nach</translation>
     </message>
     <message>
         <source>s</source>
-        <translation type="unfinished"></translation>
+        <translation>s</translation>
     </message>
     <message>
         <source>Photos by time</source>
-        <translation type="unfinished"></translation>
+        <translation>Fotos nach Zeit</translation>
     </message>
     <message>
         <source>Wait</source>
-        <translation type="unfinished"></translation>
+        <translation>Warten</translation>
     </message>
     <message>
         <source>For</source>
-        <translation type="unfinished"></translation>
+        <translation>Dauer</translation>
     </message>
     <message>
         <source>Until the operator continues</source>
-        <translation type="unfinished"></translation>
+        <translation>Bis der Bediener fortsetzt</translation>
     </message>
     <message>
         <source>Heading</source>
@@ -116,11 +116,11 @@
     </message>
     <message>
         <source>From the course</source>
-        <translation type="unfinished"></translation>
+        <translation>Relativ zur Flugrichtung</translation>
     </message>
     <message>
         <source>Point of interest</source>
-        <translation type="unfinished"></translation>
+        <translation>Interessenpunkt</translation>
     </message>
     <message>
         <source>Latitude</source>
@@ -132,139 +132,139 @@
     </message>
     <message>
         <source>Altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe</translation>
     </message>
     <message>
         <source>Altitude type</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhenbezug</translation>
     </message>
     <message>
         <source>Above ground (AGL)</source>
-        <translation type="unfinished"></translation>
+        <translation>Über Grund (AGL)</translation>
     </message>
     <message>
         <source>Above sea level (AMSL)</source>
-        <translation type="unfinished"></translation>
+        <translation>Über dem Meeresspiegel (AMSL)</translation>
     </message>
     <message>
         <source>Gimbal and zoom</source>
-        <translation type="unfinished"></translation>
+        <translation>Gimbal und Zoom</translation>
     </message>
     <message>
         <source>Tilt (90: down)</source>
-        <translation type="unfinished"></translation>
+        <translation>Neigung (90: nach unten)</translation>
     </message>
     <message>
         <source>Roll</source>
-        <translation type="unfinished"></translation>
+        <translation>Rollen</translation>
     </message>
     <message>
         <source>Yaw</source>
-        <translation type="unfinished"></translation>
+        <translation>Gieren</translation>
     </message>
     <message>
         <source>Zoom level</source>
-        <translation type="unfinished"></translation>
+        <translation>Zoomstufe</translation>
     </message>
     <message>
         <source>Panorama</source>
-        <translation type="unfinished"></translation>
+        <translation>Panorama</translation>
     </message>
     <message>
         <source>Angle</source>
-        <translation type="unfinished"></translation>
+        <translation>Winkel</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Schritt</translation>
     </message>
     <message>
         <source>Pause per step</source>
-        <translation type="unfinished"></translation>
+        <translation>Pause pro Schritt</translation>
     </message>
     <message>
         <source>Rotation speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Drehgeschwindigkeit</translation>
     </message>
     <message>
         <source>°/s</source>
-        <translation type="unfinished"></translation>
+        <translation>°/s</translation>
     </message>
     <message>
         <source>Clockwise</source>
-        <translation type="unfinished"></translation>
+        <translation>Im Uhrzeigersinn</translation>
     </message>
     <message>
         <source>Video</source>
-        <translation type="unfinished"></translation>
+        <translation>Video</translation>
     </message>
     <message>
         <source>Set servo</source>
-        <translation type="unfinished"></translation>
+        <translation>Servo setzen</translation>
     </message>
     <message>
         <source>Servo</source>
-        <translation type="unfinished"></translation>
+        <translation>Servo</translation>
     </message>
     <message>
         <source>PWM</source>
-        <translation type="unfinished"></translation>
+        <translation>PWM</translation>
     </message>
     <message>
         <source>Repeat servo</source>
-        <translation type="unfinished"></translation>
+        <translation>Servo wiederholen</translation>
     </message>
     <message>
         <source>Cycle time</source>
-        <translation type="unfinished"></translation>
+        <translation>Zykluszeit</translation>
     </message>
     <message>
         <source>Repeats</source>
-        <translation type="unfinished"></translation>
+        <translation>Wiederholungen</translation>
     </message>
     <message>
         <source>Switch to hover (VTOL)</source>
-        <translation type="unfinished"></translation>
+        <translation>In den Schwebeflug wechseln (VTOL)</translation>
     </message>
     <message>
         <source>Switch to fixed-wing</source>
-        <translation type="unfinished"></translation>
+        <translation>In den Flächenflug wechseln</translation>
     </message>
     <message>
         <source>Lidar recording</source>
-        <translation type="unfinished"></translation>
+        <translation>Lidar-Aufzeichnung</translation>
     </message>
     <message>
         <source>Recording</source>
-        <translation type="unfinished"></translation>
+        <translation>Aufzeichnung</translation>
     </message>
     <message>
         <source>Lidar calibration</source>
-        <translation type="unfinished"></translation>
+        <translation>Lidar-Kalibrierung</translation>
     </message>
     <message>
         <source>Distance</source>
-        <translation type="unfinished"></translation>
+        <translation>Distanz</translation>
     </message>
     <message>
         <source>Times</source>
-        <translation type="unfinished"></translation>
+        <translation>Anzahl</translation>
     </message>
     <message>
         <source>Hop</source>
-        <translation type="unfinished"></translation>
+        <translation>Hop</translation>
     </message>
     <message>
         <source>Descent altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Abstiegshöhe</translation>
     </message>
     <message>
         <source>Drop payload</source>
-        <translation type="unfinished"></translation>
+        <translation>Nutzlast abwerfen</translation>
     </message>
     <message>
         <source>Descent speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Sinkgeschwindigkeit</translation>
     </message>
     <message>
         <source>m/s</source>
@@ -275,104 +275,104 @@
     <name>Airspace</name>
     <message>
         <source>route fence</source>
-        <translation type="unfinished"></translation>
+        <translation>Geofence der Route</translation>
     </message>
     <message>
         <source>the open route</source>
-        <translation type="unfinished"></translation>
+        <translation>die geöffnete Route</translation>
     </message>
     <message>
         <source>%1 (kept as %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (beibehalten als %2)</translation>
     </message>
 </context>
 <context>
     <name>AirspaceRule</name>
     <message>
         <source>floor %1, ceiling %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Untergrenze %1, Obergrenze %2</translation>
     </message>
     <message>
         <source>at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>bei %1</translation>
     </message>
     <message>
         <source>from %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>von %1 bis %2</translation>
     </message>
     <message>
         <source>Leg %1 %2 &apos;%3&apos; %4 (%5)</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilstrecke %1 %2 „%3“ %4 (%5)</translation>
     </message>
     <message>
         <source>; its height there is unknown (no terrain data), so it counts as inside</source>
-        <translation type="unfinished"></translation>
+        <translation>; ihre Höhe dort ist unbekannt (keine Geländedaten), daher gilt sie als innerhalb</translation>
     </message>
     <message>
         <source>Leg %1 passes within %2 of %3 &apos;%4&apos; (buffer %5).</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilstrecke %1 kommt bis auf %2 an %3 „%4“ heran (Puffer %5).</translation>
     </message>
     <message>
         <source>exclusion zone</source>
-        <translation type="unfinished"></translation>
+        <translation>die Ausschlusszone</translation>
     </message>
     <message>
         <source>the edge of inclusion zone</source>
-        <translation type="unfinished"></translation>
+        <translation>den Rand der Einschlusszone</translation>
     </message>
 </context>
 <context>
     <name>AlgorithmDefinition</name>
     <message>
         <source>%1 must be set</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 muss gesetzt sein</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: „%2“ ist keine Zahl</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: „%2“ ist keine ganze Zahl</translation>
     </message>
     <message>
         <source>%1: %2 is below the minimum of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 liegt unter dem Minimum von %3</translation>
     </message>
     <message>
         <source>%1: %2 is above the maximum of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 liegt über dem Maximum von %3</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is neither true nor false</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: „%2“ ist weder true noch false</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not one of its choices</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: „%2“ ist keine der Auswahlmöglichkeiten</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; does not have the expected form</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: „%2“ hat nicht die erwartete Form</translation>
     </message>
 </context>
 <context>
     <name>AreaScanPlanner</name>
     <message>
         <source>The camera needs a positive sensor size, focal length and image size.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Kamera braucht eine positive Sensorgröße, Brennweite und Bildgröße.</translation>
     </message>
     <message>
         <source>Overlaps must be between 0 and 95 %.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Überlappungen müssen zwischen 0 und 95 % liegen.</translation>
     </message>
     <message>
         <source>The scan altitude (or ground sample distance) must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Scanhöhe (oder Bodenauflösung) muss positiv sein.</translation>
     </message>
     <message>
         <source>The turnaround distance must not be negative.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Wendestrecke darf nicht negativ sein.</translation>
     </message>
 </context>
 <context>
@@ -386,50 +386,50 @@
     <name>AutosaveDirectory</name>
     <message>
         <source>autosave-%1.json</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.json</translation>
     </message>
     <message>
         <source>autosave-%1.lock</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.lock</translation>
     </message>
     <message>
         <source>autosave-%1.unreadable-%2.json</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.unreadable-%2.json</translation>
     </message>
     <message>
         <source>autosave-%1.unreadable-%2-%3.json</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.unreadable-%2-%3.json</translation>
     </message>
     <message>
         <source>Cannot create the autosave folder %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Ordner für automatische Sicherungen %1 kann nicht angelegt werden</translation>
     </message>
 </context>
 <context>
     <name>AutosaveRecord</name>
     <message>
         <source>the autosave holds no &quot;%1&quot; route</source>
-        <translation type="unfinished"></translation>
+        <translation>die automatische Sicherung enthält keine Route „%1“</translation>
     </message>
     <message>
         <source>the &quot;%1&quot; document holds %2 routes, not one</source>
-        <translation type="unfinished"></translation>
+        <translation>das Dokument „%1“ enthält %2 Routen statt einer</translation>
     </message>
     <message>
         <source>/%1/mission/routes</source>
-        <translation type="unfinished"></translation>
+        <translation>/%1/mission/routes</translation>
     </message>
     <message>
         <source>not a Sortie autosave (&quot;format&quot; is not &quot;sortie-autosave&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>keine automatische Sicherung von Sortie („format“ ist nicht „sortie-autosave“)</translation>
     </message>
     <message>
         <source>autosave format version %1 is not one this Sortie reads (1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Format-Version %1 der automatischen Sicherung kann diese Sortie-Version nicht lesen (1)</translation>
     </message>
     <message>
         <source>&quot;savedAt&quot; is not a date and time</source>
-        <translation type="unfinished"></translation>
+        <translation>„savedAt“ ist kein Datum mit Uhrzeit</translation>
     </message>
 </context>
 <context>
@@ -443,54 +443,54 @@
     <name>Camera</name>
     <message>
         <source>DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)</translation>
     </message>
     <message>
         <source>DJI Phantom 4 (FC330)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Phantom 4 (FC330)</translation>
     </message>
     <message>
         <source>DJI Mavic 2 Pro (Hasselblad L1D-20c)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Mavic 2 Pro (Hasselblad L1D-20c)</translation>
     </message>
     <message>
         <source>DJI Mavic 3 Enterprise (wide)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Mavic 3 Enterprise (wide)</translation>
     </message>
     <message>
         <source>DJI Zenmuse P1 24 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Zenmuse P1 24 mm</translation>
     </message>
     <message>
         <source>DJI Zenmuse P1 35 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Zenmuse P1 35 mm</translation>
     </message>
     <message>
         <source>Sony RX1R II</source>
-        <translation type="unfinished"></translation>
+        <translation>Sony RX1R II</translation>
     </message>
     <message>
         <source>senseFly S.O.D.A.</source>
-        <translation type="unfinished"></translation>
+        <translation>senseFly S.O.D.A.</translation>
     </message>
     <message>
         <source>MicaSense RedEdge-MX</source>
-        <translation type="unfinished"></translation>
+        <translation>MicaSense RedEdge-MX</translation>
     </message>
     <message>
         <source>GoPro Hero3 Black Edition</source>
-        <translation type="unfinished"></translation>
+        <translation>GoPro Hero3 Black Edition</translation>
     </message>
     <message>
         <source>Generic 1&quot; 20 MP</source>
-        <translation type="unfinished"></translation>
+        <translation>Generic 1&quot; 20 MP</translation>
     </message>
 </context>
 <context>
     <name>ClientGraph</name>
     <message>
         <source>route fence</source>
-        <translation type="unfinished"></translation>
+        <translation>Geofence der Route</translation>
     </message>
 </context>
 <context>
@@ -625,35 +625,35 @@
     <name>CoverageSweep</name>
     <message>
         <source>An area scan needs a polygon of at least 3 vertices.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Flächenscan braucht ein Polygon mit mindestens 3 Eckpunkten.</translation>
     </message>
     <message>
         <source>Polygon vertex %1 is not a valid position.</source>
-        <translation type="unfinished"></translation>
+        <translation>Polygon-Eckpunkt %1 ist keine gültige Position.</translation>
     </message>
     <message>
         <source>The polygon spans more than 100 km; split it into smaller scans.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Polygon ist größer als 100 km; teilen Sie es in kleinere Scans auf.</translation>
     </message>
     <message>
         <source>The scan polygon crosses itself (edges %1 and %2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Scan-Polygon schneidet sich selbst (Kanten %1 und %2).</translation>
     </message>
     <message>
         <source>The scan polygon has no area.</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Scan-Polygon hat keine Fläche.</translation>
     </message>
     <message>
         <source>The distance between passes must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Bahnabstand muss positiv sein.</translation>
     </message>
     <message>
         <source>The scan would need %1 transects; raise the altitude or lower the side overlap.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Scan bräuchte %1 Bahnen; erhöhen Sie die Höhe oder verringern Sie die Querüberlappung.</translation>
     </message>
     <message>
         <source>The scan yields no transects: the polygon is too narrow.</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Scan ergibt keine Bahnen: Das Polygon ist zu schmal.</translation>
     </message>
 </context>
 <context>
@@ -667,11 +667,11 @@
     <name>Egm96Geoid</name>
     <message>
         <source>the EGM96 geoid grid %1 is missing (Debian: install proj-data): ellipsoidal heights cannot be converted to AMSL</source>
-        <translation type="unfinished"></translation>
+        <translation>das EGM96-Geoid-Gitter %1 fehlt (Debian: proj-data installieren): Ellipsoidische Höhen können nicht in AMSL umgerechnet werden</translation>
     </message>
     <message>
         <source>the EGM96 geoid grid %1 cannot be used: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>das EGM96-Geoid-Gitter %1 kann nicht verwendet werden: %2</translation>
     </message>
 </context>
 <context>
@@ -692,19 +692,19 @@
     <name>EnergyProfile</name>
     <message>
         <source>%1 must be a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 muss eine positive Zahl sein</translation>
     </message>
     <message>
         <source>reserve must be a fraction from 0 up to (not including) 1</source>
-        <translation type="unfinished"></translation>
+        <translation>reserve muss ein Anteil von 0 bis (ausschließlich) 1 sein</translation>
     </message>
     <message>
         <source>acceleration must be a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>acceleration muss eine positive Zahl sein</translation>
     </message>
     <message>
         <source>expected &quot;file&quot;, &quot;server&quot; or &quot;fit&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>„file“, „server“ oder „fit“ erwartet</translation>
     </message>
 </context>
 <context>
@@ -726,7 +726,7 @@
     <name>FlightLogExport</name>
     <message>
         <source>Flight log %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Flugprotokoll %1</translation>
     </message>
 </context>
 <context>
@@ -734,7 +734,8 @@
     <message>
         <source>
   %1 (%2%3%4): %5 samples</source>
-        <translation type="unfinished"></translation>
+        <translation>
+  %1 (%2%3%4): %5 Punkte</translation>
     </message>
 </context>
 <context>
@@ -780,282 +781,282 @@
     <name>HciConnection</name>
     <message>
         <source>type %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Typ %1</translation>
     </message>
     <message>
         <source>%1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ms</translation>
     </message>
     <message>
         <source>No answer from %1 within %2: check the address and the network</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Antwort von %1 innerhalb von %2: Prüfen Sie die Adresse und das Netzwerk</translation>
     </message>
     <message>
         <source>The server at %1 closed the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Server bei %1 hat die Verbindung geschlossen</translation>
     </message>
     <message>
         <source>The connection was closed by the application</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Verbindung wurde von der Anwendung geschlossen</translation>
     </message>
     <message>
         <source>Disconnected from %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Verbindung zu %1 getrennt</translation>
     </message>
     <message>
         <source>%1 refused the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hat die Verbindung abgelehnt</translation>
     </message>
     <message>
         <source>The host in %1 cannot be found</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Host in %1 wurde nicht gefunden</translation>
     </message>
     <message>
         <source>Cannot reach %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nicht erreichbar: %2</translation>
     </message>
     <message>
         <source>Connection to %1 lost: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Verbindung zu %1 verloren: %2</translation>
     </message>
     <message>
         <source>%1 got no answer: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hat keine Antwort erhalten: %2</translation>
     </message>
     <message>
         <source>%1 is not an HCI message</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ist keine HCI-Nachricht</translation>
     </message>
     <message>
         <source>%1 not sent: not connected to the server</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nicht gesendet: keine Verbindung zum Server</translation>
     </message>
     <message>
         <source>%1 not sent: missing %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 nicht gesendet: %2 fehlt</translation>
     </message>
     <message>
         <source>No answer to %1 within %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Antwort auf %1 innerhalb von %2</translation>
     </message>
     <message>
         <source>%1 at byte %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 bei Byte %2: %3</translation>
     </message>
     <message>
         <source>%1 with instance id -1 is not a notification</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 mit Instanz-ID -1 ist keine Benachrichtigung</translation>
     </message>
     <message>
         <source>%1 for instance id %2, which no request waits for (answered after its timeout?)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 für Instanz-ID %2, auf die keine Anfrage wartet (nach ihrer Zeitüberschreitung beantwortet?)</translation>
     </message>
     <message>
         <source>The server answered %1 with %2 instead of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Server hat auf %1 mit %2 statt %3 geantwortet</translation>
     </message>
 </context>
 <context>
     <name>HciElevationSource</name>
     <message>
         <source>UgCS server</source>
-        <translation type="unfinished"></translation>
+        <translation>UgCS-Server</translation>
     </message>
 </context>
 <context>
     <name>HciError</name>
     <message>
         <source>The server&apos;s licence does not allow this (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Lizenz des Servers erlaubt dies nicht (%1)</translation>
     </message>
     <message>
         <source>The server&apos;s licence does not allow this</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Lizenz des Servers erlaubt dies nicht</translation>
     </message>
     <message>
         <source>The server speaks HCI protocol %1; Sortie speaks 2.0%2</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Server spricht HCI-Protokoll %1; Sortie spricht 2.0%2</translation>
     </message>
     <message>
         <source>The server refused the request (error %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Server hat die Anfrage abgelehnt (Fehler %1)</translation>
     </message>
     <message>
         <source>The server refused the request without a reason</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Server hat die Anfrage ohne Begründung abgelehnt</translation>
     </message>
     <message>
         <source>no error</source>
-        <translation type="unfinished"></translation>
+        <translation>kein Fehler</translation>
     </message>
     <message>
         <source> (code %1)</source>
-        <translation type="unfinished"></translation>
+        <translation> (Code %1)</translation>
     </message>
 </context>
 <context>
     <name>HciRouteMapper</name>
     <message>
         <source>Route &quot;%1&quot;, segment %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Route „%1“, Segment %2: %3</translation>
     </message>
 </context>
 <context>
     <name>HciRoutePass</name>
     <message>
         <source>a RoutePass event names the object type &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>ein RoutePass-Ereignis nennt den Objekttyp „%1“</translation>
     </message>
     <message>
         <source>RoutePass %1: the event carries no RoutePass</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1: Das Ereignis enthält keinen RoutePass</translation>
     </message>
     <message>
         <source>RoutePass %1 names no vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1 nennt kein Fahrzeug</translation>
     </message>
     <message>
         <source>RoutePass %1 has no waypoint count</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1 hat keine Wegpunktanzahl</translation>
     </message>
     <message>
         <source>RoutePass %1: waypoint index %2 is outside the route&apos;s %3 waypoints</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1: Wegpunktindex %2 liegt außerhalb der %3 Wegpunkte der Route</translation>
     </message>
 </context>
 <context>
     <name>HciSegmentMapper</name>
     <message>
         <source>the waypoint has no figure point</source>
-        <translation type="unfinished"></translation>
+        <translation>der Wegpunkt hat keinen Figurpunkt</translation>
     </message>
     <message>
         <source>the waypoint&apos;s position is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>die Position des Wegpunkts liegt außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
         <source>An area scan&apos;s %1: %2 It keeps Sortie&apos;s default.</source>
-        <translation type="unfinished"></translation>
+        <translation>Flächenscan, %1: %2 Es gilt der Standardwert von Sortie.</translation>
     </message>
     <message>
         <source>An area scan came without a camera; Sortie&apos;s default camera (%1) was assumed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Flächenscan kam ohne Kamera; die Standardkamera von Sortie (%1) wurde angenommen.</translation>
     </message>
     <message>
         <source>A %1 segment could not be read as one (%2); it is kept as the server sent it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein %1-Segment konnte nicht als solches gelesen werden (%2); es bleibt so, wie der Server es gesendet hat.</translation>
     </message>
     <message>
         <source>An area scan without a polygon of three corners is kept as the server sent it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Flächenscan ohne Polygon mit drei Ecken bleibt so, wie der Server ihn gesendet hat.</translation>
     </message>
 </context>
 <context>
     <name>HciSession</name>
     <message>
         <source> not sent: </source>
-        <translation type="unfinished"></translation>
+        <translation> nicht gesendet: </translation>
     </message>
     <message>
         <source>the connection to the server is being re-established</source>
-        <translation type="unfinished"></translation>
+        <translation>die Verbindung zum Server wird wiederhergestellt</translation>
     </message>
     <message>
         <source>not logged in to a server</source>
-        <translation type="unfinished"></translation>
+        <translation>nicht an einem Server angemeldet</translation>
     </message>
     <message>
         <source>The server sent nothing while %1 waited (%2); the link seems dead</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Server hat nichts gesendet, während %1 wartete (%2); die Verbindung scheint abgerissen</translation>
     </message>
     <message>
         <source>The server speaks HCI protocol %1.%2; Sortie speaks %3.%4</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Server spricht HCI-Protokoll %1.%2; Sortie spricht %3.%4</translation>
     </message>
     <message>
         <source>The server rejected the login &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Server hat die Anmeldung „%1“ abgelehnt: %2</translation>
     </message>
 </context>
 <context>
     <name>HciVehicleLink</name>
     <message>
         <source>%1: cannot take control of %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Kontrolle über %2 kann nicht übernommen werden: %3</translation>
     </message>
     <message>
         <source>%1: the server sent no result for this vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Der Server hat für dieses Fahrzeug kein Ergebnis gesendet</translation>
     </message>
     <message>
         <source>there is no such flight mode</source>
-        <translation type="unfinished"></translation>
+        <translation>diesen Flugmodus gibt es nicht</translation>
     </message>
     <message>
         <source>Segment %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Segment %1: %2</translation>
     </message>
     <message>
         <source>the server could not process it</source>
-        <translation type="unfinished"></translation>
+        <translation>der Server konnte es nicht verarbeiten</translation>
     </message>
     <message>
         <source>Sortie upload to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Sortie-Upload auf %1</translation>
     </message>
     <message>
         <source>route processing: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Routenverarbeitung: %1</translation>
     </message>
     <message>
         <source>upload: the mission was not prepared by the UgCS server</source>
-        <translation type="unfinished"></translation>
+        <translation>Upload: Die Mission wurde nicht vom UgCS-Server vorbereitet</translation>
     </message>
     <message>
         <source>upload: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Upload: %1</translation>
     </message>
     <message>
         <source>upload: cannot take control of %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Upload: Kontrolle über %1 kann nicht übernommen werden: %2</translation>
     </message>
     <message>
         <source>a UgCS server does not read a vehicle&apos;s mission back</source>
-        <translation type="unfinished"></translation>
+        <translation>ein UgCS-Server liest die Mission eines Fahrzeugs nicht zurück</translation>
     </message>
     <message>
         <source>%1: parameters are set in the vehicle profile on the UgCS server</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Parameter werden im Fahrzeugprofil auf dem UgCS-Server gesetzt</translation>
     </message>
 </context>
 <context>
     <name>HgtTile</name>
     <message>
         <source>%1 bytes is not an SRTM tile (2884802 bytes for 3″ 1201×1201, 25934402 for 1″ 3601×3601); the file is truncated or not a .hgt tile</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Bytes sind keine SRTM-Kachel (2884802 Bytes für 3″ 1201×1201, 25934402 für 1″ 3601×3601); die Datei ist abgeschnitten oder keine .hgt-Kachel</translation>
     </message>
     <message>
         <source>height %1 m at row %2, column %3 is not a terrain height; the file is corrupt</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe %1 m in Zeile %2, Spalte %3 ist keine Geländehöhe; die Datei ist beschädigt</translation>
     </message>
 </context>
 <context>
     <name>HgtTileSource</name>
     <message>
         <source>%1: no such file or folder</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Datei oder Ordner nicht vorhanden</translation>
     </message>
     <message>
         <source>%1: not an SRTM tile name (NxxEyyy.hgt names the tile&apos;s south-west corner)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: kein SRTM-Kachelname (NxxEyyy.hgt benennt die Südwestecke der Kachel)</translation>
     </message>
     <message>
         <source>SRTM tiles (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>SRTM-Kacheln (%1)</translation>
     </message>
     <message>
         <source>%1: cannot be mapped: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: kann nicht in den Speicher abgebildet werden: %2</translation>
     </message>
 </context>
 <context>
@@ -1153,172 +1154,172 @@
     <name>JsonCursor</name>
     <message>
         <source>expected an object, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Objekt erwartet, gefunden: %1</translation>
     </message>
     <message>
         <source>missing required key &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>erforderlicher Schlüssel „%1“ fehlt</translation>
     </message>
     <message>
         <source>expected an array, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Array erwartet, gefunden: %1</translation>
     </message>
     <message>
         <source>expected at least %1 elements, found %2</source>
-        <translation type="unfinished"></translation>
+        <translation>mindestens %1 Elemente erwartet, gefunden: %2</translation>
     </message>
     <message>
         <source>expected a number, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zahl erwartet, gefunden: %1</translation>
     </message>
     <message>
         <source>the number is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>die Zahl ist nicht endlich</translation>
     </message>
     <message>
         <source>expected an integer, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ganze Zahl erwartet, gefunden: %1</translation>
     </message>
     <message>
         <source>expected true or false, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>true oder false erwartet, gefunden: %1</translation>
     </message>
     <message>
         <source>expected a string, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeichenkette erwartet, gefunden: %1</translation>
     </message>
     <message>
         <source>not valid JSON: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kein gültiges JSON: %1</translation>
     </message>
     <message>
         <source>; last read: &apos;.*&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>; last read: &apos;.*&apos;</translation>
     </message>
     <message>
         <source>unknown value &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter Wert „%1“</translation>
     </message>
 </context>
 <context>
     <name>KmlFormat</name>
     <message>
         <source>bad coordinate &quot;%1&quot;: expected longitude,latitude[,altitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>ungültige Koordinate „%1“: Länge,Breite[,Höhe] erwartet</translation>
     </message>
     <message>
         <source>bad coordinate &quot;%1&quot;: not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>ungültige Koordinate „%1“: keine Zahl</translation>
     </message>
     <message>
         <source>coordinate &quot;%1&quot; is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>Koordinate „%1“ liegt außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
         <source>a boundary needs at least 3 distinct points, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Begrenzung braucht mindestens 3 verschiedene Punkte, gefunden: %1</translation>
     </message>
     <message>
         <source>not valid KML: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kein gültiges KML: %1</translation>
     </message>
     <message>
         <source>this LineString is open, so it encloses no area; close it (last point = first) to use it as a boundary</source>
-        <translation type="unfinished"></translation>
+        <translation>dieser LineString ist offen und schließt daher keine Fläche ein; schließen Sie ihn (letzter Punkt = erster), um ihn als Begrenzung zu verwenden</translation>
     </message>
     <message>
         <source>this Placemark has no Polygon (with an outerBoundaryIs LinearRing) or closed LineString</source>
-        <translation type="unfinished"></translation>
+        <translation>dieses Placemark hat kein Polygon (mit einem outerBoundaryIs-LinearRing) und keinen geschlossenen LineString</translation>
     </message>
     <message>
         <source>the document has no Polygon or closed LineString</source>
-        <translation type="unfinished"></translation>
+        <translation>das Dokument hat kein Polygon und keinen geschlossenen LineString</translation>
     </message>
     <message>
         <source>The file holds %1 closed shapes; the one at line %2 was imported.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Datei enthält %1 geschlossene Formen; die in Zeile %2 wurde importiert.</translation>
     </message>
     <message>
         <source>Flight path</source>
-        <translation type="unfinished"></translation>
+        <translation>Flugweg</translation>
     </message>
     <message>
         <source>Flight path, part %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Flugweg, Teil %1</translation>
     </message>
 </context>
 <context>
     <name>KmlZones</name>
     <message>
         <source>bad coordinate &quot;%1&quot;: expected longitude,latitude[,altitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>ungültige Koordinate „%1“: Länge,Breite[,Höhe] erwartet</translation>
     </message>
     <message>
         <source>coordinate &quot;%1&quot; is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>Koordinate „%1“ liegt außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
         <source>a boundary needs at least 3 distinct coordinates, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Begrenzung braucht mindestens 3 verschiedene Koordinaten, gefunden: %1</translation>
     </message>
     <message>
         <source>line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeile %1: %2</translation>
     </message>
     <message>
         <source>line %1: a polygon with two outer boundaries</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeile %1: ein Polygon mit zwei äußeren Begrenzungen</translation>
     </message>
     <message>
         <source>line %1: an inner boundary before the outer one</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeile %1: eine innere Begrenzung vor der äußeren</translation>
     </message>
     <message>
         <source>Placemark %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Placemark %1</translation>
     </message>
     <message>
         <source>Placemark &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Placemark „%1“</translation>
     </message>
     <message>
         <source>a Polygon without an outer boundary</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Polygon ohne äußere Begrenzung</translation>
     </message>
     <message>
         <source>%1 (line %2) was left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (Zeile %2) wurde ausgelassen: %3</translation>
     </message>
     <message>
         <source>not well-formed KML: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kein wohlgeformtes KML: %1</translation>
     </message>
 </context>
 <context>
     <name>LandOutlines</name>
     <message>
         <source>the land outline file is not compressed data</source>
-        <translation type="unfinished"></translation>
+        <translation>die Landumriss-Datei enthält keine komprimierten Daten</translation>
     </message>
     <message>
         <source>the land outline file does not start with %1</source>
-        <translation type="unfinished"></translation>
+        <translation>die Landumriss-Datei beginnt nicht mit %1</translation>
     </message>
     <message>
         <source>the land outline file is truncated at its polygon count</source>
-        <translation type="unfinished"></translation>
+        <translation>die Landumriss-Datei ist bei der Polygonanzahl abgeschnitten</translation>
     </message>
     <message>
         <source>the land outline file is truncated in polygon %1</source>
-        <translation type="unfinished"></translation>
+        <translation>die Landumriss-Datei ist in Polygon %1 abgeschnitten</translation>
     </message>
     <message>
         <source>the land outline file is truncated in polygon %1, ring %2</source>
-        <translation type="unfinished"></translation>
+        <translation>die Landumriss-Datei ist in Polygon %1, Ring %2 abgeschnitten</translation>
     </message>
     <message>
         <source>the built-in land outlines (%1) are missing</source>
-        <translation type="unfinished"></translation>
+        <translation>die eingebauten Landumrisse (%1) fehlen</translation>
     </message>
 </context>
 <context>
@@ -1432,7 +1433,7 @@
     </message>
     <message>
         <source>The language of Sortie, applied at once</source>
-        <translation type="unfinished"></translation>
+        <translation>Sprache von Sortie, sofort wirksam</translation>
     </message>
 </context>
 <context>
@@ -1474,15 +1475,15 @@
     </message>
     <message>
         <source>Orthophoto over the base map (GeoTIFF or any raster GDAL reads, any CRS)</source>
-        <translation type="unfinished"></translation>
+        <translation>Orthofoto über der Grundkarte (GeoTIFF oder jedes Raster, das GDAL liest, beliebiges Koordinatensystem)</translation>
     </message>
     <message>
         <source>/path/to/orthophoto.tif (empty: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>/pfad/zu/orthofoto.tif (leer: keins)</translation>
     </message>
     <message>
         <source>Opacity</source>
-        <translation type="unfinished"></translation>
+        <translation>Deckkraft</translation>
     </message>
     <message>
         <source>%1 %</source>
@@ -1490,82 +1491,82 @@
     </message>
     <message>
         <source>Terrain: a DEM file (GeoTIFF, .hgt, ...) or a folder of them</source>
-        <translation type="unfinished"></translation>
+        <translation>Gelände: eine DEM-Datei (GeoTIFF, .hgt, ...) oder ein Ordner davon</translation>
     </message>
     <message>
         <source>/path/to/dem.tif or /path/to/dem-folder (empty: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>/pfad/zu/dem.tif oder /pfad/zu/dem-ordner (leer: keins)</translation>
     </message>
 </context>
 <context>
     <name>MavlinkExport</name>
     <message>
         <source>MAVLink has no stop-and-turn or bank-turn waypoints: they were written as plain waypoints.</source>
-        <translation type="unfinished"></translation>
+        <translation>MAVLink kennt keine Stop-and-Turn- oder Bank-Turn-Wegpunkte: Sie wurden als einfache Wegpunkte geschrieben.</translation>
     </message>
     <message>
         <source>Waypoint %1: %2 has no MAVLink equivalent and was left out.</source>
-        <translation type="unfinished"></translation>
+        <translation>Wegpunkt %1: Für %2 gibt es in MAVLink keine Entsprechung; die Aktion wurde ausgelassen.</translation>
     </message>
     <message>
         <source>a servo action without its servo and PWM</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Servo-Aktion ohne Servo und PWM</translation>
     </message>
     <message>
         <source>a repeated servo without its count and cycle time</source>
-        <translation type="unfinished"></translation>
+        <translation>ein wiederholtes Servo ohne Anzahl und Zykluszeit</translation>
     </message>
     <message>
         <source>waiting for the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>das Warten auf den Bediener</translation>
     </message>
     <message>
         <source>a heading relative to the course</source>
-        <translation type="unfinished"></translation>
+        <translation>einen Kurs relativ zur Flugrichtung</translation>
     </message>
     <message>
         <source>toggling video</source>
-        <translation type="unfinished"></translation>
+        <translation>das Umschalten des Videos</translation>
     </message>
     <message>
         <source>the series&apos; start delay</source>
-        <translation type="unfinished"></translation>
+        <translation>die Startverzögerung der Serie</translation>
     </message>
     <message>
         <source>the series&apos; shot count and start delay</source>
-        <translation type="unfinished"></translation>
+        <translation>die Aufnahmeanzahl und Startverzögerung der Serie</translation>
     </message>
     <message>
         <source>a panorama</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Panorama</translation>
     </message>
     <message>
         <source>Waypoint %1: the gimbal&apos;s %2 was not set and is written as 0° (MAVLink has no &quot;unchanged&quot;).</source>
-        <translation type="unfinished"></translation>
+        <translation>Wegpunkt %1: Am Gimbal ist %2 nicht gesetzt und wird als 0° geschrieben (MAVLink kennt kein „unverändert“).</translation>
     </message>
     <message>
         <source>a zoom level</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Zoomstufe</translation>
     </message>
     <message>
         <source>%1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 wurde ausgelassen: %2</translation>
     </message>
     <message>
         <source>it cannot be planned</source>
-        <translation type="unfinished"></translation>
+        <translation>es kann nicht geplant werden</translation>
     </message>
     <message>
         <source>Segments without a MAVLink equivalent (circle, perimeter...) were written as the waypoints Sortie plans for them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Segmente ohne MAVLink-Entsprechung (Kreis, Umfangsflug...) wurden als die Wegpunkte geschrieben, die Sortie für sie plant.</translation>
     </message>
     <message>
         <source>Area scan %1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Flächenscan %1 wurde ausgelassen: %2</translation>
     </message>
     <message>
         <source>Area scan %1 was written as %2 waypoints with distance triggering.</source>
-        <translation type="unfinished"></translation>
+        <translation>Flächenscan %1 wurde als %2 Wegpunkte mit streckenabhängiger Auslösung geschrieben.</translation>
     </message>
 </context>
 <context>
@@ -1634,103 +1635,103 @@
     <name>MissionDifference</name>
     <message numerus="yes">
         <source>the vehicle holds %n waypoint(s), %1 were sent</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>das Fahrzeug enthält %n Wegpunkt, gesendet wurden %1</numerusform>
+            <numerusform>das Fahrzeug enthält %n Wegpunkte, gesendet wurden %1</numerusform>
         </translation>
     </message>
     <message>
         <source>waypoint %1: </source>
-        <translation type="unfinished"></translation>
+        <translation>Wegpunkt %1: </translation>
     </message>
     <message>
         <source>the vehicle holds another position</source>
-        <translation type="unfinished"></translation>
+        <translation>das Fahrzeug enthält eine andere Position</translation>
     </message>
     <message>
         <source>altitude %1 m, sent %2 m</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe %1 m, gesendet %2 m</translation>
     </message>
     <message>
         <source>speed %1 m/s, sent %2 m/s</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit %1 m/s, gesendet %2 m/s</translation>
     </message>
     <message>
         <source>acceptance radius %1 m, sent %2 m</source>
-        <translation type="unfinished"></translation>
+        <translation>Akzeptanzradius %1 m, gesendet %2 m</translation>
     </message>
     <message numerus="yes">
         <source>%n action(s), sent %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Aktion, gesendet %1</numerusform>
+            <numerusform>%n Aktionen, gesendet %1</numerusform>
         </translation>
     </message>
     <message>
         <source>action %1 (%2) differs</source>
-        <translation type="unfinished"></translation>
+        <translation>Aktion %1 (%2) weicht ab</translation>
     </message>
 </context>
 <context>
     <name>MissionError</name>
     <message>
         <source>(at %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>(bei %1)</translation>
     </message>
 </context>
 <context>
     <name>MissionFiles</name>
     <message>
         <source>cannot open: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kann nicht geöffnet werden: %1</translation>
     </message>
     <message>
         <source>the file is larger than 256 MiB</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei ist größer als 256 MiB</translation>
     </message>
     <message>
         <source>unknown file type: use .sortie, .plan, .waypoints, .kml or .kmz</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter Dateityp: Verwenden Sie .sortie, .plan, .waypoints, .kml oder .kmz</translation>
     </message>
     <message>
         <source>Sortie mission</source>
-        <translation type="unfinished"></translation>
+        <translation>Sortie-Mission</translation>
     </message>
     <message>
         <source>QGroundControl plan</source>
-        <translation type="unfinished"></translation>
+        <translation>QGroundControl-Plan</translation>
     </message>
     <message>
         <source>QGC WPL 110 waypoints</source>
-        <translation type="unfinished"></translation>
+        <translation>Wegpunkte (QGC WPL 110)</translation>
     </message>
     <message>
         <source>DJI WPML</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI WPML</translation>
     </message>
     <message>
         <source>a KML file holds a polygon, not a mission: import it as an area-scan boundary</source>
-        <translation type="unfinished"></translation>
+        <translation>eine KML-Datei enthält ein Polygon, keine Mission: Importieren Sie es als Begrenzung eines Flächenscans</translation>
     </message>
     <message>
         <source>the mission has no route %1 (it has %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>die Mission hat keine Route %1 (sie hat %2)</translation>
     </message>
     <message>
         <source>the mission has no route to write</source>
-        <translation type="unfinished"></translation>
+        <translation>die Mission hat keine Route zum Schreiben</translation>
     </message>
     <message>
         <source>the mission has %1 routes and a %2 file holds one: choose the route to write (sortie-plan convert --route N), or write .sortie or DJI WPML (.kmz), which hold them all</source>
-        <translation type="unfinished"></translation>
+        <translation>die Mission hat %1 Routen, und eine %2-Datei fasst eine: Wählen Sie die zu schreibende Route (sortie-plan convert --route N), oder schreiben Sie .sortie oder DJI WPML (.kmz), die alle fassen</translation>
     </message>
     <message>
         <source>Saving route &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Speichern der Route „%1“</translation>
     </message>
     <message>
         <source>cannot write: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kann nicht geschrieben werden: %1</translation>
     </message>
 </context>
 <context>
@@ -1772,103 +1773,103 @@
     <name>NfzConversion</name>
     <message>
         <source>its baseAltitude is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>ihre baseAltitude ist keine Zahl</translation>
     </message>
     <message>
         <source>its height %1 m is not a height (it must be 0 or more)</source>
-        <translation type="unfinished"></translation>
+        <translation>ihre Höhe %1 m ist keine gültige Höhe (sie muss 0 oder mehr betragen)</translation>
     </message>
     <message>
         <source>point %1 of its prism is not a position (latitude and longitude in radians)</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt %1 ihres Prismas ist keine Position (Breite und Länge in Radiant)</translation>
     </message>
     <message numerus="yes">
         <source>its prism has %n corner(s); a polygon needs 3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>ihr Prisma hat %n Ecke; ein Polygon braucht 3</numerusform>
+            <numerusform>ihr Prisma hat %n Ecken; ein Polygon braucht 3</numerusform>
         </translation>
     </message>
     <message>
         <source>its cone frustum has no centre (baseLatitude, baseLongitude in radians)</source>
-        <translation type="unfinished"></translation>
+        <translation>ihr Kegelstumpf hat keinen Mittelpunkt (baseLatitude, baseLongitude in Radiant)</translation>
     </message>
     <message>
         <source>its cone frustum&apos;s radii (base %1 m, top %2 m) are not a circle</source>
-        <translation type="unfinished"></translation>
+        <translation>die Radien ihres Kegelstumpfs (unten %1 m, oben %2 m) ergeben keinen Kreis</translation>
     </message>
     <message>
         <source>its cone frustum has two radii but no height</source>
-        <translation type="unfinished"></translation>
+        <translation>ihr Kegelstumpf hat zwei Radien, aber keine Höhe</translation>
     </message>
     <message>
         <source>its floor (%1) and ceiling (%2) are in different references; a server zone has one</source>
-        <translation type="unfinished"></translation>
+        <translation>ihre Untergrenze (%1) und Obergrenze (%2) haben verschiedene Bezüge; eine Serverzone hat einen</translation>
     </message>
     <message>
         <source>its heights are above home; a server zone&apos;s are AMSL or AGL</source>
-        <translation type="unfinished"></translation>
+        <translation>ihre Höhen beziehen sich auf den Home-Punkt; die einer Serverzone sind AMSL oder AGL</translation>
     </message>
     <message>
         <source>it starts from the ground with an AMSL ceiling; give it an AMSL floor or an AGL ceiling</source>
-        <translation type="unfinished"></translation>
+        <translation>sie beginnt am Boden mit einer AMSL-Obergrenze; geben Sie ihr eine AMSL-Untergrenze oder eine AGL-Obergrenze</translation>
     </message>
     <message>
         <source>NoFlightZone %1</source>
-        <translation type="unfinished"></translation>
+        <translation>NoFlightZone %1</translation>
     </message>
     <message>
         <source>UgCS server, NoFlightZone %1</source>
-        <translation type="unfinished"></translation>
+        <translation>UgCS-Server, NoFlightZone %1</translation>
     </message>
     <message>
         <source>it has both a prism and a cone frustum</source>
-        <translation type="unfinished"></translation>
+        <translation>sie hat sowohl ein Prisma als auch einen Kegelstumpf</translation>
     </message>
     <message>
         <source>it has no volume (neither a prism nor a cone frustum)</source>
-        <translation type="unfinished"></translation>
+        <translation>sie hat kein Volumen (weder Prisma noch Kegelstumpf)</translation>
     </message>
     <message>
         <source>its ceiling is below its floor</source>
-        <translation type="unfinished"></translation>
+        <translation>ihre Obergrenze liegt unter ihrer Untergrenze</translation>
     </message>
     <message>
         <source>the server&apos;s no-fly zones keep vehicles out; an inclusion zone cannot be one</source>
-        <translation type="unfinished"></translation>
+        <translation>die Flugverbotszonen des Servers halten Fahrzeuge fern; eine Einschlusszone kann keine davon sein</translation>
     </message>
     <message>
         <source>aerodrome zones are the server&apos;s own; only custom zones are changed</source>
-        <translation type="unfinished"></translation>
+        <translation>Flugplatzzonen gehören dem Server; nur eigene Zonen werden geändert</translation>
     </message>
     <message numerus="yes">
         <source>%n ring(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n Ring</numerusform>
+            <numerusform>%n Ringe</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>a server zone is one polygon without holes (this one has %n part(s), %1)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>eine Serverzone ist ein Polygon ohne Löcher (diese hat %n Teil, %1)</numerusform>
+            <numerusform>eine Serverzone ist ein Polygon ohne Löcher (diese hat %n Teile, %1)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>its polygon has %n corner(s); it needs 3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>ihr Polygon hat %n Ecke; es braucht 3</numerusform>
+            <numerusform>ihr Polygon hat %n Ecken; es braucht 3</numerusform>
         </translation>
     </message>
     <message>
         <source>a cone frustum needs a ceiling</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Kegelstumpf braucht eine Obergrenze</translation>
     </message>
     <message>
         <source>NoFlightZone %1%2 was left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>NoFlightZone %1%2 wurde ausgelassen: %3</translation>
     </message>
 </context>
 <context>
@@ -2173,171 +2174,171 @@ Ereignisse: %1
     <name>QgcFenceJson</name>
     <message>
         <source>expected [latitude, longitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>[Breite, Länge] erwartet</translation>
     </message>
     <message>
         <source>latitude or longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite oder Länge außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
         <source>expected [latitude, longitude, altitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>[Breite, Länge, Höhe] erwartet</translation>
     </message>
     <message>
         <source>%1 at %2 was left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 bei %2 wurde ausgelassen: %3</translation>
     </message>
     <message>
         <source>The %1s at %2 were left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Einträge (%1) bei %2 wurden ausgelassen: %3</translation>
     </message>
     <message>
         <source>Geofence polygon</source>
-        <translation type="unfinished"></translation>
+        <translation>Geofence-Polygon</translation>
     </message>
     <message>
         <source>a polygon needs at least 3 vertices, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Polygon braucht mindestens 3 Eckpunkte, gefunden: %1</translation>
     </message>
     <message>
         <source>Geofence polygon at %1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Geofence-Polygon bei %1 wurde ausgelassen: %2</translation>
     </message>
     <message>
         <source>Geofence circle</source>
-        <translation type="unfinished"></translation>
+        <translation>Geofence-Kreis</translation>
     </message>
     <message>
         <source>the radius must be positive metres</source>
-        <translation type="unfinished"></translation>
+        <translation>der Radius muss eine positive Meterzahl sein</translation>
     </message>
     <message>
         <source>The geofence&apos;s breach return point at %1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Rückkehrpunkt des Geofence für Verletzungen bei %1 wurde ausgelassen: %2</translation>
     </message>
     <message>
         <source>Rally point</source>
-        <translation type="unfinished"></translation>
+        <translation>Sammelpunkt</translation>
     </message>
 </context>
 <context>
     <name>QgcPlanFormat</name>
     <message>
         <source>expected 7 params (or 4 and a &quot;coordinate&quot;), found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>7 params (oder 4 und eine „coordinate“) erwartet, gefunden: %1</translation>
     </message>
     <message>
         <source>not a QGroundControl plan (fileType is not &quot;Plan&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>kein QGroundControl-Plan (fileType ist nicht „Plan“)</translation>
     </message>
     <message>
         <source>plan version %1 is not supported (Sortie reads version 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Plan-Version %1 wird nicht unterstützt (Sortie liest Version 1)</translation>
     </message>
     <message>
         <source>mission version %1 is not supported (Sortie reads version 2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Missions-Version %1 wird nicht unterstützt (Sortie liest Version 2)</translation>
     </message>
     <message>
         <source>the planned home position is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>die geplante Home-Position liegt außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
         <source>complex item &quot;%1&quot; is not supported; Sortie imports surveys, corridor and structure scans</source>
-        <translation type="unfinished"></translation>
+        <translation>komplexes Element „%1“ wird nicht unterstützt; Sortie importiert Surveys, Korridor- und Strukturscans</translation>
     </message>
     <message>
         <source>unknown item type &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter Elementtyp „%1“</translation>
     </message>
     <message>
         <source>A corridor was left out: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Korridor wurde ausgelassen: %1</translation>
     </message>
     <message>
         <source>An area scan was left out: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Flächenscan wurde ausgelassen: %1</translation>
     </message>
     <message>
         <source>The route has no home position: the first point was written as home, at 0 m AMSL.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Route hat keine Home-Position: Der erste Punkt wurde als Home-Punkt geschrieben, auf 0 m AMSL.</translation>
     </message>
 </context>
 <context>
     <name>QgcSurveyJson</name>
     <message>
         <source>latitude/longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite/Länge außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
         <source>a survey polygon needs at least 3 vertices, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Survey-Polygon braucht mindestens 3 Eckpunkte, gefunden: %1</translation>
     </message>
     <message>
         <source>Custom Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>Custom Camera</translation>
     </message>
     <message>
         <source>the survey&apos;s camera has neither a sensor nor footprints</source>
-        <translation type="unfinished"></translation>
+        <translation>die Kamera des Surveys hat weder einen Sensor noch Abdeckungen</translation>
     </message>
     <message>
         <source>%1: the survey&apos;s manual camera was replaced by one with the same footprints</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Die manuelle Kamera des Surveys wurde durch eine mit denselben Abdeckungen ersetzt</translation>
     </message>
     <message>
         <source>a %1 needs at least %2 points, found %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: mindestens %2 Punkte nötig, gefunden: %3</translation>
     </message>
     <message>
         <source>%1: the camera &quot;%2&quot; is not one Sortie knows; it is kept by name, and the server must know it.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Die Kamera „%2“ kennt Sortie nicht; sie wird unter ihrem Namen beibehalten, und der Server muss sie kennen.</translation>
     </message>
     <message>
         <source>the corridor&apos;s camera has no sensor to turn its distance into a ground sample distance</source>
-        <translation type="unfinished"></translation>
+        <translation>die Kamera des Korridors hat keinen Sensor, um ihren Abstand in eine Bodenauflösung umzurechnen</translation>
     </message>
     <message>
         <source>corridor centre line</source>
-        <translation type="unfinished"></translation>
+        <translation>Korridor-Mittellinie</translation>
     </message>
     <message>
         <source>structure polygon</source>
-        <translation type="unfinished"></translation>
+        <translation>Strukturpolygon</translation>
     </message>
     <message>
         <source>%1: the structure scan became a perimeter flight at %2 m%3.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Der Strukturscan wurde zu einem Umfangsflug auf %2 m%3.</translation>
     </message>
     <message>
         <source>, its %1 layers as %1 loops at one height</source>
-        <translation type="unfinished"></translation>
+        <translation>, seine %1 Ebenen als %1 Runden auf einer Höhe</translation>
     </message>
 </context>
 <context>
     <name>RemoveSegmentsCommand</name>
     <message>
         <source>Delete %1</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 löschen</translation>
     </message>
     <message>
         <source>Delete %1 rows</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Zeilen löschen</translation>
     </message>
 </context>
 <context>
     <name>ReorderSegmentsCommand</name>
     <message>
         <source>Move row %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeile %1 verschieben</translation>
     </message>
     <message>
         <source>Move %1 rows</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 Zeilen verschieben</translation>
     </message>
     <message>
         <source>Reverse rows %1-%2</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeilen %1-%2 umkehren</translation>
     </message>
 </context>
 <context>
@@ -2518,19 +2519,19 @@ Ereignisse: %1
     </message>
     <message>
         <source>safe altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Sicherheitshöhe</translation>
     </message>
     <message>
         <source>m</source>
-        <translation type="unfinished"></translation>
+        <translation>m</translation>
     </message>
     <message>
         <source>maximum altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Maximalhöhe</translation>
     </message>
     <message>
         <source>initial speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Anfangsgeschwindigkeit</translation>
     </message>
     <message>
         <source>m/s</source>
@@ -2538,15 +2539,15 @@ Ereignisse: %1
     </message>
     <message>
         <source>maximum speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Höchstgeschwindigkeit</translation>
     </message>
     <message>
         <source>corner radius</source>
-        <translation type="unfinished"></translation>
+        <translation>Kurvenradius</translation>
     </message>
     <message>
         <source>takeoff height</source>
-        <translation type="unfinished"></translation>
+        <translation>Starthöhe</translation>
     </message>
     <message>
         <source>vehicle profile %1 → %2</source>
@@ -2590,11 +2591,11 @@ Ereignisse: %1
     </message>
     <message>
         <source>aerodrome zone check</source>
-        <translation type="unfinished"></translation>
+        <translation>Prüfung der Flugplatzzonen</translation>
     </message>
     <message>
         <source>custom zone check</source>
-        <translation type="unfinished"></translation>
+        <translation>Prüfung eigener Zonen</translation>
     </message>
     <message>
         <source>%1 removed</source>
@@ -2670,7 +2671,7 @@ Ereignisse: %1
     </message>
     <message>
         <source>altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe</translation>
     </message>
     <message>
         <source>altitude of %1 now %2</source>
@@ -2686,23 +2687,23 @@ Ereignisse: %1
     </message>
     <message>
         <source>front overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>Längsüberlappung</translation>
     </message>
     <message>
         <source>side overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>Querüberlappung</translation>
     </message>
     <message>
         <source>direction</source>
-        <translation type="unfinished"></translation>
+        <translation>Richtung</translation>
     </message>
     <message>
         <source>turnaround</source>
-        <translation type="unfinished"></translation>
+        <translation>Wendestrecke</translation>
     </message>
     <message>
         <source>speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Geschwindigkeit</translation>
     </message>
     <message>
         <source>camera of %1 %2 → %3</source>
@@ -2717,11 +2718,11 @@ Ereignisse: %1
     <name>RouteEndurance</name>
     <message>
         <source>No energy profile: choose the vehicle&apos;s profile file</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Energieprofil: Wählen Sie die Profildatei des Fahrzeugs</translation>
     </message>
     <message>
         <source>The route has no points</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Route hat keine Punkte</translation>
     </message>
 </context>
 <context>
@@ -3002,57 +3003,57 @@ Ereignisse: %1
     <name>RouteValidator</name>
     <message>
         <source>%1: the position is not valid.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Die Position ist ungültig.</translation>
     </message>
     <message>
         <source>The route needs at least two points; it has %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Route braucht mindestens zwei Punkte; sie hat %1.</translation>
     </message>
     <message numerus="yes">
         <source>%n AMSL altitude(s), the first at %1, were not checked against the route&apos;s limits: the take-off elevation is unknown.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n AMSL-Höhe (bei %1) wurde nicht gegen die Grenzen der Route geprüft: Die Geländehöhe am Startpunkt ist unbekannt.</numerusform>
+            <numerusform>%n AMSL-Höhen, die erste bei %1, wurden nicht gegen die Grenzen der Route geprüft: Die Geländehöhe am Startpunkt ist unbekannt.</numerusform>
         </translation>
     </message>
     <message>
         <source>%1: altitude %2 is above the route&apos;s maximum of %3 m.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Höhe %2 liegt über der Maximalhöhe der Route von %3 m.</translation>
     </message>
     <message>
         <source>%1: altitude %2 is below the route&apos;s safe altitude of %3 m.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Höhe %2 liegt unter der Sicherheitshöhe der Route von %3 m.</translation>
     </message>
     <message>
         <source>%1: the speed must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Die Geschwindigkeit muss positiv sein.</translation>
     </message>
     <message>
         <source>%1: speed %2 m/s is above the vehicle&apos;s limit of %3 m/s.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Geschwindigkeit %2 m/s liegt über der Grenze des Fahrzeugs von %3 m/s.</translation>
     </message>
     <message>
         <source>%1: Sortie does not know the algorithm %2; the server checks it when it processes the route.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Sortie kennt den Algorithmus %2 nicht; der Server prüft ihn, wenn er die Route verarbeitet.</translation>
     </message>
     <message>
         <source>%1 repeats %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 wiederholt %2.</translation>
     </message>
     <message>
         <source>%1 is %2 but %3 is %4: the climb between them is not estimated.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ist %2, aber %3 ist %4: Der Steigflug dazwischen wird nicht abgeschätzt.</translation>
     </message>
     <message>
         <source>The route</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Route</translation>
     </message>
 </context>
 <context>
     <name>SbsFeed</name>
     <message>
         <source>line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Zeile %1: %2</translation>
     </message>
 </context>
 <context>
@@ -3086,42 +3087,42 @@ Ereignisse: %1
     </message>
     <message>
         <source>m</source>
-        <translation type="unfinished"></translation>
+        <translation>m</translation>
     </message>
 </context>
 <context>
     <name>SegmentEditorModel</name>
     <message>
         <source>Acceptance radius</source>
-        <translation type="unfinished"></translation>
+        <translation>Akzeptanzradius</translation>
     </message>
     <message>
         <source>Sensor width (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sensorbreite (mm)</translation>
     </message>
     <message>
         <source>Sensor height (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sensorhöhe (mm)</translation>
     </message>
     <message>
         <source>Focal length (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Brennweite (mm)</translation>
     </message>
     <message>
         <source>Image width (px)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bildbreite (px)</translation>
     </message>
     <message>
         <source>Image height (px)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bildhöhe (px)</translation>
     </message>
     <message>
         <source>Height</source>
-        <translation type="unfinished"></translation>
+        <translation>Höhe</translation>
     </message>
     <message>
         <source>Side distance (0: from the camera)</source>
-        <translation type="unfinished"></translation>
+        <translation>Bahnabstand (0: aus der Kamera)</translation>
     </message>
 </context>
 <context>
@@ -3132,97 +3133,97 @@ Ereignisse: %1
     </message>
     <message>
         <source>%1 must be from %2 to %3%4.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 muss im Bereich %2 bis %3%4 liegen.</translation>
     </message>
     <message>
         <source>altitudeType is AGL or AMSL, not &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>altitudeType ist AGL oder AMSL, nicht „%1“.</translation>
     </message>
     <message>
         <source>camera needs a name.</source>
-        <translation type="unfinished"></translation>
+        <translation>camera braucht einen Namen.</translation>
     </message>
     <message>
         <source>An area scan has no parameter &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Flächenscan hat keinen Parameter „%1“.</translation>
     </message>
     <message>
         <source>wpTurnType is STOP_AND_TURN, STRAIGHT, SPLINE or BANK_TURN, not &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>wpTurnType ist STOP_AND_TURN, STRAIGHT, SPLINE oder BANK_TURN, nicht „%1“.</translation>
     </message>
     <message>
         <source>A waypoint has no parameter &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein Wegpunkt hat keinen Parameter „%1“.</translation>
     </message>
     <message>
         <source>%1 has no parameter &quot;%2&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 hat keinen Parameter „%2“.</translation>
     </message>
     <message>
         <source>%1 cannot take that value.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann diesen Wert nicht annehmen.</translation>
     </message>
     <message>
         <source>%1 is true or false, not &quot;%2&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ist true oder false, nicht „%2“.</translation>
     </message>
 </context>
 <context>
     <name>SegmentPlanner</name>
     <message>
         <source>The segment has no point</source>
-        <translation type="unfinished"></translation>
+        <translation>Das Segment hat keinen Punkt</translation>
     </message>
     <message>
         <source>Point 1 is not a position on the globe</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt 1 ist keine Position auf dem Globus</translation>
     </message>
     <message>
         <source>The circle has no centre point</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Kreis hat keinen Mittelpunkt</translation>
     </message>
     <message>
         <source>The circle&apos;s centre is not a position on the globe</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Mittelpunkt des Kreises ist keine Position auf dem Globus</translation>
     </message>
     <message>
         <source>The circle needs a positive radius (metres, the figure&apos;s first parameter)</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Kreis braucht einen positiven Radius (Meter, der erste Parameter der Figur)</translation>
     </message>
     <message>
         <source>The circle&apos;s radius of %1 m is over the %2 m a segment may span</source>
-        <translation type="unfinished"></translation>
+        <translation>Der Kreisradius von %1 m übersteigt die %2 m, die ein Segment umfassen darf</translation>
     </message>
     <message>
         <source>loops: %1 laps of %2 points are too many</source>
-        <translation type="unfinished"></translation>
+        <translation>loops: %1 Runden mit je %2 Punkten sind zu viele</translation>
     </message>
     <message numerus="yes">
         <source>Orbit of %1 m radius: %n lap(s) of %2 points, %3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Kreisflug mit %1 m Radius: %n Runde mit %2 Punkten, %3</numerusform>
+            <numerusform>Kreisflug mit %1 m Radius: %n Runden mit je %2 Punkten, %3</numerusform>
         </translation>
     </message>
     <message>
         <source>clockwise</source>
-        <translation type="unfinished"></translation>
+        <translation>im Uhrzeigersinn</translation>
     </message>
     <message>
         <source>counter-clockwise</source>
-        <translation type="unfinished"></translation>
+        <translation>gegen den Uhrzeigersinn</translation>
     </message>
     <message>
         <source>Point %1 is not a position on the globe (latitude and longitude in range)</source>
-        <translation type="unfinished"></translation>
+        <translation>Punkt %1 ist keine Position auf dem Globus (Breite und Länge im gültigen Bereich)</translation>
     </message>
     <message>
         <source>speed: the segment needs a positive speed</source>
-        <translation type="unfinished"></translation>
+        <translation>speed: Das Segment braucht eine positive Geschwindigkeit</translation>
     </message>
     <message>
         <source>No planner knows the algorithm &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Kein Planer kennt den Algorithmus „%1“</translation>
     </message>
 </context>
 <context>
@@ -3236,39 +3237,39 @@ Ereignisse: %1
     <name>ServerAddress</name>
     <message>
         <source>the server address is empty (expected host:port)</source>
-        <translation type="unfinished"></translation>
+        <translation>die Serveradresse ist leer (erwartet: Host:Port)</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is a URL: give the server as host:port, e.g. localhost:3334</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist eine URL: Geben Sie den Server als Host:Port an, z. B. localhost:3334</translation>
     </message>
     <message>
         <source>&quot;%1&quot; opens an IPv6 address with [ but never closes it</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ öffnet eine IPv6-Adresse mit [, schließt sie aber nie</translation>
     </message>
     <message>
         <source>&quot;%1&quot; has text after the IPv6 address that is not :port</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ hat nach der IPv6-Adresse Text, der nicht :Port ist</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not an IPv6 address</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist keine IPv6-Adresse</translation>
     </message>
     <message>
         <source>write an IPv6 server address in brackets: [%1]:3334</source>
-        <translation type="unfinished"></translation>
+        <translation>Schreiben Sie eine IPv6-Serveradresse in eckigen Klammern: [%1]:3334</translation>
     </message>
     <message>
         <source>&quot;%1&quot; has no host name</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ hat keinen Hostnamen</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a host name (expected host:port, e.g. localhost:3334)</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist kein Hostname (erwartet: Host:Port, z. B. localhost:3334)</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a port number (1 to 65535)</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist keine Portnummer (1 bis 65535)</translation>
     </message>
 </context>
 <context>
@@ -3310,26 +3311,26 @@ Ereignisse: %1
     <name>ServerZoneReply</name>
     <message>
         <source>the server gave no reason</source>
-        <translation type="unfinished"></translation>
+        <translation>der Server hat keinen Grund genannt</translation>
     </message>
 </context>
 <context>
     <name>SetNfzChecksCommand</name>
     <message>
         <source>Check aerodrome zones</source>
-        <translation type="unfinished"></translation>
+        <translation>Flugplatzzonen prüfen</translation>
     </message>
     <message>
         <source>Do not check aerodrome zones</source>
-        <translation type="unfinished"></translation>
+        <translation>Flugplatzzonen nicht prüfen</translation>
     </message>
     <message>
         <source>Check custom zones</source>
-        <translation type="unfinished"></translation>
+        <translation>Eigene Zonen prüfen</translation>
     </message>
     <message>
         <source>Do not check custom zones</source>
-        <translation type="unfinished"></translation>
+        <translation>Eigene Zonen nicht prüfen</translation>
     </message>
 </context>
 <context>
@@ -3446,59 +3447,59 @@ Ereignisse: %1
     <name>SortieFormat</name>
     <message>
         <source>not a valid UgCS %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kein gültiges UgCS-%1</translation>
     </message>
     <message>
         <source>missing &quot;AGL&quot; or &quot;AMSL&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>„AGL“ oder „AMSL“ fehlt</translation>
     </message>
     <message>
         <source>expected &quot;AGL&quot; or &quot;AMSL&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>„AGL“ oder „AMSL“ erwartet</translation>
     </message>
     <message>
         <source>unknown value &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter Wert „%1“</translation>
     </message>
     <message>
         <source>latitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
         <source>longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>Länge außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
         <source>latitude/longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>Breite/Länge außerhalb des gültigen Bereichs</translation>
     </message>
     <message>
         <source>expected &quot;altitude&quot; or &quot;groundSampleDistance&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>„altitude“ oder „groundSampleDistance“ erwartet</translation>
     </message>
     <message>
         <source>no figure type %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kein Figurtyp %1</translation>
     </message>
     <message>
         <source>unknown segment type &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter Segmenttyp „%1“</translation>
     </message>
     <message>
         <source>expected &quot;none&quot; or &quot;returnHome&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>„none“ oder „returnHome“ erwartet</translation>
     </message>
     <message>
         <source>not a Sortie mission file (&quot;format&quot; is not &quot;sortie-mission&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Sortie-Missionsdatei („format“ ist nicht „sortie-mission“)</translation>
     </message>
     <message>
         <source>schema version %1 does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>Schema-Version %1 gibt es nicht</translation>
     </message>
     <message>
         <source>written by a newer Sortie (schema %1); this one reads up to schema %2</source>
-        <translation type="unfinished"></translation>
+        <translation>von einer neueren Sortie-Version geschrieben (Schema %1); diese liest bis Schema %2</translation>
     </message>
 </context>
 <context>
@@ -3599,77 +3600,77 @@ Ereignisse: %1
     <name>TerrainFollow</name>
     <message>
         <source>Waiting for terrain data from %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Warten auf Geländedaten von %1</translation>
     </message>
     <message>
         <source>No terrain data %1 m along the pass (tried: %2): terrain following needs the ground everywhere</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Geländedaten bei %1 m entlang der Bahn (versucht: %2): Geländefolgeflug braucht überall Geländedaten</translation>
     </message>
 </context>
 <context>
     <name>TerrainProfile</name>
     <message>
         <source>%1, point %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, Punkt %2</translation>
     </message>
     <message>
         <source>Waypoint %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Wegpunkt %1</translation>
     </message>
     <message>
         <source>Leg %1 (%2 → %3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Teilstrecke %1 (%2 → %3)</translation>
     </message>
 </context>
 <context>
     <name>TerrainRule</name>
     <message>
         <source>Waypoint %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Wegpunkt %1</translation>
     </message>
     <message>
         <source>%1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 bis %2</translation>
     </message>
     <message>
         <source>%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height above sea level is unknown.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Die Höhe ist über %2 angegeben, aber %3 gibt es keine Geländedaten (versucht: %4), daher ist die Höhe über dem Meeresspiegel unbekannt.</translation>
     </message>
     <message>
         <source>the ground</source>
-        <translation type="unfinished"></translation>
+        <translation>Grund</translation>
     </message>
     <message>
         <source>at home</source>
-        <translation type="unfinished"></translation>
+        <translation>am Home-Punkt</translation>
     </message>
     <message>
         <source>%1 m above the ground</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 m über Grund</translation>
     </message>
     <message>
         <source>%1 m below the ground</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 m unter Grund</translation>
     </message>
     <message>
         <source> (too low from %1 m to %2 m along it)</source>
-        <translation type="unfinished"></translation>
+        <translation> (zu tief von %1 m bis %2 m entlang der Teilstrecke)</translation>
     </message>
     <message>
         <source>%1 flies %2 at %3 m along it%4, closer than the safe distance of %5 m.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 fliegt %3 m nach ihrem Beginn %2%4, näher als der Sicherheitsabstand von %5 m.</translation>
     </message>
     <message>
         <source>%1: no terrain data from %2 m to %3 m along it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: keine Geländedaten von %2 m bis %3 m entlang der Teilstrecke</translation>
     </message>
     <message>
         <source>No terrain data from %1 m along %2 to %3 m along %4</source>
-        <translation type="unfinished"></translation>
+        <translation>Keine Geländedaten von %1 m auf %2 bis %3 m auf %4</translation>
     </message>
     <message>
         <source>%1 (tried: %2); the clearance there is not checked.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (versucht: %2); der Bodenabstand wird dort nicht geprüft.</translation>
     </message>
 </context>
 <context>
@@ -3695,11 +3696,11 @@ Ereignisse: %1
     <name>TilePrefetch</name>
     <message>
         <source>Sortie/%1 (drone ground station)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sortie/%1 (drone ground station)</translation>
     </message>
     <message>
         <source>HTTP %1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>HTTP %1 %2</translation>
     </message>
 </context>
 <context>
@@ -3752,9 +3753,9 @@ Ereignisse: %1
     </message>
     <message numerus="yes">
         <source>%1 (and %n more error(s)) Fix them before %2.</source>
-        <translation type="unfinished">
-            <numerusform>%1 (und weitere Fehler: %n) Bitte vor dem %2 beheben.</numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 (und %n weiterer Fehler) Bitte vor dem %2 beheben.</numerusform>
+            <numerusform>%1 (und %n weitere Fehler) Bitte vor dem %2 beheben.</numerusform>
         </translation>
     </message>
     <message>
@@ -3771,9 +3772,9 @@ Ereignisse: %1
     </message>
     <message numerus="yes">
         <source>The route has %n warning(s):</source>
-        <translation type="unfinished">
-            <numerusform>Die Route hat %n Warnung(en):</numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Die Route hat %n Warnung:</numerusform>
+            <numerusform>Die Route hat %n Warnungen:</numerusform>
         </translation>
     </message>
     <message>
@@ -3793,9 +3794,9 @@ Ereignisse: %1
     <name>ValidationGate</name>
     <message numerus="yes">
         <source>%1 refused: the route has %n validation error(s). %2 Fix them, or override explicitly.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 abgelehnt: Die Route hat %n Validierungsfehler. %2 Beheben Sie ihn oder übergehen Sie ihn ausdrücklich.</numerusform>
+            <numerusform>%1 abgelehnt: Die Route hat %n Validierungsfehler. %2 Beheben Sie sie oder übergehen Sie sie ausdrücklich.</numerusform>
         </translation>
     </message>
 </context>
@@ -3803,127 +3804,127 @@ Ereignisse: %1
     <name>VciConnection</name>
     <message>
         <source>the connection to the vehicle was closed</source>
-        <translation type="unfinished"></translation>
+        <translation>die Verbindung zum Fahrzeug wurde geschlossen</translation>
     </message>
     <message>
         <source>the device was closed</source>
-        <translation type="unfinished"></translation>
+        <translation>das Gerät wurde geschlossen</translation>
     </message>
     <message>
         <source>the device was destroyed</source>
-        <translation type="unfinished"></translation>
+        <translation>das Gerät wurde zerstört</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a valid VCI URI</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist keine gültige VCI-URI</translation>
     </message>
     <message>
         <source>a ground station does not send NOTIFY</source>
-        <translation type="unfinished"></translation>
+        <translation>eine Bodenstation sendet kein NOTIFY</translation>
     </message>
     <message>
         <source>not connected to the vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Verbindung zum Fahrzeug</translation>
     </message>
     <message>
         <source>no answer in time (it waited behind other requests)</source>
-        <translation type="unfinished"></translation>
+        <translation>keine rechtzeitige Antwort (sie wartete hinter anderen Anfragen)</translation>
     </message>
     <message>
         <source>writing to the vehicle failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Schreiben an das Fahrzeug fehlgeschlagen: %1</translation>
     </message>
     <message>
         <source>the vehicle sent an answer (%1) to no request</source>
-        <translation type="unfinished"></translation>
+        <translation>das Fahrzeug hat eine Antwort (%1) ohne Anfrage gesendet</translation>
     </message>
     <message>
         <source>unreadable message from the vehicle at byte %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>unlesbare Nachricht vom Fahrzeug bei Byte %1: %2</translation>
     </message>
     <message>
         <source>%1: the vehicle answered %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Das Fahrzeug antwortete %2 %3</translation>
     </message>
     <message>
         <source>the vehicle did not answer in time</source>
-        <translation type="unfinished"></translation>
+        <translation>das Fahrzeug hat nicht rechtzeitig geantwortet</translation>
     </message>
 </context>
 <context>
     <name>VciEndpoint</name>
     <message>
         <source>&quot;%1&quot; is not a URL: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist keine URL: %2</translation>
     </message>
     <message>
         <source>&quot;%1&quot; needs a host and a port: tcp://host:port</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ braucht einen Host und einen Port: tcp://host:port</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: use tcp://host:port or serial:/dev/name</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“: Verwenden Sie tcp://host:port oder serial:/dev/name</translation>
     </message>
     <message>
         <source>&quot;%1&quot; names no serial device</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ nennt kein serielles Gerät</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: unknown serial setting &quot;%2&quot; (baud, databits, parity, stopbits, flow)</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“: unbekannte serielle Einstellung „%2“ (baud, databits, parity, stopbits, flow)</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: %2=%3 is not a valid value</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“: %2=%3 ist kein gültiger Wert</translation>
     </message>
     <message>
         <source>serial:%1?baud=%2&amp;databits=%3&amp;parity=%4&amp;stopbits=%5&amp;flow=%6</source>
-        <translation type="unfinished"></translation>
+        <translation>serial:%1?baud=%2&amp;databits=%3&amp;parity=%4&amp;stopbits=%5&amp;flow=%6</translation>
     </message>
 </context>
 <context>
     <name>VciFenceBuilder</name>
     <message>
         <source>zone &apos;%1&apos;: its AGL limits need the ground under it, which no terrain source has; a vehicle cannot be given it</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“: Ihre AGL-Grenzen brauchen das Gelände darunter, das keine Geländequelle hat; sie kann keinem Fahrzeug übergeben werden</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: no ground under it, so its AGL limits were dropped (the vehicle keeps out of the whole column)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“: kein Gelände darunter, daher wurden ihre AGL-Grenzen verworfen (das Fahrzeug hält sich aus der ganzen Säule fern)</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: over ground from %2 to %3 m its AGL limits leave no room in AMSL</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“: Über Gelände von %2 bis %3 m lassen ihre AGL-Grenzen in AMSL keinen Raum</translation>
     </message>
     <message>
         <source>%1 (hole %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (Loch %2)</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: its holes are closed on the vehicle (a fence polygon has none)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“: Ihre Löcher werden auf dem Fahrzeug geschlossen (ein Geofence-Polygon hat keine)</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: a cone that narrows to a point cannot keep a vehicle in</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“: Ein Kegel, der sich zu einem Punkt verengt, kann kein Fahrzeug einschließen</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: its cone is a cylinder of radius %2 m on the vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“: Ihr Kegel wird auf dem Fahrzeug ein Zylinder mit %2 m Radius</translation>
     </message>
     <message>
         <source>route fence</source>
-        <translation type="unfinished"></translation>
+        <translation>Geofence der Route</translation>
     </message>
     <message>
         <source>the fence cannot be sent: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>der Geofence kann nicht gesendet werden: %1</translation>
     </message>
     <message numerus="yes">
         <source>fence: %1 of the route&apos;s own, %n airspace zone(s) near it; on a breach the vehicle will %2</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Geofence: %1 aus der Route, %n Luftraumzone in der Nähe; bei einer Verletzung: %2</numerusform>
+            <numerusform>Geofence: %1 aus der Route, %n Luftraumzonen in der Nähe; bei einer Verletzung: %2</numerusform>
         </translation>
     </message>
     <message>
@@ -3932,111 +3933,111 @@ Ereignisse: %1
     </message>
     <message>
         <source>land</source>
-        <translation type="unfinished"></translation>
+        <translation>Landung</translation>
     </message>
     <message>
         <source>hold</source>
-        <translation type="unfinished"></translation>
+        <translation>Position halten</translation>
     </message>
 </context>
 <context>
     <name>VciMissionPlanner</name>
     <message>
         <source>the route has no waypoints to fly</source>
-        <translation type="unfinished"></translation>
+        <translation>die Route hat keine Wegpunkte zum Fliegen</translation>
     </message>
 </context>
 <context>
     <name>VciTransport</name>
     <message>
         <source>closed by the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>vom Bediener geschlossen</translation>
     </message>
     <message>
         <source>reconnecting at the operator&apos;s request</source>
-        <translation type="unfinished"></translation>
+        <translation>Neuverbindung auf Wunsch des Bedieners</translation>
     </message>
     <message>
         <source>the vehicle closed the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>das Fahrzeug hat die Verbindung geschlossen</translation>
     </message>
     <message>
         <source>cannot open %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 kann nicht geöffnet werden: %2</translation>
     </message>
 </context>
 <context>
     <name>VciVehicleLink</name>
     <message>
         <source>connection to %1 lost: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Verbindung zu %1 verloren: %2</translation>
     </message>
     <message>
         <source>disconnected by the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>vom Bediener getrennt</translation>
     </message>
     <message>
         <source>left its fence &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>hat seinen Geofence „%1“ verlassen</translation>
     </message>
     <message>
         <source>entered the exclusion zone &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>ist in die Ausschlusszone „%1“ eingeflogen</translation>
     </message>
     <message>
         <source>returning home</source>
-        <translation type="unfinished"></translation>
+        <translation>kehrt zum Home-Punkt zurück</translation>
     </message>
     <message>
         <source>action unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>Aktion unbekannt</translation>
     </message>
     <message>
         <source>fence breach: %1; %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Geofence-Verletzung: %1; %2</translation>
     </message>
     <message>
         <source>the ground under the route did not arrive from %1 in %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>die Geländedaten unter der Route kamen nicht innerhalb von %2 s von %1</translation>
     </message>
     <message>
         <source>the vehicle refused the fence: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>das Fahrzeug hat den Geofence abgelehnt: %1</translation>
     </message>
     <message>
         <source>the fence could not be read back: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>der Geofence konnte nicht zurückgelesen werden: %1</translation>
     </message>
     <message>
         <source>the vehicle&apos;s fence cannot be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>der Geofence des Fahrzeugs kann nicht gelesen werden: %1</translation>
     </message>
     <message>
         <source>the vehicle holds another fence than the one sent (%1 items sent, %2 held)</source>
-        <translation type="unfinished"></translation>
+        <translation>das Fahrzeug enthält einen anderen Geofence als den gesendeten (%1 Elemente gesendet, %2 vorhanden)</translation>
     </message>
     <message>
         <source>the vehicle&apos;s mission cannot be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>die Mission des Fahrzeugs kann nicht gelesen werden: %1</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a parameter name</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist kein Parametername</translation>
     </message>
 </context>
 <context>
     <name>Vehicle</name>
     <message>
         <source>mode %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Modus %1</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a flight mode</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist kein Flugmodus</translation>
     </message>
     <message>
         <source>takeoff to %1 m</source>
-        <translation type="unfinished"></translation>
+        <translation>Start auf %1 m</translation>
     </message>
     <message>
         <source>return home</source>
@@ -4047,67 +4048,67 @@ Ereignisse: %1
     <name>WaypointAction</name>
     <message>
         <source>Wait for operator</source>
-        <translation type="unfinished"></translation>
+        <translation>Auf Bediener warten</translation>
     </message>
     <message>
         <source>Wait %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 s warten</translation>
     </message>
     <message>
         <source>Heading %1°%2</source>
-        <translation type="unfinished"></translation>
+        <translation>Kurs %1°%2</translation>
     </message>
     <message>
         <source> from course</source>
-        <translation type="unfinished"></translation>
+        <translation> relativ zur Flugrichtung</translation>
     </message>
     <message>
         <source>Look at %1, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausrichten auf %1, %2</translation>
     </message>
     <message>
         <source>Take photo</source>
-        <translation type="unfinished"></translation>
+        <translation>Foto aufnehmen</translation>
     </message>
     <message>
         <source>Start video</source>
-        <translation type="unfinished"></translation>
+        <translation>Video starten</translation>
     </message>
     <message>
         <source>Stop video</source>
-        <translation type="unfinished"></translation>
+        <translation>Video stoppen</translation>
     </message>
     <message>
         <source>Toggle video</source>
-        <translation type="unfinished"></translation>
+        <translation>Video umschalten</translation>
     </message>
     <message>
         <source>Photo every %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Foto alle %1 s</translation>
     </message>
     <message>
         <source>Photo every %1 m</source>
-        <translation type="unfinished"></translation>
+        <translation>Foto alle %1 m</translation>
     </message>
     <message>
         <source>Stop photos</source>
-        <translation type="unfinished"></translation>
+        <translation>Fotos stoppen</translation>
     </message>
     <message>
         <source>Panorama %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>Panorama %1°</translation>
     </message>
     <message>
         <source>tilt %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>Neigung %1°</translation>
     </message>
     <message>
         <source>roll %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>Rollen %1°</translation>
     </message>
     <message>
         <source>yaw %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>Gieren %1°</translation>
     </message>
     <message>
         <source>zoom %1</source>
@@ -4115,7 +4116,7 @@ Ereignisse: %1
     </message>
     <message>
         <source>Gimbal (nothing set)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gimbal (nichts gesetzt)</translation>
     </message>
 </context>
 <context>
@@ -4216,188 +4217,188 @@ Ereignisse: %1
     <name>WplFormat</name>
     <message>
         <source>not a waypoint file: expected &quot;QGC WPL 110&quot;, found &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>keine Wegpunktdatei: „QGC WPL 110“ erwartet, gefunden: „%1“</translation>
     </message>
     <message>
         <source>unsupported waypoint file version &quot;%1&quot;; Sortie reads QGC WPL 110</source>
-        <translation type="unfinished"></translation>
+        <translation>nicht unterstützte Version der Wegpunktdatei „%1“; Sortie liest QGC WPL 110</translation>
     </message>
     <message>
         <source>expected 12 tab-separated fields, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>12 durch Tabulatoren getrennte Felder erwartet, gefunden: %1</translation>
     </message>
     <message>
         <source>field %1 (%2) is not a number: &quot;%3&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Feld %1 (%2) ist keine Zahl: „%3“</translation>
     </message>
     <message>
         <source>field %1 (%2) must be a whole number, found %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Feld %1 (%2) muss eine ganze Zahl sein, gefunden: %3</translation>
     </message>
     <message>
         <source>item %1 where item %2 was expected</source>
-        <translation type="unfinished"></translation>
+        <translation>Element %1, wo Element %2 erwartet wurde</translation>
     </message>
     <message>
         <source>the home position %1, %2 is not a position</source>
-        <translation type="unfinished"></translation>
+        <translation>die Home-Position %1, %2 ist keine Position</translation>
     </message>
     <message>
         <source>the file is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei ist leer</translation>
     </message>
     <message>
         <source>the file has no items, not even the home position</source>
-        <translation type="unfinished"></translation>
+        <translation>die Datei hat keine Elemente, nicht einmal die Home-Position</translation>
     </message>
     <message>
         <source>The route has no home position: the first point was written as home, at 0 m AMSL.</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Route hat keine Home-Position: Der erste Punkt wurde als Home-Punkt geschrieben, auf 0 m AMSL.</translation>
     </message>
 </context>
 <context>
     <name>WpmlDocumentReader</name>
     <message>
         <source>malformed XML: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>fehlerhaftes XML: %1</translation>
     </message>
     <message>
         <source>%1 is not a number: &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ist keine Zahl: „%2“</translation>
     </message>
     <message>
         <source>%1 is not a whole number: &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ist keine ganze Zahl: „%2“</translation>
     </message>
     <message>
         <source>%1 &quot;%2&quot; (written as &quot;%3&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 „%2“ (geschrieben als „%3“)</translation>
     </message>
     <message>
         <source>coordinates &quot;%1&quot; are not longitude,latitude in degrees</source>
-        <translation type="unfinished"></translation>
+        <translation>Koordinaten „%1“ sind nicht Länge,Breite in Grad</translation>
     </message>
     <message>
         <source>a waypoint index is not a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Wegpunktindex ist keine ganze Zahl</translation>
     </message>
 </context>
 <context>
     <name>ZipArchive</name>
     <message>
         <source>two of its entries have the same name</source>
-        <translation type="unfinished"></translation>
+        <translation>zwei seiner Einträge haben denselben Namen</translation>
     </message>
     <message>
         <source>its directory and its entries disagree</source>
-        <translation type="unfinished"></translation>
+        <translation>sein Verzeichnis und seine Einträge stimmen nicht überein</translation>
     </message>
     <message>
         <source>it has no ZIP directory (truncated, or not a ZIP file)</source>
-        <translation type="unfinished"></translation>
+        <translation>es hat kein ZIP-Verzeichnis (abgeschnitten oder keine ZIP-Datei)</translation>
     </message>
     <message>
         <source>the archive has no end of central directory</source>
-        <translation type="unfinished"></translation>
+        <translation>das Archiv hat kein Ende des zentralen Verzeichnisses</translation>
     </message>
     <message>
         <source>ZIP64 archives are not read</source>
-        <translation type="unfinished"></translation>
+        <translation>ZIP64-Archive werden nicht gelesen</translation>
     </message>
     <message>
         <source>a central directory record is damaged at byte %1</source>
-        <translation type="unfinished"></translation>
+        <translation>ein Eintrag des zentralen Verzeichnisses ist bei Byte %1 beschädigt</translation>
     </message>
     <message>
         <source>an entry&apos;s local header lies outside the archive</source>
-        <translation type="unfinished"></translation>
+        <translation>der lokale Header eines Eintrags liegt außerhalb des Archivs</translation>
     </message>
     <message>
         <source>the entries &quot;%1&quot; and &quot;%2&quot; share bytes in the archive (a ZIP bomb&apos;s trick): not read</source>
-        <translation type="unfinished"></translation>
+        <translation>die Einträge „%1“ und „%2“ teilen sich Bytes im Archiv (der Trick einer ZIP-Bombe): nicht gelesen</translation>
     </message>
     <message>
         <source>not a ZIP archive: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kein ZIP-Archiv: %1</translation>
     </message>
     <message>
         <source>not a readable ZIP archive: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>kein lesbares ZIP-Archiv: %1</translation>
     </message>
     <message>
         <source>the archive lists %1 entries, more than the %2 read</source>
-        <translation type="unfinished"></translation>
+        <translation>das Archiv listet %1 Einträge, mehr als die %2 gelesenen</translation>
     </message>
     <message>
         <source>the central directory lists %1 entries where libzip read %2</source>
-        <translation type="unfinished"></translation>
+        <translation>das zentrale Verzeichnis listet %1 Einträge, wo libzip %2 gelesen hat</translation>
     </message>
     <message>
         <source>the archive has no &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>das Archiv hat kein „%1“</translation>
     </message>
     <message>
         <source>&quot;%1&quot; would inflate to %2 bytes, more than the %3 read from one entry</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ würde auf %2 Bytes entpackt, mehr als die %3, die pro Eintrag gelesen werden</translation>
     </message>
     <message>
         <source>reading &quot;%1&quot; would inflate the archive past %2 bytes in all</source>
-        <translation type="unfinished"></translation>
+        <translation>das Lesen von „%1“ würde das Archiv auf insgesamt mehr als %2 Bytes entpacken</translation>
     </message>
     <message>
         <source>&quot;%1&quot; claims %2 bytes from %3 compressed, more than %4 times: not inflated</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ gibt %2 Bytes aus %3 komprimierten an, mehr als das %4-Fache: nicht entpackt</translation>
     </message>
     <message>
         <source>&quot;%1&quot; cannot be read: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ kann nicht gelesen werden: %2</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is damaged: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist beschädigt: %2</translation>
     </message>
     <message>
         <source>&quot;%1&quot; holds a different size than the archive says (%2 bytes)</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ hat eine andere Größe, als das Archiv angibt (%2 Bytes)</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is damaged (its CRC does not match)</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ ist beschädigt (die CRC stimmt nicht)</translation>
     </message>
     <message>
         <source>the archive could not be written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>das Archiv konnte nicht geschrieben werden: %1</translation>
     </message>
     <message>
         <source>the archive could not be written: its bytes could not be read back</source>
-        <translation type="unfinished"></translation>
+        <translation>das Archiv konnte nicht geschrieben werden: Seine Bytes konnten nicht zurückgelesen werden</translation>
     </message>
 </context>
 <context>
     <name>Zone</name>
     <message>
         <source>above home</source>
-        <translation type="unfinished"></translation>
+        <translation>über dem Home-Punkt</translation>
     </message>
     <message>
         <source>server aerodrome</source>
-        <translation type="unfinished"></translation>
+        <translation>Server-Flugplatzzone</translation>
     </message>
     <message>
         <source>server custom</source>
-        <translation type="unfinished"></translation>
+        <translation>eigene Serverzone</translation>
     </message>
     <message>
         <source>vehicle fence</source>
-        <translation type="unfinished"></translation>
+        <translation>Fahrzeug-Geofence</translation>
     </message>
     <message>
         <source>%1 polygon %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, Polygon %2</translation>
     </message>
     <message>
         <source>%1 circle %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, Kreis %2</translation>
     </message>
 </context>
 <context>
@@ -4408,18 +4409,18 @@ Ereignisse: %1
     </message>
     <message>
         <source>vertex %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Ecke %1</translation>
     </message>
 </context>
 <context>
     <name>ZoneFiles</name>
     <message>
         <source>%1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 wurde ausgelassen: %2</translation>
     </message>
     <message>
         <source>unknown zone file type &quot;.%1&quot; (Sortie reads .plan, .geojson, .json and .kml)</source>
-        <translation type="unfinished"></translation>
+        <translation>unbekannter Zonendateityp „.%1“ (Sortie liest .plan, .geojson, .json und .kml)</translation>
     </message>
 </context>
 <context>
@@ -4522,55 +4523,55 @@ Ereignisse: %1
     </message>
     <message>
         <source>exclusion</source>
-        <translation type="unfinished"></translation>
+        <translation>Ausschluss</translation>
     </message>
     <message>
         <source>inclusion</source>
-        <translation type="unfinished"></translation>
+        <translation>Einschluss</translation>
     </message>
     <message>
         <source>HOME</source>
-        <translation type="unfinished"></translation>
+        <translation>Home-Punkt</translation>
     </message>
     <message>
         <source>Discard copy</source>
-        <translation type="unfinished"></translation>
+        <translation>Kopie verwerfen</translation>
     </message>
     <message>
         <source>The server&apos;s zone stays as it is</source>
-        <translation type="unfinished"></translation>
+        <translation>Die Zone des Servers bleibt, wie sie ist</translation>
     </message>
     <message>
         <source>Update on server</source>
-        <translation type="unfinished"></translation>
+        <translation>Auf dem Server aktualisieren</translation>
     </message>
     <message>
         <source>Send to server</source>
-        <translation type="unfinished"></translation>
+        <translation>An den Server senden</translation>
     </message>
     <message>
         <source>Edit here</source>
-        <translation type="unfinished"></translation>
+        <translation>Hier bearbeiten</translation>
     </message>
     <message>
         <source>Draw a copy to edit; Update on server stores it</source>
-        <translation type="unfinished"></translation>
+        <translation>Eine Kopie zum Bearbeiten zeichnen; „Auf dem Server aktualisieren“ speichert sie</translation>
     </message>
     <message>
         <source>Delete on server</source>
-        <translation type="unfinished"></translation>
+        <translation>Auf dem Server löschen</translation>
     </message>
     <message>
         <source>Waiting for the server…</source>
-        <translation type="unfinished"></translation>
+        <translation>Warten auf den Server…</translation>
     </message>
     <message>
         <source>Delete zone</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone löschen</translation>
     </message>
     <message>
         <source>Delete &apos;%1&apos; on the server, for every operator?</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ auf dem Server löschen, für alle Bediener?</translation>
     </message>
 </context>
 <context>
@@ -4609,11 +4610,11 @@ Ereignisse: %1
     </message>
     <message>
         <source>--demo with only the server&apos;s three vehicles: &quot;parked&quot; (nothing moves) or &quot;flying&quot; (one flies, followed in the fly view); for benchmarks.</source>
-        <translation type="unfinished"></translation>
+        <translation>--demo nur mit den drei Fahrzeugen des Servers: „parked“ (nichts bewegt sich) oder „flying“ (eines fliegt und wird in der Flugansicht verfolgt); für Benchmarks.</translation>
     </message>
     <message>
         <source>A DEM for the terrain: any raster GDAL reads (GeoTIFF, COG, Copernicus DEM, .hgt, ...) or a folder of them, asked before the server (also the setting terrain/demFolder).</source>
-        <translation type="unfinished"></translation>
+        <translation>Ein DEM für das Gelände: jedes Raster, das GDAL liest (GeoTIFF, COG, Copernicus DEM, .hgt, ...), oder ein Ordner davon; wird vor dem Server gefragt (auch die Einstellung terrain/demFolder).</translation>
     </message>
 </context>
 <context>
@@ -4809,47 +4810,47 @@ Ereignisse: %1
     <name>sortie::airspace::ZoneSharing</name>
     <message>
         <source>Wait: the server has not answered the last change yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Bitte warten: Der Server hat auf die letzte Änderung noch nicht geantwortet.</translation>
     </message>
     <message>
         <source>Only a zone drawn here can be sent to the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur eine hier gezeichnete Zone kann an den Server gesendet werden.</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; was changed on the server since you copied it (version %2, now %3). Remove your copy and edit the server&apos;s zone again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“ wurde auf dem Server geändert, seit Sie sie kopiert haben (Version %2, jetzt %3). Entfernen Sie Ihre Kopie und bearbeiten Sie die Zone des Servers erneut.</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; is on the server; you changed it since sending, so your copy stays.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“ ist auf dem Server; Sie haben sie seit dem Senden geändert, daher bleibt Ihre Kopie.</translation>
     </message>
     <message>
         <source>Send zone &apos;%1&apos; to the server</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“ an den Server senden</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; is on the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“ ist auf dem Server.</translation>
     </message>
     <message>
         <source>Only the server&apos;s custom zones can be edited here; aerodrome zones are the server&apos;s own.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur die eigenen Zonen des Servers können hier bearbeitet werden; Flugplatzzonen gehören dem Server.</translation>
     </message>
     <message>
         <source>Edit server zone &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Serverzone „%1“ bearbeiten</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; is drawn here to edit; send it to store the change on the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“ ist hier zum Bearbeiten gezeichnet; senden Sie sie, um die Änderung auf dem Server zu speichern.</translation>
     </message>
     <message>
         <source>Only the server&apos;s custom zones can be deleted here.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nur die eigenen Zonen des Servers können hier gelöscht werden.</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; was deleted on the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zone „%1“ wurde auf dem Server gelöscht.</translation>
     </message>
 </context>
 <context>
@@ -6452,7 +6453,7 @@ Ereignisse: %1
     <name>sortie::ui::Translations</name>
     <message>
         <source>System language</source>
-        <translation type="unfinished"></translation>
+        <translation>Systemsprache</translation>
     </message>
 </context>
 <context>
