@@ -28,87 +28,87 @@
     <name>ActionVariants</name>
     <message>
         <source>%1 is either on or off</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 solo puede estar activado o desactivado</translation>
     </message>
     <message>
         <source>%1: &quot;%2&quot; is not one of its choices</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» no es una de sus opciones</translation>
     </message>
     <message>
         <source>%1: &quot;%2&quot; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» no es un número</translation>
     </message>
     <message>
         <source>%1: %2 is not a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 no es un número entero</translation>
     </message>
     <message>
         <source>%1: %2 is below %3 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 es menor que %3 %4</translation>
     </message>
     <message>
         <source>%1: %2 is above %3 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 es mayor que %3 %4</translation>
     </message>
     <message>
         <source>Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>Cámara</translation>
     </message>
     <message>
         <source>Take a photo</source>
-        <translation type="unfinished"></translation>
+        <translation>Tomar una foto</translation>
     </message>
     <message>
         <source>Start video</source>
-        <translation type="unfinished"></translation>
+        <translation>Iniciar vídeo</translation>
     </message>
     <message>
         <source>Stop video</source>
-        <translation type="unfinished"></translation>
+        <translation>Detener vídeo</translation>
     </message>
     <message>
         <source>Toggle video</source>
-        <translation type="unfinished"></translation>
+        <translation>Alternar vídeo</translation>
     </message>
     <message>
         <source>Photos by distance</source>
-        <translation type="unfinished"></translation>
+        <translation>Fotos por distancia</translation>
     </message>
     <message>
         <source>Every</source>
-        <translation type="unfinished"></translation>
+        <translation>Cada</translation>
     </message>
     <message>
         <source>m</source>
-        <translation type="unfinished"></translation>
+        <translation>m</translation>
     </message>
     <message>
         <source>Shots (0: until stopped)</source>
-        <translation type="unfinished"></translation>
+        <translation>Disparos (0: hasta detener)</translation>
     </message>
     <message>
         <source>Start after</source>
-        <translation type="unfinished"></translation>
+        <translation>Empezar tras</translation>
     </message>
     <message>
         <source>s</source>
-        <translation type="unfinished"></translation>
+        <translation>s</translation>
     </message>
     <message>
         <source>Photos by time</source>
-        <translation type="unfinished"></translation>
+        <translation>Fotos por tiempo</translation>
     </message>
     <message>
         <source>Wait</source>
-        <translation type="unfinished"></translation>
+        <translation>Espera</translation>
     </message>
     <message>
         <source>For</source>
-        <translation type="unfinished"></translation>
+        <translation>Durante</translation>
     </message>
     <message>
         <source>Until the operator continues</source>
-        <translation type="unfinished"></translation>
+        <translation>Hasta que el operador continúe</translation>
     </message>
     <message>
         <source>Heading</source>
@@ -116,11 +116,11 @@
     </message>
     <message>
         <source>From the course</source>
-        <translation type="unfinished"></translation>
+        <translation>Respecto a la trayectoria</translation>
     </message>
     <message>
         <source>Point of interest</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto de interés</translation>
     </message>
     <message>
         <source>Latitude</source>
@@ -132,139 +132,139 @@
     </message>
     <message>
         <source>Altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Altitud</translation>
     </message>
     <message>
         <source>Altitude type</source>
-        <translation type="unfinished"></translation>
+        <translation>Tipo de altitud</translation>
     </message>
     <message>
         <source>Above ground (AGL)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sobre el terreno (AGL)</translation>
     </message>
     <message>
         <source>Above sea level (AMSL)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sobre el nivel del mar (AMSL)</translation>
     </message>
     <message>
         <source>Gimbal and zoom</source>
-        <translation type="unfinished"></translation>
+        <translation>Gimbal y zoom</translation>
     </message>
     <message>
         <source>Tilt (90: down)</source>
-        <translation type="unfinished"></translation>
+        <translation>Inclinación (90: abajo)</translation>
     </message>
     <message>
         <source>Roll</source>
-        <translation type="unfinished"></translation>
+        <translation>Alabeo</translation>
     </message>
     <message>
         <source>Yaw</source>
-        <translation type="unfinished"></translation>
+        <translation>Guiñada</translation>
     </message>
     <message>
         <source>Zoom level</source>
-        <translation type="unfinished"></translation>
+        <translation>Nivel de zoom</translation>
     </message>
     <message>
         <source>Panorama</source>
-        <translation type="unfinished"></translation>
+        <translation>Panorámica</translation>
     </message>
     <message>
         <source>Angle</source>
-        <translation type="unfinished"></translation>
+        <translation>Ángulo</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Paso</translation>
     </message>
     <message>
         <source>Pause per step</source>
-        <translation type="unfinished"></translation>
+        <translation>Pausa por paso</translation>
     </message>
     <message>
         <source>Rotation speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidad de giro</translation>
     </message>
     <message>
         <source>°/s</source>
-        <translation type="unfinished"></translation>
+        <translation>°/s</translation>
     </message>
     <message>
         <source>Clockwise</source>
-        <translation type="unfinished"></translation>
+        <translation>Sentido horario</translation>
     </message>
     <message>
         <source>Video</source>
-        <translation type="unfinished"></translation>
+        <translation>Vídeo</translation>
     </message>
     <message>
         <source>Set servo</source>
-        <translation type="unfinished"></translation>
+        <translation>Fijar servo</translation>
     </message>
     <message>
         <source>Servo</source>
-        <translation type="unfinished"></translation>
+        <translation>Servo</translation>
     </message>
     <message>
         <source>PWM</source>
-        <translation type="unfinished"></translation>
+        <translation>PWM</translation>
     </message>
     <message>
         <source>Repeat servo</source>
-        <translation type="unfinished"></translation>
+        <translation>Repetir servo</translation>
     </message>
     <message>
         <source>Cycle time</source>
-        <translation type="unfinished"></translation>
+        <translation>Tiempo de ciclo</translation>
     </message>
     <message>
         <source>Repeats</source>
-        <translation type="unfinished"></translation>
+        <translation>Repeticiones</translation>
     </message>
     <message>
         <source>Switch to hover (VTOL)</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasar a vuelo estacionario (VTOL)</translation>
     </message>
     <message>
         <source>Switch to fixed-wing</source>
-        <translation type="unfinished"></translation>
+        <translation>Pasar a ala fija</translation>
     </message>
     <message>
         <source>Lidar recording</source>
-        <translation type="unfinished"></translation>
+        <translation>Grabación lidar</translation>
     </message>
     <message>
         <source>Recording</source>
-        <translation type="unfinished"></translation>
+        <translation>Grabación</translation>
     </message>
     <message>
         <source>Lidar calibration</source>
-        <translation type="unfinished"></translation>
+        <translation>Calibración lidar</translation>
     </message>
     <message>
         <source>Distance</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia</translation>
     </message>
     <message>
         <source>Times</source>
-        <translation type="unfinished"></translation>
+        <translation>Veces</translation>
     </message>
     <message>
         <source>Hop</source>
-        <translation type="unfinished"></translation>
+        <translation>Salto</translation>
     </message>
     <message>
         <source>Descent altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Altitud de descenso</translation>
     </message>
     <message>
         <source>Drop payload</source>
-        <translation type="unfinished"></translation>
+        <translation>Soltar carga</translation>
     </message>
     <message>
         <source>Descent speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Velocidad de descenso</translation>
     </message>
     <message>
         <source>m/s</source>
@@ -275,104 +275,104 @@
     <name>Airspace</name>
     <message>
         <source>route fence</source>
-        <translation type="unfinished"></translation>
+        <translation>geocerca de la ruta</translation>
     </message>
     <message>
         <source>the open route</source>
-        <translation type="unfinished"></translation>
+        <translation>la ruta abierta</translation>
     </message>
     <message>
         <source>%1 (kept as %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (se conservó como %2)</translation>
     </message>
 </context>
 <context>
     <name>AirspaceRule</name>
     <message>
         <source>floor %1, ceiling %2</source>
-        <translation type="unfinished"></translation>
+        <translation>base %1, techo %2</translation>
     </message>
     <message>
         <source>at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>a %1</translation>
     </message>
     <message>
         <source>from %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>de %1 a %2</translation>
     </message>
     <message>
         <source>Leg %1 %2 &apos;%3&apos; %4 (%5)</source>
-        <translation type="unfinished"></translation>
+        <translation>El tramo %1 %2 «%3» %4 (%5)</translation>
     </message>
     <message>
         <source>; its height there is unknown (no terrain data), so it counts as inside</source>
-        <translation type="unfinished"></translation>
+        <translation>; allí se desconoce su altura (sin datos de terreno), así que cuenta como dentro</translation>
     </message>
     <message>
         <source>Leg %1 passes within %2 of %3 &apos;%4&apos; (buffer %5).</source>
-        <translation type="unfinished"></translation>
+        <translation>El tramo %1 pasa a menos de %2 de %3 «%4» (margen de aviso %5).</translation>
     </message>
     <message>
         <source>exclusion zone</source>
-        <translation type="unfinished"></translation>
+        <translation>la zona de exclusión</translation>
     </message>
     <message>
         <source>the edge of inclusion zone</source>
-        <translation type="unfinished"></translation>
+        <translation>el borde de la zona de inclusión</translation>
     </message>
 </context>
 <context>
     <name>AlgorithmDefinition</name>
     <message>
         <source>%1 must be set</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 debe tener un valor</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» no es un número</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» no es un número entero</translation>
     </message>
     <message>
         <source>%1: %2 is below the minimum of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 es menor que el mínimo de %3</translation>
     </message>
     <message>
         <source>%1: %2 is above the maximum of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 es mayor que el máximo de %3</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is neither true nor false</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» no es ni true ni false</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not one of its choices</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» no es una de sus opciones</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; does not have the expected form</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» no tiene la forma esperada</translation>
     </message>
 </context>
 <context>
     <name>AreaScanPlanner</name>
     <message>
         <source>The camera needs a positive sensor size, focal length and image size.</source>
-        <translation type="unfinished"></translation>
+        <translation>La cámara necesita un tamaño de sensor, una distancia focal y un tamaño de imagen positivos.</translation>
     </message>
     <message>
         <source>Overlaps must be between 0 and 95 %.</source>
-        <translation type="unfinished"></translation>
+        <translation>Los solapes deben estar entre 0 y 95 %.</translation>
     </message>
     <message>
         <source>The scan altitude (or ground sample distance) must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>La altitud del escaneo (o la distancia de muestreo, GSD) debe ser positiva.</translation>
     </message>
     <message>
         <source>The turnaround distance must not be negative.</source>
-        <translation type="unfinished"></translation>
+        <translation>La distancia de viraje no debe ser negativa.</translation>
     </message>
 </context>
 <context>
@@ -386,50 +386,50 @@
     <name>AutosaveDirectory</name>
     <message>
         <source>autosave-%1.json</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.json</translation>
     </message>
     <message>
         <source>autosave-%1.lock</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.lock</translation>
     </message>
     <message>
         <source>autosave-%1.unreadable-%2.json</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.unreadable-%2.json</translation>
     </message>
     <message>
         <source>autosave-%1.unreadable-%2-%3.json</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.unreadable-%2-%3.json</translation>
     </message>
     <message>
         <source>Cannot create the autosave folder %1</source>
-        <translation type="unfinished"></translation>
+        <translation>No se puede crear la carpeta de guardado automático %1</translation>
     </message>
 </context>
 <context>
     <name>AutosaveRecord</name>
     <message>
         <source>the autosave holds no &quot;%1&quot; route</source>
-        <translation type="unfinished"></translation>
+        <translation>el guardado automático no contiene ninguna ruta «%1»</translation>
     </message>
     <message>
         <source>the &quot;%1&quot; document holds %2 routes, not one</source>
-        <translation type="unfinished"></translation>
+        <translation>el documento «%1» contiene %2 rutas, no una</translation>
     </message>
     <message>
         <source>/%1/mission/routes</source>
-        <translation type="unfinished"></translation>
+        <translation>/%1/mission/routes</translation>
     </message>
     <message>
         <source>not a Sortie autosave (&quot;format&quot; is not &quot;sortie-autosave&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un guardado automático de Sortie («format» no es «sortie-autosave»)</translation>
     </message>
     <message>
         <source>autosave format version %1 is not one this Sortie reads (1)</source>
-        <translation type="unfinished"></translation>
+        <translation>esta versión de Sortie no lee la versión %1 del formato de guardado automático (lee la 1)</translation>
     </message>
     <message>
         <source>&quot;savedAt&quot; is not a date and time</source>
-        <translation type="unfinished"></translation>
+        <translation>«savedAt» no es una fecha y hora</translation>
     </message>
 </context>
 <context>
@@ -443,54 +443,54 @@
     <name>Camera</name>
     <message>
         <source>DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)</translation>
     </message>
     <message>
         <source>DJI Phantom 4 (FC330)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Phantom 4 (FC330)</translation>
     </message>
     <message>
         <source>DJI Mavic 2 Pro (Hasselblad L1D-20c)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Mavic 2 Pro (Hasselblad L1D-20c)</translation>
     </message>
     <message>
         <source>DJI Mavic 3 Enterprise (wide)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Mavic 3 Enterprise (wide)</translation>
     </message>
     <message>
         <source>DJI Zenmuse P1 24 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Zenmuse P1 24 mm</translation>
     </message>
     <message>
         <source>DJI Zenmuse P1 35 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Zenmuse P1 35 mm</translation>
     </message>
     <message>
         <source>Sony RX1R II</source>
-        <translation type="unfinished"></translation>
+        <translation>Sony RX1R II</translation>
     </message>
     <message>
         <source>senseFly S.O.D.A.</source>
-        <translation type="unfinished"></translation>
+        <translation>senseFly S.O.D.A.</translation>
     </message>
     <message>
         <source>MicaSense RedEdge-MX</source>
-        <translation type="unfinished"></translation>
+        <translation>MicaSense RedEdge-MX</translation>
     </message>
     <message>
         <source>GoPro Hero3 Black Edition</source>
-        <translation type="unfinished"></translation>
+        <translation>GoPro Hero3 Black Edition</translation>
     </message>
     <message>
         <source>Generic 1&quot; 20 MP</source>
-        <translation type="unfinished"></translation>
+        <translation>Generic 1&quot; 20 MP</translation>
     </message>
 </context>
 <context>
     <name>ClientGraph</name>
     <message>
         <source>route fence</source>
-        <translation type="unfinished"></translation>
+        <translation>geocerca de la ruta</translation>
     </message>
 </context>
 <context>
@@ -625,35 +625,35 @@
     <name>CoverageSweep</name>
     <message>
         <source>An area scan needs a polygon of at least 3 vertices.</source>
-        <translation type="unfinished"></translation>
+        <translation>Un escaneo de área necesita un polígono de al menos 3 vértices.</translation>
     </message>
     <message>
         <source>Polygon vertex %1 is not a valid position.</source>
-        <translation type="unfinished"></translation>
+        <translation>El vértice %1 del polígono no es una posición válida.</translation>
     </message>
     <message>
         <source>The polygon spans more than 100 km; split it into smaller scans.</source>
-        <translation type="unfinished"></translation>
+        <translation>El polígono abarca más de 100 km; divídalo en escaneos más pequeños.</translation>
     </message>
     <message>
         <source>The scan polygon crosses itself (edges %1 and %2).</source>
-        <translation type="unfinished"></translation>
+        <translation>El polígono del escaneo se corta a sí mismo (lados %1 y %2).</translation>
     </message>
     <message>
         <source>The scan polygon has no area.</source>
-        <translation type="unfinished"></translation>
+        <translation>El polígono del escaneo no tiene área.</translation>
     </message>
     <message>
         <source>The distance between passes must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>La distancia entre pasadas debe ser positiva.</translation>
     </message>
     <message>
         <source>The scan would need %1 transects; raise the altitude or lower the side overlap.</source>
-        <translation type="unfinished"></translation>
+        <translation>El escaneo necesitaría %1 transectos; aumente la altitud o reduzca el solape lateral.</translation>
     </message>
     <message>
         <source>The scan yields no transects: the polygon is too narrow.</source>
-        <translation type="unfinished"></translation>
+        <translation>El escaneo no produce ningún transecto: el polígono es demasiado estrecho.</translation>
     </message>
 </context>
 <context>
@@ -667,11 +667,11 @@
     <name>Egm96Geoid</name>
     <message>
         <source>the EGM96 geoid grid %1 is missing (Debian: install proj-data): ellipsoidal heights cannot be converted to AMSL</source>
-        <translation type="unfinished"></translation>
+        <translation>falta la rejilla del geoide EGM96 %1 (Debian: instale proj-data): las alturas elipsoidales no se pueden convertir a AMSL</translation>
     </message>
     <message>
         <source>the EGM96 geoid grid %1 cannot be used: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede usar la rejilla del geoide EGM96 %1: %2</translation>
     </message>
 </context>
 <context>
@@ -692,19 +692,19 @@
     <name>EnergyProfile</name>
     <message>
         <source>%1 must be a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 debe ser un número positivo</translation>
     </message>
     <message>
         <source>reserve must be a fraction from 0 up to (not including) 1</source>
-        <translation type="unfinished"></translation>
+        <translation>reserve debe ser una fracción desde 0 hasta 1 (sin incluirlo)</translation>
     </message>
     <message>
         <source>acceleration must be a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>acceleration debe ser un número positivo</translation>
     </message>
     <message>
         <source>expected &quot;file&quot;, &quot;server&quot; or &quot;fit&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba «file», «server» o «fit»</translation>
     </message>
 </context>
 <context>
@@ -726,7 +726,7 @@
     <name>FlightLogExport</name>
     <message>
         <source>Flight log %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Registro de vuelo %1</translation>
     </message>
 </context>
 <context>
@@ -734,7 +734,8 @@
     <message>
         <source>
   %1 (%2%3%4): %5 samples</source>
-        <translation type="unfinished"></translation>
+        <translation>
+  %1 (%2%3%4): %5 muestras</translation>
     </message>
 </context>
 <context>
@@ -780,282 +781,282 @@
     <name>HciConnection</name>
     <message>
         <source>type %1</source>
-        <translation type="unfinished"></translation>
+        <translation>tipo %1</translation>
     </message>
     <message>
         <source>%1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ms</translation>
     </message>
     <message>
         <source>No answer from %1 within %2: check the address and the network</source>
-        <translation type="unfinished"></translation>
+        <translation>Sin respuesta de %1 en %2: compruebe la dirección y la red</translation>
     </message>
     <message>
         <source>The server at %1 closed the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>El servidor en %1 cerró la conexión</translation>
     </message>
     <message>
         <source>The connection was closed by the application</source>
-        <translation type="unfinished"></translation>
+        <translation>La aplicación cerró la conexión</translation>
     </message>
     <message>
         <source>Disconnected from %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Desconectado de %1</translation>
     </message>
     <message>
         <source>%1 refused the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 rechazó la conexión</translation>
     </message>
     <message>
         <source>The host in %1 cannot be found</source>
-        <translation type="unfinished"></translation>
+        <translation>No se encuentra el host de %1</translation>
     </message>
     <message>
         <source>Cannot reach %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>No se puede acceder a %1: %2</translation>
     </message>
     <message>
         <source>Connection to %1 lost: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Conexión con %1 perdida: %2</translation>
     </message>
     <message>
         <source>%1 got no answer: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no obtuvo respuesta: %2</translation>
     </message>
     <message>
         <source>%1 is not an HCI message</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no es un mensaje HCI</translation>
     </message>
     <message>
         <source>%1 not sent: not connected to the server</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no enviado: no hay conexión con el servidor</translation>
     </message>
     <message>
         <source>%1 not sent: missing %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no enviado: falta %2</translation>
     </message>
     <message>
         <source>No answer to %1 within %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Sin respuesta a %1 en %2</translation>
     </message>
     <message>
         <source>%1 at byte %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 en el byte %2: %3</translation>
     </message>
     <message>
         <source>%1 with instance id -1 is not a notification</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 con id de instancia -1 no es una notificación</translation>
     </message>
     <message>
         <source>%1 for instance id %2, which no request waits for (answered after its timeout?)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 para el id de instancia %2, que ninguna solicitud espera (¿respondida tras agotarse su tiempo?)</translation>
     </message>
     <message>
         <source>The server answered %1 with %2 instead of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>El servidor respondió a %1 con %2 en lugar de %3</translation>
     </message>
 </context>
 <context>
     <name>HciElevationSource</name>
     <message>
         <source>UgCS server</source>
-        <translation type="unfinished"></translation>
+        <translation>Servidor UgCS</translation>
     </message>
 </context>
 <context>
     <name>HciError</name>
     <message>
         <source>The server&apos;s licence does not allow this (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>La licencia del servidor no lo permite (%1)</translation>
     </message>
     <message>
         <source>The server&apos;s licence does not allow this</source>
-        <translation type="unfinished"></translation>
+        <translation>La licencia del servidor no lo permite</translation>
     </message>
     <message>
         <source>The server speaks HCI protocol %1; Sortie speaks 2.0%2</source>
-        <translation type="unfinished"></translation>
+        <translation>El servidor usa el protocolo HCI %1; Sortie usa el 2.0%2</translation>
     </message>
     <message>
         <source>The server refused the request (error %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>El servidor rechazó la solicitud (error %1)</translation>
     </message>
     <message>
         <source>The server refused the request without a reason</source>
-        <translation type="unfinished"></translation>
+        <translation>El servidor rechazó la solicitud sin indicar el motivo</translation>
     </message>
     <message>
         <source>no error</source>
-        <translation type="unfinished"></translation>
+        <translation>sin error</translation>
     </message>
     <message>
         <source> (code %1)</source>
-        <translation type="unfinished"></translation>
+        <translation> (código %1)</translation>
     </message>
 </context>
 <context>
     <name>HciRouteMapper</name>
     <message>
         <source>Route &quot;%1&quot;, segment %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Ruta «%1», segmento %2: %3</translation>
     </message>
 </context>
 <context>
     <name>HciRoutePass</name>
     <message>
         <source>a RoutePass event names the object type &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>un evento RoutePass indica el tipo de objeto «%1»</translation>
     </message>
     <message>
         <source>RoutePass %1: the event carries no RoutePass</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1: el evento no contiene ningún RoutePass</translation>
     </message>
     <message>
         <source>RoutePass %1 names no vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1 no indica ningún vehículo</translation>
     </message>
     <message>
         <source>RoutePass %1 has no waypoint count</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1 no tiene número de waypoints</translation>
     </message>
     <message>
         <source>RoutePass %1: waypoint index %2 is outside the route&apos;s %3 waypoints</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1: el índice de waypoint %2 está fuera de los %3 waypoints de la ruta</translation>
     </message>
 </context>
 <context>
     <name>HciSegmentMapper</name>
     <message>
         <source>the waypoint has no figure point</source>
-        <translation type="unfinished"></translation>
+        <translation>el waypoint no tiene punto de figura</translation>
     </message>
     <message>
         <source>the waypoint&apos;s position is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>la posición del waypoint está fuera de rango</translation>
     </message>
     <message>
         <source>An area scan&apos;s %1: %2 It keeps Sortie&apos;s default.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 de un escaneo de área: %2 Se conserva el valor predeterminado de Sortie.</translation>
     </message>
     <message>
         <source>An area scan came without a camera; Sortie&apos;s default camera (%1) was assumed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Un escaneo de área llegó sin cámara; se supuso la cámara predeterminada de Sortie (%1).</translation>
     </message>
     <message>
         <source>A %1 segment could not be read as one (%2); it is kept as the server sent it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Un segmento %1 no se pudo leer como tal (%2); se conserva tal como lo envió el servidor.</translation>
     </message>
     <message>
         <source>An area scan without a polygon of three corners is kept as the server sent it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Un escaneo de área sin un polígono de tres esquinas se conserva tal como lo envió el servidor.</translation>
     </message>
 </context>
 <context>
     <name>HciSession</name>
     <message>
         <source> not sent: </source>
-        <translation type="unfinished"></translation>
+        <translation> no enviado: </translation>
     </message>
     <message>
         <source>the connection to the server is being re-established</source>
-        <translation type="unfinished"></translation>
+        <translation>se está restableciendo la conexión con el servidor</translation>
     </message>
     <message>
         <source>not logged in to a server</source>
-        <translation type="unfinished"></translation>
+        <translation>no hay sesión iniciada en ningún servidor</translation>
     </message>
     <message>
         <source>The server sent nothing while %1 waited (%2); the link seems dead</source>
-        <translation type="unfinished"></translation>
+        <translation>El servidor no envió nada mientras %1 esperaba (%2); el enlace parece caído</translation>
     </message>
     <message>
         <source>The server speaks HCI protocol %1.%2; Sortie speaks %3.%4</source>
-        <translation type="unfinished"></translation>
+        <translation>El servidor usa el protocolo HCI %1.%2; Sortie usa el %3.%4</translation>
     </message>
     <message>
         <source>The server rejected the login &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>El servidor rechazó el inicio de sesión «%1»: %2</translation>
     </message>
 </context>
 <context>
     <name>HciVehicleLink</name>
     <message>
         <source>%1: cannot take control of %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: no se puede tomar el control de %2: %3</translation>
     </message>
     <message>
         <source>%1: the server sent no result for this vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: el servidor no envió ningún resultado para este vehículo</translation>
     </message>
     <message>
         <source>there is no such flight mode</source>
-        <translation type="unfinished"></translation>
+        <translation>no existe ese modo de vuelo</translation>
     </message>
     <message>
         <source>Segment %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Segmento %1: %2</translation>
     </message>
     <message>
         <source>the server could not process it</source>
-        <translation type="unfinished"></translation>
+        <translation>el servidor no pudo procesarlo</translation>
     </message>
     <message>
         <source>Sortie upload to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Subida de Sortie a %1</translation>
     </message>
     <message>
         <source>route processing: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>procesamiento de la ruta: %1</translation>
     </message>
     <message>
         <source>upload: the mission was not prepared by the UgCS server</source>
-        <translation type="unfinished"></translation>
+        <translation>subida: el servidor UgCS no preparó la misión</translation>
     </message>
     <message>
         <source>upload: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>subida: %1</translation>
     </message>
     <message>
         <source>upload: cannot take control of %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>subida: no se puede tomar el control de %1: %2</translation>
     </message>
     <message>
         <source>a UgCS server does not read a vehicle&apos;s mission back</source>
-        <translation type="unfinished"></translation>
+        <translation>un servidor UgCS no lee de vuelta la misión de un vehículo</translation>
     </message>
     <message>
         <source>%1: parameters are set in the vehicle profile on the UgCS server</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: los parámetros se fijan en el perfil de vehículo del servidor UgCS</translation>
     </message>
 </context>
 <context>
     <name>HgtTile</name>
     <message>
         <source>%1 bytes is not an SRTM tile (2884802 bytes for 3″ 1201×1201, 25934402 for 1″ 3601×3601); the file is truncated or not a .hgt tile</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 bytes no es una tesela SRTM (2884802 bytes para 3″ 1201×1201, 25934402 para 1″ 3601×3601); el archivo está truncado o no es una tesela .hgt</translation>
     </message>
     <message>
         <source>height %1 m at row %2, column %3 is not a terrain height; the file is corrupt</source>
-        <translation type="unfinished"></translation>
+        <translation>la altura %1 m en la fila %2, columna %3 no es una altura de terreno; el archivo está dañado</translation>
     </message>
 </context>
 <context>
     <name>HgtTileSource</name>
     <message>
         <source>%1: no such file or folder</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: no existe el archivo o la carpeta</translation>
     </message>
     <message>
         <source>%1: not an SRTM tile name (NxxEyyy.hgt names the tile&apos;s south-west corner)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: no es un nombre de tesela SRTM (NxxEyyy.hgt indica la esquina suroeste de la tesela)</translation>
     </message>
     <message>
         <source>SRTM tiles (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Teselas SRTM (%1)</translation>
     </message>
     <message>
         <source>%1: cannot be mapped: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: no se puede mapear en memoria: %2</translation>
     </message>
 </context>
 <context>
@@ -1153,172 +1154,172 @@
     <name>JsonCursor</name>
     <message>
         <source>expected an object, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba un objeto, se encontró %1</translation>
     </message>
     <message>
         <source>missing required key &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>falta la clave obligatoria «%1»</translation>
     </message>
     <message>
         <source>expected an array, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba un array, se encontró %1</translation>
     </message>
     <message>
         <source>expected at least %1 elements, found %2</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaban al menos %1 elementos, se encontraron %2</translation>
     </message>
     <message>
         <source>expected a number, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba un número, se encontró %1</translation>
     </message>
     <message>
         <source>the number is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>el número no es finito</translation>
     </message>
     <message>
         <source>expected an integer, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba un entero, se encontró %1</translation>
     </message>
     <message>
         <source>expected true or false, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba true o false, se encontró %1</translation>
     </message>
     <message>
         <source>expected a string, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba una cadena, se encontró %1</translation>
     </message>
     <message>
         <source>not valid JSON: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>JSON no válido: %1</translation>
     </message>
     <message>
         <source>; last read: &apos;.*&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>; last read: &apos;.*&apos;</translation>
     </message>
     <message>
         <source>unknown value &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>valor desconocido «%1»</translation>
     </message>
 </context>
 <context>
     <name>KmlFormat</name>
     <message>
         <source>bad coordinate &quot;%1&quot;: expected longitude,latitude[,altitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>coordenada incorrecta «%1»: se esperaba longitud,latitud[,altitud]</translation>
     </message>
     <message>
         <source>bad coordinate &quot;%1&quot;: not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>coordenada incorrecta «%1»: no es un número</translation>
     </message>
     <message>
         <source>coordinate &quot;%1&quot; is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>la coordenada «%1» está fuera de rango</translation>
     </message>
     <message>
         <source>a boundary needs at least 3 distinct points, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>un contorno necesita al menos 3 puntos distintos, se encontraron %1</translation>
     </message>
     <message>
         <source>not valid KML: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>KML no válido: %1</translation>
     </message>
     <message>
         <source>this LineString is open, so it encloses no area; close it (last point = first) to use it as a boundary</source>
-        <translation type="unfinished"></translation>
+        <translation>este LineString está abierto, así que no encierra ningún área; ciérrelo (último punto = primero) para usarlo como contorno</translation>
     </message>
     <message>
         <source>this Placemark has no Polygon (with an outerBoundaryIs LinearRing) or closed LineString</source>
-        <translation type="unfinished"></translation>
+        <translation>este Placemark no tiene ningún Polygon (con un LinearRing outerBoundaryIs) ni un LineString cerrado</translation>
     </message>
     <message>
         <source>the document has no Polygon or closed LineString</source>
-        <translation type="unfinished"></translation>
+        <translation>el documento no tiene ningún Polygon ni LineString cerrado</translation>
     </message>
     <message>
         <source>The file holds %1 closed shapes; the one at line %2 was imported.</source>
-        <translation type="unfinished"></translation>
+        <translation>El archivo contiene %1 formas cerradas; se importó la de la línea %2.</translation>
     </message>
     <message>
         <source>Flight path</source>
-        <translation type="unfinished"></translation>
+        <translation>Trayectoria de vuelo</translation>
     </message>
     <message>
         <source>Flight path, part %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Trayectoria de vuelo, parte %1</translation>
     </message>
 </context>
 <context>
     <name>KmlZones</name>
     <message>
         <source>bad coordinate &quot;%1&quot;: expected longitude,latitude[,altitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>coordenada incorrecta «%1»: se esperaba longitud,latitud[,altitud]</translation>
     </message>
     <message>
         <source>coordinate &quot;%1&quot; is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>la coordenada «%1» está fuera de rango</translation>
     </message>
     <message>
         <source>a boundary needs at least 3 distinct coordinates, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>un contorno necesita al menos 3 coordenadas distintas, se encontraron %1</translation>
     </message>
     <message>
         <source>line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>línea %1: %2</translation>
     </message>
     <message>
         <source>line %1: a polygon with two outer boundaries</source>
-        <translation type="unfinished"></translation>
+        <translation>línea %1: un polígono con dos contornos exteriores</translation>
     </message>
     <message>
         <source>line %1: an inner boundary before the outer one</source>
-        <translation type="unfinished"></translation>
+        <translation>línea %1: un contorno interior antes del exterior</translation>
     </message>
     <message>
         <source>Placemark %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Placemark %1</translation>
     </message>
     <message>
         <source>Placemark &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Placemark «%1»</translation>
     </message>
     <message>
         <source>a Polygon without an outer boundary</source>
-        <translation type="unfinished"></translation>
+        <translation>un Polygon sin contorno exterior</translation>
     </message>
     <message>
         <source>%1 (line %2) was left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Se omitió %1 (línea %2): %3</translation>
     </message>
     <message>
         <source>not well-formed KML: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>KML mal formado: %1</translation>
     </message>
 </context>
 <context>
     <name>LandOutlines</name>
     <message>
         <source>the land outline file is not compressed data</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo de contornos de tierra no contiene datos comprimidos</translation>
     </message>
     <message>
         <source>the land outline file does not start with %1</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo de contornos de tierra no empieza por %1</translation>
     </message>
     <message>
         <source>the land outline file is truncated at its polygon count</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo de contornos de tierra está truncado en su número de polígonos</translation>
     </message>
     <message>
         <source>the land outline file is truncated in polygon %1</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo de contornos de tierra está truncado en el polígono %1</translation>
     </message>
     <message>
         <source>the land outline file is truncated in polygon %1, ring %2</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo de contornos de tierra está truncado en el polígono %1, anillo %2</translation>
     </message>
     <message>
         <source>the built-in land outlines (%1) are missing</source>
-        <translation type="unfinished"></translation>
+        <translation>faltan los contornos de tierra integrados (%1)</translation>
     </message>
 </context>
 <context>
@@ -1432,7 +1433,7 @@
     </message>
     <message>
         <source>The language of Sortie, applied at once</source>
-        <translation type="unfinished"></translation>
+        <translation>Idioma de Sortie; se aplica al instante</translation>
     </message>
 </context>
 <context>
@@ -1474,15 +1475,15 @@
     </message>
     <message>
         <source>Orthophoto over the base map (GeoTIFF or any raster GDAL reads, any CRS)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ortofoto sobre el mapa base (GeoTIFF o cualquier ráster que lea GDAL, cualquier CRS)</translation>
     </message>
     <message>
         <source>/path/to/orthophoto.tif (empty: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>/ruta/a/ortofoto.tif (vacío: ninguna)</translation>
     </message>
     <message>
         <source>Opacity</source>
-        <translation type="unfinished"></translation>
+        <translation>Opacidad</translation>
     </message>
     <message>
         <source>%1 %</source>
@@ -1490,82 +1491,82 @@
     </message>
     <message>
         <source>Terrain: a DEM file (GeoTIFF, .hgt, ...) or a folder of them</source>
-        <translation type="unfinished"></translation>
+        <translation>Terreno: un archivo DEM (GeoTIFF, .hgt, ...) o una carpeta de ellos</translation>
     </message>
     <message>
         <source>/path/to/dem.tif or /path/to/dem-folder (empty: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>/ruta/a/dem.tif o /ruta/a/carpeta-dem (vacío: ninguno)</translation>
     </message>
 </context>
 <context>
     <name>MavlinkExport</name>
     <message>
         <source>MAVLink has no stop-and-turn or bank-turn waypoints: they were written as plain waypoints.</source>
-        <translation type="unfinished"></translation>
+        <translation>MAVLink no tiene waypoints de parada y giro ni de giro inclinado: se escribieron como waypoints simples.</translation>
     </message>
     <message>
         <source>Waypoint %1: %2 has no MAVLink equivalent and was left out.</source>
-        <translation type="unfinished"></translation>
+        <translation>Waypoint %1: %2 no tiene equivalente en MAVLink y se omitió.</translation>
     </message>
     <message>
         <source>a servo action without its servo and PWM</source>
-        <translation type="unfinished"></translation>
+        <translation>una acción de servo sin su servo y su PWM</translation>
     </message>
     <message>
         <source>a repeated servo without its count and cycle time</source>
-        <translation type="unfinished"></translation>
+        <translation>una repetición de servo sin su número y su tiempo de ciclo</translation>
     </message>
     <message>
         <source>waiting for the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>la espera al operador</translation>
     </message>
     <message>
         <source>a heading relative to the course</source>
-        <translation type="unfinished"></translation>
+        <translation>un rumbo relativo a la trayectoria</translation>
     </message>
     <message>
         <source>toggling video</source>
-        <translation type="unfinished"></translation>
+        <translation>la alternancia de vídeo</translation>
     </message>
     <message>
         <source>the series&apos; start delay</source>
-        <translation type="unfinished"></translation>
+        <translation>el retardo de inicio de la serie</translation>
     </message>
     <message>
         <source>the series&apos; shot count and start delay</source>
-        <translation type="unfinished"></translation>
+        <translation>el número de disparos y el retardo de inicio de la serie</translation>
     </message>
     <message>
         <source>a panorama</source>
-        <translation type="unfinished"></translation>
+        <translation>una panorámica</translation>
     </message>
     <message>
         <source>Waypoint %1: the gimbal&apos;s %2 was not set and is written as 0° (MAVLink has no &quot;unchanged&quot;).</source>
-        <translation type="unfinished"></translation>
+        <translation>Waypoint %1: en el gimbal no se fijó %2 y se escribe como 0° (MAVLink no tiene «sin cambios»).</translation>
     </message>
     <message>
         <source>a zoom level</source>
-        <translation type="unfinished"></translation>
+        <translation>un nivel de zoom</translation>
     </message>
     <message>
         <source>%1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Se omitió %1: %2</translation>
     </message>
     <message>
         <source>it cannot be planned</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede planificar</translation>
     </message>
     <message>
         <source>Segments without a MAVLink equivalent (circle, perimeter...) were written as the waypoints Sortie plans for them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Los segmentos sin equivalente en MAVLink (círculo, perímetro...) se escribieron como los waypoints que Sortie planifica para ellos.</translation>
     </message>
     <message>
         <source>Area scan %1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Se omitió el escaneo de área %1: %2</translation>
     </message>
     <message>
         <source>Area scan %1 was written as %2 waypoints with distance triggering.</source>
-        <translation type="unfinished"></translation>
+        <translation>El escaneo de área %1 se escribió como %2 waypoints con disparo por distancia.</translation>
     </message>
 </context>
 <context>
@@ -1634,103 +1635,103 @@
     <name>MissionDifference</name>
     <message numerus="yes">
         <source>the vehicle holds %n waypoint(s), %1 were sent</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>el vehículo contiene %n waypoint; se enviaron %1</numerusform>
+            <numerusform>el vehículo contiene %n waypoints; se enviaron %1</numerusform>
         </translation>
     </message>
     <message>
         <source>waypoint %1: </source>
-        <translation type="unfinished"></translation>
+        <translation>waypoint %1: </translation>
     </message>
     <message>
         <source>the vehicle holds another position</source>
-        <translation type="unfinished"></translation>
+        <translation>el vehículo contiene otra posición</translation>
     </message>
     <message>
         <source>altitude %1 m, sent %2 m</source>
-        <translation type="unfinished"></translation>
+        <translation>altitud %1 m, enviada %2 m</translation>
     </message>
     <message>
         <source>speed %1 m/s, sent %2 m/s</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad %1 m/s, enviada %2 m/s</translation>
     </message>
     <message>
         <source>acceptance radius %1 m, sent %2 m</source>
-        <translation type="unfinished"></translation>
+        <translation>radio de aceptación %1 m, enviado %2 m</translation>
     </message>
     <message numerus="yes">
         <source>%n action(s), sent %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n acción, enviadas %1</numerusform>
+            <numerusform>%n acciones, enviadas %1</numerusform>
         </translation>
     </message>
     <message>
         <source>action %1 (%2) differs</source>
-        <translation type="unfinished"></translation>
+        <translation>la acción %1 (%2) es distinta</translation>
     </message>
 </context>
 <context>
     <name>MissionError</name>
     <message>
         <source>(at %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>(en %1)</translation>
     </message>
 </context>
 <context>
     <name>MissionFiles</name>
     <message>
         <source>cannot open: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede abrir: %1</translation>
     </message>
     <message>
         <source>the file is larger than 256 MiB</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo ocupa más de 256 MiB</translation>
     </message>
     <message>
         <source>unknown file type: use .sortie, .plan, .waypoints, .kml or .kmz</source>
-        <translation type="unfinished"></translation>
+        <translation>tipo de archivo desconocido: use .sortie, .plan, .waypoints, .kml o .kmz</translation>
     </message>
     <message>
         <source>Sortie mission</source>
-        <translation type="unfinished"></translation>
+        <translation>Misión de Sortie</translation>
     </message>
     <message>
         <source>QGroundControl plan</source>
-        <translation type="unfinished"></translation>
+        <translation>Plan de QGroundControl</translation>
     </message>
     <message>
         <source>QGC WPL 110 waypoints</source>
-        <translation type="unfinished"></translation>
+        <translation>Waypoints QGC WPL 110</translation>
     </message>
     <message>
         <source>DJI WPML</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI WPML</translation>
     </message>
     <message>
         <source>a KML file holds a polygon, not a mission: import it as an area-scan boundary</source>
-        <translation type="unfinished"></translation>
+        <translation>un archivo KML contiene un polígono, no una misión: impórtelo como contorno de un escaneo de área</translation>
     </message>
     <message>
         <source>the mission has no route %1 (it has %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>la misión no tiene la ruta %1 (tiene %2)</translation>
     </message>
     <message>
         <source>the mission has no route to write</source>
-        <translation type="unfinished"></translation>
+        <translation>la misión no tiene ninguna ruta que escribir</translation>
     </message>
     <message>
         <source>the mission has %1 routes and a %2 file holds one: choose the route to write (sortie-plan convert --route N), or write .sortie or DJI WPML (.kmz), which hold them all</source>
-        <translation type="unfinished"></translation>
+        <translation>la misión tiene %1 rutas y un archivo %2 contiene una: elija la ruta que escribir (sortie-plan convert --route N) o escriba .sortie o DJI WPML (.kmz), que las contienen todas</translation>
     </message>
     <message>
         <source>Saving route &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Guardar la ruta «%1»</translation>
     </message>
     <message>
         <source>cannot write: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede escribir: %1</translation>
     </message>
 </context>
 <context>
@@ -1772,103 +1773,103 @@
     <name>NfzConversion</name>
     <message>
         <source>its baseAltitude is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>su baseAltitude no es un número</translation>
     </message>
     <message>
         <source>its height %1 m is not a height (it must be 0 or more)</source>
-        <translation type="unfinished"></translation>
+        <translation>su altura %1 m no es una altura (debe ser 0 o más)</translation>
     </message>
     <message>
         <source>point %1 of its prism is not a position (latitude and longitude in radians)</source>
-        <translation type="unfinished"></translation>
+        <translation>el punto %1 de su prisma no es una posición (latitud y longitud en radianes)</translation>
     </message>
     <message numerus="yes">
         <source>its prism has %n corner(s); a polygon needs 3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>su prisma tiene %n esquina; un polígono necesita 3</numerusform>
+            <numerusform>su prisma tiene %n esquinas; un polígono necesita 3</numerusform>
         </translation>
     </message>
     <message>
         <source>its cone frustum has no centre (baseLatitude, baseLongitude in radians)</source>
-        <translation type="unfinished"></translation>
+        <translation>su tronco de cono no tiene centro (baseLatitude, baseLongitude en radianes)</translation>
     </message>
     <message>
         <source>its cone frustum&apos;s radii (base %1 m, top %2 m) are not a circle</source>
-        <translation type="unfinished"></translation>
+        <translation>los radios de su tronco de cono (base %1 m, parte superior %2 m) no forman un círculo</translation>
     </message>
     <message>
         <source>its cone frustum has two radii but no height</source>
-        <translation type="unfinished"></translation>
+        <translation>su tronco de cono tiene dos radios pero ninguna altura</translation>
     </message>
     <message>
         <source>its floor (%1) and ceiling (%2) are in different references; a server zone has one</source>
-        <translation type="unfinished"></translation>
+        <translation>su base (%1) y su techo (%2) están en referencias distintas; una zona del servidor tiene una sola</translation>
     </message>
     <message>
         <source>its heights are above home; a server zone&apos;s are AMSL or AGL</source>
-        <translation type="unfinished"></translation>
+        <translation>sus alturas son sobre el origen; las de una zona del servidor son AMSL o AGL</translation>
     </message>
     <message>
         <source>it starts from the ground with an AMSL ceiling; give it an AMSL floor or an AGL ceiling</source>
-        <translation type="unfinished"></translation>
+        <translation>empieza en el suelo con un techo AMSL; dele una base AMSL o un techo AGL</translation>
     </message>
     <message>
         <source>NoFlightZone %1</source>
-        <translation type="unfinished"></translation>
+        <translation>NoFlightZone %1</translation>
     </message>
     <message>
         <source>UgCS server, NoFlightZone %1</source>
-        <translation type="unfinished"></translation>
+        <translation>servidor UgCS, NoFlightZone %1</translation>
     </message>
     <message>
         <source>it has both a prism and a cone frustum</source>
-        <translation type="unfinished"></translation>
+        <translation>tiene a la vez un prisma y un tronco de cono</translation>
     </message>
     <message>
         <source>it has no volume (neither a prism nor a cone frustum)</source>
-        <translation type="unfinished"></translation>
+        <translation>no tiene volumen (ni prisma ni tronco de cono)</translation>
     </message>
     <message>
         <source>its ceiling is below its floor</source>
-        <translation type="unfinished"></translation>
+        <translation>su techo está por debajo de su base</translation>
     </message>
     <message>
         <source>the server&apos;s no-fly zones keep vehicles out; an inclusion zone cannot be one</source>
-        <translation type="unfinished"></translation>
+        <translation>las zonas de no vuelo del servidor mantienen fuera a los vehículos; una zona de inclusión no puede ser una de ellas</translation>
     </message>
     <message>
         <source>aerodrome zones are the server&apos;s own; only custom zones are changed</source>
-        <translation type="unfinished"></translation>
+        <translation>las zonas de aeródromo son del propio servidor; solo se modifican las zonas personalizadas</translation>
     </message>
     <message numerus="yes">
         <source>%n ring(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n anillo</numerusform>
+            <numerusform>%n anillos</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>a server zone is one polygon without holes (this one has %n part(s), %1)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>una zona del servidor es un polígono sin huecos (esta tiene %n parte, %1)</numerusform>
+            <numerusform>una zona del servidor es un polígono sin huecos (esta tiene %n partes, %1)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>its polygon has %n corner(s); it needs 3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>su polígono tiene %n esquina; necesita 3</numerusform>
+            <numerusform>su polígono tiene %n esquinas; necesita 3</numerusform>
         </translation>
     </message>
     <message>
         <source>a cone frustum needs a ceiling</source>
-        <translation type="unfinished"></translation>
+        <translation>un tronco de cono necesita un techo</translation>
     </message>
     <message>
         <source>NoFlightZone %1%2 was left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Se omitió NoFlightZone %1%2: %3</translation>
     </message>
 </context>
 <context>
@@ -2173,171 +2174,171 @@ eventos:   %1
     <name>QgcFenceJson</name>
     <message>
         <source>expected [latitude, longitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba [latitud, longitud]</translation>
     </message>
     <message>
         <source>latitude or longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>latitud o longitud fuera de rango</translation>
     </message>
     <message>
         <source>expected [latitude, longitude, altitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba [latitud, longitud, altitud]</translation>
     </message>
     <message>
         <source>%1 at %2 was left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Se omitió %1 en %2: %3</translation>
     </message>
     <message>
         <source>The %1s at %2 were left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Se omitieron los elementos de tipo %1 en %2: %3</translation>
     </message>
     <message>
         <source>Geofence polygon</source>
-        <translation type="unfinished"></translation>
+        <translation>Polígono de geocerca</translation>
     </message>
     <message>
         <source>a polygon needs at least 3 vertices, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>un polígono necesita al menos 3 vértices, se encontraron %1</translation>
     </message>
     <message>
         <source>Geofence polygon at %1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Se omitió el polígono de geocerca en %1: %2</translation>
     </message>
     <message>
         <source>Geofence circle</source>
-        <translation type="unfinished"></translation>
+        <translation>Círculo de geocerca</translation>
     </message>
     <message>
         <source>the radius must be positive metres</source>
-        <translation type="unfinished"></translation>
+        <translation>el radio debe ser un número positivo de metros</translation>
     </message>
     <message>
         <source>The geofence&apos;s breach return point at %1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Se omitió el punto de retorno por violación de la geocerca en %1: %2</translation>
     </message>
     <message>
         <source>Rally point</source>
-        <translation type="unfinished"></translation>
+        <translation>Punto de reunión</translation>
     </message>
 </context>
 <context>
     <name>QgcPlanFormat</name>
     <message>
         <source>expected 7 params (or 4 and a &quot;coordinate&quot;), found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaban 7 params (o 4 y una «coordinate»), se encontraron %1</translation>
     </message>
     <message>
         <source>not a QGroundControl plan (fileType is not &quot;Plan&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un plan de QGroundControl (fileType no es «Plan»)</translation>
     </message>
     <message>
         <source>plan version %1 is not supported (Sortie reads version 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>la versión de plan %1 no es compatible (Sortie lee la versión 1)</translation>
     </message>
     <message>
         <source>mission version %1 is not supported (Sortie reads version 2)</source>
-        <translation type="unfinished"></translation>
+        <translation>la versión de misión %1 no es compatible (Sortie lee la versión 2)</translation>
     </message>
     <message>
         <source>the planned home position is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>la posición de origen planificada está fuera de rango</translation>
     </message>
     <message>
         <source>complex item &quot;%1&quot; is not supported; Sortie imports surveys, corridor and structure scans</source>
-        <translation type="unfinished"></translation>
+        <translation>el elemento complejo «%1» no es compatible; Sortie importa levantamientos y escaneos de corredor y de estructura</translation>
     </message>
     <message>
         <source>unknown item type &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>tipo de elemento desconocido «%1»</translation>
     </message>
     <message>
         <source>A corridor was left out: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Se omitió un corredor: %1</translation>
     </message>
     <message>
         <source>An area scan was left out: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Se omitió un escaneo de área: %1</translation>
     </message>
     <message>
         <source>The route has no home position: the first point was written as home, at 0 m AMSL.</source>
-        <translation type="unfinished"></translation>
+        <translation>La ruta no tiene posición de origen: el primer punto se escribió como origen, a 0 m AMSL.</translation>
     </message>
 </context>
 <context>
     <name>QgcSurveyJson</name>
     <message>
         <source>latitude/longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>latitud/longitud fuera de rango</translation>
     </message>
     <message>
         <source>a survey polygon needs at least 3 vertices, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>un polígono de levantamiento necesita al menos 3 vértices, se encontraron %1</translation>
     </message>
     <message>
         <source>Custom Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>Custom Camera</translation>
     </message>
     <message>
         <source>the survey&apos;s camera has neither a sensor nor footprints</source>
-        <translation type="unfinished"></translation>
+        <translation>la cámara del levantamiento no tiene ni sensor ni huellas</translation>
     </message>
     <message>
         <source>%1: the survey&apos;s manual camera was replaced by one with the same footprints</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: la cámara manual del levantamiento se sustituyó por una con las mismas huellas</translation>
     </message>
     <message>
         <source>a %1 needs at least %2 points, found %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: se necesitan al menos %2 puntos, se encontraron %3</translation>
     </message>
     <message>
         <source>%1: the camera &quot;%2&quot; is not one Sortie knows; it is kept by name, and the server must know it.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Sortie no conoce la cámara «%2»; se conserva por su nombre y el servidor debe conocerla.</translation>
     </message>
     <message>
         <source>the corridor&apos;s camera has no sensor to turn its distance into a ground sample distance</source>
-        <translation type="unfinished"></translation>
+        <translation>la cámara del corredor no tiene sensor con el que convertir su distancia en una distancia de muestreo (GSD)</translation>
     </message>
     <message>
         <source>corridor centre line</source>
-        <translation type="unfinished"></translation>
+        <translation>línea central del corredor</translation>
     </message>
     <message>
         <source>structure polygon</source>
-        <translation type="unfinished"></translation>
+        <translation>polígono de la estructura</translation>
     </message>
     <message>
         <source>%1: the structure scan became a perimeter flight at %2 m%3.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: el escaneo de estructura pasó a ser un vuelo perimetral a %2 m%3.</translation>
     </message>
     <message>
         <source>, its %1 layers as %1 loops at one height</source>
-        <translation type="unfinished"></translation>
+        <translation>, sus %1 capas como %1 vueltas a una sola altura</translation>
     </message>
 </context>
 <context>
     <name>RemoveSegmentsCommand</name>
     <message>
         <source>Delete %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Eliminar %1</translation>
     </message>
     <message>
         <source>Delete %1 rows</source>
-        <translation type="unfinished"></translation>
+        <translation>Eliminar %1 filas</translation>
     </message>
 </context>
 <context>
     <name>ReorderSegmentsCommand</name>
     <message>
         <source>Move row %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Mover la fila %1</translation>
     </message>
     <message>
         <source>Move %1 rows</source>
-        <translation type="unfinished"></translation>
+        <translation>Mover %1 filas</translation>
     </message>
     <message>
         <source>Reverse rows %1-%2</source>
-        <translation type="unfinished"></translation>
+        <translation>Invertir las filas %1-%2</translation>
     </message>
 </context>
 <context>
@@ -2518,19 +2519,19 @@ eventos:   %1
     </message>
     <message>
         <source>safe altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>altitud de seguridad</translation>
     </message>
     <message>
         <source>m</source>
-        <translation type="unfinished"></translation>
+        <translation>m</translation>
     </message>
     <message>
         <source>maximum altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>altitud máxima</translation>
     </message>
     <message>
         <source>initial speed</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad inicial</translation>
     </message>
     <message>
         <source>m/s</source>
@@ -2538,15 +2539,15 @@ eventos:   %1
     </message>
     <message>
         <source>maximum speed</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad máxima</translation>
     </message>
     <message>
         <source>corner radius</source>
-        <translation type="unfinished"></translation>
+        <translation>radio de esquina</translation>
     </message>
     <message>
         <source>takeoff height</source>
-        <translation type="unfinished"></translation>
+        <translation>altura de despegue</translation>
     </message>
     <message>
         <source>vehicle profile %1 → %2</source>
@@ -2590,11 +2591,11 @@ eventos:   %1
     </message>
     <message>
         <source>aerodrome zone check</source>
-        <translation type="unfinished"></translation>
+        <translation>comprobación de zonas de aeródromo</translation>
     </message>
     <message>
         <source>custom zone check</source>
-        <translation type="unfinished"></translation>
+        <translation>comprobación de zonas personalizadas</translation>
     </message>
     <message>
         <source>%1 removed</source>
@@ -2670,7 +2671,7 @@ eventos:   %1
     </message>
     <message>
         <source>altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>altitud</translation>
     </message>
     <message>
         <source>altitude of %1 now %2</source>
@@ -2686,23 +2687,23 @@ eventos:   %1
     </message>
     <message>
         <source>front overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>solape frontal</translation>
     </message>
     <message>
         <source>side overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>solape lateral</translation>
     </message>
     <message>
         <source>direction</source>
-        <translation type="unfinished"></translation>
+        <translation>dirección</translation>
     </message>
     <message>
         <source>turnaround</source>
-        <translation type="unfinished"></translation>
+        <translation>viraje</translation>
     </message>
     <message>
         <source>speed</source>
-        <translation type="unfinished"></translation>
+        <translation>velocidad</translation>
     </message>
     <message>
         <source>camera of %1 %2 → %3</source>
@@ -2717,11 +2718,11 @@ eventos:   %1
     <name>RouteEndurance</name>
     <message>
         <source>No energy profile: choose the vehicle&apos;s profile file</source>
-        <translation type="unfinished"></translation>
+        <translation>Sin perfil energético: elija el archivo de perfil del vehículo</translation>
     </message>
     <message>
         <source>The route has no points</source>
-        <translation type="unfinished"></translation>
+        <translation>La ruta no tiene ningún punto</translation>
     </message>
 </context>
 <context>
@@ -3002,57 +3003,57 @@ eventos:   %1
     <name>RouteValidator</name>
     <message>
         <source>%1: the position is not valid.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: la posición no es válida.</translation>
     </message>
     <message>
         <source>The route needs at least two points; it has %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>La ruta necesita al menos dos puntos; tiene %1.</translation>
     </message>
     <message numerus="yes">
         <source>%n AMSL altitude(s), the first at %1, were not checked against the route&apos;s limits: the take-off elevation is unknown.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n altitud AMSL (en %1) no se comprobó con los límites de la ruta: se desconoce la elevación del despegue.</numerusform>
+            <numerusform>%n altitudes AMSL, la primera en %1, no se comprobaron con los límites de la ruta: se desconoce la elevación del despegue.</numerusform>
         </translation>
     </message>
     <message>
         <source>%1: altitude %2 is above the route&apos;s maximum of %3 m.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: la altitud %2 supera el máximo de la ruta de %3 m.</translation>
     </message>
     <message>
         <source>%1: altitude %2 is below the route&apos;s safe altitude of %3 m.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: la altitud %2 está por debajo de la altitud de seguridad de la ruta de %3 m.</translation>
     </message>
     <message>
         <source>%1: the speed must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: la velocidad debe ser positiva.</translation>
     </message>
     <message>
         <source>%1: speed %2 m/s is above the vehicle&apos;s limit of %3 m/s.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: la velocidad %2 m/s supera el límite del vehículo de %3 m/s.</translation>
     </message>
     <message>
         <source>%1: Sortie does not know the algorithm %2; the server checks it when it processes the route.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Sortie no conoce el algoritmo %2; el servidor lo comprueba al procesar la ruta.</translation>
     </message>
     <message>
         <source>%1 repeats %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 repite %2.</translation>
     </message>
     <message>
         <source>%1 is %2 but %3 is %4: the climb between them is not estimated.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 es %2 pero %3 es %4: no se estima el ascenso entre ellos.</translation>
     </message>
     <message>
         <source>The route</source>
-        <translation type="unfinished"></translation>
+        <translation>La ruta</translation>
     </message>
 </context>
 <context>
     <name>SbsFeed</name>
     <message>
         <source>line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>línea %1: %2</translation>
     </message>
 </context>
 <context>
@@ -3086,42 +3087,42 @@ eventos:   %1
     </message>
     <message>
         <source>m</source>
-        <translation type="unfinished"></translation>
+        <translation>m</translation>
     </message>
 </context>
 <context>
     <name>SegmentEditorModel</name>
     <message>
         <source>Acceptance radius</source>
-        <translation type="unfinished"></translation>
+        <translation>Radio de aceptación</translation>
     </message>
     <message>
         <source>Sensor width (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ancho del sensor (mm)</translation>
     </message>
     <message>
         <source>Sensor height (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Alto del sensor (mm)</translation>
     </message>
     <message>
         <source>Focal length (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia focal (mm)</translation>
     </message>
     <message>
         <source>Image width (px)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ancho de imagen (px)</translation>
     </message>
     <message>
         <source>Image height (px)</source>
-        <translation type="unfinished"></translation>
+        <translation>Alto de imagen (px)</translation>
     </message>
     <message>
         <source>Height</source>
-        <translation type="unfinished"></translation>
+        <translation>Altura</translation>
     </message>
     <message>
         <source>Side distance (0: from the camera)</source>
-        <translation type="unfinished"></translation>
+        <translation>Distancia lateral (0: según la cámara)</translation>
     </message>
 </context>
 <context>
@@ -3132,97 +3133,97 @@ eventos:   %1
     </message>
     <message>
         <source>%1 must be from %2 to %3%4.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 debe estar entre %2 y %3%4.</translation>
     </message>
     <message>
         <source>altitudeType is AGL or AMSL, not &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>altitudeType es AGL o AMSL, no «%1».</translation>
     </message>
     <message>
         <source>camera needs a name.</source>
-        <translation type="unfinished"></translation>
+        <translation>camera necesita un nombre.</translation>
     </message>
     <message>
         <source>An area scan has no parameter &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>Un escaneo de área no tiene ningún parámetro «%1».</translation>
     </message>
     <message>
         <source>wpTurnType is STOP_AND_TURN, STRAIGHT, SPLINE or BANK_TURN, not &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>wpTurnType es STOP_AND_TURN, STRAIGHT, SPLINE o BANK_TURN, no «%1».</translation>
     </message>
     <message>
         <source>A waypoint has no parameter &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>Un waypoint no tiene ningún parámetro «%1».</translation>
     </message>
     <message>
         <source>%1 has no parameter &quot;%2&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no tiene ningún parámetro «%2».</translation>
     </message>
     <message>
         <source>%1 cannot take that value.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no admite ese valor.</translation>
     </message>
     <message>
         <source>%1 is true or false, not &quot;%2&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 es true o false, no «%2».</translation>
     </message>
 </context>
 <context>
     <name>SegmentPlanner</name>
     <message>
         <source>The segment has no point</source>
-        <translation type="unfinished"></translation>
+        <translation>El segmento no tiene ningún punto</translation>
     </message>
     <message>
         <source>Point 1 is not a position on the globe</source>
-        <translation type="unfinished"></translation>
+        <translation>El punto 1 no es una posición del globo</translation>
     </message>
     <message>
         <source>The circle has no centre point</source>
-        <translation type="unfinished"></translation>
+        <translation>El círculo no tiene punto central</translation>
     </message>
     <message>
         <source>The circle&apos;s centre is not a position on the globe</source>
-        <translation type="unfinished"></translation>
+        <translation>El centro del círculo no es una posición del globo</translation>
     </message>
     <message>
         <source>The circle needs a positive radius (metres, the figure&apos;s first parameter)</source>
-        <translation type="unfinished"></translation>
+        <translation>El círculo necesita un radio positivo (en metros, el primer parámetro de la figura)</translation>
     </message>
     <message>
         <source>The circle&apos;s radius of %1 m is over the %2 m a segment may span</source>
-        <translation type="unfinished"></translation>
+        <translation>El radio del círculo, de %1 m, supera los %2 m que puede abarcar un segmento</translation>
     </message>
     <message>
         <source>loops: %1 laps of %2 points are too many</source>
-        <translation type="unfinished"></translation>
+        <translation>loops: %1 vueltas de %2 puntos son demasiadas</translation>
     </message>
     <message numerus="yes">
         <source>Orbit of %1 m radius: %n lap(s) of %2 points, %3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Órbita de %1 m de radio: %n vuelta de %2 puntos, %3</numerusform>
+            <numerusform>Órbita de %1 m de radio: %n vueltas de %2 puntos, %3</numerusform>
         </translation>
     </message>
     <message>
         <source>clockwise</source>
-        <translation type="unfinished"></translation>
+        <translation>en sentido horario</translation>
     </message>
     <message>
         <source>counter-clockwise</source>
-        <translation type="unfinished"></translation>
+        <translation>en sentido antihorario</translation>
     </message>
     <message>
         <source>Point %1 is not a position on the globe (latitude and longitude in range)</source>
-        <translation type="unfinished"></translation>
+        <translation>El punto %1 no es una posición del globo (latitud y longitud dentro de rango)</translation>
     </message>
     <message>
         <source>speed: the segment needs a positive speed</source>
-        <translation type="unfinished"></translation>
+        <translation>speed: el segmento necesita una velocidad positiva</translation>
     </message>
     <message>
         <source>No planner knows the algorithm &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Ningún planificador conoce el algoritmo «%1»</translation>
     </message>
 </context>
 <context>
@@ -3236,39 +3237,39 @@ eventos:   %1
     <name>ServerAddress</name>
     <message>
         <source>the server address is empty (expected host:port)</source>
-        <translation type="unfinished"></translation>
+        <translation>la dirección del servidor está vacía (se esperaba host:puerto)</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is a URL: give the server as host:port, e.g. localhost:3334</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» es una URL: indique el servidor como host:puerto, p. ej. localhost:3334</translation>
     </message>
     <message>
         <source>&quot;%1&quot; opens an IPv6 address with [ but never closes it</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» abre una dirección IPv6 con [ pero nunca la cierra</translation>
     </message>
     <message>
         <source>&quot;%1&quot; has text after the IPv6 address that is not :port</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» tiene texto tras la dirección IPv6 que no es :puerto</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not an IPv6 address</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» no es una dirección IPv6</translation>
     </message>
     <message>
         <source>write an IPv6 server address in brackets: [%1]:3334</source>
-        <translation type="unfinished"></translation>
+        <translation>escriba la dirección IPv6 del servidor entre corchetes: [%1]:3334</translation>
     </message>
     <message>
         <source>&quot;%1&quot; has no host name</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» no tiene nombre de host</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a host name (expected host:port, e.g. localhost:3334)</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» no es un nombre de host (se esperaba host:puerto, p. ej. localhost:3334)</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a port number (1 to 65535)</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» no es un número de puerto (1 a 65535)</translation>
     </message>
 </context>
 <context>
@@ -3310,26 +3311,26 @@ eventos:   %1
     <name>ServerZoneReply</name>
     <message>
         <source>the server gave no reason</source>
-        <translation type="unfinished"></translation>
+        <translation>el servidor no indicó ningún motivo</translation>
     </message>
 </context>
 <context>
     <name>SetNfzChecksCommand</name>
     <message>
         <source>Check aerodrome zones</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprobar zonas de aeródromo</translation>
     </message>
     <message>
         <source>Do not check aerodrome zones</source>
-        <translation type="unfinished"></translation>
+        <translation>No comprobar zonas de aeródromo</translation>
     </message>
     <message>
         <source>Check custom zones</source>
-        <translation type="unfinished"></translation>
+        <translation>Comprobar zonas personalizadas</translation>
     </message>
     <message>
         <source>Do not check custom zones</source>
-        <translation type="unfinished"></translation>
+        <translation>No comprobar zonas personalizadas</translation>
     </message>
 </context>
 <context>
@@ -3446,59 +3447,59 @@ eventos:   %1
     <name>SortieFormat</name>
     <message>
         <source>not a valid UgCS %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un mensaje UgCS %1 válido</translation>
     </message>
     <message>
         <source>missing &quot;AGL&quot; or &quot;AMSL&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>falta «AGL» o «AMSL»</translation>
     </message>
     <message>
         <source>expected &quot;AGL&quot; or &quot;AMSL&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba «AGL» o «AMSL»</translation>
     </message>
     <message>
         <source>unknown value &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>valor desconocido «%1»</translation>
     </message>
     <message>
         <source>latitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>latitud fuera de rango</translation>
     </message>
     <message>
         <source>longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>longitud fuera de rango</translation>
     </message>
     <message>
         <source>latitude/longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>latitud/longitud fuera de rango</translation>
     </message>
     <message>
         <source>expected &quot;altitude&quot; or &quot;groundSampleDistance&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba «altitude» o «groundSampleDistance»</translation>
     </message>
     <message>
         <source>no figure type %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no existe el tipo de figura %1</translation>
     </message>
     <message>
         <source>unknown segment type &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>tipo de segmento desconocido «%1»</translation>
     </message>
     <message>
         <source>expected &quot;none&quot; or &quot;returnHome&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaba «none» o «returnHome»</translation>
     </message>
     <message>
         <source>not a Sortie mission file (&quot;format&quot; is not &quot;sortie-mission&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un archivo de misión de Sortie («format» no es «sortie-mission»)</translation>
     </message>
     <message>
         <source>schema version %1 does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>la versión de esquema %1 no existe</translation>
     </message>
     <message>
         <source>written by a newer Sortie (schema %1); this one reads up to schema %2</source>
-        <translation type="unfinished"></translation>
+        <translation>escrito por una versión más reciente de Sortie (esquema %1); esta lee hasta el esquema %2</translation>
     </message>
 </context>
 <context>
@@ -3599,77 +3600,77 @@ eventos:   %1
     <name>TerrainFollow</name>
     <message>
         <source>Waiting for terrain data from %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Esperando datos de terreno de %1</translation>
     </message>
     <message>
         <source>No terrain data %1 m along the pass (tried: %2): terrain following needs the ground everywhere</source>
-        <translation type="unfinished"></translation>
+        <translation>Sin datos de terreno a %1 m a lo largo de la pasada (se probó: %2): el seguimiento del terreno necesita el terreno en todas partes</translation>
     </message>
 </context>
 <context>
     <name>TerrainProfile</name>
     <message>
         <source>%1, point %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, punto %2</translation>
     </message>
     <message>
         <source>Waypoint %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Waypoint %1</translation>
     </message>
     <message>
         <source>Leg %1 (%2 → %3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Tramo %1 (%2 → %3)</translation>
     </message>
 </context>
 <context>
     <name>TerrainRule</name>
     <message>
         <source>Waypoint %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Waypoint %1</translation>
     </message>
     <message>
         <source>%1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 a %2</translation>
     </message>
     <message>
         <source>%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height above sea level is unknown.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: la altitud es sobre %2, pero no hay datos de terreno %3 (se probó: %4), así que se desconoce la altura sobre el nivel del mar.</translation>
     </message>
     <message>
         <source>the ground</source>
-        <translation type="unfinished"></translation>
+        <translation>el terreno</translation>
     </message>
     <message>
         <source>at home</source>
-        <translation type="unfinished"></translation>
+        <translation>en el origen</translation>
     </message>
     <message>
         <source>%1 m above the ground</source>
-        <translation type="unfinished"></translation>
+        <translation>a %1 m sobre el terreno</translation>
     </message>
     <message>
         <source>%1 m below the ground</source>
-        <translation type="unfinished"></translation>
+        <translation>a %1 m bajo el terreno</translation>
     </message>
     <message>
         <source> (too low from %1 m to %2 m along it)</source>
-        <translation type="unfinished"></translation>
+        <translation> (demasiado bajo de %1 m a %2 m de su inicio)</translation>
     </message>
     <message>
         <source>%1 flies %2 at %3 m along it%4, closer than the safe distance of %5 m.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 vuela %2 a %3 m de su inicio%4, más cerca que la distancia de seguridad de %5 m.</translation>
     </message>
     <message>
         <source>%1: no terrain data from %2 m to %3 m along it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: sin datos de terreno de %2 m a %3 m de su inicio</translation>
     </message>
     <message>
         <source>No terrain data from %1 m along %2 to %3 m along %4</source>
-        <translation type="unfinished"></translation>
+        <translation>Sin datos de terreno desde %1 m de %2 hasta %3 m de %4</translation>
     </message>
     <message>
         <source>%1 (tried: %2); the clearance there is not checked.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (se probó: %2); allí no se comprueba el margen.</translation>
     </message>
 </context>
 <context>
@@ -3695,11 +3696,11 @@ eventos:   %1
     <name>TilePrefetch</name>
     <message>
         <source>Sortie/%1 (drone ground station)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sortie/%1 (drone ground station)</translation>
     </message>
     <message>
         <source>HTTP %1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>HTTP %1 %2</translation>
     </message>
 </context>
 <context>
@@ -3752,9 +3753,9 @@ eventos:   %1
     </message>
     <message numerus="yes">
         <source>%1 (and %n more error(s)) Fix them before %2.</source>
-        <translation type="unfinished">
-            <numerusform>%1 (y errores adicionales: %n) Corríjalos antes de %2.</numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 (y %n error más) Corríjalos antes de %2.</numerusform>
+            <numerusform>%1 (y %n errores más) Corríjalos antes de %2.</numerusform>
         </translation>
     </message>
     <message>
@@ -3771,9 +3772,9 @@ eventos:   %1
     </message>
     <message numerus="yes">
         <source>The route has %n warning(s):</source>
-        <translation type="unfinished">
-            <numerusform>Advertencias de la ruta (%n):</numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>La ruta tiene %n aviso:</numerusform>
+            <numerusform>La ruta tiene %n avisos:</numerusform>
         </translation>
     </message>
     <message>
@@ -3793,9 +3794,9 @@ eventos:   %1
     <name>ValidationGate</name>
     <message numerus="yes">
         <source>%1 refused: the route has %n validation error(s). %2 Fix them, or override explicitly.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Operación rechazada (%1): la ruta tiene %n error de validación. %2 Corríjalo o fuerce la operación explícitamente.</numerusform>
+            <numerusform>Operación rechazada (%1): la ruta tiene %n errores de validación. %2 Corríjalos o fuerce la operación explícitamente.</numerusform>
         </translation>
     </message>
 </context>
@@ -3803,127 +3804,127 @@ eventos:   %1
     <name>VciConnection</name>
     <message>
         <source>the connection to the vehicle was closed</source>
-        <translation type="unfinished"></translation>
+        <translation>se cerró la conexión con el vehículo</translation>
     </message>
     <message>
         <source>the device was closed</source>
-        <translation type="unfinished"></translation>
+        <translation>se cerró el dispositivo</translation>
     </message>
     <message>
         <source>the device was destroyed</source>
-        <translation type="unfinished"></translation>
+        <translation>se destruyó el dispositivo</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a valid VCI URI</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» no es un URI de VCI válido</translation>
     </message>
     <message>
         <source>a ground station does not send NOTIFY</source>
-        <translation type="unfinished"></translation>
+        <translation>una estación de tierra no envía NOTIFY</translation>
     </message>
     <message>
         <source>not connected to the vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>sin conexión con el vehículo</translation>
     </message>
     <message>
         <source>no answer in time (it waited behind other requests)</source>
-        <translation type="unfinished"></translation>
+        <translation>sin respuesta a tiempo (esperó detrás de otras solicitudes)</translation>
     </message>
     <message>
         <source>writing to the vehicle failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>falló la escritura en el vehículo: %1</translation>
     </message>
     <message>
         <source>the vehicle sent an answer (%1) to no request</source>
-        <translation type="unfinished"></translation>
+        <translation>el vehículo envió una respuesta (%1) que no corresponde a ninguna solicitud</translation>
     </message>
     <message>
         <source>unreadable message from the vehicle at byte %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>mensaje ilegible del vehículo en el byte %1: %2</translation>
     </message>
     <message>
         <source>%1: the vehicle answered %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: el vehículo respondió %2 %3</translation>
     </message>
     <message>
         <source>the vehicle did not answer in time</source>
-        <translation type="unfinished"></translation>
+        <translation>el vehículo no respondió a tiempo</translation>
     </message>
 </context>
 <context>
     <name>VciEndpoint</name>
     <message>
         <source>&quot;%1&quot; is not a URL: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» no es una URL: %2</translation>
     </message>
     <message>
         <source>&quot;%1&quot; needs a host and a port: tcp://host:port</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» necesita un host y un puerto: tcp://host:puerto</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: use tcp://host:port or serial:/dev/name</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1»: use tcp://host:puerto o serial:/dev/nombre</translation>
     </message>
     <message>
         <source>&quot;%1&quot; names no serial device</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» no indica ningún dispositivo serie</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: unknown serial setting &quot;%2&quot; (baud, databits, parity, stopbits, flow)</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1»: ajuste serie desconocido «%2» (baud, databits, parity, stopbits, flow)</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: %2=%3 is not a valid value</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1»: %2=%3 no es un valor válido</translation>
     </message>
     <message>
         <source>serial:%1?baud=%2&amp;databits=%3&amp;parity=%4&amp;stopbits=%5&amp;flow=%6</source>
-        <translation type="unfinished"></translation>
+        <translation>serial:%1?baud=%2&amp;databits=%3&amp;parity=%4&amp;stopbits=%5&amp;flow=%6</translation>
     </message>
 </context>
 <context>
     <name>VciFenceBuilder</name>
     <message>
         <source>zone &apos;%1&apos;: its AGL limits need the ground under it, which no terrain source has; a vehicle cannot be given it</source>
-        <translation type="unfinished"></translation>
+        <translation>zona «%1»: sus límites AGL necesitan el terreno bajo ella, que ninguna fuente de terreno tiene; no se puede dar a un vehículo</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: no ground under it, so its AGL limits were dropped (the vehicle keeps out of the whole column)</source>
-        <translation type="unfinished"></translation>
+        <translation>zona «%1»: no hay terreno bajo ella, así que se descartaron sus límites AGL (el vehículo se mantiene fuera de toda la columna)</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: over ground from %2 to %3 m its AGL limits leave no room in AMSL</source>
-        <translation type="unfinished"></translation>
+        <translation>zona «%1»: sobre un terreno de %2 a %3 m, sus límites AGL no dejan espacio en AMSL</translation>
     </message>
     <message>
         <source>%1 (hole %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (hueco %2)</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: its holes are closed on the vehicle (a fence polygon has none)</source>
-        <translation type="unfinished"></translation>
+        <translation>zona «%1»: sus huecos se cierran en el vehículo (un polígono de geocerca no tiene)</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: a cone that narrows to a point cannot keep a vehicle in</source>
-        <translation type="unfinished"></translation>
+        <translation>zona «%1»: un cono que se estrecha hasta un punto no puede mantener dentro a un vehículo</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: its cone is a cylinder of radius %2 m on the vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>zona «%1»: en el vehículo, su cono es un cilindro de %2 m de radio</translation>
     </message>
     <message>
         <source>route fence</source>
-        <translation type="unfinished"></translation>
+        <translation>geocerca de la ruta</translation>
     </message>
     <message>
         <source>the fence cannot be sent: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede enviar la geocerca: %1</translation>
     </message>
     <message numerus="yes">
         <source>fence: %1 of the route&apos;s own, %n airspace zone(s) near it; on a breach the vehicle will %2</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>geocerca: %1 de la propia ruta, %n zona del espacio aéreo cercana; si la viola, el vehículo va a %2</numerusform>
+            <numerusform>geocerca: %1 de la propia ruta, %n zonas del espacio aéreo cercanas; si la viola, el vehículo va a %2</numerusform>
         </translation>
     </message>
     <message>
@@ -3932,111 +3933,111 @@ eventos:   %1
     </message>
     <message>
         <source>land</source>
-        <translation type="unfinished"></translation>
+        <translation>aterrizar</translation>
     </message>
     <message>
         <source>hold</source>
-        <translation type="unfinished"></translation>
+        <translation>mantener la posición</translation>
     </message>
 </context>
 <context>
     <name>VciMissionPlanner</name>
     <message>
         <source>the route has no waypoints to fly</source>
-        <translation type="unfinished"></translation>
+        <translation>la ruta no tiene waypoints que volar</translation>
     </message>
 </context>
 <context>
     <name>VciTransport</name>
     <message>
         <source>closed by the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>cerrada por el operador</translation>
     </message>
     <message>
         <source>reconnecting at the operator&apos;s request</source>
-        <translation type="unfinished"></translation>
+        <translation>reconectando a petición del operador</translation>
     </message>
     <message>
         <source>the vehicle closed the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>el vehículo cerró la conexión</translation>
     </message>
     <message>
         <source>cannot open %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede abrir %1: %2</translation>
     </message>
 </context>
 <context>
     <name>VciVehicleLink</name>
     <message>
         <source>connection to %1 lost: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>conexión con %1 perdida: %2</translation>
     </message>
     <message>
         <source>disconnected by the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>desconectado por el operador</translation>
     </message>
     <message>
         <source>left its fence &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>salió de su geocerca «%1»</translation>
     </message>
     <message>
         <source>entered the exclusion zone &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>entró en la zona de exclusión «%1»</translation>
     </message>
     <message>
         <source>returning home</source>
-        <translation type="unfinished"></translation>
+        <translation>volviendo al origen</translation>
     </message>
     <message>
         <source>action unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>acción desconocida</translation>
     </message>
     <message>
         <source>fence breach: %1; %2</source>
-        <translation type="unfinished"></translation>
+        <translation>violación de geocerca: %1; %2</translation>
     </message>
     <message>
         <source>the ground under the route did not arrive from %1 in %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>el terreno bajo la ruta no llegó de %1 en %2 s</translation>
     </message>
     <message>
         <source>the vehicle refused the fence: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>el vehículo rechazó la geocerca: %1</translation>
     </message>
     <message>
         <source>the fence could not be read back: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no se pudo leer de vuelta la geocerca: %1</translation>
     </message>
     <message>
         <source>the vehicle&apos;s fence cannot be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede leer la geocerca del vehículo: %1</translation>
     </message>
     <message>
         <source>the vehicle holds another fence than the one sent (%1 items sent, %2 held)</source>
-        <translation type="unfinished"></translation>
+        <translation>el vehículo contiene una geocerca distinta de la enviada (%1 elementos enviados, %2 contenidos)</translation>
     </message>
     <message>
         <source>the vehicle&apos;s mission cannot be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede leer la misión del vehículo: %1</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a parameter name</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» no es un nombre de parámetro</translation>
     </message>
 </context>
 <context>
     <name>Vehicle</name>
     <message>
         <source>mode %1</source>
-        <translation type="unfinished"></translation>
+        <translation>modo %1</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a flight mode</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» no es un modo de vuelo</translation>
     </message>
     <message>
         <source>takeoff to %1 m</source>
-        <translation type="unfinished"></translation>
+        <translation>despegue a %1 m</translation>
     </message>
     <message>
         <source>return home</source>
@@ -4047,67 +4048,67 @@ eventos:   %1
     <name>WaypointAction</name>
     <message>
         <source>Wait for operator</source>
-        <translation type="unfinished"></translation>
+        <translation>Esperar al operador</translation>
     </message>
     <message>
         <source>Wait %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Esperar %1 s</translation>
     </message>
     <message>
         <source>Heading %1°%2</source>
-        <translation type="unfinished"></translation>
+        <translation>Rumbo %1°%2</translation>
     </message>
     <message>
         <source> from course</source>
-        <translation type="unfinished"></translation>
+        <translation> respecto a la trayectoria</translation>
     </message>
     <message>
         <source>Look at %1, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Mirar a %1, %2</translation>
     </message>
     <message>
         <source>Take photo</source>
-        <translation type="unfinished"></translation>
+        <translation>Tomar foto</translation>
     </message>
     <message>
         <source>Start video</source>
-        <translation type="unfinished"></translation>
+        <translation>Iniciar vídeo</translation>
     </message>
     <message>
         <source>Stop video</source>
-        <translation type="unfinished"></translation>
+        <translation>Detener vídeo</translation>
     </message>
     <message>
         <source>Toggle video</source>
-        <translation type="unfinished"></translation>
+        <translation>Alternar vídeo</translation>
     </message>
     <message>
         <source>Photo every %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Foto cada %1 s</translation>
     </message>
     <message>
         <source>Photo every %1 m</source>
-        <translation type="unfinished"></translation>
+        <translation>Foto cada %1 m</translation>
     </message>
     <message>
         <source>Stop photos</source>
-        <translation type="unfinished"></translation>
+        <translation>Detener fotos</translation>
     </message>
     <message>
         <source>Panorama %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>Panorámica %1°</translation>
     </message>
     <message>
         <source>tilt %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>inclinación %1°</translation>
     </message>
     <message>
         <source>roll %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>alabeo %1°</translation>
     </message>
     <message>
         <source>yaw %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>guiñada %1°</translation>
     </message>
     <message>
         <source>zoom %1</source>
@@ -4115,7 +4116,7 @@ eventos:   %1
     </message>
     <message>
         <source>Gimbal (nothing set)</source>
-        <translation type="unfinished"></translation>
+        <translation>Gimbal (nada fijado)</translation>
     </message>
 </context>
 <context>
@@ -4216,188 +4217,188 @@ eventos:   %1
     <name>WplFormat</name>
     <message>
         <source>not a waypoint file: expected &quot;QGC WPL 110&quot;, found &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un archivo de waypoints: se esperaba «QGC WPL 110», se encontró «%1»</translation>
     </message>
     <message>
         <source>unsupported waypoint file version &quot;%1&quot;; Sortie reads QGC WPL 110</source>
-        <translation type="unfinished"></translation>
+        <translation>versión de archivo de waypoints no compatible «%1»; Sortie lee QGC WPL 110</translation>
     </message>
     <message>
         <source>expected 12 tab-separated fields, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>se esperaban 12 campos separados por tabuladores, se encontraron %1</translation>
     </message>
     <message>
         <source>field %1 (%2) is not a number: &quot;%3&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>el campo %1 (%2) no es un número: «%3»</translation>
     </message>
     <message>
         <source>field %1 (%2) must be a whole number, found %3</source>
-        <translation type="unfinished"></translation>
+        <translation>el campo %1 (%2) debe ser un número entero, se encontró %3</translation>
     </message>
     <message>
         <source>item %1 where item %2 was expected</source>
-        <translation type="unfinished"></translation>
+        <translation>elemento %1 donde se esperaba el elemento %2</translation>
     </message>
     <message>
         <source>the home position %1, %2 is not a position</source>
-        <translation type="unfinished"></translation>
+        <translation>la posición de origen %1, %2 no es una posición</translation>
     </message>
     <message>
         <source>the file is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo está vacío</translation>
     </message>
     <message>
         <source>the file has no items, not even the home position</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo no tiene elementos, ni siquiera la posición de origen</translation>
     </message>
     <message>
         <source>The route has no home position: the first point was written as home, at 0 m AMSL.</source>
-        <translation type="unfinished"></translation>
+        <translation>La ruta no tiene posición de origen: el primer punto se escribió como origen, a 0 m AMSL.</translation>
     </message>
 </context>
 <context>
     <name>WpmlDocumentReader</name>
     <message>
         <source>malformed XML: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>XML mal formado: %1</translation>
     </message>
     <message>
         <source>%1 is not a number: &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no es un número: «%2»</translation>
     </message>
     <message>
         <source>%1 is not a whole number: &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 no es un número entero: «%2»</translation>
     </message>
     <message>
         <source>%1 &quot;%2&quot; (written as &quot;%3&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 «%2» (escrito como «%3»)</translation>
     </message>
     <message>
         <source>coordinates &quot;%1&quot; are not longitude,latitude in degrees</source>
-        <translation type="unfinished"></translation>
+        <translation>las coordenadas «%1» no son longitud,latitud en grados</translation>
     </message>
     <message>
         <source>a waypoint index is not a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>un índice de waypoint no es un número entero</translation>
     </message>
 </context>
 <context>
     <name>ZipArchive</name>
     <message>
         <source>two of its entries have the same name</source>
-        <translation type="unfinished"></translation>
+        <translation>dos de sus entradas tienen el mismo nombre</translation>
     </message>
     <message>
         <source>its directory and its entries disagree</source>
-        <translation type="unfinished"></translation>
+        <translation>su directorio y sus entradas no coinciden</translation>
     </message>
     <message>
         <source>it has no ZIP directory (truncated, or not a ZIP file)</source>
-        <translation type="unfinished"></translation>
+        <translation>no tiene directorio ZIP (está truncado o no es un archivo ZIP)</translation>
     </message>
     <message>
         <source>the archive has no end of central directory</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo comprimido no tiene fin de directorio central</translation>
     </message>
     <message>
         <source>ZIP64 archives are not read</source>
-        <translation type="unfinished"></translation>
+        <translation>no se leen archivos ZIP64</translation>
     </message>
     <message>
         <source>a central directory record is damaged at byte %1</source>
-        <translation type="unfinished"></translation>
+        <translation>un registro del directorio central está dañado en el byte %1</translation>
     </message>
     <message>
         <source>an entry&apos;s local header lies outside the archive</source>
-        <translation type="unfinished"></translation>
+        <translation>la cabecera local de una entrada está fuera del archivo comprimido</translation>
     </message>
     <message>
         <source>the entries &quot;%1&quot; and &quot;%2&quot; share bytes in the archive (a ZIP bomb&apos;s trick): not read</source>
-        <translation type="unfinished"></translation>
+        <translation>las entradas «%1» y «%2» comparten bytes en el archivo comprimido (un truco de bomba ZIP): no se leen</translation>
     </message>
     <message>
         <source>not a ZIP archive: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un archivo ZIP: %1</translation>
     </message>
     <message>
         <source>not a readable ZIP archive: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no es un archivo ZIP legible: %1</translation>
     </message>
     <message>
         <source>the archive lists %1 entries, more than the %2 read</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo comprimido enumera %1 entradas, más de las %2 que se leen</translation>
     </message>
     <message>
         <source>the central directory lists %1 entries where libzip read %2</source>
-        <translation type="unfinished"></translation>
+        <translation>el directorio central enumera %1 entradas donde libzip leyó %2</translation>
     </message>
     <message>
         <source>the archive has no &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>el archivo comprimido no contiene «%1»</translation>
     </message>
     <message>
         <source>&quot;%1&quot; would inflate to %2 bytes, more than the %3 read from one entry</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» se descomprimiría en %2 bytes, más de los %3 que se leen de una entrada</translation>
     </message>
     <message>
         <source>reading &quot;%1&quot; would inflate the archive past %2 bytes in all</source>
-        <translation type="unfinished"></translation>
+        <translation>leer «%1» descomprimiría el archivo comprimido por encima de %2 bytes en total</translation>
     </message>
     <message>
         <source>&quot;%1&quot; claims %2 bytes from %3 compressed, more than %4 times: not inflated</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» declara %2 bytes a partir de %3 comprimidos, más de %4 veces: no se descomprime</translation>
     </message>
     <message>
         <source>&quot;%1&quot; cannot be read: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>no se puede leer «%1»: %2</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is damaged: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» está dañado: %2</translation>
     </message>
     <message>
         <source>&quot;%1&quot; holds a different size than the archive says (%2 bytes)</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» tiene un tamaño distinto del que indica el archivo comprimido (%2 bytes)</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is damaged (its CRC does not match)</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» está dañado (su CRC no coincide)</translation>
     </message>
     <message>
         <source>the archive could not be written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>no se pudo escribir el archivo comprimido: %1</translation>
     </message>
     <message>
         <source>the archive could not be written: its bytes could not be read back</source>
-        <translation type="unfinished"></translation>
+        <translation>no se pudo escribir el archivo comprimido: no se pudieron leer de vuelta sus bytes</translation>
     </message>
 </context>
 <context>
     <name>Zone</name>
     <message>
         <source>above home</source>
-        <translation type="unfinished"></translation>
+        <translation>sobre el origen</translation>
     </message>
     <message>
         <source>server aerodrome</source>
-        <translation type="unfinished"></translation>
+        <translation>servidor (aeródromo)</translation>
     </message>
     <message>
         <source>server custom</source>
-        <translation type="unfinished"></translation>
+        <translation>servidor (personalizada)</translation>
     </message>
     <message>
         <source>vehicle fence</source>
-        <translation type="unfinished"></translation>
+        <translation>geocerca del vehículo</translation>
     </message>
     <message>
         <source>%1 polygon %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, polígono %2</translation>
     </message>
     <message>
         <source>%1 circle %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, círculo %2</translation>
     </message>
 </context>
 <context>
@@ -4408,18 +4409,18 @@ eventos:   %1
     </message>
     <message>
         <source>vertex %1</source>
-        <translation type="unfinished"></translation>
+        <translation>vértice %1</translation>
     </message>
 </context>
 <context>
     <name>ZoneFiles</name>
     <message>
         <source>%1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Se omitió %1: %2</translation>
     </message>
     <message>
         <source>unknown zone file type &quot;.%1&quot; (Sortie reads .plan, .geojson, .json and .kml)</source>
-        <translation type="unfinished"></translation>
+        <translation>tipo de archivo de zonas desconocido «.%1» (Sortie lee .plan, .geojson, .json y .kml)</translation>
     </message>
 </context>
 <context>
@@ -4522,55 +4523,55 @@ eventos:   %1
     </message>
     <message>
         <source>exclusion</source>
-        <translation type="unfinished"></translation>
+        <translation>exclusión</translation>
     </message>
     <message>
         <source>inclusion</source>
-        <translation type="unfinished"></translation>
+        <translation>inclusión</translation>
     </message>
     <message>
         <source>HOME</source>
-        <translation type="unfinished"></translation>
+        <translation>ORIGEN</translation>
     </message>
     <message>
         <source>Discard copy</source>
-        <translation type="unfinished"></translation>
+        <translation>Descartar copia</translation>
     </message>
     <message>
         <source>The server&apos;s zone stays as it is</source>
-        <translation type="unfinished"></translation>
+        <translation>La zona del servidor queda como está</translation>
     </message>
     <message>
         <source>Update on server</source>
-        <translation type="unfinished"></translation>
+        <translation>Actualizar en el servidor</translation>
     </message>
     <message>
         <source>Send to server</source>
-        <translation type="unfinished"></translation>
+        <translation>Enviar al servidor</translation>
     </message>
     <message>
         <source>Edit here</source>
-        <translation type="unfinished"></translation>
+        <translation>Editar aquí</translation>
     </message>
     <message>
         <source>Draw a copy to edit; Update on server stores it</source>
-        <translation type="unfinished"></translation>
+        <translation>Dibujar una copia para editarla; Actualizar en el servidor la guarda</translation>
     </message>
     <message>
         <source>Delete on server</source>
-        <translation type="unfinished"></translation>
+        <translation>Eliminar en el servidor</translation>
     </message>
     <message>
         <source>Waiting for the server…</source>
-        <translation type="unfinished"></translation>
+        <translation>Esperando al servidor…</translation>
     </message>
     <message>
         <source>Delete zone</source>
-        <translation type="unfinished"></translation>
+        <translation>Eliminar zona</translation>
     </message>
     <message>
         <source>Delete &apos;%1&apos; on the server, for every operator?</source>
-        <translation type="unfinished"></translation>
+        <translation>¿Eliminar «%1» en el servidor, para todos los operadores?</translation>
     </message>
 </context>
 <context>
@@ -4609,11 +4610,11 @@ eventos:   %1
     </message>
     <message>
         <source>--demo with only the server&apos;s three vehicles: &quot;parked&quot; (nothing moves) or &quot;flying&quot; (one flies, followed in the fly view); for benchmarks.</source>
-        <translation type="unfinished"></translation>
+        <translation>--demo solo con los tres vehículos del servidor: «parked» (nada se mueve) o «flying» (uno vuela, seguido en la vista de vuelo); para pruebas de rendimiento.</translation>
     </message>
     <message>
         <source>A DEM for the terrain: any raster GDAL reads (GeoTIFF, COG, Copernicus DEM, .hgt, ...) or a folder of them, asked before the server (also the setting terrain/demFolder).</source>
-        <translation type="unfinished"></translation>
+        <translation>Un DEM para el terreno: cualquier ráster que lea GDAL (GeoTIFF, COG, Copernicus DEM, .hgt, ...) o una carpeta de ellos, consultado antes que el servidor (también el ajuste terrain/demFolder).</translation>
     </message>
 </context>
 <context>
@@ -4809,47 +4810,47 @@ eventos:   %1
     <name>sortie::airspace::ZoneSharing</name>
     <message>
         <source>Wait: the server has not answered the last change yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Espere: el servidor aún no ha respondido al último cambio.</translation>
     </message>
     <message>
         <source>Only a zone drawn here can be sent to the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>Solo se puede enviar al servidor una zona dibujada aquí.</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; was changed on the server since you copied it (version %2, now %3). Remove your copy and edit the server&apos;s zone again.</source>
-        <translation type="unfinished"></translation>
+        <translation>La zona «%1» se modificó en el servidor desde que usted la copió (versión %2, ahora %3). Quite su copia y vuelva a editar la zona del servidor.</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; is on the server; you changed it since sending, so your copy stays.</source>
-        <translation type="unfinished"></translation>
+        <translation>La zona «%1» está en el servidor; usted la modificó después de enviarla, así que su copia se conserva.</translation>
     </message>
     <message>
         <source>Send zone &apos;%1&apos; to the server</source>
-        <translation type="unfinished"></translation>
+        <translation>Enviar la zona «%1» al servidor</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; is on the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>La zona «%1» está en el servidor.</translation>
     </message>
     <message>
         <source>Only the server&apos;s custom zones can be edited here; aerodrome zones are the server&apos;s own.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aquí solo se pueden editar las zonas personalizadas del servidor; las zonas de aeródromo son del propio servidor.</translation>
     </message>
     <message>
         <source>Edit server zone &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Editar la zona del servidor «%1»</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; is drawn here to edit; send it to store the change on the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>La zona «%1» está dibujada aquí para editarla; envíela para guardar el cambio en el servidor.</translation>
     </message>
     <message>
         <source>Only the server&apos;s custom zones can be deleted here.</source>
-        <translation type="unfinished"></translation>
+        <translation>Aquí solo se pueden eliminar las zonas personalizadas del servidor.</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; was deleted on the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>La zona «%1» se eliminó en el servidor.</translation>
     </message>
 </context>
 <context>
@@ -6452,7 +6453,7 @@ eventos:   %1
     <name>sortie::ui::Translations</name>
     <message>
         <source>System language</source>
-        <translation type="unfinished"></translation>
+        <translation>Idioma del sistema</translation>
     </message>
 </context>
 <context>
