@@ -310,15 +310,15 @@
     </message>
     <message>
         <source>Leg %1 passes within %2 of %3 &apos;%4&apos; (buffer %5).</source>
-        <translation>Ділянка %1 проходить за %2 від: %3 «%4» (буфер %5).</translation>
+        <translation>Ділянка %1 проходить за %2 від %3 «%4» (буфер %5).</translation>
     </message>
     <message>
         <source>exclusion zone</source>
-        <translation>заборонна зона</translation>
+        <translation>заборонної зони</translation>
     </message>
     <message>
         <source>the edge of inclusion zone</source>
-        <translation>межа дозвільної зони</translation>
+        <translation>межі дозвільної зони</translation>
     </message>
 </context>
 <context>
@@ -968,7 +968,7 @@
     </message>
     <message>
         <source>The server sent nothing while %1 waited (%2); the link seems dead</source>
-        <translation>Сервер нічого не надсилав, поки %1 чекав (%2); схоже, зв’язок обірвано</translation>
+        <translation>Сервер нічого не надсилав, поки %1 очікував відповіді (%2); схоже, зв’язок обірвано</translation>
     </message>
     <message>
         <source>The server speaks HCI protocol %1.%2; Sortie speaks %3.%4</source>
