@@ -28,87 +28,87 @@
     <name>ActionVariants</name>
     <message>
         <source>%1 is either on or off</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: лише увімк. або вимк.</translation>
     </message>
     <message>
         <source>%1: &quot;%2&quot; is not one of its choices</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» не є одним із варіантів</translation>
     </message>
     <message>
         <source>%1: &quot;%2&quot; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» не є числом</translation>
     </message>
     <message>
         <source>%1: %2 is not a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 не є цілим числом</translation>
     </message>
     <message>
         <source>%1: %2 is below %3 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 менше за %3 %4</translation>
     </message>
     <message>
         <source>%1: %2 is above %3 %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 більше за %3 %4</translation>
     </message>
     <message>
         <source>Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>Камера</translation>
     </message>
     <message>
         <source>Take a photo</source>
-        <translation type="unfinished"></translation>
+        <translation>Зробити фото</translation>
     </message>
     <message>
         <source>Start video</source>
-        <translation type="unfinished"></translation>
+        <translation>Почати відео</translation>
     </message>
     <message>
         <source>Stop video</source>
-        <translation type="unfinished"></translation>
+        <translation>Зупинити відео</translation>
     </message>
     <message>
         <source>Toggle video</source>
-        <translation type="unfinished"></translation>
+        <translation>Перемкнути відео</translation>
     </message>
     <message>
         <source>Photos by distance</source>
-        <translation type="unfinished"></translation>
+        <translation>Фото за відстанню</translation>
     </message>
     <message>
         <source>Every</source>
-        <translation type="unfinished"></translation>
+        <translation>Кожні</translation>
     </message>
     <message>
         <source>m</source>
-        <translation type="unfinished"></translation>
+        <translation>m</translation>
     </message>
     <message>
         <source>Shots (0: until stopped)</source>
-        <translation type="unfinished"></translation>
+        <translation>Знімків (0: до зупинки)</translation>
     </message>
     <message>
         <source>Start after</source>
-        <translation type="unfinished"></translation>
+        <translation>Почати через</translation>
     </message>
     <message>
         <source>s</source>
-        <translation type="unfinished"></translation>
+        <translation>s</translation>
     </message>
     <message>
         <source>Photos by time</source>
-        <translation type="unfinished"></translation>
+        <translation>Фото за часом</translation>
     </message>
     <message>
         <source>Wait</source>
-        <translation type="unfinished"></translation>
+        <translation>Очікування</translation>
     </message>
     <message>
         <source>For</source>
-        <translation type="unfinished"></translation>
+        <translation>Протягом</translation>
     </message>
     <message>
         <source>Until the operator continues</source>
-        <translation type="unfinished"></translation>
+        <translation>Доки оператор не продовжить</translation>
     </message>
     <message>
         <source>Heading</source>
@@ -116,11 +116,11 @@
     </message>
     <message>
         <source>From the course</source>
-        <translation type="unfinished"></translation>
+        <translation>Від напрямку руху</translation>
     </message>
     <message>
         <source>Point of interest</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка інтересу</translation>
     </message>
     <message>
         <source>Latitude</source>
@@ -132,139 +132,139 @@
     </message>
     <message>
         <source>Altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Висота</translation>
     </message>
     <message>
         <source>Altitude type</source>
-        <translation type="unfinished"></translation>
+        <translation>Тип висоти</translation>
     </message>
     <message>
         <source>Above ground (AGL)</source>
-        <translation type="unfinished"></translation>
+        <translation>Над поверхнею (AGL)</translation>
     </message>
     <message>
         <source>Above sea level (AMSL)</source>
-        <translation type="unfinished"></translation>
+        <translation>Над рівнем моря (AMSL)</translation>
     </message>
     <message>
         <source>Gimbal and zoom</source>
-        <translation type="unfinished"></translation>
+        <translation>Підвіс і зум</translation>
     </message>
     <message>
         <source>Tilt (90: down)</source>
-        <translation type="unfinished"></translation>
+        <translation>Нахил (90: вниз)</translation>
     </message>
     <message>
         <source>Roll</source>
-        <translation type="unfinished"></translation>
+        <translation>Крен</translation>
     </message>
     <message>
         <source>Yaw</source>
-        <translation type="unfinished"></translation>
+        <translation>Рискання</translation>
     </message>
     <message>
         <source>Zoom level</source>
-        <translation type="unfinished"></translation>
+        <translation>Рівень зуму</translation>
     </message>
     <message>
         <source>Panorama</source>
-        <translation type="unfinished"></translation>
+        <translation>Панорама</translation>
     </message>
     <message>
         <source>Angle</source>
-        <translation type="unfinished"></translation>
+        <translation>Кут</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Крок</translation>
     </message>
     <message>
         <source>Pause per step</source>
-        <translation type="unfinished"></translation>
+        <translation>Пауза на кроці</translation>
     </message>
     <message>
         <source>Rotation speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Швидкість обертання</translation>
     </message>
     <message>
         <source>°/s</source>
-        <translation type="unfinished"></translation>
+        <translation>°/s</translation>
     </message>
     <message>
         <source>Clockwise</source>
-        <translation type="unfinished"></translation>
+        <translation>За годинниковою стрілкою</translation>
     </message>
     <message>
         <source>Video</source>
-        <translation type="unfinished"></translation>
+        <translation>Відео</translation>
     </message>
     <message>
         <source>Set servo</source>
-        <translation type="unfinished"></translation>
+        <translation>Задати сервопривід</translation>
     </message>
     <message>
         <source>Servo</source>
-        <translation type="unfinished"></translation>
+        <translation>Сервопривід</translation>
     </message>
     <message>
         <source>PWM</source>
-        <translation type="unfinished"></translation>
+        <translation>PWM</translation>
     </message>
     <message>
         <source>Repeat servo</source>
-        <translation type="unfinished"></translation>
+        <translation>Повтор сервопривода</translation>
     </message>
     <message>
         <source>Cycle time</source>
-        <translation type="unfinished"></translation>
+        <translation>Період циклу</translation>
     </message>
     <message>
         <source>Repeats</source>
-        <translation type="unfinished"></translation>
+        <translation>Повторів</translation>
     </message>
     <message>
         <source>Switch to hover (VTOL)</source>
-        <translation type="unfinished"></translation>
+        <translation>Перехід у висіння (VTOL)</translation>
     </message>
     <message>
         <source>Switch to fixed-wing</source>
-        <translation type="unfinished"></translation>
+        <translation>Перехід у літаковий режим</translation>
     </message>
     <message>
         <source>Lidar recording</source>
-        <translation type="unfinished"></translation>
+        <translation>Запис лідара</translation>
     </message>
     <message>
         <source>Recording</source>
-        <translation type="unfinished"></translation>
+        <translation>Запис</translation>
     </message>
     <message>
         <source>Lidar calibration</source>
-        <translation type="unfinished"></translation>
+        <translation>Калібрування лідара</translation>
     </message>
     <message>
         <source>Distance</source>
-        <translation type="unfinished"></translation>
+        <translation>Відстань</translation>
     </message>
     <message>
         <source>Times</source>
-        <translation type="unfinished"></translation>
+        <translation>Разів</translation>
     </message>
     <message>
         <source>Hop</source>
-        <translation type="unfinished"></translation>
+        <translation>Підскок</translation>
     </message>
     <message>
         <source>Descent altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>Висота зниження</translation>
     </message>
     <message>
         <source>Drop payload</source>
-        <translation type="unfinished"></translation>
+        <translation>Скинути вантаж</translation>
     </message>
     <message>
         <source>Descent speed</source>
-        <translation type="unfinished"></translation>
+        <translation>Швидкість зниження</translation>
     </message>
     <message>
         <source>m/s</source>
@@ -275,104 +275,104 @@
     <name>Airspace</name>
     <message>
         <source>route fence</source>
-        <translation type="unfinished"></translation>
+        <translation>геозона маршруту</translation>
     </message>
     <message>
         <source>the open route</source>
-        <translation type="unfinished"></translation>
+        <translation>відкритий маршрут</translation>
     </message>
     <message>
         <source>%1 (kept as %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (збережено як %2)</translation>
     </message>
 </context>
 <context>
     <name>AirspaceRule</name>
     <message>
         <source>floor %1, ceiling %2</source>
-        <translation type="unfinished"></translation>
+        <translation>нижня межа %1, верхня межа %2</translation>
     </message>
     <message>
         <source>at %1</source>
-        <translation type="unfinished"></translation>
+        <translation>на %1</translation>
     </message>
     <message>
         <source>from %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>від %1 до %2</translation>
     </message>
     <message>
         <source>Leg %1 %2 &apos;%3&apos; %4 (%5)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ділянка %1 %2 «%3» %4 (%5)</translation>
     </message>
     <message>
         <source>; its height there is unknown (no terrain data), so it counts as inside</source>
-        <translation type="unfinished"></translation>
+        <translation>; її висота там невідома (немає даних рельєфу), тому вважається, що вона всередині</translation>
     </message>
     <message>
         <source>Leg %1 passes within %2 of %3 &apos;%4&apos; (buffer %5).</source>
-        <translation type="unfinished"></translation>
+        <translation>Ділянка %1 проходить за %2 від %3 «%4» (буфер %5).</translation>
     </message>
     <message>
         <source>exclusion zone</source>
-        <translation type="unfinished"></translation>
+        <translation>заборонної зони</translation>
     </message>
     <message>
         <source>the edge of inclusion zone</source>
-        <translation type="unfinished"></translation>
+        <translation>межі дозвільної зони</translation>
     </message>
 </context>
 <context>
     <name>AlgorithmDefinition</name>
     <message>
         <source>%1 must be set</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 має бути задано</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» не є числом</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» не є цілим числом</translation>
     </message>
     <message>
         <source>%1: %2 is below the minimum of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 менше за мінімум %3</translation>
     </message>
     <message>
         <source>%1: %2 is above the maximum of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: %2 більше за максимум %3</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is neither true nor false</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» — ні true, ні false</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; is not one of its choices</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» не є одним із варіантів</translation>
     </message>
     <message>
         <source>%1: &apos;%2&apos; does not have the expected form</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: «%2» має неочікувану форму</translation>
     </message>
 </context>
 <context>
     <name>AreaScanPlanner</name>
     <message>
         <source>The camera needs a positive sensor size, focal length and image size.</source>
-        <translation type="unfinished"></translation>
+        <translation>Камері потрібні додатні розмір сенсора, фокусна відстань і розмір зображення.</translation>
     </message>
     <message>
         <source>Overlaps must be between 0 and 95 %.</source>
-        <translation type="unfinished"></translation>
+        <translation>Перекриття мають бути від 0 до 95 %.</translation>
     </message>
     <message>
         <source>The scan altitude (or ground sample distance) must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>Висота сканування (або GSD) має бути додатною.</translation>
     </message>
     <message>
         <source>The turnaround distance must not be negative.</source>
-        <translation type="unfinished"></translation>
+        <translation>Відстань розвороту не може бути від’ємною.</translation>
     </message>
 </context>
 <context>
@@ -386,50 +386,50 @@
     <name>AutosaveDirectory</name>
     <message>
         <source>autosave-%1.json</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.json</translation>
     </message>
     <message>
         <source>autosave-%1.lock</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.lock</translation>
     </message>
     <message>
         <source>autosave-%1.unreadable-%2.json</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.unreadable-%2.json</translation>
     </message>
     <message>
         <source>autosave-%1.unreadable-%2-%3.json</source>
-        <translation type="unfinished"></translation>
+        <translation>autosave-%1.unreadable-%2-%3.json</translation>
     </message>
     <message>
         <source>Cannot create the autosave folder %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Не вдається створити теку автозбереження %1</translation>
     </message>
 </context>
 <context>
     <name>AutosaveRecord</name>
     <message>
         <source>the autosave holds no &quot;%1&quot; route</source>
-        <translation type="unfinished"></translation>
+        <translation>автозбереження не містить маршруту «%1»</translation>
     </message>
     <message>
         <source>the &quot;%1&quot; document holds %2 routes, not one</source>
-        <translation type="unfinished"></translation>
+        <translation>документ «%1» містить маршрутів: %2, а не один</translation>
     </message>
     <message>
         <source>/%1/mission/routes</source>
-        <translation type="unfinished"></translation>
+        <translation>/%1/mission/routes</translation>
     </message>
     <message>
         <source>not a Sortie autosave (&quot;format&quot; is not &quot;sortie-autosave&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>не автозбереження Sortie (&quot;format&quot; не &quot;sortie-autosave&quot;)</translation>
     </message>
     <message>
         <source>autosave format version %1 is not one this Sortie reads (1)</source>
-        <translation type="unfinished"></translation>
+        <translation>версію формату автозбереження %1 ця версія Sortie не читає (1)</translation>
     </message>
     <message>
         <source>&quot;savedAt&quot; is not a date and time</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;savedAt&quot; не є датою й часом</translation>
     </message>
 </context>
 <context>
@@ -443,54 +443,54 @@
     <name>Camera</name>
     <message>
         <source>DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)</translation>
     </message>
     <message>
         <source>DJI Phantom 4 (FC330)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Phantom 4 (FC330)</translation>
     </message>
     <message>
         <source>DJI Mavic 2 Pro (Hasselblad L1D-20c)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Mavic 2 Pro (Hasselblad L1D-20c)</translation>
     </message>
     <message>
         <source>DJI Mavic 3 Enterprise (wide)</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Mavic 3 Enterprise (wide)</translation>
     </message>
     <message>
         <source>DJI Zenmuse P1 24 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Zenmuse P1 24 mm</translation>
     </message>
     <message>
         <source>DJI Zenmuse P1 35 mm</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI Zenmuse P1 35 mm</translation>
     </message>
     <message>
         <source>Sony RX1R II</source>
-        <translation type="unfinished"></translation>
+        <translation>Sony RX1R II</translation>
     </message>
     <message>
         <source>senseFly S.O.D.A.</source>
-        <translation type="unfinished"></translation>
+        <translation>senseFly S.O.D.A.</translation>
     </message>
     <message>
         <source>MicaSense RedEdge-MX</source>
-        <translation type="unfinished"></translation>
+        <translation>MicaSense RedEdge-MX</translation>
     </message>
     <message>
         <source>GoPro Hero3 Black Edition</source>
-        <translation type="unfinished"></translation>
+        <translation>GoPro Hero3 Black Edition</translation>
     </message>
     <message>
         <source>Generic 1&quot; 20 MP</source>
-        <translation type="unfinished"></translation>
+        <translation>Типова 1&quot; 20 MP</translation>
     </message>
 </context>
 <context>
     <name>ClientGraph</name>
     <message>
         <source>route fence</source>
-        <translation type="unfinished"></translation>
+        <translation>геозона маршруту</translation>
     </message>
 </context>
 <context>
@@ -626,35 +626,35 @@
     <name>CoverageSweep</name>
     <message>
         <source>An area scan needs a polygon of at least 3 vertices.</source>
-        <translation type="unfinished"></translation>
+        <translation>Скануванню площі потрібен полігон щонайменше з 3 вершин.</translation>
     </message>
     <message>
         <source>Polygon vertex %1 is not a valid position.</source>
-        <translation type="unfinished"></translation>
+        <translation>Вершина полігона %1 не є коректною позицією.</translation>
     </message>
     <message>
         <source>The polygon spans more than 100 km; split it into smaller scans.</source>
-        <translation type="unfinished"></translation>
+        <translation>Полігон більший за 100 km; розділіть його на менші сканування.</translation>
     </message>
     <message>
         <source>The scan polygon crosses itself (edges %1 and %2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Полігон сканування самоперетинається (ребра %1 і %2).</translation>
     </message>
     <message>
         <source>The scan polygon has no area.</source>
-        <translation type="unfinished"></translation>
+        <translation>Полігон сканування не має площі.</translation>
     </message>
     <message>
         <source>The distance between passes must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>Відстань між проходами має бути додатною.</translation>
     </message>
     <message>
         <source>The scan would need %1 transects; raise the altitude or lower the side overlap.</source>
-        <translation type="unfinished"></translation>
+        <translation>Для сканування потрібно проходів: %1; збільште висоту або зменште бічне перекриття.</translation>
     </message>
     <message>
         <source>The scan yields no transects: the polygon is too narrow.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сканування не дає жодного проходу: полігон завузький.</translation>
     </message>
 </context>
 <context>
@@ -668,11 +668,11 @@
     <name>Egm96Geoid</name>
     <message>
         <source>the EGM96 geoid grid %1 is missing (Debian: install proj-data): ellipsoidal heights cannot be converted to AMSL</source>
-        <translation type="unfinished"></translation>
+        <translation>немає сітки геоїда EGM96 %1 (Debian: встановіть proj-data): еліпсоїдні висоти не можна перерахувати в AMSL</translation>
     </message>
     <message>
         <source>the EGM96 geoid grid %1 cannot be used: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>сітку геоїда EGM96 %1 не можна використати: %2</translation>
     </message>
 </context>
 <context>
@@ -693,19 +693,19 @@
     <name>EnergyProfile</name>
     <message>
         <source>%1 must be a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 має бути додатним числом</translation>
     </message>
     <message>
         <source>reserve must be a fraction from 0 up to (not including) 1</source>
-        <translation type="unfinished"></translation>
+        <translation>reserve має бути часткою від 0 до 1 (не включно)</translation>
     </message>
     <message>
         <source>acceleration must be a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>acceleration має бути додатним числом</translation>
     </message>
     <message>
         <source>expected &quot;file&quot;, &quot;server&quot; or &quot;fit&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується &quot;file&quot;, &quot;server&quot; або &quot;fit&quot;</translation>
     </message>
 </context>
 <context>
@@ -727,7 +727,7 @@
     <name>FlightLogExport</name>
     <message>
         <source>Flight log %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Журнал польоту %1</translation>
     </message>
 </context>
 <context>
@@ -735,7 +735,8 @@
     <message>
         <source>
   %1 (%2%3%4): %5 samples</source>
-        <translation type="unfinished"></translation>
+        <translation>
+  %1 (%2%3%4): відліків: %5</translation>
     </message>
 </context>
 <context>
@@ -781,282 +782,282 @@
     <name>HciConnection</name>
     <message>
         <source>type %1</source>
-        <translation type="unfinished"></translation>
+        <translation>тип %1</translation>
     </message>
     <message>
         <source>%1 ms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 ms</translation>
     </message>
     <message>
         <source>No answer from %1 within %2: check the address and the network</source>
-        <translation type="unfinished"></translation>
+        <translation>Немає відповіді від %1 протягом %2: перевірте адресу й мережу</translation>
     </message>
     <message>
         <source>The server at %1 closed the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>Сервер %1 закрив з’єднання</translation>
     </message>
     <message>
         <source>The connection was closed by the application</source>
-        <translation type="unfinished"></translation>
+        <translation>З’єднання закрито застосунком</translation>
     </message>
     <message>
         <source>Disconnected from %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Відключено від %1</translation>
     </message>
     <message>
         <source>%1 refused the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 відхилив з’єднання</translation>
     </message>
     <message>
         <source>The host in %1 cannot be found</source>
-        <translation type="unfinished"></translation>
+        <translation>Не вдається знайти хост у %1</translation>
     </message>
     <message>
         <source>Cannot reach %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Не вдається з’єднатися з %1: %2</translation>
     </message>
     <message>
         <source>Connection to %1 lost: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>З’єднання з %1 втрачено: %2</translation>
     </message>
     <message>
         <source>%1 got no answer: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: немає відповіді: %2</translation>
     </message>
     <message>
         <source>%1 is not an HCI message</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 не є повідомленням HCI</translation>
     </message>
     <message>
         <source>%1 not sent: not connected to the server</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 не надіслано: немає підключення до сервера</translation>
     </message>
     <message>
         <source>%1 not sent: missing %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 не надіслано: бракує %2</translation>
     </message>
     <message>
         <source>No answer to %1 within %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Немає відповіді на %1 протягом %2</translation>
     </message>
     <message>
         <source>%1 at byte %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 на байті %2: %3</translation>
     </message>
     <message>
         <source>%1 with instance id -1 is not a notification</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 з instance id -1 не є сповіщенням</translation>
     </message>
     <message>
         <source>%1 for instance id %2, which no request waits for (answered after its timeout?)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 для instance id %2, на який не чекає жоден запит (відповідь після тайм-ауту?)</translation>
     </message>
     <message>
         <source>The server answered %1 with %2 instead of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Сервер відповів на %1 повідомленням %2 замість %3</translation>
     </message>
 </context>
 <context>
     <name>HciElevationSource</name>
     <message>
         <source>UgCS server</source>
-        <translation type="unfinished"></translation>
+        <translation>Сервер UgCS</translation>
     </message>
 </context>
 <context>
     <name>HciError</name>
     <message>
         <source>The server&apos;s licence does not allow this (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ліцензія сервера цього не дозволяє (%1)</translation>
     </message>
     <message>
         <source>The server&apos;s licence does not allow this</source>
-        <translation type="unfinished"></translation>
+        <translation>Ліцензія сервера цього не дозволяє</translation>
     </message>
     <message>
         <source>The server speaks HCI protocol %1; Sortie speaks 2.0%2</source>
-        <translation type="unfinished"></translation>
+        <translation>Сервер використовує протокол HCI %1; Sortie — 2.0%2</translation>
     </message>
     <message>
         <source>The server refused the request (error %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Сервер відхилив запит (помилка %1)</translation>
     </message>
     <message>
         <source>The server refused the request without a reason</source>
-        <translation type="unfinished"></translation>
+        <translation>Сервер відхилив запит без пояснення</translation>
     </message>
     <message>
         <source>no error</source>
-        <translation type="unfinished"></translation>
+        <translation>немає помилки</translation>
     </message>
     <message>
         <source> (code %1)</source>
-        <translation type="unfinished"></translation>
+        <translation> (код %1)</translation>
     </message>
 </context>
 <context>
     <name>HciRouteMapper</name>
     <message>
         <source>Route &quot;%1&quot;, segment %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Маршрут «%1», сегмент %2: %3</translation>
     </message>
 </context>
 <context>
     <name>HciRoutePass</name>
     <message>
         <source>a RoutePass event names the object type &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>подія RoutePass називає тип об’єкта «%1»</translation>
     </message>
     <message>
         <source>RoutePass %1: the event carries no RoutePass</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1: подія не містить RoutePass</translation>
     </message>
     <message>
         <source>RoutePass %1 names no vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1 не називає апарата</translation>
     </message>
     <message>
         <source>RoutePass %1 has no waypoint count</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1 не має кількості точок</translation>
     </message>
     <message>
         <source>RoutePass %1: waypoint index %2 is outside the route&apos;s %3 waypoints</source>
-        <translation type="unfinished"></translation>
+        <translation>RoutePass %1: індекс точки %2 поза межами %3 точок маршруту</translation>
     </message>
 </context>
 <context>
     <name>HciSegmentMapper</name>
     <message>
         <source>the waypoint has no figure point</source>
-        <translation type="unfinished"></translation>
+        <translation>точка маршруту не має точки фігури</translation>
     </message>
     <message>
         <source>the waypoint&apos;s position is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>позиція точки маршруту поза допустимими межами</translation>
     </message>
     <message>
         <source>An area scan&apos;s %1: %2 It keeps Sortie&apos;s default.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сканування площі, %1: %2 Залишено типове значення Sortie.</translation>
     </message>
     <message>
         <source>An area scan came without a camera; Sortie&apos;s default camera (%1) was assumed.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сканування площі надійшло без камери; прийнято типову камеру Sortie (%1).</translation>
     </message>
     <message>
         <source>A %1 segment could not be read as one (%2); it is kept as the server sent it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сегмент %1 не вдалося прочитати як такий (%2); його збережено таким, як надіслав сервер.</translation>
     </message>
     <message>
         <source>An area scan without a polygon of three corners is kept as the server sent it.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сканування площі без полігона з трьох кутів збережено таким, як надіслав сервер.</translation>
     </message>
 </context>
 <context>
     <name>HciSession</name>
     <message>
         <source> not sent: </source>
-        <translation type="unfinished"></translation>
+        <translation> не надіслано: </translation>
     </message>
     <message>
         <source>the connection to the server is being re-established</source>
-        <translation type="unfinished"></translation>
+        <translation>з’єднання із сервером відновлюється</translation>
     </message>
     <message>
         <source>not logged in to a server</source>
-        <translation type="unfinished"></translation>
+        <translation>немає входу на сервер</translation>
     </message>
     <message>
         <source>The server sent nothing while %1 waited (%2); the link seems dead</source>
-        <translation type="unfinished"></translation>
+        <translation>Сервер нічого не надсилав, поки %1 очікував відповіді (%2); схоже, зв’язок обірвано</translation>
     </message>
     <message>
         <source>The server speaks HCI protocol %1.%2; Sortie speaks %3.%4</source>
-        <translation type="unfinished"></translation>
+        <translation>Сервер використовує протокол HCI %1.%2; Sortie — %3.%4</translation>
     </message>
     <message>
         <source>The server rejected the login &apos;%1&apos;: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Сервер відхилив вхід «%1»: %2</translation>
     </message>
 </context>
 <context>
     <name>HciVehicleLink</name>
     <message>
         <source>%1: cannot take control of %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: не вдається отримати керування %2: %3</translation>
     </message>
     <message>
         <source>%1: the server sent no result for this vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: сервер не надіслав результату для цього апарата</translation>
     </message>
     <message>
         <source>there is no such flight mode</source>
-        <translation type="unfinished"></translation>
+        <translation>такого режиму польоту немає</translation>
     </message>
     <message>
         <source>Segment %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Сегмент %1: %2</translation>
     </message>
     <message>
         <source>the server could not process it</source>
-        <translation type="unfinished"></translation>
+        <translation>сервер не зміг це обробити</translation>
     </message>
     <message>
         <source>Sortie upload to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Завантаження Sortie в %1</translation>
     </message>
     <message>
         <source>route processing: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>обробка маршруту: %1</translation>
     </message>
     <message>
         <source>upload: the mission was not prepared by the UgCS server</source>
-        <translation type="unfinished"></translation>
+        <translation>завантаження: місію не підготовлено сервером UgCS</translation>
     </message>
     <message>
         <source>upload: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>завантаження: %1</translation>
     </message>
     <message>
         <source>upload: cannot take control of %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>завантаження: не вдається отримати керування %1: %2</translation>
     </message>
     <message>
         <source>a UgCS server does not read a vehicle&apos;s mission back</source>
-        <translation type="unfinished"></translation>
+        <translation>сервер UgCS не зчитує місію з апарата</translation>
     </message>
     <message>
         <source>%1: parameters are set in the vehicle profile on the UgCS server</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: параметри задаються в профілі апарата на сервері UgCS</translation>
     </message>
 </context>
 <context>
     <name>HgtTile</name>
     <message>
         <source>%1 bytes is not an SRTM tile (2884802 bytes for 3″ 1201×1201, 25934402 for 1″ 3601×3601); the file is truncated or not a .hgt tile</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 байт — це не тайл SRTM (2884802 байти для 3″ 1201×1201, 25934402 для 1″ 3601×3601); файл обрізаний або не є тайлом .hgt</translation>
     </message>
     <message>
         <source>height %1 m at row %2, column %3 is not a terrain height; the file is corrupt</source>
-        <translation type="unfinished"></translation>
+        <translation>висота %1 m у рядку %2, стовпці %3 не є висотою рельєфу; файл пошкоджено</translation>
     </message>
 </context>
 <context>
     <name>HgtTileSource</name>
     <message>
         <source>%1: no such file or folder</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: немає такого файлу чи теки</translation>
     </message>
     <message>
         <source>%1: not an SRTM tile name (NxxEyyy.hgt names the tile&apos;s south-west corner)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: не назва тайла SRTM (NxxEyyy.hgt — це південно-західний кут тайла)</translation>
     </message>
     <message>
         <source>SRTM tiles (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Тайли SRTM (%1)</translation>
     </message>
     <message>
         <source>%1: cannot be mapped: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: не вдається відобразити в пам’ять: %2</translation>
     </message>
 </context>
 <context>
@@ -1154,172 +1155,172 @@
     <name>JsonCursor</name>
     <message>
         <source>expected an object, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується об’єкт, знайдено %1</translation>
     </message>
     <message>
         <source>missing required key &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>бракує обов’язкового ключа &quot;%1&quot;</translation>
     </message>
     <message>
         <source>expected an array, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується масив, знайдено %1</translation>
     </message>
     <message>
         <source>expected at least %1 elements, found %2</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується щонайменше %1 елементів, знайдено %2</translation>
     </message>
     <message>
         <source>expected a number, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується число, знайдено %1</translation>
     </message>
     <message>
         <source>the number is not finite</source>
-        <translation type="unfinished"></translation>
+        <translation>число не скінченне</translation>
     </message>
     <message>
         <source>expected an integer, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується ціле число, знайдено %1</translation>
     </message>
     <message>
         <source>expected true or false, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується true або false, знайдено %1</translation>
     </message>
     <message>
         <source>expected a string, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується рядок, знайдено %1</translation>
     </message>
     <message>
         <source>not valid JSON: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>некоректний JSON: %1</translation>
     </message>
     <message>
         <source>; last read: &apos;.*&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>; last read: &apos;.*&apos;</translation>
     </message>
     <message>
         <source>unknown value &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>невідоме значення &quot;%1&quot;</translation>
     </message>
 </context>
 <context>
     <name>KmlFormat</name>
     <message>
         <source>bad coordinate &quot;%1&quot;: expected longitude,latitude[,altitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>хибна координата «%1»: очікується longitude,latitude[,altitude]</translation>
     </message>
     <message>
         <source>bad coordinate &quot;%1&quot;: not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>хибна координата «%1»: не число</translation>
     </message>
     <message>
         <source>coordinate &quot;%1&quot; is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>координата «%1» поза допустимими межами</translation>
     </message>
     <message>
         <source>a boundary needs at least 3 distinct points, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>межі потрібно щонайменше 3 різні точки, знайдено %1</translation>
     </message>
     <message>
         <source>not valid KML: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>некоректний KML: %1</translation>
     </message>
     <message>
         <source>this LineString is open, so it encloses no area; close it (last point = first) to use it as a boundary</source>
-        <translation type="unfinished"></translation>
+        <translation>цей LineString незамкнений, тож не охоплює площі; замкніть його (остання точка = перша), щоб використати як межу</translation>
     </message>
     <message>
         <source>this Placemark has no Polygon (with an outerBoundaryIs LinearRing) or closed LineString</source>
-        <translation type="unfinished"></translation>
+        <translation>цей Placemark не має Polygon (з outerBoundaryIs LinearRing) або замкненого LineString</translation>
     </message>
     <message>
         <source>the document has no Polygon or closed LineString</source>
-        <translation type="unfinished"></translation>
+        <translation>документ не має Polygon або замкненого LineString</translation>
     </message>
     <message>
         <source>The file holds %1 closed shapes; the one at line %2 was imported.</source>
-        <translation type="unfinished"></translation>
+        <translation>Файл містить замкнених фігур: %1; імпортовано ту, що в рядку %2.</translation>
     </message>
     <message>
         <source>Flight path</source>
-        <translation type="unfinished"></translation>
+        <translation>Траєкторія польоту</translation>
     </message>
     <message>
         <source>Flight path, part %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Траєкторія польоту, частина %1</translation>
     </message>
 </context>
 <context>
     <name>KmlZones</name>
     <message>
         <source>bad coordinate &quot;%1&quot;: expected longitude,latitude[,altitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>хибна координата «%1»: очікується longitude,latitude[,altitude]</translation>
     </message>
     <message>
         <source>coordinate &quot;%1&quot; is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>координата «%1» поза допустимими межами</translation>
     </message>
     <message>
         <source>a boundary needs at least 3 distinct coordinates, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>межі потрібно щонайменше 3 різні координати, знайдено %1</translation>
     </message>
     <message>
         <source>line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>рядок %1: %2</translation>
     </message>
     <message>
         <source>line %1: a polygon with two outer boundaries</source>
-        <translation type="unfinished"></translation>
+        <translation>рядок %1: полігон із двома зовнішніми межами</translation>
     </message>
     <message>
         <source>line %1: an inner boundary before the outer one</source>
-        <translation type="unfinished"></translation>
+        <translation>рядок %1: внутрішня межа перед зовнішньою</translation>
     </message>
     <message>
         <source>Placemark %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Placemark %1</translation>
     </message>
     <message>
         <source>Placemark &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Placemark «%1»</translation>
     </message>
     <message>
         <source>a Polygon without an outer boundary</source>
-        <translation type="unfinished"></translation>
+        <translation>Polygon без зовнішньої межі</translation>
     </message>
     <message>
         <source>%1 (line %2) was left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (рядок %2) пропущено: %3</translation>
     </message>
     <message>
         <source>not well-formed KML: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>некоректно сформований KML: %1</translation>
     </message>
 </context>
 <context>
     <name>LandOutlines</name>
     <message>
         <source>the land outline file is not compressed data</source>
-        <translation type="unfinished"></translation>
+        <translation>файл контурів суходолу не є стиснутими даними</translation>
     </message>
     <message>
         <source>the land outline file does not start with %1</source>
-        <translation type="unfinished"></translation>
+        <translation>файл контурів суходолу не починається з %1</translation>
     </message>
     <message>
         <source>the land outline file is truncated at its polygon count</source>
-        <translation type="unfinished"></translation>
+        <translation>файл контурів суходолу обрізано на кількості полігонів</translation>
     </message>
     <message>
         <source>the land outline file is truncated in polygon %1</source>
-        <translation type="unfinished"></translation>
+        <translation>файл контурів суходолу обрізано в полігоні %1</translation>
     </message>
     <message>
         <source>the land outline file is truncated in polygon %1, ring %2</source>
-        <translation type="unfinished"></translation>
+        <translation>файл контурів суходолу обрізано в полігоні %1, контур %2</translation>
     </message>
     <message>
         <source>the built-in land outlines (%1) are missing</source>
-        <translation type="unfinished"></translation>
+        <translation>вбудованих контурів суходолу (%1) немає</translation>
     </message>
 </context>
 <context>
@@ -1433,7 +1434,7 @@
     </message>
     <message>
         <source>The language of Sortie, applied at once</source>
-        <translation type="unfinished"></translation>
+        <translation>Мова Sortie, застосовується одразу</translation>
     </message>
 </context>
 <context>
@@ -1475,15 +1476,15 @@
     </message>
     <message>
         <source>Orthophoto over the base map (GeoTIFF or any raster GDAL reads, any CRS)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ортофотоплан поверх базової карти (GeoTIFF або будь-який растр, який читає GDAL, будь-яка CRS)</translation>
     </message>
     <message>
         <source>/path/to/orthophoto.tif (empty: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>/шлях/до/ортофото.tif (порожньо: немає)</translation>
     </message>
     <message>
         <source>Opacity</source>
-        <translation type="unfinished"></translation>
+        <translation>Непрозорість</translation>
     </message>
     <message>
         <source>%1 %</source>
@@ -1491,82 +1492,82 @@
     </message>
     <message>
         <source>Terrain: a DEM file (GeoTIFF, .hgt, ...) or a folder of them</source>
-        <translation type="unfinished"></translation>
+        <translation>Рельєф: файл DEM (GeoTIFF, .hgt, ...) або тека з ними</translation>
     </message>
     <message>
         <source>/path/to/dem.tif or /path/to/dem-folder (empty: none)</source>
-        <translation type="unfinished"></translation>
+        <translation>/шлях/до/dem.tif або /шлях/до/теки-dem (порожньо: немає)</translation>
     </message>
 </context>
 <context>
     <name>MavlinkExport</name>
     <message>
         <source>MAVLink has no stop-and-turn or bank-turn waypoints: they were written as plain waypoints.</source>
-        <translation type="unfinished"></translation>
+        <translation>MAVLink не має точок «зупинка й поворот» чи «поворот із креном»: їх записано як звичайні точки.</translation>
     </message>
     <message>
         <source>Waypoint %1: %2 has no MAVLink equivalent and was left out.</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка %1: %2 не має відповідника в MAVLink, пропущено.</translation>
     </message>
     <message>
         <source>a servo action without its servo and PWM</source>
-        <translation type="unfinished"></translation>
+        <translation>дія сервопривода без сервопривода і PWM</translation>
     </message>
     <message>
         <source>a repeated servo without its count and cycle time</source>
-        <translation type="unfinished"></translation>
+        <translation>повтор сервопривода без кількості й періоду циклу</translation>
     </message>
     <message>
         <source>waiting for the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>очікування оператора</translation>
     </message>
     <message>
         <source>a heading relative to the course</source>
-        <translation type="unfinished"></translation>
+        <translation>курс відносно напрямку руху</translation>
     </message>
     <message>
         <source>toggling video</source>
-        <translation type="unfinished"></translation>
+        <translation>перемикання відео</translation>
     </message>
     <message>
         <source>the series&apos; start delay</source>
-        <translation type="unfinished"></translation>
+        <translation>затримка початку серії</translation>
     </message>
     <message>
         <source>the series&apos; shot count and start delay</source>
-        <translation type="unfinished"></translation>
+        <translation>кількість знімків і затримка початку серії</translation>
     </message>
     <message>
         <source>a panorama</source>
-        <translation type="unfinished"></translation>
+        <translation>панорама</translation>
     </message>
     <message>
         <source>Waypoint %1: the gimbal&apos;s %2 was not set and is written as 0° (MAVLink has no &quot;unchanged&quot;).</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка %1: %2 підвісу не задано, записано 0° (у MAVLink немає «без змін»).</translation>
     </message>
     <message>
         <source>a zoom level</source>
-        <translation type="unfinished"></translation>
+        <translation>рівень зуму</translation>
     </message>
     <message>
         <source>%1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 пропущено: %2</translation>
     </message>
     <message>
         <source>it cannot be planned</source>
-        <translation type="unfinished"></translation>
+        <translation>його не можна спланувати</translation>
     </message>
     <message>
         <source>Segments without a MAVLink equivalent (circle, perimeter...) were written as the waypoints Sortie plans for them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сегменти без відповідника в MAVLink (коло, периметр...) записано як точки, які для них планує Sortie.</translation>
     </message>
     <message>
         <source>Area scan %1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Сканування площі %1 пропущено: %2</translation>
     </message>
     <message>
         <source>Area scan %1 was written as %2 waypoints with distance triggering.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сканування площі %1 записано як точки (%2) зі спуском затвора за відстанню.</translation>
     </message>
 </context>
 <context>
@@ -1635,105 +1636,105 @@
     <name>MissionDifference</name>
     <message numerus="yes">
         <source>the vehicle holds %n waypoint(s), %1 were sent</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>на борту апарата %n точка, надіслано %1</numerusform>
+            <numerusform>на борту апарата %n точки, надіслано %1</numerusform>
+            <numerusform>на борту апарата %n точок, надіслано %1</numerusform>
         </translation>
     </message>
     <message>
         <source>waypoint %1: </source>
-        <translation type="unfinished"></translation>
+        <translation>точка %1: </translation>
     </message>
     <message>
         <source>the vehicle holds another position</source>
-        <translation type="unfinished"></translation>
+        <translation>на борту апарата інша позиція</translation>
     </message>
     <message>
         <source>altitude %1 m, sent %2 m</source>
-        <translation type="unfinished"></translation>
+        <translation>висота %1 m, надіслано %2 m</translation>
     </message>
     <message>
         <source>speed %1 m/s, sent %2 m/s</source>
-        <translation type="unfinished"></translation>
+        <translation>швидкість %1 m/s, надіслано %2 m/s</translation>
     </message>
     <message>
         <source>acceptance radius %1 m, sent %2 m</source>
-        <translation type="unfinished"></translation>
+        <translation>радіус досягнення %1 m, надіслано %2 m</translation>
     </message>
     <message numerus="yes">
         <source>%n action(s), sent %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n дія, надіслано %1</numerusform>
+            <numerusform>%n дії, надіслано %1</numerusform>
+            <numerusform>%n дій, надіслано %1</numerusform>
         </translation>
     </message>
     <message>
         <source>action %1 (%2) differs</source>
-        <translation type="unfinished"></translation>
+        <translation>дія %1 (%2) відрізняється</translation>
     </message>
 </context>
 <context>
     <name>MissionError</name>
     <message>
         <source>(at %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>(у %1)</translation>
     </message>
 </context>
 <context>
     <name>MissionFiles</name>
     <message>
         <source>cannot open: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>не вдається відкрити: %1</translation>
     </message>
     <message>
         <source>the file is larger than 256 MiB</source>
-        <translation type="unfinished"></translation>
+        <translation>файл більший за 256 MiB</translation>
     </message>
     <message>
         <source>unknown file type: use .sortie, .plan, .waypoints, .kml or .kmz</source>
-        <translation type="unfinished"></translation>
+        <translation>невідомий тип файлу: використовуйте .sortie, .plan, .waypoints, .kml або .kmz</translation>
     </message>
     <message>
         <source>Sortie mission</source>
-        <translation type="unfinished"></translation>
+        <translation>Місія Sortie</translation>
     </message>
     <message>
         <source>QGroundControl plan</source>
-        <translation type="unfinished"></translation>
+        <translation>План QGroundControl</translation>
     </message>
     <message>
         <source>QGC WPL 110 waypoints</source>
-        <translation type="unfinished"></translation>
+        <translation>Точки QGC WPL 110</translation>
     </message>
     <message>
         <source>DJI WPML</source>
-        <translation type="unfinished"></translation>
+        <translation>DJI WPML</translation>
     </message>
     <message>
         <source>a KML file holds a polygon, not a mission: import it as an area-scan boundary</source>
-        <translation type="unfinished"></translation>
+        <translation>файл KML містить полігон, а не місію: імпортуйте його як межу сканування площі</translation>
     </message>
     <message>
         <source>the mission has no route %1 (it has %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>місія не має маршруту %1 (маршрутів у ній: %2)</translation>
     </message>
     <message>
         <source>the mission has no route to write</source>
-        <translation type="unfinished"></translation>
+        <translation>місія не має маршруту для запису</translation>
     </message>
     <message>
         <source>the mission has %1 routes and a %2 file holds one: choose the route to write (sortie-plan convert --route N), or write .sortie or DJI WPML (.kmz), which hold them all</source>
-        <translation type="unfinished"></translation>
+        <translation>місія має маршрутів: %1, а файл %2 містить один: виберіть маршрут для запису (sortie-plan convert --route N) або запишіть .sortie чи DJI WPML (.kmz), які містять усі</translation>
     </message>
     <message>
         <source>Saving route &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>Збереження маршруту «%1»</translation>
     </message>
     <message>
         <source>cannot write: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>не вдається записати: %1</translation>
     </message>
 </context>
 <context>
@@ -1775,107 +1776,107 @@
     <name>NfzConversion</name>
     <message>
         <source>its baseAltitude is not a number</source>
-        <translation type="unfinished"></translation>
+        <translation>її baseAltitude не є числом</translation>
     </message>
     <message>
         <source>its height %1 m is not a height (it must be 0 or more)</source>
-        <translation type="unfinished"></translation>
+        <translation>її висота %1 m не є висотою (має бути 0 або більше)</translation>
     </message>
     <message>
         <source>point %1 of its prism is not a position (latitude and longitude in radians)</source>
-        <translation type="unfinished"></translation>
+        <translation>точка %1 її призми не є позицією (широта й довгота в радіанах)</translation>
     </message>
     <message numerus="yes">
         <source>its prism has %n corner(s); a polygon needs 3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>її призма має %n кут; полігону потрібно 3</numerusform>
+            <numerusform>її призма має %n кути; полігону потрібно 3</numerusform>
+            <numerusform>її призма має %n кутів; полігону потрібно 3</numerusform>
         </translation>
     </message>
     <message>
         <source>its cone frustum has no centre (baseLatitude, baseLongitude in radians)</source>
-        <translation type="unfinished"></translation>
+        <translation>її зрізаний конус не має центру (baseLatitude, baseLongitude у радіанах)</translation>
     </message>
     <message>
         <source>its cone frustum&apos;s radii (base %1 m, top %2 m) are not a circle</source>
-        <translation type="unfinished"></translation>
+        <translation>радіуси її зрізаного конуса (основа %1 m, верх %2 m) не утворюють кола</translation>
     </message>
     <message>
         <source>its cone frustum has two radii but no height</source>
-        <translation type="unfinished"></translation>
+        <translation>її зрізаний конус має два радіуси, але не має висоти</translation>
     </message>
     <message>
         <source>its floor (%1) and ceiling (%2) are in different references; a server zone has one</source>
-        <translation type="unfinished"></translation>
+        <translation>її нижня (%1) і верхня (%2) межі задано в різних системах відліку; у зони сервера вона одна</translation>
     </message>
     <message>
         <source>its heights are above home; a server zone&apos;s are AMSL or AGL</source>
-        <translation type="unfinished"></translation>
+        <translation>її висоти задано відносно дому; у зони сервера вони AMSL або AGL</translation>
     </message>
     <message>
         <source>it starts from the ground with an AMSL ceiling; give it an AMSL floor or an AGL ceiling</source>
-        <translation type="unfinished"></translation>
+        <translation>вона починається від поверхні з верхньою межею AMSL; задайте нижню межу AMSL або верхню межу AGL</translation>
     </message>
     <message>
         <source>NoFlightZone %1</source>
-        <translation type="unfinished"></translation>
+        <translation>NoFlightZone %1</translation>
     </message>
     <message>
         <source>UgCS server, NoFlightZone %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Сервер UgCS, NoFlightZone %1</translation>
     </message>
     <message>
         <source>it has both a prism and a cone frustum</source>
-        <translation type="unfinished"></translation>
+        <translation>вона має і призму, і зрізаний конус</translation>
     </message>
     <message>
         <source>it has no volume (neither a prism nor a cone frustum)</source>
-        <translation type="unfinished"></translation>
+        <translation>вона не має об’єму (ні призми, ні зрізаного конуса)</translation>
     </message>
     <message>
         <source>its ceiling is below its floor</source>
-        <translation type="unfinished"></translation>
+        <translation>її верхня межа нижче за нижню</translation>
     </message>
     <message>
         <source>the server&apos;s no-fly zones keep vehicles out; an inclusion zone cannot be one</source>
-        <translation type="unfinished"></translation>
+        <translation>заборонені зони сервера не пускають апарати всередину; дозвільна зона не може бути такою</translation>
     </message>
     <message>
         <source>aerodrome zones are the server&apos;s own; only custom zones are changed</source>
-        <translation type="unfinished"></translation>
+        <translation>зони аеродромів належать серверу; змінюються лише власні зони</translation>
     </message>
     <message numerus="yes">
         <source>%n ring(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n контур</numerusform>
+            <numerusform>%n контури</numerusform>
+            <numerusform>%n контурів</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>a server zone is one polygon without holes (this one has %n part(s), %1)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>зона сервера — це один полігон без отворів (ця має %n частину, %1)</numerusform>
+            <numerusform>зона сервера — це один полігон без отворів (ця має %n частини, %1)</numerusform>
+            <numerusform>зона сервера — це один полігон без отворів (ця має %n частин, %1)</numerusform>
         </translation>
     </message>
     <message numerus="yes">
         <source>its polygon has %n corner(s); it needs 3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>її полігон має %n кут; потрібно 3</numerusform>
+            <numerusform>її полігон має %n кути; потрібно 3</numerusform>
+            <numerusform>її полігон має %n кутів; потрібно 3</numerusform>
         </translation>
     </message>
     <message>
         <source>a cone frustum needs a ceiling</source>
-        <translation type="unfinished"></translation>
+        <translation>зрізаному конусу потрібна верхня межа</translation>
     </message>
     <message>
         <source>NoFlightZone %1%2 was left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>NoFlightZone %1%2 пропущено: %3</translation>
     </message>
 </context>
 <context>
@@ -2180,171 +2181,171 @@ events:   %1
     <name>QgcFenceJson</name>
     <message>
         <source>expected [latitude, longitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується [latitude, longitude]</translation>
     </message>
     <message>
         <source>latitude or longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>широта або довгота поза допустимими межами</translation>
     </message>
     <message>
         <source>expected [latitude, longitude, altitude]</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується [latitude, longitude, altitude]</translation>
     </message>
     <message>
         <source>%1 at %2 was left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 у %2 пропущено: %3</translation>
     </message>
     <message>
         <source>The %1s at %2 were left out: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>Об’єкти типу «%1» у %2 пропущено: %3</translation>
     </message>
     <message>
         <source>Geofence polygon</source>
-        <translation type="unfinished"></translation>
+        <translation>Полігон геозони</translation>
     </message>
     <message>
         <source>a polygon needs at least 3 vertices, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>полігону потрібно щонайменше 3 вершини, знайдено %1</translation>
     </message>
     <message>
         <source>Geofence polygon at %1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Полігон геозони в %1 пропущено: %2</translation>
     </message>
     <message>
         <source>Geofence circle</source>
-        <translation type="unfinished"></translation>
+        <translation>Коло геозони</translation>
     </message>
     <message>
         <source>the radius must be positive metres</source>
-        <translation type="unfinished"></translation>
+        <translation>радіус має бути додатним числом метрів</translation>
     </message>
     <message>
         <source>The geofence&apos;s breach return point at %1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Точку повернення геозони в разі порушення в %1 пропущено: %2</translation>
     </message>
     <message>
         <source>Rally point</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка збору</translation>
     </message>
 </context>
 <context>
     <name>QgcPlanFormat</name>
     <message>
         <source>expected 7 params (or 4 and a &quot;coordinate&quot;), found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується 7 params (або 4 і &quot;coordinate&quot;), знайдено %1</translation>
     </message>
     <message>
         <source>not a QGroundControl plan (fileType is not &quot;Plan&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>не план QGroundControl (fileType не &quot;Plan&quot;)</translation>
     </message>
     <message>
         <source>plan version %1 is not supported (Sortie reads version 1)</source>
-        <translation type="unfinished"></translation>
+        <translation>версія плану %1 не підтримується (Sortie читає версію 1)</translation>
     </message>
     <message>
         <source>mission version %1 is not supported (Sortie reads version 2)</source>
-        <translation type="unfinished"></translation>
+        <translation>версія місії %1 не підтримується (Sortie читає версію 2)</translation>
     </message>
     <message>
         <source>the planned home position is out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>запланована точка дому поза допустимими межами</translation>
     </message>
     <message>
         <source>complex item &quot;%1&quot; is not supported; Sortie imports surveys, corridor and structure scans</source>
-        <translation type="unfinished"></translation>
+        <translation>складний елемент «%1» не підтримується; Sortie імпортує зйомки площі, сканування коридорів і споруд</translation>
     </message>
     <message>
         <source>unknown item type &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>невідомий тип елемента «%1»</translation>
     </message>
     <message>
         <source>A corridor was left out: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Коридор пропущено: %1</translation>
     </message>
     <message>
         <source>An area scan was left out: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Сканування площі пропущено: %1</translation>
     </message>
     <message>
         <source>The route has no home position: the first point was written as home, at 0 m AMSL.</source>
-        <translation type="unfinished"></translation>
+        <translation>Маршрут не має точки дому: першу точку записано як дім, на 0 m AMSL.</translation>
     </message>
 </context>
 <context>
     <name>QgcSurveyJson</name>
     <message>
         <source>latitude/longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>широта/довгота поза допустимими межами</translation>
     </message>
     <message>
         <source>a survey polygon needs at least 3 vertices, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>полігону зйомки потрібно щонайменше 3 вершини, знайдено %1</translation>
     </message>
     <message>
         <source>Custom Camera</source>
-        <translation type="unfinished"></translation>
+        <translation>Власна камера</translation>
     </message>
     <message>
         <source>the survey&apos;s camera has neither a sensor nor footprints</source>
-        <translation type="unfinished"></translation>
+        <translation>камера зйомки не має ні сенсора, ні розмірів кадру</translation>
     </message>
     <message>
         <source>%1: the survey&apos;s manual camera was replaced by one with the same footprints</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: ручну камеру зйомки замінено на камеру з тими самими розмірами кадру</translation>
     </message>
     <message>
         <source>a %1 needs at least %2 points, found %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: потрібно точок — щонайменше %2, знайдено %3</translation>
     </message>
     <message>
         <source>%1: the camera &quot;%2&quot; is not one Sortie knows; it is kept by name, and the server must know it.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: камера «%2» невідома Sortie; її збережено за назвою, і сервер має її знати.</translation>
     </message>
     <message>
         <source>the corridor&apos;s camera has no sensor to turn its distance into a ground sample distance</source>
-        <translation type="unfinished"></translation>
+        <translation>камера коридору не має сенсора, щоб перевести відстань у GSD</translation>
     </message>
     <message>
         <source>corridor centre line</source>
-        <translation type="unfinished"></translation>
+        <translation>осьова лінія коридору</translation>
     </message>
     <message>
         <source>structure polygon</source>
-        <translation type="unfinished"></translation>
+        <translation>полігон споруди</translation>
     </message>
     <message>
         <source>%1: the structure scan became a perimeter flight at %2 m%3.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: сканування споруди стало польотом по периметру на %2 m%3.</translation>
     </message>
     <message>
         <source>, its %1 layers as %1 loops at one height</source>
-        <translation type="unfinished"></translation>
+        <translation>, її шари (%1) стали витками на одній висоті</translation>
     </message>
 </context>
 <context>
     <name>RemoveSegmentsCommand</name>
     <message>
         <source>Delete %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Видалити %1</translation>
     </message>
     <message>
         <source>Delete %1 rows</source>
-        <translation type="unfinished"></translation>
+        <translation>Видалити рядки (%1)</translation>
     </message>
 </context>
 <context>
     <name>ReorderSegmentsCommand</name>
     <message>
         <source>Move row %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Пересунути рядок %1</translation>
     </message>
     <message>
         <source>Move %1 rows</source>
-        <translation type="unfinished"></translation>
+        <translation>Пересунути рядки (%1)</translation>
     </message>
     <message>
         <source>Reverse rows %1-%2</source>
-        <translation type="unfinished"></translation>
+        <translation>Перевернути рядки %1-%2</translation>
     </message>
 </context>
 <context>
@@ -2525,19 +2526,19 @@ events:   %1
     </message>
     <message>
         <source>safe altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>безпечна висота</translation>
     </message>
     <message>
         <source>m</source>
-        <translation type="unfinished"></translation>
+        <translation>m</translation>
     </message>
     <message>
         <source>maximum altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>максимальна висота</translation>
     </message>
     <message>
         <source>initial speed</source>
-        <translation type="unfinished"></translation>
+        <translation>початкова швидкість</translation>
     </message>
     <message>
         <source>m/s</source>
@@ -2545,15 +2546,15 @@ events:   %1
     </message>
     <message>
         <source>maximum speed</source>
-        <translation type="unfinished"></translation>
+        <translation>максимальна швидкість</translation>
     </message>
     <message>
         <source>corner radius</source>
-        <translation type="unfinished"></translation>
+        <translation>радіус повороту</translation>
     </message>
     <message>
         <source>takeoff height</source>
-        <translation type="unfinished"></translation>
+        <translation>висота зльоту</translation>
     </message>
     <message>
         <source>vehicle profile %1 → %2</source>
@@ -2597,11 +2598,11 @@ events:   %1
     </message>
     <message>
         <source>aerodrome zone check</source>
-        <translation type="unfinished"></translation>
+        <translation>перевірка зон аеродромів</translation>
     </message>
     <message>
         <source>custom zone check</source>
-        <translation type="unfinished"></translation>
+        <translation>перевірка власних зон</translation>
     </message>
     <message>
         <source>%1 removed</source>
@@ -2677,7 +2678,7 @@ events:   %1
     </message>
     <message>
         <source>altitude</source>
-        <translation type="unfinished"></translation>
+        <translation>висота</translation>
     </message>
     <message>
         <source>altitude of %1 now %2</source>
@@ -2693,23 +2694,23 @@ events:   %1
     </message>
     <message>
         <source>front overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>поздовжнє перекриття</translation>
     </message>
     <message>
         <source>side overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>бічне перекриття</translation>
     </message>
     <message>
         <source>direction</source>
-        <translation type="unfinished"></translation>
+        <translation>напрямок</translation>
     </message>
     <message>
         <source>turnaround</source>
-        <translation type="unfinished"></translation>
+        <translation>розворот</translation>
     </message>
     <message>
         <source>speed</source>
-        <translation type="unfinished"></translation>
+        <translation>швидкість</translation>
     </message>
     <message>
         <source>camera of %1 %2 → %3</source>
@@ -2724,11 +2725,11 @@ events:   %1
     <name>RouteEndurance</name>
     <message>
         <source>No energy profile: choose the vehicle&apos;s profile file</source>
-        <translation type="unfinished"></translation>
+        <translation>Немає енергетичного профілю: виберіть файл профілю апарата</translation>
     </message>
     <message>
         <source>The route has no points</source>
-        <translation type="unfinished"></translation>
+        <translation>Маршрут не має точок</translation>
     </message>
 </context>
 <context>
@@ -3010,58 +3011,58 @@ events:   %1
     <name>RouteValidator</name>
     <message>
         <source>%1: the position is not valid.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: позиція некоректна.</translation>
     </message>
     <message>
         <source>The route needs at least two points; it has %1.</source>
-        <translation type="unfinished"></translation>
+        <translation>Маршрутові потрібно щонайменше дві точки; він має %1.</translation>
     </message>
     <message numerus="yes">
         <source>%n AMSL altitude(s), the first at %1, were not checked against the route&apos;s limits: the take-off elevation is unknown.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n висоту AMSL (перша — %1) не перевірено щодо обмежень маршруту: висота місця зльоту невідома.</numerusform>
+            <numerusform>%n висоти AMSL (перша — %1) не перевірено щодо обмежень маршруту: висота місця зльоту невідома.</numerusform>
+            <numerusform>%n висот AMSL (перша — %1) не перевірено щодо обмежень маршруту: висота місця зльоту невідома.</numerusform>
         </translation>
     </message>
     <message>
         <source>%1: altitude %2 is above the route&apos;s maximum of %3 m.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: висота %2 вища за максимальну висоту маршруту %3 m.</translation>
     </message>
     <message>
         <source>%1: altitude %2 is below the route&apos;s safe altitude of %3 m.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: висота %2 нижча за безпечну висоту маршруту %3 m.</translation>
     </message>
     <message>
         <source>%1: the speed must be positive.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: швидкість має бути додатною.</translation>
     </message>
     <message>
         <source>%1: speed %2 m/s is above the vehicle&apos;s limit of %3 m/s.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: швидкість %2 m/s перевищує обмеження апарата %3 m/s.</translation>
     </message>
     <message>
         <source>%1: Sortie does not know the algorithm %2; the server checks it when it processes the route.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: Sortie не знає алгоритму %2; сервер перевірить його під час обробки маршруту.</translation>
     </message>
     <message>
         <source>%1 repeats %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 повторює %2.</translation>
     </message>
     <message>
         <source>%1 is %2 but %3 is %4: the climb between them is not estimated.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — %2, але %3 — %4: набір висоти між ними не оцінюється.</translation>
     </message>
     <message>
         <source>The route</source>
-        <translation type="unfinished"></translation>
+        <translation>Маршрут</translation>
     </message>
 </context>
 <context>
     <name>SbsFeed</name>
     <message>
         <source>line %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>рядок %1: %2</translation>
     </message>
 </context>
 <context>
@@ -3095,42 +3096,42 @@ events:   %1
     </message>
     <message>
         <source>m</source>
-        <translation type="unfinished"></translation>
+        <translation>m</translation>
     </message>
 </context>
 <context>
     <name>SegmentEditorModel</name>
     <message>
         <source>Acceptance radius</source>
-        <translation type="unfinished"></translation>
+        <translation>Радіус досягнення</translation>
     </message>
     <message>
         <source>Sensor width (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ширина сенсора (mm)</translation>
     </message>
     <message>
         <source>Sensor height (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Висота сенсора (mm)</translation>
     </message>
     <message>
         <source>Focal length (mm)</source>
-        <translation type="unfinished"></translation>
+        <translation>Фокусна відстань (mm)</translation>
     </message>
     <message>
         <source>Image width (px)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ширина зображення (px)</translation>
     </message>
     <message>
         <source>Image height (px)</source>
-        <translation type="unfinished"></translation>
+        <translation>Висота зображення (px)</translation>
     </message>
     <message>
         <source>Height</source>
-        <translation type="unfinished"></translation>
+        <translation>Висота</translation>
     </message>
     <message>
         <source>Side distance (0: from the camera)</source>
-        <translation type="unfinished"></translation>
+        <translation>Бічна відстань (0: за камерою)</translation>
     </message>
 </context>
 <context>
@@ -3141,98 +3142,98 @@ events:   %1
     </message>
     <message>
         <source>%1 must be from %2 to %3%4.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 має бути від %2 до %3%4.</translation>
     </message>
     <message>
         <source>altitudeType is AGL or AMSL, not &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>altitudeType — це AGL або AMSL, а не «%1».</translation>
     </message>
     <message>
         <source>camera needs a name.</source>
-        <translation type="unfinished"></translation>
+        <translation>camera: потрібна назва.</translation>
     </message>
     <message>
         <source>An area scan has no parameter &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>Сканування площі не має параметра «%1».</translation>
     </message>
     <message>
         <source>wpTurnType is STOP_AND_TURN, STRAIGHT, SPLINE or BANK_TURN, not &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>wpTurnType — це STOP_AND_TURN, STRAIGHT, SPLINE або BANK_TURN, а не «%1».</translation>
     </message>
     <message>
         <source>A waypoint has no parameter &quot;%1&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка маршруту не має параметра «%1».</translation>
     </message>
     <message>
         <source>%1 has no parameter &quot;%2&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 не має параметра «%2».</translation>
     </message>
     <message>
         <source>%1 cannot take that value.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 не може мати такого значення.</translation>
     </message>
     <message>
         <source>%1 is true or false, not &quot;%2&quot;.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 — це true або false, а не «%2».</translation>
     </message>
 </context>
 <context>
     <name>SegmentPlanner</name>
     <message>
         <source>The segment has no point</source>
-        <translation type="unfinished"></translation>
+        <translation>Сегмент не має точки</translation>
     </message>
     <message>
         <source>Point 1 is not a position on the globe</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка 1 не є позицією на земній кулі</translation>
     </message>
     <message>
         <source>The circle has no centre point</source>
-        <translation type="unfinished"></translation>
+        <translation>Коло не має центральної точки</translation>
     </message>
     <message>
         <source>The circle&apos;s centre is not a position on the globe</source>
-        <translation type="unfinished"></translation>
+        <translation>Центр кола не є позицією на земній кулі</translation>
     </message>
     <message>
         <source>The circle needs a positive radius (metres, the figure&apos;s first parameter)</source>
-        <translation type="unfinished"></translation>
+        <translation>Колу потрібен додатний радіус (у метрах, перший параметр фігури)</translation>
     </message>
     <message>
         <source>The circle&apos;s radius of %1 m is over the %2 m a segment may span</source>
-        <translation type="unfinished"></translation>
+        <translation>Радіус кола %1 m перевищує %2 m, які може охоплювати сегмент</translation>
     </message>
     <message>
         <source>loops: %1 laps of %2 points are too many</source>
-        <translation type="unfinished"></translation>
+        <translation>loops: %1 кіл по %2 точок — забагато</translation>
     </message>
     <message numerus="yes">
         <source>Orbit of %1 m radius: %n lap(s) of %2 points, %3</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>Орбіта радіусом %1 m: %n коло (точок на коло: %2), %3</numerusform>
+            <numerusform>Орбіта радіусом %1 m: %n кола (точок на коло: %2), %3</numerusform>
+            <numerusform>Орбіта радіусом %1 m: %n кіл (точок на коло: %2), %3</numerusform>
         </translation>
     </message>
     <message>
         <source>clockwise</source>
-        <translation type="unfinished"></translation>
+        <translation>за годинниковою стрілкою</translation>
     </message>
     <message>
         <source>counter-clockwise</source>
-        <translation type="unfinished"></translation>
+        <translation>проти годинникової стрілки</translation>
     </message>
     <message>
         <source>Point %1 is not a position on the globe (latitude and longitude in range)</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка %1 не є позицією на земній кулі (широта й довгота в допустимих межах)</translation>
     </message>
     <message>
         <source>speed: the segment needs a positive speed</source>
-        <translation type="unfinished"></translation>
+        <translation>speed: сегментові потрібна додатна швидкість</translation>
     </message>
     <message>
         <source>No planner knows the algorithm &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Жоден планувальник не знає алгоритму «%1»</translation>
     </message>
 </context>
 <context>
@@ -3246,39 +3247,39 @@ events:   %1
     <name>ServerAddress</name>
     <message>
         <source>the server address is empty (expected host:port)</source>
-        <translation type="unfinished"></translation>
+        <translation>адреса сервера порожня (очікується host:port)</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is a URL: give the server as host:port, e.g. localhost:3334</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» — це URL: вкажіть сервер як host:port, напр. localhost:3334</translation>
     </message>
     <message>
         <source>&quot;%1&quot; opens an IPv6 address with [ but never closes it</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» відкриває адресу IPv6 дужкою [, але не закриває її</translation>
     </message>
     <message>
         <source>&quot;%1&quot; has text after the IPv6 address that is not :port</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» має після адреси IPv6 текст, який не є :port</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not an IPv6 address</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» не є адресою IPv6</translation>
     </message>
     <message>
         <source>write an IPv6 server address in brackets: [%1]:3334</source>
-        <translation type="unfinished"></translation>
+        <translation>запишіть адресу сервера IPv6 у дужках: [%1]:3334</translation>
     </message>
     <message>
         <source>&quot;%1&quot; has no host name</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» не має імені хоста</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a host name (expected host:port, e.g. localhost:3334)</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» не є іменем хоста (очікується host:port, напр. localhost:3334)</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a port number (1 to 65535)</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» не є номером порту (від 1 до 65535)</translation>
     </message>
 </context>
 <context>
@@ -3320,26 +3321,26 @@ events:   %1
     <name>ServerZoneReply</name>
     <message>
         <source>the server gave no reason</source>
-        <translation type="unfinished"></translation>
+        <translation>сервер не вказав причини</translation>
     </message>
 </context>
 <context>
     <name>SetNfzChecksCommand</name>
     <message>
         <source>Check aerodrome zones</source>
-        <translation type="unfinished"></translation>
+        <translation>Перевіряти зони аеродромів</translation>
     </message>
     <message>
         <source>Do not check aerodrome zones</source>
-        <translation type="unfinished"></translation>
+        <translation>Не перевіряти зони аеродромів</translation>
     </message>
     <message>
         <source>Check custom zones</source>
-        <translation type="unfinished"></translation>
+        <translation>Перевіряти власні зони</translation>
     </message>
     <message>
         <source>Do not check custom zones</source>
-        <translation type="unfinished"></translation>
+        <translation>Не перевіряти власні зони</translation>
     </message>
 </context>
 <context>
@@ -3456,59 +3457,59 @@ events:   %1
     <name>SortieFormat</name>
     <message>
         <source>not a valid UgCS %1</source>
-        <translation type="unfinished"></translation>
+        <translation>некоректний %1 UgCS</translation>
     </message>
     <message>
         <source>missing &quot;AGL&quot; or &quot;AMSL&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>бракує &quot;AGL&quot; або &quot;AMSL&quot;</translation>
     </message>
     <message>
         <source>expected &quot;AGL&quot; or &quot;AMSL&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується &quot;AGL&quot; або &quot;AMSL&quot;</translation>
     </message>
     <message>
         <source>unknown value &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>невідоме значення «%1»</translation>
     </message>
     <message>
         <source>latitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>широта поза допустимими межами</translation>
     </message>
     <message>
         <source>longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>довгота поза допустимими межами</translation>
     </message>
     <message>
         <source>latitude/longitude out of range</source>
-        <translation type="unfinished"></translation>
+        <translation>широта/довгота поза допустимими межами</translation>
     </message>
     <message>
         <source>expected &quot;altitude&quot; or &quot;groundSampleDistance&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується &quot;altitude&quot; або &quot;groundSampleDistance&quot;</translation>
     </message>
     <message>
         <source>no figure type %1</source>
-        <translation type="unfinished"></translation>
+        <translation>немає типу фігури %1</translation>
     </message>
     <message>
         <source>unknown segment type &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>невідомий тип сегмента «%1»</translation>
     </message>
     <message>
         <source>expected &quot;none&quot; or &quot;returnHome&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується &quot;none&quot; або &quot;returnHome&quot;</translation>
     </message>
     <message>
         <source>not a Sortie mission file (&quot;format&quot; is not &quot;sortie-mission&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>не файл місії Sortie (&quot;format&quot; не &quot;sortie-mission&quot;)</translation>
     </message>
     <message>
         <source>schema version %1 does not exist</source>
-        <translation type="unfinished"></translation>
+        <translation>версії схеми %1 не існує</translation>
     </message>
     <message>
         <source>written by a newer Sortie (schema %1); this one reads up to schema %2</source>
-        <translation type="unfinished"></translation>
+        <translation>записано новішою версією Sortie (схема %1); ця читає схеми до %2</translation>
     </message>
 </context>
 <context>
@@ -3609,77 +3610,77 @@ events:   %1
     <name>TerrainFollow</name>
     <message>
         <source>Waiting for terrain data from %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Очікування даних рельєфу від %1</translation>
     </message>
     <message>
         <source>No terrain data %1 m along the pass (tried: %2): terrain following needs the ground everywhere</source>
-        <translation type="unfinished"></translation>
+        <translation>Немає даних рельєфу на %1 m уздовж проходу (спробувано: %2): для польоту з обгинанням рельєфу потрібні дані всюди</translation>
     </message>
 </context>
 <context>
     <name>TerrainProfile</name>
     <message>
         <source>%1, point %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, точка %2</translation>
     </message>
     <message>
         <source>Waypoint %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка %1</translation>
     </message>
     <message>
         <source>Leg %1 (%2 → %3)</source>
-        <translation type="unfinished"></translation>
+        <translation>Ділянка %1 (%2 → %3)</translation>
     </message>
 </context>
 <context>
     <name>TerrainRule</name>
     <message>
         <source>Waypoint %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Точка %1</translation>
     </message>
     <message>
         <source>%1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>з %1 по %2</translation>
     </message>
     <message>
         <source>%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height above sea level is unknown.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: висоту задано відносно %2, але немає даних рельєфу %3 (спробувано: %4), тож висота над рівнем моря невідома.</translation>
     </message>
     <message>
         <source>the ground</source>
-        <translation type="unfinished"></translation>
+        <translation>рельєфу</translation>
     </message>
     <message>
         <source>at home</source>
-        <translation type="unfinished"></translation>
+        <translation>в точці дому</translation>
     </message>
     <message>
         <source>%1 m above the ground</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 m над поверхнею</translation>
     </message>
     <message>
         <source>%1 m below the ground</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 m під поверхнею</translation>
     </message>
     <message>
         <source> (too low from %1 m to %2 m along it)</source>
-        <translation type="unfinished"></translation>
+        <translation> (занизько від %1 m до %2 m уздовж неї)</translation>
     </message>
     <message>
         <source>%1 flies %2 at %3 m along it%4, closer than the safe distance of %5 m.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 пролітає %2 на %3 m уздовж неї%4, ближче за безпечну відстань %5 m.</translation>
     </message>
     <message>
         <source>%1: no terrain data from %2 m to %3 m along it</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: немає даних рельєфу від %2 m до %3 m уздовж неї</translation>
     </message>
     <message>
         <source>No terrain data from %1 m along %2 to %3 m along %4</source>
-        <translation type="unfinished"></translation>
+        <translation>Немає даних рельєфу від %1 m уздовж %2 до %3 m уздовж %4</translation>
     </message>
     <message>
         <source>%1 (tried: %2); the clearance there is not checked.</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (спробувано: %2); запас висоти там не перевіряється.</translation>
     </message>
 </context>
 <context>
@@ -3705,11 +3706,11 @@ events:   %1
     <name>TilePrefetch</name>
     <message>
         <source>Sortie/%1 (drone ground station)</source>
-        <translation type="unfinished"></translation>
+        <translation>Sortie/%1 (drone ground station)</translation>
     </message>
     <message>
         <source>HTTP %1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>HTTP %1 %2</translation>
     </message>
 </context>
 <context>
@@ -3762,10 +3763,10 @@ events:   %1
     </message>
     <message numerus="yes">
         <source>%1 (and %n more error(s)) Fix them before %2.</source>
-        <translation type="unfinished">
+        <translation>
             <numerusform>%1 (і ще помилок: %n) Виправте їх перед %2.</numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+            <numerusform>%1 (і ще помилок: %n) Виправте їх перед %2.</numerusform>
+            <numerusform>%1 (і ще помилок: %n) Виправте їх перед %2.</numerusform>
         </translation>
     </message>
     <message>
@@ -3782,10 +3783,10 @@ events:   %1
     </message>
     <message numerus="yes">
         <source>The route has %n warning(s):</source>
-        <translation type="unfinished">
+        <translation>
             <numerusform>Маршрут має попередження (%n):</numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+            <numerusform>Маршрут має попередження (%n):</numerusform>
+            <numerusform>Маршрут має попередження (%n):</numerusform>
         </translation>
     </message>
     <message>
@@ -3805,10 +3806,10 @@ events:   %1
     <name>ValidationGate</name>
     <message numerus="yes">
         <source>%1 refused: the route has %n validation error(s). %2 Fix them, or override explicitly.</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%1 відхилено: маршрут має %n помилку перевірки. %2 Виправте їх або явно скасуйте перевірку.</numerusform>
+            <numerusform>%1 відхилено: маршрут має %n помилки перевірки. %2 Виправте їх або явно скасуйте перевірку.</numerusform>
+            <numerusform>%1 відхилено: маршрут має %n помилок перевірки. %2 Виправте їх або явно скасуйте перевірку.</numerusform>
         </translation>
     </message>
 </context>
@@ -3816,128 +3817,128 @@ events:   %1
     <name>VciConnection</name>
     <message>
         <source>the connection to the vehicle was closed</source>
-        <translation type="unfinished"></translation>
+        <translation>з’єднання з апаратом закрито</translation>
     </message>
     <message>
         <source>the device was closed</source>
-        <translation type="unfinished"></translation>
+        <translation>пристрій закрито</translation>
     </message>
     <message>
         <source>the device was destroyed</source>
-        <translation type="unfinished"></translation>
+        <translation>пристрій знищено</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a valid VCI URI</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» не є коректним URI VCI</translation>
     </message>
     <message>
         <source>a ground station does not send NOTIFY</source>
-        <translation type="unfinished"></translation>
+        <translation>наземна станція не надсилає NOTIFY</translation>
     </message>
     <message>
         <source>not connected to the vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>немає підключення до апарата</translation>
     </message>
     <message>
         <source>no answer in time (it waited behind other requests)</source>
-        <translation type="unfinished"></translation>
+        <translation>немає відповіді вчасно (запит чекав за іншими запитами)</translation>
     </message>
     <message>
         <source>writing to the vehicle failed: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>не вдалося записати в апарат: %1</translation>
     </message>
     <message>
         <source>the vehicle sent an answer (%1) to no request</source>
-        <translation type="unfinished"></translation>
+        <translation>апарат надіслав відповідь (%1) без запиту</translation>
     </message>
     <message>
         <source>unreadable message from the vehicle at byte %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>нечитабельне повідомлення від апарата на байті %1: %2</translation>
     </message>
     <message>
         <source>%1: the vehicle answered %2 %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: апарат відповів %2 %3</translation>
     </message>
     <message>
         <source>the vehicle did not answer in time</source>
-        <translation type="unfinished"></translation>
+        <translation>апарат не відповів вчасно</translation>
     </message>
 </context>
 <context>
     <name>VciEndpoint</name>
     <message>
         <source>&quot;%1&quot; is not a URL: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» не є URL: %2</translation>
     </message>
     <message>
         <source>&quot;%1&quot; needs a host and a port: tcp://host:port</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» потребує хоста й порту: tcp://host:port</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: use tcp://host:port or serial:/dev/name</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1»: використовуйте tcp://host:port або serial:/dev/name</translation>
     </message>
     <message>
         <source>&quot;%1&quot; names no serial device</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» не називає послідовного пристрою</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: unknown serial setting &quot;%2&quot; (baud, databits, parity, stopbits, flow)</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1»: невідоме налаштування послідовного порту «%2» (baud, databits, parity, stopbits, flow)</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: %2=%3 is not a valid value</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1»: %2=%3 — некоректне значення</translation>
     </message>
     <message>
         <source>serial:%1?baud=%2&amp;databits=%3&amp;parity=%4&amp;stopbits=%5&amp;flow=%6</source>
-        <translation type="unfinished"></translation>
+        <translation>serial:%1?baud=%2&amp;databits=%3&amp;parity=%4&amp;stopbits=%5&amp;flow=%6</translation>
     </message>
 </context>
 <context>
     <name>VciFenceBuilder</name>
     <message>
         <source>zone &apos;%1&apos;: its AGL limits need the ground under it, which no terrain source has; a vehicle cannot be given it</source>
-        <translation type="unfinished"></translation>
+        <translation>зона «%1»: її межі AGL потребують рельєфу під нею, якого немає в жодному джерелі рельєфу; апаратові її не можна передати</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: no ground under it, so its AGL limits were dropped (the vehicle keeps out of the whole column)</source>
-        <translation type="unfinished"></translation>
+        <translation>зона «%1»: під нею немає даних рельєфу, тому її межі AGL відкинуто (апарат не заходить у весь стовп)</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: over ground from %2 to %3 m its AGL limits leave no room in AMSL</source>
-        <translation type="unfinished"></translation>
+        <translation>зона «%1»: над рельєфом від %2 до %3 m її межі AGL не лишають простору в AMSL</translation>
     </message>
     <message>
         <source>%1 (hole %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (отвір %2)</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: its holes are closed on the vehicle (a fence polygon has none)</source>
-        <translation type="unfinished"></translation>
+        <translation>зона «%1»: її отвори на апараті закрито (полігон геозони не має отворів)</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: a cone that narrows to a point cannot keep a vehicle in</source>
-        <translation type="unfinished"></translation>
+        <translation>зона «%1»: конус, що звужується в точку, не може утримати апарат усередині</translation>
     </message>
     <message>
         <source>zone &apos;%1&apos;: its cone is a cylinder of radius %2 m on the vehicle</source>
-        <translation type="unfinished"></translation>
+        <translation>зона «%1»: на апараті її конус — циліндр радіусом %2 m</translation>
     </message>
     <message>
         <source>route fence</source>
-        <translation type="unfinished"></translation>
+        <translation>геозона маршруту</translation>
     </message>
     <message>
         <source>the fence cannot be sent: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>геозону не можна надіслати: %1</translation>
     </message>
     <message numerus="yes">
         <source>fence: %1 of the route&apos;s own, %n airspace zone(s) near it; on a breach the vehicle will %2</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>геозона: власних зон маршруту — %1, а також %n зона повітряного простору поруч; у разі порушення апарат виконає: %2</numerusform>
+            <numerusform>геозона: власних зон маршруту — %1, а також %n зони повітряного простору поруч; у разі порушення апарат виконає: %2</numerusform>
+            <numerusform>геозона: власних зон маршруту — %1, а також %n зон повітряного простору поруч; у разі порушення апарат виконає: %2</numerusform>
         </translation>
     </message>
     <message>
@@ -3946,111 +3947,111 @@ events:   %1
     </message>
     <message>
         <source>land</source>
-        <translation type="unfinished"></translation>
+        <translation>посадка</translation>
     </message>
     <message>
         <source>hold</source>
-        <translation type="unfinished"></translation>
+        <translation>утримання</translation>
     </message>
 </context>
 <context>
     <name>VciMissionPlanner</name>
     <message>
         <source>the route has no waypoints to fly</source>
-        <translation type="unfinished"></translation>
+        <translation>маршрут не має точок для польоту</translation>
     </message>
 </context>
 <context>
     <name>VciTransport</name>
     <message>
         <source>closed by the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>закрито оператором</translation>
     </message>
     <message>
         <source>reconnecting at the operator&apos;s request</source>
-        <translation type="unfinished"></translation>
+        <translation>перепідключення на запит оператора</translation>
     </message>
     <message>
         <source>the vehicle closed the connection</source>
-        <translation type="unfinished"></translation>
+        <translation>апарат закрив з’єднання</translation>
     </message>
     <message>
         <source>cannot open %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>не вдається відкрити %1: %2</translation>
     </message>
 </context>
 <context>
     <name>VciVehicleLink</name>
     <message>
         <source>connection to %1 lost: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>з’єднання з %1 втрачено: %2</translation>
     </message>
     <message>
         <source>disconnected by the operator</source>
-        <translation type="unfinished"></translation>
+        <translation>відключено оператором</translation>
     </message>
     <message>
         <source>left its fence &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>покинув свою геозону «%1»</translation>
     </message>
     <message>
         <source>entered the exclusion zone &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>увійшов у заборонну зону «%1»</translation>
     </message>
     <message>
         <source>returning home</source>
-        <translation type="unfinished"></translation>
+        <translation>повертається додому</translation>
     </message>
     <message>
         <source>action unknown</source>
-        <translation type="unfinished"></translation>
+        <translation>дія невідома</translation>
     </message>
     <message>
         <source>fence breach: %1; %2</source>
-        <translation type="unfinished"></translation>
+        <translation>порушення геозони: %1; %2</translation>
     </message>
     <message>
         <source>the ground under the route did not arrive from %1 in %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>дані рельєфу під маршрутом не надійшли від %1 за %2 s</translation>
     </message>
     <message>
         <source>the vehicle refused the fence: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>апарат відхилив геозону: %1</translation>
     </message>
     <message>
         <source>the fence could not be read back: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>не вдалося зчитати геозону назад: %1</translation>
     </message>
     <message>
         <source>the vehicle&apos;s fence cannot be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>не вдається прочитати геозону апарата: %1</translation>
     </message>
     <message>
         <source>the vehicle holds another fence than the one sent (%1 items sent, %2 held)</source>
-        <translation type="unfinished"></translation>
+        <translation>на борту апарата інша геозона, ніж надіслана (надіслано елементів: %1, на борту: %2)</translation>
     </message>
     <message>
         <source>the vehicle&apos;s mission cannot be read: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>не вдається прочитати місію апарата: %1</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a parameter name</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» не є назвою параметра</translation>
     </message>
 </context>
 <context>
     <name>Vehicle</name>
     <message>
         <source>mode %1</source>
-        <translation type="unfinished"></translation>
+        <translation>режим %1</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a flight mode</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» не є режимом польоту</translation>
     </message>
     <message>
         <source>takeoff to %1 m</source>
-        <translation type="unfinished"></translation>
+        <translation>зліт на %1 m</translation>
     </message>
     <message>
         <source>return home</source>
@@ -4061,67 +4062,67 @@ events:   %1
     <name>WaypointAction</name>
     <message>
         <source>Wait for operator</source>
-        <translation type="unfinished"></translation>
+        <translation>Чекати на оператора</translation>
     </message>
     <message>
         <source>Wait %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Чекати %1 s</translation>
     </message>
     <message>
         <source>Heading %1°%2</source>
-        <translation type="unfinished"></translation>
+        <translation>Курс %1°%2</translation>
     </message>
     <message>
         <source> from course</source>
-        <translation type="unfinished"></translation>
+        <translation> від напрямку руху</translation>
     </message>
     <message>
         <source>Look at %1, %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Дивитися на %1, %2</translation>
     </message>
     <message>
         <source>Take photo</source>
-        <translation type="unfinished"></translation>
+        <translation>Зробити фото</translation>
     </message>
     <message>
         <source>Start video</source>
-        <translation type="unfinished"></translation>
+        <translation>Почати відео</translation>
     </message>
     <message>
         <source>Stop video</source>
-        <translation type="unfinished"></translation>
+        <translation>Зупинити відео</translation>
     </message>
     <message>
         <source>Toggle video</source>
-        <translation type="unfinished"></translation>
+        <translation>Перемкнути відео</translation>
     </message>
     <message>
         <source>Photo every %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Фото кожні %1 s</translation>
     </message>
     <message>
         <source>Photo every %1 m</source>
-        <translation type="unfinished"></translation>
+        <translation>Фото кожні %1 m</translation>
     </message>
     <message>
         <source>Stop photos</source>
-        <translation type="unfinished"></translation>
+        <translation>Зупинити фото</translation>
     </message>
     <message>
         <source>Panorama %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>Панорама %1°</translation>
     </message>
     <message>
         <source>tilt %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>нахил %1°</translation>
     </message>
     <message>
         <source>roll %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>крен %1°</translation>
     </message>
     <message>
         <source>yaw %1°</source>
-        <translation type="unfinished"></translation>
+        <translation>рискання %1°</translation>
     </message>
     <message>
         <source>zoom %1</source>
@@ -4129,7 +4130,7 @@ events:   %1
     </message>
     <message>
         <source>Gimbal (nothing set)</source>
-        <translation type="unfinished"></translation>
+        <translation>Підвіс (нічого не задано)</translation>
     </message>
 </context>
 <context>
@@ -4231,188 +4232,188 @@ events:   %1
     <name>WplFormat</name>
     <message>
         <source>not a waypoint file: expected &quot;QGC WPL 110&quot;, found &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>не файл точок: очікується &quot;QGC WPL 110&quot;, знайдено «%1»</translation>
     </message>
     <message>
         <source>unsupported waypoint file version &quot;%1&quot;; Sortie reads QGC WPL 110</source>
-        <translation type="unfinished"></translation>
+        <translation>непідтримувана версія файлу точок «%1»; Sortie читає QGC WPL 110</translation>
     </message>
     <message>
         <source>expected 12 tab-separated fields, found %1</source>
-        <translation type="unfinished"></translation>
+        <translation>очікується 12 полів, розділених табуляцією, знайдено %1</translation>
     </message>
     <message>
         <source>field %1 (%2) is not a number: &quot;%3&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>поле %1 (%2) не є числом: «%3»</translation>
     </message>
     <message>
         <source>field %1 (%2) must be a whole number, found %3</source>
-        <translation type="unfinished"></translation>
+        <translation>поле %1 (%2) має бути цілим числом, знайдено %3</translation>
     </message>
     <message>
         <source>item %1 where item %2 was expected</source>
-        <translation type="unfinished"></translation>
+        <translation>елемент %1 там, де очікувався елемент %2</translation>
     </message>
     <message>
         <source>the home position %1, %2 is not a position</source>
-        <translation type="unfinished"></translation>
+        <translation>точка дому %1, %2 не є позицією</translation>
     </message>
     <message>
         <source>the file is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>файл порожній</translation>
     </message>
     <message>
         <source>the file has no items, not even the home position</source>
-        <translation type="unfinished"></translation>
+        <translation>файл не має елементів, навіть точки дому</translation>
     </message>
     <message>
         <source>The route has no home position: the first point was written as home, at 0 m AMSL.</source>
-        <translation type="unfinished"></translation>
+        <translation>Маршрут не має точки дому: першу точку записано як дім, на 0 m AMSL.</translation>
     </message>
 </context>
 <context>
     <name>WpmlDocumentReader</name>
     <message>
         <source>malformed XML: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>некоректний XML: %1</translation>
     </message>
     <message>
         <source>%1 is not a number: &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 не є числом: «%2»</translation>
     </message>
     <message>
         <source>%1 is not a whole number: &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 не є цілим числом: «%2»</translation>
     </message>
     <message>
         <source>%1 &quot;%2&quot; (written as &quot;%3&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 «%2» (записано як «%3»)</translation>
     </message>
     <message>
         <source>coordinates &quot;%1&quot; are not longitude,latitude in degrees</source>
-        <translation type="unfinished"></translation>
+        <translation>координати «%1» не є longitude,latitude у градусах</translation>
     </message>
     <message>
         <source>a waypoint index is not a whole number</source>
-        <translation type="unfinished"></translation>
+        <translation>індекс точки не є цілим числом</translation>
     </message>
 </context>
 <context>
     <name>ZipArchive</name>
     <message>
         <source>two of its entries have the same name</source>
-        <translation type="unfinished"></translation>
+        <translation>два його елементи мають однакову назву</translation>
     </message>
     <message>
         <source>its directory and its entries disagree</source>
-        <translation type="unfinished"></translation>
+        <translation>його каталог і елементи не узгоджуються</translation>
     </message>
     <message>
         <source>it has no ZIP directory (truncated, or not a ZIP file)</source>
-        <translation type="unfinished"></translation>
+        <translation>у ньому немає каталогу ZIP (обрізаний або не файл ZIP)</translation>
     </message>
     <message>
         <source>the archive has no end of central directory</source>
-        <translation type="unfinished"></translation>
+        <translation>архів не має кінця центрального каталогу</translation>
     </message>
     <message>
         <source>ZIP64 archives are not read</source>
-        <translation type="unfinished"></translation>
+        <translation>архіви ZIP64 не читаються</translation>
     </message>
     <message>
         <source>a central directory record is damaged at byte %1</source>
-        <translation type="unfinished"></translation>
+        <translation>запис центрального каталогу пошкоджено на байті %1</translation>
     </message>
     <message>
         <source>an entry&apos;s local header lies outside the archive</source>
-        <translation type="unfinished"></translation>
+        <translation>локальний заголовок елемента лежить поза архівом</translation>
     </message>
     <message>
         <source>the entries &quot;%1&quot; and &quot;%2&quot; share bytes in the archive (a ZIP bomb&apos;s trick): not read</source>
-        <translation type="unfinished"></translation>
+        <translation>елементи «%1» і «%2» спільно використовують байти архіву (трюк ZIP-бомби): не прочитано</translation>
     </message>
     <message>
         <source>not a ZIP archive: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>не архів ZIP: %1</translation>
     </message>
     <message>
         <source>not a readable ZIP archive: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>нечитабельний архів ZIP: %1</translation>
     </message>
     <message>
         <source>the archive lists %1 entries, more than the %2 read</source>
-        <translation type="unfinished"></translation>
+        <translation>архів містить елементів: %1, більше за %2, які читаються</translation>
     </message>
     <message>
         <source>the central directory lists %1 entries where libzip read %2</source>
-        <translation type="unfinished"></translation>
+        <translation>центральний каталог містить елементів: %1, а libzip прочитав %2</translation>
     </message>
     <message>
         <source>the archive has no &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>архів не має «%1»</translation>
     </message>
     <message>
         <source>&quot;%1&quot; would inflate to %2 bytes, more than the %3 read from one entry</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» розпакувався б до %2 байт, більше за %3, що читаються з одного елемента</translation>
     </message>
     <message>
         <source>reading &quot;%1&quot; would inflate the archive past %2 bytes in all</source>
-        <translation type="unfinished"></translation>
+        <translation>читання «%1» розпакувало б архів понад %2 байт загалом</translation>
     </message>
     <message>
         <source>&quot;%1&quot; claims %2 bytes from %3 compressed, more than %4 times: not inflated</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» заявляє %2 байт із %3 стиснутих, більш ніж у %4 раз: не розпаковано</translation>
     </message>
     <message>
         <source>&quot;%1&quot; cannot be read: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» не вдається прочитати: %2</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is damaged: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» пошкоджено: %2</translation>
     </message>
     <message>
         <source>&quot;%1&quot; holds a different size than the archive says (%2 bytes)</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» має інший розмір, ніж вказано в архіві (%2 байт)</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is damaged (its CRC does not match)</source>
-        <translation type="unfinished"></translation>
+        <translation>«%1» пошкоджено (його CRC не збігається)</translation>
     </message>
     <message>
         <source>the archive could not be written: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>не вдалося записати архів: %1</translation>
     </message>
     <message>
         <source>the archive could not be written: its bytes could not be read back</source>
-        <translation type="unfinished"></translation>
+        <translation>не вдалося записати архів: його байти не вдалося зчитати назад</translation>
     </message>
 </context>
 <context>
     <name>Zone</name>
     <message>
         <source>above home</source>
-        <translation type="unfinished"></translation>
+        <translation>над точкою дому</translation>
     </message>
     <message>
         <source>server aerodrome</source>
-        <translation type="unfinished"></translation>
+        <translation>сервер (зона аеродрому)</translation>
     </message>
     <message>
         <source>server custom</source>
-        <translation type="unfinished"></translation>
+        <translation>сервер (власна зона)</translation>
     </message>
     <message>
         <source>vehicle fence</source>
-        <translation type="unfinished"></translation>
+        <translation>геозона апарата</translation>
     </message>
     <message>
         <source>%1 polygon %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: полігон %2</translation>
     </message>
     <message>
         <source>%1 circle %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: коло %2</translation>
     </message>
 </context>
 <context>
@@ -4423,18 +4424,18 @@ events:   %1
     </message>
     <message>
         <source>vertex %1</source>
-        <translation type="unfinished"></translation>
+        <translation>вершина %1</translation>
     </message>
 </context>
 <context>
     <name>ZoneFiles</name>
     <message>
         <source>%1 was left out: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 пропущено: %2</translation>
     </message>
     <message>
         <source>unknown zone file type &quot;.%1&quot; (Sortie reads .plan, .geojson, .json and .kml)</source>
-        <translation type="unfinished"></translation>
+        <translation>невідомий тип файлу зон «.%1» (Sortie читає .plan, .geojson, .json і .kml)</translation>
     </message>
 </context>
 <context>
@@ -4537,55 +4538,55 @@ events:   %1
     </message>
     <message>
         <source>exclusion</source>
-        <translation type="unfinished"></translation>
+        <translation>заборонна</translation>
     </message>
     <message>
         <source>inclusion</source>
-        <translation type="unfinished"></translation>
+        <translation>дозвільна</translation>
     </message>
     <message>
         <source>HOME</source>
-        <translation type="unfinished"></translation>
+        <translation>ДІМ</translation>
     </message>
     <message>
         <source>Discard copy</source>
-        <translation type="unfinished"></translation>
+        <translation>Відкинути копію</translation>
     </message>
     <message>
         <source>The server&apos;s zone stays as it is</source>
-        <translation type="unfinished"></translation>
+        <translation>Зона сервера лишається без змін</translation>
     </message>
     <message>
         <source>Update on server</source>
-        <translation type="unfinished"></translation>
+        <translation>Оновити на сервері</translation>
     </message>
     <message>
         <source>Send to server</source>
-        <translation type="unfinished"></translation>
+        <translation>Надіслати на сервер</translation>
     </message>
     <message>
         <source>Edit here</source>
-        <translation type="unfinished"></translation>
+        <translation>Редагувати тут</translation>
     </message>
     <message>
         <source>Draw a copy to edit; Update on server stores it</source>
-        <translation type="unfinished"></translation>
+        <translation>Намалювати копію для редагування; «Оновити на сервері» зберігає її</translation>
     </message>
     <message>
         <source>Delete on server</source>
-        <translation type="unfinished"></translation>
+        <translation>Видалити на сервері</translation>
     </message>
     <message>
         <source>Waiting for the server…</source>
-        <translation type="unfinished"></translation>
+        <translation>Очікування сервера…</translation>
     </message>
     <message>
         <source>Delete zone</source>
-        <translation type="unfinished"></translation>
+        <translation>Видалити зону</translation>
     </message>
     <message>
         <source>Delete &apos;%1&apos; on the server, for every operator?</source>
-        <translation type="unfinished"></translation>
+        <translation>Видалити «%1» на сервері для всіх операторів?</translation>
     </message>
 </context>
 <context>
@@ -4624,11 +4625,11 @@ events:   %1
     </message>
     <message>
         <source>--demo with only the server&apos;s three vehicles: &quot;parked&quot; (nothing moves) or &quot;flying&quot; (one flies, followed in the fly view); for benchmarks.</source>
-        <translation type="unfinished"></translation>
+        <translation>--demo лише з трьома апаратами сервера: &quot;parked&quot; (ніщо не рухається) або &quot;flying&quot; (один летить, за ним стежить сторінка телеметрії); для бенчмарків.</translation>
     </message>
     <message>
         <source>A DEM for the terrain: any raster GDAL reads (GeoTIFF, COG, Copernicus DEM, .hgt, ...) or a folder of them, asked before the server (also the setting terrain/demFolder).</source>
-        <translation type="unfinished"></translation>
+        <translation>DEM для рельєфу: будь-який растр, який читає GDAL (GeoTIFF, COG, Copernicus DEM, .hgt, ...), або тека з ними; запитується раніше за сервер (також налаштування terrain/demFolder).</translation>
     </message>
 </context>
 <context>
@@ -4824,47 +4825,47 @@ events:   %1
     <name>sortie::airspace::ZoneSharing</name>
     <message>
         <source>Wait: the server has not answered the last change yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Зачекайте: сервер ще не відповів на останню зміну.</translation>
     </message>
     <message>
         <source>Only a zone drawn here can be sent to the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>Надіслати на сервер можна лише зону, намальовану тут.</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; was changed on the server since you copied it (version %2, now %3). Remove your copy and edit the server&apos;s zone again.</source>
-        <translation type="unfinished"></translation>
+        <translation>Зону «%1» змінено на сервері після того, як ви її скопіювали (версія %2, тепер %3). Видаліть свою копію й відредагуйте зону сервера знову.</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; is on the server; you changed it since sending, so your copy stays.</source>
-        <translation type="unfinished"></translation>
+        <translation>Зона «%1» є на сервері; ви змінили її після надсилання, тож ваша копія лишається.</translation>
     </message>
     <message>
         <source>Send zone &apos;%1&apos; to the server</source>
-        <translation type="unfinished"></translation>
+        <translation>Надіслати зону «%1» на сервер</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; is on the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>Зона «%1» є на сервері.</translation>
     </message>
     <message>
         <source>Only the server&apos;s custom zones can be edited here; aerodrome zones are the server&apos;s own.</source>
-        <translation type="unfinished"></translation>
+        <translation>Тут можна редагувати лише власні зони сервера; зони аеродромів належать серверу.</translation>
     </message>
     <message>
         <source>Edit server zone &apos;%1&apos;</source>
-        <translation type="unfinished"></translation>
+        <translation>Редагувати зону сервера «%1»</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; is drawn here to edit; send it to store the change on the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>Зону «%1» намальовано тут для редагування; надішліть її, щоб зберегти зміну на сервері.</translation>
     </message>
     <message>
         <source>Only the server&apos;s custom zones can be deleted here.</source>
-        <translation type="unfinished"></translation>
+        <translation>Тут можна видалити лише власні зони сервера.</translation>
     </message>
     <message>
         <source>Zone &apos;%1&apos; was deleted on the server.</source>
-        <translation type="unfinished"></translation>
+        <translation>Зону «%1» видалено на сервері.</translation>
     </message>
 </context>
 <context>
@@ -6488,7 +6489,7 @@ events:   %1
     <name>sortie::ui::Translations</name>
     <message>
         <source>System language</source>
-        <translation type="unfinished"></translation>
+        <translation>Системна мова</translation>
     </message>
 </context>
 <context>
