@@ -17,12 +17,12 @@ AutosaveDirectory::AutosaveDirectory(QString path)
 
 QString AutosaveDirectory::filePath(int slot) const
 {
-    return QDir(m_path).filePath(QCoreApplication::translate("AutosaveDirectory", "autosave-%1.json").arg(slot));
+    return QDir(m_path).filePath(QStringLiteral("autosave-%1.json").arg(slot));
 }
 
 QString AutosaveDirectory::lockPath(int slot) const
 {
-    return QDir(m_path).filePath(QCoreApplication::translate("AutosaveDirectory", "autosave-%1.lock").arg(slot));
+    return QDir(m_path).filePath(QStringLiteral("autosave-%1.lock").arg(slot));
 }
 
 QString AutosaveDirectory::discardedPath() const
@@ -33,9 +33,9 @@ QString AutosaveDirectory::discardedPath() const
 QString AutosaveDirectory::corruptPath(int slot) const
 {
     const QString stamp = QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd-HHmmss-zzz"));
-    QString path = QDir(m_path).filePath(QCoreApplication::translate("AutosaveDirectory", "autosave-%1.unreadable-%2.json").arg(slot).arg(stamp));
+    QString path = QDir(m_path).filePath(QStringLiteral("autosave-%1.unreadable-%2.json").arg(slot).arg(stamp));
     for (int i = 2; QFileInfo::exists(path); ++i)
-        path = QDir(m_path).filePath(QCoreApplication::translate("AutosaveDirectory", "autosave-%1.unreadable-%2-%3.json").arg(slot).arg(stamp).arg(i));
+        path = QDir(m_path).filePath(QStringLiteral("autosave-%1.unreadable-%2-%3.json").arg(slot).arg(stamp).arg(i));
     return path;
 }
 

@@ -32,7 +32,7 @@ Result<Route> readRoute(const Json &doc, const char *key)
     if (mission->routes.size() != 1) {
         MissionError e;
         e.message = QCoreApplication::translate("AutosaveRecord", "the \"%1\" document holds %2 routes, not one").arg(QLatin1String(key)).arg(mission->routes.size());
-        e.jsonPath = QCoreApplication::translate("AutosaveRecord", "/%1/mission/routes").arg(QLatin1String(key));
+        e.jsonPath = QStringLiteral("/%1/mission/routes").arg(QLatin1String(key));
         return e;
     }
     return mission->routes.front();

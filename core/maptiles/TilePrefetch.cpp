@@ -20,7 +20,7 @@ constexpr auto kAbortedProperty = "sortiePrefetchAborted";
 
 QString sortieUserAgent()
 {
-    return QCoreApplication::translate("TilePrefetch", "Sortie/%1 (drone ground station)").arg(QStringLiteral(SORTIE_VERSION));
+    return QStringLiteral("Sortie/%1 (drone ground station)").arg(QStringLiteral(SORTIE_VERSION));  // i18n: not text (a protocol string)
 }
 
 TilePrefetch::TilePrefetch(QNetworkAccessManager *network, PrefetchPlan plan, PrefetchLimits limits, QObject *parent)
@@ -232,7 +232,7 @@ void TilePrefetch::replyFinished(QNetworkReply *reply)
         }
     } else if (status.isValid()) {
         const int code = status.toInt();
-        const QString why = QCoreApplication::translate("TilePrefetch", "HTTP %1 %2").arg(code).arg(reply->attribute(QNetworkRequest::HttpReasonPhraseAttribute).toString()).trimmed();
+        const QString why = QStringLiteral("HTTP %1 %2").arg(code).arg(reply->attribute(QNetworkRequest::HttpReasonPhraseAttribute).toString()).trimmed();  // i18n: not text (a protocol string)
         if (isRetryableStatus(code))
             retryLater(pending, why, parseRetryAfter(reply->rawHeader("Retry-After"), QDateTime::currentDateTimeUtc()));
         else

@@ -83,7 +83,7 @@ QString VciEndpoint::toString() const
     static const char *parities[] = {"none", "?", "even", "odd", "space", "mark"};
     const char *stop = stopBits == QSerialPort::TwoStop ? "2" : stopBits == QSerialPort::OneAndHalfStop ? "1.5" : "1";
     const char *flow = flowControl == QSerialPort::HardwareControl ? "hardware" : flowControl == QSerialPort::SoftwareControl ? "software" : "none";
-    return QCoreApplication::translate("VciEndpoint", "serial:%1?baud=%2&databits=%3&parity=%4&stopbits=%5&flow=%6")
+    return QStringLiteral("serial:%1?baud=%2&databits=%3&parity=%4&stopbits=%5&flow=%6")
         .arg(device)
         .arg(baudRate)
         .arg(int(dataBits))

@@ -385,22 +385,6 @@
 <context>
     <name>AutosaveDirectory</name>
     <message>
-        <source>autosave-%1.json</source>
-        <translation>autosave-%1.json</translation>
-    </message>
-    <message>
-        <source>autosave-%1.lock</source>
-        <translation>autosave-%1.lock</translation>
-    </message>
-    <message>
-        <source>autosave-%1.unreadable-%2.json</source>
-        <translation>autosave-%1.unreadable-%2.json</translation>
-    </message>
-    <message>
-        <source>autosave-%1.unreadable-%2-%3.json</source>
-        <translation>autosave-%1.unreadable-%2-%3.json</translation>
-    </message>
-    <message>
         <source>Cannot create the autosave folder %1</source>
         <translation>Der Ordner für automatische Sicherungen %1 kann nicht angelegt werden</translation>
     </message>
@@ -414,10 +398,6 @@
     <message>
         <source>the &quot;%1&quot; document holds %2 routes, not one</source>
         <translation>das Dokument „%1“ enthält %2 Routen statt einer</translation>
-    </message>
-    <message>
-        <source>/%1/mission/routes</source>
-        <translation>/%1/mission/routes</translation>
     </message>
     <message>
         <source>not a Sortie autosave (&quot;format&quot; is not &quot;sortie-autosave&quot;)</source>
@@ -1191,10 +1171,6 @@
     <message>
         <source>not valid JSON: %1</source>
         <translation>kein gültiges JSON: %1</translation>
-    </message>
-    <message>
-        <source>; last read: &apos;.*&apos;</source>
-        <translation>; last read: &apos;.*&apos;</translation>
     </message>
     <message>
         <source>unknown value &quot;%1&quot;</source>
@@ -3693,17 +3669,6 @@ Ereignisse: %1
     </message>
 </context>
 <context>
-    <name>TilePrefetch</name>
-    <message>
-        <source>Sortie/%1 (drone ground station)</source>
-        <translation>Sortie/%1 (drone ground station)</translation>
-    </message>
-    <message>
-        <source>HTTP %1 %2</source>
-        <translation>HTTP %1 %2</translation>
-    </message>
-</context>
-<context>
     <name>TileUrlTemplate</name>
     <message>
         <source>No tile URL template is set.</source>
@@ -3876,10 +3841,6 @@ Ereignisse: %1
     <message>
         <source>&quot;%1&quot;: %2=%3 is not a valid value</source>
         <translation>„%1“: %2=%3 ist kein gültiger Wert</translation>
-    </message>
-    <message>
-        <source>serial:%1?baud=%2&amp;databits=%3&amp;parity=%4&amp;stopbits=%5&amp;flow=%6</source>
-        <translation>serial:%1?baud=%2&amp;databits=%3&amp;parity=%4&amp;stopbits=%5&amp;flow=%6</translation>
     </message>
 </context>
 <context>

@@ -188,7 +188,7 @@ Result<Json> parseJson(const QByteArray &data)
         const qsizetype colon = what.indexOf(QStringLiteral(": "));
         if (colon >= 0)
             what = what.mid(colon + 2);
-        static const QRegularExpression lastRead(QCoreApplication::translate("JsonCursor", "; last read: '.*'"), QRegularExpression::DotMatchesEverythingOption);
+        static const QRegularExpression lastRead(QStringLiteral("; last read: '.*'"), QRegularExpression::DotMatchesEverythingOption);  // i18n: not text (matches the JSON library's own English message)
         what.remove(lastRead);
         return syntaxError(data, qsizetype(e.byte) - 1, what);  // e.byte is 1-based, just past the error
     } catch (const Json::exception &e) {
