@@ -29,10 +29,12 @@ QString limits(const Zone &z)
 
 QString violationMessage(const AirspaceViolation &v, const Zone &zone)
 {
-    const QString verb = v.kind == ViolationKind::InsideExclusion ? QStringLiteral("enters") : QStringLiteral("leaves");
     const QString where = v.toDistance - v.fromDistance < 0.5 ? QCoreApplication::translate("AirspaceRule", "at %1").arg(metres(v.fromDistance))
                                                               : QCoreApplication::translate("AirspaceRule", "from %1 to %2").arg(metres(v.fromDistance), metres(v.toDistance));
-    QString text = QCoreApplication::translate("AirspaceRule", "Leg %1 %2 '%3' %4 (%5)").arg(v.leg).arg(verb, zone.name, where, limits(zone));
+    // One sentence each way: a verb put into a sentence is not translatable (word order differs).
+    QString text = v.kind == ViolationKind::InsideExclusion
+        ? QCoreApplication::translate("AirspaceRule", "Leg %1 enters '%2' %3 (%4)").arg(v.leg).arg(zone.name, where, limits(zone))
+        : QCoreApplication::translate("AirspaceRule", "Leg %1 leaves '%2' %3 (%4)").arg(v.leg).arg(zone.name, where, limits(zone));
     if (v.heightUnknown)
         text += QCoreApplication::translate("AirspaceRule", "; its height there is unknown (no terrain data), so it counts as inside");
     return text + QLatin1Char('.');

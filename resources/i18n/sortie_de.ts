@@ -285,6 +285,18 @@
         <source>%1 (kept as %2)</source>
         <translation>%1 (beibehalten als %2)</translation>
     </message>
+    <message>
+        <source>drawn</source>
+        <translation>gezeichnet</translation>
+    </message>
+    <message>
+        <source>server</source>
+        <translation>Server</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>Datei</translation>
+    </message>
 </context>
 <context>
     <name>AirspaceRule</name>
@@ -301,10 +313,6 @@
         <translation>von %1 bis %2</translation>
     </message>
     <message>
-        <source>Leg %1 %2 &apos;%3&apos; %4 (%5)</source>
-        <translation>Teilstrecke %1 %2 „%3“ %4 (%5)</translation>
-    </message>
-    <message>
         <source>; its height there is unknown (no terrain data), so it counts as inside</source>
         <translation>; ihre Höhe dort ist unbekannt (keine Geländedaten), daher gilt sie als innerhalb</translation>
     </message>
@@ -319,6 +327,14 @@
     <message>
         <source>the edge of inclusion zone</source>
         <translation>den Rand der Einschlusszone</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters &apos;%2&apos; %3 (%4)</source>
+        <translation>Teilstrecke %1 tritt %3 in „%2“ ein (%4)</translation>
+    </message>
+    <message>
+        <source>Leg %1 leaves &apos;%2&apos; %3 (%4)</source>
+        <translation>Teilstrecke %1 verlässt „%2“ %3 (%4)</translation>
     </message>
 </context>
 <context>

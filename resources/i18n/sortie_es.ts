@@ -285,6 +285,18 @@
         <source>%1 (kept as %2)</source>
         <translation>%1 (se conservó como %2)</translation>
     </message>
+    <message>
+        <source>drawn</source>
+        <translation>dibujada</translation>
+    </message>
+    <message>
+        <source>server</source>
+        <translation>servidor</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>archivo</translation>
+    </message>
 </context>
 <context>
     <name>AirspaceRule</name>
@@ -301,10 +313,6 @@
         <translation>de %1 a %2</translation>
     </message>
     <message>
-        <source>Leg %1 %2 &apos;%3&apos; %4 (%5)</source>
-        <translation>El tramo %1 %2 «%3» %4 (%5)</translation>
-    </message>
-    <message>
         <source>; its height there is unknown (no terrain data), so it counts as inside</source>
         <translation>; allí se desconoce su altura (sin datos de terreno), así que cuenta como dentro</translation>
     </message>
@@ -319,6 +327,14 @@
     <message>
         <source>the edge of inclusion zone</source>
         <translation>el borde de la zona de inclusión</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters &apos;%2&apos; %3 (%4)</source>
+        <translation>El tramo %1 entra en «%2» %3 (%4)</translation>
+    </message>
+    <message>
+        <source>Leg %1 leaves &apos;%2&apos; %3 (%4)</source>
+        <translation>El tramo %1 sale de «%2» %3 (%4)</translation>
     </message>
 </context>
 <context>

@@ -285,6 +285,18 @@
         <source>%1 (kept as %2)</source>
         <translation>%1 (збережено як %2)</translation>
     </message>
+    <message>
+        <source>drawn</source>
+        <translation>намальована</translation>
+    </message>
+    <message>
+        <source>server</source>
+        <translation>сервер</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>файл</translation>
+    </message>
 </context>
 <context>
     <name>AirspaceRule</name>
@@ -301,10 +313,6 @@
         <translation>від %1 до %2</translation>
     </message>
     <message>
-        <source>Leg %1 %2 &apos;%3&apos; %4 (%5)</source>
-        <translation>Ділянка %1 %2 «%3» %4 (%5)</translation>
-    </message>
-    <message>
         <source>; its height there is unknown (no terrain data), so it counts as inside</source>
         <translation>; її висота там невідома (немає даних рельєфу), тому вважається, що вона всередині</translation>
     </message>
@@ -319,6 +327,14 @@
     <message>
         <source>the edge of inclusion zone</source>
         <translation>межі дозвільної зони</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters &apos;%2&apos; %3 (%4)</source>
+        <translation>Ділянка %1 входить у «%2» %3 (%4)</translation>
+    </message>
+    <message>
+        <source>Leg %1 leaves &apos;%2&apos; %3 (%4)</source>
+        <translation>Ділянка %1 виходить із «%2» %3 (%4)</translation>
     </message>
 </context>
 <context>

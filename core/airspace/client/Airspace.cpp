@@ -116,9 +116,9 @@ Airspace::Group Airspace::groupOf(int row) const
 QString Airspace::groupName(Group group)
 {
     switch (group) {
-    case Group::Custom: return QStringLiteral("drawn");
-    case Group::Server: return QStringLiteral("server");
-    case Group::File: return QStringLiteral("file");
+    case Group::Custom: return QCoreApplication::translate("Airspace", "drawn");
+    case Group::Server: return QCoreApplication::translate("Airspace", "server");
+    case Group::File: return QCoreApplication::translate("Airspace", "file");
     case Group::RouteFence: return QCoreApplication::translate("Airspace", "route fence");
     }
     return {};
@@ -317,7 +317,8 @@ void Airspace::replaceCustomZone(int index, Zone zone)
 
 QString Airspace::keyOf(Group group, const Zone &zone) const
 {
-    return groupName(group) + QLatin1Char('\n') + zone.origin + QLatin1Char('\n') + zone.name;
+    // Not groupName (translated): a switched-off zone stays off when the language changes.
+    return QString::number(int(group)) + QLatin1Char('\n') + zone.origin + QLatin1Char('\n') + zone.name;
 }
 
 void Airspace::followRouteFence()
