@@ -43,7 +43,7 @@ bool flyNorth(sim::SimVehicle &vehicle, QString *error)
     for (const pb::Command &command : {arm, go}) {
         const auto result = vehicle.execute(command);
         if (result.commandstatus() != pb::CS_SUCCEEDED) {
-            *error = QStringLiteral("the demo vehicle refused %1: %2")
+            *error = QStringLiteral("the demo vehicle refused %1: %2")  // i18n: not text (a start-up failure for the terminal)
                          .arg(QString::fromStdString(command.code()), QString::fromStdString(result.errormessage()));
             return false;
         }

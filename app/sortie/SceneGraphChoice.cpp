@@ -44,7 +44,7 @@ bool hasGpuDevice()
 
 bool drawnByTheCpu(const QString &renderer)
 {
-    for (const char *software : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer"})
+    for (const char *software : {"llvmpipe", "softpipe", "swrast", "Software Rasterizer"})  // i18n: not text (renderer names)
         if (renderer.contains(QLatin1String(software), Qt::CaseInsensitive))
             return true;
     return false;

@@ -1,5 +1,6 @@
 #include "DemFolderSource.h"
 
+#include <QCoreApplication>
 #include <QDir>
 
 namespace sortie::raster {
@@ -13,7 +14,7 @@ DemFolderSource::~DemFolderSource() = default;
 
 QString DemFolderSource::name() const
 {
-    return QStringLiteral("DEM folder (%1)").arg(QDir::toNativeSeparators(m_folder));
+    return QCoreApplication::translate("DemFolderSource", "DEM folder (%1)").arg(QDir::toNativeSeparators(m_folder));
 }
 
 QStringList DemFolderSource::problems() const

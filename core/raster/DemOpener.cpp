@@ -6,6 +6,7 @@
 #include "HgtTileSource.h"
 #include "RasterLog.h"
 
+#include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
 
@@ -69,7 +70,7 @@ std::unique_ptr<terrain::ElevationSource> openDem(const QString &path, QString *
         return openFolder(path, error);
     if (!info.exists()) {
         if (error)
-            *error = QStringLiteral("%1: no such file or folder").arg(path);
+            *error = QCoreApplication::translate("DemOpener", "%1: no such file or folder").arg(path);
         return nullptr;
     }
     if (info.suffix().compare(QLatin1String("hgt"), Qt::CaseInsensitive) == 0 && terrain::parseHgtName(info.fileName()))

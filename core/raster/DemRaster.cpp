@@ -3,6 +3,7 @@
 #include "Egm96Geoid.h"
 #include "RasterLog.h"
 
+#include <QCoreApplication>
 #include <cpl_error.h>
 #include <gdal_priv.h>
 #include <ogr_spatialref.h>
@@ -41,12 +42,12 @@ std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, 
     r->m_height = dataset->GetRasterYSize();
     double toWorld[6];
     if (dataset->GetGeoTransform(toWorld) != CE_None)
-        return fail(QStringLiteral("the raster is not georeferenced (no geotransform)"));
+        return fail(QCoreApplication::translate("DemRaster", "the raster is not georeferenced (no geotransform)"));
     if (!GDALInvGeoTransform(toWorld, r->m_toPixel))
-        return fail(QStringLiteral("the raster's geotransform cannot be inverted"));
+        return fail(QCoreApplication::translate("DemRaster", "the raster's geotransform cannot be inverted"));
     const OGRSpatialReference *srs = dataset->GetSpatialRef();
     if (!srs || srs->IsEmpty())
-        return fail(QStringLiteral("the raster states no coordinate reference system"));
+        return fail(QCoreApplication::translate("DemRaster", "the raster states no coordinate reference system"));
     OGRSpatialReference wgs84;
     wgs84.importFromEPSG(4326);
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);  // x = longitude, y = latitude
@@ -57,8 +58,8 @@ std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, 
     if (!(target.IsGeographic() && target.IsSameGeogCS(&wgs84))) {
         r->m_fromWgs84 = {OGRCreateCoordinateTransformation(&wgs84, &target), destroyTransform};
         if (!r->m_fromWgs84)
-            return fail(QStringLiteral("no transformation from WGS-84 into the raster's CRS: %1")
-                            .arg(lastGdalError(QStringLiteral("PROJ gave no reason"))));
+            return fail(QCoreApplication::translate("DemRaster", "no transformation from WGS-84 into the raster's CRS: %1")
+                            .arg(lastGdalError(QCoreApplication::translate("DemRaster", "PROJ gave no reason"))));
         std::unique_ptr<OGRCoordinateTransformation, void (*)(OGRCoordinateTransformation *)> back{
             OGRCreateCoordinateTransformation(&target, &wgs84), destroyTransform};
         double minX = toWorld[0], maxX = toWorld[0] + toWorld[1] * r->m_width + toWorld[2] * r->m_height;
@@ -68,7 +69,7 @@ std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, 
         if (minY > maxY)
             std::swap(minY, maxY);
         if (!back || !back->TransformBounds(minX, minY, maxX, maxY, &r->m_west, &r->m_south, &r->m_east, &r->m_north, 21))
-            return fail(QStringLiteral("the raster's extent cannot be expressed in WGS-84 degrees"));
+            return fail(QCoreApplication::translate("DemRaster", "the raster's extent cannot be expressed in WGS-84 degrees"));
     } else {
         const double xs[2] = {toWorld[0], toWorld[0] + toWorld[1] * r->m_width + toWorld[2] * r->m_height};
         const double ys[2] = {toWorld[3], toWorld[3] + toWorld[4] * r->m_width + toWorld[5] * r->m_height};
@@ -85,7 +86,7 @@ std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, 
         QString geoidError;
         r->m_geoid = datum::Egm96Geoid::open(datum::Egm96Geoid::defaultGridPath(), &geoidError);
         if (!r->m_geoid)
-            return fail(QStringLiteral("its heights are ellipsoidal and converting them to AMSL needs the EGM96 geoid: %1").arg(geoidError));
+            return fail(QCoreApplication::translate("DemRaster", "its heights are ellipsoidal and converting them to AMSL needs the EGM96 geoid: %1").arg(geoidError));
         qCInfo(lcRaster).noquote() << path << "heights are" << r->m_datum.describe() << "- converted to AMSL through EGM96";
         break;
     }

@@ -1,5 +1,6 @@
 #include "GdalDataset.h"
 
+#include <QCoreApplication>
 #include <cpl_error.h>
 #include <gdal_priv.h>
 
@@ -30,16 +31,16 @@ GdalDatasetPtr openRaster(const QString &path, QString *error)
         return GdalDatasetPtr();
     };
     if (!QFileInfo::exists(path))
-        return fail(QStringLiteral("no such file"));
+        return fail(QCoreApplication::translate("GdalDataset", "no such file"));
     // GDAL reports its reasons through the error handler; keep them for the message instead of stderr.
     CPLErrorReset();
     CPLPushErrorHandler(CPLQuietErrorHandler);
     GdalDatasetPtr dataset(GDALDataset::Open(path.toUtf8().constData(), GDAL_OF_RASTER | GDAL_OF_READONLY));
     CPLPopErrorHandler();
     if (!dataset)
-        return fail(lastGdalError(QStringLiteral("GDAL knows no raster format for this file")));
+        return fail(lastGdalError(QCoreApplication::translate("GdalDataset", "GDAL knows no raster format for this file")));
     if (dataset->GetRasterCount() < 1)
-        return fail(QStringLiteral("the file has no raster band"));
+        return fail(QCoreApplication::translate("GdalDataset", "the file has no raster band"));
     return dataset;
 }
 

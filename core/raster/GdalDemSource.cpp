@@ -2,6 +2,7 @@
 
 #include "DemRaster.h"
 
+#include <QCoreApplication>
 #include <QDir>
 
 namespace sortie::raster {
@@ -25,7 +26,7 @@ std::unique_ptr<GdalDemSource> GdalDemSource::open(const QString &displayPath, c
 
 QString GdalDemSource::name() const
 {
-    return QStringLiteral("DEM (%1)").arg(QDir::toNativeSeparators(m_displayPath));
+    return QCoreApplication::translate("GdalDemSource", "DEM (%1)").arg(QDir::toNativeSeparators(m_displayPath));
 }
 
 ElevationSample GdalDemSource::sample(const terrain::GeoPoint &point)

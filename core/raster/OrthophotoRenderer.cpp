@@ -2,6 +2,7 @@
 
 #include "RasterLog.h"
 
+#include <QCoreApplication>
 #include <cpl_error.h>
 #include <cpl_string.h>
 #include <gdal_priv.h>
@@ -59,7 +60,7 @@ std::unique_ptr<OrthophotoRenderer> OrthophotoRenderer::open(const QString &path
     const OGRSpatialReference *srs = dataset->GetSpatialRef();
     double gt[6];
     if (!srs || srs->IsEmpty() || dataset->GetGeoTransform(gt) != CE_None)
-        return fail(QStringLiteral("the image is not georeferenced (no CRS or no geotransform)"));
+        return fail(QCoreApplication::translate("OrthophotoRenderer", "the image is not georeferenced (no CRS or no geotransform)"));
     std::unique_ptr<OrthophotoRenderer> r(new OrthophotoRenderer);
     r->m_path = path;
     const int count = dataset->GetRasterCount();
@@ -89,7 +90,7 @@ std::unique_ptr<OrthophotoRenderer> OrthophotoRenderer::open(const QString &path
     if (extentIn(*dataset, *srs, wgs84, box))
         r->m_west = box[0], r->m_south = box[1], r->m_east = box[2], r->m_north = box[3];
     else if (!r->m_bounded)
-        return fail(QStringLiteral("its extent cannot be placed on the map: %1").arg(lastGdalError(QStringLiteral("PROJ gave no reason"))));
+        return fail(QCoreApplication::translate("OrthophotoRenderer", "its extent cannot be placed on the map: %1").arg(lastGdalError(QCoreApplication::translate("OrthophotoRenderer", "PROJ gave no reason"))));
     qCInfo(lcRaster).noquote() << path << dataset->GetRasterXSize() << "x" << dataset->GetRasterYSize() << "pixels," << count
                                << "band(s)," << r->m_overviews << "overview(s)";
     r->m_dataset = std::move(dataset);
@@ -119,7 +120,7 @@ RgbaTile OrthophotoRenderer::render(int z, int x, int y, int size, QString *erro
     GdalDatasetPtr target(mem->Create("", size, size, bands, GDT_Byte, nullptr));
     if (!target) {
         if (error)
-            *error = lastGdalError(QStringLiteral("no memory for a tile"));
+            *error = lastGdalError(QCoreApplication::translate("OrthophotoRenderer", "no memory for a tile"));
         return tile;
     }
     const double span = 2 * kHalfWorld / double(1 << z);
@@ -146,7 +147,7 @@ RgbaTile OrthophotoRenderer::render(int z, int x, int y, int size, QString *erro
     GDALWarpAppOptionsFree(options);
     if (!done) {
         if (error)
-            *error = QStringLiteral("%1: tile %2/%3/%4: %5").arg(m_path).arg(z).arg(x).arg(y).arg(lastGdalError(QStringLiteral("the warp failed")));
+            *error = QCoreApplication::translate("OrthophotoRenderer", "%1: tile %2/%3/%4: %5").arg(m_path).arg(z).arg(x).arg(y).arg(lastGdalError(QCoreApplication::translate("OrthophotoRenderer", "the warp failed")));
         return tile;
     }
     std::vector<unsigned char> pixels(size_t(size) * size_t(size) * size_t(bands));
@@ -154,7 +155,7 @@ RgbaTile OrthophotoRenderer::render(int z, int x, int y, int size, QString *erro
     if (target->RasterIO(GF_Read, 0, 0, size, size, pixels.data(), size, size, GDT_Byte, bands, nullptr, bands, size_t(size) * bands, 1, nullptr)
         != CE_None) {
         if (error)
-            *error = lastGdalError(QStringLiteral("the warped tile cannot be read"));
+            *error = lastGdalError(QCoreApplication::translate("OrthophotoRenderer", "the warped tile cannot be read"));
         return tile;
     }
     toRgba(pixels, size, tile);

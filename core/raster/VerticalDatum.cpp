@@ -1,5 +1,6 @@
 #include "VerticalDatum.h"
 
+#include <QCoreApplication>
 #include <ogr_spatialref.h>
 
 namespace sortie::raster {
@@ -23,13 +24,13 @@ QString VerticalDatum::describe() const
 {
     switch (kind) {
     case Kind::Ellipsoidal:
-        return QStringLiteral("ellipsoidal (%1)").arg(name);
+        return QCoreApplication::translate("VerticalDatum", "ellipsoidal (%1)").arg(name);
     case Kind::Orthometric:
-        return QStringLiteral("orthometric (%1)").arg(name);
+        return QCoreApplication::translate("VerticalDatum", "orthometric (%1)").arg(name);
     case Kind::Unstated:
         break;
     }
-    return QStringLiteral("not stated");
+    return QCoreApplication::translate("VerticalDatum", "not stated");
 }
 
 } // namespace sortie::raster

@@ -1,6 +1,7 @@
 #include "Vehicle.h"
 
 #include "CommandLog.h"
+#include "LanguageChange.h"
 
 #include <cmath>
 #include <QCoreApplication>
@@ -27,6 +28,9 @@ Vehicle::Vehicle(VehicleLink *link, QObject *parent, size_t historyCapacity)
     m_notifyTimer.setSingleShot(true);
     connect(&m_notifyTimer, &QTimer::timeout, this, &Vehicle::emitNotify);
     connect(&m_staleTimer, &QTimer::timeout, this, &Vehicle::checkStale);
+    // The views format its numbers in the language's locale: after a change they read them again
+    // (a parked vehicle's values do not change, so nothing else would).
+    i18n::onLanguageChange(this, [this] { emit telemetryChanged(); });
     m_staleTimer.start(std::min(1000, m_staleAfter / 2));
     if (!link)
         return;

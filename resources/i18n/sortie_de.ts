@@ -297,6 +297,10 @@
         <source>file</source>
         <translation>Datei</translation>
     </message>
+    <message>
+        <source>server zone %1, edited here</source>
+        <translation>Serverzone %1, hier bearbeitet</translation>
+    </message>
 </context>
 <context>
     <name>AirspaceRule</name>
@@ -660,6 +664,51 @@
     </message>
 </context>
 <context>
+    <name>DemFolderSource</name>
+    <message>
+        <source>DEM folder (%1)</source>
+        <translation>DGM-Ordner (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>DemOpener</name>
+    <message>
+        <source>%1: no such file or folder</source>
+        <translation>%1: keine solche Datei und kein solcher Ordner</translation>
+    </message>
+</context>
+<context>
+    <name>DemRaster</name>
+    <message>
+        <source>the raster is not georeferenced (no geotransform)</source>
+        <translation>das Raster ist nicht georeferenziert (keine Geotransformation)</translation>
+    </message>
+    <message>
+        <source>the raster&apos;s geotransform cannot be inverted</source>
+        <translation>die Geotransformation des Rasters ist nicht umkehrbar</translation>
+    </message>
+    <message>
+        <source>the raster states no coordinate reference system</source>
+        <translation>das Raster nennt kein Koordinatenreferenzsystem</translation>
+    </message>
+    <message>
+        <source>no transformation from WGS-84 into the raster&apos;s CRS: %1</source>
+        <translation>keine Transformation von WGS-84 in das KBS des Rasters: %1</translation>
+    </message>
+    <message>
+        <source>PROJ gave no reason</source>
+        <translation>PROJ nannte keinen Grund</translation>
+    </message>
+    <message>
+        <source>the raster&apos;s extent cannot be expressed in WGS-84 degrees</source>
+        <translation>die Ausdehnung des Rasters lässt sich nicht in WGS-84-Grad angeben</translation>
+    </message>
+    <message>
+        <source>its heights are ellipsoidal and converting them to AMSL needs the EGM96 geoid: %1</source>
+        <translation>seine Höhen sind ellipsoidisch, und die Umrechnung in AMSL braucht das EGM96-Geoid: %1</translation>
+    </message>
+</context>
+<context>
     <name>Egm96Geoid</name>
     <message>
         <source>the EGM96 geoid grid %1 is missing (Debian: install proj-data): ellipsoidal heights cannot be converted to AMSL</source>
@@ -771,6 +820,28 @@
     <message>
         <source>Apply</source>
         <translation>Übernehmen</translation>
+    </message>
+</context>
+<context>
+    <name>GdalDataset</name>
+    <message>
+        <source>no such file</source>
+        <translation>keine solche Datei</translation>
+    </message>
+    <message>
+        <source>GDAL knows no raster format for this file</source>
+        <translation>GDAL kennt kein Rasterformat für diese Datei</translation>
+    </message>
+    <message>
+        <source>the file has no raster band</source>
+        <translation>die Datei hat kein Rasterband</translation>
+    </message>
+</context>
+<context>
+    <name>GdalDemSource</name>
+    <message>
+        <source>DEM (%1)</source>
+        <translation>DGM (%1)</translation>
     </message>
 </context>
 <context>
@@ -1933,6 +2004,37 @@
     <message>
         <source>Stop</source>
         <translation>Stopp</translation>
+    </message>
+</context>
+<context>
+    <name>OrthophotoRenderer</name>
+    <message>
+        <source>the image is not georeferenced (no CRS or no geotransform)</source>
+        <translation>das Bild ist nicht georeferenziert (kein KBS oder keine Geotransformation)</translation>
+    </message>
+    <message>
+        <source>its extent cannot be placed on the map: %1</source>
+        <translation>seine Ausdehnung lässt sich nicht auf der Karte platzieren: %1</translation>
+    </message>
+    <message>
+        <source>PROJ gave no reason</source>
+        <translation>PROJ nannte keinen Grund</translation>
+    </message>
+    <message>
+        <source>no memory for a tile</source>
+        <translation>kein Speicher für eine Kachel</translation>
+    </message>
+    <message>
+        <source>%1: tile %2/%3/%4: %5</source>
+        <translation>%1: Kachel %2/%3/%4: %5</translation>
+    </message>
+    <message>
+        <source>the warp failed</source>
+        <translation>die Entzerrung ist fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>the warped tile cannot be read</source>
+        <translation>die entzerrte Kachel kann nicht gelesen werden</translation>
     </message>
 </context>
 <context>
@@ -4019,6 +4121,21 @@ Ereignisse: %1
     <message>
         <source>return home</source>
         <translation>Rückkehr</translation>
+    </message>
+</context>
+<context>
+    <name>VerticalDatum</name>
+    <message>
+        <source>ellipsoidal (%1)</source>
+        <translation>ellipsoidisch (%1)</translation>
+    </message>
+    <message>
+        <source>orthometric (%1)</source>
+        <translation>orthometrisch (%1)</translation>
+    </message>
+    <message>
+        <source>not stated</source>
+        <translation>nicht angegeben</translation>
     </message>
 </context>
 <context>

@@ -297,6 +297,10 @@
         <source>file</source>
         <translation>archivo</translation>
     </message>
+    <message>
+        <source>server zone %1, edited here</source>
+        <translation>zona del servidor %1, editada aquí</translation>
+    </message>
 </context>
 <context>
     <name>AirspaceRule</name>
@@ -660,6 +664,51 @@
     </message>
 </context>
 <context>
+    <name>DemFolderSource</name>
+    <message>
+        <source>DEM folder (%1)</source>
+        <translation>carpeta de MDE (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>DemOpener</name>
+    <message>
+        <source>%1: no such file or folder</source>
+        <translation>%1: no existe ese archivo ni esa carpeta</translation>
+    </message>
+</context>
+<context>
+    <name>DemRaster</name>
+    <message>
+        <source>the raster is not georeferenced (no geotransform)</source>
+        <translation>el ráster no está georreferenciado (sin geotransformación)</translation>
+    </message>
+    <message>
+        <source>the raster&apos;s geotransform cannot be inverted</source>
+        <translation>la geotransformación del ráster no se puede invertir</translation>
+    </message>
+    <message>
+        <source>the raster states no coordinate reference system</source>
+        <translation>el ráster no indica ningún sistema de referencia de coordenadas</translation>
+    </message>
+    <message>
+        <source>no transformation from WGS-84 into the raster&apos;s CRS: %1</source>
+        <translation>no hay transformación de WGS-84 al SRC del ráster: %1</translation>
+    </message>
+    <message>
+        <source>PROJ gave no reason</source>
+        <translation>PROJ no dio ningún motivo</translation>
+    </message>
+    <message>
+        <source>the raster&apos;s extent cannot be expressed in WGS-84 degrees</source>
+        <translation>la extensión del ráster no se puede expresar en grados WGS-84</translation>
+    </message>
+    <message>
+        <source>its heights are ellipsoidal and converting them to AMSL needs the EGM96 geoid: %1</source>
+        <translation>sus alturas son elipsoidales y convertirlas a AMSL requiere el geoide EGM96: %1</translation>
+    </message>
+</context>
+<context>
     <name>Egm96Geoid</name>
     <message>
         <source>the EGM96 geoid grid %1 is missing (Debian: install proj-data): ellipsoidal heights cannot be converted to AMSL</source>
@@ -771,6 +820,28 @@
     <message>
         <source>Apply</source>
         <translation>Aplicar</translation>
+    </message>
+</context>
+<context>
+    <name>GdalDataset</name>
+    <message>
+        <source>no such file</source>
+        <translation>no existe ese archivo</translation>
+    </message>
+    <message>
+        <source>GDAL knows no raster format for this file</source>
+        <translation>GDAL no conoce ningún formato ráster para este archivo</translation>
+    </message>
+    <message>
+        <source>the file has no raster band</source>
+        <translation>el archivo no tiene ninguna banda ráster</translation>
+    </message>
+</context>
+<context>
+    <name>GdalDemSource</name>
+    <message>
+        <source>DEM (%1)</source>
+        <translation>MDE (%1)</translation>
     </message>
 </context>
 <context>
@@ -1933,6 +2004,37 @@
     <message>
         <source>Stop</source>
         <translation>Detener</translation>
+    </message>
+</context>
+<context>
+    <name>OrthophotoRenderer</name>
+    <message>
+        <source>the image is not georeferenced (no CRS or no geotransform)</source>
+        <translation>la imagen no está georreferenciada (sin SRC o sin geotransformación)</translation>
+    </message>
+    <message>
+        <source>its extent cannot be placed on the map: %1</source>
+        <translation>su extensión no se puede situar en el mapa: %1</translation>
+    </message>
+    <message>
+        <source>PROJ gave no reason</source>
+        <translation>PROJ no dio ningún motivo</translation>
+    </message>
+    <message>
+        <source>no memory for a tile</source>
+        <translation>no hay memoria para una tesela</translation>
+    </message>
+    <message>
+        <source>%1: tile %2/%3/%4: %5</source>
+        <translation>%1: tesela %2/%3/%4: %5</translation>
+    </message>
+    <message>
+        <source>the warp failed</source>
+        <translation>la reproyección falló</translation>
+    </message>
+    <message>
+        <source>the warped tile cannot be read</source>
+        <translation>la tesela reproyectada no se puede leer</translation>
     </message>
 </context>
 <context>
@@ -4019,6 +4121,21 @@ eventos:   %1
     <message>
         <source>return home</source>
         <translation>volver al origen</translation>
+    </message>
+</context>
+<context>
+    <name>VerticalDatum</name>
+    <message>
+        <source>ellipsoidal (%1)</source>
+        <translation>elipsoidal (%1)</translation>
+    </message>
+    <message>
+        <source>orthometric (%1)</source>
+        <translation>ortométrica (%1)</translation>
+    </message>
+    <message>
+        <source>not stated</source>
+        <translation>no indicada</translation>
     </message>
 </context>
 <context>

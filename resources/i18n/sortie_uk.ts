@@ -297,6 +297,10 @@
         <source>file</source>
         <translation>файл</translation>
     </message>
+    <message>
+        <source>server zone %1, edited here</source>
+        <translation>зона сервера %1, редагується тут</translation>
+    </message>
 </context>
 <context>
     <name>AirspaceRule</name>
@@ -661,6 +665,51 @@
     </message>
 </context>
 <context>
+    <name>DemFolderSource</name>
+    <message>
+        <source>DEM folder (%1)</source>
+        <translation>тека ЦМР (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>DemOpener</name>
+    <message>
+        <source>%1: no such file or folder</source>
+        <translation>%1: немає такого файлу чи теки</translation>
+    </message>
+</context>
+<context>
+    <name>DemRaster</name>
+    <message>
+        <source>the raster is not georeferenced (no geotransform)</source>
+        <translation>растр не прив’язаний до координат (немає геотрансформації)</translation>
+    </message>
+    <message>
+        <source>the raster&apos;s geotransform cannot be inverted</source>
+        <translation>геотрансформацію растра не можна обернути</translation>
+    </message>
+    <message>
+        <source>the raster states no coordinate reference system</source>
+        <translation>растр не вказує системи координат</translation>
+    </message>
+    <message>
+        <source>no transformation from WGS-84 into the raster&apos;s CRS: %1</source>
+        <translation>немає перетворення з WGS-84 у систему координат растра: %1</translation>
+    </message>
+    <message>
+        <source>PROJ gave no reason</source>
+        <translation>PROJ не вказав причини</translation>
+    </message>
+    <message>
+        <source>the raster&apos;s extent cannot be expressed in WGS-84 degrees</source>
+        <translation>охоплення растра не можна виразити в градусах WGS-84</translation>
+    </message>
+    <message>
+        <source>its heights are ellipsoidal and converting them to AMSL needs the EGM96 geoid: %1</source>
+        <translation>його висоти еліпсоїдальні, і для перерахунку в AMSL потрібен геоїд EGM96: %1</translation>
+    </message>
+</context>
+<context>
     <name>Egm96Geoid</name>
     <message>
         <source>the EGM96 geoid grid %1 is missing (Debian: install proj-data): ellipsoidal heights cannot be converted to AMSL</source>
@@ -772,6 +821,28 @@
     <message>
         <source>Apply</source>
         <translation>Застосувати</translation>
+    </message>
+</context>
+<context>
+    <name>GdalDataset</name>
+    <message>
+        <source>no such file</source>
+        <translation>немає такого файлу</translation>
+    </message>
+    <message>
+        <source>GDAL knows no raster format for this file</source>
+        <translation>GDAL не знає растрового формату для цього файлу</translation>
+    </message>
+    <message>
+        <source>the file has no raster band</source>
+        <translation>файл не має растрового каналу</translation>
+    </message>
+</context>
+<context>
+    <name>GdalDemSource</name>
+    <message>
+        <source>DEM (%1)</source>
+        <translation>ЦМР (%1)</translation>
     </message>
 </context>
 <context>
@@ -1940,6 +2011,37 @@
     <message>
         <source>Stop</source>
         <translation>Зупинити</translation>
+    </message>
+</context>
+<context>
+    <name>OrthophotoRenderer</name>
+    <message>
+        <source>the image is not georeferenced (no CRS or no geotransform)</source>
+        <translation>зображення не прив’язане до координат (немає системи координат або геотрансформації)</translation>
+    </message>
+    <message>
+        <source>its extent cannot be placed on the map: %1</source>
+        <translation>його охоплення не можна розмістити на карті: %1</translation>
+    </message>
+    <message>
+        <source>PROJ gave no reason</source>
+        <translation>PROJ не вказав причини</translation>
+    </message>
+    <message>
+        <source>no memory for a tile</source>
+        <translation>немає пам’яті для тайла</translation>
+    </message>
+    <message>
+        <source>%1: tile %2/%3/%4: %5</source>
+        <translation>%1: тайл %2/%3/%4: %5</translation>
+    </message>
+    <message>
+        <source>the warp failed</source>
+        <translation>перепроєкціювання не вдалося</translation>
+    </message>
+    <message>
+        <source>the warped tile cannot be read</source>
+        <translation>перепроєкційований тайл не можна прочитати</translation>
     </message>
 </context>
 <context>
@@ -4033,6 +4135,21 @@ events:   %1
     <message>
         <source>return home</source>
         <translation>повернення додому</translation>
+    </message>
+</context>
+<context>
+    <name>VerticalDatum</name>
+    <message>
+        <source>ellipsoidal (%1)</source>
+        <translation>еліпсоїдальні (%1)</translation>
+    </message>
+    <message>
+        <source>orthometric (%1)</source>
+        <translation>ортометричні (%1)</translation>
+    </message>
+    <message>
+        <source>not stated</source>
+        <translation>не вказано</translation>
     </message>
 </context>
 <context>

@@ -115,7 +115,7 @@ mission::Result<ZoneFile> readCustomZones(const QString &path)
         Zone &z = out.zones[size_t(i)];
         z.serverId = id.toInt();
         z.serverVersion = properties.value(QStringLiteral("serverVersion")).toInt();
-        z.origin = QStringLiteral("server zone %1, edited here").arg(*z.serverId);
+        z.origin = QCoreApplication::translate("Airspace", "server zone %1, edited here").arg(*z.serverId);
     }
     return out;
 }

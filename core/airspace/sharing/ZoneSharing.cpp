@@ -5,6 +5,7 @@
 #include "ServerZones.h"
 #include "ZoneEditor.h"
 
+#include <QCoreApplication>
 #include <QLoggingCategory>
 
 #include <algorithm>
@@ -102,7 +103,7 @@ bool ZoneSharing::editCopy(int row)
         return refuse(tr("Only the server's custom zones can be edited here; aerodrome zones are the server's own."));
     const Zone &original = m_store->zoneAt(row);
     Zone copy = original;
-    copy.origin = QStringLiteral("server zone %1, edited here").arg(*original.serverId);
+    copy.origin = QCoreApplication::translate("Airspace", "server zone %1, edited here").arg(*original.serverId);
     copy.active = true;  // the operator's switch on the server's zone stays with it
     const QString name = copy.name;
     const int drawn = m_store->editor()->adopt(std::move(copy), tr("Edit server zone '%1'").arg(name));
