@@ -29,8 +29,11 @@ Vehicle::Vehicle(VehicleLink *link, QObject *parent, size_t historyCapacity)
     connect(&m_notifyTimer, &QTimer::timeout, this, &Vehicle::emitNotify);
     connect(&m_staleTimer, &QTimer::timeout, this, &Vehicle::checkStale);
     // The views format its numbers in the language's locale: after a change they read them again
-    // (a parked vehicle's values do not change, so nothing else would).
-    i18n::onLanguageChange(this, [this] { emit telemetryChanged(); });
+    // (a parked vehicle's values do not change, so nothing else would). Queued: the locale is set
+    // after the translators, whose change is announced at once.
+    i18n::onLanguageChange(this, [this] {
+        QMetaObject::invokeMethod(this, [this] { emit telemetryChanged(); }, Qt::QueuedConnection);
+    });
     m_staleTimer.start(std::min(1000, m_staleAfter / 2));
     if (!link)
         return;
