@@ -34,17 +34,19 @@ ColumnLayout {
         }
     }
 
-    RowLayout {
+    // A Flow, not a row: in a longer language the fields go on to a second line rather than past the panel.
+    Flow {
         Layout.fillWidth: true
-        Label { text: qsTr("%n selected:", "", table.selected.length) }
-        TextField { id: bulkAltitude; objectName: "bulkAltitude"; placeholderText: qsTr("alt m"); Layout.preferredWidth: 60 }
+        spacing: 5
+        Label { text: qsTr("%n selected:", "", table.selected.length); height: bulkAltitude.height; verticalAlignment: Text.AlignVCenter }
+        TextField { id: bulkAltitude; objectName: "bulkAltitude"; placeholderText: qsTr("alt m"); width: 60 }
         Button {
             objectName: "bulkAltitudeButton"
             text: qsTr("Set")
             enabled: table.selected.length > 0 && bulkAltitude.text.length > 0
             onClicked: table.doc.editor.setAltitude(table.selected, Number(bulkAltitude.text))
         }
-        TextField { id: bulkSpeed; placeholderText: qsTr("m/s"); Layout.preferredWidth: 50 }
+        TextField { id: bulkSpeed; placeholderText: qsTr("m/s"); width: 50 }
         Button {
             text: qsTr("Set")
             enabled: table.selected.length > 0 && bulkSpeed.text.length > 0
@@ -53,7 +55,7 @@ ColumnLayout {
         ComboBox {
             model: ["AGL", "AMSL"] // i18n: not text (aviation abbreviations, the same in every language)
             enabled: table.selected.length > 0
-            Layout.preferredWidth: 76
+            width: 76
             onActivated: table.doc.editor.setAltitudeType(table.selected, currentIndex === 0 ? MissionEnums.Agl : MissionEnums.Amsl)
             ToolTip.visible: hovered
             ToolTip.text: qsTr("Altitude above ground (AGL) or above mean sea level (AMSL)")
