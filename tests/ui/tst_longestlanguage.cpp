@@ -5,9 +5,9 @@
 // included, is lengthened. When the real German has landed it is judged too. The renderings are
 // saved beside the test's binary (longest/).
 // What VisualCheck does not judge, and the pseudo renderings show: a text cut at the side by a
-// clipping panel (the mission panel's Upload button and AGL box run past its right edge), and a
-// frame's content running past the frame's border (the login page's title and "remember" box).
-// Those layouts do not grow with their words yet.
+// clipping panel, and a frame's content running past the frame's border (in the pseudo-language,
+// the login page's title and "remember" box). The mission panel's bulk-edit fields flow on to a
+// second line, so its Upload button stays inside in German; the login frame does not grow yet.
 #include "ClientWindow.h"
 #include "QuickScene.h"
 #include "VehicleLayer.h"
