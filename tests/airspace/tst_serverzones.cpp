@@ -11,6 +11,7 @@
 #include "Messages.pb.h"
 #include "ServerZones.h"
 #include "SimWorld.h"
+#include "ZoneOperator.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -20,38 +21,12 @@
 
 using namespace sortie;
 using namespace sortie::airspace;
+using namespace sortie::airspace::test;
 namespace pb = com::ugcs::ucs::proto;
 
 namespace {
 
-constexpr int kWait = 15000;
 constexpr double kRad = std::numbers::pi / 180.0;
-const mission::GeoBox kDemoBox{56.90, 23.90, 57.01, 24.12, false};
-
-// One operator: a session, its client and its view of the server's zones.
-struct Operator
-{
-    hci::HciSession session;
-    hci::HciClient client{&session};
-    ServerZones zones{&client};
-
-    Operator(quint16 port, const QString &login, const QString &password, const mission::GeoBox &box = kDemoBox)
-    {
-        zones.setViewBox(box);
-        QSignalSpy answered(&zones, &ServerZones::answered);
-        session.open(QStringLiteral("127.0.0.1"), port, login, password);
-        if (!answered.wait(kWait))
-            qFatal("%s: no zones from the simulator", qPrintable(login));
-    }
-
-    const Zone *find(const QString &name) const
-    {
-        for (const Zone &z : zones.zones())
-            if (z.name == name)
-                return &z;
-        return nullptr;
-    }
-};
 
 // Waits for a save or delete to finish; the reply is gone afterwards, so its outcome is copied.
 struct Outcome
@@ -130,10 +105,9 @@ class TestServerZones : public QObject
 {
     Q_OBJECT
 
-    std::unique_ptr<sim::SimWorld> m_world;
-    std::unique_ptr<sim::HciServer> m_server;
+    std::unique_ptr<TwoOperatorServer> m_sim;
 
-    quint16 port() const { return m_server->port(); }
+    quint16 port() const { return m_sim->port(); }
 
     pb::ProcessedRoute processed(Operator &op, const pb::Route &route)
     {
@@ -144,20 +118,8 @@ class TestServerZones : public QObject
     }
 
 private slots:
-    void init()
-    {
-        sim::SimWorld::Config config;
-        config.users = {{0, QStringLiteral("admin"), QStringLiteral("admin"), true},
-                        {0, QStringLiteral("bob"), QStringLiteral("s3cret-bob"), false}};
-        m_world = std::make_unique<sim::SimWorld>(config);
-        m_server = std::make_unique<sim::HciServer>(*m_world);
-        QVERIFY(m_server->listen(QHostAddress::LocalHost, 0));
-    }
-    void cleanup()
-    {
-        m_server.reset();
-        m_world.reset();
-    }
+    void init() { m_sim = std::make_unique<TwoOperatorServer>(); }
+    void cleanup() { m_sim.reset(); }
 
     void bothTypesForTheViewBox()
     {
@@ -224,13 +186,13 @@ private slots:
         QVERIFY2(saved.ok, qPrintable(saved.error));
         QCOMPARE(*saved.zone->serverId, id);
         QVERIFY(saved.zone->serverVersion > created.zone->serverVersion);
-        QVERIFY(!m_world->locks().holder(QStringLiteral("NoFlightZone"), id));  // released after the write
+        QVERIFY(!m_sim->world->locks().holder(QStringLiteral("NoFlightZone"), id));  // released after the write
         QTRY_COMPARE_WITH_TIMEOUT(bob.find(QStringLiteral("Survey hold"))->ceiling,
                                   std::optional(HeightLimit{120, HeightReference::AboveTerrain}), kWait);
 
         const Outcome removed = await(admin.zones.remove(*saved.zone));
         QVERIFY2(removed.ok, qPrintable(removed.error));
-        QVERIFY(!m_world->store().find(QStringLiteral("NoFlightZone"), id));
+        QVERIFY(!m_sim->world->store().find(QStringLiteral("NoFlightZone"), id));
         QTRY_VERIFY_WITH_TIMEOUT(!bob.find(QStringLiteral("Survey hold")), kWait);
         QTRY_VERIFY_WITH_TIMEOUT(!admin.find(QStringLiteral("Survey hold")), kWait);
     }
@@ -255,7 +217,7 @@ private slots:
         const Outcome notDeleted = await(admin.zones.remove(*created.zone));
         QVERIFY(!notDeleted.ok);
         QVERIFY2(notDeleted.error.contains(QStringLiteral("was not deleted: it is locked")), qPrintable(notDeleted.error));
-        const auto *stored = m_world->store().find(QStringLiteral("NoFlightZone"), id);
+        const auto *stored = m_sim->world->store().find(QStringLiteral("NoFlightZone"), id);
         QVERIFY(stored);
         QCOMPARE(stored->noflightzone().name(), std::string("Survey hold"));  // nothing changed
 
@@ -263,7 +225,7 @@ private slots:
         QVERIFY(release->isOk());
         const Outcome saved = await(admin.zones.save(edited));
         QVERIFY2(saved.ok, qPrintable(saved.error));
-        QCOMPARE(m_world->store().find(QStringLiteral("NoFlightZone"), id)->noflightzone().name(), std::string("Survey hold, wider"));
+        QCOMPARE(m_sim->world->store().find(QStringLiteral("NoFlightZone"), id)->noflightzone().name(), std::string("Survey hold, wider"));
     }
 
     // A zone the server holds but Sortie cannot check is left out and named; the rest stay.
@@ -280,7 +242,7 @@ private slots:
             p->set_longitude(24.07 * kRad);
         }
         QSignalSpy changed(&admin.zones, &ServerZones::zonesChanged);
-        const int id = hci::objectId(m_world->store().save(QStringLiteral("NoFlightZone"), w, 0).object->noflightzone());
+        const int id = hci::objectId(m_sim->world->store().save(QStringLiteral("NoFlightZone"), w, 0).object->noflightzone());
         QVERIFY(changed.wait(kWait));  // the store's change went out as EET_NFZ_UPDATED
         QCOMPARE(admin.zones.zones().size(), size_t(3));
         QCOMPARE(admin.zones.problems(),
@@ -354,7 +316,7 @@ private slots:
     {
         Operator admin(port(), QStringLiteral("admin"), QStringLiteral("admin"));
         const pb::DomainObjectWrapper *demo = nullptr;
-        for (const auto *w : m_world->store().list(QStringLiteral("Route")))
+        for (const auto *w : m_sim->world->store().list(QStringLiteral("Route")))
             demo = w;
         QVERIFY(demo);
         // The store's object is replaced by the save below: keep its id, not the pointer.

@@ -14,6 +14,7 @@
 #include "ServerZones.h"
 #include "SimWorld.h"
 #include "ZoneEditor.h"
+#include "ZoneOperator.h"
 #include "ZoneSharing.h"
 
 #include <QSettings>
@@ -25,36 +26,9 @@
 
 using namespace sortie;
 using namespace sortie::airspace;
+using namespace sortie::airspace::test;
 
 namespace {
-
-constexpr int kWait = 15000;
-const mission::GeoBox kDemoBox{56.90, 23.90, 57.01, 24.12, false};
-
-// One operator: a session, the server's zones for the demo area, and (for the one at the map) the
-// client's zone store fed by them, with the sharing between the two.
-struct Operator
-{
-    hci::HciSession session;
-    hci::HciClient client{&session};
-    ServerZones server{&client};
-
-    Operator(quint16 port, const QString &login, const QString &password)
-    {
-        server.setViewBox(kDemoBox);
-        QSignalSpy answered(&server, &ServerZones::answered);
-        session.open(QStringLiteral("127.0.0.1"), port, login, password);
-        if (!answered.wait(kWait))
-            qFatal("%s: no zones from the simulator", qPrintable(login));
-    }
-    const Zone *find(const QString &name) const
-    {
-        for (const Zone &z : server.zones())
-            if (z.name == name)
-                return &z;
-        return nullptr;
-    }
-};
 
 struct Desk
 {
@@ -102,38 +76,25 @@ class TestZoneSharing : public QObject
 {
     Q_OBJECT
 
-    std::unique_ptr<sim::SimWorld> m_world;
-    std::unique_ptr<sim::HciServer> m_server;
+    std::unique_ptr<TwoOperatorServer> m_sim;
     QTemporaryDir m_dir;
 
-    quint16 port() const { return m_server->port(); }
+    quint16 port() const { return m_sim->port(); }
 
 private slots:
-    void init()
-    {
-        sim::SimWorld::Config config;
-        config.users = {{0, QStringLiteral("admin"), QStringLiteral("admin"), true},
-                        {0, QStringLiteral("bob"), QStringLiteral("s3cret-bob"), false}};
-        m_world = std::make_unique<sim::SimWorld>(config);
-        m_server = std::make_unique<sim::HciServer>(*m_world);
-        QVERIFY(m_server->listen(QHostAddress::LocalHost, 0));
-    }
-    void cleanup()
-    {
-        m_server.reset();
-        m_world.reset();
-    }
+    void init() { m_sim = std::make_unique<TwoOperatorServer>(); }
+    void cleanup() { m_sim.reset(); }
 
     void aDrawnZoneSentIsListedOnceAsTheServers()
     {
         Operator admin(port(), QStringLiteral("admin"), QStringLiteral("admin"));
-        Desk desk(m_dir.path(), admin.server);
+        Desk desk(m_dir.path(), admin.zones);
         const int zonesBefore = desk.store.count();
         QCOMPARE(desk.store.editor()->addPolygon(pierCorners()), 0);
         QVERIFY(desk.store.editor()->setLimits(0, QVariant(), 60, QStringLiteral("AGL")));
         QVERIFY(desk.sharing.canSend());
         QVERIFY(!desk.sharing.sendUpdates());
-        QSignalSpy answered(&admin.server, &ServerZones::answered);
+        QSignalSpy answered(&admin.zones, &ServerZones::answered);
         QVERIFY(desk.sharing.send(0));
         QVERIFY(desk.sharing.isBusy());
         QVERIFY(!desk.sharing.send(0));  // one at a time
@@ -162,7 +123,7 @@ private slots:
     {
         Operator admin(port(), QStringLiteral("admin"), QStringLiteral("admin"));
         Operator bob(port(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
-        Desk desk(m_dir.path(), admin.server);
+        Desk desk(m_dir.path(), admin.zones);
         const int zonesBefore = desk.store.count();
         const QList<int> crane = desk.rowsOf(QStringLiteral("Crane works"));
         QCOMPARE(crane.size(), 1);
@@ -180,7 +141,7 @@ private slots:
         QVERIFY(desk.sharing.sendUpdates());
 
         QVERIFY(desk.store.editor()->setLimits(0, QVariant(), 80, QStringLiteral("AGL")));
-        QSignalSpy bobSaw(&bob.server, &ServerZones::answered);
+        QSignalSpy bobSaw(&bob.zones, &ServerZones::answered);
         QVERIFY(desk.sharing.send(0));
         QVERIFY2(desk.finish(), qPrintable(desk.sharing.status()));
         QVERIFY(desk.store.customZones().empty());
@@ -197,14 +158,14 @@ private slots:
             const Zone *z = bob.find(QStringLiteral("Crane works"));
             return z && z->ceiling == std::optional(HeightLimit{80, terrain::HeightReference::AboveTerrain});
         }, kWait));
-        QVERIFY(!m_world->locks().holder(QStringLiteral("NoFlightZone"), *original.serverId));
+        QVERIFY(!m_sim->world->locks().holder(QStringLiteral("NoFlightZone"), *original.serverId));
     }
 
     void aCopyOfAReplacedVersionIsNotSent()
     {
         Operator admin(port(), QStringLiteral("admin"), QStringLiteral("admin"));
         Operator bob(port(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
-        Desk desk(m_dir.path(), admin.server);
+        Desk desk(m_dir.path(), admin.zones);
         const int crane = desk.rowsOf(QStringLiteral("Crane works")).value(0, -1);
         QVERIFY(crane >= 0);
         const Zone original = desk.store.zoneAt(crane);
@@ -214,7 +175,7 @@ private slots:
         Zone bobs = *bob.find(QStringLiteral("Crane works"));
         bobs.ceiling = HeightLimit{45, terrain::HeightReference::AboveTerrain};
         bool bobDone = false;
-        ServerZoneReply *reply = bob.server.save(bobs);
+        ServerZoneReply *reply = bob.zones.save(bobs);
         connect(reply, &ServerZoneReply::finished, this, [&] { bobDone = reply->isOk(); });
         QVERIFY(QTest::qWaitFor([&] { return bobDone; }, kWait));
         QVERIFY(QTest::qWaitFor([&] {
@@ -236,7 +197,7 @@ private slots:
     void aCustomZoneIsDeletedAndAnAerodromeIsNot()
     {
         Operator admin(port(), QStringLiteral("admin"), QStringLiteral("admin"));
-        Desk desk(m_dir.path(), admin.server);
+        Desk desk(m_dir.path(), admin.zones);
         const int rix = desk.rowsOf(QStringLiteral("RIX CTR")).value(0, -1);
         QVERIFY(rix >= 0);
         desk.store.setSelectedZone(rix);
@@ -257,7 +218,7 @@ private slots:
     void theChosenZoneStaysChosenWhileRowsMove()
     {
         Operator admin(port(), QStringLiteral("admin"), QStringLiteral("admin"));
-        Desk desk(m_dir.path(), admin.server);
+        Desk desk(m_dir.path(), admin.zones);
         QFile file(m_dir.filePath(QStringLiteral("pier.geojson")));
         QVERIFY(file.open(QIODevice::WriteOnly));
         file.write(R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{"name":"Pier"},
@@ -274,7 +235,7 @@ private slots:
         more.source = ZoneSource::ServerCustom;
         more.shape = ZoneCircle{{56.97, 24.05}, 40};
         bool done = false;
-        ServerZoneReply *reply = admin.server.save(more);
+        ServerZoneReply *reply = admin.zones.save(more);
         connect(reply, &ServerZoneReply::finished, this, [&] { done = reply->isOk(); });
         QVERIFY(QTest::qWaitFor([&] { return done && !desk.rowsOf(QStringLiteral("Mast")).isEmpty(); }, kWait));
         QCOMPARE(desk.rowsOf(QStringLiteral("Pier")), QList<int>{pier + 1});
@@ -288,13 +249,13 @@ private slots:
         const QString drawn = m_dir.filePath(QStringLiteral("drawn.geojson"));
         std::optional<int> id;
         {
-            Desk desk(m_dir.path(), admin.server, drawn);
+            Desk desk(m_dir.path(), admin.zones, drawn);
             const int crane = desk.rowsOf(QStringLiteral("Crane works")).value(0, -1);
             QVERIFY(desk.sharing.editCopy(crane));
             id = desk.store.customZones()[0].serverId;
             QVERIFY(id);
         }
-        Desk again(m_dir.path(), admin.server, drawn);
+        Desk again(m_dir.path(), admin.zones, drawn);
         QCOMPARE(again.store.customZones().size(), size_t(1));
         QCOMPARE(again.store.customZones()[0].serverId, id);
         QCOMPARE(again.store.rowOfServerZone(*id), -1);  // still drawn once
