@@ -24,14 +24,14 @@ void destroyTransform(OGRCoordinateTransformation *t)
 
 DemRaster::~DemRaster() = default;
 
-std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, int maxChunks, bool logDatum, const FolderListing *siblings)
+std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, int maxChunks, bool logDatum)
 {
     auto fail = [&](const QString &why) {
         if (error)
             *error = QStringLiteral("%1: %2").arg(path, why);
         return nullptr;
     };
-    GdalDatasetPtr dataset = openRaster(path, error, siblings);
+    GdalDatasetPtr dataset = openRaster(path, error);
     if (!dataset)
         return nullptr;
     std::unique_ptr<DemRaster> r(new DemRaster);

@@ -36,10 +36,8 @@ public:
     static constexpr int kDefaultMaxChunks = 64;  // 16 MiB of float heights per raster
 
     // Null with an error naming the file (and GDAL's or PROJ's reason) when it cannot be used. The
-    // vertical datum is logged unless `logDatum` is false (a file opened again after being closed);
-    // `siblings`: the listing of its folder, when the caller has it (openRaster).
-    static std::unique_ptr<DemRaster> open(const QString &path, QString *error, int maxChunks = kDefaultMaxChunks, bool logDatum = true,
-                                           const FolderListing *siblings = nullptr);
+    // vertical datum is logged unless `logDatum` is false (a file opened again after being closed).
+    static std::unique_ptr<DemRaster> open(const QString &path, QString *error, int maxChunks = kDefaultMaxChunks, bool logDatum = true);
     ~DemRaster();
 
     QString path() const { return m_path; }

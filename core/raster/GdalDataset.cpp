@@ -1,10 +1,11 @@
 #include "GdalDataset.h"
 
 #include <QCoreApplication>
+#include <cpl_conv.h>
 #include <cpl_error.h>
 #include <gdal_priv.h>
 
-#include <QFileInfo>
+#include <cpl_vsi.h>
 
 #include <mutex>
 
@@ -21,20 +22,23 @@ QString lastGdalError(const QString &fallback)
     return message && *message ? QString::fromUtf8(message) : fallback;
 }
 
-FolderListing::FolderListing(QString folder, const QStringList &names) : m_folder(std::move(folder))
-{
-    for (const QString &name : names)
-        m_names = CSLAddString(m_names, name.toUtf8().constData());
-    if (!m_names)  // an empty folder is still a listing (null would make GDAL list it)
-        m_names = static_cast<char **>(CPLCalloc(1, sizeof(char *)));
+namespace {
+const char kNoListing[] = "GDAL_DISABLE_READDIR_ON_OPEN";
 }
 
-FolderListing::~FolderListing()
+FolderNotListed::FolderNotListed()
 {
-    CSLDestroy(m_names);
+    if (const char *previous = CPLGetThreadLocalConfigOption(kNoListing, nullptr))
+        m_previous = previous, m_hadPrevious = true;
+    CPLSetThreadLocalConfigOption(kNoListing, "TRUE");
 }
 
-GdalDatasetPtr openRaster(const QString &path, QString *error, const FolderListing *siblings)
+FolderNotListed::~FolderNotListed()
+{
+    CPLSetThreadLocalConfigOption(kNoListing, m_hadPrevious ? m_previous.constData() : nullptr);
+}
+
+GdalDatasetPtr openRaster(const QString &path, QString *error)
 {
     static std::once_flag registered;
     std::call_once(registered, [] { GDALAllRegister(); });
@@ -43,13 +47,13 @@ GdalDatasetPtr openRaster(const QString &path, QString *error, const FolderListi
             *error = QStringLiteral("%1: %2").arg(path, why);
         return GdalDatasetPtr();
     };
-    if (!QFileInfo::exists(path))
+    VSIStatBufL stat;  // through GDAL's file system: /vsimem/, /vsizip/... paths exist too
+    if (VSIStatExL(path.toUtf8().constData(), &stat, VSI_STAT_EXISTS_FLAG) != 0)
         return fail(QCoreApplication::translate("GdalDataset", "no such file"));
     // GDAL reports its reasons through the error handler; keep them for the message instead of stderr.
     CPLErrorReset();
     CPLPushErrorHandler(CPLQuietErrorHandler);
-    GdalDatasetPtr dataset(GDALDataset::Open(path.toUtf8().constData(), GDAL_OF_RASTER | GDAL_OF_READONLY, nullptr, nullptr,
-                                             siblings ? siblings->names() : nullptr));
+    GdalDatasetPtr dataset(GDALDataset::Open(path.toUtf8().constData(), GDAL_OF_RASTER | GDAL_OF_READONLY));
     CPLPopErrorHandler();
     if (!dataset)
         return fail(lastGdalError(QCoreApplication::translate("GdalDataset", "GDAL knows no raster format for this file")));

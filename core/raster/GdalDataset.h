@@ -1,7 +1,7 @@
 #pragma once
 
 #include <QString>
-#include <QStringList>
+#include <QByteArray>
 
 #include <memory>
 
@@ -15,29 +15,27 @@ struct GdalDatasetCloser
 };
 using GdalDatasetPtr = std::unique_ptr<GDALDataset, GdalDatasetCloser>;
 
-// A folder's file names, as GDAL takes them when opening one of its files: given, GDAL does not list
-// the folder again for each file it opens (for .aux.xml, .ovr, .hdr side files), which made opening
-// each of a thousand tiles read a thousand names.
-class FolderListing
+// While one lives, GDAL on this thread looks for a raster's side files (.aux.xml, .ovr, .prj, world
+// files) one by one instead of listing its folder: reading a raster's georeferencing listed the whole
+// folder (GDAL's GeoTIFF driver ignores a listing given to it), so opening each of a folder's thousand
+// tiles read a thousand names. What GDAL finds is the same; only the way it looks changes.
+class FolderNotListed
 {
 public:
-    FolderListing(QString folder, const QStringList &names);
-    ~FolderListing();
-    FolderListing(const FolderListing &) = delete;
-    FolderListing &operator=(const FolderListing &) = delete;
-    const QString &folder() const { return m_folder; }
-    char **names() const { return m_names; }
+    FolderNotListed();
+    ~FolderNotListed();
+    FolderNotListed(const FolderNotListed &) = delete;
+    FolderNotListed &operator=(const FolderNotListed &) = delete;
 
 private:
-    QString m_folder;
-    char **m_names = nullptr;
+    QByteArray m_previous;
+    bool m_hadPrevious = false;
 };
 
 // Opens `path` read-only as a GDAL raster (GDAL's drivers registered on first use). Null, with an
 // error naming the file and GDAL's own reason, when GDAL cannot read it or it has no raster band.
 // A dataset belongs to one thread at a time: GDAL datasets are not safe to share.
-// `siblings`, when given, is the listing of the folder `path` is in.
-GdalDatasetPtr openRaster(const QString &path, QString *error, const FolderListing *siblings = nullptr);
+GdalDatasetPtr openRaster(const QString &path, QString *error);
 
 // The message of GDAL's last error on this thread, or `fallback` when it gave none.
 QString lastGdalError(const QString &fallback);

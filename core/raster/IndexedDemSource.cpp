@@ -6,7 +6,6 @@
 
 #include <QCoreApplication>
 #include <QDir>
-#include <QFileInfo>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <boost/iterator/function_output_iterator.hpp>
@@ -69,13 +68,13 @@ private:
 };
 
 // The file's WGS-84 box from its header; the dataset is closed again at once.
-std::optional<GeoBox> readFootprint(const QString &path, const FolderListing *siblings, ToWgs84 &toWgs84, QString *error)
+std::optional<GeoBox> readFootprint(const QString &path, ToWgs84 &toWgs84, QString *error)
 {
     auto fail = [&](const QString &why) {
         *error = QStringLiteral("%1: %2").arg(path, why);
         return std::nullopt;
     };
-    const GdalDatasetPtr dataset = openRaster(path, error, siblings);
+    const GdalDatasetPtr dataset = openRaster(path, error);
     if (!dataset)
         return std::nullopt;
     double toWorld[6];
@@ -131,15 +130,12 @@ std::unique_ptr<IndexedDemSource> IndexedDemSource::open(const QString &displayP
     std::unique_ptr<IndexedDemSource> source(new IndexedDemSource);
     source->m_displayPath = displayPath;
     source->m_maxOpen = std::max(1, maxOpen);
-    if (!files.isEmpty()) {
-        const QString folder = QFileInfo(files.first()).absolutePath();
-        source->m_listing = std::make_unique<FolderListing>(folder, QDir(folder).entryList(QDir::Files | QDir::Hidden | QDir::System));
-    }
+    const FolderNotListed notListed;
     ToWgs84 toWgs84;
     QString firstError;
     for (const QString &path : files) {
         QString why;
-        if (const std::optional<GeoBox> box = readFootprint(path, source->siblingsOf(path), toWgs84, &why)) {
+        if (const std::optional<GeoBox> box = readFootprint(path, toWgs84, &why)) {
             source->m_entries.push_back({path, *box});
         } else {
             source->addProblem(why);
@@ -154,11 +150,6 @@ std::unique_ptr<IndexedDemSource> IndexedDemSource::open(const QString &displayP
     }
     source->buildTree();
     return source;
-}
-
-const FolderListing *IndexedDemSource::siblingsOf(const QString &path) const
-{
-    return m_listing && QFileInfo(path).absolutePath() == m_listing->folder() ? m_listing.get() : nullptr;
 }
 
 void IndexedDemSource::buildTree()
@@ -194,7 +185,8 @@ DemRaster *IndexedDemSource::raster(int entry)
     if (e.broken)
         return nullptr;
     QString why;
-    std::unique_ptr<DemRaster> opened = DemRaster::open(e.path, &why, DemRaster::kDefaultMaxChunks, !e.openedBefore, siblingsOf(e.path));
+    const FolderNotListed notListed;
+    std::unique_ptr<DemRaster> opened = DemRaster::open(e.path, &why, DemRaster::kDefaultMaxChunks, !e.openedBefore);
     if (!opened) {
         e.broken = true;  // its header read, its data not (ellipsoidal without the geoid, changed on disk)
         addProblem(why);

@@ -13,7 +13,6 @@
 namespace sortie::raster {
 
 class DemRaster;
-class FolderListing;
 
 // Terrain from a folder of many elevation rasters (a national DEM in thousands of GeoTIFF tiles).
 // Opening reads each file's header once (size, geotransform, CRS), keeps its WGS-84 box in an R-tree
@@ -66,10 +65,7 @@ private:
     terrain::ElevationSample sampleEntry(int entry, double latitude, double longitude);
     void addProblem(const QString &problem);
 
-    const FolderListing *siblingsOf(const QString &path) const;
-
     QString m_displayPath;
-    std::unique_ptr<FolderListing> m_listing;  // the folder of the first file
     int m_maxOpen = kDefaultMaxOpen;
     std::vector<Entry> m_entries;
     std::unique_ptr<Tree> m_tree;

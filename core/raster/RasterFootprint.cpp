@@ -26,7 +26,7 @@ QString geoTransformProblem(const double toWorld[6], int width, int height)
     return {};
 }
 
-std::optional<GeoBox> footprintInWgs84(const double toWorld[6], int width, int height, OGRCoordinateTransformation *toWgs84)
+void cornerBounds(const double toWorld[6], int width, int height, double bounds[4])
 {
     double xs[4], ys[4];
     const int cols[4] = {0, width, 0, width}, rows[4] = {0, 0, height, height};
@@ -34,8 +34,15 @@ std::optional<GeoBox> footprintInWgs84(const double toWorld[6], int width, int h
         xs[i] = toWorld[0] + toWorld[1] * cols[i] + toWorld[2] * rows[i];
         ys[i] = toWorld[3] + toWorld[4] * cols[i] + toWorld[5] * rows[i];
     }
-    const double minX = *std::min_element(xs, xs + 4), maxX = *std::max_element(xs, xs + 4);
-    const double minY = *std::min_element(ys, ys + 4), maxY = *std::max_element(ys, ys + 4);
+    bounds[0] = *std::min_element(xs, xs + 4), bounds[2] = *std::max_element(xs, xs + 4);
+    bounds[1] = *std::min_element(ys, ys + 4), bounds[3] = *std::max_element(ys, ys + 4);
+}
+
+std::optional<GeoBox> footprintInWgs84(const double toWorld[6], int width, int height, OGRCoordinateTransformation *toWgs84)
+{
+    double b[4];
+    cornerBounds(toWorld, width, height, b);
+    const double minX = b[0], minY = b[1], maxX = b[2], maxY = b[3];
     GeoBox box;
     if (!toWgs84) {
         box = {minY, minX, maxY, maxX};

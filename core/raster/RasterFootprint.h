@@ -26,6 +26,9 @@ struct GeoBox
 // Rotated and negative-size transforms are valid.
 QString geoTransformProblem(const double toWorld[6], int width, int height);
 
+// The box holding the raster's four corners in its own CRS: minX, minY, maxX, maxY.
+void cornerBounds(const double toWorld[6], int width, int height, double bounds[4]);
+
 // The WGS-84 box holding a width×height raster whose geotransform is `toWorld` (all four corners, so a
 // rotated raster is held too). `toWgs84` converts from the raster's CRS; null when that CRS is WGS-84
 // degrees already. Nullopt when the corners cannot be converted.
