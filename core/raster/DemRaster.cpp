@@ -155,6 +155,8 @@ ElevationSample DemRaster::sample(double latitude, double longitude)
     // Pixel centres are the posts: pixel/line coordinates less half a pixel.
     double column = m_toPixel[0] + m_toPixel[1] * x + m_toPixel[2] * y - 0.5;
     double row = m_toPixel[3] + m_toPixel[4] * x + m_toPixel[5] * y - 0.5;
+    if (!std::isfinite(column) || !std::isfinite(row))
+        return ElevationSample::noData();  // PROJ gave no finite position
     // A point on a post (to rounding) is that post: a nodata pixel beside it has no weight.
     if (std::abs(column - std::round(column)) < 1e-6)
         column = std::round(column);

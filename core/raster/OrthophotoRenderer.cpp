@@ -32,6 +32,8 @@ bool extentIn(GDALDataset &dataset, const OGRSpatialReference &from, OGRSpatialR
         return false;
     double b[4];
     cornerBounds(gt, dataset.GetRasterXSize(), dataset.GetRasterYSize(), b);  // all four: a rotated image too
+    if (!boundsArePlaceable(b))
+        return false;
     const double minX = b[0], minY = b[1], maxX = b[2], maxY = b[3];
     OGRSpatialReference source(from);
     source.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);

@@ -38,10 +38,26 @@ void cornerBounds(const double toWorld[6], int width, int height, double bounds[
     bounds[1] = *std::min_element(ys, ys + 4), bounds[3] = *std::max_element(ys, ys + 4);
 }
 
+bool boundsArePlaceable(const double bounds[4])
+{
+    constexpr double kFarthest = 1e9, kThinnest = 1e-9;
+    for (int i = 0; i < 4; ++i)
+        if (!std::isfinite(bounds[i]) || std::abs(bounds[i]) > kFarthest)
+            return false;
+    for (int axis = 0; axis < 2; ++axis) {
+        const double low = bounds[axis], high = bounds[axis + 2];
+        if (high - low < kThinnest * std::max({1.0, std::abs(low), std::abs(high)}))
+            return false;
+    }
+    return true;
+}
+
 std::optional<GeoBox> footprintInWgs84(const double toWorld[6], int width, int height, OGRCoordinateTransformation *toWgs84)
 {
     double b[4];
     cornerBounds(toWorld, width, height, b);
+    if (!boundsArePlaceable(b))
+        return std::nullopt;
     const double minX = b[0], minY = b[1], maxX = b[2], maxY = b[3];
     GeoBox box;
     if (!toWgs84) {

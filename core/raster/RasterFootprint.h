@@ -29,6 +29,11 @@ QString geoTransformProblem(const double toWorld[6], int width, int height);
 // The box holding the raster's four corners in its own CRS: minX, minY, maxX, maxY.
 void cornerBounds(const double toWorld[6], int width, int height, double bounds[4]);
 
+// Whether a box from cornerBounds can be handed to PROJ: finite, within ±1e9 of the CRS's origin (no
+// CRS on Earth reaches further) and not vanishingly thin for its magnitude. GDAL's TransformBounds
+// steps along the edges in 21 parts and never ends when a step is below a coordinate's precision.
+bool boundsArePlaceable(const double bounds[4]);
+
 // The WGS-84 box holding a width×height raster whose geotransform is `toWorld` (all four corners, so a
 // rotated raster is held too). `toWgs84` converts from the raster's CRS; null when that CRS is WGS-84
 // degrees already. Nullopt when the corners cannot be converted.
