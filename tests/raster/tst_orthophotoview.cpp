@@ -10,6 +10,8 @@
 #include "QuickScene.h"
 #include "RasterFileCheck.h"
 
+#include <QQmlComponent>
+#include <QQmlEngine>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
@@ -60,6 +62,7 @@ private slots:
     void quadrantsAreDrawnInPlaceWithTheOpacity();
     void badFileShowsGdalsReason();
     void dialogKeepsTheRastersOrSaysWhyNot();
+    void dialogPicksTheRastersWithFileDialogs();
 };
 
 void TestOrthophotoView::initTestCase()
@@ -228,6 +231,66 @@ Item {
     QCOMPARE(settings.demPath(), demFile);
     QCOMPARE(settings.orthophotoOpacity(), 0.5);
     QCOMPARE(storage.value(QStringLiteral("terrain/demFolder")).toString(), demFile);  // what the terrain reads at start
+}
+
+// The Browse buttons open Qt Quick's file and folder dialogs (the non-native ones offscreen); what is
+// accepted there lands in the field as a local path and is checked like a typed one.
+void TestOrthophotoView::dialogPicksTheRastersWithFileDialogs()
+{
+    QSettings storage(m_dir.filePath(QStringLiteral("picker.ini")), QSettings::IniFormat);
+    sortie::secrets::PasswordVault vault(QStringLiteral("sortie-tests"));
+    AppSettings settings(&storage, &vault);
+    QuickScene scene(R"(
+import QtQuick
+import Sortie.Ui
+Item {
+    id: root
+    required property AppSettings appSettings
+    MapSourceDialog { objectName: "dialog"; appSettings: root.appSettings }
+}
+)", QSize(800, 760), {{QStringLiteral("appSettings"), QVariant::fromValue(&settings)}});
+    QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+    QObject *dialog = scene.find(QStringLiteral("dialog"));
+    QVERIFY(dialog);
+    QMetaObject::invokeMethod(dialog, "open");
+    QTRY_VERIFY(dialog->property("opened").toBool());
+
+    for (const char *name : {"orthophotoBrowse", "orthophotoPicker", "demFileBrowse", "demFilePicker", "demFolderBrowse", "demFolderPicker"})
+        QVERIFY2(scene.find(QString::fromLatin1(name)), name);
+    // Qt Quick's own dialogs need Qt.labs.folderlistmodel; without it Qt 6.4 crashes on open().
+    QQmlEngine probe;
+    QQmlComponent folderList(&probe);
+    folderList.setData("import Qt.labs.folderlistmodel\nFolderListModel {}", QUrl());
+    if (folderList.isError())
+        QSKIP("qml6-module-qt-labs-folderlistmodel is not installed: the file dialogs cannot be opened here");
+
+    struct Case
+    {
+        const char *button, *picker, *field, *selection;
+        QString chosen;
+    };
+    const Case cases[] = {
+        {"orthophotoBrowse", "orthophotoPicker", "orthophotoField", "selectedFile", m_file},
+        {"demFileBrowse", "demFilePicker", "demField", "selectedFile", m_file},
+        {"demFolderBrowse", "demFolderPicker", "demField", "selectedFolder", m_dir.path()},
+    };
+    for (const Case &c : cases) {
+        QObject *button = scene.find(QString::fromLatin1(c.button));
+        QObject *picker = scene.find(QString::fromLatin1(c.picker));
+        QVERIFY2(button && picker, c.button);
+        QVERIFY(!picker->property("visible").toBool());
+        QVERIFY(QMetaObject::invokeMethod(button, "clicked"));
+        QTRY_VERIFY2(picker->property("visible").toBool(), c.picker);
+        QVERIFY(picker->setProperty(c.selection, QUrl::fromLocalFile(c.chosen)));
+        QVERIFY(QMetaObject::invokeMethod(picker, "accept"));
+        QTRY_VERIFY(!picker->property("visible").toBool());
+        QCOMPARE(scene.find(QString::fromLatin1(c.field))->property("text").toString(), c.chosen);
+    }
+    // A folder of rasters is a usable DEM; the picked paths are kept on OK.
+    QVERIFY2(dialog->property("rastersUsable").toBool(), qPrintable(scene.find(QStringLiteral("demProblem"))->property("text").toString()));
+    QMetaObject::invokeMethod(dialog, "accept");
+    QCOMPARE(settings.orthophotoFile(), m_file);
+    QCOMPARE(settings.demPath(), m_dir.path());
 }
 
 QTEST_MAIN(TestOrthophotoView)
