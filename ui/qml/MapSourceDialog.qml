@@ -24,9 +24,11 @@ Dialog {
 
     RasterFileCheck { id: rasterCheck }
 
+    // parentWindow is bound: a picker created before its scene is shown finds no window itself (Qt 6.4).
     FileDialog {
         id: orthophotoPicker
         objectName: "orthophotoPicker"
+        parentWindow: orthophotoField.Window.window  // the dialog's window, once it has one
         title: qsTr("Orthophoto")
         nameFilters: [qsTr("Rasters (*.tif *.tiff *.jp2 *.vrt *.img *.ecw *.sid *.png *.jpg)"), qsTr("All files (*)")]
         onAccepted: orthophotoField.text = rasterCheck.localPath(selectedFile.toString())
@@ -34,6 +36,7 @@ Dialog {
     FileDialog {
         id: demFilePicker
         objectName: "demFilePicker"
+        parentWindow: orthophotoField.Window.window  // the dialog's window, once it has one
         title: qsTr("Terrain model (DEM)")
         nameFilters: [qsTr("Elevation rasters (*.tif *.tiff *.hgt *.vrt *.dt0 *.dt1 *.dt2 *.asc *.img *.bil *.flt *.dem)"), qsTr("All files (*)")]
         onAccepted: demField.text = rasterCheck.localPath(selectedFile.toString())
@@ -41,6 +44,7 @@ Dialog {
     FolderDialog {
         id: demFolderPicker
         objectName: "demFolderPicker"
+        parentWindow: orthophotoField.Window.window  // the dialog's window, once it has one
         title: qsTr("A folder of terrain models (DEM tiles)")
         onAccepted: demField.text = rasterCheck.localPath(selectedFolder.toString())
     }
