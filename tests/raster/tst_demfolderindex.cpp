@@ -162,6 +162,57 @@ private slots:
             }
     }
 
+    // Geotransforms that cannot place pixels, or place them where PROJ's TransformBounds would loop
+    // forever (found by fuzz_raster), are refused with the file named; a huge claimed size is read in
+    // bounded chunks, never allocated whole.
+    void degenerateGeotransformsAreRefused()
+    {
+        QTemporaryDir dir;
+        struct Case
+        {
+            const char *name;
+            double gt[6];
+            const char *crs;
+        };
+        const Case cases[] = {
+            {"zero-width.tif", {24.0, 0.0, 0, 57.0, 0, -0.1}, "EPSG:4326"},
+            {"far-away.tif", {1e20, 30, 0, 6e6, 0, -30}, "EPSG:32635"},
+            {"too-thin.tif", {3e8, 1e-12, 0, 6e6, 0, -30}, "EPSG:32635"},
+        };
+        for (const Case &c : cases) {
+            GeoTiffSpec s;
+            s.width = s.height = 4;
+            std::copy(c.gt, c.gt + 6, s.geoTransform);
+            s.crs = QString::fromLatin1(c.crs);
+            const QString path = dir.filePath(QString::fromLatin1(c.name));
+            QVERIFY(writeGeoTiff(path, s, [](int, int, int) { return 1; }));
+            QString error;
+            QVERIFY2(!DemRaster::open(path, &error), c.name);
+            QVERIFY2(error.startsWith(path + QLatin1String(": ")), qPrintable(error));
+        }
+        // 2²⁰ pixels a side, sparse on disk: opened, sampled, and no more than 4 chunks held.
+        GDALAllRegister();
+        const QString huge = dir.filePath(QStringLiteral("huge.tif"));
+        CPLStringList options;
+        options.SetNameValue("TILED", "YES");
+        options.SetNameValue("SPARSE_OK", "TRUE");
+        GDALDataset *ds = GetGDALDriverManager()->GetDriverByName("GTiff")->Create(huge.toUtf8().constData(), 1 << 20, 1 << 20, 1, GDT_Float32, options.List());
+        QVERIFY(ds);
+        double gt[6] = {24.0, 1e-6, 0, 57.0, 0, -1e-6};
+        ds->SetGeoTransform(gt);
+        OGRSpatialReference wgs84;
+        wgs84.importFromEPSG(4326);
+        ds->SetSpatialRef(&wgs84);
+        GDALClose(ds);
+        QString error;
+        auto dem = DemRaster::open(huge, &error, 4);
+        QVERIFY2(dem, qPrintable(error));
+        QCOMPARE(dem->width(), 1 << 20);
+        for (int i = 0; i < 10; ++i)
+            QVERIFY(dem->sample(57.0 - 0.1 * i, 24.0 + 0.1 * i).hasValue());
+        QVERIFY(dem->cachedChunks() <= 4);
+    }
+
 private:
     QTemporaryDir m_dir;
 };
