@@ -2,6 +2,7 @@
 # Writes the seed corpus of fuzz_raster (tiny GeoTIFFs, committed in raster-corpus/) with GDAL's
 # command-line tools (gdal-bin): a DEM in degrees with a nodata pixel, one in UTM, an RGB image in
 # Web Mercator, a rotated raster, a tiled one with an overview. Run from anywhere; rewrites the seeds.
+# regress-*.tif are inputs that once failed (kept as they are, not written here).
 set -euo pipefail
 out="$(cd "$(dirname "$0")" && pwd)/raster-corpus"
 work=$(mktemp -d)

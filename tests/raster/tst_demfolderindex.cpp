@@ -176,7 +176,8 @@ private slots:
         };
         const Case cases[] = {
             {"zero-width.tif", {24.0, 0.0, 0, 57.0, 0, -0.1}, "EPSG:4326"},
-            {"far-away.tif", {1e20, 30, 0, 6e6, 0, -30}, "EPSG:32635"},
+            {"far-away.tif", {-1.3e180, 0.25, 0, 6.6e179, 0, -0.25}, "EPSG:3857"},  // TransformBounds never returned
+            {"far-utm.tif", {1e20, 30, 0, 6e6, 0, -30}, "EPSG:32635"},
             {"too-thin.tif", {3e8, 1e-12, 0, 6e6, 0, -30}, "EPSG:32635"},
         };
         for (const Case &c : cases) {
