@@ -13,9 +13,11 @@ packages=(
   qml6-module-qtquick-dialogs qml6-module-qtqml-workerscript qml6-module-qtqml-models
   qml6-module-qttest qml6-module-qtquick-tooling qml6-module-qtcore qml6-module-qt-labs-settings
   qml6-module-qt-labs-platform
+  qml6-module-qt-labs-folderlistmodel  # Qt Quick's own FileDialog (used where no native one is) lists folders with it
   libprotobuf-dev protobuf-compiler nlohmann-json3-dev libbenchmark-dev
-  libboost-dev  # Boost.Geometry (header-only): the airspace check's shapes and R-tree
+  libboost-dev  # Boost.Geometry (header-only): the airspace check's shapes and R-tree, the DEM folder index
   libproj-dev proj-data  # PROJ and its EGM96 grid (egm96_15.gtx): ellipsoidal heights to AMSL
+  gdal-bin  # gdal_translate, gdaladdo: tests/fuzz/make-raster-seeds.sh writes fuzz_raster's seeds
   libgdal-dev  # GDAL: DEM rasters (GeoTIFF, COG, Copernicus, .hgt...) and orthophotos in any CRS (core/raster)
   qtkeychain-qt6-dev libsecret-1-0  # the remembered password in the OS keyring (QtKeychain loads libsecret)
   dbus-daemon gnome-keyring libglib2.0-bin libsecret-tools  # tst_keyring: a session bus, a keyring, gdbus, secret-tool

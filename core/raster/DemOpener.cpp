@@ -3,6 +3,7 @@
 #include "DemFolderSource.h"
 #include "GdalDemSource.h"
 #include "HgtTile.h"
+#include "IndexedDemSource.h"
 #include "HgtTileSource.h"
 #include "RasterLog.h"
 
@@ -39,10 +40,11 @@ std::unique_ptr<terrain::ElevationSource> openFolder(const QString &path, QStrin
     }
     if (rasters.isEmpty())
         return hgtSource(path, error);  // an SRTM folder, as before (an empty one has no tiles)
-    auto gdal = GdalDemSource::open(path, rasters, error);
+    // Headers only now: a raster is opened when a point falls in its box (thousands of tiles open at once).
+    auto gdal = IndexedDemSource::open(path, rasters, error);
     if (!gdal)
         return nullptr;
-    qCInfo(lcRaster).noquote() << rasters.size() << "raster(s) through GDAL in" << path;
+    qCInfo(lcRaster).noquote() << gdal->indexedCount() << "of" << rasters.size() << "raster(s) indexed through GDAL in" << path;
     if (!hasHgt)
         return gdal;
     std::vector<std::unique_ptr<terrain::ElevationSource>> parts;

@@ -13,8 +13,9 @@ namespace sortie::raster {
 // - an SRTM tile named NxxEyyy.hgt: the hand-written reader (HgtTileSource; docs/rasters.md says why);
 // - any other file GDAL reads as a raster (GeoTIFF, COG, Copernicus DEM, DTED, VRT, ...): GdalDemSource;
 // - a folder: its .hgt tiles through HgtTileSource and its other rasters (demFileSuffixes) through
-//   GdalDemSource, both asked when it holds both.
-// Null with an error naming the file and GDAL's reason when the path or one of its rasters is unusable.
+//   IndexedDemSource (opened when first needed), both asked when it holds both.
+// Null with an error naming the file and GDAL's reason when the path is unusable; in a folder, when
+// no raster is usable (a bad raster among good ones is named in the source's problems()).
 std::unique_ptr<terrain::ElevationSource> openDem(const QString &path, QString *error);
 
 // File name suffixes (lower case, without the dot) a folder's rasters are picked by.

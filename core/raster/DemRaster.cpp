@@ -24,7 +24,7 @@ void destroyTransform(OGRCoordinateTransformation *t)
 
 DemRaster::~DemRaster() = default;
 
-std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, int maxChunks)
+std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, int maxChunks, bool logDatum)
 {
     auto fail = [&](const QString &why) {
         if (error)
@@ -43,8 +43,10 @@ std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, 
     double toWorld[6];
     if (dataset->GetGeoTransform(toWorld) != CE_None)
         return fail(QCoreApplication::translate("DemRaster", "the raster is not georeferenced (no geotransform)"));
+    if (const QString problem = geoTransformProblem(toWorld, r->m_width, r->m_height); !problem.isEmpty())
+        return fail(problem);
     if (!GDALInvGeoTransform(toWorld, r->m_toPixel))
-        return fail(QCoreApplication::translate("DemRaster", "the raster's geotransform cannot be inverted"));
+        return fail(QCoreApplication::translate("RasterFootprint", "the raster's geotransform cannot be inverted (a zero pixel size?)"));
     const OGRSpatialReference *srs = dataset->GetSpatialRef();
     if (!srs || srs->IsEmpty())
         return fail(QCoreApplication::translate("DemRaster", "the raster states no coordinate reference system"));
@@ -54,28 +56,19 @@ std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, 
     OGRSpatialReference target(*srs);
     target.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     CPLErrorReset();
+    std::unique_ptr<OGRCoordinateTransformation, void (*)(OGRCoordinateTransformation *)> back{nullptr, destroyTransform};
     // Degrees on the WGS-84 datum need no transformation: the common case (.hgt, Copernicus) stays cheap.
     if (!(target.IsGeographic() && target.IsSameGeogCS(&wgs84))) {
         r->m_fromWgs84 = {OGRCreateCoordinateTransformation(&wgs84, &target), destroyTransform};
-        if (!r->m_fromWgs84)
+        back.reset(OGRCreateCoordinateTransformation(&target, &wgs84));
+        if (!r->m_fromWgs84 || !back)
             return fail(QCoreApplication::translate("DemRaster", "no transformation from WGS-84 into the raster's CRS: %1")
                             .arg(lastGdalError(QCoreApplication::translate("DemRaster", "PROJ gave no reason"))));
-        std::unique_ptr<OGRCoordinateTransformation, void (*)(OGRCoordinateTransformation *)> back{
-            OGRCreateCoordinateTransformation(&target, &wgs84), destroyTransform};
-        double minX = toWorld[0], maxX = toWorld[0] + toWorld[1] * r->m_width + toWorld[2] * r->m_height;
-        double maxY = toWorld[3], minY = toWorld[3] + toWorld[4] * r->m_width + toWorld[5] * r->m_height;
-        if (minX > maxX)
-            std::swap(minX, maxX);
-        if (minY > maxY)
-            std::swap(minY, maxY);
-        if (!back || !back->TransformBounds(minX, minY, maxX, maxY, &r->m_west, &r->m_south, &r->m_east, &r->m_north, 21))
-            return fail(QCoreApplication::translate("DemRaster", "the raster's extent cannot be expressed in WGS-84 degrees"));
-    } else {
-        const double xs[2] = {toWorld[0], toWorld[0] + toWorld[1] * r->m_width + toWorld[2] * r->m_height};
-        const double ys[2] = {toWorld[3], toWorld[3] + toWorld[4] * r->m_width + toWorld[5] * r->m_height};
-        r->m_west = std::min(xs[0], xs[1]), r->m_east = std::max(xs[0], xs[1]);
-        r->m_south = std::min(ys[0], ys[1]), r->m_north = std::max(ys[0], ys[1]);
     }
+    const std::optional<GeoBox> box = footprintInWgs84(toWorld, r->m_width, r->m_height, back.get());
+    if (!box)
+        return fail(QCoreApplication::translate("DemRaster", "the raster's extent cannot be expressed in WGS-84 degrees"));
+    r->m_box = *box;
     int hasNoData = 0;
     const double noData = r->m_band->GetNoDataValue(&hasNoData);
     if (hasNoData)
@@ -87,14 +80,17 @@ std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, 
         r->m_geoid = datum::Egm96Geoid::open(datum::Egm96Geoid::defaultGridPath(), &geoidError);
         if (!r->m_geoid)
             return fail(QCoreApplication::translate("DemRaster", "its heights are ellipsoidal and converting them to AMSL needs the EGM96 geoid: %1").arg(geoidError));
-        qCInfo(lcRaster).noquote() << path << "heights are" << r->m_datum.describe() << "- converted to AMSL through EGM96";
+        if (logDatum)
+            qCInfo(lcRaster).noquote() << path << "heights are" << r->m_datum.describe() << "- converted to AMSL through EGM96";
         break;
     }
     case VerticalDatum::Kind::Orthometric:
-        qCInfo(lcRaster).noquote() << path << "heights are" << r->m_datum.describe() << "- taken as AMSL";
+        if (logDatum)
+            qCInfo(lcRaster).noquote() << path << "heights are" << r->m_datum.describe() << "- taken as AMSL";
         break;
     case VerticalDatum::Kind::Unstated:
-        qCInfo(lcRaster).noquote() << path << "states no vertical datum - heights taken as AMSL (EGM96)";
+        if (logDatum)
+            qCInfo(lcRaster).noquote() << path << "states no vertical datum - heights taken as AMSL (EGM96)";
         break;
     }
     r->m_dataset = std::move(dataset);
@@ -103,14 +99,13 @@ std::unique_ptr<DemRaster> DemRaster::open(const QString &path, QString *error, 
 
 bool DemRaster::mayCover(double latitude, double longitude) const
 {
-    // A hair of slack for rounding at the edges (TransformBounds densifies, so the box holds the extent).
-    constexpr double slack = 1e-9;
-    return latitude >= m_south - slack && latitude <= m_north + slack && longitude >= m_west - slack && longitude <= m_east + slack;
+    return m_box.contains(latitude, longitude);
 }
 
 const std::vector<float> *DemRaster::chunk(int chunkColumn, int chunkRow)
 {
-    const int key = chunkRow * ((m_width + kChunk - 1) / kChunk) + chunkColumn;
+    // 64 bits: a header may claim 2³¹ pixels a side (nothing is allocated for that: chunks are read as needed).
+    const qint64 key = qint64(chunkRow) * ((qint64(m_width) + kChunk - 1) / kChunk) + chunkColumn;
     if (auto found = m_chunks.find(key); found != m_chunks.end()) {
         m_recent.splice(m_recent.begin(), m_recent, found->second.place);
         return &found->second.heights;
@@ -160,6 +155,8 @@ ElevationSample DemRaster::sample(double latitude, double longitude)
     // Pixel centres are the posts: pixel/line coordinates less half a pixel.
     double column = m_toPixel[0] + m_toPixel[1] * x + m_toPixel[2] * y - 0.5;
     double row = m_toPixel[3] + m_toPixel[4] * x + m_toPixel[5] * y - 0.5;
+    if (!std::isfinite(column) || !std::isfinite(row))
+        return ElevationSample::noData();  // PROJ gave no finite position
     // A point on a post (to rounding) is that post: a nodata pixel beside it has no weight.
     if (std::abs(column - std::round(column)) < 1e-6)
         column = std::round(column);

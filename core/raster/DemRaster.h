@@ -2,6 +2,7 @@
 
 #include "ElevationSample.h"
 #include "GdalDataset.h"
+#include "RasterFootprint.h"
 #include "VerticalDatum.h"
 
 #include <QString>
@@ -34,8 +35,9 @@ public:
     static constexpr int kChunk = 256;
     static constexpr int kDefaultMaxChunks = 64;  // 16 MiB of float heights per raster
 
-    // Null with an error naming the file (and GDAL's or PROJ's reason) when it cannot be used.
-    static std::unique_ptr<DemRaster> open(const QString &path, QString *error, int maxChunks = kDefaultMaxChunks);
+    // Null with an error naming the file (and GDAL's or PROJ's reason) when it cannot be used. The
+    // vertical datum is logged unless `logDatum` is false (a file opened again after being closed).
+    static std::unique_ptr<DemRaster> open(const QString &path, QString *error, int maxChunks = kDefaultMaxChunks, bool logDatum = true);
     ~DemRaster();
 
     QString path() const { return m_path; }
@@ -43,6 +45,7 @@ public:
     int width() const { return m_width; }
     int height() const { return m_height; }
     // The WGS-84 box the raster covers (degrees), for quick rejection.
+    const GeoBox &box() const { return m_box; }
     bool mayCover(double latitude, double longitude) const;
     terrain::ElevationSample sample(double latitude, double longitude);
     // Chunks read from the file so far (cache misses), for tests and benchmarks.
@@ -61,18 +64,18 @@ private:
     int m_width = 0, m_height = 0;
     double m_toPixel[6] = {};  // inverse geotransform: raster CRS -> pixel/line
     std::unique_ptr<OGRCoordinateTransformation, void (*)(OGRCoordinateTransformation *)> m_fromWgs84{nullptr, nullptr};
-    double m_south = 0, m_west = 0, m_north = 0, m_east = 0;
+    GeoBox m_box;
     std::optional<double> m_noData;
     VerticalDatum m_datum;
     std::unique_ptr<datum::Egm96Geoid> m_geoid;  // only for ellipsoidal heights
     int m_maxChunks = kDefaultMaxChunks;
-    std::list<int> m_recent;  // chunk keys, most recent first
+    std::list<qint64> m_recent;  // chunk keys, most recent first
     struct Chunk
     {
         std::vector<float> heights;
-        std::list<int>::iterator place;
+        std::list<qint64>::iterator place;
     };
-    std::unordered_map<int, Chunk> m_chunks;
+    std::unordered_map<qint64, Chunk> m_chunks;
     long m_chunkReads = 0;
 };
 

@@ -1,10 +1,11 @@
 #include "GdalDataset.h"
 
 #include <QCoreApplication>
+#include <cpl_conv.h>
 #include <cpl_error.h>
 #include <gdal_priv.h>
 
-#include <QFileInfo>
+#include <cpl_vsi.h>
 
 #include <mutex>
 
@@ -21,6 +22,22 @@ QString lastGdalError(const QString &fallback)
     return message && *message ? QString::fromUtf8(message) : fallback;
 }
 
+namespace {
+const char kNoListing[] = "GDAL_DISABLE_READDIR_ON_OPEN";
+}
+
+FolderNotListed::FolderNotListed()
+{
+    if (const char *previous = CPLGetThreadLocalConfigOption(kNoListing, nullptr))
+        m_previous = previous, m_hadPrevious = true;
+    CPLSetThreadLocalConfigOption(kNoListing, "TRUE");
+}
+
+FolderNotListed::~FolderNotListed()
+{
+    CPLSetThreadLocalConfigOption(kNoListing, m_hadPrevious ? m_previous.constData() : nullptr);
+}
+
 GdalDatasetPtr openRaster(const QString &path, QString *error)
 {
     static std::once_flag registered;
@@ -30,7 +47,8 @@ GdalDatasetPtr openRaster(const QString &path, QString *error)
             *error = QStringLiteral("%1: %2").arg(path, why);
         return GdalDatasetPtr();
     };
-    if (!QFileInfo::exists(path))
+    VSIStatBufL stat;  // through GDAL's file system: /vsimem/, /vsizip/... paths exist too
+    if (VSIStatExL(path.toUtf8().constData(), &stat, VSI_STAT_EXISTS_FLAG) != 0)
         return fail(QCoreApplication::translate("GdalDataset", "no such file"));
     // GDAL reports its reasons through the error handler; keep them for the message instead of stderr.
     CPLErrorReset();

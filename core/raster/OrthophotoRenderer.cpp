@@ -1,5 +1,6 @@
 #include "OrthophotoRenderer.h"
 
+#include "RasterFootprint.h"
 #include "RasterLog.h"
 
 #include <QCoreApplication>
@@ -29,13 +30,11 @@ bool extentIn(GDALDataset &dataset, const OGRSpatialReference &from, OGRSpatialR
     double gt[6];
     if (dataset.GetGeoTransform(gt) != CE_None)
         return false;
-    const int w = dataset.GetRasterXSize(), h = dataset.GetRasterYSize();
-    double minX = gt[0], maxX = gt[0] + gt[1] * w + gt[2] * h;
-    double maxY = gt[3], minY = gt[3] + gt[4] * w + gt[5] * h;
-    if (minX > maxX)
-        std::swap(minX, maxX);
-    if (minY > maxY)
-        std::swap(minY, maxY);
+    double b[4];
+    cornerBounds(gt, dataset.GetRasterXSize(), dataset.GetRasterYSize(), b);  // all four: a rotated image too
+    if (!boundsArePlaceable(b))
+        return false;
+    const double minX = b[0], minY = b[1], maxX = b[2], maxY = b[3];
     OGRSpatialReference source(from);
     source.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     to.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
@@ -61,6 +60,8 @@ std::unique_ptr<OrthophotoRenderer> OrthophotoRenderer::open(const QString &path
     double gt[6];
     if (!srs || srs->IsEmpty() || dataset->GetGeoTransform(gt) != CE_None)
         return fail(QCoreApplication::translate("OrthophotoRenderer", "the image is not georeferenced (no CRS or no geotransform)"));
+    if (const QString problem = geoTransformProblem(gt, dataset->GetRasterXSize(), dataset->GetRasterYSize()); !problem.isEmpty())
+        return fail(problem);
     std::unique_ptr<OrthophotoRenderer> r(new OrthophotoRenderer);
     r->m_path = path;
     const int count = dataset->GetRasterCount();
@@ -99,6 +100,8 @@ std::unique_ptr<OrthophotoRenderer> OrthophotoRenderer::open(const QString &path
 
 bool OrthophotoRenderer::touches(int z, int x, int y) const
 {
+    if (z < 0 || z > kMaxZoom)
+        return false;
     if (!m_bounded)
         return true;
     const double span = 2 * kHalfWorld / double(1 << z);
@@ -110,9 +113,14 @@ bool OrthophotoRenderer::touches(int z, int x, int y) const
 RgbaTile OrthophotoRenderer::render(int z, int x, int y, int size, QString *error)
 {
     RgbaTile tile;
+    if (size < 1 || size > kMaxTileSize) {
+        if (error)
+            *error = QCoreApplication::translate("OrthophotoRenderer", "%1: tile size %2 is outside 1..%3").arg(m_path).arg(size).arg(kMaxTileSize);
+        return tile;
+    }
     tile.size = size;
     tile.rgba.assign(size_t(size) * size_t(size) * 4, 0);
-    if (z < 0 || z > 30 || x < 0 || y < 0 || x >= (1 << z) || y >= (1 << z) || !touches(z, x, y))
+    if (z < 0 || z > kMaxZoom || x < 0 || y < 0 || x >= (1 << z) || y >= (1 << z) || !touches(z, x, y))
         return tile;
     const std::lock_guard lock(m_mutex);
     GDALDriver *mem = GetGDALDriverManager()->GetDriverByName("MEM");

@@ -28,6 +28,9 @@ struct RgbaTile
 class OrthophotoRenderer
 {
 public:
+    static constexpr int kMaxZoom = 30;
+    static constexpr int kMaxTileSize = 4096;
+
     // Null with an error naming the file and GDAL's reason when it cannot be drawn on the map.
     static std::unique_ptr<OrthophotoRenderer> open(const QString &path, QString *error);
     ~OrthophotoRenderer();
@@ -42,7 +45,8 @@ public:
     // Whether the XYZ tile z/x/y may show part of the raster.
     bool touches(int z, int x, int y) const;
     // The XYZ tile z/x/y (x east from the antimeridian, y south from the top); an empty (all
-    // transparent) tile outside the footprint; `error` set when GDAL fails to warp it.
+    // transparent) tile outside the footprint; `error` set when GDAL fails to warp it. A size outside
+    // 1..kMaxTileSize gives an empty tile (size 0) and an error.
     RgbaTile render(int z, int x, int y, int size = 256, QString *error = nullptr);
 
 private:

@@ -40,6 +40,7 @@ const std::map<QString, QString> kOtherReaders{
     {QStringLiteral("server no-fly zones (protobuf to zone)"), QStringLiteral("fuzz_nfz_conversion")},
     {QStringLiteral("ADS-B traffic (SBS-1 BaseStation lines)"), QStringLiteral("fuzz_sbs")},
     {QStringLiteral("MBTiles metadata (offline map packs)"), QStringLiteral("fuzz_mbtiles_metadata")},
+    {QStringLiteral("the operator's rasters through GDAL (DEMs, orthophotos)"), QStringLiteral("fuzz_raster")},
 };
 } // namespace
 

@@ -14,11 +14,13 @@
 #include "PathSampling.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QElapsedTimer>
 #include <QTemporaryDir>
 
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -54,6 +56,56 @@ int sampleAll(terrain::ElevationSource &source, const terrain::SampledPath &path
     for (const auto &p : path.points)
         values += source.sample(p.position).hasValue() ? 1 : 0;
     return values;
+}
+
+// File descriptors the process holds now (each open GeoTIFF holds one).
+int openDescriptors()
+{
+    return int(QDir(QStringLiteral("/proc/self/fd")).entryList(QDir::Files | QDir::System).size());
+}
+
+// A folder of 1,000 small GeoTIFF tiles (40 × 25 tiles of 0.1°, 100² pixels each, over 24..28 E,
+// 55..57.5 N), as a national DEM is delivered: time to the first height, and a path across it.
+bool benchTileFolder(const QDir &parent)
+{
+    const QString folder = parent.filePath(QStringLiteral("tiles"));
+    QDir().mkpath(folder);
+    QElapsedTimer setup;
+    setup.start();
+    for (int row = 0; row < 25; ++row)
+        for (int col = 0; col < 40; ++col) {
+            raster::test::GeoTiffSpec tile;
+            tile.width = tile.height = 100;
+            const double west = 24.0 + col * 0.1, north = 57.5 - row * 0.1;
+            const double gt[6] = {west, 0.001, 0, north, 0, -0.001};
+            std::copy(gt, gt + 6, tile.geoTransform);
+            const QString name = QStringLiteral("tile_%1_%2.tif").arg(row, 2, 10, QLatin1Char('0')).arg(col, 2, 10, QLatin1Char('0'));
+            if (!raster::test::writeGeoTiff(folder + QLatin1Char('/') + name, tile, [&](int, int r, int c) {
+                    return hills(north - (r + 0.5) * 0.001, west + (c + 0.5) * 0.001);
+                }))
+                return false;
+        }
+    std::printf("%-60s %9.0f ms\n", "(setup: 1,000 GeoTIFF tiles of 100² pixels)", double(setup.elapsed()));
+    const int descriptorsBefore = openDescriptors();
+    std::unique_ptr<terrain::ElevationSource> dem;
+    QString error;
+    bool ok = true;
+    report("folder of 1,000 GeoTIFF tiles: open, time to first height", median(3, [&] {
+               dem.reset();
+               dem = openDem(folder, &error);
+               ok = ok && dem && dem->sample({56.25, 26.05}).hasValue();
+           }), 0);
+    if (!ok)
+        return std::fprintf(stderr, "the tile folder gave no height: %s\n", qPrintable(error)), false;
+    std::printf("%-60s %9d\n", "  file descriptors held after the first height", openDescriptors() - descriptorsBefore);
+    // 230 km from one corner of the tiles to the other, crossing ~60 of them.
+    const terrain::SampledPath path = terrain::samplePath({{55.05, 24.05}, {57.45, 27.95}}, 30);
+    int values = 0;
+    report("folder of 1,000 tiles: 230 km path, first pass", median(1, [&] { values = sampleAll(*dem, path); }), 0);
+    std::printf("%-60s %9d of %zu\n", "  samples with a value", values, path.points.size());
+    report("folder of 1,000 tiles: 230 km path, warm", median(5, [&] { sampleAll(*dem, path); }), 0);
+    std::printf("%-60s %9d\n", "  file descriptors held after the path", openDescriptors() - descriptorsBefore);
+    return values == int(path.points.size());
 }
 
 } // namespace
@@ -127,6 +179,9 @@ int main(int argc, char **argv)
         std::printf("%-60s %9d of %zu\n", "  samples with a value", values, path.points.size());
         ok &= report("GDAL GeoTIFF UTM 35N: 100 km path", median(21, [&] { sampleAll(*tif, path); }), 40);
     }
+
+    if (!benchTileFolder(QDir(dir.path())))
+        return 1;
 
     // A large orthophoto: 8192² RGB pixels of 0.5 m in UTM 35N (4 km), tiled, with and without overviews.
     for (bool overviews : {false, true}) {

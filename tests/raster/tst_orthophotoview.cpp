@@ -10,6 +10,11 @@
 #include "QuickScene.h"
 #include "RasterFileCheck.h"
 
+#include <QDir>
+#include <QFileInfo>
+#include <QQmlComponent>
+#include <QQmlEngine>
+#include <QQuickItem>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QTest>
@@ -60,6 +65,7 @@ private slots:
     void quadrantsAreDrawnInPlaceWithTheOpacity();
     void badFileShowsGdalsReason();
     void dialogKeepsTheRastersOrSaysWhyNot();
+    void dialogPicksTheRastersWithFileDialogs();
 };
 
 void TestOrthophotoView::initTestCase()
@@ -228,6 +234,98 @@ Item {
     QCOMPARE(settings.demPath(), demFile);
     QCOMPARE(settings.orthophotoOpacity(), 0.5);
     QCOMPARE(storage.value(QStringLiteral("terrain/demFolder")).toString(), demFile);  // what the terrain reads at start
+}
+
+namespace {
+// An item by object name among `item`'s visual children (a popup's items are not its QObject children).
+QQuickItem *visualChild(QQuickItem *item, const QString &name)
+{
+    for (QQuickItem *child : item->childItems()) {
+        if (child->objectName() == name)
+            return child;
+        if (QQuickItem *found = visualChild(child, name))
+            return found;
+    }
+    return nullptr;
+}
+} // namespace
+
+// The Browse buttons open Qt Quick's file and folder dialogs (the non-native ones offscreen); what is
+// accepted there lands in the field as a local path and is checked like a typed one.
+void TestOrthophotoView::dialogPicksTheRastersWithFileDialogs()
+{
+    QSettings storage(m_dir.filePath(QStringLiteral("picker.ini")), QSettings::IniFormat);
+    sortie::secrets::PasswordVault vault(QStringLiteral("sortie-tests"));
+    AppSettings settings(&storage, &vault);
+    QuickScene scene(R"(
+import QtQuick
+import Sortie.Ui
+Item {
+    id: root
+    required property AppSettings appSettings
+    MapSourceDialog { objectName: "dialog"; appSettings: root.appSettings }
+}
+)", QSize(800, 760), {{QStringLiteral("appSettings"), QVariant::fromValue(&settings)}});
+    QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+    QObject *dialog = scene.find(QStringLiteral("dialog"));
+    QVERIFY(dialog);
+    QMetaObject::invokeMethod(dialog, "open");
+    QTRY_VERIFY(dialog->property("opened").toBool());
+
+    for (const char *name : {"orthophotoBrowse", "orthophotoPicker", "demFileBrowse", "demFilePicker", "demFolderBrowse", "demFolderPicker"})
+        QVERIFY2(scene.find(QString::fromLatin1(name)), name);
+    // Qt Quick's own dialogs need Qt.labs.folderlistmodel; without it Qt 6.4 crashes on open().
+    QQmlEngine probe;
+    QQmlComponent folderList(&probe);
+    folderList.setData("import Qt.labs.folderlistmodel\nFolderListModel {}", QUrl());
+    if (folderList.isError())
+        QSKIP("qml6-module-qt-labs-folderlistmodel is not installed: the file dialogs cannot be opened here");
+
+    struct Case
+    {
+        const char *button, *picker, *field, *selection;
+        QString chosen;
+    };
+    // A folder of one raster, alone in its parent (the folder dialog lists the parent).
+    const QString demFolder = m_dir.filePath(QStringLiteral("picked/dem"));
+    QVERIFY(QDir().mkpath(demFolder));
+    QVERIFY(QFile::copy(m_file, demFolder + QStringLiteral("/tile.tif")));
+    const Case cases[] = {
+        {"orthophotoBrowse", "orthophotoPicker", "orthophotoField", "selectedFile", m_file},
+        {"demFileBrowse", "demFilePicker", "demField", "selectedFile", m_file},
+        {"demFolderBrowse", "demFolderPicker", "demField", "selectedFolder", demFolder},
+    };
+    for (const Case &c : cases) {
+        QObject *button = scene.find(QString::fromLatin1(c.button));
+        QObject *picker = scene.find(QString::fromLatin1(c.picker));
+        QVERIFY2(button && picker, c.button);
+        QVERIFY(!picker->property("visible").toBool());
+        QVERIFY(picker->setProperty("currentFolder", QUrl::fromLocalFile(QFileInfo(c.chosen).path())));
+        QVERIFY(QMetaObject::invokeMethod(button, "clicked"));
+        QTRY_VERIFY2(picker->property("visible").toBool(), c.picker);
+        // Qt Quick's dialog lists the folder in the background: the chosen entry is picked in the list,
+        // as a click on it does (it becomes the list's current item).
+        const bool folders = QLatin1String(c.selection) == QLatin1String("selectedFolder");
+        QQuickItem *view = nullptr;
+        QTRY_VERIFY((view = visualChild(scene.view().contentItem(), folders ? QStringLiteral("folderDialogListView") : QStringLiteral("fileDialogListView")))
+                    && view->property("count").toInt() > 0);
+        const QString delegateName = folders ? QStringLiteral("folderDialogDelegate%1") : QStringLiteral("fileDialogDelegate%1");
+        const QUrl chosenUrl = QUrl::fromLocalFile(c.chosen);
+        QQuickItem *chosenEntry = nullptr;
+        for (int i = 0; i < view->property("count").toInt() && !chosenEntry; ++i)
+            if (QQuickItem *entry = visualChild(view, delegateName.arg(i)); entry && entry->property("file").toUrl() == chosenUrl)
+                chosenEntry = entry;
+        QVERIFY2(chosenEntry, qPrintable(c.chosen));
+        QVERIFY(QMetaObject::invokeMethod(chosenEntry, "clicked"));
+        QVERIFY(QMetaObject::invokeMethod(picker, "accept"));
+        QTRY_VERIFY(!picker->property("visible").toBool());
+        QCOMPARE(scene.find(QString::fromLatin1(c.field))->property("text").toString(), c.chosen);
+    }
+    // A folder of rasters is a usable DEM; the picked paths are kept on OK.
+    QVERIFY2(dialog->property("rastersUsable").toBool(), qPrintable(scene.find(QStringLiteral("demProblem"))->property("text").toString()));
+    QMetaObject::invokeMethod(dialog, "accept");
+    QCOMPARE(settings.orthophotoFile(), m_file);
+    QCOMPARE(settings.demPath(), demFolder);
 }
 
 QTEST_MAIN(TestOrthophotoView)

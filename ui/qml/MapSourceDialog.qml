@@ -1,5 +1,6 @@
 import QtQuick
 import QtQuick.Controls
+import QtQuick.Dialogs
 import QtQuick.Layouts
 import Sortie.Ui
 
@@ -7,6 +8,7 @@ import Sortie.Ui
 // URL template, cached on disk) or an MBTiles file; and the operator's own rasters: an orthophoto
 // drawn over the base map (with its opacity) and a DEM file or folder for the terrain. A raster
 // GDAL cannot use shows GDAL's reason (RasterFileCheck) and OK waits until it is fixed or cleared.
+// Each raster path can be typed or picked (a file dialog; for the DEM a file or a folder).
 Dialog {
     id: dialog
     required property AppSettings appSettings
@@ -21,6 +23,31 @@ Dialog {
     readonly property bool rastersUsable: orthophotoProblem === "" && demProblem === ""
 
     RasterFileCheck { id: rasterCheck }
+
+    // parentWindow is bound: a picker created before its scene is shown finds no window itself (Qt 6.4).
+    FileDialog {
+        id: orthophotoPicker
+        objectName: "orthophotoPicker"
+        parentWindow: orthophotoField.Window.window  // the dialog's window, once it has one
+        title: qsTr("Orthophoto")
+        nameFilters: [qsTr("Rasters (*.tif *.tiff *.jp2 *.vrt *.img *.ecw *.sid *.png *.jpg)"), qsTr("All files (*)")]
+        onAccepted: orthophotoField.text = rasterCheck.localPath(selectedFile.toString())
+    }
+    FileDialog {
+        id: demFilePicker
+        objectName: "demFilePicker"
+        parentWindow: orthophotoField.Window.window  // the dialog's window, once it has one
+        title: qsTr("Terrain model (DEM)")
+        nameFilters: [qsTr("Elevation rasters (*.tif *.tiff *.hgt *.vrt *.dt0 *.dt1 *.dt2 *.asc *.img *.bil *.flt *.dem)"), qsTr("All files (*)")]
+        onAccepted: demField.text = rasterCheck.localPath(selectedFile.toString())
+    }
+    FolderDialog {
+        id: demFolderPicker
+        objectName: "demFolderPicker"
+        parentWindow: orthophotoField.Window.window  // the dialog's window, once it has one
+        title: qsTr("A folder of terrain models (DEM tiles)")
+        onAccepted: demField.text = rasterCheck.localPath(selectedFolder.toString())
+    }
 
     Component.onCompleted: standardButton(Dialog.Ok).enabled = Qt.binding(() => rastersUsable)
 
@@ -87,12 +114,20 @@ Dialog {
             wrapMode: Text.Wrap
             text: qsTr("Orthophoto over the base map (GeoTIFF or any raster GDAL reads, any CRS)")
         }
-        TextField {
-            id: orthophotoField
-            objectName: "orthophotoField"
+        RowLayout {
             Layout.fillWidth: true
-            placeholderText: qsTr("/path/to/orthophoto.tif (empty: none)")
-            selectByMouse: true
+            TextField {
+                id: orthophotoField
+                objectName: "orthophotoField"
+                Layout.fillWidth: true
+                placeholderText: qsTr("/path/to/orthophoto.tif (empty: none)")
+                selectByMouse: true
+            }
+            Button {
+                objectName: "orthophotoBrowse"
+                text: qsTr("Browse…")
+                onClicked: orthophotoPicker.open()
+            }
         }
         Label {
             objectName: "orthophotoProblem"
@@ -119,12 +154,25 @@ Dialog {
             wrapMode: Text.Wrap
             text: qsTr("Terrain: a DEM file (GeoTIFF, .hgt, ...) or a folder of them")
         }
-        TextField {
-            id: demField
-            objectName: "demField"
+        RowLayout {
             Layout.fillWidth: true
-            placeholderText: qsTr("/path/to/dem.tif or /path/to/dem-folder (empty: none)")
-            selectByMouse: true
+            TextField {
+                id: demField
+                objectName: "demField"
+                Layout.fillWidth: true
+                placeholderText: qsTr("/path/to/dem.tif or /path/to/dem-folder (empty: none)")
+                selectByMouse: true
+            }
+            Button {
+                objectName: "demFileBrowse"
+                text: qsTr("File…")
+                onClicked: demFilePicker.open()
+            }
+            Button {
+                objectName: "demFolderBrowse"
+                text: qsTr("Folder…")
+                onClicked: demFolderPicker.open()
+            }
         }
         Label {
             objectName: "demProblem"
