@@ -9,6 +9,7 @@
 #include "RouteDocument.h"
 #include "TileArea.h"
 
+#include <QDir>
 #include <QSignalSpy>
 #include <QTest>
 #include <QtQml/qqmlextensionplugin.h>
@@ -21,6 +22,11 @@ namespace {
 QPointF centreOf(QQuickItem *item)
 {
     return item->mapToScene(QPointF(item->width() / 2, item->height() / 2));
+}
+
+QString screenshotDir()
+{
+    return qEnvironmentVariable("SORTIE_SCREENSHOT_DIR", QStringLiteral(SORTIE_SCREENSHOT_DEFAULT_DIR));
 }
 
 void click(QQuickWindow *window, QPointF at)
@@ -110,6 +116,8 @@ private slots:
         QQuickItem *shown = client.find(QStringLiteral("offlineAreaLayer"));
         QTRY_VERIFY(shown->isVisible());
         QCOMPARE(shown->property("vertexCount").toInt(), 5);
+        QVERIFY(test::waitForFrame(client.window()));
+        client.window()->grabWindow().save(QDir(screenshotDir()).filePath(QStringLiteral("offline-area.png")));
         const double drawnCount = maps.tileCount();
 
         // Cancel keeps it.

@@ -18,7 +18,10 @@ Dialog {
     title: qsTr("Offline maps")
     modal: true
     parent: Overlay.overlay
-    anchors.centerIn: parent
+    // At the window's right (over the route panel): the map's left part, where an area was just
+    // drawn, stays in sight with the area on it.
+    x: parent ? Math.max(0, parent.width - width - 20) : 0
+    y: parent ? Math.max(0, (parent.height - height) / 2) : 0
     width: Math.min(parent ? parent.width - 80 : 600, 600)
     standardButtons: Dialog.Close
 
