@@ -44,18 +44,43 @@ OfflineMaps::OfflineMaps(QSettings *storage, QObject *parent)
         m_margin = number("margin", m_margin, 0, 100000);
         m_limits.maximumConcurrent = int(number("maxConcurrent", m_limits.maximumConcurrent, 1, 64));
         m_limits.maximumTiles = qint64(number("maxTiles", double(m_limits.maximumTiles), 1, 1e9));
-        // The last area, so a download cut short by a restart can be resumed as it was.
-        const QStringList box = m_storage->value(settingKey("area")).toString().split(QLatin1Char(','));
-        bool read = box.size() == 4;
-        double edge[4] = {};
-        for (int i = 0; read && i < 4; ++i)
-            edge[i] = box[i].toDouble(&read);
-        if (read) {
-            const GeoBounds bounds{edge[0], edge[1], edge[2], edge[3]};
-            if (bounds.isValid()) {
-                m_area = TileArea::rectangle(bounds);
-                m_areaText = m_storage->value(settingKey("areaText")).toString();
-            }
+        restoreArea();
+    }
+}
+
+// The last area, so a download cut short by a restart can be resumed as it was: a drawn polygon's
+// corners ("lat,lon;lat,lon;…") when there were, else the box ("south,west,north,east").
+void OfflineMaps::restoreArea()
+{
+    const QString polygon = m_storage->value(settingKey("areaCorners")).toString();
+    if (!polygon.isEmpty()) {
+        QList<QPointF> lonLat;
+        for (const QString &corner : polygon.split(QLatin1Char(';'))) {
+            const QStringList parts = corner.split(QLatin1Char(','));
+            bool okLat = false, okLon = false;
+            const double lat = parts.value(0).toDouble(&okLat), lon = parts.value(1).toDouble(&okLon);
+            lonLat.append(parts.size() == 2 && okLat && okLon ? QPointF(lon, lat) : QPointF(qQNaN(), qQNaN()));
+        }
+        const TileArea area = TileArea::polygon(lonLat);
+        if (area.isEmpty()) {
+            // Not the box instead: that would download another area than the one chosen.
+            qCWarning(lcMapTiles) << "The remembered offline area is not usable:" << area.problem();
+            return;
+        }
+        m_area = area;
+        m_areaText = m_storage->value(settingKey("areaText")).toString();
+        return;
+    }
+    const QStringList box = m_storage->value(settingKey("area")).toString().split(QLatin1Char(','));
+    bool read = box.size() == 4;
+    double edge[4] = {};
+    for (int i = 0; read && i < 4; ++i)
+        edge[i] = box[i].toDouble(&read);
+    if (read) {
+        const GeoBounds bounds{edge[0], edge[1], edge[2], edge[3]};
+        if (bounds.isValid()) {
+            m_area = TileArea::rectangle(bounds);
+            m_areaText = m_storage->value(settingKey("areaText")).toString();
         }
     }
 }
@@ -217,12 +242,67 @@ bool OfflineMaps::useViewArea(const QGeoCoordinate &southWest, const QGeoCoordin
     return true;
 }
 
+bool OfflineMaps::usePolygonArea(const QVariantList &corners)
+{
+    QList<QPointF> lonLat;
+    for (const QVariant &corner : corners) {
+        QGeoCoordinate c = corner.value<QGeoCoordinate>();
+        if (corner.metaType() != QMetaType::fromType<QGeoCoordinate>()) {
+            const QVariantMap map = corner.toMap();
+            bool okLat = false, okLon = false;
+            c = QGeoCoordinate(map.value(QStringLiteral("latitude")).toDouble(&okLat), map.value(QStringLiteral("longitude")).toDouble(&okLon));
+            if (!okLat || !okLon)
+                c = {};
+        }
+        // An unreadable corner stays in the list, so the problem names it by its place.
+        lonLat.append(c.isValid() ? QPointF(c.longitude(), c.latitude()) : QPointF(qQNaN(), qQNaN()));
+    }
+    const TileArea area = TileArea::polygon(lonLat);
+    if (area.isEmpty()) {
+        setProblem(tr("The drawn area cannot be used: %1").arg(area.problem()));
+        return false;
+    }
+    setArea(area, tr("A drawn area (%n corner(s))", nullptr, int(lonLat.size())));
+    return true;
+}
+
+bool OfflineMaps::useRectangleArea(const QGeoCoordinate &corner, const QGeoCoordinate &opposite)
+{
+    const GeoBounds bounds{std::max(std::min(corner.latitude(), opposite.latitude()), -TileArea::kMaximumLatitude),
+                           std::min(corner.longitude(), opposite.longitude()),
+                           std::min(std::max(corner.latitude(), opposite.latitude()), TileArea::kMaximumLatitude),
+                           std::max(corner.longitude(), opposite.longitude())};
+    if (!corner.isValid() || !opposite.isValid() || !bounds.isValid()) {
+        setProblem(tr("The drawn rectangle is not an area (%1 to %2).").arg(corner.toString(), opposite.toString()));
+        return false;
+    }
+    setArea(TileArea::rectangle(bounds), tr("A drawn rectangle"));
+    return true;
+}
+
+QVariantList OfflineMaps::areaCorners() const
+{
+    QVariantList out;
+    for (const QPointF &c : m_area.corners())
+        out.append(QVariant::fromValue(QGeoCoordinate(c.y(), c.x())));
+    return out;
+}
+
 void OfflineMaps::setArea(const TileArea &area, const QString &description)
 {
     m_area = area;
     m_areaText = description;
     const GeoBounds b = area.bounds();
     save("area", QStringLiteral("%1,%2,%3,%4").arg(b.south, 0, 'g', 12).arg(b.west, 0, 'g', 12).arg(b.north, 0, 'g', 12).arg(b.east, 0, 'g', 12));
+    QStringList corners;
+    if (!area.isRectangle()) {
+        for (const QPointF &c : area.corners())
+            corners.append(QStringLiteral("%1,%2").arg(c.y(), 0, 'g', 12).arg(c.x(), 0, 'g', 12));
+    }
+    if (corners.isEmpty() && m_storage)
+        m_storage->remove(settingKey("areaCorners"));
+    else
+        save("areaCorners", corners.join(QLatin1Char(';')));
     save("areaText", description);
     setProblem({});
     emit estimateChanged();

@@ -7,6 +7,7 @@
 #include <QObject>
 #include <QPointer>
 #include <QStringList>
+#include <QVariant>
 
 #include <memory>
 
@@ -17,7 +18,7 @@ class QSettings;
 namespace sortie::maptiles {
 
 // What the operator's "Offline maps" dialog binds to: the area (the open route's bounds plus a
-// margin, or the map's view), the zoom range, the tile count and size before starting, the
+// margin, the map's view, or a polygon or rectangle drawn on the map), the zoom range, the tile count and size before starting, the
 // download (start, pause, resume, stop; progress; what could not be stored), the pack it fills,
 // and whether the map reads that pack only (cache-only: the network is never used). The choices
 // are kept in the settings, so a download interrupted by a restart resumes where it was.
@@ -32,6 +33,7 @@ class OfflineMaps : public QObject
     Q_PROPERTY(int maximumZoom READ maximumZoom WRITE setMaximumZoom NOTIFY estimateChanged)
     Q_PROPERTY(double marginMetres READ marginMetres WRITE setMarginMetres NOTIFY estimateChanged)
     Q_PROPERTY(QString areaText READ areaText NOTIFY estimateChanged)
+    Q_PROPERTY(QVariantList areaCorners READ areaCorners NOTIFY estimateChanged)
     Q_PROPERTY(double tileCount READ tileCount NOTIFY estimateChanged)
     Q_PROPERTY(double estimatedBytes READ estimatedBytes NOTIFY estimateChanged)
     Q_PROPERTY(QString estimateText READ estimateText NOTIFY estimateChanged)
@@ -69,10 +71,18 @@ public:
     // lists of {latitude, longitude} for area segments) grown by the margin, or the map's view.
     Q_INVOKABLE bool useRouteArea(QAbstractItemModel *route);
     Q_INVOKABLE bool useViewArea(const QGeoCoordinate &southWest, const QGeoCoordinate &northEast);
+    // A polygon drawn on the map: corners as QGeoCoordinate or {latitude, longitude}. An unusable
+    // one (fewer than three corners, edges crossing, across the antimeridian) sets `problem` and
+    // keeps the area there was.
+    Q_INVOKABLE bool usePolygonArea(const QVariantList &corners);
+    // A rectangle dragged on the map: any two opposite corners.
+    Q_INVOKABLE bool useRectangleArea(const QGeoCoordinate &corner, const QGeoCoordinate &opposite);
     void setArea(const TileArea &area, const QString &description);
     const TileArea &area() const { return m_area; }
 
     QString areaText() const { return m_areaText; }
+    // The area's corners (QGeoCoordinate), for drawing it on the map; empty without an area.
+    QVariantList areaCorners() const;
     double tileCount() const;      // -1: no area yet
     double estimatedBytes() const; // -1: no area yet
     QString estimateText() const;
@@ -105,6 +115,7 @@ signals:
 private:
     void save(const char *key, const QVariant &value);
     void setProblem(const QString &problem);
+    void restoreArea();
 
     QSettings *m_storage;
     QNetworkAccessManager *m_network;

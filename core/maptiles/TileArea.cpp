@@ -24,6 +24,32 @@ double mercatorV(double latitude)
 
 struct Interval { double from; double to; };
 
+// Which side of the line a→b the point p lies on: +1 left, -1 right, 0 on it.
+int sideOf(QPointF a, QPointF b, QPointF p)
+{
+    const double cross = (b.x() - a.x()) * (p.y() - a.y()) - (b.y() - a.y()) * (p.x() - a.x());
+    return cross > 0 ? 1 : cross < 0 ? -1 : 0;
+}
+
+// The first pair of edges (i, j), i < j, that cross each other's interior; {-1, -1} if none. Edges
+// that only touch are not crossings: their tiles are counted the same either way. Quadratic, for
+// the few dozen corners an operator draws.
+std::pair<qsizetype, qsizetype> firstCrossing(const QList<QPointF> &ring)
+{
+    const qsizetype n = ring.size();
+    for (qsizetype i = 0; i < n; ++i) {
+        const QPointF a = ring.at(i), b = ring.at((i + 1) % n);
+        for (qsizetype j = i + 2; j < n; ++j) {
+            if (i == 0 && j == n - 1)
+                continue; // the two edges meeting at the first corner
+            const QPointF c = ring.at(j), d = ring.at((j + 1) % n);
+            if (sideOf(a, b, c) * sideOf(a, b, d) < 0 && sideOf(c, d, a) * sideOf(c, d, b) < 0)
+                return {i, j};
+        }
+    }
+    return {-1, -1};
+}
+
 // Closed column interval covering (from, to) in tile units, never empty.
 std::pair<int, int> columnsOf(double from, double to)
 {
@@ -128,8 +154,24 @@ TileArea TileArea::polygon(const QList<QPointF> &lonLat)
         box = {std::min(box.south, p.y()), std::min(box.west, p.x()), std::max(box.north, p.y()), std::max(box.east, p.x())};
         area.m_corners.append({mercatorU(p.x()), mercatorV(p.y())});
     }
+    if (const auto [first, second] = firstCrossing(lonLat); first >= 0) {
+        area.m_corners.clear();
+        area.m_problem = QCoreApplication::translate("TileArea", "The area's edges from corner %1 and corner %2 cross: draw it without crossing.").arg(first + 1).arg(second + 1);
+        return area;
+    }
     area.m_bounds = box;
+    area.m_lonLat = lonLat;
     return area;
+}
+
+QList<QPointF> TileArea::corners() const
+{
+    if (isEmpty())
+        return {};
+    if (!m_isRectangle)
+        return m_lonLat;
+    const GeoBounds &b = m_bounds;
+    return {{b.west, b.north}, {b.east, b.north}, {b.east, b.south}, {b.west, b.south}};
 }
 
 QList<TileSpan> TileArea::spans(int zoom) const

@@ -39,6 +39,10 @@ public:
     static TileArea polygon(const QList<QPointF> &lonLat);
 
     bool isEmpty() const { return m_corners.size() < 3; }
+    bool isRectangle() const { return m_isRectangle; }
+    // The corners as QPointF(longitude, latitude): a polygon's as given, a rectangle's four from
+    // north-west clockwise. Empty when the area is.
+    QList<QPointF> corners() const;
     // Why the area cannot be used, or empty.
     QString problem() const { return m_problem; }
     GeoBounds bounds() const { return m_bounds; }
@@ -53,6 +57,7 @@ public:
     static constexpr double kMaximumLatitude = 85.0511287798066;
 
 private:
+    QList<QPointF> m_lonLat;  // as given (a polygon's), for showing and keeping the area
     QList<QPointF> m_corners; // normalised Web Mercator (u eastwards, may pass 1 across the antimeridian; v southwards)
     GeoBounds m_bounds;
     QString m_problem;

@@ -168,6 +168,79 @@ private slots:
         QCOMPARE(again.attribution(), QStringLiteral("© Test"));
     }
 
+    // A polygon drawn on the map: counted as TileArea counts it, a bad one refused with its reason
+    // (the area there was kept), and remembered across a restart, corners and all.
+    void drawnPolygonIsTheArea()
+    {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        maptiles::OfflineMaps maps(&settings);
+        maps.setMinimumZoom(10);
+        maps.setMaximumZoom(15);
+        // An L around a lake: concave, so its box would count more tiles.
+        const QList<QPointF> lonLat{{24.10, 56.94}, {24.16, 56.94}, {24.16, 56.95}, {24.12, 56.95}, {24.12, 56.98}, {24.10, 56.98}};
+        QVariantList corners;
+        for (const QPointF &p : lonLat) // as the map tool gives them ...
+            corners.append(QVariant::fromValue(QGeoCoordinate(p.y(), p.x())));
+        QVERIFY2(maps.usePolygonArea(corners), qPrintable(maps.problem()));
+        const maptiles::TileArea expected = maptiles::TileArea::polygon(lonLat);
+        QCOMPARE(maps.tileCount(), double(expected.tileCount(10, 15)));
+        QVERIFY(maps.tileCount() < double(maptiles::TileArea::rectangle(expected.bounds()).tileCount(10, 15)));
+        QVERIFY2(maps.areaText().contains(QStringLiteral("(6 corner")), qPrintable(maps.areaText()));
+        QCOMPARE(maps.areaCorners().size(), 6);
+        QCOMPARE(maps.areaCorners().at(4).value<QGeoCoordinate>(), QGeoCoordinate(56.98, 24.12));
+        QVERIFY(maps.problem().isEmpty());
+        const double drawnCount = maps.tileCount();
+
+        // ... or as plain {latitude, longitude} objects; a bow tie is refused, the L kept.
+        QSignalSpy estimate(&maps, &maptiles::OfflineMaps::estimateChanged);
+        const QVariantList bowTie{QVariantMap{{"latitude", 56.94}, {"longitude", 24.10}}, QVariantMap{{"latitude", 56.98}, {"longitude", 24.16}},
+                                  QVariantMap{{"latitude", 56.94}, {"longitude", 24.16}}, QVariantMap{{"latitude", 56.98}, {"longitude", 24.10}}};
+        QVERIFY(!maps.usePolygonArea(bowTie));
+        QVERIFY2(maps.problem().contains(QStringLiteral("corner 1 and corner 3 cross")), qPrintable(maps.problem()));
+        QVERIFY(!maps.usePolygonArea(bowTie.mid(0, 2)));
+        QVERIFY2(maps.problem().contains(QStringLiteral("three corners")), qPrintable(maps.problem()));
+        QVERIFY(!maps.usePolygonArea({QVariantMap{{"latitude", -17.0}, {"longitude", 179.0}}, QVariantMap{{"latitude", -17.0}, {"longitude", -179.0}},
+                                      QVariantMap{{"latitude", -18.0}, {"longitude", -179.0}}}));
+        QVERIFY2(maps.problem().contains(QStringLiteral("antimeridian")), qPrintable(maps.problem()));
+        QVERIFY(!maps.usePolygonArea({QVariantMap{{"latitude", 56.9}, {"longitude", 24.1}}, QVariantMap{{"latitude", 56.9}},
+                                      QVariantMap{{"latitude", 57.0}, {"longitude", 24.2}}}));
+        QVERIFY2(maps.problem().contains(QStringLiteral("Corner 2")), qPrintable(maps.problem()));
+        QCOMPARE(estimate.count(), 0);
+        QCOMPARE(maps.tileCount(), drawnCount);
+        QCOMPARE(maps.areaCorners().size(), 6);
+
+        // A restart: the same polygon, not its box.
+        {
+            maptiles::OfflineMaps again(&settings);
+            QCOMPARE(again.tileCount(), drawnCount);
+            QCOMPARE(again.areaCorners(), maps.areaCorners());
+            QCOMPARE(again.areaText(), maps.areaText());
+        }
+
+        // A dragged rectangle replaces it, and a restart remembers the rectangle (not the polygon).
+        QVERIFY(maps.useRectangleArea(QGeoCoordinate(56.98, 24.16), QGeoCoordinate(56.94, 24.10)));
+        QCOMPARE(maps.tileCount(), double(maptiles::TileArea::rectangle({56.94, 24.10, 56.98, 24.16}).tileCount(10, 15)));
+        QCOMPARE(maps.areaCorners().size(), 4);
+        QVERIFY(!maps.useRectangleArea(QGeoCoordinate(56.98, 24.16), QGeoCoordinate(56.98, 24.10)));
+        QVERIFY2(maps.problem().contains(QStringLiteral("not an area")), qPrintable(maps.problem()));
+        maptiles::OfflineMaps afterRectangle(&settings);
+        QCOMPARE(afterRectangle.tileCount(), maps.tileCount());
+        QCOMPARE(afterRectangle.areaCorners(), maps.areaCorners());
+    }
+
+    // Remembered corners edited by hand into nonsense: no area (not the box, another area), never 0,0.
+    void unreadableRememberedPolygonIsNoArea()
+    {
+        QTemporaryDir dir;
+        QSettings settings(dir.filePath(QStringLiteral("s.ini")), QSettings::IniFormat);
+        settings.setValue(QStringLiteral("offlineMaps/area"), QStringLiteral("56.9,24.1,57.0,24.2"));
+        settings.setValue(QStringLiteral("offlineMaps/areaCorners"), QStringLiteral("56.9,24.1;57.0,x;56.95,24.2"));
+        maptiles::OfflineMaps maps(&settings);
+        QCOMPARE(maps.tileCount(), -1.0);
+        QVERIFY(maps.areaCorners().isEmpty());
+    }
+
     // The dialog offscreen: the route's area, the estimate, Download, the progress bar and its text.
     void dialogDrivesTheController()
     {

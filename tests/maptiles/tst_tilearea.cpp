@@ -180,6 +180,12 @@ private slots:
         const TileArea nan = TileArea::polygon({{1, 2}, {3, 4}, {qQNaN(), 5}});
         QVERIFY2(nan.problem().contains(QStringLiteral("Corner 3")), qPrintable(nan.problem()));
         QVERIFY(TileArea::rectangle({10, 5, 5, 6}).problem().contains(QStringLiteral("not a valid")));
+        // A bow tie: its two halves would count, the crossing edges named instead.
+        const TileArea bowTie = TileArea::polygon({{10, 45}, {11, 46}, {11, 45}, {10, 46}});
+        QVERIFY(bowTie.isEmpty());
+        QVERIFY2(bowTie.problem().contains(QStringLiteral("corner 1 and corner 3 cross")), qPrintable(bowTie.problem()));
+        // Corners touching an edge, and a corner clicked twice, are not crossings.
+        QVERIFY(!TileArea::polygon({{10, 45}, {11, 45}, {11, 45}, {11, 46}, {10.5, 45}}).isEmpty());
         QCOMPARE(TileArea().tileCount(0, 20), 0);
         QCOMPARE(TileArea::rectangle({0, 0, 1, 1}).tileCount(TileArea::kMaximumZoom + 1), 0);
     }

@@ -100,6 +100,8 @@ ApplicationWindow {
                         offlineMaps: window.offlineMaps
                         routeModel: window.missions.document.model
                         map: window.activeMap
+                        // Drawn on the mission map (its zones' polygon tool); the dialog comes back after.
+                        onDrawRequested: { window.showPage(1); missionPage.drawArea() }
                     }
                 }
             }
@@ -176,6 +178,10 @@ ApplicationWindow {
             orthophotoOpacity: window.appSettings.orthophotoOpacity
             tilePackFile: window.offlineMaps.packFile
             tilesCacheOnly: window.offlineMaps.cacheOnly
+            offlineArea: offlineMapsDialog.item && offlineMapsDialog.item.visible ? window.offlineMaps.areaCorners : []
+            onAreaDrawn: corners => { window.offlineMaps.usePolygonArea(corners); offlineMapsDialog.item.open() }
+            onAreaRectangleDrawn: (corner, opposite) => { window.offlineMaps.useRectangleArea(corner, opposite); offlineMapsDialog.item.open() }
+            onAreaDrawingCancelled: offlineMapsDialog.item.open()
         }
         TelemetryPage {
             id: telemetryPage

@@ -21,7 +21,7 @@ Page {
     readonly property AbstractItemModel routeModel: doc.model
     readonly property ItemSelectionModel selectionModel: doc.selection
     required property AbstractItemModel vehicleModel // the fleet: where the vehicles are while planning
-    property string tool: ""               // "" or "scan" (drawing an area-scan polygon)
+    property string tool: ""               // "", "scan" (an area-scan figure), "zonePolygon", "zoneCircle" or "offlineArea"
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
     property string mbtilesFile: ""
@@ -41,6 +41,23 @@ Page {
     property alias zonePanel: zonePanel
     // Ctrl+Z goes to the zone editor while the zone panel is open (zones are not part of the route).
     readonly property bool zoneEditing: zonePanel.visible
+    // The tools that click a polygon's corners into polygonDraft: a zone, or an offline maps area.
+    readonly property bool drawingPolygon: tool === "zonePolygon" || tool === "offlineArea"
+    property var offlineArea: []   // the offline maps area (QGeoCoordinate corners), shown while it is chosen
+
+    // The offline maps area, drawn with the zones' polygon tool (or Shift+drag for a rectangle);
+    // what is drawn goes out through these signals: the page does not choose areas itself.
+    signal areaDrawn(var corners)
+    signal areaRectangleDrawn(var corner, var opposite)
+    signal areaDrawingCancelled()
+    function drawArea() { polygonDraft.clear(); page.tool = "offlineArea" }
+    function finishArea() {
+        const corners = polygonDraft.coordinates()
+        polygonDraft.clear()
+        page.tool = ""
+        page.areaDrawn(corners)
+    }
+    function cancelArea() { polygonDraft.clear(); page.tool = ""; page.areaDrawingCancelled() }
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
     // `var`: the editor's tools are plain JS objects (name, algorithm, figure, minimumPoints).
@@ -56,11 +73,11 @@ Page {
     }
 
     CoordinateListModel { id: scanDraft }
-    CoordinateListModel { id: zoneDraft }   // the corners of a zone being drawn
+    CoordinateListModel { id: polygonDraft }   // the corners of a zone (or an offline area) being drawn
 
     function finishZone() {
-        page.airspace.editor.addPolygon(zoneDraft.coordinates())
-        zoneDraft.clear()
+        page.airspace.editor.addPolygon(polygonDraft.coordinates())
+        polygonDraft.clear()
         page.tool = ""
     }
 
@@ -193,15 +210,26 @@ Page {
                 onRadiusMoved: (meters, step) => page.doc.editor.setRadius(page.doc.currentRow, meters, step)
             }
             AreaScanLayer {
+                // The offline maps area while it is chosen: read only.
+                objectName: "offlineAreaLayer"
+                anchors.fill: parent
+                map: pane.map
+                visible: page.offlineArea.length > 0 && page.tool !== "offlineArea"
+                enabled: false // clicks are for the route
+                color: "#1e88e5"
+                polygon: page.offlineArea
+            }
+            AreaScanLayer {
                 // The chosen drawn zone's corners (a circle: its centre and radius handle) and the
-                // corners of one being drawn: drag a corner, click an edge to add one, right-click to remove.
+                // corners of a polygon being drawn (a zone's red, an offline area's blue): drag a
+                // corner, click an edge to add one, right-click to remove.
                 objectName: "zoneEditLayer"
                 anchors.fill: parent
                 map: pane.map
-                color: "#d32f2f"
-                polygonModel: page.tool === "zonePolygon" ? zoneDraft : null
-                polygon: page.tool === "zonePolygon" ? [] : page.airspace.editor.figure
-                radius: page.tool === "zonePolygon" ? 0 : page.airspace.editor.radius
+                color: page.tool === "offlineArea" ? "#1e88e5" : "#d32f2f"
+                polygonModel: page.drawingPolygon ? polygonDraft : null
+                polygon: page.drawingPolygon ? [] : page.airspace.editor.figure
+                radius: page.drawingPolygon ? 0 : page.airspace.editor.radius
                 editable: page.tool === "" && page.airspace.selectedCustom >= 0
                 onVertexMoved: (index, coordinate, step) => page.airspace.editor.moveVertex(page.airspace.selectedCustom, index, coordinate, step)
                 onEdgeClicked: (index, coordinate, modifiers) => page.airspace.editor.insertVertex(page.airspace.selectedCustom, index + 1, coordinate)
@@ -231,8 +259,8 @@ Page {
                 function onClicked(coordinate, modifiers) {
                     if (modifiers !== Qt.NoModifier)
                         return
-                    if (page.tool === "zonePolygon") {
-                        zoneDraft.append(coordinate.latitude, coordinate.longitude)
+                    if (page.drawingPolygon) {
+                        polygonDraft.append(coordinate.latitude, coordinate.longitude)
                     } else if (page.tool === "zoneCircle") {
                         page.airspace.editor.addCircle(coordinate)
                         page.tool = ""
@@ -243,7 +271,16 @@ Page {
                     } else
                         page.doc.editor.addWaypoint(coordinate)
                 }
-                function onAreaSelected(rect, modifiers) { routeLayer.selectInRect(rect, modifiers) }
+                function onAreaSelected(rect, modifiers) {
+                    if (page.tool !== "offlineArea") {
+                        routeLayer.selectInRect(rect, modifiers)
+                        return
+                    }
+                    polygonDraft.clear()
+                    page.tool = ""
+                    page.areaRectangleDrawn(pane.map.toCoordinate(Qt.point(rect.x, rect.y)),
+                                           pane.map.toCoordinate(Qt.point(rect.x + rect.width, rect.y + rect.height)))
+                }
             }
             ToolButton {
                 objectName: "zonesButton"
@@ -270,9 +307,31 @@ Page {
                 airspace: page.airspace
                 sharing: page.zoneSharing
                 tool: page.tool
-                draftCount: zoneDraft.count
-                onToolRequested: tool => { zoneDraft.clear(); page.tool = tool }
+                draftCount: polygonDraft.count
+                onToolRequested: tool => { polygonDraft.clear(); page.tool = tool }
                 onFinishRequested: page.finishZone()
+            }
+            Frame {
+                // Drawing the offline maps area (the Offline maps dialog comes back after).
+                objectName: "offlineAreaBar"
+                visible: page.tool === "offlineArea"
+                anchors.top: parent.top
+                anchors.horizontalCenter: parent.horizontalCenter
+                anchors.topMargin: pane.controlsTop
+                RowLayout {
+                    Label { text: qsTr("Click the corners (%1 so far), or Shift+drag a box").arg(polygonDraft.count) }
+                    Button {
+                        objectName: "finishAreaButton"
+                        text: qsTr("Done")
+                        enabled: polygonDraft.count >= 3
+                        onClicked: page.finishArea()
+                    }
+                    Button {
+                        objectName: "cancelAreaButton"
+                        text: qsTr("Cancel")
+                        onClicked: page.cancelArea()
+                    }
+                }
             }
             Frame {
                 visible: page.tool === "scan"

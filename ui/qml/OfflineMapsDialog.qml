@@ -3,7 +3,8 @@ import QtQuick.Controls
 import QtQuick.Layouts
 import Sortie.Ui
 
-// Takes the web map offline: the area (the open route with a margin, or the map's view), the zoom
+// Takes the web map offline: the area (the open route with a margin, the map's view, or one drawn
+// on the map: drawRequested, the window draws it and opens the dialog again), the zoom
 // range, the tile count and size before starting, the download with its progress, and whether the
 // map reads the pack only. OfflineMaps (core/maptiles) decides and downloads; this is a view.
 Dialog {
@@ -11,12 +12,16 @@ Dialog {
     required property OfflineMaps offlineMaps
     required property AbstractItemModel routeModel   // the open route (latitude/longitude, polygon roles)
     required property MapView map                    // the map whose view can be the area
+    signal drawRequested()                           // the operator wants to draw the area on the map
 
     objectName: "offlineMapsDialog"
     title: qsTr("Offline maps")
     modal: true
     parent: Overlay.overlay
-    anchors.centerIn: parent
+    // At the window's right (over the route panel): the map's left part, where an area was just
+    // drawn, stays in sight with the area on it.
+    x: parent ? Math.max(0, parent.width - width - 20) : 0
+    y: parent ? Math.max(0, (parent.height - height) / 2) : 0
     width: Math.min(parent ? parent.width - 80 : 600, 600)
     standardButtons: Dialog.Close
 
@@ -53,11 +58,20 @@ Dialog {
                 onValueModified: dialog.offlineMaps.marginMetres = value
             }
             Label { text: qsTr("m around it") }
+        }
+        RowLayout {
             Button {
                 objectName: "viewAreaButton"
                 text: qsTr("The map's view")
                 onClicked: dialog.offlineMaps.useViewArea(dialog.map.toCoordinate(Qt.point(0, dialog.map.height)),
                                                          dialog.map.toCoordinate(Qt.point(dialog.map.width, 0)))
+            }
+            Button {
+                objectName: "drawAreaButton"
+                text: qsTr("Draw an area")
+                onClicked: { dialog.close(); dialog.drawRequested() }
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Click its corners on the map, or Shift+drag a box")
             }
         }
         Label {
