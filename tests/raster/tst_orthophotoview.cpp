@@ -306,16 +306,18 @@ Item {
         // Qt Quick's dialog lists the folder in the background: the chosen entry is picked in the list,
         // as a click on it does (it becomes the list's current item).
         const bool folders = QLatin1String(c.selection) == QLatin1String("selectedFolder");
-        QQuickItem *view = nullptr;
-        QTRY_VERIFY((view = visualChild(scene.view().contentItem(), folders ? QStringLiteral("folderDialogListView") : QStringLiteral("fileDialogListView")))
-                    && view->property("count").toInt() > 0);
+        // The listing may still show the previous case's folder: wait for the chosen entry itself.
         const QString delegateName = folders ? QStringLiteral("folderDialogDelegate%1") : QStringLiteral("fileDialogDelegate%1");
         const QUrl chosenUrl = QUrl::fromLocalFile(c.chosen);
         QQuickItem *chosenEntry = nullptr;
-        for (int i = 0; i < view->property("count").toInt() && !chosenEntry; ++i)
-            if (QQuickItem *entry = visualChild(view, delegateName.arg(i)); entry && entry->property("file").toUrl() == chosenUrl)
-                chosenEntry = entry;
-        QVERIFY2(chosenEntry, qPrintable(c.chosen));
+        const auto findChosen = [&] {
+            QQuickItem *view = visualChild(scene.view().contentItem(), folders ? QStringLiteral("folderDialogListView") : QStringLiteral("fileDialogListView"));
+            for (int i = 0; view && i < view->property("count").toInt() && !chosenEntry; ++i)
+                if (QQuickItem *entry = visualChild(view, delegateName.arg(i)); entry && entry->property("file").toUrl() == chosenUrl)
+                    chosenEntry = entry;
+            return chosenEntry != nullptr;
+        };
+        QTRY_VERIFY2(findChosen(), qPrintable(c.chosen));
         QVERIFY(QMetaObject::invokeMethod(chosenEntry, "clicked"));
         QVERIFY(QMetaObject::invokeMethod(picker, "accept"));
         QTRY_VERIFY(!picker->property("visible").toBool());
