@@ -92,11 +92,18 @@ void Translations::apply()
         QCoreApplication::installTranslator(sortie.get());
         m_sortie = std::move(sortie);
     }
+    // Qt's own words (a dialog's "Cancel"): Debian's qt6-translations-l10n. Without them those stay
+    // English in a translated UI, which is said in the log, not hidden.
     auto qt = std::make_unique<QTranslator>();
-    if (locale.language() != QLocale::English
-        && qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"), QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
-        QCoreApplication::installTranslator(qt.get());
-        m_qt = std::move(qt);
+    const QString qtFolder = QLibraryInfo::path(QLibraryInfo::TranslationsPath);
+    if (locale.language() != QLocale::English) {
+        if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"), qtFolder)) {
+            QCoreApplication::installTranslator(qt.get());
+            m_qt = std::move(qt);
+        } else if (m_sortie) { // a language Sortie speaks: its dialogs would mix in English
+            qCWarning(lcTranslations).noquote() << "Qt's own translation qtbase_" + locale.name() + ".qm is not in" << qtFolder
+                                                << "(install qt6-translations-l10n): Qt's dialog buttons stay English";
+        }
     }
     // Numbers and dates follow the words: a German UI writes 12,5 m. Without a translation for the
     // language asked for, the words are English, and so are the numbers, unless the system's
