@@ -32,15 +32,18 @@ QString textOf(test::ClientWindow &client, const char *name)
     return item ? item->property("text").toString() : QStringLiteral("<no %1>").arg(QString::fromLatin1(name));
 }
 
-// Every text shown under an item (a list's rows).
+// Every text shown under an item (a list's rows: delegates are its visual children).
 QStringList textsUnder(QObject *root)
 {
     QStringList texts;
-    if (!root)
+    auto *item = qobject_cast<QQuickItem *>(root);
+    if (!item)
         return texts;
-    for (QQuickItem *item : root->findChildren<QQuickItem *>())
-        if (const QVariant text = item->property("text"); text.isValid() && !text.toString().isEmpty())
+    for (QQuickItem *child : item->childItems()) {
+        if (const QVariant text = child->property("text"); text.isValid() && !text.toString().isEmpty())
             texts << text.toString();
+        texts << textsUnder(child);
+    }
     return texts;
 }
 
@@ -92,6 +95,12 @@ private slots:
     }
 
     void cleanupTestCase() { m_client.reset(); }
+    // A check that failed half-way leaves English behind it, not German, for the next.
+    void cleanup()
+    {
+        if (m_client)
+            m_client->settings().setLanguage(QStringLiteral("en"));
+    }
 
     // System, English and each compiled translation, named in its own language.
     void theSelectorListsTheLanguages()
@@ -158,7 +167,7 @@ private slots:
         QVERIFY2(m_client->missions().message().startsWith(QLatin1String("Opened ")), qPrintable(m_client->missions().message()));
         const QString opened = m_client->missions().message();
         const QString version = opened.section(QLatin1String("(version "), 1).chopped(2);
-        QTRY_VERIFY(textOf(*m_client, "connectionStateLabel").startsWith(QLatin1String("Ready — ")));
+        QTRY_VERIFY2(textOf(*m_client, "connectionStateLabel").startsWith(QStringLiteral("Ready — ")), qPrintable(textOf(*m_client, "connectionStateLabel")));
         QCOMPARE(textOf(*m_client, "attributionLabel"), QStringLiteral("Land outlines: Natural Earth"));
         m_client->showPage(2);
         QCOMPARE(m_client->find<QObject>(QStringLiteral("plotFieldPicker"))->property("displayText").toString(), QStringLiteral("Ground speed"));
@@ -167,7 +176,7 @@ private slots:
 
         m_client->settings().setLanguage(QStringLiteral("de"));
         QTRY_COMPARE(textOf(*m_client, "loginTab"), QStringLiteral("Anmeldung"));
-        QTRY_VERIFY2(textOf(*m_client, "connectionStateLabel").startsWith(QLatin1String("Bereit — ")), qPrintable(textOf(*m_client, "connectionStateLabel")));
+        QTRY_VERIFY2(textOf(*m_client, "connectionStateLabel").startsWith(QStringLiteral("Bereit — ")), qPrintable(textOf(*m_client, "connectionStateLabel")));
         QVERIFY2(textOf(*m_client, "connectionStateLabel").contains(QLatin1String(" auf ")), qPrintable(textOf(*m_client, "connectionStateLabel")));
         QTRY_COMPARE(m_client->find<QObject>(QStringLiteral("plotFieldPicker"))->property("displayText").toString(),
                      QStringLiteral("Geschwindigkeit über Grund"));
@@ -180,7 +189,7 @@ private slots:
                  qPrintable(germanHeadline));
 
         m_client->settings().setLanguage(QStringLiteral("en"));
-        QTRY_VERIFY(textOf(*m_client, "connectionStateLabel").startsWith(QLatin1String("Ready — ")));
+        QTRY_VERIFY2(textOf(*m_client, "connectionStateLabel").startsWith(QStringLiteral("Ready — ")), qPrintable(textOf(*m_client, "connectionStateLabel")));
         QCOMPARE(m_client->missions().message(), opened);
         QCOMPARE(profile->property("headline").toString(), englishHeadline);
         QTRY_COMPARE(textOf(*m_client, "attributionLabel"), QStringLiteral("Land outlines: Natural Earth"));

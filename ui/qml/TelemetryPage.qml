@@ -374,7 +374,8 @@ Page {
                     model: plot.fieldChoices
                     textRole: "name"
                     valueRole: "key"
-                    currentIndex: Math.max(0, plot.availableFields().indexOf("groundSpeed"))
+                    // Read with the model, so that a re-worded model (a language change) chooses it again.
+                    currentIndex: model.length > 0 ? Math.max(0, plot.availableFields().indexOf("groundSpeed")) : -1
                 }
                 Button {
                     objectName: "plotAddButton"

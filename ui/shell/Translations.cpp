@@ -1,8 +1,11 @@
 #include "Translations.h"
 
 #include "AppSettings.h"
+#include "StandardButtonWords.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
+#include <QWindow>
 #include <QDir>
 #include <QLibraryInfo>
 #include <QLoggingCategory>
@@ -115,6 +118,9 @@ void Translations::apply()
     qCInfo(lcTranslations).noquote() << "language" << (m_requested.isEmpty() ? QStringLiteral("(system)") : m_requested) << "->"
                                      << m_active << (m_qt ? "with Qt's translations" : "without Qt's translations");
     m_engine.retranslate();
+    // What retranslate() does not reach: the standard buttons of the dialogs already made.
+    for (QWindow *window : QGuiApplication::topLevelWindows())
+        rewordStandardButtons(window);
     emit changed();
 }
 
