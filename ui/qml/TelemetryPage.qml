@@ -385,13 +385,6 @@ Page {
                     ToolTip.visible: hovered
                     ToolTip.text: qsTr("Plot this field too")
                 }
-                ComboBox {
-                    id: windowPicker
-                    objectName: "plotWindowPicker"
-                    implicitContentWidthPolicy: ComboBox.WidestText
-                    model: [qsTr("1 min"), qsTr("5 min"), qsTr("30 min")]
-                    currentIndex: 1
-                }
             }
             Flow {
                 objectName: "plotFieldChips"
@@ -421,6 +414,15 @@ Page {
                     onToggled: plot.compare = checked
                     ToolTip.visible: hovered
                     ToolTip.text: qsTr("Compare these fields across every vehicle")
+                }
+                // Here rather than beside the field picker: that row keeps its width for a field's
+                // name, which a longer language lengthens.
+                ComboBox {
+                    id: windowPicker
+                    objectName: "plotWindowPicker"
+                    implicitContentWidthPolicy: ComboBox.WidestText
+                    model: [qsTr("1 min"), qsTr("5 min"), qsTr("30 min")]
+                    currentIndex: 1
                 }
             }
             TelemetryPlot {
