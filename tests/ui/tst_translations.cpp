@@ -180,6 +180,11 @@ private slots:
         QVERIFY2(textOf(*m_client, "connectionStateLabel").contains(QLatin1String(" auf ")), qPrintable(textOf(*m_client, "connectionStateLabel")));
         QTRY_COMPARE(m_client->find<QObject>(QStringLiteral("plotFieldPicker"))->property("displayText").toString(),
                      QStringLiteral("Geschwindigkeit über Grund"));
+        // The picker shows the name and adds the key: the plot and its chip get "groundSpeed", worded.
+        QMetaObject::invokeMethod(m_client->find<QObject>(QStringLiteral("plotAddButton")), "clicked");
+        QTRY_VERIFY(m_client->find<QObject>(QStringLiteral("telemetryPlot"))->property("fields").toStringList().contains(QStringLiteral("groundSpeed")));
+        QTRY_VERIFY2(textsUnder(m_client->find<QObject>(QStringLiteral("plotFieldChips"))).contains(QStringLiteral("Geschwindigkeit über Grund  ×")),
+                     qPrintable(textsUnder(m_client->find<QObject>(QStringLiteral("plotFieldChips"))).join(QLatin1String(" | "))));
         QTRY_VERIFY2(textsUnder(m_client->find<QObject>(QStringLiteral("vehicleList"))).filter(QRegularExpression(QStringLiteral("·\\s+verbunden$"))).size() >= 3,
                      qPrintable(textsUnder(m_client->find<QObject>(QStringLiteral("vehicleList"))).join(QLatin1String(" | "))));
         QCOMPARE(m_client->missions().message(), QStringLiteral("%1 geöffnet (Version %2).").arg(m_client->missions().routeName(), version));
