@@ -24,6 +24,7 @@ packages=(
   clang libclang-rt-14-dev
   llvm-14  # llvm-symbolizer: the sanitizer scripts need it to match the leak suppressions
   xvfb xauth  # scripts/bench-idle.sh: the client on a virtual X display (a benchmark, not a test)
+  qt6-translations-l10n  # Qt's own words (qtbase_<lang>.qm: a dialog's "Cancel") in the operator's language; tst_translations checks them
   qt6-l10n-tools  # lupdate and lrelease: the translations (resources/i18n) compiled into the program
   python3  # the translation checks run by ctest (tests/i18n: visible strings, complete .ts files)
 )

@@ -1,5 +1,6 @@
 #include "ConnectionController.h"
 
+#include "LanguageChange.h"
 #include "ServerAddress.h"
 
 #include <QMetaEnum>
@@ -15,6 +16,12 @@ ConnectionController::ConnectionController(HciSession *session, QObject *parent)
 {
     connect(this, &ConnectionController::stateChanged, this, &ConnectionController::statusDetailChanged);
     connect(this, &ConnectionController::detailChanged, this, &ConnectionController::statusDetailChanged);
+    connect(this, &ConnectionController::stateChanged, this, &ConnectionController::stateTextChanged);
+    // The state's words and "user at server" are worded as read: a language change re-reads them.
+    i18n::onLanguageChange(this, [this] {
+        emit stateTextChanged();
+        emit statusDetailChanged();
+    });
     connect(session, &HciSession::stateChanged, this, [this](HciSession::State state) {
         if (state == HciSession::State::Ready || state == HciSession::State::Disconnected)
             setDetail({});
@@ -47,6 +54,21 @@ QString ConnectionController::stateName() const
     if (!m_session)
         return QStringLiteral("Disconnected");
     return QString::fromLatin1(QMetaEnum::fromType<HciSession::State>().valueToKey(int(m_session->state())));
+}
+
+QString ConnectionController::stateText() const
+{
+    if (!m_session)
+        return tr("Disconnected");
+    switch (m_session->state()) {
+    case HciSession::State::Disconnected: return tr("Disconnected");
+    case HciSession::State::Connecting: return tr("Connecting");
+    case HciSession::State::Authorizing: return tr("Authorizing");
+    case HciSession::State::LoggingIn: return tr("Logging in");
+    case HciSession::State::Ready: return tr("Ready");
+    case HciSession::State::Reconnecting: return tr("Reconnecting");
+    }
+    return stateName();
 }
 
 bool ConnectionController::isBusy() const

@@ -26,6 +26,8 @@ class ConnectionController : public QObject
     // What the status bar says after the state: the detail when there is one, else "user at server"
     // once ready, else nothing.
     Q_PROPERTY(QString statusDetail READ statusDetail NOTIFY statusDetailChanged)
+    // The state in the operator's words ("Ready", "Bereit"): `state` stays the key views compare.
+    Q_PROPERTY(QString stateText READ stateText NOTIFY stateTextChanged)
 
 public:
     explicit ConnectionController(hci::HciSession *session, QObject *parent = nullptr);
@@ -40,6 +42,7 @@ public:
     QString errorKind() const { return m_errorKind; }
     QString detail() const { return m_detail; }
     QString statusDetail() const;
+    QString stateText() const;
 
     // Checks the input and starts logging in; false (with errorString) when the input is wrong.
     Q_INVOKABLE bool connectToServer(const QString &server, const QString &user, const QString &password);
@@ -53,6 +56,7 @@ signals:
     void errorChanged();
     void detailChanged();
     void statusDetailChanged();
+    void stateTextChanged();
     void ready();
 
 private:

@@ -9,6 +9,7 @@
 #include "HciRouteMapper.h"
 #include "HciSession.h"
 #include "HciSubscription.h"
+#include "LanguageChange.h"
 #include "Messages.pb.h"
 #include "RouteValidator.h"
 #include "UploadReview.h"
@@ -31,6 +32,10 @@ MissionController::MissionController(hci::HciClient *client, QObject *parent)
     connect(m_document.undoStack(), &QUndoStack::indexChanged, this, &MissionController::routeChanged);
     connect(this, &MissionController::routeChanged, this, &MissionController::canSaveChanged);
     connect(&m_document, &RouteDocument::modifiedChanged, this, &MissionController::canSaveChanged);
+    i18n::onLanguageChange(this, [this] {
+        if (m_messageWords)
+            setMessage(m_messageWords);
+    });
     connect(&m_document, &RouteDocument::loaded, this, [this] { m_opened = m_document.route(); });
     connect(&m_preparation, &RoutePreparation::saveRequested, this, &MissionController::save);
     connect(this, &MissionController::saved, &m_preparation, &RoutePreparation::routeSaved);
@@ -118,10 +123,11 @@ void MissionController::openRoute(int routeId)
             return setMessage(tr("The route cannot be edited here: %1").arg(imported.error().toString()));
         setConflict(nullptr, {});
         m_document.load(imported->route);
-        QString text = tr("Opened %1 (version %2).").arg(routeName()).arg(reply->response<pb::GetObjectResponse>().object().route().version());
-        if (!imported->notices.isEmpty())
-            text += QLatin1Char(' ') + imported->notices.join(QLatin1Char(' '));
-        setMessage(text);
+        // The import's notices are sentences already made: they keep their language.
+        const QString notices = imported->notices.isEmpty() ? QString() : QLatin1Char(' ') + imported->notices.join(QLatin1Char(' '));
+        setMessage([name = routeName(), version = reply->response<pb::GetObjectResponse>().object().route().version(), notices] {
+            return tr("Opened %1 (version %2).").arg(name).arg(version) + notices;
+        });
         emit routeChanged();
         emit routeOpened();
     });
@@ -206,7 +212,7 @@ void MissionController::written(const HciReply &reply, int id)
         return setMessage(tr("Saved, but the server's answer cannot be read back: %1").arg(imported.error().toString()));
     m_document.load(imported->route);
     setConflict(nullptr, {});
-    setMessage(tr("Saved %1 (version %2).").arg(routeName()).arg(stored.version()));
+    setMessage([name = routeName(), version = stored.version()] { return tr("Saved %1 (version %2).").arg(name).arg(version); });
     emit routeChanged();
     emit saved(stored.version());
     refresh();
@@ -231,7 +237,7 @@ void MissionController::takeTheirs()
     setConflict(nullptr, {});
     m_document.editor()->replaceRoute(std::move(theirs), tr("Take the server's version"));
     m_document.undoStack()->setClean(); // what the server has: nothing unsaved
-    setMessage(tr("This is the server's copy now. Undo brings your edits back."));
+    setMessage([] { return tr("This is the server's copy now. Undo brings your edits back."); });
     emit routeChanged();
 }
 
@@ -243,7 +249,7 @@ void MissionController::routeEvent(const pb::EventWrapper &event)
     if (m_saving || !origin || change.objectid() != routeId())
         return;
     if (change.modificationtype() == pb::MT_DELETE) {
-        setMessage(tr("This route was deleted on the server. Your copy stays open."));
+        setMessage([] { return tr("This route was deleted on the server. Your copy stays open."); });
         return;
     }
     const pb::Route &theirs = change.object().route();
@@ -253,7 +259,7 @@ void MissionController::routeEvent(const pb::EventWrapper &event)
         // Nothing of ours to lose: follow the server.
         if (auto imported = routeFromHci(theirs)) {
             m_document.load(imported->route);
-            setMessage(tr("Updated from the server (version %1).").arg(theirs.version()));
+            setMessage([version = theirs.version()] { return tr("Updated from the server (version %1).").arg(version); });
             emit routeChanged();
         }
         return;
@@ -286,7 +292,15 @@ void MissionController::setProgress(int value, int maximum)
 
 void MissionController::setMessage(const QString &message)
 {
+    m_messageWords = nullptr;
     m_message = message;
+    emit messageChanged();
+}
+
+void MissionController::setMessage(std::function<QString()> words)
+{
+    m_message = words();
+    m_messageWords = std::move(words);
     emit messageChanged();
 }
 

@@ -98,6 +98,9 @@ private:
     void setActivity(const QString &activity);
     void setProgress(int value, int maximum);
     void setMessage(const QString &message);
+    // A message worded again when the operator's language changes ("Opened … (version n)"): its
+    // words are made by `words`, from values it captured.
+    void setMessage(std::function<QString()> words);
     void setConflict(const com::ugcs::ucs::proto::Route *theirs, const QString &text);
     void writeLocked(const com::ugcs::ucs::proto::Route &route);
     void written(const hci::HciReply &reply, int routeId);
@@ -118,6 +121,7 @@ private:
     int m_progressValue = 0;
     int m_progressMaximum = 0;
     QString m_message;
+    std::function<QString()> m_messageWords; // how m_message was worded, when it can be again
     hci::HciSubscription *m_routeEvents = nullptr;
     bool m_saving = false; // our own save's change event is not someone else's
 };

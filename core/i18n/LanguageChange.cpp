@@ -7,33 +7,43 @@
 namespace sortie::i18n {
 
 namespace {
-// A child of the owner (so it goes with it) that watches the application's events.
-class Watcher : public QObject
+// One filter on the application for every listener (an application's event filter sees each event
+// of the program, so one, not one per listener), made on first use as the application's child and
+// found there again: it goes with the application, and a new application gets its own.
+class Hub : public QObject
 {
+    Q_OBJECT
 public:
-    Watcher(QObject *owner, std::function<void()> refresh)
-        : QObject(owner)
-        , m_refresh(std::move(refresh))
+    static Hub *of(QCoreApplication *app)
     {
-        if (QCoreApplication *app = QCoreApplication::instance())
-            app->installEventFilter(this);
+        static const QString kName = QStringLiteral("sortie-i18n-language-change");
+        if (auto *hub = app->findChild<Hub *>(kName, Qt::FindDirectChildrenOnly))
+            return hub;
+        auto *hub = new Hub(app);
+        hub->setObjectName(kName);
+        app->installEventFilter(hub);
+        return hub;
     }
 
     bool eventFilter(QObject *watched, QEvent *event) override
     {
-        if (event->type() == QEvent::LanguageChange && watched == QCoreApplication::instance())
-            m_refresh();
+        if (event->type() == QEvent::LanguageChange && watched == parent())
+            emit changed();
         return false;
     }
 
+signals:
+    void changed();
+
 private:
-    std::function<void()> m_refresh;
+    using QObject::QObject;
 };
 } // namespace
 
 void onLanguageChange(QObject *owner, std::function<void()> refresh)
 {
-    new Watcher(owner, std::move(refresh));
+    if (QCoreApplication *app = QCoreApplication::instance())
+        QObject::connect(Hub::of(app), &Hub::changed, owner, std::move(refresh)); // gone with the owner
 }
 
 void refreshOnLanguageChange(QAbstractItemModel *model)
@@ -48,3 +58,5 @@ void refreshOnLanguageChange(QAbstractItemModel *model)
 }
 
 } // namespace sortie::i18n
+
+#include "LanguageChange.moc"

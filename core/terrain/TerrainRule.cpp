@@ -43,10 +43,11 @@ std::vector<ValidationIssue> terrainIssues(const ProfileRoute &route, const Terr
         const QString who = last == i ? waypointName(route, i)
                                       : QCoreApplication::translate("TerrainRule", "%1 to %2").arg(waypointName(route, i), waypointName(route, last));
         out.push_back({Severity::Error, QStringLiteral("terrain-agl-no-data"),
-                       QCoreApplication::translate("TerrainRule", "%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height "
-                                      "above sea level is unknown.")
-                           .arg(who, home ? QStringLiteral("home") : QCoreApplication::translate("TerrainRule", "the ground"),
-                                home ? QCoreApplication::translate("TerrainRule", "at home") : QStringLiteral("there"), tried),
+                       (home ? QCoreApplication::translate("TerrainRule", "%1: the altitude is above home, but there is no terrain data at home "
+                                                                   "(tried: %2), so the height above sea level is unknown.")
+                             : QCoreApplication::translate("TerrainRule", "%1: the altitude is above the ground, but there is no terrain data there "
+                                                                   "(tried: %2), so the height above sea level is unknown."))
+                           .arg(who, tried),
                        rowOf(route, int(i))});
         i = last + 1;
     }

@@ -5,9 +5,9 @@
 // included, is lengthened. When the real German has landed it is judged too. The renderings are
 // saved beside the test's binary (longest/).
 // What VisualCheck does not judge, and the pseudo renderings show: a text cut at the side by a
-// clipping panel, and a frame's content running past the frame's border (in the pseudo-language,
-// the login page's title and "remember" box). The mission panel's bulk-edit fields flow on to a
-// second line, so its Upload button stays inside in German; the login frame does not grow yet.
+// clipping panel, and a frame's content running past the frame's border (the login frame's title
+// and "remember" box are checked here: the frame grows with its words). The mission panel's
+// bulk-edit fields flow on to a second line, so its Upload button stays inside in German.
 #include "ClientWindow.h"
 #include "QuickScene.h"
 #include "VehicleLayer.h"
@@ -16,6 +16,7 @@
 #include <QDir>
 #include <QFile>
 #include <QQmlEngine>
+#include <QQuickItem>
 #include <QRegularExpression>
 #include <QTest>
 #include <QTranslator>
@@ -74,6 +75,27 @@ class TestLongestLanguage : public QObject
     std::unique_ptr<test::ClientWindow> m_client;
     PseudoTranslator m_pseudo;
 
+    // VisualCheck knows a popup's frame, not a Frame's: the login frame's title and "remember" box
+    // are checked against its border here.
+    void loginFrameHoldsItsWords(const QString &file)
+    {
+        auto *frame = m_client->find<QQuickItem>(QStringLiteral("loginFrame"));
+        QVERIFY(frame);
+        const QRectF inside = frame->mapRectToScene(QRectF(0, 0, frame->width(), frame->height()));
+        for (const char *name : {"loginTitle", "rememberCheck"}) {
+            auto *item = m_client->find<QQuickItem>(QString::fromLatin1(name));
+            QVERIFY(item);
+            // What its words need: a label's widest line (it wraps), a check box's whole text (it elides).
+            const bool wraps = qstrcmp(name, "loginTitle") == 0;
+            const qreal needed = wraps ? item->property("contentWidth").toReal() : item->implicitWidth();
+            const QRectF at = item->mapRectToScene(QRectF(0, 0, std::max(needed, item->width()), item->height()));
+            QVERIFY2(inside.contains(at) && needed <= item->width() + 0.5,
+                     qPrintable(QStringLiteral("%1: %2 needs %3 px, has %4, at %5..%6 in a frame %7..%8")
+                                    .arg(file, QString::fromLatin1(name)).arg(needed).arg(item->width())
+                                    .arg(at.left()).arg(at.right()).arg(inside.left()).arg(inside.right())));
+        }
+    }
+
     void judgeThePages(const QString &language)
     {
         QQuickWindow *window = m_client->window();
@@ -86,6 +108,8 @@ class TestLongestLanguage : public QObject
             window->grabWindow().save(file);
             QVERIFY2(test::lastInspectedTextCount() > 3, qPrintable(file + QStringLiteral(": hardly any text seen")));
             QVERIFY2(problems.isEmpty(), qPrintable(file + QStringLiteral(":\n  ") + problems.join(QStringLiteral("\n  "))));
+            if (page == 0)
+                loginFrameHoldsItsWords(file);
         }
     }
 

@@ -183,6 +183,7 @@ private slots:
         QVERIFY(label);
         QCOMPARE(label->property("text").toString(), QStringLiteral("Disconnected"));
         m_window->setProperty("connectionState", QStringLiteral("Reconnecting"));
+        m_window->setProperty("connectionStateText", QStringLiteral("Reconnecting")); // the controller's words, stood in for
         m_window->setProperty("connectionDetail", QStringLiteral("attempt 2"));
         QCOMPARE(label->property("text").toString(), QStringLiteral("Reconnecting — attempt 2"));
     }

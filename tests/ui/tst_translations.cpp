@@ -10,6 +10,10 @@
 #include "VehicleLayer.h"
 
 #include <QFile>
+#include <QLibraryInfo>
+#include <QQmlContext>
+#include <QQmlExpression>
+#include <QQuickItem>
 #include <QLocale>
 #include <QRegularExpression>
 #include <QTest>
@@ -26,6 +30,31 @@ QString textOf(test::ClientWindow &client, const char *name)
 {
     QObject *item = client.find<QObject>(QString::fromLatin1(name));
     return item ? item->property("text").toString() : QStringLiteral("<no %1>").arg(QString::fromLatin1(name));
+}
+
+// Every text shown under an item (a list's rows: delegates are its visual children).
+QStringList textsUnder(QObject *root)
+{
+    QStringList texts;
+    auto *item = qobject_cast<QQuickItem *>(root);
+    if (!item)
+        return texts;
+    for (QQuickItem *child : item->childItems()) {
+        if (const QVariant text = child->property("text"); text.isValid() && !text.toString().isEmpty())
+            texts << text.toString();
+        texts << textsUnder(child);
+    }
+    return texts;
+}
+
+// The text of a dialog's standard button, as the dialog's own QML reads it.
+QString standardButtonText(QObject *dialog, const char *button)
+{
+    if (!dialog)
+        return QStringLiteral("<no dialog>");
+    QQmlExpression expression(qmlContext(dialog), dialog, QStringLiteral("footer.standardButton(Dialog.%1).text").arg(QLatin1String(button)));
+    const QVariant text = expression.evaluate();
+    return expression.hasError() ? expression.error().toString() : text.toString();
 }
 
 QStringList codesOf(const QVariantList &languages)
@@ -66,6 +95,12 @@ private slots:
     }
 
     void cleanupTestCase() { m_client.reset(); }
+    // A check that failed half-way leaves English behind it, not German, for the next.
+    void cleanup()
+    {
+        if (m_client)
+            m_client->settings().setLanguage(QStringLiteral("en"));
+    }
 
     // System, English and each compiled translation, named in its own language.
     void theSelectorListsTheLanguages()
@@ -115,6 +150,71 @@ private slots:
         QTRY_VERIFY2(englishAltitude.match(textOf(*m_client, "value_altitudeAmsl")).hasMatch(), qPrintable(textOf(*m_client, "value_altitudeAmsl")));
         QCOMPARE(units.formatAltitude(12.5), QStringLiteral("12.5 m"));
         QTRY_COMPARE(box->property("displayText").toString(), QStringLiteral("English"));
+    }
+
+    // Words made by C++ (a model's role, a property, what a C++ item paints) follow a language change
+    // without being made again by hand: the status line, the vehicle list's link state, the plot's
+    // field names, the route's "Opened …" line, the map's attribution, the profile's headline.
+    void cppWordsFollowTheLanguage()
+    {
+        m_client->showPage(1);
+        auto *profile = m_client->find<QObject>(QStringLiteral("elevationProfile"));
+        QVERIFY(profile);
+        QTRY_VERIFY(!profile->property("headline").toString().isEmpty());
+        const QString englishHeadline = profile->property("headline").toString();
+        QVERIFY2(englishHeadline.startsWith(QLatin1String("lowest clearance")) || englishHeadline == QLatin1String("clearance unknown"),
+                 qPrintable(englishHeadline));
+        QVERIFY2(m_client->missions().message().startsWith(QLatin1String("Opened ")), qPrintable(m_client->missions().message()));
+        const QString opened = m_client->missions().message();
+        const QString version = opened.section(QLatin1String("(version "), 1).chopped(2);
+        QTRY_VERIFY2(textOf(*m_client, "connectionStateLabel").startsWith(QStringLiteral("Ready — ")), qPrintable(textOf(*m_client, "connectionStateLabel")));
+        QCOMPARE(textOf(*m_client, "attributionLabel"), QStringLiteral("Land outlines: Natural Earth"));
+        m_client->showPage(2);
+        QCOMPARE(m_client->find<QObject>(QStringLiteral("plotFieldPicker"))->property("displayText").toString(), QStringLiteral("Ground speed"));
+        QTRY_VERIFY2(textsUnder(m_client->find<QObject>(QStringLiteral("vehicleList"))).filter(QRegularExpression(QStringLiteral("·\\s+connected$"))).size() >= 3,
+                     qPrintable(textsUnder(m_client->find<QObject>(QStringLiteral("vehicleList"))).join(QLatin1String(" | "))));
+
+        m_client->settings().setLanguage(QStringLiteral("de"));
+        QTRY_COMPARE(textOf(*m_client, "loginTab"), QStringLiteral("Anmeldung"));
+        QTRY_VERIFY2(textOf(*m_client, "connectionStateLabel").startsWith(QStringLiteral("Bereit — ")), qPrintable(textOf(*m_client, "connectionStateLabel")));
+        QVERIFY2(textOf(*m_client, "connectionStateLabel").contains(QLatin1String(" auf ")), qPrintable(textOf(*m_client, "connectionStateLabel")));
+        QTRY_COMPARE(m_client->find<QObject>(QStringLiteral("plotFieldPicker"))->property("displayText").toString(),
+                     QStringLiteral("Geschwindigkeit über Grund"));
+        // The picker shows the name and adds the key: the plot and its chip get "groundSpeed", worded.
+        QMetaObject::invokeMethod(m_client->find<QObject>(QStringLiteral("plotAddButton")), "clicked");
+        QTRY_VERIFY(m_client->find<QObject>(QStringLiteral("telemetryPlot"))->property("fields").toStringList().contains(QStringLiteral("groundSpeed")));
+        QTRY_VERIFY2(textsUnder(m_client->find<QObject>(QStringLiteral("plotFieldChips"))).contains(QStringLiteral("Geschwindigkeit über Grund  ×")),
+                     qPrintable(textsUnder(m_client->find<QObject>(QStringLiteral("plotFieldChips"))).join(QLatin1String(" | "))));
+        QTRY_VERIFY2(textsUnder(m_client->find<QObject>(QStringLiteral("vehicleList"))).filter(QRegularExpression(QStringLiteral("·\\s+verbunden$"))).size() >= 3,
+                     qPrintable(textsUnder(m_client->find<QObject>(QStringLiteral("vehicleList"))).join(QLatin1String(" | "))));
+        QCOMPARE(m_client->missions().message(), QStringLiteral("%1 geöffnet (Version %2).").arg(m_client->missions().routeName(), version));
+        QTRY_COMPARE(textOf(*m_client, "attributionLabel"), QStringLiteral("Landumrisse: Natural Earth"));
+        const QString germanHeadline = profile->property("headline").toString();
+        QVERIFY2(germanHeadline.startsWith(QLatin1String("geringster Abstand")) || germanHeadline == QLatin1String("Abstand unbekannt"),
+                 qPrintable(germanHeadline));
+
+        m_client->settings().setLanguage(QStringLiteral("en"));
+        QTRY_VERIFY2(textOf(*m_client, "connectionStateLabel").startsWith(QStringLiteral("Ready — ")), qPrintable(textOf(*m_client, "connectionStateLabel")));
+        QCOMPARE(m_client->missions().message(), opened);
+        QCOMPARE(profile->property("headline").toString(), englishHeadline);
+        QTRY_COMPARE(textOf(*m_client, "attributionLabel"), QStringLiteral("Land outlines: Natural Earth"));
+        QTRY_COMPARE(m_client->find<QObject>(QStringLiteral("plotFieldPicker"))->property("displayText").toString(), QStringLiteral("Ground speed"));
+    }
+
+    // Qt's own words come from Qt's translations (Debian's qt6-translations-l10n): in German, a
+    // dialog's Cancel button reads "Abbrechen". Without the package this fails, saying so.
+    void qtsOwnWordsFollowTheLanguage()
+    {
+        const QString qtbase = QLibraryInfo::path(QLibraryInfo::TranslationsPath) + QStringLiteral("/qtbase_de.qm");
+        if (!QFile::exists(qtbase))
+            QFAIL(qPrintable(QStringLiteral("%1 is missing: install qt6-translations-l10n (scripts/install-deps.sh)").arg(qtbase)));
+        QObject *dialog = m_client->find<QObject>(QStringLiteral("mapSourceDialog"));
+        QVERIFY(dialog);
+        QCOMPARE(standardButtonText(dialog, "Cancel"), QStringLiteral("Cancel"));
+        m_client->settings().setLanguage(QStringLiteral("de"));
+        QTRY_COMPARE(standardButtonText(dialog, "Cancel"), QStringLiteral("Abbrechen"));
+        m_client->settings().setLanguage(QStringLiteral("en"));
+        QTRY_COMPARE(standardButtonText(dialog, "Cancel"), QStringLiteral("Cancel"));
     }
 
     // The real German, compiled into the program, once it has landed: the tabs read what its

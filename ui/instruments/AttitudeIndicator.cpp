@@ -1,5 +1,7 @@
 #include "AttitudeIndicator.h"
 
+#include "LanguageChange.h"
+
 #include <QPainter>
 #include <QPainterPath>
 
@@ -23,6 +25,7 @@ AttitudeIndicator::AttitudeIndicator(QQuickItem *parent)
 {
     setAntialiasing(true);
     setImplicitSize(150, 150);
+    i18n::onLanguageChange(this, [this] { update(); }); // "no attitude" is worded as painted
 }
 
 void AttitudeIndicator::setRoll(double degrees)

@@ -1,5 +1,6 @@
 #include "FlightStatus.h"
 
+#include "LanguageChange.h"
 #include "Vehicle.h"
 
 #include <cmath>
@@ -77,6 +78,7 @@ FlightStatus::FlightStatus(QObject *parent)
     : QObject(parent)
 {
     connect(this, &FlightStatus::levelsChanged, this, &FlightStatus::refresh);
+    i18n::onLanguageChange(this, [this] { emit changed(); }); // progressText is worded as read
 }
 
 QObject *FlightStatus::vehicleObject() const

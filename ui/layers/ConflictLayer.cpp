@@ -18,8 +18,13 @@ void ConflictLayer::setConflicts(const QVariantList &conflicts)
     if (conflicts == m_conflicts)
         return;
     m_conflicts = conflicts;
+    readMarks();
+}
+
+void ConflictLayer::readMarks()
+{
     m_marks.clear();
-    for (const QVariant &v : conflicts) {
+    for (const QVariant &v : m_conflicts) {
         const QVariantMap c = v.toMap();
         const QGeoCoordinate own(c.value(QStringLiteral("latitude")).toDouble(), c.value(QStringLiteral("longitude")).toDouble());
         const QGeoCoordinate other(c.value(QStringLiteral("otherLatitude")).toDouble(), c.value(QStringLiteral("otherLongitude")).toDouble());

@@ -34,7 +34,13 @@ public:
 signals:
     void conflictsChanged();
 
+protected:
+    void onLanguageChanged() override { readMarks(); }
+
 private:
+    // The marks and their labels (worded in the current language), from m_conflicts.
+    void readMarks();
+
     struct Mark
     {
         QGeoCoordinate own, other;

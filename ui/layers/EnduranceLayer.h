@@ -41,6 +41,9 @@ public:
 signals:
     void marksChanged();
 
+protected:
+    void onLanguageChanged() override { readMarks(); }
+
 private:
     enum class Kind { PlannedChange, UnplannedChange, NoReturn };
     struct Mark

@@ -1,5 +1,6 @@
 #include "MapLayer.h"
 
+#include "LanguageChange.h"
 #include "LayerCanvas.h"
 #include "MapView.h"
 
@@ -17,6 +18,7 @@ MapLayer::MapLayer(QQuickItem *parent)
     , m_canvas(new LayerCanvas(this, [this](QPainter &painter) { paint(&painter); }))
 {
     setClip(true); // the picture reaches beyond the map
+    i18n::onLanguageChange(this, [this] { onLanguageChanged(); });
 }
 
 void MapLayer::setLabelsBelow(MapLayer *layer)

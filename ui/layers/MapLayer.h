@@ -74,6 +74,9 @@ protected:
     void relayout();
     // The picture needs a new layout for a new paintViewport: by default, polish and draw again.
     virtual void onViewportChanged();
+    // The operator's language changed: words the layer made are made again. By default, polish and
+    // draw again; a layer that words its marks elsewhere re-words them here.
+    virtual void onLanguageChanged() { relayout(); }
     void setPanMargin(int pixels);
     // The labels of `labelsBelow` in paintViewport's pixels, for this layer's LabelPlacer.
     std::vector<QRectF> labelsToKeepClearOf() const;

@@ -54,6 +54,11 @@ signals:
     void drawn();
 
 protected:
+    void onLanguageChanged() override
+    {
+        layOut();
+        repaint();
+    }
     void onViewportChanged() override;
 
 private:

@@ -1,5 +1,6 @@
 #include "MapScaleBar.h"
 
+#include "LanguageChange.h"
 #include "MapView.h"
 
 #include <QPainter>
@@ -11,6 +12,7 @@ MapScaleBar::MapScaleBar(QQuickItem *parent)
 {
     setImplicitSize(140, 26);
     setAntialiasing(true);
+    i18n::onLanguageChange(this, [this] { recompute(); }); // its label ("1 km") is worded then
 }
 
 void MapScaleBar::setMap(MapView *map)

@@ -24,6 +24,11 @@ OfflineTileSource::OfflineTileSource(QObject *parent)
     }
 }
 
+void OfflineTileSource::reword()
+{
+    setInfo(tr("Offline base map"), tr("Land outlines: Natural Earth"), minimumZoomLevel(), maximumZoomLevel());
+}
+
 OfflineTileSource::~OfflineTileSource()
 {
     m_pool.clear();

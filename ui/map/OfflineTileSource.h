@@ -25,6 +25,8 @@ public:
 
     bool isDark() const { return m_dark; }
     void setDark(bool dark);
+    // Its name and attribution in the current language (TileManager calls it on a language change).
+    void reword();
     MapPalette palette() const { return m_palette; }
 
     void requestTile(const TileKey &key) override;

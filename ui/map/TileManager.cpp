@@ -1,5 +1,7 @@
 #include "TileManager.h"
 
+#include "LanguageChange.h"
+
 #include <cmath>
 
 namespace sortie::ui {
@@ -13,6 +15,11 @@ TileManager::TileManager(QObject *parent)
 {
     connect(&m_baseMap, &TileSource::tileReady, this, &TileManager::baseMapTileReady);
     connect(&m_baseMap, &TileSource::invalidated, this, &TileManager::baseMapInvalidated);
+    // The status line and the attribution are worded as read; the base map's are worded again first.
+    i18n::onLanguageChange(this, [this] {
+        m_baseMap.reword();
+        emit statusChanged();
+    });
 }
 
 void TileManager::setSource(TileSource *source)

@@ -39,14 +39,21 @@ Page {
         }
     }
 
+    // As wide as its longest words need (a longer language widens it), at least 420, at most the
+    // page; narrower than its words, the title wraps and the check box elides.
     Frame {
+        objectName: "loginFrame"
         anchors.centerIn: parent
-        width: Math.min(parent.width - 40, 420)
+        width: Math.min(parent.width - 40, Math.max(420, form.implicitWidth + leftPadding + rightPadding))
         padding: 24
         ColumnLayout {
+            id: form
             anchors.fill: parent
             spacing: 10
             Label {
+                objectName: "loginTitle"
+                Layout.fillWidth: true
+                wrapMode: Text.Wrap
                 text: qsTr("Connect to a UgCS server")
                 font.pixelSize: 20
                 font.bold: true
@@ -86,6 +93,7 @@ Page {
             CheckBox {
                 id: remember
                 objectName: "rememberCheck"
+                Layout.fillWidth: true
                 text: qsTr("Remember the password on this computer")
                 enabled: page.appSettings.canRememberPassword
                 checked: page.appSettings.rememberPassword
@@ -96,6 +104,7 @@ Page {
             Label {
                 // No keyring (and why), a keyring that refused, a password moved out of the settings file.
                 objectName: "rememberNotice"
+                Layout.preferredWidth: 1 // a sentence wraps in the width the fields make; it does not widen the frame
                 Layout.fillWidth: true
                 wrapMode: Text.Wrap
                 font.pixelSize: 12
@@ -136,14 +145,16 @@ Page {
             }
             Label {
                 objectName: "loginStatus"
+                Layout.preferredWidth: 1 // a sentence wraps in the width the fields make; it does not widen the frame
                 Layout.fillWidth: true
                 wrapMode: Text.Wrap
                 visible: page.connected
                 text: page.connection.ready ? qsTr("Logged in as %1 at %2.").arg(page.connection.user).arg(page.connection.server)
-                                            : qsTr("%1…").arg(page.connection.state)
+                                            : qsTr("%1…").arg(page.connection.stateText)
             }
             Label {
                 objectName: "loginMessage"
+                Layout.preferredWidth: 1 // a sentence wraps in the width the fields make; it does not widen the frame
                 Layout.fillWidth: true
                 wrapMode: Text.Wrap
                 color: "#e53935"

@@ -31,6 +31,7 @@ ApplicationWindow {
     required property Airspace airspace             // the zones: both maps, the zone panel, the route's airspace check
     required property ZoneSharing zoneSharing       // drawn zones to the server; the server's custom zones edited, deleted
     property string connectionState: connection.state
+    property string connectionStateText: connection.stateText  // the state in the operator's words
     property string connectionDetail: connection.statusDetail
 
     property alias currentPage: tabs.currentIndex
@@ -211,6 +212,7 @@ ApplicationWindow {
     footer: StatusBar {
         objectName: "statusBar"
         connectionState: window.connectionState
+        connectionStateText: window.connectionStateText
         connectionDetail: window.connectionDetail
         map: window.activeMap
         units: units

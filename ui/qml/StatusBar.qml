@@ -7,7 +7,8 @@ import Sortie.Ui
 // coordinates under the cursor.
 ToolBar {
     id: bar
-    property string connectionState: "Disconnected"
+    property string connectionState: "Disconnected"           // the key: it picks the colour
+    property string connectionStateText: connectionState     // what the operator reads
     property string connectionDetail: ""
     required property MapView map
     required property DisplayUnits units
@@ -26,7 +27,7 @@ ToolBar {
         }
         Label {
             objectName: "connectionStateLabel"
-            text: bar.connectionDetail.length > 0 ? bar.connectionState + " — " + bar.connectionDetail : bar.connectionState
+            text: bar.connectionDetail.length > 0 ? bar.connectionStateText + " — " + bar.connectionDetail : bar.connectionStateText
             elide: Text.ElideRight
             Layout.maximumWidth: 420
         }

@@ -92,7 +92,7 @@ Page {
                             Layout.fillWidth: true
                             highlighted: vehicleRow.index === vehicleLayer.currentIndex
                             text: (vehicleRow.model.name !== undefined ? vehicleRow.model.name : qsTr("Vehicle %1").arg(vehicleRow.index + 1))
-                                  + (vehicleRow.model.protocol !== undefined ? "  ·  " + vehicleRow.model.protocol + "  ·  " + vehicleRow.model.linkState : "")
+                                  + (vehicleRow.model.protocol !== undefined ? "  ·  " + vehicleRow.model.protocol + "  ·  " + page.units.formatLinkState(vehicleRow.model.vehicle.linkState) : "")
                             opacity: vehicleRow.model.stale === true ? 0.5 : 1
                             onClicked: { vehicleLayer.currentIndex = vehicleRow.index; vehicleLayer.centerOn(vehicleRow.index) }
                         }
@@ -370,23 +370,20 @@ Page {
                     id: fieldPicker
                     objectName: "plotFieldPicker"
                     Layout.fillWidth: true
-                    model: plot.availableFields()
-                    currentIndex: Math.max(0, model.indexOf("groundSpeed"))
+                    // Named for the operator, keyed by the field's name (what plotFields holds).
+                    model: plot.fieldChoices
+                    textRole: "name"
+                    valueRole: "key"
+                    // Read with the model, so that a re-worded model (a language change) chooses it again.
+                    currentIndex: model.length > 0 ? Math.max(0, plot.availableFields().indexOf("groundSpeed")) : -1
                 }
                 Button {
                     objectName: "plotAddButton"
                     text: qsTr("Add")
-                    enabled: page.plotFields.indexOf(fieldPicker.currentText) < 0
-                    onClicked: page.plotFields = page.plotFields.concat([fieldPicker.currentText])
+                    enabled: page.plotFields.indexOf(fieldPicker.currentValue) < 0
+                    onClicked: page.plotFields = page.plotFields.concat([fieldPicker.currentValue])
                     ToolTip.visible: hovered
                     ToolTip.text: qsTr("Plot this field too")
-                }
-                ComboBox {
-                    id: windowPicker
-                    objectName: "plotWindowPicker"
-                    implicitContentWidthPolicy: ComboBox.WidestText
-                    model: [qsTr("1 min"), qsTr("5 min"), qsTr("30 min")]
-                    currentIndex: 1
                 }
             }
             Flow {
@@ -397,7 +394,8 @@ Page {
                     model: page.plotFields
                     delegate: Button {
                         required property string modelData
-                        text: modelData + "  ×"
+                        // plot.fieldChoices is read here so that a language change re-words the chip.
+                        text: plot.fieldChoices[plot.availableFields().indexOf(modelData)].name + "  ×"
                         flat: true
                         font.pixelSize: 11
                         padding: 4
@@ -416,6 +414,15 @@ Page {
                     onToggled: plot.compare = checked
                     ToolTip.visible: hovered
                     ToolTip.text: qsTr("Compare these fields across every vehicle")
+                }
+                // Here rather than beside the field picker: that row keeps its width for a field's
+                // name, which a longer language lengthens.
+                ComboBox {
+                    id: windowPicker
+                    objectName: "plotWindowPicker"
+                    implicitContentWidthPolicy: ComboBox.WidestText
+                    model: [qsTr("1 min"), qsTr("5 min"), qsTr("30 min")]
+                    currentIndex: 1
                 }
             }
             TelemetryPlot {

@@ -1,8 +1,11 @@
 #include "Translations.h"
 
 #include "AppSettings.h"
+#include "StandardButtonWords.h"
 
 #include <QCoreApplication>
+#include <QGuiApplication>
+#include <QWindow>
 #include <QDir>
 #include <QLibraryInfo>
 #include <QLoggingCategory>
@@ -92,11 +95,18 @@ void Translations::apply()
         QCoreApplication::installTranslator(sortie.get());
         m_sortie = std::move(sortie);
     }
+    // Qt's own words (a dialog's "Cancel"): Debian's qt6-translations-l10n. Without them those stay
+    // English in a translated UI, which is said in the log, not hidden.
     auto qt = std::make_unique<QTranslator>();
-    if (locale.language() != QLocale::English
-        && qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"), QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
-        QCoreApplication::installTranslator(qt.get());
-        m_qt = std::move(qt);
+    const QString qtFolder = QLibraryInfo::path(QLibraryInfo::TranslationsPath);
+    if (locale.language() != QLocale::English) {
+        if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"), qtFolder)) {
+            QCoreApplication::installTranslator(qt.get());
+            m_qt = std::move(qt);
+        } else if (m_sortie) { // a language Sortie speaks: its dialogs would mix in English
+            qCWarning(lcTranslations).noquote() << "Qt's own translation qtbase_" + locale.name() + ".qm is not in" << qtFolder
+                                                << "(install qt6-translations-l10n): Qt's dialog buttons stay English";
+        }
     }
     // Numbers and dates follow the words: a German UI writes 12,5 m. Without a translation for the
     // language asked for, the words are English, and so are the numbers, unless the system's
@@ -108,6 +118,9 @@ void Translations::apply()
     qCInfo(lcTranslations).noquote() << "language" << (m_requested.isEmpty() ? QStringLiteral("(system)") : m_requested) << "->"
                                      << m_active << (m_qt ? "with Qt's translations" : "without Qt's translations");
     m_engine.retranslate();
+    // What retranslate() does not reach: the standard buttons of the dialogs already made.
+    for (QWindow *window : QGuiApplication::topLevelWindows())
+        rewordStandardButtons(window);
     emit changed();
 }
 

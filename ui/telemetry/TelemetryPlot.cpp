@@ -1,6 +1,8 @@
 #include "TelemetryPlot.h"
 
+#include "LanguageChange.h"
 #include "Polyline.h"
+#include "TelemetryFieldNames.h"
 #include "TelemetryField.h"
 #include "Vehicle.h"
 #include "VehiclePalette.h"
@@ -34,6 +36,11 @@ TelemetryPlot::TelemetryPlot(QQuickItem *parent)
     : QQuickPaintedItem(parent)
 {
     setAntialiasing(true);
+    // The legend, the axes' words and the field names are made when laid out: made again.
+    i18n::onLanguageChange(this, [this] {
+        emit fieldChoicesChanged();
+        redraw();
+    });
 }
 
 void TelemetryPlot::redraw()
@@ -149,6 +156,17 @@ QStringList TelemetryPlot::availableFields()
     return names;
 }
 
+QVariantList TelemetryPlot::fieldChoices()
+{
+    QVariantList choices;
+    for (size_t i = 0; i < vehicle::kTelemetryFieldCount; ++i) {
+        const std::string_view key = vehicle::fieldName(TelemetryField(i));
+        choices << QVariantMap{{QStringLiteral("key"), QString::fromLatin1(key.data(), qsizetype(key.size()))},
+                               {QStringLiteral("name"), telemetryFieldTitle(TelemetryField(i))}};
+    }
+    return choices;
+}
+
 QString TelemetryPlot::seriesLabel(int i) const
 {
     return i >= 0 && i < seriesCount() ? m_series[size_t(i)].label : QString();
@@ -178,7 +196,7 @@ void TelemetryPlot::updatePolish()
     std::vector<std::pair<TelemetryField, QString>> chosen;
     for (const QString &name : std::as_const(m_fields))
         if (const auto field = vehicle::fieldFromName(name.toStdString()))
-            chosen.emplace_back(*field, name);
+            chosen.emplace_back(*field, telemetryFieldTitle(*field));
     const auto vehicles = sources();
     // One time span for all: the window before the newest sample, or less while the histories are shorter.
     int64_t newest = 0;

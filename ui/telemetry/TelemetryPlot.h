@@ -4,6 +4,7 @@
 #include <QColor>
 #include <QPointer>
 #include <QQuickPaintedItem>
+#include <QVariant>
 #include <QStringList>
 
 #include <vector>
@@ -35,6 +36,8 @@ class TelemetryPlot : public QQuickPaintedItem
     Q_PROPERTY(int sampleCount READ sampleCount NOTIFY plotted)
     Q_PROPERTY(int seriesCount READ seriesCount NOTIFY plotted)
     Q_PROPERTY(int axisCount READ axisCount NOTIFY plotted)
+    // Every field a plot can show, named for the operator: [{key, name}] (a language change re-words it).
+    Q_PROPERTY(QVariantList fieldChoices READ fieldChoices NOTIFY fieldChoicesChanged)
     Q_PROPERTY(QColor textColor MEMBER m_textColor NOTIFY fieldsChanged)
 
 public:
@@ -60,6 +63,8 @@ public:
     Q_INVOKABLE int seriesAxis(int i) const;
     // Every field a plot can show ("altitudeAgl", "groundSpeed", ...).
     Q_INVOKABLE static QStringList availableFields();
+    // The same, as the operator reads them: [{key, name}], the name in the current language.
+    static QVariantList fieldChoices();
 
     void paint(QPainter *painter) override;
 
@@ -68,6 +73,7 @@ signals:
     void fieldsChanged();
     void windowSecondsChanged();
     void plotted();
+    void fieldChoicesChanged(); // the language changed
 
 protected:
     void updatePolish() override;

@@ -1,6 +1,7 @@
 #include "ElevationProfileView.h"
 
 #include "TerrainProfileModel.h"
+#include "LanguageChange.h"
 
 #include <QItemSelectionModel>
 #include <QPainter>
@@ -43,6 +44,14 @@ ElevationProfileView::ElevationProfileView(QQuickItem *parent) : QQuickPaintedIt
     setAntialiasing(true);
     connect(this, &ElevationProfileView::colorsChanged, this, [this] { update(); });
     connect(this, &ElevationProfileView::markersChanged, this, [this] { update(); });
+    connect(this, &ElevationProfileView::readoutChanged, this, &ElevationProfileView::headlineChanged);
+    // Painted words are made at each paint: a language change repaints them (and re-words the readout).
+    i18n::onLanguageChange(this, [this] {
+        if (m_hoverX >= 0)
+            hoverAt(m_hoverX);
+        emit headlineChanged();
+        update();
+    });
 }
 
 void ElevationProfileView::setModel(TerrainProfileModel *model)
@@ -57,10 +66,12 @@ void ElevationProfileView::setModel(TerrainProfileModel *model)
             rescale();
             if (m_hoverX >= 0)
                 hoverAt(m_hoverX);
+            emit headlineChanged();
             update();
         });
     rescale();
     emit modelChanged();
+    emit headlineChanged();
     update();
 }
 
@@ -410,15 +421,23 @@ void ElevationProfileView::paint(QPainter *painter)
     painter->drawText(QRectF(plot.right() - 120, plot.bottom() + 2, 120, kBottom - 2), Qt::AlignRight | Qt::AlignTop,
                       distanceText(m_model->length()));
     const QString title = tr("Ground: %1").arg(m_model->sourceText());
-    const QString right = m_readout.isEmpty()
-                              ? (p.minClearance ? tr("lowest clearance %1").arg(metres(p.minClearance->clearance)) : tr("clearance unknown"))
-                              : m_readout;
+    const QString right = headline();
     const double rightWidth = std::min(fm.horizontalAdvance(right) + 4, width() - kLeft - kRight);
     painter->drawText(QRectF(kLeft, 2, std::max(0.0, width() - kLeft - kRight - rightWidth - 12), kTop - 4),
                       Qt::AlignLeft | Qt::AlignVCenter, fm.elidedText(title, Qt::ElideRight, std::max(0.0, width() - kLeft - kRight - rightWidth - 12)));
     painter->setPen(m_readout.isEmpty() && p.minClearance && p.minClearance->clearance < safe ? kLow : m_textColor);
     painter->drawText(QRectF(width() - kRight - rightWidth, 2, rightWidth, kTop - 4), Qt::AlignRight | Qt::AlignVCenter,
                       fm.elidedText(right, Qt::ElideLeft, rightWidth));
+}
+
+QString ElevationProfileView::headline() const
+{
+    if (!m_readout.isEmpty())
+        return m_readout;
+    if (!m_model || m_model->sampleCount() < 2)
+        return {};
+    const auto &p = m_model->profile();
+    return p.minClearance ? tr("lowest clearance %1").arg(metres(p.minClearance->clearance)) : tr("clearance unknown");
 }
 
 } // namespace sortie::ui

@@ -35,6 +35,9 @@ class ElevationProfileView : public QQuickPaintedItem
     // as a vertical line at its distance along the flown path (metres), or without one where the
     // path passes closest to its position (the route's battery changes, its point of no return).
     Q_PROPERTY(QVariantList markers MEMBER m_markers NOTIFY markersChanged)
+    // The words painted above the plot, on the right: the lowest clearance (or the hovered point).
+    // Read-only, so that what is painted can be read (a language change re-words it).
+    Q_PROPERTY(QString headline READ headline NOTIFY headlineChanged)
 
 public:
     explicit ElevationProfileView(QQuickItem *parent = nullptr);
@@ -45,6 +48,7 @@ public:
     void setSelectionModel(QItemSelectionModel *selection);
     QString readout() const { return m_readout; }
     int hoveredLeg() const { return m_hoveredLeg; }
+    QString headline() const;
 
     // Where a distance along the route is drawn, and back (item coordinates).
     Q_INVOKABLE double xOf(double distance) const;
@@ -68,6 +72,7 @@ signals:
     void readoutChanged();
     void colorsChanged();
     void markersChanged();
+    void headlineChanged();
     // A click on a leg: its index (0-based) and the route row it starts at.
     void legClicked(int leg, int row);
 

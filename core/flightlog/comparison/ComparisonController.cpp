@@ -1,5 +1,6 @@
 #include "ComparisonController.h"
 
+#include "LanguageChange.h"
 #include "MissionFiles.h"
 #include "ReplayController.h"
 
@@ -34,6 +35,12 @@ void ComparisonLegModel::reset(const RouteComparison *comparison)
 int ComparisonLegModel::rowCount(const QModelIndex &parent) const
 {
     return parent.isValid() || !m_c ? 0 : int(m_c->legs.size());
+}
+
+ComparisonLegModel::ComparisonLegModel(QObject *parent)
+    : QAbstractListModel(parent)
+{
+    i18n::refreshOnLanguageChange(this);
 }
 
 QVariant ComparisonLegModel::data(const QModelIndex &index, int role) const

@@ -22,7 +22,7 @@ class ComparisonLegModel : public QAbstractListModel
 public:
     enum Roles { LegRole = Qt::UserRole + 1, SamplesRole, MaxCrossTrackRole, MeanCrossTrackRole, MaxAltitudeRole,
                  MeanAltitudeRole, ReachedRole, LevelRole };
-    using QAbstractListModel::QAbstractListModel;
+    explicit ComparisonLegModel(QObject *parent = nullptr); // its rows are worded as read: re-read on a language change
     void reset(const RouteComparison *comparison);
     int rowCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role) const override;

@@ -157,9 +157,12 @@ private:
             [&](const CameraControlAction &x) {
                 // DO_MOUNT_CONTROL has no "leave as it is": an angle not set is written as 0, and said so.
                 QStringList unset;
-                if (!x.tiltDeg) unset << QStringLiteral("tilt");
-                if (!x.rollDeg) unset << QStringLiteral("roll");
-                if (!x.yawDeg) unset << QStringLiteral("yaw");
+                //: A gimbal's axis, listed in "the gimbal's %2 was not set" (tilt, roll, yaw).
+                if (!x.tiltDeg) unset << QCoreApplication::translate("MavlinkExport", "tilt");
+                //: A gimbal's axis, listed in "the gimbal's %2 was not set" (tilt, roll, yaw).
+                if (!x.rollDeg) unset << QCoreApplication::translate("MavlinkExport", "roll");
+                //: A gimbal's axis, listed in "the gimbal's %2 was not set" (tilt, roll, yaw).
+                if (!x.yawDeg) unset << QCoreApplication::translate("MavlinkExport", "yaw");
                 if (!unset.isEmpty())
                     m_out.notices << QCoreApplication::translate("MavlinkExport", "Waypoint %1: the gimbal's %2 was not set and is written as 0° (MAVLink has no \"unchanged\").")
                                          .arg(row + 1).arg(unset.join(QStringLiteral(", ")));

@@ -23,7 +23,9 @@ FencePoint pointWithAltitude(const JsonCursor &c)
 
 // Reads each element of an array section with `read`, leaving out (with a notice) what fails.
 template<typename Read>
-void eachOf(const JsonCursor &section, const char *key, QStringList *notices, const QString &what, Read read)
+// `oneLeftOut` and `allLeftOut` are whole sentences ("%1" the JSON path, "%2" the reason), so that a
+// translation words the kind of thing with its own grammar.
+void eachOf(const JsonCursor &section, const char *key, QStringList *notices, const QString &oneLeftOut, const QString &allLeftOut, Read read)
 {
     const auto list = section.find(key);
     if (!list || list->isNull())
@@ -34,12 +36,12 @@ void eachOf(const JsonCursor &section, const char *key, QStringList *notices, co
                 read(list->at(i));
             } catch (const JsonPathError &e) {
                 if (notices)
-                    *notices << QCoreApplication::translate("QgcFenceJson", "%1 at %2 was left out: %3").arg(what, QString::fromStdString(e.path), e.message);
+                    *notices << oneLeftOut.arg(QString::fromStdString(e.path), e.message);
             }
         }
     } catch (const JsonPathError &e) {
         if (notices)
-            *notices << QCoreApplication::translate("QgcFenceJson", "The %1s at %2 were left out: %3").arg(what.toLower(), QString::fromStdString(e.path), e.message);
+            *notices << allLeftOut.arg(QString::fromStdString(e.path), e.message);
     }
 }
 } // namespace
@@ -48,7 +50,8 @@ RouteFence fenceFromPlanJson(const JsonCursor &root, QStringList *notices)
 {
     RouteFence fence;
     if (const auto geo = root.find("geoFence"); geo && !geo->isNull()) {
-        eachOf(*geo, "polygons", notices, QCoreApplication::translate("QgcFenceJson", "Geofence polygon"), [&](const JsonCursor &c) {
+        eachOf(*geo, "polygons", notices, QCoreApplication::translate("QgcFenceJson", "Geofence polygon at %1 was left out: %2"),
+               QCoreApplication::translate("QgcFenceJson", "The geofence polygons at %1 were left out: %2"), [&](const JsonCursor &c) {
             FencePolygon p;
             p.inclusion = c.booleanOr("inclusion", true);
             const JsonCursor ring = c.at("polygon");
@@ -72,7 +75,8 @@ RouteFence fenceFromPlanJson(const JsonCursor &root, QStringList *notices)
                     *notices << QCoreApplication::translate("QgcFenceJson", "Geofence polygon at %1 was left out: %2").arg(QString::fromStdString(e.path), e.message);
             }
         }
-        eachOf(*geo, "circles", notices, QCoreApplication::translate("QgcFenceJson", "Geofence circle"), [&](const JsonCursor &c) {
+        eachOf(*geo, "circles", notices, QCoreApplication::translate("QgcFenceJson", "Geofence circle at %1 was left out: %2"),
+               QCoreApplication::translate("QgcFenceJson", "The geofence circles at %1 were left out: %2"), [&](const JsonCursor &c) {
             FenceCircle circle;
             circle.inclusion = c.booleanOr("inclusion", true);
             const JsonCursor shape = c.at("circle");
@@ -92,7 +96,8 @@ RouteFence fenceFromPlanJson(const JsonCursor &root, QStringList *notices)
         }
     }
     if (const auto rally = root.find("rallyPoints"); rally && !rally->isNull())
-        eachOf(*rally, "points", notices, QCoreApplication::translate("QgcFenceJson", "Rally point"),
+        eachOf(*rally, "points", notices, QCoreApplication::translate("QgcFenceJson", "Rally point at %1 was left out: %2"),
+               QCoreApplication::translate("QgcFenceJson", "The rally points at %1 were left out: %2"),
                [&](const JsonCursor &c) { fence.rallyPoints.push_back(pointWithAltitude(c)); });
     return fence;
 }

@@ -87,7 +87,9 @@ bool number(const QVariant &value, const QString &name, double min, double max, 
     if (!d)
         return fail(error, QCoreApplication::translate("SegmentParameters", "%1 needs a number, not \"%2\".").arg(name, value.toString()));
     if (*d < min || *d > max || (maxOpen && *d == max))
-        return fail(error, QCoreApplication::translate("SegmentParameters", "%1 must be from %2 to %3%4.").arg(name).arg(min).arg(maxOpen ? QStringLiteral("below ") : QString()).arg(max));
+        return fail(error, (maxOpen ? QCoreApplication::translate("SegmentParameters", "%1 must be from %2 to below %3.")
+                                    : QCoreApplication::translate("SegmentParameters", "%1 must be from %2 to %3."))
+                               .arg(name).arg(min).arg(max));
     apply(*d);
     return true;
 }

@@ -251,10 +251,20 @@ void VciVehicleLink::onFenceStatus(const nlohmann::json &body)
         return;
     const QString where = status->kind == "outside-inclusion" ? QCoreApplication::translate("VciVehicleLink", "left its fence '%1'")
                                                                : QCoreApplication::translate("VciVehicleLink", "entered the exclusion zone '%1'");
-    const QString action = status->action == "land" ? QStringLiteral("landing")
-                           : status->action == "hold" ? QStringLiteral("holding")
-                           : status->action == "return" ? QCoreApplication::translate("VciVehicleLink", "returning home")
-                                                        : QCoreApplication::translate("VciVehicleLink", "action unknown");
+    // What the vehicle does about it: the second part of "fence breach: %1; %2".
+    QString action;
+    if (status->action == "land")
+        //: What a vehicle does after a fence breach: "fence breach: left its fence 'A'; landing".
+        action = QCoreApplication::translate("VciVehicleLink", "landing");
+    else if (status->action == "hold")
+        //: What a vehicle does after a fence breach: "fence breach: left its fence 'A'; holding".
+        action = QCoreApplication::translate("VciVehicleLink", "holding");
+    else if (status->action == "return")
+        //: What a vehicle does after a fence breach: "fence breach: left its fence 'A'; returning home".
+        action = QCoreApplication::translate("VciVehicleLink", "returning home");
+    else
+        //: After a fence breach, the vehicle named no action: "fence breach: left its fence 'A'; action unknown".
+        action = QCoreApplication::translate("VciVehicleLink", "action unknown");
     emit alertReported(QCoreApplication::translate("VciVehicleLink", "fence breach: %1; %2").arg(where.arg(QString::fromStdString(status->name)), action));
 }
 

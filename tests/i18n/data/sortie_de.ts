@@ -23,12 +23,59 @@
         <source>%1 m</source>
         <translation>%1 m</translation>
     </message>
+    <message>
+        <source>connected</source>
+        <translation>verbunden</translation>
+    </message>
 </context>
 <context>
     <name>sortie::ui::Translations</name>
     <message>
         <source>System language</source>
         <translation>Sprache des Systems</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::ConnectionController</name>
+    <message>
+        <source>Ready</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <source>%1 at %2</source>
+        <translation>%1 auf %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::client::MissionController</name>
+    <message>
+        <source>Opened %1 (version %2).</source>
+        <translation>%1 geöffnet (Version %2).</translation>
+    </message>
+</context>
+<context>
+    <name>TelemetryFieldNames</name>
+    <message>
+        <source>Ground speed</source>
+        <translation>Geschwindigkeit über Grund</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::ElevationProfileView</name>
+    <message>
+        <source>lowest clearance %1</source>
+        <translation>geringster Abstand %1</translation>
+    </message>
+    <message>
+        <source>clearance unknown</source>
+        <translation>Abstand unbekannt</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::OfflineTileSource</name>
+    <message>
+        <source>Land outlines: Natural Earth</source>
+        <translation>Landumrisse: Natural Earth</translation>
     </message>
 </context>
 </TS>
