@@ -684,10 +684,6 @@
         <translation>das Raster ist nicht georeferenziert (keine Geotransformation)</translation>
     </message>
     <message>
-        <source>the raster&apos;s geotransform cannot be inverted</source>
-        <translation>die Geotransformation des Rasters ist nicht umkehrbar</translation>
-    </message>
-    <message>
         <source>the raster states no coordinate reference system</source>
         <translation>das Raster nennt kein Koordinatenreferenzsystem</translation>
     </message>
@@ -1127,6 +1123,13 @@
     </message>
 </context>
 <context>
+    <name>IndexedDemSource</name>
+    <message>
+        <source>%1: no rasters</source>
+        <translation>%1: keine Raster</translation>
+    </message>
+</context>
+<context>
     <name>InstrumentPanel</name>
     <message>
         <source>%1 (%2, %3)</source>
@@ -1560,6 +1563,42 @@
         <source>/path/to/dem.tif or /path/to/dem-folder (empty: none)</source>
         <translation>/pfad/zu/dem.tif oder /pfad/zu/dem-ordner (leer: keins)</translation>
     </message>
+    <message>
+        <source>Orthophoto</source>
+        <translation>Orthofoto</translation>
+    </message>
+    <message>
+        <source>Rasters (*.tif *.tiff *.jp2 *.vrt *.img *.ecw *.sid *.png *.jpg)</source>
+        <translation>Raster (*.tif *.tiff *.jp2 *.vrt *.img *.ecw *.sid *.png *.jpg)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Terrain model (DEM)</source>
+        <translation>Geländemodell (DEM)</translation>
+    </message>
+    <message>
+        <source>Elevation rasters (*.tif *.tiff *.hgt *.vrt *.dt0 *.dt1 *.dt2 *.asc *.img *.bil *.flt *.dem)</source>
+        <translation>Höhenraster (*.tif *.tiff *.hgt *.vrt *.dt0 *.dt1 *.dt2 *.asc *.img *.bil *.flt *.dem)</translation>
+    </message>
+    <message>
+        <source>A folder of terrain models (DEM tiles)</source>
+        <translation>Ein Ordner mit Geländemodellen (DEM-Kacheln)</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>File…</source>
+        <translation>Datei…</translation>
+    </message>
+    <message>
+        <source>Folder…</source>
+        <translation>Ordner…</translation>
+    </message>
 </context>
 <context>
     <name>MavlinkExport</name>
@@ -1630,6 +1669,21 @@
     <message>
         <source>Area scan %1 was written as %2 waypoints with distance triggering.</source>
         <translation>Flächenscan %1 wurde als %2 Wegpunkte mit streckenabhängiger Auslösung geschrieben.</translation>
+    </message>
+    <message>
+        <source>tilt</source>
+        <extracomment>A gimbal&apos;s axis, listed in &quot;the gimbal&apos;s %2 was not set&quot; (tilt, roll, yaw).</extracomment>
+        <translation>Neigung</translation>
+    </message>
+    <message>
+        <source>roll</source>
+        <extracomment>A gimbal&apos;s axis, listed in &quot;the gimbal&apos;s %2 was not set&quot; (tilt, roll, yaw).</extracomment>
+        <translation>Rollachse</translation>
+    </message>
+    <message>
+        <source>yaw</source>
+        <extracomment>A gimbal&apos;s axis, listed in &quot;the gimbal&apos;s %2 was not set&quot; (tilt, roll, yaw).</extracomment>
+        <translation>Gierachse</translation>
     </message>
 </context>
 <context>
@@ -1831,6 +1885,14 @@
         <source>no return</source>
         <translation>keine Rückkehr</translation>
     </message>
+    <message>
+        <source>Click the corners (%1 so far), or Shift+drag a box</source>
+        <translation>Ecken anklicken (bisher %1) oder mit Umschalt+Ziehen ein Rechteck</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Fertig</translation>
+    </message>
 </context>
 <context>
     <name>NfzConversion</name>
@@ -2005,6 +2067,14 @@
         <source>Stop</source>
         <translation>Stopp</translation>
     </message>
+    <message>
+        <source>Draw an area</source>
+        <translation>Gebiet zeichnen</translation>
+    </message>
+    <message>
+        <source>Click its corners on the map, or Shift+drag a box</source>
+        <translation>Ecken auf der Karte anklicken oder mit Umschalt+Ziehen ein Rechteck</translation>
+    </message>
 </context>
 <context>
     <name>OrthophotoRenderer</name>
@@ -2035,6 +2105,10 @@
     <message>
         <source>the warped tile cannot be read</source>
         <translation>die entzerrte Kachel kann nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>%1: tile size %2 is outside 1..%3</source>
+        <translation>%1: Kachelgröße %2 liegt außerhalb von 1..%3</translation>
     </message>
 </context>
 <context>
@@ -2279,28 +2353,12 @@ Ereignisse: %1
         <translation>[Breite, Länge, Höhe] erwartet</translation>
     </message>
     <message>
-        <source>%1 at %2 was left out: %3</source>
-        <translation>%1 bei %2 wurde ausgelassen: %3</translation>
-    </message>
-    <message>
-        <source>The %1s at %2 were left out: %3</source>
-        <translation>Die Einträge (%1) bei %2 wurden ausgelassen: %3</translation>
-    </message>
-    <message>
-        <source>Geofence polygon</source>
-        <translation>Geofence-Polygon</translation>
-    </message>
-    <message>
         <source>a polygon needs at least 3 vertices, found %1</source>
         <translation>ein Polygon braucht mindestens 3 Eckpunkte, gefunden: %1</translation>
     </message>
     <message>
         <source>Geofence polygon at %1 was left out: %2</source>
         <translation>Geofence-Polygon bei %1 wurde ausgelassen: %2</translation>
-    </message>
-    <message>
-        <source>Geofence circle</source>
-        <translation>Geofence-Kreis</translation>
     </message>
     <message>
         <source>the radius must be positive metres</source>
@@ -2311,8 +2369,24 @@ Ereignisse: %1
         <translation>Der Rückkehrpunkt des Geofence für Verletzungen bei %1 wurde ausgelassen: %2</translation>
     </message>
     <message>
-        <source>Rally point</source>
-        <translation>Sammelpunkt</translation>
+        <source>The geofence polygons at %1 were left out: %2</source>
+        <translation>Die Geofence-Polygone bei %1 wurden ausgelassen: %2</translation>
+    </message>
+    <message>
+        <source>Geofence circle at %1 was left out: %2</source>
+        <translation>Der Geofence-Kreis bei %1 wurde ausgelassen: %2</translation>
+    </message>
+    <message>
+        <source>The geofence circles at %1 were left out: %2</source>
+        <translation>Die Geofence-Kreise bei %1 wurden ausgelassen: %2</translation>
+    </message>
+    <message>
+        <source>Rally point at %1 was left out: %2</source>
+        <translation>Der Sammelpunkt bei %1 wurde ausgelassen: %2</translation>
+    </message>
+    <message>
+        <source>The rally points at %1 were left out: %2</source>
+        <translation>Die Sammelpunkte bei %1 wurden ausgelassen: %2</translation>
     </message>
 </context>
 <context>
@@ -2407,6 +2481,21 @@ Ereignisse: %1
     <message>
         <source>, its %1 layers as %1 loops at one height</source>
         <translation>, seine %1 Ebenen als %1 Runden auf einer Höhe</translation>
+    </message>
+</context>
+<context>
+    <name>RasterFootprint</name>
+    <message>
+        <source>the raster&apos;s geotransform cannot be inverted (a zero pixel size?)</source>
+        <translation>die Georeferenzierung des Rasters ist nicht umkehrbar (Pixelgröße null?)</translation>
+    </message>
+    <message>
+        <source>the raster has no pixels (%1×%2)</source>
+        <translation>das Raster hat keine Pixel (%1×%2)</translation>
+    </message>
+    <message>
+        <source>the raster&apos;s geotransform is not finite</source>
+        <translation>die Georeferenzierung des Rasters ist nicht endlich</translation>
     </message>
 </context>
 <context>
@@ -3226,10 +3315,6 @@ Ereignisse: %1
         <translation>%1 braucht eine Zahl, nicht „%2“.</translation>
     </message>
     <message>
-        <source>%1 must be from %2 to %3%4.</source>
-        <translation>%1 muss im Bereich %2 bis %3%4 liegen.</translation>
-    </message>
-    <message>
         <source>altitudeType is AGL or AMSL, not &quot;%1&quot;.</source>
         <translation>altitudeType ist AGL oder AMSL, nicht „%1“.</translation>
     </message>
@@ -3260,6 +3345,14 @@ Ereignisse: %1
     <message>
         <source>%1 is true or false, not &quot;%2&quot;.</source>
         <translation>%1 ist true oder false, nicht „%2“.</translation>
+    </message>
+    <message>
+        <source>%1 must be from %2 to below %3.</source>
+        <translation>%1 muss von %2 bis unter %3 liegen.</translation>
+    </message>
+    <message>
+        <source>%1 must be from %2 to %3.</source>
+        <translation>%1 muss von %2 bis %3 liegen.</translation>
     </message>
 </context>
 <context>
@@ -3604,6 +3697,121 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>TelemetryFieldNames</name>
+    <message>
+        <source>Latitude</source>
+        <translation>Breite</translation>
+    </message>
+    <message>
+        <source>Longitude</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>Altitude (AMSL)</source>
+        <translation>Höhe (ü. NN)</translation>
+    </message>
+    <message>
+        <source>Altitude above home</source>
+        <translation>Höhe über Start</translation>
+    </message>
+    <message>
+        <source>Roll</source>
+        <translation>Rollwinkel</translation>
+    </message>
+    <message>
+        <source>Pitch</source>
+        <translation>Nickwinkel</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Steuerkurs</translation>
+    </message>
+    <message>
+        <source>Course</source>
+        <translation>Kurs über Grund</translation>
+    </message>
+    <message>
+        <source>Ground speed</source>
+        <translation>Geschwindigkeit über Grund</translation>
+    </message>
+    <message>
+        <source>Air speed</source>
+        <translation>Fluggeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Vertical speed</source>
+        <translation>Vertikalgeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Battery voltage</source>
+        <translation>Akkuspannung</translation>
+    </message>
+    <message>
+        <source>Battery current</source>
+        <translation>Akkustrom</translation>
+    </message>
+    <message>
+        <source>Battery remaining</source>
+        <translation>Akku-Restladung</translation>
+    </message>
+    <message>
+        <source>GPS fix</source>
+        <translation>GPS-Fix</translation>
+    </message>
+    <message>
+        <source>Satellites</source>
+        <translation>Satelliten</translation>
+    </message>
+    <message>
+        <source>HDOP</source>
+        <translation>HDOP</translation>
+    </message>
+    <message>
+        <source>Home latitude</source>
+        <translation>Breite des Startpunkts</translation>
+    </message>
+    <message>
+        <source>Home longitude</source>
+        <translation>Länge des Startpunkts</translation>
+    </message>
+    <message>
+        <source>Home altitude (AMSL)</source>
+        <translation>Höhe des Startpunkts (ü. NN)</translation>
+    </message>
+    <message>
+        <source>Armed</source>
+        <translation>Scharf</translation>
+    </message>
+    <message>
+        <source>Flight mode</source>
+        <translation>Flugmodus</translation>
+    </message>
+    <message>
+        <source>Mission state</source>
+        <translation>Missionsstatus</translation>
+    </message>
+    <message>
+        <source>Current waypoint</source>
+        <translation>Aktueller Wegpunkt</translation>
+    </message>
+    <message>
+        <source>Waypoints reached</source>
+        <translation>Erreichte Wegpunkte</translation>
+    </message>
+    <message>
+        <source>Waypoints on board</source>
+        <translation>Wegpunkte an Bord</translation>
+    </message>
+    <message>
+        <source>Fence breached</source>
+        <translation>Geofence verletzt</translation>
+    </message>
+    <message>
+        <source>Fence breaches</source>
+        <translation>Geofence-Verletzungen</translation>
+    </message>
+</context>
+<context>
     <name>TelemetryPage</name>
     <message>
         <source>Vehicles</source>
@@ -3727,18 +3935,6 @@ Ereignisse: %1
         <translation>%1 bis %2</translation>
     </message>
     <message>
-        <source>%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height above sea level is unknown.</source>
-        <translation>%1: Die Höhe ist über %2 angegeben, aber %3 gibt es keine Geländedaten (versucht: %4), daher ist die Höhe über dem Meeresspiegel unbekannt.</translation>
-    </message>
-    <message>
-        <source>the ground</source>
-        <translation>Grund</translation>
-    </message>
-    <message>
-        <source>at home</source>
-        <translation>am Home-Punkt</translation>
-    </message>
-    <message>
         <source>%1 m above the ground</source>
         <translation>%1 m über Grund</translation>
     </message>
@@ -3766,6 +3962,14 @@ Ereignisse: %1
         <source>%1 (tried: %2); the clearance there is not checked.</source>
         <translation>%1 (versucht: %2); der Bodenabstand wird dort nicht geprüft.</translation>
     </message>
+    <message>
+        <source>%1: the altitude is above home, but there is no terrain data at home (tried: %2), so the height above sea level is unknown.</source>
+        <translation>%1: Die Höhe bezieht sich auf den Startpunkt, aber für den Startpunkt gibt es keine Geländedaten (versucht: %2), daher ist die Höhe über dem Meeresspiegel unbekannt.</translation>
+    </message>
+    <message>
+        <source>%1: the altitude is above the ground, but there is no terrain data there (tried: %2), so the height above sea level is unknown.</source>
+        <translation>%1: Die Höhe bezieht sich auf den Boden, aber dort gibt es keine Geländedaten (versucht: %2), daher ist die Höhe über dem Meeresspiegel unbekannt.</translation>
+    </message>
 </context>
 <context>
     <name>TileArea</name>
@@ -3784,6 +3988,10 @@ Ereignisse: %1
     <message>
         <source>The area&apos;s edge from corner %1 crosses the antimeridian: draw it as two areas.</source>
         <translation>Die Kante des Gebiets ab Ecke %1 quert den Antimeridian: Zeichnen Sie es als zwei Gebiete.</translation>
+    </message>
+    <message>
+        <source>The area&apos;s edges from corner %1 and corner %2 cross: draw it without crossing.</source>
+        <translation>Die Kanten des Gebiets ab Ecke %1 und Ecke %2 kreuzen sich: zeichnen Sie es ohne Kreuzung.</translation>
     </message>
 </context>
 <context>
@@ -4065,10 +4273,12 @@ Ereignisse: %1
     </message>
     <message>
         <source>returning home</source>
+        <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; returning home&quot;.</extracomment>
         <translation>kehrt zum Home-Punkt zurück</translation>
     </message>
     <message>
         <source>action unknown</source>
+        <extracomment>After a fence breach, the vehicle named no action: &quot;fence breach: left its fence &apos;A&apos;; action unknown&quot;.</extracomment>
         <translation>Aktion unbekannt</translation>
     </message>
     <message>
@@ -4102,6 +4312,16 @@ Ereignisse: %1
     <message>
         <source>&quot;%1&quot; is not a parameter name</source>
         <translation>„%1“ ist kein Parametername</translation>
+    </message>
+    <message>
+        <source>landing</source>
+        <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; landing&quot;.</extracomment>
+        <translation>landet</translation>
+    </message>
+    <message>
+        <source>holding</source>
+        <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; holding&quot;.</extracomment>
+        <translation>hält die Position</translation>
     </message>
 </context>
 <context>
@@ -5122,6 +5342,30 @@ Ereignisse: %1
         <source>The server refused: %1</source>
         <translation>Der Server hat abgelehnt: %1</translation>
     </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Getrennt</translation>
+    </message>
+    <message>
+        <source>Connecting</source>
+        <translation>Verbinden</translation>
+    </message>
+    <message>
+        <source>Authorizing</source>
+        <translation>Autorisieren</translation>
+    </message>
+    <message>
+        <source>Logging in</source>
+        <translation>Anmelden</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <source>Reconnecting</source>
+        <translation>Erneut verbinden</translation>
+    </message>
 </context>
 <context>
     <name>sortie::client::FleetRoutes</name>
@@ -5938,6 +6182,25 @@ Ereignisse: %1
     <message>
         <source> · failed</source>
         <translation> · fehlgeschlagen</translation>
+    </message>
+    <message>
+        <source>The drawn area cannot be used: %1</source>
+        <translation>Das gezeichnete Gebiet ist nicht verwendbar: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>A drawn area (%n corner(s))</source>
+        <translation>
+            <numerusform>Ein gezeichnetes Gebiet (%n Ecke)</numerusform>
+            <numerusform>Ein gezeichnetes Gebiet (%n Ecken)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The drawn rectangle is not an area (%1 to %2).</source>
+        <translation>Das gezeichnete Rechteck ist kein Gebiet (%1 bis %2).</translation>
+    </message>
+    <message>
+        <source>A drawn rectangle</source>
+        <translation>Ein gezeichnetes Rechteck</translation>
     </message>
 </context>
 <context>

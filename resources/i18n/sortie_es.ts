@@ -684,10 +684,6 @@
         <translation>el ráster no está georreferenciado (sin geotransformación)</translation>
     </message>
     <message>
-        <source>the raster&apos;s geotransform cannot be inverted</source>
-        <translation>la geotransformación del ráster no se puede invertir</translation>
-    </message>
-    <message>
         <source>the raster states no coordinate reference system</source>
         <translation>el ráster no indica ningún sistema de referencia de coordenadas</translation>
     </message>
@@ -1127,6 +1123,13 @@
     </message>
 </context>
 <context>
+    <name>IndexedDemSource</name>
+    <message>
+        <source>%1: no rasters</source>
+        <translation>%1: no hay rásteres</translation>
+    </message>
+</context>
+<context>
     <name>InstrumentPanel</name>
     <message>
         <source>%1 (%2, %3)</source>
@@ -1560,6 +1563,42 @@
         <source>/path/to/dem.tif or /path/to/dem-folder (empty: none)</source>
         <translation>/ruta/a/dem.tif o /ruta/a/carpeta-dem (vacío: ninguno)</translation>
     </message>
+    <message>
+        <source>Orthophoto</source>
+        <translation>Ortofoto</translation>
+    </message>
+    <message>
+        <source>Rasters (*.tif *.tiff *.jp2 *.vrt *.img *.ecw *.sid *.png *.jpg)</source>
+        <translation>Rásteres (*.tif *.tiff *.jp2 *.vrt *.img *.ecw *.sid *.png *.jpg)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Todos los archivos (*)</translation>
+    </message>
+    <message>
+        <source>Terrain model (DEM)</source>
+        <translation>Modelo del terreno (MDE)</translation>
+    </message>
+    <message>
+        <source>Elevation rasters (*.tif *.tiff *.hgt *.vrt *.dt0 *.dt1 *.dt2 *.asc *.img *.bil *.flt *.dem)</source>
+        <translation>Rásteres de elevación (*.tif *.tiff *.hgt *.vrt *.dt0 *.dt1 *.dt2 *.asc *.img *.bil *.flt *.dem)</translation>
+    </message>
+    <message>
+        <source>A folder of terrain models (DEM tiles)</source>
+        <translation>Una carpeta de modelos del terreno (teselas MDE)</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Examinar…</translation>
+    </message>
+    <message>
+        <source>File…</source>
+        <translation>Archivo…</translation>
+    </message>
+    <message>
+        <source>Folder…</source>
+        <translation>Carpeta…</translation>
+    </message>
 </context>
 <context>
     <name>MavlinkExport</name>
@@ -1630,6 +1669,21 @@
     <message>
         <source>Area scan %1 was written as %2 waypoints with distance triggering.</source>
         <translation>El escaneo de área %1 se escribió como %2 waypoints con disparo por distancia.</translation>
+    </message>
+    <message>
+        <source>tilt</source>
+        <extracomment>A gimbal&apos;s axis, listed in &quot;the gimbal&apos;s %2 was not set&quot; (tilt, roll, yaw).</extracomment>
+        <translation>inclinación</translation>
+    </message>
+    <message>
+        <source>roll</source>
+        <extracomment>A gimbal&apos;s axis, listed in &quot;the gimbal&apos;s %2 was not set&quot; (tilt, roll, yaw).</extracomment>
+        <translation>alabeo</translation>
+    </message>
+    <message>
+        <source>yaw</source>
+        <extracomment>A gimbal&apos;s axis, listed in &quot;the gimbal&apos;s %2 was not set&quot; (tilt, roll, yaw).</extracomment>
+        <translation>guiñada</translation>
     </message>
 </context>
 <context>
@@ -1831,6 +1885,14 @@
         <source>no return</source>
         <translation>sin retorno</translation>
     </message>
+    <message>
+        <source>Click the corners (%1 so far), or Shift+drag a box</source>
+        <translation>Pulse las esquinas (%1 hasta ahora) o arrastre un rectángulo con Mayús</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Hecho</translation>
+    </message>
 </context>
 <context>
     <name>NfzConversion</name>
@@ -2005,6 +2067,14 @@
         <source>Stop</source>
         <translation>Detener</translation>
     </message>
+    <message>
+        <source>Draw an area</source>
+        <translation>Dibujar un área</translation>
+    </message>
+    <message>
+        <source>Click its corners on the map, or Shift+drag a box</source>
+        <translation>Pulse sus esquinas en el mapa o arrastre un rectángulo con Mayús</translation>
+    </message>
 </context>
 <context>
     <name>OrthophotoRenderer</name>
@@ -2035,6 +2105,10 @@
     <message>
         <source>the warped tile cannot be read</source>
         <translation>la tesela reproyectada no se puede leer</translation>
+    </message>
+    <message>
+        <source>%1: tile size %2 is outside 1..%3</source>
+        <translation>%1: el tamaño de tesela %2 está fuera de 1..%3</translation>
     </message>
 </context>
 <context>
@@ -2279,28 +2353,12 @@ eventos:   %1
         <translation>se esperaba [latitud, longitud, altitud]</translation>
     </message>
     <message>
-        <source>%1 at %2 was left out: %3</source>
-        <translation>Se omitió %1 en %2: %3</translation>
-    </message>
-    <message>
-        <source>The %1s at %2 were left out: %3</source>
-        <translation>Se omitieron los elementos de tipo %1 en %2: %3</translation>
-    </message>
-    <message>
-        <source>Geofence polygon</source>
-        <translation>Polígono de geocerca</translation>
-    </message>
-    <message>
         <source>a polygon needs at least 3 vertices, found %1</source>
         <translation>un polígono necesita al menos 3 vértices, se encontraron %1</translation>
     </message>
     <message>
         <source>Geofence polygon at %1 was left out: %2</source>
         <translation>Se omitió el polígono de geocerca en %1: %2</translation>
-    </message>
-    <message>
-        <source>Geofence circle</source>
-        <translation>Círculo de geocerca</translation>
     </message>
     <message>
         <source>the radius must be positive metres</source>
@@ -2311,8 +2369,24 @@ eventos:   %1
         <translation>Se omitió el punto de retorno por violación de la geocerca en %1: %2</translation>
     </message>
     <message>
-        <source>Rally point</source>
-        <translation>Punto de reunión</translation>
+        <source>The geofence polygons at %1 were left out: %2</source>
+        <translation>Se omitieron los polígonos de geovalla en %1: %2</translation>
+    </message>
+    <message>
+        <source>Geofence circle at %1 was left out: %2</source>
+        <translation>Se omitió el círculo de geovalla en %1: %2</translation>
+    </message>
+    <message>
+        <source>The geofence circles at %1 were left out: %2</source>
+        <translation>Se omitieron los círculos de geovalla en %1: %2</translation>
+    </message>
+    <message>
+        <source>Rally point at %1 was left out: %2</source>
+        <translation>Se omitió el punto de reunión en %1: %2</translation>
+    </message>
+    <message>
+        <source>The rally points at %1 were left out: %2</source>
+        <translation>Se omitieron los puntos de reunión en %1: %2</translation>
     </message>
 </context>
 <context>
@@ -2407,6 +2481,21 @@ eventos:   %1
     <message>
         <source>, its %1 layers as %1 loops at one height</source>
         <translation>, sus %1 capas como %1 vueltas a una sola altura</translation>
+    </message>
+</context>
+<context>
+    <name>RasterFootprint</name>
+    <message>
+        <source>the raster&apos;s geotransform cannot be inverted (a zero pixel size?)</source>
+        <translation>la geotransformación del ráster no se puede invertir (¿tamaño de píxel cero?)</translation>
+    </message>
+    <message>
+        <source>the raster has no pixels (%1×%2)</source>
+        <translation>el ráster no tiene píxeles (%1×%2)</translation>
+    </message>
+    <message>
+        <source>the raster&apos;s geotransform is not finite</source>
+        <translation>la geotransformación del ráster no es finita</translation>
     </message>
 </context>
 <context>
@@ -3226,10 +3315,6 @@ eventos:   %1
         <translation>%1 necesita un número, no «%2».</translation>
     </message>
     <message>
-        <source>%1 must be from %2 to %3%4.</source>
-        <translation>%1 debe estar entre %2 y %3%4.</translation>
-    </message>
-    <message>
         <source>altitudeType is AGL or AMSL, not &quot;%1&quot;.</source>
         <translation>altitudeType es AGL o AMSL, no «%1».</translation>
     </message>
@@ -3260,6 +3345,14 @@ eventos:   %1
     <message>
         <source>%1 is true or false, not &quot;%2&quot;.</source>
         <translation>%1 es true o false, no «%2».</translation>
+    </message>
+    <message>
+        <source>%1 must be from %2 to below %3.</source>
+        <translation>%1 debe estar entre %2 y menos de %3.</translation>
+    </message>
+    <message>
+        <source>%1 must be from %2 to %3.</source>
+        <translation>%1 debe estar entre %2 y %3.</translation>
     </message>
 </context>
 <context>
@@ -3604,6 +3697,121 @@ eventos:   %1
     </message>
 </context>
 <context>
+    <name>TelemetryFieldNames</name>
+    <message>
+        <source>Latitude</source>
+        <translation>Latitud</translation>
+    </message>
+    <message>
+        <source>Longitude</source>
+        <translation>Longitud</translation>
+    </message>
+    <message>
+        <source>Altitude (AMSL)</source>
+        <translation>Altitud (s. n. m.)</translation>
+    </message>
+    <message>
+        <source>Altitude above home</source>
+        <translation>Altitud sobre el punto de inicio</translation>
+    </message>
+    <message>
+        <source>Roll</source>
+        <translation>Alabeo</translation>
+    </message>
+    <message>
+        <source>Pitch</source>
+        <translation>Cabeceo</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Rumbo</translation>
+    </message>
+    <message>
+        <source>Course</source>
+        <translation>Derrota</translation>
+    </message>
+    <message>
+        <source>Ground speed</source>
+        <translation>Velocidad respecto al suelo</translation>
+    </message>
+    <message>
+        <source>Air speed</source>
+        <translation>Velocidad aerodinámica</translation>
+    </message>
+    <message>
+        <source>Vertical speed</source>
+        <translation>Velocidad vertical</translation>
+    </message>
+    <message>
+        <source>Battery voltage</source>
+        <translation>Tensión de la batería</translation>
+    </message>
+    <message>
+        <source>Battery current</source>
+        <translation>Corriente de la batería</translation>
+    </message>
+    <message>
+        <source>Battery remaining</source>
+        <translation>Batería restante</translation>
+    </message>
+    <message>
+        <source>GPS fix</source>
+        <translation>Fix GPS</translation>
+    </message>
+    <message>
+        <source>Satellites</source>
+        <translation>Satélites</translation>
+    </message>
+    <message>
+        <source>HDOP</source>
+        <translation>HDOP</translation>
+    </message>
+    <message>
+        <source>Home latitude</source>
+        <translation>Latitud del punto de inicio</translation>
+    </message>
+    <message>
+        <source>Home longitude</source>
+        <translation>Longitud del punto de inicio</translation>
+    </message>
+    <message>
+        <source>Home altitude (AMSL)</source>
+        <translation>Altitud del punto de inicio (s. n. m.)</translation>
+    </message>
+    <message>
+        <source>Armed</source>
+        <translation>Armado</translation>
+    </message>
+    <message>
+        <source>Flight mode</source>
+        <translation>Modo de vuelo</translation>
+    </message>
+    <message>
+        <source>Mission state</source>
+        <translation>Estado de la misión</translation>
+    </message>
+    <message>
+        <source>Current waypoint</source>
+        <translation>Punto de ruta actual</translation>
+    </message>
+    <message>
+        <source>Waypoints reached</source>
+        <translation>Puntos de ruta alcanzados</translation>
+    </message>
+    <message>
+        <source>Waypoints on board</source>
+        <translation>Puntos de ruta a bordo</translation>
+    </message>
+    <message>
+        <source>Fence breached</source>
+        <translation>Geovalla rebasada</translation>
+    </message>
+    <message>
+        <source>Fence breaches</source>
+        <translation>Rebases de geovalla</translation>
+    </message>
+</context>
+<context>
     <name>TelemetryPage</name>
     <message>
         <source>Vehicles</source>
@@ -3727,18 +3935,6 @@ eventos:   %1
         <translation>%1 a %2</translation>
     </message>
     <message>
-        <source>%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height above sea level is unknown.</source>
-        <translation>%1: la altitud es sobre %2, pero no hay datos de terreno %3 (se probó: %4), así que se desconoce la altura sobre el nivel del mar.</translation>
-    </message>
-    <message>
-        <source>the ground</source>
-        <translation>el terreno</translation>
-    </message>
-    <message>
-        <source>at home</source>
-        <translation>en el origen</translation>
-    </message>
-    <message>
         <source>%1 m above the ground</source>
         <translation>a %1 m sobre el terreno</translation>
     </message>
@@ -3766,6 +3962,14 @@ eventos:   %1
         <source>%1 (tried: %2); the clearance there is not checked.</source>
         <translation>%1 (se probó: %2); allí no se comprueba el margen.</translation>
     </message>
+    <message>
+        <source>%1: the altitude is above home, but there is no terrain data at home (tried: %2), so the height above sea level is unknown.</source>
+        <translation>%1: la altitud es sobre el punto de inicio, pero no hay datos del terreno en el punto de inicio (probado: %2), así que la altura sobre el nivel del mar es desconocida.</translation>
+    </message>
+    <message>
+        <source>%1: the altitude is above the ground, but there is no terrain data there (tried: %2), so the height above sea level is unknown.</source>
+        <translation>%1: la altitud es sobre el suelo, pero allí no hay datos del terreno (probado: %2), así que la altura sobre el nivel del mar es desconocida.</translation>
+    </message>
 </context>
 <context>
     <name>TileArea</name>
@@ -3784,6 +3988,10 @@ eventos:   %1
     <message>
         <source>The area&apos;s edge from corner %1 crosses the antimeridian: draw it as two areas.</source>
         <translation>El lado del área que parte de la esquina %1 cruza el antimeridiano: dibújela como dos áreas.</translation>
+    </message>
+    <message>
+        <source>The area&apos;s edges from corner %1 and corner %2 cross: draw it without crossing.</source>
+        <translation>Los lados del área desde la esquina %1 y la esquina %2 se cruzan: dibújela sin cruces.</translation>
     </message>
 </context>
 <context>
@@ -4065,10 +4273,12 @@ eventos:   %1
     </message>
     <message>
         <source>returning home</source>
+        <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; returning home&quot;.</extracomment>
         <translation>volviendo al origen</translation>
     </message>
     <message>
         <source>action unknown</source>
+        <extracomment>After a fence breach, the vehicle named no action: &quot;fence breach: left its fence &apos;A&apos;; action unknown&quot;.</extracomment>
         <translation>acción desconocida</translation>
     </message>
     <message>
@@ -4102,6 +4312,16 @@ eventos:   %1
     <message>
         <source>&quot;%1&quot; is not a parameter name</source>
         <translation>«%1» no es un nombre de parámetro</translation>
+    </message>
+    <message>
+        <source>landing</source>
+        <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; landing&quot;.</extracomment>
+        <translation>aterrizando</translation>
+    </message>
+    <message>
+        <source>holding</source>
+        <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; holding&quot;.</extracomment>
+        <translation>manteniendo posición</translation>
     </message>
 </context>
 <context>
@@ -5122,6 +5342,30 @@ eventos:   %1
         <source>The server refused: %1</source>
         <translation>El servidor se negó: %1</translation>
     </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Desconectado</translation>
+    </message>
+    <message>
+        <source>Connecting</source>
+        <translation>Conectando</translation>
+    </message>
+    <message>
+        <source>Authorizing</source>
+        <translation>Autorizando</translation>
+    </message>
+    <message>
+        <source>Logging in</source>
+        <translation>Iniciando sesión</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Listo</translation>
+    </message>
+    <message>
+        <source>Reconnecting</source>
+        <translation>Reconectando</translation>
+    </message>
 </context>
 <context>
     <name>sortie::client::FleetRoutes</name>
@@ -5938,6 +6182,25 @@ eventos:   %1
     <message>
         <source> · failed</source>
         <translation> · fallido</translation>
+    </message>
+    <message>
+        <source>The drawn area cannot be used: %1</source>
+        <translation>El área dibujada no se puede usar: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>A drawn area (%n corner(s))</source>
+        <translation>
+            <numerusform>Un área dibujada (%n esquina)</numerusform>
+            <numerusform>Un área dibujada (%n esquinas)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The drawn rectangle is not an area (%1 to %2).</source>
+        <translation>El rectángulo dibujado no es un área (%1 a %2).</translation>
+    </message>
+    <message>
+        <source>A drawn rectangle</source>
+        <translation>Un rectángulo dibujado</translation>
     </message>
 </context>
 <context>

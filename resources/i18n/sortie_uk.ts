@@ -685,10 +685,6 @@
         <translation>растр не прив’язаний до координат (немає геотрансформації)</translation>
     </message>
     <message>
-        <source>the raster&apos;s geotransform cannot be inverted</source>
-        <translation>геотрансформацію растра не можна обернути</translation>
-    </message>
-    <message>
         <source>the raster states no coordinate reference system</source>
         <translation>растр не вказує системи координат</translation>
     </message>
@@ -1128,6 +1124,13 @@
     </message>
 </context>
 <context>
+    <name>IndexedDemSource</name>
+    <message>
+        <source>%1: no rasters</source>
+        <translation>%1: немає растрів</translation>
+    </message>
+</context>
+<context>
     <name>InstrumentPanel</name>
     <message>
         <source>%1 (%2, %3)</source>
@@ -1561,6 +1564,42 @@
         <source>/path/to/dem.tif or /path/to/dem-folder (empty: none)</source>
         <translation>/шлях/до/dem.tif або /шлях/до/теки-dem (порожньо: немає)</translation>
     </message>
+    <message>
+        <source>Orthophoto</source>
+        <translation>Ортофотоплан</translation>
+    </message>
+    <message>
+        <source>Rasters (*.tif *.tiff *.jp2 *.vrt *.img *.ecw *.sid *.png *.jpg)</source>
+        <translation>Растри (*.tif *.tiff *.jp2 *.vrt *.img *.ecw *.sid *.png *.jpg)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Усі файли (*)</translation>
+    </message>
+    <message>
+        <source>Terrain model (DEM)</source>
+        <translation>Модель рельєфу (DEM)</translation>
+    </message>
+    <message>
+        <source>Elevation rasters (*.tif *.tiff *.hgt *.vrt *.dt0 *.dt1 *.dt2 *.asc *.img *.bil *.flt *.dem)</source>
+        <translation>Растри висот (*.tif *.tiff *.hgt *.vrt *.dt0 *.dt1 *.dt2 *.asc *.img *.bil *.flt *.dem)</translation>
+    </message>
+    <message>
+        <source>A folder of terrain models (DEM tiles)</source>
+        <translation>Тека з моделями рельєфу (тайли DEM)</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Огляд…</translation>
+    </message>
+    <message>
+        <source>File…</source>
+        <translation>Файл…</translation>
+    </message>
+    <message>
+        <source>Folder…</source>
+        <translation>Тека…</translation>
+    </message>
 </context>
 <context>
     <name>MavlinkExport</name>
@@ -1631,6 +1670,21 @@
     <message>
         <source>Area scan %1 was written as %2 waypoints with distance triggering.</source>
         <translation>Сканування площі %1 записано як точки (%2) зі спуском затвора за відстанню.</translation>
+    </message>
+    <message>
+        <source>tilt</source>
+        <extracomment>A gimbal&apos;s axis, listed in &quot;the gimbal&apos;s %2 was not set&quot; (tilt, roll, yaw).</extracomment>
+        <translation>нахил</translation>
+    </message>
+    <message>
+        <source>roll</source>
+        <extracomment>A gimbal&apos;s axis, listed in &quot;the gimbal&apos;s %2 was not set&quot; (tilt, roll, yaw).</extracomment>
+        <translation>крен</translation>
+    </message>
+    <message>
+        <source>yaw</source>
+        <extracomment>A gimbal&apos;s axis, listed in &quot;the gimbal&apos;s %2 was not set&quot; (tilt, roll, yaw).</extracomment>
+        <translation>рискання</translation>
     </message>
 </context>
 <context>
@@ -1834,6 +1888,14 @@
         <source>no return</source>
         <translation>точка неповернення</translation>
     </message>
+    <message>
+        <source>Click the corners (%1 so far), or Shift+drag a box</source>
+        <translation>Клацніть кути (поки %1) або протягніть прямокутник із Shift</translation>
+    </message>
+    <message>
+        <source>Done</source>
+        <translation>Готово</translation>
+    </message>
 </context>
 <context>
     <name>NfzConversion</name>
@@ -2012,6 +2074,14 @@
         <source>Stop</source>
         <translation>Зупинити</translation>
     </message>
+    <message>
+        <source>Draw an area</source>
+        <translation>Намалювати область</translation>
+    </message>
+    <message>
+        <source>Click its corners on the map, or Shift+drag a box</source>
+        <translation>Клацніть її кути на мапі або протягніть прямокутник із Shift</translation>
+    </message>
 </context>
 <context>
     <name>OrthophotoRenderer</name>
@@ -2042,6 +2112,10 @@
     <message>
         <source>the warped tile cannot be read</source>
         <translation>перепроєкційований тайл не можна прочитати</translation>
+    </message>
+    <message>
+        <source>%1: tile size %2 is outside 1..%3</source>
+        <translation>%1: розмір тайла %2 поза межами 1..%3</translation>
     </message>
 </context>
 <context>
@@ -2286,28 +2360,12 @@ events:   %1
         <translation>очікується [latitude, longitude, altitude]</translation>
     </message>
     <message>
-        <source>%1 at %2 was left out: %3</source>
-        <translation>%1 у %2 пропущено: %3</translation>
-    </message>
-    <message>
-        <source>The %1s at %2 were left out: %3</source>
-        <translation>Об’єкти типу «%1» у %2 пропущено: %3</translation>
-    </message>
-    <message>
-        <source>Geofence polygon</source>
-        <translation>Полігон геозони</translation>
-    </message>
-    <message>
         <source>a polygon needs at least 3 vertices, found %1</source>
         <translation>полігону потрібно щонайменше 3 вершини, знайдено %1</translation>
     </message>
     <message>
         <source>Geofence polygon at %1 was left out: %2</source>
         <translation>Полігон геозони в %1 пропущено: %2</translation>
-    </message>
-    <message>
-        <source>Geofence circle</source>
-        <translation>Коло геозони</translation>
     </message>
     <message>
         <source>the radius must be positive metres</source>
@@ -2318,8 +2376,24 @@ events:   %1
         <translation>Точку повернення геозони в разі порушення в %1 пропущено: %2</translation>
     </message>
     <message>
-        <source>Rally point</source>
-        <translation>Точка збору</translation>
+        <source>The geofence polygons at %1 were left out: %2</source>
+        <translation>Полігони геозони в %1 пропущено: %2</translation>
+    </message>
+    <message>
+        <source>Geofence circle at %1 was left out: %2</source>
+        <translation>Коло геозони в %1 пропущено: %2</translation>
+    </message>
+    <message>
+        <source>The geofence circles at %1 were left out: %2</source>
+        <translation>Кола геозони в %1 пропущено: %2</translation>
+    </message>
+    <message>
+        <source>Rally point at %1 was left out: %2</source>
+        <translation>Точку збору в %1 пропущено: %2</translation>
+    </message>
+    <message>
+        <source>The rally points at %1 were left out: %2</source>
+        <translation>Точки збору в %1 пропущено: %2</translation>
     </message>
 </context>
 <context>
@@ -2414,6 +2488,21 @@ events:   %1
     <message>
         <source>, its %1 layers as %1 loops at one height</source>
         <translation>, її шари (%1) стали витками на одній висоті</translation>
+    </message>
+</context>
+<context>
+    <name>RasterFootprint</name>
+    <message>
+        <source>the raster&apos;s geotransform cannot be inverted (a zero pixel size?)</source>
+        <translation>геоперетворення растра не можна обернути (нульовий розмір пікселя?)</translation>
+    </message>
+    <message>
+        <source>the raster has no pixels (%1×%2)</source>
+        <translation>растр не має пікселів (%1×%2)</translation>
+    </message>
+    <message>
+        <source>the raster&apos;s geotransform is not finite</source>
+        <translation>геоперетворення растра не скінченне</translation>
     </message>
 </context>
 <context>
@@ -3235,10 +3324,6 @@ events:   %1
         <translation>Для %1 потрібне число, а не «%2».</translation>
     </message>
     <message>
-        <source>%1 must be from %2 to %3%4.</source>
-        <translation>%1 має бути від %2 до %3%4.</translation>
-    </message>
-    <message>
         <source>altitudeType is AGL or AMSL, not &quot;%1&quot;.</source>
         <translation>altitudeType — це AGL або AMSL, а не «%1».</translation>
     </message>
@@ -3269,6 +3354,14 @@ events:   %1
     <message>
         <source>%1 is true or false, not &quot;%2&quot;.</source>
         <translation>%1 — це true або false, а не «%2».</translation>
+    </message>
+    <message>
+        <source>%1 must be from %2 to below %3.</source>
+        <translation>%1 має бути від %2 до менше ніж %3.</translation>
+    </message>
+    <message>
+        <source>%1 must be from %2 to %3.</source>
+        <translation>%1 має бути від %2 до %3.</translation>
     </message>
 </context>
 <context>
@@ -3614,6 +3707,121 @@ events:   %1
     </message>
 </context>
 <context>
+    <name>TelemetryFieldNames</name>
+    <message>
+        <source>Latitude</source>
+        <translation>Широта</translation>
+    </message>
+    <message>
+        <source>Longitude</source>
+        <translation>Довгота</translation>
+    </message>
+    <message>
+        <source>Altitude (AMSL)</source>
+        <translation>Висота (над рівнем моря)</translation>
+    </message>
+    <message>
+        <source>Altitude above home</source>
+        <translation>Висота над точкою старту</translation>
+    </message>
+    <message>
+        <source>Roll</source>
+        <translation>Крен</translation>
+    </message>
+    <message>
+        <source>Pitch</source>
+        <translation>Тангаж</translation>
+    </message>
+    <message>
+        <source>Heading</source>
+        <translation>Курс</translation>
+    </message>
+    <message>
+        <source>Course</source>
+        <translation>Шляховий кут</translation>
+    </message>
+    <message>
+        <source>Ground speed</source>
+        <translation>Шляхова швидкість</translation>
+    </message>
+    <message>
+        <source>Air speed</source>
+        <translation>Повітряна швидкість</translation>
+    </message>
+    <message>
+        <source>Vertical speed</source>
+        <translation>Вертикальна швидкість</translation>
+    </message>
+    <message>
+        <source>Battery voltage</source>
+        <translation>Напруга батареї</translation>
+    </message>
+    <message>
+        <source>Battery current</source>
+        <translation>Струм батареї</translation>
+    </message>
+    <message>
+        <source>Battery remaining</source>
+        <translation>Залишок заряду</translation>
+    </message>
+    <message>
+        <source>GPS fix</source>
+        <translation>GPS-фіксація</translation>
+    </message>
+    <message>
+        <source>Satellites</source>
+        <translation>Супутники</translation>
+    </message>
+    <message>
+        <source>HDOP</source>
+        <translation>HDOP</translation>
+    </message>
+    <message>
+        <source>Home latitude</source>
+        <translation>Широта точки старту</translation>
+    </message>
+    <message>
+        <source>Home longitude</source>
+        <translation>Довгота точки старту</translation>
+    </message>
+    <message>
+        <source>Home altitude (AMSL)</source>
+        <translation>Висота точки старту (над рівнем моря)</translation>
+    </message>
+    <message>
+        <source>Armed</source>
+        <translation>Озброєно</translation>
+    </message>
+    <message>
+        <source>Flight mode</source>
+        <translation>Режим польоту</translation>
+    </message>
+    <message>
+        <source>Mission state</source>
+        <translation>Стан місії</translation>
+    </message>
+    <message>
+        <source>Current waypoint</source>
+        <translation>Поточна точка маршруту</translation>
+    </message>
+    <message>
+        <source>Waypoints reached</source>
+        <translation>Досягнуті точки маршруту</translation>
+    </message>
+    <message>
+        <source>Waypoints on board</source>
+        <translation>Точки маршруту на борту</translation>
+    </message>
+    <message>
+        <source>Fence breached</source>
+        <translation>Геозону порушено</translation>
+    </message>
+    <message>
+        <source>Fence breaches</source>
+        <translation>Порушення геозони</translation>
+    </message>
+</context>
+<context>
     <name>TelemetryPage</name>
     <message>
         <source>Vehicles</source>
@@ -3737,18 +3945,6 @@ events:   %1
         <translation>з %1 по %2</translation>
     </message>
     <message>
-        <source>%1: the altitude is above %2, but there is no terrain data %3 (tried: %4), so the height above sea level is unknown.</source>
-        <translation>%1: висоту задано відносно %2, але немає даних рельєфу %3 (спробувано: %4), тож висота над рівнем моря невідома.</translation>
-    </message>
-    <message>
-        <source>the ground</source>
-        <translation>рельєфу</translation>
-    </message>
-    <message>
-        <source>at home</source>
-        <translation>в точці дому</translation>
-    </message>
-    <message>
         <source>%1 m above the ground</source>
         <translation>%1 m над поверхнею</translation>
     </message>
@@ -3776,6 +3972,14 @@ events:   %1
         <source>%1 (tried: %2); the clearance there is not checked.</source>
         <translation>%1 (спробувано: %2); запас висоти там не перевіряється.</translation>
     </message>
+    <message>
+        <source>%1: the altitude is above home, but there is no terrain data at home (tried: %2), so the height above sea level is unknown.</source>
+        <translation>%1: висоту задано над точкою старту, але для точки старту немає даних рельєфу (спробувано: %2), тож висота над рівнем моря невідома.</translation>
+    </message>
+    <message>
+        <source>%1: the altitude is above the ground, but there is no terrain data there (tried: %2), so the height above sea level is unknown.</source>
+        <translation>%1: висоту задано над землею, але там немає даних рельєфу (спробувано: %2), тож висота над рівнем моря невідома.</translation>
+    </message>
 </context>
 <context>
     <name>TileArea</name>
@@ -3794,6 +3998,10 @@ events:   %1
     <message>
         <source>The area&apos;s edge from corner %1 crosses the antimeridian: draw it as two areas.</source>
         <translation>Ребро району від кута %1 перетинає антимеридіан: намалюйте його як два райони.</translation>
+    </message>
+    <message>
+        <source>The area&apos;s edges from corner %1 and corner %2 cross: draw it without crossing.</source>
+        <translation>Сторони області від кута %1 і кута %2 перетинаються: намалюйте її без перетинів.</translation>
     </message>
 </context>
 <context>
@@ -4079,10 +4287,12 @@ events:   %1
     </message>
     <message>
         <source>returning home</source>
+        <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; returning home&quot;.</extracomment>
         <translation>повертається додому</translation>
     </message>
     <message>
         <source>action unknown</source>
+        <extracomment>After a fence breach, the vehicle named no action: &quot;fence breach: left its fence &apos;A&apos;; action unknown&quot;.</extracomment>
         <translation>дія невідома</translation>
     </message>
     <message>
@@ -4116,6 +4326,16 @@ events:   %1
     <message>
         <source>&quot;%1&quot; is not a parameter name</source>
         <translation>«%1» не є назвою параметра</translation>
+    </message>
+    <message>
+        <source>landing</source>
+        <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; landing&quot;.</extracomment>
+        <translation>сідає</translation>
+    </message>
+    <message>
+        <source>holding</source>
+        <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; holding&quot;.</extracomment>
+        <translation>утримує позицію</translation>
     </message>
 </context>
 <context>
@@ -5138,6 +5358,30 @@ events:   %1
         <source>The server refused: %1</source>
         <translation>Сервер відмовив: %1</translation>
     </message>
+    <message>
+        <source>Disconnected</source>
+        <translation>Від&apos;єднано</translation>
+    </message>
+    <message>
+        <source>Connecting</source>
+        <translation>З&apos;єднання</translation>
+    </message>
+    <message>
+        <source>Authorizing</source>
+        <translation>Авторизація</translation>
+    </message>
+    <message>
+        <source>Logging in</source>
+        <translation>Вхід</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Готово</translation>
+    </message>
+    <message>
+        <source>Reconnecting</source>
+        <translation>Повторне з&apos;єднання</translation>
+    </message>
 </context>
 <context>
     <name>sortie::client::FleetRoutes</name>
@@ -5969,6 +6213,26 @@ events:   %1
     <message>
         <source> · failed</source>
         <translation> · помилка</translation>
+    </message>
+    <message>
+        <source>The drawn area cannot be used: %1</source>
+        <translation>Намальовану область не можна використати: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>A drawn area (%n corner(s))</source>
+        <translation>
+            <numerusform>Намальована область (%n кут)</numerusform>
+            <numerusform>Намальована область (%n кути)</numerusform>
+            <numerusform>Намальована область (%n кутів)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The drawn rectangle is not an area (%1 to %2).</source>
+        <translation>Намальований прямокутник не є областю (від %1 до %2).</translation>
+    </message>
+    <message>
+        <source>A drawn rectangle</source>
+        <translation>Намальований прямокутник</translation>
     </message>
 </context>
 <context>
