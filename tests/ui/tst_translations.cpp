@@ -6,6 +6,7 @@
 #include "ClientWindow.h"
 #include "DisplayUnits.h"
 #include "QuickScene.h"
+#include "RouteEndurance.h"
 #include "Translations.h"
 #include "VehicleLayer.h"
 
@@ -154,10 +155,14 @@ private slots:
 
     // Words made by C++ (a model's role, a property, what a C++ item paints) follow a language change
     // without being made again by hand: the status line, the vehicle list's link state, the plot's
-    // field names, the route's "Opened …" line, the map's attribution, the profile's headline.
+    // field names, the route's "Opened …" line, the map's attribution, the profile's headline, what
+    // the route's analysis words (the endurance's missing profile).
     void cppWordsFollowTheLanguage()
     {
         m_client->showPage(1);
+        const endurance::RouteEndurance &endurance = m_client->graph().endurance();
+        const QString noProfile = QStringLiteral("No energy profile: choose the vehicle's profile file");
+        QTRY_COMPARE(endurance.problem(), noProfile);
         auto *profile = m_client->find<QObject>(QStringLiteral("elevationProfile"));
         QVERIFY(profile);
         QTRY_VERIFY(!profile->property("headline").toString().isEmpty());
@@ -190,6 +195,7 @@ private slots:
         QCOMPARE(m_client->missions().message(), QStringLiteral("%1 geöffnet (Version %2).").arg(m_client->missions().routeName(), version));
         QTRY_COMPARE(textOf(*m_client, "attributionLabel"), QStringLiteral("Landumrisse: Natural Earth"));
         const QString germanHeadline = profile->property("headline").toString();
+        QTRY_COMPARE(endurance.problem(), QStringLiteral("Kein Energieprofil: Wählen Sie die Profildatei des Fahrzeugs"));
         QVERIFY2(germanHeadline.startsWith(QLatin1String("geringster Abstand")) || germanHeadline == QLatin1String("Abstand unbekannt"),
                  qPrintable(germanHeadline));
 
@@ -197,6 +203,7 @@ private slots:
         QTRY_VERIFY2(textOf(*m_client, "connectionStateLabel").startsWith(QStringLiteral("Ready — ")), qPrintable(textOf(*m_client, "connectionStateLabel")));
         QCOMPARE(m_client->missions().message(), opened);
         QCOMPARE(profile->property("headline").toString(), englishHeadline);
+        QTRY_COMPARE(endurance.problem(), noProfile);
         QTRY_COMPARE(textOf(*m_client, "attributionLabel"), QStringLiteral("Land outlines: Natural Earth"));
         QTRY_COMPARE(m_client->find<QObject>(QStringLiteral("plotFieldPicker"))->property("displayText").toString(), QStringLiteral("Ground speed"));
     }

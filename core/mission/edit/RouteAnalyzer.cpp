@@ -1,4 +1,5 @@
 #include "RouteAnalyzer.h"
+#include "LanguageChange.h"
 
 #include "RouteModel.h"
 #include "ValidationIssueModel.h"
@@ -14,6 +15,9 @@ RouteAnalyzer::RouteAnalyzer(const RouteModel *model, QObject *parent)
     m_timer.setInterval(50);
     connect(&m_timer, &QTimer::timeout, this, &RouteAnalyzer::recomputeNow);
     connect(model, &RouteModel::routeEdited, this, &RouteAnalyzer::schedule);
+    // The issues' and the rules' words (the endurance's "no profile") are made by the analysis:
+    // after a language change it runs again, as after an edit.
+    i18n::onLanguageChange(this, [this] { schedule(); });
     recomputeNow();
 }
 

@@ -54,6 +54,13 @@
     </message>
 </context>
 <context>
+    <name>RouteEndurance</name>
+    <message>
+        <source>No energy profile: choose the vehicle&apos;s profile file</source>
+        <translation>Kein Energieprofil: Wählen Sie die Profildatei des Fahrzeugs</translation>
+    </message>
+</context>
+<context>
     <name>TelemetryFieldNames</name>
     <message>
         <source>Ground speed</source>
