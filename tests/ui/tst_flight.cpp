@@ -274,11 +274,11 @@ private slots:
         vehicle::Vehicle *first = m_client->fleet().vehicleAt(0);
         vehicle::Vehicle *third = m_client->fleet().vehicleAt(2);
         QTRY_VERIFY(m_client->find(QStringLiteral("groupHeader"))->isVisible());
-        QCOMPARE(text("groupTargets"), QStringLiteral("To 2 ticked vehicle(s): %1, %2").arg(first->name(), third->name()));
+        QCOMPARE(text("groupTargets"), QStringLiteral("To 2 ticked vehicles: %1, %2").arg(first->name(), third->name()));
         for (int r = 0; r < 3; ++r)
             QTRY_COMPARE_WITH_TIMEOUT(m_client->fleet().vehicleAt(r)->linkState(), vehicle::VehicleLink::State::Connected, 10000);
         click("armButton");
-        confirm(QStringLiteral("Arm 2 vehicle(s): %1, %2?").arg(first->name(), third->name()));
+        confirm(QStringLiteral("Arm 2 vehicles: %1, %2?").arg(first->name(), third->name()));
         QTRY_VERIFY_WITH_TIMEOUT(first->armed() && third->armed(), 10000);
         QTRY_VERIFY2(text("commandResult").contains(QStringLiteral("2 of 2")), qPrintable(text("commandResult")));
         QVERIFY(!m_client->fleet().vehicleAt(1)->armed());

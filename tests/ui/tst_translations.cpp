@@ -241,6 +241,17 @@ private slots:
         QCOMPARE(ui::DisplayUnits().formatAltitude(12.5), QStringLiteral("12,5 m"));
         client.settings().setLanguage(QStringLiteral("en"));
         QTRY_COMPARE(textOf(client, "loginTab"), QStringLiteral("Login"));
+        // English has its plurals (resources/i18n/sortie_en.ts): "1 corner", "5 corners", never "corner(s)".
+        const char *context = "sortie::maptiles::OfflineMaps";
+        QCOMPARE(QCoreApplication::translate(context, "A drawn area (%n corner(s))", nullptr, 5), QStringLiteral("A drawn area (5 corners)"));
+        QCOMPARE(QCoreApplication::translate("sortie::mission::RouteEditor", "Move %n segment(s)", nullptr, 1), QStringLiteral("Move 1 segment"));
+        QCOMPARE(codesOf(client.translations().languages()).count(QStringLiteral("en")), 1);
+        // In German the German forms, not the English ones.
+        client.settings().setLanguage(QStringLiteral("de"));
+        QTRY_COMPARE(textOf(client, "loginTab"), login);
+        QCOMPARE(QCoreApplication::translate(context, "A drawn area (%n corner(s))", nullptr, 5), QStringLiteral("Ein gezeichnetes Gebiet (5 Ecken)"));
+        client.settings().setLanguage(QStringLiteral("en"));
+        QTRY_COMPARE(textOf(client, "loginTab"), QStringLiteral("Login"));
     }
 };
 

@@ -51,6 +51,8 @@ Translations::~Translations()
         QCoreApplication::removeTranslator(m_sortie.get());
     if (m_qt)
         QCoreApplication::removeTranslator(m_qt.get());
+    if (m_englishPlurals)
+        QCoreApplication::removeTranslator(m_englishPlurals.get());
 }
 
 QStringList Translations::translated() const
@@ -82,7 +84,7 @@ void Translations::apply()
     m_requested = m_settings.language();
     const QLocale locale = localeFor(m_requested);
     // Out with the old ones first: an English choice must not keep the last language's words.
-    for (auto *old : {&m_sortie, &m_qt}) {
+    for (auto *old : {&m_sortie, &m_qt, &m_englishPlurals}) {
         if (*old) {
             QCoreApplication::removeTranslator(old->get());
             old->reset();
@@ -94,6 +96,15 @@ void Translations::apply()
     if (locale.language() != QLocale::English && sortie->load(locale, QStringLiteral("sortie"), QStringLiteral("_"), m_folder)) {
         QCoreApplication::installTranslator(sortie.get());
         m_sortie = std::move(sortie);
+    }
+    // English words have English plurals: the source says "%n waypoint(s)", sortie_en (plural forms
+    // only, scripts/english-plurals.py) says "1 waypoint" and "2 waypoints".
+    if (!m_sortie) {
+        auto plurals = std::make_unique<QTranslator>();
+        if (plurals->load(kPrefix + QStringLiteral("en"), m_folder)) {
+            QCoreApplication::installTranslator(plurals.get());
+            m_englishPlurals = std::move(plurals);
+        }
     }
     // Qt's own words (a dialog's "Cancel"): Debian's qt6-translations-l10n. Without them those stay
     // English in a translated UI, which is said in the log, not hidden.

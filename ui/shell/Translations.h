@@ -61,6 +61,7 @@ private:
     QString m_active;
     std::unique_ptr<QTranslator> m_sortie;
     std::unique_ptr<QTranslator> m_qt;
+    std::unique_ptr<QTranslator> m_englishPlurals; // "1 waypoint", "2 waypoints": while the words are English
 };
 
 } // namespace sortie::ui
