@@ -3,6 +3,13 @@
 #include "FlownPath.h"
 #include "Zone.h"
 
+// Boost 1.74's validity and overlay checks rescale coordinates to 64-bit integers by default and can
+// overflow them on far-apart rings (fuzz_kml_zones found a hole far outside its zone: signed overflow
+// in determinant.hpp). Without the rescaling they work in doubles, as later Boost versions do by
+// default. Defined before the first Boost.Geometry header of every file that uses it.
+#ifndef BOOST_GEOMETRY_NO_ROBUSTNESS
+#define BOOST_GEOMETRY_NO_ROBUSTNESS
+#endif
 #include <boost/geometry.hpp>
 #include <boost/geometry/geometries/box.hpp>
 #include <boost/geometry/geometries/point_xy.hpp>

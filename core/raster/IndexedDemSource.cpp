@@ -6,6 +6,9 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#ifndef BOOST_GEOMETRY_NO_ROBUSTNESS
+#define BOOST_GEOMETRY_NO_ROBUSTNESS // as core/airspace (PlaneZone.h): one Boost.Geometry configuration in the program
+#endif
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <boost/iterator/function_output_iterator.hpp>
