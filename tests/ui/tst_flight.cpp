@@ -266,8 +266,14 @@ private slots:
                 if (child->objectName() == QStringLiteral("vehicleTick"))
                     box = child;
             QVERIFY(box && box->isVisible());
-            QTest::mouseClick(m_client->window(), Qt::LeftButton, {}, centreOf(box));
-            QTRY_VERIFY(box->property("checked").toBool());
+            // The list lays out its rows on the next frame (the page has just been shown, the
+            // vehicles have just arrived): click where the box is drawn, not where it was.
+            QVERIFY(test::waitForFrame(m_client->window()));
+            const QPoint at = centreOf(box);
+            QTest::mouseClick(m_client->window(), Qt::LeftButton, {}, at);
+            QTRY_VERIFY2(box->property("checked").toBool(),
+                         qPrintable(QStringLiteral("row %1: clicked at %2,%3; the box is now at %4,%5")
+                                        .arg(row).arg(at.x()).arg(at.y()).arg(centreOf(box).x()).arg(centreOf(box).y())));
         };
         STEP(tick(0));
         STEP(tick(2));

@@ -6,7 +6,8 @@
 // saved beside the test's binary (longest/).
 // What VisualCheck does not judge, and the pseudo renderings show: a text cut at the side by a
 // clipping panel, and a frame's content running past the frame's border (the login frame's title
-// and "remember" box are checked here: the frame grows with its words). The mission panel's
+// and "remember" box are checked here: the frame grows with its words; and the waypoint table's
+// headers, which widen their columns rather than elide). The mission panel's
 // bulk-edit fields flow on to a second line, so its Upload button stays inside in German.
 #include "ClientWindow.h"
 #include "QuickScene.h"
@@ -66,6 +67,17 @@ QString outputDir()
     return dir;
 }
 
+// A Repeater's items are found through the item tree, not the object tree.
+QQuickItem *findItem(QQuickItem *scope, const QString &name)
+{
+    if (scope->objectName() == name)
+        return scope;
+    for (QQuickItem *child : scope->childItems())
+        if (QQuickItem *found = findItem(child, name))
+            return found;
+    return nullptr;
+}
+
 } // namespace
 
 class TestLongestLanguage : public QObject
@@ -110,6 +122,22 @@ class TestLongestLanguage : public QObject
             QVERIFY2(problems.isEmpty(), qPrintable(file + QStringLiteral(":\n  ") + problems.join(QStringLiteral("\n  "))));
             if (page == 0)
                 loginFrameHoldsItsWords(file);
+            if (page == 1)
+                waypointHeadersShowWhole(file);
+        }
+    }
+
+    // VisualCheck accepts an elided text; the waypoint table's headers are not to be elided: the
+    // columns widen to their words, and the panel beside the map to its table.
+    void waypointHeadersShowWhole(const QString &file)
+    {
+        for (int column = 0; column < 8; ++column) {
+            const QString name = QStringLiteral("waypointHeader_%1").arg(column);
+            QQuickItem *header = findItem(m_client->window()->contentItem(), name);
+            QVERIFY2(header, qPrintable(name));
+            QVERIFY2(!header->property("truncated").toBool(),
+                     qPrintable(QStringLiteral("%1: the header \"%2\" is cut to %3 px")
+                                    .arg(file, header->property("text").toString()).arg(header->width())));
         }
     }
 

@@ -397,7 +397,7 @@ Page {
         }
         RoutePanel {
             id: panel
-            SplitView.preferredWidth: 460
+            SplitView.preferredWidth: Math.max(460, panel.neededWidth)
             SplitView.minimumWidth: 320
             missions: page.missions
             doc: page.doc

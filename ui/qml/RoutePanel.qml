@@ -21,6 +21,8 @@ Pane {
     required property int waypointCount
     required property bool scanning              // the area-scan tool is on
     signal scanToggled(bool on)
+    // The width at which the waypoint table's headers show whole (they are longer in some languages).
+    readonly property real neededWidth: waypointTable.neededWidth + leftPadding + rightPadding
     padding: 8
     contentWidth: availableWidth // the content follows the panel's width, not its own wishes
     clip: true
@@ -344,6 +346,7 @@ Pane {
         }
 
         WaypointTable {
+            id: waypointTable
             Layout.fillWidth: true
             Layout.fillHeight: true
             doc: panel.doc

@@ -81,24 +81,37 @@ ColumnLayout {
         }
     }
 
-    // One width per column, for the header and the rows alike; the last column takes the rest.
-    readonly property var columnWidths: [28, 78, 78, 50, 42, 52, 48]
+    // One width per column, for the header and the rows alike: the cells' width, or the header's
+    // words if they are wider (German "Geschw.", Spanish "Velocidad"); the last column takes the
+    // rest, never less than its header. The panel beside the map asks for neededWidth.
+    readonly property list<string> headers: [
+        qsTr("#"), qsTr("Latitude"), qsTr("Longitude"),
+        heightsShown === 0 ? qsTr("Alt") : heightsShown === 1 ? qsTr("AMSL") : qsTr("AGL"),
+        qsTr("Type"), qsTr("Ground"), qsTr("Speed"), qsTr("Actions")]
+    readonly property var cellWidths: [28, 78, 78, 50, 42, 52, 48]
+    readonly property int columnSpacing: 2
+    function headerPadding(column) { return column > 0 && column < 4 || column === 6 ? 2 : 0 } // over the cells' text
+    function headerWidth(column) { return Math.ceil(headerMetrics.advanceWidth(headers[column])) + headerPadding(column) + 4 } // and a gap before the next
+    readonly property var columnWidths: cellWidths.map((w, column) => Math.max(w, headerWidth(column)))
+    readonly property real neededWidth: columnWidths.reduce((sum, w) => sum + w, 0)
+                                         + headerWidth(headers.length - 1) + columnSpacing * (headers.length - 1)
+    Label { id: headerProbe; visible: false; font.bold: true }
+    FontMetrics { id: headerMetrics; font: headerProbe.font }
     RowLayout {
         Layout.fillWidth: true
-        spacing: 2
+        spacing: table.columnSpacing
         Repeater {
-            model: [qsTr("#"), qsTr("Latitude"), qsTr("Longitude"),
-                    table.heightsShown === 0 ? qsTr("Alt") : table.heightsShown === 1 ? qsTr("AMSL") : qsTr("AGL"),
-                    qsTr("Type"), qsTr("Ground"), qsTr("Speed"), qsTr("Actions")]
+            model: table.headers
             Label {
                 required property string modelData
                 required property int index
+                objectName: "waypointHeader_" + index
                 text: modelData
                 font.bold: true
                 elide: Text.ElideRight
                 Layout.preferredWidth: index < table.columnWidths.length ? table.columnWidths[index] : -1
                 Layout.fillWidth: index >= table.columnWidths.length
-                leftPadding: index > 0 && index < 4 || index === 6 ? 2 : 0 // over the cells' text
+                leftPadding: table.headerPadding(index)
             }
         }
     }
@@ -125,7 +138,7 @@ ColumnLayout {
             }
             RowLayout {
                 anchors.fill: parent
-                spacing: 2
+                spacing: table.columnSpacing
                 Label { text: row.index + 1; Layout.preferredWidth: table.columnWidths[0]; horizontalAlignment: Text.AlignHCenter }
                 Cell { role: "latitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[1]
                        onEdited: value => table.doc.editor.setLatitude(row.index, value) }
