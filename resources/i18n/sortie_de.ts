@@ -6701,6 +6701,23 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::RasterFileCheck</name>
+    <message numerus="yes">
+        <source>%n file(s) left out, the others are used:</source>
+        <translation>
+            <numerusform>%n Datei ausgelassen, die anderen werden genutzt:</numerusform>
+            <numerusform>%n Dateien ausgelassen, die anderen werden genutzt:</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>and %n more (in the log)</source>
+        <translation>
+            <numerusform>und %n weitere (im Protokoll)</numerusform>
+            <numerusform>und %n weitere (im Protokoll)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::TelemetryPlot</name>
     <message>
         <source>−%1 s</source>

@@ -301,6 +301,23 @@
     </message>
 </context>
 <context>
+    <name>sortie::ui::RasterFileCheck</name>
+    <message numerus="yes">
+        <source>%n file(s) left out, the others are used:</source>
+        <translation>
+            <numerusform>%n file left out, the others are used:</numerusform>
+            <numerusform>%n files left out, the others are used:</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>and %n more (in the log)</source>
+        <translation>
+            <numerusform>and %n more (in the log)</numerusform>
+            <numerusform>and %n more (in the log)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::TileManager</name>
     <message numerus="yes">
         <source>%1: loading %n tile(s)</source>

@@ -6701,6 +6701,23 @@ eventos:   %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::RasterFileCheck</name>
+    <message numerus="yes">
+        <source>%n file(s) left out, the others are used:</source>
+        <translation>
+            <numerusform>%n archivo omitido, se usan los demás:</numerusform>
+            <numerusform>%n archivos omitidos, se usan los demás:</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>and %n more (in the log)</source>
+        <translation>
+            <numerusform>y %n más (en el registro)</numerusform>
+            <numerusform>y %n más (en el registro)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::TelemetryPlot</name>
     <message>
         <source>−%1 s</source>

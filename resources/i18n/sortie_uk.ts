@@ -6736,6 +6736,25 @@ events:   %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::RasterFileCheck</name>
+    <message numerus="yes">
+        <source>%n file(s) left out, the others are used:</source>
+        <translation>
+            <numerusform>%n файл пропущено, інші використовуються:</numerusform>
+            <numerusform>%n файли пропущено, інші використовуються:</numerusform>
+            <numerusform>%n файлів пропущено, інші використовуються:</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>and %n more (in the log)</source>
+        <translation>
+            <numerusform>і ще %n (у журналі)</numerusform>
+            <numerusform>і ще %n (у журналі)</numerusform>
+            <numerusform>і ще %n (у журналі)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::TelemetryPlot</name>
     <message>
         <source>−%1 s</source>

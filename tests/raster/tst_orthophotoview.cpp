@@ -168,7 +168,8 @@ void TestOrthophotoView::badFileShowsGdalsReason()
     QVERIFY(check.orthophotoProblem(QString()).isEmpty());
     const QString problem = check.orthophotoProblem(QUrl::fromLocalFile(bad).toString());
     QVERIFY2(problem.startsWith(bad + QLatin1String(": ")) && problem.size() > bad.size() + 10, qPrintable(problem));
-    QVERIFY(check.demProblem(bad).startsWith(bad + QLatin1String(": ")));
+    QVERIFY(check.checkDem(bad).problem.startsWith(bad + QLatin1String(": ")));
+    QVERIFY(check.checkDem(bad).leftOut.isEmpty());
 
     QuickScene scene(kScene, QSize(400, 300));
     QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
@@ -216,6 +217,26 @@ Item {
     QVERIFY(!dialog->property("rastersUsable").toBool());
     dem->setProperty("text", bad);
     QVERIFY(scene.find(QStringLiteral("demProblem"))->property("text").toString().startsWith(bad));
+
+    // A folder with a bad file among good ones: usable, and the bad file is named with its reason.
+    GeoTiffSpec tile;
+    tile.width = tile.height = 4;
+    const double tileGt[6] = {24.0, 0.1, 0, 57.0, 0, -0.1};
+    std::copy(tileGt, tileGt + 6, tile.geoTransform);
+    const QString folder = m_dir.filePath(QStringLiteral("dem-with-a-bad-file"));
+    QVERIFY(QDir().mkpath(folder));
+    QVERIFY(writeGeoTiff(folder + QStringLiteral("/good.tif"), tile, [](int, int, int) { return 12.0; }));
+    QVERIFY(QFile::copy(bad, folder + QStringLiteral("/broken.tif")));
+    QObject *leftOut = scene.find(QStringLiteral("demLeftOut"));
+    QVERIFY(leftOut);
+    QVERIFY(!leftOut->property("visible").toBool());
+    orthophoto->setProperty("text", QString());
+    dem->setProperty("text", folder);
+    QVERIFY2(dialog->property("rastersUsable").toBool(), qPrintable(scene.find(QStringLiteral("demProblem"))->property("text").toString()));
+    const QString named = leftOut->property("text").toString();
+    QVERIFY2(named.startsWith(QLatin1String("1 file")) && named.contains(folder + QStringLiteral("/broken.tif: ")), qPrintable(named));
+    QVERIFY(named.size() > named.indexOf(QLatin1String("broken.tif: ")) + 20);  // GDAL's reason follows
+    QVERIFY(leftOut->property("visible").toBool());
 
     // Usable files: kept in the settings with the opacity.
     GeoTiffSpec s;

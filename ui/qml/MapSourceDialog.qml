@@ -19,7 +19,8 @@ Dialog {
     width: Math.min(parent ? parent.width - 80 : 560, 560)
 
     readonly property string orthophotoProblem: rasterCheck.orthophotoProblem(orthophotoField.text)
-    readonly property string demProblem: rasterCheck.demProblem(demField.text)
+    readonly property demCheck demCheck: rasterCheck.checkDem(demField.text)
+    readonly property string demProblem: demCheck.problem
     readonly property bool rastersUsable: orthophotoProblem === "" && demProblem === ""
 
     RasterFileCheck { id: rasterCheck }
@@ -180,6 +181,15 @@ Dialog {
             visible: text.length > 0
             text: dialog.demProblem
             color: "#c62828"
+            wrapMode: Text.Wrap
+        }
+        Label {
+            // A folder usable with a few bad files: which, and why (the rest still answers).
+            objectName: "demLeftOut"
+            Layout.fillWidth: true
+            visible: text.length > 0
+            text: dialog.demCheck.leftOut
+            color: "#a15c00"
             wrapMode: Text.Wrap
         }
     }
