@@ -1998,6 +1998,25 @@
     </message>
 </context>
 <context>
+    <name>NumberField</name>
+    <message>
+        <source>Not a number: type it as %1</source>
+        <translation>Keine Zahl: Schreiben Sie sie wie %1</translation>
+    </message>
+    <message>
+        <source>From %1 to %2</source>
+        <translation>Von %1 bis %2</translation>
+    </message>
+    <message>
+        <source>At least %1</source>
+        <translation>Mindestens %1</translation>
+    </message>
+    <message>
+        <source>At most %1</source>
+        <translation>Höchstens %1</translation>
+    </message>
+</context>
+<context>
     <name>OfflineMapsDialog</name>
     <message>
         <source>Offline maps</source>

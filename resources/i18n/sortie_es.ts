@@ -1998,6 +1998,25 @@
     </message>
 </context>
 <context>
+    <name>NumberField</name>
+    <message>
+        <source>Not a number: type it as %1</source>
+        <translation>No es un número: escríbalo como %1</translation>
+    </message>
+    <message>
+        <source>From %1 to %2</source>
+        <translation>De %1 a %2</translation>
+    </message>
+    <message>
+        <source>At least %1</source>
+        <translation>Al menos %1</translation>
+    </message>
+    <message>
+        <source>At most %1</source>
+        <translation>Como máximo %1</translation>
+    </message>
+</context>
+<context>
     <name>OfflineMapsDialog</name>
     <message>
         <source>Offline maps</source>

@@ -2005,6 +2005,25 @@
     </message>
 </context>
 <context>
+    <name>NumberField</name>
+    <message>
+        <source>Not a number: type it as %1</source>
+        <translation>Не число: введіть його як %1</translation>
+    </message>
+    <message>
+        <source>From %1 to %2</source>
+        <translation>Від %1 до %2</translation>
+    </message>
+    <message>
+        <source>At least %1</source>
+        <translation>Щонайменше %1</translation>
+    </message>
+    <message>
+        <source>At most %1</source>
+        <translation>Щонайбільше %1</translation>
+    </message>
+</context>
+<context>
     <name>OfflineMapsDialog</name>
     <message>
         <source>Offline maps</source>

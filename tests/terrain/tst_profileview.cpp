@@ -11,6 +11,7 @@
 #include <QDir>
 #include <QItemSelectionModel>
 #include <QSignalSpy>
+#include <QScopeGuard>
 #include <QTest>
 #include <QtQml/qqmlextensionplugin.h>
 
@@ -63,11 +64,13 @@ Item {
         routeModel: root.routeModel
         service: root.elevation
     }
+    DisplayUnits { id: units }
     WaypointTable {
         anchors.fill: parent
         doc: root.doc
         routeModel: root.routeModel
         terrain: terrain
+        units: units
     }
 }
 )";
@@ -95,6 +98,13 @@ public:
         return ElevationSample::value(10 + 100 * std::exp(-d * d));
     }
 };
+
+// Keys as the operator types them (QTest::keyClicks takes widgets only).
+void typeInto(QWindow *window, const QString &text)
+{
+    for (const QChar c : text)
+        QTest::keyClick(window, c.toLatin1());
+}
 
 mission::Route threeWaypoints()
 {
@@ -261,6 +271,65 @@ private slots:
         QVERIFY(std::abs(waypoint(0).altitude - 160.0) < 0.01);
         doc.undo();
         QCOMPARE(waypoint(0).altitude, 150.0);
+    }
+
+    // In German the table shows "40,0" and takes "40,5" (and a pasted "41.5"); text that is no number
+    // is refused where it was typed, red with the reason, and the waypoint keeps its height.
+    void numbersInTheLanguagesFormat()
+    {
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany)); // what Translations does for German
+        const auto restore = qScopeGuard([] { QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates)); });
+        HillSource hill;
+        ElevationService service;
+        service.setSources({&hill});
+        client::RouteDocument doc;
+        doc.load(threeWaypoints());
+        test::QuickScene scene(kTableScene, QSize(700, 300),
+                               {{QStringLiteral("doc"), QVariant::fromValue<QObject *>(&doc)},
+                                {QStringLiteral("routeModel"), QVariant::fromValue<QObject *>(doc.model())},
+                                {QStringLiteral("elevation"), QVariant::fromValue<QObject *>(&service)}});
+        QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
+        QQuickItem *root = scene.root();
+        const auto waypoint = [&doc](int row) { return *mission::asWaypoint(doc.model()->segment(row)); };
+        QQuickItem *cell = findItem(root, QStringLiteral("altitudeCell_0"));
+        QVERIFY(cell);
+        const double before = waypoint(0).altitude;
+        QCOMPARE(cell->property("text").toString(), QLocale().toString(before, 'f', 1));
+        QVERIFY(cell->property("text").toString().contains(QLatin1Char(',')));
+        // Typed as a German operator types it, through the keyboard.
+        cell->forceActiveFocus();
+        QMetaObject::invokeMethod(cell, "selectAll");
+        typeInto(&scene.view(), QStringLiteral("40,5"));
+        QTest::keyClick(&scene.view(), Qt::Key_Return);
+        QCOMPARE(waypoint(0).altitude, 40.5);
+        QTRY_COMPARE(cell->property("text").toString(), QStringLiteral("40,5"));
+        QVERIFY(!cell->property("refused").toBool());
+        // With a dot, as pasted from elsewhere.
+        QMetaObject::invokeMethod(cell, "selectAll");
+        typeInto(&scene.view(), QStringLiteral("41.5"));
+        QTest::keyClick(&scene.view(), Qt::Key_Return);
+        QCOMPARE(waypoint(0).altitude, 41.5);
+        // A letter O for a zero: refused, said, nothing changed.
+        QMetaObject::invokeMethod(cell, "selectAll");
+        typeInto(&scene.view(), QStringLiteral("4O"));
+        QTest::keyClick(&scene.view(), Qt::Key_Return);
+        QCOMPARE(waypoint(0).altitude, 41.5);
+        QVERIFY(cell->property("refused").toBool());
+        QCOMPARE(cell->property("text").toString(), QStringLiteral("4O"));  // what was typed stays, to be corrected
+        QVERIFY2(cell->property("reason").toString().contains(QStringLiteral("12,5")), qPrintable(cell->property("reason").toString()));
+        QTest::keyClick(&scene.view(), Qt::Key_Backspace);  // the next keystroke clears the refusal
+        QVERIFY(!cell->property("refused").toBool());
+        // The bulk height takes German too; its Set button waits for a number.
+        doc.clickRow(1, 0);
+        QQuickItem *bulk = findItem(root, QStringLiteral("bulkAltitude"));
+        QQuickItem *set = findItem(root, QStringLiteral("bulkAltitudeButton"));
+        QVERIFY(bulk && set);
+        bulk->setProperty("text", QStringLiteral("zwölf"));
+        QVERIFY(!set->isEnabled());
+        bulk->setProperty("text", QStringLiteral("12,25"));
+        QTRY_VERIFY(set->isEnabled());
+        QMetaObject::invokeMethod(set, "clicked");
+        QCOMPARE(waypoint(1).altitude, 12.25);
     }
 
     // Edits are coalesced: a burst of moves costs one recomputation.

@@ -208,6 +208,41 @@ private slots:
         QTRY_COMPARE(m_client->find<QObject>(QStringLiteral("plotFieldPicker"))->property("displayText").toString(), QStringLiteral("Ground speed"));
     }
 
+    // A number field takes what a German operator types ("2,5"), refuses what is out of its range
+    // with the reason in German, and shows its number again in English after a change.
+    void numbersAreTypedAsTheLanguageWritesThem()
+    {
+        m_client->showPage(1);
+        endurance::RouteEndurance &endurance = m_client->graph().endurance();
+        endurance.setWindSpeed(0);
+        m_client->settings().setLanguage(QStringLiteral("de"));
+        QTRY_COMPARE(textOf(*m_client, "loginTab"), QStringLiteral("Anmeldung"));
+        auto *field = m_client->find<QQuickItem>(QStringLiteral("windSpeedField"));
+        QVERIFY(field);
+        QTRY_VERIFY(field->isVisible());
+        QCOMPARE(field->property("text").toString(), QStringLiteral("0"));
+        const auto type = [&](const QString &text) {
+            field->forceActiveFocus();
+            QMetaObject::invokeMethod(field, "selectAll");
+            for (const QChar c : text)
+                QTest::keyClick(m_client->window(), c.toLatin1());
+            QTest::keyClick(m_client->window(), Qt::Key_Return);
+        };
+        type(QStringLiteral("2,5"));
+        QCOMPARE(endurance.windSpeed(), 2.5);
+        QTRY_COMPARE(field->property("text").toString(), QStringLiteral("2,5"));
+        type(QStringLiteral("70"));  // beyond the field's 60 m/s
+        QCOMPARE(endurance.windSpeed(), 2.5);
+        QVERIFY(field->property("refused").toBool());
+        QCOMPARE(field->property("reason").toString(), QStringLiteral("Von 0 bis 60"));
+        type(QStringLiteral("3,25"));
+        QCOMPARE(endurance.windSpeed(), 3.25);
+        QVERIFY(!field->property("refused").toBool());
+        m_client->settings().setLanguage(QStringLiteral("en"));
+        QTRY_COMPARE(field->property("text").toString(), QStringLiteral("3.25"));
+        endurance.setWindSpeed(0);
+    }
+
     // Qt's own words come from Qt's translations (Debian's qt6-translations-l10n): in German, a
     // dialog's Cancel button reads "Abbrechen". Without the package this fails, saying so.
     void qtsOwnWordsFollowTheLanguage()

@@ -277,21 +277,22 @@ Pane {
                 Button { objectName: "energyProfileButton"; text: qsTr("Load…"); onClicked: profileDialog.open()
                          ToolTip.visible: hovered; ToolTip.text: qsTr("The vehicle's energy profile: a JSON file, e.g. from sortie-log fit") }
                 Label { text: qsTr("Wind"); opacity: 0.7; leftPadding: 4 }
-                TextField { objectName: "windSpeedField"; Layout.preferredWidth: 44; text: Number(parent.parent.e.windSpeed).toString()
-                            validator: DoubleValidator { bottom: 0; top: 60 }
-                            onEditingFinished: parent.parent.e.windSpeed = Number(text)
-                            ToolTip.visible: hovered; ToolTip.text: qsTr("Wind speed, m/s") }
+                NumberField { objectName: "windSpeedField"; Layout.preferredWidth: 44; units: panel.units; from: 0; to: 60
+                              value: parent.parent.e.windSpeed
+                              onNumberEntered: typed => parent.parent.e.windSpeed = typed
+                              hint: qsTr("Wind speed, m/s") }
                 Label { text: qsTr("m/s from") }
-                TextField { objectName: "windFromField"; Layout.preferredWidth: 44; text: Number(parent.parent.e.windFrom).toString()
-                            validator: DoubleValidator { bottom: 0; top: 360 }
-                            onEditingFinished: parent.parent.e.windFrom = Number(text)
-                            ToolTip.visible: hovered; ToolTip.text: qsTr("The direction the wind blows from, degrees clockwise from north") }
+                NumberField { objectName: "windFromField"; Layout.preferredWidth: 44; units: panel.units; from: 0; to: 360
+                              value: parent.parent.e.windFrom
+                              onNumberEntered: typed => parent.parent.e.windFrom = typed
+                              hint: qsTr("The direction the wind blows from, degrees clockwise from north") }
                 Label { text: "°" }
             }
         }
 
         SegmentEditor {
             Layout.fillWidth: true
+            units: panel.units
             editor: panel.doc.segmentEditor
         }
 
@@ -347,6 +348,7 @@ Pane {
 
         WaypointTable {
             id: waypointTable
+            units: panel.units
             Layout.fillWidth: true
             Layout.fillHeight: true
             doc: panel.doc

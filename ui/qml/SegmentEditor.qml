@@ -10,6 +10,7 @@ import Sortie.Ui
 GroupBox {
     id: box
     required property SegmentEditorModel editor
+    required property DisplayUnits units // numbers as the operator's language writes them
     property bool showAdvanced: false
     visible: editor.valid
     title: editor.title
@@ -21,12 +22,14 @@ GroupBox {
         RowLayout {
             visible: !isNaN(box.editor.radius)
             Label { text: qsTr("Radius"); Layout.preferredWidth: 150 }
-            TextField {
+            NumberField {
                 objectName: "segment_radius"
-                text: isNaN(box.editor.radius) ? "" : Number(box.editor.radius).toFixed(1)
+                units: box.units
+                from: 0
+                value: box.editor.radius
+                decimals: 1
                 Layout.preferredWidth: 80
-                selectByMouse: true
-                onEditingFinished: if (Number(text) !== box.editor.radius) box.editor.setRadius(Number(text))
+                onNumberEntered: typed => { if (Math.abs(typed - box.editor.radius) >= 0.05) box.editor.setRadius(typed) }
             }
             Label { text: qsTr("m"); opacity: 0.7 }
         }
@@ -44,6 +47,7 @@ GroupBox {
                 required property var value
                 required property string valueText
                 required property string defaultValue
+                required property string defaultText
                 required property var choices
                 required property bool advanced
                 required property bool known
@@ -64,7 +68,7 @@ GroupBox {
                     objectName: "segment_" + field.name
                     visible: field.widget === "number" || field.widget === "text"
                     text: field.valueText
-                    placeholderText: field.defaultValue
+                    placeholderText: field.defaultText
                     selectByMouse: true
                     Layout.preferredWidth: 110
                     onEditingFinished: if (text !== field.valueText) box.editor.set(field.index, text)

@@ -11,27 +11,26 @@ ColumnLayout {
     required property RouteDocument doc
     required property AbstractItemModel routeModel
     required property TerrainProfileModel terrain  // ground and converted heights per row
+    required property DisplayUnits units            // numbers as the operator's language writes them
     readonly property list<int> selected: doc.selectedRows
     // Which height the altitude column shows: as each row sets it, or all AMSL, or all AGL.
     readonly property int heightsShown: heightsPicker.currentIndex
     readonly property int heightsFrame: heightsShown === 1 ? MissionEnums.Amsl : MissionEnums.Agl
     spacing: 4
 
-    component Cell: TextField {
+    // A cell: coordinates always with a dot (as DisplayUnits shows them), other numbers in the
+    // language's format; what is typed is read either way, and text that is no number is refused.
+    component Cell: NumberField {
         property string role
         property var rowModel               // the delegate's row: its roles as a JS object
-        property var value: rowModel[role]  // undefined: nothing to show or edit
         signal edited(real value)
+        value: rowModel[role]               // undefined: nothing to show or edit
+        plainDot: role === "latitude" || role === "longitude"
+        decimals: plainDot ? 6 : 1
+        units: table.units
         readOnly: !table.doc || value === undefined
-        text: value === undefined ? "" : Number(value).toFixed(role === "latitude" || role === "longitude" ? 6 : 1)
-        selectByMouse: true
         padding: 2
-        onEditingFinished: {
-            const typed = Number(text)
-            if (readOnly || isNaN(typed) || Math.abs(typed - Number(value)) < 1e-7)
-                return
-            edited(typed)
-        }
+        onNumberEntered: typed => { if (Math.abs(typed - Number(value)) >= 1e-7) edited(typed) }
     }
 
     // A Flow, not a row: in a longer language the fields go on to a second line rather than past the panel.
@@ -39,18 +38,19 @@ ColumnLayout {
         Layout.fillWidth: true
         spacing: 5
         Label { text: qsTr("%n selected:", "", table.selected.length); height: bulkAltitude.height; verticalAlignment: Text.AlignVCenter }
-        TextField { id: bulkAltitude; objectName: "bulkAltitude"; placeholderText: qsTr("alt m"); width: 60 }
+        NumberField { id: bulkAltitude; objectName: "bulkAltitude"; units: table.units; allowEmpty: true; placeholderText: qsTr("alt m"); width: 60 }
         Button {
             objectName: "bulkAltitudeButton"
             text: qsTr("Set")
-            enabled: table.selected.length > 0 && bulkAltitude.text.length > 0
-            onClicked: table.doc.editor.setAltitude(table.selected, Number(bulkAltitude.text))
+            enabled: table.selected.length > 0 && bulkAltitude.number !== undefined
+            onClicked: table.doc.editor.setAltitude(table.selected, bulkAltitude.number)
         }
-        TextField { id: bulkSpeed; placeholderText: qsTr("m/s"); width: 50 }
+        NumberField { id: bulkSpeed; objectName: "bulkSpeed"; units: table.units; allowEmpty: true; from: 0; placeholderText: qsTr("m/s"); width: 50 }
         Button {
+            objectName: "bulkSpeedButton"
             text: qsTr("Set")
-            enabled: table.selected.length > 0 && bulkSpeed.text.length > 0
-            onClicked: table.doc.editor.setSpeed(table.selected, Number(bulkSpeed.text))
+            enabled: table.selected.length > 0 && bulkSpeed.number !== undefined
+            onClicked: table.doc.editor.setSpeed(table.selected, bulkSpeed.number)
         }
         ComboBox {
             model: ["AGL", "AMSL"] // i18n: not text (aviation abbreviations, the same in every language)

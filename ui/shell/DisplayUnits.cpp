@@ -1,5 +1,6 @@
 #include "DisplayUnits.h"
 
+#include "TypedNumber.h"
 #include "VehicleLink.h"
 
 #include <QLocale>
@@ -16,9 +17,7 @@ constexpr double kFoot = 0.3048;
 // No thousands separators, as before: "1500 ft".
 QString number(double value, int decimals)
 {
-    QLocale locale;
-    locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    return locale.toString(value, 'f', decimals);
+    return i18n::formatTypedNumber(value, decimals);
 }
 constexpr double kMile = 1609.344;
 
@@ -184,6 +183,17 @@ QString DisplayUnits::formatLinkState(int state) const
     case State::Lost: return tr("link lost");
     }
     return QStringLiteral("—");
+}
+
+QString DisplayUnits::formatNumber(double value, int decimals) const
+{
+    return i18n::formatTypedNumber(value, decimals);
+}
+
+QVariant DisplayUnits::parseNumber(const QString &text) const
+{
+    const std::optional<double> value = i18n::parseTypedNumber(text);
+    return value ? QVariant(*value) : QVariant();
 }
 
 } // namespace sortie::ui

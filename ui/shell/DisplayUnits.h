@@ -2,6 +2,7 @@
 
 #include <QGeoCoordinate>
 #include <QObject>
+#include <QVariant>
 #include <QtQml/qqmlregistration.h>
 
 namespace sortie::ui {
@@ -57,6 +58,13 @@ public:
     Q_INVOKABLE QString formatBattery(double voltage, double remaining) const;
     // The link's state (VehicleLink::State) in words: "connected", "link lost"...
     Q_INVOKABLE QString formatLinkState(int state) const;
+
+    // A field's number as the operator reads and types it (core/i18n/TypedNumber): "40,5" in German;
+    // `decimals` places, or the shortest exact text when negative.
+    Q_INVOKABLE QString formatNumber(double value, int decimals = -1) const;
+    // What the operator typed in a number field: the language's format or a dot decimal; undefined
+    // (in QML) when it is no number, so the field can say so rather than take NaN.
+    Q_INVOKABLE QVariant parseNumber(const QString &text) const;
 
 signals:
     void changed();

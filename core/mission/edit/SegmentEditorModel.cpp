@@ -1,5 +1,6 @@
 #include "SegmentEditorModel.h"
 #include "LanguageChange.h"
+#include "TypedNumber.h"
 
 #include "AreaScanPlanner.h"
 #include "RouteEditor.h"
@@ -206,7 +207,7 @@ QHash<int, QByteArray> SegmentEditorModel::roleNames() const
     return {{NameRole, "name"}, {LabelRole, "label"}, {DescriptionRole, "description"}, {TypeRole, "type"}, {WidgetRole, "widget"},
             {UnitRole, "unit"}, {ValueRole, "value"}, {DefaultRole, "defaultValue"}, {MinimumRole, "minimum"},
             {MaximumRole, "maximum"}, {ChoicesRole, "choices"}, {AdvancedRole, "advanced"}, {KnownRole, "known"},
-            {ProblemRole, "problem"}, {ValueTextRole, "valueText"}};
+            {ProblemRole, "problem"}, {ValueTextRole, "valueText"}, {DefaultTextRole, "defaultText"}};
 }
 
 QVariant SegmentEditorModel::data(const QModelIndex &index, int role) const
@@ -245,8 +246,14 @@ QVariant SegmentEditorModel::data(const QModelIndex &index, int role) const
         if (!v.isValid())
             return QString();
         if (d.type == ParameterType::Double && f.known) // a computed GSD is 1.6473684...: show what matters
-            return QString::number(std::round(v.toDouble() * 100) / 100);
+            return i18n::formatTypedNumber(std::round(v.toDouble() * 100) / 100);
         return textOf(v);
+    }
+    case DefaultTextRole: {
+        const bool number = f.known && (d.type == ParameterType::Double || d.type == ParameterType::Integer);
+        if (const auto n = number ? parseParameterNumber(d.defaultValue) : std::nullopt)
+            return i18n::formatTypedNumber(*n);
+        return d.defaultValue;
     }
     case ProblemRole: {
         const QVariant v = parameterValue(*s, f.name, m_editor->catalog());
@@ -333,7 +340,7 @@ bool SegmentEditorModel::set(int index, const QVariant &value, EditStep step)
     // A text field's number arrives as text; the definition says what it is.
     if (value.metaType().id() == QMetaType::QString && f.known
         && (f.definition.type == ParameterType::Double || f.definition.type == ParameterType::Integer) && !value.toString().isEmpty()) {
-        const auto n = parseParameterNumber(value.toString());
+        const auto n = i18n::parseTypedNumber(value.toString());  // as the operator types it: "2,5" in German
         if (!n) {
             m_problem = tr("%1 needs a number, not \"%2\".").arg(f.definition.displayName, value.toString());
             emit valuesChanged();

@@ -51,7 +51,8 @@ public:
         AdvancedRole,
         KnownRole,                    // false: a raw parameter no definition names
         ProblemRole,                  // why the value is not acceptable, "" when it is
-        ValueTextRole,                // the value as the field shows it (numbers to 0.01), "" when not set
+        ValueTextRole,                // the value as the field shows it (numbers to 0.01 in the UI language's format), "" when not set
+        DefaultTextRole,              // the default as the field shows it (a number in the UI language's format)
     };
     Q_ENUM(Roles)
 

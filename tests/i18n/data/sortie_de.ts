@@ -85,4 +85,11 @@
         <translation>Landumrisse: Natural Earth</translation>
     </message>
 </context>
+<context>
+    <name>NumberField</name>
+    <message>
+        <source>From %1 to %2</source>
+        <translation>Von %1 bis %2</translation>
+    </message>
+</context>
 </TS>
