@@ -242,10 +242,24 @@ private slots:
         QCOMPARE(text(QStringLiteral("altitudeCell_0")), QStringLiteral("150.0"));
         QCOMPARE(text(QStringLiteral("altitudeCell_1")), QStringLiteral("50.0"));
 
+        // The headers stand over their columns, left to right, also once the height frame rewords one.
+        const auto headersInARow = [root] {
+            double right = -1;
+            for (int column = 0; column < 8; ++column) {
+                QQuickItem *header = findItem(root, QStringLiteral("waypointHeader_%1").arg(column));
+                if (!header || header->x() <= right)
+                    return false;
+                right = header->x() + header->width() - 1;
+            }
+            return true;
+        };
+        QTRY_VERIFY(headersInARow());
         QQuickItem *picker = findItem(root, QStringLiteral("heightsShown"));
         QVERIFY(picker);
         picker->setProperty("currentIndex", 2);  // all AGL
         QTRY_COMPARE(text(QStringLiteral("altitudeCell_0")), QStringLiteral("40.0"));
+        QCOMPARE(findItem(root, QStringLiteral("waypointHeader_3"))->property("text").toString(), QStringLiteral("AGL"));
+        QTRY_VERIFY(headersInARow());
         QCOMPARE(text(QStringLiteral("altitudeCell_1")), QStringLiteral("50.0"));
         QCOMPARE(text(QStringLiteral("altitudeCell_2")), QStringLiteral("60.0"));
         picker->setProperty("currentIndex", 1);  // all AMSL

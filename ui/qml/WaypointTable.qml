@@ -101,12 +101,11 @@ ColumnLayout {
         Layout.fillWidth: true
         spacing: table.columnSpacing
         Repeater {
-            model: table.headers
+            model: table.headers.length  // a count: a new language or height frame rewords the labels, never remakes them
             Label {
-                required property string modelData
                 required property int index
                 objectName: "waypointHeader_" + index
-                text: modelData
+                text: table.headers[index]
                 font.bold: true
                 elide: Text.ElideRight
                 Layout.preferredWidth: index < table.columnWidths.length ? table.columnWidths[index] : -1
@@ -159,7 +158,7 @@ ColumnLayout {
                 Label {
                     id: ground
                     objectName: "groundCell_" + row.index
-                    text: (table.terrain.revision, table.terrain.groundTextOfRow(row.index))
+                    text: (table.terrain.revision, table.units.language, table.terrain.groundTextOfRow(row.index))
                     elide: Text.ElideRight
                     Layout.preferredWidth: table.columnWidths[5]
                     HoverHandler { id: groundHover }

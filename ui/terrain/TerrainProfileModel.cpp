@@ -1,6 +1,7 @@
 #include "TerrainProfileModel.h"
 
 #include "RouteModel.h"
+#include "TypedNumber.h"
 
 #include <algorithm>
 #include <cmath>
@@ -184,8 +185,8 @@ QString TerrainProfileModel::groundTextOfRow(int row) const
     if (low > high)
         return pending ? QStringLiteral("…") : QStringLiteral("—");
     if (high - low < 0.05)
-        return QString::number(low, 'f', 1);
-    return QStringLiteral("%1–%2").arg(QString::number(low, 'f', 0), QString::number(high, 'f', 0));  // fits the column
+        return i18n::formatTypedNumber(low, 1);  // in the language's format, as the table's other numbers
+    return QStringLiteral("%1–%2").arg(i18n::formatTypedNumber(low, 0), i18n::formatTypedNumber(high, 0));  // fits the column
 }
 
 QString TerrainProfileModel::groundToolTipOfRow(int row) const
