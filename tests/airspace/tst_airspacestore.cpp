@@ -12,6 +12,7 @@
 #include "ZoneEditor.h"
 #include "ZoneListModel.h"
 
+#include <QLocale>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -145,6 +146,15 @@ private slots:
         f.store->setBuffer(5);
         f.analyzer.recomputeNow();
         QCOMPARE(countRule(f.analyzer.validation(), QStringLiteral("airspace-near")), 0);
+
+        // A ceiling typed in German ("30,5") is read as the language writes it; text is refused.
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        const bool german = f.store->editor()->setLimits(0, QString(), QStringLiteral("30,5"), QStringLiteral("AMSL"));
+        const bool words = f.store->editor()->setLimits(0, QString(), QStringLiteral("dreißig"), QStringLiteral("AMSL"));
+        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+        QVERIFY(german);
+        QVERIFY(!words);
+        QCOMPARE(f.store->zoneAt(0).ceiling->metres, 30.5);
 
         // Switched off: kept, drawn, not checked.
         QVERIFY(f.store->editor()->setLimits(0, QString(), QString(), QStringLiteral("AMSL")));

@@ -9,6 +9,7 @@
 #include "WaypointActionsModel.h"
 
 #include <QAbstractItemModelTester>
+#include <QLocale>
 #include <QSignalSpy>
 #include <QTest>
 #include <QUndoStack>
@@ -71,6 +72,14 @@ private slots:
         QCOMPARE(std::get<CameraSeriesByDistanceAction>(f.at(0)[0]).intervalMeters, 25.0);
         QCOMPARE(std::get<CameraSeriesByDistanceAction>(f.at(2)[0]).intervalMeters, 25.0);
         QCOMPARE(f.actions.index(0).data(WaypointActionsModel::SummaryRole).toString(), QStringLiteral("Photo every 25 m"));
+
+        // Typed in German: "12,5" is twelve and a half (a dot is read too).
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        const bool german = f.actions.setField(0, QStringLiteral("intervalMeters"), QStringLiteral("12,5"));
+        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+        QVERIFY2(german, qPrintable(f.actions.problem()));
+        QCOMPARE(std::get<CameraSeriesByDistanceAction>(f.at(0)[0]).intervalMeters, 12.5);
+        f.stack.undo();
 
         f.stack.undo();
         QCOMPARE(std::get<CameraSeriesByDistanceAction>(f.at(2)[0]).intervalMeters, 10.0);

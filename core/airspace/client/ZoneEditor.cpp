@@ -1,4 +1,5 @@
 #include "ZoneEditor.h"
+#include "TypedNumber.h"
 
 #include "AddZoneCommand.h"
 #include "Airspace.h"
@@ -27,7 +28,14 @@ std::optional<double> metresOf(const QVariant &v, bool *bad)
     if (!v.isValid() || v.isNull() || (v.typeId() == QMetaType::QString && v.toString().trimmed().isEmpty()))
         return std::nullopt;
     bool ok = false;
-    const double m = v.typeId() == QMetaType::QString ? v.toString().trimmed().toDouble(&ok) : v.toDouble(&ok);
+    double m = 0;
+    if (v.typeId() == QMetaType::QString) {  // as typed: "12,5" in German, or with a dot
+        const std::optional<double> typed = i18n::parseTypedNumber(v.toString());
+        ok = typed.has_value();
+        m = typed.value_or(0);
+    } else {
+        m = v.toDouble(&ok);
+    }
     if (!ok) {
         *bad = true;
         return std::nullopt;

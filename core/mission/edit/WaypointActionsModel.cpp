@@ -1,5 +1,6 @@
 #include "WaypointActionsModel.h"
 #include "LanguageChange.h"
+#include "TypedNumber.h"
 
 #include "RouteEditor.h"
 #include "RouteModel.h"
@@ -199,17 +200,21 @@ bool WaypointActionsModel::setField(int action, const QString &name, const QVari
         setProblem(tr("This action has no field \"%1\".").arg(name));
         return false;
     }
-    if (const QString why = field->check(value); !why.isEmpty()) {
+    const bool numeric = field->type == ActionField::Type::Number || field->type == ActionField::Type::Integer;
+    QVariant typed = value;
+    if (numeric && value.typeId() == QMetaType::QString)  // as typed: "2,5" in German, or with a dot
+        if (const std::optional<double> n = i18n::parseTypedNumber(value.toString()))
+            typed = *n;
+    if (const QString why = field->check(typed); !why.isEmpty()) {
         setProblem(why);
         return false;
     }
     setProblem({});
     QVariantMap changed = actionToVariant(current);
-    const bool numeric = field->type == ActionField::Type::Number || field->type == ActionField::Type::Integer;
-    if (numeric && field->optional && value.toString().trimmed().isEmpty())
+    if (numeric && field->optional && typed.toString().trimmed().isEmpty())
         changed.remove(name);  // unset
     else
-        changed.insert(name, numeric ? QVariant(value.toDouble()) : value);
+        changed.insert(name, numeric ? QVariant(typed.toDouble()) : typed);
     return m_editor->setAction(rows, action, changed);
 }
 
