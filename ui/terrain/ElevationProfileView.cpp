@@ -2,6 +2,7 @@
 
 #include "TerrainProfileModel.h"
 #include "LanguageChange.h"
+#include "TypedNumber.h"
 
 #include <QItemSelectionModel>
 #include <QPainter>
@@ -26,14 +27,16 @@ const QColor kRoute(0x15, 0x65, 0xc0);
 const QColor kLow(0xd3, 0x2f, 0x2f);
 const QColor kSelected(0xff, 0x6f, 0x00);
 
+// Numbers in the language's format, as DisplayUnits writes them ("25,7 m" in German).
 QString metres(double v)
 {
-    return std::isfinite(v) ? QStringLiteral("%1 m").arg(v, 0, 'f', 1) : QStringLiteral("—");
+    return std::isfinite(v) ? QStringLiteral("%1 m").arg(i18n::formatTypedNumber(v, 1)) : QStringLiteral("—");
 }
 
 QString distanceText(double m)
 {
-    return m >= 1000 ? QCoreApplication::translate("ElevationProfileView", "%1 km").arg(m / 1000, 0, 'f', m >= 10000 ? 1 : 2) : QStringLiteral("%1 m").arg(m, 0, 'f', 0);
+    return m >= 1000 ? QCoreApplication::translate("ElevationProfileView", "%1 km").arg(i18n::formatTypedNumber(m / 1000, m >= 10000 ? 1 : 2))
+                     : QStringLiteral("%1 m").arg(i18n::formatTypedNumber(m, 0));
 }
 } // namespace
 
@@ -414,7 +417,7 @@ void ElevationProfileView::paint(QPainter *painter)
     painter->setPen(m_textColor);
     const QFontMetricsF fm(font);
     for (double a : {m_low, (m_low + m_high) / 2, m_high}) {
-        const QString label = QStringLiteral("%1 m").arg(a, 0, 'f', 0);
+        const QString label = QStringLiteral("%1 m").arg(i18n::formatTypedNumber(a, 0));
         painter->drawText(QRectF(0, yOf(a) - fm.height() / 2, kLeft - 6, fm.height()), Qt::AlignRight | Qt::AlignVCenter, label);
     }
     painter->drawText(QRectF(plot.left(), plot.bottom() + 2, 120, kBottom - 2), Qt::AlignLeft | Qt::AlignTop, QStringLiteral("0"));
