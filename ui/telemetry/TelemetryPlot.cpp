@@ -3,6 +3,7 @@
 #include "LanguageChange.h"
 #include "Polyline.h"
 #include "TelemetryFieldNames.h"
+#include "TypedNumber.h"
 #include "TelemetryField.h"
 #include "Vehicle.h"
 #include "VehiclePalette.h"
@@ -290,9 +291,9 @@ void TelemetryPlot::paint(QPainter *painter)
         painter->setPen(QPen(s.colour, 1.8));
         painter->drawPolyline(s.points);
         const Group &g = m_groups[size_t(s.group)];
-        QString legend = QStringLiteral("%1 %2 %3").arg(s.label).arg(s.last, 0, 'f', 1).arg(g.unit).trimmed();
+        QString legend = QStringLiteral("%1 %2 %3").arg(s.label, i18n::formatTypedNumber(s.last, 1), g.unit).trimmed();
         if (s.group >= 2) // no axis of its own: its range in the legend
-            legend += QStringLiteral(" (%1…%2)").arg(g.minimum, 0, 'f', 1).arg(g.maximum, 0, 'f', 1);
+            legend += QStringLiteral(" (%1…%2)").arg(i18n::formatTypedNumber(g.minimum, 1), i18n::formatTypedNumber(g.maximum, 1));
         painter->drawText(QPointF(area.left() + 6, area.top() + 14 + 14 * double(i)),
                           metrics.elidedText(legend, Qt::ElideRight, area.width() - 12));
     }
@@ -303,9 +304,9 @@ void TelemetryPlot::paint(QPainter *painter)
         const QRectF column = left ? QRectF(0, 0, kAxisWidth - 4, 14) : QRectF(area.right() + 4, 0, kAxisWidth - 4, 14);
         const Qt::Alignment align = left ? Qt::AlignRight : Qt::AlignLeft;
         painter->setPen(m_groups.size() > 1 ? g.colour : m_textColor);
-        painter->drawText(column.translated(0, area.top()), align, QString::number(g.maximum, 'f', 1));
+        painter->drawText(column.translated(0, area.top()), align, i18n::formatTypedNumber(g.maximum, 1));
         painter->drawText(column.translated(0, area.center().y() - 7), align, g.unit);
-        painter->drawText(column.translated(0, area.bottom() - 14), align, QString::number(g.minimum, 'f', 1));
+        painter->drawText(column.translated(0, area.bottom() - 14), align, i18n::formatTypedNumber(g.minimum, 1));
     }
 }
 
