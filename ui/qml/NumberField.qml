@@ -25,7 +25,7 @@ TextField {
         : plainDot ? Number(value).toFixed(decimals < 0 ? 6 : decimals)
         : (units.language, units.formatNumber(value, decimals))
     selectByMouse: true
-    color: refused ? "#c62828" : palette.text
+    color: refused ? "#e53935" : palette.text  // the segment editor's problem red: readable on light and dark fields
     onTextEdited: refused = false
     onEditingFinished: {
         if (readOnly || allowEmpty && text.trim() === "") {
