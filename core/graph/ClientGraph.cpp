@@ -29,6 +29,7 @@
 #include "ServerHistoryRequest.h"
 #include "Traffic.h"
 #include "OfflineMaps.h"
+#include "VciFenceBuilder.h"
 #include "VehicleFleet.h"
 #include "ServerZones.h"
 #include "ZoneSharing.h"
@@ -83,6 +84,7 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
 
     if (options.vehicles) {
         m_fleet = std::make_unique<VehicleFleet>(m_hciClient.get(), ground);
+        m_fleet->setFenceBuilder(airspace::vciFenceFor); // a VCI vehicle's fence is made where the zones are
         m_missions->preparation()->setFleet(m_fleet.get()); // Process and Upload choose from every vehicle of the fleet
         // Every route given to a vehicle (the open one chosen for it, uploads, flights), for the map and the list.
         m_fleetRoutes = std::make_unique<FleetRoutes>(m_fleet.get(), document, m_missions->preparation());
@@ -120,7 +122,7 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
                 beyondRoute.push_back(m_airspace->zoneAt(row));
         MissionUploader *uploader = m_missions->preparation()->uploader();
         vehicle::FenceSettings fence = uploader->fenceSettings();
-        fence.zones = std::make_shared<const airspace::ZoneSet>(std::move(beyondRoute));
+        fence.zones = std::make_shared<const airspace::FenceZoneSet>(std::move(beyondRoute));
         uploader->setFenceSettings(std::move(fence));
     };
     shareZones();

@@ -8,10 +8,6 @@
 #include <memory>
 #include <vector>
 
-namespace sortie::airspace {
-class ZoneSet;
-}
-
 namespace sortie::vehicle {
 
 // Who a vehicle is, as its link reports it.
@@ -84,12 +80,20 @@ struct PreparedMission
 // What a vehicle does when it breaks its fence: fly home and land, land where it is, or hover.
 enum class FenceBreachAction { Return, Land, Hold };
 
+// What a vehicle's fence is made of beside the route's own: the airspace's zones, opaque here and to
+// the client. Only the fence builder a link is handed reads them (VciFencePlan.h).
+class FenceZones
+{
+public:
+    virtual ~FenceZones() = default;
+};
+
 // What goes up with a route to a vehicle that keeps a fence (VehicleLink::Fence): the route's own
 // fence (Route::fence) joined by the active zones of `zones` whose box meets the route's, and the
 // breach action. Links whose vehicle keeps none ignore it.
 struct FenceSettings
 {
-    std::shared_ptr<const airspace::ZoneSet> zones; // null: the route's own fence only
+    std::shared_ptr<const FenceZones> zones; // null: the route's own fence only
     FenceBreachAction breachAction = FenceBreachAction::Return;
 };
 

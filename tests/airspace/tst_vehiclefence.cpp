@@ -2,13 +2,15 @@
 // sends the route's own fence and the airspace zones near it (limits converted, far and inactive
 // zones left out), the vehicle holds exactly that, and flying into an exclusion zone or out of an
 // inclusion fence makes it land, return or hold, with the breach in its telemetry and one alert
-// line in the command log.
+// line in the command log. The fence is made where the zones are (airspace::vciFenceFor), handed to
+// the link as the client graph hands it; a link without it refuses a route that asks for a fence.
 #include "AirspaceCheck.h"
 #include "CommandLog.h"
 #include "MissionUploader.h"
 #include "SimVciListener.h"
 #include "SimVciVehicle.h"
 #include "VciVehicleLink.h"
+#include "VciFenceBuilder.h"
 #include "Vehicle.h"
 
 #include <QSignalSpy>
@@ -128,6 +130,7 @@ private slots:
         const auto endpoint = vci::VciEndpoint::parse(QStringLiteral("tcp://127.0.0.1:%1").arg(m_listener->port()), &error);
         QVERIFY2(endpoint, qPrintable(error));
         m_link = std::make_unique<vehicle::VciVehicleLink>(*endpoint);
+        m_link->setFenceBuilder(airspace::vciFenceFor);
         m_vehicle = std::make_unique<vehicle::Vehicle>(m_link.get());
         m_vehicle->setNotifyInterval(20);
         m_log = std::make_unique<CommandLog>();
@@ -167,7 +170,7 @@ private slots:
         Zone far = circleZone(QStringLiteral("far away"), 1.0, 500);  // 111 km north: not near the route
         Zone off = circleZone(QStringLiteral("inactive"), 0.0005, 30);
         off.active = false;
-        auto zones = std::make_shared<const airspace::ZoneSet>(std::vector<Zone>{amsl, aboveHome, agl, far, off});
+        auto zones = std::make_shared<const airspace::FenceZoneSet>(std::vector<Zone>{amsl, aboveHome, agl, far, off});
         m_uploader->setFenceSettings({zones, vehicle::FenceBreachAction::Land});
 
         QVERIFY2(upload(route), qPrintable(m_uploader->message()));
@@ -200,7 +203,7 @@ private slots:
         const uint64_t version = m_sim->fence().version();
         Zone keepIn = circleZone(QStringLiteral("park"), 0.0005, 400, ZoneKind::Inclusion);
         keepIn.ceiling = airspace::HeightLimit{80, terrain::HeightReference::AboveTerrain};
-        m_uploader->setFenceSettings({std::make_shared<const airspace::ZoneSet>(std::vector<Zone>{keepIn}), vehicle::FenceBreachAction::Return});
+        m_uploader->setFenceSettings({std::make_shared<const airspace::FenceZoneSet>(std::vector<Zone>{keepIn}), vehicle::FenceBreachAction::Return});
         QVERIFY(!upload(route));
         QVERIFY2(m_uploader->message().contains(QStringLiteral("zone 'park': its AGL limits need the ground under it")), qPrintable(m_uploader->message()));
         QCOMPARE(m_sim->fence().version(), version);
@@ -210,6 +213,29 @@ private slots:
         QVERIFY2(upload(routeOf({waypoint(0.0001, 0, 30), waypoint(0.0003, 0, 30)})), qPrintable(m_uploader->message()));
         QVERIFY(m_sim->fence().fence().empty());
         QTRY_COMPARE(m_sim->fence().status(0).state, std::string("none"));
+    }
+
+    void withoutAFenceBuilderOnlyAnUnfencedRouteGoesUp()
+    {
+        m_link->setFenceBuilder({});
+        mission::Route fenced = routeOf({waypoint(0.0001, 0, 30), waypoint(0.0010, 0, 30)});
+        fenced.fence.circles.push_back({{kHomeLat + 0.0008, kHomeLon + 0.0008}, 20, false});
+        m_uploader->setFenceSettings({});
+        QVERIFY(!upload(fenced));
+        QVERIFY2(m_uploader->message().contains(QStringLiteral("the fence cannot be made: this link was given no fence builder")),
+                 qPrintable(m_uploader->message()));
+        // Zones to carry are a fence asked for too, even on a route without one of its own.
+        const mission::Route plain = routeOf({waypoint(0.0001, 0, 30), waypoint(0.0003, 0, 30)});
+        m_uploader->setFenceSettings({std::make_shared<const airspace::FenceZoneSet>(std::vector<Zone>{circleZone(QStringLiteral("mast"), 0.0002, 25)}),
+                                      vehicle::FenceBreachAction::Return});
+        QVERIFY(!upload(plain));
+        QVERIFY2(m_uploader->message().contains(QStringLiteral("no fence builder")), qPrintable(m_uploader->message()));
+        QCOMPARE(m_sim->fence().version(), uint64_t(0)); // nothing was sent
+        // Nothing asked for: the route goes up with an empty fence, the breach action as set.
+        m_uploader->setFenceSettings({nullptr, vehicle::FenceBreachAction::Hold});
+        QVERIFY2(upload(plain), qPrintable(m_uploader->message()));
+        QVERIFY(m_sim->fence().fence().empty());
+        QCOMPARE(m_sim->fence().fence().breachAction, profile::BreachAction::Hold);
     }
 
     void exclusionZoneMakesItLand()
@@ -258,7 +284,7 @@ private slots:
         box.name = QStringLiteral("upper box");
         box.shape = airspace::ZonePolygons{{airspace::ZonePolygon{{square(0.0012, 0.0003, 0.0010)}}}};
         box.floor = airspace::HeightLimit{40, terrain::HeightReference::AboveHome};
-        m_uploader->setFenceSettings({std::make_shared<const airspace::ZoneSet>(std::vector<Zone>{box}), vehicle::FenceBreachAction::Hold});
+        m_uploader->setFenceSettings({std::make_shared<const airspace::FenceZoneSet>(std::vector<Zone>{box}), vehicle::FenceBreachAction::Hold});
         QVERIFY2(upload(route), qPrintable(m_uploader->message()));
         flyMission();
         // Under the floor: the far waypoint is reached without a breach.

@@ -9,6 +9,7 @@
 #include "MissionUploader.h"
 #include "RoutePreparation.h"
 #include "AirspaceCheck.h"
+#include "VciFenceBuilder.h"
 #include "RouteEndurance.h"
 #include "ClientWindow.h"
 #include "ProximityMonitor.h"
@@ -110,7 +111,7 @@ private slots:
         // The same set is what the fence is built from and what the alerts watch.
         const vehicle::FenceSettings &fence = graph.missions().preparation()->uploader()->fenceSettings();
         QVERIFY(fence.zones);
-        QCOMPARE(int(fence.zones->zones().size()), store.count());
+        QCOMPARE(int(airspace::fenceZonesOf(fence)->zones().size()), store.count());
         // A custom zone saved to the server (under its lock) comes back into the store.
         airspace::Zone pier;
         pier.name = QStringLiteral("Test pier");
@@ -122,7 +123,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(error.has_value(), 10000);
         QVERIFY2(error->isEmpty(), qPrintable(*error));
         QTRY_COMPARE_WITH_TIMEOUT(serverZones(), (QStringList{"Crane works", "RIX CTR", "Spilve airfield", "Test pier"}), 10000);
-        QCOMPARE(int(graph.missions().preparation()->uploader()->fenceSettings().zones->zones().size()), store.count());
+        QCOMPARE(int(airspace::fenceZonesOf(graph.missions().preparation()->uploader()->fenceSettings())->zones().size()), store.count());
     }
 
     // A fixture changes what it needs through the options, and the wiring says so.

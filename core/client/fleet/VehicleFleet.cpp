@@ -47,6 +47,11 @@ terrain::ElevationService *VehicleFleet::elevation() const
     return m_elevation;
 }
 
+void VehicleFleet::setFenceBuilder(vehicle::VciFenceBuilder builder)
+{
+    m_fenceBuilder = std::make_unique<vehicle::VciFenceBuilder>(std::move(builder));
+}
+
 VehicleFleet::~VehicleFleet()
 {
     // Vehicles first (they watch their links), then the links, with nothing reaching back here.
@@ -200,7 +205,10 @@ bool VehicleFleet::addVciVehicle(const QString &text)
         emit messageChanged();
         return false;
     }
-    add(std::make_unique<vehicle::VciVehicleLink>(*endpoint, m_elevation.data()));
+    auto link = std::make_unique<vehicle::VciVehicleLink>(*endpoint, m_elevation.data());
+    if (m_fenceBuilder)
+        link->setFenceBuilder(*m_fenceBuilder);
+    add(std::move(link));
     return true;
 }
 

@@ -18,6 +18,9 @@ class HciClient;
 namespace sortie::terrain {
 class ElevationService;
 }
+namespace sortie::vehicle {
+struct VciFenceBuilder;
+}
 
 namespace sortie::client {
 
@@ -66,6 +69,9 @@ public:
     VehicleGroup *group() { return &m_group; }
     // The ground VCI routes are planned over (nullptr: none).
     terrain::ElevationService *elevation() const;
+    // What makes the fence of a route going up to a VCI vehicle (airspace::vciFenceFor), for the VCI
+    // vehicles added from now on; without it, a route that asks for a fence is refused.
+    void setFenceBuilder(vehicle::VciFenceBuilder builder);
 
     // Connects a vehicle over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600.
     Q_INVOKABLE bool addVciVehicle(const QString &endpoint);
@@ -93,6 +99,7 @@ private:
 
     QPointer<hci::HciClient> m_client;
     QPointer<terrain::ElevationService> m_elevation;
+    std::unique_ptr<vehicle::VciFenceBuilder> m_fenceBuilder; // null: none
     vehicle::CommandLog m_commandLog; // before the vehicles, which write to it
     CommandPolicy m_commands;
     VehicleGroup m_group{this, &m_commands};

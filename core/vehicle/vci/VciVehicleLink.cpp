@@ -2,7 +2,6 @@
 
 #include "ElevationService.h"
 #include "VciFence.h"
-#include "VciFenceBuilder.h"
 #include "VciMissionPlanner.h"
 #include "Route.h"
 #include "VciProfile.h"
@@ -86,6 +85,16 @@ mission::GeoBox boxOf(const std::vector<MissionItem> &items)
         box.east = std::max(box.east, i.longitude);
     }
     return box;
+}
+
+// The fence without a builder: none, which is right only when nothing asks for one.
+mission::Result<VciFencePlan> unbuiltFence(const mission::Route &route, const FenceSettings &settings)
+{
+    if (!route.fence.polygons.empty() || !route.fence.circles.empty() || settings.zones)
+        return mission::MissionError{QCoreApplication::translate("VciVehicleLink", "the fence cannot be made: this link was given no fence builder"), {}, 0, 0, {}};
+    VciFencePlan plan;
+    plan.fence.breachAction = profileBreachAction(settings.breachAction);
+    return plan;
 }
 
 QString stringField(const json &body, const char *key)
@@ -318,7 +327,7 @@ void VciVehicleLink::planMission(const mission::Route &route, const FenceSetting
     GroundLookup ground;
     if (m_elevation)
         ground = [service = m_elevation](const mission::GeoPoint &p) { return service ? service->groundAt(p) : std::nullopt; };
-    auto plan = vciFenceFor(route, fence, boxOf(mission->items), ground);
+    auto plan = m_fenceBuilder ? m_fenceBuilder(route, fence, boxOf(mission->items), ground) : unbuiltFence(route, fence);
     if (!plan)
         return done(CommandResult::failure(plan.error().message), {});
     auto native = std::make_shared<VciNativeMission>();

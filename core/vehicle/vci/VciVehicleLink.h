@@ -2,6 +2,7 @@
 
 #include "VciConnection.h"
 #include "VciEndpoint.h"
+#include "VciFencePlan.h"
 #include "VciTransport.h"
 #include "VehicleLink.h"
 
@@ -33,6 +34,10 @@ public:
     vci::VciTransport *transport() { return &m_transport; }
     void reconnect() { m_transport.reopen(); }
     void setCommandTimeout(int ms) { m_connection.setDefaultTimeout(ms); }
+    // What makes a route's fence: the airspace's (airspace::vciFenceFor), handed in by whoever builds
+    // the link's world, as the terrain is handed its DEM opener. Without one, a route goes up with an
+    // empty fence when neither it nor the settings ask for one, and is refused when they do.
+    void setFenceBuilder(VciFenceBuilder builder) { m_fenceBuilder = std::move(builder); }
 
     QString protocol() const override { return QStringLiteral("VCI"); }
     VehicleIdentity identity() const override { return m_identity; }
@@ -74,6 +79,7 @@ private:
 
     vci::VciEndpoint m_endpoint;
     QPointer<terrain::ElevationService> m_elevation;
+    VciFenceBuilder m_fenceBuilder;
     vci::VciTransport m_transport;
     vci::VciConnection m_connection;
     VehicleIdentity m_identity;

@@ -1,6 +1,5 @@
 #include "VciFenceBuilder.h"
 
-#include "AirspaceCheck.h"
 #include "Geodesy.h"
 #include "Route.h"
 #include "TelemetryField.h"
@@ -9,14 +8,15 @@
 #include <limits>
 #include <QCoreApplication>
 
-namespace sortie::vehicle {
+namespace sortie::airspace {
 namespace {
 
 namespace profile = vci::profile;
-using airspace::HeightLimit;
-using airspace::Zone;
-using airspace::ZoneKind;
 using mission::GeoPoint;
+using vehicle::FenceBreachAction;
+using vehicle::radiansFromDegrees;
+using vehicle::GroundLookup;
+using vehicle::VciFencePlan;
 
 mission::MissionError failure(QString message)
 {
@@ -188,27 +188,25 @@ mission::Result<void> addZone(const Zone &zone, const GroundLookup &ground, prof
 
 } // namespace
 
-profile::BreachAction profileBreachAction(FenceBreachAction action)
+const ZoneSet *fenceZonesOf(const vehicle::FenceSettings &settings)
 {
-    switch (action) {
-    case FenceBreachAction::Return: return profile::BreachAction::Return;
-    case FenceBreachAction::Land: return profile::BreachAction::Land;
-    case FenceBreachAction::Hold: return profile::BreachAction::Hold;
-    }
-    return profile::BreachAction::Return;
+    return dynamic_cast<const FenceZoneSet *>(settings.zones.get());
 }
 
-mission::Result<VciFencePlan> vciFenceFor(const mission::Route &route, const FenceSettings &settings, const mission::GeoBox &routeBox,
+mission::Result<VciFencePlan> vciFenceFor(const mission::Route &route, const vehicle::FenceSettings &settings, const mission::GeoBox &routeBox,
                                           const GroundLookup &ground)
 {
     VciFencePlan plan;
-    plan.fence.breachAction = profileBreachAction(settings.breachAction);
-    std::vector<Zone> zones = airspace::zonesOfFence(route.fence, QCoreApplication::translate("VciFenceBuilder", "route fence"), airspace::ZoneSource::VehicleFence,
-                                                     route.settings.name);
+    plan.fence.breachAction = vehicle::profileBreachAction(settings.breachAction);
+    std::vector<Zone> zones = zonesOfFence(route.fence, QCoreApplication::translate("VciFenceBuilder", "route fence"), ZoneSource::VehicleFence,
+                                           route.settings.name);
     const size_t own = zones.size();
-    if (settings.zones && !routeBox.empty)
-        for (int i : settings.zones->near(routeBox))
-            zones.push_back(settings.zones->zones()[size_t(i)]);
+    const ZoneSet *carried = fenceZonesOf(settings);
+    if (settings.zones && !carried)
+        return failure(QCoreApplication::translate("VciFenceBuilder", "the fence cannot be made: its zones are not the airspace's"));
+    if (carried && !routeBox.empty)
+        for (int i : carried->near(routeBox))
+            zones.push_back(carried->zones()[size_t(i)]);
     for (const Zone &zone : zones)
         if (auto added = addZone(zone, ground, &plan.fence, &plan.notices); !added)
             return added.error();
@@ -224,4 +222,4 @@ mission::Result<VciFencePlan> vciFenceFor(const mission::Route &route, const Fen
     return plan;
 }
 
-} // namespace sortie::vehicle
+} // namespace sortie::airspace
