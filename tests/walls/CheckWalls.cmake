@@ -1,0 +1,33 @@
+# Runs one room's wall probe (tests/walls/CMakeLists.txt): builds its object library, keeping going
+# past failures, and checks every source's outcome. A wall passes only on the compiler's "not found"
+# for its header; an open control only when it compiled. Anything else fails, naming the header.
+#   cmake -DBUILD_DIR=... -DGENERATOR=... -DPROBE=... -DWALLS=a.h,b.h -DOPEN=c.h -P CheckWalls.cmake
+string(REPLACE "," ";" walls "${WALLS}")
+string(REPLACE "," ";" open "${OPEN}")
+if(GENERATOR MATCHES "Ninja")
+  set(keep_going -- -k 0)
+elseif(GENERATOR MATCHES "Makefiles")
+  set(keep_going -- -k)
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build ${BUILD_DIR} --target ${PROBE} ${keep_going}
+                OUTPUT_VARIABLE out ERROR_VARIABLE out RESULT_VARIABLE status)
+set(problems)
+foreach(header ${walls})
+  string(REPLACE "." "\\." h "${header}")
+  if(NOT out MATCHES "(${h}: No such file|'${h}' file not found)")
+    list(APPEND problems "wall ${header}: the room reaches it (or the probe failed for another reason)")
+  endif()
+endforeach()
+foreach(header ${open})
+  string(MAKE_C_IDENTIFIER "open_${header}" name)
+  if(out MATCHES "FAILED: [^\n]*${name}\\.cpp")
+    list(APPEND problems "open ${header}: the room should reach it, and the probe did not compile")
+  endif()
+endforeach()
+if(problems)
+  string(REPLACE ";" "\n  " problems "${problems}")
+  message(FATAL_ERROR "${PROBE}:\n  ${problems}\n--- build output ---\n${out}")
+endif()
+list(LENGTH walls w)
+list(LENGTH open o)
+message(STATUS "${PROBE}: ${w} walls hold, ${o} open")
