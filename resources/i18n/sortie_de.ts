@@ -4245,6 +4245,10 @@ Ereignisse: %1
         <source>hold</source>
         <translation>Position halten</translation>
     </message>
+    <message>
+        <source>the fence cannot be made: its zones are not the airspace&apos;s</source>
+        <translation>der Geofence kann nicht erstellt werden: seine Zonen stammen nicht aus dem Luftraum</translation>
+    </message>
 </context>
 <context>
     <name>VciMissionPlanner</name>
@@ -4341,6 +4345,10 @@ Ereignisse: %1
         <source>holding</source>
         <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; holding&quot;.</extracomment>
         <translation>hält die Position</translation>
+    </message>
+    <message>
+        <source>the fence cannot be made: this link was given no fence builder</source>
+        <translation>der Geofence kann nicht erstellt werden: diese Verbindung hat keinen Geofence-Ersteller erhalten</translation>
     </message>
 </context>
 <context>

@@ -4245,6 +4245,10 @@ eventos:   %1
         <source>hold</source>
         <translation>mantener la posición</translation>
     </message>
+    <message>
+        <source>the fence cannot be made: its zones are not the airspace&apos;s</source>
+        <translation>no se puede crear la geocerca: sus zonas no son del espacio aéreo</translation>
+    </message>
 </context>
 <context>
     <name>VciMissionPlanner</name>
@@ -4341,6 +4345,10 @@ eventos:   %1
         <source>holding</source>
         <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; holding&quot;.</extracomment>
         <translation>manteniendo posición</translation>
+    </message>
+    <message>
+        <source>the fence cannot be made: this link was given no fence builder</source>
+        <translation>no se puede crear la geocerca: este enlace no recibió ningún generador de geocercas</translation>
     </message>
 </context>
 <context>

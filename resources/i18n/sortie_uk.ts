@@ -4259,6 +4259,10 @@ events:   %1
         <source>hold</source>
         <translation>утримання</translation>
     </message>
+    <message>
+        <source>the fence cannot be made: its zones are not the airspace&apos;s</source>
+        <translation>геозону не можна створити: її зони не з повітряного простору</translation>
+    </message>
 </context>
 <context>
     <name>VciMissionPlanner</name>
@@ -4355,6 +4359,10 @@ events:   %1
         <source>holding</source>
         <extracomment>What a vehicle does after a fence breach: &quot;fence breach: left its fence &apos;A&apos;; holding&quot;.</extracomment>
         <translation>утримує позицію</translation>
+    </message>
+    <message>
+        <source>the fence cannot be made: this link was given no fence builder</source>
+        <translation>геозону не можна створити: цьому з’єднанню не надано побудовника геозон</translation>
     </message>
 </context>
 <context>
