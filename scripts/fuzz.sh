@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds every libFuzzer target (tests/fuzz/fuzz_*.cpp) with clang under ASan and UBSan and runs each
-# for a bounded time on its seed corpus. Usage: scripts/fuzz.sh [seconds per target, default 30]
+# for a bounded time on its seed corpus, as many at a time as there are cores.
+# Usage: scripts/fuzz.sh [seconds per target, default 30]   (SORTIE_FUZZ_JOBS: how many at a time)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -10,22 +11,43 @@ require_symbolizer
 build="$sanitized_build"
 configure_sanitized_build
 targets=$(find tests/fuzz -maxdepth 1 -name 'fuzz_*.cpp' -printf '%f\n' | sed 's/\.cpp$//' | sort)
+start=$SECONDS
 cmake --build "$build" --target $targets
+echo "fuzz.sh: build done in $((SECONDS - start))s"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:external_symbolizer_path=$ASAN_SYMBOLIZER_PATH" UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-failed=0
-for t in $targets; do
-  corpus="tests/fuzz/${t#fuzz_}-corpus"
+mkdir -p "$build/artifacts"
+results=$(mktemp -d)
+trap 'rm -rf "$results"' EXIT
+
+# One target on its seeds for the time given; its log and exit status into $results.
+run_target() {
+  local t=$1 corpus="tests/fuzz/${1#fuzz_}-corpus" work
   work=$(mktemp -d)
   [ -d "$corpus" ] && cp -r "$corpus"/. "$work"/
-  echo "== $t: ${seconds}s on $(ls "$work" | wc -l) seeds"
-  mkdir -p "$build/artifacts"
-  if "$build/tests/fuzz/$t" -artifact_prefix="$build/artifacts/" -max_total_time="$seconds" -print_final_stats=1 -max_len=65536 "$work" \
-       > "$work.log" 2>&1; then
-    grep -E 'stat::number_of_executed_units|Done' "$work.log" | tail -2
+  echo "== $t: ${seconds}s on $(ls "$work" | wc -l) seeds" > "$results/$t.log"
+  "$build/tests/fuzz/$t" -artifact_prefix="$build/artifacts/" -max_total_time="$seconds" -print_final_stats=1 -max_len=65536 "$work" \
+    > "$results/$t.out" 2>&1 && echo 0 > "$results/$t.status" || echo 1 > "$results/$t.status"
+  rm -rf "$work"
+}
+
+# Each fuzzer is one process on one core: as many at a time as there are cores (SORTIE_FUZZ_JOBS),
+# each still for the whole time given, so a run of N targets takes N / cores times that.
+jobs_max="${SORTIE_FUZZ_JOBS:-$(nproc)}"
+start=$SECONDS
+for t in $targets; do
+  while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n || true; done
+  run_target "$t" &
+done
+wait
+failed=0
+for t in $targets; do
+  cat "$results/$t.log"
+  if [ "$(cat "$results/$t.status")" = 0 ]; then
+    grep -E 'stat::number_of_executed_units|Done' "$results/$t.out" | tail -2
   else
     failed=1
-    tail -40 "$work.log"
+    tail -40 "$results/$t.out"
   fi
-  rm -rf "$work" "$work.log"
 done
+echo "fuzz.sh: $(echo $targets | wc -w) targets, $jobs_max at a time, done in $((SECONDS - start))s"
 [ "$failed" = 0 ] && echo "fuzz: all targets clean" || { echo "fuzz: a target failed"; exit 1; }

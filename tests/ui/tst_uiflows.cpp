@@ -21,6 +21,7 @@
 
 #include <QDir>
 
+#include <algorithm>
 #include <functional>
 #include <QQmlApplicationEngine>
 #include <QQuickItem>
@@ -44,6 +45,23 @@ void typeText(QWindow *window, const QString &text)
 {
     for (QChar c : text)
         QTest::keyClick(window, c.toLatin1());
+}
+
+// The item a left press at scenePos reaches first, as Qt Quick picks it: the top-most visible and
+// enabled item there that takes the button (children in stacking order, the last drawn first).
+QQuickItem *pressTarget(QQuickItem *item, const QPointF &scenePos)
+{
+    if (!item->isVisible() || !item->isEnabled())
+        return nullptr;
+    const bool inside = item->contains(item->mapFromScene(scenePos));
+    if (item->clip() && !inside)
+        return nullptr;
+    QList<QQuickItem *> children = item->childItems();
+    std::stable_sort(children.begin(), children.end(), [](QQuickItem *a, QQuickItem *b) { return a->z() < b->z(); });
+    for (auto it = children.crbegin(); it != children.crend(); ++it)
+        if (QQuickItem *target = pressTarget(*it, scenePos))
+            return target;
+    return inside && (item->acceptedMouseButtons() & Qt::LeftButton) ? item : nullptr;
 }
 } // namespace
 
@@ -410,6 +428,23 @@ private slots:
         doc->undo();
         QCOMPARE(std::get<mission::CameraSeriesByDistanceAction>(actionsOf()[size_t(added)]).intervalMeters, 10.0);
         click(("removeAction_" + QByteArray::number(added)).constData());
+        QTRY_COMPARE(actionsOf().size(), before);
+
+        // An action's fields are in their places the moment it is added, before a frame is drawn:
+        // a click at a field's centre reaches that field (they stood on top of one another at the
+        // editor's corner until the next frame, and a quick click landed in the last one).
+        QVERIFY(doc->actionEditor()->add(QStringLiteral("cameraSeriesByDistance")));
+        for (const char *name : {"_intervalMeters", "_shots", "_startDelaySeconds"}) {
+            QQuickItem *field = find(("action_" + QByteArray::number(added) + name).constData());
+            QVERIFY(field);
+            QQuickItem *target = pressTarget(m_window->contentItem(), field->mapToScene(QPointF(field->width() / 2, field->height() / 2)));
+            QQuickItem *named = target;
+            while (named && named->objectName().isEmpty())
+                named = named->parentItem();
+            QVERIFY2(target == field || field->isAncestorOf(target),
+                     qPrintable(QStringLiteral("a click at the centre of %1 reaches %2").arg(field->objectName(), named ? named->objectName() : QStringLiteral("nothing"))));
+        }
+        doc->actionEditor()->remove(added);
         QTRY_COMPARE(actionsOf().size(), before);
     }
 

@@ -11,7 +11,12 @@ GroupBox {
     visible: actions.valid
     title: actions.title
 
+    // A layout places new items when the next frame is drawn; until then a freshly added action's
+    // fields all stand at the editor's corner, on top of one another, and a click there lands in its
+    // last field (tst_uiflows actionsAtAWaypoint, 3 runs in 10 on an idle machine). LayOutOnAdd lays
+    // the editor out as rows appear, so every field is where it is drawn from the moment it exists.
     ColumnLayout {
+        id: column
         anchors.fill: parent
         spacing: 4
 
@@ -25,6 +30,7 @@ GroupBox {
 
         Repeater {
             model: box.actions
+            LayOutOnAdd.layout: column
             delegate: Frame {
                 id: action
                 required property int index
@@ -69,6 +75,7 @@ GroupBox {
                     // instead of rebuilding every field (and losing the focus being typed in).
                     Repeater {
                         model: action.fields.length
+                        LayOutOnAdd.layout: column
                         delegate: RowLayout {
                             id: field
                             required property int index
