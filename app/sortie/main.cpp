@@ -90,7 +90,7 @@ int main(int argc, char *argv[])
         std::fprintf(stderr, "sortie: %s\n", qPrintable(graph.recorderError())); // flying goes on without a log
     // The terrain follows the DEM chosen in the map source dialog (the setting the graph read at start;
     // --dem wins until the operator picks another).
-    QObject::connect(&settings, &sortie::ui::AppSettings::changed, &settings,
+    QObject::connect(&settings, &sortie::ui::AppSettings::demPathChanged, &settings,
                      [&graph, &settings, &storage, chosen = settings.demPath()]() mutable {
         if (settings.demPath() == chosen)
             return;

@@ -342,6 +342,21 @@
     </message>
 </context>
 <context>
+    <name>AlertBanner</name>
+    <message>
+        <source>Too close: %1</source>
+        <translation>Zu nah: %1</translation>
+    </message>
+    <message>
+        <source>Airspace: %1</source>
+        <translation>Luftraum: %1</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Rückkehr</translation>
+    </message>
+</context>
+<context>
     <name>AlgorithmDefinition</name>
     <message>
         <source>%1 must be set</source>
@@ -1876,14 +1891,6 @@
     <message>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
-    </message>
-    <message>
-        <source>battery change</source>
-        <translation>Akkuwechsel</translation>
-    </message>
-    <message>
-        <source>no return</source>
-        <translation>keine Rückkehr</translation>
     </message>
     <message>
         <source>Click the corners (%1 so far), or Shift+drag a box</source>
@@ -3875,18 +3882,6 @@ Ereignisse: %1
     <message>
         <source>Fly %1 to %2?</source>
         <translation>%1 nach %2 fliegen lassen?</translation>
-    </message>
-    <message>
-        <source>Return home</source>
-        <translation>Rückkehr</translation>
-    </message>
-    <message>
-        <source>Too close: %1</source>
-        <translation>Zu nah: %1</translation>
-    </message>
-    <message>
-        <source>Airspace: %1</source>
-        <translation>Luftraum: %1</translation>
     </message>
     <message>
         <source>Plot this field too</source>
@@ -6653,6 +6648,14 @@ Ereignisse: %1
     <message>
         <source>clearance unknown</source>
         <translation>Bodenabstand unbekannt</translation>
+    </message>
+    <message>
+        <source>no return</source>
+        <translation>keine Rückkehr</translation>
+    </message>
+    <message>
+        <source>battery change</source>
+        <translation>Akkuwechsel</translation>
     </message>
 </context>
 <context>

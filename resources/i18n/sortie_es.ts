@@ -342,6 +342,21 @@
     </message>
 </context>
 <context>
+    <name>AlertBanner</name>
+    <message>
+        <source>Too close: %1</source>
+        <translation>Demasiado cerca: %1</translation>
+    </message>
+    <message>
+        <source>Airspace: %1</source>
+        <translation>Espacio aéreo: %1</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Volver al origen</translation>
+    </message>
+</context>
+<context>
     <name>AlgorithmDefinition</name>
     <message>
         <source>%1 must be set</source>
@@ -1876,14 +1891,6 @@
     <message>
         <source>Cancel</source>
         <translation>Cancelar</translation>
-    </message>
-    <message>
-        <source>battery change</source>
-        <translation>cambio de batería</translation>
-    </message>
-    <message>
-        <source>no return</source>
-        <translation>sin retorno</translation>
     </message>
     <message>
         <source>Click the corners (%1 so far), or Shift+drag a box</source>
@@ -3875,18 +3882,6 @@ eventos:   %1
     <message>
         <source>Fly %1 to %2?</source>
         <translation>¿Volar %1 a %2?</translation>
-    </message>
-    <message>
-        <source>Return home</source>
-        <translation>Volver al origen</translation>
-    </message>
-    <message>
-        <source>Too close: %1</source>
-        <translation>Demasiado cerca: %1</translation>
-    </message>
-    <message>
-        <source>Airspace: %1</source>
-        <translation>Espacio aéreo: %1</translation>
     </message>
     <message>
         <source>Plot this field too</source>
@@ -6653,6 +6648,14 @@ eventos:   %1
     <message>
         <source>clearance unknown</source>
         <translation>margen desconocido</translation>
+    </message>
+    <message>
+        <source>no return</source>
+        <translation>sin retorno</translation>
+    </message>
+    <message>
+        <source>battery change</source>
+        <translation>cambio de batería</translation>
     </message>
 </context>
 <context>

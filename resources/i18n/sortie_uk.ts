@@ -342,6 +342,21 @@
     </message>
 </context>
 <context>
+    <name>AlertBanner</name>
+    <message>
+        <source>Too close: %1</source>
+        <translation>Надто близько: %1</translation>
+    </message>
+    <message>
+        <source>Airspace: %1</source>
+        <translation>Повітряний простір: %1</translation>
+    </message>
+    <message>
+        <source>Return home</source>
+        <translation>Додому</translation>
+    </message>
+</context>
+<context>
     <name>AlgorithmDefinition</name>
     <message>
         <source>%1 must be set</source>
@@ -1879,14 +1894,6 @@
     <message>
         <source>Cancel</source>
         <translation>Скасувати</translation>
-    </message>
-    <message>
-        <source>battery change</source>
-        <translation>заміна батареї</translation>
-    </message>
-    <message>
-        <source>no return</source>
-        <translation>точка неповернення</translation>
     </message>
     <message>
         <source>Click the corners (%1 so far), or Shift+drag a box</source>
@@ -3885,18 +3892,6 @@ events:   %1
     <message>
         <source>Fly %1 to %2?</source>
         <translation>Летіти %1 до %2?</translation>
-    </message>
-    <message>
-        <source>Return home</source>
-        <translation>Додому</translation>
-    </message>
-    <message>
-        <source>Too close: %1</source>
-        <translation>Надто близько: %1</translation>
-    </message>
-    <message>
-        <source>Airspace: %1</source>
-        <translation>Повітряний простір: %1</translation>
     </message>
     <message>
         <source>Plot this field too</source>
@@ -6688,6 +6683,14 @@ events:   %1
     <message>
         <source>clearance unknown</source>
         <translation>запас висоти невідомий</translation>
+    </message>
+    <message>
+        <source>no return</source>
+        <translation>точка неповернення</translation>
+    </message>
+    <message>
+        <source>battery change</source>
+        <translation>заміна батареї</translation>
     </message>
 </context>
 <context>

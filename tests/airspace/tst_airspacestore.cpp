@@ -107,7 +107,7 @@ private slots:
         Fixture f(m_dir.path());
         f.analyzer.recomputeNow();
         QCOMPARE(f.analyzer.validation().errorCount(), 0);
-        QVERIFY(f.store->crossings().isEmpty());
+        QVERIFY(f.store->crossings().empty());
 
         QSignalSpy changed(f.store.get(), &Airspace::changed);
         QCOMPARE(f.store->editor()->addPolygon(squareOverLeg2()), 0);
@@ -124,12 +124,16 @@ private slots:
         QVERIFY2(refused.error().message.contains(QStringLiteral("Zone 1")), qPrintable(refused.error().message));
 
         // Where it crosses, for the terrain profile: the distances and the zone's limits.
-        QCOMPARE(f.store->crossings().size(), 1);
-        const QVariantMap crossing = f.store->crossings().front().toMap();
-        QVERIFY(std::abs(crossing.value(QStringLiteral("from")).toDouble() - 1400) < 0.5);
-        QVERIFY(std::abs(crossing.value(QStringLiteral("to")).toDouble() - 1600) < 0.5);
-        QCOMPARE(crossing.value(QStringLiteral("name")).toString(), QStringLiteral("Zone 1"));
-        QVERIFY(crossing.value(QStringLiteral("floor")).isNull());
+        QCOMPARE(f.store->crossingCount(), 1);
+        const ZoneCrossing &crossing = f.store->crossings().front();
+        QVERIFY(std::abs(crossing.from - 1400) < 0.5);
+        QVERIFY(std::abs(crossing.to - 1600) < 0.5);
+        QCOMPARE(crossing.leg, 2);
+        QCOMPARE(crossing.zone, 0);
+        QCOMPARE(crossing.name, QStringLiteral("Zone 1"));
+        QCOMPARE(crossing.kind, ZoneKind::Exclusion);
+        QVERIFY(!crossing.floor && !crossing.ceiling);  // the ground up, unlimited
+        QVERIFY(crossing.path.size() >= 2);             // the stretch the map draws
 
         // The issue chooses its zone.
         f.store->setSelectedZone(-1);
@@ -142,7 +146,7 @@ private slots:
         f.analyzer.recomputeNow();
         QCOMPARE(countRule(f.analyzer.validation(), QStringLiteral("airspace-exclusion")), 0);
         QCOMPARE(countRule(f.analyzer.validation(), QStringLiteral("airspace-near")), 1);
-        QVERIFY(f.store->crossings().isEmpty());
+        QVERIFY(f.store->crossings().empty());
         f.store->setBuffer(5);
         f.analyzer.recomputeNow();
         QCOMPARE(countRule(f.analyzer.validation(), QStringLiteral("airspace-near")), 0);

@@ -137,13 +137,18 @@ private slots:
         QVERIFY2(warnings.front().message.contains(QStringLiteral("EMU-101's uploaded \"Eastbound\"")), qPrintable(warnings.front().message));
         QVERIFY(warnings.front().segment >= 0);
         QCOMPARE(m_deconfliction->count(), 1);
-        const QVariantMap conflict = m_deconfliction->conflicts().front().toMap();
+        const deconfliction::Conflict &conflict = m_deconfliction->conflicts().front().conflict;
         // 240 m apart closing at 12 m/s: they meet about 20 s after the start, in the middle.
-        QVERIFY2(conflict.value(QStringLiteral("time")).toDouble() > 5 && conflict.value(QStringLiteral("time")).toDouble() < 40,
-                 qPrintable(conflict.value(QStringLiteral("time")).toString()));
-        QVERIFY(conflict.value(QStringLiteral("horizontal")).toDouble() < 20);
-        QVERIFY(conflict.value(QStringLiteral("vertical")).toDouble() < 15);
-        const QGeoCoordinate own(conflict.value(QStringLiteral("latitude")).toDouble(), conflict.value(QStringLiteral("longitude")).toDouble());
+        QVERIFY2(conflict.time > 5 && conflict.time < 40, qPrintable(QString::number(conflict.time)));
+        QVERIFY(conflict.horizontal < 20);
+        QVERIFY(conflict.vertical < 15);
+        // The row the route panel shows says the same, by role.
+        QCOMPARE(m_deconfliction->rowCount(), 1);
+        const QModelIndex row = m_deconfliction->index(0);
+        QCOMPARE(row.data(m_deconfliction->roleNames().key("time")).toDouble(), conflict.time);
+        QCOMPARE(row.data(m_deconfliction->roleNames().key("otherVehicle")).toString(), QStringLiteral("EMU-101"));
+        QCOMPARE(row.data(m_deconfliction->roleNames().key("flying")).toBool(), false);
+        const QGeoCoordinate own(conflict.firstAt.position.latitude, conflict.firstAt.position.longitude);
         const QGeoCoordinate middle = origin.atDistanceAndAzimuth(130, 90);
         QVERIFY2(own.distanceTo(middle) < 60, qPrintable(QString::number(own.distanceTo(middle))));
 

@@ -82,9 +82,10 @@ private slots:
         QVERIFY(std::abs(endurance.flightTime().toDouble() - 400) < 1e-3);
         QVERIFY(std::abs(endurance.energyWh().toDouble() - 32) < 1e-3);
         QCOMPARE(endurance.batteriesNeeded().toInt(), 2);
-        QCOMPARE(endurance.changePoints().size(), 1);
-        QCOMPARE(endurance.changePoints().at(0).toMap().value(QStringLiteral("waypoint")).toInt(), 3);
-        QCOMPARE(endurance.pointOfNoReturn().toMap().value(QStringLiteral("leg")).toInt(), 2);
+        QCOMPARE(endurance.changeCount(), 1);
+        QCOMPARE(endurance.estimate()->changes.at(0).at.segment + 1, 3); // at waypoint 3
+        QCOMPARE(endurance.noReturnLeg().toInt(), 2);
+        QCOMPARE(endurance.noReturnDistance().toDouble(), endurance.estimate()->pointOfNoReturn->distance);
         // Home from 1 km out, 30 m up: 8 Wh back at cruise, 1.5 Wh down.
         QVERIFY(std::abs(endurance.energyHomeWh(geodesicDirect(kOrigin, 90, 1000).point.latitude,
                                                 geodesicDirect(kOrigin, 90, 1000).point.longitude, 30).toDouble() - 9.5) < 1e-3);
@@ -108,7 +109,7 @@ private slots:
         QVERIFY(endurance.loadProfile(path("big.json")));
         analyzer.recomputeNow();
         QCOMPARE(endurance.batteriesNeeded().toInt(), 1);
-        QVERIFY(endurance.pointOfNoReturn().isNull());
+        QVERIFY(!endurance.noReturnDistance().isValid() && !endurance.noReturnLeg().isValid()); // none: undefined, never 0
         QVERIFY(permitRelease(analyzer.validation(), ValidationOverride::None, QStringLiteral("Upload")).ok());
         RouteEndurance again(&settings, &analyzer, &model);
         QCOMPARE(again.profilePath(), path("big.json"));

@@ -64,6 +64,16 @@ QPalette darkPalette()
     return dark;
 }
 
+QQuickItem *findItem(QQuickItem *root, const QString &name)
+{
+    if (!root || root->objectName() == name)
+        return root;
+    for (QQuickItem *child : root->childItems())
+        if (QQuickItem *found = findItem(child, name))
+            return found;
+    return nullptr;
+}
+
 int distinctColours(const QImage &image, int limit)
 {
     QSet<QRgb> colours;

@@ -43,6 +43,10 @@ private:
     QString m_errors;
 };
 
+// The item named `name` at or under `root` in the item tree: a Repeater's delegates are child
+// items of the Repeater's parent, not QObject children, so findChild misses them. Null when none.
+QQuickItem *findItem(QQuickItem *root, const QString &name);
+
 // How far two colours are apart (largest channel difference).
 int colourDistance(QRgb a, QRgb b);
 // Number of distinct colours in an image (up to `limit`): a blank image has one.

@@ -113,7 +113,7 @@ private slots:
         QTRY_VERIFY(doc->analyzer()->validation().errorCount() > 0);
 
         // On the map: each change (amber: not planned) and the point of no return (red).
-        const int changes = endurance.changePoints().size();
+        const int changes = endurance.changeCount();
         QCOMPARE(changes, batteries - 1);
         QTRY_COMPARE(layer->markCount(), changes + 1);
         QVERIFY(test::waitForFrame(app.window()));
@@ -126,17 +126,20 @@ private slots:
         // In the terrain profile too, at the same places along the path.
         auto *profileView = app.find<ui::ElevationProfileView>(QStringLiteral("elevationProfile"));
         QVERIFY(profileView);
-        QTRY_COMPARE(profileView->property("markers").toList().size(), changes + 1);
+        QTRY_COMPARE(profileView->markerCount(), changes + 1);
         // The route passes its corners twice: each mark is where its own distance says, not the
         // first pass by the same place.
-        const QVariantList places = endurance.changePoints() + QVariantList{endurance.pointOfNoReturn()};
+        std::vector<double> places;
+        for (const endurance::BatteryChange &change : endurance.estimate()->changes)
+            places.push_back(change.at.distance);
+        places.push_back(endurance.noReturnDistance().toDouble());
         for (int i = 0; i <= changes; ++i) {
-            const double distance = places[i].toMap().value(QStringLiteral("distance")).toDouble();
+            const double distance = places[size_t(i)];
             QTRY_VERIFY(std::isfinite(profileView->markerDistance(i)));
             QVERIFY2(std::abs(profileView->markerDistance(i) - distance) < 1,
                      qPrintable(QStringLiteral("%1 vs %2").arg(profileView->markerDistance(i)).arg(distance)));
         }
-        QVERIFY(places[changes - 1].toMap().value(QStringLiteral("distance")).toDouble() > 8000); // the second lap
+        QVERIFY(places[size_t(changes - 1)] > 8000); // the second lap
 
         if (qEnvironmentVariableIsSet("SORTIE_SCREENSHOT_DIR"))
             image.save(QDir(qEnvironmentVariable("SORTIE_SCREENSHOT_DIR")).filePath(QStringLiteral("endurance.png")));

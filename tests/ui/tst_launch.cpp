@@ -4,6 +4,10 @@
 #include "PasswordVault.h"
 
 #include <QCoreApplication>
+#include <QMetaProperty>
+#include <memory>
+#include <vector>
+#include <QSet>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -180,15 +184,17 @@ private slots:
             AppSettings settings(&storage, m_vault.get());
             QCOMPARE(settings.lastServer(), QStringLiteral("localhost:3334"));
             QCOMPARE(settings.mapSource(), QStringLiteral("offline"));
-            QSignalSpy changed(&settings, &AppSettings::changed);
+            QSignalSpy server(&settings, &AppSettings::lastServerChanged), password(&settings, &AppSettings::passwordChanged);
             settings.setLastServer(QStringLiteral("ucs.local:3334"));
+            settings.setLastServer(QStringLiteral("ucs.local:3334")); // the same again: no change
             settings.setLastUser(QStringLiteral("pilot"));
             settings.setMapSource(QStringLiteral("mbtiles"));
             settings.setMbtilesFile(QStringLiteral("/data/area.mbtiles"));
             settings.setUnits(QStringLiteral("imperial"));
             settings.setWindowGeometry(QRect(10, 20, 1000, 700));
             settings.setPassword(QStringLiteral("secret-1"));
-            QCOMPARE(changed.count(), 7);
+            QCOMPARE(server.count(), 1);
+            QCOMPARE(password.count(), 1);
             settings.sync();
         }
         QSettings storage(path, QSettings::IniFormat);
@@ -202,6 +208,58 @@ private slots:
         // "remember" was never ticked: the password stayed in memory only.
         QVERIFY(settings.password().isEmpty());
         QVERIFY(!fileContains(path, "secret-1"));
+    }
+
+    // Each setting has its own NOTIFY signal: writing one notifies that one alone, so a binding on
+    // the units is not re-evaluated when the window moves. Every writable property is written once
+    // with a new value while every property's signal is watched.
+    void oneSettingNotifiesItsOwn()
+    {
+        QTemporaryDir dir;
+        QSettings storage(dir.filePath(QStringLiteral("sortie.ini")), QSettings::IniFormat);
+        AppSettings settings(&storage, m_vault.get());
+        const QMetaObject &meta = AppSettings::staticMetaObject;
+        std::vector<std::unique_ptr<QSignalSpy>> spies;
+        QSet<int> signalIndices;
+        for (int i = meta.propertyOffset(); i < meta.propertyCount(); ++i) {
+            const QMetaProperty property = meta.property(i);
+            QVERIFY2(property.hasNotifySignal(), property.name());
+            QVERIFY2(!signalIndices.contains(property.notifySignalIndex()),
+                     qPrintable(QStringLiteral("%1 shares its NOTIFY signal").arg(QLatin1String(property.name()))));
+            signalIndices.insert(property.notifySignalIndex());
+            spies.push_back(std::make_unique<QSignalSpy>(&settings, property.notifySignal()));
+        }
+        int written = 0;
+        for (int i = meta.propertyOffset(); i < meta.propertyCount(); ++i) {
+            const QMetaProperty property = meta.property(i);
+            if (!property.isWritable())
+                continue;
+            const QVariant before = property.read(&settings);
+            QVariant value;
+            switch (property.metaType().id()) {
+            case QMetaType::QString:
+                // A value each getter keeps as written (the map source knows three).
+                value = QLatin1String(property.name()) == QLatin1String("mapSource") ? QStringLiteral("xyz")
+                                                                                       : QStringLiteral("new-%1").arg(QLatin1String(property.name()));
+                break;
+            case QMetaType::Double: value = 0.25; break;
+            case QMetaType::Bool: value = !before.toBool(); break;
+            case QMetaType::QRect: value = QRect(5, 6, 700, 500); break;
+            default: QFAIL(qPrintable(QStringLiteral("no new value for %1").arg(QLatin1String(property.name()))));
+            }
+            for (auto &spy : spies)
+                spy->clear();
+            QVERIFY(property.write(&settings, value));
+            for (int j = meta.propertyOffset(); j < meta.propertyCount(); ++j) {
+                const int expected = j == i ? 1 : 0;
+                QVERIFY2(spies[size_t(j - meta.propertyOffset())]->count() == expected,
+                         qPrintable(QStringLiteral("writing %1 notified %2 %3 times")
+                                        .arg(QLatin1String(property.name()), QLatin1String(meta.property(j).name()))
+                                        .arg(spies[size_t(j - meta.propertyOffset())]->count())));
+            }
+            ++written;
+        }
+        QCOMPARE(written, 14); // the two read-only ones follow the keyring
     }
 
     // Without a keyring nothing is remembered, the login view is told why, and the file never
@@ -221,10 +279,10 @@ private slots:
             QVERIFY2(settings.passwordNotice().startsWith(QStringLiteral("No keyring is reachable, so the password cannot be remembered (")), qPrintable(settings.passwordNotice()));
             QVERIFY(settings.passwordNotice().contains(vault.unavailableReason()));
 
-            QSignalSpy changed(&settings, &AppSettings::changed);
+            QSignalSpy remember(&settings, &AppSettings::rememberPasswordChanged);
             settings.setRememberPassword(true);
             QVERIFY(!settings.rememberPassword());
-            QCOMPARE(changed.count(), 1); // the ticked box springs back
+            QCOMPARE(remember.count(), 1); // the ticked box springs back
             settings.rememberLogin(QStringLiteral("ucs.local:3334"), QStringLiteral("pilot"), QStringLiteral("secret-2"));
             QCOMPARE(settings.password(), QStringLiteral("secret-2")); // for this session's re-logins
             QCOMPARE(settings.lastUser(), QStringLiteral("pilot"));

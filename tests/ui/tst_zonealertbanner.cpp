@@ -14,19 +14,6 @@ Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
 
 using namespace sortie;
 
-namespace {
-// A Repeater's rows are visual children, not QObject children: looked for through childItems().
-QQuickItem *findItem(QQuickItem *root, const QString &name)
-{
-    if (!root || root->objectName() == name)
-        return root;
-    for (QQuickItem *child : root->childItems())
-        if (QQuickItem *found = findItem(child, name))
-            return found;
-    return nullptr;
-}
-} // namespace
-
 class TestZoneAlertBanner : public QObject
 {
     Q_OBJECT
@@ -54,7 +41,7 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(v->armed(), 10000);
         v->takeoff(30);
         QTRY_VERIFY_WITH_TIMEOUT(v->altitudeAgl() > 29 && v->mode() == QLatin1String("hold"), 30000);
-        auto *banner = m_client->find(QStringLiteral("proximityBanner"));
+        auto *banner = m_client->find(QStringLiteral("alertBanner"));
         QVERIFY(banner && !banner->isVisible());
 
         const QGeoCoordinate here = v->position();
@@ -67,7 +54,7 @@ private slots:
         m_client->fleet().goTo(0, beyond.latitude(), beyond.longitude());
 
         QTRY_VERIFY_WITH_TIMEOUT(banner->isVisible(), 30000);
-        QQuickItem *row = findItem(banner, QStringLiteral("zoneAlert"));
+        QQuickItem *row = test::findItem(banner, QStringLiteral("zoneAlert"));
         QVERIFY(row);
         const QString shown = row->property("text").toString();
         QVERIFY2(shown.startsWith(QStringLiteral("Airspace: %1 enters 'tower' in ").arg(v->name())), qPrintable(shown));

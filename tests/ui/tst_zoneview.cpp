@@ -198,7 +198,9 @@ private slots:
         // The terrain profile marks where the route is inside it.
         auto *profile = client.find<ui::ZoneProfileOverlay>(QStringLiteral("zoneProfile"));
         QVERIFY(profile);
-        QTRY_COMPARE(profile->crossings().size(), 1);
+        QCOMPARE(profile->airspace(), &airspace);
+        QTRY_COMPARE(airspace.crossingCount(), 1);
+        QTRY_COMPARE(profile->bandCount(), 1);
 
         // On the map: the stretch of leg 4 inside the zone red over the route.
         auto *stretches = client.find<ui::ZoneCrossingLayer>(QStringLiteral("zoneCrossingLayer"));

@@ -1,5 +1,8 @@
 #include "ConflictLayer.h"
 
+#include "FollowOwner.h"
+#include "RouteDeconfliction.h"
+
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
@@ -13,31 +16,38 @@ ConflictLayer::ConflictLayer(QQuickItem *parent)
 {
 }
 
-void ConflictLayer::setConflicts(const QVariantList &conflicts)
+deconfliction::RouteDeconfliction *ConflictLayer::deconfliction() const
 {
-    if (conflicts == m_conflicts)
+    return m_deconfliction;
+}
+
+void ConflictLayer::setDeconfliction(deconfliction::RouteDeconfliction *deconfliction)
+{
+    if (!followOwner(m_deconfliction, deconfliction, this, &deconfliction::RouteDeconfliction::conflictsChanged, &ConflictLayer::readMarks))
         return;
-    m_conflicts = conflicts;
     readMarks();
+    emit deconflictionChanged();
 }
 
 void ConflictLayer::readMarks()
 {
     m_marks.clear();
-    for (const QVariant &v : m_conflicts) {
-        const QVariantMap c = v.toMap();
-        const QGeoCoordinate own(c.value(QStringLiteral("latitude")).toDouble(), c.value(QStringLiteral("longitude")).toDouble());
-        const QGeoCoordinate other(c.value(QStringLiteral("otherLatitude")).toDouble(), c.value(QStringLiteral("otherLongitude")).toDouble());
-        if (!own.isValid() || !other.isValid())
-            continue;
-        const long s = std::lround(c.value(QStringLiteral("time")).toDouble());
-        m_marks.push_back({own, other,
-                           tr("%1 at %2:%3, %4 m / %5 m")
-                               .arg(c.value(QStringLiteral("otherVehicle")).toString())
-                               .arg(s / 60)
-                               .arg(s % 60, 2, 10, QLatin1Char('0'))
-                               .arg(c.value(QStringLiteral("horizontal")).toDouble(), 0, 'f', 0)
-                               .arg(c.value(QStringLiteral("vertical")).toDouble(), 0, 'f', 0)});
+    if (m_deconfliction) {
+        for (const deconfliction::FleetConflict &c : m_deconfliction->conflicts()) {
+            const deconfliction::Conflict &k = c.conflict;
+            const QGeoCoordinate own(k.firstAt.position.latitude, k.firstAt.position.longitude);
+            const QGeoCoordinate other(k.secondAt.position.latitude, k.secondAt.position.longitude);
+            if (!own.isValid() || !other.isValid())
+                continue;
+            const long s = std::lround(k.time);
+            m_marks.push_back({own, other,
+                               tr("%1 at %2:%3, %4 m / %5 m")
+                                   .arg(c.otherName)
+                                   .arg(s / 60)
+                                   .arg(s % 60, 2, 10, QLatin1Char('0'))
+                                   .arg(k.horizontal, 0, 'f', 0)
+                                   .arg(k.vertical, 0, 'f', 0)});
+        }
     }
     repaint();
     emit conflictsChanged();

@@ -1,5 +1,8 @@
 #include "EnduranceLayer.h"
 
+#include "FollowOwner.h"
+#include "RouteEndurance.h"
+
 #include <QFontMetricsF>
 #include <QPainter>
 #include <QPainterPath>
@@ -9,12 +12,9 @@
 namespace sortie::ui {
 
 namespace {
-QGeoCoordinate positionOf(const QVariantMap &point)
+QGeoCoordinate positionOf(const endurance::RoutePlace &place)
 {
-    bool latOk = false, lonOk = false;
-    const double lat = point.value(QStringLiteral("latitude")).toDouble(&latOk);
-    const double lon = point.value(QStringLiteral("longitude")).toDouble(&lonOk);
-    return latOk && lonOk ? QGeoCoordinate(lat, lon) : QGeoCoordinate();
+    return QGeoCoordinate(place.position.latitude, place.position.longitude);
 }
 
 // The label right of `at`, or left of `leftEnd` where it would run under the map's zoom buttons or
@@ -42,36 +42,34 @@ EnduranceLayer::EnduranceLayer(QQuickItem *parent)
 {
 }
 
-void EnduranceLayer::setChangePoints(const QVariantList &points)
+endurance::RouteEndurance *EnduranceLayer::endurance() const
 {
-    if (points == m_changes)
-        return;
-    m_changes = points;
-    readMarks();
+    return m_endurance;
 }
 
-void EnduranceLayer::setPointOfNoReturn(const QVariant &point)
+void EnduranceLayer::setEndurance(endurance::RouteEndurance *endurance)
 {
-    if (point == m_noReturn)
+    if (!followOwner(m_endurance, endurance, this, &endurance::RouteEndurance::estimateChanged, &EnduranceLayer::readMarks))
         return;
-    m_noReturn = point;
     readMarks();
+    emit enduranceChanged();
 }
 
 void EnduranceLayer::readMarks()
 {
     m_marks.clear();
-    for (const QVariant &v : m_changes) {
-        const QVariantMap change = v.toMap();
-        const QGeoCoordinate at = positionOf(change);
-        if (!at.isValid())
-            continue;
-        const bool planned = change.value(QStringLiteral("planned")).toBool();
-        m_marks.push_back({at, planned ? Kind::PlannedChange : Kind::UnplannedChange,
-                           planned ? tr("Battery change") : tr("Battery change needed")});
+    if (const endurance::EnduranceEstimate *estimate = m_endurance && m_endurance->estimate() ? &*m_endurance->estimate() : nullptr) {
+        for (const endurance::BatteryChange &change : estimate->changes) {
+            const QGeoCoordinate at = positionOf(change.at);
+            if (!at.isValid())
+                continue;
+            m_marks.push_back({at, change.planned ? Kind::PlannedChange : Kind::UnplannedChange,
+                               change.planned ? tr("Battery change") : tr("Battery change needed")});
+        }
+        if (estimate->pointOfNoReturn)
+            if (const QGeoCoordinate at = positionOf(*estimate->pointOfNoReturn); at.isValid())
+                m_marks.push_back({at, Kind::NoReturn, tr("No return")});
     }
-    if (const QGeoCoordinate at = positionOf(m_noReturn.toMap()); at.isValid())
-        m_marks.push_back({at, Kind::NoReturn, tr("No return")});
     repaint();
     emit marksChanged();
 }

@@ -2,32 +2,32 @@
 
 #include "MapLayer.h"
 
-#include <QVariant>
+#include <QPointer>
+
+namespace sortie::endurance {
+class RouteEndurance;
+}
 
 namespace sortie::ui {
 
 // Where the open route's battery runs out, on the map: each battery change (a battery glyph, green
 // where the route lands there, amber where the operator still has to plan that landing) and the
 // point of no return (a red diamond): beyond it, flying straight home no longer lands with the
-// reserve. It draws what RouteEndurance computed (`changePoints`, `pointOfNoReturn`): positions
-// in, marks out, no rule of its own.
+// reserve. It draws what RouteEndurance estimated (its battery changes and point of no return):
+// positions in, marks out, no rule of its own.
 class EnduranceLayer : public MapLayer
 {
     Q_OBJECT
+    Q_MOC_INCLUDE("RouteEndurance.h")
     QML_ELEMENT
-    // [{latitude, longitude, planned, waypoint, ...}], RouteEndurance.changePoints.
-    Q_PROPERTY(QVariantList changePoints READ changePoints WRITE setChangePoints NOTIFY marksChanged)
-    // {latitude, longitude, ...} or null/undefined, RouteEndurance.pointOfNoReturn.
-    Q_PROPERTY(QVariant pointOfNoReturn READ pointOfNoReturn WRITE setPointOfNoReturn NOTIFY marksChanged)
+    Q_PROPERTY(sortie::endurance::RouteEndurance *endurance READ endurance WRITE setEndurance NOTIFY enduranceChanged)
     Q_PROPERTY(int markCount READ markCount NOTIFY marksChanged)
 
 public:
     explicit EnduranceLayer(QQuickItem *parent = nullptr);
 
-    QVariantList changePoints() const { return m_changes; }
-    void setChangePoints(const QVariantList &points);
-    QVariant pointOfNoReturn() const { return m_noReturn; }
-    void setPointOfNoReturn(const QVariant &point);
+    endurance::RouteEndurance *endurance() const;
+    void setEndurance(endurance::RouteEndurance *endurance);
     int markCount() const { return int(m_marks.size()); }
     // Where a mark is drawn, in this item's coordinates (for tests and tooltips); NaN when none.
     Q_INVOKABLE QPointF markPosition(int index) const;
@@ -39,6 +39,7 @@ public:
     static QColor noReturnColour() { return QColor(0xe5, 0x39, 0x35); }
 
 signals:
+    void enduranceChanged();
     void marksChanged();
 
 protected:
@@ -54,8 +55,7 @@ private:
     };
     void readMarks();
 
-    QVariantList m_changes;
-    QVariant m_noReturn;
+    QPointer<endurance::RouteEndurance> m_endurance;
     std::vector<Mark> m_marks;
 };
 

@@ -1,5 +1,8 @@
 #include "ZoneCrossingLayer.h"
 
+#include "Airspace.h"
+#include "FollowOwner.h"
+
 #include <QPainter>
 
 namespace sortie::ui {
@@ -10,19 +13,31 @@ ZoneCrossingLayer::ZoneCrossingLayer(QQuickItem *parent)
     setAcceptedMouseButtons(Qt::NoButton); // only drawn: clicks go on to the route under it
 }
 
-void ZoneCrossingLayer::setCrossings(const QVariantList &crossings)
+airspace::Airspace *ZoneCrossingLayer::airspace() const
 {
-    if (crossings == m_crossings)
+    return m_airspace;
+}
+
+void ZoneCrossingLayer::setAirspace(airspace::Airspace *airspace)
+{
+    if (!followOwner(m_airspace, airspace, this, &airspace::Airspace::crossingsChanged, &ZoneCrossingLayer::readCrossings))
         return;
-    m_crossings = crossings;
+    readCrossings();
+    emit airspaceChanged();
+}
+
+void ZoneCrossingLayer::readCrossings()
+{
     m_stretches.clear();
-    for (const QVariant &c : crossings) {
-        std::vector<QGeoCoordinate> stretch;
-        for (const QVariant &p : c.toMap().value(QStringLiteral("path")).toList())
-            if (const QGeoCoordinate coordinate = p.value<QGeoCoordinate>(); coordinate.isValid())
-                stretch.push_back(coordinate);
-        if (stretch.size() >= 2)
-            m_stretches.push_back(std::move(stretch));
+    if (m_airspace) {
+        for (const airspace::ZoneCrossing &c : m_airspace->crossings()) {
+            std::vector<QGeoCoordinate> stretch;
+            for (const mission::GeoPoint &p : c.path)
+                if (const QGeoCoordinate coordinate(p.latitude, p.longitude); coordinate.isValid())
+                    stretch.push_back(coordinate);
+            if (stretch.size() >= 2)
+                m_stretches.push_back(std::move(stretch));
+        }
     }
     repaint();
     emit crossingsChanged();

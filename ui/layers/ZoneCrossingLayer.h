@@ -4,27 +4,32 @@
 
 #include <QColor>
 #include <QGeoCoordinate>
-#include <QVariant>
+#include <QPointer>
 
 #include <vector>
 
+namespace sortie::airspace {
+class Airspace;
+}
+
 namespace sortie::ui {
 
-// Where the open route is inside a zone it must not be in (Airspace.crossings: each stretch's
+// Where the open route is inside a zone it must not be in (the store's crossings: each stretch's
 // coordinates along the flown path): drawn red over the route, with a white halo, so the operator
-// sees which part of which leg the issue list speaks of. Draws what it is given; the check decides.
+// sees which part of which leg the issue list speaks of. Draws what the check found; decides nothing.
 class ZoneCrossingLayer : public MapLayer
 {
     Q_OBJECT
+    Q_MOC_INCLUDE("Airspace.h")
     QML_ELEMENT
-    Q_PROPERTY(QVariantList crossings READ crossings WRITE setCrossings NOTIFY crossingsChanged)
+    Q_PROPERTY(sortie::airspace::Airspace *airspace READ airspace WRITE setAirspace NOTIFY airspaceChanged)
     Q_PROPERTY(int stretchCount READ stretchCount NOTIFY crossingsChanged)
 
 public:
     explicit ZoneCrossingLayer(QQuickItem *parent = nullptr);
 
-    QVariantList crossings() const { return m_crossings; }
-    void setCrossings(const QVariantList &crossings);
+    airspace::Airspace *airspace() const;
+    void setAirspace(airspace::Airspace *airspace);
     int stretchCount() const { return int(m_stretches.size()); }
     // The middle of stretch `index` in this item's coordinates (tests); NaN when there is none.
     Q_INVOKABLE QPointF stretchMiddle(int index) const;
@@ -34,10 +39,13 @@ public:
     static QColor colour() { return QColor(0xe5, 0x39, 0x35); }
 
 signals:
+    void airspaceChanged();
     void crossingsChanged();
 
 private:
-    QVariantList m_crossings;
+    void readCrossings();
+
+    QPointer<airspace::Airspace> m_airspace;
     std::vector<std::vector<QGeoCoordinate>> m_stretches;
 };
 

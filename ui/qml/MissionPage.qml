@@ -189,7 +189,7 @@ Page {
                 anchors.fill: parent
                 map: pane.map
                 enabled: false // clicks are for the route
-                crossings: page.airspace.crossings
+                airspace: page.airspace
             }
             AreaScanLayer {
                 id: areaLayer
@@ -242,7 +242,7 @@ Page {
                 anchors.fill: parent
                 map: pane.map
                 enabled: false // clicks are for the route
-                conflicts: page.deconfliction ? page.deconfliction.conflicts : []
+                deconfliction: page.deconfliction
             }
             EnduranceLayer {
                 // Where the battery runs out: its changes and the point of no return.
@@ -251,8 +251,7 @@ Page {
                 anchors.fill: parent
                 map: pane.map
                 enabled: false // clicks are for the route
-                changePoints: page.endurance.changePoints
-                pointOfNoReturn: page.endurance.pointOfNoReturn
+                endurance: page.endurance
             }
             Connections {
                 target: pane.map
@@ -373,14 +372,8 @@ Page {
             routeModel: page.routeModel
             selectionModel: page.selectionModel
             elevation: page.elevation
-            zoneCrossings: page.airspace.crossings
-            markers: page.endurance.changePoints.map(c => ({distance: c.distance, latitude: c.latitude, longitude: c.longitude,
-                                                               label: qsTr("battery change"),
-                                                               color: c.planned ? "#43a047" : "#fb8c00"}))
-                     .concat(page.endurance.pointOfNoReturn ? [{distance: page.endurance.pointOfNoReturn.distance,
-                                                                latitude: page.endurance.pointOfNoReturn.latitude,
-                                                                longitude: page.endurance.pointOfNoReturn.longitude,
-                                                                label: qsTr("no return"), color: "#e53935"}] : [])
+            airspace: page.airspace
+            endurance: page.endurance
         }
         }
         Pane {

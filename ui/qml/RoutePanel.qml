@@ -218,18 +218,18 @@ Pane {
             spacing: 0
             Label { text: qsTr("Conflicts with other vehicles"); font.bold: true; color: "#d50000" }
             Repeater {
-                model: panel.deconfliction ? panel.deconfliction.conflicts : []
+                model: panel.deconfliction
                 delegate: Label {
-                    required property var modelData
+                    required property var model  // RouteDeconfliction's roles
                     objectName: "conflictRow"
                     Layout.fillWidth: true
                     elide: Text.ElideRight
                     text: qsTr("%1:%2  leg %3 · %4 (%5): %6 m across, %7 m in height")
-                          .arg(Math.floor(modelData.time / 60)).arg(String(Math.round(modelData.time % 60)).padStart(2, "0"))
-                          .arg(modelData.leg).arg(modelData.otherVehicle)
-                          .arg(modelData.flying ? qsTr("flying") : qsTr("uploaded"))
-                          .arg(Math.round(modelData.horizontal)).arg(Math.round(modelData.vertical))
-                    ToolTip.visible: conflictHover.hovered; ToolTip.text: modelData.text
+                          .arg(Math.floor(model.time / 60)).arg(String(Math.round(model.time % 60)).padStart(2, "0"))
+                          .arg(model.leg).arg(model.otherVehicle)
+                          .arg(model.flying ? qsTr("flying") : qsTr("uploaded"))
+                          .arg(Math.round(model.horizontal)).arg(Math.round(model.vertical))
+                    ToolTip.visible: conflictHover.hovered; ToolTip.text: model.text
                     HoverHandler { id: conflictHover }
                 }
             }
@@ -256,7 +256,7 @@ Pane {
             Label { text: qsTr("No return"); opacity: 0.7; visible: !parent.e.missing }
             Label { objectName: "enduranceNoReturn"; visible: !parent.e.missing; Layout.fillWidth: true; elide: Text.ElideRight
                     text: parent.e.missing ? "" : !parent.e.homeKnown ? qsTr("unknown: no home")
-                          : parent.e.pointOfNoReturn ? qsTr("after %1 (leg %2)").arg(panel.units.formatDistance(parent.e.pointOfNoReturn.distance)).arg(parent.e.pointOfNoReturn.leg)
+                          : parent.e.noReturnDistance !== undefined ? qsTr("after %1 (leg %2)").arg(panel.units.formatDistance(parent.e.noReturnDistance)).arg(parent.e.noReturnLeg)
                           : qsTr("none: home in reach")
                     ToolTip.visible: noReturnHover.hovered; ToolTip.text: qsTr("Beyond this point of the route, flying straight home no longer lands with the reserve")
                     HoverHandler { id: noReturnHover } }

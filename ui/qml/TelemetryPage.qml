@@ -252,80 +252,19 @@ Page {
                     }
                 }
             }
-            // Time to come home: amber, then red, with Return home behind the command bar's
-            // confirmation (the banner appears under the operator's pointer: a click meant for
-            // something else must not send the vehicle home).
-            Rectangle {
-                id: banner
-                objectName: "enduranceBanner"
-                readonly property bool red: advisory.level === EnduranceAdvisory.Red
+            // Every in-flight alert, most urgent first within each: the battery's advice (amber,
+            // then red, with Return home behind the command bar's confirmation), two of ours or
+            // one of ours and an aircraft predicted to come too close, a vehicle predicted to enter
+            // a zone or leave its fence. Each also went into the command log as it rose.
+            AlertBanner {
+                objectName: "alertBanner"
                 Layout.fillWidth: true
-                visible: advisory.level === EnduranceAdvisory.Amber || red
-                implicitHeight: bannerRow.implicitHeight + 12
-                color: red ? "#c62828" : "#fb8c00"
-                RowLayout {
-                    id: bannerRow
-                    anchors.fill: parent
-                    anchors.margins: 6
-                    spacing: 8
-                    Label {
-                        objectName: "enduranceAdvice"
-                        Layout.fillWidth: true
-                        text: advisory.advice
-                        color: banner.red ? "white" : "black"
-                        font.bold: true
-                        wrapMode: Text.Wrap
-                    }
-                    Button {
-                        objectName: "adviceReturnHomeButton"
-                        text: qsTr("Return home")
-                        enabled: page.current !== null
-                        onClicked: {
-                            const v = page.current
-                            commands.confirm(advisory.returnHomeQuestion, () => page.fleet.commands.send(CommandPolicy.ReturnHome, v))
-                        }
-                    }
-                }
-            }
-            // Two of ours, or one of ours and an aircraft, predicted to come too close, and a vehicle
-            // predicted to enter a zone or leave its fence: every alert, most urgent first, while it
-            // is predicted (each also went into the command log). One banner for both monitors.
-            Rectangle {
-                objectName: "proximityBanner"
-                Layout.fillWidth: true
-                visible: ((page.proximity !== null && page.proximity.count > 0) || (page.zoneAlerts !== null && page.zoneAlerts.count > 0))
-                         && !page.replaying
-                implicitHeight: proximityColumn.implicitHeight + 12
-                color: "#b71c1c"
-                ColumnLayout {
-                    id: proximityColumn
-                    anchors.fill: parent
-                    anchors.margins: 6
-                    spacing: 2
-                    Repeater {
-                        model: page.proximity
-                        delegate: Label {
-                            required property var model
-                            objectName: "proximityAlert"
-                            Layout.fillWidth: true
-                            text: qsTr("Too close: %1").arg(model.text)
-                            color: "white"
-                            font.bold: true
-                            wrapMode: Text.Wrap
-                        }
-                    }
-                    Repeater {
-                        model: page.zoneAlerts
-                        delegate: Label {
-                            required property var model
-                            objectName: "zoneAlert"
-                            Layout.fillWidth: true
-                            text: qsTr("Airspace: %1").arg(model.text)
-                            color: "white"
-                            font.bold: true
-                            wrapMode: Text.Wrap
-                        }
-                    }
+                monitors: [advisory, page.proximity, page.zoneAlerts]
+                hidden: page.replaying
+                canReturnHome: page.current !== null
+                onReturnHomeRequested: {
+                    const v = page.current
+                    commands.confirm(advisory.returnHomeQuestion, () => page.fleet.commands.send(CommandPolicy.ReturnHome, v))
                 }
             }
             CommandBar {

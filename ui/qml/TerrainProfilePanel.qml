@@ -9,8 +9,8 @@ Item {
     required property AbstractItemModel routeModel
     required property ItemSelectionModel selectionModel
     required property ElevationService elevation
-    property var zoneCrossings: []   // Airspace.crossings: where the route crosses zones, drawn with their limits
-    property var markers: []   // JS objects {latitude, longitude, label, color}: ElevationProfileView.markers
+    property Airspace airspace: null          // where the route crosses zones, drawn with their limits
+    property RouteEndurance endurance: null   // its battery changes and point of no return, marked
     property alias view: view
     property alias profile: profile
     implicitHeight: 170
@@ -26,7 +26,7 @@ Item {
         anchors.fill: parent
         model: profile
         selectionModel: panel.selectionModel
-        markers: panel.markers
+        endurance: panel.endurance
         textColor: palette.windowText
         backgroundColor: palette.base
     }
@@ -34,6 +34,6 @@ Item {
         objectName: "zoneProfile"
         anchors.fill: view
         view: view
-        crossings: panel.zoneCrossings
+        airspace: panel.airspace
     }
 }

@@ -8,6 +8,7 @@
 #include "CommandLog.h"
 #include "CommandPolicy.h"
 #include "ElevationService.h"
+#include "FlightAlerts.h"
 #include "HciTrafficSource.h"
 #include "MissionUploader.h"
 #include "RoutePreparation.h"
@@ -219,6 +220,14 @@ struct RouteDeconflictionForeign
     QML_FOREIGN(sortie::deconfliction::RouteDeconfliction)
     QML_NAMED_ELEMENT(RouteDeconfliction)
     QML_UNCREATABLE("made by the program and handed to the views")
+};
+// The in-flight alert contract every monitor keeps: the fly view's AlertBanner takes a list of them.
+struct AlertModelForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::vehicle::AlertModel)
+    QML_NAMED_ELEMENT(AlertModel)
+    QML_UNCREATABLE("each monitor is one; the program makes them")
 };
 struct ProximityMonitorForeign
 {

@@ -46,7 +46,7 @@ AppSettings::AppSettings(QSettings *storage, PasswordVault *vault, QObject *pare
         if (!rememberPassword() || server != lastServer() || user != lastUser() || password.isEmpty())
             return;
         m_password = password;
-        emit changed();
+        emit passwordChanged();
         emit passwordRecalled();
     });
     connect(m_vault, &PasswordVault::passwordWritten, this, [this] {
@@ -60,7 +60,7 @@ AppSettings::AppSettings(QSettings *storage, PasswordVault *vault, QObject *pare
         switch (operation) {
         case PasswordVault::Operation::Write:
             // Not kept means not remembered: the box must not claim otherwise.
-            m_storage->setValue(kRemember, false);
+            write(kRemember, false, &AppSettings::rememberPasswordChanged);
             setNotice(std::exchange(m_moving, false)
                           ? tr("The password an earlier version kept in the settings file was erased from it; the keyring refused it (%1), so it is not remembered.").arg(reason)
                           : tr("The keyring refused the password (%1): it is not remembered.").arg(reason));
@@ -86,6 +86,7 @@ void AppSettings::keyringChecked()
             m_vault->write(plain.server, plain.user, plain.password);
             if (plain.server == lastServer() && plain.user == lastUser() && m_password.isEmpty()) {
                 m_password = plain.password;
+                emit passwordChanged();
                 emit passwordRecalled();
             }
         } else if (rememberWanted()) {
@@ -95,9 +96,11 @@ void AppSettings::keyringChecked()
         QString notice = tr("No keyring is reachable, so the password cannot be remembered (%1).").arg(m_vault->unavailableReason());
         if (std::exchange(m_plain, std::nullopt))
             notice += QLatin1Char(' ') + tr("The password an earlier version kept in the settings file was erased from it.");
-        m_notice = notice;
+        setNotice(notice);
     }
-    emit changed();
+    // Both follow the keyring's state.
+    emit canRememberPasswordChanged();
+    emit rememberPasswordChanged();
 }
 
 void AppSettings::setNotice(const QString &notice)
@@ -105,15 +108,15 @@ void AppSettings::setNotice(const QString &notice)
     if (notice == m_notice)
         return;
     m_notice = notice;
-    emit changed();
+    emit passwordNoticeChanged();
 }
 
-void AppSettings::write(const QString &key, const QVariant &value)
+void AppSettings::write(const QString &key, const QVariant &value, void (AppSettings::*notify)())
 {
     if (m_storage->value(key) == value)
         return;
     m_storage->setValue(key, value);
-    emit changed();
+    emit(this->*notify)();
 }
 
 QString AppSettings::lastServer() const
@@ -123,7 +126,7 @@ QString AppSettings::lastServer() const
 
 void AppSettings::setLastServer(const QString &server)
 {
-    write(kServer, server);
+    write(kServer, server, &AppSettings::lastServerChanged);
 }
 
 QString AppSettings::lastUser() const
@@ -133,7 +136,7 @@ QString AppSettings::lastUser() const
 
 void AppSettings::setLastUser(const QString &user)
 {
-    write(kUser, user);
+    write(kUser, user, &AppSettings::lastUserChanged);
 }
 
 bool AppSettings::rememberWanted() const
@@ -161,7 +164,7 @@ void AppSettings::setRememberPassword(bool remember)
     if (remember == rememberPassword())
         return;
     if (remember && !canRememberPassword()) {
-        emit changed(); // a box ticked anyway springs back; passwordNotice says why
+        emit rememberPasswordChanged(); // a box ticked anyway springs back; passwordNotice says why
         return;
     }
     m_storage->setValue(kRemember, remember);
@@ -169,7 +172,7 @@ void AppSettings::setRememberPassword(bool remember)
         m_vault->remove(lastServer(), lastUser());
     else if (!m_password.isEmpty())
         m_vault->write(lastServer(), lastUser(), m_password);
-    emit changed();
+    emit rememberPasswordChanged();
 }
 
 void AppSettings::setPassword(const QString &password)
@@ -179,17 +182,17 @@ void AppSettings::setPassword(const QString &password)
     m_password = password;
     if (rememberPassword() && !m_password.isEmpty())
         m_vault->write(lastServer(), lastUser(), m_password);
-    emit changed();
+    emit passwordChanged();
 }
 
 void AppSettings::rememberLogin(const QString &server, const QString &user, const QString &password)
 {
     setLastServer(server);
     setLastUser(user);
-    const bool passwordChanged = password != m_password;
+    const bool differs = password != m_password;
     m_password = password;
-    if (passwordChanged)
-        emit changed();
+    if (differs)
+        emit passwordChanged();
 }
 
 void AppSettings::loginSucceeded()
@@ -207,7 +210,7 @@ QString AppSettings::mapSource() const
 
 void AppSettings::setMapSource(const QString &source)
 {
-    write(kMapSource, source);
+    write(kMapSource, source, &AppSettings::mapSourceChanged);
 }
 
 QString AppSettings::tileUrlTemplate() const
@@ -217,7 +220,7 @@ QString AppSettings::tileUrlTemplate() const
 
 void AppSettings::setTileUrlTemplate(const QString &urlTemplate)
 {
-    write(kTemplate, urlTemplate);
+    write(kTemplate, urlTemplate, &AppSettings::tileUrlTemplateChanged);
 }
 
 QString AppSettings::mbtilesFile() const
@@ -227,7 +230,7 @@ QString AppSettings::mbtilesFile() const
 
 void AppSettings::setMbtilesFile(const QString &file)
 {
-    write(kMbtiles, file);
+    write(kMbtiles, file, &AppSettings::mbtilesFileChanged);
 }
 
 QString AppSettings::orthophotoFile() const
@@ -237,7 +240,7 @@ QString AppSettings::orthophotoFile() const
 
 void AppSettings::setOrthophotoFile(const QString &file)
 {
-    write(kOrthophoto, file);
+    write(kOrthophoto, file, &AppSettings::orthophotoFileChanged);
 }
 
 double AppSettings::orthophotoOpacity() const
@@ -247,7 +250,7 @@ double AppSettings::orthophotoOpacity() const
 
 void AppSettings::setOrthophotoOpacity(double opacity)
 {
-    write(kOrthophotoOpacity, std::clamp(opacity, 0.0, 1.0));
+    write(kOrthophotoOpacity, std::clamp(opacity, 0.0, 1.0), &AppSettings::orthophotoOpacityChanged);
 }
 
 QString AppSettings::demPath() const
@@ -257,7 +260,7 @@ QString AppSettings::demPath() const
 
 void AppSettings::setDemPath(const QString &path)
 {
-    write(kDem, path);
+    write(kDem, path, &AppSettings::demPathChanged);
 }
 
 QString AppSettings::units() const
@@ -267,7 +270,7 @@ QString AppSettings::units() const
 
 void AppSettings::setUnits(const QString &units)
 {
-    write(kUnits, units);
+    write(kUnits, units, &AppSettings::unitsChanged);
 }
 
 QString AppSettings::language() const
@@ -278,7 +281,7 @@ QString AppSettings::language() const
 void AppSettings::setLanguage(const QString &language)
 {
     if (language != this->language())
-        write(kLanguage, language);
+        write(kLanguage, language, &AppSettings::languageChanged);
 }
 
 QRect AppSettings::windowGeometry() const
@@ -288,7 +291,7 @@ QRect AppSettings::windowGeometry() const
 
 void AppSettings::setWindowGeometry(const QRect &geometry)
 {
-    write(kGeometry, geometry);
+    write(kGeometry, geometry, &AppSettings::windowGeometryChanged);
 }
 
 bool AppSettings::windowMaximized() const
@@ -298,7 +301,7 @@ bool AppSettings::windowMaximized() const
 
 void AppSettings::setWindowMaximized(bool maximized)
 {
-    write(kMaximized, maximized);
+    write(kMaximized, maximized, &AppSettings::windowMaximizedChanged);
 }
 
 void AppSettings::sync()

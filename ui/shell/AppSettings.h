@@ -26,24 +26,24 @@ class AppSettings : public QObject
     Q_OBJECT
     QML_ELEMENT
     QML_UNCREATABLE("AppSettings is created by the application")
-    Q_PROPERTY(QString lastServer READ lastServer WRITE setLastServer NOTIFY changed)
-    Q_PROPERTY(QString lastUser READ lastUser WRITE setLastUser NOTIFY changed)
-    Q_PROPERTY(bool rememberPassword READ rememberPassword WRITE setRememberPassword NOTIFY changed)
-    Q_PROPERTY(QString password READ password WRITE setPassword NOTIFY changed)
-    Q_PROPERTY(bool canRememberPassword READ canRememberPassword NOTIFY changed)
-    Q_PROPERTY(QString passwordNotice READ passwordNotice NOTIFY changed)
-    Q_PROPERTY(QString mapSource READ mapSource WRITE setMapSource NOTIFY changed)
-    Q_PROPERTY(QString tileUrlTemplate READ tileUrlTemplate WRITE setTileUrlTemplate NOTIFY changed)
-    Q_PROPERTY(QString mbtilesFile READ mbtilesFile WRITE setMbtilesFile NOTIFY changed)
+    Q_PROPERTY(QString lastServer READ lastServer WRITE setLastServer NOTIFY lastServerChanged)
+    Q_PROPERTY(QString lastUser READ lastUser WRITE setLastUser NOTIFY lastUserChanged)
+    Q_PROPERTY(bool rememberPassword READ rememberPassword WRITE setRememberPassword NOTIFY rememberPasswordChanged)
+    Q_PROPERTY(QString password READ password WRITE setPassword NOTIFY passwordChanged)
+    Q_PROPERTY(bool canRememberPassword READ canRememberPassword NOTIFY canRememberPasswordChanged)
+    Q_PROPERTY(QString passwordNotice READ passwordNotice NOTIFY passwordNoticeChanged)
+    Q_PROPERTY(QString mapSource READ mapSource WRITE setMapSource NOTIFY mapSourceChanged)
+    Q_PROPERTY(QString tileUrlTemplate READ tileUrlTemplate WRITE setTileUrlTemplate NOTIFY tileUrlTemplateChanged)
+    Q_PROPERTY(QString mbtilesFile READ mbtilesFile WRITE setMbtilesFile NOTIFY mbtilesFileChanged)
     // The operator's own rasters (docs/rasters.md): an orthophoto over the base map, and a DEM file or
     // folder (the setting terrain/demFolder the terrain reads; empty: none).
-    Q_PROPERTY(QString orthophotoFile READ orthophotoFile WRITE setOrthophotoFile NOTIFY changed)
-    Q_PROPERTY(double orthophotoOpacity READ orthophotoOpacity WRITE setOrthophotoOpacity NOTIFY changed)
-    Q_PROPERTY(QString demPath READ demPath WRITE setDemPath NOTIFY changed)
-    Q_PROPERTY(QString units READ units WRITE setUnits NOTIFY changed)
-    Q_PROPERTY(QString language READ language WRITE setLanguage NOTIFY changed)
-    Q_PROPERTY(QRect windowGeometry READ windowGeometry WRITE setWindowGeometry NOTIFY changed)
-    Q_PROPERTY(bool windowMaximized READ windowMaximized WRITE setWindowMaximized NOTIFY changed)
+    Q_PROPERTY(QString orthophotoFile READ orthophotoFile WRITE setOrthophotoFile NOTIFY orthophotoFileChanged)
+    Q_PROPERTY(double orthophotoOpacity READ orthophotoOpacity WRITE setOrthophotoOpacity NOTIFY orthophotoOpacityChanged)
+    Q_PROPERTY(QString demPath READ demPath WRITE setDemPath NOTIFY demPathChanged)
+    Q_PROPERTY(QString units READ units WRITE setUnits NOTIFY unitsChanged)
+    Q_PROPERTY(QString language READ language WRITE setLanguage NOTIFY languageChanged)
+    Q_PROPERTY(QRect windowGeometry READ windowGeometry WRITE setWindowGeometry NOTIFY windowGeometryChanged)
+    Q_PROPERTY(bool windowMaximized READ windowMaximized WRITE setWindowMaximized NOTIFY windowMaximizedChanged)
 
 public:
     // Map sources: "offline" (built-in base map only), "xyz" (tileUrlTemplate), "mbtiles" (mbtilesFile).
@@ -98,12 +98,29 @@ public:
     Q_INVOKABLE void sync();
 
 signals:
-    void changed();
+    // One signal a property, so a binding re-evaluates only when its own setting changes.
+    void lastServerChanged();
+    void lastUserChanged();
+    void rememberPasswordChanged();
+    void passwordChanged();
+    void canRememberPasswordChanged();
+    void passwordNoticeChanged();
+    void mapSourceChanged();
+    void tileUrlTemplateChanged();
+    void mbtilesFileChanged();
+    void orthophotoFileChanged();
+    void orthophotoOpacityChanged();
+    void demPathChanged();
+    void unitsChanged();
+    void languageChanged();
+    void windowGeometryChanged();
+    void windowMaximizedChanged();
     // The keyring gave back the remembered password (the login view fills an empty field with it).
     void passwordRecalled();
 
 private:
-    void write(const QString &key, const QVariant &value);
+    // Stores a value; `notify` is emitted when it differs from the one kept.
+    void write(const QString &key, const QVariant &value, void (AppSettings::*notify)());
     bool rememberWanted() const;
     void keyringChecked();
     void setNotice(const QString &notice);

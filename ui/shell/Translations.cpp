@@ -37,7 +37,7 @@ Translations::Translations(AppSettings &settings, QQmlEngine &engine, const QStr
     , m_engine(engine)
     , m_folder(folder)
 {
-    connect(&m_settings, &AppSettings::changed, this, [this] {
+    connect(&m_settings, &AppSettings::languageChanged, this, [this] {
         if (m_settings.language() != m_requested)
             apply();
     });

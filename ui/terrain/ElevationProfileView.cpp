@@ -1,7 +1,10 @@
 #include "ElevationProfileView.h"
 
-#include "TerrainProfileModel.h"
+#include "EnduranceLayer.h"
+#include "FollowOwner.h"
 #include "LanguageChange.h"
+#include "RouteEndurance.h"
+#include "TerrainProfileModel.h"
 #include "TypedNumber.h"
 
 #include <QItemSelectionModel>
@@ -218,29 +221,39 @@ void ElevationProfileView::mousePressEvent(QMouseEvent *event)
     event->accept();
 }
 
+endurance::RouteEndurance *ElevationProfileView::endurance() const
+{
+    return m_endurance;
+}
+
+void ElevationProfileView::setEndurance(endurance::RouteEndurance *endurance)
+{
+    if (!followOwner(m_endurance, endurance, this, &endurance::RouteEndurance::estimateChanged, &ElevationProfileView::readMarkers))
+        return;
+    readMarkers();
+    emit enduranceChanged();
+}
+
+void ElevationProfileView::readMarkers()
+{
+    m_markers.clear();
+    // By distance, not position: a route that passes a place twice has it twice.
+    if (m_endurance && m_endurance->estimate()) {
+        const endurance::EnduranceEstimate &estimate = *m_endurance->estimate();
+        for (const endurance::BatteryChange &change : estimate.changes)
+            m_markers.push_back({change.at.distance, change.planned ? MarkerKind::PlannedChange : MarkerKind::UnplannedChange});
+        if (estimate.pointOfNoReturn)
+            m_markers.push_back({estimate.pointOfNoReturn->distance, MarkerKind::NoReturn});
+    }
+    emit markersChanged();
+}
+
 double ElevationProfileView::markerDistance(int index) const
 {
-    if (!m_model || index < 0 || index >= m_markers.size() || m_model->sampleCount() < 2)
+    if (!m_model || index < 0 || index >= markerCount() || m_model->sampleCount() < 2)
         return qQNaN();
-    const QVariantMap marker = m_markers[index].toMap();
-    // Metres along the flown path, where the marker says: a route that passes a place twice has
-    // it twice, and only the distance tells which.
-    bool known = false;
-    if (const double d = marker.value(QStringLiteral("distance")).toDouble(&known); known && std::isfinite(d))
-        return std::clamp(d, 0.0, m_model->length());
-    const mission::GeoPoint at{marker.value(QStringLiteral("latitude")).toDouble(), marker.value(QStringLiteral("longitude")).toDouble()};
-    // Closest sample by a local flat distance: samples are tens of metres apart, markers few.
-    const double cosLat = std::cos(at.latitude * M_PI / 180.0);
-    double best = std::numeric_limits<double>::infinity(), distance = qQNaN();
-    for (const auto &sample : m_model->profile().path.points) {
-        const double dy = sample.position.latitude - at.latitude;
-        const double dx = (sample.position.longitude - at.longitude) * cosLat;
-        if (const double d2 = dx * dx + dy * dy; d2 < best) {
-            best = d2;
-            distance = sample.distance;
-        }
-    }
-    return distance;
+    const double d = m_markers[size_t(index)].distance;
+    return std::isfinite(d) ? std::clamp(d, 0.0, m_model->length()) : qQNaN();
 }
 
 void ElevationProfileView::paint(QPainter *painter)
@@ -387,16 +400,19 @@ void ElevationProfileView::paint(QPainter *painter)
         }
     }
     // Markers: a line in their colour and their label, where the path passes closest to them.
-    for (int i = 0; i < m_markers.size(); ++i) {
+    for (int i = 0; i < markerCount(); ++i) {
         const double d = markerDistance(i);
         if (!std::isfinite(d))
             continue;
-        const QVariantMap marker = m_markers[i].toMap();
-        const QColor colour(marker.value(QStringLiteral("color")).toString());
+        // The map's colours for the same marks (EnduranceLayer).
+        const MarkerKind kind = m_markers[size_t(i)].kind;
+        const QColor colour = kind == MarkerKind::PlannedChange ? EnduranceLayer::plannedColour()
+                            : kind == MarkerKind::UnplannedChange ? EnduranceLayer::unplannedColour()
+                                                                  : EnduranceLayer::noReturnColour();
         const double x = xOf(d);
         painter->setPen(QPen(colour, 2));
         painter->drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
-        const QString label = marker.value(QStringLiteral("label")).toString();
+        const QString label = kind == MarkerKind::NoReturn ? tr("no return") : tr("battery change");
         const QFontMetricsF metrics(font);
         const double w = metrics.horizontalAdvance(label) + 6;
         const QRectF box(std::min(x + 3, plot.right() - w), plot.top() + 3 + 15 * (i % 2), w, metrics.height());

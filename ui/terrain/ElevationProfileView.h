@@ -11,10 +11,11 @@
 
 #include <vector>
 
-
+namespace sortie::endurance {
+class RouteEndurance;
+}
 
 namespace sortie::ui {
-
 
 // The elevation profile under the map: the ground along the route (filled), the route's altitude,
 // the clearance band (ground + safe distance), stretches flown too low in red, stretches without
@@ -24,6 +25,7 @@ namespace sortie::ui {
 class ElevationProfileView : public QQuickPaintedItem
 {
     Q_OBJECT
+    Q_MOC_INCLUDE("RouteEndurance.h")
     QML_ELEMENT
     Q_PROPERTY(sortie::ui::TerrainProfileModel *model READ model WRITE setModel NOTIFY modelChanged)
     Q_PROPERTY(QItemSelectionModel *selectionModel READ selectionModel WRITE setSelectionModel NOTIFY selectionModelChanged)
@@ -31,10 +33,10 @@ class ElevationProfileView : public QQuickPaintedItem
     Q_PROPERTY(int hoveredLeg READ hoveredLeg NOTIFY readoutChanged)
     Q_PROPERTY(QColor textColor MEMBER m_textColor NOTIFY colorsChanged)
     Q_PROPERTY(QColor backgroundColor MEMBER m_background NOTIFY colorsChanged)
-    // Places marked along the profile: [{distance, latitude, longitude, label, color}], each drawn
-    // as a vertical line at its distance along the flown path (metres), or without one where the
-    // path passes closest to its position (the route's battery changes, its point of no return).
-    Q_PROPERTY(QVariantList markers MEMBER m_markers NOTIFY markersChanged)
+    // The route's endurance: its battery changes and point of no return are marked along the
+    // profile, each a vertical line at its distance along the flown path, with its name.
+    Q_PROPERTY(sortie::endurance::RouteEndurance *endurance READ endurance WRITE setEndurance NOTIFY enduranceChanged)
+    Q_PROPERTY(int markerCount READ markerCount NOTIFY markersChanged)
     // The words painted above the plot, on the right: the lowest clearance (or the hovered point).
     // Read-only, so that what is painted can be read (a language change re-words it).
     Q_PROPERTY(QString headline READ headline NOTIFY headlineChanged)
@@ -45,6 +47,9 @@ public:
     TerrainProfileModel *model() const { return m_model; }
     void setModel(TerrainProfileModel *model);
     QItemSelectionModel *selectionModel() const { return m_selection; }
+    endurance::RouteEndurance *endurance() const;
+    void setEndurance(endurance::RouteEndurance *endurance);
+    int markerCount() const { return int(m_markers.size()); }
     void setSelectionModel(QItemSelectionModel *selection);
     QString readout() const { return m_readout; }
     int hoveredLeg() const { return m_hoveredLeg; }
@@ -71,6 +76,7 @@ signals:
     void selectionModelChanged();
     void readoutChanged();
     void colorsChanged();
+    void enduranceChanged();
     void markersChanged();
     void headlineChanged();
     // A click on a leg: its index (0-based) and the route row it starts at.
@@ -83,11 +89,20 @@ protected:
     void geometryChange(const QRectF &newGeometry, const QRectF &oldGeometry) override;
 
 private:
+    // A place marked along the profile, from the endurance estimate.
+    enum class MarkerKind { PlannedChange, UnplannedChange, NoReturn };
+    struct Marker
+    {
+        double distance;  // metres along the flown path
+        MarkerKind kind;
+    };
+    void readMarkers();
     void rescale();
     QRectF plotRect() const;
 
     QPointer<TerrainProfileModel> m_model;
-    QVariantList m_markers;
+    QPointer<endurance::RouteEndurance> m_endurance;
+    std::vector<Marker> m_markers;
     QPointer<QItemSelectionModel> m_selection;
     QString m_readout;
     int m_hoveredLeg = -1;

@@ -1,6 +1,8 @@
 #include "ZoneProfileOverlay.h"
 
+#include "Airspace.h"
 #include "ElevationProfileView.h"
+#include "FollowOwner.h"
 
 #include <QFontMetricsF>
 #include <QPainter>
@@ -42,49 +44,51 @@ void ZoneProfileOverlay::followModel()
     update();
 }
 
-void ZoneProfileOverlay::setCrossings(const QVariantList &crossings)
+airspace::Airspace *ZoneProfileOverlay::airspace() const
 {
-    if (crossings == m_crossings)
-        return;
-    m_crossings = crossings;
-    update();
-    emit crossingsChanged();
+    return m_airspace;
 }
 
-QPolygonF ZoneProfileOverlay::bandOf(const QVariantMap &c) const
+void ZoneProfileOverlay::setAirspace(airspace::Airspace *airspace)
+{
+    if (!followOwner(m_airspace, airspace, this, &airspace::Airspace::crossingsChanged, [this] { update(); }))
+        return;
+    update();
+    emit airspaceChanged();
+}
+
+QPolygonF ZoneProfileOverlay::bandOf(const airspace::ZoneCrossing &c) const
 {
     const TerrainProfileModel *model = m_view ? m_view->model() : nullptr;
     if (!model || model->sampleCount() < 2)
         return {};
     const terrain::TerrainProfile &profile = model->profile();
     const QRectF plot = m_view->plotArea();
-    const double from = c.value(QStringLiteral("from")).toDouble(), to = c.value(QStringLiteral("to")).toDouble();
+    const double from = c.from, to = c.to;
     const auto groundAt = [&](double d) {
         const int i = model->sampleAt(d);
         return i >= 0 && profile.ground[size_t(i)].hasValue() ? profile.ground[size_t(i)].ground : qQNaN();
     };
     // A limit's y at a distance; NaN where its reference's ground is unknown.
-    const auto yOf = [&](const QVariant &limit, double d, bool ceiling) {
-        if (limit.isNull() || !limit.isValid()) {
+    const auto yOf = [&](const std::optional<airspace::HeightLimit> &limit, double d, bool ceiling) {
+        if (!limit) {
             if (ceiling)
                 return plot.top();
             const double g = groundAt(d);
             return std::isfinite(g) ? m_view->yOf(g) : plot.bottom();
         }
-        const QVariantMap l = limit.toMap();
-        const double metres = l.value(QStringLiteral("metres")).toDouble();
-        const QString reference = l.value(QStringLiteral("reference")).toString();
-        const double base = reference == QLatin1String("AGL") ? groundAt(d)
-                          : reference == QLatin1String("HOME") ? (profile.homeGround.hasValue() ? profile.homeGround.ground : qQNaN())
-                                                               : 0.0;
-        return std::isfinite(base) ? std::clamp(m_view->yOf(base + metres), plot.top(), plot.bottom()) : qQNaN();
+        const double base = limit->reference == airspace::HeightReference::AboveTerrain ? groundAt(d)
+                          : limit->reference == airspace::HeightReference::AboveHome
+                              ? (profile.homeGround.hasValue() ? profile.homeGround.ground : qQNaN())
+                              : 0.0;
+        return std::isfinite(base) ? std::clamp(m_view->yOf(base + limit->metres), plot.top(), plot.bottom()) : qQNaN();
     };
     QPolygonF top, bottom;
     for (int i = 0; i <= kSteps; ++i) {
         const double d = from + (to - from) * i / kSteps;
         const double x = m_view->xOf(d);
-        const double yTop = yOf(c.value(QStringLiteral("ceiling")), d, true);
-        const double yBottom = yOf(c.value(QStringLiteral("floor")), d, false);
+        const double yTop = yOf(c.ceiling, d, true);
+        const double yBottom = yOf(c.floor, d, false);
         if (!std::isfinite(yTop) || !std::isfinite(yBottom))
             return {};  // a limit that cannot be placed is not drawn at a made-up height
         top << QPointF(x, yTop);
@@ -95,16 +99,16 @@ QPolygonF ZoneProfileOverlay::bandOf(const QVariantMap &c) const
 
 QRectF ZoneProfileOverlay::bandRect(int index) const
 {
-    if (index < 0 || index >= m_crossings.size())
+    if (!m_airspace || index < 0 || index >= m_airspace->crossingCount())
         return {};
-    return bandOf(m_crossings[index].toMap()).boundingRect();
+    return bandOf(m_airspace->crossings()[size_t(index)]).boundingRect();
 }
 
 void ZoneProfileOverlay::paint(QPainter *painter)
 {
     QPainter &p = *painter;
     m_bands = 0;
-    if (!m_view) {
+    if (!m_view || !m_airspace) {
         emit painted();
         return;
     }
@@ -115,13 +119,12 @@ void ZoneProfileOverlay::paint(QPainter *painter)
     p.setFont(font);
     const QFontMetricsF metrics(font);
     double lastLabelEnd = -1e9;
-    for (const QVariant &v : m_crossings) {
-        const QVariantMap c = v.toMap();
+    for (const airspace::ZoneCrossing &c : m_airspace->crossings()) {
         const QPolygonF band = bandOf(c);
         if (band.isEmpty())
             continue;
         ++m_bands;
-        const bool exclusion = c.value(QStringLiteral("kind")).toString() == QLatin1String("exclusion");
+        const bool exclusion = c.kind == airspace::ZoneKind::Exclusion;
         const QColor colour = exclusion ? QColor(0xd3, 0x2f, 0x2f) : QColor(0x2e, 0x7d, 0x32);
         QColor wash = colour;
         wash.setAlpha(40);
@@ -133,7 +136,7 @@ void ZoneProfileOverlay::paint(QPainter *painter)
         p.drawPolygon(band);
         // The name over the band, unless the band before took that place.
         const QRectF box = band.boundingRect();
-        const QString name = c.value(QStringLiteral("name")).toString();
+        const QString &name = c.name;
         const double w = metrics.horizontalAdvance(name);
         const QPointF at(box.left() + 2, box.top() + metrics.ascent() + 2);
         if (at.x() > lastLabelEnd + 4 && w + 4 <= std::max(box.width(), 60.0)) {

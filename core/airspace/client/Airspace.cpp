@@ -26,11 +26,11 @@ namespace {
 const QString kBufferKey = QStringLiteral("airspace/buffer");
 const QString kFilesKey = QStringLiteral("airspace/zoneFiles");
 
-// The flown path between two distances from the route's start along one leg, as coordinates: the
-// leg's own points between them and the two ends interpolated (pieces are short and straight).
-QVariantList stretchOf(const FlownPath &path, int legNumber, double from, double to)
+// The flown path between two distances from the route's start along one leg: the leg's own points
+// between them and the two ends interpolated (pieces are short and straight).
+std::vector<mission::GeoPoint> stretchOf(const FlownPath &path, int legNumber, double from, double to)
 {
-    QVariantList out;
+    std::vector<mission::GeoPoint> out;
     const auto leg = std::find_if(path.legs.begin(), path.legs.end(), [&](const FlownLeg &l) { return l.leg == legNumber; });
     if (leg == path.legs.end() || leg->points.empty())
         return out;
@@ -41,26 +41,17 @@ QVariantList stretchOf(const FlownPath &path, int legNumber, double from, double
             if (along <= p[i].along || i + 1 == p.size()) {
                 const double span = p[i].along - p[i - 1].along;
                 const double t = span > 0 ? std::clamp((along - p[i - 1].along) / span, 0.0, 1.0) : 0.0;
-                return QGeoCoordinate(p[i - 1].position.latitude + t * (p[i].position.latitude - p[i - 1].position.latitude),
-                                      p[i - 1].position.longitude + t * (p[i].position.longitude - p[i - 1].position.longitude));
+                return mission::GeoPoint{p[i - 1].position.latitude + t * (p[i].position.latitude - p[i - 1].position.latitude),
+                                         p[i - 1].position.longitude + t * (p[i].position.longitude - p[i - 1].position.longitude)};
             }
-        return QGeoCoordinate(p.front().position.latitude, p.front().position.longitude);
+        return p.front().position;
     };
-    out.append(QVariant::fromValue(at(from)));
+    out.push_back(at(from));
     for (const FlownPoint &p : leg->points)
         if (leg->start + p.along > from && leg->start + p.along < to)
-            out.append(QVariant::fromValue(QGeoCoordinate(p.position.latitude, p.position.longitude)));
-    out.append(QVariant::fromValue(at(to)));
+            out.push_back(p.position);
+    out.push_back(at(to));
     return out;
-}
-
-QVariant limitValue(const std::optional<HeightLimit> &limit)
-{
-    if (!limit)
-        return QVariant::fromValue(nullptr);
-    const char *reference = limit->reference == HeightReference::Amsl ? "AMSL"
-                          : limit->reference == HeightReference::AboveTerrain ? "AGL" : "HOME";
-    return QVariantMap{{QStringLiteral("metres"), limit->metres}, {QStringLiteral("reference"), QString::fromLatin1(reference)}};
 }
 } // namespace
 
@@ -379,25 +370,18 @@ void Airspace::rebuild()
 
 void Airspace::readCrossings()
 {
-    QVariantList list;
+    std::vector<ZoneCrossing> list;
     const std::shared_ptr<const ZoneSet> &zones = m_rule->lastZones();
     if (zones) {
         for (const AirspaceViolation &v : m_rule->lastReport().violations) {
             const Zone &z = zones->zones()[size_t(v.zone)];
-            list.append(QVariantMap{{QStringLiteral("from"), v.fromDistance},
-                                    {QStringLiteral("to"), v.toDistance},
-                                    {QStringLiteral("zone"), v.zone},
-                                    {QStringLiteral("leg"), v.leg},
-                                    {QStringLiteral("path"), stretchOf(m_rule->lastPath(), v.leg, v.fromDistance, v.toDistance)},
-                                    {QStringLiteral("name"), z.name},
-                                    {QStringLiteral("kind"), kindName(z.kind)},
-                                    {QStringLiteral("floor"), limitValue(z.floor)},
-                                    {QStringLiteral("ceiling"), limitValue(z.ceiling)}});
+            list.push_back({v.fromDistance, v.toDistance, v.leg, v.zone, z.name, z.kind, z.floor, z.ceiling,
+                            stretchOf(m_rule->lastPath(), v.leg, v.fromDistance, v.toDistance)});
         }
     }
     if (list == m_crossings)
         return;
-    m_crossings = list;
+    m_crossings = std::move(list);
     emit crossingsChanged();
 }
 

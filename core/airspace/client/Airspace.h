@@ -10,6 +10,7 @@
 #include <QVariant>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QSettings;
@@ -27,6 +28,20 @@ namespace sortie::airspace {
 class AirspaceRule;
 class ZoneEditor;
 class ZoneListModel;
+
+// Where the open route is inside a zone it must not be in, as the last check found it: the map
+// draws the stretch red (ZoneCrossingLayer), the terrain profile the zone's limits (ZoneProfileOverlay).
+struct ZoneCrossing
+{
+    double from = 0, to = 0;  // metres along the flown path
+    int leg = 0;
+    int zone = -1;            // the zone's row
+    QString name;
+    ZoneKind kind = ZoneKind::Exclusion;
+    std::optional<HeightLimit> floor, ceiling;  // none: the ground / unlimited
+    std::vector<mission::GeoPoint> path;        // the stretch along the flown path, both ends included
+    bool operator==(const ZoneCrossing &) const = default;
+};
 
 // The client's one store of zones, by where they come from: zones the operator drew (custom,
 // edited through `editor`), the server's (pushed in by setServerZones), zone files the operator
@@ -50,11 +65,8 @@ class Airspace : public QObject
     Q_PROPERTY(int selectedZone READ selectedZone WRITE setSelectedZone NOTIFY selectedZoneChanged)
     // The chosen zone when it is a custom one (its index in the editor's terms), else -1.
     Q_PROPERTY(int selectedCustom READ selectedCustom NOTIFY selectedZoneChanged)
-    // Where the route crosses zones, as the last check found: [{from, to (metres along the flown
-    // path), leg, path (the stretch's QGeoCoordinates), zone (row), name, kind, floor, ceiling
-    // ({metres, reference: "AMSL"|"AGL"|"HOME"} or null: ground / unlimited)}], by leg and distance.
-    // The map draws the stretches red, the terrain profile the limits.
-    Q_PROPERTY(QVariantList crossings READ crossings NOTIFY crossingsChanged)
+    // How many stretches of the route cross zones, as the last check found (crossings() has them).
+    Q_PROPERTY(int crossingCount READ crossingCount NOTIFY crossingsChanged)
 
 public:
     enum class Group { Custom, Server, File, RouteFence };
@@ -87,7 +99,9 @@ public:
     int selectedZone() const { return m_selected; }
     void setSelectedZone(int row);
     int selectedCustom() const { return m_selected >= 0 && m_selected < int(m_custom.size()) ? m_selected : -1; }
-    QVariantList crossings() const { return m_crossings; }
+    // Where the route crosses zones, by leg and distance.
+    const std::vector<ZoneCrossing> &crossings() const { return m_crossings; }
+    int crossingCount() const { return int(m_crossings.size()); }
 
     // A zone file: read, its zones added (a file loaded again replaces its zones), remembered.
     // false when it cannot be read at all; features left out are listed in `problems` either way.
@@ -161,7 +175,7 @@ private:
     QStringList m_problems;
     int m_selected = -1;
     QString m_selectedKey;  // the chosen zone when it is not a drawn one (keyOf): rows move, it does not
-    QVariantList m_crossings;
+    std::vector<ZoneCrossing> m_crossings;
 };
 
 } // namespace sortie::airspace

@@ -1,6 +1,5 @@
 #include "ProximityMonitor.h"
 
-#include "AlertChanges.h"
 #include "LocalTangentPlane.h"
 #include "TrafficPicture.h"
 #include "Vehicle.h"
@@ -69,7 +68,7 @@ QString distanceText(double metres)
 } // namespace
 
 ProximityMonitor::ProximityMonitor(client::VehicleFleet *fleet, traffic::TrafficPicture *traffic, int intervalMs, QObject *parent)
-    : QAbstractListModel(parent)
+    : AlertList(Subject::Proximity, parent)
     , m_fleet(fleet)
     , m_trafficPicture(traffic)
 {
@@ -150,53 +149,7 @@ std::vector<ProximityMonitor::Alert> ProximityMonitor::predict() const
 
 void ProximityMonitor::check()
 {
-    std::vector<Alert> now = predict();
-    if (now.empty() && m_alerts.empty())
-        return;  // a quiet sky: the banner's model is not reset (nothing to draw again)
-    const client::AlertChanges<Alert> changes(m_alerts, now);
-    const bool countChange = now.size() != m_alerts.size();
-    beginResetModel();
-    m_alerts = std::move(now);
-    endResetModel();
-    if (m_fleet)
-        for (const Alert &a : changes.raised)
-            m_fleet->commandLog()->alert(a.vehicle, a.text);
-    for (const Alert &a : changes.raised)
-        emit alertRaised(a);
-    for (const QString &key : changes.cleared)
-        emit alertCleared(key);
-    if (countChange || !changes.raised.empty())
-        emit countChanged();
-}
-
-int ProximityMonitor::rowCount(const QModelIndex &parent) const
-{
-    return parent.isValid() ? 0 : count();
-}
-
-QHash<int, QByteArray> ProximityMonitor::roleNames() const
-{
-    return {{KeyRole, "key"}, {VehicleRole, "vehicle"}, {OtherRole, "other"}, {TrafficRole, "traffic"}, {InSecondsRole, "inSeconds"},
-            {HorizontalRole, "horizontal"}, {VerticalRole, "vertical"}, {TextRole, "text"}};
-}
-
-QVariant ProximityMonitor::data(const QModelIndex &index, int role) const
-{
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid))
-        return {};
-    const Alert &a = m_alerts[size_t(index.row())];
-    switch (role) {
-    case KeyRole: return a.key;
-    case VehicleRole: return a.vehicle;
-    case OtherRole: return a.other;
-    case TrafficRole: return a.traffic;
-    case InSecondsRole: return a.inSeconds;
-    case HorizontalRole: return a.horizontal;
-    case VerticalRole: return a.vertical;
-    case TextRole:
-    case Qt::DisplayRole: return a.text;
-    default: return {};
-    }
+    publish(predict(), m_fleet ? m_fleet->commandLog() : nullptr);
 }
 
 } // namespace sortie::deconfliction

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "ClosestApproach.h"
+#include "FlightAlerts.h"
 
-#include <QAbstractListModel>
 #include <QPointer>
 #include <QTimer>
 
@@ -18,6 +18,16 @@ class TrafficPicture;
 
 namespace sortie::deconfliction {
 
+// Two of ours, or one of ours and an aircraft, predicted to lose separation.
+struct ProximityAlert : vehicle::FlightAlert
+{
+    // key: "EMU-101|EMU-102", "EMU-101|traffic:4CA2D6"; vehicle: the own vehicle it is logged under (the first)
+    QString other;          // the other vehicle's name, or the aircraft's call sign and address
+    bool traffic = false;
+    double horizontal = 0;  // metres across at the closest approach (inSeconds away)
+    double vertical = 0;    // metres in height then
+};
+
 // In-flight closest-point-of-approach alerts: every second, each pair of the fleet's airborne
 // vehicles, and each airborne vehicle against each aircraft of the traffic picture, is extrapolated
 // at its present velocity (closestApproach); a pair predicted to lose separation within the horizon
@@ -26,16 +36,14 @@ namespace sortie::deconfliction {
 // (SBS-1's) is compared with the vehicles' AMSL with the height threshold widened by
 // kBarometricMarginM: the day's pressure moves a pressure altitude by about 8 m per hPa.
 //
-// An alert is raised once, when first predicted: a row here (the fly view's banner), an entry in
-// the fleet's command log (which the flight recorder keeps as an "alert" event) and alertRaised.
-// It stays while predicted and goes when no longer predicted (alertCleared). Airborne: armed and
-// more than 1 m above home, with a fresh position, AMSL altitude and ground speed.
-class ProximityMonitor : public QAbstractListModel
+// An alert keeps the in-flight alert contract (vehicle::AlertModel): raised once, when first
+// predicted: a row here (the fly view's banner), an entry in the fleet's command log (which the
+// flight recorder keeps as an "alert" event) and alertRaised. It stays while predicted and goes when
+// no longer predicted (alertCleared). Airborne: armed and more than 1 m above home, with a fresh
+// position, AMSL altitude and ground speed.
+class ProximityMonitor : public vehicle::AlertList<ProximityAlert>
 {
     Q_OBJECT
-    Q_PROPERTY(int count READ count NOTIFY countChanged)
-    // The most urgent alert's text; empty without one.
-    Q_PROPERTY(QString headline READ headline NOTIFY countChanged)
 
 public:
     struct Thresholds
@@ -47,39 +55,15 @@ public:
     static Thresholds ownThresholds() { return {{20.0, 15.0}, 60.0}; }
     static Thresholds trafficThresholds() { return {{9260.0, 300.0}, 60.0}; }
 
-    struct Alert
-    {
-        QString key;          // "EMU-101|EMU-102", "EMU-101|traffic:4CA2D6"
-        QString vehicle;      // the own vehicle the alert is logged under (the first)
-        QString other;        // the other vehicle's name, or the aircraft's call sign and address
-        bool traffic = false;
-        double inSeconds = 0;   // to the closest approach
-        double horizontal = 0;  // metres across then
-        double vertical = 0;    // metres in height then
-        QString text;
-    };
-
-    enum Roles { KeyRole = Qt::UserRole + 1, VehicleRole, OtherRole, TrafficRole, InSecondsRole, HorizontalRole, VerticalRole, TextRole };
+    using Alert = ProximityAlert;
 
     // `fleet` (required) and `traffic` (may be nullptr) are not owned. Checks every `intervalMs`
     // (0: only when check() is called, as tests do).
     ProximityMonitor(client::VehicleFleet *fleet, traffic::TrafficPicture *traffic, int intervalMs = 1000, QObject *parent = nullptr);
 
-    int rowCount(const QModelIndex &parent = {}) const override;
-    QVariant data(const QModelIndex &index, int role) const override;
-    QHash<int, QByteArray> roleNames() const override;
-    int count() const { return int(m_alerts.size()); }
-    QString headline() const { return m_alerts.empty() ? QString() : m_alerts.front().text; }
-    const std::vector<Alert> &alerts() const { return m_alerts; }
-
     void setOwnThresholds(const Thresholds &t) { m_own = t; }
     void setTrafficThresholds(const Thresholds &t) { m_traffic = t; }
     void check();
-
-signals:
-    void countChanged();
-    void alertRaised(const sortie::deconfliction::ProximityMonitor::Alert &alert);
-    void alertCleared(const QString &key);
 
 private:
     std::vector<Alert> predict() const;
@@ -88,7 +72,6 @@ private:
     QPointer<traffic::TrafficPicture> m_trafficPicture;
     Thresholds m_own = ownThresholds();
     Thresholds m_traffic = trafficThresholds();
-    std::vector<Alert> m_alerts;  // most urgent first
     QTimer m_timer;
 };
 

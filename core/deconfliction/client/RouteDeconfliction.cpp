@@ -10,48 +10,55 @@ namespace sortie::deconfliction {
 
 RouteDeconfliction::RouteDeconfliction(client::FleetRoutes *routes, client::RoutePreparation *preparation,
                                        mission::RouteAnalyzer *analyzer, QObject *parent)
-    : QObject(parent)
+    : QAbstractListModel(parent)
     , m_rule(std::make_unique<FleetConflictRule>(routes, preparation))
 {
     Q_ASSERT(routes && analyzer);
     analyzer->addRule(m_rule.get());
-    connect(m_rule.get(), &FleetConflictRule::conflictsChanged, this, &RouteDeconfliction::conflictsChanged);
+    connect(m_rule.get(), &FleetConflictRule::conflictsChanged, this, &RouteDeconfliction::readConflicts);
+    readConflicts();
 }
 
 RouteDeconfliction::~RouteDeconfliction() = default;
 
-int RouteDeconfliction::count() const
+void RouteDeconfliction::readConflicts()
 {
-    return int(m_rule->conflicts().size());
+    beginResetModel();
+    m_ordered = m_rule->conflicts();
+    std::stable_sort(m_ordered.begin(), m_ordered.end(),
+                     [](const FleetConflict &a, const FleetConflict &b) { return a.conflict.time < b.conflict.time; });
+    endResetModel();
+    emit conflictsChanged();
 }
 
-QVariantList RouteDeconfliction::conflicts() const
+int RouteDeconfliction::rowCount(const QModelIndex &parent) const
 {
-    std::vector<const FleetConflict *> ordered;
-    for (const FleetConflict &c : m_rule->conflicts())
-        ordered.push_back(&c);
-    std::stable_sort(ordered.begin(), ordered.end(), [](const FleetConflict *a, const FleetConflict *b) { return a->conflict.time < b->conflict.time; });
-    QVariantList list;
-    for (const FleetConflict *c : ordered) {
-        const Conflict &k = c->conflict;
-        list.append(QVariantMap{
-            {QStringLiteral("text"), c->message},
-            {QStringLiteral("time"), k.time},
-            {QStringLiteral("horizontal"), k.horizontal},
-            {QStringLiteral("vertical"), k.vertical},
-            {QStringLiteral("flying"), c->otherFlying},
-            {QStringLiteral("leg"), k.firstAt.leg},
-            {QStringLiteral("otherVehicle"), c->otherName},
-            {QStringLiteral("otherRoute"), c->otherRoute},
-            {QStringLiteral("latitude"), k.firstAt.position.latitude},
-            {QStringLiteral("longitude"), k.firstAt.position.longitude},
-            {QStringLiteral("altitude"), k.firstAt.altitude},
-            {QStringLiteral("otherLatitude"), k.secondAt.position.latitude},
-            {QStringLiteral("otherLongitude"), k.secondAt.position.longitude},
-            {QStringLiteral("otherAltitude"), k.secondAt.altitude},
-        });
+    return parent.isValid() ? 0 : count();
+}
+
+QHash<int, QByteArray> RouteDeconfliction::roleNames() const
+{
+    return {{TextRole, "text"}, {TimeRole, "time"}, {HorizontalRole, "horizontal"}, {VerticalRole, "vertical"},
+            {FlyingRole, "flying"}, {LegRole, "leg"}, {OtherVehicleRole, "otherVehicle"}, {OtherRouteRole, "otherRoute"}};
+}
+
+QVariant RouteDeconfliction::data(const QModelIndex &index, int role) const
+{
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid))
+        return {};
+    const FleetConflict &c = m_ordered[size_t(index.row())];
+    switch (role) {
+    case TextRole:
+    case Qt::DisplayRole: return c.message;
+    case TimeRole: return c.conflict.time;
+    case HorizontalRole: return c.conflict.horizontal;
+    case VerticalRole: return c.conflict.vertical;
+    case FlyingRole: return c.otherFlying;
+    case LegRole: return c.conflict.firstAt.leg;
+    case OtherVehicleRole: return c.otherName;
+    case OtherRouteRole: return c.otherRoute;
+    default: return {};
     }
-    return list;
 }
 
 double RouteDeconfliction::horizontalSeparation() const

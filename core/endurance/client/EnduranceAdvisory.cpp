@@ -52,7 +52,7 @@ mission::Route remainingRoute(const std::vector<vehicle::MissionItem> &items, in
 } // namespace
 
 EnduranceAdvisory::EnduranceAdvisory(QObject *parent)
-    : QObject(parent)
+    : AlertList(Subject::Battery, parent)
 {
     m_throttle.setSingleShot(true);
     m_throttle.setInterval(m_interval);
@@ -178,6 +178,7 @@ void EnduranceAdvisory::refresh()
     if (m_interval > 0)
         m_throttle.start();
     const vehicle::Vehicle *v = m_vehicle;
+    bool news = false;
     const std::optional<EnergyProfile> profile = m_endurance ? m_endurance->profile() : std::nullopt;
     if (!v) {
         clear(tr("No vehicle chosen"));
@@ -222,22 +223,37 @@ void EnduranceAdvisory::refresh()
                            : Level::Red;
         if (!m_home)
             m_problem = tr("The vehicle cannot make headway home against the wind");
-        if (m_level == Level::Normal)
+        if (m_level == Level::Normal) {
             m_logged = Level::Normal;
-        else if (m_level > m_logged && v->armed())
-            logEscalation();
+        } else if (m_level > m_logged && v->armed()) {
+            m_logged = m_level;
+            news = true;
+        }
     }
+    publishAdvice(news);
     emit changed();
+    if (news)
+        emit escalated(m_level);
 }
 
-void EnduranceAdvisory::logEscalation()
+void EnduranceAdvisory::publishAdvice(bool news)
 {
-    m_logged = m_level;
-    const QString line = advice();
-    qCWarning(lcAdvisory).noquote() << m_vehicle->name() << line;
-    if (vehicle::CommandLog *log = m_vehicle->commandLog())
-        log->finish(log->begin(m_vehicle->name(), line), vehicle::CommandResult::success());
-    emit escalated(m_level);
+    std::vector<vehicle::FlightAlert> now;
+    if (m_vehicle && (m_level == Level::Amber || m_level == Level::Red)) {
+        vehicle::FlightAlert alert;
+        // A new level, or the same one now flying, is a new alert; whether it is news the log is
+        // told of is the escalation rule's (a fall from Red to Amber is not).
+        alert.key = QStringLiteral("%1|battery|%2|%3")
+                        .arg(m_vehicle->id(), m_level == Level::Red ? QStringLiteral("red") : QStringLiteral("amber"),
+                             m_vehicle->armed() ? QStringLiteral("armed") : QStringLiteral("disarmed"));
+        alert.vehicle = m_vehicle->name();
+        alert.text = advice();
+        alert.severity = m_level == Level::Red ? vehicle::FlightAlert::Severity::Danger : vehicle::FlightAlert::Severity::Warning;
+        now.push_back(std::move(alert));
+    }
+    if (news)
+        qCWarning(lcAdvisory).noquote() << m_vehicle->name() << advice();
+    publish(std::move(now), m_vehicle ? m_vehicle->commandLog() : nullptr, [news](const vehicle::FlightAlert &) { return news; });
 }
 
 QString EnduranceAdvisory::summary() const

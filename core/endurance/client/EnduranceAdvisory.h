@@ -1,10 +1,10 @@
 #pragma once
 
 #include "EnduranceEstimate.h"
+#include "FlightAlerts.h"
 #include "RouteEndurance.h"  // a property's type: moc needs it whole
 
 #include <QElapsedTimer>
-#include <QObject>
 #include <QPointer>
 #include <QTimer>
 #include <QVariant>
@@ -25,11 +25,13 @@ namespace sortie::endurance {
 //                   position and the items from missionCurrent on, priced by estimateEndurance)
 // and a level: Red when margin ≤ 0, Amber when margin ≤ amberBand × batteryWh, Normal above, Unknown
 // when an input is missing (no profile, no battery figure, no home, no position): missing, never 0.
-// Each escalation while armed (Normal → Amber, → Red) writes one line to the vehicle's command log;
-// the level only falls back once the margin has cleared its threshold by `hysteresis` × batteryWh,
-// so a margin wobbling on a threshold neither flaps nor repeats the line. Recomputed at most every
-// `interval` ms however fast telemetry comes (docs/endurance.md, "In flight").
-class EnduranceAdvisory : public QObject
+// Amber and Red are an in-flight alert (the contract of vehicle::AlertModel, as the zone and
+// proximity alerts): one row with the advice, the fly view's banner shows it. Each escalation while
+// armed (Normal → Amber, → Red) writes one alert line to the vehicle's command log; the level only
+// falls back once the margin has cleared its threshold by `hysteresis` × batteryWh, so a margin
+// wobbling on a threshold neither flaps nor repeats the line. Recomputed at most every `interval` ms
+// however fast telemetry comes (docs/endurance.md, "In flight").
+class EnduranceAdvisory : public vehicle::AlertList<vehicle::FlightAlert>
 {
     Q_OBJECT
     Q_PROPERTY(QObject *vehicle READ vehicleObject WRITE setVehicle NOTIFY vehicleChanged)
@@ -99,7 +101,8 @@ private:
     static QVariant optional(const std::optional<double> &v) { return v ? QVariant(*v) : QVariant(); }
     void schedule();
     void clear(const QString &problem);
-    void logEscalation();
+    // The banner's row for the level now; `news`: an escalation the command log is told of.
+    void publishAdvice(bool news);
 
     QPointer<vehicle::Vehicle> m_vehicle;
     QPointer<RouteEndurance> m_endurance;

@@ -17,16 +17,6 @@ namespace sortie::endurance {
 
 namespace {
 const QString kProfileKey = QStringLiteral("endurance/profileFile");
-
-QVariantMap placeMap(const RoutePlace &at)
-{
-    return {{QStringLiteral("latitude"), at.position.latitude},
-            {QStringLiteral("longitude"), at.position.longitude},
-            {QStringLiteral("altitude"), at.altitude},
-            {QStringLiteral("leg"), at.leg},
-            {QStringLiteral("distance"), at.distance},
-            {QStringLiteral("waypoint"), at.segment >= 0 ? QVariant(at.segment + 1) : QVariant::fromValue(nullptr)}};
-}
 } // namespace
 
 RouteEndurance::RouteEndurance(QSettings *settings, mission::RouteAnalyzer *analyzer, const mission::RouteModel *model, QObject *parent)
@@ -149,25 +139,14 @@ QVariant RouteEndurance::batteriesNeeded() const
     return m_estimate ? QVariant(m_estimate->batteriesNeeded) : QVariant();
 }
 
-QVariantList RouteEndurance::changePoints() const
+QVariant RouteEndurance::noReturnDistance() const
 {
-    QVariantList list;
-    if (!m_estimate)
-        return list;
-    for (const BatteryChange &c : m_estimate->changes) {
-        QVariantMap m = placeMap(c.at);
-        m.insert(QStringLiteral("planned"), c.planned);
-        m.insert(QStringLiteral("batteryLeft"), c.batteryLeft);
-        list.push_back(m);
-    }
-    return list;
+    return m_estimate && m_estimate->pointOfNoReturn ? QVariant(m_estimate->pointOfNoReturn->distance) : QVariant();
 }
 
-QVariant RouteEndurance::pointOfNoReturn() const
+QVariant RouteEndurance::noReturnLeg() const
 {
-    if (!m_estimate || !m_estimate->pointOfNoReturn)
-        return QVariant::fromValue(nullptr);
-    return placeMap(*m_estimate->pointOfNoReturn);
+    return m_estimate && m_estimate->pointOfNoReturn ? QVariant(m_estimate->pointOfNoReturn->leg) : QVariant();
 }
 
 void RouteEndurance::setConditions(const FlightConditions &conditions)

@@ -43,10 +43,12 @@ class RouteEndurance : public QObject
     Q_PROPERTY(QVariant energyWh READ energyWh NOTIFY estimateChanged)
     Q_PROPERTY(QVariant batteryAtEnd READ batteryAtEnd NOTIFY estimateChanged)  // fraction of one battery, < 0: more needed
     Q_PROPERTY(QVariant batteriesNeeded READ batteriesNeeded NOTIFY estimateChanged)
-    // [{latitude, longitude, altitude, leg, distance, waypoint (1-based row or null), planned, batteryLeft}]
-    Q_PROPERTY(QVariantList changePoints READ changePoints NOTIFY estimateChanged)
-    // {latitude, longitude, altitude, leg, distance}, or null when there is none or home is unknown.
-    Q_PROPERTY(QVariant pointOfNoReturn READ pointOfNoReturn NOTIFY estimateChanged)
+    // The battery changes the route needs (estimate()->changes has where and whether planned).
+    Q_PROPERTY(int changeCount READ changeCount NOTIFY estimateChanged)
+    // The point of no return (estimate()->pointOfNoReturn): metres along the flown path and its
+    // leg; undefined when there is none or home is unknown.
+    Q_PROPERTY(QVariant noReturnDistance READ noReturnDistance NOTIFY estimateChanged)
+    Q_PROPERTY(QVariant noReturnLeg READ noReturnLeg NOTIFY estimateChanged)
     Q_PROPERTY(bool homeKnown READ homeKnown NOTIFY estimateChanged)
     Q_PROPERTY(double windSpeed READ windSpeed WRITE setWindSpeed NOTIFY conditionsChanged)    // m/s
     Q_PROPERTY(double windFrom READ windFrom WRITE setWindFrom NOTIFY conditionsChanged)      // degrees it blows from
@@ -82,8 +84,9 @@ public:
     QVariant energyWh() const;
     QVariant batteryAtEnd() const;
     QVariant batteriesNeeded() const;
-    QVariantList changePoints() const;
-    QVariant pointOfNoReturn() const;
+    int changeCount() const { return m_estimate ? int(m_estimate->changes.size()) : 0; }
+    QVariant noReturnDistance() const;
+    QVariant noReturnLeg() const;
     bool homeKnown() const { return m_estimate && m_estimate->homeKnown; }
     double windSpeed() const { return m_conditions.wind.speed; }
     double windFrom() const { return m_conditions.wind.fromDeg; }

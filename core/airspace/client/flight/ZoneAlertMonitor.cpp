@@ -1,6 +1,5 @@
 #include "ZoneAlertMonitor.h"
 
-#include "AlertChanges.h"
 #include "ElevationService.h"
 #include "PlaneZone.h"
 #include "Vehicle.h"
@@ -48,7 +47,7 @@ QString whenText(double seconds)
 } // namespace
 
 ZoneAlertMonitor::ZoneAlertMonitor(client::VehicleFleet *fleet, terrain::ElevationService *ground, int intervalMs, QObject *parent)
-    : QAbstractListModel(parent)
+    : AlertList(Subject::Airspace, parent)
     , m_fleet(fleet)
     , m_ground(ground)
 {
@@ -95,7 +94,7 @@ void ZoneAlertMonitor::predictAgainst(const Mover &m, const ZoneSet &zones, cons
     const FlownPoint a = point(0), b = point(kClearSeconds);
     const auto keyOf = [&](const QString &zone, const char *what) { return QStringLiteral("%1|%2|%3|%4").arg(m.id, set, zone, QLatin1String(what)); };
     const auto within = [&](const QString &key, double seconds) {
-        const bool raised = std::any_of(m_alerts.begin(), m_alerts.end(), [&](const Alert &x) { return x.key == key; });
+        const bool raised = std::any_of(alerts().begin(), alerts().end(), [&](const Alert &x) { return x.key == key; });
         return seconds <= (raised ? kClearSeconds : kHorizonSeconds);
     };
 
@@ -201,49 +200,7 @@ std::vector<ZoneAlertMonitor::Alert> ZoneAlertMonitor::predict() const
 
 void ZoneAlertMonitor::check()
 {
-    std::vector<Alert> now = predict();
-    if (now.empty() && m_alerts.empty())
-        return;  // a quiet sky: the banner's model is not reset (nothing to draw again)
-    const client::AlertChanges<Alert> changes(m_alerts, now);
-    const bool countChange = now.size() != m_alerts.size();
-    beginResetModel();
-    m_alerts = std::move(now);
-    endResetModel();
-    if (m_fleet)
-        for (const Alert &a : changes.raised)
-            m_fleet->commandLog()->alert(a.vehicle, a.text);
-    for (const Alert &a : changes.raised)
-        emit alertRaised(a);
-    for (const QString &key : changes.cleared)
-        emit alertCleared(key);
-    if (countChange || !changes.raised.empty())
-        emit countChanged();
-}
-
-int ZoneAlertMonitor::rowCount(const QModelIndex &parent) const
-{
-    return parent.isValid() ? 0 : count();
-}
-
-QHash<int, QByteArray> ZoneAlertMonitor::roleNames() const
-{
-    return {{KeyRole, "key"}, {VehicleRole, "vehicle"}, {ZoneRole, "zone"}, {InSecondsRole, "inSeconds"}, {TextRole, "text"}};
-}
-
-QVariant ZoneAlertMonitor::data(const QModelIndex &index, int role) const
-{
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid))
-        return {};
-    const Alert &a = m_alerts[size_t(index.row())];
-    switch (role) {
-    case KeyRole: return a.key;
-    case VehicleRole: return a.vehicle;
-    case ZoneRole: return a.zone;
-    case InSecondsRole: return a.inSeconds;
-    case TextRole:
-    case Qt::DisplayRole: return a.text;
-    default: return {};
-    }
+    publish(predict(), m_fleet ? m_fleet->commandLog() : nullptr);
 }
 
 } // namespace sortie::airspace

@@ -1,8 +1,8 @@
 #pragma once
 
 #include "AirspaceCheck.h"
+#include "FlightAlerts.h"
 
-#include <QAbstractListModel>
 #include <QHash>
 #include <QPointer>
 #include <QTimer>
@@ -19,6 +19,16 @@ class ElevationService;
 
 namespace sortie::airspace {
 
+// A vehicle predicted to enter an exclusion zone or leave the permitted area.
+struct ZoneAlert : vehicle::FlightAlert
+{
+    enum class Kind { EntersExclusion, LeavesInclusion };
+    // key: "<vehicle id>|<set>|<zone name>|enter" / "...|leave"
+    QString zone;
+    Kind kind = Kind::EntersExclusion;
+    bool heightUnknown = false;
+};
+
 // In-flight zone alerts: every second each airborne vehicle of the fleet is extrapolated in a
 // straight line at its present velocity (ground speed along its course, vertical speed) and the
 // line is checked in 3D against the zones (PlaneZone: the zone's shape between its floor and
@@ -33,30 +43,19 @@ namespace sortie::airspace {
 // vehicle's own fence (setVehicleZones: what was uploaded with its mission). Each set's inclusion
 // zones are one permitted area.
 //
-// Like ProximityMonitor (the fly view shows both in one banner): a row here per alert, one entry in
-// the fleet's command log per rise (CommandLog::alert), alertRaised / alertCleared.
-class ZoneAlertMonitor : public QAbstractListModel
+// The alerts keep the in-flight alert contract (vehicle::AlertModel, as ProximityMonitor's and the
+// battery's): a row here per alert, one entry in the fleet's command log per rise (CommandLog::alert),
+// alertRaised / alertCleared.
+class ZoneAlertMonitor : public vehicle::AlertList<ZoneAlert>
 {
     Q_OBJECT
-    Q_PROPERTY(int count READ count NOTIFY countChanged)
-    Q_PROPERTY(QString headline READ headline NOTIFY countChanged)
 
 public:
     static constexpr double kHorizonSeconds = 30.0;
     static constexpr double kClearSeconds = 36.0;
 
-    enum class Kind { EntersExclusion, LeavesInclusion };
-    struct Alert
-    {
-        QString key;     // "<vehicle id>|<set>|<zone name>|enter" / "...|leave"
-        QString vehicle; // the vehicle's name, as the command log has it
-        QString zone;
-        Kind kind = Kind::EntersExclusion;
-        double inSeconds = 0; // 0: it is there now
-        bool heightUnknown = false;
-        QString text;
-    };
-    enum Roles { KeyRole = Qt::UserRole + 1, VehicleRole, ZoneRole, InSecondsRole, TextRole };
+    using Alert = ZoneAlert;
+    using Kind = ZoneAlert::Kind;
 
     // `fleet` (required) and `ground` (may be nullptr) are not owned. Checks every `intervalMs`
     // (0: only when check() is called, as tests do).
@@ -69,19 +68,7 @@ public:
     // One vehicle's own fence (by Vehicle::id), e.g. the route fence uploaded with its mission.
     void setVehicleZones(const QString &vehicleId, std::vector<Zone> zones);
 
-    int rowCount(const QModelIndex &parent = {}) const override;
-    QVariant data(const QModelIndex &index, int role) const override;
-    QHash<int, QByteArray> roleNames() const override;
-    int count() const { return int(m_alerts.size()); }
-    QString headline() const { return m_alerts.empty() ? QString() : m_alerts.front().text; }
-    const std::vector<Alert> &alerts() const { return m_alerts; }
-
     void check();
-
-signals:
-    void countChanged();
-    void alertRaised(const sortie::airspace::ZoneAlertMonitor::Alert &alert);
-    void alertCleared(const QString &key);
 
 private:
     struct Mover;
@@ -92,7 +79,6 @@ private:
     QPointer<terrain::ElevationService> m_ground;
     std::shared_ptr<const ZoneSet> m_zones;
     QHash<QString, std::shared_ptr<const ZoneSet>> m_vehicleZones;
-    std::vector<Alert> m_alerts; // soonest first
     QTimer m_timer;
 };
 
