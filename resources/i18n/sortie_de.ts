@@ -487,13 +487,6 @@
     </message>
 </context>
 <context>
-    <name>ClientGraph</name>
-    <message>
-        <source>route fence</source>
-        <translation>Geofence der Route</translation>
-    </message>
-</context>
-<context>
     <name>CommandBar</name>
     <message>
         <source>Are you sure?</source>
@@ -4098,6 +4091,13 @@ Ereignisse: %1
     <message>
         <source>saving</source>
         <translation>Speichern</translation>
+    </message>
+</context>
+<context>
+    <name>UploadedFenceAlerts</name>
+    <message>
+        <source>route fence</source>
+        <translation>Geofence der Route</translation>
     </message>
 </context>
 <context>
