@@ -2,27 +2,24 @@
 // Sortie.Ui main window.
 #include "AppSettings.h"
 #include "ClientGraph.h"
-#include "ElevationSetup.h"
 #include "ConnectionController.h"
 #include "DemoScene.h"
 #include "DemoServer.h"
 #include "FrameLog.h"
 #include "HciSession.h"
 #include "LaunchOptions.h"
+#include "MainWindow.h"
 #include "PasswordVault.h"
 #include "SbsFeed.h"
 #include "SceneGraphChoice.h"
-#include "SortieUi.h"
 #include "StartupProbe.h"
 #include "Traffic.h"
-#include "Translations.h"
 #include "VehicleFleet.h"
 #include "WindowGeometry.h"
 
 #include <QElapsedTimer>
 #include <QGuiApplication>
 #include <QIcon>
-#include <QQmlApplicationEngine>
 #include <QQuickStyle>
 #include <QQuickWindow>
 #include <QSettings>
@@ -88,18 +85,6 @@ int main(int argc, char *argv[])
     sortie::client::ClientGraph graph(&storage, options.graphOptions());
     if (!graph.recorderError().isEmpty())
         std::fprintf(stderr, "sortie: %s\n", qPrintable(graph.recorderError())); // flying goes on without a log
-    // The terrain follows the DEM chosen in the map source dialog (the setting the graph read at start;
-    // --dem wins until the operator picks another).
-    QObject::connect(&settings, &sortie::ui::AppSettings::demPathChanged, &settings,
-                     [&graph, &settings, &storage, chosen = settings.demPath()]() mutable {
-        if (settings.demPath() == chosen)
-            return;
-        chosen = settings.demPath();
-        graph.terrain().configure(chosen, storage.value(QStringLiteral("terrain/sourceOrder")).toStringList());
-    });
-    // Only a password the server accepted is remembered.
-    QObject::connect(&graph.connection(), &sortie::client::ConnectionController::ready, &settings,
-                     &sortie::ui::AppSettings::loginSucceeded);
     sortie::app::DemoServer demo;
     if (options.demo) {
         QString error;
@@ -112,14 +97,10 @@ int main(int argc, char *argv[])
         }
     }
 
-    QQmlApplicationEngine engine;
-    sortie::ui::addImportPaths(engine);
-    sortie::ui::Translations translations(settings, engine); // the settings' language, before the first word is shown
-    engine.setInitialProperties(sortie::ui::mainWindowProperties(graph, settings, translations));
-    engine.load(QUrl(QString::fromLatin1(sortie::ui::kMainQml)));
-    if (engine.rootObjects().isEmpty())
-        return 1;
-    auto *window = qobject_cast<QQuickWindow *>(engine.rootObjects().constFirst());
+    // The window, handed the graph once, with the settings the client follows wired as every UI
+    // fixture wires them; the settings' language before the first word is shown.
+    sortie::ui::MainWindow mainWindow(graph, settings);
+    QQuickWindow *window = mainWindow.window();
     if (!window)
         return 1;
     sortie::app::restoreWindowGeometry(*window, settings);

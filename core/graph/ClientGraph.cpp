@@ -2,6 +2,7 @@
 
 #include "Airspace.h"
 #include "AirspaceRule.h"
+#include "AirspaceToVehicles.h"
 #include "AutosaveRecovery.h"
 #include "ComparisonController.h"
 #include "ConnectionController.h"
@@ -28,6 +29,7 @@
 #include "SbsFeed.h"
 #include "ServerHistoryRequest.h"
 #include "Traffic.h"
+#include "UploadedFenceAlerts.h"
 #include "OfflineMaps.h"
 #include "VciFenceBuilder.h"
 #include "VehicleFleet.h"
@@ -39,7 +41,6 @@
 #include <QSettings>
 
 #include <algorithm>
-#include <QCoreApplication>
 
 Q_LOGGING_CATEGORY(lcClientGraph, "sortie.client.graph")
 
@@ -57,20 +58,20 @@ QString yesNo(bool on, const char *yes, const char *no)
 
 } // namespace
 
-ClientGraph::ClientGraph(QSettings *storage, Options options)
-    : m_session(std::make_unique<hci::HciSession>())
+ClientGraph::ClientGraph(QSettings *storage, Options options, QObject *parent)
+    : QObject(parent)
+    , m_session(std::make_unique<hci::HciSession>())
     , m_hciClient(std::make_unique<hci::HciClient>(m_session.get()))
     , m_connection(std::make_unique<ConnectionController>(m_session.get()))
     , m_missions(std::make_unique<MissionController>(m_hciClient.get()))
     , m_elevation(std::make_unique<terrain::ElevationSetup>(m_session.get()))
+    , m_storage(storage)
 {
     Q_ASSERT(storage);
     // Terrain: a local DEM (the option, else the setting; any raster GDAL reads) and the server, in
     // the order the settings give.
     m_elevation->setDemOpener(raster::openDem);
-    m_elevation->configure(options.demFolder.isEmpty() ? storage->value(QStringLiteral("terrain/demFolder")).toString()
-                                                       : options.demFolder,
-                           storage->value(QStringLiteral("terrain/sourceOrder")).toStringList());
+    useDem(options.demFolder.isEmpty() ? storage->value(QStringLiteral("terrain/demFolder")).toString() : options.demFolder);
     RouteDocument *document = m_missions->document();
     document->analyzer()->addRule(m_elevation->rule());
     terrain::ElevationService *ground = m_elevation->service();
@@ -101,32 +102,14 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
         m_proximity = std::make_unique<deconfliction::ProximityMonitor>(m_fleet.get(), m_traffic->picture());
     // Zone alerts beside them, in the same banner and log: the zones the operator sees and, per
     // vehicle, the route fence that went up with its mission.
+    MissionUploader *uploader = m_missions->preparation()->uploader();
     if (m_fleet) {
         m_zoneAlerts = std::make_unique<airspace::ZoneAlertMonitor>(m_fleet.get(), ground);
-        MissionUploader *uploader = m_missions->preparation()->uploader();
-        QObject::connect(uploader, &MissionUploader::uploaded, m_zoneAlerts.get(), [this, uploader](vehicle::Vehicle *v) {
-            const mission::Route &route = uploader->route();
-            m_zoneAlerts->setVehicleZones(v->id(), airspace::zonesOfFence(route.fence, QCoreApplication::translate("ClientGraph", "route fence"),
-                                                                          airspace::ZoneSource::VehicleFence, route.settings.name));
-        });
+        m_uploadedFenceAlerts = std::make_unique<airspace::UploadedFenceAlerts>(uploader, m_zoneAlerts.get());
     }
-
     // One airspace for the check, the alerts and the fence: what the operator sees is what a
-    // vehicle is warned of and carries (its route's own fence goes up with the route itself).
-    const auto shareZones = [this] {
-        if (m_zoneAlerts)
-            m_zoneAlerts->setZones(m_airspace->zoneSet());
-        std::vector<airspace::Zone> beyondRoute;
-        for (int row = 0; row < m_airspace->count(); ++row)
-            if (m_airspace->groupOf(row) != airspace::Airspace::Group::RouteFence)
-                beyondRoute.push_back(m_airspace->zoneAt(row));
-        MissionUploader *uploader = m_missions->preparation()->uploader();
-        vehicle::FenceSettings fence = uploader->fenceSettings();
-        fence.zones = std::make_shared<const airspace::FenceZoneSet>(std::move(beyondRoute));
-        uploader->setFenceSettings(std::move(fence));
-    };
-    shareZones();
-    QObject::connect(m_airspace.get(), &airspace::Airspace::changed, m_airspace.get(), shareZones);
+    // vehicle is warned of and carries.
+    m_airspaceToVehicles = std::make_unique<airspace::AirspaceToVehicles>(m_airspace.get(), uploader, m_zoneAlerts.get());
     // The server's zones where the maps look (aerodromes and custom ones), into the same store.
     m_serverZones = std::make_unique<airspace::ServerZones>(m_hciClient.get());
     QObject::connect(m_airspace.get(), &airspace::Airspace::areaChanged, m_serverZones.get(),
@@ -170,6 +153,8 @@ ClientGraph::ClientGraph(QSettings *storage, Options options)
 // Torn down in the reverse order of the wiring: users before what they use.
 ClientGraph::~ClientGraph()
 {
+    m_airspaceToVehicles.reset();
+    m_uploadedFenceAlerts.reset();
     m_serverHistory.reset();
     m_comparison.reset();
     m_replay.reset();
@@ -201,6 +186,16 @@ terrain::ElevationService *ClientGraph::elevation()
     return m_elevation->service();
 }
 
+void ClientGraph::useDem(const QString &path)
+{
+    m_elevation->configure(path, m_storage->value(QStringLiteral("terrain/sourceOrder")).toStringList());
+}
+
+terrain::ElevationService *ClientGraph::elevationForQml() const
+{
+    return m_elevation->service();
+}
+
 // i18n: not text below (the wiring is a diagnostic for the log and the tests, not for the operator)
 QStringList ClientGraph::wiring() const
 {
@@ -224,7 +219,9 @@ QStringList ClientGraph::wiring() const
           << QStringLiteral("fleet routes: %1").arg(yesNo(m_fleetRoutes != nullptr, "the open route's vehicle and every upload", "none"))
           << QStringLiteral("route deconfliction: %1").arg(yesNo(m_deconfliction && std::any_of(rules.begin(), rules.end(), [&](const auto &r) { return r == m_deconfliction->rule(); }), "against the fleet's routes", "none"))
           << QStringLiteral("proximity alerts: %1").arg(yesNo(m_proximity != nullptr, "the fleet and the traffic", "none"))
-          << QStringLiteral("zone alerts: %1").arg(yesNo(m_zoneAlerts != nullptr, "the fleet against the airspace and each uploaded fence", "none"))
+          << QStringLiteral("zone alerts: %1").arg(yesNo(m_zoneAlerts != nullptr, "the fleet against the airspace", "none"))
+          << QStringLiteral("uploaded fences: %1").arg(yesNo(m_uploadedFenceAlerts && m_uploadedFenceAlerts->isFollowing(), "each vehicle's own zone alerts", "none"))
+          << QStringLiteral("upload fence: %1").arg(yesNo(m_airspaceToVehicles->isFollowing(), "the airspace beyond the route's own fence", "none"))
           << QStringLiteral("autosave: %1").arg(yesNo(m_autosave && m_autosave->isActive(), "on", "off"))
           << QStringLiteral("recovery: %1").arg(yesNo(m_recovery != nullptr, "on", "off"))
           << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))

@@ -8,6 +8,26 @@
 
 class QSettings;
 
+// The properties' types, complete for moc alone: the header itself forward-declares them.
+Q_MOC_INCLUDE("Airspace.h")
+Q_MOC_INCLUDE("AutosaveRecovery.h")
+Q_MOC_INCLUDE("ComparisonController.h")
+Q_MOC_INCLUDE("ConnectionController.h")
+Q_MOC_INCLUDE("ElevationService.h")
+Q_MOC_INCLUDE("FleetRoutes.h")
+Q_MOC_INCLUDE("MissionController.h")
+Q_MOC_INCLUDE("OfflineMaps.h")
+Q_MOC_INCLUDE("ProximityMonitor.h")
+Q_MOC_INCLUDE("RecordingSettings.h")
+Q_MOC_INCLUDE("ReplayController.h")
+Q_MOC_INCLUDE("RouteDeconfliction.h")
+Q_MOC_INCLUDE("RouteEndurance.h")
+Q_MOC_INCLUDE("ServerHistoryRequest.h")
+Q_MOC_INCLUDE("Traffic.h")
+Q_MOC_INCLUDE("VehicleFleet.h")
+Q_MOC_INCLUDE("ZoneAlertMonitor.h")
+Q_MOC_INCLUDE("ZoneSharing.h")
+
 namespace sortie::hci {
 class HciClient;
 class HciSession;
@@ -45,6 +65,8 @@ class OfflineMaps;
 } // namespace sortie::maptiles
 
 namespace sortie::airspace {
+class AirspaceToVehicles;
+class UploadedFenceAlerts;
 class ZoneAlertMonitor;
 } // namespace sortie::airspace
 
@@ -67,8 +89,34 @@ class VehicleFleet;
 // validation, the editor's height conversions), the open route's endurance (its rule), manned traffic, autosave and recovery, the flight recorder and
 // replay. The program (app/sortie) and every test fixture build it, so a test runs the program's own
 // wiring; a fixture changes what it must (folders, no vehicles) through Options, never by hand.
-class ClientGraph
+//
+// QML is handed the graph once (Main.qml's `graph`): each service a view uses is a typed constant
+// property here, so a new service is a member, a line in the constructor, a property and the view
+// that reads it (docs/architecture.md, "How to add a service").
+class ClientGraph : public QObject
 {
+    Q_OBJECT
+    // The services the views use. Constant: made once with the graph, never replaced; the ones marked
+    // "nullable" are null in a graph built without them (Options), and stay so.
+    Q_PROPERTY(sortie::client::ConnectionController *connection READ connectionForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::client::MissionController *missions READ missionsForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::terrain::ElevationService *elevation READ elevationForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::client::VehicleFleet *fleet READ fleetForQml CONSTANT FINAL)               // nullable: vehicles
+    Q_PROPERTY(sortie::client::FleetRoutes *fleetRoutes READ fleetRoutesForQml CONSTANT FINAL)    // nullable: vehicles
+    Q_PROPERTY(sortie::client::AutosaveRecovery *recovery READ recoveryForQml CONSTANT FINAL)     // nullable: autosaveDirectory
+    Q_PROPERTY(sortie::endurance::RouteEndurance *endurance READ enduranceForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::airspace::Airspace *airspace READ airspaceForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::airspace::ZoneSharing *zoneSharing READ zoneSharingForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::traffic::Traffic *traffic READ trafficForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::maptiles::OfflineMaps *offlineMaps READ offlineMapsForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::deconfliction::ProximityMonitor *proximity READ proximityForQml CONSTANT FINAL)        // nullable: vehicles
+    Q_PROPERTY(sortie::airspace::ZoneAlertMonitor *zoneAlerts READ zoneAlertsForQml CONSTANT FINAL)           // nullable: vehicles
+    Q_PROPERTY(sortie::deconfliction::RouteDeconfliction *deconfliction READ deconflictionForQml CONSTANT FINAL) // nullable: vehicles
+    Q_PROPERTY(sortie::flightlog::RecordingSettings *recordingSettings READ recordingSettingsForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::flightlog::ReplayController *replay READ replayForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::flightlog::ComparisonController *comparison READ comparisonForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::flightlog::ServerHistoryRequest *serverHistory READ serverHistoryForQml CONSTANT FINAL)
+
 public:
     struct Options
     {
@@ -81,10 +129,8 @@ public:
 
     // `storage` (not owned, required) holds the operator's settings: terrain folder and source order,
     // the recording limits.
-    ClientGraph(QSettings *storage, Options options);
-    ~ClientGraph();
-    ClientGraph(const ClientGraph &) = delete;
-    ClientGraph &operator=(const ClientGraph &) = delete;
+    ClientGraph(QSettings *storage, Options options, QObject *parent = nullptr);
+    ~ClientGraph() override;
 
     hci::HciSession &session() { return *m_session; }
     hci::HciClient &hciClient() { return *m_hciClient; }
@@ -121,6 +167,10 @@ public:
     flightlog::ReplayController &replay() { return *m_replay; }
     flightlog::ComparisonController &comparison() { return *m_comparison; }
     flightlog::ServerHistoryRequest &serverHistory() { return *m_serverHistory; }
+    // The terrain reads this DEM file or folder from now on (empty: none), in the source order the
+    // settings give: the operator chose another in the map source dialog.
+    void useDem(const QString &path);
+
     // Why the recorder did not start; empty when it records or was not asked to.
     QString recorderError() const { return m_recorderError; }
 
@@ -130,6 +180,26 @@ public:
     QStringList wiring() const;
 
 private:
+    // The properties' getters: QML reads pointers, C++ takes the references above.
+    ConnectionController *connectionForQml() const { return m_connection.get(); }
+    MissionController *missionsForQml() const { return m_missions.get(); }
+    terrain::ElevationService *elevationForQml() const;
+    VehicleFleet *fleetForQml() const { return m_fleet.get(); }
+    FleetRoutes *fleetRoutesForQml() const { return m_fleetRoutes.get(); }
+    AutosaveRecovery *recoveryForQml() const { return m_recovery.get(); }
+    endurance::RouteEndurance *enduranceForQml() const { return m_endurance.get(); }
+    airspace::Airspace *airspaceForQml() const { return m_airspace.get(); }
+    airspace::ZoneSharing *zoneSharingForQml() const { return m_zoneSharing.get(); }
+    traffic::Traffic *trafficForQml() const { return m_traffic.get(); }
+    maptiles::OfflineMaps *offlineMapsForQml() const { return m_offlineMaps.get(); }
+    deconfliction::ProximityMonitor *proximityForQml() const { return m_proximity.get(); }
+    airspace::ZoneAlertMonitor *zoneAlertsForQml() const { return m_zoneAlerts.get(); }
+    deconfliction::RouteDeconfliction *deconflictionForQml() const { return m_deconfliction.get(); }
+    flightlog::RecordingSettings *recordingSettingsForQml() const { return m_recordingSettings.get(); }
+    flightlog::ReplayController *replayForQml() const { return m_replay.get(); }
+    flightlog::ComparisonController *comparisonForQml() const { return m_comparison.get(); }
+    flightlog::ServerHistoryRequest *serverHistoryForQml() const { return m_serverHistory.get(); }
+
     std::unique_ptr<hci::HciSession> m_session;
     std::unique_ptr<hci::HciClient> m_hciClient;
     std::unique_ptr<ConnectionController> m_connection;
@@ -146,6 +216,8 @@ private:
     std::unique_ptr<deconfliction::RouteDeconfliction> m_deconfliction;
     std::unique_ptr<deconfliction::ProximityMonitor> m_proximity;
     std::unique_ptr<airspace::ZoneAlertMonitor> m_zoneAlerts;
+    std::unique_ptr<airspace::UploadedFenceAlerts> m_uploadedFenceAlerts; // with the zone alerts
+    std::unique_ptr<airspace::AirspaceToVehicles> m_airspaceToVehicles;
     std::unique_ptr<AutosaveRecovery> m_recovery;
     std::unique_ptr<RouteAutosave> m_autosave;
     std::unique_ptr<flightlog::FlightRecorder> m_recorder;
@@ -154,6 +226,7 @@ private:
     std::unique_ptr<flightlog::ReplayController> m_replay;
     std::unique_ptr<flightlog::ComparisonController> m_comparison;
     std::unique_ptr<flightlog::ServerHistoryRequest> m_serverHistory;
+    QSettings *m_storage;
     QString m_recorderError;
 };
 

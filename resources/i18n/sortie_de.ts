@@ -502,13 +502,6 @@
     </message>
 </context>
 <context>
-    <name>ClientGraph</name>
-    <message>
-        <source>route fence</source>
-        <translation>Geofence der Route</translation>
-    </message>
-</context>
-<context>
     <name>CommandBar</name>
     <message>
         <source>Are you sure?</source>
@@ -4093,6 +4086,13 @@ Ereignisse: %1
     <message>
         <source>saving</source>
         <translation>Speichern</translation>
+    </message>
+</context>
+<context>
+    <name>UploadedFenceAlerts</name>
+    <message>
+        <source>route fence</source>
+        <translation>Geofence der Route</translation>
     </message>
 </context>
 <context>

@@ -502,13 +502,6 @@
     </message>
 </context>
 <context>
-    <name>ClientGraph</name>
-    <message>
-        <source>route fence</source>
-        <translation>геозона маршруту</translation>
-    </message>
-</context>
-<context>
     <name>CommandBar</name>
     <message>
         <source>Are you sure?</source>
@@ -4105,6 +4098,13 @@ events:   %1
     <message>
         <source>saving</source>
         <translation>збереженням</translation>
+    </message>
+</context>
+<context>
+    <name>UploadedFenceAlerts</name>
+    <message>
+        <source>route fence</source>
+        <translation>геозона маршруту</translation>
     </message>
 </context>
 <context>

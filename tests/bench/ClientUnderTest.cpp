@@ -1,7 +1,5 @@
 #include "ClientUnderTest.h"
 
-#include "SortieUi.h"
-
 #include <QQuickWindow>
 #include <QSignalSpy>
 
@@ -15,14 +13,8 @@ ClientUnderTest::ClientUnderTest(bool withWindow)
 {
     if (!withWindow)
         return;
-    m_engine = std::make_unique<QQmlApplicationEngine>();
-    ui::addImportPaths(*m_engine);
-    m_translations = std::make_unique<ui::Translations>(m_settings, *m_engine);
-    m_engine->setInitialProperties(ui::mainWindowProperties(m_graph, m_settings, *m_translations));
-    m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
-    if (m_engine->rootObjects().isEmpty())
-        return;
-    m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
+    m_mainWindow = std::make_unique<ui::MainWindow>(m_graph, m_settings); // the program's window and settings wiring
+    m_window = m_mainWindow->window();
     if (m_window) {
         m_window->resize(1280, 800);
         m_window->show();

@@ -3,12 +3,11 @@
 #include "AppSettings.h"
 #include "ClientGraph.h"
 #include "ConnectionController.h"
+#include "MainWindow.h"
 #include "MissionController.h"
 #include "PasswordVault.h"
-#include "Translations.h"
 #include "VehicleFleet.h"
 
-#include <QQmlApplicationEngine>
 #include <QSettings>
 #include <QTemporaryDir>
 
@@ -45,8 +44,7 @@ private:
     QSettings m_storage;
     ui::AppSettings m_settings;
     client::ClientGraph m_graph;
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    std::unique_ptr<ui::Translations> m_translations;
+    std::unique_ptr<ui::MainWindow> m_mainWindow;
     QQuickWindow *m_window = nullptr;
     bool m_withWindow;
 };

@@ -47,13 +47,7 @@ const char *const kTelemetryPage = R"(
 
 QVariantMap telemetryPageProperties(client::ClientGraph &graph)
 {
-    return {{QStringLiteral("fleet"), QVariant::fromValue<QObject *>(graph.fleet())},
-            {QStringLiteral("replay"), QVariant::fromValue<QObject *>(&graph.replay())},
-            {QStringLiteral("serverHistory"), QVariant::fromValue<QObject *>(&graph.serverHistory())},
-            {QStringLiteral("comparison"), QVariant::fromValue<QObject *>(&graph.comparison())},
-            {QStringLiteral("endurance"), QVariant::fromValue<QObject *>(&graph.endurance())},
-            {QStringLiteral("fleetRoutes"), QVariant::fromValue<QObject *>(graph.fleetRoutes())},
-            {QStringLiteral("airspace"), QVariant::fromValue<QObject *>(&graph.airspace())}};
+    return {{QStringLiteral("graph"), QVariant::fromValue(&graph)}};
 }
 
 QPointF centre(QQuickItem *item)

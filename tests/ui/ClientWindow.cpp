@@ -1,7 +1,6 @@
 #include "ClientWindow.h"
 
 #include "SimVciListener.h"
-#include "SortieUi.h"
 
 #include <QSignalSpy>
 #include <QTest>
@@ -46,19 +45,15 @@ ClientWindow::ClientWindow(Options options)
                                                                    : options.autosaveDirectory;
     graph.flightLogDirectory = m_dir.filePath(QStringLiteral("flightlogs"));
     m_graph = std::make_unique<client::ClientGraph>(m_storage.get(), graph);
-    QObject::connect(&m_graph->connection(), &client::ConnectionController::ready, m_settings.get(), &ui::AppSettings::loginSucceeded);
-    m_engine = std::make_unique<QQmlApplicationEngine>();
-    ui::addImportPaths(*m_engine);
-    m_translations = std::make_unique<ui::Translations>(*m_settings, *m_engine,
-                                                        options.translationsFolder.isEmpty() ? QString::fromLatin1(ui::Translations::kBuiltIn)
-                                                                                             : options.translationsFolder);
-    m_engine->setInitialProperties(ui::mainWindowProperties(*m_graph, *m_settings, *m_translations));
-    m_engine->load(QUrl(QString::fromLatin1(ui::kMainQml)));
-    if (m_engine->rootObjects().isEmpty()) {
-        m_error = QStringLiteral("Main.qml did not load");
+    // The program's window and settings wiring (ui::MainWindow), with the fixture's translations if it has its own.
+    m_mainWindow = std::make_unique<ui::MainWindow>(*m_graph, *m_settings,
+                                                    options.translationsFolder.isEmpty() ? QString::fromLatin1(ui::Translations::kBuiltIn)
+                                                                                         : options.translationsFolder);
+    if (!m_mainWindow->window() || !m_mainWindow->loadWarnings().isEmpty()) {
+        m_error = QStringLiteral("Main.qml did not load cleanly: ") + m_mainWindow->loadWarnings().join(QLatin1Char('\n'));
         return;
     }
-    m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
+    m_window = m_mainWindow->window();
     m_window->resize(options.size);
     m_window->show();
     if (!QTest::qWaitForWindowExposed(m_window)) {
@@ -77,8 +72,7 @@ ClientWindow::ClientWindow(Options options)
 
 ClientWindow::~ClientWindow()
 {
-    m_engine.reset();
-    m_translations.reset();
+    m_mainWindow.reset();
     m_graph.reset();
     m_vci.reset();
     m_server.reset();

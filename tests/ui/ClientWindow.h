@@ -7,6 +7,7 @@
 #include "ClientGraph.h"
 #include "ConnectionController.h"
 #include "HciServer.h"
+#include "MainWindow.h"
 #include "MissionController.h"
 #include "PasswordVault.h"
 #include "SimVciFleet.h"
@@ -15,7 +16,6 @@
 #include "VehicleFleet.h"
 
 #include <QGeoCoordinate>
-#include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
 #include <QSettings>
@@ -80,7 +80,8 @@ public:
     sim::HciServer &server() { return *m_server; }
     sim::SimVciFleet &vci() { return *m_vci; }
     ui::AppSettings &settings() { return *m_settings; }
-    ui::Translations &translations() { return *m_translations; }
+    ui::Translations &translations() { return m_mainWindow->translations(); }
+    ui::MainWindow &mainWindow() { return *m_mainWindow; }
     client::ClientGraph &graph() { return *m_graph; }
     client::ConnectionController &connection() { return m_graph->connection(); }
     client::MissionController &missions() { return m_graph->missions(); }
@@ -95,8 +96,7 @@ private:
     std::unique_ptr<QSettings> m_storage;
     std::unique_ptr<ui::AppSettings> m_settings;
     std::unique_ptr<client::ClientGraph> m_graph;
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    std::unique_ptr<ui::Translations> m_translations;
+    std::unique_ptr<ui::MainWindow> m_mainWindow;
     QQuickWindow *m_window = nullptr;
     QString m_error;
 };

@@ -261,7 +261,7 @@ private slots:
         sortie::client::ClientGraph client(&clientStorage, {});
         sortie::test::QuickScene scene("import Sortie.Ui\nLoginPage {}", QSize(800, 600),
                                        {{QStringLiteral("appSettings"), QVariant::fromValue(&restarted.settings)},
-                                        {QStringLiteral("connection"), QVariant::fromValue<QObject *>(&client.connection())}});
+                                        {QStringLiteral("graph"), QVariant::fromValue(&client)}});
         QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
         auto *password = scene.find<QQuickItem>(QStringLiteral("passwordField"));
         auto *user = scene.find<QQuickItem>(QStringLiteral("userField"));

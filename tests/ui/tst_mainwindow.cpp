@@ -9,7 +9,7 @@
 #include "PasswordVault.h"
 #include "QuickScene.h"
 #include "RouteLayer.h"
-#include "SortieUi.h"
+#include "MainWindow.h"
 #include "TileHttpServer.h"
 #include "Translations.h"
 #include "VehicleLayer.h"
@@ -17,7 +17,6 @@
 #include <QDir>
 #include <QGuiApplication>
 #include <QPalette>
-#include <QQmlApplicationEngine>
 #include <QQuickItem>
 #include <QQuickWindow>
 #include <QSettings>
@@ -110,8 +109,7 @@ class TestMainWindow : public QObject
     std::unique_ptr<QSettings> m_storage;
     std::unique_ptr<AppSettings> m_settings;
     std::unique_ptr<sortie::client::ClientGraph> m_client; // the program's controllers, not logged in
-    std::unique_ptr<QQmlApplicationEngine> m_engine;
-    std::unique_ptr<sortie::ui::Translations> m_translations;
+    std::unique_ptr<sortie::ui::MainWindow> m_mainWindow;
     QQuickWindow *m_window = nullptr;
 
     template <typename T = QObject>
@@ -154,13 +152,9 @@ private slots:
         m_storage->clear();
         m_settings = std::make_unique<AppSettings>(m_storage.get(), &m_vault);
         m_client = std::make_unique<sortie::client::ClientGraph>(m_storage.get(), sortie::client::ClientGraph::Options{});
-        m_engine = std::make_unique<QQmlApplicationEngine>();
-        addImportPaths(*m_engine);
-        m_translations = std::make_unique<sortie::ui::Translations>(*m_settings, *m_engine);
-        m_engine->setInitialProperties(mainWindowProperties(*m_client, *m_settings, *m_translations));
-        m_engine->load(QUrl(QString::fromLatin1(kMainQml)));
-        QVERIFY(!m_engine->rootObjects().isEmpty());
-        m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
+        m_mainWindow = std::make_unique<sortie::ui::MainWindow>(*m_client, *m_settings);
+        QVERIFY2(m_mainWindow->loadWarnings().isEmpty(), qPrintable(m_mainWindow->loadWarnings().join(QLatin1Char('\n'))));
+        m_window = m_mainWindow->window();
         QVERIFY(m_window);
         m_window->resize(1280, 800);
         m_window->show();
@@ -169,8 +163,7 @@ private slots:
 
     void cleanup()
     {
-        m_engine.reset();
-        m_translations.reset();
+        m_mainWindow.reset();
         m_client.reset();
         m_settings.reset();
         m_storage.reset();

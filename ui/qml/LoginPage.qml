@@ -7,7 +7,8 @@ import Sortie.Ui
 Page {
     id: page
     required property AppSettings appSettings
-    required property ConnectionController connection
+    required property ClientGraph graph   // the client's services: this page uses the connection
+    readonly property ConnectionController connection: graph.connection
     property alias serverField: server
     property alias userField: user
     property alias passwordField: password

@@ -9,30 +9,13 @@ ApplicationWindow {
     id: window
     required property AppSettings appSettings
     required property Translations translations     // the UI's language: the selector's list, the one in use
-    // The client's controllers: the one client graph (core/client's ClientGraph), handed over by
-    // ui::mainWindowProperties. Every one is there; only `recovery` is null, in a program or fixture
-    // that keeps no autosave folder.
-    required property ConnectionController connection
-    required property MissionController missions
-    required property VehicleFleet fleet
-    required property ElevationService elevation   // the terrain service (core/terrain; "none" at least)
-    required property ReplayController replay       // flight-log replay: the telemetry page's timeline
-    required property ComparisonController comparison
-    required property ServerHistoryRequest serverHistory   // the server's history into the replay
-    required property RecordingSettings recordingSettings  // the flight logs' folder and limits (Logs…)
-    required property AutosaveRecovery recovery     // edits a previous run left unsaved; may be null
-    required property RouteEndurance endurance      // will the battery last: the open route's endurance
-    required property Traffic traffic               // manned traffic: ADS-B from a receiver and the server
-    required property OfflineMaps offlineMaps       // maps taken offline: the download and the cache-only setting
-    required property FleetRoutes fleetRoutes       // every route given to a vehicle: drawn on both maps, listed beside them
-    required property ProximityMonitor proximity    // closest-approach alerts in flight; null without vehicles
-    required property ZoneAlertMonitor zoneAlerts   // zone alerts in flight; null without vehicles
-    required property RouteDeconfliction deconfliction  // the open route's 4D conflicts; null without vehicles
-    required property Airspace airspace             // the zones: both maps, the zone panel, the route's airspace check
-    required property ZoneSharing zoneSharing       // drawn zones to the server; the server's custom zones edited, deleted
-    property string connectionState: connection.state
-    property string connectionStateText: connection.stateText  // the state in the operator's words
-    property string connectionDetail: connection.statusDetail
+    // The client's services, built and wired by core's ClientGraph and handed over once (ui::MainWindow).
+    // Each page takes what it uses from it; `graph.recovery` is null in a program or fixture that
+    // keeps no autosave folder, the fleet's alerts are null in one without vehicles.
+    required property ClientGraph graph
+    property string connectionState: graph.connection.state
+    property string connectionStateText: graph.connection.stateText  // the state in the operator's words
+    property string connectionDetail: graph.connection.statusDetail
 
     property alias currentPage: tabs.currentIndex
     property alias loginPage: loginPage
@@ -53,15 +36,15 @@ ApplicationWindow {
     function toggleHelp() { help.opened ? help.close() : help.open() }
     function openMapSource() { mapSourceDialog.open() }
     function focusMap() { window.activeMap.forceActiveFocus() }
-    function saveRoute() { showPage(1); missions.save() }
-    function undo() { if (missionPage.zoneEditing) airspace.editor.undo(); else missions.document.undo() }
-    function redo() { if (missionPage.zoneEditing) airspace.editor.redo(); else missions.document.redo() }
-    function deleteSelection() { if (currentPage === 1) missions.document.editor.removeRows(missions.document.selectedRows) }
-    function processRoute() { missions.preparation.process() }
+    function saveRoute() { showPage(1); graph.missions.save() }
+    function undo() { if (missionPage.zoneEditing) graph.airspace.editor.undo(); else graph.missions.document.undo() }
+    function redo() { if (missionPage.zoneEditing) graph.airspace.editor.redo(); else graph.missions.document.redo() }
+    function deleteSelection() { if (currentPage === 1) graph.missions.document.editor.removeRows(graph.missions.document.selectedRows) }
+    function processRoute() { graph.missions.preparation.process() }
     function toggleFullScreen() { window.visibility = window.visibility === Window.FullScreen ? Window.Windowed : Window.FullScreen }
 
     Connections {
-        target: window.connection
+        target: window.graph.connection
         function onReady() { tabs.currentIndex = 1 }
     }
 
@@ -98,8 +81,8 @@ ApplicationWindow {
                     id: offlineMapsDialog
                     active: false
                     sourceComponent: OfflineMapsDialog {
-                        offlineMaps: window.offlineMaps
-                        routeModel: window.missions.document.model
+                        offlineMaps: window.graph.offlineMaps
+                        routeModel: window.graph.missions.document.model
                         map: window.activeMap
                         // Drawn on the mission map (its zones' polygon tool); the dialog comes back after.
                         onDrawRequested: { window.showPage(1); missionPage.drawArea() }
@@ -115,7 +98,7 @@ ApplicationWindow {
                 Loader { // made when first opened: the start-up does not pay for it
                     id: logSettingsDialog
                     active: false
-                    sourceComponent: FlightLogSettingsDialog { settings: window.recordingSettings }
+                    sourceComponent: FlightLogSettingsDialog { settings: window.graph.recordingSettings }
                 }
             }
             ToolButton {
@@ -156,20 +139,12 @@ ApplicationWindow {
             id: loginPage
             objectName: "loginPage"
             appSettings: window.appSettings
-            connection: window.connection
+            graph: window.graph
         }
         MissionPage {
             id: missionPage
             objectName: "missionPage"
-            missions: window.missions
-            vehicleModel: window.fleet
-            elevation: window.elevation
-            endurance: window.endurance
-            traffic: window.traffic
-            fleetRoutes: window.fleetRoutes
-            deconfliction: window.deconfliction
-            airspace: window.airspace
-            zoneSharing: window.zoneSharing
+            graph: window.graph
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource
@@ -177,26 +152,17 @@ ApplicationWindow {
             mbtilesFile: window.appSettings.mbtilesFile
             orthophotoFile: window.appSettings.orthophotoFile
             orthophotoOpacity: window.appSettings.orthophotoOpacity
-            tilePackFile: window.offlineMaps.packFile
-            tilesCacheOnly: window.offlineMaps.cacheOnly
-            offlineArea: offlineMapsDialog.item && offlineMapsDialog.item.visible ? window.offlineMaps.areaCorners : []
-            onAreaDrawn: corners => { window.offlineMaps.usePolygonArea(corners); offlineMapsDialog.item.open() }
-            onAreaRectangleDrawn: (corner, opposite) => { window.offlineMaps.useRectangleArea(corner, opposite); offlineMapsDialog.item.open() }
+            tilePackFile: window.graph.offlineMaps.packFile
+            tilesCacheOnly: window.graph.offlineMaps.cacheOnly
+            offlineArea: offlineMapsDialog.item && offlineMapsDialog.item.visible ? window.graph.offlineMaps.areaCorners : []
+            onAreaDrawn: corners => { window.graph.offlineMaps.usePolygonArea(corners); offlineMapsDialog.item.open() }
+            onAreaRectangleDrawn: (corner, opposite) => { window.graph.offlineMaps.useRectangleArea(corner, opposite); offlineMapsDialog.item.open() }
             onAreaDrawingCancelled: offlineMapsDialog.item.open()
         }
         TelemetryPage {
             id: telemetryPage
             objectName: "telemetryPage"
-            fleet: window.fleet
-            endurance: window.endurance
-            traffic: window.traffic
-            fleetRoutes: window.fleetRoutes
-            proximity: window.proximity
-            zoneAlerts: window.zoneAlerts
-            airspace: window.airspace
-            replay: window.replay
-            serverHistory: window.serverHistory
-            comparison: window.comparison
+            graph: window.graph
             units: units
             dark: window.dark
             mapSource: window.appSettings.mapSource
@@ -204,8 +170,8 @@ ApplicationWindow {
             mbtilesFile: window.appSettings.mbtilesFile
             orthophotoFile: window.appSettings.orthophotoFile
             orthophotoOpacity: window.appSettings.orthophotoOpacity
-            tilePackFile: window.offlineMaps.packFile
-            tilesCacheOnly: window.offlineMaps.cacheOnly
+            tilePackFile: window.graph.offlineMaps.packFile
+            tilesCacheOnly: window.graph.offlineMaps.cacheOnly
         }
     }
 
@@ -239,16 +205,16 @@ ApplicationWindow {
     RestoreDialog {
         id: restoreDialog
         objectName: "restoreDialog"
-        recovery: window.recovery
+        recovery: window.graph.recovery
         // Also alone, to say what went wrong with an autosave (a file kept aside) until read.
-        visible: window.recovery !== null && (window.recovery.available || window.recovery.message.length > 0)
+        visible: window.graph.recovery !== null && (window.graph.recovery.available || window.graph.recovery.message.length > 0)
         onRestored: {
             window.showPage(1)
             Qt.callLater(() => missionPage.routeLayer.fitToMap(60))
         }
     }
     Binding { // the pack and the download follow the web source chosen in Map source
-        target: window.offlineMaps
+        target: window.graph.offlineMaps
         property: "urlTemplate"
         value: window.appSettings.tileUrlTemplate
     }

@@ -14,13 +14,15 @@ Page {
     property alias areaLayer: areaLayer
     property alias pane: pane
     property alias panel: panel
-    required property MissionController missions
     required property DisplayUnits units
+    // The client's services (core's ClientGraph); the page takes what it uses from it.
+    required property ClientGraph graph
+    readonly property MissionController missions: graph.missions
     readonly property RouteDocument doc: missions.document
     // The models the layers and the table draw.
     readonly property AbstractItemModel routeModel: doc.model
     readonly property ItemSelectionModel selectionModel: doc.selection
-    required property AbstractItemModel vehicleModel // the fleet: where the vehicles are while planning
+    readonly property AbstractItemModel vehicleModel: graph.fleet // the fleet: where the vehicles are while planning
     property string tool: ""               // "", "scan" (an area-scan figure), "zonePolygon", "zoneCircle" or "offlineArea"
     property string mapSource: "offline"
     property string tileUrlTemplate: ""
@@ -30,13 +32,13 @@ Page {
     property string tilePackFile: ""    // the web source's offline pack (OfflineMaps.packFile)
     property bool tilesCacheOnly: false // the web source never uses the network
     property bool dark: false
-    required property ElevationService elevation    // the client's ElevationService, for the terrain profile
-    required property RouteEndurance endurance      // will the battery last: figures, changes, point of no return
-    property Traffic traffic: null                  // manned traffic around (ADS-B)
-    required property FleetRoutes fleetRoutes       // every route given to a vehicle: on the map and in a list beside it
-    property RouteDeconfliction deconfliction: null // the open route's conflicts with them; null without vehicles
-    required property Airspace airspace             // the zones: on the map, in the zone panel, on the profile
-    required property ZoneSharing zoneSharing       // the zone panel's server actions
+    readonly property ElevationService elevation: graph.elevation   // the terrain, for the profile
+    readonly property RouteEndurance endurance: graph.endurance     // will the battery last: figures, changes, point of no return
+    readonly property Traffic traffic: graph.traffic                // manned traffic around (ADS-B)
+    readonly property FleetRoutes fleetRoutes: graph.fleetRoutes    // every route given to a vehicle: on the map and in a list beside it
+    readonly property RouteDeconfliction deconfliction: graph.deconfliction // the open route's conflicts with them; null without vehicles
+    readonly property Airspace airspace: graph.airspace             // the zones: on the map, in the zone panel, on the profile
+    readonly property ZoneSharing zoneSharing: graph.zoneSharing    // the zone panel's server actions
     property alias zoneLayer: zoneLayer
     property alias zonePanel: zonePanel
     // Ctrl+Z goes to the zone editor while the zone panel is open (zones are not part of the route).

@@ -10,21 +10,23 @@ Page {
     property alias map: pane.map
     property alias vehicleLayer: vehicleLayer
     property alias pane: pane
-    required property VehicleFleet fleet
     required property DisplayUnits units
+    // The client's services (core's ClientGraph); the page takes what it uses from it.
+    required property ClientGraph graph
+    readonly property VehicleFleet fleet: graph.fleet   // null in a graph without vehicles
     // A log being replayed takes the place of the live vehicles (the timeline says so).
-    required property ReplayController replay
+    readonly property ReplayController replay: graph.replay
     // The server's history for the replay (the timeline's Server history… dialog).
-    required property ServerHistoryRequest serverHistory
-    required property ComparisonController comparison
+    readonly property ServerHistoryRequest serverHistory: graph.serverHistory
+    readonly property ComparisonController comparison: graph.comparison
     // The energy profile and wind the in-flight advice prices with (the mission page chooses them).
-    required property RouteEndurance endurance
-    property Traffic traffic: null          // manned traffic around (ADS-B)
+    readonly property RouteEndurance endurance: graph.endurance
+    readonly property Traffic traffic: graph.traffic   // manned traffic around (ADS-B)
     // Every route given to a vehicle: drawn under the flight plans, listed under the vehicles.
-    required property FleetRoutes fleetRoutes
-    property ProximityMonitor proximity: null  // closest-approach alerts (the fleet and the traffic)
-    property ZoneAlertMonitor zoneAlerts: null // a vehicle about to enter a zone or leave a fence
-    required property Airspace airspace        // the zones, drawn under everything else
+    readonly property FleetRoutes fleetRoutes: graph.fleetRoutes
+    readonly property ProximityMonitor proximity: graph.proximity   // closest-approach alerts (the fleet and the traffic); null without vehicles
+    readonly property ZoneAlertMonitor zoneAlerts: graph.zoneAlerts // a vehicle about to enter a zone or leave a fence; null without vehicles
+    readonly property Airspace airspace: graph.airspace             // the zones, drawn under everything else
     property alias zoneLayer: zoneLayer
     readonly property bool replaying: replay.active
     property AbstractItemModel vehicleModel: replaying ? replay.fleet : fleet   // any list model with the fleet's role names

@@ -5,6 +5,7 @@
 // themselves are made and wired in C++ (app/sortie, tests) and handed to the window.
 #include "Airspace.h"
 #include "AutosaveRecovery.h"
+#include "ClientGraph.h"
 #include "CommandLog.h"
 #include "CommandPolicy.h"
 #include "ElevationService.h"
@@ -52,6 +53,17 @@ struct AbstractItemModelForeign
     QML_FOREIGN(QAbstractItemModel)
     QML_NAMED_ELEMENT(AbstractItemModel)
     QML_UNCREATABLE("an abstract class: views are handed a model made in C++ or QML")
+};
+
+// The client's services in one object, handed to Main.qml once; a page takes what it uses from it
+// (`graph.airspace`), typed by the graph's own properties, so a service needs no name here unless a
+// view declares a property of its type.
+struct ClientGraphForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::client::ClientGraph)
+    QML_NAMED_ELEMENT(ClientGraph)
+    QML_UNCREATABLE("made by the program and handed to the main window")
 };
 
 struct ConnectionControllerForeign
