@@ -15,11 +15,6 @@ namespace sortie::files {
 
 namespace {
 
-QString tr(const char *text)
-{
-    return QCoreApplication::translate("PrivateFiles", text);
-}
-
 void setError(QString *error, const QString &message)
 {
     if (error)
@@ -48,19 +43,19 @@ bool makePrivatePath(const QString &path, QString *error)
         existing = parent;
     }
     if (!QFileInfo(existing).isDir()) {
-        setError(error, tr("Cannot create the folder %1: %2 is not a folder").arg(absolute, existing));
+        setError(error, QCoreApplication::translate("PrivateFiles", "Cannot create the folder %1: %2 is not a folder").arg(absolute, existing));
         return false;
     }
     for (const QString &folder : std::as_const(missing)) {
         const QByteArray name = QFile::encodeName(folder);
         // mkdir applies the umask, which can only take bits away from 0700.
         if (::mkdir(name.constData(), 0700) != 0 && errno != EEXIST) {
-            setError(error, tr("Cannot create the folder %1: %2").arg(folder, QString::fromLocal8Bit(std::strerror(errno))));
+            setError(error, QCoreApplication::translate("PrivateFiles", "Cannot create the folder %1: %2").arg(folder, QString::fromLocal8Bit(std::strerror(errno))));
             return false;
         }
     }
     if (!QFileInfo(absolute).isDir()) {
-        setError(error, tr("Cannot create the folder %1").arg(absolute));
+        setError(error, QCoreApplication::translate("PrivateFiles", "Cannot create the folder %1").arg(absolute));
         return false;
     }
     return true;
@@ -76,7 +71,7 @@ bool createPrivateFile(const QString &path, QString *error)
     }
     if (errno == EEXIST)
         return true;
-    setError(error, tr("Cannot create %1: %2").arg(path, QString::fromLocal8Bit(std::strerror(errno))));
+    setError(error, QCoreApplication::translate("PrivateFiles", "Cannot create %1: %2").arg(path, QString::fromLocal8Bit(std::strerror(errno))));
     return false;
 }
 
@@ -102,7 +97,7 @@ QString privateRuntimeFolder(const QString &name, QString *error)
     QByteArray pattern = QFile::encodeName(QDir::temp().filePath(name + QStringLiteral("-XXXXXX")));
     if (::mkdtemp(pattern.data()))
         return QFile::decodeName(pattern);
-    setError(error, tr("Cannot create a private folder in %1: %2").arg(QDir::tempPath(), QString::fromLocal8Bit(std::strerror(errno))));
+    setError(error, QCoreApplication::translate("PrivateFiles", "Cannot create a private folder in %1: %2").arg(QDir::tempPath(), QString::fromLocal8Bit(std::strerror(errno))));
     return {};
 }
 
