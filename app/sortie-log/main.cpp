@@ -81,8 +81,8 @@ std::unique_ptr<flightlog::FlightLog> openLog(const QString &path, QTextStream &
     auto log = flightlog::FlightLog::open(path, &error);
     if (!log)
         err << "sortie-log: " << error << "\n";
-    else if (!log->stoppedAt().isEmpty())
-        err << "sortie-log: " << path << " is damaged; read up to its last good record: " << log->stoppedAt() << "\n";
+    else if (const QString damage = log->damage(); !damage.isEmpty())
+        err << "sortie-log: " << path << " is damaged: " << damage << "\n";
     return log;
 }
 

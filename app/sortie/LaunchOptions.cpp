@@ -1,10 +1,12 @@
 #include "LaunchOptions.h"
 
 #include "DemOpener.h"
+#include "PrivateFiles.h"
 #include "SbsFeed.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
+#include <QLoggingCategory>
 #include <QDir>
 #include <QStandardPaths>
 #include <QUrl>
@@ -150,14 +152,30 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
 
 namespace {
 
+Q_LOGGING_CATEGORY(lcLaunch, "sortie.launch", QtInfoMsg)
+
+// The demo's private folder, made once a run: never a fixed name in the shared temporary folder,
+// where another local user could make it first, read the routes, plant autosaves, hold the locks.
+QString demoFolder()
+{
+    static const QString folder = [] {
+        QString error;
+        const QString made = files::privateRuntimeFolder(QStringLiteral("sortie-demo"), &error);
+        if (made.isEmpty())
+            qCWarning(lcLaunch).noquote() << "demo:" << error;
+        return made;
+    }();
+    return folder;
+}
+
 // The environment's folder, else the demo's own, else one in the application data folder.
 QString dataFolder(const char *variable, const QString &name, bool demo)
 {
     const QString env = qEnvironmentVariable(variable);
     if (!env.isEmpty())
         return env;
-    if (demo)
-        return QDir::temp().filePath(QStringLiteral("sortie-demo-") + name);
+    if (demo && !demoFolder().isEmpty())
+        return QDir(demoFolder()).filePath(name);
     return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath(name);
 }
 

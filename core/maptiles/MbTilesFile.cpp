@@ -1,5 +1,7 @@
 #include "MbTilesFile.h"
 
+#include "PrivateFiles.h"
+
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
@@ -43,8 +45,14 @@ bool MbTilesFile::open(const QString &path, Mode mode, QString *error)
         setError(error, QCoreApplication::translate("MbTilesFile", "The MBTiles file %1 does not exist.").arg(path));
         return false;
     }
-    if (mode == Mode::ReadWrite)
-        QDir().mkpath(QFileInfo(path).absolutePath());
+    if (mode == Mode::ReadWrite) {
+        // A pack is the operator's: a new folder 0700, a new file 0600 (SQLite keeps the mode).
+        QString why;
+        if (!files::makePrivatePath(QFileInfo(path).absolutePath(), &why) || !files::createPrivateFile(path, &why)) {
+            setError(error, QCoreApplication::translate("MbTilesFile", "Cannot open the MBTiles file %1: %2").arg(path, why));
+            return false;
+        }
+    }
     const QString name = QStringLiteral("sortie-mbtiles-") + QUuid::createUuid().toString(QUuid::WithoutBraces);
     QString problem;
     {

@@ -2096,6 +2096,25 @@
     </message>
 </context>
 <context>
+    <name>OpenQuestion</name>
+    <message>
+        <source>Unsaved edits</source>
+        <translation>Ungespeicherte Änderungen</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Speichern</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Verwerfen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+</context>
+<context>
     <name>OrthophotoRenderer</name>
     <message>
         <source>the image is not georeferenced (no CRS or no geotransform)</source>
@@ -2128,6 +2147,29 @@
     <message>
         <source>%1: tile size %2 is outside 1..%3</source>
         <translation>%1: Kachelgröße %2 liegt außerhalb von 1..%3</translation>
+    </message>
+</context>
+<context>
+    <name>PrivateFiles</name>
+    <message>
+        <source>Cannot create the folder %1: %2 is not a folder</source>
+        <translation>Der Ordner %1 kann nicht angelegt werden: %2 ist kein Ordner</translation>
+    </message>
+    <message>
+        <source>Cannot create the folder %1: %2</source>
+        <translation>Der Ordner %1 kann nicht angelegt werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot create the folder %1</source>
+        <translation>Der Ordner %1 kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>Cannot create %1: %2</source>
+        <translation>%1 kann nicht angelegt werden: %2</translation>
+    </message>
+    <message>
+        <source>Cannot create a private folder in %1: %2</source>
+        <translation>In %1 kann kein privater Ordner angelegt werden: %2</translation>
     </message>
 </context>
 <context>
@@ -2267,14 +2309,6 @@ Gesamt: %1 erreicht, %2 verpasst; Querablage max %3, Mittel %4; Höhe max %5, Mi
         <translation>Die Fahrzeugliste ist beschädigt: %1</translation>
     </message>
     <message>
-        <source>block %1 (after %2 good ones, %3) is damaged: %4</source>
-        <translation>Block %1 (nach %2 guten, %3) ist beschädigt: %4</translation>
-    </message>
-    <message>
-        <source>at the start</source>
-        <translation>am Anfang</translation>
-    </message>
-    <message>
         <source>unknown vehicle</source>
         <translation>unbekanntes Fahrzeug</translation>
     </message>
@@ -2355,6 +2389,27 @@ Ereignisse: %1
     <message>
         <source>a replayed vehicle takes no commands</source>
         <translation>Ein wiedergegebenes Fahrzeug nimmt keine Befehle an</translation>
+    </message>
+    <message>
+        <source>block %1 (vehicle row %2, from %3) is skipped: %4</source>
+        <translation>Block %1 (Fahrzeugzeile %2, ab %3) wird übersprungen: %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more damaged block(s) skipped</source>
+        <translation>
+            <numerusform>%n weiterer beschädigter Block übersprungen</numerusform>
+            <numerusform>%n weitere beschädigte Blöcke übersprungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>read up to the last good record: %1</source>
+        <translation>bis zum letzten guten Eintrag gelesen: %1</translation>
+    </message>
+    <message>
+        <source>DAMAGED:  %1
+</source>
+        <translation>BESCHÄDIGT:  %1
+</translation>
     </message>
 </context>
 <context>
@@ -5513,6 +5568,54 @@ Ereignisse: %1
         <source>Someone else saved this route on the server (version %1) while you were editing it.</source>
         <translation>Jemand anderes hat diese Route auf dem Server gespeichert (Version %1), während Sie sie bearbeitet haben.</translation>
     </message>
+    <message>
+        <source>The new route</source>
+        <translation>Die neue Route</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;</source>
+        <translation>„%1“</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved edits. Opening it again reads the server&apos;s copy. Save your edits first?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Erneutes Öffnen liest die Kopie des Servers. Die Änderungen zuerst speichern?</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved edits. Save them before opening &quot;%2&quot;?</source>
+        <translation>%1 hat ungespeicherte Änderungen. Vor dem Öffnen von „%2“ speichern?</translation>
+    </message>
+    <message>
+        <source>If you discard them, Undo brings them back.</source>
+        <translation>Wenn Sie sie verwerfen, holt Rückgängig sie zurück.</translation>
+    </message>
+    <message>
+        <source>the new route</source>
+        <translation>der neuen Route</translation>
+    </message>
+    <message>
+        <source>Open %1</source>
+        <translation>%1 öffnen</translation>
+    </message>
+    <message>
+        <source>Undo brings back your unsaved edits of %1.</source>
+        <translation>Rückgängig holt Ihre ungespeicherten Änderungen an %1 zurück.</translation>
+    </message>
+    <message>
+        <source>Not saved: another route was opened meanwhile.</source>
+        <translation>Nicht gespeichert: Inzwischen wurde eine andere Route geöffnet.</translation>
+    </message>
+    <message>
+        <source>Edits made while saving</source>
+        <translation>Änderungen während des Speicherns</translation>
+    </message>
+    <message>
+        <source>The edits you made while it was saving are kept, not saved yet.</source>
+        <translation>Die Änderungen, die Sie während des Speicherns gemacht haben, bleiben erhalten, sind aber noch nicht gespeichert.</translation>
+    </message>
+    <message>
+        <source>Update from the server (version %1)</source>
+        <translation>Aktualisierung vom Server (Version %1)</translation>
+    </message>
 </context>
 <context>
     <name>sortie::client::MissionUploader</name>
@@ -5938,12 +6041,27 @@ Ereignisse: %1
         <translation>%1: Das Protokoll kann kein Write-Ahead-Journal verwenden</translation>
     </message>
     <message>
-        <source>Recording to %1 failed: %2</source>
-        <translation>Aufzeichnung in %1 fehlgeschlagen: %2</translation>
-    </message>
-    <message>
         <source>Recording could not continue in %1: %2</source>
         <translation>Aufzeichnung konnte in %1 nicht fortgesetzt werden: %2</translation>
+    </message>
+    <message>
+        <source>%1 is being written by another process</source>
+        <translation>%1 wird von einem anderen Prozess geschrieben</translation>
+    </message>
+    <message>
+        <source>Recording to %1 failed: %2. What is recorded meanwhile is kept and written once it can be.</source>
+        <translation>Aufzeichnung in %1 fehlgeschlagen: %2. Was inzwischen aufgezeichnet wird, bleibt erhalten und wird geschrieben, sobald es geht.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to %1 resumed; %n value(s) recorded while it failed could not be kept.</source>
+        <translation>
+            <numerusform>Aufzeichnung in %1 fortgesetzt; %n während des Fehlers aufgezeichneter Wert konnte nicht behalten werden.</numerusform>
+            <numerusform>Aufzeichnung in %1 fortgesetzt; %n während des Fehlers aufgezeichnete Werte konnten nicht behalten werden.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no row for vehicle %1: %2</source>
+        <translation>keine Zeile für Fahrzeug %1: %2</translation>
     </message>
 </context>
 <context>

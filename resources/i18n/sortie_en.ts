@@ -60,6 +60,16 @@
     </message>
 </context>
 <context>
+    <name>QObject</name>
+    <message numerus="yes">
+        <source>%n more damaged block(s) skipped</source>
+        <translation>
+            <numerusform>%n more damaged block skipped</numerusform>
+            <numerusform>%n more damaged blocks skipped</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>RoutePanel</name>
     <message numerus="yes">
         <source>%n batteries</source>
@@ -256,6 +266,16 @@
         <translation>
             <numerusform>%1: %2 of %n vehicle answered — %3.</numerusform>
             <numerusform>%1: %2 of %n vehicles answered — %3.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>sortie::flightlog::FlightLogWriter</name>
+    <message numerus="yes">
+        <source>Recording to %1 resumed; %n value(s) recorded while it failed could not be kept.</source>
+        <translation>
+            <numerusform>Recording to %1 resumed; %n value recorded while it failed could not be kept.</numerusform>
+            <numerusform>Recording to %1 resumed; %n values recorded while it failed could not be kept.</numerusform>
         </translation>
     </message>
 </context>

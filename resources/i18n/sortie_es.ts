@@ -2096,6 +2096,25 @@
     </message>
 </context>
 <context>
+    <name>OpenQuestion</name>
+    <message>
+        <source>Unsaved edits</source>
+        <translation>Cambios sin guardar</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Guardar</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Descartar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
     <name>OrthophotoRenderer</name>
     <message>
         <source>the image is not georeferenced (no CRS or no geotransform)</source>
@@ -2128,6 +2147,29 @@
     <message>
         <source>%1: tile size %2 is outside 1..%3</source>
         <translation>%1: el tamaño de tesela %2 está fuera de 1..%3</translation>
+    </message>
+</context>
+<context>
+    <name>PrivateFiles</name>
+    <message>
+        <source>Cannot create the folder %1: %2 is not a folder</source>
+        <translation>No se puede crear la carpeta %1: %2 no es una carpeta</translation>
+    </message>
+    <message>
+        <source>Cannot create the folder %1: %2</source>
+        <translation>No se puede crear la carpeta %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot create the folder %1</source>
+        <translation>No se puede crear la carpeta %1</translation>
+    </message>
+    <message>
+        <source>Cannot create %1: %2</source>
+        <translation>No se puede crear %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot create a private folder in %1: %2</source>
+        <translation>No se puede crear una carpeta privada en %1: %2</translation>
     </message>
 </context>
 <context>
@@ -2267,14 +2309,6 @@ total: %1 alcanzados, %2 no alcanzados; desvío lateral máx. %3, media %4; alti
         <translation>la lista de vehículos está dañada: %1</translation>
     </message>
     <message>
-        <source>block %1 (after %2 good ones, %3) is damaged: %4</source>
-        <translation>el bloque %1 (tras %2 correctos, %3) está dañado: %4</translation>
-    </message>
-    <message>
-        <source>at the start</source>
-        <translation>al principio</translation>
-    </message>
-    <message>
         <source>unknown vehicle</source>
         <translation>vehículo desconocido</translation>
     </message>
@@ -2355,6 +2389,27 @@ eventos:   %1
     <message>
         <source>a replayed vehicle takes no commands</source>
         <translation>un vehículo reproducido no acepta órdenes</translation>
+    </message>
+    <message>
+        <source>block %1 (vehicle row %2, from %3) is skipped: %4</source>
+        <translation>el bloque %1 (fila de vehículo %2, desde %3) se omite: %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more damaged block(s) skipped</source>
+        <translation>
+            <numerusform>%n bloque dañado más omitido</numerusform>
+            <numerusform>%n bloques dañados más omitidos</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>read up to the last good record: %1</source>
+        <translation>leído hasta el último registro válido: %1</translation>
+    </message>
+    <message>
+        <source>DAMAGED:  %1
+</source>
+        <translation>DAÑADO:  %1
+</translation>
     </message>
 </context>
 <context>
@@ -5513,6 +5568,54 @@ eventos:   %1
         <source>Someone else saved this route on the server (version %1) while you were editing it.</source>
         <translation>Otra persona guardó esta ruta en el servidor (versión %1) mientras usted la editaba.</translation>
     </message>
+    <message>
+        <source>The new route</source>
+        <translation>La ruta nueva</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;</source>
+        <translation>«%1»</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved edits. Opening it again reads the server&apos;s copy. Save your edits first?</source>
+        <translation>%1 tiene cambios sin guardar. Abrirla de nuevo lee la copia del servidor. ¿Guardar primero los cambios?</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved edits. Save them before opening &quot;%2&quot;?</source>
+        <translation>%1 tiene cambios sin guardar. ¿Guardarlos antes de abrir «%2»?</translation>
+    </message>
+    <message>
+        <source>If you discard them, Undo brings them back.</source>
+        <translation>Si los descarta, Deshacer los recupera.</translation>
+    </message>
+    <message>
+        <source>the new route</source>
+        <translation>la ruta nueva</translation>
+    </message>
+    <message>
+        <source>Open %1</source>
+        <translation>Abrir %1</translation>
+    </message>
+    <message>
+        <source>Undo brings back your unsaved edits of %1.</source>
+        <translation>Deshacer recupera sus cambios sin guardar de %1.</translation>
+    </message>
+    <message>
+        <source>Not saved: another route was opened meanwhile.</source>
+        <translation>No guardado: mientras tanto se abrió otra ruta.</translation>
+    </message>
+    <message>
+        <source>Edits made while saving</source>
+        <translation>Cambios hechos durante el guardado</translation>
+    </message>
+    <message>
+        <source>The edits you made while it was saving are kept, not saved yet.</source>
+        <translation>Los cambios que hizo mientras se guardaba se conservan, aún sin guardar.</translation>
+    </message>
+    <message>
+        <source>Update from the server (version %1)</source>
+        <translation>Actualización del servidor (versión %1)</translation>
+    </message>
 </context>
 <context>
     <name>sortie::client::MissionUploader</name>
@@ -5938,12 +6041,27 @@ eventos:   %1
         <translation>%1: el registro no puede usar un diario de escritura anticipada</translation>
     </message>
     <message>
-        <source>Recording to %1 failed: %2</source>
-        <translation>Falló la grabación en %1: %2</translation>
-    </message>
-    <message>
         <source>Recording could not continue in %1: %2</source>
         <translation>La grabación no pudo continuar en %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 is being written by another process</source>
+        <translation>otro proceso está escribiendo %1</translation>
+    </message>
+    <message>
+        <source>Recording to %1 failed: %2. What is recorded meanwhile is kept and written once it can be.</source>
+        <translation>La grabación en %1 falló: %2. Lo grabado mientras tanto se conserva y se escribe en cuanto se pueda.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to %1 resumed; %n value(s) recorded while it failed could not be kept.</source>
+        <translation>
+            <numerusform>Grabación en %1 reanudada; no se pudo conservar %n valor grabado durante el fallo.</numerusform>
+            <numerusform>Grabación en %1 reanudada; no se pudieron conservar %n valores grabados durante el fallo.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no row for vehicle %1: %2</source>
+        <translation>no hay fila para el vehículo %1: %2</translation>
     </message>
 </context>
 <context>

@@ -2103,6 +2103,25 @@
     </message>
 </context>
 <context>
+    <name>OpenQuestion</name>
+    <message>
+        <source>Unsaved edits</source>
+        <translation>Незбережені зміни</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <translation>Зберегти</translation>
+    </message>
+    <message>
+        <source>Discard</source>
+        <translation>Відкинути</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Скасувати</translation>
+    </message>
+</context>
+<context>
     <name>OrthophotoRenderer</name>
     <message>
         <source>the image is not georeferenced (no CRS or no geotransform)</source>
@@ -2135,6 +2154,29 @@
     <message>
         <source>%1: tile size %2 is outside 1..%3</source>
         <translation>%1: розмір тайла %2 поза межами 1..%3</translation>
+    </message>
+</context>
+<context>
+    <name>PrivateFiles</name>
+    <message>
+        <source>Cannot create the folder %1: %2 is not a folder</source>
+        <translation>Не вдається створити теку %1: %2 не є текою</translation>
+    </message>
+    <message>
+        <source>Cannot create the folder %1: %2</source>
+        <translation>Не вдається створити теку %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot create the folder %1</source>
+        <translation>Не вдається створити теку %1</translation>
+    </message>
+    <message>
+        <source>Cannot create %1: %2</source>
+        <translation>Не вдається створити %1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot create a private folder in %1: %2</source>
+        <translation>Не вдається створити приватну теку в %1: %2</translation>
     </message>
 </context>
 <context>
@@ -2274,14 +2316,6 @@ total: %1 reached, %2 missed; cross-track max %3, mean %4; altitude max %5, mean
         <translation>список апаратів пошкоджено: %1</translation>
     </message>
     <message>
-        <source>block %1 (after %2 good ones, %3) is damaged: %4</source>
-        <translation>блок %1 (після %2 цілих, %3) пошкоджено: %4</translation>
-    </message>
-    <message>
-        <source>at the start</source>
-        <translation>на початку</translation>
-    </message>
-    <message>
         <source>unknown vehicle</source>
         <translation>невідомий апарат</translation>
     </message>
@@ -2362,6 +2396,28 @@ events:   %1
     <message>
         <source>a replayed vehicle takes no commands</source>
         <translation>апарат у відтворенні не приймає команд</translation>
+    </message>
+    <message>
+        <source>block %1 (vehicle row %2, from %3) is skipped: %4</source>
+        <translation>блок %1 (рядок апарата %2, від %3) пропущено: %4</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more damaged block(s) skipped</source>
+        <translation>
+            <numerusform>ще %n пошкоджений блок пропущено</numerusform>
+            <numerusform>ще %n пошкоджені блоки пропущено</numerusform>
+            <numerusform>ще %n пошкоджених блоків пропущено</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>read up to the last good record: %1</source>
+        <translation>прочитано до останнього справного запису: %1</translation>
+    </message>
+    <message>
+        <source>DAMAGED:  %1
+</source>
+        <translation>ПОШКОДЖЕНО:  %1
+</translation>
     </message>
 </context>
 <context>
@@ -5530,6 +5586,54 @@ events:   %1
         <source>Someone else saved this route on the server (version %1) while you were editing it.</source>
         <translation>Хтось інший зберіг цей маршрут на сервері (версія %1), поки ви його редагували.</translation>
     </message>
+    <message>
+        <source>The new route</source>
+        <translation>Новий маршрут</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;</source>
+        <translation>«%1»</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved edits. Opening it again reads the server&apos;s copy. Save your edits first?</source>
+        <translation>%1 має незбережені зміни. Повторне відкриття прочитає копію сервера. Спершу зберегти зміни?</translation>
+    </message>
+    <message>
+        <source>%1 has unsaved edits. Save them before opening &quot;%2&quot;?</source>
+        <translation>%1 має незбережені зміни. Зберегти їх перед відкриттям «%2»?</translation>
+    </message>
+    <message>
+        <source>If you discard them, Undo brings them back.</source>
+        <translation>Якщо їх відкинути, «Скасувати дію» поверне їх.</translation>
+    </message>
+    <message>
+        <source>the new route</source>
+        <translation>нового маршруту</translation>
+    </message>
+    <message>
+        <source>Open %1</source>
+        <translation>Відкрити %1</translation>
+    </message>
+    <message>
+        <source>Undo brings back your unsaved edits of %1.</source>
+        <translation>«Скасувати дію» поверне ваші незбережені зміни %1.</translation>
+    </message>
+    <message>
+        <source>Not saved: another route was opened meanwhile.</source>
+        <translation>Не збережено: тим часом було відкрито інший маршрут.</translation>
+    </message>
+    <message>
+        <source>Edits made while saving</source>
+        <translation>Зміни під час збереження</translation>
+    </message>
+    <message>
+        <source>The edits you made while it was saving are kept, not saved yet.</source>
+        <translation>Зміни, зроблені під час збереження, збережено в документі, але ще не на сервері.</translation>
+    </message>
+    <message>
+        <source>Update from the server (version %1)</source>
+        <translation>Оновлення із сервера (версія %1)</translation>
+    </message>
 </context>
 <context>
     <name>sortie::client::MissionUploader</name>
@@ -5968,12 +6072,28 @@ events:   %1
         <translation>%1: журнал не може використовувати режим WAL (попередній запис)</translation>
     </message>
     <message>
-        <source>Recording to %1 failed: %2</source>
-        <translation>Запис у %1 не вдався: %2</translation>
-    </message>
-    <message>
         <source>Recording could not continue in %1: %2</source>
         <translation>Запис не вдалося продовжити в %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 is being written by another process</source>
+        <translation>%1 записує інший процес</translation>
+    </message>
+    <message>
+        <source>Recording to %1 failed: %2. What is recorded meanwhile is kept and written once it can be.</source>
+        <translation>Запис у %1 не вдався: %2. Записане тим часом зберігається і буде записане, щойно це стане можливим.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Recording to %1 resumed; %n value(s) recorded while it failed could not be kept.</source>
+        <translation>
+            <numerusform>Запис у %1 відновлено; %n значення, записане під час збою, не вдалося зберегти.</numerusform>
+            <numerusform>Запис у %1 відновлено; %n значення, записані під час збою, не вдалося зберегти.</numerusform>
+            <numerusform>Запис у %1 відновлено; %n значень, записаних під час збою, не вдалося зберегти.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>no row for vehicle %1: %2</source>
+        <translation>немає рядка для апарата %1: %2</translation>
     </message>
 </context>
 <context>

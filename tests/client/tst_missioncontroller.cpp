@@ -1,6 +1,7 @@
 // MissionController and RouteDocument against the simulated server: open a route, edit it, undo,
 // save under a lock and see the change from a second session, a conflicting save, processing and
 // uploading with progress, files.
+#include "AutosaveRecord.h"
 #include "ConnectionController.h"
 #include "HciClient.h"
 #include "HciReply.h"
@@ -9,10 +10,12 @@
 #include "Messages.pb.h"
 #include "MissionController.h"
 #include "MissionFiles.h"
+#include "RouteAutosave.h"
 #include "SimFixture.h"
 #include "SimVehicle.h"
 #include "VehicleFleet.h"
 
+#include <QFile>
 #include <QGeoCoordinate>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -69,6 +72,19 @@ int routeRow(const client::ServerObjectListModel &routes, const QString &name)
 }
 
 const QString kDemoRoute = QStringLiteral("Riga port - 4 WP");
+
+double altitudeAt(const client::RouteDocument &doc, int row)
+{
+    const auto *waypoint = mission::asWaypoint(doc.route().segments.at(size_t(row)));
+    return waypoint ? waypoint->altitude : qQNaN();
+}
+
+double serverAltitude(const pb::Route &route, int row)
+{
+    auto imported = mission::routeFromHci(route);
+    const auto *waypoint = imported ? mission::asWaypoint(imported->route.segments.at(size_t(row))) : nullptr;
+    return waypoint ? waypoint->altitude : qQNaN();
+}
 
 } // namespace
 
@@ -170,6 +186,169 @@ private slots:
         QVERIFY(lock->isFinished() || locked.wait(10000));
         QVERIFY2(lock->isOk(), qPrintable(lock->error().message()));
         delete lock;
+    }
+
+    // Issue 36: Open over unsaved edits threw them away without a word.
+    void openingOverUnsavedEditsAsksAndDiscardIsUndoable()
+    {
+        const int id = openDemoRoute(*m_alice);
+        QVERIFY(id > 0);
+        MissionController &missions = m_alice->missions;
+        client::RouteDocument *doc = missions.document();
+        QTemporaryDir folder;
+        client::RouteAutosave autosave(doc, folder.path());
+        QVERIFY(autosave.isActive());
+        QCOMPARE(altitudeAt(*doc, 0), 40.0);
+        QVERIFY(doc->editor()->setAltitude({0}, 77));
+        QVERIFY(autosave.writeNow());
+
+        // Open again: a question, and nothing else happens.
+        QSignalSpy opened(&missions, &MissionController::routeOpened);
+        missions.openRoute(id);
+        QVERIFY(missions.isAskingToOpen());
+        QVERIFY2(missions.openQuestion().contains(QStringLiteral("unsaved edits")), qPrintable(missions.openQuestion()));
+        QVERIFY(!missions.isBusy()); // nothing was asked of the server
+        missions.cancelOpen();
+        QVERIFY(!missions.isAskingToOpen());
+        QCOMPARE(altitudeAt(*doc, 0), 77.0);
+        QVERIFY(doc->isModified());
+
+        // Discard: the server's copy, clean, and the edits one undo step away.
+        missions.openRoute(id);
+        QVERIFY(missions.isAskingToOpen());
+        missions.discardThenOpen();
+        QVERIFY(!missions.isAskingToOpen());
+        QVERIFY(opened.wait(10000));
+        QCOMPARE(altitudeAt(*doc, 0), 40.0);
+        QVERIFY(!doc->isModified());
+        QVERIFY(doc->canUndo());
+        QVERIFY2(missions.message().contains(QStringLiteral("Undo brings back")), qPrintable(missions.message()));
+        autosave.waitForWriter();
+        QVERIFY(!QFile::exists(autosave.filePath())); // clean: nothing to autosave
+
+        doc->undo();
+        QCOMPARE(altitudeAt(*doc, 0), 77.0);
+        QVERIFY(doc->isModified());
+        QCOMPARE(missions.routeId(), id);
+        // The autosave has them again, against the route as it was opened.
+        QVERIFY(autosave.writeNow());
+        QFile file(autosave.filePath());
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        auto record = client::decodeAutosave(file.readAll());
+        QVERIFY2(record, record ? "" : qPrintable(record.error().toString()));
+        QCOMPARE(mission::asWaypoint(record->working.segments.at(0))->altitude, 77.0);
+        QCOMPARE(mission::asWaypoint(record->baseline.segments.at(0))->altitude, 40.0);
+        QCOMPARE(record->routeId, id);
+    }
+
+    void saveThenOpenOpensOnceSaved()
+    {
+        const int first = openDemoRoute(*m_alice);
+        QVERIFY(first > 0);
+        MissionController &missions = m_alice->missions;
+        // A second route on the server, to open over the first one's edits.
+        pb::Route copy = call<pb::GetObjectResponse>(m_alice->client.getObject(hci::HciObjectType::Route, first)).object().route();
+        copy.clear_id();
+        copy.clear_version();
+        for (auto &segment : *copy.mutable_segments())
+            segment.clear_id();
+        copy.set_name("Second route");
+        const int second = call<pb::CreateOrUpdateObjectResponse>(m_alice->client.createOrUpdate(copy)).object().route().id();
+        QVERIFY(second > 0 && second != first);
+        QTRY_VERIFY(missions.routes()->rowOf(second) >= 0);
+
+        client::RouteDocument *doc = missions.document();
+        QVERIFY(doc->editor()->setAltitude({0}, 77));
+        missions.openRoute(second);
+        QVERIFY(missions.isAskingToOpen());
+        QVERIFY2(missions.openQuestion().contains(QStringLiteral("\"Second route\"")), qPrintable(missions.openQuestion()));
+        QSignalSpy saved(&missions, &MissionController::saved);
+        QSignalSpy opened(&missions, &MissionController::routeOpened);
+        missions.saveThenOpen();
+        QVERIFY(opened.wait(10000));
+        QCOMPARE(saved.count(), 1);
+        QCOMPARE(missions.routeId(), second);
+        QCOMPARE(missions.routeName(), QStringLiteral("Second route"));
+        QVERIFY(!doc->isModified());
+        const pb::Route stored = call<pb::GetObjectResponse>(m_alice->client.getObject(hci::HciObjectType::Route, first)).object().route();
+        QCOMPARE(serverAltitude(stored, 0), 77.0);
+    }
+
+    void saveThatFailsDoesNotOpen()
+    {
+        const int id = openDemoRoute(*m_alice);
+        QVERIFY(id > 0);
+        MissionController &missions = m_alice->missions;
+        client::RouteDocument *doc = missions.document();
+        QVERIFY(doc->editor()->setAltitude({0}, 77));
+        // Bob holds the route's lock: the save is refused, and the open that was to follow waits.
+        Operator bob(m_sim->address(), QStringLiteral("bob"), QStringLiteral("s3cret-bob"));
+        QVERIFY(bob.ok);
+        hci::HciReply *locked = bob.client.acquireLock(hci::HciObjectType::Route, id);
+        QSignalSpy lockDone(locked, &hci::HciReply::finished);
+        QVERIFY(lockDone.wait(10000));
+        QVERIFY(locked->isOk());
+
+        missions.openRoute(id);
+        QVERIFY(missions.isAskingToOpen());
+        QSignalSpy opened(&missions, &MissionController::routeOpened);
+        missions.saveThenOpen();
+        QTRY_VERIFY_WITH_TIMEOUT(missions.message().startsWith(QStringLiteral("Not saved")), 10000);
+        QVERIFY2(missions.message().contains(QStringLiteral("locked")), qPrintable(missions.message()));
+        QTRY_VERIFY(!missions.isBusy());
+        QCOMPARE(opened.count(), 0);
+        QCOMPARE(altitudeAt(*doc, 0), 77.0);
+        QVERIFY(doc->isModified());
+        QVERIFY(!missions.isAskingToOpen());
+    }
+
+    // Issue 36: a successful save reloaded the server's copy and lost an edit made meanwhile.
+    void anEditMadeWhileSavingIsKept()
+    {
+        const int id = openDemoRoute(*m_alice);
+        QVERIFY(id > 0);
+        MissionController &missions = m_alice->missions;
+        client::RouteDocument *doc = missions.document();
+        QVERIFY(doc->editor()->setAltitude({0}, 77));
+        QSignalSpy saved(&missions, &MissionController::saved);
+        missions.save();
+        // The save is on its way (nothing of it can be answered before the event loop runs).
+        QVERIFY(missions.isBusy());
+        QVERIFY(doc->editor()->setAltitude({1}, 66));
+        QCOMPARE(doc->editor()->addWaypoint(QGeoCoordinate(56.9790, 24.0820)), 4);
+        QVERIFY(saved.wait(10000));
+        QTRY_VERIFY(!missions.isBusy());
+
+        // The server has what was sent; the document keeps the later edits, unsaved.
+        const pb::Route stored = call<pb::GetObjectResponse>(m_alice->client.getObject(hci::HciObjectType::Route, id)).object().route();
+        QCOMPARE(serverAltitude(stored, 0), 77.0);
+        QCOMPARE(serverAltitude(stored, 1), 50.0);
+        QCOMPARE(stored.segments_size(), 4);
+        QCOMPARE(altitudeAt(*doc, 0), 77.0);
+        QCOMPARE(altitudeAt(*doc, 1), 66.0);
+        QCOMPARE(doc->model()->count(), 5);
+        QVERIFY(doc->isModified());
+        QVERIFY2(missions.message().contains(QStringLiteral("kept, not saved yet")), qPrintable(missions.message()));
+        QCOMPARE(hciRoute(doc->route().origin)->version(), stored.version());
+        // Undo goes back to what the server has.
+        doc->undo();
+        QVERIFY(!doc->isModified());
+        QCOMPARE(altitudeAt(*doc, 1), 50.0);
+        doc->redo();
+        QCOMPARE(altitudeAt(*doc, 1), 66.0);
+
+        // Saving them is an ordinary save, not a conflict with ourselves; the segments the server
+        // already knew keep their ids.
+        missions.save();
+        QVERIFY(saved.wait(10000));
+        QVERIFY(!missions.hasConflict());
+        QVERIFY(!doc->isModified());
+        const pb::Route again = call<pb::GetObjectResponse>(m_alice->client.getObject(hci::HciObjectType::Route, id)).object().route();
+        QCOMPARE(serverAltitude(again, 1), 66.0);
+        QCOMPARE(again.segments_size(), 5);
+        QCOMPARE(again.version(), stored.version() + 1);
+        for (int i = 2; i < 4; ++i)
+            QCOMPARE(again.segments(i).id(), stored.segments(i).id());
     }
 
     void followsTheServerWhenNothingIsEdited()

@@ -20,6 +20,8 @@
 #include <QTest>
 #include <QThread>
 
+#include <sys/stat.h>
+
 using namespace sortie;
 using client::AutosaveRecovery;
 using client::AutosaveWriter;
@@ -122,6 +124,30 @@ private slots:
         doc.load(test::serverRoute()); // another route opened
         autosave.waitForWriter();
         QVERIFY(!QFile::exists(autosave.filePath()));
+    }
+
+    // Issue 36: autosaves took the umask (0644 files, 0755 folders): another local user read the routes.
+    void filesArePrivate()
+    {
+        QTemporaryDir dir;
+        const QString folder = QDir(dir.path()).filePath(QStringLiteral("made/autosave"));
+        const mode_t before = ::umask(022); // the common default, which would leave them readable
+        const auto restore = qScopeGuard([before] { ::umask(before); });
+        RouteDocument doc;
+        RouteAutosave autosave(&doc, folder);
+        QVERIFY2(autosave.isActive(), qPrintable(autosave.error()));
+        doc.load(test::serverRoute());
+        test::editRoute(doc);
+        QVERIFY(autosave.writeNow());
+        const auto others = QFileDevice::ReadGroup | QFileDevice::WriteGroup | QFileDevice::ExeGroup | QFileDevice::ReadOther
+                          | QFileDevice::WriteOther | QFileDevice::ExeOther;
+        QCOMPARE(QFileInfo(autosave.filePath()).permissions() & others, QFileDevice::Permissions());
+        QCOMPARE(QFileInfo(folder).permissions() & others, QFileDevice::Permissions());
+        QCOMPARE(QFileInfo(QFileInfo(folder).path()).permissions() & others, QFileDevice::Permissions());
+        // And again after the next write replaced the file.
+        doc.editor()->addWaypoint(QGeoCoordinate(56.5, 24.5));
+        QVERIFY(autosave.writeNow());
+        QCOMPARE(QFileInfo(autosave.filePath()).permissions() & others, QFileDevice::Permissions());
     }
 
     void theFileIsEncodedAndWrittenOffTheGuiThread()

@@ -21,6 +21,8 @@
 #include <QDateTime>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSqlDatabase>
+#include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QXmlStreamReader>
@@ -158,7 +160,7 @@ private slots:
         QVERIFY2(error.contains(QStringLiteral("not a Sortie flight log")), qPrintable(error));
     }
 
-    void damagedLogsOpenUpToTheLastGoodBlock()
+    void damagedLogsOpenWithWhatIsGood()
     {
         QTemporaryDir dir;
         const QString path = recordTwoFlights(dir.path());
@@ -196,7 +198,7 @@ private slots:
         }
         QVERIFY(partly >= 1);
 
-        // A flipped byte inside a telemetry block: read up to the block before it.
+        // A flipped byte inside a telemetry block: that block is skipped and named, every later one read.
         const QByteArray needle = QByteArray::fromStdString(whole->vehicles()[1].blocks[3].data.substr(0, 24));
         const qsizetype at = bytes.indexOf(needle);
         QVERIFY(at > 0);
@@ -209,8 +211,131 @@ private slots:
         out.close();
         const auto log = FlightLog::open(bad, &error);
         QVERIFY2(log, qPrintable(error));
-        QVERIFY2(log->stoppedAt().contains(QStringLiteral("checksum mismatch")), qPrintable(log->stoppedAt()));
-        QVERIFY(log->vehicles()[1].blocks.size() == 3 || log->vehicles()[1].blocks.size() == 4 - 1);
+        QVERIFY2(log->stoppedAt().isEmpty(), qPrintable(log->stoppedAt()));
+        QCOMPARE(log->skipped().size(), 1);
+        QVERIFY2(log->skipped().front().contains(QStringLiteral("checksum mismatch")), qPrintable(log->skipped().front()));
+        QVERIFY2(log->damage().contains(QStringLiteral("skipped")), qPrintable(log->damage()));
+        QCOMPARE(log->vehicles()[1].blocks.size(), whole->vehicles()[1].blocks.size() - 1);
+        QCOMPARE(log->vehicles()[0].blocks.size(), whole->vehicles()[0].blocks.size());
+        // Every block but the flipped one, in order: those after it included (the other vehicle's).
+        std::vector<int64_t> expected, read;
+        for (size_t i = 0; i < whole->vehicles()[1].blocks.size(); ++i)
+            if (i != 3)
+                expected.push_back(whole->vehicles()[1].blocks[i].t0);
+        for (const auto &block : log->vehicles()[1].blocks)
+            read.push_back(block.t0);
+        QCOMPARE(read, expected);
+    }
+
+    // Issue 36: the reader stopped at the first block naming a vehicle the log does not hold
+    // (what a failed commit used to leave), hiding every later sample of every vehicle.
+    void aBlockOfAnUnknownVehicleIsSkippedAndNamed()
+    {
+        QTemporaryDir dir;
+        const QString path = recordTwoFlights(dir.path());
+        QString error;
+        const auto whole = FlightLog::open(path, &error);
+        QVERIFY2(whole, qPrintable(error));
+        qint64 blockId = -1;
+        {
+            QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), QStringLiteral("damage"));
+            db.setDatabaseName(path);
+            QVERIFY(db.open());
+            QSqlQuery q(db);
+            QVERIFY(q.exec(QStringLiteral("SELECT id FROM blocks ORDER BY id LIMIT 1 OFFSET 2")) && q.next());
+            blockId = q.value(0).toLongLong();
+            QVERIFY(q.exec(QStringLiteral("UPDATE blocks SET vehicle = 999 WHERE id = %1").arg(blockId)));
+            q.finish();
+            db.close();
+        }
+        QSqlDatabase::removeDatabase(QStringLiteral("damage"));
+        const auto log = FlightLog::open(path, &error);
+        QVERIFY2(log, qPrintable(error));
+        QVERIFY2(log->stoppedAt().isEmpty(), qPrintable(log->stoppedAt()));
+        QCOMPARE(log->skipped().size(), 1);
+        const QString named = log->skipped().front();
+        QVERIFY2(named.contains(QStringLiteral("block %1 ").arg(blockId)) && named.contains(QStringLiteral("unknown vehicle"))
+                     && named.contains(QStringLiteral("999")), qPrintable(named));
+        // Every other block is there, to the end of both flights.
+        const size_t blocks = log->vehicles()[0].blocks.size() + log->vehicles()[1].blocks.size();
+        QCOMPARE(blocks, whole->vehicles()[0].blocks.size() + whole->vehicles()[1].blocks.size() - 1);
+        QCOMPARE(log->end(), whole->end());
+        QVERIFY(!flightlog::logInfoJson(*log).value(QStringLiteral("complete")).toBool());
+        QVERIFY(flightlog::logInfoText(*log).contains(named));
+    }
+
+    // Issue 36: two clients started in the same second wrote one file.
+    void eachSessionHasAFileOfItsOwn()
+    {
+        QTemporaryDir dir;
+        const QString folder = dir.filePath(QStringLiteral("logs/flights"));
+        const QString first = FlightRecorder::sessionPath(folder);
+        QVERIFY(QFileInfo(first).isFile()); // claimed at once
+        // Whatever second it is now or next, its plain name is taken: the next session's has a
+        // suffix of its own, never a part's "-2".
+        const QDateTime now = QDateTime::currentDateTimeUtc();
+        for (const QDateTime &t : {now, now.addSecs(1)}) {
+            QFile taken(QDir(folder).filePath(QStringLiteral("session-%1.sortielog").arg(t.toString(QStringLiteral("yyyyMMdd-HHmmss")))));
+            QVERIFY(taken.exists() || taken.open(QIODevice::WriteOnly));
+        }
+        const QString second = FlightRecorder::sessionPath(folder);
+        QVERIFY2(second != first && second.endsWith(QStringLiteral("-c2.sortielog")), qPrintable(second));
+        QVERIFY(QFileInfo(second).isFile());
+        // Private: the folders it made 0700, the file 0600.
+        for (const QString &made : {folder, QFileInfo(folder).path()})
+            QCOMPARE(QFileInfo(made).permissions() & (QFileDevice::ReadGroup | QFileDevice::ExeGroup | QFileDevice::ReadOther | QFileDevice::ExeOther),
+                     QFileDevice::Permissions());
+        QCOMPARE(QFileInfo(second).permissions() & (QFileDevice::ReadGroup | QFileDevice::ReadOther | QFileDevice::WriteGroup | QFileDevice::WriteOther),
+                 QFileDevice::Permissions());
+
+        // Two recorders on the two names: two logs, each with its own vehicle.
+        ScriptedLink linkA(QStringLiteral("1"), QStringLiteral("EMU-101")), linkB(QStringLiteral("2"), QStringLiteral("EMU-102"));
+        Vehicle a(&linkA), b(&linkB);
+        FlightRecorder one({first, {}, 100}), two({second, {}, 100});
+        QVERIFY(one.start() && two.start());
+        one.addVehicle(&a);
+        two.addVehicle(&b);
+        linkA.send(test::telemetryAt(kT0, 56.97, 24.07, 20, 90, true, 4));
+        linkB.send(test::telemetryAt(kT0, 56.98, 24.08, 30, 90, true, 4));
+        one.stop();
+        two.stop();
+        for (const auto &[path, name] : {std::pair{first, QStringLiteral("EMU-101")}, std::pair{second, QStringLiteral("EMU-102")}}) {
+            QString error;
+            const auto log = FlightLog::open(path, &error);
+            QVERIFY2(log, qPrintable(error));
+            QCOMPARE(log->vehicles().size(), size_t(1));
+            QCOMPARE(log->vehicles()[0].name(), name);
+            // -wal and -shm take the log's mode; after a clean close only the log is left.
+            QCOMPARE(QFileInfo(path).permissions() & (QFileDevice::ReadGroup | QFileDevice::ReadOther), QFileDevice::Permissions());
+        }
+    }
+
+    // Pruning never deletes a log a writer has open (its lock), in this process or another
+    // (tst_sortielog: two sortie-log recorders).
+    void pruningKeepsALogBeingWritten()
+    {
+        QTemporaryDir dir;
+        const QString live = dir.filePath(QStringLiteral("live.sortielog")), done = dir.filePath(QStringLiteral("done.sortielog"));
+        flightlog::FlightLogWriter writer(live, {0, 0});
+        QString error;
+        QVERIFY2(writer.open(&error), qPrintable(error));
+        QVERIFY(QFile::exists(live + QStringLiteral(".lock")));
+        {
+            QFile f(done);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray(64 << 10, 'x'));
+        }
+        const QString current = dir.filePath(QStringLiteral("current.sortielog"));
+        QCOMPARE(flightlog::FlightLogWriter::pruneFolder(dir.path(), 0, current), QStringList{QFileInfo(done).absoluteFilePath()});
+        QVERIFY(QFile::exists(live));
+        // Another writer cannot take a log being written either.
+        flightlog::FlightLogWriter second(live, {0, 0});
+        QVERIFY(!second.open(&error));
+        QVERIFY2(error.contains(QStringLiteral("another process")), qPrintable(error));
+        writer.close();
+        QVERIFY(!QFile::exists(live + QStringLiteral(".lock")));
+        QCOMPARE(flightlog::FlightLogWriter::pruneFolder(dir.path(), 0, current), QStringList{QFileInfo(live).absoluteFilePath()});
+        QVERIFY(!QFile::exists(live));
     }
 
     void rotatesAndPrunes()

@@ -6,6 +6,7 @@
 #include "ConnectionController.h"
 #include "FleetRecording.h"
 #include "FlightLog.h"
+#include "FlightLogWriter.h"
 #include "FlightRecorder.h"
 #include "FlightLogTestSupport.h"
 #include "HciClient.h"
@@ -155,6 +156,18 @@ private slots:
         killed.start(QStringLiteral(SORTIE_LOG_PROGRAM), common + QStringList{killedLog});
         QTRY_VERIFY_WITH_TIMEOUT(cleanOut.contains("logged in") && killedOut.contains("logged in"), 15000);
         QTRY_VERIFY_WITH_TIMEOUT(cleanOut.contains("3 vehicles") && killedOut.contains("3 vehicles"), 15000);
+
+        // Pruning the folder to nothing while both record: an old log goes, neither live one (each
+        // recorder holds its log's lock).
+        const QString old = dir.filePath(QStringLiteral("old.sortielog"));
+        {
+            QFile f(old);
+            QVERIFY(f.open(QIODevice::WriteOnly));
+            f.write(QByteArray(64 << 10, 'x'));
+        }
+        const QStringList pruned = flightlog::FlightLogWriter::pruneFolder(dir.path(), 0, dir.filePath(QStringLiteral("none.sortielog")));
+        QCOMPARE(pruned, QStringList{QFileInfo(old).absoluteFilePath()});
+        QVERIFY(QFile::exists(cleanLog) && QFile::exists(killedLog));
 
         // The operator's own client flies the vehicles.
         hci::HciSession session;

@@ -6,10 +6,14 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
+#include <QScopeGuard>
 #include <QSqlDatabase>
 #include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <sys/stat.h>
 
 using namespace sortie::maptiles;
 
@@ -76,6 +80,26 @@ private slots:
         QCOMPARE(reader.meanTileBytes().value(), (8.0 + 10 + 5) / 3);
         QVERIFY(!reader.writeTiles({{{0, 0, 0}, "x"}}, &error)); // read-only
         QVERIFY(!error.isEmpty());
+    }
+
+    // Issue 36: packs took the umask. A pack is the operator's: 0600, its new folder 0700.
+    void packsArePrivate()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("new/area.mbtiles"));
+        const mode_t before = ::umask(022);
+        const auto restore = qScopeGuard([before] { ::umask(before); });
+        QString error;
+        MbTilesFile file;
+        QVERIFY2(file.open(path, MbTilesFile::Mode::ReadWrite, &error), qPrintable(error));
+        QVERIFY2(file.writeTiles({{{1, 0, 0}, "tile"}}, &error), qPrintable(error));
+        const auto others = QFileDevice::ReadGroup | QFileDevice::WriteGroup | QFileDevice::ExeGroup | QFileDevice::ReadOther
+                          | QFileDevice::WriteOther | QFileDevice::ExeOther;
+        QCOMPARE(QFileInfo(path).permissions() & others, QFileDevice::Permissions());
+        QCOMPARE(QFileInfo(QFileInfo(path).path()).permissions() & others, QFileDevice::Permissions());
+        for (const char *journal : {"-journal", "-wal", "-shm"})
+            if (QFileInfo::exists(path + QLatin1String(journal)))
+                QCOMPARE(QFileInfo(path + QLatin1String(journal)).permissions() & others, QFileDevice::Permissions());
     }
 
     void metadataRoundTrip()

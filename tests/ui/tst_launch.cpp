@@ -2,8 +2,11 @@
 #include "AppSettings.h"
 #include "LaunchOptions.h"
 #include "PasswordVault.h"
+#include "PrivateFiles.h"
 
 #include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
 #include <QMetaProperty>
 #include <memory>
 #include <vector>
@@ -12,6 +15,8 @@
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+
+#include <unistd.h>
 
 using namespace sortie::app;
 using sortie::client::ServerAddress;
@@ -173,6 +178,40 @@ private slots:
         QCOMPARE(failure({QStringLiteral("--demo-scene"), QStringLiteral("busy")}), QStringLiteral("--demo-scene: 'busy' is neither parked nor flying"));
         QVERIFY(failure({QStringLiteral("--demo-scene"), QStringLiteral("parked"), QStringLiteral("--server"), QStringLiteral("h:1")})
                     .contains(QStringLiteral("leave out --server")));
+    }
+
+    // Issue 36: the demo wrote to fixed /tmp/sortie-demo-autosave and -flightlogs, which another
+    // local user could make first. Now its folders are in a private folder of its own.
+    void theDemoWritesToAPrivateFolder()
+    {
+        qunsetenv("SORTIE_AUTOSAVE_DIR");
+        qunsetenv("SORTIE_FLIGHTLOG_DIR");
+        const auto graph = parsed({QStringLiteral("--demo")}).graphOptions();
+        for (const QString &folder : {graph.autosaveDirectory, graph.flightLogDirectory}) {
+            QVERIFY2(!folder.startsWith(QStringLiteral("/tmp/sortie-demo-autosave")) && !folder.startsWith(QStringLiteral("/tmp/sortie-demo-flightlogs")),
+                     qPrintable(folder));
+            // The folder that holds them: this user's only, made by the demo (0700) or XDG_RUNTIME_DIR's own.
+            const QFileInfo parent(QFileInfo(folder).path());
+            QVERIFY2(parent.isDir(), qPrintable(parent.filePath()));
+            QCOMPARE(parent.ownerId(), uint(::getuid()));
+            QCOMPARE(parent.permissions() & (QFileDevice::ReadGroup | QFileDevice::WriteGroup | QFileDevice::ExeGroup | QFileDevice::ReadOther
+                                             | QFileDevice::WriteOther | QFileDevice::ExeOther),
+                     QFileDevice::Permissions());
+        }
+        QCOMPARE(QFileInfo(graph.autosaveDirectory).path(), QFileInfo(graph.flightLogDirectory).path());
+        // Without XDG_RUNTIME_DIR: a folder of its own made by mkdtemp, never a fixed name.
+        const QByteArray runtime = qgetenv("XDG_RUNTIME_DIR");
+        qunsetenv("XDG_RUNTIME_DIR");
+        QString error;
+        const QString made = sortie::files::privateRuntimeFolder(QStringLiteral("sortie-demo-test"), &error);
+        qputenv("XDG_RUNTIME_DIR", runtime);
+        if (runtime.isEmpty())
+            qunsetenv("XDG_RUNTIME_DIR");
+        QVERIFY2(!made.isEmpty(), qPrintable(error));
+        QVERIFY2(made.startsWith(QDir::temp().filePath(QStringLiteral("sortie-demo-test-"))) && made.size() > QDir::temp().filePath(QStringLiteral("sortie-demo-test-")).size(),
+                 qPrintable(made));
+        QCOMPARE(QFileInfo(made).permissions() & (QFileDevice::ReadGroup | QFileDevice::ReadOther | QFileDevice::ExeOther), QFileDevice::Permissions());
+        QVERIFY(QDir(made).removeRecursively());
     }
 
     void settingsPersist()

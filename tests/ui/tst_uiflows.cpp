@@ -266,6 +266,50 @@ private slots:
         QTRY_VERIFY(text("missionMessage").contains(QStringLiteral("Saved")));
     }
 
+    // Issue 36: Open over unsaved edits threw them away without a word. Now it asks: Cancel keeps
+    // them, Discard opens the server's copy with the edits one Undo away, Save saves and opens.
+    void openOverUnsavedEditsAsks()
+    {
+        openDemoRoute();
+        const int routeId = m_app->missions().routeId();
+        RouteLayer *route = routeLayer();
+        const QPoint at = missionMap()->mapToScene(route->waypointPosition(0) + QPointF(0, 120)).toPoint();
+        QTest::mouseClick(m_window, Qt::LeftButton, {}, at);
+        QTRY_COMPARE(route->count(), 5);
+
+        QObject *question = find<QObject>("openQuestion");
+        QVERIFY(question);
+        QVERIFY(!question->property("opened").toBool());
+        click("openRouteButton");
+        QTRY_VERIFY(question->property("opened").toBool());
+        QVERIFY2(text("openQuestionText").contains(QStringLiteral("unsaved edits")), qPrintable(text("openQuestionText")));
+        click("cancelOpenButton");
+        QTRY_VERIFY(!question->property("visible").toBool());
+        QCOMPARE(route->count(), 5);
+        QVERIFY(m_app->missions().document()->isModified());
+
+        click("openRouteButton");
+        QTRY_VERIFY(question->property("opened").toBool());
+        click("discardThenOpenButton");
+        QTRY_VERIFY(!question->property("visible").toBool());
+        QTRY_COMPARE(route->count(), 4);
+        QVERIFY(!m_app->missions().document()->isModified());
+        click("undoButton");
+        QTRY_COMPARE(route->count(), 5);
+        QVERIFY(m_app->missions().document()->isModified());
+
+        QSignalSpy saved(&m_app->missions(), &client::MissionController::saved);
+        QSignalSpy opened(&m_app->missions(), &client::MissionController::routeOpened);
+        click("openRouteButton");
+        QTRY_VERIFY(question->property("opened").toBool());
+        click("saveThenOpenButton");
+        QVERIFY(opened.wait(10000));
+        QCOMPARE(saved.count(), 1);
+        QCOMPARE(route->count(), 5);
+        QVERIFY(!m_app->missions().document()->isModified());
+        QCOMPARE(serverCopy(routeId).segments_size(), 5);
+    }
+
     // The route's server zone checks: shown as the server sent them (the demo route checks
     // aerodrome zones only), a click is one undo step, and the save carries it to the server.
     void serverZoneChecksInTheRoutePanel()

@@ -125,6 +125,10 @@ Pane {
                      onClicked: panel.preparation.uploader.cancel() }
         }
 
+        OpenQuestion {
+            missions: panel.missions
+        }
+
         UploadQuestion {
             uploader: panel.preparation.uploader
             onSaveAndUpload: panel.preparation.saveAndUpload()

@@ -14,6 +14,8 @@ QString writeFileAtomically(const QString &path, const QByteArray &data)
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly))
         return QCoreApplication::translate("AtomicFile", "Cannot write %1: %2").arg(path, file.errorString());
+    // 0600 whatever the umask: what is written this way (autosaves) is the operator's alone.
+    file.setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner);
     if (file.write(data) != data.size()) {
         const QString error = file.errorString();
         file.cancelWriting();

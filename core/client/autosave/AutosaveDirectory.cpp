@@ -1,5 +1,7 @@
 #include "AutosaveDirectory.h"
 
+#include "PrivateFiles.h"
+
 #include <QDateTime>
 #include <QDir>
 #include <QFileInfo>
@@ -76,7 +78,7 @@ std::pair<int, std::unique_ptr<QLockFile>> AutosaveDirectory::claimFreeSlot() co
 
 bool AutosaveDirectory::ensureExists(QString *error) const
 {
-    if (QDir().mkpath(m_path))
+    if (files::makePrivatePath(m_path)) // 0700: the routes are the operator's
         return true;
     if (error)
         *error = QCoreApplication::translate("AutosaveDirectory", "Cannot create the autosave folder %1").arg(m_path);

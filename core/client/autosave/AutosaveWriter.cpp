@@ -13,17 +13,20 @@ AutosaveWriter::AutosaveWriter(QString path)
 {
 }
 
-bool AutosaveWriter::queueWrite(AutosaveRecord header, mission::Route working)
+bool AutosaveWriter::queueWrite(AutosaveRecord header, mission::Route working, std::optional<mission::Route> baseline)
 {
     Job job;
     job.kind = Job::Write;
     job.header = std::move(header);
     job.header.working = std::move(working);
+    job.baseline = std::move(baseline);
     const std::lock_guard lock(m_mutex);
     const bool wasEmpty = m_jobs.empty();
-    if (!wasEmpty && m_jobs.back().kind == Job::Write)
-        m_jobs.back() = std::move(job); // the newest snapshot wins
-    else
+    if (!wasEmpty && m_jobs.back().kind == Job::Write) {
+        if (!job.baseline) // the newest snapshot wins, with the newest baseline
+            job.baseline = std::move(m_jobs.back().baseline);
+        m_jobs.back() = std::move(job);
+    } else
         m_jobs.push_back(std::move(job));
     return wasEmpty;
 }
@@ -39,7 +42,7 @@ bool AutosaveWriter::queueRemove(std::optional<mission::Route> baseline)
     // this one unless this removal brings none.
     std::optional<mission::Route> earlierBaseline;
     for (Job &waiting : m_jobs) {
-        if (waiting.kind == Job::Remove && waiting.baseline)
+        if (waiting.baseline)
             earlierBaseline = std::move(waiting.baseline);
     }
     if (!job.baseline)
@@ -86,6 +89,8 @@ QString AutosaveWriter::run(Job &job)
         emit removed();
         return {};
     }
+    if (job.baseline)
+        m_baseline = encodeAutosaveRoute(*job.baseline);
     const QByteArray data = encodeAutosave(job.header, encodeAutosaveRoute(job.header.working), m_baseline);
     const QString error = writeFileAtomically(m_path, data);
     if (!error.isEmpty()) {

@@ -32,9 +32,11 @@ public:
 
     QString path() const { return m_path; }
 
-    // Write `working` with `header`'s identity and the current baseline. True when drain() must be
+    // Write `working` with `header`'s identity and the current baseline, which `baseline` replaces
+    // first when given (undo went back to a route opened before). True when drain() must be
     // invoked (the queue was empty: no drain is on its way).
-    [[nodiscard]] bool queueWrite(AutosaveRecord header, mission::Route working);
+    [[nodiscard]] bool queueWrite(AutosaveRecord header, mission::Route working,
+                                  std::optional<mission::Route> baseline = std::nullopt);
     // Remove the file; when `baseline` is given, it becomes the baseline of the following writes
     // (encoded here, on the writer's thread, once per baseline).
     [[nodiscard]] bool queueRemove(std::optional<mission::Route> baseline = std::nullopt);
@@ -55,7 +57,7 @@ private:
     {
         enum Kind { Write, Remove } kind = Write;
         AutosaveRecord header; // Write: identity and time; header.working is the snapshot
-        std::optional<mission::Route> baseline; // Remove: the new baseline, if it moved
+        std::optional<mission::Route> baseline; // the new baseline, if it moved
     };
     QString run(Job &job);
 

@@ -8,6 +8,8 @@
 
 #include <QLoggingCategory>
 
+#include <utility>
+
 Q_LOGGING_CATEGORY(lcAutosave, "sortie.client.autosave")
 
 namespace sortie::client {
@@ -49,6 +51,7 @@ RouteAutosave::RouteAutosave(RouteDocument *document, const QString &directory, 
             takeBaseline();
     });
     connect(document, &RouteDocument::loaded, this, &RouteAutosave::takeBaseline);
+    connect(document, &RouteDocument::baselineChanged, this, [this] { m_baselineMoved = true; });
     takeBaseline();
     qCInfo(lcAutosave).noquote() << "autosaving to" << filePath();
 }
@@ -96,6 +99,7 @@ void RouteAutosave::takeBaseline()
         return;
     // The file goes and the route as it is now becomes the baseline, both after any write still
     // queued or running: a late write cannot bring the file back.
+    m_baselineMoved = false;
     if (m_writer->queueRemove(m_document->route()))
         drainLater();
 }
@@ -114,7 +118,10 @@ bool RouteAutosave::queueWrite()
     }
     header.savedAt = QDateTime::currentDateTimeUtc();
     // A copy of the value: the worker encodes it while the GUI goes on editing the original.
-    return m_writer->queueWrite(std::move(header), m_document->route());
+    std::optional<mission::Route> baseline;
+    if (std::exchange(m_baselineMoved, false))
+        baseline = m_document->baseline();
+    return m_writer->queueWrite(std::move(header), m_document->route(), std::move(baseline));
 }
 
 void RouteAutosave::writeLater()

@@ -22,7 +22,8 @@ class RouteDocument;
 // The GUI thread only copies the route (a value type); an AutosaveWriter on a worker thread of
 // this instance's own encodes and writes it, and removes the file, in the order they were asked
 // (AutosaveWriter.h). Its signals reach this object's thread and are re-emitted from here.
-// The instance holds its slot's lock while it lives. On destruction a pending write is done; the
+// When undo goes back over an open (RouteDocument::open), the file is written with the baseline of
+// the route undo brought back. The instance holds its slot's lock while it lives. On destruction a pending write is done; the
 // file stays if the document still has unsaved edits (the next start offers them), else it goes.
 class RouteAutosave : public QObject
 {
@@ -79,6 +80,7 @@ private:
     QString m_server;
     QString m_user;
     QString m_error;
+    bool m_baselineMoved = false; // the document's baseline changed since the writer was told
 };
 
 } // namespace sortie::client

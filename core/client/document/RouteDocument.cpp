@@ -10,6 +10,33 @@ namespace sortie::client {
 
 using namespace sortie::mission;
 
+// open()'s undo step: swaps the model's route and the document's baseline with the ones it holds,
+// so undo brings back the route that was open, its unsaved edits and what they were made against.
+class OpenRouteCommand : public QUndoCommand
+{
+public:
+    OpenRouteCommand(RouteDocument *document, Route route, const QString &text)
+        : QUndoCommand(text), m_document(document), m_route(route), m_baseline(std::move(route))
+    {
+    }
+    void redo() override
+    {
+        m_document->m_selection.clear();
+        Route route = m_document->route();
+        Route baseline = m_document->baseline();
+        m_document->m_model.resetRoute(std::move(m_route));
+        m_document->setBaseline(std::move(m_baseline));
+        m_route = std::move(route);
+        m_baseline = std::move(baseline);
+    }
+    void undo() override { redo(); } // a swap is its own inverse
+
+private:
+    RouteDocument *m_document;
+    Route m_route;    // the route not in the model now
+    Route m_baseline; // and the baseline that goes with it
+};
+
 RouteDocument::RouteDocument(QObject *parent)
     : QObject(parent)
     , m_editor(&m_model, &m_undo)
@@ -90,13 +117,29 @@ QList<int> RouteDocument::selectedRows() const
 void RouteDocument::load(Route route)
 {
     m_selection.clear();
-    m_model.resetRoute(std::move(route));
+    m_model.resetRoute(route);
     m_undo.clear();
     m_undo.setClean();
     m_analyzer.recomputeNow();
+    setBaseline(std::move(route));
     emit modifiedChanged();
     emit undoChanged();
     emit loaded();
+}
+
+void RouteDocument::open(Route route, const QString &text)
+{
+    if (!isModified() && !canUndo())
+        return load(std::move(route));
+    m_undo.push(new OpenRouteCommand(this, std::move(route), text));
+    m_undo.setClean();
+    m_analyzer.recomputeNow();
+}
+
+void RouteDocument::setBaseline(Route baseline)
+{
+    m_baseline = std::move(baseline);
+    emit baselineChanged();
 }
 
 void RouteDocument::selectRows(const QList<int> &rows)

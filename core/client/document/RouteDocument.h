@@ -59,6 +59,9 @@ public:
     mission::WaypointActionsModel *actionEditor() { return &m_actionEditor; }
     mission::SegmentPreview *preview() { return &m_preview; }
     const mission::Route &route() const { return m_model.route(); }
+    // The route as last loaded (opened, saved, followed from the server): what "unsaved edits"
+    // are measured against, and what both sides of a conflict started from.
+    const mission::Route &baseline() const { return m_baseline; }
 
     bool isModified() const { return !m_undo.isClean(); }
     bool canUndo() const { return m_undo.canUndo(); }
@@ -75,6 +78,10 @@ public:
 
     // Replaces the whole route (opened from the server or reloaded): not undoable, marks clean.
     void load(mission::Route route);
+    // Makes `route` the document and its new baseline, marked clean, without losing what undo can
+    // bring back: when the document has unsaved edits or an undo history, this is one undo step
+    // (`text`) that undo takes back, route and baseline together, edits and all; otherwise load().
+    void open(mission::Route route, const QString &text);
     void markSaved() { m_undo.setClean(); }
 
     Q_INVOKABLE void selectRows(const QList<int> &rows);
@@ -97,9 +104,13 @@ signals:
     void previewChanged();
     // load() replaced the route: a new baseline (what "unsaved edits" are measured against).
     void loaded();
+    // baseline() changed: by load(), or by open() and its undo and redo.
+    void baselineChanged();
 
 private:
+    friend class OpenRouteCommand;
     void setMessage(const QString &message);
+    void setBaseline(mission::Route baseline);
 
     mission::RouteModel m_model;
     QUndoStack m_undo;
@@ -109,6 +120,7 @@ private:
     mission::SegmentEditorModel m_segmentEditor;
     mission::WaypointActionsModel m_actionEditor;
     mission::SegmentPreview m_preview;
+    mission::Route m_baseline;
     QString m_message;
 };
 

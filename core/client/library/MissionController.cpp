@@ -12,7 +12,10 @@
 #include "LanguageChange.h"
 #include "Messages.pb.h"
 #include "RouteValidator.h"
+#include "SavedRouteMerge.h"
 #include "UploadReview.h"
+
+#include <utility>
 
 namespace sortie::client {
 
@@ -35,8 +38,9 @@ MissionController::MissionController(hci::HciClient *client, QObject *parent)
     i18n::onLanguageChange(this, [this] {
         if (m_messageWords)
             setMessage(m_messageWords);
+        if (isAskingToOpen())
+            emit openQuestionChanged();
     });
-    connect(&m_document, &RouteDocument::loaded, this, [this] { m_opened = m_document.route(); });
     connect(&m_preparation, &RoutePreparation::saveRequested, this, &MissionController::save);
     connect(this, &MissionController::saved, &m_preparation, &RoutePreparation::routeSaved);
 }
@@ -115,6 +119,59 @@ void MissionController::openRoute(int routeId)
 {
     if (!m_client)
         return;
+    if (m_document.isModified())
+        return askToOpen(routeId);
+    fetchAndOpen(routeId);
+}
+
+void MissionController::askToOpen(int routeId)
+{
+    m_askingToOpen = routeId;
+    emit openQuestionChanged();
+}
+
+QString MissionController::openQuestion() const
+{
+    if (!isAskingToOpen())
+        return {};
+    const QString mine = routeName().isEmpty() ? tr("The new route") : tr("\"%1\"").arg(routeName());
+    const int row = m_routes.rowOf(m_askingToOpen);
+    const QString theirs = row >= 0 ? m_routes.nameAt(row) : QString();
+    const QString question = m_askingToOpen == routeId()
+        ? tr("%1 has unsaved edits. Opening it again reads the server's copy. Save your edits first?").arg(mine)
+        : tr("%1 has unsaved edits. Save them before opening \"%2\"?").arg(mine, theirs);
+    return question + QLatin1Char(' ') + tr("If you discard them, Undo brings them back.");
+}
+
+void MissionController::saveThenOpen()
+{
+    if (!isAskingToOpen())
+        return;
+    const int id = std::exchange(m_askingToOpen, -1);
+    emit openQuestionChanged();
+    m_openAfterSave = id;
+    save();
+}
+
+void MissionController::discardThenOpen()
+{
+    if (!isAskingToOpen())
+        return;
+    const int id = std::exchange(m_askingToOpen, -1);
+    emit openQuestionChanged();
+    fetchAndOpen(id);
+}
+
+void MissionController::cancelOpen()
+{
+    if (!isAskingToOpen())
+        return;
+    m_askingToOpen = -1;
+    emit openQuestionChanged();
+}
+
+void MissionController::fetchAndOpen(int routeId)
+{
     request(m_client->getObject(HciObjectType::Route, routeId), tr("Opening the route"), [this](HciReply *reply) {
         if (!reply->isOk())
             return setMessage(tr("The route could not be opened: %1").arg(reply->error().message()));
@@ -122,11 +179,19 @@ void MissionController::openRoute(int routeId)
         if (!imported)
             return setMessage(tr("The route cannot be edited here: %1").arg(imported.error().toString()));
         setConflict(nullptr, {});
-        m_document.load(imported->route);
+        // Unsaved edits here (discarded by the operator, or made while the route was read) stay
+        // one undo step away.
+        const bool kept = m_document.isModified();
+        const QString discarded = routeName().isEmpty() ? tr("the new route") : routeName();
+        m_document.open(imported->route, tr("Open %1").arg(imported->route.settings.name));
         // The import's notices are sentences already made: they keep their language.
         const QString notices = imported->notices.isEmpty() ? QString() : QLatin1Char(' ') + imported->notices.join(QLatin1Char(' '));
-        setMessage([name = routeName(), version = reply->response<pb::GetObjectResponse>().object().route().version(), notices] {
-            return tr("Opened %1 (version %2).").arg(name).arg(version) + notices;
+        setMessage([name = routeName(), version = reply->response<pb::GetObjectResponse>().object().route().version(), notices,
+                    kept, discarded] {
+            QString text = tr("Opened %1 (version %2).").arg(name).arg(version);
+            if (kept)
+                text += QLatin1Char(' ') + tr("Undo brings back your unsaved edits of %1.").arg(discarded);
+            return text + notices;
         });
         emit routeChanged();
         emit routeOpened();
@@ -136,15 +201,16 @@ void MissionController::openRoute(int routeId)
 void MissionController::save()
 {
     if (!m_client || !m_client->session()->isReady())
-        return setMessage(tr("Not connected: your edits are kept; save again when the connection is back."));
+        return notSaved(tr("Not connected: your edits are kept; save again when the connection is back."));
     if (isBusy())
-        return setMessage(tr("Wait until %1 is done.").arg(m_activity.toLower()));
+        return notSaved(tr("Wait until %1 is done.").arg(m_activity.toLower()));
     // The validation gate: nothing with an error is saved (the message names the culprit).
     if (const QString refused = saveRefusal(validation()); !refused.isEmpty())
-        return setMessage(tr("Not saved: %1").arg(refused));
+        return notSaved(tr("Not saved: %1").arg(refused));
     const int id = routeId();
     if (id < 0) {
         m_saving = true;
+        m_sent = m_document.route();
         request(m_client->createOrUpdate(routeToHci(m_document.route())), tr("Saving"), [this](HciReply *reply) {
             m_saving = false;
             written(*reply, -1);
@@ -163,6 +229,7 @@ void MissionController::writeLocked(const pb::Route &route)
         QString refusal;
     };
     const int id = route.id();
+    m_sent = m_document.route();
     setActivity(tr("Locking the route"));
     hci::underLock<Written>(m_client, HciObjectType::Route, id, this, {
         [this, route, id](auto finish) {
@@ -182,9 +249,10 @@ void MissionController::writeLocked(const pb::Route &route)
             m_saving = false;
             setActivity({});
             if (!outcome.refusal.isEmpty())
-                return setMessage(tr("Not saved: the route is locked (%1).").arg(outcome.refusal));
-            if (outcome.reply)
-                written(*outcome.reply, id);
+                return notSaved(tr("Not saved: the route is locked (%1).").arg(outcome.refusal));
+            if (!outcome.reply)
+                return notSaved(tr("Not saved: another route was opened meanwhile."));
+            written(*outcome.reply, id);
         },
         {}, {}});
 }
@@ -193,8 +261,9 @@ void MissionController::written(const HciReply &reply, int id)
 {
     if (!reply.isOk()) {
         if (id < 0 || reply.error().kind() != hci::HciError::Kind::Server)
-            return setMessage(tr("Not saved: %1").arg(reply.error().message()));
+            return notSaved(tr("Not saved: %1").arg(reply.error().message()));
         // Refused: find out whether someone else saved a newer version meanwhile.
+        m_openAfterSave = -1;
         const QString refusal = reply.error().message();
         request(m_client->getObject(HciObjectType::Route, id), tr("Reading the server's copy"), [this, refusal](HciReply *check) {
             const pb::Route &theirs = check->response<pb::GetObjectResponse>().object().route();
@@ -209,13 +278,31 @@ void MissionController::written(const HciReply &reply, int id)
     const pb::Route &stored = reply.response<pb::CreateOrUpdateObjectResponse>().object().route();
     auto imported = routeFromHci(stored);
     if (!imported)
-        return setMessage(tr("Saved, but the server's answer cannot be read back: %1").arg(imported.error().toString()));
+        return notSaved(tr("Saved, but the server's answer cannot be read back: %1").arg(imported.error().toString()));
+    // The server's copy becomes the baseline; edits made while the save was in flight are not in
+    // it, so they go over it as one undo step, still unsaved.
+    const bool editedMeanwhile = !(m_document.route() == m_sent);
+    mission::Route current = editedMeanwhile ? m_document.route() : mission::Route{};
     m_document.load(imported->route);
+    if (editedMeanwhile)
+        m_document.editor()->replaceRoute(overSavedRoute(std::move(current), m_sent, imported->route), tr("Edits made while saving"));
+    m_sent = {};
     setConflict(nullptr, {});
-    setMessage([name = routeName(), version = stored.version()] { return tr("Saved %1 (version %2).").arg(name).arg(version); });
+    setMessage([name = routeName(), version = stored.version(), editedMeanwhile] {
+        const QString text = tr("Saved %1 (version %2).").arg(name).arg(version);
+        return editedMeanwhile ? text + QLatin1Char(' ') + tr("The edits you made while it was saving are kept, not saved yet.") : text;
+    });
     emit routeChanged();
     emit saved(stored.version());
     refresh();
+    if (const int next = std::exchange(m_openAfterSave, -1); next >= 0)
+        openRoute(next); // asks again if edits were made while saving
+}
+
+void MissionController::notSaved(const QString &message)
+{
+    m_openAfterSave = -1;
+    setMessage(message);
 }
 
 void MissionController::keepMine()
@@ -258,7 +345,8 @@ void MissionController::routeEvent(const pb::EventWrapper &event)
     if (!m_document.isModified()) {
         // Nothing of ours to lose: follow the server.
         if (auto imported = routeFromHci(theirs)) {
-            m_document.load(imported->route);
+            // As one undo step when undo holds something (edits an open or Take theirs set aside).
+            m_document.open(imported->route, tr("Update from the server (version %1)").arg(theirs.version()));
             setMessage([version = theirs.version()] { return tr("Updated from the server (version %1).").arg(version); });
             emit routeChanged();
         }
@@ -306,7 +394,7 @@ void MissionController::setMessage(std::function<QString()> words)
 
 void MissionController::setConflict(const pb::Route *theirs, const QString &text)
 {
-    if (!theirs || !m_conflict.set(*theirs, m_document.route(), m_opened))
+    if (!theirs || !m_conflict.set(*theirs, m_document.route(), m_document.baseline()))
         m_conflict.clear();
     m_conflictText = m_conflict.isActive() ? text : QString();
     emit conflictChanged();

@@ -24,8 +24,11 @@ namespace sortie::client {
 
 // The route library: the server's routes to pick from, the one open for editing (a RouteDocument),
 // saving it under a lock, noticing when someone else changed it meanwhile (and offering a clear
-// choice: keep ours or take theirs). Edits stay in the document whatever the connection does. What
-// the open route becomes for a vehicle (Process, Upload) is its RoutePreparation's.
+// choice: keep ours or take theirs). Edits stay in the document whatever the connection does:
+// opening a route over unsaved edits first asks (Save, Discard, Cancel; a question posed as state,
+// which the view only shows), and what is discarded is one undo step away; an edit made while a
+// save is in flight is laid over the server's copy rather than lost. What the open route becomes
+// for a vehicle (Process, Upload) is its RoutePreparation's.
 class MissionController : public QObject
 {
     Q_OBJECT
@@ -48,6 +51,10 @@ class MissionController : public QObject
     Q_PROPERTY(int progressValue READ progressValue NOTIFY progressChanged)
     Q_PROPERTY(int progressMaximum READ progressMaximum NOTIFY progressChanged)
     Q_PROPERTY(QString message READ message NOTIFY messageChanged)
+    // openRoute() waits for an answer: the open route has unsaved edits (saveThenOpen,
+    // discardThenOpen, cancelOpen).
+    Q_PROPERTY(bool askingToOpen READ isAskingToOpen NOTIFY openQuestionChanged)
+    Q_PROPERTY(QString openQuestion READ openQuestion NOTIFY openQuestionChanged)
 
 public:
     explicit MissionController(hci::HciClient *client, QObject *parent = nullptr);
@@ -68,10 +75,19 @@ public:
     int progressValue() const { return m_progressValue; }
     int progressMaximum() const { return m_progressMaximum; }
     QString message() const { return m_message; }
+    bool isAskingToOpen() const { return m_askingToOpen >= 0; }
+    QString openQuestion() const;
 
     // Reads the server's routes and vehicles (done by itself whenever the session becomes ready).
     Q_INVOKABLE void refresh();
+    // Opens the server's route (again, if it is the one open). Over unsaved edits it asks first.
     Q_INVOKABLE void openRoute(int routeId);
+    // The answers to `openQuestion`. Save: the route asked about opens once the save succeeded (a
+    // save that fails or meets a conflict leaves it open, as a save does). Discard: it opens as
+    // one undo step, so Undo brings the edits back. Cancel: nothing happens.
+    Q_INVOKABLE void saveThenOpen();
+    Q_INVOKABLE void discardThenOpen();
+    Q_INVOKABLE void cancelOpen();
     // Saves under the route's lock, unless validation finds an error (the message names it). When
     // the server's copy changed since it was opened, nothing is overwritten: `conflict` says so and
     // keepMine() or takeTheirs() decides.
@@ -90,6 +106,7 @@ signals:
     void activityChanged();
     void progressChanged();
     void messageChanged();
+    void openQuestionChanged();
     void saved(int version);
 
 private:
@@ -102,6 +119,10 @@ private:
     // words are made by `words`, from values it captured.
     void setMessage(std::function<QString()> words);
     void setConflict(const com::ugcs::ucs::proto::Route *theirs, const QString &text);
+    void fetchAndOpen(int routeId);
+    void askToOpen(int routeId);
+    // A save that did not happen: says why, and forgets the open that was to follow it.
+    void notSaved(const QString &message);
     void writeLocked(const com::ugcs::ucs::proto::Route &route);
     void written(const hci::HciReply &reply, int routeId);
     void routeEvent(const com::ugcs::ucs::proto::EventWrapper &event);
@@ -115,7 +136,9 @@ private:
     RouteDocument m_document;
     RoutePreparation m_preparation{&m_document};
     RouteConflict m_conflict; // the server's copy, when it differs
-    mission::Route m_opened;  // the route as last opened or saved: what both sides of a conflict edited
+    mission::Route m_sent;    // what the save in flight sent: edits made after it are not saved by it
+    int m_askingToOpen = -1;  // the route openQuestion is about
+    int m_openAfterSave = -1; // the route saveThenOpen() opens once the save succeeded
     QString m_conflictText;
     QString m_activity;
     int m_progressValue = 0;

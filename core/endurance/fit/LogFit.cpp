@@ -19,8 +19,8 @@ LoadedFlights loadFlights(const QStringList &paths, const QString &vehicle)
             loaded.failures << error;
             continue;
         }
-        if (!log->stoppedAt().isEmpty())
-            loaded.warnings << QStringLiteral("%1 is damaged; read up to its last good record: %2").arg(path, log->stoppedAt());
+        if (const QString damage = log->damage(); !damage.isEmpty())
+            loaded.warnings << QStringLiteral("%1 is damaged: %2").arg(path, damage);
         int used = 0;
         for (int v = 0; v < int(log->vehicles().size()); ++v) {
             const flightlog::FlightLog::Vehicle &info = log->vehicles()[size_t(v)];

@@ -131,21 +131,26 @@ std::unique_ptr<FlightLog> FlightLog::open(const QString &path, QString *error)
     if (q.lastError().isValid())
         stop(QObject::tr("the vehicle list is damaged: %1").arg(q.lastError().text()));
 
-    if (q.exec(QStringLiteral("SELECT vehicle, data FROM blocks ORDER BY id"))) {
-        qint64 good = 0, lastTime = 0;
+    if (q.exec(QStringLiteral("SELECT id, vehicle, t0, data FROM blocks ORDER BY id"))) {
+        qint64 good = 0, lastTime = 0, bad = 0;
         while (q.next()) {
-            const int index = vehicleOf.value(q.value(0).toLongLong(), -1);
-            const QByteArray data = q.value(1).toByteArray();
+            const qint64 vehicleRow = q.value(1).toLongLong();
+            const int index = vehicleOf.value(vehicleRow, -1);
+            const QByteArray data = q.value(3).toByteArray();
             std::string problem;
             if (index < 0 || !log->m_vehicles[size_t(index)].appendBlock(std::string(data.constData(), size_t(data.size())), &problem)) {
-                stop(QObject::tr("block %1 (after %2 good ones, %3) is damaged: %4")
-                         .arg(good + 1).arg(good).arg(good ? timeText(lastTime) : QObject::tr("at the start"),
-                              index < 0 ? QObject::tr("unknown vehicle") : QString::fromStdString(problem)));
-                break;
+                // One bad block hides nothing else: say which, and go on.
+                if (++bad <= kMaxSkippedNamed)
+                    log->m_skipped << QObject::tr("block %1 (vehicle row %2, from %3) is skipped: %4")
+                                          .arg(q.value(0).toLongLong()).arg(vehicleRow).arg(timeText(q.value(2).toLongLong()),
+                                               index < 0 ? QObject::tr("unknown vehicle") : QString::fromStdString(problem));
+                continue;
             }
             lastTime = std::max<qint64>(lastTime, log->m_vehicles[size_t(index)].blocks.back().t1);
             ++good;
         }
+        if (bad > kMaxSkippedNamed)
+            log->m_skipped << QObject::tr("%n more damaged block(s) skipped", nullptr, int(bad - kMaxSkippedNamed));
         if (q.lastError().isValid())
             stop(QObject::tr("stopped after %1 good blocks (%2): %3").arg(good).arg(good ? timeText(lastTime) : QObject::tr("none"), q.lastError().text()));
     } else {
@@ -181,7 +186,17 @@ std::unique_ptr<FlightLog> FlightLog::open(const QString &path, QString *error)
     log->finish();
     if (!log->m_stoppedAt.isEmpty())
         qCWarning(lcFlightLog) << path << "read partly:" << log->m_stoppedAt;
+    for (const QString &skipped : std::as_const(log->m_skipped))
+        qCWarning(lcFlightLog).noquote() << path << skipped;
     return log;
+}
+
+QString FlightLog::damage() const
+{
+    QStringList parts = m_skipped;
+    if (!m_stoppedAt.isEmpty())
+        parts << QObject::tr("read up to the last good record: %1").arg(m_stoppedAt);
+    return parts.join(QStringLiteral("; "));
 }
 
 void FlightLog::addVehicle(Vehicle v)

@@ -4,6 +4,7 @@
 #include "VehicleTypes.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <array>
 #include <atomic>
@@ -15,8 +16,10 @@ namespace sortie::flightlog {
 
 // A flight log opened for reading: its vehicles, events and uploaded routes, and the telemetry
 // blocks kept encoded in memory (about 2 bytes a value) and decoded when asked for. Opening reads
-// the file once, checking every block; a damaged or cut-short log is read up to its last good
-// block and `stoppedAt()` says where and why reading stopped.
+// the file once, checking every block. A damaged block (one that fails its check, or names a
+// vehicle the log does not hold) is skipped, and reading goes on: `skipped()` names each. A log
+// that cannot be read further (cut short, a damaged table) is read up to there, and `stoppedAt()`
+// says where and why reading stopped.
 class FlightLog
 {
 public:
@@ -70,6 +73,12 @@ public:
     int64_t end() const { return m_end; }
     // Empty when the whole file was read; else where reading stopped and why.
     const QString &stoppedAt() const { return m_stoppedAt; }
+    // The damaged blocks reading went past, one sentence each ("block 7 of vehicle row 3 … is
+    // skipped: unknown vehicle"); the first kMaxSkippedNamed, then one line counting the rest.
+    const QStringList &skipped() const { return m_skipped; }
+    static constexpr int kMaxSkippedNamed = 20;
+    // stoppedAt() and skipped() in one text for an operator; empty when the whole file was read.
+    QString damage() const;
 
     // Every sample of a field between two times (inclusive), time order.
     std::vector<vehicle::TelemetrySample> series(int vehicle, vehicle::TelemetryField field,
@@ -97,6 +106,7 @@ private:
     std::vector<Event> m_events;
     int64_t m_start = 0, m_end = 0;
     QString m_stoppedAt;
+    QStringList m_skipped;
 };
 
 } // namespace sortie::flightlog

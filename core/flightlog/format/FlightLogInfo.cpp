@@ -48,7 +48,7 @@ QJsonObject logInfoJson(const FlightLog &log)
         events.append(o);
     }
     QJsonObject info{{"file", log.path()}, {"vehicles", vehicles}, {"events", events},
-                     {"complete", log.stoppedAt().isEmpty()}};
+                     {"complete", log.damage().isEmpty()}};
     if (log.end() > 0) {
         info.insert(QStringLiteral("start"), utc(log.start()));
         info.insert(QStringLiteral("end"), utc(log.end()));
@@ -56,6 +56,8 @@ QJsonObject logInfoJson(const FlightLog &log)
     }
     if (!log.stoppedAt().isEmpty())
         info.insert(QStringLiteral("stoppedAt"), log.stoppedAt());
+    if (!log.skipped().isEmpty())
+        info.insert(QStringLiteral("skipped"), QJsonArray::fromStringList(log.skipped()));
     return info;
 }
 
@@ -67,6 +69,8 @@ QString logInfoText(const FlightLog &log)
         out += QObject::tr("span:     %1 to %2 (%3 s)\n").arg(utc(log.start()), utc(log.end())).arg(double(log.end() - log.start()) / 1000.0, 0, 'f', 1);
     if (!log.stoppedAt().isEmpty())
         out += QObject::tr("DAMAGED:  read up to the last good record; %1\n").arg(log.stoppedAt());
+    for (const QString &skipped : log.skipped())
+        out += QObject::tr("DAMAGED:  %1\n").arg(skipped);
     out += QObject::tr("vehicles: %1\n").arg(log.vehicles().size());
     for (const FlightLog::Vehicle &v : log.vehicles()) {
         out += QCoreApplication::translate("FlightLogInfo", "\n  %1 (%2%3%4): %5 samples").arg(v.name(), v.identity.protocol,

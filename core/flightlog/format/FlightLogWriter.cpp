@@ -2,9 +2,11 @@
 
 #include "FlightLogLog.h"
 #include "FlightLogSchema.h"
+#include "PrivateFiles.h"
 
 #include <QDir>
 #include <QFileInfo>
+#include <QLockFile>
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QUuid>
@@ -27,12 +29,33 @@ qint64 threadCpuNs()
     return qint64(ts.tv_sec) * 1000000000 + ts.tv_nsec;
 }
 
+// The lock a writer holds on the log it writes: what another process's pruning asks first.
+QString lockPath(const QString &log)
+{
+    return log + QStringLiteral(".lock");
+}
+
+std::unique_ptr<QLockFile> lockLog(const QString &log)
+{
+    auto lock = std::make_unique<QLockFile>(lockPath(log));
+    lock->setStaleLockTime(0); // only a dead holder makes it stale, however long a flight lasts
+    return lock->tryLock(0) ? std::move(lock) : nullptr;
+}
+
 QString partPath(const QString &base, int part)
 {
     if (part <= 1)
         return base;
     const QFileInfo info(base);
     return info.dir().filePath(QStringLiteral("%1-%2%3").arg(info.completeBaseName()).arg(part).arg(QLatin1String(schema::kSuffix)));
+}
+quint64 valueCount(const RecordingChunk &chunk)
+{
+    quint64 count = 0;
+    for (const RecordedSamples &s : chunk.samples)
+        for (const FieldSamples &f : s.fields)
+            count += f.samples.size();
+    return count;
 }
 } // namespace
 
@@ -52,16 +75,30 @@ FlightLogWriter::~FlightLogWriter()
 
 bool FlightLogWriter::open(QString *error)
 {
-    QDir().mkpath(QFileInfo(m_basePath).absolutePath());
+    if (!files::makePrivatePath(QFileInfo(m_basePath).absolutePath(), error))
+        return false;
     m_parts = 0;
     return openPart(m_basePath, error);
 }
 
 bool FlightLogWriter::openPart(const QString &path, QString *error)
 {
-    m_db = schema::open(path, m_connection, false, error);
-    if (!m_db.isOpen())
+    m_lock = lockLog(path);
+    if (!m_lock) {
+        if (error)
+            *error = tr("%1 is being written by another process").arg(path);
         return false;
+    }
+    // 0600 before SQLite opens it: the journals it makes beside it take the file's mode.
+    if (!files::createPrivateFile(path, error)) {
+        m_lock.reset();
+        return false;
+    }
+    m_db = schema::open(path, m_connection, false, error);
+    if (!m_db.isOpen()) {
+        m_lock.reset();
+        return false;
+    }
     QSqlQuery q(m_db);
     // WAL: a commit appends to the log file, readers (a replay of the running session) never block
     // the writer, and a torn last transaction is ignored on the next open. FULL syncs the WAL at each
@@ -72,11 +109,13 @@ bool FlightLogWriter::openPart(const QString &path, QString *error)
         if (error)
             *error = tr("%1: the log cannot use a write-ahead journal").arg(path);
         m_db.close();
+        m_lock.reset();
         return false;
     }
     q.exec(QStringLiteral("PRAGMA synchronous=FULL"));
     if (!schema::create(m_db, error)) {
         m_db.close();
+        m_lock.reset();
         return false;
     }
     {
@@ -94,6 +133,15 @@ void FlightLogWriter::close()
 {
     if (!m_db.isValid())
         return;
+    if (m_db.isOpen() && !m_unwritten.empty()) { // a last try: the disk may have room again
+        QString error;
+        while (!m_unwritten.empty() && commit(m_unwritten.front(), &error))
+            m_unwritten.pop_front();
+        if (!m_unwritten.empty())
+            qCWarning(lcFlightLog).noquote() << m_unwritten.size() << "recorded chunks could not be written to" << currentPath() << ":" << error;
+        m_unwritten.clear();
+        m_unwrittenValues = 0;
+    }
     if (m_db.isOpen()) {
         QSqlQuery q(m_db);
         q.exec(QStringLiteral("PRAGMA wal_checkpoint(TRUNCATE)")); // a closed log is one file again
@@ -102,6 +150,7 @@ void FlightLogWriter::close()
     }
     m_db = QSqlDatabase();
     QSqlDatabase::removeDatabase(m_connection);
+    m_lock.reset(); // after the file is closed: a pruning process may delete it from now on
 }
 
 QString FlightLogWriter::currentPath() const
@@ -121,20 +170,64 @@ void FlightLogWriter::write(const RecordingChunk &chunk)
         return;
     const qint64 start = threadCpuNs();
     QString error;
-    if (!writeChunk(chunk, &error)) {
-        m_db.rollback();
+    // What failed before goes first, in order, so the log's blocks stay in time order.
+    bool ok = true;
+    while (ok && !m_unwritten.empty()) {
+        ok = commit(m_unwritten.front(), &error);
+        if (ok) {
+            m_unwrittenValues -= std::min(m_unwrittenValues, valueCount(m_unwritten.front()));
+            m_unwritten.pop_front();
+        }
+    }
+    ok = ok && commit(chunk, &error);
+    if (!ok) {
+        keepUnwritten(chunk);
         if (!m_failed) { // say it once, not every second
             m_failed = true;
             qCWarning(lcFlightLog) << "recording failed:" << error;
-            emit errorOccurred(tr("Recording to %1 failed: %2").arg(currentPath(), error));
+            emit errorOccurred(tr("Recording to %1 failed: %2. What is recorded meanwhile is kept and written once it can be.")
+                                   .arg(currentPath(), error));
         }
     } else {
+        if (m_failed) {
+            qCInfo(lcFlightLog) << "recording resumed: the chunks that had failed are written";
+            emit errorOccurred(m_droppedValues ? tr("Recording to %1 resumed; %n value(s) recorded while it failed could not be kept.", nullptr,
+                                                    int(std::min<quint64>(m_droppedValues, INT_MAX))).arg(currentPath())
+                                               : QString());
+        }
         m_failed = false;
+        m_droppedValues = 0;
         const qint64 maxFile = m_maxFileBytes.load();
         if (maxFile > 0 && sizeOnDisk() > maxFile)
             rotate();
     }
     m_cpuNs += threadCpuNs() - start;
+}
+
+bool FlightLogWriter::commit(const RecordingChunk &chunk, QString *error)
+{
+    if (writeChunk(chunk, error))
+        return true;
+    m_db.rollback();
+    // The rollback took back the vehicle rows this transaction inserted: look them up (and insert
+    // them) again rather than name rows that do not exist.
+    m_vehicleRows.clear();
+    return false;
+}
+
+void FlightLogWriter::keepUnwritten(const RecordingChunk &chunk)
+{
+    m_unwritten.push_back(chunk);
+    m_unwrittenValues += valueCount(chunk);
+    // Bounded: beyond the limit the oldest telemetry goes (its vehicles, events and routes stay).
+    for (RecordingChunk &oldest : m_unwritten) {
+        if (m_unwrittenValues <= kMaxUnwrittenValues)
+            break;
+        const quint64 values = valueCount(oldest);
+        oldest.samples.clear();
+        m_unwrittenValues -= std::min(m_unwrittenValues, values);
+        m_droppedValues += values;
+    }
 }
 
 qint64 FlightLogWriter::vehicleRow(const QString &key)
@@ -171,6 +264,13 @@ bool FlightLogWriter::writeChunk(const RecordingChunk &chunk, QString *error)
         return false;
     }
     QSqlQuery q(m_db);
+    const auto rowOf = [this, error](const QString &key, qint64 *row) {
+        *row = vehicleRow(key);
+        if (*row < 0)
+            *error = tr("no row for vehicle %1: %2").arg(key, m_db.lastError().text());
+        return *row >= 0;
+    };
+    quint64 values = 0, blocks = 0, blockBytes = 0; // counted once committed
     for (const RecordedVehicle &v : chunk.vehicles) {
         m_vehicles.insert(v.key, v);
         q.prepare(QStringLiteral("INSERT INTO vehicles(key, name, protocol, type, autopilot) VALUES (?, ?, ?, ?, ?)"
@@ -201,22 +301,28 @@ bool FlightLogWriter::writeChunk(const RecordingChunk &chunk, QString *error)
             if (!count)
                 continue;
             const std::string block = TelemetryBlockCodec::encode(s.fields);
-            q.addBindValue(vehicleRow(s.vehicleKey));
+            qint64 row = -1;
+            if (!rowOf(s.vehicleKey, &row))
+                return false;
+            q.addBindValue(row);
             q.addBindValue(qint64(t0));
             q.addBindValue(qint64(t1));
             q.addBindValue(qint64(count));
             q.addBindValue(QByteArray::fromRawData(block.data(), qsizetype(block.size())));
             if (!q.exec())
                 return failed(q);
-            m_values += count;
-            ++m_blocks;
-            m_blockBytes += block.size();
+            values += count;
+            ++blocks;
+            blockBytes += block.size();
         }
     }
     if (!chunk.events.empty()) {
         q.prepare(QStringLiteral("INSERT INTO events(vehicle, time, kind, text, ok) VALUES (?, ?, ?, ?, ?)"));
         for (const RecordedEvent &e : chunk.events) {
-            q.addBindValue(e.vehicleKey.isEmpty() ? QVariant() : QVariant(vehicleRow(e.vehicleKey)));
+            qint64 row = -1;
+            if (!e.vehicleKey.isEmpty() && !rowOf(e.vehicleKey, &row))
+                return false;
+            q.addBindValue(e.vehicleKey.isEmpty() ? QVariant() : QVariant(row));
             q.addBindValue(qint64(e.time));
             q.addBindValue(notNull(e.kind));
             q.addBindValue(notNull(e.text));
@@ -229,7 +335,10 @@ bool FlightLogWriter::writeChunk(const RecordingChunk &chunk, QString *error)
         q.prepare(QStringLiteral("INSERT INTO missions(vehicle, time, items) VALUES (?, ?, ?)"));
         for (const RecordedMission &m : chunk.missions) {
             m_lastMissions.insert(m.vehicleKey, m);
-            q.addBindValue(vehicleRow(m.vehicleKey));
+            qint64 row = -1;
+            if (!rowOf(m.vehicleKey, &row))
+                return false;
+            q.addBindValue(row);
             q.addBindValue(qint64(m.time));
             q.addBindValue(QString::fromUtf8(schema::missionToJson(m.items)));
             if (!q.exec())
@@ -240,6 +349,9 @@ bool FlightLogWriter::writeChunk(const RecordingChunk &chunk, QString *error)
         *error = m_db.lastError().text();
         return false;
     }
+    m_values += values;
+    m_blocks += blocks;
+    m_blockBytes += blockBytes;
     return true;
 }
 
@@ -270,8 +382,8 @@ void FlightLogWriter::rotate()
         carry.vehicles.push_back(v);
     for (const RecordedMission &m : std::as_const(m_lastMissions))
         carry.missions.push_back(m);
-    if (!writeChunk(carry, &error))
-        m_db.rollback();
+    if (!commit(carry, &error))
+        keepUnwritten(carry);
     if (m_maxFolderBytes.load() > 0)
         pruneFolder(QFileInfo(next).absolutePath(), m_maxFolderBytes.load(), next);
     emit rotated(next);
@@ -337,6 +449,13 @@ QStringList FlightLogWriter::pruneFolder(const QString &folder, qint64 maxBytes,
             break;
         if (f.absoluteFilePath() == kept)
             continue;
+        // A log some writer holds the lock of (this process's, another client's, a `sortie-log
+        // record`) is being written: never deleted. Held while deleting, so none starts meanwhile.
+        const auto lock = lockLog(f.absoluteFilePath());
+        if (!lock) {
+            qCInfo(lcFlightLog) << "kept" << f.fileName() << "(being written by another recording)";
+            continue;
+        }
         total -= sizeWithJournal(f);
         QFile::remove(f.absoluteFilePath());
         QFile::remove(f.absoluteFilePath() + QStringLiteral("-wal"));

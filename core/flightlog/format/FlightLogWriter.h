@@ -8,6 +8,10 @@
 #include <QSqlDatabase>
 
 #include <atomic>
+#include <deque>
+#include <memory>
+
+class QLockFile;
 
 namespace sortie::flightlog {
 
@@ -21,6 +25,11 @@ struct RecordingLimits
 // Writes recording chunks into a SQLite flight log (docs/flightlog.md). Lives on the recorder's
 // writer thread: the database connection is created, used and closed there. Each chunk is one
 // transaction, committed with the WAL synced, so a killed process loses only the chunk in flight.
+// A chunk whose commit fails (disk full, an I/O error) is rolled back whole, vehicle rows it made
+// included, and kept: the next write commits it first, in order, then the new one (up to
+// kMaxUnwrittenValues values are kept; beyond that the oldest chunks' telemetry is dropped, and
+// counted). While a log is being written, a lock file beside it (<log>.lock) tells pruneFolder()
+// of another process to leave it alone.
 class FlightLogWriter : public QObject
 {
     Q_OBJECT
@@ -44,6 +53,9 @@ public:
 
     QString currentPath() const;
     Stats stats() const;
+    // Chunks whose commit failed, waiting to be written again.
+    int unwrittenChunks() const { return int(m_unwritten.size()); }
+    static constexpr quint64 kMaxUnwrittenValues = 2'000'000; // about 32 MB of samples
 
     // New limits, from any thread: every later write checks against them.
     void setLimits(RecordingLimits limits);
@@ -52,8 +64,9 @@ public:
     void enforceLimits();
     RecordingLimits limits() const { return {m_maxFileBytes.load(), m_maxFolderBytes.load()}; }
 
-    // Deletes the oldest *.sortielog files in `folder` (never `keep`) until the folder holds at most
-    // maxBytes of them; returns the files removed.
+    // Deletes the oldest *.sortielog files in `folder` (never `keep`, never one a live writer holds
+    // the lock of, in this process or another) until the folder holds at most maxBytes of them;
+    // returns the files removed.
     static QStringList pruneFolder(const QString &folder, qint64 maxBytes, const QString &keep);
     // What the *.sortielog files in `folder` (with their journals) take on disk, and how many there are.
     static qint64 folderBytes(const QString &folder, int *logs = nullptr);
@@ -65,6 +78,9 @@ signals:
 private:
     bool openPart(const QString &path, QString *error);
     bool writeChunk(const RecordingChunk &chunk, QString *error);
+    // writeChunk(), rolled back whole when it fails.
+    bool commit(const RecordingChunk &chunk, QString *error);
+    void keepUnwritten(const RecordingChunk &chunk);
     qint64 vehicleRow(const QString &key);
     qint64 sizeOnDisk();
     void rotate();
@@ -77,6 +93,10 @@ private:
     QHash<QString, qint64> m_vehicleRows;
     QHash<QString, RecordedVehicle> m_vehicles;          // to repeat in a new part
     QHash<QString, RecordedMission> m_lastMissions;      // likewise
+    std::deque<RecordingChunk> m_unwritten;              // failed commits, oldest first
+    quint64 m_unwrittenValues = 0;
+    quint64 m_droppedValues = 0;
+    std::unique_ptr<QLockFile> m_lock;                   // the part being written
     bool m_failed = false;
     std::atomic<quint64> m_values{0}, m_blocks{0}, m_blockBytes{0};
     std::atomic<qint64> m_cpuNs{0};

@@ -2,6 +2,7 @@
 
 #include "FlightLogLog.h"
 #include "FlightLogSchema.h"
+#include "PrivateFiles.h"
 
 #include <QDateTime>
 #include <QDir>
@@ -35,9 +36,19 @@ FlightRecorder::~FlightRecorder()
 
 QString FlightRecorder::sessionPath(const QString &folder)
 {
-    return QDir(folder).filePath(QStringLiteral("session-%1%2")
-                                     .arg(QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd-HHmmss")),
-                                          QLatin1String(schema::kSuffix)));
+    const QString stamp = QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd-HHmmss"));
+    const QString first = QDir(folder).filePath(QStringLiteral("session-%1%2").arg(stamp, QLatin1String(schema::kSuffix)));
+    if (!files::makePrivatePath(folder))
+        return first; // the writer says why it cannot write there
+    // Claimed with O_EXCL: two clients started in the same second each get a file of their own
+    // ("-c2": never "-2", which names a log's second part).
+    for (int n = 1; n <= 999; ++n) {
+        const QString path = n == 1 ? first
+                                    : QDir(folder).filePath(QStringLiteral("session-%1-c%2%3").arg(stamp).arg(n).arg(QLatin1String(schema::kSuffix)));
+        if (files::claimNewFile(path))
+            return path;
+    }
+    return first;
 }
 
 bool FlightRecorder::start(QString *error)

@@ -66,7 +66,9 @@ public:
     QString errorString() const { return m_error; }
     FlightLogWriter::Stats stats() const; // of the last recording once stopped
 
-    // A file name for a session starting now, in `folder`: session-20261124-061423.sortielog.
+    // A new file for a session starting now, in `folder` (made private if it is missing), created
+    // exclusively (0600): session-20261124-061423.sortielog, or session-20261124-061423-c2.sortielog
+    // when another client took that name in the same second.
     static QString sessionPath(const QString &folder);
 
 signals:

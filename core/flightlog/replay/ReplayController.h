@@ -85,7 +85,7 @@ public:
     ~ReplayController() override;
 
     // Opens a log file; false with errorString when it cannot be read at all. A damaged log opens
-    // up to its last good block, with `warning` saying where it stopped.
+    // with its damaged blocks skipped (or up to where it cannot be read further), `warning` saying which.
     Q_INVOKABLE bool open(const QString &pathOrUrl); // a path or a file: URL
     // A log built elsewhere (the server's history).
     void open(std::unique_ptr<FlightLog> log);
@@ -97,7 +97,7 @@ public:
     const FlightLog *log() const { return m_log.get(); }
     QString path() const { return m_log ? m_log->path() : QString(); }
     QString errorString() const { return m_error; }
-    QString warning() const { return m_log ? m_log->stoppedAt() : QString(); }
+    QString warning() const { return m_log ? m_log->damage() : QString(); }
     qint64 start() const { return m_log ? m_log->start() : 0; }
     qint64 end() const { return m_log ? m_log->end() : 0; }
     qint64 position() const { return m_position; }
