@@ -33,7 +33,7 @@ MainWindow::MainWindow(client::ClientGraph &graph, AppSettings &settings, const 
     if (!m_engine->rootObjects().isEmpty())
         m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());
     if (!m_window && m_loadWarnings.isEmpty())
-        m_loadWarnings << QStringLiteral("Main.qml made no window");
+        m_loadWarnings << QStringLiteral("Main.qml made no window"); // i18n: not text (a load diagnostic for tests and logs)
     qCInfo(lcMainWindow).noquote() << "settings wired:" << m_settingsWiring.wiring().join(QStringLiteral("; "));
 }
 
