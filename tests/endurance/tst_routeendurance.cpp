@@ -85,6 +85,7 @@ private slots:
         QCOMPARE(endurance.changeCount(), 1);
         QCOMPARE(endurance.estimate()->changes.at(0).at.segment + 1, 3); // at waypoint 3
         QCOMPARE(endurance.noReturnLeg().toInt(), 2);
+        QVERIFY(endurance.noReturnDistance().isValid()); // missing would read as 0 m
         QCOMPARE(endurance.noReturnDistance().toDouble(), endurance.estimate()->pointOfNoReturn->distance);
         // Home from 1 km out, 30 m up: 8 Wh back at cruise, 1.5 Wh down.
         QVERIFY(std::abs(endurance.energyHomeWh(geodesicDirect(kOrigin, 90, 1000).point.latitude,

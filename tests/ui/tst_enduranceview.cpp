@@ -132,6 +132,7 @@ private slots:
         std::vector<double> places;
         for (const endurance::BatteryChange &change : endurance.estimate()->changes)
             places.push_back(change.at.distance);
+        QVERIFY2(endurance.noReturnDistance().isValid(), "the route has a point of no return: a missing one must not read as 0 m");
         places.push_back(endurance.noReturnDistance().toDouble());
         for (int i = 0; i <= changes; ++i) {
             const double distance = places[size_t(i)];
