@@ -3,6 +3,7 @@
 // made from a QGroundControl WPL sample, and the edits the autosave tests make to it.
 
 #include "HciRouteMapper.h"
+#include "TestData.h"
 #include "Messages.pb.h"
 #include "MissionFiles.h"
 #include "RouteDocument.h"
@@ -13,7 +14,7 @@ namespace sortie::test {
 
 inline mission::Route serverRoute()
 {
-    auto loaded = mission::formats::loadMission(QStringLiteral(SORTIE_TEST_DATA "/samples/qgc/100Waypoints.waypoints.txt"));
+    auto loaded = mission::formats::loadMission((QString::fromUtf8(sortieTestData()) + QStringLiteral("/samples/qgc/100Waypoints.waypoints.txt")));
     if (!loaded)
         qFatal("%s", qPrintable(loaded.error().toString()));
     mission::Route route = loaded->mission.routes.front();

@@ -2,6 +2,7 @@
 // index lists, protobuf JSON that parses back to the same message, dropped frames with their reason,
 // a truncated tail reported, passwords hidden, and the same output however the bytes are split.
 #include "HciDumpWriter.h"
+#include "TestData.h"
 #include "HciMessageTypes.h"
 #include "Messages.pb.h"
 
@@ -22,7 +23,7 @@ namespace {
 
 std::string readFile(const std::string &name)
 {
-    std::ifstream in(std::string(SORTIE_TEST_DATA) + "/hci-vectors/" + name, std::ios::binary);
+    std::ifstream in(std::string(sortieTestData()) + "/hci-vectors/" + name, std::ios::binary);
     std::stringstream s;
     s << in.rdbuf();
     return s.str();

@@ -2,6 +2,7 @@
 // vector, on notifications with every kind of value, and on tens of thousands of mutated payloads
 // (it may decline any of them, but what it accepts must equal ParseFromArray's result, byte for byte).
 #include "HciFrameCodec.h"
+#include "TestData.h"
 #include "HciTelemetryFastPath.h"
 #include "Messages.pb.h"
 
@@ -21,7 +22,7 @@ namespace {
 
 std::string payloadOf(const std::string &file)
 {
-    std::ifstream in(std::string(SORTIE_TEST_DATA) + "/hci-vectors/" + file, std::ios::binary);
+    std::ifstream in(std::string(sortieTestData()) + "/hci-vectors/" + file, std::ios::binary);
     std::stringstream s;
     s << in.rdbuf();
     return s.str().substr(16);
@@ -258,7 +259,7 @@ private slots:
         for (int i = 0; i < 50; ++i)
             sortie::hci::appendHciFrame(stream, -1, everyValueKind());
         std::string vector;
-        std::ifstream in(std::string(SORTIE_TEST_DATA) + "/hci-vectors/stream-bad-frames.bin", std::ios::binary);
+        std::ifstream in(std::string(sortieTestData()) + "/hci-vectors/stream-bad-frames.bin", std::ios::binary);
         std::stringstream s;
         s << in.rdbuf();
         stream += s.str();

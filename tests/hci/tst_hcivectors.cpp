@@ -2,6 +2,7 @@
 // client request byte for byte; streams yield exactly the decoded/dropped sequence the index lists,
 // however the bytes are split.
 #include "HciFrameCodec.h"
+#include "TestData.h"
 #include "HciMessageTypes.h"
 #include "Messages.pb.h"
 
@@ -24,7 +25,7 @@ namespace {
 
 std::string readFile(const std::string &name)
 {
-    std::ifstream in(std::string(SORTIE_TEST_DATA) + "/hci-vectors/" + name, std::ios::binary);
+    std::ifstream in(std::string(sortieTestData()) + "/hci-vectors/" + name, std::ios::binary);
     std::stringstream s;
     s << in.rdbuf();
     return s.str();

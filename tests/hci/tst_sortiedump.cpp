@@ -1,5 +1,6 @@
 // The sortie-dump program: a capture from a file or from stdin becomes JSON lines on stdout.
 #include <QJsonDocument>
+#include "TestData.h"
 #include <QJsonObject>
 #include <QProcess>
 #include <QtTest>
@@ -8,7 +9,7 @@ namespace {
 
 QByteArray vector(const char *name)
 {
-    QFile f(QStringLiteral(SORTIE_TEST_DATA "/hci-vectors/") + QLatin1String(name));
+    QFile f((QString::fromUtf8(sortieTestData()) + QStringLiteral("/hci-vectors/")) + QLatin1String(name));
     return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
 }
 
@@ -31,7 +32,7 @@ private slots:
     void dumpsAFile()
     {
         QProcess dump;
-        dump.start(QStringLiteral(SORTIE_DUMP_PROGRAM), {QStringLiteral(SORTIE_TEST_DATA "/hci-vectors/stream-bad-frames.bin")});
+        dump.start(QStringLiteral(SORTIE_DUMP_PROGRAM), {(QString::fromUtf8(sortieTestData()) + QStringLiteral("/hci-vectors/stream-bad-frames.bin"))});
         QVERIFY(dump.waitForFinished(10000));
         QCOMPARE(dump.exitCode(), 0);
         const auto objects = lines(dump.readAllStandardOutput());

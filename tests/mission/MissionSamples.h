@@ -2,6 +2,7 @@
 // Shared builders for the format tests: a route using every feature each format can carry.
 
 #include "AreaScan.h"
+#include "TestData.h"
 #include "LocalTangentPlane.h"
 #include "Mission.h"
 
@@ -12,13 +13,13 @@ namespace sortie::mission::test {
 
 inline QByteArray readSample(const QString &name)
 {
-    QFile f(QStringLiteral(SORTIE_TEST_DATA "/samples/qgc/") + name);
+    QFile f((QString::fromUtf8(sortieTestData()) + QStringLiteral("/samples/qgc/")) + name);
     if (!f.open(QIODevice::ReadOnly))
         qFatal("missing sample %s", qPrintable(name));
     return f.readAll();
 }
 
-inline QString samplePath(const QString &name) { return QStringLiteral(SORTIE_TEST_DATA "/samples/qgc/") + name; }
+inline QString samplePath(const QString &name) { return (QString::fromUtf8(sortieTestData()) + QStringLiteral("/samples/qgc/")) + name; }
 
 inline AreaScan squareScan(const GeoPoint &centre, double side, double altitude = 50)
 {

@@ -3,6 +3,7 @@
 // unknown fields included; a new route encodes the way the SDK's sample builds one; the processed
 // route becomes the plan the vehicle will fly.
 #include "AlgorithmCatalog.h"
+#include "TestData.h"
 #include "AreaScanPlanner.h"
 #include "Domain.pb.h"
 #include "FlightPath.h"
@@ -35,7 +36,7 @@ namespace {
 template<typename Message>
 Message payloadOf(const char *file)
 {
-    QFile f(QStringLiteral(SORTIE_TEST_DATA "/hci-vectors/") + QLatin1String(file));
+    QFile f((QString::fromUtf8(sortieTestData()) + QStringLiteral("/hci-vectors/")) + QLatin1String(file));
     if (!f.open(QIODevice::ReadOnly))
         qFatal("missing vector %s", file);
     const QByteArray frame = f.readAll();

@@ -13,6 +13,7 @@ function(sortie_mission_probe kind room header)
   set(source ${CMAKE_CURRENT_BINARY_DIR}/walls/${probe}.cpp)
   file(CONFIGURE OUTPUT ${source} CONTENT "#include \"${header}\"\n" @ONLY)
   add_library(${probe} OBJECT EXCLUDE_FROM_ALL ${source})
+  set_target_properties(${probe} PROPERTIES SORTIE_NO_PCH ON)  # a probe compiles its one include alone
   set_target_properties(${probe} PROPERTIES AUTOMOC OFF AUTOUIC OFF AUTORCC OFF)
   get_target_property(room_libs sortie_mission_${room} LINK_LIBRARIES)  # PRIVATE ones too
   target_include_directories(${probe} PRIVATE ${PROJECT_SOURCE_DIR}/core/mission/${room})

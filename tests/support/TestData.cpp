@@ -1,0 +1,3 @@
+#include "TestData.h"
+
+const char *sortieTestData() { return SORTIE_TEST_DATA; }
