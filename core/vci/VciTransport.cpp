@@ -2,6 +2,7 @@
 
 #include "VciLog.h"
 
+#include <QPointer>
 #include <QSerialPort>
 #include <QSslSocket>
 #include <QCoreApplication>
@@ -114,7 +115,10 @@ void VciTransport::onEncrypted()
         onFailed(socket, QCoreApplication::translate("VciTransport", "not connected over TLS: %1").arg(m_verdict.reason));
         return;
     }
-    onOpened();
+    QPointer<QSslSocket> alive(socket);
+    emit certificateAccepted(m_verdict);
+    if (alive && m_device == socket && m_state == State::Opening)
+        onOpened();
 }
 
 void VciTransport::onOpened()

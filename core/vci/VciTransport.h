@@ -46,6 +46,9 @@ signals:
     void opened(QIODevice *device);
     void lost(const QString &reason);          // an opened device went away; a retry follows unless closed
     void attemptFailed(const QString &reason); // an attempt to open failed; a retry follows
+    // Over TLS, just before opened(): the vehicle's certificate was accepted (verdict.firstUse(): it
+    // is now remembered, and its fingerprint should be shown).
+    void certificateAccepted(const sortie::tls::TlsVerdict &verdict);
     void stateChanged(sortie::vci::VciTransport::State state);
 
 private:

@@ -4478,6 +4478,10 @@ Ereignisse: %1
         <source>the fence cannot be made: this link was given no fence builder</source>
         <translation>der Geofence kann nicht erstellt werden: diese Verbindung hat keinen Geofence-Ersteller erhalten</translation>
     </message>
+    <message>
+        <source>%1: first secure connection; its certificate is now trusted and remembered. Compare its SHA-256 fingerprint with the vehicle&apos;s: %2</source>
+        <translation>%1: erste sichere Verbindung; seinem Zertifikat wird nun vertraut, und es ist gespeichert. Vergleichen Sie seinen SHA-256-Fingerabdruck mit dem des Fahrzeugs: %2</translation>
+    </message>
 </context>
 <context>
     <name>Vehicle</name>

@@ -4478,6 +4478,10 @@ eventos:   %1
         <source>the fence cannot be made: this link was given no fence builder</source>
         <translation>no se puede crear la geocerca: este enlace no recibió ningún generador de geocercas</translation>
     </message>
+    <message>
+        <source>%1: first secure connection; its certificate is now trusted and remembered. Compare its SHA-256 fingerprint with the vehicle&apos;s: %2</source>
+        <translation>%1: primera conexión segura; su certificado es ahora de confianza y queda recordado. Compare su huella SHA-256 con la del vehículo: %2</translation>
+    </message>
 </context>
 <context>
     <name>Vehicle</name>

@@ -4493,6 +4493,10 @@ events:   %1
         <source>the fence cannot be made: this link was given no fence builder</source>
         <translation>геозону не можна створити: цьому з’єднанню не надано побудовника геозон</translation>
     </message>
+    <message>
+        <source>%1: first secure connection; its certificate is now trusted and remembered. Compare its SHA-256 fingerprint with the vehicle&apos;s: %2</source>
+        <translation>%1: перше захищене з’єднання; його сертифікату тепер довіряють, і його збережено. Порівняйте його відбиток SHA-256 з відбитком апарата: %2</translation>
+    </message>
 </context>
 <context>
     <name>Vehicle</name>

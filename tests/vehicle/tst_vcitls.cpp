@@ -115,10 +115,13 @@ private slots:
         serve(*m_a);
         auto link = linkTo(url(), m_store.get());
         Vehicle vehicle(link.get());
+        QSignalSpy notes(link.get(), &VehicleLink::errorOccurred);
         link->start();
         QTRY_VERIFY_WITH_TIMEOUT(vehicle.isConnected(), 10000);
         QTRY_COMPARE(vehicle.id(), QStringLiteral("vci-9"));
         QCOMPARE(link->transport()->certificate().basis, TlsVerdict::Basis::FirstUse);
+        QCOMPARE(notes.size(), 1); // the fingerprint trusted on first use is shown
+        QVERIFY2(notes.first().first().toString().contains(m_a->fingerprint), qPrintable(notes.first().first().toString()));
         QCOMPARE(m_store->remembered(peer()), m_a->fingerprint);
         QTRY_VERIFY(vehicle.position().isValid()); // telemetry, decrypted
         test::CommandCatcher arm;
@@ -132,9 +135,11 @@ private slots:
         link.reset();
         auto again = linkTo(url(), m_store.get());
         Vehicle second(again.get());
+        QSignalSpy quiet(again.get(), &VehicleLink::errorOccurred);
         again->start();
         QTRY_VERIFY_WITH_TIMEOUT(second.isConnected(), 10000);
         QCOMPARE(again->transport()->certificate().basis, TlsVerdict::Basis::Remembered);
+        QCOMPARE(quiet.size(), 0); // nothing new to show
     }
 
     void aChangedCertificateIsRefusedNamingBoth()
