@@ -27,6 +27,7 @@ packages=(
   qt6-translations-l10n  # Qt's own words (qtbase_<lang>.qm: a dialog's "Cancel") in the operator's language; tst_translations checks them
   qt6-l10n-tools  # lupdate and lrelease: the translations (resources/i18n) compiled into the program
   python3  # the translation checks run by ctest (tests/i18n: visible strings, complete .ts files)
+  openssl  # the TLS tests make their certificates and keys at test time (tests/support/TestCertificates.h)
 )
 
 missing=()

@@ -61,11 +61,12 @@ int main(int argc, char **argv)
     sortie::sim::HciServer server(world);
     server.sessions().setExpiry(hci.sessionExpiryMs);
     server.faults() = hci.faults;
+    server.setTls(hci.tls);
     if (!server.listen(hci.address, hci.port)) {
         std::fprintf(stderr, "sortie-sim: %s\n", qPrintable(server.errorString()));
         return 1;
     }
-    std::printf("sortie-sim: HCI on %s:%u, %d vehicles, telemetry %.0f Hz\n", qPrintable(hci.address.toString()),
+    std::printf("sortie-sim: HCI%s on %s:%u, %d vehicles, telemetry %.0f Hz\n", hci.tls ? " over TLS" : "", qPrintable(hci.address.toString()),
                 unsigned(server.port()), int(world.vehicles().size()), hci.world.telemetryRateHz);
     sortie::sim::SimSbsServer sbsServer(world.traffic());
     if (sbs.port) {
@@ -77,6 +78,7 @@ int main(int argc, char **argv)
     }
     vci.vehicle.terrain = &world.terrain();  // one ground for every simulated vehicle
     vci.vehicle.energy = hci.world.energy;   // and one energy profile
+    vci.tls = hci.tls;                       // and one certificate
     sortie::sim::SimVciFleet fleet(vci);
     if (!fleet.start(&error)) {
         std::fprintf(stderr, "sortie-sim: %s\n", qPrintable(error));

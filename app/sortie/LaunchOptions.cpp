@@ -1,5 +1,6 @@
 #include "LaunchOptions.h"
 
+#include "CertificateFingerprint.h"
 #include "DemOpener.h"
 #include "PrivateFiles.h"
 #include "SbsFeed.h"
@@ -8,6 +9,8 @@
 #include <QCoreApplication>
 #include <QLoggingCategory>
 #include <QDir>
+#include <QFile>
+#include <QSslCertificate>
 #include <QStandardPaths>
 #include <QUrl>
 #include <QUrlQuery>
@@ -32,6 +35,24 @@ std::variant<VciEndpoint, QString> VciEndpoint::parse(const QString &text)
         endpoint.port = quint16(url.port());
         return endpoint;
     }
+    if (url.scheme() == QLatin1String("vci+tls")) {
+        endpoint.kind = Kind::Tcp;
+        endpoint.tls = true;
+        endpoint.host = url.host();
+        if (endpoint.host.isEmpty() || url.port() <= 0)
+            return QStringLiteral("\"%1\" needs a host and a port (expected vci+tls://host:port)").arg(text);
+        endpoint.port = quint16(url.port());
+        const QUrlQuery query(url);
+        for (const auto &item : query.queryItems()) {
+            if (item.first != QLatin1String("sha256"))
+                return QStringLiteral("\"%1\": unknown option \"%2\" (only sha256 is known)").arg(text, item.first);
+            const auto pin = tls::normalizedFingerprint(item.second);
+            if (!pin)
+                return QStringLiteral("\"%1\": sha256=%2 is not a SHA-256 fingerprint (64 hex digits)").arg(text, item.second);
+            endpoint.pin = *pin;
+        }
+        return endpoint;
+    }
     if (url.scheme() == QLatin1String("serial")) {
         endpoint.kind = Kind::Serial;
         endpoint.device = url.path();
@@ -51,14 +72,19 @@ std::variant<VciEndpoint, QString> VciEndpoint::parse(const QString &text)
         }
         return endpoint;
     }
-    return QStringLiteral("\"%1\": VCI addresses start with tcp:// or serial://").arg(text);
+    return QStringLiteral("\"%1\": VCI addresses start with tcp://, vci+tls:// or serial://").arg(text);
 }
 
 QString VciEndpoint::toString() const
 {
-    if (kind == Kind::Tcp)
-        return QStringLiteral("tcp://%1:%2").arg(host.contains(QLatin1Char(':')) ? QStringLiteral("[%1]").arg(host) : host)
-            .arg(port);
+    if (kind == Kind::Tcp) {
+        QString url = QStringLiteral("%1://%2:%3")
+                          .arg(tls ? QStringLiteral("vci+tls") : QStringLiteral("tcp"), host.contains(QLatin1Char(':')) ? QStringLiteral("[%1]").arg(host) : host)
+                          .arg(port);
+        if (!pin.isEmpty())
+            url += QStringLiteral("?sha256=") + QString(pin).remove(QLatin1Char(':'));
+        return url;
+    }
     return QStringLiteral("serial://%1?baud=%2").arg(device).arg(baud);
 }
 
@@ -75,11 +101,14 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
                                        QCoreApplication::translate("sortie", "--demo with only the server's three vehicles: \"parked\" (nothing moves) or \"flying\" (one flies, followed in the fly view); for benchmarks."),
                                        QStringLiteral("scene"));
     const QCommandLineOption server(QStringLiteral("server"),
-                                    QCoreApplication::translate("sortie", "UgCS server to connect to."), QStringLiteral("host:port"));
+                                    QCoreApplication::translate("sortie", "UgCS server to connect to: host:port, or tls://host:port over TLS (a server behind a TLS terminator)."), QStringLiteral("host:port"));
+    const QCommandLineOption serverPin(QStringLiteral("server-pin"),
+                                       QCoreApplication::translate("sortie", "With --server tls://: the only certificate the server may show, as its SHA-256 fingerprint or a PEM file; remembered for that server."),
+                                       QStringLiteral("sha256|file"));
     const QCommandLineOption user(QStringLiteral("user"), QCoreApplication::translate("sortie", "User name to log in with."),
                                   QStringLiteral("name"));
     const QCommandLineOption vci(QStringLiteral("vci"),
-                                 QCoreApplication::translate("sortie", "Connect a vehicle directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600."),
+                                 QCoreApplication::translate("sortie", "Connect a vehicle directly over VCI: tcp://host:port, vci+tls://host:port[?sha256=FINGERPRINT] or serial:///dev/ttyX?baud=57600."),
                                  QStringLiteral("address"));
     const QCommandLineOption reportStartup(QStringLiteral("report-startup"),
                                            QCoreApplication::translate("sortie", "Print the start-up time and memory in use, then quit (for benchmarks)."));
@@ -92,7 +121,7 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     const QCommandLineOption sbs(QStringLiteral("sbs"),
                                  QCoreApplication::translate("sortie", "An ADS-B receiver's SBS-1 feed for manned traffic, as dump1090 serves it (port 30003); also the setting traffic/sbsAddress."),
                                  QStringLiteral("host:port"));
-    parser.addOptions({demo, demoScene, server, user, vci, autosave, reportStartup, dem, sbs});
+    parser.addOptions({demo, demoScene, server, serverPin, user, vci, autosave, reportStartup, dem, sbs});
 
     if (!parser.parse(arguments))
         return parser.errorText();
@@ -125,6 +154,22 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     }
     if (options.demo && options.server)
         return QStringLiteral("--demo starts its own server: leave out --server");
+    if (parser.isSet(serverPin)) {
+        if (!options.server || !options.server->tls)
+            return QStringLiteral("--server-pin needs --server tls://host:port");
+        const QString value = parser.value(serverPin);
+        auto pin = tls::normalizedFingerprint(value);
+        if (!pin && QFile::exists(value)) {
+            QFile file(value);
+            const auto certificates = file.open(QIODevice::ReadOnly) ? QSslCertificate::fromData(file.readAll(), QSsl::Pem) : QList<QSslCertificate>{};
+            if (certificates.isEmpty())
+                return QStringLiteral("--server-pin: %1 holds no PEM certificate").arg(value);
+            pin = tls::sha256Fingerprint(certificates.first());
+        }
+        if (!pin)
+            return QStringLiteral("--server-pin: '%1' is neither a SHA-256 fingerprint (64 hex digits) nor a certificate file").arg(value);
+        options.serverPin = *pin;
+    }
     options.user = parser.value(user);
     options.autosaveDir = parser.value(autosave);
     options.demPath = parser.value(dem);

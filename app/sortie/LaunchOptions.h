@@ -13,13 +13,15 @@ namespace sortie::app {
 
 using client::ServerAddress;
 
-// Where a VCI vehicle is: tcp://host:port or serial:///dev/ttyX?baud=57600.
+// Where a VCI vehicle is: tcp://host:port, vci+tls://host:port[?sha256=PIN] or serial:///dev/ttyX?baud=57600.
 struct VciEndpoint
 {
     enum class Kind { Tcp, Serial };
     Kind kind = Kind::Tcp;
     QString host;       // Tcp
     quint16 port = 0;   // Tcp
+    bool tls = false;   // Tcp over TLS (vci+tls://)
+    QString pin;        // vci+tls://...?sha256=: the vehicle's certificate, colon-hex
     QString device;     // Serial
     qint32 baud = 57600; // Serial
 
@@ -36,6 +38,9 @@ struct LaunchOptions
     // on the ground, nothing else) or "flying" (one of them flying, followed in the fly view); empty: everything.
     QString demoScene;
     std::optional<ServerAddress> server;
+    // --server-pin: the SHA-256 of the only certificate --server (tls://) may show, from a
+    // fingerprint or a PEM certificate file; pinned in the settings for that server.
+    QString serverPin;
     QString user;
     std::optional<VciEndpoint> vci;
     bool reportStartup = false; // print start-up time and memory, then quit

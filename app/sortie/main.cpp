@@ -83,6 +83,8 @@ int main(int argc, char *argv[])
 
     // The client: one graph, wired as every test fixture wires it.
     sortie::client::ClientGraph graph(&storage, options.graphOptions());
+    if (!options.serverPin.isEmpty())
+        graph.connection().certificates().pin(options.server->peer(), options.serverPin);
     if (!graph.recorderError().isEmpty())
         std::fprintf(stderr, "sortie: %s\n", qPrintable(graph.recorderError())); // flying goes on without a log
     sortie::app::DemoServer demo;

@@ -62,7 +62,7 @@ ClientGraph::ClientGraph(QSettings *storage, Options options, QObject *parent)
     : QObject(parent)
     , m_session(std::make_unique<hci::HciSession>())
     , m_hciClient(std::make_unique<hci::HciClient>(m_session.get()))
-    , m_connection(std::make_unique<ConnectionController>(m_session.get()))
+    , m_connection(std::make_unique<ConnectionController>(m_session.get(), storage)) // its certificates and answers are remembered there
     , m_missions(std::make_unique<MissionController>(m_hciClient.get()))
     , m_elevation(std::make_unique<terrain::ElevationSetup>(m_session.get()))
     , m_storage(storage)
@@ -86,6 +86,7 @@ ClientGraph::ClientGraph(QSettings *storage, Options options, QObject *parent)
     if (options.vehicles) {
         m_fleet = std::make_unique<VehicleFleet>(m_hciClient.get(), ground);
         m_fleet->setFenceBuilder(airspace::vciFenceFor); // a VCI vehicle's fence is made where the zones are
+        m_fleet->setCertificateStore(&m_connection->certificates()); // vci+tls:// certificates beside the server's
         m_missions->preparation()->setFleet(m_fleet.get()); // Process and Upload choose from every vehicle of the fleet
         // Every route given to a vehicle (the open one chosen for it, uploads, flights), for the map and the list.
         m_fleetRoutes = std::make_unique<FleetRoutes>(m_fleet.get(), document, m_missions->preparation());

@@ -7,7 +7,7 @@
 #include "Messages.pb.h"
 
 #include <QScopeGuard>
-#include <QTcpSocket>
+#include <QSslSocket>
 #include <QCoreApplication>
 
 namespace sortie::hci {
@@ -33,14 +33,25 @@ QString seconds(std::chrono::milliseconds ms)
 
 HciConnection::HciConnection(QObject *parent)
     : QObject(parent)
-    , m_socket(new QTcpSocket(this))
+    , m_socket(new QSslSocket(this))
 {
     m_connectTimer.setSingleShot(true);
     connect(&m_connectTimer, &QTimer::timeout, this, [this] {
+        if (m_tls.enabled && m_socket->state() == QAbstractSocket::ConnectedState) {
+            // TCP is up but no TLS came back: a plain HCI server waits for a frame that never comes.
+            closeWith({HciError::Kind::Unreachable,
+                       QCoreApplication::translate("HciConnection", "%1 accepted the connection but did not begin TLS within %2: is it a plain HCI server?")
+                           .arg(m_peer, seconds(m_connectTimeout))});
+            return;
+        }
         closeWith({HciError::Kind::Unreachable,
                    QCoreApplication::translate("HciConnection", "No answer from %1 within %2: check the address and the network").arg(m_peer, seconds(m_connectTimeout))});
     });
-    connect(m_socket, &QTcpSocket::connected, this, &HciConnection::onConnected);
+    connect(m_socket, &QTcpSocket::connected, this, [this] {
+        if (!m_tls.enabled)
+            onConnected();
+    });
+    connect(m_socket, &QSslSocket::encrypted, this, &HciConnection::onEncrypted);
     connect(m_socket, &QTcpSocket::readyRead, this, &HciConnection::onReadyRead);
     connect(m_socket, &QTcpSocket::errorOccurred, this, &HciConnection::onSocketError);
     connect(m_socket, &QTcpSocket::disconnected, this, [this] {
@@ -68,12 +79,21 @@ void HciConnection::connectToServer(const QString &host, quint16 port)
 {
     if (m_state != State::Unconnected)
         closeWith({HciError::Kind::Cancelled, QStringLiteral("Reconnecting")});
-    m_peer = QStringLiteral("%1:%2").arg(host).arg(port);
+    m_host = host;
+    m_peer = host.contains(u':') ? QStringLiteral("[%1]:%2").arg(host).arg(port) : QStringLiteral("%1:%2").arg(host).arg(port);
     m_decoder.reset();
+    m_verdict = {};
     setState(State::Connecting);
-    qCInfo(lcHci) << "connecting to" << m_peer;
+    qCInfo(lcHci) << "connecting to" << m_peer << (m_tls.enabled ? "over TLS" : "in clear");
     m_connectTimer.start(m_connectTimeout);
-    m_socket->connectToHost(host, port);
+    if (m_tls.enabled) {
+        // The certificate is judged by TlsVerdict once the handshake is done, before anything is
+        // written: Qt's own check would refuse a self-signed certificate before it could be remembered.
+        m_socket->setPeerVerifyMode(QSslSocket::VerifyNone);
+        m_socket->connectToHostEncrypted(host, port);
+    } else {
+        m_socket->connectToHost(host, port);
+    }
 }
 
 void HciConnection::disconnectFromServer()
@@ -97,6 +117,21 @@ void HciConnection::onConnected()
     emit connected();
 }
 
+void HciConnection::onEncrypted()
+{
+    if (m_state != State::Connecting)
+        return;
+    m_verdict = tls::TlsVerdict::judge(m_tls, m_peer, m_host, m_socket->peerCertificateChain());
+    if (!m_verdict.accepted()) {
+        closeWith({HciError::Kind::Certificate, QCoreApplication::translate("HciConnection", "Not connected to %1 over TLS: %2").arg(m_peer, m_verdict.reason)});
+        return;
+    }
+    QPointer<HciConnection> self(this);
+    emit certificateAccepted(m_verdict);
+    if (self && m_state == State::Connecting)
+        onConnected();
+}
+
 void HciConnection::onSocketError()
 {
     const auto error = m_socket->error();
@@ -107,6 +142,11 @@ void HciConnection::onSocketError()
         case QAbstractSocket::ConnectionRefusedError:
             closeWith({HciError::Kind::Refused,
                        QCoreApplication::translate("HciConnection", "%1 refused the connection").arg(m_peer)});
+            return;
+        case QAbstractSocket::SslHandshakeFailedError:
+        case QAbstractSocket::SslInternalError:
+            closeWith({HciError::Kind::Unreachable,
+                       QCoreApplication::translate("HciConnection", "The TLS handshake with %1 failed (%2): does it speak TLS on that port?").arg(m_peer, m_socket->errorString())});
             return;
         case QAbstractSocket::HostNotFoundError:
             closeWith({HciError::Kind::Unreachable, QCoreApplication::translate("HciConnection", "The host in %1 cannot be found").arg(m_peer)});

@@ -2,6 +2,8 @@
 
 #include "HciError.h"
 #include "HciFrameCodec.h"
+#include "TlsOptions.h"
+#include "TlsVerdict.h"
 
 #include <QHash>
 #include <QObject>
@@ -10,14 +12,14 @@
 
 #include <chrono>
 
-class QTcpSocket;
+class QSslSocket;
 
 namespace sortie::hci {
 
 class HciReply;
 class HciSubscription;
 
-// One TCP connection to an HCI server: frames requests, matches answers to them by instance id (in
+// One TCP connection to an HCI server, plain or TLS (setTls): frames requests, matches answers to them by instance id (in
 // any order), reports OperationStatus as progress, turns Error frames into HciError, times requests
 // out, and routes notifications (instance id -1) to subscriptions by subscription id. Knows nothing of
 // sessions or logins (HciSession does). Never blocks: everything is signals.
@@ -35,6 +37,15 @@ public:
 
     explicit HciConnection(QObject *parent = nullptr);
     ~HciConnection() override;
+
+    // How the next connections are secured (plain by default). Over TLS, connected() follows the
+    // handshake and the certificate's verdict (TlsVerdict): a refused certificate closes the
+    // connection with Kind::Certificate before a byte of HCI is written.
+    void setTls(const tls::TlsOptions &options) { m_tls = options; }
+    const tls::TlsOptions &tlsOptions() const { return m_tls; }
+    bool isSecure() const { return m_tls.enabled; }
+    // The verdict on the current (or last) server's certificate; Refused with no reason when plain.
+    const tls::TlsVerdict &certificate() const { return m_verdict; }
 
     void connectToServer(const QString &host, quint16 port);
     // Closes the socket; every pending request fails at once with Disconnected.
@@ -68,6 +79,9 @@ public:
 signals:
     void stateChanged(sortie::hci::HciConnection::State state);
     void connected();
+    // Over TLS, just before connected(): the certificate was accepted (verdict.firstUse(): it was
+    // trusted for the first time and is now remembered; its fingerprint should be shown).
+    void certificateAccepted(const sortie::tls::TlsVerdict &verdict);
     // The connection closed, or a connection attempt failed (Refused, Unreachable, Disconnected).
     void disconnected(const sortie::hci::HciError &reason);
     // A frame that could not be used: bad header or payload, or an answer no request waits for.
@@ -77,6 +91,7 @@ signals:
 
 private:
     void onConnected();
+    void onEncrypted();
     void onReadyRead();
     void onSocketError();
     void dispatch(HciFrame &frame);
@@ -87,7 +102,10 @@ private:
     int32_t nextInstanceId();
     void setState(State state);
 
-    QTcpSocket *m_socket;
+    QSslSocket *m_socket;
+    tls::TlsOptions m_tls;
+    tls::TlsVerdict m_verdict;
+    QString m_host;
     QTimer m_connectTimer;
     State m_state = State::Unconnected;
     QString m_peer;

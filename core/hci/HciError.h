@@ -33,6 +33,7 @@ public:
         Version,        // the server does not speak our protocol version
         Licence,        // the server's licence forbids it (UgCS error code 1001)
         Cancelled,      // the caller gave up (session closed)
+        Certificate,    // TLS: the server's certificate is not trusted (nothing was sent to it)
     };
     Q_ENUM(Kind)
 

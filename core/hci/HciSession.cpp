@@ -46,7 +46,7 @@ HciSession::~HciSession()
         s->disconnect(this);
 }
 
-void HciSession::open(const QString &host, quint16 port, const QString &login, const QString &password)
+void HciSession::open(const QString &host, quint16 port, const QString &login, const QString &password, const tls::TlsOptions &tls)
 {
     m_reconnectTimer.stop();
     m_handshake = nullptr;
@@ -65,7 +65,8 @@ void HciSession::open(const QString &host, quint16 port, const QString &login, c
     m_lastError = {};
     m_backoff.reset();
     setClientId(-1);
-    qCInfo(lcHci).noquote() << "opening session on" << host + u':' + QString::number(port) << "as" << login;
+    m_connection->setTls(tls);
+    qCInfo(lcHci).noquote() << "opening session on" << host + u':' + QString::number(port) << "as" << login << (tls.enabled ? "over TLS" : "");
     setState(State::Connecting);
     m_connection->connectToServer(host, port);
 }
@@ -329,6 +330,10 @@ void HciSession::onDisconnected(const HciError &reason)
         return;
     }
     m_handshake = nullptr;
+    if (reason.kind() == HciError::Kind::Certificate) {
+        fail(reason); // the password never went out; trying again would meet the same certificate
+        return;
+    }
     if (m_reattachId < 0) {
         // Never reached Ready. A server that refuses or cannot be reached is reported at once: the
         // address is probably wrong. One that hung up mid-login is likely restarting: retry a few times.

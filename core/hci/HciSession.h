@@ -2,6 +2,7 @@
 
 #include "HciError.h"
 #include "HciReconnectPolicy.h"
+#include "TlsOptions.h"
 
 #include <QHash>
 #include <QList>
@@ -42,8 +43,9 @@ public:
     // Connects, authorizes and logs in. Failures end in Disconnected with errorOccurred(): Refused,
     // Unreachable, Authentication, Version, Licence... A connection that drops mid-login (a server
     // restarting) is retried reconnectPolicy().loginAttempts() times; a session that reached Ready
-    // reconnects by itself until closed.
-    void open(const QString &host, quint16 port, const QString &login, const QString &password);
+    // reconnects by itself until closed. `tls` secures this connection and every reconnect (plain
+    // when not enabled); a certificate refused (Kind::Certificate) ends the session, never retried.
+    void open(const QString &host, quint16 port, const QString &login, const QString &password, const tls::TlsOptions &tls = {});
     // Logs out (LogoutRequest with the clientId) and disconnects; no reconnect follows.
     void close();
 

@@ -1,5 +1,7 @@
 #include "VciEndpoint.h"
 
+#include "CertificateFingerprint.h"
+
 #include <QUrl>
 #include <QUrlQuery>
 #include <QCoreApplication>
@@ -23,17 +25,27 @@ std::optional<VciEndpoint> VciEndpoint::parse(const QString &text, QString *erro
         return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\" is not a URL: %2").arg(text, url.errorString()));
     VciEndpoint e;
     const QString scheme = url.scheme().toLower();
-    if (scheme == QLatin1String("tcp")) {
+    if (scheme == QLatin1String("tcp") || scheme == QLatin1String("vci+tls")) {
         e.kind = Kind::Tcp;
+        e.tls = scheme != QLatin1String("tcp");
         e.host = url.host();
         const int port = url.port(-1);
         if (e.host.isEmpty() || port <= 0 || port > 65535)
-            return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\" needs a host and a port: tcp://host:port").arg(text));
+            return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\" needs a host and a port: %2://host:port").arg(text, scheme));
         e.port = quint16(port);
+        const QUrlQuery query(url);
+        for (const auto &[key, value] : query.queryItems(QUrl::FullyDecoded)) {
+            if (!e.tls || key.toLower() != QLatin1String("sha256"))
+                return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\": unknown setting \"%2\" (vci+tls:// knows sha256=)").arg(text, key));
+            const auto pin = tls::normalizedFingerprint(value);
+            if (!pin)
+                return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\": sha256=%2 is not a SHA-256 fingerprint (64 hex digits)").arg(text, value));
+            e.pinnedSha256 = *pin;
+        }
         return e;
     }
     if (scheme != QLatin1String("serial"))
-        return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\": use tcp://host:port or serial:/dev/name").arg(text));
+        return failWith(error, QCoreApplication::translate("VciEndpoint", "\"%1\": use tcp://host:port, vci+tls://host:port or serial:/dev/name").arg(text));
 
     e.kind = Kind::Serial;
     e.device = url.path();
@@ -78,8 +90,13 @@ std::optional<VciEndpoint> VciEndpoint::parse(const QString &text, QString *erro
 
 QString VciEndpoint::toString() const
 {
-    if (kind == Kind::Tcp)
-        return QStringLiteral("tcp://%1:%2").arg(host).arg(port);
+    if (kind == Kind::Tcp) {
+        const QString shown = host.contains(QLatin1Char(':')) ? QStringLiteral("[%1]").arg(host) : host;
+        QString url = QStringLiteral("%1://%2:%3").arg(tls ? QStringLiteral("vci+tls") : QStringLiteral("tcp"), shown).arg(port);
+        if (!pinnedSha256.isEmpty())
+            url += QStringLiteral("?sha256=") + QString(pinnedSha256).remove(QLatin1Char(':'));
+        return url;
+    }
     static const char *parities[] = {"none", "?", "even", "odd", "space", "mark"};
     const char *stop = stopBits == QSerialPort::TwoStop ? "2" : stopBits == QSerialPort::OneAndHalfStop ? "1.5" : "1";
     const char *flow = flowControl == QSerialPort::HardwareControl ? "hardware" : flowControl == QSerialPort::SoftwareControl ? "software" : "none";

@@ -2,8 +2,9 @@
 
 #include "VciLog.h"
 
+#include <QPointer>
 #include <QSerialPort>
-#include <QTcpSocket>
+#include <QSslSocket>
 #include <QCoreApplication>
 
 namespace sortie::vci {
@@ -65,14 +66,23 @@ void VciTransport::attempt()
 {
     setState(State::Opening);
     if (m_endpoint.kind == VciEndpoint::Kind::Tcp) {
-        auto *socket = new QTcpSocket(this);
+        auto *socket = new QSslSocket(this);
         m_device = socket;
-        connect(socket, &QTcpSocket::connected, this, &VciTransport::onOpened);
+        if (m_endpoint.tls)
+            connect(socket, &QSslSocket::encrypted, this, &VciTransport::onEncrypted);
+        else
+            connect(socket, &QTcpSocket::connected, this, &VciTransport::onOpened);
         connect(socket, &QAbstractSocket::errorOccurred, this, [this, socket] { onFailed(socket, socket->errorString()); });
         connect(socket, &QAbstractSocket::disconnected, this,
                 [this, socket] { onFailed(socket, QCoreApplication::translate("VciTransport", "the vehicle closed the connection")); });
         socket->setSocketOption(QAbstractSocket::LowDelayOption, 1);
-        socket->connectToHost(m_endpoint.host, m_endpoint.port);
+        if (m_endpoint.tls) {
+            // Judged by TlsVerdict after the handshake (Qt's own check would refuse what could be remembered).
+            socket->setPeerVerifyMode(QSslSocket::VerifyNone);
+            socket->connectToHostEncrypted(m_endpoint.host, m_endpoint.port);
+        } else {
+            socket->connectToHost(m_endpoint.host, m_endpoint.port);
+        }
         return;
     }
     auto *port = new QSerialPort(this);
@@ -92,6 +102,23 @@ void VciTransport::attempt()
             onFailed(port, port->errorString());
     });
     onOpened();
+}
+
+void VciTransport::onEncrypted()
+{
+    auto *socket = qobject_cast<QSslSocket *>(m_device);
+    if (!socket || m_state != State::Opening)
+        return;
+    const QString peer = QStringLiteral("%1:%2").arg(m_endpoint.host.contains(u':') ? u'[' + m_endpoint.host + u']' : m_endpoint.host).arg(m_endpoint.port);
+    m_verdict = tls::TlsVerdict::judge({true, m_endpoint.pinnedSha256, m_store}, peer, m_endpoint.host, socket->peerCertificateChain());
+    if (!m_verdict.accepted()) {
+        onFailed(socket, QCoreApplication::translate("VciTransport", "not connected over TLS: %1").arg(m_verdict.reason));
+        return;
+    }
+    QPointer<QSslSocket> alive(socket);
+    emit certificateAccepted(m_verdict);
+    if (alive && m_device == socket && m_state == State::Opening)
+        onOpened();
 }
 
 void VciTransport::onOpened()

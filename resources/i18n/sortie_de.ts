@@ -926,6 +926,18 @@
         <source>The server answered %1 with %2 instead of %3</source>
         <translation>Der Server hat auf %1 mit %2 statt %3 geantwortet</translation>
     </message>
+    <message>
+        <source>Not connected to %1 over TLS: %2</source>
+        <translation>Keine Verbindung zu %1 über TLS: %2</translation>
+    </message>
+    <message>
+        <source>The TLS handshake with %1 failed (%2): does it speak TLS on that port?</source>
+        <translation>Der TLS-Handshake mit %1 ist fehlgeschlagen (%2): Spricht der Server auf diesem Port TLS?</translation>
+    </message>
+    <message>
+        <source>%1 accepted the connection but did not begin TLS within %2: is it a plain HCI server?</source>
+        <translation>%1 hat die Verbindung angenommen, aber binnen %2 kein TLS begonnen: Ist es ein unverschlüsselter HCI-Server?</translation>
+    </message>
 </context>
 <context>
     <name>HciElevationSource</name>
@@ -1445,6 +1457,22 @@
     <message>
         <source>%1…</source>
         <translation>%1…</translation>
+    </message>
+    <message>
+        <source>Secure (TLS)</source>
+        <translation>Sicher (TLS)</translation>
+    </message>
+    <message>
+        <source>For a server behind a TLS terminator: the password and everything else travel encrypted</source>
+        <translation>Für einen Server hinter einem TLS-Terminator: Passwort und alles andere werden verschlüsselt übertragen</translation>
+    </message>
+    <message>
+        <source>Send in clear</source>
+        <translation>Unverschlüsselt senden</translation>
+    </message>
+    <message>
+        <source>Do not connect</source>
+        <translation>Nicht verbinden</translation>
     </message>
 </context>
 <context>
@@ -3501,10 +3529,6 @@ Ereignisse: %1
         <translation>die Serveradresse ist leer (erwartet: Host:Port)</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is a URL: give the server as host:port, e.g. localhost:3334</source>
-        <translation>„%1“ ist eine URL: Geben Sie den Server als Host:Port an, z. B. localhost:3334</translation>
-    </message>
-    <message>
         <source>&quot;%1&quot; opens an IPv6 address with [ but never closes it</source>
         <translation>„%1“ öffnet eine IPv6-Adresse mit [, schließt sie aber nie</translation>
     </message>
@@ -3531,6 +3555,10 @@ Ereignisse: %1
     <message>
         <source>&quot;%1&quot; is not a port number (1 to 65535)</source>
         <translation>„%1“ ist keine Portnummer (1 bis 65535)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a URL: give the server as host:port, e.g. localhost:3334 (or tls://host:port over TLS)</source>
+        <translation>„%1“ ist eine URL: Geben Sie den Server als Host:Port an, z. B. localhost:3334 (oder tls://host:port über TLS)</translation>
     </message>
 </context>
 <context>
@@ -4076,6 +4104,44 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>TlsServerIdentity</name>
+    <message>
+        <source>this Qt has no TLS backend (%1)</source>
+        <translation>diesem Qt fehlt ein TLS-Backend (%1)</translation>
+    </message>
+    <message>
+        <source>%1 holds no PEM certificate</source>
+        <translation>%1 enthält kein PEM-Zertifikat</translation>
+    </message>
+    <message>
+        <source>%1 holds no unencrypted PEM RSA or EC private key</source>
+        <translation>%1 enthält keinen unverschlüsselten privaten PEM-Schlüssel (RSA oder EC)</translation>
+    </message>
+</context>
+<context>
+    <name>TlsVerdict</name>
+    <message>
+        <source>%1 sent no certificate</source>
+        <translation>%1 hat kein Zertifikat gesendet</translation>
+    </message>
+    <message>
+        <source>the pinned fingerprint for %1 is not a SHA-256 fingerprint (64 hex digits): %2</source>
+        <translation>der festgelegte Fingerabdruck für %1 ist kein SHA-256-Fingerabdruck (64 Hexadezimalziffern): %2</translation>
+    </message>
+    <message>
+        <source>%1 showed a certificate that is not the pinned one: pinned SHA-256 %2, shown SHA-256 %3</source>
+        <translation>%1 hat ein anderes als das festgelegte Zertifikat gezeigt: festgelegt SHA-256 %2, gezeigt SHA-256 %3</translation>
+    </message>
+    <message>
+        <source>the certificate of %1 has changed since it was first trusted: remembered SHA-256 %2, now SHA-256 %3. Someone may be in between; if the server&apos;s certificate was replaced on purpose, forget the remembered one</source>
+        <translation>das Zertifikat von %1 hat sich geändert, seit ihm zum ersten Mal vertraut wurde: gespeichert SHA-256 %2, jetzt SHA-256 %3. Vielleicht sitzt jemand dazwischen; wurde das Zertifikat des Servers absichtlich ersetzt, vergessen Sie das gespeicherte</translation>
+    </message>
+    <message>
+        <source>the certificate of %1 (SHA-256 %2) is not trusted by this system (%3), and there is no pinned or remembered one</source>
+        <translation>dem Zertifikat von %1 (SHA-256 %2) vertraut dieses System nicht (%3), und es gibt kein festgelegtes oder gespeichertes</translation>
+    </message>
+</context>
+<context>
     <name>UploadQuestion</name>
     <message>
         <source>Upload the route?</source>
@@ -4218,14 +4284,6 @@ Ereignisse: %1
         <translation>„%1“ ist keine URL: %2</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; needs a host and a port: tcp://host:port</source>
-        <translation>„%1“ braucht einen Host und einen Port: tcp://host:port</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot;: use tcp://host:port or serial:/dev/name</source>
-        <translation>„%1“: Verwenden Sie tcp://host:port oder serial:/dev/name</translation>
-    </message>
-    <message>
         <source>&quot;%1&quot; names no serial device</source>
         <translation>„%1“ nennt kein serielles Gerät</translation>
     </message>
@@ -4236,6 +4294,22 @@ Ereignisse: %1
     <message>
         <source>&quot;%1&quot;: %2=%3 is not a valid value</source>
         <translation>„%1“: %2=%3 ist kein gültiger Wert</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; needs a host and a port: %2://host:port</source>
+        <translation>„%1“ braucht einen Host und einen Port: %2://host:port</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: unknown setting &quot;%2&quot; (vci+tls:// knows sha256=)</source>
+        <translation>„%1“: unbekannte Einstellung „%2“ (vci+tls:// kennt sha256=)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: sha256=%2 is not a SHA-256 fingerprint (64 hex digits)</source>
+        <translation>„%1“: sha256=%2 ist kein SHA-256-Fingerabdruck (64 Hexadezimalziffern)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: use tcp://host:port, vci+tls://host:port or serial:/dev/name</source>
+        <translation>„%1“: verwenden Sie tcp://host:port, vci+tls://host:port oder serial:/dev/name</translation>
     </message>
 </context>
 <context>
@@ -4325,6 +4399,10 @@ Ereignisse: %1
         <source>cannot open %1: %2</source>
         <translation>%1 kann nicht geöffnet werden: %2</translation>
     </message>
+    <message>
+        <source>not connected over TLS: %1</source>
+        <translation>keine Verbindung über TLS: %1</translation>
+    </message>
 </context>
 <context>
     <name>VciVehicleLink</name>
@@ -4399,6 +4477,10 @@ Ereignisse: %1
     <message>
         <source>the fence cannot be made: this link was given no fence builder</source>
         <translation>der Geofence kann nicht erstellt werden: diese Verbindung hat keinen Geofence-Ersteller erhalten</translation>
+    </message>
+    <message>
+        <source>%1: first secure connection; its certificate is now trusted and remembered. Compare its SHA-256 fingerprint with the vehicle&apos;s: %2</source>
+        <translation>%1: erste sichere Verbindung; seinem Zertifikat wird nun vertraut, und es ist gespeichert. Vergleichen Sie seinen SHA-256-Fingerabdruck mit dem des Fahrzeugs: %2</translation>
     </message>
 </context>
 <context>
@@ -4976,16 +5058,8 @@ Ereignisse: %1
         <translation>Den eingebauten Simulator auf diesem Computer starten und sich mit ihm verbinden.</translation>
     </message>
     <message>
-        <source>UgCS server to connect to.</source>
-        <translation>UgCS-Server, mit dem verbunden wird.</translation>
-    </message>
-    <message>
         <source>User name to log in with.</source>
         <translation>Benutzername für die Anmeldung.</translation>
-    </message>
-    <message>
-        <source>Connect a vehicle directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600.</source>
-        <translation>Ein Fahrzeug direkt über VCI verbinden: tcp://host:port oder serial:///dev/ttyX?baud=57600.</translation>
     </message>
     <message>
         <source>Print the start-up time and memory in use, then quit (for benchmarks).</source>
@@ -5006,6 +5080,18 @@ Ereignisse: %1
     <message>
         <source>A DEM for the terrain: any raster GDAL reads (GeoTIFF, COG, Copernicus DEM, .hgt, ...) or a folder of them, asked before the server (also the setting terrain/demFolder).</source>
         <translation>Ein DEM für das Gelände: jedes Raster, das GDAL liest (GeoTIFF, COG, Copernicus DEM, .hgt, ...), oder ein Ordner davon; wird vor dem Server gefragt (auch die Einstellung terrain/demFolder).</translation>
+    </message>
+    <message>
+        <source>UgCS server to connect to: host:port, or tls://host:port over TLS (a server behind a TLS terminator).</source>
+        <translation>UgCS-Server, mit dem verbunden wird: host:port, oder tls://host:port über TLS (ein Server hinter einem TLS-Terminator).</translation>
+    </message>
+    <message>
+        <source>With --server tls://: the only certificate the server may show, as its SHA-256 fingerprint or a PEM file; remembered for that server.</source>
+        <translation>Mit --server tls://: das einzige Zertifikat, das der Server zeigen darf, als SHA-256-Fingerabdruck oder PEM-Datei; für diesen Server gespeichert.</translation>
+    </message>
+    <message>
+        <source>Connect a vehicle directly over VCI: tcp://host:port, vci+tls://host:port[?sha256=FINGERPRINT] or serial:///dev/ttyX?baud=57600.</source>
+        <translation>Ein Fahrzeug direkt über VCI verbinden: tcp://host:port, vci+tls://host:port[?sha256=FINGERABDRUCK] oder serial:///dev/ttyX?baud=57600.</translation>
     </message>
 </context>
 <context>
@@ -5442,6 +5528,34 @@ Ereignisse: %1
     <message>
         <source>Reconnecting</source>
         <translation>Erneut verbinden</translation>
+    </message>
+    <message>
+        <source>%1 is not this computer, and this connection is not secured: the password for %2 would cross the network in clear, readable by anyone on the way, at every login and reconnect. Send it in clear to this server? (Choose Secure if the server is behind a TLS terminator.)</source>
+        <translation>%1 ist nicht dieser Computer, und diese Verbindung ist nicht gesichert: Das Passwort für %2 ginge bei jeder Anmeldung und jedem Wiederverbinden unverschlüsselt über das Netz, lesbar für jeden unterwegs. Unverschlüsselt an diesen Server senden? (Wählen Sie „Sicher“, wenn der Server hinter einem TLS-Terminator steht.)</translation>
+    </message>
+    <message>
+        <source>Not connected to %1: the password was not sent.</source>
+        <translation>Nicht mit %1 verbunden: Das Passwort wurde nicht gesendet.</translation>
+    </message>
+    <message>
+        <source>First secure connection to %1: its certificate is now trusted for this server and remembered. Compare its SHA-256 fingerprint with the server&apos;s: %2</source>
+        <translation>Erste sichere Verbindung zu %1: Seinem Zertifikat wird für diesen Server nun vertraut, und es ist gespeichert. Vergleichen Sie seinen SHA-256-Fingerabdruck mit dem des Servers: %2</translation>
+    </message>
+    <message>
+        <source>Secured by TLS: the certificate remembered for %1 (SHA-256 %2).</source>
+        <translation>Durch TLS gesichert: das für %1 gespeicherte Zertifikat (SHA-256 %2).</translation>
+    </message>
+    <message>
+        <source>Secured by TLS: the certificate pinned for %1 (SHA-256 %2).</source>
+        <translation>Durch TLS gesichert: das für %1 festgelegte Zertifikat (SHA-256 %2).</translation>
+    </message>
+    <message>
+        <source>Secured by TLS: a certificate this computer trusts (SHA-256 %1).</source>
+        <translation>Durch TLS gesichert: ein Zertifikat, dem dieser Computer vertraut (SHA-256 %1).</translation>
+    </message>
+    <message>
+        <source>%1. The password was not sent.</source>
+        <translation>%1. Das Passwort wurde nicht gesendet.</translation>
     </message>
 </context>
 <context>

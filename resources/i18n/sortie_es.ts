@@ -926,6 +926,18 @@
         <source>The server answered %1 with %2 instead of %3</source>
         <translation>El servidor respondió a %1 con %2 en lugar de %3</translation>
     </message>
+    <message>
+        <source>Not connected to %1 over TLS: %2</source>
+        <translation>Sin conexión con %1 por TLS: %2</translation>
+    </message>
+    <message>
+        <source>The TLS handshake with %1 failed (%2): does it speak TLS on that port?</source>
+        <translation>El establecimiento de TLS con %1 falló (%2): ¿habla TLS en ese puerto?</translation>
+    </message>
+    <message>
+        <source>%1 accepted the connection but did not begin TLS within %2: is it a plain HCI server?</source>
+        <translation>%1 aceptó la conexión pero no inició TLS en %2: ¿es un servidor HCI sin cifrar?</translation>
+    </message>
 </context>
 <context>
     <name>HciElevationSource</name>
@@ -1445,6 +1457,22 @@
     <message>
         <source>%1…</source>
         <translation>%1…</translation>
+    </message>
+    <message>
+        <source>Secure (TLS)</source>
+        <translation>Segura (TLS)</translation>
+    </message>
+    <message>
+        <source>For a server behind a TLS terminator: the password and everything else travel encrypted</source>
+        <translation>Para un servidor detrás de un terminador TLS: la contraseña y todo lo demás viajan cifrados</translation>
+    </message>
+    <message>
+        <source>Send in clear</source>
+        <translation>Enviar sin cifrar</translation>
+    </message>
+    <message>
+        <source>Do not connect</source>
+        <translation>No conectar</translation>
     </message>
 </context>
 <context>
@@ -3501,10 +3529,6 @@ eventos:   %1
         <translation>la dirección del servidor está vacía (se esperaba host:puerto)</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is a URL: give the server as host:port, e.g. localhost:3334</source>
-        <translation>«%1» es una URL: indique el servidor como host:puerto, p. ej. localhost:3334</translation>
-    </message>
-    <message>
         <source>&quot;%1&quot; opens an IPv6 address with [ but never closes it</source>
         <translation>«%1» abre una dirección IPv6 con [ pero nunca la cierra</translation>
     </message>
@@ -3531,6 +3555,10 @@ eventos:   %1
     <message>
         <source>&quot;%1&quot; is not a port number (1 to 65535)</source>
         <translation>«%1» no es un número de puerto (1 a 65535)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a URL: give the server as host:port, e.g. localhost:3334 (or tls://host:port over TLS)</source>
+        <translation>«%1» es una URL: indique el servidor como host:puerto, p. ej. localhost:3334 (o tls://host:puerto por TLS)</translation>
     </message>
 </context>
 <context>
@@ -4076,6 +4104,44 @@ eventos:   %1
     </message>
 </context>
 <context>
+    <name>TlsServerIdentity</name>
+    <message>
+        <source>this Qt has no TLS backend (%1)</source>
+        <translation>este Qt no tiene motor TLS (%1)</translation>
+    </message>
+    <message>
+        <source>%1 holds no PEM certificate</source>
+        <translation>%1 no contiene ningún certificado PEM</translation>
+    </message>
+    <message>
+        <source>%1 holds no unencrypted PEM RSA or EC private key</source>
+        <translation>%1 no contiene ninguna clave privada PEM RSA o EC sin cifrar</translation>
+    </message>
+</context>
+<context>
+    <name>TlsVerdict</name>
+    <message>
+        <source>%1 sent no certificate</source>
+        <translation>%1 no envió ningún certificado</translation>
+    </message>
+    <message>
+        <source>the pinned fingerprint for %1 is not a SHA-256 fingerprint (64 hex digits): %2</source>
+        <translation>la huella fijada para %1 no es una huella SHA-256 (64 dígitos hexadecimales): %2</translation>
+    </message>
+    <message>
+        <source>%1 showed a certificate that is not the pinned one: pinned SHA-256 %2, shown SHA-256 %3</source>
+        <translation>%1 mostró un certificado que no es el fijado: fijado SHA-256 %2, mostrado SHA-256 %3</translation>
+    </message>
+    <message>
+        <source>the certificate of %1 has changed since it was first trusted: remembered SHA-256 %2, now SHA-256 %3. Someone may be in between; if the server&apos;s certificate was replaced on purpose, forget the remembered one</source>
+        <translation>el certificado de %1 ha cambiado desde que se confió en él por primera vez: recordado SHA-256 %2, ahora SHA-256 %3. Puede haber alguien en medio; si el certificado del servidor se sustituyó a propósito, olvide el recordado</translation>
+    </message>
+    <message>
+        <source>the certificate of %1 (SHA-256 %2) is not trusted by this system (%3), and there is no pinned or remembered one</source>
+        <translation>este sistema no confía en el certificado de %1 (SHA-256 %2) (%3), y no hay ninguno fijado ni recordado</translation>
+    </message>
+</context>
+<context>
     <name>UploadQuestion</name>
     <message>
         <source>Upload the route?</source>
@@ -4218,14 +4284,6 @@ eventos:   %1
         <translation>«%1» no es una URL: %2</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; needs a host and a port: tcp://host:port</source>
-        <translation>«%1» necesita un host y un puerto: tcp://host:puerto</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot;: use tcp://host:port or serial:/dev/name</source>
-        <translation>«%1»: use tcp://host:puerto o serial:/dev/nombre</translation>
-    </message>
-    <message>
         <source>&quot;%1&quot; names no serial device</source>
         <translation>«%1» no indica ningún dispositivo serie</translation>
     </message>
@@ -4236,6 +4294,22 @@ eventos:   %1
     <message>
         <source>&quot;%1&quot;: %2=%3 is not a valid value</source>
         <translation>«%1»: %2=%3 no es un valor válido</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; needs a host and a port: %2://host:port</source>
+        <translation>«%1» necesita un host y un puerto: %2://host:puerto</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: unknown setting &quot;%2&quot; (vci+tls:// knows sha256=)</source>
+        <translation>«%1»: ajuste desconocido «%2» (vci+tls:// conoce sha256=)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: sha256=%2 is not a SHA-256 fingerprint (64 hex digits)</source>
+        <translation>«%1»: sha256=%2 no es una huella SHA-256 (64 dígitos hexadecimales)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: use tcp://host:port, vci+tls://host:port or serial:/dev/name</source>
+        <translation>«%1»: use tcp://host:puerto, vci+tls://host:puerto o serial:/dev/nombre</translation>
     </message>
 </context>
 <context>
@@ -4325,6 +4399,10 @@ eventos:   %1
         <source>cannot open %1: %2</source>
         <translation>no se puede abrir %1: %2</translation>
     </message>
+    <message>
+        <source>not connected over TLS: %1</source>
+        <translation>sin conexión por TLS: %1</translation>
+    </message>
 </context>
 <context>
     <name>VciVehicleLink</name>
@@ -4399,6 +4477,10 @@ eventos:   %1
     <message>
         <source>the fence cannot be made: this link was given no fence builder</source>
         <translation>no se puede crear la geocerca: este enlace no recibió ningún generador de geocercas</translation>
+    </message>
+    <message>
+        <source>%1: first secure connection; its certificate is now trusted and remembered. Compare its SHA-256 fingerprint with the vehicle&apos;s: %2</source>
+        <translation>%1: primera conexión segura; su certificado es ahora de confianza y queda recordado. Compare su huella SHA-256 con la del vehículo: %2</translation>
     </message>
 </context>
 <context>
@@ -4976,16 +5058,8 @@ eventos:   %1
         <translation>Iniciar el simulador integrado en este equipo y conectarse a él.</translation>
     </message>
     <message>
-        <source>UgCS server to connect to.</source>
-        <translation>Servidor UgCS al que conectarse.</translation>
-    </message>
-    <message>
         <source>User name to log in with.</source>
         <translation>Nombre de usuario con el que iniciar sesión.</translation>
-    </message>
-    <message>
-        <source>Connect a vehicle directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600.</source>
-        <translation>Conectar un vehículo directamente por VCI: tcp://host:puerto o serial:///dev/ttyX?baud=57600.</translation>
     </message>
     <message>
         <source>Print the start-up time and memory in use, then quit (for benchmarks).</source>
@@ -5006,6 +5080,18 @@ eventos:   %1
     <message>
         <source>A DEM for the terrain: any raster GDAL reads (GeoTIFF, COG, Copernicus DEM, .hgt, ...) or a folder of them, asked before the server (also the setting terrain/demFolder).</source>
         <translation>Un DEM para el terreno: cualquier ráster que lea GDAL (GeoTIFF, COG, Copernicus DEM, .hgt, ...) o una carpeta de ellos, consultado antes que el servidor (también el ajuste terrain/demFolder).</translation>
+    </message>
+    <message>
+        <source>UgCS server to connect to: host:port, or tls://host:port over TLS (a server behind a TLS terminator).</source>
+        <translation>Servidor UgCS al que conectarse: host:puerto, o tls://host:puerto por TLS (un servidor detrás de un terminador TLS).</translation>
+    </message>
+    <message>
+        <source>With --server tls://: the only certificate the server may show, as its SHA-256 fingerprint or a PEM file; remembered for that server.</source>
+        <translation>Con --server tls://: el único certificado que el servidor puede mostrar, como huella SHA-256 o archivo PEM; se recuerda para ese servidor.</translation>
+    </message>
+    <message>
+        <source>Connect a vehicle directly over VCI: tcp://host:port, vci+tls://host:port[?sha256=FINGERPRINT] or serial:///dev/ttyX?baud=57600.</source>
+        <translation>Conectar un vehículo directamente por VCI: tcp://host:puerto, vci+tls://host:puerto[?sha256=HUELLA] o serial:///dev/ttyX?baud=57600.</translation>
     </message>
 </context>
 <context>
@@ -5442,6 +5528,34 @@ eventos:   %1
     <message>
         <source>Reconnecting</source>
         <translation>Reconectando</translation>
+    </message>
+    <message>
+        <source>%1 is not this computer, and this connection is not secured: the password for %2 would cross the network in clear, readable by anyone on the way, at every login and reconnect. Send it in clear to this server? (Choose Secure if the server is behind a TLS terminator.)</source>
+        <translation>%1 no es este ordenador y esta conexión no está protegida: la contraseña de %2 cruzaría la red sin cifrar, legible para cualquiera en el camino, en cada inicio de sesión y reconexión. ¿Enviarla sin cifrar a este servidor? (Elija «Segura» si el servidor está detrás de un terminador TLS).</translation>
+    </message>
+    <message>
+        <source>Not connected to %1: the password was not sent.</source>
+        <translation>Sin conexión con %1: la contraseña no se envió.</translation>
+    </message>
+    <message>
+        <source>First secure connection to %1: its certificate is now trusted for this server and remembered. Compare its SHA-256 fingerprint with the server&apos;s: %2</source>
+        <translation>Primera conexión segura con %1: su certificado es ahora de confianza para este servidor y queda recordado. Compare su huella SHA-256 con la del servidor: %2</translation>
+    </message>
+    <message>
+        <source>Secured by TLS: the certificate remembered for %1 (SHA-256 %2).</source>
+        <translation>Protegida por TLS: el certificado recordado para %1 (SHA-256 %2).</translation>
+    </message>
+    <message>
+        <source>Secured by TLS: the certificate pinned for %1 (SHA-256 %2).</source>
+        <translation>Protegida por TLS: el certificado fijado para %1 (SHA-256 %2).</translation>
+    </message>
+    <message>
+        <source>Secured by TLS: a certificate this computer trusts (SHA-256 %1).</source>
+        <translation>Protegida por TLS: un certificado en el que confía este ordenador (SHA-256 %1).</translation>
+    </message>
+    <message>
+        <source>%1. The password was not sent.</source>
+        <translation>%1. La contraseña no se envió.</translation>
     </message>
 </context>
 <context>

@@ -927,6 +927,18 @@
         <source>The server answered %1 with %2 instead of %3</source>
         <translation>Сервер відповів на %1 повідомленням %2 замість %3</translation>
     </message>
+    <message>
+        <source>Not connected to %1 over TLS: %2</source>
+        <translation>Немає з’єднання з %1 через TLS: %2</translation>
+    </message>
+    <message>
+        <source>The TLS handshake with %1 failed (%2): does it speak TLS on that port?</source>
+        <translation>Рукостискання TLS з %1 не вдалося (%2): чи працює TLS на цьому порту?</translation>
+    </message>
+    <message>
+        <source>%1 accepted the connection but did not begin TLS within %2: is it a plain HCI server?</source>
+        <translation>%1 прийняв з’єднання, але не почав TLS протягом %2: чи це незашифрований сервер HCI?</translation>
+    </message>
 </context>
 <context>
     <name>HciElevationSource</name>
@@ -1446,6 +1458,22 @@
     <message>
         <source>%1…</source>
         <translation>%1…</translation>
+    </message>
+    <message>
+        <source>Secure (TLS)</source>
+        <translation>Захищено (TLS)</translation>
+    </message>
+    <message>
+        <source>For a server behind a TLS terminator: the password and everything else travel encrypted</source>
+        <translation>Для сервера за TLS-термінатором: пароль і все інше передаються зашифрованими</translation>
+    </message>
+    <message>
+        <source>Send in clear</source>
+        <translation>Надіслати незашифрованим</translation>
+    </message>
+    <message>
+        <source>Do not connect</source>
+        <translation>Не підключатися</translation>
     </message>
 </context>
 <context>
@@ -3512,10 +3540,6 @@ events:   %1
         <translation>адреса сервера порожня (очікується host:port)</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; is a URL: give the server as host:port, e.g. localhost:3334</source>
-        <translation>«%1» — це URL: вкажіть сервер як host:port, напр. localhost:3334</translation>
-    </message>
-    <message>
         <source>&quot;%1&quot; opens an IPv6 address with [ but never closes it</source>
         <translation>«%1» відкриває адресу IPv6 дужкою [, але не закриває її</translation>
     </message>
@@ -3542,6 +3566,10 @@ events:   %1
     <message>
         <source>&quot;%1&quot; is not a port number (1 to 65535)</source>
         <translation>«%1» не є номером порту (від 1 до 65535)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a URL: give the server as host:port, e.g. localhost:3334 (or tls://host:port over TLS)</source>
+        <translation>«%1» — це URL: вкажіть сервер як вузол:порт, напр. localhost:3334 (або tls://вузол:порт через TLS)</translation>
     </message>
 </context>
 <context>
@@ -4087,6 +4115,44 @@ events:   %1
     </message>
 </context>
 <context>
+    <name>TlsServerIdentity</name>
+    <message>
+        <source>this Qt has no TLS backend (%1)</source>
+        <translation>у цій збірці Qt немає TLS-бекенда (%1)</translation>
+    </message>
+    <message>
+        <source>%1 holds no PEM certificate</source>
+        <translation>%1 не містить сертифіката PEM</translation>
+    </message>
+    <message>
+        <source>%1 holds no unencrypted PEM RSA or EC private key</source>
+        <translation>%1 не містить незашифрованого приватного ключа PEM (RSA чи EC)</translation>
+    </message>
+</context>
+<context>
+    <name>TlsVerdict</name>
+    <message>
+        <source>%1 sent no certificate</source>
+        <translation>%1 не надіслав сертифіката</translation>
+    </message>
+    <message>
+        <source>the pinned fingerprint for %1 is not a SHA-256 fingerprint (64 hex digits): %2</source>
+        <translation>закріплений відбиток для %1 не є відбитком SHA-256 (64 шістнадцяткові цифри): %2</translation>
+    </message>
+    <message>
+        <source>%1 showed a certificate that is not the pinned one: pinned SHA-256 %2, shown SHA-256 %3</source>
+        <translation>%1 показав не закріплений сертифікат: закріплений SHA-256 %2, показаний SHA-256 %3</translation>
+    </message>
+    <message>
+        <source>the certificate of %1 has changed since it was first trusted: remembered SHA-256 %2, now SHA-256 %3. Someone may be in between; if the server&apos;s certificate was replaced on purpose, forget the remembered one</source>
+        <translation>сертифікат %1 змінився відтоді, як йому вперше довірили: збережений SHA-256 %2, тепер SHA-256 %3. Можливо, хтось є посередині; якщо сертифікат сервера замінили навмисно, забудьте збережений</translation>
+    </message>
+    <message>
+        <source>the certificate of %1 (SHA-256 %2) is not trusted by this system (%3), and there is no pinned or remembered one</source>
+        <translation>ця система не довіряє сертифікату %1 (SHA-256 %2) (%3), а закріпленого чи збереженого немає</translation>
+    </message>
+</context>
+<context>
     <name>UploadQuestion</name>
     <message>
         <source>Upload the route?</source>
@@ -4232,14 +4298,6 @@ events:   %1
         <translation>«%1» не є URL: %2</translation>
     </message>
     <message>
-        <source>&quot;%1&quot; needs a host and a port: tcp://host:port</source>
-        <translation>«%1» потребує хоста й порту: tcp://host:port</translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot;: use tcp://host:port or serial:/dev/name</source>
-        <translation>«%1»: використовуйте tcp://host:port або serial:/dev/name</translation>
-    </message>
-    <message>
         <source>&quot;%1&quot; names no serial device</source>
         <translation>«%1» не називає послідовного пристрою</translation>
     </message>
@@ -4250,6 +4308,22 @@ events:   %1
     <message>
         <source>&quot;%1&quot;: %2=%3 is not a valid value</source>
         <translation>«%1»: %2=%3 — некоректне значення</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; needs a host and a port: %2://host:port</source>
+        <translation>«%1» потребує вузла й порту: %2://вузол:порт</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: unknown setting &quot;%2&quot; (vci+tls:// knows sha256=)</source>
+        <translation>«%1»: невідомий параметр «%2» (vci+tls:// знає sha256=)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: sha256=%2 is not a SHA-256 fingerprint (64 hex digits)</source>
+        <translation>«%1»: sha256=%2 не є відбитком SHA-256 (64 шістнадцяткові цифри)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: use tcp://host:port, vci+tls://host:port or serial:/dev/name</source>
+        <translation>«%1»: використовуйте tcp://вузол:порт, vci+tls://вузол:порт або serial:/dev/назва</translation>
     </message>
 </context>
 <context>
@@ -4340,6 +4414,10 @@ events:   %1
         <source>cannot open %1: %2</source>
         <translation>не вдається відкрити %1: %2</translation>
     </message>
+    <message>
+        <source>not connected over TLS: %1</source>
+        <translation>немає з’єднання через TLS: %1</translation>
+    </message>
 </context>
 <context>
     <name>VciVehicleLink</name>
@@ -4414,6 +4492,10 @@ events:   %1
     <message>
         <source>the fence cannot be made: this link was given no fence builder</source>
         <translation>геозону не можна створити: цьому з’єднанню не надано побудовника геозон</translation>
+    </message>
+    <message>
+        <source>%1: first secure connection; its certificate is now trusted and remembered. Compare its SHA-256 fingerprint with the vehicle&apos;s: %2</source>
+        <translation>%1: перше захищене з’єднання; його сертифікату тепер довіряють, і його збережено. Порівняйте його відбиток SHA-256 з відбитком апарата: %2</translation>
     </message>
 </context>
 <context>
@@ -4992,16 +5074,8 @@ events:   %1
         <translation>Запустити вбудований симулятор на цьому комп’ютері й підключитися до нього.</translation>
     </message>
     <message>
-        <source>UgCS server to connect to.</source>
-        <translation>Сервер UgCS для підключення.</translation>
-    </message>
-    <message>
         <source>User name to log in with.</source>
         <translation>Ім’я користувача для входу.</translation>
-    </message>
-    <message>
-        <source>Connect a vehicle directly over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600.</source>
-        <translation>Підключити апарат напряму через VCI: tcp://host:port або serial:///dev/ttyX?baud=57600.</translation>
     </message>
     <message>
         <source>Print the start-up time and memory in use, then quit (for benchmarks).</source>
@@ -5022,6 +5096,18 @@ events:   %1
     <message>
         <source>A DEM for the terrain: any raster GDAL reads (GeoTIFF, COG, Copernicus DEM, .hgt, ...) or a folder of them, asked before the server (also the setting terrain/demFolder).</source>
         <translation>DEM для рельєфу: будь-який растр, який читає GDAL (GeoTIFF, COG, Copernicus DEM, .hgt, ...), або тека з ними; запитується раніше за сервер (також налаштування terrain/demFolder).</translation>
+    </message>
+    <message>
+        <source>UgCS server to connect to: host:port, or tls://host:port over TLS (a server behind a TLS terminator).</source>
+        <translation>Сервер UgCS для підключення: вузол:порт або tls://вузол:порт через TLS (сервер за TLS-термінатором).</translation>
+    </message>
+    <message>
+        <source>With --server tls://: the only certificate the server may show, as its SHA-256 fingerprint or a PEM file; remembered for that server.</source>
+        <translation>З --server tls://: єдиний сертифікат, який може показати сервер, як відбиток SHA-256 або файл PEM; зберігається для цього сервера.</translation>
+    </message>
+    <message>
+        <source>Connect a vehicle directly over VCI: tcp://host:port, vci+tls://host:port[?sha256=FINGERPRINT] or serial:///dev/ttyX?baud=57600.</source>
+        <translation>Підключити апарат напряму через VCI: tcp://вузол:порт, vci+tls://вузол:порт[?sha256=ВІДБИТОК] або serial:///dev/ttyX?baud=57600.</translation>
     </message>
 </context>
 <context>
@@ -5459,6 +5545,34 @@ events:   %1
     <message>
         <source>Reconnecting</source>
         <translation>Повторне з&apos;єднання</translation>
+    </message>
+    <message>
+        <source>%1 is not this computer, and this connection is not secured: the password for %2 would cross the network in clear, readable by anyone on the way, at every login and reconnect. Send it in clear to this server? (Choose Secure if the server is behind a TLS terminator.)</source>
+        <translation>%1 — не цей комп’ютер, і це з’єднання не захищене: пароль для %2 йтиме мережею незашифрованим, доступним для читання будь-кому дорогою, під час кожного входу й перепідключення. Надіслати його незашифрованим на цей сервер? (Оберіть «Захищено», якщо сервер за TLS-термінатором.)</translation>
+    </message>
+    <message>
+        <source>Not connected to %1: the password was not sent.</source>
+        <translation>Не підключено до %1: пароль не надіслано.</translation>
+    </message>
+    <message>
+        <source>First secure connection to %1: its certificate is now trusted for this server and remembered. Compare its SHA-256 fingerprint with the server&apos;s: %2</source>
+        <translation>Перше захищене з’єднання з %1: його сертифікату тепер довіряють для цього сервера, і його збережено. Порівняйте його відбиток SHA-256 з відбитком сервера: %2</translation>
+    </message>
+    <message>
+        <source>Secured by TLS: the certificate remembered for %1 (SHA-256 %2).</source>
+        <translation>Захищено TLS: сертифікат, збережений для %1 (SHA-256 %2).</translation>
+    </message>
+    <message>
+        <source>Secured by TLS: the certificate pinned for %1 (SHA-256 %2).</source>
+        <translation>Захищено TLS: сертифікат, закріплений для %1 (SHA-256 %2).</translation>
+    </message>
+    <message>
+        <source>Secured by TLS: a certificate this computer trusts (SHA-256 %1).</source>
+        <translation>Захищено TLS: сертифікат, якому довіряє цей комп’ютер (SHA-256 %1).</translation>
+    </message>
+    <message>
+        <source>%1. The password was not sent.</source>
+        <translation>%1. Пароль не надіслано.</translation>
     </message>
 </context>
 <context>

@@ -12,6 +12,7 @@
 #include "SimTrafficService.h"
 #include "SimVehicleService.h"
 #include "SimWorld.h"
+#include "TlsServerIdentity.h"
 
 #include <QTcpSocket>
 
@@ -41,7 +42,6 @@ HciServer::HciServer(SimWorld &world, QObject *parent)
     SimNfzService::install(m_dispatcher, m_world);
 
     connect(&m_sessions, &SimSessionTable::sessionEnded, this, [this](int clientId) { m_world.locks().releaseAll(clientId); });
-    connect(&m_server, &QTcpServer::newConnection, this, &HciServer::onNewConnection);
 }
 
 HciServer::~HciServer()
@@ -58,23 +58,29 @@ bool HciServer::listen(const QHostAddress &address, quint16 port)
         m_error = error;
         return false;
     }
-    if (!m_server.listen(address, port)) {
-        m_error = QStringLiteral("Cannot listen on %1:%2: %3").arg(address.toString()).arg(port).arg(m_server.errorString());
+    if (m_server)
+        m_server->close();
+    m_server = tls::makeListener(m_tls);
+    // Not newConnection: a TLS listener hands a connection out only once its handshake is done.
+    connect(m_server.get(), &QTcpServer::pendingConnectionAvailable, this, &HciServer::onNewConnection);
+    if (!m_server->listen(address, port)) {
+        m_error = QStringLiteral("Cannot listen on %1:%2: %3").arg(address.toString()).arg(port).arg(m_server->errorString());
         return false;
     }
-    qCInfo(lcSim).noquote() << "HCI server listening on" << address.toString() + u':' + QString::number(m_server.serverPort());
+    qCInfo(lcSim).noquote() << "HCI server listening on" << address.toString() + u':' + QString::number(m_server->serverPort()) << (m_tls ? "(TLS)" : "");
     return true;
 }
 
 void HciServer::close()
 {
-    m_server.close();
+    if (m_server)
+        m_server->close();
     dropConnections();
 }
 
 void HciServer::onNewConnection()
 {
-    while (QTcpSocket *socket = m_server.nextPendingConnection()) {
+    while (QTcpSocket *socket = m_server->nextPendingConnection()) {
         auto *connection = new HciServerConnection(socket, m_dispatcher, m_faults, this);
         m_connections.append(connection);
         connect(connection, &HciServerConnection::closed, this, [this, connection] {

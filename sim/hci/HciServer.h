@@ -9,9 +9,11 @@
 #include <QList>
 #include <QObject>
 #include <QPointer>
+#include <QSslConfiguration>
 #include <QTcpServer>
 
 #include <memory>
+#include <optional>
 
 namespace sortie::sim {
 
@@ -39,11 +41,14 @@ public:
     explicit HciServer(SimWorld &world, QObject *parent = nullptr);
     ~HciServer() override;
 
+    // Serves TLS with this identity (tls::loadServerIdentity) from the next listen(); nullopt: plain.
+    void setTls(std::optional<QSslConfiguration> identity) { m_tls = std::move(identity); }
+    bool isSecure() const { return m_tls.has_value(); }
     // Starts the world if needed (loading its store) and listens. Port 0 picks a free port.
     bool listen(const QHostAddress &address = QHostAddress::LocalHost, quint16 port = kDefaultPort);
     void close();
-    bool isListening() const { return m_server.isListening(); }
-    quint16 port() const { return m_server.serverPort(); }
+    bool isListening() const { return m_server && m_server->isListening(); }
+    quint16 port() const { return m_server ? m_server->serverPort() : 0; }
     QString errorString() const { return m_error; }
 
     SimWorld &world() { return m_world; }
@@ -65,7 +70,8 @@ private:
     void onNewConnection();
 
     SimWorld &m_world;
-    QTcpServer m_server;
+    std::optional<QSslConfiguration> m_tls;
+    std::unique_ptr<QTcpServer> m_server;
     QString m_error;
     SimFaults m_faults;
     SimSessionTable m_sessions;

@@ -26,6 +26,9 @@ HciServerConnection::HciServerConnection(QTcpSocket *socket, HciRequestDispatche
             emit closed();
     });
     qCInfo(lcSim).noquote() << "client connected from" << m_peer;
+    // Over TLS the first request may have come with the handshake, before readyRead was connected.
+    if (m_socket->bytesAvailable() > 0)
+        QMetaObject::invokeMethod(this, &HciServerConnection::onReadyRead, Qt::QueuedConnection);
 }
 
 HciServerConnection::~HciServerConnection()

@@ -1,6 +1,7 @@
 #include "HciSimOptions.h"
 
 #include "HciMessageTypes.h"
+#include "TlsServerIdentity.h"
 
 #include <QCommandLineParser>
 #include <QFile>
@@ -60,6 +61,8 @@ HciSimOptions::HciSimOptions()
         {QStringLiteral("no-demo-mission"), QStringLiteral("Do not create the demo mission and route.")},
         {QStringLiteral("energy-profile"), QStringLiteral("Every simulated vehicle's battery and powers from this energy profile (JSON; default: docs/endurance-fit.md)."),
          QStringLiteral("file")},
+        {QStringLiteral("tls-cert"), QStringLiteral("Serve TLS (HCI and VCI) with this PEM certificate; needs --tls-key."), QStringLiteral("file")},
+        {QStringLiteral("tls-key"), QStringLiteral("The PEM private key of --tls-cert (unencrypted)."), QStringLiteral("file")},
         {QStringLiteral("fault-reverse"), QStringLiteral("Test: hold answers until N wait, then send them newest first."), QStringLiteral("n")},
         {QStringLiteral("fault-delay"), QStringLiteral("Test: delay every answer by this many ms."), QStringLiteral("ms")},
         {QStringLiteral("fault-drop"), QStringLiteral("Test: never answer this request type (number or name; repeatable)."), QStringLiteral("type")},
@@ -125,6 +128,19 @@ bool HciSimOptions::read(const QCommandLineParser &p, QString *error)
             return false;
         }
         world.energy = *profile;
+    }
+    const bool cert = p.isSet(QStringLiteral("tls-cert")), key = p.isSet(QStringLiteral("tls-key"));
+    if (cert != key) {
+        *error = cert ? QStringLiteral("--tls-cert needs --tls-key") : QStringLiteral("--tls-key needs --tls-cert");
+        return false;
+    }
+    if (cert) {
+        QString why;
+        tls = tls::loadServerIdentity(p.value(QStringLiteral("tls-cert")), p.value(QStringLiteral("tls-key")), &why);
+        if (!tls) {
+            *error = QStringLiteral("--tls-cert/--tls-key: %1").arg(why);
+            return false;
+        }
     }
     return true;
 }

@@ -6,6 +6,9 @@
 #include <QCommandLineOption>
 #include <QHostAddress>
 #include <QList>
+#include <QSslConfiguration>
+
+#include <optional>
 
 class QCommandLineParser;
 
@@ -13,8 +16,9 @@ namespace sortie::sim {
 
 // The command-line options of the simulated HCI server, so that sortie-sim's main() only wires:
 // --port, --listen, --user, --hci-vehicles, --store, --telemetry-rate, --session-expiry,
-// --max-sessions, --no-demo-mission, --energy-profile (every simulated vehicle's, VCI ones too) and
-// the --fault-* test knobs.
+// --max-sessions, --no-demo-mission, --energy-profile (every simulated vehicle's, VCI ones too),
+// --tls-cert and --tls-key (TLS on every listener that carries a password or commands: HCI and the
+// VCI vehicles' TCP ports) and the --fault-* test knobs.
 class HciSimOptions
 {
 public:
@@ -28,6 +32,7 @@ public:
     int sessionExpiryMs = 60000;
     SimWorld::Config world;
     SimFaults faults;
+    std::optional<QSslConfiguration> tls; // --tls-cert with --tls-key; nullopt: plain TCP
 
 private:
     QList<QCommandLineOption> m_options;

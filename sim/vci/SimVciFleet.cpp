@@ -86,6 +86,7 @@ SimVciFleet::SimVciFleet(const SimVciFleetOptions &options, QObject *parent)
         v.homeLongitude += 0.005 * (i / 4);
         m_vehicles.push_back(std::make_unique<SimVciVehicle>(v));
         m_listeners.push_back(std::make_unique<SimVciListener>(m_vehicles.back().get()));
+        m_listeners.back()->setTls(options.tls);
     }
 }
 
@@ -115,7 +116,9 @@ QStringList SimVciFleet::describe() const
 {
     QStringList lines;
     for (size_t i = 0; i < m_listeners.size(); ++i) {
-        QString line = QStringLiteral("%1 tcp://127.0.0.1:%2").arg(m_vehicles[i]->options().id).arg(m_listeners[i]->port());
+        QString line = QStringLiteral("%1 %2://127.0.0.1:%3")
+                           .arg(m_vehicles[i]->options().id, m_listeners[i]->isSecure() ? QStringLiteral("vci+tls") : QStringLiteral("tcp"))
+                           .arg(m_listeners[i]->port());
         if (!m_listeners[i]->ptyName().isEmpty())
             line += QStringLiteral(" serial:%1").arg(m_listeners[i]->ptyName());
         lines << line;

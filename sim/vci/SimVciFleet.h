@@ -4,9 +4,11 @@
 
 #include <QList>
 #include <QObject>
+#include <QSslConfiguration>
 #include <QStringList>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QCommandLineParser;
@@ -23,6 +25,7 @@ struct SimVciFleetOptions
     quint16 firstPort = 5760;  // --vci-port: vehicle i listens on firstPort + i (0: any free port)
     bool pty = false;          // --vci-pty: each also on a pseudo-terminal
     SimVciOptions vehicle;     // rate, time scale, framing and the test knobs, shared by all
+    std::optional<QSslConfiguration> tls; // sortie-sim's --tls-cert/--tls-key: TLS on every TCP port
 
     void addTo(QCommandLineParser &parser) const;
     bool read(const QCommandLineParser &parser, QString *error);
@@ -39,7 +42,7 @@ public:
 
     // Opens every listener; false and an error when a port or a pty cannot be had.
     bool start(QString *error);
-    // "vci-1 tcp://127.0.0.1:5760 serial:/dev/pts/4", one line per vehicle.
+    // "vci-1 tcp://127.0.0.1:5760 serial:/dev/pts/4" (vci+tls:// over TLS), one line per vehicle.
     QStringList describe() const;
 
     const std::vector<std::unique_ptr<SimVciVehicle>> &vehicles() const { return m_vehicles; }

@@ -3,6 +3,7 @@
 #include "SimPty.h"
 #include "SimVciSession.h"
 #include "SimVciVehicle.h"
+#include "TlsServerIdentity.h"
 
 #include <QHostAddress>
 #include <QTcpServer>
@@ -27,8 +28,10 @@ SimVciListener::~SimVciListener()
 bool SimVciListener::listen(quint16 port, QString *error)
 {
     if (!m_server) {
-        m_server = new QTcpServer(this);
-        connect(m_server, &QTcpServer::newConnection, this, &SimVciListener::onNewConnection);
+        m_server = tls::makeListener(m_tls).release();
+        m_server->setParent(this);
+        // Not newConnection: a TLS listener hands a connection out only once its handshake is done.
+        connect(m_server, &QTcpServer::pendingConnectionAvailable, this, &SimVciListener::onNewConnection);
     }
     if (m_server->listen(QHostAddress::LocalHost, port))
         return true;

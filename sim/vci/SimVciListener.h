@@ -3,6 +3,9 @@
 #include <QList>
 #include <QObject>
 #include <QPointer>
+#include <QSslConfiguration>
+
+#include <optional>
 
 class QTcpServer;
 
@@ -13,7 +16,7 @@ class SimVciSession;
 class SimVciVehicle;
 
 // Where clients reach one simulated vehicle: a TCP port on 127.0.0.1 (each connection its own
-// session) and, on request, a pseudo-terminal whose slave device a client opens as a serial line.
+// session; TLS with setTls) and, on request, a pseudo-terminal whose slave device a client opens as a serial line.
 class SimVciListener : public QObject
 {
     Q_OBJECT
@@ -21,6 +24,9 @@ public:
     explicit SimVciListener(SimVciVehicle *vehicle, QObject *parent = nullptr);
     ~SimVciListener() override;
 
+    // Serves TLS with this identity (tls::loadServerIdentity) from the next listen(); nullopt: plain.
+    void setTls(std::optional<QSslConfiguration> identity) { m_tls = std::move(identity); }
+    bool isSecure() const { return m_tls.has_value(); }
     bool listen(quint16 port = 0, QString *error = nullptr); // 0: any free port
     quint16 port() const;
     bool openPty(QString *error = nullptr);
@@ -39,6 +45,7 @@ private:
     void onNewConnection();
 
     SimVciVehicle *m_vehicle;
+    std::optional<QSslConfiguration> m_tls;
     QTcpServer *m_server = nullptr;
     SimPty *m_pty = nullptr;
     QPointer<SimVciSession> m_ptySession;

@@ -18,6 +18,7 @@ ClientWindow::ClientWindow(Options options)
     m_world = std::make_unique<sim::SimWorld>(config);
     m_server = std::make_unique<sim::HciServer>(*m_world);
     m_server->setUploadStepMs(options.uploadStepMs);
+    m_server->setTls(options.hciTls);
     if (!m_server->listen(QHostAddress::LocalHost, 0)) {
         m_error = QStringLiteral("the simulated server cannot listen");
         return;

@@ -19,6 +19,7 @@
 #include <QQuickItem>
 #include <QQuickWindow>
 #include <QSettings>
+#include <QSslConfiguration>
 #include <QTemporaryDir>
 
 #include <functional>
@@ -49,6 +50,8 @@ public:
         std::function<void(ClientWindow &)> beforeClient;
         // Where the translations (sortie_<code>.qm) are: empty, the program's own resources.
         QString translationsFolder;
+        // The simulated server's TLS identity (tls::loadServerIdentity); nullopt: plain HCI.
+        std::optional<QSslConfiguration> hciTls;
     };
     explicit ClientWindow(Options options);
     ClientWindow() : ClientWindow(Options{}) {}
@@ -76,6 +79,7 @@ public:
     }
     QObject *page(const char *name) const { return m_window->property(name).value<QObject *>(); }
 
+    QSettings &storage() { return *m_storage; }
     sim::SimWorld &world() { return *m_world; }
     sim::HciServer &server() { return *m_server; }
     sim::SimVciFleet &vci() { return *m_vci; }

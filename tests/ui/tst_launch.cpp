@@ -67,6 +67,8 @@ private slots:
         QTest::newRow("ipv4") << "127.0.0.1:3335" << "127.0.0.1" << 3335;
         QTest::newRow("ipv6") << "[::1]:3336" << "::1" << 3336;
         QTest::newRow("ipv6 no port") << "[fe80::1]" << "fe80::1" << 3334;
+        QTest::newRow("tls") << "tls://ugcs.example:4000" << "ugcs.example" << 4000;
+        QTest::newRow("tls ipv6") << "TLS://[::1]:3336" << "::1" << 3336;
     }
 
     void serverAddresses()
@@ -80,6 +82,10 @@ private slots:
         QCOMPARE(std::get<ServerAddress>(result).host, host);
         QCOMPARE(int(std::get<ServerAddress>(result).port), port);
         QCOMPARE(ServerAddress::parse(std::get<ServerAddress>(result).toString()).index(), size_t(0));
+        // tls:// is kept through the round trip; the peer (what is remembered per server) has no scheme.
+        QCOMPARE(std::get<ServerAddress>(result).tls, text.startsWith(QLatin1String("tls://"), Qt::CaseInsensitive));
+        QCOMPARE(std::get<ServerAddress>(ServerAddress::parse(std::get<ServerAddress>(result).toString())).tls, std::get<ServerAddress>(result).tls);
+        QVERIFY(!std::get<ServerAddress>(result).peer().contains(QLatin1String("://")));
     }
 
     void badServerAddresses_data()
@@ -125,7 +131,10 @@ private slots:
         const QList<std::pair<QString, QString>> bad{
             {QStringLiteral("tcp://host"), QStringLiteral("no port")},
             {QStringLiteral("tcp://:5760"), QStringLiteral("no host")},
-            {QStringLiteral("udp://host:1"), QStringLiteral("start with tcp:// or serial://")},
+            {QStringLiteral("udp://host:1"), QStringLiteral("start with tcp://, vci+tls:// or serial://")},
+            {QStringLiteral("vci+tls://host"), QStringLiteral("needs a host and a port")},
+            {QStringLiteral("vci+tls://host:1?sha256=abc"), QStringLiteral("not a SHA-256 fingerprint")},
+            {QStringLiteral("vci+tls://host:1?pin=abc"), QStringLiteral("only sha256 is known")},
             {QStringLiteral("serial://"), QStringLiteral("names no serial device")},
             {QStringLiteral("serial:///dev/ttyS0?baud=-5"), QStringLiteral("positive number")},
             {QStringLiteral("serial:///dev/ttyS0?parity=even"), QStringLiteral("unknown serial option")},
@@ -149,6 +158,19 @@ private slots:
         QCOMPARE(options.server->toString(), QStringLiteral("ucs.local:3334"));
         QCOMPARE(options.user, QStringLiteral("pilot"));
         QCOMPARE(options.vci->toString(), QStringLiteral("tcp://10.0.0.5:5760"));
+        // Over TLS: the server's certificate pinned by fingerprint (any spelling) or by its PEM file.
+        const QString pin = QStringLiteral("3A:F0:00:11:22:33:44:55:66:77:88:99:AA:BB:CC:DD:EE:FF:00:11:22:33:44:55:66:77:88:99:AA:BB:CC:DD");
+        options = parsed({QStringLiteral("--server"), QStringLiteral("tls://ucs.example:4433"), QStringLiteral("--server-pin"),
+                          QString(pin).remove(u':').toLower(), QStringLiteral("--vci"), QStringLiteral("vci+tls://10.0.0.5:5761?sha256=") + QString(pin).remove(u':')});
+        QVERIFY(options.server->tls);
+        QCOMPARE(options.server->toString(), QStringLiteral("tls://ucs.example:4433"));
+        QCOMPARE(options.serverPin, pin);
+        QVERIFY(options.vci->tls);
+        QCOMPARE(options.vci->pin, pin);
+        QCOMPARE(options.vci->toString(), QStringLiteral("vci+tls://10.0.0.5:5761?sha256=") + QString(pin).remove(u':'));
+        QVERIFY(failure({QStringLiteral("--server"), QStringLiteral("ucs.example:3334"), QStringLiteral("--server-pin"), pin}).contains(QStringLiteral("needs --server tls://")));
+        QVERIFY(failure({QStringLiteral("--server"), QStringLiteral("tls://ucs.example"), QStringLiteral("--server-pin"), QStringLiteral("12ab")})
+                    .contains(QStringLiteral("neither a SHA-256 fingerprint")));
 
         options = parsed({QStringLiteral("--version")});
         QVERIFY(options.exitNow);

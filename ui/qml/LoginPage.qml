@@ -3,7 +3,8 @@ import QtQuick.Controls
 import QtQuick.Layouts
 import Sortie.Ui
 
-// Server, user and password, handed to `connection` (the client's connection controller).
+// Server, user and password, handed to `connection` (the client's connection controller). The
+// controller decides how the password travels (TLS, or in clear after the question shown here).
 Page {
     id: page
     required property AppSettings appSettings
@@ -71,6 +72,21 @@ Page {
                 selectByMouse: true
                 ToolTip.visible: hovered
                 ToolTip.text: qsTr("Host name or address and HCI port of the UgCS server")
+            }
+            CheckBox {
+                id: secure
+                objectName: "secureCheck"
+                Layout.fillWidth: true
+                enabled: !page.connected
+                text: qsTr("Secure (TLS)")
+                // The address says it (tls://host:port); the box only adds or takes off the prefix.
+                checked: page.connection.isSecureAddress(server.text)
+                onToggled: {
+                    server.text = page.connection.withSecurity(server.text, checked)
+                    checked = Qt.binding(() => page.connection.isSecureAddress(server.text))
+                }
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("For a server behind a TLS terminator: the password and everything else travel encrypted")
             }
             Label { text: qsTr("User") }
             TextField {
@@ -152,6 +168,47 @@ Page {
                 visible: page.connected
                 text: page.connection.ready ? qsTr("Logged in as %1 at %2.").arg(page.connection.user).arg(page.connection.server)
                                             : qsTr("%1…").arg(page.connection.stateText)
+            }
+            Frame {
+                // The password would go in clear to another computer: asked once per server.
+                objectName: "cleartextQuestion"
+                Layout.fillWidth: true
+                visible: page.connection.askingCleartext
+                ColumnLayout {
+                    anchors.fill: parent
+                    spacing: 8
+                    Label {
+                        objectName: "cleartextQuestionText"
+                        Layout.preferredWidth: 1
+                        Layout.fillWidth: true
+                        wrapMode: Text.Wrap
+                        textFormat: Text.PlainText
+                        text: page.connection.cleartextQuestion
+                    }
+                    RowLayout {
+                        Button {
+                            objectName: "sendInClearButton"
+                            text: qsTr("Send in clear")
+                            onClicked: page.connection.answerCleartext(true)
+                        }
+                        Button {
+                            objectName: "refuseCleartextButton"
+                            text: qsTr("Do not connect")
+                            highlighted: true
+                            onClicked: page.connection.answerCleartext(false)
+                        }
+                    }
+                }
+            }
+            Label {
+                objectName: "certificateNote"
+                Layout.preferredWidth: 1
+                Layout.fillWidth: true
+                wrapMode: Text.Wrap
+                textFormat: Text.PlainText
+                font.pixelSize: 12
+                text: page.connection.certificateNote
+                visible: text.length > 0
             }
             Label {
                 objectName: "loginMessage"

@@ -208,6 +208,7 @@ bool VehicleFleet::addVciVehicle(const QString &text)
     auto link = std::make_unique<vehicle::VciVehicleLink>(*endpoint, m_elevation.data());
     if (m_fenceBuilder)
         link->setFenceBuilder(*m_fenceBuilder);
+    link->transport()->setCertificateStore(m_certificates);
     add(std::move(link));
     return true;
 }

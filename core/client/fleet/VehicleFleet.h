@@ -21,6 +21,9 @@ class ElevationService;
 namespace sortie::vehicle {
 struct VciFenceBuilder;
 }
+namespace sortie::tls {
+class CertificateStore;
+}
 
 namespace sortie::client {
 
@@ -72,8 +75,11 @@ public:
     // What makes the fence of a route going up to a VCI vehicle (airspace::vciFenceFor), for the VCI
     // vehicles added from now on; without it, a route that asks for a fence is refused.
     void setFenceBuilder(vehicle::VciFenceBuilder builder);
+    // Where vci+tls:// vehicles' certificates are pinned and remembered (not owned; the login's store,
+    // so one settings file holds them all), for the VCI vehicles added from now on.
+    void setCertificateStore(tls::CertificateStore *store) { m_certificates = store; }
 
-    // Connects a vehicle over VCI: tcp://host:port or serial:///dev/ttyX?baud=57600.
+    // Connects a vehicle over VCI: tcp://host:port, vci+tls://host:port[?sha256=PIN] or serial:///dev/ttyX?baud=57600.
     Q_INVOKABLE bool addVciVehicle(const QString &endpoint);
     // Click-and-go: flies the vehicle to a point at its present altitude above ground (20 m when
     // unknown), 5 m/s. The result comes as commandResult.
@@ -100,6 +106,7 @@ private:
     QPointer<hci::HciClient> m_client;
     QPointer<terrain::ElevationService> m_elevation;
     std::unique_ptr<vehicle::VciFenceBuilder> m_fenceBuilder; // null: none
+    tls::CertificateStore *m_certificates = nullptr;
     vehicle::CommandLog m_commandLog; // before the vehicles, which write to it
     CommandPolicy m_commands;
     VehicleGroup m_group{this, &m_commands};

@@ -1,5 +1,6 @@
 #include "ConnectionController.h"
 
+#include "HciConnection.h"
 #include "LanguageChange.h"
 #include "ServerAddress.h"
 
@@ -10,10 +11,13 @@ namespace sortie::client {
 using hci::HciError;
 using hci::HciSession;
 
-ConnectionController::ConnectionController(HciSession *session, QObject *parent)
+ConnectionController::ConnectionController(HciSession *session, QSettings *settings, QObject *parent)
     : QObject(parent)
     , m_session(session)
+    , m_certificates(settings)
+    , m_consent(settings)
 {
+    connect(session->connection(), &hci::HciConnection::certificateAccepted, this, &ConnectionController::onCertificateAccepted);
     connect(this, &ConnectionController::stateChanged, this, &ConnectionController::statusDetailChanged);
     connect(this, &ConnectionController::detailChanged, this, &ConnectionController::statusDetailChanged);
     connect(this, &ConnectionController::stateChanged, this, &ConnectionController::stateTextChanged);
@@ -21,6 +25,7 @@ ConnectionController::ConnectionController(HciSession *session, QObject *parent)
     i18n::onLanguageChange(this, [this] {
         emit stateTextChanged();
         emit statusDetailChanged();
+        emit cleartextQuestionChanged();
     });
     connect(session, &HciSession::stateChanged, this, [this](HciSession::State state) {
         if (state == HciSession::State::Ready || state == HciSession::State::Disconnected)
@@ -94,16 +99,98 @@ bool ConnectionController::connectToServer(const QString &server, const QString 
         return false;
     }
     const ServerAddress target = std::get<ServerAddress>(address);
-    m_server = target.toString();
-    m_user = user.trimmed();
     setError({}, {});
-    m_session->open(target.host, target.port, m_user, password);
-    emit stateChanged();
+    if (m_consent.mustAsk(target)) {
+        m_pending = PendingLogin{target, user.trimmed(), password};
+        emit cleartextQuestionChanged();
+        return true;
+    }
+    open(target, user.trimmed(), password);
     return true;
+}
+
+void ConnectionController::open(const ServerAddress &target, const QString &user, const QString &password)
+{
+    m_server = target.toString();
+    m_user = user;
+    setCertificateNote({});
+    m_session->open(target.host, target.port, m_user, password, tls::TlsOptions{target.tls, {}, &m_certificates});
+    emit stateChanged();
+}
+
+QString ConnectionController::cleartextQuestion() const
+{
+    if (!m_pending)
+        return {};
+    return tr("%1 is not this computer, and this connection is not secured: the password for %2 would cross the network "
+              "in clear, readable by anyone on the way, at every login and reconnect. Send it in clear to this server? "
+              "(Choose Secure if the server is behind a TLS terminator.)")
+        .arg(m_pending->target.peer(), m_pending->user);
+}
+
+void ConnectionController::answerCleartext(bool sendInClear)
+{
+    if (!m_pending)
+        return;
+    PendingLogin login = std::move(*m_pending);
+    m_pending.reset();
+    emit cleartextQuestionChanged();
+    if (!sendInClear) {
+        setError(QStringLiteral("Cleartext"), tr("Not connected to %1: the password was not sent.").arg(login.target.peer()));
+        return;
+    }
+    m_consent.allow(login.target);
+    open(login.target, login.user, login.password);
+}
+
+bool ConnectionController::isSecureAddress(const QString &server) const
+{
+    return server.trimmed().startsWith(QLatin1String("tls://"), Qt::CaseInsensitive);
+}
+
+QString ConnectionController::withSecurity(const QString &server, bool secure) const
+{
+    QString bare = server.trimmed();
+    if (isSecureAddress(bare))
+        bare = bare.mid(6);
+    return secure ? QStringLiteral("tls://") + bare : bare;
+}
+
+void ConnectionController::onCertificateAccepted(const tls::TlsVerdict &verdict)
+{
+    using Basis = tls::TlsVerdict::Basis;
+    const QString peer = m_session ? m_session->connection()->peerName() : QString();
+    switch (verdict.basis) {
+    case Basis::FirstUse:
+        setCertificateNote(tr("First secure connection to %1: its certificate is now trusted for this server and remembered. "
+                              "Compare its SHA-256 fingerprint with the server's: %2").arg(peer, verdict.fingerprint));
+        return;
+    case Basis::Remembered:
+        setCertificateNote(tr("Secured by TLS: the certificate remembered for %1 (SHA-256 %2).").arg(peer, verdict.fingerprint));
+        return;
+    case Basis::Pinned:
+        setCertificateNote(tr("Secured by TLS: the certificate pinned for %1 (SHA-256 %2).").arg(peer, verdict.fingerprint));
+        return;
+    case Basis::System:
+        setCertificateNote(tr("Secured by TLS: a certificate this computer trusts (SHA-256 %1).").arg(verdict.fingerprint));
+        return;
+    case Basis::Refused:
+        break;
+    }
+}
+
+void ConnectionController::setCertificateNote(const QString &note)
+{
+    if (note == m_certificateNote)
+        return;
+    m_certificateNote = note;
+    emit certificateNoteChanged();
 }
 
 void ConnectionController::disconnectFromServer()
 {
+    if (m_pending)
+        answerCleartext(false);
     if (m_session)
         m_session->close();
 }
@@ -130,6 +217,8 @@ QString ConnectionController::explain(const HciError &error)
         return tr("The server answered something Sortie cannot use (%1).").arg(what);
     case HciError::Kind::Server:
         return tr("The server refused: %1").arg(what);
+    case HciError::Kind::Certificate:
+        return tr("%1. The password was not sent.").arg(what);
     case HciError::Kind::Cancelled:
     case HciError::Kind::None:
         break;

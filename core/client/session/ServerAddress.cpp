@@ -22,12 +22,16 @@ std::optional<quint16> parsePort(const QString &text)
 
 std::variant<ServerAddress, QString> ServerAddress::parse(const QString &text)
 {
-    const QString trimmed = text.trimmed();
+    QString trimmed = text.trimmed();
     if (trimmed.isEmpty())
         return QCoreApplication::translate("ServerAddress", "the server address is empty (expected host:port)");
-    if (trimmed.contains(QLatin1String("://")))
-        return QCoreApplication::translate("ServerAddress", "\"%1\" is a URL: give the server as host:port, e.g. localhost:3334").arg(trimmed);
     ServerAddress address;
+    if (trimmed.startsWith(QLatin1String("tls://"), Qt::CaseInsensitive)) {
+        address.tls = true;
+        trimmed = trimmed.mid(6);
+    }
+    if (trimmed.contains(QLatin1String("://")))
+        return QCoreApplication::translate("ServerAddress", "\"%1\" is a URL: give the server as host:port, e.g. localhost:3334 (or tls://host:port over TLS)").arg(text.trimmed());
     QString portText;
     if (trimmed.startsWith(QLatin1Char('['))) {
         const qsizetype close = trimmed.indexOf(QLatin1Char(']'));
@@ -60,10 +64,30 @@ std::variant<ServerAddress, QString> ServerAddress::parse(const QString &text)
     return address;
 }
 
-QString ServerAddress::toString() const
+QString ServerAddress::peer() const
 {
     const QString shown = host.contains(QLatin1Char(':')) ? QStringLiteral("[%1]").arg(host) : host;
     return QStringLiteral("%1:%2").arg(shown).arg(port);
+}
+
+QString ServerAddress::toString() const
+{
+    return tls ? QStringLiteral("tls://") + peer() : peer();
+}
+
+bool ServerAddress::isLoopback() const
+{
+    const QString name = host.toLower();
+    if (name == QLatin1String("localhost") || name.endsWith(QLatin1String(".localhost")))
+        return true;
+    QHostAddress address;
+    if (!address.setAddress(host))
+        return false; // a name: where it leads is up to DNS
+    bool mapped = false;
+    const quint32 v4 = address.toIPv4Address(&mapped); // ::ffff:127.0.0.1 too
+    if (mapped)
+        return (v4 >> 24) == 127;
+    return address == QHostAddress(QHostAddress::LocalHostIPv6);
 }
 
 } // namespace sortie::client

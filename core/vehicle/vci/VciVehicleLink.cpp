@@ -122,6 +122,11 @@ VciVehicleLink::VciVehicleLink(const vci::VciEndpoint &endpoint, terrain::Elevat
             setState(State::Lost); // the transport is already trying again
     });
     connect(&m_transport, &vci::VciTransport::attemptFailed, this, &VehicleLink::errorOccurred);
+    connect(&m_transport, &vci::VciTransport::certificateAccepted, this, [this](const tls::TlsVerdict &verdict) {
+        if (verdict.firstUse()) // trust on first use: the operator sees what was trusted, once
+            emit errorOccurred(QCoreApplication::translate("VciVehicleLink", "%1: first secure connection; its certificate is now trusted and remembered. Compare its SHA-256 fingerprint with the vehicle's: %2")
+                                   .arg(m_identity.name, verdict.fingerprint));
+    });
     connect(&m_transport, &vci::VciTransport::lost, this, [this](const QString &why) {
         if (!m_stopping)
             emit errorOccurred(QCoreApplication::translate("VciVehicleLink", "connection to %1 lost: %2").arg(m_identity.name, why));

@@ -1,0 +1,5 @@
+#include "TlsLog.h"
+
+namespace sortie::tls {
+Q_LOGGING_CATEGORY(lcTls, "sortie.tls")
+}
