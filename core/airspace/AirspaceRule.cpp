@@ -79,7 +79,9 @@ QString geoZoneDetails(const ed::GeoZone &g)
 }
 } // namespace
 
-QString violationMessage(const AirspaceViolation &v, const Zone &zone, const Authorisations &authorisations)
+namespace {
+// `details`: the zone's geoZoneDetails when the caller has them already (one zone, many findings).
+QString violationText(const AirspaceViolation &v, const Zone &zone, const Authorisations &authorisations, const QString *details)
 {
     const QString where = v.toDistance - v.fromDistance < 0.5 ? QCoreApplication::translate("AirspaceRule", "at %1").arg(metres(v.fromDistance))
                                                               : QCoreApplication::translate("AirspaceRule", "from %1 to %2").arg(metres(v.fromDistance), metres(v.toDistance));
@@ -111,7 +113,7 @@ QString violationMessage(const AirspaceViolation &v, const Zone &zone, const Aut
         }
         if (v.heightUnknown)
             text += QCoreApplication::translate("AirspaceRule", "; its height there is unknown (no terrain data), so it counts as inside");
-        return text + QLatin1Char('.') + geoZoneDetails(g);
+        return text + QLatin1Char('.') + (details ? *details : geoZoneDetails(g));
     }
     // One sentence each way: a verb put into a sentence is not translatable (word order differs).
     text = v.kind == ViolationKind::InsideExclusion
@@ -120,6 +122,12 @@ QString violationMessage(const AirspaceViolation &v, const Zone &zone, const Aut
     if (v.heightUnknown)
         text += QCoreApplication::translate("AirspaceRule", "; its height there is unknown (no terrain data), so it counts as inside");
     return text + QLatin1Char('.');
+}
+} // namespace
+
+QString violationMessage(const AirspaceViolation &v, const Zone &zone, const Authorisations &authorisations)
+{
+    return violationText(v, zone, authorisations, nullptr);
 }
 
 QString warningMessage(const AirspaceWarning &w, const Zone &zone, double buffer)
@@ -146,6 +154,7 @@ ed::TimeWindow flightWindow(const mission::Route &route, const QDateTime &start,
 std::vector<ValidationIssue> airspaceIssues(const AirspaceReport &report, const ZoneSet &zones, double buffer, const Authorisations &authorisations)
 {
     std::vector<ValidationIssue> out;
+    std::map<const ed::GeoZone *, QString> details;  // composed once per zone, not per finding
     for (const AirspaceViolation &v : report.violations) {
         const Zone &zone = zones.zones()[size_t(v.zone)];
         const FindingLevel level = findingLevel(v, zone, authorisations);
@@ -154,7 +163,14 @@ std::vector<ValidationIssue> airspaceIssues(const AirspaceReport &report, const 
         QString rule = v.kind == ViolationKind::InsideExclusion ? QStringLiteral("airspace-exclusion") : QStringLiteral("airspace-inclusion");
         if (level == FindingLevel::Warning)
             rule = zone.geoZone->restriction == ed::Restriction::Conditional ? QStringLiteral("airspace-conditional") : QStringLiteral("airspace-authorised");
-        out.push_back({level == FindingLevel::Error ? Severity::Error : Severity::Warning, rule, violationMessage(v, zone, authorisations), v.row});
+        const QString *said = nullptr;
+        if (zone.geoZone) {
+            auto [it, fresh] = details.try_emplace(zone.geoZone.get());
+            if (fresh)
+                it->second = geoZoneDetails(*zone.geoZone);
+            said = &it->second;
+        }
+        out.push_back({level == FindingLevel::Error ? Severity::Error : Severity::Warning, rule, violationText(v, zone, authorisations, said), v.row});
     }
     for (const AirspaceWarning &w : report.warnings)
         out.push_back({Severity::Warning, QStringLiteral("airspace-near"), warningMessage(w, zones.zones()[size_t(w.zone)], buffer), w.row});

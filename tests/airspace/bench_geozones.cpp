@@ -142,10 +142,13 @@ int main(int argc, char **argv)
         }
     std::printf("%-56s %d errors, %d warnings, %d information, %zu near; %d zones apply, %d do not\n", "  found", errors, warnings, information,
                 found.warnings.size(), found.zones, found.outsideWindow);
-    report("  the messages of every finding", median(5, [&] {
+    report("  the messages of every finding, one by one", median(5, [&] {
         for (const AirspaceViolation &v : found.violations)
             (void)violationMessage(v, zones->zones()[size_t(v.zone)], none);
     }), 0);
+    std::size_t issues = 0;
+    report("  the route's issues (airspaceIssues, as AirspaceRule)", median(5, [&] { issues = airspaceIssues(found, *zones, 20.0, none).size(); }), 0);
+    std::printf("%-56s %zu issues\n", "  ", issues);
 
     // A 20-minute window on a Monday morning: the weekend evenings do not apply.
     const QDateTime monday = QDateTime::fromString(QStringLiteral("2026-06-08T09:00:00Z"), Qt::ISODate);
