@@ -9,6 +9,9 @@
 #include "TerrainReport.h"
 
 #include <QCommandLineParser>
+#include <QTimeZone>
+
+#include <algorithm>
 
 #include <cmath>
 
@@ -21,9 +24,11 @@ int runAirspace(const QStringList &args, Streams io)
 {
     QCommandLineParser p;
     p.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
-    p.addOption({QStringLiteral("zones"), QStringLiteral("A zone file: .plan (geofence), .geojson / .json, .kml. Repeatable."), QStringLiteral("FILE")});
+    p.addOption({QStringLiteral("zones"), QStringLiteral("A zone file: .plan (geofence), .geojson / .json, .kml, or UAS geographical zones (ED-269, ED-318; by content). Repeatable."), QStringLiteral("FILE")});
     p.addOption({QStringLiteral("dem"), QStringLiteral("A DEM (any raster GDAL reads, an SRTM .hgt tile) or a folder of them (AGL heights, terrain following)."), QStringLiteral("PATH")});
     p.addOption({QStringLiteral("buffer"), QStringLiteral("Warn when a leg comes this close to a zone, m."), QStringLiteral("METERS"), QStringLiteral("20")});
+    p.addOption({QStringLiteral("at"), QStringLiteral("The flight's planned start, ISO 8601 UTC (default: now). UAS geographical zones (ED-269, ED-318) count when they apply during the flight."), QStringLiteral("ISO-8601-UTC")});
+    p.addOption({QStringLiteral("authorisation"), QStringLiteral("An authorisation for a UAS geographical zone: its identifier and the authorisation's reference. Repeatable."), QStringLiteral("IDENTIFIER=REFERENCE")});
     p.addOption({QStringLiteral("json"), QStringLiteral("Machine-readable output.")});
     if (!p.parse(QStringList{QStringLiteral("sortie-plan")} + args)) {
         io.err << "sortie-plan: " << p.errorText() << "\n";
@@ -42,6 +47,27 @@ int runAirspace(const QStringList &args, Streams io)
     if (!ok || !(buffer >= 0) || !std::isfinite(buffer)) {
         io.err << "sortie-plan: --buffer needs a number of metres, 0 or more\n";
         return Failure;
+    }
+    QDateTime start = QDateTime::currentDateTimeUtc();
+    if (p.isSet(QStringLiteral("at"))) {
+        const QString at = p.value(QStringLiteral("at"));
+        start = QDateTime::fromString(at, Qt::ISODateWithMs);
+        if (!start.isValid() || !at.contains(QLatin1Char('T'))) {
+            io.err << "sortie-plan: --at needs an ISO 8601 date and time, e.g. 2026-06-06T18:00:00Z (got \"" << at << "\")\n";
+            return Failure;
+        }
+        if (start.timeSpec() == Qt::LocalTime)  // no offset written: UTC, as the option says
+            start = QDateTime(start.date(), start.time(), QTimeZone::utc());
+        start = start.toUTC();
+    }
+    airspace::Authorisations authorisations;
+    for (const QString &a : p.values(QStringLiteral("authorisation"))) {
+        const qsizetype eq = a.indexOf(QLatin1Char('='));
+        if (eq <= 0 || eq == a.size() - 1) {
+            io.err << "sortie-plan: --authorisation needs IDENTIFIER=REFERENCE (got \"" << a << "\")\n";
+            return Failure;
+        }
+        authorisations[a.left(eq).trimmed()] = a.mid(eq + 1).trimmed();
     }
     QString error;
     const std::optional<ZoneInput> zones = readZoneInput(p.values(QStringLiteral("zones")), buffer, &error);
@@ -70,6 +96,11 @@ int runAirspace(const QStringList &args, Streams io)
         io.err << "note: " << n << "\n";
     for (const QString &n : zones->problems)
         io.err << "note: " << n << "\n";
+    for (const auto &[identifier, reference] : authorisations) {
+        const auto &all = zones->zones->zones();
+        if (std::none_of(all.begin(), all.end(), [&, &id = identifier](const airspace::Zone &z) { return z.geoZone && z.geoZone->identifier == id; }))
+            io.err << "note: --authorisation " << identifier << ": no UAS geographical zone has that identifier\n";
+    }
     const auto routes = profileRoutes(file, loaded->mission, &error);
     if (!routes) {
         io.err << "sortie-plan: " << file << ": " << error << "\n";
@@ -88,17 +119,42 @@ int runAirspace(const QStringList &args, Streams io)
         const airspace::FlightEnds ends = !wpl && i < loaded->mission.routes.size() ? airspace::flightEndsOf(loaded->mission.routes[i])
                                                                                     : airspace::FlightEnds{};
         const airspace::FlownPath path = airspace::flownPath(route, ground ? &*ground : nullptr, ends);
+        // The flight's window: from --at to the route's end by the time model.
+        QString timingNote;
+        const airspace::ed::TimeWindow window = !wpl && i < loaded->mission.routes.size()
+            ? airspace::flightWindow(loaded->mission.routes[i], start, nullptr, &timingNote)
+            : airspace::ed::TimeWindow{start, start};
+        if (!timingNote.isEmpty())
+            io.err << "note: route \"" << route.name << "\" cannot be timed (" << timingNote << "): zones count when they apply at its start\n";
         airspace::AirspaceChecker checker(zones->zones, buffer);
+        checker.setWindow(window);
         const airspace::AirspaceReport report = checker.check(path);
-        violations |= !report.violations.empty();
+        const auto &all = zones->zones->zones();
+        std::vector<const airspace::AirspaceViolation *> errors, cautions, information;
+        for (const auto &v : report.violations) {
+            switch (airspace::findingLevel(v, all[size_t(v.zone)], authorisations)) {
+            case airspace::FindingLevel::Error: errors.push_back(&v); break;
+            case airspace::FindingLevel::Warning: cautions.push_back(&v); break;
+            case airspace::FindingLevel::Information: information.push_back(&v); break;
+            }
+        }
+        violations |= !errors.empty();
         if (json) {
-            out.push_back({{"name", route.name.toStdString()}, {"airspace", airspaceJson(report, *zones)}});
+            out.push_back({{"name", route.name.toStdString()}, {"airspace", airspaceJson(report, *zones, authorisations, window)}});
             continue;
         }
-        io.out << "Route \"" << route.name << "\": " << report.zones << " zone(s), " << report.violations.size() << " violation(s), "
-               << report.warnings.size() << " warning(s) within " << buffer << " m\n";
-        for (const auto &v : report.violations)
-            io.out << "  error: " << airspace::violationMessage(v, zones->zones->zones()[size_t(v.zone)]) << "\n";
+        io.out << "Route \"" << route.name << "\": " << report.zones << " zone(s), " << errors.size() << " violation(s), "
+               << report.warnings.size() + cautions.size() << " warning(s) within " << buffer << " m";
+        if (report.outsideWindow > 0)
+            io.out << "; " << report.outsideWindow << " zone(s) do not apply from " << window.from.toString(Qt::ISODate) << " to "
+                   << window.to.toString(Qt::ISODate);
+        io.out << "\n";
+        for (const auto *v : errors)
+            io.out << "  error: " << airspace::violationMessage(*v, all[size_t(v->zone)], authorisations) << "\n";
+        for (const auto *v : cautions)
+            io.out << "  warning: " << airspace::violationMessage(*v, all[size_t(v->zone)], authorisations) << "\n";
+        for (const auto *v : information)
+            io.out << "  information: " << airspace::violationMessage(*v, all[size_t(v->zone)], authorisations) << "\n";
         for (const auto &w : report.warnings)
             io.out << "  warning: " << airspace::warningMessage(w, zones->zones->zones()[size_t(w.zone)], buffer) << "\n";
     }

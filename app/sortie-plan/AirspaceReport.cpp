@@ -35,24 +35,48 @@ std::optional<ZoneInput> readZoneInput(const QStringList &files, double buffer, 
     return input;
 }
 
-Json airspaceJson(const airspace::AirspaceReport &report, const ZoneInput &input)
+Json airspaceJson(const airspace::AirspaceReport &report, const ZoneInput &input, const airspace::Authorisations &authorisations,
+                  const std::optional<airspace::ed::TimeWindow> &window)
 {
     const auto &zones = input.zones->zones();
-    Json violations = Json::array(), warnings = Json::array();
-    for (const airspace::AirspaceViolation &v : report.violations)
-        violations.push_back({{"zone", zones[size_t(v.zone)].name.toStdString()},
-                              {"kind", airspace::violationKindName(v.kind).toStdString()},
-                              {"leg", v.leg},
-                              {"fromDistance", metres(v.fromDistance)},
-                              {"toDistance", metres(v.toDistance)},
-                              {"heightUnknown", v.heightUnknown},
-                              {"message", airspace::violationMessage(v, zones[size_t(v.zone)]).toStdString()}});
+    Json violations = Json::array(), warnings = Json::array(), information = Json::array();
+    for (const airspace::AirspaceViolation &v : report.violations) {
+        const airspace::Zone &zone = zones[size_t(v.zone)];
+        Json entry{{"zone", zone.name.toStdString()},
+                   {"kind", airspace::violationKindName(v.kind).toStdString()},
+                   {"leg", v.leg},
+                   {"fromDistance", metres(v.fromDistance)},
+                   {"toDistance", metres(v.toDistance)},
+                   {"heightUnknown", v.heightUnknown},
+                   {"message", airspace::violationMessage(v, zone, authorisations).toStdString()},
+                   {"identifier", zone.geoZone ? Json(zone.geoZone->identifier.toStdString()) : Json(nullptr)},
+                   {"restriction", zone.geoZone ? Json(airspace::ed::restrictionName(zone.geoZone->restriction).toStdString()) : Json(nullptr)},
+                   {"volume", zone.geoZone ? Json(zone.volume) : Json(nullptr)}};
+        switch (airspace::findingLevel(v, zone, authorisations)) {
+        case airspace::FindingLevel::Error: violations.push_back(std::move(entry)); break;
+        case airspace::FindingLevel::Warning:
+            if (const QString reference = airspace::authorisationFor(zone, authorisations); !reference.isEmpty())
+                entry["authorisation"] = reference.toStdString();
+            warnings.push_back(std::move(entry));
+            break;
+        case airspace::FindingLevel::Information: information.push_back(std::move(entry)); break;
+        }
+    }
     for (const airspace::AirspaceWarning &w : report.warnings)
         warnings.push_back({{"zone", zones[size_t(w.zone)].name.toStdString()},
                             {"leg", w.leg},
                             {"clearance", metres(w.clearance)},
                             {"message", airspace::warningMessage(w, zones[size_t(w.zone)], input.buffer).toStdString()}});
-    return Json{{"zones", report.zones}, {"buffer", input.buffer}, {"violations", std::move(violations)}, {"warnings", std::move(warnings)}};
+    Json when = nullptr;
+    if (window)
+        when = Json{{"from", window->from.toUTC().toString(Qt::ISODate).toStdString()}, {"to", window->to.toUTC().toString(Qt::ISODate).toStdString()}};
+    return Json{{"zones", report.zones},
+                {"zonesOutsideWindow", report.outsideWindow},
+                {"buffer", input.buffer},
+                {"window", std::move(when)},
+                {"violations", std::move(violations)},
+                {"warnings", std::move(warnings)},
+                {"information", std::move(information)}};
 }
 
 } // namespace sortie::plan

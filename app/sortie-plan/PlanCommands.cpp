@@ -223,6 +223,7 @@ int runStats(const QStringList &args, Streams io)
         }
         // With --zones, the airspace rules join the validation (the flown path over the ground with --dem).
         std::optional<airspace::AirspaceReport> airspaceReport;
+        std::optional<airspace::ed::TimeWindow> airspaceWindow;
         if (zones) {
             const terrain::ProfileRoute pr = ri < profiles.size()     ? profiles[ri]
                                              : ri < zoneRoutes.size() ? zoneRoutes[ri]
@@ -230,6 +231,9 @@ int runStats(const QStringList &args, Streams io)
             const bool wpl = formatForPath(file) == FileFormat::Wpl;
             const airspace::FlownPath path = airspace::flownPath(pr, profile ? &*profile : nullptr, wpl ? airspace::FlightEnds{} : airspace::flightEndsOf(r));
             airspace::AirspaceChecker checker(zones->zones, zones->buffer);
+            // Geographical zones count when they apply during a flight starting now.
+            airspaceWindow = airspace::flightWindow(r, QDateTime::currentDateTimeUtc(), &cache);
+            checker.setWindow(airspaceWindow);
             airspaceReport = checker.check(path);
             const auto found = airspace::airspaceIssues(*airspaceReport, *zones->zones, zones->buffer);
             report.issues.insert(report.issues.end(), found.begin(), found.end());
@@ -240,7 +244,7 @@ int runStats(const QStringList &args, Streams io)
         if (p.isSet(QStringLiteral("json"))) {
             Json route{{"name", r.settings.name.toStdString()}, {"statistics", statisticsJson(st)}, {"validation", validationJson(report)}};
             if (airspaceReport)
-                route["airspace"] = airspaceJson(*airspaceReport, *zones);
+                route["airspace"] = airspaceJson(*airspaceReport, *zones, {}, airspaceWindow);
             if (profile)
                 route["terrain"] = terrainJson(profiles[ri], *profile, false);
             if (estimate)

@@ -133,9 +133,26 @@ struct AirspaceChecker::LegFindings
 AirspaceChecker::AirspaceChecker(std::shared_ptr<const ZoneSet> zones, double buffer)
     : m_zones(std::move(zones)), m_buffer(std::max(0.0, buffer))
 {
+    setWindow(std::nullopt);
 }
 
 AirspaceChecker::~AirspaceChecker() = default;
+
+void AirspaceChecker::setWindow(std::optional<ed::TimeWindow> window)
+{
+    m_window = std::move(window);
+    std::vector<char> counted(m_zones->zones().size());
+    for (size_t i = 0; i < counted.size(); ++i) {
+        const Zone &z = m_zones->zones()[i];
+        counted[i] = z.active && (!z.geoZone || !m_window || z.geoZone->appliesDuring(*m_window));
+    }
+    if (counted == m_counted)
+        return;  // the same zones count: what each leg found stands
+    m_counted = std::move(counted);
+    m_frame.reset();
+    m_lastLegs.clear();
+    m_lastFindings.clear();
+}
 
 const AirspaceChecker::Frame &AirspaceChecker::frameFor(const FlownPath &path)
 {
@@ -149,6 +166,8 @@ const AirspaceChecker::Frame &AirspaceChecker::frameFor(const FlownPath &path)
                                 frame->covered.max_corner().x(), path.bounds.empty};
     std::vector<std::pair<PlaneBox, int>> boxes;
     for (int z : m_zones->near(cover)) {
+        if (!counts(z))
+            continue;
         frame->zones.emplace_back(m_zones->zones()[size_t(z)], z, path.plane);
         boxes.emplace_back(frame->zones.back().envelope(), int(frame->zones.size()) - 1);
     }
@@ -199,6 +218,8 @@ AirspaceChecker::LegFindings AirspaceChecker::checkLeg(const FlownLeg &leg, cons
                 continue;
             if (z.zone().kind == ZoneKind::Inclusion && spans.empty())
                 continue;  // its edge matters only to a piece inside it
+            if (z.zone().geoZone && z.zone().geoZone->restriction == ed::Restriction::NoRestriction)
+                continue;  // nothing to keep clear of
             const double c2 = z.clearance(a, b);
             if (std::isfinite(c2) && c2 <= m_buffer) {
                 auto [it, fresh] = closest.emplace(z.index(), c2);
@@ -235,7 +256,12 @@ AirspaceChecker::LegFindings AirspaceChecker::checkLeg(const FlownLeg &leg, cons
 AirspaceReport AirspaceChecker::check(const FlownPath &path)
 {
     AirspaceReport report;
-    report.zones = m_zones->activeCount();
+    for (size_t i = 0; i < m_counted.size(); ++i) {
+        if (m_counted[i])
+            ++report.zones;
+        else if (m_zones->zones()[i].active)
+            ++report.outsideWindow;
+    }
     m_legsChecked = 0;
     if (path.legs.empty())
         return report;
@@ -269,9 +295,10 @@ AirspaceReport AirspaceChecker::check(const FlownPath &path)
     return report;
 }
 
-AirspaceReport checkAirspace(const FlownPath &path, const std::vector<Zone> &zones, double buffer)
+AirspaceReport checkAirspace(const FlownPath &path, const std::vector<Zone> &zones, double buffer, const std::optional<ed::TimeWindow> &window)
 {
     AirspaceChecker checker(std::make_shared<const ZoneSet>(zones), buffer);
+    checker.setWindow(window);
     return checker.check(path);
 }
 

@@ -38,6 +38,7 @@ struct AirspaceWarning
 struct AirspaceReport
 {
     int zones = 0;  // active zones checked
+    int outsideWindow = 0;  // UAS geographical zones left out: they do not apply in the flight's window
     std::vector<AirspaceViolation> violations;  // by leg, then distance
     std::vector<AirspaceWarning> warnings;
 };
@@ -73,6 +74,13 @@ public:
     double buffer() const { return m_buffer; }
     const ZoneSet &zones() const { return *m_zones; }
 
+    // When the flight is (UTC): UAS geographical zones count only if they apply at some moment
+    // of it. None: they all count (the safe side, for a flight with no time).
+    void setWindow(std::optional<ed::TimeWindow> window);
+    const std::optional<ed::TimeWindow> &window() const { return m_window; }
+    // Whether the set's zone `index` is checked: active, and for a geographical zone, in the window.
+    bool counts(int index) const { return m_counted[size_t(index)] != 0; }
+
     AirspaceReport check(const FlownPath &path);
     int legsCheckedLastTime() const { return m_legsChecked; }
 
@@ -84,13 +92,16 @@ private:
 
     std::shared_ptr<const ZoneSet> m_zones;
     double m_buffer;
+    std::optional<ed::TimeWindow> m_window;
+    std::vector<char> m_counted;  // per zone of the set
     std::unique_ptr<Frame> m_frame;
     std::vector<FlownLeg> m_lastLegs;
     std::vector<LegFindings> m_lastFindings;
     int m_legsChecked = 0;
 };
 
-// One-shot: the path against the zones.
-AirspaceReport checkAirspace(const FlownPath &path, const std::vector<Zone> &zones, double buffer = 20.0);
+// One-shot: the path against the zones (geographical zones in `window`, all without one).
+AirspaceReport checkAirspace(const FlownPath &path, const std::vector<Zone> &zones, double buffer = 20.0,
+                             const std::optional<ed::TimeWindow> &window = std::nullopt);
 
 } // namespace sortie::airspace

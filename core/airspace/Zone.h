@@ -1,11 +1,13 @@
 #pragma once
 
 #include "GeoPoint.h"
+#include "GeoZone.h"
 #include "RouteFence.h"
 #include "TerrainProfile.h"
 
 #include <QString>
 
+#include <memory>
 #include <optional>
 #include <variant>
 #include <vector>
@@ -77,6 +79,11 @@ struct Zone
     // None for zones from files and fences, and for a custom zone not saved yet.
     std::optional<int> serverId;
     int serverVersion = 0;
+    // A volume of a UAS geographical zone (ED-269 / ED-318): that zone (its restriction, when it
+    // applies, its authorities and message) and the volume's place in its geometry, from 1. None
+    // and 0 for every other zone.
+    std::shared_ptr<const ed::GeoZone> geoZone;
+    int volume = 0;
     bool operator==(const Zone &) const = default;
 };
 

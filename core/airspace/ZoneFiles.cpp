@@ -1,5 +1,6 @@
 #include "ZoneFiles.h"
 
+#include "GeoZoneReader.h"
 #include "QgcPlanFormat.h"
 
 #include <QFile>
@@ -23,23 +24,77 @@ mission::Result<ZoneFile> readPlanZones(const QByteArray &data, const QString &o
     return out;
 }
 
+ZoneFile zonesOfGeoZones(const ed::GeoZoneFile &file, const QString &origin)
+{
+    ZoneFile out;
+    out.problems = file.problems;
+    for (const ed::GeoZone &g : file.zones) {
+        const auto shared = std::make_shared<const ed::GeoZone>(g);
+        const auto limitOf = [](const std::optional<ed::VerticalLimit> &l) -> std::optional<HeightLimit> {
+            if (!l)
+                return std::nullopt;
+            return HeightLimit{l->metres, l->reference == ed::VerticalReference::Agl ? HeightReference::AboveTerrain : HeightReference::Amsl};
+        };
+        std::vector<Zone> volumes;
+        QString problem;
+        for (size_t i = 0; i < g.volumes.size() && problem.isEmpty(); ++i) {
+            const ed::Volume &v = g.volumes[i];
+            Zone z;
+            z.name = g.name;
+            z.kind = ZoneKind::Exclusion;
+            if (v.circle) {
+                z.shape = ZoneCircle{v.circle->center, v.circle->radius};
+            } else {
+                ZonePolygons parts;
+                for (const ed::Polygon &p : v.polygons)
+                    parts.parts.push_back(ZonePolygon{p.rings});
+                z.shape = std::move(parts);
+            }
+            z.floor = limitOf(v.lower);
+            z.ceiling = limitOf(v.upper);
+            z.source = ZoneSource::File;
+            z.origin = origin.isEmpty() ? g.identifier : QStringLiteral("%1, %2").arg(origin, g.identifier);
+            z.geoZone = shared;
+            z.volume = int(i) + 1;
+            problem = shapeProblem(z);
+            if (!problem.isEmpty())
+                problem = QCoreApplication::translate("ZoneFiles", "volume %1: %2").arg(i + 1).arg(problem);
+            volumes.push_back(std::move(z));
+        }
+        if (!problem.isEmpty()) {
+            out.problems << QCoreApplication::translate("ZoneFiles", "%1 zone %2 ('%3') was left out: %4")
+                                .arg(ed::formatName(file.format), g.identifier, g.name, problem);
+            continue;
+        }
+        out.zones.insert(out.zones.end(), std::make_move_iterator(volumes.begin()), std::make_move_iterator(volumes.end()));
+    }
+    return out;
+}
+
+mission::Result<ZoneFile> readZoneData(const QByteArray &data, const QString &name)
+{
+    if (std::optional<mission::Result<ed::GeoZoneFile>> geo = ed::readGeoZones(data)) {
+        if (!*geo)
+            return geo->error();
+        return zonesOfGeoZones(geo->value(), name);
+    }
+    const QString suffix = QFileInfo(name).suffix().toLower();
+    if (suffix == QLatin1String("plan"))
+        return readPlanZones(data, name);
+    if (suffix == QLatin1String("geojson") || suffix == QLatin1String("json"))
+        return readGeoJsonZones(data, name);
+    if (suffix == QLatin1String("kml"))
+        return readKmlZones(data, name);
+    return mission::MissionError{QCoreApplication::translate("ZoneFiles", "unknown zone file type \".%1\" (Sortie reads .plan, .geojson, .json and .kml)").arg(suffix),
+                                 {}, 0, 0, {}};
+}
+
 mission::Result<ZoneFile> loadZoneFile(const QString &path)
 {
-    const QString suffix = QFileInfo(path).suffix().toLower();
-    mission::Result<ZoneFile> (*reader)(const QByteArray &, const QString &) = nullptr;
-    if (suffix == QLatin1String("plan"))
-        reader = readPlanZones;
-    else if (suffix == QLatin1String("geojson") || suffix == QLatin1String("json"))
-        reader = readGeoJsonZones;
-    else if (suffix == QLatin1String("kml"))
-        reader = readKmlZones;
-    else
-        return mission::MissionError{QCoreApplication::translate("ZoneFiles", "unknown zone file type \".%1\" (Sortie reads .plan, .geojson, .json and .kml)").arg(suffix),
-                                     path, 0, 0, {}};
     QFile f(path);
     if (!f.open(QIODevice::ReadOnly))
         return mission::MissionError{f.errorString(), path, 0, 0, {}};
-    mission::Result<ZoneFile> read = reader(f.readAll(), QFileInfo(path).fileName());
+    mission::Result<ZoneFile> read = readZoneData(f.readAll(), QFileInfo(path).fileName());
     if (!read)
         return read.error().withFile(path);
     return read;

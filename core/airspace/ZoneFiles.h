@@ -1,5 +1,6 @@
 #pragma once
 
+#include "GeoZone.h"
 #include "MissionError.h"
 #include "Zone.h"
 
@@ -31,7 +32,15 @@ mission::Result<ZoneFile> readKmlZones(const QByteArray &data, const QString &or
 // A QGroundControl .plan's geofence: polygons and circles with their inclusion flag.
 mission::Result<ZoneFile> readPlanZones(const QByteArray &data, const QString &origin = {});
 
-// A file by its extension: .plan, .geojson / .json, .kml. The error names the file.
+// UAS geographical zones (ED-269, ED-318) as zones: one exclusion zone per volume, each knowing
+// its geographical zone and volume. A zone with a volume that cannot be checked (a ring crossing
+// itself) is left out whole, naming it; its other volumes alone would understate it.
+ZoneFile zonesOfGeoZones(const ed::GeoZoneFile &file, const QString &origin = {});
+
+// A file: ED-269 and ED-318 by content (whatever its extension); then by its extension: .plan,
+// .geojson / .json, .kml. The error names the file.
 mission::Result<ZoneFile> loadZoneFile(const QString &path);
+// The same over bytes already read (`name`: the file's name, for its extension and the origin).
+mission::Result<ZoneFile> readZoneData(const QByteArray &data, const QString &name);
 
 } // namespace sortie::airspace

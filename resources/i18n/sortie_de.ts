@@ -340,6 +340,42 @@
         <source>Leg %1 leaves &apos;%2&apos; %3 (%4)</source>
         <translation>Teilstrecke %1 verlässt „%2“ %3 (%4)</translation>
     </message>
+    <message>
+        <source>Message: %1</source>
+        <translation>Hinweis: %1</translation>
+    </message>
+    <message>
+        <source>Reason: %1.</source>
+        <translation>Grund: %1.</translation>
+    </message>
+    <message>
+        <source>Authority: %1.</source>
+        <translation>Behörde: %1.</translation>
+    </message>
+    <message>
+        <source>Applies: %1.</source>
+        <translation>Gilt: %1.</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters the prohibited zone &apos;%2&apos; (%3, volume %4) %5 (%6)</source>
+        <translation>Teilstrecke %1 tritt %5 in die Verbotszone „%2“ ein (%3, Volumen %4) (%6)</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters &apos;%2&apos; (%3, volume %4) %5 (%6), which needs an authorisation; none is recorded</source>
+        <translation>Teilstrecke %1 tritt %5 in „%2“ ein (%3, Volumen %4) (%6), wofür eine Genehmigung nötig ist; keine ist erfasst</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters &apos;%2&apos; (%3, volume %4) %5 (%6) under authorisation %7</source>
+        <translation>Teilstrecke %1 tritt %5 in „%2“ ein (%3, Volumen %4) (%6), mit Genehmigung %7</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters the conditional zone &apos;%2&apos; (%3, volume %4) %5 (%6)</source>
+        <translation>Teilstrecke %1 tritt %5 in die Zone mit Auflagen „%2“ ein (%3, Volumen %4) (%6)</translation>
+    </message>
+    <message>
+        <source>Leg %1 passes through &apos;%2&apos; (%3, volume %4) %5 (%6), a zone with no restriction</source>
+        <translation>Teilstrecke %1 führt %5 durch „%2“ (%3, Volumen %4) (%6), eine Zone ohne Einschränkung</translation>
+    </message>
 </context>
 <context>
     <name>AlertBanner</name>
@@ -846,6 +882,33 @@
     <message>
         <source>DEM (%1)</source>
         <translation>DGM (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>GeoZone</name>
+    <message>
+        <source>daily</source>
+        <translation>täglich</translation>
+    </message>
+    <message>
+        <source>always</source>
+        <translation>immer</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <source>from %1</source>
+        <translation>ab %1</translation>
+    </message>
+    <message>
+        <source>until %1</source>
+        <translation>bis %1</translation>
+    </message>
+    <message>
+        <source>ask %1 before</source>
+        <translation>%1 vorher anfragen</translation>
     </message>
 </context>
 <context>
@@ -4894,6 +4957,14 @@ Ereignisse: %1
     <message>
         <source>unknown zone file type &quot;.%1&quot; (Sortie reads .plan, .geojson, .json and .kml)</source>
         <translation>unbekannter Zonendateityp „.%1“ (Sortie liest .plan, .geojson, .json und .kml)</translation>
+    </message>
+    <message>
+        <source>volume %1: %2</source>
+        <translation>Volumen %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 zone %2 (&apos;%3&apos;) was left out: %4</source>
+        <translation>%1-Zone %2 („%3“) wurde ausgelassen: %4</translation>
     </message>
 </context>
 <context>

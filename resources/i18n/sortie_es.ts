@@ -340,6 +340,42 @@
         <source>Leg %1 leaves &apos;%2&apos; %3 (%4)</source>
         <translation>El tramo %1 sale de «%2» %3 (%4)</translation>
     </message>
+    <message>
+        <source>Message: %1</source>
+        <translation>Mensaje: %1</translation>
+    </message>
+    <message>
+        <source>Reason: %1.</source>
+        <translation>Motivo: %1.</translation>
+    </message>
+    <message>
+        <source>Authority: %1.</source>
+        <translation>Autoridad: %1.</translation>
+    </message>
+    <message>
+        <source>Applies: %1.</source>
+        <translation>Se aplica: %1.</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters the prohibited zone &apos;%2&apos; (%3, volume %4) %5 (%6)</source>
+        <translation>El tramo %1 entra en la zona prohibida «%2» (%3, volumen %4) %5 (%6)</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters &apos;%2&apos; (%3, volume %4) %5 (%6), which needs an authorisation; none is recorded</source>
+        <translation>El tramo %1 entra en «%2» (%3, volumen %4) %5 (%6), que requiere una autorización; no hay ninguna registrada</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters &apos;%2&apos; (%3, volume %4) %5 (%6) under authorisation %7</source>
+        <translation>El tramo %1 entra en «%2» (%3, volumen %4) %5 (%6) con la autorización %7</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters the conditional zone &apos;%2&apos; (%3, volume %4) %5 (%6)</source>
+        <translation>El tramo %1 entra en la zona condicionada «%2» (%3, volumen %4) %5 (%6)</translation>
+    </message>
+    <message>
+        <source>Leg %1 passes through &apos;%2&apos; (%3, volume %4) %5 (%6), a zone with no restriction</source>
+        <translation>El tramo %1 pasa por «%2» (%3, volumen %4) %5 (%6), una zona sin restricciones</translation>
+    </message>
 </context>
 <context>
     <name>AlertBanner</name>
@@ -846,6 +882,33 @@
     <message>
         <source>DEM (%1)</source>
         <translation>MDE (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>GeoZone</name>
+    <message>
+        <source>daily</source>
+        <translation>a diario</translation>
+    </message>
+    <message>
+        <source>always</source>
+        <translation>siempre</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 a %2</translation>
+    </message>
+    <message>
+        <source>from %1</source>
+        <translation>desde %1</translation>
+    </message>
+    <message>
+        <source>until %1</source>
+        <translation>hasta %1</translation>
+    </message>
+    <message>
+        <source>ask %1 before</source>
+        <translation>solicitar con %1 de antelación</translation>
     </message>
 </context>
 <context>
@@ -4894,6 +4957,14 @@ eventos:   %1
     <message>
         <source>unknown zone file type &quot;.%1&quot; (Sortie reads .plan, .geojson, .json and .kml)</source>
         <translation>tipo de archivo de zonas desconocido «.%1» (Sortie lee .plan, .geojson, .json y .kml)</translation>
+    </message>
+    <message>
+        <source>volume %1: %2</source>
+        <translation>volumen %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 zone %2 (&apos;%3&apos;) was left out: %4</source>
+        <translation>Se omitió la zona %1 %2 («%3»): %4</translation>
     </message>
 </context>
 <context>

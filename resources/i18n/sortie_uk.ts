@@ -340,6 +340,42 @@
         <source>Leg %1 leaves &apos;%2&apos; %3 (%4)</source>
         <translation>Ділянка %1 виходить із «%2» %3 (%4)</translation>
     </message>
+    <message>
+        <source>Message: %1</source>
+        <translation>Повідомлення: %1</translation>
+    </message>
+    <message>
+        <source>Reason: %1.</source>
+        <translation>Причина: %1.</translation>
+    </message>
+    <message>
+        <source>Authority: %1.</source>
+        <translation>Орган: %1.</translation>
+    </message>
+    <message>
+        <source>Applies: %1.</source>
+        <translation>Діє: %1.</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters the prohibited zone &apos;%2&apos; (%3, volume %4) %5 (%6)</source>
+        <translation>Ділянка %1 входить у заборонену зону «%2» (%3, об’єм %4) %5 (%6)</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters &apos;%2&apos; (%3, volume %4) %5 (%6), which needs an authorisation; none is recorded</source>
+        <translation>Ділянка %1 входить у «%2» (%3, об’єм %4) %5 (%6), де потрібен дозвіл; жодного не записано</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters &apos;%2&apos; (%3, volume %4) %5 (%6) under authorisation %7</source>
+        <translation>Ділянка %1 входить у «%2» (%3, об’єм %4) %5 (%6) за дозволом %7</translation>
+    </message>
+    <message>
+        <source>Leg %1 enters the conditional zone &apos;%2&apos; (%3, volume %4) %5 (%6)</source>
+        <translation>Ділянка %1 входить у зону з умовами «%2» (%3, об’єм %4) %5 (%6)</translation>
+    </message>
+    <message>
+        <source>Leg %1 passes through &apos;%2&apos; (%3, volume %4) %5 (%6), a zone with no restriction</source>
+        <translation>Ділянка %1 проходить через «%2» (%3, об’єм %4) %5 (%6), зону без обмежень</translation>
+    </message>
 </context>
 <context>
     <name>AlertBanner</name>
@@ -847,6 +883,33 @@
     <message>
         <source>DEM (%1)</source>
         <translation>ЦМР (%1)</translation>
+    </message>
+</context>
+<context>
+    <name>GeoZone</name>
+    <message>
+        <source>daily</source>
+        <translation>щодня</translation>
+    </message>
+    <message>
+        <source>always</source>
+        <translation>завжди</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <source>from %1</source>
+        <translation>з %1</translation>
+    </message>
+    <message>
+        <source>until %1</source>
+        <translation>до %1</translation>
+    </message>
+    <message>
+        <source>ask %1 before</source>
+        <translation>звертатися за %1 до польоту</translation>
     </message>
 </context>
 <context>
@@ -4910,6 +4973,14 @@ events:   %1
     <message>
         <source>unknown zone file type &quot;.%1&quot; (Sortie reads .plan, .geojson, .json and .kml)</source>
         <translation>невідомий тип файлу зон «.%1» (Sortie читає .plan, .geojson, .json і .kml)</translation>
+    </message>
+    <message>
+        <source>volume %1: %2</source>
+        <translation>об’єм %1: %2</translation>
+    </message>
+    <message>
+        <source>%1 zone %2 (&apos;%3&apos;) was left out: %4</source>
+        <translation>Зону %1 %2 («%3») пропущено: %4</translation>
     </message>
 </context>
 <context>

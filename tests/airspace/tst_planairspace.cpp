@@ -1,6 +1,7 @@
 // sortie-plan airspace (and stats --zones), run as a process over route and zone files the test
 // writes: the JSON keys the issue names, legs numbered as `profile` numbers them, the exit codes.
 #include "Geodesy.h"
+#include "TestData.h"
 #include "HgtWriter.h"
 #include "JsonCursor.h"
 #include "MissionFiles.h"
@@ -54,6 +55,21 @@ QByteArray box(const QString &name, double from, double to, const QString &limit
         .toUtf8();
 }
 
+// The same box as an ED-269 zone (identifier, restriction, applicability and more as JSON members).
+QByteArray ed269Box(const QString &id, const QString &name, double from, double to, const QString &members)
+{
+    QStringList ring;
+    for (const auto &[along, north] : {std::pair{from, -100.0}, {to, -100.0}, {to, 100.0}, {from, 100.0}, {from, -100.0}}) {
+        const GeoPoint p = geodesicDirect(east(along), north < 0 ? 180 : 0, std::abs(north)).point;
+        ring << QStringLiteral("[%1, %2]").arg(p.longitude, 0, 'f', 9).arg(p.latitude, 0, 'f', 9);
+    }
+    return QStringLiteral(R"({"identifier": "%1", "country": "LVA", "name": "%2", %3,
+        "geometry": [{"uomDimensions": "M", "lowerLimit": 0, "lowerVerticalReference": "AGL", "upperLimit": 120, "upperVerticalReference": "AGL",
+                      "horizontalProjection": {"type": "Polygon", "coordinates": [[%4]]}}]})")
+        .arg(id, name, members, ring.join(QStringLiteral(", ")))
+        .toUtf8();
+}
+
 bool near(double a, double b, double tolerance = 1.0)
 {
     return std::abs(a - b) <= tolerance;
@@ -71,6 +87,19 @@ private slots:
         write("ctr.geojson", "{\"type\": \"FeatureCollection\", \"features\": [" +
                                  box(QStringLiteral("RIX CTR"), 1210, 1460, QStringLiteral(R"(, "ceiling": 150, "reference": "AGL")")) +
                                  ", {\"type\": \"Feature\", \"properties\": {\"name\": \"bad\"}, \"geometry\": null}]}");
+        // The law's zones along the line: forbidden on weekend evenings over leg 2, an airfield that
+        // needs an authorisation over leg 1, a park with conditions, a model field with none.
+        write("lv-zones.json", "{\"title\": \"test\", \"features\": [" +
+              ed269Box(QStringLiteral("LVP100"), QStringLiteral("Weekend evenings"), 1210, 1460, QStringLiteral(
+                  R"("restriction": "PROHIBITED", "zoneAuthority": [], "applicability": [{"permanent": "NO",
+                     "schedule": [{"day": ["SAT", "SUN"], "startTime": "18:00Z", "endTime": "23:00Z"}]}])")) + ", " +
+              ed269Box(QStringLiteral("LVA200"), QStringLiteral("Airfield"), 300, 600, QStringLiteral(
+                  R"("restriction": "REQ_AUTHORISATION", "applicability": [{"permanent": "YES"}],
+                     "zoneAuthority": [{"name": "LGS", "email": "uas@lgs.example", "purpose": "AUTHORIZATION"}])")) + ", " +
+              ed269Box(QStringLiteral("LVC300"), QStringLiteral("Park"), 1700, 1800, QStringLiteral(
+                  R"("restriction": "CONDITIONAL", "message": "Keep 50 m from people", "applicability": [], "zoneAuthority": [])")) + ", " +
+              ed269Box(QStringLiteral("LVN400"), QStringLiteral("Model field"), 100, 200, QStringLiteral(
+                  R"("restriction": "NO_RESTRICTION", "applicability": [], "zoneAuthority": [])")) + "]}");
         write("high.geojson", "{\"type\": \"FeatureCollection\", \"features\": [" +
                                   box(QStringLiteral("High"), 1210, 1460, QStringLiteral(R"(, "floor": 200, "ceiling": 400, "reference": "AGL")")) + "]}");
         write("amsl.geojson", "{\"type\": \"FeatureCollection\", \"features\": [" +
@@ -183,8 +212,95 @@ private slots:
         QCOMPARE(clear.code, 0);
     }
 
+    // A Saturday-evening flight is refused by the weekend zone and by the airfield (no
+    // authorisation); the park is a warning with its message, the model field information.
+    void geographicalZonesOnASaturdayEvening()
+    {
+        const Run r = run({QStringLiteral("airspace"), path("line.sortie"), QStringLiteral("--zones"), path("lv-zones.json"), QStringLiteral("--at"),
+                           QStringLiteral("2026-06-06T18:30:00Z"), QStringLiteral("--json")});
+        QCOMPARE(r.code, 2);
+        const Json a = Json::parse(r.out.toStdString()).at("routes").at(0).at("airspace");
+        QCOMPARE(a.at("zones").get<int>(), 4);
+        QCOMPARE(a.at("zonesOutsideWindow").get<int>(), 0);
+        QCOMPARE(a.at("window").at("from").get<std::string>(), std::string("2026-06-06T18:30:00Z"));
+        QVERIFY(a.at("window").at("to").get<std::string>() > std::string("2026-06-06T18:33:00Z"));  // 2 km at 10 m/s, and the climb
+        const Json &v = a.at("violations");
+        QCOMPARE(v.size(), size_t(2));
+        QCOMPARE(v.at(0).at("identifier").get<std::string>(), std::string("LVA200"));
+        QCOMPARE(v.at(0).at("restriction").get<std::string>(), std::string("REQ_AUTHORISATION"));
+        QCOMPARE(v.at(0).at("volume").get<int>(), 1);
+        QCOMPARE(v.at(0).at("leg").get<int>(), 1);
+        QVERIFY2(near(v.at(0).at("fromDistance").get<double>(), 300) && near(v.at(0).at("toDistance").get<double>(), 600), v.dump().c_str());
+        QVERIFY2(v.at(0).at("message").get<std::string>().find("needs an authorisation; none is recorded") != std::string::npos, v.dump().c_str());
+        QVERIFY2(v.at(0).at("message").get<std::string>().find("uas@lgs.example") != std::string::npos, v.dump().c_str());
+        QCOMPARE(v.at(1).at("identifier").get<std::string>(), std::string("LVP100"));
+        QCOMPARE(v.at(1).at("restriction").get<std::string>(), std::string("PROHIBITED"));
+        QCOMPARE(v.at(1).at("leg").get<int>(), 2);
+        for (const char *key : {"zone", "kind", "leg", "fromDistance", "toDistance", "message"})
+            QVERIFY2(v.at(1).contains(key), key);
+        const Json &w = a.at("warnings");
+        QCOMPARE(w.size(), size_t(1));
+        QCOMPARE(w.at(0).at("identifier").get<std::string>(), std::string("LVC300"));
+        QCOMPARE(w.at(0).at("restriction").get<std::string>(), std::string("CONDITIONAL"));
+        QVERIFY2(w.at(0).at("message").get<std::string>().find("Keep 50 m from people") != std::string::npos, w.dump().c_str());
+        const Json &info = a.at("information");
+        QCOMPARE(info.size(), size_t(1));
+        QCOMPARE(info.at(0).at("identifier").get<std::string>(), std::string("LVN400"));
+        QCOMPARE(info.at(0).at("restriction").get<std::string>(), std::string("NO_RESTRICTION"));
+
+        const Run text = run({QStringLiteral("airspace"), path("line.sortie"), QStringLiteral("--zones"), path("lv-zones.json"), QStringLiteral("--at"),
+                              QStringLiteral("2026-06-06T18:30:00Z")});
+        QCOMPARE(text.code, 2);
+        QVERIFY2(text.out.contains("error: Leg 2 enters the prohibited zone 'Weekend evenings' (LVP100, volume 1) from 1,210 m to 1,460 m"), text.out.constData());
+        QVERIFY2(text.out.contains("warning: Leg 2 enters the conditional zone 'Park' (LVC300, volume 1)"), text.out.constData());
+        QVERIFY2(text.out.contains("information: Leg 1 passes through 'Model field' (LVN400, volume 1)"), text.out.constData());
+    }
+
+    // On a Monday evening the weekend zone does not apply; with the airfield's authorisation
+    // recorded it is a warning naming it: exit 0.
+    void geographicalZonesOnAMondayWithAnAuthorisation()
+    {
+        const Run r = run({QStringLiteral("airspace"), path("line.sortie"), QStringLiteral("--zones"), path("lv-zones.json"), QStringLiteral("--at"),
+                           QStringLiteral("2026-06-08T18:30:00Z"), QStringLiteral("--authorisation"), QStringLiteral("LVA200=LGS-2026-117"),
+                           QStringLiteral("--json")});
+        QCOMPARE(r.code, 0);
+        const Json a = Json::parse(r.out.toStdString()).at("routes").at(0).at("airspace");
+        QCOMPARE(a.at("zones").get<int>(), 3);
+        QCOMPARE(a.at("zonesOutsideWindow").get<int>(), 1);
+        QCOMPARE(a.at("violations").size(), size_t(0));
+        const Json &w = a.at("warnings");
+        QCOMPARE(w.size(), size_t(2));
+        QCOMPARE(w.at(0).at("identifier").get<std::string>(), std::string("LVA200"));
+        QCOMPARE(w.at(0).at("authorisation").get<std::string>(), std::string("LGS-2026-117"));
+        QVERIFY2(w.at(0).at("message").get<std::string>().find("under authorisation LGS-2026-117") != std::string::npos, w.dump().c_str());
+        QCOMPARE(w.at(1).at("identifier").get<std::string>(), std::string("LVC300"));
+
+        // Without the authorisation the airfield is an error again; an unknown identifier is noted.
+        const Run unknown = run({QStringLiteral("airspace"), path("line.sortie"), QStringLiteral("--zones"), path("lv-zones.json"), QStringLiteral("--at"),
+                                 QStringLiteral("2026-06-08T18:30:00Z"), QStringLiteral("--authorisation"), QStringLiteral("XX999=R1")});
+        QCOMPARE(unknown.code, 2);
+        QVERIFY2(unknown.err.contains("--authorisation XX999: no UAS geographical zone has that identifier"), unknown.err.constData());
+        QVERIFY2(unknown.out.contains("1 zone(s) do not apply from 2026-06-08T18:30:00Z"), unknown.out.constData());
+    }
+
+    // The ED-318 samples load as zones (France: far from the route, so nothing is found).
+    void ed318SamplesLoad()
+    {
+        const Run r = run({QStringLiteral("airspace"), path("line.sortie"), QStringLiteral("--zones"),
+                           (QString::fromUtf8(sortieTestData()) + QStringLiteral("/samples/geozones/ed318-two-layers.json")), QStringLiteral("--zones"),
+                           (QString::fromUtf8(sortieTestData()) + QStringLiteral("/samples/geozones/ed318-circle.json")), QStringLiteral("--json")});
+        QCOMPARE(r.code, 0);
+        const Json doc = Json::parse(r.out.toStdString());
+        QCOMPARE(doc.at("zoneProblems").size(), size_t(0));
+        QCOMPARE(doc.at("routes").at(0).at("airspace").at("zones").get<int>() + doc.at("routes").at(0).at("airspace").at("zonesOutsideWindow").get<int>(), 3);
+    }
+
     void badInputFails()
     {
+        QCOMPARE(run({QStringLiteral("airspace"), path("line.sortie"), QStringLiteral("--zones"), path("lv-zones.json"), QStringLiteral("--at"),
+                      QStringLiteral("Saturday")}).code, 1);
+        QCOMPARE(run({QStringLiteral("airspace"), path("line.sortie"), QStringLiteral("--zones"), path("lv-zones.json"), QStringLiteral("--authorisation"),
+                      QStringLiteral("LVA200")}).code, 1);
         QCOMPARE(run({QStringLiteral("airspace"), path("line.sortie")}).code, 1);  // no --zones
         const Run missing = run({QStringLiteral("airspace"), path("line.sortie"), QStringLiteral("--zones"), path("none.kml")});
         QCOMPARE(missing.code, 1);

@@ -125,6 +125,42 @@ private slots:
         QCOMPARE(monitor.count(), 0);
     }
 
+    // A UAS geographical zone counts by the clock: a zone forbidden on weekend evenings around the
+    // hovering vehicle raises nothing on a Monday and "is inside" on a Saturday evening; a zone with
+    // no restriction around it never does.
+    void aGeographicalZoneCountsByTheClock()
+    {
+        vehicle::Vehicle *v = airborne();
+        QVERIFY(v);
+        const QGeoCoordinate here = v->position();
+        auto weekend = std::make_shared<airspace::ed::GeoZone>();
+        weekend->identifier = QStringLiteral("LVP100");
+        weekend->restriction = airspace::ed::Restriction::Prohibited;
+        airspace::ed::TimePeriod evenings;
+        evenings.schedule.push_back({0x60, 18 * 3600, 23 * 3600, false});
+        weekend->applicability.push_back(evenings);
+        Zone inWeekend = circle(QStringLiteral("Weekend evenings"), here, 150);
+        inWeekend.geoZone = weekend;
+        inWeekend.volume = 1;
+        auto free = std::make_shared<airspace::ed::GeoZone>();
+        free->identifier = QStringLiteral("LVN400");
+        free->restriction = airspace::ed::Restriction::NoRestriction;
+        Zone model = circle(QStringLiteral("Model field"), here, 200);
+        model.geoZone = free;
+        model.volume = 1;
+        ZoneAlertMonitor monitor(m_fleet.get(), nullptr, 0);
+        monitor.setZones(std::make_shared<const airspace::ZoneSet>(std::vector<Zone>{inWeekend, model}));
+        QDateTime now = QDateTime::fromString(QStringLiteral("2026-06-08T18:30:00Z"), Qt::ISODate);  // a Monday
+        monitor.setClock([&] { return now; });
+        monitor.check();
+        QCOMPARE(monitor.count(), 0);
+        now = QDateTime::fromString(QStringLiteral("2026-06-06T18:30:00Z"), Qt::ISODate);  // a Saturday
+        monitor.check();
+        QCOMPARE(monitor.count(), 1);
+        QCOMPARE(monitor.alerts().front().zone, QStringLiteral("Weekend evenings"));
+        QVERIFY2(monitor.alerts().front().text.contains(QStringLiteral(" is inside 'Weekend evenings'")), qPrintable(monitor.alerts().front().text));
+    }
+
     void leavingItsOwnFence()
     {
         vehicle::Vehicle *v = airborne();

@@ -37,6 +37,8 @@ const std::map<QString, QString> kOtherReaders{
     {QStringLiteral("telemetry blocks (.sortielog)"), QStringLiteral("fuzz_telemetry_block")},
     {QStringLiteral("airspace zones (GeoJSON)"), QStringLiteral("fuzz_geojson_zones")},
     {QStringLiteral("airspace zones (KML)"), QStringLiteral("fuzz_kml_zones")},
+    {QStringLiteral("UAS geographical zones (EUROCAE ED-269)"), QStringLiteral("fuzz_ed269_zones")},
+    {QStringLiteral("UAS geographical zones (EUROCAE ED-318)"), QStringLiteral("fuzz_ed318_zones")},
     {QStringLiteral("server no-fly zones (protobuf to zone)"), QStringLiteral("fuzz_nfz_conversion")},
     {QStringLiteral("ADS-B traffic (SBS-1 BaseStation lines)"), QStringLiteral("fuzz_sbs")},
     {QStringLiteral("MBTiles metadata (offline map packs)"), QStringLiteral("fuzz_mbtiles_metadata")},

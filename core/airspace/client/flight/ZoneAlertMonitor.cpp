@@ -59,6 +59,11 @@ ZoneAlertMonitor::ZoneAlertMonitor(client::VehicleFleet *fleet, terrain::Elevati
 
 ZoneAlertMonitor::~ZoneAlertMonitor() = default;
 
+void ZoneAlertMonitor::setClock(std::function<QDateTime()> clock)
+{
+    m_clock = std::move(clock);
+}
+
 void ZoneAlertMonitor::setZones(std::shared_ptr<const ZoneSet> zones)
 {
     m_zones = std::move(zones);
@@ -98,11 +103,15 @@ void ZoneAlertMonitor::predictAgainst(const Mover &m, const ZoneSet &zones, cons
         return seconds <= (raised ? kClearSeconds : kHorizonSeconds);
     };
 
+    const QDateTime now = m_clock ? m_clock() : QDateTime::currentDateTimeUtc();
+    const ed::TimeWindow window{now, now.addMSecs(qint64(kClearSeconds * 1000))};
     mission::GeoBox box{std::min(a.position.latitude, b.position.latitude), std::min(a.position.longitude, b.position.longitude),
                         std::max(a.position.latitude, b.position.latitude), std::max(a.position.longitude, b.position.longitude), false};
     for (int index : zones.near(box)) {
         const Zone &zone = zones.zones()[size_t(index)];
         if (zone.kind != ZoneKind::Exclusion)
+            continue;
+        if (zone.geoZone && (zone.geoZone->restriction == ed::Restriction::NoRestriction || !zone.geoZone->appliesDuring(window)))
             continue;
         const std::vector<Span> inside = PlaneZone(zone, index, plane).inside(a, b);
         if (inside.empty())

@@ -7,6 +7,7 @@
 #include <QPointer>
 #include <QTimer>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -41,7 +42,8 @@ struct ZoneAlert : vehicle::FlightAlert
 //
 // Two sets of zones: the airspace the client knows (setZones, the same for every vehicle) and each
 // vehicle's own fence (setVehicleZones: what was uploaded with its mission). Each set's inclusion
-// zones are one permitted area.
+// zones are one permitted area. A UAS geographical zone (ED-269 / ED-318) counts while it applies by
+// the clock; one with no restriction raises nothing.
 //
 // The alerts keep the in-flight alert contract (vehicle::AlertModel, as ProximityMonitor's and the
 // battery's): a row here per alert, one entry in the fleet's command log per rise (CommandLog::alert),
@@ -68,6 +70,10 @@ public:
     // One vehicle's own fence (by Vehicle::id), e.g. the route fence uploaded with its mission.
     void setVehicleZones(const QString &vehicleId, std::vector<Zone> zones);
 
+    // The clock a UAS geographical zone's applicability is read against (default: the system's, UTC):
+    // a zone counts when it applies in the next kClearSeconds. Tests set their own.
+    void setClock(std::function<QDateTime()> clock);
+
     void check();
 
 private:
@@ -80,6 +86,7 @@ private:
     std::shared_ptr<const ZoneSet> m_zones;
     QHash<QString, std::shared_ptr<const ZoneSet>> m_vehicleZones;
     QTimer m_timer;
+    std::function<QDateTime()> m_clock;
 };
 
 } // namespace sortie::airspace
