@@ -1,5 +1,6 @@
 #include "ZoneFiles.h"
 
+#include "EdReading.h"
 #include "JsonCursor.h"
 
 #include <cmath>
@@ -11,36 +12,11 @@ using mission::formats::JsonCursor;
 using mission::formats::JsonPathError;
 
 namespace {
-GeoPoint position(const JsonCursor &c)
-{
-    const size_t n = c.arraySize();
-    if (n < 2 || n > 3)
-        c.fail(QStringLiteral("a position is [longitude, latitude] or [longitude, latitude, altitude]"));
-    const GeoPoint p{c.at(size_t(1)).number(), c.at(size_t(0)).number()};
-    if (!p.isValid())
-        c.fail(QStringLiteral("longitude or latitude out of range"));
-    return p;
-}
+using ed::reading::position;
 
-// A GeoJSON polygon: rings of positions, closed (first == last) as RFC 7946 asks; stored open.
-ZonePolygon polygon(const JsonCursor &c)
-{
-    ZonePolygon out;
-    if (c.arraySize() == 0)
-        c.fail(QStringLiteral("a polygon needs an outer ring"));
-    for (size_t r = 0; r < c.arraySize(); ++r) {
-        const JsonCursor ring = c.at(r);
-        std::vector<GeoPoint> points;
-        for (size_t i = 0; i < ring.arraySize(); ++i)
-            points.push_back(position(ring.at(i)));
-        if (points.size() > 1 && points.front() == points.back())
-            points.pop_back();
-        if (points.size() < 3)
-            ring.fail(QStringLiteral("a ring needs at least 3 distinct positions, found %1").arg(points.size()));
-        out.rings.push_back(std::move(points));
-    }
-    return out;
-}
+// A GeoJSON polygon, read as the geographical zones read theirs (ed::reading::polygon: rings
+// closed as RFC 7946 asks, stored open, repeated vertices dropped).
+ZonePolygon polygon(const JsonCursor &c) { return ZonePolygon{ed::reading::polygon(c).rings}; }
 
 std::optional<HeightLimit> limit(const JsonCursor &props, const char *key, HeightReference reference)
 {

@@ -63,6 +63,20 @@ private slots:
         QVERIFY(!funnel.active);
     }
 
+    // Published files repeat a vertex; a ring of three distinct positions written with four is a
+    // triangle, not a four-cornered zone with a zero-length edge (the same ring reader as ED-318's).
+    void geoJsonRepeatedVerticesAreOne()
+    {
+        const QByteArray json = R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"name": "T"},
+          "geometry": {"type": "Polygon", "coordinates": [[[24.0, 56.9], [24.1, 56.9], [24.1, 56.9], [24.1, 57.0], [24.0, 56.9]]]}}]})";
+        const Result<ZoneFile> read = readGeoJsonZones(json, QStringLiteral("t.geojson"));
+        QVERIFY2(read.ok(), read.ok() ? "" : qPrintable(read.error().toString()));
+        QCOMPARE(read->zones.size(), size_t(1));
+        const auto &ring = std::get<ZonePolygons>(read->zones[0].shape).parts.front().rings.front();
+        QCOMPARE(ring.size(), size_t(3));
+        QCOMPARE(ring[2], (GeoPoint{57.0, 24.1}));
+    }
+
     void badGeoJsonFeaturesAreNamed_data()
     {
         QTest::addColumn<QByteArray>("feature");
