@@ -2,7 +2,6 @@
 
 #include "RouteValidator.h"
 
-#include <QFile>
 
 #include <cmath>
 
@@ -42,14 +41,9 @@ QString percent(double fraction)
 std::optional<EnduranceInput> readEnduranceInput(const QString &vehicleFile, const QString &wind, const QString &turns, QString *error)
 {
     EnduranceInput input;
-    QFile f(vehicleFile);
-    if (!f.open(QIODevice::ReadOnly)) {
-        *error = QStringLiteral("%1: %2").arg(vehicleFile, f.errorString());
-        return std::nullopt;
-    }
-    const mission::Result<EnergyProfile> profile = readEnergyProfile(f.readAll());
+    const mission::Result<EnergyProfile> profile = loadEnergyProfile(vehicleFile);
     if (!profile) {
-        *error = profile.error().withFile(vehicleFile).toString();
+        *error = profile.error().toString();
         return std::nullopt;
     }
     input.profile = *profile;

@@ -1,5 +1,7 @@
 #include "ZoneFiles.h"
 
+#include "MissionFiles.h"
+
 #include "GeoZoneReader.h"
 #include "QgcPlanFormat.h"
 
@@ -91,10 +93,11 @@ mission::Result<ZoneFile> readZoneData(const QByteArray &data, const QString &na
 
 mission::Result<ZoneFile> loadZoneFile(const QString &path)
 {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return mission::MissionError{f.errorString(), path, 0, 0, {}};
-    mission::Result<ZoneFile> read = readZoneData(f.readAll(), QFileInfo(path).fileName());
+    // A national zone file is a few MB (Switzerland's 1,200 zones: 2.8 MB); 64 MiB bounds a hostile one.
+    const mission::Result<QByteArray> data = mission::formats::readFileAtMost(path, 64 * 1024 * 1024);
+    if (!data)
+        return data.error();
+    mission::Result<ZoneFile> read = readZoneData(data.value(), QFileInfo(path).fileName());
     if (!read)
         return read.error().withFile(path);
     return read;

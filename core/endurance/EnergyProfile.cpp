@@ -1,6 +1,7 @@
 #include "EnergyProfile.h"
 
 #include "JsonCursor.h"
+#include "MissionFiles.h"
 
 #include <cmath>
 #include <QCoreApplication>
@@ -84,6 +85,17 @@ mission::Result<EnergyProfile> readEnergyProfile(const QByteArray &json)
     } catch (const mission::formats::JsonPathError &e) {
         return mission::formats::errorAt(e);
     }
+}
+
+mission::Result<EnergyProfile> loadEnergyProfile(const QString &path)
+{
+    const mission::Result<QByteArray> data = mission::formats::readFileAtMost(path, 1024 * 1024);
+    if (!data)
+        return data.error();
+    mission::Result<EnergyProfile> read = readEnergyProfile(data.value());
+    if (!read)
+        return read.error().withFile(path);
+    return read;
 }
 
 QByteArray writeEnergyProfile(const EnergyProfile &p)

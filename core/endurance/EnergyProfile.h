@@ -48,6 +48,9 @@ QString sourceName(ProfileSource source);
 // optional "source" is "file" (the default), "server" or "fit". A missing required number, a
 // negative one or a reserve outside [0, 1) is an error naming the JSON path.
 mission::Result<EnergyProfile> readEnergyProfile(const QByteArray &json);
+// The file at `path` read (at most 1 MiB: a profile is a few hundred bytes) and parsed; an error
+// names the file. The client and sortie-plan both load profiles through here.
+mission::Result<EnergyProfile> loadEnergyProfile(const QString &path);
 QByteArray writeEnergyProfile(const EnergyProfile &profile);
 
 } // namespace sortie::endurance

@@ -1902,10 +1902,6 @@
         <translation>kann nicht geöffnet werden: %1</translation>
     </message>
     <message>
-        <source>the file is larger than 256 MiB</source>
-        <translation>die Datei ist größer als 256 MiB</translation>
-    </message>
-    <message>
         <source>unknown file type: use .sortie, .plan, .waypoints, .kml or .kmz</source>
         <translation>unbekannter Dateityp: Verwenden Sie .sortie, .plan, .waypoints, .kml oder .kmz</translation>
     </message>
@@ -1948,6 +1944,10 @@
     <message>
         <source>cannot write: %1</source>
         <translation>kann nicht geschrieben werden: %1</translation>
+    </message>
+    <message>
+        <source>the file is larger than %1 MiB</source>
+        <translation>die Datei ist größer als %1 MiB</translation>
     </message>
 </context>
 <context>

@@ -1902,10 +1902,6 @@
         <translation>no se puede abrir: %1</translation>
     </message>
     <message>
-        <source>the file is larger than 256 MiB</source>
-        <translation>el archivo ocupa más de 256 MiB</translation>
-    </message>
-    <message>
         <source>unknown file type: use .sortie, .plan, .waypoints, .kml or .kmz</source>
         <translation>tipo de archivo desconocido: use .sortie, .plan, .waypoints, .kml o .kmz</translation>
     </message>
@@ -1948,6 +1944,10 @@
     <message>
         <source>cannot write: %1</source>
         <translation>no se puede escribir: %1</translation>
+    </message>
+    <message>
+        <source>the file is larger than %1 MiB</source>
+        <translation>el archivo supera los %1 MiB</translation>
     </message>
 </context>
 <context>

@@ -1905,10 +1905,6 @@
         <translation>не вдається відкрити: %1</translation>
     </message>
     <message>
-        <source>the file is larger than 256 MiB</source>
-        <translation>файл більший за 256 MiB</translation>
-    </message>
-    <message>
         <source>unknown file type: use .sortie, .plan, .waypoints, .kml or .kmz</source>
         <translation>невідомий тип файлу: використовуйте .sortie, .plan, .waypoints, .kml або .kmz</translation>
     </message>
@@ -1951,6 +1947,10 @@
     <message>
         <source>cannot write: %1</source>
         <translation>не вдається записати: %1</translation>
+    </message>
+    <message>
+        <source>the file is larger than %1 MiB</source>
+        <translation>файл більший за %1 МіБ</translation>
     </message>
 </context>
 <context>

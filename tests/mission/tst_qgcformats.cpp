@@ -347,6 +347,27 @@ private slots:
         QVERIFY(model.route() == before);
     }
 
+    // A whole outside file is read at most to its limit: a file over it is refused, and so is a
+    // device without end that reports no size (/dev/zero), after limit + 1 bytes, not read on.
+    void wholeFilesAreReadToALimit()
+    {
+        QTemporaryDir dir;
+        const QString small = dir.filePath(QStringLiteral("small.json"));
+        QFile f(small);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(QByteArray(1000, 'x'));
+        f.close();
+        QCOMPARE(formats::readFileAtMost(small, 1000).value().size(), 1000);
+        const auto over = formats::readFileAtMost(small, 999);
+        QVERIFY(!over.ok());
+        QVERIFY2(over.error().message.contains(QStringLiteral("larger than")), qPrintable(over.error().message));
+
+        // A device with no end and no size: refused after 1 MiB + 1 bytes.
+        const auto endless = formats::readFileAtMost(QStringLiteral("/dev/zero"), 1024 * 1024);
+        QVERIFY(!endless.ok());
+        QVERIFY2(endless.error().message.contains(QStringLiteral("larger than 1 MiB")), qPrintable(endless.error().message));
+    }
+
     void importFailureLeavesTheFileAlone()
     {
         QTemporaryDir dir;

@@ -4,7 +4,6 @@
 #include "RouteAnalyzer.h"
 #include "RouteModel.h"
 
-#include <QFile>
 #include <QLoggingCategory>
 #include <QSettings>
 
@@ -40,17 +39,10 @@ RouteEndurance::~RouteEndurance() = default;
 
 bool RouteEndurance::loadProfile(const QString &path)
 {
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly)) {
-        setProfile(std::nullopt);
-        m_problem = QStringLiteral("%1: %2").arg(path, f.errorString());
-        emit estimateChanged();
-        return false;
-    }
-    const mission::Result<EnergyProfile> read = readEnergyProfile(f.readAll());
+    const mission::Result<EnergyProfile> read = loadEnergyProfile(path);
     if (!read) {
         setProfile(std::nullopt);
-        m_problem = read.error().withFile(path).toString();
+        m_problem = read.error().toString();
         emit estimateChanged();
         return false;
     }

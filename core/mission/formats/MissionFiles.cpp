@@ -9,6 +9,8 @@
 #include "WpmlFormat.h"
 
 #include <QFile>
+
+#include <algorithm>
 #include <QFileInfo>
 #include <QSaveFile>
 #include <QCoreApplication>
@@ -18,15 +20,7 @@ namespace sortie::mission::formats {
 namespace {
 constexpr qint64 kMaxFileBytes = 256 * 1024 * 1024;
 
-Result<QByteArray> readAll(const QString &path)
-{
-    QFile f(path);
-    if (!f.open(QIODevice::ReadOnly))
-        return MissionError{QCoreApplication::translate("MissionFiles", "cannot open: %1").arg(f.errorString()), path, 0, 0, {}};
-    if (f.size() > kMaxFileBytes)
-        return MissionError{QCoreApplication::translate("MissionFiles", "the file is larger than 256 MiB"), path, 0, 0, {}};
-    return f.readAll();
-}
+Result<QByteArray> readAll(const QString &path) { return readFileAtMost(path, kMaxFileBytes); }
 
 Result<FileFormat> formatOf(const QString &path)
 {
@@ -68,6 +62,24 @@ QStringList missionFileExtensions()
     for (const FileType &type : kFileTypes)
         list.append(QString::fromLatin1(type.extension));
     return list;
+}
+
+Result<QByteArray> readFileAtMost(const QString &path, qint64 maxBytes)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return MissionError{QCoreApplication::translate("MissionFiles", "cannot open: %1").arg(f.errorString()), path, 0, 0, {}};
+    // In pieces: a pipe or a device gives what it has per read, and reports no size up front.
+    QByteArray data;
+    for (QByteArray piece; !(piece = f.read(std::min<qint64>(maxBytes + 1 - data.size(), 1 << 20))).isEmpty();) {
+        data += piece;
+        if (data.size() > maxBytes)
+            return MissionError{QCoreApplication::translate("MissionFiles", "the file is larger than %1 MiB").arg(double(maxBytes) / (1024 * 1024), 0, 'g', 3),
+                                path, 0, 0, {}};
+    }
+    if (f.error() != QFileDevice::NoError)
+        return MissionError{QCoreApplication::translate("MissionFiles", "cannot open: %1").arg(f.errorString()), path, 0, 0, {}};
+    return data;
 }
 
 std::optional<FileFormat> formatForPath(const QString &path)

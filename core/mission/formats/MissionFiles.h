@@ -20,6 +20,11 @@ std::optional<FileFormat> formatForPath(const QString &path);
 QStringList missionFileExtensions();
 QString formatName(FileFormat format);
 
+// A file of the operator's read whole, refused when it holds more than `maxBytes`. At most
+// maxBytes + 1 bytes are read, so a pipe or a device, which reports no size, cannot fill memory
+// either. Every reader of a whole outside file goes through here (missions, zones, energy profiles).
+Result<QByteArray> readFileAtMost(const QString &path, qint64 maxBytes);
+
 struct LoadedMission
 {
     Mission mission;
