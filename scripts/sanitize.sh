@@ -20,4 +20,12 @@ ctest --test-dir "$sanitized_build" --output-on-failure -j 2 -LE 'bench|ui' --ti
 # Qt's libraries have no frame pointers: the leak suppressions for Qt Quick (tests/sanitizers) only
 # match with the slow unwinder, which the QML tests can afford.
 ASAN_OPTIONS="$ASAN_OPTIONS:fast_unwind_on_malloc=0" \
-  ctest --test-dir "$sanitized_build" --output-on-failure -j 2 -L ui -LE bench --timeout 600 "$@"
+  ctest --test-dir "$sanitized_build" --output-on-failure -j 2 -L ui -LE bench -E '^tst_loginsecurity$' --timeout 600 "$@"
+# The one exception, said here and in the log: with the slow unwinder every allocation of OpenSSL's
+# handshake walks the stack, and tst_loginsecurity's in-process TLS login (client and simulator in one
+# process) outlasts the 10 s connect bound, so it never logs in. It runs with ASan and UBSan and the
+# fast unwinder, without the leak check that needs the slow one (Qt Quick's own leaks match their
+# suppressions only with it).
+echo "sanitize.sh: tst_loginsecurity runs without the leak check (the slow unwinder makes its TLS login outlast the connect bound)"
+ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" \
+  ctest --test-dir "$sanitized_build" --output-on-failure -R '^tst_loginsecurity$' --timeout 600 "$@"
