@@ -148,6 +148,11 @@ function(sortie_precompile_headers)
       target_compile_definitions(${host} PRIVATE ${_sortie_pch_defines_${kind}})
     endif()
     target_precompile_headers(${host} PRIVATE ${_sortie_pch_${kind}})
+    # clang records the headers' times in the header it writes and refuses it when they differ; a
+    # header ccache hands to another clone would be refused for its own file's time.
+    if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+      target_compile_options(${host} PRIVATE -Xclang -fno-pch-timestamp)
+    endif()
     set(count_${kind} 0)
   endforeach()
 
