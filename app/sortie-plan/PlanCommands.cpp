@@ -49,6 +49,23 @@ void printNotices(const QStringList &notices, Streams io)
         io.err << "note: " << n << "\n";
 }
 
+// The validation of each route a conversion writes, to stderr, one line per issue; returns the
+// number of errors.
+int printIssuesOfWritten(const Mission &mission, std::optional<int> route, Streams io)
+{
+    ScanPlanCache cache;
+    int errors = 0;
+    for (size_t ri = 0; ri < mission.routes.size(); ++ri) {
+        if (route && *route != int(ri))
+            continue;
+        const ValidationReport report = validateRoute(mission.routes[ri], &cache);
+        for (const ValidationIssue &i : report.issues)
+            io.err << (i.severity == Severity::Error ? "error" : "warning") << ": route " << ri + 1 << " [" << i.rule << "] " << i.message << "\n";
+        errors += int(report.errorCount());
+    }
+    return errors;
+}
+
 QString duration(double seconds)
 {
     if (!std::isfinite(seconds))
@@ -74,7 +91,8 @@ int runConvert(const QStringList &args, Streams io)
 {
     QCommandLineParser p;
     p.addOption({QStringLiteral("route"), QStringLiteral("Route to write (1-based); default: every route (.sortie, .kmz waylines), or the only one."), QStringLiteral("N")});
-    p.addOption({QStringLiteral("force"), QStringLiteral("Write even with validation errors.")});
+    p.addOption({QStringLiteral("strict"), QStringLiteral("Refuse to write a route with validation errors (exit 2).")});
+    p.addOption({QStringLiteral("force"), QStringLiteral("Write even with validation errors: what convert does unless --strict (kept for scripts).")});
     p.addOption({QStringLiteral("drone"), QStringLiteral("DJI WPML (.kmz): the aircraft (%1; default: the route's profile, else m350).").arg(djiDroneKeys()), QStringLiteral("MODEL")});
     p.addOption({QStringLiteral("payload"), QStringLiteral("DJI WPML: the payload (e.g. h20t, p1; default: the aircraft's camera)."), QStringLiteral("PAYLOAD")});
     p.addOption({QStringLiteral("height"), QStringLiteral("DJI WPML heights: relative (to take-off), amsl (EGM96), agl (terrain following) or wgs84 (ellipsoidal)."), QStringLiteral("MODE"), QStringLiteral("relative")});
@@ -114,9 +132,17 @@ int runConvert(const QStringList &args, Streams io)
             return Failure;
         }
     }
-    const int rc = saveWithGate(loaded->mission, out, route, p.isSet(QStringLiteral("force")), io, wpml);
+    // A conversion carries the file over and says what Sortie's rules find in it; refusing is asked
+    // for (--strict). The rules judge what the file states, so an imported route keeps its limits.
+    const bool strict = p.isSet(QStringLiteral("strict"));
+    if (strict && p.isSet(QStringLiteral("force"))) {
+        io.err << "sortie-plan: --strict and --force contradict each other\n";
+        return Failure;
+    }
+    const int issues = printIssuesOfWritten(loaded->mission, route, io);
+    const int rc = saveWithGate(loaded->mission, out, route, !strict, io, wpml);
     if (rc == Ok)
-        io.out << "wrote " << out << "\n";
+        io.out << "wrote " << out << (issues > 0 ? QStringLiteral(" with %1 validation error(s): see above").arg(issues) : QString()) << "\n";
     return rc;
 }
 

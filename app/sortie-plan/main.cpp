@@ -15,10 +15,11 @@ namespace {
 const char *const kUsage =
     "usage: sortie-plan <command> [options]\n"
     "\n"
-    "  convert IN OUT [--route N] [--force]\n"
+    "  convert IN OUT [--route N] [--strict]\n"
     "       [--drone m300|m350|m30|m30t|m3e|m3t|m3m|m3d|m3td] [--payload P] [--height relative|amsl|agl|wgs84] [--takeoff-amsl M] [--security-height M]\n"
     "      Convert between .sortie, .plan (QGroundControl), .waypoints (QGC WPL 110), .kmz (DJI WPML) and\n"
-    "      .kml (export only). The --drone.. options shape a .kmz for DJI Pilot 2.\n"
+    "      .kml (export only). The --drone.. options shape a .kmz for DJI Pilot 2. The route is written as\n"
+    "      the file states it and its validation issues are listed; --strict refuses one with errors.\n"
     "  stats FILE [--dem PATH] [--vehicle PROFILE.json [--wind SPEED,FROM_DEG] [--turns coordinated|stop]]\n"
     "       [--zones ZONES_FILE ...] [--json]\n"
     "      Print each route's statistics and validation results (with --dem, the terrain rules too; with\n"
@@ -47,7 +48,7 @@ const char *const kUsage =
     "       [--json] [--force]\n"
     "      Generate an area scan over a KML polygon and save it as a route.\n"
     "\n"
-    "--force writes a route even when it has validation errors.\n";
+    "scan --force writes a route even when it has validation errors.\n";
 }
 
 int main(int argc, char **argv)

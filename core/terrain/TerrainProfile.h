@@ -40,6 +40,10 @@ struct ProfileRoute
     std::vector<ProfileWaypoint> waypoints;
     std::optional<GeoPoint> home;  // for AboveHome; the first waypoint when absent
     double safeDistance = 10.0;    // metres of clearance the vehicle keeps from the ground
+    // The height above the surface operators are held to: the EU open category's 120 m from the
+    // closest point of the surface (Regulation 2019/947, UAS.OPEN.010), judged here against the
+    // ground under the path.
+    double surfaceHeightLimit = 120.0;
 };
 
 // The flown path of a route (area scans expanded); AGL is above the terrain under each point.

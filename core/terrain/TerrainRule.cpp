@@ -1,7 +1,9 @@
 #include "TerrainRule.h"
 
-#include <cmath>
 #include <QCoreApplication>
+
+#include <cmath>
+#include <optional>
 
 namespace sortie::terrain {
 
@@ -67,6 +69,30 @@ std::vector<ValidationIssue> terrainIssues(const ProfileRoute &route, const Terr
                            .arg(legLabel(route, s.leg), how, metres(s.lowest.distanceAlongLeg), span, metres(route.safeDistance)),
                        rowOf(route, s.leg)});
     }
+
+    // Legs flown higher above the surface than the limit: the highest point of each.
+    std::optional<ClearancePoint> highest;
+    auto reportHighest = [&] {
+        if (!highest)
+            return;
+        out.push_back({Severity::Warning, QStringLiteral("terrain-above-surface-limit"),
+                       QCoreApplication::translate("TerrainRule", "%1 flies up to %2 m above the ground at %3 m along it; "
+                                                                  "the open category allows %4 m above the surface.")
+                           .arg(legLabel(route, highest->leg), metres(highest->clearance), metres(highest->distanceAlongLeg),
+                                metres(route.surfaceHeightLimit)),
+                       rowOf(route, highest->leg)});
+        highest.reset();
+    };
+    for (size_t i = 0; i < profile.size(); ++i) {
+        const PathSamplePoint &p = profile.path.points[i];
+        if (highest && highest->leg != p.leg)
+            reportHighest();
+        const double c = profile.clearance(i);
+        if (!(c > route.surfaceHeightLimit) || (highest && c <= highest->clearance))
+            continue;
+        highest = ClearancePoint{p.leg, p.distance, p.distance - profile.path.vertexDistance[size_t(p.leg)], c};
+    }
+    reportHighest();
 
     // Stretches without data; a run over several whole legs is one issue.
     const auto &nd = profile.noData;

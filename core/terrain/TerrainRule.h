@@ -12,6 +12,9 @@ namespace sortie::terrain {
 //   distance, between waypoints too; names the leg and the distance along it of the lowest point;
 // - "terrain-no-data" (warning): a stretch where no source had terrain data, naming the leg(s) and
 //   the sources tried; consecutive legs without data are one issue;
+// - "terrain-above-surface-limit" (warning): a leg flies higher above the ground under it than the
+//   route's surface height limit (the open category's 120 m); one issue per leg, naming its highest
+//   point. A warning, not an error: an authorisation in the specific category allows more;
 // - "terrain-agl-no-data" (error): a waypoint above ground (or home) where the ground is unknown, so
 //   its height is unknown; consecutive waypoints are one issue.
 std::vector<mission::ValidationIssue> terrainIssues(const ProfileRoute &route, const TerrainProfile &profile);

@@ -72,10 +72,14 @@ private slots:
         const Run stats = run({QStringLiteral("stats"), path("bad.sortie")});
         QCOMPARE(stats.code, 2);
         QVERIFY(stats.out.contains("[speed-not-positive] Waypoint 3"));
-        const Run refused = run({QStringLiteral("convert"), path("bad.sortie"), path("bad.plan")});
+        // A conversion writes the file and names the issues; --strict refuses and writes nothing.
+        const Run refused = run({QStringLiteral("convert"), path("bad.sortie"), path("bad.plan"), QStringLiteral("--strict")});
         QCOMPARE(refused.code, 2);
         QVERIFY(!QFile::exists(path("bad.plan")));
-        QCOMPARE(run({QStringLiteral("convert"), path("bad.sortie"), path("bad.plan"), QStringLiteral("--force")}).code, 0);
+        const Run written = run({QStringLiteral("convert"), path("bad.sortie"), path("bad.plan")});
+        QCOMPARE(written.code, 0);
+        QVERIFY2(written.err.contains("error: route 1 [speed-not-positive] Waypoint 3"), written.err.constData());
+        QVERIFY2(written.out.contains("with 1 validation error(s)"), written.out.constData());
         QVERIFY(QFile::exists(path("bad.plan")));
     }
 

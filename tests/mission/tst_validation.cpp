@@ -128,6 +128,21 @@ private slots:
         QCOMPARE(report.hasErrors(), error || report.errorCount() > 0);
     }
 
+    void aboveTheLimitSaysWhatWasCompared()
+    {
+        // 250 m AMSL with the take-off at 120 m AMSL: 130 m above the take-off point, not above the
+        // ground under the waypoint, and the message says so.
+        Route r = twoPoints();
+        for (int i : {0, 1})
+            std::get<Waypoint>(r.segments[size_t(i)]).altitudeType = AltitudeType::Amsl;
+        std::get<Waypoint>(r.segments[0]).altitude = 150;
+        std::get<Waypoint>(r.segments[1]).altitude = 250;
+        r.settings.home = HomePosition{{56.9, 24.1}, 120.0};
+        const ValidationIssue *issue = find(validateRoute(r), QStringLiteral("altitude-above-max"));
+        QVERIFY(issue);
+        QCOMPARE(issue->message, QStringLiteral("Waypoint 2: 130.0 m above the take-off point (altitude 250 m AMSL); the route's limit is 120 m above it."));
+    }
+
     void gateBlocksErrorsUnlessOverridden()
     {
         Route r = twoPoints();

@@ -281,6 +281,48 @@ private slots:
         QVERIFY(noGeoid.error().message.contains(QStringLiteral("proj-data")));
     }
 
+    void aMappingFileOverRisingGroundConvertsWithTheAircraftsLimit()
+    {
+        // As DJI Pilot 2 writes a mapping mission over rising ground: WGS-84 heights, the take-off
+        // point in the file, waypoints 135.6 m above it (not above the ground under them). A WPML
+        // file states no altitude limit, so the route keeps its aircraft's, and the conversion
+        // writes the file rather than refusing it on Sortie's default of 120 m.
+        const double takeoffEllipsoid = 568.55;
+        const QString takeoff = el(QStringLiteral("takeOffRefPoint"), QStringLiteral("56.9755,24.07,%1").arg(takeoffEllipsoid));
+        const QByteArray file = document(drone(77, 0) + takeoff, folder(QStringLiteral("WGS84"), placemark(0, takeoffEllipsoid + 100.0)
+                                                                                                     + placemark(1, takeoffEllipsoid + 135.6)
+                                                                                                     + placemark(2, takeoffEllipsoid + 120.0)));
+        const Result<WpmlImport> in = readWpml(file);
+        QVERIFY2(in.ok(), in.ok() ? "" : qPrintable(in.error().toString()));
+        const DjiDroneModel *m3e = findDjiDroneModel(QStringLiteral("m3e"));
+        QVERIFY(m3e);
+        QCOMPARE(in->routes.front().settings.maxAltitude, m3e->maxAltitudeLimit);
+
+        QTemporaryDir dir;
+        const QString kmzPath = dir.filePath(QStringLiteral("mapping.kmz"));
+        QVERIFY(writeFile(kmzPath, kmz(file)));
+        const Run converted = sortiePlan({QStringLiteral("convert"), kmzPath, dir.filePath(QStringLiteral("mapping.sortie"))});
+        QVERIFY2(converted.code == 0, qPrintable(converted.err));
+        QVERIFY2(!converted.err.contains(QStringLiteral("altitude-above-max")), qPrintable(converted.err));
+        const Result<LoadedMission> loaded = loadMission(dir.filePath(QStringLiteral("mapping.sortie")));
+        QVERIFY(loaded.ok());
+        QCOMPARE(loaded->mission.routes.front().settings.maxAltitude, m3e->maxAltitudeLimit);
+
+        // Held to a limit of 120 m above the take-off point, the conversion still writes the file
+        // and names what was compared; --strict refuses it and writes nothing.
+        Mission held = loaded->mission;
+        held.routes.front().settings.maxAltitude = 120.0;
+        QVERIFY(saveMission(held, dir.filePath(QStringLiteral("held.sortie")), {std::nullopt, ValidationOverride::AcceptErrors, {}}).ok());
+        const Run written = sortiePlan({QStringLiteral("convert"), dir.filePath(QStringLiteral("held.sortie")), dir.filePath(QStringLiteral("held.kmz"))});
+        QVERIFY2(written.code == 0, qPrintable(written.err));
+        QVERIFY2(written.err.contains(QStringLiteral("Waypoint 2: 135.6 m above the take-off point")) && written.err.contains(QStringLiteral("the route's limit is 120 m above it")),
+                 qPrintable(written.err));
+        QVERIFY(QFile::exists(dir.filePath(QStringLiteral("held.kmz"))));
+        const Run strict = sortiePlan({QStringLiteral("convert"), dir.filePath(QStringLiteral("held.sortie")), dir.filePath(QStringLiteral("strict.kmz")), QStringLiteral("--strict")});
+        QCOMPARE(strict.code, 2);
+        QVERIFY(!QFile::exists(dir.filePath(QStringLiteral("strict.kmz"))));
+    }
+
     void severalWaylinesAllWrittenOrRefusedWithTheReason()
     {
         const QByteArray two = document(drone(89, 0), folder(QStringLiteral("relativeToStartPoint"), five()) + folder(QStringLiteral("relativeToStartPoint"), placemark(0, 60) + placemark(1, 70)));

@@ -111,6 +111,33 @@ private slots:
         QCOMPARE(agl.minClearance->clearance, 30.0);
     }
 
+    // Level at 300 m AMSL over a valley that falls from 200 m to 150 m and back: 120 m above the
+    // surface is passed in the valley only; one warning per leg, at its highest point.
+    void aboveTheSurfaceLimitInAValley()
+    {
+        FormulaSource valley(QStringLiteral("valley"), [](const GeoPoint &p) { return p.longitude < 24.005 || p.longitude > 24.015 ? 200.0 : 150.0; });
+        ElevationService service;
+        service.setSources({&valley});
+        const ProfileRoute r = straight(300, HeightReference::Amsl);
+        const auto issues = terrainIssues(r, computeProfile(r, service, 10));
+        QCOMPARE(issues.size(), size_t(2));
+        for (int leg : {0, 1}) {
+            const auto &i = issues[size_t(leg)];
+            QCOMPARE(i.rule, QStringLiteral("terrain-above-surface-limit"));
+            QCOMPARE(i.severity, sortie::mission::Severity::Warning);
+            QCOMPARE(i.segment, leg);
+            QVERIFY2(i.message.contains(QStringLiteral("flies up to 150.0 m above the ground")) && i.message.contains(QStringLiteral("allows 120.0 m above the surface")),
+                     qPrintable(i.message));
+        }
+        // 100 m above the valley floor is inside the limit everywhere.
+        const ProfileRoute low = straight(250, HeightReference::Amsl);
+        QVERIFY(terrainIssues(low, computeProfile(low, service, 10)).empty());
+        // The limit is the route's to set (an authorisation in the specific category).
+        ProfileRoute authorised = r;
+        authorised.surfaceHeightLimit = 150.0;
+        QVERIFY(terrainIssues(authorised, computeProfile(authorised, service, 10)).empty());
+    }
+
     // A ridge between waypoints 1 and 2: the waypoints are high enough, the leg is not.
     void ridgeBetweenWaypoints()
     {

@@ -211,8 +211,11 @@ private slots:
             prepared = {true, r, m};
         });
         QTRY_VERIFY(slow.asked > 0);
-        QTest::qWait(100);
-        QVERIFY(!prepared.done);  // still waiting for the ground
+        // Still waiting for the ground: what the asking queued has run (posted events drained), and
+        // only the source's answer completes the plan.
+        QCoreApplication::sendPostedEvents();
+        QCoreApplication::processEvents();
+        QVERIFY(!prepared.done);
         slow.answer();
         QTRY_VERIFY(prepared.done);
         QVERIFY2(prepared.result.ok, qPrintable(prepared.result.message));

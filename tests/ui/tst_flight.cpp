@@ -315,7 +315,7 @@ private slots:
         QList<double> values;
         STEP(pressUpload(row, &activities, &values));
         QTRY_VERIFY2(text("preparationMessage").startsWith(QStringLiteral("Not uploaded: ")), qPrintable(text("preparationMessage")));
-        QVERIFY2(text("preparationMessage").contains(QStringLiteral("maximum")), qPrintable(text("preparationMessage")));
+        QVERIFY2(text("preparationMessage").contains(QStringLiteral("the route's limit is 120 m above it")), qPrintable(text("preparationMessage")));
         QVERIFY(vci->mission().empty());
         QVERIFY(simulated.model().mission().empty()); // nothing reached the vehicle
 

@@ -114,9 +114,12 @@ private:
             agl = altitude - rs.home->altitudeAmsl;  // above the take-off point
         }
         auto shown = [&] { return QStringLiteral("%1 m %2").arg(num(altitude), altitudeTypeName(type)); };
+        // Says what was compared: the height above the take-off point, not above the ground under
+        // the waypoint (the terrain rules judge that where the ground is known).
         if (agl > rs.maxAltitude)
-            add(Severity::Error, "altitude-above-max", row, QCoreApplication::translate("RouteValidator", "%1: altitude %2 is above the route's maximum of %3 m.")
-                .arg(label(row), shown(), num(rs.maxAltitude)));
+            add(Severity::Error, "altitude-above-max", row,
+                QCoreApplication::translate("RouteValidator", "%1: %2 m above the take-off point (altitude %3); the route's limit is %4 m above it.")
+                    .arg(label(row), QString::number(agl, 'f', 1), shown(), num(rs.maxAltitude)));
         else if (agl < rs.safeAltitude && role == WaypointRole::Pass)
             add(Severity::Warning, "altitude-below-safe", row, QCoreApplication::translate("RouteValidator", "%1: altitude %2 is below the route's safe altitude of %3 m.")
                 .arg(label(row), shown(), num(rs.safeAltitude)));

@@ -11,6 +11,8 @@
 #include "WpmlSchema.h"
 #include "ZipArchive.h"
 
+#include <algorithm>
+
 namespace sortie::mission::formats {
 namespace {
 
@@ -200,15 +202,15 @@ Result<std::optional<HomePosition>> takeoffOf(const ReadDocument &doc, GeoidAcce
 }
 
 // The aircraft and payload the file declares, named when Sortie does not know them or keeps them not.
-QString aircraftOf(const ReadDocument &doc, QStringList *notices)
+const DjiDroneModel *aircraftOf(const ReadDocument &doc, QStringList *notices)
 {
     if (!doc.droneEnum)
-        return {};
+        return nullptr;
     const DjiDroneModel *model = findDjiDroneModel(*doc.droneEnum, doc.droneSubEnum.value_or(0));
     if (!model) {
         *notices << QStringLiteral("droneEnumValue %1/%2 is not an aircraft Sortie knows: the routes name no DJI aircraft (--drone chooses one on export)")
                         .arg(*doc.droneEnum).arg(doc.droneSubEnum.value_or(0));
-        return {};
+        return nullptr;
     }
     if (doc.payloadEnum && (model->payloads.empty() || model->payloads.front().enumValue != *doc.payloadEnum)) {
         const auto it = std::find_if(model->payloads.begin(), model->payloads.end(), [&](const DjiPayload &p) { return p.enumValue == *doc.payloadEnum; });
@@ -217,7 +219,22 @@ QString aircraftOf(const ReadDocument &doc, QStringList *notices)
                          : QStringLiteral("the payload %1 is not kept with the routes: an export writes the %2 unless --payload %3 is given")
                                .arg(it->name, model->payloads.front().name, it->key));
     }
-    return model->name;
+    return model;
+}
+
+// A WPML file states no altitude limit of its own: its routes keep the aircraft's (the highest
+// altitude limit DJI Pilot 2 can set on it, above the take-off point), or, for an aircraft Sortie
+// does not know, the highest any of them can set. Sortie's own default of 120 m above the take-off
+// point would refuse real survey files over rising ground; the legal 120 m above the surface is
+// judged by the terrain rules, where the ground is known.
+double altitudeLimitOf(const DjiDroneModel *model)
+{
+    if (model)
+        return model->maxAltitudeLimit;
+    double highest = 0.0;
+    for (const DjiDroneModel &m : djiDroneModels())
+        highest = std::max(highest, m.maxAltitudeLimit);
+    return highest;
 }
 
 } // namespace
@@ -281,7 +298,8 @@ Result<WpmlImport> readWpml(const QByteArray &data, const WpmlReadOptions &optio
     if (takeoffDoc.takeOffRefPointAglHeight && *takeoffDoc.takeOffRefPointAglHeight != 0.0)
         out.notices << QStringLiteral("the take-off point's height above the ground (takeOffRefPointAGLHeight %1 m) is not kept")
                            .arg(*takeoffDoc.takeOffRefPointAglHeight);
-    out.droneName = aircraftOf(*doc, &out.notices);
+    const DjiDroneModel *aircraft = aircraftOf(*doc, &out.notices);
+    out.droneName = aircraft ? aircraft->name : QString();
     if (!doc->unknown.isEmpty())
         out.notices << QStringLiteral("mission config: not kept: %1").arg(doc->unknown.join(QStringLiteral(", ")));
     if (templ) {
@@ -306,6 +324,7 @@ Result<WpmlImport> readWpml(const QByteArray &data, const WpmlReadOptions &optio
             return r.error();
         Route route = std::move(r).value();
         route.settings.profile.name = out.droneName;
+        route.settings.maxAltitude = altitudeLimitOf(aircraft);
         if (count > 1)
             route.settings.name = QStringLiteral("Wayline %1").arg(f + 1);
         out.routes.push_back(std::move(route));
