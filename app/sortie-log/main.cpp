@@ -1,6 +1,7 @@
 // sortie-log: record a UgCS server's vehicles into a flight log, describe a log, export its tracks,
 // compare a flight with its plan, fit a vehicle's energy profile to its flights. The work is in
 // core/flightlog and core/endurance/fit; this file reads arguments.
+#include "CertificateFingerprint.h"
 #include "EnergyProfile.h"
 #include "FlightLog.h"
 #include "FlightLogExport.h"
@@ -15,6 +16,7 @@
 #include <QJsonDocument>
 #include <QLoggingCategory>
 #include <QSaveFile>
+#include <QSettings>
 #include <QSocketNotifier>
 #include <QTextStream>
 
@@ -29,9 +31,13 @@ namespace {
 const char *const kUsage =
     "usage: sortie-log <command> [options]\n"
     "\n"
-    "  record --server HOST:PORT --user NAME [--password-file FILE] [--seconds N] [--max-size MB] OUT\n"
+    "  record --server [tls://]HOST:PORT --user NAME [--password-file FILE] [--seconds N] [--max-size MB]\n"
+    "         [--server-pin SHA256|CERT.pem] [--allow-cleartext] OUT\n"
     "      Record every vehicle of an HCI server until N seconds have passed or SIGINT/SIGTERM,\n"
     "      then close the log. The password is the first line of FILE (else $SORTIE_PASSWORD).\n"
+    "      tls:// secures the connection: the certificate pinned with --server-pin, else one the\n"
+    "      system trusts, else the one remembered on first use (its fingerprint is printed). To a\n"
+    "      server that is not this computer, a plain connection is refused unless --allow-cleartext.\n"
     "  info LOG [--json]\n"
     "      Vehicles, fields, time span, sample counts, routes and events.\n"
     "  export LOG --format gpx|kml|csv [--vehicle NAME] [-o OUT]\n"
@@ -230,7 +236,8 @@ void onSignal(int)
 int record(QCoreApplication &app, const QStringList &in, QTextStream &out, QTextStream &err)
 {
     const auto a = parse(in, {QStringLiteral("--server"), QStringLiteral("--user"), QStringLiteral("--password-file"),
-                              QStringLiteral("--seconds"), QStringLiteral("--max-size")}, {}, err);
+                              QStringLiteral("--seconds"), QStringLiteral("--max-size"), QStringLiteral("--server-pin")},
+                         {QStringLiteral("--allow-cleartext")}, err);
     if (!a || a->positional.size() != 1 || !a->options.contains(QStringLiteral("--server")) || !a->options.contains(QStringLiteral("--user")))
         return (err << kUsage, Usage);
     flightlog::ServerRecording::Options options;
@@ -238,6 +245,16 @@ int record(QCoreApplication &app, const QStringList &in, QTextStream &out, QText
     options.user = a->options.value(QStringLiteral("--user"));
     options.path = a->positional.first();
     options.limits.maxFolderBytes = 0; // a file the operator named: never prune its folder
+    options.allowCleartext = a->flags.contains(QStringLiteral("--allow-cleartext"));
+    if (a->options.contains(QStringLiteral("--server-pin"))) {
+        const auto pin = tls::pinFromArgument(QStringLiteral("--server-pin"), a->options.value(QStringLiteral("--server-pin")));
+        if (pin.index() == 1)
+            return (err << "sortie-log: " << std::get<1>(pin) << "\n", Usage);
+        options.serverPin = std::get<0>(pin);
+    }
+    // Certificates trusted on first use are remembered here, as ssh keeps known hosts.
+    QSettings trust;
+    options.settings = &trust;
     bool ok = true;
     options.seconds = a->options.value(QStringLiteral("--seconds"), QStringLiteral("0")).toInt(&ok);
     if (!ok || options.seconds < 0)
@@ -294,6 +311,7 @@ int record(QCoreApplication &app, const QStringList &in, QTextStream &out, QText
 int main(int argc, char **argv)
 {
     QCoreApplication app(argc, argv);
+    QCoreApplication::setOrganizationName(QStringLiteral("Sortie"));
     QCoreApplication::setApplicationName(QStringLiteral("sortie-log"));
     QLoggingCategory::setFilterRules(QStringLiteral("sortie.*.info=false\nsortie.*.debug=false"));
     QTextStream out(stdout), err(stderr);

@@ -9,8 +9,6 @@
 #include <QCoreApplication>
 #include <QLoggingCategory>
 #include <QDir>
-#include <QFile>
-#include <QSslCertificate>
 #include <QStandardPaths>
 #include <QUrl>
 #include <QUrlQuery>
@@ -157,18 +155,10 @@ std::variant<LaunchOptions, QString> LaunchOptions::parse(const QStringList &arg
     if (parser.isSet(serverPin)) {
         if (!options.server || !options.server->tls)
             return QStringLiteral("--server-pin needs --server tls://host:port");
-        const QString value = parser.value(serverPin);
-        auto pin = tls::normalizedFingerprint(value);
-        if (!pin && QFile::exists(value)) {
-            QFile file(value);
-            const auto certificates = file.open(QIODevice::ReadOnly) ? QSslCertificate::fromData(file.readAll(), QSsl::Pem) : QList<QSslCertificate>{};
-            if (certificates.isEmpty())
-                return QStringLiteral("--server-pin: %1 holds no PEM certificate").arg(value);
-            pin = tls::sha256Fingerprint(certificates.first());
-        }
-        if (!pin)
-            return QStringLiteral("--server-pin: '%1' is neither a SHA-256 fingerprint (64 hex digits) nor a certificate file").arg(value);
-        options.serverPin = *pin;
+        const auto pin = tls::pinFromArgument(QStringLiteral("--server-pin"), parser.value(serverPin));
+        if (pin.index() == 1)
+            return std::get<1>(pin);
+        options.serverPin = std::get<0>(pin);
     }
     options.user = parser.value(user);
     options.autosaveDir = parser.value(autosave);

@@ -1,6 +1,8 @@
 #include "CertificateFingerprint.h"
 
+#include <QCoreApplication>
 #include <QCryptographicHash>
+#include <QFile>
 
 namespace sortie::tls {
 namespace {
@@ -33,6 +35,23 @@ std::optional<QString> normalizedFingerprint(const QString &text)
         if (!c.isDigit() && !(c.toLower() >= QLatin1Char('a') && c.toLower() <= QLatin1Char('f')))
             return std::nullopt;
     return colonHex(QByteArray::fromHex(hex.toLatin1()));
+}
+
+std::variant<QString, QString> pinFromArgument(const QString &option, const QString &value)
+{
+    using Outcome = std::variant<QString, QString>;
+    if (const auto pin = normalizedFingerprint(value))
+        return Outcome(std::in_place_index<0>, *pin);
+    if (QFile::exists(value)) {
+        QFile file(value);
+        const QList<QSslCertificate> certificates = file.open(QIODevice::ReadOnly) ? QSslCertificate::fromData(file.readAll(), QSsl::Pem)
+                                                                                   : QList<QSslCertificate>{};
+        if (certificates.isEmpty())
+            return Outcome(std::in_place_index<1>, QCoreApplication::translate("CertificateFingerprint", "%1: %2 holds no PEM certificate").arg(option, value));
+        return Outcome(std::in_place_index<0>, sha256Fingerprint(certificates.first()));
+    }
+    return Outcome(std::in_place_index<1>,
+                   QCoreApplication::translate("CertificateFingerprint", "%1: '%2' is neither a SHA-256 fingerprint (64 hex digits) nor a certificate file").arg(option, value));
 }
 
 } // namespace sortie::tls

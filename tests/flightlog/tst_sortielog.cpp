@@ -18,6 +18,8 @@
 #include "ReplayController.h"
 #include "ServerHistory.h"
 #include "SimWorld.h"
+#include "TestCertificates.h"
+#include "TlsServerIdentity.h"
 #include "VehicleFleet.h"
 
 #include <QDateTime>
@@ -27,6 +29,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QProcessEnvironment>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -66,13 +69,19 @@ struct Run
     QByteArray out, err;
 };
 
-// A short sortie-log command (no simulator needed while it runs).
-Run sortieLog(const QStringList &arguments)
+// A sortie-log command that ends by itself. `configHome`: where it keeps its settings (the
+// certificates it remembers), a test's own folder rather than the user's.
+Run sortieLog(const QStringList &arguments, const QString &configHome = {})
 {
     QProcess p;
+    if (!configHome.isEmpty()) {
+        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+        env.insert(QStringLiteral("XDG_CONFIG_HOME"), configHome);
+        p.setProcessEnvironment(env);
+    }
     p.start(QStringLiteral(SORTIE_LOG_PROGRAM), arguments);
     Run r;
-    if (!p.waitForFinished(30000))
+    if (!p.waitForFinished(60000))
         return r;
     r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
     r.out = p.readAllStandardOutput();
@@ -133,6 +142,71 @@ class TestSortieLog : public QObject
     Q_OBJECT
 
 private slots:
+    // Over TLS with the server's certificate pinned: logged in, recorded, closed. A pin the server
+    // does not match is refused with both fingerprints, and nothing is recorded. A plain connection
+    // to a server that is not this computer is refused before anything is sent, unless the command
+    // line allows it.
+    void recordsOverTlsAndRefusesCleartext()
+    {
+        QTemporaryDir dir;
+        test::TestCertificates maker(dir.path());
+        const auto a = maker.selfSigned(QStringLiteral("a"));
+        QVERIFY2(a, qPrintable(maker.error()));
+        const auto b = maker.selfSigned(QStringLiteral("b"));
+        QVERIFY2(b, qPrintable(maker.error()));
+        Sim sim;
+        sim.server.close();
+        QString error;
+        sim.server.setTls(tls::loadServerIdentity(a->certificate, a->key, &error));
+        QVERIFY2(sim.server.listen(QHostAddress::LocalHost, 0), qPrintable(sim.server.errorString()));
+        const QString secure = QStringLiteral("tls://") + sim.address();
+        const QStringList login{QStringLiteral("record"), QStringLiteral("--server"), secure, QStringLiteral("--user"), QStringLiteral("admin"),
+                                QStringLiteral("--seconds"), QStringLiteral("2")};
+        qputenv("SORTIE_PASSWORD", "admin");
+
+        // The process runs while this thread serves the simulator: wait with the event loop turning.
+        auto recordWith = [&](const QStringList &extra, const QString &log) {
+            QProcess p;
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.insert(QStringLiteral("XDG_CONFIG_HOME"), dir.filePath(QStringLiteral("config")));
+            p.setProcessEnvironment(env);
+            p.start(QStringLiteral(SORTIE_LOG_PROGRAM), login + extra + QStringList{log});
+            Run r;
+            if (!QTest::qWaitFor([&] { return p.state() == QProcess::NotRunning; }, 60000))
+                return r;
+            r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+            r.out = p.readAllStandardOutput();
+            r.err = p.readAllStandardError();
+            return r;
+        };
+        const Run pinned = recordWith({QStringLiteral("--server-pin"), a->certificate}, dir.filePath(QStringLiteral("tls.sortielog")));
+        QVERIFY2(pinned.exitCode == 0, pinned.err.constData());
+        QVERIFY2(pinned.out.contains("the certificate pinned for") && pinned.out.contains(a->fingerprint.toLatin1()), pinned.out.constData());
+        QVERIFY2(pinned.out.contains("logged in to"), pinned.out.constData());
+        QString openError;
+        const auto log = FlightLog::open(dir.filePath(QStringLiteral("tls.sortielog")), &openError);
+        QVERIFY2(log, qPrintable(openError));
+        QCOMPARE(int(log->vehicles().size()), 3);
+
+        const Run wrong = recordWith({QStringLiteral("--server-pin"), b->fingerprint}, dir.filePath(QStringLiteral("wrong.sortielog")));
+        QCOMPARE(wrong.exitCode, 1);
+        QVERIFY2(wrong.err.contains(a->fingerprint.toLatin1()) && wrong.err.contains(b->fingerprint.toLatin1()), wrong.err.constData());
+        QVERIFY2(!wrong.out.contains("logged in"), wrong.out.constData());
+
+        // 192.0.2.1 (TEST-NET-1) is not this computer: refused before a connection is tried.
+        const Run clear = sortieLog({QStringLiteral("record"), QStringLiteral("--server"), QStringLiteral("192.0.2.1:3334"), QStringLiteral("--user"),
+                                     QStringLiteral("admin"), dir.filePath(QStringLiteral("clear.sortielog"))},
+                                    dir.filePath(QStringLiteral("config")));
+        QCOMPARE(clear.exitCode, 1);
+        QVERIFY2(clear.err.contains("the password would cross the network in clear") && clear.err.contains("--allow-cleartext"), clear.err.constData());
+        const Run badPin = sortieLog({QStringLiteral("record"), QStringLiteral("--server"), secure, QStringLiteral("--user"), QStringLiteral("admin"),
+                                      QStringLiteral("--server-pin"), QStringLiteral("12:34"), dir.filePath(QStringLiteral("bad.sortielog"))},
+                                     dir.filePath(QStringLiteral("config")));
+        QCOMPARE(badPin.exitCode, 2);
+        QVERIFY2(badPin.err.contains("--server-pin: '12:34' is neither a SHA-256 fingerprint"), badPin.err.constData());
+        qunsetenv("SORTIE_PASSWORD");
+    }
+
     void recordsFlightsSurvivesKillAndCompares()
     {
         Sim sim;

@@ -1,6 +1,7 @@
 #include "ServerRecording.h"
 
 #include "ConnectionController.h"
+#include "ServerAddress.h"
 #include "FleetRecording.h"
 #include "FlightRecorder.h"
 #include "HciClient.h"
@@ -34,7 +35,33 @@ bool ServerRecording::start(QString *error)
         return false;
     m_session = std::make_unique<hci::HciSession>();
     m_client = std::make_unique<hci::HciClient>(m_session.get());
-    m_connection = std::make_unique<client::ConnectionController>(m_session.get());
+    m_connection = std::make_unique<client::ConnectionController>(m_session.get(), m_options.settings);
+    if (!m_options.serverPin.isEmpty()) {
+        const auto target = client::ServerAddress::parse(m_options.server);
+        const auto *address = std::get_if<client::ServerAddress>(&target);
+        if (!address || !address->tls || !m_connection->certificates().pin(address->peer(), m_options.serverPin)) {
+            if (error)
+                *error = tr("a pinned certificate needs a tls://host:port server and a SHA-256 fingerprint");
+            m_recorder->stop();
+            return false;
+        }
+    }
+    // No one is at a prompt: the command line has answered whether the password may go in clear.
+    connect(m_connection.get(), &client::ConnectionController::cleartextQuestionChanged, this, [this] {
+        if (!m_connection->isAskingCleartext())
+            return;
+        if (m_options.allowCleartext) {
+            m_connection->answerCleartext(true);
+            return;
+        }
+        const QString server = m_options.server;
+        fail(tr("%1 is not this computer and the connection is not secured: the password would cross the network in clear. "
+                "Record over TLS (--server tls://%1), or pass --allow-cleartext to send it in clear.").arg(server));
+    });
+    connect(m_connection.get(), &client::ConnectionController::certificateNoteChanged, this, [this] {
+        if (!m_connection->certificateNote().isEmpty())
+            emit message(m_connection->certificateNote());
+    });
     m_fleet = std::make_unique<client::VehicleFleet>(m_client.get());
     m_recording = std::make_unique<FleetRecording>(m_fleet.get(), m_recorder.get(), m_session.get());
     connect(m_connection.get(), &client::ConnectionController::ready, this, [this] {

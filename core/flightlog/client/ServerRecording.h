@@ -7,6 +7,8 @@
 
 #include <memory>
 
+class QSettings;
+
 namespace sortie::hci {
 class HciClient;
 class HciSession;
@@ -31,12 +33,19 @@ class ServerRecording : public QObject
 public:
     struct Options
     {
-        QString server;   // host:port
+        QString server;   // host:port, or tls://host:port
         QString user;
         QString password;
         QString path;
         int seconds = 0;
         RecordingLimits limits;
+        // Over TLS: the SHA-256 fingerprint the server's certificate must have (else the system's
+        // trust store, then the certificate remembered in `settings` on first use).
+        QString serverPin;
+        // Not over TLS, to a server that is not this computer: the password goes in clear only
+        // when the operator said so on the command line; without it the recording is refused.
+        bool allowCleartext = false;
+        QSettings *settings = nullptr;  // the remembered certificates (not owned); null: none
     };
 
     explicit ServerRecording(Options options, QObject *parent = nullptr);
