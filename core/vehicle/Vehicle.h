@@ -105,6 +105,9 @@ public:
     int staleAfter() const { return m_staleAfter; }
     void setStaleAfter(int ms);
     quint64 telemetryNotifications() const { return m_notifications; }
+    // Whether gathered changes are waiting for their telemetryChanged (the interval's timer runs);
+    // when not, nothing goes out until the next ingest.
+    bool notificationPending() const { return m_notifyTimer.isActive(); }
 
     // The mission the vehicle holds, as last uploaded to it or read back from it; empty when unknown.
     // The fly view draws it under the vehicle; whoever uploads or downloads a mission sets it.

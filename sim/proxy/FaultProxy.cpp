@@ -83,6 +83,14 @@ void FaultProxy::pump(Pair *p)
     send(p->client, std::exchange(p->heldForClient, {}), &m_toClients);
 }
 
+qint64 FaultProxy::bytesHeld() const
+{
+    qint64 held = 0;
+    for (const auto &pair : m_pairs)
+        held += pair->heldForServer.size() + pair->heldForClient.size();
+    return held;
+}
+
 void FaultProxy::setForwarding(bool on)
 {
     m_forwarding = on;

@@ -38,6 +38,8 @@ public:
     int connectionCount() const { return int(m_pairs.size()); }
     qint64 bytesToClients() const { return m_toClients; }
     qint64 bytesToServer() const { return m_toServer; }
+    // Bytes read from either side and not yet passed on (held while silent).
+    qint64 bytesHeld() const;
 
 signals:
     void connectionCountChanged(int count);

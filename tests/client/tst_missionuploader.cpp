@@ -94,6 +94,15 @@ class TestMissionUploader : public QObject
         return m_op->hciVehicle(name);
     }
     const sim::SimVehicle *simVehicle(vehicle::Vehicle *v) { return m_sim->world.vehicle(v->id().toInt()); }
+    // A request through the operator's one connection, answered: whatever the client sent before it
+    // has reached the simulated server, which handles requests as they arrive on the stream. So
+    // "nothing was sent" is proved by what arrived before this answer, not by a pause.
+    bool roundTrip()
+    {
+        hci::HciReply *reply = m_op->client.listObjects(hci::HciObjectType::Vehicle);  // deletes itself once finished
+        QSignalSpy done(reply, &hci::HciReply::finished);
+        return done.wait(10000);
+    }
     const vehicle::CommandLog::Entry &lastLogged() { return m_op->fleet.commandLog()->at(m_op->fleet.commandLog()->count() - 1); }
 
 private slots:
@@ -155,7 +164,7 @@ private slots:
         QCOMPARE(m_op->uploader.culprit(), 1);
         QVERIFY2(m_op->uploader.message().startsWith(QStringLiteral("Not uploaded: Waypoint 2: ")), qPrintable(m_op->uploader.message()));
         QCOMPARE(m_states, (QList<State>{State::Validating, State::Failed}));
-        QTest::qWait(100); // nothing is on its way to the vehicle either
+        QVERIFY(roundTrip()); // nothing is on its way to the vehicle either
         QVERIFY(simVehicle(v)->model().mission().empty());
         QVERIFY(v->mission().empty());
         QCOMPARE(lastLogged().status, vehicle::CommandLog::Status::Failed);
@@ -173,7 +182,7 @@ private slots:
         QVERIFY2(question.contains(QLatin1String("Waypoint 3: altitude")), qPrintable(question));
         QVERIFY2(question.endsWith(QLatin1String("Upload to EMU-101?")), qPrintable(question));
         QVERIFY(m_op->uploader.hasUnsavedEdits());
-        QTest::qWait(100);
+        QVERIFY(roundTrip());
         QVERIFY(simVehicle(v)->model().mission().empty()); // nothing goes before the answer
         QSignalSpy finished(&m_op->uploader, &MissionUploader::finished);
         m_op->uploader.confirm();

@@ -80,6 +80,7 @@ private slots:
         test::SimServer sim;
         HciSession session;
         QSignalSpy errors(&session, &HciSession::errorOccurred);
+        QSignalSpy reconnects(&session, &HciSession::reconnectScheduled);
         session.open(QStringLiteral("127.0.0.1"), sim.port(), QStringLiteral("admin"), QStringLiteral("wrong-pass"));
         QVERIFY(errors.wait());
         QCOMPARE(session.state(), HciSession::State::Disconnected);
@@ -88,8 +89,11 @@ private slots:
         QVERIFY2(error.message().contains(QLatin1String("'admin'")), qPrintable(error.message()));
         QVERIFY(error.message().contains(QLatin1String("Invalid login or password")));
         QCOMPARE(session.lastError().kind(), HciError::Kind::Authentication);
-        QTest::qWait(100); // no reconnect follows a refused login
+        // No reconnect follows a refused login. A reconnect is decided when the connection's end
+        // is handled; the server seeing it closed proves that moment has passed.
+        QTRY_COMPARE(sim.server.connectionCount(), 0);
         QCOMPARE(session.state(), HciSession::State::Disconnected);
+        QCOMPARE(reconnects.count(), 0);
     }
 
     void closedPortIsRefused()
@@ -238,6 +242,7 @@ private slots:
     {
         test::SimServer sim;
         HciSession session;
+        QSignalSpy reconnects(&session, &HciSession::reconnectScheduled);
         session.open(QStringLiteral("127.0.0.1"), sim.port(), QStringLiteral("admin"), QStringLiteral("admin"));
         QVERIFY(test::reaches(session, HciSession::State::Ready));
         const int clientId = session.clientId();
@@ -247,8 +252,11 @@ private slots:
         // The server ended that very session: the LogoutRequest named it.
         QVERIFY(!sim.server.sessions().find(clientId));
         QCOMPARE(session.clientId(), -1);
-        QTest::qWait(50);
-        QCOMPARE(session.state(), HciSession::State::Disconnected); // and nothing reconnects
+        // And nothing reconnects: the connection's end, which would decide it, is behind us once
+        // the server has seen it.
+        QTRY_COMPARE(sim.server.connectionCount(), 0);
+        QCOMPARE(session.state(), HciSession::State::Disconnected);
+        QCOMPARE(reconnects.count(), 0);
     }
 };
 

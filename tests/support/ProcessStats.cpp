@@ -6,6 +6,12 @@
 
 #include <unistd.h>
 
+#ifdef SORTIE_TEST_ASAN
+#include <sanitizer/allocator_interface.h>
+#else
+#include <malloc.h>
+#endif
+
 namespace sortie::test {
 
 namespace {
@@ -35,6 +41,16 @@ QByteArray readAll(const QString &path)
 }
 
 } // namespace
+
+qint64 heapBytesInUse()
+{
+#ifdef SORTIE_TEST_ASAN
+    return qint64(__sanitizer_get_current_allocated_bytes());
+#else
+    const struct mallinfo2 info = ::mallinfo2();
+    return qint64(info.uordblks + info.hblkhd);
+#endif
+}
 
 ProcessStats ProcessStats::of(qint64 pid)
 {

@@ -14,12 +14,18 @@ namespace sortie::test {
 
 // Under AddressSanitizer freed memory waits in a quarantine before it is reused, so resident memory
 // grows whatever the code does; LeakSanitizer checks for leaks at exit instead. Tests assert their
-// memory bounds only when this is true.
+// resident-memory bounds only when this is true, and their heap bounds (heapBytesInUse) always.
 #ifdef SORTIE_TEST_ASAN
 inline constexpr bool kResidentMemoryIsMeaningful = false;
 #else
 inline constexpr bool kResidentMemoryIsMeaningful = true;
 #endif
+
+// The bytes this process's heap holds for it now: what the program has allocated and not freed.
+// Under AddressSanitizer its allocator's own count (freed blocks in the quarantine are not counted),
+// else glibc's (mallinfo2: in-use arena bytes plus mmapped blocks). Unlike resident memory this is
+// meaningful in both builds, so memory bounds hold under the sanitizers too.
+qint64 heapBytesInUse();
 
 // What the kernel says about a process (Linux /proc and getrusage): memory, descriptors, CPU time.
 struct ProcessStats
