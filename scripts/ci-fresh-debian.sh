@@ -37,7 +37,7 @@ bind "$git_common" "$git_common"
 [ -n "${SORTIE_SHARED_DIR:-}" ] && bind "$SORTIE_SHARED_DIR" /ci/shared
 
 chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/sbin:/usr/bin:/sbin:/bin LANG=C.UTF-8 \
-  CI=true SORTIE_FUZZ_SECONDS="${SORTIE_FUZZ_SECONDS:-30}" bash -euo pipefail -c "
+  CI=true SORTIE_FUZZ_BUDGET="${SORTIE_FUZZ_BUDGET:-240}" bash -euo pipefail -c "
     export DEBIAN_FRONTEND=noninteractive
     apt-get update -qq
     apt-get install -y -qq --no-install-recommends git ca-certificates >/dev/null

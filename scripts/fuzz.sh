@@ -1,16 +1,28 @@
 #!/usr/bin/env bash
 # Builds every libFuzzer target (tests/fuzz/fuzz_*.cpp) with clang under ASan and UBSan and runs each
 # for a bounded time on its seed corpus, as many at a time as there are cores.
-# Usage: scripts/fuzz.sh [seconds per target, default 30]   (SORTIE_FUZZ_JOBS: how many at a time)
+# Usage: scripts/fuzz.sh [seconds per target, default 30]    (SORTIE_FUZZ_JOBS: how many at a time)
+#        scripts/fuzz.sh --budget SECONDS   the whole run's fuzzing time, shared out evenly over the
+#                                           targets (at least 10 s each): what CI gives, so the run
+#                                           stays as long as the number of targets grows
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
-seconds="${1:-30}"
 source scripts/sanitized-build.sh
 require_symbolizer
 build="$sanitized_build"
 configure_sanitized_build
 targets=$(find tests/fuzz -maxdepth 1 -name 'fuzz_*.cpp' -printf '%f\n' | sed 's/\.cpp$//' | sort)
+jobs_max="${SORTIE_FUZZ_JOBS:-$(nproc)}"
+count=$(echo $targets | wc -w)
+if [ "${1:-}" = "--budget" ]; then
+  budget="${2:?--budget needs a number of seconds}"
+  seconds=$(( budget * jobs_max / count ))
+  [ "$seconds" -lt 10 ] && seconds=10
+  echo "fuzz.sh: a budget of ${budget}s for $count targets, $jobs_max at a time: ${seconds}s each"
+else
+  seconds="${1:-30}"
+fi
 start=$SECONDS
 cmake --build "$build" --target $targets
 echo "fuzz.sh: build done in $((SECONDS - start))s"
@@ -32,7 +44,6 @@ run_target() {
 
 # Each fuzzer is one process on one core: as many at a time as there are cores (SORTIE_FUZZ_JOBS),
 # each still for the whole time given, so a run of N targets takes N / cores times that.
-jobs_max="${SORTIE_FUZZ_JOBS:-$(nproc)}"
 start=$SECONDS
 for t in $targets; do
   while [ "$(jobs -rp | wc -l)" -ge "$jobs_max" ]; do wait -n || true; done
@@ -49,5 +60,5 @@ for t in $targets; do
     tail -40 "$results/$t.out"
   fi
 done
-echo "fuzz.sh: $(echo $targets | wc -w) targets, $jobs_max at a time, done in $((SECONDS - start))s"
+echo "fuzz.sh: $count targets, ${seconds}s each, $jobs_max at a time, done in $((SECONDS - start))s"
 [ "$failed" = 0 ] && echo "fuzz: all targets clean" || { echo "fuzz: a target failed"; exit 1; }

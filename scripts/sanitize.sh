@@ -11,7 +11,7 @@ start=$SECONDS
 cmake --build "$sanitized_build"
 echo "sanitize.sh: build done in $((SECONDS - start))s"
 start=$SECONDS
-trap 'echo "sanitize.sh: tests done in $((SECONDS - start))s"' EXIT
+trap 'echo "sanitize.sh: tests done in $((SECONDS - start))s"; bash scripts/slowest-tests.sh "$sanitized_build" 15' EXIT
 export QT_QPA_PLATFORM=offscreen
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:detect_stack_use_after_return=0:symbolize=1:external_symbolizer_path=$ASAN_SYMBOLIZER_PATH"
 export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"

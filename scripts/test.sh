@@ -9,6 +9,6 @@ start=$SECONDS
 cmake --build "$build"
 echo "test.sh: build done in $((SECONDS - start))s"
 start=$SECONDS
-trap 'echo "test.sh: tests done in $((SECONDS - start))s"' EXIT
+trap 'echo "test.sh: tests done in $((SECONDS - start))s"; bash scripts/slowest-tests.sh "$build" 10' EXIT
 export QT_QPA_PLATFORM=offscreen
 ctest --test-dir "$build" --output-on-failure -j 2 -LE bench "$@"

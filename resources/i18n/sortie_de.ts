@@ -538,6 +538,17 @@
     </message>
 </context>
 <context>
+    <name>CertificateFingerprint</name>
+    <message>
+        <source>%1: %2 holds no PEM certificate</source>
+        <translation>%1: %2 enthält kein PEM-Zertifikat</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is neither a SHA-256 fingerprint (64 hex digits) nor a certificate file</source>
+        <translation>%1: „%2“ ist weder ein SHA-256-Fingerabdruck (64 Hexadezimalziffern) noch eine Zertifikatsdatei</translation>
+    </message>
+</context>
+<context>
     <name>CommandBar</name>
     <message>
         <source>Are you sure?</source>
@@ -3365,10 +3376,6 @@ Ereignisse: %1
         </translation>
     </message>
     <message>
-        <source>%1: altitude %2 is above the route&apos;s maximum of %3 m.</source>
-        <translation>%1: Höhe %2 liegt über der Maximalhöhe der Route von %3 m.</translation>
-    </message>
-    <message>
         <source>%1: altitude %2 is below the route&apos;s safe altitude of %3 m.</source>
         <translation>%1: Höhe %2 liegt unter der Sicherheitshöhe der Route von %3 m.</translation>
     </message>
@@ -3395,6 +3402,10 @@ Ereignisse: %1
     <message>
         <source>The route</source>
         <translation>Die Route</translation>
+    </message>
+    <message>
+        <source>%1: %2 m above the take-off point (altitude %3); the route&apos;s limit is %4 m above it.</source>
+        <translation>%1: %2 m über dem Startpunkt (Höhe %3); die Grenze der Route liegt %4 m darüber.</translation>
     </message>
 </context>
 <context>
@@ -4122,6 +4133,10 @@ Ereignisse: %1
     <message>
         <source>%1: the altitude is above the ground, but there is no terrain data there (tried: %2), so the height above sea level is unknown.</source>
         <translation>%1: Die Höhe bezieht sich auf den Boden, aber dort gibt es keine Geländedaten (versucht: %2), daher ist die Höhe über dem Meeresspiegel unbekannt.</translation>
+    </message>
+    <message>
+        <source>%1 flies up to %2 m above the ground at %3 m along it; the open category allows %4 m above the surface.</source>
+        <translation>%1 fliegt %3 m nach ihrem Beginn bis zu %2 m über dem Boden; die offene Kategorie erlaubt %4 m über der Oberfläche.</translation>
     </message>
 </context>
 <context>
@@ -6421,6 +6436,14 @@ Ereignisse: %1
     <message>
         <source>log closed: %1</source>
         <translation>Protokoll geschlossen: %1</translation>
+    </message>
+    <message>
+        <source>a pinned certificate needs a tls://host:port server and a SHA-256 fingerprint</source>
+        <translation>ein festgelegtes Zertifikat braucht einen Server tls://host:port und einen SHA-256-Fingerabdruck</translation>
+    </message>
+    <message>
+        <source>%1 is not this computer and the connection is not secured: the password would cross the network in clear. Record over TLS (--server tls://%1), or pass --allow-cleartext to send it in clear.</source>
+        <translation>%1 ist nicht dieser Computer und die Verbindung ist nicht gesichert: Das Passwort ginge im Klartext über das Netz. Zeichnen Sie über TLS auf (--server tls://%1) oder geben Sie --allow-cleartext an, um es im Klartext zu senden.</translation>
     </message>
 </context>
 <context>

@@ -538,6 +538,17 @@
     </message>
 </context>
 <context>
+    <name>CertificateFingerprint</name>
+    <message>
+        <source>%1: %2 holds no PEM certificate</source>
+        <translation>%1: %2 no contiene ningún certificado PEM</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is neither a SHA-256 fingerprint (64 hex digits) nor a certificate file</source>
+        <translation>%1: «%2» no es una huella SHA-256 (64 dígitos hexadecimales) ni un archivo de certificado</translation>
+    </message>
+</context>
+<context>
     <name>CommandBar</name>
     <message>
         <source>Are you sure?</source>
@@ -3365,10 +3376,6 @@ eventos:   %1
         </translation>
     </message>
     <message>
-        <source>%1: altitude %2 is above the route&apos;s maximum of %3 m.</source>
-        <translation>%1: la altitud %2 supera el máximo de la ruta de %3 m.</translation>
-    </message>
-    <message>
         <source>%1: altitude %2 is below the route&apos;s safe altitude of %3 m.</source>
         <translation>%1: la altitud %2 está por debajo de la altitud de seguridad de la ruta de %3 m.</translation>
     </message>
@@ -3395,6 +3402,10 @@ eventos:   %1
     <message>
         <source>The route</source>
         <translation>La ruta</translation>
+    </message>
+    <message>
+        <source>%1: %2 m above the take-off point (altitude %3); the route&apos;s limit is %4 m above it.</source>
+        <translation>%1: %2 m sobre el punto de despegue (altitud %3); el límite de la ruta es %4 m sobre él.</translation>
     </message>
 </context>
 <context>
@@ -4122,6 +4133,10 @@ eventos:   %1
     <message>
         <source>%1: the altitude is above the ground, but there is no terrain data there (tried: %2), so the height above sea level is unknown.</source>
         <translation>%1: la altitud es sobre el suelo, pero allí no hay datos del terreno (probado: %2), así que la altura sobre el nivel del mar es desconocida.</translation>
+    </message>
+    <message>
+        <source>%1 flies up to %2 m above the ground at %3 m along it; the open category allows %4 m above the surface.</source>
+        <translation>%1 vuela hasta %2 m sobre el suelo a %3 m de su inicio; la categoría abierta permite %4 m sobre la superficie.</translation>
     </message>
 </context>
 <context>
@@ -6421,6 +6436,14 @@ eventos:   %1
     <message>
         <source>log closed: %1</source>
         <translation>registro cerrado: %1</translation>
+    </message>
+    <message>
+        <source>a pinned certificate needs a tls://host:port server and a SHA-256 fingerprint</source>
+        <translation>un certificado fijado necesita un servidor tls://host:puerto y una huella SHA-256</translation>
+    </message>
+    <message>
+        <source>%1 is not this computer and the connection is not secured: the password would cross the network in clear. Record over TLS (--server tls://%1), or pass --allow-cleartext to send it in clear.</source>
+        <translation>%1 no es este ordenador y la conexión no está protegida: la contraseña cruzaría la red en claro. Grabe por TLS (--server tls://%1) o indique --allow-cleartext para enviarla en claro.</translation>
     </message>
 </context>
 <context>

@@ -538,6 +538,17 @@
     </message>
 </context>
 <context>
+    <name>CertificateFingerprint</name>
+    <message>
+        <source>%1: %2 holds no PEM certificate</source>
+        <translation>%1: %2 не містить сертифіката PEM</translation>
+    </message>
+    <message>
+        <source>%1: &apos;%2&apos; is neither a SHA-256 fingerprint (64 hex digits) nor a certificate file</source>
+        <translation>%1: «%2» не є ні відбитком SHA-256 (64 шістнадцяткові цифри), ні файлом сертифіката</translation>
+    </message>
+</context>
+<context>
     <name>CommandBar</name>
     <message>
         <source>Are you sure?</source>
@@ -3375,10 +3386,6 @@ events:   %1
         </translation>
     </message>
     <message>
-        <source>%1: altitude %2 is above the route&apos;s maximum of %3 m.</source>
-        <translation>%1: висота %2 вища за максимальну висоту маршруту %3 m.</translation>
-    </message>
-    <message>
         <source>%1: altitude %2 is below the route&apos;s safe altitude of %3 m.</source>
         <translation>%1: висота %2 нижча за безпечну висоту маршруту %3 m.</translation>
     </message>
@@ -3405,6 +3412,10 @@ events:   %1
     <message>
         <source>The route</source>
         <translation>Маршрут</translation>
+    </message>
+    <message>
+        <source>%1: %2 m above the take-off point (altitude %3); the route&apos;s limit is %4 m above it.</source>
+        <translation>%1: %2 m над точкою зльоту (висота %3); межа маршруту — %4 m над нею.</translation>
     </message>
 </context>
 <context>
@@ -4133,6 +4144,10 @@ events:   %1
     <message>
         <source>%1: the altitude is above the ground, but there is no terrain data there (tried: %2), so the height above sea level is unknown.</source>
         <translation>%1: висоту задано над землею, але там немає даних рельєфу (спробувано: %2), тож висота над рівнем моря невідома.</translation>
+    </message>
+    <message>
+        <source>%1 flies up to %2 m above the ground at %3 m along it; the open category allows %4 m above the surface.</source>
+        <translation>%1 летить до %2 m над землею на %3 m від її початку; відкрита категорія дозволяє %4 m над поверхнею.</translation>
     </message>
 </context>
 <context>
@@ -6453,6 +6468,14 @@ events:   %1
     <message>
         <source>log closed: %1</source>
         <translation>журнал закрито: %1</translation>
+    </message>
+    <message>
+        <source>a pinned certificate needs a tls://host:port server and a SHA-256 fingerprint</source>
+        <translation>закріпленому сертифікату потрібні сервер tls://host:port і відбиток SHA-256</translation>
+    </message>
+    <message>
+        <source>%1 is not this computer and the connection is not secured: the password would cross the network in clear. Record over TLS (--server tls://%1), or pass --allow-cleartext to send it in clear.</source>
+        <translation>%1 — не цей комп’ютер, і з’єднання не захищене: пароль пройшов би мережею відкритим текстом. Записуйте через TLS (--server tls://%1) або вкажіть --allow-cleartext, щоб надіслати його відкритим текстом.</translation>
     </message>
 </context>
 <context>

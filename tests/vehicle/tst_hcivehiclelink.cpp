@@ -21,6 +21,8 @@
 #include <QSignalSpy>
 #include <QtTest>
 
+#include <cmath>
+
 using namespace sortie;
 using namespace sortie::vehicle;
 namespace pb = com::ugcs::ucs::proto;
@@ -132,6 +134,13 @@ void TstHciVehicleLink::mapping()
     untimed.clear_time();
     untimed.mutable_value()->set_intvalue(9);
     add(untimed);
+    // NaN and infinity are no readings (fuzz_hci_telemetry's rule): skipped like an empty value.
+    auto notANumber = telemetry("longitude", pb::S_LONGITUDE);
+    notANumber.mutable_value()->set_doublevalue(std::nan(""));
+    add(notANumber);
+    auto infinite = telemetry("heading", pb::S_HEADING);
+    infinite.mutable_value()->set_doublevalue(HUGE_VAL);
+    add(infinite);
     const TelemetryBatch b = hciTelemetry(e, 777);
     QCOMPARE(b.size(), size_t(5));
     QVERIFY(b[0].field == TelemetryField::Latitude && std::abs(b[0].value - 0.99 / kRad) < 1e-12 && b[0].time == 5000); // radians become degrees

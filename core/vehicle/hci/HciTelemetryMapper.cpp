@@ -2,6 +2,7 @@
 
 #include "Domain.pb.h"
 
+#include <cmath>
 #include <optional>
 
 namespace sortie::vehicle {
@@ -73,6 +74,8 @@ void appendHciTelemetry(const pb::Telemetry &t, int64_t now, TelemetryBatch &out
         *value /= 100.0;
     else if (isAngle(*field))
         *value = degreesFromRadians(*value);
+    if (!std::isfinite(*value))
+        return; // NaN or infinity on the wire (or once converted) is no reading (fuzz_hci_telemetry)
     out.push_back({*field, *value, time});
 }
 

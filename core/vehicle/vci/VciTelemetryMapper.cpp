@@ -3,6 +3,10 @@
 #include "VciProfile.h"
 
 #include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <optional>
 #include <utility>
 
 namespace sortie::vehicle {
@@ -27,17 +31,38 @@ const std::array<Mapping, 6> kObjects = {{
     {profile::kHome, {{{"latitude", F::HomeLatitude}, {"longitude", F::HomeLongitude}, {"altitudeAmsl", F::HomeAltitudeAmsl}, {"", F::Count_}}}, 3},
 }};
 
+// A body's "time" (ms since the epoch) when it is a number an int64 holds; `now` otherwise. A
+// floating-point time out of that range would be undefined behaviour to convert (fuzz_vci_telemetry).
+int64_t timeOf(const nlohmann::json &body, int64_t now)
+{
+    if (!body.is_object())
+        return now;
+    const auto t = body.find("time");
+    if (t == body.end())
+        return now;
+    if (t->is_number_integer())
+        return t->is_number_unsigned() && t->get<uint64_t>() > uint64_t(std::numeric_limits<int64_t>::max()) ? now : t->get<int64_t>();
+    if (t->is_number_float()) {
+        const double ms = t->get<double>();
+        return std::isfinite(ms) && std::abs(ms) < 9.0e18 ? int64_t(ms) : now;
+    }
+    return now;
+}
+
+// A value the vehicle sent, converted; none when it is not finite (a number JSON holds can still
+// overflow when converted to degrees).
+std::optional<double> valueOf(TelemetryField field, double value)
+{
+    const double converted = isAngle(field) ? degreesFromRadians(value) : value;
+    return std::isfinite(converted) ? std::optional<double>(converted) : std::nullopt;
+}
+
 } // namespace
 
 TelemetryBatch vciTelemetry(std::string_view uri, const nlohmann::json &body, int64_t now)
 {
     TelemetryBatch out;
-    int64_t time = now;
-    if (body.is_object()) {
-        const auto t = body.find("time");
-        if (t != body.end() && t->is_number())
-            time = t->get<int64_t>();
-    }
+    const int64_t time = timeOf(body, now);
     for (const Mapping &m : kObjects) {
         if (m.uri != uri)
             continue;
@@ -48,8 +73,8 @@ TelemetryBatch vciTelemetry(std::string_view uri, const nlohmann::json &body, in
             if (it == body.end() || !it->is_number())
                 continue;
             const TelemetryField field = m.fields[i].second;
-            const double value = it->get<double>();
-            out.push_back({field, isAngle(field) ? degreesFromRadians(value) : value, time});
+            if (const auto value = valueOf(field, it->get<double>()))
+                out.push_back({field, *value, time});
         }
         return out;
     }
