@@ -876,6 +876,50 @@
         <source>the file has no raster band</source>
         <translation>die Datei hat kein Rasterband</translation>
     </message>
+    <message>
+        <source>GeoTIFF (COG), SRTM .hgt, DTED, ESRI ASCII grid, ERDAS Imagine, ESRI .bil/.flt, USGS DEM, PNG, JPEG, JPEG 2000 and .vrt mosaics of them</source>
+        <translation>GeoTIFF (COG), SRTM .hgt, DTED, ESRI-ASCII-Raster, ERDAS Imagine, ESRI .bil/.flt, USGS DEM, PNG, JPEG, JPEG 2000 und .vrt-Mosaike daraus</translation>
+    </message>
+    <message>
+        <source>a GDAL VRT (driver VRT) under a name that is not .vrt: Sortie reads %1</source>
+        <translation>ein GDAL-VRT (Treiber VRT) unter einem Namen, der nicht auf .vrt endet: Sortie liest %1</translation>
+    </message>
+    <message>
+        <source>GDAL reads this file with its %1 driver, which Sortie does not use for the operator&apos;s rasters: it reads %2</source>
+        <translation>GDAL liest diese Datei mit seinem Treiber %1, den Sortie für die Raster des Bedieners nicht verwendet: es liest %2</translation>
+    </message>
+    <message>
+        <source>its overview file %1 is not a GeoTIFF (GDAL: %2)</source>
+        <translation>seine Übersichtsdatei %1 ist kein GeoTIFF (GDAL: %2)</translation>
+    </message>
+    <message>
+        <source>a raw band (VRTRawRasterBand) is not read</source>
+        <translation>ein Rohkanal (VRTRawRasterBand) wird nicht gelesen</translation>
+    </message>
+    <message>
+        <source>a pixel function&apos;s code is not run</source>
+        <translation>der Code einer Pixelfunktion wird nicht ausgeführt</translation>
+    </message>
+    <message>
+        <source>its source %1 is not a local file</source>
+        <translation>seine Quelle %1 ist keine lokale Datei</translation>
+    </message>
+    <message>
+        <source>VRTs nested more than %1 deep</source>
+        <translation>VRTs mehr als %1 Ebenen tief verschachtelt</translation>
+    </message>
+    <message>
+        <source>%1: a VRT of more than %2 MiB</source>
+        <translation>%1: ein VRT von mehr als %2 MiB</translation>
+    </message>
+    <message>
+        <source>the VRT is not XML</source>
+        <translation>das VRT ist kein XML</translation>
+    </message>
+    <message>
+        <source>network access is off: Sortie reads local files only (%1)</source>
+        <translation>Netzwerkzugriff ist aus: Sortie liest nur lokale Dateien (%1)</translation>
+    </message>
 </context>
 <context>
     <name>GdalDemSource</name>

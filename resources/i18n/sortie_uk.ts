@@ -877,6 +877,50 @@
         <source>the file has no raster band</source>
         <translation>файл не має растрового каналу</translation>
     </message>
+    <message>
+        <source>GeoTIFF (COG), SRTM .hgt, DTED, ESRI ASCII grid, ERDAS Imagine, ESRI .bil/.flt, USGS DEM, PNG, JPEG, JPEG 2000 and .vrt mosaics of them</source>
+        <translation>GeoTIFF (COG), SRTM .hgt, DTED, ESRI ASCII grid, ERDAS Imagine, ESRI .bil/.flt, USGS DEM, PNG, JPEG, JPEG 2000 та мозаїки .vrt з них</translation>
+    </message>
+    <message>
+        <source>a GDAL VRT (driver VRT) under a name that is not .vrt: Sortie reads %1</source>
+        <translation>GDAL VRT (драйвер VRT) під назвою, що не є .vrt: Sortie читає %1</translation>
+    </message>
+    <message>
+        <source>GDAL reads this file with its %1 driver, which Sortie does not use for the operator&apos;s rasters: it reads %2</source>
+        <translation>GDAL читає цей файл своїм драйвером %1, якого Sortie не використовує для растрів оператора: він читає %2</translation>
+    </message>
+    <message>
+        <source>its overview file %1 is not a GeoTIFF (GDAL: %2)</source>
+        <translation>його файл оглядів %1 не є GeoTIFF (GDAL: %2)</translation>
+    </message>
+    <message>
+        <source>a raw band (VRTRawRasterBand) is not read</source>
+        <translation>сирий канал (VRTRawRasterBand) не читається</translation>
+    </message>
+    <message>
+        <source>a pixel function&apos;s code is not run</source>
+        <translation>код піксельної функції не виконується</translation>
+    </message>
+    <message>
+        <source>its source %1 is not a local file</source>
+        <translation>його джерело %1 не є локальним файлом</translation>
+    </message>
+    <message>
+        <source>VRTs nested more than %1 deep</source>
+        <translation>VRT вкладені глибше ніж на %1 рівні</translation>
+    </message>
+    <message>
+        <source>%1: a VRT of more than %2 MiB</source>
+        <translation>%1: VRT понад %2 МіБ</translation>
+    </message>
+    <message>
+        <source>the VRT is not XML</source>
+        <translation>VRT не є XML</translation>
+    </message>
+    <message>
+        <source>network access is off: Sortie reads local files only (%1)</source>
+        <translation>доступ до мережі вимкнено: Sortie читає лише локальні файли (%1)</translation>
+    </message>
 </context>
 <context>
     <name>GdalDemSource</name>
