@@ -1875,6 +1875,10 @@
         <source>Reading the tiles of %1 failed: %2</source>
         <translation>Lesen der Kacheln von %1 fehlgeschlagen: %2</translation>
     </message>
+    <message>
+        <source>The MBTiles file %1 has more than %2 metadata rows.</source>
+        <translation>Die MBTiles-Datei %1 hat mehr als %2 Metadatenzeilen.</translation>
+    </message>
 </context>
 <context>
     <name>MbTilesMetadata</name>
@@ -2545,6 +2549,18 @@ Ereignisse: %1
 </source>
         <translation>BESCHÄDIGT:  %1
 </translation>
+    </message>
+    <message>
+        <source>%1: cannot be opened: no private copy to recover it in (%2)</source>
+        <translation>%1: kann nicht geöffnet werden: keine private Kopie zum Wiederherstellen (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is not a Sortie flight log (its %2 is a %3, not a table)</source>
+        <translation>%1 ist kein Sortie-Flugprotokoll (sein %2 ist ein %3, keine Tabelle)</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>abgebrochen: %1</translation>
     </message>
 </context>
 <context>
@@ -7294,6 +7310,21 @@ Ausgeschaltet: nicht geprüft</translation>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+<context>
+    <name>OutsideDatabase</name>
+    <message>
+        <source>more than %1 steps</source>
+        <translation>mehr als %1 Schritte</translation>
+    </message>
+    <message>
+        <source>more than %1 rows</source>
+        <translation>mehr als %1 Zeilen</translation>
+    </message>
+    <message>
+        <source>SQLite refused the settings a file from outside is read with</source>
+        <translation>SQLite hat die Einstellungen abgelehnt, mit denen eine Datei von außen gelesen wird</translation>
     </message>
 </context>
 </TS>

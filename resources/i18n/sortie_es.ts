@@ -1875,6 +1875,10 @@
         <source>Reading the tiles of %1 failed: %2</source>
         <translation>Falló la lectura de las teselas de %1: %2</translation>
     </message>
+    <message>
+        <source>The MBTiles file %1 has more than %2 metadata rows.</source>
+        <translation>El archivo MBTiles %1 tiene más de %2 filas de metadatos.</translation>
+    </message>
 </context>
 <context>
     <name>MbTilesMetadata</name>
@@ -2545,6 +2549,18 @@ eventos:   %1
 </source>
         <translation>DAÑADO:  %1
 </translation>
+    </message>
+    <message>
+        <source>%1: cannot be opened: no private copy to recover it in (%2)</source>
+        <translation>%1: no se puede abrir: no hay copia privada en la que recuperarlo (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is not a Sortie flight log (its %2 is a %3, not a table)</source>
+        <translation>%1 no es un registro de vuelo de Sortie (su %2 es un %3, no una tabla)</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>detenido: %1</translation>
     </message>
 </context>
 <context>
@@ -7294,6 +7310,21 @@ Desactivada: no comprobada</translation>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+<context>
+    <name>OutsideDatabase</name>
+    <message>
+        <source>more than %1 steps</source>
+        <translation>más de %1 pasos</translation>
+    </message>
+    <message>
+        <source>more than %1 rows</source>
+        <translation>más de %1 filas</translation>
+    </message>
+    <message>
+        <source>SQLite refused the settings a file from outside is read with</source>
+        <translation>SQLite rechazó los ajustes con los que se lee un archivo de fuera</translation>
     </message>
 </context>
 </TS>

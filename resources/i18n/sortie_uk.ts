@@ -1876,6 +1876,10 @@
         <source>Reading the tiles of %1 failed: %2</source>
         <translation>Не вдалося прочитати тайли %1: %2</translation>
     </message>
+    <message>
+        <source>The MBTiles file %1 has more than %2 metadata rows.</source>
+        <translation>Файл MBTiles %1 має понад %2 рядків метаданих.</translation>
+    </message>
 </context>
 <context>
     <name>MbTilesMetadata</name>
@@ -2553,6 +2557,18 @@ events:   %1
 </source>
         <translation>ПОШКОДЖЕНО:  %1
 </translation>
+    </message>
+    <message>
+        <source>%1: cannot be opened: no private copy to recover it in (%2)</source>
+        <translation>%1: не вдається відкрити: немає приватної копії для відновлення (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is not a Sortie flight log (its %2 is a %3, not a table)</source>
+        <translation>%1 не є журналом польоту Sortie (його %2 є %3, а не таблицею)</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>зупинено: %1</translation>
     </message>
 </context>
 <context>
@@ -7335,6 +7351,21 @@ Switched off: not checked</source>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+<context>
+    <name>OutsideDatabase</name>
+    <message>
+        <source>more than %1 steps</source>
+        <translation>понад %1 кроків</translation>
+    </message>
+    <message>
+        <source>more than %1 rows</source>
+        <translation>понад %1 рядків</translation>
+    </message>
+    <message>
+        <source>SQLite refused the settings a file from outside is read with</source>
+        <translation>SQLite відхилив налаштування, з якими читається файл ззовні</translation>
     </message>
 </context>
 </TS>
