@@ -7253,6 +7253,10 @@ Ereignisse: %1
         <source>Tile server unreachable (%1).</source>
         <translation>Kachelserver nicht erreichbar (%1).</translation>
     </message>
+    <message>
+        <source>Tile %1 is %2.</source>
+        <translation>Kachel %1 ist %2.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::ui::ZoneLayer</name>
@@ -7325,6 +7329,13 @@ Ausgeschaltet: nicht geprüft</translation>
     <message>
         <source>SQLite refused the settings a file from outside is read with</source>
         <translation>SQLite hat die Einstellungen abgelehnt, mit denen eine Datei von außen gelesen wird</translation>
+    </message>
+</context>
+<context>
+    <name>TileResponse</name>
+    <message>
+        <source>larger than %1 MiB: not read</source>
+        <translation>größer als %1 MiB: nicht gelesen</translation>
     </message>
 </context>
 </TS>

@@ -7253,6 +7253,10 @@ eventos:   %1
         <source>Tile server unreachable (%1).</source>
         <translation>Servidor de teselas no accesible (%1).</translation>
     </message>
+    <message>
+        <source>Tile %1 is %2.</source>
+        <translation>La tesela %1 es %2.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::ui::ZoneLayer</name>
@@ -7325,6 +7329,13 @@ Desactivada: no comprobada</translation>
     <message>
         <source>SQLite refused the settings a file from outside is read with</source>
         <translation>SQLite rechazó los ajustes con los que se lee un archivo de fuera</translation>
+    </message>
+</context>
+<context>
+    <name>TileResponse</name>
+    <message>
+        <source>larger than %1 MiB: not read</source>
+        <translation>mayor de %1 MiB: no se lee</translation>
     </message>
 </context>
 </TS>

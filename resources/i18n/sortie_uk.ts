@@ -7294,6 +7294,10 @@ events:   %1
         <source>Tile server unreachable (%1).</source>
         <translation>Сервер тайлів недоступний (%1).</translation>
     </message>
+    <message>
+        <source>Tile %1 is %2.</source>
+        <translation>Плитка %1: %2.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::ui::ZoneLayer</name>
@@ -7366,6 +7370,13 @@ Switched off: not checked</source>
     <message>
         <source>SQLite refused the settings a file from outside is read with</source>
         <translation>SQLite відхилив налаштування, з якими читається файл ззовні</translation>
+    </message>
+</context>
+<context>
+    <name>TileResponse</name>
+    <message>
+        <source>larger than %1 MiB: not read</source>
+        <translation>більше за %1 МіБ: не прочитано</translation>
     </message>
 </context>
 </TS>
