@@ -1,5 +1,6 @@
 #include "MbTilesFile.h"
 
+#include "OutsideDatabase.h"
 #include "PrivateFiles.h"
 
 #include <QCoreApplication>
@@ -27,6 +28,25 @@ const char *const kSchema[] = {
     "CREATE TABLE IF NOT EXISTS tiles (zoom_level INTEGER, tile_column INTEGER, tile_row INTEGER, tile_data BLOB)",
     "CREATE UNIQUE INDEX IF NOT EXISTS tile_index ON tiles (zoom_level, tile_column, tile_row)",
 };
+// A pack from anywhere: its tiles may be a view (the specification allows one over deduplicated
+// images), so views are read, and each statement is bounded (core/sqlite): a recursive view as
+// `tiles` is stopped, named, instead of running forever.
+sqlite::OutsideLimits outsideLimits()
+{
+    sqlite::OutsideLimits limits;
+    limits.views = true;
+    limits.maxRows = MbTilesFile::kMaxRows;
+    limits.maxSteps = MbTilesFile::kMaxSteps;
+    limits.maxValueBytes = MbTilesFile::kMaxTileBytes;
+    return limits;
+}
+
+// SQLite's reason, or the bound that stopped the statement.
+QString reasonOf(const QSqlQuery &query, const QString &connection)
+{
+    const QString bound = sqlite::statementStopped(QSqlDatabase::database(connection, false));
+    return bound.isEmpty() ? query.lastError().text() : QCoreApplication::translate("MbTilesFile", "stopped: %1").arg(bound);
+}
 } // namespace
 
 MbTilesFile::~MbTilesFile()
@@ -56,12 +76,11 @@ bool MbTilesFile::open(const QString &path, Mode mode, QString *error)
     const QString name = QStringLiteral("sortie-mbtiles-") + QUuid::createUuid().toString(QUuid::WithoutBraces);
     QString problem;
     {
-        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), name);
-        db.setDatabaseName(path);
-        if (mode == Mode::ReadOnly)
-            db.setConnectOptions(QStringLiteral("QSQLITE_OPEN_READONLY"));
-        if (!db.open()) {
-            problem = QCoreApplication::translate("MbTilesFile", "Cannot open the MBTiles file %1: %2").arg(path, db.lastError().text());
+        QString why;
+        QSqlDatabase db = sqlite::openOutside(path, name, mode == Mode::ReadOnly ? sqlite::Access::ReadOnly : sqlite::Access::ReadWrite,
+                                              outsideLimits(), &why);
+        if (!db.isOpen()) {
+            problem = QCoreApplication::translate("MbTilesFile", "Cannot open the MBTiles file %1: %2").arg(path, why);
         } else {
             QSqlQuery query(db);
             if (mode == Mode::ReadWrite) {
@@ -106,11 +125,20 @@ MbTilesMetadata MbTilesFile::metadata(QString *error) const
     QList<QPair<QString, QString>> pairs;
     QSqlQuery query(QSqlDatabase::database(m_connection, false));
     if (!query.exec(QStringLiteral("SELECT name, value FROM metadata"))) {
-        setError(error, QCoreApplication::translate("MbTilesFile", "The MBTiles file %1 has no readable metadata: %2").arg(m_path, query.lastError().text()));
+        setError(error, QCoreApplication::translate("MbTilesFile", "The MBTiles file %1 has no readable metadata: %2").arg(m_path, reasonOf(query, m_connection)));
         return {};
     }
-    while (query.next())
+    while (query.next()) {
+        if (pairs.size() == kMaxMetadataRows) {  // a few keys in a real pack; a view could yield any number
+            setError(error, QCoreApplication::translate("MbTilesFile", "The MBTiles file %1 has more than %2 metadata rows.").arg(m_path).arg(kMaxMetadataRows));
+            return {};
+        }
         pairs.append({query.value(0).toString(), query.value(1).toString()});
+    }
+    if (query.lastError().isValid()) {
+        setError(error, QCoreApplication::translate("MbTilesFile", "The MBTiles file %1 has no readable metadata: %2").arg(m_path, reasonOf(query, m_connection)));
+        return {};
+    }
     return MbTilesMetadata::fromPairs(pairs);
 }
 
@@ -147,7 +175,7 @@ std::optional<QByteArray> MbTilesFile::tile(const TileId &id, QString *error) co
     query.addBindValue(id.x);
     query.addBindValue(id.tmsRow());
     if (!query.exec()) {
-        setError(error, QCoreApplication::translate("MbTilesFile", "Reading tile %1 failed: %2").arg(id.toString(), query.lastError().text()));
+        setError(error, QCoreApplication::translate("MbTilesFile", "Reading tile %1 failed: %2").arg(id.toString(), reasonOf(query, m_connection)));
         return std::nullopt;
     }
     if (!query.next())
@@ -192,15 +220,19 @@ QSet<quint64> MbTilesFile::storedTiles(int minZoom, int maxZoom, QString *error)
     query.addBindValue(minZoom);
     query.addBindValue(maxZoom);
     if (!query.exec()) {
-        setError(error, QCoreApplication::translate("MbTilesFile", "Reading the tiles of %1 failed: %2").arg(m_path, query.lastError().text()));
+        setError(error, QCoreApplication::translate("MbTilesFile", "Reading the tiles of %1 failed: %2").arg(m_path, reasonOf(query, m_connection)));
         return stored;
     }
     while (query.next()) {
         const int z = query.value(0).toInt();
+        if (z < 0 || z > 30)
+            continue;
         const TileId id{z, query.value(1).toInt(), (1 << z) - 1 - query.value(2).toInt()};
         if (id.isValid())
             stored.insert(id.packed());
     }
+    if (query.lastError().isValid())
+        setError(error, QCoreApplication::translate("MbTilesFile", "Reading the tiles of %1 failed: %2").arg(m_path, reasonOf(query, m_connection)));
     return stored;
 }
 

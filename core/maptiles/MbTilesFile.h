@@ -21,6 +21,12 @@ class MbTilesFile
 public:
     enum class Mode { ReadOnly, ReadWrite }; // ReadWrite creates the file and its tables when missing
 
+    // Bounds on what a pack from anywhere makes one statement do (core/sqlite's openOutside).
+    static constexpr qint64 kMaxRows = 10'000'000;
+    static constexpr qint64 kMaxSteps = 100'000'000;  // ~2.5 s of CPU
+    static constexpr int kMaxTileBytes = 16 << 20;
+    static constexpr int kMaxMetadataRows = 1000;
+
     struct Tile
     {
         TileId id;
@@ -33,7 +39,8 @@ public:
     MbTilesFile &operator=(const MbTilesFile &) = delete;
 
     // False with an operator-readable reason naming the file when it is missing, not SQLite or
-    // has no tiles table.
+    // has no tiles table. Opened as a file from outside (core/sqlite): read-only never writes it,
+    // no triggers, and each statement stopped, named, past kMaxRows rows or kMaxSteps steps.
     bool open(const QString &path, Mode mode, QString *error);
     void close();
     bool isOpen() const { return !m_connection.isEmpty(); }

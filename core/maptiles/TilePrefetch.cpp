@@ -194,6 +194,7 @@ void TilePrefetch::request(const Pending &pending)
     request.setAttribute(QNetworkRequest::CacheLoadControlAttribute, QNetworkRequest::AlwaysNetwork);
     request.setAttribute(QNetworkRequest::CacheSaveControlAttribute, false);
     QNetworkReply *reply = m_network->get(request);
+    limitTileBody(reply);
     m_inFlight.insert(reply, pending);
     connect(reply, &QNetworkReply::finished, this, [this, reply] { replyFinished(reply); });
 }
@@ -212,7 +213,9 @@ void TilePrefetch::replyFinished(QNetworkReply *reply)
     }
     const TileId &tile = pending.tile;
     const QVariant status = reply->attribute(QNetworkRequest::HttpStatusCodeAttribute);
-    if (reply->error() == QNetworkReply::NoError) {
+    if (const QString tooLarge = tileBodyRefusal(reply); !tooLarge.isEmpty()) {
+        fail(tile, tooLarge);  // the same server would send the same: not retried
+    } else if (reply->error() == QNetworkReply::NoError) {
         const QByteArray bytes = reply->readAll();
         const TileFormat format = sniffTileFormat(bytes);
         if (format == TileFormat::Unknown) {

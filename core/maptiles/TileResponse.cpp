@@ -1,11 +1,42 @@
 #include "TileResponse.h"
 
+#include <QCoreApplication>
 #include <QLocale>
+#include <QNetworkReply>
 #include <QTimeZone>
 
 #include <algorithm>
 
 namespace sortie::maptiles {
+
+namespace {
+constexpr auto kTooLargeProperty = "sortieTileBodyTooLarge";
+}
+
+void limitTileBody(QNetworkReply *reply, qint64 limit)
+{
+    auto check = [reply, limit](qint64 received, qint64 total) {
+        if ((received > limit || total > limit) && !reply->property(kTooLargeProperty).isValid()) {
+            reply->setProperty(kTooLargeProperty, limit);
+            reply->abort();
+        }
+    };
+    QObject::connect(reply, &QNetworkReply::metaDataChanged, reply, [reply, check] {
+        bool ok = false;
+        const qint64 length = reply->header(QNetworkRequest::ContentLengthHeader).toLongLong(&ok);
+        if (ok)
+            check(0, length);
+    });
+    QObject::connect(reply, &QNetworkReply::downloadProgress, reply, check);
+}
+
+QString tileBodyRefusal(const QNetworkReply *reply)
+{
+    const QVariant limit = reply->property(kTooLargeProperty);
+    if (!limit.isValid())
+        return {};
+    return QCoreApplication::translate("TileResponse", "larger than %1 MiB: not read").arg(double(limit.toLongLong()) / (1 << 20));
+}
 
 TileFormat sniffTileFormat(const QByteArray &bytes)
 {

@@ -6,7 +6,19 @@
 
 #include <optional>
 
+class QNetworkReply;
+
 namespace sortie::maptiles {
+
+// The largest tile body taken from a server (a 512 px aerial JPEG is a few hundred KiB).
+inline constexpr qint64 kMaxTileBodyBytes = 4 << 20;
+
+// Watches a tile's reply as it downloads: once its Content-Length or the bytes received pass
+// `limit`, the reply is aborted (a server streaming zeros fills no memory) and marked, so that
+// tileBodyRefusal() says why when it finishes. Call right after the request is made.
+void limitTileBody(QNetworkReply *reply, qint64 limit = kMaxTileBodyBytes);
+// "larger than 4 MiB" for a reply limitTileBody aborted; empty otherwise.
+QString tileBodyRefusal(const QNetworkReply *reply);
 
 // What a tile server's bytes are: the raster formats MBTiles holds, told by their first bytes
 // (a server's error page or an HTML captive portal is never stored as a tile).

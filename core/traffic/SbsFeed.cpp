@@ -19,6 +19,7 @@ SbsFeed::SbsFeed(TrafficPicture *picture, QObject *parent)
     connect(&m_socket, &QTcpSocket::readyRead, this, &SbsFeed::onReadyRead);
     connect(&m_socket, &QTcpSocket::errorOccurred, this, [this] { onFailure(m_socket.errorString()); });
     connect(&m_socket, &QTcpSocket::disconnected, this, [this] { onFailure(tr("the receiver closed the connection")); });
+    m_socket.setReadBufferSize(kBufferBytes);
 }
 
 // The socket says goodbye as it is destroyed, after the members its handlers use: it is not heard.
@@ -93,7 +94,19 @@ void SbsFeed::onConnected()
 
 void SbsFeed::onReadyRead()
 {
-    const QByteArray bytes = m_socket.readAll();
+    if (!m_turnQueued)
+        readSome();
+}
+
+void SbsFeed::readSome()
+{
+    m_turnQueued = false;
+    const QByteArray bytes = m_socket.read(kBytesPerTurn);
+    if (m_socket.bytesAvailable() > 0) {
+        // More is waiting: the next turn takes it, after whatever else the event loop has (a frame).
+        m_turnQueued = true;
+        QMetaObject::invokeMethod(this, &SbsFeed::readSome, Qt::QueuedConnection);
+    }
     m_reader.push(std::string_view(bytes.constData(), size_t(bytes.size())));
     bool counted = false;
     while (auto result = m_reader.next()) {

@@ -32,6 +32,11 @@ public:
     static constexpr int kFirstRetryMs = 1000;
     static constexpr int kMaxRetryMs = 30000;
     static constexpr int kConnectTimeoutMs = 10000;
+    // Per turn of the event loop at most kBytesPerTurn are taken from the socket (about 700 lines:
+    // well under a frame of work); the rest waits in a socket buffer of kBufferBytes, and past that
+    // in the kernel's, so a flood slows the sender instead of filling memory or the GUI thread.
+    static constexpr qint64 kBytesPerTurn = 64 * 1024;
+    static constexpr qint64 kBufferBytes = 1024 * 1024;
 
     explicit SbsFeed(TrafficPicture *picture, QObject *parent = nullptr);
     ~SbsFeed() override;
@@ -60,6 +65,7 @@ private:
     void connectNow();
     void onConnected();
     void onReadyRead();
+    void readSome();
     void onFailure(const QString &why);
     void setState(State state);
 
@@ -77,6 +83,7 @@ private:
     int m_messages = 0;
     int m_dropped = 0;
     QString m_lastDropped;
+    bool m_turnQueued = false;
 };
 
 } // namespace sortie::traffic

@@ -18,6 +18,10 @@ Traffic::Traffic(QSettings *storage, hci::HciClient *client, const QString &addr
     const QString address = addressOverride.isEmpty() && storage ? storage->value(QLatin1String(kAddressSetting)).toString()
                                                                  : addressOverride;
     m_receiver->setAddress(address);
+    // How many aircraft the picture holds at most (the nearest to the view): a number of at least 1.
+    bool ok = false;
+    const int capacity = storage ? storage->value(QLatin1String(kCapacitySetting)).toInt(&ok) : 0;
+    m_picture->setCapacity(ok && capacity >= 1 ? capacity : TrafficPicture::kDefaultCapacity);
 }
 
 Traffic::~Traffic() = default;
@@ -39,6 +43,7 @@ void Traffic::setReceiverAddress(const QString &address)
 void Traffic::lookAt(double latitude, double longitude, double radiusM)
 {
     m_server->setArea(latitude, longitude, radiusM);
+    m_picture->setReference(latitude, longitude);
 }
 
 } // namespace sortie::traffic

@@ -31,6 +31,8 @@ class Traffic : public QObject
 
 public:
     static constexpr const char *kAddressSetting = "traffic/sbsAddress";
+    // The most aircraft held (TrafficPicture::setCapacity), the nearest to the view; default 500.
+    static constexpr const char *kCapacitySetting = "traffic/maxAircraft";
 
     // `storage` (not owned) keeps the receiver's address; `addressOverride`, when not empty, is used
     // instead of the setting and not written to it (sortie --demo, --sbs). `clock`: the picture's
@@ -45,7 +47,8 @@ public:
     QString receiverAddress() const;
     void setReceiverAddress(const QString &address);
 
-    // The view the operator sees: the server is asked about this circle (degrees, metres).
+    // The view the operator sees: the server is asked about this circle (degrees, metres), and the
+    // picture keeps the aircraft nearest its centre when full.
     Q_INVOKABLE void lookAt(double latitude, double longitude, double radiusM);
 
 signals:

@@ -3,9 +3,11 @@
 #include "TrafficReport.h"
 
 #include <QAbstractListModel>
+#include <QHash>
 #include <QTimer>
 
 #include <functional>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -21,6 +23,7 @@ struct TrafficAircraft
     qint64 firstSeenMs = 0;
     qint64 mslAltitudeMs = 0; // when the last altitude above mean sea level came (0: never)
     bool stale = false;
+    double rangeM = std::numeric_limits<double>::infinity(); // from the picture's reference (infinity: no position or no reference)
 };
 
 // Velocity over the ground and up, in m/s, east-north-up: from ground speed and track (and the
@@ -37,6 +40,12 @@ std::optional<TrafficVelocity> velocityOf(const TrafficReport &state);
 // aircraft not heard for kStaleAfterMs is stale (kept, shown faded: its position is old); one not
 // heard for kRemoveAfterMs is removed. The sweep runs every second on the clock given (tests pass
 // their own clock and call sweep()). Absent values are invalid QVariants in the model, never 0.
+//
+// Bounded under a flood (issue 36: a feed of 200,000 addresses): at most capacity() aircraft are
+// held, the nearest to the reference (the view's centre) kept — a newcomer nearer than the farthest
+// held takes its row, one farther (or with no position yet, when full) is left out and counted.
+// Aircraft are found by address in a hash, and what the model tells its views is gathered: one
+// dataChanged, countChanged and changed() a frame (kNotifyMs), however many reports came in it.
 class TrafficPicture : public QAbstractListModel
 {
     Q_OBJECT
@@ -47,6 +56,8 @@ public:
     static constexpr qint64 kStaleAfterMs = 60000;
     static constexpr qint64 kRemoveAfterMs = 120000;
     static constexpr qint64 kMslAltitudePreferredMs = 10000;
+    static constexpr int kDefaultCapacity = 500;
+    static constexpr int kNotifyMs = 16;
 
     enum Role {
         AddressRole = Qt::UserRole + 1, CallsignRole, LatitudeRole, LongitudeRole, AltitudeRole, AltitudeReferenceRole,
@@ -64,6 +75,16 @@ public:
     // Marks aircraft stale and removes the ones gone, at the clock's now.
     void sweep();
     void clear();
+    // Tells the views now what the frame gathered (sweep() and clear() do it first).
+    void flush();
+
+    // How many aircraft are held at most (at least 1); fewer now drops the farthest.
+    void setCapacity(int capacity);
+    int capacity() const { return m_capacity; }
+    // Where "nearest" is measured from (degrees); until set, a full picture keeps the ones it has.
+    void setReference(double latitude, double longitude);
+    // Reports of aircraft left out because the picture was full and they were not nearer.
+    qint64 leftOut() const { return m_leftOut; }
 
     int count() const { return int(m_aircraft.size()); }
     const std::vector<TrafficAircraft> &aircraft() const { return m_aircraft; }
@@ -86,10 +107,24 @@ signals:
 
 private:
     int rowOf(quint32 address, bool nonIcao) const;
+    static quint64 keyOf(quint32 address, bool nonIcao) { return quint64(address) | (nonIcao ? quint64(1) << 32 : 0); }
+    double rangeOf(const TrafficReport &state) const;
+    int farthestRow();
+    void touch(int row);
+    void reindex();
 
     Clock m_clock;
     std::vector<TrafficAircraft> m_aircraft;
+    QHash<quint64, int> m_rows; // address key -> row
     QTimer m_sweep;
+    QTimer m_notify;
+    int m_capacity = kDefaultCapacity;
+    std::optional<std::pair<double, double>> m_reference; // radians
+    int m_farthest = -1; // cached farthest row; -1: to be found again
+    qint64 m_leftOut = 0;
+    int m_dirtyFirst = -1, m_dirtyLast = -1;
+    int m_notifiedCount = 0;
+    bool m_changed = false;
 };
 
 } // namespace sortie::traffic

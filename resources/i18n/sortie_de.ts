@@ -887,6 +887,50 @@
         <source>the file has no raster band</source>
         <translation>die Datei hat kein Rasterband</translation>
     </message>
+    <message>
+        <source>GeoTIFF (COG), SRTM .hgt, DTED, ESRI ASCII grid, ERDAS Imagine, ESRI .bil/.flt, USGS DEM, PNG, JPEG, JPEG 2000 and .vrt mosaics of them</source>
+        <translation>GeoTIFF (COG), SRTM .hgt, DTED, ESRI-ASCII-Raster, ERDAS Imagine, ESRI .bil/.flt, USGS DEM, PNG, JPEG, JPEG 2000 und .vrt-Mosaike daraus</translation>
+    </message>
+    <message>
+        <source>a GDAL VRT (driver VRT) under a name that is not .vrt: Sortie reads %1</source>
+        <translation>ein GDAL-VRT (Treiber VRT) unter einem Namen, der nicht auf .vrt endet: Sortie liest %1</translation>
+    </message>
+    <message>
+        <source>GDAL reads this file with its %1 driver, which Sortie does not use for the operator&apos;s rasters: it reads %2</source>
+        <translation>GDAL liest diese Datei mit seinem Treiber %1, den Sortie für die Raster des Bedieners nicht verwendet: es liest %2</translation>
+    </message>
+    <message>
+        <source>its overview file %1 is not a GeoTIFF (GDAL: %2)</source>
+        <translation>seine Übersichtsdatei %1 ist kein GeoTIFF (GDAL: %2)</translation>
+    </message>
+    <message>
+        <source>a raw band (VRTRawRasterBand) is not read</source>
+        <translation>ein Rohkanal (VRTRawRasterBand) wird nicht gelesen</translation>
+    </message>
+    <message>
+        <source>a pixel function&apos;s code is not run</source>
+        <translation>der Code einer Pixelfunktion wird nicht ausgeführt</translation>
+    </message>
+    <message>
+        <source>its source %1 is not a local file</source>
+        <translation>seine Quelle %1 ist keine lokale Datei</translation>
+    </message>
+    <message>
+        <source>VRTs nested more than %1 deep</source>
+        <translation>VRTs mehr als %1 Ebenen tief verschachtelt</translation>
+    </message>
+    <message>
+        <source>%1: a VRT of more than %2 MiB</source>
+        <translation>%1: ein VRT von mehr als %2 MiB</translation>
+    </message>
+    <message>
+        <source>the VRT is not XML</source>
+        <translation>das VRT ist kein XML</translation>
+    </message>
+    <message>
+        <source>network access is off: Sortie reads local files only (%1)</source>
+        <translation>Netzwerkzugriff ist aus: Sortie liest nur lokale Dateien (%1)</translation>
+    </message>
 </context>
 <context>
     <name>GdalDemSource</name>
@@ -1842,6 +1886,10 @@
         <source>Reading the tiles of %1 failed: %2</source>
         <translation>Lesen der Kacheln von %1 fehlgeschlagen: %2</translation>
     </message>
+    <message>
+        <source>The MBTiles file %1 has more than %2 metadata rows.</source>
+        <translation>Die MBTiles-Datei %1 hat mehr als %2 Metadatenzeilen.</translation>
+    </message>
 </context>
 <context>
     <name>MbTilesMetadata</name>
@@ -2512,6 +2560,18 @@ Ereignisse: %1
 </source>
         <translation>BESCHÄDIGT:  %1
 </translation>
+    </message>
+    <message>
+        <source>%1: cannot be opened: no private copy to recover it in (%2)</source>
+        <translation>%1: kann nicht geöffnet werden: keine private Kopie zum Wiederherstellen (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is not a Sortie flight log (its %2 is a %3, not a table)</source>
+        <translation>%1 ist kein Sortie-Flugprotokoll (sein %2 ist ein %3, keine Tabelle)</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>abgebrochen: %1</translation>
     </message>
 </context>
 <context>
@@ -7216,6 +7276,10 @@ Ereignisse: %1
         <source>Tile server unreachable (%1).</source>
         <translation>Kachelserver nicht erreichbar (%1).</translation>
     </message>
+    <message>
+        <source>Tile %1 is %2.</source>
+        <translation>Kachel %1 ist %2.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::ui::ZoneLayer</name>
@@ -7273,6 +7337,28 @@ Ausgeschaltet: nicht geprüft</translation>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+<context>
+    <name>OutsideDatabase</name>
+    <message>
+        <source>more than %1 steps</source>
+        <translation>mehr als %1 Schritte</translation>
+    </message>
+    <message>
+        <source>more than %1 rows</source>
+        <translation>mehr als %1 Zeilen</translation>
+    </message>
+    <message>
+        <source>SQLite refused the settings a file from outside is read with</source>
+        <translation>SQLite hat die Einstellungen abgelehnt, mit denen eine Datei von außen gelesen wird</translation>
+    </message>
+</context>
+<context>
+    <name>TileResponse</name>
+    <message>
+        <source>larger than %1 MiB: not read</source>
+        <translation>größer als %1 MiB: nicht gelesen</translation>
     </message>
 </context>
 </TS>

@@ -887,6 +887,50 @@
         <source>the file has no raster band</source>
         <translation>el archivo no tiene ninguna banda ráster</translation>
     </message>
+    <message>
+        <source>GeoTIFF (COG), SRTM .hgt, DTED, ESRI ASCII grid, ERDAS Imagine, ESRI .bil/.flt, USGS DEM, PNG, JPEG, JPEG 2000 and .vrt mosaics of them</source>
+        <translation>GeoTIFF (COG), SRTM .hgt, DTED, cuadrícula ASCII de ESRI, ERDAS Imagine, ESRI .bil/.flt, USGS DEM, PNG, JPEG, JPEG 2000 y mosaicos .vrt de ellos</translation>
+    </message>
+    <message>
+        <source>a GDAL VRT (driver VRT) under a name that is not .vrt: Sortie reads %1</source>
+        <translation>un VRT de GDAL (controlador VRT) con un nombre que no es .vrt: Sortie lee %1</translation>
+    </message>
+    <message>
+        <source>GDAL reads this file with its %1 driver, which Sortie does not use for the operator&apos;s rasters: it reads %2</source>
+        <translation>GDAL lee este archivo con su controlador %1, que Sortie no usa para los ráster del operador: lee %2</translation>
+    </message>
+    <message>
+        <source>its overview file %1 is not a GeoTIFF (GDAL: %2)</source>
+        <translation>su archivo de vistas generales %1 no es un GeoTIFF (GDAL: %2)</translation>
+    </message>
+    <message>
+        <source>a raw band (VRTRawRasterBand) is not read</source>
+        <translation>una banda en bruto (VRTRawRasterBand) no se lee</translation>
+    </message>
+    <message>
+        <source>a pixel function&apos;s code is not run</source>
+        <translation>el código de una función de píxel no se ejecuta</translation>
+    </message>
+    <message>
+        <source>its source %1 is not a local file</source>
+        <translation>su fuente %1 no es un archivo local</translation>
+    </message>
+    <message>
+        <source>VRTs nested more than %1 deep</source>
+        <translation>VRT anidados a más de %1 niveles</translation>
+    </message>
+    <message>
+        <source>%1: a VRT of more than %2 MiB</source>
+        <translation>%1: un VRT de más de %2 MiB</translation>
+    </message>
+    <message>
+        <source>the VRT is not XML</source>
+        <translation>el VRT no es XML</translation>
+    </message>
+    <message>
+        <source>network access is off: Sortie reads local files only (%1)</source>
+        <translation>el acceso a la red está desactivado: Sortie solo lee archivos locales (%1)</translation>
+    </message>
 </context>
 <context>
     <name>GdalDemSource</name>
@@ -1842,6 +1886,10 @@
         <source>Reading the tiles of %1 failed: %2</source>
         <translation>Falló la lectura de las teselas de %1: %2</translation>
     </message>
+    <message>
+        <source>The MBTiles file %1 has more than %2 metadata rows.</source>
+        <translation>El archivo MBTiles %1 tiene más de %2 filas de metadatos.</translation>
+    </message>
 </context>
 <context>
     <name>MbTilesMetadata</name>
@@ -2512,6 +2560,18 @@ eventos:   %1
 </source>
         <translation>DAÑADO:  %1
 </translation>
+    </message>
+    <message>
+        <source>%1: cannot be opened: no private copy to recover it in (%2)</source>
+        <translation>%1: no se puede abrir: no hay copia privada en la que recuperarlo (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is not a Sortie flight log (its %2 is a %3, not a table)</source>
+        <translation>%1 no es un registro de vuelo de Sortie (su %2 es un %3, no una tabla)</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>detenido: %1</translation>
     </message>
 </context>
 <context>
@@ -7216,6 +7276,10 @@ eventos:   %1
         <source>Tile server unreachable (%1).</source>
         <translation>Servidor de teselas no accesible (%1).</translation>
     </message>
+    <message>
+        <source>Tile %1 is %2.</source>
+        <translation>La tesela %1 es %2.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::ui::ZoneLayer</name>
@@ -7273,6 +7337,28 @@ Desactivada: no comprobada</translation>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+<context>
+    <name>OutsideDatabase</name>
+    <message>
+        <source>more than %1 steps</source>
+        <translation>más de %1 pasos</translation>
+    </message>
+    <message>
+        <source>more than %1 rows</source>
+        <translation>más de %1 filas</translation>
+    </message>
+    <message>
+        <source>SQLite refused the settings a file from outside is read with</source>
+        <translation>SQLite rechazó los ajustes con los que se lee un archivo de fuera</translation>
+    </message>
+</context>
+<context>
+    <name>TileResponse</name>
+    <message>
+        <source>larger than %1 MiB: not read</source>
+        <translation>mayor de %1 MiB: no se lee</translation>
     </message>
 </context>
 </TS>

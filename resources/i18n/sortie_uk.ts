@@ -888,6 +888,50 @@
         <source>the file has no raster band</source>
         <translation>файл не має растрового каналу</translation>
     </message>
+    <message>
+        <source>GeoTIFF (COG), SRTM .hgt, DTED, ESRI ASCII grid, ERDAS Imagine, ESRI .bil/.flt, USGS DEM, PNG, JPEG, JPEG 2000 and .vrt mosaics of them</source>
+        <translation>GeoTIFF (COG), SRTM .hgt, DTED, ESRI ASCII grid, ERDAS Imagine, ESRI .bil/.flt, USGS DEM, PNG, JPEG, JPEG 2000 та мозаїки .vrt з них</translation>
+    </message>
+    <message>
+        <source>a GDAL VRT (driver VRT) under a name that is not .vrt: Sortie reads %1</source>
+        <translation>GDAL VRT (драйвер VRT) під назвою, що не є .vrt: Sortie читає %1</translation>
+    </message>
+    <message>
+        <source>GDAL reads this file with its %1 driver, which Sortie does not use for the operator&apos;s rasters: it reads %2</source>
+        <translation>GDAL читає цей файл своїм драйвером %1, якого Sortie не використовує для растрів оператора: він читає %2</translation>
+    </message>
+    <message>
+        <source>its overview file %1 is not a GeoTIFF (GDAL: %2)</source>
+        <translation>його файл оглядів %1 не є GeoTIFF (GDAL: %2)</translation>
+    </message>
+    <message>
+        <source>a raw band (VRTRawRasterBand) is not read</source>
+        <translation>сирий канал (VRTRawRasterBand) не читається</translation>
+    </message>
+    <message>
+        <source>a pixel function&apos;s code is not run</source>
+        <translation>код піксельної функції не виконується</translation>
+    </message>
+    <message>
+        <source>its source %1 is not a local file</source>
+        <translation>його джерело %1 не є локальним файлом</translation>
+    </message>
+    <message>
+        <source>VRTs nested more than %1 deep</source>
+        <translation>VRT вкладені глибше ніж на %1 рівні</translation>
+    </message>
+    <message>
+        <source>%1: a VRT of more than %2 MiB</source>
+        <translation>%1: VRT понад %2 МіБ</translation>
+    </message>
+    <message>
+        <source>the VRT is not XML</source>
+        <translation>VRT не є XML</translation>
+    </message>
+    <message>
+        <source>network access is off: Sortie reads local files only (%1)</source>
+        <translation>доступ до мережі вимкнено: Sortie читає лише локальні файли (%1)</translation>
+    </message>
 </context>
 <context>
     <name>GdalDemSource</name>
@@ -1843,6 +1887,10 @@
         <source>Reading the tiles of %1 failed: %2</source>
         <translation>Не вдалося прочитати тайли %1: %2</translation>
     </message>
+    <message>
+        <source>The MBTiles file %1 has more than %2 metadata rows.</source>
+        <translation>Файл MBTiles %1 має понад %2 рядків метаданих.</translation>
+    </message>
 </context>
 <context>
     <name>MbTilesMetadata</name>
@@ -2520,6 +2568,18 @@ events:   %1
 </source>
         <translation>ПОШКОДЖЕНО:  %1
 </translation>
+    </message>
+    <message>
+        <source>%1: cannot be opened: no private copy to recover it in (%2)</source>
+        <translation>%1: не вдається відкрити: немає приватної копії для відновлення (%2)</translation>
+    </message>
+    <message>
+        <source>%1 is not a Sortie flight log (its %2 is a %3, not a table)</source>
+        <translation>%1 не є журналом польоту Sortie (його %2 є %3, а не таблицею)</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>зупинено: %1</translation>
     </message>
 </context>
 <context>
@@ -7257,6 +7317,10 @@ events:   %1
         <source>Tile server unreachable (%1).</source>
         <translation>Сервер тайлів недоступний (%1).</translation>
     </message>
+    <message>
+        <source>Tile %1 is %2.</source>
+        <translation>Плитка %1: %2.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::ui::ZoneLayer</name>
@@ -7314,6 +7378,28 @@ Switched off: not checked</source>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+<context>
+    <name>OutsideDatabase</name>
+    <message>
+        <source>more than %1 steps</source>
+        <translation>понад %1 кроків</translation>
+    </message>
+    <message>
+        <source>more than %1 rows</source>
+        <translation>понад %1 рядків</translation>
+    </message>
+    <message>
+        <source>SQLite refused the settings a file from outside is read with</source>
+        <translation>SQLite відхилив налаштування, з якими читається файл ззовні</translation>
+    </message>
+</context>
+<context>
+    <name>TileResponse</name>
+    <message>
+        <source>larger than %1 MiB: not read</source>
+        <translation>більше за %1 МіБ: не прочитано</translation>
     </message>
 </context>
 </TS>

@@ -2,6 +2,7 @@
 
 #include "MbTilesTileSource.h"
 #include "TilePrefetch.h"
+#include "TileResponse.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -10,7 +11,9 @@
 #include <QNetworkDiskCache>
 #include <QNetworkReply>
 #include <QStandardPaths>
+#include <QFutureWatcher>
 #include <QUrl>
+#include <QtConcurrent/QtConcurrentRun>
 
 Q_LOGGING_CATEGORY(lcTiles, "sortie.ui.tiles")
 
@@ -226,6 +229,7 @@ void XyzTileSource::start(const TileKey &key, Mode mode)
     request.setAttribute(QNetworkRequest::RedirectPolicyAttribute, QNetworkRequest::NoLessSafeRedirectPolicy);
     request.setTransferTimeout(kTransferTimeoutMs);
     QNetworkReply *reply = m_network->get(request);
+    maptiles::limitTileBody(reply);  // a server streaming without end is cut off (issue 36)
     reply->setProperty(kModeProperty, mode == Mode::CacheOnly);
     m_active.insert(reply, key);
 }
@@ -242,16 +246,16 @@ void XyzTileSource::finished(QNetworkReply *reply)
     const QVariant status = reply->attribute(QNetworkRequest::HttpStatusCodeAttribute);
     const bool isFile = reply->url().isLocalFile();
 
-    if (reply->error() == QNetworkReply::NoError) {
-        const QImage image = QImage::fromData(reply->readAll());
+    if (const QString tooLarge = maptiles::tileBodyRefusal(reply); !tooLarge.isEmpty()) {
+        m_probing = false;
+        setReachable(true);  // the server answered; this tile is what is wrong
+        emit tileFailed(key, tr("Tile %1 is %2.").arg(key.toString(), tooLarge));
+    } else if (reply->error() == QNetworkReply::NoError) {
         if (!cacheOnly) {
             m_probing = false;
             setReachable(true);
         }
-        if (image.isNull())
-            emit tileFailed(key, tr("Tile %1 is not an image.").arg(key.toString()));
-        else
-            emit tileReady(key, image.convertToFormat(QImage::Format_ARGB32_Premultiplied));
+        decode(key, reply->readAll());
     } else if (m_cacheOnly) {
         emit tileFailed(key, tr("Tile %1 is neither in the offline pack nor in the cache (cache only: the network is not used).").arg(key.toString()));
     } else if (cacheOnly) {
@@ -269,6 +273,31 @@ void XyzTileSource::finished(QNetworkReply *reply)
     startNext();
 }
 
+// Decoding a tile (a 256 px PNG: about a millisecond) is done on the thread pool, never on the GUI
+// thread; Qt's image reader refuses a picture claiming more than its allocation limit.
+void XyzTileSource::decode(const TileKey &key, QByteArray bytes)
+{
+    ++m_decoding;
+    auto *watcher = new QFutureWatcher<QImage>(this);
+    const quint64 generation = m_generation;
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, key, generation] {
+        watcher->deleteLater();
+        --m_decoding;
+        const QImage image = watcher->result();
+        if (generation == m_generation) {
+            if (image.isNull())
+                emit tileFailed(key, tr("Tile %1 is not an image.").arg(key.toString()));
+            else
+                emit tileReady(key, image);
+        }
+        emit loadingCountChanged();
+    });
+    watcher->setFuture(QtConcurrent::run([bytes = std::move(bytes)] {
+        const QImage image = QImage::fromData(bytes);
+        return image.isNull() ? image : image.convertToFormat(QImage::Format_ARGB32_Premultiplied);
+    }));
+}
+
 void XyzTileSource::networkFailed(const TileKey &key, const QString &reason)
 {
     if (isReachable())
@@ -282,6 +311,7 @@ void XyzTileSource::networkFailed(const TileKey &key, const QString &reason)
 
 void XyzTileSource::invalidateAll()
 {
+    ++m_generation;
     m_queue.clear();
     m_pack->cancelPending();
     m_packPending.clear();

@@ -50,7 +50,7 @@ public:
     void setMaximumConcurrentRequests(int count);
     int retryInterval() const { return m_retryMs; }
     void setRetryInterval(int milliseconds) { m_retryMs = milliseconds; }
-    int loadingCount() const { return int(m_queue.size() + m_active.size() + m_packPending.size()); }
+    int loadingCount() const { return int(m_queue.size() + m_active.size() + m_packPending.size()) + m_decoding; }
     QString packFile() const;
     void setPackFile(const QString &file);
     bool cacheOnly() const { return m_cacheOnly; }
@@ -81,6 +81,7 @@ private:
     void packTileReady(const TileKey &key, const QImage &image);
     void packTileFailed(const TileKey &key);
     void queueForNetwork(const TileKey &key);
+    void decode(const TileKey &key, QByteArray bytes);
 
     QNetworkAccessManager *m_network;
     QNetworkDiskCache *m_diskCache;
@@ -97,6 +98,8 @@ private:
     QHash<QNetworkReply *, TileKey> m_active;
     QDeadlineTimer m_nextProbe{QDeadlineTimer::Forever};
     bool m_probing = false;
+    int m_decoding = 0;          // tiles being decoded on the thread pool
+    quint64 m_generation = 0;    // invalidateAll() makes decodes still running stale
 };
 
 } // namespace sortie::ui

@@ -2,15 +2,19 @@
 
 #include "FlightLogLog.h"
 #include "FlightLogSchema.h"
+#include "OutsideDatabase.h"
 
 #include <QDateTime>
+#include <QFile>
 #include <QFileInfo>
+#include <QTemporaryDir>
 #include <QHash>
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QUuid>
 
 #include <algorithm>
+#include <optional>
 
 namespace sortie::flightlog {
 
@@ -30,10 +34,10 @@ QString timeText(int64_t ms)
 class Connection
 {
 public:
-    explicit Connection(const QString &path, QString *error)
+    explicit Connection(const QString &path, bool readOnly, QString *error)
         : m_name(QStringLiteral("flightlog-reader-") + QUuid::createUuid().toString(QUuid::WithoutBraces))
     {
-        m_db = schema::open(path, m_name, true, error);
+        m_db = schema::open(path, m_name, readOnly, error);
     }
     ~Connection()
     {
@@ -47,6 +51,58 @@ private:
     QString m_name;
     QSqlDatabase m_db;
 };
+
+quint32 bigEndian32(const QByteArray &b, int at)
+{
+    return quint32(uchar(b[at])) << 24 | quint32(uchar(b[at + 1])) << 16 | quint32(uchar(b[at + 2])) << 8 | quint32(uchar(b[at + 3]));
+}
+
+// SQLite's header (its file format, "The Database Header") says the file holds more pages than it
+// does: a log cut short. The size is believed only when the change counter (offset 24) equals the
+// version-valid-for number (offset 92).
+bool cutShort(const QString &path)
+{
+    QFile f(path);
+    if (!f.open(QIODevice::ReadOnly))
+        return false;
+    const QByteArray h = f.read(100);
+    if (h.size() < 100 || !h.startsWith("SQLite format 3"))
+        return false;
+    const quint32 pageSize = (quint32(uchar(h[16])) << 8 | uchar(h[17])) == 1 ? 65536 : (quint32(uchar(h[16])) << 8 | uchar(h[17]));
+    const quint32 pages = bigEndian32(h, 28);
+    return pages && bigEndian32(h, 24) == bigEndian32(h, 92) && qint64(pages) * pageSize > f.size();
+}
+
+// A log the recorder did not close (its -wal beside it) or one cut short is read from a copy in a
+// private folder of its own: there SQLite applies the journal's committed transactions, and a copy
+// cut short has its header's page count set aside (the version-valid-for number changed) so SQLite
+// reads the pages that are there. The operator's file is never written.
+std::optional<QString> readableCopy(const QString &path, QTemporaryDir &dir, QString *error)
+{
+    const QString wal = path + QStringLiteral("-wal");
+    const bool recorderKilled = QFileInfo::exists(wal), shortened = cutShort(path);
+    if (!recorderKilled && !shortened)
+        return QString();
+    const QString copy = dir.filePath(QStringLiteral("log.sortielog"));
+    if (!dir.isValid() || !QFile::copy(path, copy) || (recorderKilled && !QFile::copy(wal, copy + QStringLiteral("-wal")))) {
+        *error = QObject::tr("%1: cannot be opened: no private copy to recover it in (%2)").arg(path, dir.errorString());
+        return std::nullopt;
+    }
+    QFile::setPermissions(copy, QFileDevice::ReadOwner | QFileDevice::WriteOwner);
+    QFile::setPermissions(copy + QStringLiteral("-wal"), QFileDevice::ReadOwner | QFileDevice::WriteOwner);
+    if (shortened) {
+        QFile f(copy);
+        if (f.open(QIODevice::ReadWrite) && f.seek(24)) {
+            QByteArray counter = f.read(4);
+            if (counter.size() == 4 && f.seek(92)) {
+                counter[3] = char(counter[3] ^ 1);
+                f.write(counter);
+            }
+        }
+    }
+    qCInfo(lcFlightLog) << path << "read from a private copy:" << (recorderKilled ? "its recorder did not close it" : "it is cut short");
+    return copy;
+}
 
 } // namespace
 
@@ -83,29 +139,34 @@ std::unique_ptr<FlightLog> FlightLog::open(const QString &path, QString *error)
     };
     if (!QFileInfo(path).isFile())
         return fail(QObject::tr("%1: no such file").arg(path));
-    // A log whose recorder was killed still has its write-ahead journal beside it: opening it
-    // read-write lets SQLite apply the committed transactions and ignore the torn one.
-    const bool recovering = QFileInfo::exists(path + QStringLiteral("-wal"));
+    QTemporaryDir recovery;
+    QString copyError;
+    const std::optional<QString> copy = readableCopy(path, recovery, &copyError);
+    if (!copy)
+        return fail(copyError);
     QString why;
-    Connection c(path, &why);
+    Connection c(copy->isEmpty() ? path : *copy, copy->isEmpty(), &why);
     if (!c.db().isOpen())
         return fail(QObject::tr("%1: cannot be opened: %2").arg(path, why));
-    if (recovering) {
-        c.db().close();
-        c.db().setConnectOptions(QString());
-        if (!c.db().open())
-            return fail(QObject::tr("%1: cannot be opened: %2").arg(path, c.db().lastError().text()));
-    }
     QSqlQuery q(c.db());
     q.setForwardOnly(true);
-    // A file cut short holds fewer pages than its header says; SQLite calls that corrupt unless the
-    // schema is "writable", and then reads what is there (nothing is written through this connection).
-    q.exec(QStringLiteral("PRAGMA writable_schema=ON"));
     if (!q.exec(QStringLiteral("SELECT value FROM meta WHERE key = 'application'")) || !q.next()
         || q.value(0).toString() != QLatin1String(schema::kApplicationId)) {
         const QString detail = q.lastError().isValid() ? q.lastError().text() : QObject::tr("no Sortie flight log header");
         return fail(QObject::tr("%1 is not a Sortie flight log (%2)").arg(path, detail));
     }
+    // Each part of a log is a table: a view (a recursive one never ends) or anything else is refused.
+    if (!q.exec(QStringLiteral("SELECT name, type FROM sqlite_schema WHERE name IN ('meta', 'vehicles', 'blocks', 'events', 'missions')")))
+        return fail(QObject::tr("%1 is not a Sortie flight log (%2)").arg(path, q.lastError().text()));
+    while (q.next()) {
+        if (q.value(1).toString() != QLatin1String("table"))
+            return fail(QObject::tr("%1 is not a Sortie flight log (its %2 is a %3, not a table)").arg(path, q.value(0).toString(), q.value(1).toString()));
+    }
+    // The reason a bound of core/sqlite stopped a statement, or SQLite's.
+    auto errorOf = [&c, &q] {
+        const QString bound = sqlite::statementStopped(c.db());
+        return bound.isEmpty() ? q.lastError().text() : QObject::tr("stopped: %1").arg(bound);
+    };
 
     auto log = std::make_unique<FlightLog>();
     log->m_path = path;
@@ -116,7 +177,7 @@ std::unique_ptr<FlightLog> FlightLog::open(const QString &path, QString *error)
     };
 
     if (!q.exec(QStringLiteral("SELECT id, key, name, protocol, type, autopilot FROM vehicles ORDER BY id")))
-        return fail(QObject::tr("%1: the vehicles cannot be read: %2").arg(path, q.lastError().text()));
+        return fail(QObject::tr("%1: the vehicles cannot be read: %2").arg(path, errorOf()));
     while (q.next()) {
         Vehicle v;
         v.key = q.value(1).toString();
@@ -129,7 +190,7 @@ std::unique_ptr<FlightLog> FlightLog::open(const QString &path, QString *error)
         log->m_vehicles.push_back(std::move(v));
     }
     if (q.lastError().isValid())
-        stop(QObject::tr("the vehicle list is damaged: %1").arg(q.lastError().text()));
+        stop(QObject::tr("the vehicle list is damaged: %1").arg(errorOf()));
 
     if (q.exec(QStringLiteral("SELECT id, vehicle, t0, data FROM blocks ORDER BY id"))) {
         qint64 good = 0, lastTime = 0, bad = 0;
@@ -152,9 +213,9 @@ std::unique_ptr<FlightLog> FlightLog::open(const QString &path, QString *error)
         if (bad > kMaxSkippedNamed)
             log->m_skipped << QObject::tr("%n more damaged block(s) skipped", nullptr, int(bad - kMaxSkippedNamed));
         if (q.lastError().isValid())
-            stop(QObject::tr("stopped after %1 good blocks (%2): %3").arg(good).arg(good ? timeText(lastTime) : QObject::tr("none"), q.lastError().text()));
+            stop(QObject::tr("stopped after %1 good blocks (%2): %3").arg(good).arg(good ? timeText(lastTime) : QObject::tr("none"), errorOf()));
     } else {
-        stop(QObject::tr("the telemetry cannot be read: %1").arg(q.lastError().text()));
+        stop(QObject::tr("the telemetry cannot be read: %1").arg(errorOf()));
     }
 
     if (q.exec(QStringLiteral("SELECT vehicle, time, kind, text, ok FROM events ORDER BY id"))) {
@@ -164,9 +225,9 @@ std::unique_ptr<FlightLog> FlightLog::open(const QString &path, QString *error)
                                      q.value(2).toString(), q.value(3).toString(), ok.isNull() ? -1 : ok.toInt()});
         }
         if (q.lastError().isValid())
-            stop(QObject::tr("the events stop after %1: %2").arg(log->m_events.size()).arg(q.lastError().text()));
+            stop(QObject::tr("the events stop after %1: %2").arg(log->m_events.size()).arg(errorOf()));
     } else {
-        stop(QObject::tr("the events cannot be read: %1").arg(q.lastError().text()));
+        stop(QObject::tr("the events cannot be read: %1").arg(errorOf()));
     }
 
     if (q.exec(QStringLiteral("SELECT vehicle, time, items FROM missions ORDER BY id"))) {
@@ -178,9 +239,9 @@ std::unique_ptr<FlightLog> FlightLog::open(const QString &path, QString *error)
                 log->m_vehicles[size_t(index)].missions.push_back({q.value(1).toLongLong(), std::move(items)});
         }
         if (q.lastError().isValid())
-            stop(QObject::tr("the routes stop early: %1").arg(q.lastError().text()));
+            stop(QObject::tr("the routes stop early: %1").arg(errorOf()));
     } else {
-        stop(QObject::tr("the routes cannot be read: %1").arg(q.lastError().text()));
+        stop(QObject::tr("the routes cannot be read: %1").arg(errorOf()));
     }
     q.finish();
     log->finish();

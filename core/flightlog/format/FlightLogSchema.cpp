@@ -1,6 +1,7 @@
 #include "FlightLogSchema.h"
 
 #include "TelemetryField.h"
+#include "OutsideDatabase.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -52,13 +53,10 @@ bool create(QSqlDatabase &db, QString *error)
 
 QSqlDatabase open(const QString &path, const QString &connection, bool readOnly, QString *error)
 {
-    QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), connection);
-    db.setDatabaseName(path);
-    if (readOnly)
-        db.setConnectOptions(QStringLiteral("QSQLITE_OPEN_READONLY"));
-    if (!db.open() && error)
-        *error = db.lastError().text();
-    return db;
+    sqlite::OutsideLimits limits;
+    limits.maxRows = kMaxRows;
+    limits.views = false;  // every table of a log is a table: a view named events is someone else's file
+    return sqlite::openOutside(path, connection, readOnly ? sqlite::Access::ReadOnly : sqlite::Access::ReadWrite, limits, error);
 }
 
 QByteArray missionToJson(const std::vector<vehicle::MissionItem> &items)
