@@ -4,6 +4,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
+  ccache  # the build compiles through it when present (CMakeLists.txt SORTIE_CCACHE): a second build or clone reuses the objects
   dpkg-dev file libzip-dev libzstd-dev  # dpkg-shlibdeps and file: CPack's Debian package; libzip: WPML's KMZ archives; zstd: bench_flightlog
   qt6-base-dev qt6-base-dev-tools qt6-declarative-dev qt6-declarative-dev-tools
   qt6-serialport-dev qt6-positioning-dev qt6-tools-dev qt6-tools-dev-tools
