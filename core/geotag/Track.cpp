@@ -229,7 +229,7 @@ bool looksLikeFlightLog(const QString &path)
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly))
         return QFileInfo(path).suffix().compare(QLatin1String("gpx"), Qt::CaseInsensitive) != 0;
-    return file.read(16) == QByteArray("SQLite format 3\0", 16);
+    return file.read(16) == QByteArray("SQLite format 3\0", 16); // i18n: not text (SQLite's file header)
 }
 
 } // namespace sortie::geotag
