@@ -236,7 +236,7 @@ std::optional<GeotagReport> geotagFolder(const QString &photoFolder, const Track
         QString why;
         auto info = PhotoMetadataFile::read(dir.filePath(name), &why);
         if (!info) {
-            qCWarning(lcGeotag).noquote() << dir.filePath(name) << "skipped:" << why;
+            qCInfo(lcGeotag).noquote() << dir.filePath(name) << "skipped:" << why; // the report names it
             unreadable.push_back({name, why});
             continue;
         }

@@ -8,6 +8,7 @@
 #include <QCoreApplication>
 #include <QDateTime>
 #include <QFile>
+#include <QFileInfo>
 #include <QRegularExpression>
 #include <QTimeZone>
 
@@ -27,7 +28,7 @@ void exivLog(int level, const char *message)
     if (level >= Exiv2::LogMsg::error)
         qCWarning(lcGeotag).noquote() << "exiv2:" << text;
     else
-        qCDebug(lcGeotag).noquote() << "exiv2:" << text;
+        qCInfo(lcGeotag).noquote() << "exiv2:" << text;
 }
 
 // The XMP toolkit is set up once, before any photo is read; our namespace registered with it.
@@ -188,6 +189,7 @@ std::optional<PhotoInfo> PhotoMetadataFile::read(const QString &path, QString *e
         const Exiv2::XmpData &xmp = image->xmpData();
         PhotoInfo info;
         info.path = path;
+        info.fileName = QFileInfo(path).fileName();
         info.make = exifText(exif, "Exif.Image.Make");
         if (info.make.isEmpty())
             info.make = xmpText(xmp, "Xmp.tiff.Make");

@@ -12,7 +12,7 @@ namespace sortie::geotag {
 struct PhotoInfo
 {
     QString path;
-    QString fileName;
+    QString fileName; // the name in its folder
     // DateTimeOriginal (+ SubSecTimeOriginal) read as UTC, corrected by OffsetTimeOriginal when the
     // photo has one: ms since the epoch. Absent when the photo holds no capture time.
     std::optional<int64_t> cameraTimeUtc;
