@@ -113,6 +113,16 @@ private slots:
                                     QStringLiteral("--offset"), QStringLiteral("22.5")});
         QVERIFY2(text.exitCode == 2 && text.out.contains("DJI_0004.JPG: not tagged: taken at") && text.out.contains("4 of 5 photos tagged"),
                  qPrintable(describe(text)));
+        // A negative offset (the camera ahead of the track): the first photo falls before it.
+        const Run early = sortieLog({QStringLiteral("geotag"), m_photos, QStringLiteral("--track"), m_gpx, QStringLiteral("--out"),
+                                     m_dir.filePath(QStringLiteral("out-early")), QStringLiteral("--offset"), QStringLiteral("-12.5"), QStringLiteral("--json")});
+        QVERIFY2(early.exitCode == 2, qPrintable(describe(early)));
+        const QJsonObject e = QJsonDocument::fromJson(early.out).object();
+        QCOMPARE(e.value(QStringLiteral("offset")).toDouble(), -12.5);
+        QCOMPARE(e.value(QStringLiteral("tagged")).toInt(), 4);
+        const QJsonObject first = e.value(QStringLiteral("untagged")).toArray().at(0).toObject();
+        QCOMPARE(first.value(QStringLiteral("file")).toString(), QStringLiteral("DJI_0000.JPG"));
+        QVERIFY2(first.value(QStringLiteral("reason")).toString().contains(QStringLiteral("2.5 s before the track starts")), qPrintable(describe(early)));
     }
 
     void aFlightLogNeedsItsVehicleWhenItHoldsSeveral()
