@@ -967,6 +967,117 @@
     </message>
 </context>
 <context>
+    <name>Geotag</name>
+    <message>
+        <source>the track holds no positions</source>
+        <translation>der Track enthält keine Positionen</translation>
+    </message>
+    <message>
+        <source>taken at %1, %2 s before the track starts (%3)</source>
+        <translation>aufgenommen um %1, %2 s vor dem Beginn des Tracks (%3)</translation>
+    </message>
+    <message>
+        <source>taken at %1, %2 s after the track ends (%3)</source>
+        <translation>aufgenommen um %1, %2 s nach dem Ende des Tracks (%3)</translation>
+    </message>
+    <message>
+        <source>taken at %1, in a gap of %2 s in the track (from %3 to %4; at most %5 s is bridged)</source>
+        <translation>aufgenommen um %1, in einer Lücke von %2 s im Track (von %3 bis %4; überbrückt werden höchstens %5 s)</translation>
+    </message>
+    <message>
+        <source>it holds no capture time (EXIF DateTimeOriginal or XMP exif:DateTimeOriginal)</source>
+        <translation>es enthält keine Aufnahmezeit (EXIF DateTimeOriginal oder XMP exif:DateTimeOriginal)</translation>
+    </message>
+    <message>
+        <source>its copy cannot be made in %1: %2</source>
+        <translation>seine Kopie kann in %1 nicht angelegt werden: %2</translation>
+    </message>
+    <message>
+        <source>its copy cannot be put in place: %1</source>
+        <translation>seine Kopie kann nicht an ihren Platz gelegt werden: %1</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder of photos that can be read</source>
+        <translation>%1 ist kein lesbarer Ordner mit Fotos</translation>
+    </message>
+    <message>
+        <source>%1 holds no photos (.jpg, .jpeg, .tif, .tiff, .dng)</source>
+        <translation>%1 enthält keine Fotos (.jpg, .jpeg, .tif, .tiff, .dng)</translation>
+    </message>
+    <message>
+        <source>no folder given for the geotagged copies</source>
+        <translation>kein Ordner für die georeferenzierten Kopien angegeben</translation>
+    </message>
+    <message>
+        <source>%1: the folder for the geotagged copies cannot be made</source>
+        <translation>%1: der Ordner für die georeferenzierten Kopien kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>%1 is the photos&apos; own folder: the copies go elsewhere, the originals are never changed</source>
+        <translation>%1 ist der Ordner der Fotos selbst: die Kopien gehören woandershin, die Originale werden nie verändert</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot read it (%1)</source>
+        <translation>exiv2 kann es nicht lesen (%1)</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot open it</source>
+        <translation>exiv2 kann es nicht öffnen</translation>
+    </message>
+    <message>
+        <source>its OffsetTimeOriginal &quot;%1&quot; is no time zone offset (±HH:MM)</source>
+        <translation>sein OffsetTimeOriginal „%1“ ist kein Zeitzonenversatz (±HH:MM)</translation>
+    </message>
+    <message>
+        <source>no valid position to write</source>
+        <translation>keine gültige Position zum Schreiben</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot write its tags (%1)</source>
+        <translation>exiv2 kann seine Tags nicht schreiben (%1)</translation>
+    </message>
+    <message>
+        <source>%1 is not a GPX file (its root element is &lt;%2&gt;, not &lt;gpx&gt;)</source>
+        <translation>%1 ist keine GPX-Datei (ihr Wurzelelement ist &lt;%2&gt;, nicht &lt;gpx&gt;)</translation>
+    </message>
+    <message>
+        <source>%1: a track point needs lat (-90 to 90) and lon (-180 to 180) in degrees, not lat=&quot;%2&quot; lon=&quot;%3&quot;</source>
+        <translation>%1: ein Trackpunkt braucht lat (-90 bis 90) und lon (-180 bis 180) in Grad, nicht lat=&quot;%2&quot; lon=&quot;%3&quot;</translation>
+    </message>
+    <message>
+        <source>%1: &lt;ele&gt; &quot;%2&quot; is no elevation in metres</source>
+        <translation>%1: &lt;ele&gt; „%2“ ist keine Höhe in Metern</translation>
+    </message>
+    <message>
+        <source>%1: &lt;time&gt; &quot;%2&quot; is no UTC time (YYYY-MM-DDThh:mm:ssZ)</source>
+        <translation>%1: &lt;time&gt; „%2“ ist keine UTC-Zeit (YYYY-MM-DDThh:mm:ssZ)</translation>
+    </message>
+    <message>
+        <source>%1: the track point has no &lt;time&gt;, so no photo can be matched to it</source>
+        <translation>%1: der Trackpunkt hat kein &lt;time&gt;, daher kann ihm kein Foto zugeordnet werden</translation>
+    </message>
+    <message>
+        <source>%1 is not a readable GPX file: %2</source>
+        <translation>%1 ist keine lesbare GPX-Datei: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a GPX file (no &lt;gpx&gt; element)</source>
+        <translation>%1 ist keine GPX-Datei (kein &lt;gpx&gt;-Element)</translation>
+    </message>
+    <message>
+        <source>%1 holds no track points (&lt;trkpt&gt;)</source>
+        <translation>%1 enthält keine Trackpunkte (&lt;trkpt&gt;)</translation>
+    </message>
+    <message>
+        <source>%1 has no such vehicle</source>
+        <translation>%1 enthält dieses Fahrzeug nicht</translation>
+    </message>
+    <message>
+        <source>%1: vehicle %2 reported no position</source>
+        <translation>%1: Fahrzeug %2 hat keine Position gemeldet</translation>
+    </message>
+</context>
+<context>
     <name>HciConnection</name>
     <message>
         <source>type %1</source>
@@ -1890,6 +2001,10 @@
         <source>The MBTiles file %1 has more than %2 metadata rows.</source>
         <translation>Die MBTiles-Datei %1 hat mehr als %2 Metadatenzeilen.</translation>
     </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>abgebrochen: %1</translation>
+    </message>
 </context>
 <context>
     <name>MbTilesMetadata</name>
@@ -2297,6 +2412,21 @@
     <message>
         <source>%1: tile size %2 is outside 1..%3</source>
         <translation>%1: Kachelgröße %2 liegt außerhalb von 1..%3</translation>
+    </message>
+</context>
+<context>
+    <name>OutsideDatabase</name>
+    <message>
+        <source>more than %1 steps</source>
+        <translation>mehr als %1 Schritte</translation>
+    </message>
+    <message>
+        <source>more than %1 rows</source>
+        <translation>mehr als %1 Zeilen</translation>
+    </message>
+    <message>
+        <source>SQLite refused the settings a file from outside is read with</source>
+        <translation>SQLite hat die Einstellungen abgelehnt, mit denen eine Datei von außen gelesen wird</translation>
     </message>
 </context>
 <context>
@@ -4220,6 +4350,13 @@ Ereignisse: %1
     <message>
         <source>The area&apos;s edges from corner %1 and corner %2 cross: draw it without crossing.</source>
         <translation>Die Kanten des Gebiets ab Ecke %1 und Ecke %2 kreuzen sich: zeichnen Sie es ohne Kreuzung.</translation>
+    </message>
+</context>
+<context>
+    <name>TileResponse</name>
+    <message>
+        <source>larger than %1 MiB: not read</source>
+        <translation>größer als %1 MiB: nicht gelesen</translation>
     </message>
 </context>
 <context>
@@ -7337,28 +7474,6 @@ Ausgeschaltet: nicht geprüft</translation>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
-    </message>
-</context>
-<context>
-    <name>OutsideDatabase</name>
-    <message>
-        <source>more than %1 steps</source>
-        <translation>mehr als %1 Schritte</translation>
-    </message>
-    <message>
-        <source>more than %1 rows</source>
-        <translation>mehr als %1 Zeilen</translation>
-    </message>
-    <message>
-        <source>SQLite refused the settings a file from outside is read with</source>
-        <translation>SQLite hat die Einstellungen abgelehnt, mit denen eine Datei von außen gelesen wird</translation>
-    </message>
-</context>
-<context>
-    <name>TileResponse</name>
-    <message>
-        <source>larger than %1 MiB: not read</source>
-        <translation>größer als %1 MiB: nicht gelesen</translation>
     </message>
 </context>
 </TS>

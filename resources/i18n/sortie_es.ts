@@ -967,6 +967,117 @@
     </message>
 </context>
 <context>
+    <name>Geotag</name>
+    <message>
+        <source>the track holds no positions</source>
+        <translation>la traza no contiene posiciones</translation>
+    </message>
+    <message>
+        <source>taken at %1, %2 s before the track starts (%3)</source>
+        <translation>tomada a las %1, %2 s antes de que empiece la traza (%3)</translation>
+    </message>
+    <message>
+        <source>taken at %1, %2 s after the track ends (%3)</source>
+        <translation>tomada a las %1, %2 s después de que termine la traza (%3)</translation>
+    </message>
+    <message>
+        <source>taken at %1, in a gap of %2 s in the track (from %3 to %4; at most %5 s is bridged)</source>
+        <translation>tomada a las %1, en un hueco de %2 s de la traza (de %3 a %4; se salvan como mucho %5 s)</translation>
+    </message>
+    <message>
+        <source>it holds no capture time (EXIF DateTimeOriginal or XMP exif:DateTimeOriginal)</source>
+        <translation>no contiene la hora de captura (EXIF DateTimeOriginal o XMP exif:DateTimeOriginal)</translation>
+    </message>
+    <message>
+        <source>its copy cannot be made in %1: %2</source>
+        <translation>no se puede hacer su copia en %1: %2</translation>
+    </message>
+    <message>
+        <source>its copy cannot be put in place: %1</source>
+        <translation>su copia no se puede poner en su sitio: %1</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder of photos that can be read</source>
+        <translation>%1 no es una carpeta de fotos que se pueda leer</translation>
+    </message>
+    <message>
+        <source>%1 holds no photos (.jpg, .jpeg, .tif, .tiff, .dng)</source>
+        <translation>%1 no contiene fotos (.jpg, .jpeg, .tif, .tiff, .dng)</translation>
+    </message>
+    <message>
+        <source>no folder given for the geotagged copies</source>
+        <translation>no se ha indicado ninguna carpeta para las copias georreferenciadas</translation>
+    </message>
+    <message>
+        <source>%1: the folder for the geotagged copies cannot be made</source>
+        <translation>%1: no se puede crear la carpeta para las copias georreferenciadas</translation>
+    </message>
+    <message>
+        <source>%1 is the photos&apos; own folder: the copies go elsewhere, the originals are never changed</source>
+        <translation>%1 es la propia carpeta de las fotos: las copias van a otro sitio, los originales nunca se modifican</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot read it (%1)</source>
+        <translation>exiv2 no puede leerlo (%1)</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot open it</source>
+        <translation>exiv2 no puede abrirlo</translation>
+    </message>
+    <message>
+        <source>its OffsetTimeOriginal &quot;%1&quot; is no time zone offset (±HH:MM)</source>
+        <translation>su OffsetTimeOriginal «%1» no es un desfase de zona horaria (±HH:MM)</translation>
+    </message>
+    <message>
+        <source>no valid position to write</source>
+        <translation>no hay una posición válida que escribir</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot write its tags (%1)</source>
+        <translation>exiv2 no puede escribir sus etiquetas (%1)</translation>
+    </message>
+    <message>
+        <source>%1 is not a GPX file (its root element is &lt;%2&gt;, not &lt;gpx&gt;)</source>
+        <translation>%1 no es un archivo GPX (su elemento raíz es &lt;%2&gt;, no &lt;gpx&gt;)</translation>
+    </message>
+    <message>
+        <source>%1: a track point needs lat (-90 to 90) and lon (-180 to 180) in degrees, not lat=&quot;%2&quot; lon=&quot;%3&quot;</source>
+        <translation>%1: un punto de la traza necesita lat (de -90 a 90) y lon (de -180 a 180) en grados, no lat=&quot;%2&quot; lon=&quot;%3&quot;</translation>
+    </message>
+    <message>
+        <source>%1: &lt;ele&gt; &quot;%2&quot; is no elevation in metres</source>
+        <translation>%1: &lt;ele&gt; «%2» no es una altitud en metros</translation>
+    </message>
+    <message>
+        <source>%1: &lt;time&gt; &quot;%2&quot; is no UTC time (YYYY-MM-DDThh:mm:ssZ)</source>
+        <translation>%1: &lt;time&gt; «%2» no es una hora UTC (YYYY-MM-DDThh:mm:ssZ)</translation>
+    </message>
+    <message>
+        <source>%1: the track point has no &lt;time&gt;, so no photo can be matched to it</source>
+        <translation>%1: el punto de la traza no tiene &lt;time&gt;, así que no se le puede asignar ninguna foto</translation>
+    </message>
+    <message>
+        <source>%1 is not a readable GPX file: %2</source>
+        <translation>%1 no es un archivo GPX legible: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a GPX file (no &lt;gpx&gt; element)</source>
+        <translation>%1 no es un archivo GPX (no tiene elemento &lt;gpx&gt;)</translation>
+    </message>
+    <message>
+        <source>%1 holds no track points (&lt;trkpt&gt;)</source>
+        <translation>%1 no contiene puntos de traza (&lt;trkpt&gt;)</translation>
+    </message>
+    <message>
+        <source>%1 has no such vehicle</source>
+        <translation>%1 no tiene ese vehículo</translation>
+    </message>
+    <message>
+        <source>%1: vehicle %2 reported no position</source>
+        <translation>%1: el vehículo %2 no informó de ninguna posición</translation>
+    </message>
+</context>
+<context>
     <name>HciConnection</name>
     <message>
         <source>type %1</source>
@@ -1890,6 +2001,10 @@
         <source>The MBTiles file %1 has more than %2 metadata rows.</source>
         <translation>El archivo MBTiles %1 tiene más de %2 filas de metadatos.</translation>
     </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>detenido: %1</translation>
+    </message>
 </context>
 <context>
     <name>MbTilesMetadata</name>
@@ -2297,6 +2412,21 @@
     <message>
         <source>%1: tile size %2 is outside 1..%3</source>
         <translation>%1: el tamaño de tesela %2 está fuera de 1..%3</translation>
+    </message>
+</context>
+<context>
+    <name>OutsideDatabase</name>
+    <message>
+        <source>more than %1 steps</source>
+        <translation>más de %1 pasos</translation>
+    </message>
+    <message>
+        <source>more than %1 rows</source>
+        <translation>más de %1 filas</translation>
+    </message>
+    <message>
+        <source>SQLite refused the settings a file from outside is read with</source>
+        <translation>SQLite rechazó los ajustes con los que se lee un archivo de fuera</translation>
     </message>
 </context>
 <context>
@@ -4220,6 +4350,13 @@ eventos:   %1
     <message>
         <source>The area&apos;s edges from corner %1 and corner %2 cross: draw it without crossing.</source>
         <translation>Los lados del área desde la esquina %1 y la esquina %2 se cruzan: dibújela sin cruces.</translation>
+    </message>
+</context>
+<context>
+    <name>TileResponse</name>
+    <message>
+        <source>larger than %1 MiB: not read</source>
+        <translation>mayor de %1 MiB: no se lee</translation>
     </message>
 </context>
 <context>
@@ -7337,28 +7474,6 @@ Desactivada: no comprobada</translation>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
-    </message>
-</context>
-<context>
-    <name>OutsideDatabase</name>
-    <message>
-        <source>more than %1 steps</source>
-        <translation>más de %1 pasos</translation>
-    </message>
-    <message>
-        <source>more than %1 rows</source>
-        <translation>más de %1 filas</translation>
-    </message>
-    <message>
-        <source>SQLite refused the settings a file from outside is read with</source>
-        <translation>SQLite rechazó los ajustes con los que se lee un archivo de fuera</translation>
-    </message>
-</context>
-<context>
-    <name>TileResponse</name>
-    <message>
-        <source>larger than %1 MiB: not read</source>
-        <translation>mayor de %1 MiB: no se lee</translation>
     </message>
 </context>
 </TS>
