@@ -25,10 +25,12 @@ MainWindow::MainWindow(client::ClientGraph &graph, AppSettings &settings, const 
         for (const QQmlError &warning : warnings)
             m_loadWarnings << warning.toString();
     });
-    // Main.qml's three required properties: everything the views use comes from the graph.
+    // Main.qml's four required properties: everything the views use comes from the graph; how they
+    // look, from the theme.
     m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(&settings)},
                                     {QStringLiteral("translations"), QVariant::fromValue(m_translations.get())},
-                                    {QStringLiteral("graph"), QVariant::fromValue(&graph)}});
+                                    {QStringLiteral("graph"), QVariant::fromValue(&graph)},
+                                    {QStringLiteral("theme"), QVariant::fromValue(&m_theme)}});
     m_engine->load(QUrl(QString::fromLatin1(kMainQml)));
     if (!m_engine->rootObjects().isEmpty())
         m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());

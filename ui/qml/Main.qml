@@ -13,6 +13,8 @@ ApplicationWindow {
     // Each page takes what it uses from it; `graph.recovery` is null in a program or fixture that
     // keeps no autosave folder, the fleet's alerts are null in one without vehicles.
     required property ClientGraph graph
+    // The colours, spacing and type sizes (ui/theme): made by ui::MainWindow, following the setting.
+    required property Theme theme
     property string connectionState: graph.connection.state
     property string connectionStateText: graph.connection.stateText  // the state in the operator's words
     property string connectionDetail: graph.connection.statusDetail
@@ -23,7 +25,7 @@ ApplicationWindow {
     property alias telemetryPage: telemetryPage
     property alias helpOverlay: help
     property alias restoreDialog: restoreDialog
-    readonly property bool dark: palette.window.hslLightness < 0.5
+    readonly property bool dark: theme.darkGround
     readonly property MapView activeMap: tabs.currentIndex === 2 ? telemetryPage.map : missionPage.map
 
     width: 1280
@@ -31,6 +33,27 @@ ApplicationWindow {
     minimumWidth: 800
     minimumHeight: 500
     title: qsTr("Sortie")
+
+    // The controls' palette is the theme's (every page and dialog inherits it).
+    palette.window: theme.window
+    palette.windowText: theme.windowText
+    palette.base: theme.base
+    palette.alternateBase: theme.alternateBase
+    palette.text: theme.text
+    palette.button: theme.button
+    palette.buttonText: theme.buttonText
+    palette.brightText: theme.windowText
+    palette.highlight: theme.highlight
+    palette.highlightedText: theme.highlightedText
+    palette.placeholderText: theme.placeholderText
+    palette.toolTipBase: theme.toolTipBase
+    palette.toolTipText: theme.toolTipText
+    palette.link: theme.link
+    palette.light: theme.light
+    palette.midlight: theme.midlight
+    palette.mid: theme.mid
+    palette.dark: theme.dark
+    palette.shadow: theme.shadow
 
     function showPage(index) { tabs.currentIndex = index }
     function toggleHelp() { help.opened ? help.close() : help.open() }
@@ -81,6 +104,7 @@ ApplicationWindow {
                     id: offlineMapsDialog
                     active: false
                     sourceComponent: OfflineMapsDialog {
+                        theme: window.theme
                         offlineMaps: window.graph.offlineMaps
                         routeModel: window.graph.missions.document.model
                         map: window.activeMap
@@ -98,7 +122,7 @@ ApplicationWindow {
                 Loader { // made when first opened: the start-up does not pay for it
                     id: logSettingsDialog
                     active: false
-                    sourceComponent: FlightLogSettingsDialog { settings: window.graph.recordingSettings }
+                    sourceComponent: FlightLogSettingsDialog { settings: window.graph.recordingSettings; theme: window.theme }
                 }
             }
             ToolButton {
@@ -140,13 +164,14 @@ ApplicationWindow {
             objectName: "loginPage"
             appSettings: window.appSettings
             graph: window.graph
+            theme: window.theme
         }
         MissionPage {
             id: missionPage
             objectName: "missionPage"
             graph: window.graph
             units: units
-            dark: window.dark
+            theme: window.theme
             mapSource: window.appSettings.mapSource
             tileUrlTemplate: window.appSettings.tileUrlTemplate
             mbtilesFile: window.appSettings.mbtilesFile
@@ -164,7 +189,7 @@ ApplicationWindow {
             objectName: "telemetryPage"
             graph: window.graph
             units: units
-            dark: window.dark
+            theme: window.theme
             mapSource: window.appSettings.mapSource
             tileUrlTemplate: window.appSettings.tileUrlTemplate
             mbtilesFile: window.appSettings.mbtilesFile
@@ -182,6 +207,7 @@ ApplicationWindow {
         connectionDetail: window.connectionDetail
         map: window.activeMap
         units: units
+        theme: window.theme
     }
 
     Shortcuts {
@@ -206,6 +232,7 @@ ApplicationWindow {
         id: restoreDialog
         objectName: "restoreDialog"
         recovery: window.graph.recovery
+        theme: window.theme
         // Also alone, to say what went wrong with an autosave (a file kept aside) until read.
         visible: window.graph.recovery !== null && (window.graph.recovery.available || window.graph.recovery.message.length > 0)
         onRestored: {
@@ -222,5 +249,6 @@ ApplicationWindow {
         id: mapSourceDialog
         objectName: "mapSourceDialog"
         appSettings: window.appSettings
+        theme: window.theme
     }
 }
