@@ -18,6 +18,10 @@ MainWindow::MainWindow(client::ClientGraph &graph, AppSettings &settings, const 
     , m_engine(std::make_unique<QQmlApplicationEngine>())
 {
     addImportPaths(*m_engine);
+    // The theme follows the operator's choice of colours, at once.
+    m_theme.setScheme(Theme::schemeFromName(settings.colourScheme()));
+    QObject::connect(&settings, &AppSettings::colourSchemeChanged, &m_theme,
+                     [this, &settings] { m_theme.setScheme(Theme::schemeFromName(settings.colourScheme())); });
     m_translations = std::make_unique<Translations>(settings, *m_engine, translationsFolder); // before the first word is shown
     QObject::connect(m_engine.get(), &QQmlEngine::warnings, m_engine.get(), [this](const QList<QQmlError> &warnings) {
         if (m_window)

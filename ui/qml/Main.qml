@@ -146,6 +146,19 @@ ApplicationWindow {
                 ToolTip.visible: hovered
                 ToolTip.text: qsTr("The language of Sortie, applied at once")
             }
+            ComboBox {
+                id: schemeBox
+                objectName: "colourSchemeBox"
+                model: window.theme.schemes
+                textRole: "name"
+                valueRole: "code"
+                // The names are made anew in each language: the choice is found again in the list.
+                onModelChanged: currentIndex = Qt.binding(() => Math.max(0, indexOfValue(window.appSettings.colourScheme)))
+                implicitContentWidthPolicy: ComboBox.WidestText
+                onActivated: window.appSettings.colourScheme = currentValue
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("The colours of Sortie: the system's, light, dark, or high contrast for sunlight")
+            }
             ToolButton {
                 text: "?"
                 onClicked: window.toggleHelp()
