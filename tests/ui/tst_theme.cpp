@@ -126,7 +126,7 @@ private slots:
 
     void schemesDiffer()
     {
-        const ThemeColours light = ThemeColours::light(), dark = ThemeColours::dark(), sun = ThemeColours::sunlight();
+        const ThemeColours light = ThemeColours::lightScheme(), dark = ThemeColours::darkScheme(), sun = ThemeColours::sunlightScheme();
         QVERIFY(!light.isDark());
         QVERIFY(dark.isDark());
         QVERIFY(sun.isDark());
@@ -171,7 +171,7 @@ private slots:
         theme.setScheme(Theme::Scheme::Sunlight); // no change, no signal
         QCOMPARE(colours.count(), 1);
         theme.setScheme(Theme::Scheme::Light);
-        QCOMPARE(theme.window(), ThemeColours::light().window);
+        QCOMPARE(theme.window(), ThemeColours::lightScheme().window);
         QVERIFY(!theme.darkGround());
         QVERIFY(theme.controlHeight() >= 40); // touch-sized
         QVERIFY(theme.fontSize() >= 14);
@@ -185,14 +185,14 @@ private slots:
         QTRY_COMPARE(colours.count(), 1);
         QCOMPARE(theme.window(), QColor(0x2b, 0x2b, 0x2b));
         QVERIFY(theme.darkGround());
-        QCOMPARE(theme.problemText(), ThemeColours::dark().problemText); // the dark states on a dark desktop
+        QCOMPARE(theme.problemText(), ThemeColours::darkScheme().problemText); // the dark states on a dark desktop
         // A scheme of its own does not follow the platform.
         theme.setScheme(Theme::Scheme::Light);
         const int before = int(colours.count());
         QGuiApplication::setPalette(QPalette());
         QCoreApplication::processEvents();
         QCOMPARE(int(colours.count()), before);
-        QCOMPARE(theme.window(), ThemeColours::light().window);
+        QCOMPARE(theme.window(), ThemeColours::lightScheme().window);
     }
 };
 

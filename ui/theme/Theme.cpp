@@ -74,9 +74,9 @@ void Theme::update()
 ThemeColours Theme::coloursOf(Scheme scheme, const QPalette &platform)
 {
     switch (scheme) {
-    case Scheme::Light: return ThemeColours::light();
-    case Scheme::Dark: return ThemeColours::dark();
-    case Scheme::Sunlight: return ThemeColours::sunlight();
+    case Scheme::Light: return ThemeColours::lightScheme();
+    case Scheme::Dark: return ThemeColours::darkScheme();
+    case Scheme::Sunlight: return ThemeColours::sunlightScheme();
     case Scheme::System: break;
     }
     return ThemeColours::fromPlatform(platform);
@@ -109,7 +109,7 @@ QVariantList Theme::schemes() const
 
 const ThemeColours &coloursOf(const Theme *theme)
 {
-    static const ThemeColours light = ThemeColours::light();
+    static const ThemeColours light = ThemeColours::lightScheme();
     return theme ? theme->colours() : light;
 }
 

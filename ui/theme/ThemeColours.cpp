@@ -69,7 +69,7 @@ void darkStates(ThemeColours &c)
 }
 } // namespace
 
-ThemeColours ThemeColours::light()
+ThemeColours ThemeColours::lightScheme()
 {
     ThemeColours c;
     c.window = rgb(0xf3f4f6);
@@ -95,7 +95,7 @@ ThemeColours ThemeColours::light()
     return c;
 }
 
-ThemeColours ThemeColours::dark()
+ThemeColours ThemeColours::darkScheme()
 {
     ThemeColours c;
     c.window = rgb(0x202124);
@@ -121,7 +121,7 @@ ThemeColours ThemeColours::dark()
     return c;
 }
 
-ThemeColours ThemeColours::sunlight()
+ThemeColours ThemeColours::sunlightScheme()
 {
     ThemeColours c;
     c.window = rgb(0x000000);
@@ -173,7 +173,7 @@ ThemeColours ThemeColours::sunlight()
 ThemeColours ThemeColours::fromPlatform(const QPalette &platform)
 {
     const bool darkGround = platform.color(QPalette::Window).lightnessF() < 0.5;
-    ThemeColours c = darkGround ? dark() : light();
+    ThemeColours c = darkGround ? darkScheme() : lightScheme();
     c.window = platform.color(QPalette::Window);
     c.windowText = platform.color(QPalette::WindowText);
     c.base = platform.color(QPalette::Base);

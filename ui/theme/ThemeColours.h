@@ -33,10 +33,10 @@ struct ThemeColours
 
     MapPalette map;
 
-    static ThemeColours light();
-    static ThemeColours dark();
+    static ThemeColours lightScheme();
+    static ThemeColours darkScheme();
     // High-contrast dark for sunlight: every pair of words and ground reaches 7:1.
-    static ThemeColours sunlight();
+    static ThemeColours sunlightScheme();
     // The platform's palette for the controls, with the light or dark states to suit it.
     static ThemeColours fromPlatform(const QPalette &platform);
 
