@@ -126,10 +126,12 @@ ThemeColours ThemeColours::sunlightScheme()
     ThemeColours c;
     c.window = rgb(0x000000);
     c.windowText = rgb(0xffffff);
-    c.base = rgb(0x000000);
-    c.alternateBase = rgb(0x141414);
+    // Fields and buttons a step above the black ground: the style draws their edges from the
+    // window's colour (darker still), so their own fill is what shows where they are.
+    c.base = rgb(0x1c1c1c);
+    c.alternateBase = rgb(0x2a2a2a);
     c.text = rgb(0xffffff);
-    c.button = rgb(0x1f1f1f);
+    c.button = rgb(0x2e2e2e);
     c.buttonText = rgb(0xffffff);
     c.highlight = rgb(0xffd600);
     c.highlightedText = rgb(0x000000);
@@ -144,12 +146,12 @@ ThemeColours ThemeColours::sunlightScheme()
     c.dark = rgb(0x9e9e9e);
     c.shadow = rgb(0x000000);
     // Bright fills with black words: in the sun, light on dark reads best.
-    c.problem = rgb(0xff6e6e);
+    c.problem = rgb(0xff8a8a);
     c.warning = rgb(0xffd600);
     c.ok = rgb(0x69f0ae);
     c.info = rgb(0x80d8ff);
     c.missing = rgb(0xbdbdbd);
-    c.problemText = rgb(0xff6e6e);
+    c.problemText = rgb(0xff8a8a);
     c.warningText = rgb(0xffd600);
     c.okText = rgb(0x69f0ae);
     c.infoText = rgb(0x80d8ff);
@@ -164,7 +166,7 @@ ThemeColours ThemeColours::sunlightScheme()
     c.accent = rgb(0x80d8ff);
     c.replay = rgb(0xea80fc);
     c.onReplay = rgb(0x000000);
-    c.rowSelected = rgba(255, 214, 0, 90);
+    c.rowSelected = rgba(255, 214, 0, 70);
     c.rowStripe = rgba(255, 255, 255, 20);
     c.map = MapPalette::sunlight();
     return c;
