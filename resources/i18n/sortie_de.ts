@@ -967,6 +967,29 @@
     </message>
 </context>
 <context>
+    <name>GlanceBar</name>
+    <message>
+        <source>The connection to the server</source>
+        <translation>Die Verbindung zum Server</translation>
+    </message>
+    <message>
+        <source>The vehicle chosen in the fly view, else the first</source>
+        <translation>Das in der Flugansicht gewählte Fahrzeug, sonst das erste</translation>
+    </message>
+    <message>
+        <source>Its GPS: the fix and the satellites in view</source>
+        <translation>Sein GPS: die Positionsbestimmung und die sichtbaren Satelliten</translation>
+    </message>
+    <message>
+        <source>Its battery, against the low and critical levels</source>
+        <translation>Sein Akku, gemessen an der niedrigen und der kritischen Schwelle</translation>
+    </message>
+    <message>
+        <source>Its link: how often its position arrives</source>
+        <translation>Seine Verbindung: wie oft seine Position ankommt</translation>
+    </message>
+</context>
+<context>
     <name>HciConnection</name>
     <message>
         <source>type %1</source>
@@ -1655,6 +1678,30 @@
         <source>The language of Sortie, applied at once</source>
         <translation>Sprache von Sortie, sofort wirksam</translation>
     </message>
+    <message>
+        <source>Display…</source>
+        <translation>Anzeige…</translation>
+    </message>
+    <message>
+        <source>Units, language and colours</source>
+        <translation>Einheiten, Sprache und Farben</translation>
+    </message>
+    <message>
+        <source>Units</source>
+        <translation>Einheiten</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>Colours</source>
+        <translation>Farben</translation>
+    </message>
+    <message>
+        <source>The system&apos;s colours, light, dark, or high contrast for sunlight</source>
+        <translation>Die Farben des Systems, hell, dunkel oder hoher Kontrast für Sonnenlicht</translation>
+    </message>
 </context>
 <context>
     <name>MapPane</name>
@@ -1889,6 +1936,10 @@
     <message>
         <source>The MBTiles file %1 has more than %2 metadata rows.</source>
         <translation>Die MBTiles-Datei %1 hat mehr als %2 Metadatenzeilen.</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>abgebrochen: %1</translation>
     </message>
 </context>
 <context>
@@ -2297,6 +2348,21 @@
     <message>
         <source>%1: tile size %2 is outside 1..%3</source>
         <translation>%1: Kachelgröße %2 liegt außerhalb von 1..%3</translation>
+    </message>
+</context>
+<context>
+    <name>OutsideDatabase</name>
+    <message>
+        <source>more than %1 steps</source>
+        <translation>mehr als %1 Schritte</translation>
+    </message>
+    <message>
+        <source>more than %1 rows</source>
+        <translation>mehr als %1 Zeilen</translation>
+    </message>
+    <message>
+        <source>SQLite refused the settings a file from outside is read with</source>
+        <translation>SQLite hat die Einstellungen abgelehnt, mit denen eine Datei von außen gelesen wird</translation>
     </message>
 </context>
 <context>
@@ -4220,6 +4286,13 @@ Ereignisse: %1
     <message>
         <source>The area&apos;s edges from corner %1 and corner %2 cross: draw it without crossing.</source>
         <translation>Die Kanten des Gebiets ab Ecke %1 und Ecke %2 kreuzen sich: zeichnen Sie es ohne Kreuzung.</translation>
+    </message>
+</context>
+<context>
+    <name>TileResponse</name>
+    <message>
+        <source>larger than %1 MiB: not read</source>
+        <translation>größer als %1 MiB: nicht gelesen</translation>
     </message>
 </context>
 <context>
@@ -7083,6 +7156,69 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::GlanceStatus</name>
+    <message>
+        <source>No server</source>
+        <translation>Kein Server</translation>
+    </message>
+    <message>
+        <source>No vehicle</source>
+        <translation>Kein Fahrzeug</translation>
+    </message>
+    <message>
+        <source>GPS —</source>
+        <translation>GPS —</translation>
+    </message>
+    <message>
+        <source>No fix</source>
+        <translation>Keine Position</translation>
+    </message>
+    <message>
+        <source>2D fix</source>
+        <translation>2D-Position</translation>
+    </message>
+    <message>
+        <source>3D fix</source>
+        <translation>3D-Position</translation>
+    </message>
+    <message>
+        <source>RTK float</source>
+        <translation>RTK float</translation>
+    </message>
+    <message>
+        <source>RTK fixed</source>
+        <translation>RTK fixed</translation>
+    </message>
+    <message>
+        <source>%1, %2 sats</source>
+        <translation>%1, %2 Sat.</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 V</source>
+        <translation>%1 V</translation>
+    </message>
+    <message>
+        <source>Battery —</source>
+        <translation>Akku —</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Verbindung verloren</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Link —</source>
+        <translation>Verbindung —</translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::MbTilesTileSource</name>
     <message>
         <source>MBTiles</source>
@@ -7189,6 +7325,25 @@ Ereignisse: %1
     <message>
         <source>; some points have no data (tried: %1)</source>
         <translation>; einige Punkte haben keine Daten (versucht: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::Theme</name>
+    <message>
+        <source>System colours</source>
+        <translation>Systemfarben</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Hell</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Dunkel</translation>
+    </message>
+    <message>
+        <source>Sunlight (high contrast)</source>
+        <translation>Sonnenlicht (hoher Kontrast)</translation>
     </message>
 </context>
 <context>
@@ -7337,28 +7492,6 @@ Ausgeschaltet: nicht geprüft</translation>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
-    </message>
-</context>
-<context>
-    <name>OutsideDatabase</name>
-    <message>
-        <source>more than %1 steps</source>
-        <translation>mehr als %1 Schritte</translation>
-    </message>
-    <message>
-        <source>more than %1 rows</source>
-        <translation>mehr als %1 Zeilen</translation>
-    </message>
-    <message>
-        <source>SQLite refused the settings a file from outside is read with</source>
-        <translation>SQLite hat die Einstellungen abgelehnt, mit denen eine Datei von außen gelesen wird</translation>
-    </message>
-</context>
-<context>
-    <name>TileResponse</name>
-    <message>
-        <source>larger than %1 MiB: not read</source>
-        <translation>größer als %1 MiB: nicht gelesen</translation>
     </message>
 </context>
 </TS>

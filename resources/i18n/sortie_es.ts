@@ -967,6 +967,29 @@
     </message>
 </context>
 <context>
+    <name>GlanceBar</name>
+    <message>
+        <source>The connection to the server</source>
+        <translation>La conexión con el servidor</translation>
+    </message>
+    <message>
+        <source>The vehicle chosen in the fly view, else the first</source>
+        <translation>El vehículo elegido en la vista de vuelo; si no, el primero</translation>
+    </message>
+    <message>
+        <source>Its GPS: the fix and the satellites in view</source>
+        <translation>Su GPS: el tipo de posición y los satélites a la vista</translation>
+    </message>
+    <message>
+        <source>Its battery, against the low and critical levels</source>
+        <translation>Su batería, frente a los niveles bajo y crítico</translation>
+    </message>
+    <message>
+        <source>Its link: how often its position arrives</source>
+        <translation>Su enlace: con qué frecuencia llega su posición</translation>
+    </message>
+</context>
+<context>
     <name>HciConnection</name>
     <message>
         <source>type %1</source>
@@ -1655,6 +1678,30 @@
         <source>The language of Sortie, applied at once</source>
         <translation>Idioma de Sortie; se aplica al instante</translation>
     </message>
+    <message>
+        <source>Display…</source>
+        <translation>Pantalla…</translation>
+    </message>
+    <message>
+        <source>Units, language and colours</source>
+        <translation>Unidades, idioma y colores</translation>
+    </message>
+    <message>
+        <source>Units</source>
+        <translation>Unidades</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Idioma</translation>
+    </message>
+    <message>
+        <source>Colours</source>
+        <translation>Colores</translation>
+    </message>
+    <message>
+        <source>The system&apos;s colours, light, dark, or high contrast for sunlight</source>
+        <translation>Los colores del sistema, claro, oscuro o alto contraste para la luz del sol</translation>
+    </message>
 </context>
 <context>
     <name>MapPane</name>
@@ -1889,6 +1936,10 @@
     <message>
         <source>The MBTiles file %1 has more than %2 metadata rows.</source>
         <translation>El archivo MBTiles %1 tiene más de %2 filas de metadatos.</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>detenido: %1</translation>
     </message>
 </context>
 <context>
@@ -2297,6 +2348,21 @@
     <message>
         <source>%1: tile size %2 is outside 1..%3</source>
         <translation>%1: el tamaño de tesela %2 está fuera de 1..%3</translation>
+    </message>
+</context>
+<context>
+    <name>OutsideDatabase</name>
+    <message>
+        <source>more than %1 steps</source>
+        <translation>más de %1 pasos</translation>
+    </message>
+    <message>
+        <source>more than %1 rows</source>
+        <translation>más de %1 filas</translation>
+    </message>
+    <message>
+        <source>SQLite refused the settings a file from outside is read with</source>
+        <translation>SQLite rechazó los ajustes con los que se lee un archivo de fuera</translation>
     </message>
 </context>
 <context>
@@ -4220,6 +4286,13 @@ eventos:   %1
     <message>
         <source>The area&apos;s edges from corner %1 and corner %2 cross: draw it without crossing.</source>
         <translation>Los lados del área desde la esquina %1 y la esquina %2 se cruzan: dibújela sin cruces.</translation>
+    </message>
+</context>
+<context>
+    <name>TileResponse</name>
+    <message>
+        <source>larger than %1 MiB: not read</source>
+        <translation>mayor de %1 MiB: no se lee</translation>
     </message>
 </context>
 <context>
@@ -7083,6 +7156,69 @@ eventos:   %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::GlanceStatus</name>
+    <message>
+        <source>No server</source>
+        <translation>Sin servidor</translation>
+    </message>
+    <message>
+        <source>No vehicle</source>
+        <translation>Sin vehículo</translation>
+    </message>
+    <message>
+        <source>GPS —</source>
+        <translation>GPS —</translation>
+    </message>
+    <message>
+        <source>No fix</source>
+        <translation>Sin posición</translation>
+    </message>
+    <message>
+        <source>2D fix</source>
+        <translation>Posición 2D</translation>
+    </message>
+    <message>
+        <source>3D fix</source>
+        <translation>Posición 3D</translation>
+    </message>
+    <message>
+        <source>RTK float</source>
+        <translation>RTK flotante</translation>
+    </message>
+    <message>
+        <source>RTK fixed</source>
+        <translation>RTK fija</translation>
+    </message>
+    <message>
+        <source>%1, %2 sats</source>
+        <translation>%1, %2 sat.</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 V</source>
+        <translation>%1 V</translation>
+    </message>
+    <message>
+        <source>Battery —</source>
+        <translation>Batería —</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Enlace perdido</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Link —</source>
+        <translation>Enlace —</translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::MbTilesTileSource</name>
     <message>
         <source>MBTiles</source>
@@ -7189,6 +7325,25 @@ eventos:   %1
     <message>
         <source>; some points have no data (tried: %1)</source>
         <translation>; algunos puntos no tienen datos (se probó: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::Theme</name>
+    <message>
+        <source>System colours</source>
+        <translation>Colores del sistema</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Claro</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Oscuro</translation>
+    </message>
+    <message>
+        <source>Sunlight (high contrast)</source>
+        <translation>Luz solar (alto contraste)</translation>
     </message>
 </context>
 <context>
@@ -7337,28 +7492,6 @@ Desactivada: no comprobada</translation>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
-    </message>
-</context>
-<context>
-    <name>OutsideDatabase</name>
-    <message>
-        <source>more than %1 steps</source>
-        <translation>más de %1 pasos</translation>
-    </message>
-    <message>
-        <source>more than %1 rows</source>
-        <translation>más de %1 filas</translation>
-    </message>
-    <message>
-        <source>SQLite refused the settings a file from outside is read with</source>
-        <translation>SQLite rechazó los ajustes con los que se lee un archivo de fuera</translation>
-    </message>
-</context>
-<context>
-    <name>TileResponse</name>
-    <message>
-        <source>larger than %1 MiB: not read</source>
-        <translation>mayor de %1 MiB: no se lee</translation>
     </message>
 </context>
 </TS>

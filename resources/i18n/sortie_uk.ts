@@ -968,6 +968,29 @@
     </message>
 </context>
 <context>
+    <name>GlanceBar</name>
+    <message>
+        <source>The connection to the server</source>
+        <translation>З&apos;єднання із сервером</translation>
+    </message>
+    <message>
+        <source>The vehicle chosen in the fly view, else the first</source>
+        <translation>Апарат, вибраний у вікні польоту, інакше перший</translation>
+    </message>
+    <message>
+        <source>Its GPS: the fix and the satellites in view</source>
+        <translation>Його GPS: тип визначення і видимі супутники</translation>
+    </message>
+    <message>
+        <source>Its battery, against the low and critical levels</source>
+        <translation>Його акумулятор відносно низького і критичного рівнів</translation>
+    </message>
+    <message>
+        <source>Its link: how often its position arrives</source>
+        <translation>Його зв&apos;язок: як часто надходить його позиція</translation>
+    </message>
+</context>
+<context>
     <name>HciConnection</name>
     <message>
         <source>type %1</source>
@@ -1656,6 +1679,30 @@
         <source>The language of Sortie, applied at once</source>
         <translation>Мова Sortie, застосовується одразу</translation>
     </message>
+    <message>
+        <source>Display…</source>
+        <translation>Вигляд…</translation>
+    </message>
+    <message>
+        <source>Units, language and colours</source>
+        <translation>Одиниці, мова і кольори</translation>
+    </message>
+    <message>
+        <source>Units</source>
+        <translation>Одиниці</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Мова</translation>
+    </message>
+    <message>
+        <source>Colours</source>
+        <translation>Кольори</translation>
+    </message>
+    <message>
+        <source>The system&apos;s colours, light, dark, or high contrast for sunlight</source>
+        <translation>Кольори системи, світлі, темні або висока контрастність для сонячного світла</translation>
+    </message>
 </context>
 <context>
     <name>MapPane</name>
@@ -1890,6 +1937,10 @@
     <message>
         <source>The MBTiles file %1 has more than %2 metadata rows.</source>
         <translation>Файл MBTiles %1 має понад %2 рядків метаданих.</translation>
+    </message>
+    <message>
+        <source>stopped: %1</source>
+        <translation>зупинено: %1</translation>
     </message>
 </context>
 <context>
@@ -2304,6 +2355,21 @@
     <message>
         <source>%1: tile size %2 is outside 1..%3</source>
         <translation>%1: розмір тайла %2 поза межами 1..%3</translation>
+    </message>
+</context>
+<context>
+    <name>OutsideDatabase</name>
+    <message>
+        <source>more than %1 steps</source>
+        <translation>понад %1 кроків</translation>
+    </message>
+    <message>
+        <source>more than %1 rows</source>
+        <translation>понад %1 рядків</translation>
+    </message>
+    <message>
+        <source>SQLite refused the settings a file from outside is read with</source>
+        <translation>SQLite відхилив налаштування, з якими читається файл ззовні</translation>
     </message>
 </context>
 <context>
@@ -4231,6 +4297,13 @@ events:   %1
     <message>
         <source>The area&apos;s edges from corner %1 and corner %2 cross: draw it without crossing.</source>
         <translation>Сторони області від кута %1 і кута %2 перетинаються: намалюйте її без перетинів.</translation>
+    </message>
+</context>
+<context>
+    <name>TileResponse</name>
+    <message>
+        <source>larger than %1 MiB: not read</source>
+        <translation>більше за %1 МіБ: не прочитано</translation>
     </message>
 </context>
 <context>
@@ -7120,6 +7193,69 @@ events:   %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::GlanceStatus</name>
+    <message>
+        <source>No server</source>
+        <translation>Немає сервера</translation>
+    </message>
+    <message>
+        <source>No vehicle</source>
+        <translation>Немає апарата</translation>
+    </message>
+    <message>
+        <source>GPS —</source>
+        <translation>GPS —</translation>
+    </message>
+    <message>
+        <source>No fix</source>
+        <translation>Немає фіксації</translation>
+    </message>
+    <message>
+        <source>2D fix</source>
+        <translation>2D-фіксація</translation>
+    </message>
+    <message>
+        <source>3D fix</source>
+        <translation>3D-фіксація</translation>
+    </message>
+    <message>
+        <source>RTK float</source>
+        <translation>RTK float</translation>
+    </message>
+    <message>
+        <source>RTK fixed</source>
+        <translation>RTK fixed</translation>
+    </message>
+    <message>
+        <source>%1, %2 sats</source>
+        <translation>%1, %2 суп.</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 V</source>
+        <translation>%1 В</translation>
+    </message>
+    <message>
+        <source>Battery —</source>
+        <translation>Акумулятор —</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Зв&apos;язок втрачено</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Гц</translation>
+    </message>
+    <message>
+        <source>Link —</source>
+        <translation>Зв&apos;язок —</translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::MbTilesTileSource</name>
     <message>
         <source>MBTiles</source>
@@ -7228,6 +7364,25 @@ events:   %1
     <message>
         <source>; some points have no data (tried: %1)</source>
         <translation>; для деяких точок немає даних (спробувано: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::Theme</name>
+    <message>
+        <source>System colours</source>
+        <translation>Кольори системи</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Світлі</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Темні</translation>
+    </message>
+    <message>
+        <source>Sunlight (high contrast)</source>
+        <translation>Сонячне світло (висока контрастність)</translation>
     </message>
 </context>
 <context>
@@ -7378,28 +7533,6 @@ Switched off: not checked</source>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
-    </message>
-</context>
-<context>
-    <name>OutsideDatabase</name>
-    <message>
-        <source>more than %1 steps</source>
-        <translation>понад %1 кроків</translation>
-    </message>
-    <message>
-        <source>more than %1 rows</source>
-        <translation>понад %1 рядків</translation>
-    </message>
-    <message>
-        <source>SQLite refused the settings a file from outside is read with</source>
-        <translation>SQLite відхилив налаштування, з якими читається файл ззовні</translation>
-    </message>
-</context>
-<context>
-    <name>TileResponse</name>
-    <message>
-        <source>larger than %1 MiB: not read</source>
-        <translation>більше за %1 МіБ: не прочитано</translation>
     </message>
 </context>
 </TS>
