@@ -7,6 +7,7 @@
 #include "Messages.pb.h"
 
 #include <QScopeGuard>
+#include <QtConcurrent/QtConcurrentRun>
 #include <QSslSocket>
 #include <QCoreApplication>
 
@@ -82,6 +83,7 @@ void HciConnection::connectToServer(const QString &host, quint16 port)
     m_host = host;
     m_peer = host.contains(u':') ? QStringLiteral("[%1]:%2").arg(host).arg(port) : QStringLiteral("%1:%2").arg(host).arg(port);
     m_decoder.reset();
+    forgetDecodingAside();
     m_verdict = {};
     setState(State::Connecting);
     qCInfo(lcHci) << "connecting to" << m_peer << (m_tls.enabled ? "over TLS" : "in clear");
@@ -170,6 +172,7 @@ void HciConnection::closeWith(const HciError &reason)
     setState(State::Unconnected);
     m_socket->abort();
     m_decoder.reset();
+    forgetDecodingAside();
     m_routes.clear();
     qCInfo(lcHci).noquote() << "connection to" << m_peer << "closed:" << reason.message();
 
@@ -183,6 +186,12 @@ void HciConnection::closeWith(const HciError &reason)
             return;
     }
     emit disconnected(reason);
+}
+
+void HciConnection::forgetDecodingAside()
+{
+    ++m_generation;
+    m_decodingAside = false;
 }
 
 void HciConnection::setState(State state)
@@ -263,32 +272,75 @@ void HciConnection::unroute(int32_t subscriptionId)
 
 void HciConnection::onReadyRead()
 {
+    if (m_decodingAside)
+        return; // the bytes wait in the socket until the big frame before them is decoded
     QPointer<HciConnection> self(this);
     ++m_reading;
     const auto done = qScopeGuard([&] {
         if (self)
             --m_reading;
     });
-    while (m_state == State::Connected && m_socket->bytesAvailable() > 0) {
+    if (!takeFrames())
+        return;
+    while (m_state == State::Connected && !m_decodingAside && m_socket->bytesAvailable() > 0) {
         const QByteArray chunk = m_socket->read(64 * 1024);
         m_bytesReceived += quint64(chunk.size());
         m_decoder.feed(std::string_view(chunk.constData(), size_t(chunk.size())));
-        while (auto result = m_decoder.next()) {
-            if (auto *frame = std::get_if<HciFrame>(&*result)) {
-                ++m_framesReceived;
-                dispatch(*frame);
-            } else {
-                const auto &dropped = std::get<HciDroppedFrame>(*result);
-                dropFrame(QCoreApplication::translate("HciConnection", "%1 at byte %2: %3")
-                              .arg(QString::fromLatin1(toString(dropped.reason)))
-                              .arg(dropped.offset)
-                              .arg(QString::fromStdString(dropped.detail)));
-            }
-            // A slot may have closed or deleted the connection; stop before touching anything more.
-            if (!self || m_state != State::Connected)
-                return;
-        }
+        if (!takeFrames())
+            return;
     }
+}
+
+bool HciConnection::takeFrames()
+{
+    QPointer<HciConnection> self(this);
+    while (!m_decodingAside) {
+        if (auto whole = m_decoder.takeWhole(kDecodeAsideFromBytes)) {
+            decodeAside(std::move(*whole));
+            return true;
+        }
+        auto result = m_decoder.next();
+        if (!result)
+            return true;
+        handle(*result);
+        // A slot may have closed or deleted the connection; stop before touching anything more.
+        if (!self || m_state != State::Connected)
+            return false;
+    }
+    return true;
+}
+
+void HciConnection::decodeAside(HciRawFrame frame)
+{
+    // Parsing tens of MiB takes long enough to freeze the window: another thread decodes the frame
+    // while this one goes on, and the frames after it wait, so answers keep the stream's order.
+    m_decodingAside = true;
+    const quint64 generation = m_generation;
+    QtConcurrent::run([frame = std::move(frame)] { return std::make_shared<HciFrameDecoder::Result>(HciFrameDecoder::decode(frame)); })
+        .then(this, [this, generation](const std::shared_ptr<HciFrameDecoder::Result> &result) {
+            if (generation != m_generation)
+                return; // decoded for a connection that has since closed
+            m_decodingAside = false;
+            ++m_framesDecodedAside;
+            QPointer<HciConnection> self(this);
+            handle(*result);
+            if (self && m_state == State::Connected)
+                onReadyRead(); // the frames and bytes that waited
+        });
+}
+
+void HciConnection::handle(HciFrameDecoder::Result &result)
+{
+    if (auto *frame = std::get_if<HciFrame>(&result)) {
+        ++m_framesReceived;
+        dispatch(*frame);
+        return;
+    }
+    const auto &dropped = std::get<HciDroppedFrame>(result);
+    dropFrame(QCoreApplication::translate("HciConnection", "%1 at byte %2: %3")
+                  .arg(QString::fromLatin1(toString(dropped.reason)))
+                  .arg(dropped.offset)
+                  .arg(QString::fromStdString(dropped.detail)));
 }
 
 void HciConnection::dropFrame(const QString &reason)

@@ -75,6 +75,9 @@ public:
     quint64 bytesReceived() const { return m_bytesReceived; }
     quint64 framesDropped() const { return m_framesDropped; }
     quint64 unroutedNotifications() const { return m_unrouted; }
+    // Frames of at least kDecodeAsideFromBytes are decoded on another thread, in stream order.
+    static constexpr size_t kDecodeAsideFromBytes = size_t(1) << 20;
+    quint64 framesDecodedAside() const { return m_framesDecodedAside; }
 
 signals:
     void stateChanged(sortie::hci::HciConnection::State state);
@@ -94,6 +97,10 @@ private:
     void onEncrypted();
     void onReadyRead();
     void onSocketError();
+    bool takeFrames();
+    void decodeAside(HciRawFrame frame);
+    void forgetDecodingAside();
+    void handle(HciFrameDecoder::Result &result);
     void dispatch(HciFrame &frame);
     void dispatchNotification(const HciFrame &frame);
     void dropFrame(const QString &reason);
@@ -121,6 +128,9 @@ private:
     quint64 m_framesDropped = 0;
     quint64 m_unrouted = 0;
     int m_reading = 0; // > 0 while inside the socket's readyRead
+    bool m_decodingAside = false;
+    quint64 m_generation = 0; // which connection a frame decoding aside belongs to
+    quint64 m_framesDecodedAside = 0;
 };
 
 } // namespace sortie::hci

@@ -60,6 +60,7 @@ enum class HciDropReason {
     InvalidPayload, // the payload is not valid protobuf for the mapped message
     MissingRequired,// a proto2 required field is missing
     BadLength,      // the length is negative or over 64 MiB: the decoder resynchronises (docs/protocols.md)
+    TooLarge,       // the payload would decode into more than kHciMaxDecodedBytes (HciDecodedSize.h)
 };
 
 const char *toString(HciDropReason reason);

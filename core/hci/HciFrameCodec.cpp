@@ -1,5 +1,7 @@
 #include "HciFrameCodec.h"
 
+#include "HciDecodedSize.h"
+
 #include "HciMessageTypes.h"
 #include "HciTelemetryFastPath.h"
 #include "Messages.pb.h"
@@ -12,6 +14,18 @@
 namespace sortie::hci {
 namespace {
 constexpr int32_t kNotificationType = 1;
+
+// Why a big payload is not parsed: it would decode into more memory than one frame may take.
+std::optional<std::string> decodedSizeProblem(const google::protobuf::Message &prototype, std::string_view payload)
+{
+    if (payload.size() < kHciPrescanFromBytes)
+        return std::nullopt;
+    const auto estimate = estimateDecodedBytes(payload, *prototype.GetDescriptor());
+    if (!estimate || *estimate <= kHciMaxDecodedBytes)
+        return std::nullopt; // malformed bytes are the parser's to name
+    return prototype.GetDescriptor()->name() + " of " + std::to_string(payload.size()) + " bytes would decode into more than "
+        + std::to_string(kHciMaxDecodedBytes >> 20) + " MiB";
+}
 } // namespace
 
 const char *toString(HciDropReason reason)
@@ -23,6 +37,7 @@ const char *toString(HciDropReason reason)
     case HciDropReason::InvalidPayload: return "invalid protobuf payload";
     case HciDropReason::MissingRequired: return "missing required fields";
     case HciDropReason::BadLength: return "bad length";
+    case HciDropReason::TooLarge: return "too large once decoded";
     }
     return "unknown";
 }
@@ -118,6 +133,67 @@ HciDroppedFrame HciFrameDecoder::drop(const HciFrameHeader &header, HciDropReaso
     return HciDroppedFrame{m_offset, header, reason, std::move(detail), 0};
 }
 
+namespace {
+// What next() and decode() share once a frame has been delimited: the header's checks, the decoded
+// size, the parse. `newMessage` gives the message to parse into (next() reuses recycled ones).
+template<class NewMessage>
+HciFrameDecoder::Result decodePayload(uint64_t offset, const HciFrameHeader &header, std::string_view payload,
+                                      NewMessage &&newMessage, bool fastPath)
+{
+    auto dropped = [&](HciDropReason reason, std::string detail) -> HciFrameDecoder::Result {
+        return HciDroppedFrame{offset, header, reason, std::move(detail), 0};
+    };
+    if (header.signature != kHciSignature) {
+        char hex[5];
+        std::snprintf(hex, sizeof hex, "%04x", header.signature);
+        return dropped(HciDropReason::BadSignature, "signature 0x" + std::string(hex));
+    }
+    if (header.version != kHciVersion)
+        return dropped(HciDropReason::BadVersion, "version " + std::to_string(header.version));
+    const google::protobuf::Message *prototype = HciMessageTypes::prototype(header.type);
+    if (!prototype)
+        return dropped(HciDropReason::UnknownType, "type " + std::to_string(header.type) + " is not mapped");
+    if (auto tooLarge = decodedSizeProblem(*prototype, payload))
+        return dropped(HciDropReason::TooLarge, std::move(*tooLarge));
+    std::unique_ptr<google::protobuf::Message> message = newMessage(*prototype);
+    if (header.type == kNotificationType && fastPath
+        && HciTelemetryFastPath::parse(payload, static_cast<com::ugcs::ucs::proto::Notification *>(message.get()))) {
+        // Telemetry, parsed directly: complete by construction, identical to the general parse.
+        return HciFrame{offset, header, std::move(message)};
+    }
+    if (!message->ParsePartialFromArray(payload.data(), int(payload.size())))
+        return dropped(HciDropReason::InvalidPayload, std::string(message->GetDescriptor()->name()) + " payload does not parse");
+    if (!message->IsInitialized())
+        return dropped(HciDropReason::MissingRequired,
+                       std::string(message->GetDescriptor()->name()) + " lacks " + message->InitializationErrorString());
+    return HciFrame{offset, header, std::move(message)};
+}
+} // namespace
+
+std::optional<HciRawFrame> HciFrameDecoder::takeWhole(size_t minimumLength)
+{
+    if (m_resyncing || buffered() < kHciHeaderSize)
+        return std::nullopt;
+    const char *at = m_buffer.data() + m_pos;
+    const HciFrameHeader header = HciFrameHeader::read(at);
+    if (header.length < 0 || header.length > kHciMaxPayload || size_t(header.length) < minimumLength
+        || buffered() < kHciHeaderSize + size_t(header.length))
+        return std::nullopt; // next() handles it: small, incomplete or unusable
+    HciRawFrame raw{m_offset, header, std::string(at + kHciHeaderSize, size_t(header.length))};
+    m_pos += kHciHeaderSize + size_t(header.length);
+    m_offset += kHciHeaderSize + size_t(header.length);
+    return raw;
+}
+
+HciFrameDecoder::Result HciFrameDecoder::decode(const HciRawFrame &frame)
+{
+    return decodePayload(frame.offset, frame.header, frame.payload,
+                         [](const google::protobuf::Message &prototype) {
+                             return std::unique_ptr<google::protobuf::Message>(prototype.New());
+                         },
+                         true);
+}
+
 // Scans for the next offset whose 16 bytes form a plausible header. Consumes everything before it.
 // Returns false when more bytes are needed; keeps the last 15 bytes, which may start a header.
 bool HciFrameDecoder::resynchronise()
@@ -178,39 +254,13 @@ std::optional<HciFrameDecoder::Result> HciFrameDecoder::next()
         return std::nullopt;
 
     // The whole frame is here: from now on it is consumed whatever its fate.
-    const char *payload = at + kHciHeaderSize;
-    std::optional<Result> result;
-    const google::protobuf::Message *prototype = nullptr;
-    if (header.signature != kHciSignature) {
-        result = drop(header, HciDropReason::BadSignature, "signature 0x" + [&] {
-            char hex[5];
-            std::snprintf(hex, sizeof hex, "%04x", header.signature);
-            return std::string(hex);
-        }());
-    } else if (header.version != kHciVersion) {
-        result = drop(header, HciDropReason::BadVersion, "version " + std::to_string(header.version));
-    } else if (!(prototype = HciMessageTypes::prototype(header.type))) {
-        result = drop(header, HciDropReason::UnknownType, "type " + std::to_string(header.type) + " is not mapped");
-    } else {
-        std::unique_ptr<google::protobuf::Message> message = take(*prototype);
-        if (header.type == kNotificationType && m_fastPath
-            && HciTelemetryFastPath::parse(std::string_view(payload, size_t(header.length)),
-                                           static_cast<com::ugcs::ucs::proto::Notification *>(message.get()))) {
-            // Telemetry, parsed directly: complete by construction, identical to the general parse.
-            ++m_decoded;
-            result = HciFrame{m_offset, header, std::move(message)};
-        } else if (!message->ParsePartialFromArray(payload, header.length)) {
-            result = drop(header, HciDropReason::InvalidPayload,
-                          std::string(message->GetDescriptor()->name()) + " payload does not parse");
-        } else if (!message->IsInitialized()) {
-            result = drop(header, HciDropReason::MissingRequired,
-                          std::string(message->GetDescriptor()->name()) + " lacks "
-                              + message->InitializationErrorString());
-        } else {
-            ++m_decoded;
-            result = HciFrame{m_offset, header, std::move(message)};
-        }
-    }
+    Result result = decodePayload(m_offset, header, std::string_view(at + kHciHeaderSize, size_t(header.length)),
+                                  [this](const google::protobuf::Message &prototype) { return take(prototype); },
+                                  m_fastPath);
+    if (std::holds_alternative<HciFrame>(result))
+        ++m_decoded;
+    else
+        ++m_dropped;
     m_pos += frameSize;
     m_offset += frameSize;
     return result;

@@ -19,6 +19,14 @@ std::optional<std::string> encodeHciFrame(int32_t instanceId, const google::prot
 std::string encodeRawHciFrame(int32_t instanceId, int32_t type, std::string_view payload,
                               uint16_t signature = kHciSignature, uint16_t version = kHciVersion);
 
+// A whole frame as delimited by the stream, not yet decoded (HciFrameDecoder::takeWhole).
+struct HciRawFrame
+{
+    uint64_t offset = 0;
+    HciFrameHeader header;
+    std::string payload;
+};
+
 // Incremental HCI decoder: feed bytes in chunks of any size, take frames out in stream order.
 // Pure: no I/O, no Qt objects. Frames are delimited by the length field, as UgCS does; a frame
 // that cannot be used is consumed and reported with its reason, and decoding goes on. A length
@@ -41,6 +49,13 @@ public:
     // Hands a decoded message back for reuse: the next frame of the same type is parsed into it, which
     // keeps its sub-messages and string capacity (telemetry arrives at thousands of frames a second).
     void recycle(std::unique_ptr<google::protobuf::Message> message);
+    // Takes the next frame undecoded when it has arrived whole and its payload is at least
+    // `minimumLength` bytes (nothing otherwise: next() deals with it), so that a big frame can be
+    // decoded on another thread with decode(). Frames taken so are not counted by this decoder.
+    std::optional<HciRawFrame> takeWhole(size_t minimumLength);
+    // Decodes a frame taken whole: the same checks and drop reasons as next(). Touches no decoder,
+    // so it may run on any thread.
+    static Result decode(const HciRawFrame &frame);
 
     size_t buffered() const { return m_buffer.size() - m_pos; }
     // The bytes fed but not yet consumed (an incomplete frame), e.g. to report a truncated capture.

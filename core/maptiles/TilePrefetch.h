@@ -78,6 +78,8 @@ public:
     qint64 retries() const { return m_retries; }
     qint64 downloadedBytes() const { return m_downloadedBytes; }
     int inFlight() const { return int(m_inFlight.size()); }
+    // Whether a timer will ask for more (a back-off or a wait for room); never while paused.
+    bool wakeScheduled() const { return m_wakeTimer.isActive(); }
     // Each tile that could not be stored and why ("14/8800/5371: HTTP 404").
     QStringList failures() const { return m_failedTiles; }
 

@@ -216,11 +216,16 @@ void VciConnection::write(const std::string &bytes)
 
 void VciConnection::onReadyRead()
 {
+    // At most kReadTurnBytes a turn of the event loop: the JSON reader builds a body as its bytes
+    // come, so a 16 MiB body that is all there at once (after a stall, from a fast link) is read over
+    // a few dozen turns, and the window repaints between them.
     const quint64 generation = m_generation;
-    while (m_device && generation == m_generation) {
-        const QByteArray data = m_device->readAll();
+    qint64 budget = kReadTurnBytes;
+    while (m_device && generation == m_generation && budget > 0) {
+        const QByteArray data = m_device->read(std::min<qint64>(budget, 64 * 1024));
         if (data.isEmpty())
-            break;
+            return;
+        budget -= data.size();
         m_stats.bytesIn += quint64(data.size());
         m_parser.feed(std::string_view(data.constData(), size_t(data.size())));
         while (generation == m_generation) {
@@ -233,6 +238,11 @@ void VciConnection::onReadyRead()
                 handle(std::get<VciParseError>(*result));
         }
     }
+    if (m_device && generation == m_generation && m_device->bytesAvailable() > 0)
+        QMetaObject::invokeMethod(this, [this, generation] {
+            if (generation == m_generation)
+                onReadyRead();
+        }, Qt::QueuedConnection);
 }
 
 void VciConnection::handle(VciMessage &&m)

@@ -79,6 +79,8 @@ public:
     void setLateReplyGrace(int ms) { m_lateReplyGrace = ms; }
     void setFraming(VciFraming framing) { m_writer.setFraming(framing); }
     const Stats &stats() const { return m_stats; }
+    // The most read from the device in one turn of the event loop.
+    static constexpr qint64 kReadTurnBytes = 1024 * 1024;
 
 signals:
     void attached();

@@ -46,8 +46,8 @@ inline uint8_t numberStep(uint8_t s, char c)
 
 } // namespace
 
-VciJsonReader::VciJsonReader(size_t maxDepth, size_t maxBytes, size_t maxNumberLength)
-    : m_maxDepth(maxDepth), m_maxBytes(maxBytes), m_maxNumber(maxNumberLength)
+VciJsonReader::VciJsonReader(size_t maxDepth, size_t maxBytes, size_t maxNumberLength, size_t maxDecodedBytes)
+    : m_maxDepth(maxDepth), m_maxBytes(maxBytes), m_maxNumber(maxNumberLength), m_maxDecoded(maxDecodedBytes)
 {
     m_text.reserve(64);
     m_key.reserve(32);
@@ -62,6 +62,7 @@ void VciJsonReader::reset()
     m_stringIsKey = false;
     m_string.reset();
     m_consumed = 0;
+    m_decodedBytes = 0;
     m_errorOffset = 0;
     m_error.clear();
     m_text.clear();
@@ -91,8 +92,43 @@ bool VciJsonReader::unexpected(const char *at, const char *expected)
     return fail(at, std::string("expected ") + expected + ", found " + describe(*at));
 }
 
+namespace {
+// What the allocator adds to each block (glibc: 16 bytes of header and rounding, near enough).
+constexpr size_t kBlockOverhead = 16;
+size_t heapString(size_t length)
+{
+    return length < 16 ? 0 : length + 1 + kBlockOverhead; // short strings live inside the object
+}
+} // namespace
+
+bool VciJsonReader::account(const json &v, bool inObject)
+{
+    // The node itself: in an array a slot of the vector, which holds up to twice the slots it
+    // uses while it grows; in an object a map node (tree links and colour) with its key.
+    size_t cost = inObject ? sizeof(json::object_t::value_type) + 32 + kBlockOverhead + heapString(m_key.size())
+                           : 2 * sizeof(json);
+    if (v.is_string())
+        cost += sizeof(json::string_t) + kBlockOverhead + heapString(v.get_ref<const json::string_t &>().size());
+    else if (v.is_array())
+        cost += sizeof(json::array_t) + kBlockOverhead;
+    else if (v.is_object())
+        cost += sizeof(json::object_t) + kBlockOverhead;
+    m_decodedBytes += cost;
+    return m_decodedBytes <= m_maxDecoded;
+}
+
 json *VciJsonReader::place(json &&v)
 {
+    if (!account(v, !m_stack.empty() && m_stack.back()->is_object())) {
+        // Past the bound: free what was built now, not when the next message resets the reader.
+        m_stack.clear();
+        m_root = nullptr;
+        m_errorOffset = m_consumed;
+        m_error = "body would take more than " + std::to_string(m_maxDecoded >> 20) + " MiB of memory once read";
+        m_status = Status::Error;
+        m_state = State::Error;
+        return nullptr;
+    }
     if (m_stack.empty()) {
         m_root = std::move(v);
         return &m_root;
@@ -105,6 +141,14 @@ json *VciJsonReader::place(json &&v)
     }
     auto &object = top->get_ref<json::object_t &>();
     return &object.insert_or_assign(std::move(m_key), std::move(v)).first->second;
+}
+
+bool VciJsonReader::store(json &&v)
+{
+    if (!place(std::move(v)))
+        return false;
+    valueDone();
+    return true;
 }
 
 void VciJsonReader::valueDone()
@@ -121,7 +165,10 @@ bool VciJsonReader::openContainer(const char *at, bool object)
 {
     if (m_stack.size() >= m_maxDepth)
         return fail(at, "nested deeper than " + std::to_string(m_maxDepth) + " arrays and objects");
-    m_stack.push_back(place(object ? json::object() : json::array()));
+    json *container = place(object ? json::object() : json::array());
+    if (!container)
+        return false;
+    m_stack.push_back(container);
     m_closeAllowed = true;
     m_state = object ? State::Key : State::Value;
     return true;
@@ -147,9 +194,8 @@ const char *VciJsonReader::readString(const char *p, const char *end)
         if (m_stringIsKey) {
             m_state = State::Colon;
         } else {
-            place(json(std::move(m_text)));
+            store(json(std::move(m_text)));
             m_text.clear();
-            valueDone();
         }
     }
     return p;
@@ -200,17 +246,13 @@ bool VciJsonReader::completeNumber(const char *at)
             int64_t v = 0;
             const auto r = std::from_chars(b, e, v);
             if (r.ec == std::errc() && r.ptr == e) {
-                place(json(v));
-                valueDone();
-                return true;
+                return store(json(v));
             }
         } else {
             uint64_t v = 0;
             const auto r = std::from_chars(b, e, v);
             if (r.ec == std::errc() && r.ptr == e) {
-                place(json(v));
-                valueDone();
-                return true;
+                return store(json(v));
             }
         }
     }
@@ -225,9 +267,7 @@ bool VciJsonReader::completeNumber(const char *at)
     } else if (r.ec != std::errc() || r.ptr != e) {
         return fail(at, "number " + m_text + " cannot be read");
     }
-    place(json(d));
-    valueDone();
-    return true;
+    return store(json(d));
 }
 
 size_t VciJsonReader::feed(const char *data, size_t size)
@@ -286,8 +326,7 @@ size_t VciJsonReader::feed(const char *data, size_t size)
             }
             ++p;
             if (m_literal[++m_literalPos] == 0) {
-                place(m_literal[0] == 'n' ? json(nullptr) : json(m_literal[0] == 't'));
-                valueDone();
+                store(m_literal[0] == 'n' ? json(nullptr) : json(m_literal[0] == 't'));
             }
             break;
         case State::AfterValue: {

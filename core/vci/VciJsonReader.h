@@ -22,7 +22,13 @@ class VciJsonReader
 public:
     enum class Status { NeedMore, Done, Error };
 
-    explicit VciJsonReader(size_t maxDepth = 256, size_t maxBytes = 16 * 1024 * 1024, size_t maxNumberLength = 512);
+    // maxDecodedBytes bounds what the value takes in memory, not only on the wire: `[[],[],…]` is
+    // three bytes an element on the wire and over seventy in a DOM, so a 16 MiB body of it would
+    // hold hundreds of MiB. The reader counts what each value it builds allocates (the json node,
+    // its array slot with the vector's spare capacity or its map node and key, a string's buffer, a
+    // container's own object) and stops with an error, freeing what it built, once past the bound.
+    explicit VciJsonReader(size_t maxDepth = 256, size_t maxBytes = 16 * 1024 * 1024, size_t maxNumberLength = 512,
+                           size_t maxDecodedBytes = 192 * 1024 * 1024);
 
     // Reads from `data` until the value is complete, an error is found or the bytes run out.
     // Returns the bytes consumed; the byte that caused an error is not consumed.
@@ -33,6 +39,8 @@ public:
     Status status() const { return m_status; }
     const std::string &error() const { return m_error; }
     uint64_t consumed() const { return m_consumed; } // bytes of the value read so far
+    // What the value built so far takes in memory, as counted against maxDecodedBytes.
+    size_t decodedBytes() const { return m_decodedBytes; }
     uint64_t errorOffset() const { return m_errorOffset; } // body byte where the error was found
     nlohmann::json &value() { return m_root; }
     nlohmann::json takeValue();
@@ -46,12 +54,15 @@ private:
     bool completeNumber(const char *at);
     bool openContainer(const char *at, bool object);
     bool closeContainer(const char *at);
-    nlohmann::json *place(nlohmann::json &&v);
+    nlohmann::json *place(nlohmann::json &&v); // nullptr once past maxDecodedBytes
+    bool store(nlohmann::json &&v);             // places a scalar or string and ends it
+    bool account(const nlohmann::json &v, bool inObject); // false once past maxDecodedBytes
     void valueDone();
     bool fail(const char *at, std::string message); // at == nullptr: at the end of the input
     bool unexpected(const char *at, const char *expected);
 
-    size_t m_maxDepth, m_maxBytes, m_maxNumber;
+    size_t m_maxDepth, m_maxBytes, m_maxNumber, m_maxDecoded;
+    size_t m_decodedBytes = 0;
     Status m_status = Status::NeedMore;
     State m_state = State::Value;
     bool m_closeAllowed = false;   // ']' or '}' may close the container (right after it opened)

@@ -59,7 +59,7 @@ std::optional<uint64_t> parseLength(std::string_view s)
 
 VciParser::VciParser(VciLimits limits)
     : m_limits(limits)
-    , m_reader(limits.maxJsonDepth, limits.maxBodySize, limits.maxNumberLength)
+    , m_reader(limits.maxJsonDepth, limits.maxBodySize, limits.maxNumberLength, limits.maxDecodedBytes)
 {
 }
 
@@ -295,6 +295,14 @@ VciParser::Step VciParser::endOfHeaders()
     return produce();
 }
 
+void VciParser::setReaderError()
+{
+    if (m_reader.decodedBytes() > m_limits.maxDecodedBytes)
+        setError(VciErrorCode::BodyTooLarge, m_reader.error());
+    else
+        setError(VciErrorCode::BadJson, "body is not valid JSON: " + m_reader.error());
+}
+
 VciParser::Step VciParser::onBodyLength()
 {
     const size_t take = size_t(std::min<uint64_t>(m_remaining, m_buf.size() - m_pos));
@@ -306,7 +314,7 @@ VciParser::Step VciParser::onBodyLength()
         if (m_reader.status() == VciJsonReader::Status::NeedMore)
             used = m_reader.feed(p, take);
         if (m_reader.status() == VciJsonReader::Status::Error) {
-            setError(VciErrorCode::BadJson, "body is not valid JSON: " + m_reader.error());
+            setReaderError();
         } else if (m_reader.status() == VciJsonReader::Status::Done) {
             if (!std::all_of(p + used, p + take, isSpace))
                 setError(VciErrorCode::BadJson, "body holds more than one JSON value");
@@ -320,7 +328,7 @@ VciParser::Step VciParser::onBodyLength()
         return Step::NeedMore;
     if (!m_bad && m_json) {
         if (m_reader.finish() == VciJsonReader::Status::Error) {
-            setError(VciErrorCode::BadJson, "body is not valid JSON: " + m_reader.error());
+            setReaderError();
         } else {
             m_msg.body = m_reader.takeValue();
             m_msg.jsonBody = true;
@@ -346,7 +354,7 @@ VciParser::Step VciParser::onBodyJson()
         if (m_reader.consumed() >= m_limits.maxBodySize)
             setError(VciErrorCode::BodyTooLarge, "JSON body longer than the limit of " + std::to_string(m_limits.maxBodySize) + " bytes");
         else
-            setError(VciErrorCode::BadJson, "body is not valid JSON: " + m_reader.error());
+            setReaderError();
         return produceAndResync();
     }
     return Step::NeedMore;

@@ -60,6 +60,7 @@ private:
     Step onResync();
     void beginMessage(uint64_t offset);
     void setError(VciErrorCode code, std::string message);
+    void setReaderError(); // the JSON reader stopped: a bad value, or one too large once read
     Step produce();                 // the current message (or its error) is complete
     Step produceAndResync();        // its end cannot be known: report it, then look for a start line
     VciParseError makeError() const;

@@ -37,6 +37,7 @@ struct VciLimits
     size_t maxBodySize = 16 * 1024 * 1024;   // body bytes, by Content-Length or by JSON
     size_t maxJsonDepth = 256;               // nested arrays and objects
     size_t maxNumberLength = 512;             // characters in one JSON number
+    size_t maxDecodedBytes = 192 * 1024 * 1024; // what a JSON body may take in memory (VciJsonReader)
 };
 
 } // namespace sortie::vci

@@ -78,6 +78,7 @@ void HciRequestDispatcher::rejectDropped(HciServerConnection &connection, const 
     case hci::HciDropReason::UnknownType:
     case hci::HciDropReason::InvalidPayload:
     case hci::HciDropReason::MissingRequired:
+    case hci::HciDropReason::TooLarge:
         // The header is sound, so the sender is waiting on that instance id: tell it why, not silence.
         SimResponder(&connection, dropped.header.instanceId, dropped.header.type)
             .error(QStringLiteral("Request dropped: %1 (%2)")

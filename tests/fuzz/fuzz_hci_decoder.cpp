@@ -2,7 +2,11 @@
 // crash, a leak or undefined behaviour, and the decoder must account for every byte it was given.
 // Every frame's payload also goes through both parsers of a Notification: whatever the telemetry fast
 // path accepts, the general protobuf parser must accept too, as the same message, byte for byte (the
-// fast path may decline anything; then the general parser decides alone).
+// fast path may decline anything; then the general parser decides alone). Every payload is also
+// measured by estimateDecodedBytes, which the decoder uses on payloads of 1 MiB and more (far past
+// -max_len, so it is called directly here): what protobuf parses, the walk must accept, and never
+// count far under what the parsed message holds.
+#include "HciDecodedSize.h"
 #include "HciFrameCodec.h"
 #include "HciTelemetryFastPath.h"
 #include "Messages.pb.h"
@@ -23,6 +27,18 @@ void compareParsers(std::string_view payload)
     if (!HciTelemetryFastPath::parse(payload, &fast))
         return;
     if (!generalOk || fast.SerializeAsString() != general.SerializeAsString())
+        std::abort();
+}
+
+template<class Message>
+void checkEstimate(std::string_view payload)
+{
+    Message parsed;
+    if (!parsed.ParsePartialFromArray(payload.data(), int(payload.size())))
+        return;
+    const auto estimate = estimateDecodedBytes(payload, *Message::descriptor(), SIZE_MAX);
+    // Small messages carry fixed costs (a repeated field's first block) the walk leaves out.
+    if (!estimate || *estimate * 4 + 4096 < parsed.SpaceUsedLong())
         std::abort();
 }
 
@@ -62,6 +78,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         std::abort();
     // The input as one payload, and every framed payload in it, through both Notification parsers.
     compareParsers(bytes);
+    checkEstimate<com::ugcs::ucs::proto::Notification>(bytes);
+    checkEstimate<com::ugcs::ucs::proto::GetObjectListResponse>(bytes);
     for (size_t at = 0; at + kHciHeaderSize <= bytes.size(); ++at) {
         if (bytes[at] != 'H' || bytes[at + 1] != 'P')
             continue;

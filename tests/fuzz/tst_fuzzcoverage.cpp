@@ -48,6 +48,8 @@ const std::map<QString, QString> kOtherReaders{
     {QStringLiteral("UAS geographical zones (EUROCAE ED-318)"), QStringLiteral("fuzz_ed318_zones")},
     {QStringLiteral("server no-fly zones (protobuf to zone)"), QStringLiteral("fuzz_nfz_conversion")},
     {QStringLiteral("ADS-B traffic (SBS-1 BaseStation lines)"), QStringLiteral("fuzz_sbs")},
+    {QStringLiteral("ADS-B traffic from the server (protobuf to report)"), QStringLiteral("fuzz_adsb_report")},
+    {QStringLiteral("tile server answers (body format, Retry-After)"), QStringLiteral("fuzz_tile_response")},
     {QStringLiteral("MBTiles metadata (offline map packs)"), QStringLiteral("fuzz_mbtiles_metadata")},
     {QStringLiteral("the operator's rasters through GDAL (DEMs, orthophotos)"), QStringLiteral("fuzz_raster")},
 };

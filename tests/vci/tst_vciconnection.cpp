@@ -6,6 +6,7 @@
 #include "VciTestSupport.h"
 #include "VciTransport.h"
 
+#include <QBuffer>
 #include <QSignalSpy>
 #include <QTcpServer>
 #include <QTcpSocket>
@@ -35,6 +36,7 @@ private slots:
     void notConnectedAndInvalidRequests();
     void vehicleRequestsAreAnswered();
     void endpoints();
+    void aBodyThatIsAllThereIsReadOverManyTurns();
 
 private:
     void connectTo(SimVehicle &sim);
@@ -424,3 +426,30 @@ void TstVciConnection::endpoints()
 
 QTEST_GUILESS_MAIN(TstVciConnection)
 #include "tst_vciconnection.moc"
+
+// A 12 MiB notification that is all there at once (a socket's buffer after a stall; a QBuffer here,
+// so that none of it arrives late): the connection reads it over many turns of the event loop, at
+// most kReadTurnBytes each, so a timer (the window's repaint) keeps running meanwhile.
+void TstVciConnection::aBodyThatIsAllThereIsReadOverManyTurns()
+{
+    json big = json::array();
+    while (big.dump().size() < size_t(12 << 20))
+        for (int i = 0; i < 10000; ++i)
+            big.push_back({{"latitude", 56.95 + i * 1e-6}, {"longitude", 24.1}, {"altitude", 40.5}});
+    const std::string body = big.dump();
+    QByteArray stream = QByteArray::fromStdString("NOTIFY /mission/route VCI/1.0\r\nContent-Type: application/json\r\nContent-Length: "
+                                                  + std::to_string(body.size()) + "\r\n\r\n" + body);
+    QBuffer device(&stream);
+    QVERIFY(device.open(QIODevice::ReadOnly));
+    VciConnection connection;
+    int turns = 0;
+    QTimer repaint;
+    repaint.setInterval(0);
+    connect(&repaint, &QTimer::timeout, this, [&] { ++turns; });
+    QSignalSpy notified(&connection, &VciConnection::notified);
+    repaint.start();
+    connection.setDevice(&device);
+    QVERIFY(notified.wait(30000));
+    QCOMPARE(notified.first().at(0).toString(), QStringLiteral("/mission/route"));
+    QVERIFY2(turns >= int(stream.size() / VciConnection::kReadTurnBytes) - 1, qPrintable(QString::number(turns)));
+}
