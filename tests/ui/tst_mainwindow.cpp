@@ -342,7 +342,9 @@ private slots:
         QTest::keyClick(m_window, Qt::Key_2, Qt::ControlModifier);
         auto *map = page("missionPage")->property("map").value<MapView *>();
         QTRY_COMPARE(map->colours(), sortie::ui::MapPalette::dark());
-        QTest::qWait(100);
+        // The base map's tiles drawn again in the dark palette (on worker threads): the Sahara is dark land.
+        const auto sahara = [map] { return map->mapToScene(map->fromCoordinate(QGeoCoordinate(23, 10))).toPoint(); };
+        QTRY_COMPARE_WITH_TIMEOUT(m_window->grabWindow().pixelColor(sahara()), sortie::ui::MapPalette::dark().land, 10000);
         save(QStringLiteral("mission-dark.png"), 6);
     }
 };
