@@ -4,6 +4,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
+  ccache  # the build compiles through it when present (CMakeLists.txt SORTIE_CCACHE): a second build or clone reuses the objects
   dpkg-dev file libzip-dev libzstd-dev  # dpkg-shlibdeps and file: CPack's Debian package; libzip: WPML's KMZ archives; zstd: bench_flightlog
   qt6-base-dev qt6-base-dev-tools qt6-declarative-dev qt6-declarative-dev-tools
   qt6-serialport-dev qt6-positioning-dev qt6-tools-dev qt6-tools-dev-tools
@@ -19,6 +20,7 @@ packages=(
   libproj-dev proj-data  # PROJ and its EGM96 grid (egm96_15.gtx): ellipsoidal heights to AMSL
   gdal-bin  # gdal_translate, gdaladdo: tests/fuzz/make-raster-seeds.sh writes fuzz_raster's seeds
   libgdal-dev  # GDAL: DEM rasters (GeoTIFF, COG, Copernicus, .hgt...) and orthophotos in any CRS (core/raster)
+  libexiv2-dev  # exiv2: photos' EXIF and XMP read and their geotagged copies written (core/geotag, sortie-log geotag)
   qtkeychain-qt6-dev libsecret-1-0  # the remembered password in the OS keyring (QtKeychain loads libsecret)
   dbus-daemon gnome-keyring libglib2.0-bin libsecret-tools  # tst_keyring: a session bus, a keyring, gdbus, secret-tool
   clang libclang-rt-14-dev

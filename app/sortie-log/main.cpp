@@ -1,11 +1,12 @@
 // sortie-log: record a UgCS server's vehicles into a flight log, describe a log, export its tracks,
-// compare a flight with its plan, fit a vehicle's energy profile to its flights. The work is in
-// core/flightlog and core/endurance/fit; this file reads arguments.
+// compare a flight with its plan, fit a vehicle's energy profile to its flights, geotag a flight's
+// photos. The work is in core/flightlog, core/endurance/fit and core/geotag; this file reads arguments.
 #include "CertificateFingerprint.h"
 #include "EnergyProfile.h"
 #include "FlightLog.h"
 #include "FlightLogExport.h"
 #include "FlightLogInfo.h"
+#include "Geotagger.h"
 #include "LogFit.h"
 #include "MissionFiles.h"
 #include "RouteComparison.h"
@@ -13,6 +14,7 @@
 
 #include <QCoreApplication>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QLoggingCategory>
 #include <QSaveFile>
@@ -20,6 +22,7 @@
 #include <QSocketNotifier>
 #include <QTextStream>
 
+#include <cmath>
 #include <csignal>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -45,8 +48,14 @@ const char *const kUsage =
     "  compare LOG ROUTE_FILE --vehicle NAME [--route N] [--json]\n"
     "      The flown track against the planned route (.sortie, .plan, .waypoints): per leg the\n"
     "      largest and mean cross-track and altitude deviation, when each waypoint was reached.\n"
+    "  geotag PHOTO_DIR --track LOG_OR_GPX --out DIR [--offset SECONDS] [--vehicle ID] [--json]\n"
+    "      Places each photo on the track (a flight log, or a GPX file) by its time: EXIF\n"
+    "      DateTimeOriginal, the camera's clock taken as UTC unless OffsetTimeOriginal says otherwise,\n"
+    "      plus --offset. Writes geotagged copies into DIR (the originals are never changed), and\n"
+    "      OpenDroneMap's geo.txt and geotags.csv (Pix4D, Metashape). --vehicle when the log holds\n"
+    "      several. Its exit status: 0 every photo tagged, 2 some were not (named), 1 bad usage or input.\n"
     "\n"
-    "Exit status: 0 done, 1 failed, 2 bad usage.\n";
+    "Exit status: 0 done, 1 failed, 2 bad usage (geotag: see above).\n";
 
 enum Exit { Ok = 0, Failed = 1, Usage = 2 };
 
@@ -225,6 +234,93 @@ int fit(const QStringList &in, QTextStream &out, QTextStream &err)
     return code;
 }
 
+// geotag's own exit status, as issue 34 gives it: 0 every photo tagged, 2 some not, 1 bad usage.
+enum GeotagExit { AllTagged = 0, GeotagFailed = 1, SomeUntagged = 2 };
+
+int geotagPhotos(const QStringList &in, QTextStream &out, QTextStream &err)
+{
+    const auto a = parse(in, {QStringLiteral("--track"), QStringLiteral("--out"), QStringLiteral("--offset"), QStringLiteral("--vehicle")},
+                         {QStringLiteral("--json")}, err);
+    if (!a)
+        return GeotagFailed;
+    if (a->positional.size() != 1) {
+        err << "sortie-log: geotag takes one photo folder (PHOTO_DIR), " << a->positional.size() << " given\n";
+        return GeotagFailed;
+    }
+    for (const char *required : {"--track", "--out"}) {
+        if (!a->options.contains(QLatin1String(required))) {
+            err << "sortie-log: geotag needs " << required << "\n";
+            return GeotagFailed;
+        }
+    }
+    geotag::GeotagOptions options;
+    options.outFolder = a->options.value(QStringLiteral("--out"));
+    if (a->options.contains(QStringLiteral("--offset"))) {
+        bool ok = false;
+        const double offset = a->options.value(QStringLiteral("--offset")).toDouble(&ok);
+        if (!ok || !std::isfinite(offset) || std::fabs(offset) > 366.0 * 86400) {
+            err << "sortie-log: --offset takes seconds added to the camera's clock (e.g. -3.5), not \"" << a->options.value(QStringLiteral("--offset")) << "\"\n";
+            return GeotagFailed;
+        }
+        options.match.offsetMs = std::llround(offset * 1000);
+    }
+
+    const QString trackPath = a->options.value(QStringLiteral("--track"));
+    if (!QFileInfo(trackPath).isFile()) {
+        err << "sortie-log: --track " << trackPath << ": no such file\n";
+        return GeotagFailed;
+    }
+    std::optional<geotag::Track> track;
+    QString error;
+    if (geotag::looksLikeFlightLog(trackPath)) {
+        const auto log = openLog(trackPath, err);
+        if (!log)
+            return GeotagFailed;
+        int vehicle = -1;
+        if (a->options.contains(QStringLiteral("--vehicle"))) {
+            vehicle = log->vehicleIndex(a->options.value(QStringLiteral("--vehicle")));
+            if (vehicle < 0) {
+                err << "sortie-log: no vehicle \"" << a->options.value(QStringLiteral("--vehicle")) << "\" in " << log->path() << "\n";
+                return GeotagFailed;
+            }
+        } else if (log->vehicles().size() == 1) {
+            vehicle = 0;
+        } else {
+            QStringList names;
+            for (const auto &v : log->vehicles())
+                names.append(v.name());
+            err << "sortie-log: " << log->path() << " holds " << log->vehicles().size() << " vehicles (" << names.join(QStringLiteral(", "))
+                << "): choose one with --vehicle\n";
+            return GeotagFailed;
+        }
+        track = geotag::flightLogTrack(*log, vehicle, &error);
+    } else {
+        if (a->options.contains(QStringLiteral("--vehicle"))) {
+            err << "sortie-log: --vehicle chooses a vehicle of a flight log; " << trackPath << " is a GPX file\n";
+            return GeotagFailed;
+        }
+        track = geotag::readGpxTrack(trackPath, &error);
+    }
+    if (!track) {
+        err << "sortie-log: " << error << "\n";
+        return GeotagFailed;
+    }
+    const auto report = geotag::geotagFolder(a->positional.first(), *track, options, &error);
+    if (!report) {
+        err << "sortie-log: " << error << "\n";
+        return GeotagFailed;
+    }
+    if (a->flags.contains(QStringLiteral("--json"))) {
+        out << QJsonDocument(report->toJson()).toJson(QJsonDocument::Indented);
+    } else {
+        for (const auto &u : report->untagged)
+            out << u.file << ": not tagged: " << u.reason << "\n";
+        out << report->tagged.size() << " of " << report->photos << " photos tagged (offset " << report->offsetSeconds << " s); copies, "
+            << geotag::kGeoTxtName << " and " << geotag::kCsvName << " in " << options.outFolder << "\n";
+    }
+    return report->untagged.empty() ? AllTagged : SomeUntagged;
+}
+
 int signalPipe[2] = {-1, -1};
 
 void onSignal(int)
@@ -331,6 +427,8 @@ int main(int argc, char **argv)
         return compare(args, out, err);
     if (command == QLatin1String("fit"))
         return fit(args, out, err);
+    if (command == QLatin1String("geotag"))
+        return geotagPhotos(args, out, err);
     err << "sortie-log: unknown command \"" << command << "\"\n\n" << kUsage;
     return Usage;
 }

@@ -48,26 +48,28 @@ int runAirspace(const QStringList &args, Streams io)
         io.err << "sortie-plan: --buffer needs a number of metres, 0 or more\n";
         return Failure;
     }
-    QDateTime start = QDateTime::currentDateTimeUtc();
+    // --at and --authorisation override what the route file holds (RouteSettings::plannedStart,
+    // authorisations); without them the file's own are used, and now when it has no start.
+    std::optional<QDateTime> start;
     if (p.isSet(QStringLiteral("at"))) {
         const QString at = p.value(QStringLiteral("at"));
         start = QDateTime::fromString(at, Qt::ISODateWithMs);
-        if (!start.isValid() || !at.contains(QLatin1Char('T'))) {
+        if (!start->isValid() || !at.contains(QLatin1Char('T'))) {
             io.err << "sortie-plan: --at needs an ISO 8601 date and time, e.g. 2026-06-06T18:00:00Z (got \"" << at << "\")\n";
             return Failure;
         }
-        if (start.timeSpec() == Qt::LocalTime)  // no offset written: UTC, as the option says
-            start = QDateTime(start.date(), start.time(), QTimeZone::utc());
-        start = start.toUTC();
+        if (start->timeSpec() == Qt::LocalTime)  // no offset written: UTC, as the option says
+            start = QDateTime(start->date(), start->time(), QTimeZone::utc());
+        start = start->toUTC();
     }
-    airspace::Authorisations authorisations;
+    airspace::Authorisations given;
     for (const QString &a : p.values(QStringLiteral("authorisation"))) {
         const qsizetype eq = a.indexOf(QLatin1Char('='));
         if (eq <= 0 || eq == a.size() - 1) {
             io.err << "sortie-plan: --authorisation needs IDENTIFIER=REFERENCE (got \"" << a << "\")\n";
             return Failure;
         }
-        authorisations[a.left(eq).trimmed()] = a.mid(eq + 1).trimmed();
+        given[a.left(eq).trimmed()] = a.mid(eq + 1).trimmed();
     }
     QString error;
     const std::optional<ZoneInput> zones = readZoneInput(p.values(QStringLiteral("zones")), buffer, &error);
@@ -96,7 +98,7 @@ int runAirspace(const QStringList &args, Streams io)
         io.err << "note: " << n << "\n";
     for (const QString &n : zones->problems)
         io.err << "note: " << n << "\n";
-    for (const auto &[identifier, reference] : authorisations) {
+    for (const auto &[identifier, reference] : given) {
         const auto &all = zones->zones->zones();
         if (std::none_of(all.begin(), all.end(), [&, &id = identifier](const airspace::Zone &z) { return z.geoZone && z.geoZone->identifier == id; }))
             io.err << "note: --authorisation " << identifier << ": no UAS geographical zone has that identifier\n";
@@ -119,11 +121,16 @@ int runAirspace(const QStringList &args, Streams io)
         const airspace::FlightEnds ends = !wpl && i < loaded->mission.routes.size() ? airspace::flightEndsOf(loaded->mission.routes[i])
                                                                                     : airspace::FlightEnds{};
         const airspace::FlownPath path = airspace::flownPath(route, ground ? &*ground : nullptr, ends);
-        // The flight's window: from --at to the route's end by the time model.
+        // The flight's window: from --at (or the route's planned start, or now) to the route's end
+        // by the time model; the route's authorisations with --authorisation's over them.
+        const mission::Route *own = !wpl && i < loaded->mission.routes.size() ? &loaded->mission.routes[i] : nullptr;
+        const QDateTime from = start ? *start : own && own->settings.plannedStart ? *own->settings.plannedStart : QDateTime::currentDateTimeUtc();
+        airspace::Authorisations authorisations = given;
+        if (own)
+            authorisations.insert(own->settings.authorisations.begin(), own->settings.authorisations.end());
         QString timingNote;
-        const airspace::ed::TimeWindow window = !wpl && i < loaded->mission.routes.size()
-            ? airspace::flightWindow(loaded->mission.routes[i], start, nullptr, &timingNote)
-            : airspace::ed::TimeWindow{start, start};
+        const airspace::ed::TimeWindow window = own ? airspace::flightWindow(*own, from, nullptr, &timingNote)
+                                                    : airspace::ed::TimeWindow{from, from};
         if (!timingNote.isEmpty())
             io.err << "note: route \"" << route.name << "\" cannot be timed (" << timingNote << "): zones count when they apply at its start\n";
         airspace::AirspaceChecker checker(zones->zones, buffer);

@@ -190,20 +190,6 @@ void AirspaceRule::setZones(std::shared_ptr<const ZoneSet> zones)
     emit changed();
 }
 
-void AirspaceRule::setStart(std::optional<QDateTime> start)
-{
-    m_start = std::move(start);
-    emit changed();
-}
-
-void AirspaceRule::setAuthorisations(Authorisations authorisations)
-{
-    if (authorisations == m_authorisations)
-        return;
-    m_authorisations = std::move(authorisations);
-    emit changed();
-}
-
 void AirspaceRule::setBuffer(double metres)
 {
     if (metres == m_buffer || !(metres >= 0))
@@ -218,6 +204,7 @@ void AirspaceRule::check(const mission::Route &route, mission::ScanPlanCache *ca
     m_lastReport = {};
     m_lastZones = m_zones;
     m_lastPath = {};
+    m_lastAuthorisations = route.settings.authorisations;
     if (!m_zones || m_zones->zones().empty())
         return;
     if (!m_checker)
@@ -242,10 +229,10 @@ void AirspaceRule::check(const mission::Route &route, mission::ScanPlanCache *ca
     // Geographical zones count when they apply during the flight (timed only when there are any).
     const auto &all = m_zones->zones();
     if (std::any_of(all.begin(), all.end(), [](const Zone &z) { return z.geoZone != nullptr; }))
-        m_checker->setWindow(flightWindow(route, m_start.value_or(QDateTime::currentDateTimeUtc()), cache));
+        m_checker->setWindow(flightWindow(route, route.settings.plannedStart.value_or(QDateTime::currentDateTimeUtc()), cache));
     m_lastReport = m_checker->check(path);
     m_lastPath = std::move(path);  // kept (not copied) for the views: where each violation is
-    const std::vector<ValidationIssue> found = airspaceIssues(m_lastReport, *m_zones, m_buffer, m_authorisations);
+    const std::vector<ValidationIssue> found = airspaceIssues(m_lastReport, *m_zones, m_buffer, m_lastAuthorisations);
     issues.insert(issues.end(), found.begin(), found.end());
 }
 

@@ -61,10 +61,9 @@ public:
     void setZones(std::shared_ptr<const ZoneSet> zones);
     void setBuffer(double metres);
     double buffer() const { return m_buffer; }
-    // The flight's planned start (UTC); none: now. The window runs to its end by the time model.
-    void setStart(std::optional<QDateTime> start);
-    void setAuthorisations(Authorisations authorisations);
-    const Authorisations &authorisations() const { return m_authorisations; }
+    // The flight's window and the authorisations come from the route checked (its plannedStart,
+    // or now, to its end by the time model; its authorisations); these are the last check's.
+    const Authorisations &lastAuthorisations() const { return m_lastAuthorisations; }
     // What the last check found, and the zone set its zone indices refer to (none before a check
     // or without zones): the client's views draw where the route crosses which zone.
     const AirspaceReport &lastReport() const { return m_lastReport; }
@@ -76,8 +75,7 @@ private:
     QPointer<terrain::ElevationService> m_service;
     std::shared_ptr<const ZoneSet> m_zones;
     double m_buffer = 20.0;
-    std::optional<QDateTime> m_start;
-    Authorisations m_authorisations;
+    Authorisations m_lastAuthorisations;
     std::unique_ptr<AirspaceChecker> m_checker;
     std::optional<mission::GeoPoint> m_frameOrigin;
     AirspaceReport m_lastReport;

@@ -11,15 +11,10 @@ namespace sortie::maptiles {
 
 namespace {
 constexpr auto kTooLargeProperty = "sortieTileBodyTooLarge";
-constexpr qint64 kReadSlackBytes = 64 * 1024;
 }
 
 void limitTileBody(QNetworkReply *reply, qint64 limit)
 {
-    // Without a bound on its buffer the network thread keeps reading while the GUI thread is busy,
-    // so a fast server pours tens of MiB into memory before the check below runs. A buffer a little
-    // larger than the limit stops the reading there: the check always sees the limit passed first.
-    reply->setReadBufferSize(limit + kReadSlackBytes);
     auto check = [reply, limit](qint64 received, qint64 total) {
         if ((received > limit || total > limit) && !reply->property(kTooLargeProperty).isValid()) {
             reply->setProperty(kTooLargeProperty, limit);

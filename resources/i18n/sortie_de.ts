@@ -967,6 +967,117 @@
     </message>
 </context>
 <context>
+    <name>Geotag</name>
+    <message>
+        <source>the track holds no positions</source>
+        <translation>der Track enthält keine Positionen</translation>
+    </message>
+    <message>
+        <source>taken at %1, %2 s before the track starts (%3)</source>
+        <translation>aufgenommen um %1, %2 s vor dem Beginn des Tracks (%3)</translation>
+    </message>
+    <message>
+        <source>taken at %1, %2 s after the track ends (%3)</source>
+        <translation>aufgenommen um %1, %2 s nach dem Ende des Tracks (%3)</translation>
+    </message>
+    <message>
+        <source>taken at %1, in a gap of %2 s in the track (from %3 to %4; at most %5 s is bridged)</source>
+        <translation>aufgenommen um %1, in einer Lücke von %2 s im Track (von %3 bis %4; überbrückt werden höchstens %5 s)</translation>
+    </message>
+    <message>
+        <source>it holds no capture time (EXIF DateTimeOriginal or XMP exif:DateTimeOriginal)</source>
+        <translation>es enthält keine Aufnahmezeit (EXIF DateTimeOriginal oder XMP exif:DateTimeOriginal)</translation>
+    </message>
+    <message>
+        <source>its copy cannot be made in %1: %2</source>
+        <translation>seine Kopie kann in %1 nicht angelegt werden: %2</translation>
+    </message>
+    <message>
+        <source>its copy cannot be put in place: %1</source>
+        <translation>seine Kopie kann nicht an ihren Platz gelegt werden: %1</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder of photos that can be read</source>
+        <translation>%1 ist kein lesbarer Ordner mit Fotos</translation>
+    </message>
+    <message>
+        <source>%1 holds no photos (.jpg, .jpeg, .tif, .tiff, .dng)</source>
+        <translation>%1 enthält keine Fotos (.jpg, .jpeg, .tif, .tiff, .dng)</translation>
+    </message>
+    <message>
+        <source>no folder given for the geotagged copies</source>
+        <translation>kein Ordner für die georeferenzierten Kopien angegeben</translation>
+    </message>
+    <message>
+        <source>%1: the folder for the geotagged copies cannot be made</source>
+        <translation>%1: der Ordner für die georeferenzierten Kopien kann nicht angelegt werden</translation>
+    </message>
+    <message>
+        <source>%1 is the photos&apos; own folder: the copies go elsewhere, the originals are never changed</source>
+        <translation>%1 ist der Ordner der Fotos selbst: die Kopien gehören woandershin, die Originale werden nie verändert</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot read it (%1)</source>
+        <translation>exiv2 kann es nicht lesen (%1)</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot open it</source>
+        <translation>exiv2 kann es nicht öffnen</translation>
+    </message>
+    <message>
+        <source>its OffsetTimeOriginal &quot;%1&quot; is no time zone offset (±HH:MM)</source>
+        <translation>sein OffsetTimeOriginal „%1“ ist kein Zeitzonenversatz (±HH:MM)</translation>
+    </message>
+    <message>
+        <source>no valid position to write</source>
+        <translation>keine gültige Position zum Schreiben</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot write its tags (%1)</source>
+        <translation>exiv2 kann seine Tags nicht schreiben (%1)</translation>
+    </message>
+    <message>
+        <source>%1 is not a GPX file (its root element is &lt;%2&gt;, not &lt;gpx&gt;)</source>
+        <translation>%1 ist keine GPX-Datei (ihr Wurzelelement ist &lt;%2&gt;, nicht &lt;gpx&gt;)</translation>
+    </message>
+    <message>
+        <source>%1: a track point needs lat (-90 to 90) and lon (-180 to 180) in degrees, not lat=&quot;%2&quot; lon=&quot;%3&quot;</source>
+        <translation>%1: ein Trackpunkt braucht lat (-90 bis 90) und lon (-180 bis 180) in Grad, nicht lat=&quot;%2&quot; lon=&quot;%3&quot;</translation>
+    </message>
+    <message>
+        <source>%1: &lt;ele&gt; &quot;%2&quot; is no elevation in metres</source>
+        <translation>%1: &lt;ele&gt; „%2“ ist keine Höhe in Metern</translation>
+    </message>
+    <message>
+        <source>%1: &lt;time&gt; &quot;%2&quot; is no UTC time (YYYY-MM-DDThh:mm:ssZ)</source>
+        <translation>%1: &lt;time&gt; „%2“ ist keine UTC-Zeit (YYYY-MM-DDThh:mm:ssZ)</translation>
+    </message>
+    <message>
+        <source>%1: the track point has no &lt;time&gt;, so no photo can be matched to it</source>
+        <translation>%1: der Trackpunkt hat kein &lt;time&gt;, daher kann ihm kein Foto zugeordnet werden</translation>
+    </message>
+    <message>
+        <source>%1 is not a readable GPX file: %2</source>
+        <translation>%1 ist keine lesbare GPX-Datei: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a GPX file (no &lt;gpx&gt; element)</source>
+        <translation>%1 ist keine GPX-Datei (kein &lt;gpx&gt;-Element)</translation>
+    </message>
+    <message>
+        <source>%1 holds no track points (&lt;trkpt&gt;)</source>
+        <translation>%1 enthält keine Trackpunkte (&lt;trkpt&gt;)</translation>
+    </message>
+    <message>
+        <source>%1 has no such vehicle</source>
+        <translation>%1 enthält dieses Fahrzeug nicht</translation>
+    </message>
+    <message>
+        <source>%1: vehicle %2 reported no position</source>
+        <translation>%1: Fahrzeug %2 hat keine Position gemeldet</translation>
+    </message>
+</context>
+<context>
     <name>GlanceBar</name>
     <message>
         <source>The connection to the server</source>
@@ -3198,6 +3309,22 @@ Ereignisse: %1
         <source>camera of %1 changed</source>
         <translation>Kamera von %1 geändert</translation>
     </message>
+    <message>
+        <source>planned start %1</source>
+        <translation>geplanter Start %1</translation>
+    </message>
+    <message>
+        <source>planned start removed: now</source>
+        <translation>geplanter Start entfernt: jetzt</translation>
+    </message>
+    <message>
+        <source>authorisation for %1: %2</source>
+        <translation>Genehmigung für %1: %2</translation>
+    </message>
+    <message>
+        <source>authorisation for %1 removed</source>
+        <translation>Genehmigung für %1 entfernt</translation>
+    </message>
 </context>
 <context>
     <name>RouteEndurance</name>
@@ -3989,6 +4116,14 @@ Ereignisse: %1
     <message>
         <source>written by a newer Sortie (schema %1); this one reads up to schema %2</source>
         <translation>von einer neueren Sortie-Version geschrieben (Schema %1); diese liest bis Schema %2</translation>
+    </message>
+    <message>
+        <source>expected a date and time in UTC, e.g. 2026-06-06T18:00:00Z</source>
+        <translation>Datum und Uhrzeit in UTC erwartet, z. B. 2026-06-06T18:00:00Z</translation>
+    </message>
+    <message>
+        <source>an authorisation needs the zone&apos;s identifier</source>
+        <translation>eine Genehmigung braucht die Kennung der Zone</translation>
     </message>
 </context>
 <context>
@@ -6897,6 +7032,26 @@ Ereignisse: %1
     <message>
         <source>Set route %1</source>
         <translation>Routeneinstellung %1 setzen</translation>
+    </message>
+    <message>
+        <source>Plan the start for %1</source>
+        <translation>Start für %1 planen</translation>
+    </message>
+    <message>
+        <source>Start now</source>
+        <translation>Jetzt starten</translation>
+    </message>
+    <message>
+        <source>An authorisation needs the zone&apos;s identifier.</source>
+        <translation>Eine Genehmigung braucht die Kennung der Zone.</translation>
+    </message>
+    <message>
+        <source>Remove the authorisation for %1</source>
+        <translation>Die Genehmigung für %1 entfernen</translation>
+    </message>
+    <message>
+        <source>Record authorisation %1 for %2</source>
+        <translation>Genehmigung %1 für %2 eintragen</translation>
     </message>
 </context>
 <context>

@@ -967,6 +967,117 @@
     </message>
 </context>
 <context>
+    <name>Geotag</name>
+    <message>
+        <source>the track holds no positions</source>
+        <translation>la traza no contiene posiciones</translation>
+    </message>
+    <message>
+        <source>taken at %1, %2 s before the track starts (%3)</source>
+        <translation>tomada a las %1, %2 s antes de que empiece la traza (%3)</translation>
+    </message>
+    <message>
+        <source>taken at %1, %2 s after the track ends (%3)</source>
+        <translation>tomada a las %1, %2 s después de que termine la traza (%3)</translation>
+    </message>
+    <message>
+        <source>taken at %1, in a gap of %2 s in the track (from %3 to %4; at most %5 s is bridged)</source>
+        <translation>tomada a las %1, en un hueco de %2 s de la traza (de %3 a %4; se salvan como mucho %5 s)</translation>
+    </message>
+    <message>
+        <source>it holds no capture time (EXIF DateTimeOriginal or XMP exif:DateTimeOriginal)</source>
+        <translation>no contiene la hora de captura (EXIF DateTimeOriginal o XMP exif:DateTimeOriginal)</translation>
+    </message>
+    <message>
+        <source>its copy cannot be made in %1: %2</source>
+        <translation>no se puede hacer su copia en %1: %2</translation>
+    </message>
+    <message>
+        <source>its copy cannot be put in place: %1</source>
+        <translation>su copia no se puede poner en su sitio: %1</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder of photos that can be read</source>
+        <translation>%1 no es una carpeta de fotos que se pueda leer</translation>
+    </message>
+    <message>
+        <source>%1 holds no photos (.jpg, .jpeg, .tif, .tiff, .dng)</source>
+        <translation>%1 no contiene fotos (.jpg, .jpeg, .tif, .tiff, .dng)</translation>
+    </message>
+    <message>
+        <source>no folder given for the geotagged copies</source>
+        <translation>no se ha indicado ninguna carpeta para las copias georreferenciadas</translation>
+    </message>
+    <message>
+        <source>%1: the folder for the geotagged copies cannot be made</source>
+        <translation>%1: no se puede crear la carpeta para las copias georreferenciadas</translation>
+    </message>
+    <message>
+        <source>%1 is the photos&apos; own folder: the copies go elsewhere, the originals are never changed</source>
+        <translation>%1 es la propia carpeta de las fotos: las copias van a otro sitio, los originales nunca se modifican</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot read it (%1)</source>
+        <translation>exiv2 no puede leerlo (%1)</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot open it</source>
+        <translation>exiv2 no puede abrirlo</translation>
+    </message>
+    <message>
+        <source>its OffsetTimeOriginal &quot;%1&quot; is no time zone offset (±HH:MM)</source>
+        <translation>su OffsetTimeOriginal «%1» no es un desfase de zona horaria (±HH:MM)</translation>
+    </message>
+    <message>
+        <source>no valid position to write</source>
+        <translation>no hay una posición válida que escribir</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot write its tags (%1)</source>
+        <translation>exiv2 no puede escribir sus etiquetas (%1)</translation>
+    </message>
+    <message>
+        <source>%1 is not a GPX file (its root element is &lt;%2&gt;, not &lt;gpx&gt;)</source>
+        <translation>%1 no es un archivo GPX (su elemento raíz es &lt;%2&gt;, no &lt;gpx&gt;)</translation>
+    </message>
+    <message>
+        <source>%1: a track point needs lat (-90 to 90) and lon (-180 to 180) in degrees, not lat=&quot;%2&quot; lon=&quot;%3&quot;</source>
+        <translation>%1: un punto de la traza necesita lat (de -90 a 90) y lon (de -180 a 180) en grados, no lat=&quot;%2&quot; lon=&quot;%3&quot;</translation>
+    </message>
+    <message>
+        <source>%1: &lt;ele&gt; &quot;%2&quot; is no elevation in metres</source>
+        <translation>%1: &lt;ele&gt; «%2» no es una altitud en metros</translation>
+    </message>
+    <message>
+        <source>%1: &lt;time&gt; &quot;%2&quot; is no UTC time (YYYY-MM-DDThh:mm:ssZ)</source>
+        <translation>%1: &lt;time&gt; «%2» no es una hora UTC (YYYY-MM-DDThh:mm:ssZ)</translation>
+    </message>
+    <message>
+        <source>%1: the track point has no &lt;time&gt;, so no photo can be matched to it</source>
+        <translation>%1: el punto de la traza no tiene &lt;time&gt;, así que no se le puede asignar ninguna foto</translation>
+    </message>
+    <message>
+        <source>%1 is not a readable GPX file: %2</source>
+        <translation>%1 no es un archivo GPX legible: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a GPX file (no &lt;gpx&gt; element)</source>
+        <translation>%1 no es un archivo GPX (no tiene elemento &lt;gpx&gt;)</translation>
+    </message>
+    <message>
+        <source>%1 holds no track points (&lt;trkpt&gt;)</source>
+        <translation>%1 no contiene puntos de traza (&lt;trkpt&gt;)</translation>
+    </message>
+    <message>
+        <source>%1 has no such vehicle</source>
+        <translation>%1 no tiene ese vehículo</translation>
+    </message>
+    <message>
+        <source>%1: vehicle %2 reported no position</source>
+        <translation>%1: el vehículo %2 no informó de ninguna posición</translation>
+    </message>
+</context>
+<context>
     <name>GlanceBar</name>
     <message>
         <source>The connection to the server</source>
@@ -3198,6 +3309,22 @@ eventos:   %1
         <source>camera of %1 changed</source>
         <translation>cámara de %1 modificada</translation>
     </message>
+    <message>
+        <source>planned start %1</source>
+        <translation>inicio previsto %1</translation>
+    </message>
+    <message>
+        <source>planned start removed: now</source>
+        <translation>inicio previsto quitado: ahora</translation>
+    </message>
+    <message>
+        <source>authorisation for %1: %2</source>
+        <translation>autorización para %1: %2</translation>
+    </message>
+    <message>
+        <source>authorisation for %1 removed</source>
+        <translation>autorización para %1 quitada</translation>
+    </message>
 </context>
 <context>
     <name>RouteEndurance</name>
@@ -3989,6 +4116,14 @@ eventos:   %1
     <message>
         <source>written by a newer Sortie (schema %1); this one reads up to schema %2</source>
         <translation>escrito por una versión más reciente de Sortie (esquema %1); esta lee hasta el esquema %2</translation>
+    </message>
+    <message>
+        <source>expected a date and time in UTC, e.g. 2026-06-06T18:00:00Z</source>
+        <translation>se esperaba una fecha y hora en UTC, p. ej. 2026-06-06T18:00:00Z</translation>
+    </message>
+    <message>
+        <source>an authorisation needs the zone&apos;s identifier</source>
+        <translation>una autorización necesita el identificador de la zona</translation>
     </message>
 </context>
 <context>
@@ -6897,6 +7032,26 @@ eventos:   %1
     <message>
         <source>Set route %1</source>
         <translation>Fijar %1 de la ruta</translation>
+    </message>
+    <message>
+        <source>Plan the start for %1</source>
+        <translation>Planificar el inicio para %1</translation>
+    </message>
+    <message>
+        <source>Start now</source>
+        <translation>Iniciar ahora</translation>
+    </message>
+    <message>
+        <source>An authorisation needs the zone&apos;s identifier.</source>
+        <translation>Una autorización necesita el identificador de la zona.</translation>
+    </message>
+    <message>
+        <source>Remove the authorisation for %1</source>
+        <translation>Quitar la autorización para %1</translation>
+    </message>
+    <message>
+        <source>Record authorisation %1 for %2</source>
+        <translation>Registrar la autorización %1 para %2</translation>
     </message>
 </context>
 <context>

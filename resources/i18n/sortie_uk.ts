@@ -968,6 +968,117 @@
     </message>
 </context>
 <context>
+    <name>Geotag</name>
+    <message>
+        <source>the track holds no positions</source>
+        <translation>трек не містить жодної позиції</translation>
+    </message>
+    <message>
+        <source>taken at %1, %2 s before the track starts (%3)</source>
+        <translation>знято о %1, за %2 s до початку треку (%3)</translation>
+    </message>
+    <message>
+        <source>taken at %1, %2 s after the track ends (%3)</source>
+        <translation>знято о %1, через %2 s після кінця треку (%3)</translation>
+    </message>
+    <message>
+        <source>taken at %1, in a gap of %2 s in the track (from %3 to %4; at most %5 s is bridged)</source>
+        <translation>знято о %1, у розриві треку тривалістю %2 s (від %3 до %4; заповнюється щонайбільше %5 s)</translation>
+    </message>
+    <message>
+        <source>it holds no capture time (EXIF DateTimeOriginal or XMP exif:DateTimeOriginal)</source>
+        <translation>у ньому немає часу зйомки (EXIF DateTimeOriginal або XMP exif:DateTimeOriginal)</translation>
+    </message>
+    <message>
+        <source>its copy cannot be made in %1: %2</source>
+        <translation>його копію не вдається створити в %1: %2</translation>
+    </message>
+    <message>
+        <source>its copy cannot be put in place: %1</source>
+        <translation>його копію не вдається поставити на місце: %1</translation>
+    </message>
+    <message>
+        <source>%1 is not a folder of photos that can be read</source>
+        <translation>%1 — не тека з фотографіями, яку можна прочитати</translation>
+    </message>
+    <message>
+        <source>%1 holds no photos (.jpg, .jpeg, .tif, .tiff, .dng)</source>
+        <translation>%1 не містить фотографій (.jpg, .jpeg, .tif, .tiff, .dng)</translation>
+    </message>
+    <message>
+        <source>no folder given for the geotagged copies</source>
+        <translation>не вказано теку для геотегованих копій</translation>
+    </message>
+    <message>
+        <source>%1: the folder for the geotagged copies cannot be made</source>
+        <translation>%1: не вдається створити теку для геотегованих копій</translation>
+    </message>
+    <message>
+        <source>%1 is the photos&apos; own folder: the copies go elsewhere, the originals are never changed</source>
+        <translation>%1 — власна тека фотографій: копії зберігаються деінде, оригінали ніколи не змінюються</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot read it (%1)</source>
+        <translation>exiv2 не може його прочитати (%1)</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot open it</source>
+        <translation>exiv2 не може його відкрити</translation>
+    </message>
+    <message>
+        <source>its OffsetTimeOriginal &quot;%1&quot; is no time zone offset (±HH:MM)</source>
+        <translation>його OffsetTimeOriginal «%1» — не зсув часового поясу (±HH:MM)</translation>
+    </message>
+    <message>
+        <source>no valid position to write</source>
+        <translation>немає дійсної позиції для запису</translation>
+    </message>
+    <message>
+        <source>exiv2 cannot write its tags (%1)</source>
+        <translation>exiv2 не може записати його теги (%1)</translation>
+    </message>
+    <message>
+        <source>%1 is not a GPX file (its root element is &lt;%2&gt;, not &lt;gpx&gt;)</source>
+        <translation>%1 — не файл GPX (його кореневий елемент &lt;%2&gt;, а не &lt;gpx&gt;)</translation>
+    </message>
+    <message>
+        <source>%1: a track point needs lat (-90 to 90) and lon (-180 to 180) in degrees, not lat=&quot;%2&quot; lon=&quot;%3&quot;</source>
+        <translation>%1: точці треку потрібні lat (від -90 до 90) і lon (від -180 до 180) у градусах, а не lat=&quot;%2&quot; lon=&quot;%3&quot;</translation>
+    </message>
+    <message>
+        <source>%1: &lt;ele&gt; &quot;%2&quot; is no elevation in metres</source>
+        <translation>%1: &lt;ele&gt; «%2» — не висота в метрах</translation>
+    </message>
+    <message>
+        <source>%1: &lt;time&gt; &quot;%2&quot; is no UTC time (YYYY-MM-DDThh:mm:ssZ)</source>
+        <translation>%1: &lt;time&gt; «%2» — не час UTC (YYYY-MM-DDThh:mm:ssZ)</translation>
+    </message>
+    <message>
+        <source>%1: the track point has no &lt;time&gt;, so no photo can be matched to it</source>
+        <translation>%1: точка треку не має &lt;time&gt;, тож до неї не можна прив’язати жодну фотографію</translation>
+    </message>
+    <message>
+        <source>%1 is not a readable GPX file: %2</source>
+        <translation>%1 — не придатний для читання файл GPX: %2</translation>
+    </message>
+    <message>
+        <source>%1 is not a GPX file (no &lt;gpx&gt; element)</source>
+        <translation>%1 — не файл GPX (немає елемента &lt;gpx&gt;)</translation>
+    </message>
+    <message>
+        <source>%1 holds no track points (&lt;trkpt&gt;)</source>
+        <translation>%1 не містить точок треку (&lt;trkpt&gt;)</translation>
+    </message>
+    <message>
+        <source>%1 has no such vehicle</source>
+        <translation>%1 не містить такого апарата</translation>
+    </message>
+    <message>
+        <source>%1: vehicle %2 reported no position</source>
+        <translation>%1: апарат %2 не повідомив жодної позиції</translation>
+    </message>
+</context>
+<context>
     <name>GlanceBar</name>
     <message>
         <source>The connection to the server</source>
@@ -3206,6 +3317,22 @@ events:   %1
         <source>camera of %1 changed</source>
         <translation>камеру %1 змінено</translation>
     </message>
+    <message>
+        <source>planned start %1</source>
+        <translation>запланований старт %1</translation>
+    </message>
+    <message>
+        <source>planned start removed: now</source>
+        <translation>запланований старт прибрано: зараз</translation>
+    </message>
+    <message>
+        <source>authorisation for %1: %2</source>
+        <translation>дозвіл для %1: %2</translation>
+    </message>
+    <message>
+        <source>authorisation for %1 removed</source>
+        <translation>дозвіл для %1 прибрано</translation>
+    </message>
 </context>
 <context>
     <name>RouteEndurance</name>
@@ -4000,6 +4127,14 @@ events:   %1
     <message>
         <source>written by a newer Sortie (schema %1); this one reads up to schema %2</source>
         <translation>записано новішою версією Sortie (схема %1); ця читає схеми до %2</translation>
+    </message>
+    <message>
+        <source>expected a date and time in UTC, e.g. 2026-06-06T18:00:00Z</source>
+        <translation>очікувалися дата й час в UTC, напр. 2026-06-06T18:00:00Z</translation>
+    </message>
+    <message>
+        <source>an authorisation needs the zone&apos;s identifier</source>
+        <translation>дозвіл потребує ідентифікатора зони</translation>
     </message>
 </context>
 <context>
@@ -6934,6 +7069,26 @@ events:   %1
     <message>
         <source>Set route %1</source>
         <translation>Задати для маршруту: %1</translation>
+    </message>
+    <message>
+        <source>Plan the start for %1</source>
+        <translation>Запланувати старт на %1</translation>
+    </message>
+    <message>
+        <source>Start now</source>
+        <translation>Почати зараз</translation>
+    </message>
+    <message>
+        <source>An authorisation needs the zone&apos;s identifier.</source>
+        <translation>Дозвіл потребує ідентифікатора зони.</translation>
+    </message>
+    <message>
+        <source>Remove the authorisation for %1</source>
+        <translation>Прибрати дозвіл для %1</translation>
+    </message>
+    <message>
+        <source>Record authorisation %1 for %2</source>
+        <translation>Записати дозвіл %1 для %2</translation>
     </message>
 </context>
 <context>

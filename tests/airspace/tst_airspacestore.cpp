@@ -7,6 +7,7 @@
 #include "CustomZoneFile.h"
 #include "Geodesy.h"
 #include "RouteAnalyzer.h"
+#include "RouteEditor.h"
 #include "RouteModel.h"
 #include "ValidationGate.h"
 #include "ZoneEditor.h"
@@ -16,6 +17,8 @@
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
+#include <QTimeZone>
+#include <QUndoStack>
 #include <QtTest>
 
 using namespace sortie::airspace;
@@ -418,6 +421,58 @@ private slots:
         QCOMPARE(read->zones[0].shape, z.shape);
         QCOMPARE(read->zones[0].ceiling, z.ceiling);
         QVERIFY(!read->zones[0].floor);
+    }
+
+    // The route's planned start and its authorisations are edits of the route: the client's check
+    // follows them, and undo brings the finding back. A zone forbidden on weekend evenings over
+    // leg 2 and an airfield needing an authorisation over leg 4 (ED-269).
+    void theRoutesStartAndAuthorisationsAreEditsTheCheckFollows()
+    {
+        auto edBox = [](const char *id, const char *restriction, double from, double to, const char *applicability) {
+            QStringList ring;
+            for (const auto &[east, north] : {std::pair{from, -100.0}, {to, -100.0}, {to, 100.0}, {from, 100.0}, {from, -100.0}}) {
+                const QGeoCoordinate c = at(east, north);
+                ring << QStringLiteral("[%1, %2]").arg(c.longitude(), 0, 'f', 9).arg(c.latitude(), 0, 'f', 9);
+            }
+            return QStringLiteral(R"({"identifier": "%1", "country": "LVA", "name": "%1", "restriction": "%2", "zoneAuthority": [],
+                "applicability": [%3], "geometry": [{"uomDimensions": "M", "lowerLimit": 0, "lowerVerticalReference": "AMSL",
+                "upperLimit": 120, "upperVerticalReference": "AMSL", "horizontalProjection": {"type": "Polygon", "coordinates": [[%4]]}}]})")
+                .arg(QLatin1String(id), QLatin1String(restriction), QLatin1String(applicability), ring.join(QStringLiteral(", ")));
+        };
+        write("ed269.json", (QStringLiteral(R"({"title": "test", "features": [)")
+                             + edBox("LVP100", "PROHIBITED", 1400, 1600,
+                                     R"({"permanent": "NO", "schedule": [{"day": ["SAT", "SUN"], "startTime": "18:00Z", "endTime": "23:00Z"}]})")
+                             + QStringLiteral(", ") + edBox("LVA200", "REQ_AUTHORISATION", 3400, 3600, R"({"permanent": "YES"})")
+                             + QStringLiteral("]}")).toUtf8());
+        Fixture f(m_dir.path());
+        QUndoStack stack;
+        RouteEditor editor(&f.model, &stack);
+        QVERIFY(f.store->loadFile(path("ed269.json")));
+        // A Monday evening: only the airfield, which needs an authorisation.
+        editor.setPlannedStart(QDateTime(QDate(2026, 6, 8), QTime(18, 30), QTimeZone::utc()));
+        f.analyzer.recomputeNow();
+        QCOMPARE(countRule(f.analyzer.validation(), QStringLiteral("airspace-exclusion")), 1);
+        QVERIFY(firstMessage(f.analyzer.validation(), QStringLiteral("airspace-exclusion")).contains(QLatin1String("LVA200")));
+        // A Saturday evening: the weekend zone too.
+        editor.setPlannedStart(QDateTime(QDate(2026, 6, 6), QTime(18, 30), QTimeZone::utc()));
+        f.analyzer.recomputeNow();
+        QCOMPARE(countRule(f.analyzer.validation(), QStringLiteral("airspace-exclusion")), 2);
+        // The airfield's authorisation recorded: a warning naming it.
+        QVERIFY(editor.recordAuthorisation(QStringLiteral("LVA200"), QStringLiteral("LGS-2026-117")));
+        QCOMPARE(f.model.authorisationFor(QStringLiteral("LVA200")), QStringLiteral("LGS-2026-117"));
+        f.analyzer.recomputeNow();
+        QCOMPARE(countRule(f.analyzer.validation(), QStringLiteral("airspace-exclusion")), 1);
+        QVERIFY2(firstMessage(f.analyzer.validation(), QStringLiteral("airspace-authorised")).contains(QLatin1String("LGS-2026-117")),
+                 qPrintable(firstMessage(f.analyzer.validation(), QStringLiteral("airspace-authorised"))));
+        QVERIFY(!editor.recordAuthorisation(QStringLiteral("  "), QStringLiteral("X")));  // no identifier: refused
+        // Undo, one step each: the authorisation goes, then the Saturday start.
+        stack.undo();
+        f.analyzer.recomputeNow();
+        QCOMPARE(countRule(f.analyzer.validation(), QStringLiteral("airspace-exclusion")), 2);
+        stack.undo();
+        f.analyzer.recomputeNow();
+        QCOMPARE(countRule(f.analyzer.validation(), QStringLiteral("airspace-exclusion")), 1);
+        QCOMPARE(f.model.plannedStart(), QDateTime(QDate(2026, 6, 8), QTime(18, 30), QTimeZone::utc()));
     }
 };
 

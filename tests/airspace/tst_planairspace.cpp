@@ -8,6 +8,7 @@
 
 #include <QProcess>
 #include <QTemporaryDir>
+#include <QTimeZone>
 #include "PlanRun.h"
 
 #include <QtTest>
@@ -281,6 +282,30 @@ private slots:
         QCOMPARE(unknown.code, 2);
         QVERIFY2(unknown.err.contains("--authorisation XX999: no UAS geographical zone has that identifier"), unknown.err.constData());
         QVERIFY2(unknown.out.contains("1 zone(s) do not apply from 2026-06-08T18:30:00Z"), unknown.out.constData());
+    }
+
+    // The route file's own planned start and authorisations (RouteSettings, stored in .sortie)
+    // count without --at or --authorisation: a Saturday-evening start meets the weekend zone, and
+    // the recorded authorisation makes the airfield a warning; --at overrides the file's start.
+    void theRoutesOwnStartAndAuthorisationsCount()
+    {
+        Mission m = lineMission();
+        m.routes[0].settings.plannedStart = QDateTime(QDate(2026, 6, 6), QTime(18, 30), QTimeZone::utc());
+        m.routes[0].settings.authorisations = {{QStringLiteral("LVA200"), QStringLiteral("LGS-2026-117")}};
+        QVERIFY(formats::saveMission(m, path("saturday.sortie")).ok());
+        const Run r = run({QStringLiteral("airspace"), path("saturday.sortie"), QStringLiteral("--zones"), path("lv-zones.json"), QStringLiteral("--json")});
+        QCOMPARE(r.code, 2);
+        const Json a = Json::parse(r.out.toStdString()).at("routes").at(0).at("airspace");
+        QCOMPARE(a.at("window").at("from").get<std::string>(), std::string("2026-06-06T18:30:00Z"));
+        QCOMPARE(a.at("violations").size(), size_t(1));
+        QCOMPARE(a.at("violations").at(0).at("identifier").get<std::string>(), std::string("LVP100"));
+        QCOMPARE(a.at("warnings").at(0).at("identifier").get<std::string>(), std::string("LVA200"));
+        QCOMPARE(a.at("warnings").at(0).at("authorisation").get<std::string>(), std::string("LGS-2026-117"));
+
+        const Run monday = run({QStringLiteral("airspace"), path("saturday.sortie"), QStringLiteral("--zones"), path("lv-zones.json"),
+                                QStringLiteral("--at"), QStringLiteral("2026-06-08T18:30:00Z")});
+        QCOMPARE(monday.code, 0);
+        QVERIFY2(monday.out.contains("under authorisation LGS-2026-117"), monday.out.constData());
     }
 
     // The ED-318 samples load as zones (France: far from the route, so nothing is found).

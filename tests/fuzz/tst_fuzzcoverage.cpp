@@ -52,6 +52,8 @@ const std::map<QString, QString> kOtherReaders{
     {QStringLiteral("tile server answers (body format, Retry-After)"), QStringLiteral("fuzz_tile_response")},
     {QStringLiteral("MBTiles metadata (offline map packs)"), QStringLiteral("fuzz_mbtiles_metadata")},
     {QStringLiteral("the operator's rasters through GDAL (DEMs, orthophotos)"), QStringLiteral("fuzz_raster")},
+    {QStringLiteral("GPX tracks (geotagging)"), QStringLiteral("fuzz_gpx_track")},
+    {QStringLiteral("photos' EXIF and XMP through exiv2 (geotagging)"), QStringLiteral("fuzz_photo_metadata")},
 };
 } // namespace
 

@@ -116,10 +116,14 @@ private slots:
         for (const QString &failure : job.failures())
             QVERIFY2(failure.contains(QLatin1String("larger than 4 MiB: not read")), qPrintable(failure));
         QCOMPARE(server.connections(), int(job.total()));  // each refused once, never retried
-        // The client hung up on every one: what the server sent is bounded by the limit and what
-        // sockets hold, not by the stream.
+        // The client hung up on every one, so the server sent a bounded amount, not the stream
+        // (which would go on to the job's two-minute bound: gigabytes on loopback). The bound is
+        // loose on purpose: Qt's network thread reads ahead while the GUI thread, busy with six
+        // streams and the server itself, gets to the check; in CI that was up to 28 MiB a tile.
+        // (A reply read buffer would stop it there, but Qt 6.4 then stalls some replies below the
+        // limit until their transfer timeout, so it is not used.)
         QTRY_COMPARE(server.hungUp(), server.connections());
-        QVERIFY2(server.sent() < job.total() * (kMaxTileBodyBytes + (16 << 20)), qPrintable(QString::number(server.sent())));
+        QVERIFY2(server.sent() < job.total() * (kMaxTileBodyBytes + (64 << 20)), qPrintable(QString::number(server.sent())));
     }
 
     void anHonestTileStillGoesIn()

@@ -10,6 +10,7 @@
 #include "SortieFormat.h"
 
 #include <QTemporaryDir>
+#include <QTimeZone>
 #include <QtTest>
 
 using namespace sortie::mission;
@@ -28,6 +29,8 @@ Mission fullMission()
     r.settings.failsafes = {{FailsafeReason::GpsLost, FailsafeAction::Wait}, {FailsafeReason::LowBattery, FailsafeAction::Land}};
     r.settings.cornerRadius = 2;
     r.settings.takeoffHeight = 1.5;
+    r.settings.plannedStart = QDateTime(QDate(2026, 6, 6), QTime(18, 30, 15, 250), QTimeZone::utc());
+    r.settings.authorisations = {{QStringLiteral("LVA200"), QStringLiteral("LGS-2026-117")}, {QStringLiteral("CHE-77"), QStringLiteral("FOCA 12/b")}};
     r.settings.endAction = EndAction::ReturnHome;
     auto &b = std::get<Waypoint>(r.segments[2]);
     b.turnType = TurnType::BankTurn;
@@ -227,6 +230,31 @@ private slots:
         QCOMPARE(m.error().line, 3);
         QCOMPARE(m.error().column, 19);
         QVERIFY(m.error().message.contains(QStringLiteral("overflow")));
+    }
+
+    // A planned start that is not a UTC date and time is named at its path; a missing one is now.
+    void aPlannedStartMustBeUtc_data()
+    {
+        QTest::addColumn<QByteArray>("value");
+        QTest::newRow("no time") << QByteArray("\"2026-06-06\"");
+        QTest::newRow("local time") << QByteArray("\"2026-06-06T18:30:00\"");
+        QTest::newRow("not a date") << QByteArray("\"saturday\"");
+        QTest::newRow("a number") << QByteArray("1780770600");
+    }
+    void aPlannedStartMustBeUtc()
+    {
+        QFETCH(QByteArray, value);
+        Mission m;
+        m.routes.push_back(mavlinkRoute());
+        QVERIFY(!readSortie(writeSortie(m))->routes[0].settings.plannedStart);
+        m.routes[0].settings.plannedStart = QDateTime(QDate(2026, 6, 6), QTime(18, 30), QTimeZone::utc());
+        QByteArray text = writeSortie(m);
+        const QByteArray written = "\"plannedStart\":\"2026-06-06T18:30:00.000Z\"";
+        QVERIFY2(text.contains(written), text.constData());
+        text.replace(written, "\"plannedStart\":" + value);
+        const Result<Mission> r = readSortie(text);
+        QVERIFY(!r.ok());
+        QCOMPARE(r.error().jsonPath, QStringLiteral("/mission/routes/0/plannedStart"));
     }
 
     void semanticErrorsNameTheJsonPath_data()

@@ -243,7 +243,7 @@ bool Airspace::selectZoneOfIssue(const QString &message)
         return false;
     const AirspaceReport &report = m_rule->lastReport();
     for (const AirspaceViolation &v : report.violations)
-        if (violationMessage(v, zones->zones()[size_t(v.zone)], m_rule->authorisations()) == message) {
+        if (violationMessage(v, zones->zones()[size_t(v.zone)], m_rule->lastAuthorisations()) == message) {
             setSelectedZone(v.zone);
             return true;
         }

@@ -119,6 +119,17 @@ void RouteDiff::compareSettings(const RouteSettings &a, const RouteSettings &b)
     };
     flag(a.checkAerodromeNfz, b.checkAerodromeNfz, QT_TRANSLATE_NOOP("RouteDiff", "aerodrome zone check"));
     flag(a.checkCustomNfz, b.checkCustomNfz, QT_TRANSLATE_NOOP("RouteDiff", "custom zone check"));
+    if (a.plannedStart != b.plannedStart)
+        add(Kind::Settings, -1, b.plannedStart ? tr("planned start %1").arg(b.plannedStart->toUTC().toString(Qt::ISODate))
+                                               : tr("planned start removed: now"));
+    for (const auto &[identifier, reference] : b.authorisations) {
+        const auto before = a.authorisations.find(identifier);
+        if (before == a.authorisations.end() || before->second != reference)
+            add(Kind::Settings, -1, tr("authorisation for %1: %2").arg(identifier, reference));
+    }
+    for (const auto &[identifier, reference] : a.authorisations)
+        if (!b.authorisations.count(identifier))
+            add(Kind::Settings, -1, tr("authorisation for %1 removed").arg(identifier));
 }
 
 void RouteDiff::compareSegments(const std::vector<Segment> &a, const std::vector<Segment> &b)

@@ -17,6 +17,7 @@
 #include "SetNfzChecksCommand.h"
 #include "SetRouteSettingsCommand.h"
 
+#include <QLocale>
 #include <QUndoStack>
 
 #include <map>
@@ -493,6 +494,31 @@ void RouteEditor::setCheckCustomNfz(bool check)
 {
     if (check != m_model->settings().checkCustomNfz)
         m_stack->push(new SetNfzChecksCommand(m_model, m_model->settings().checkAerodromeNfz, check));
+}
+
+void RouteEditor::setPlannedStart(const QDateTime &start)
+{
+    RouteSettings s = m_model->settings();
+    s.plannedStart = start.isValid() ? std::optional<QDateTime>(start.toUTC()) : std::nullopt;
+    if (s.plannedStart != m_model->settings().plannedStart)
+        setSettings(s, s.plannedStart ? tr("Plan the start for %1").arg(QLocale().toString(start.toLocalTime(), QLocale::ShortFormat))
+                                      : tr("Start now"));
+}
+
+bool RouteEditor::recordAuthorisation(const QString &identifier, const QString &reference)
+{
+    const QString id = identifier.trimmed();
+    if (id.isEmpty())
+        return refuse(tr("An authorisation needs the zone's identifier."));
+    RouteSettings s = m_model->settings();
+    const QString ref = reference.trimmed();
+    if (ref.isEmpty())
+        s.authorisations.erase(id);
+    else
+        s.authorisations[id] = ref;
+    if (!(s == m_model->settings()))
+        setSettings(s, ref.isEmpty() ? tr("Remove the authorisation for %1").arg(id) : tr("Record authorisation %1 for %2").arg(ref, id));
+    return true;
 }
 
 void RouteEditor::setSettings(const RouteSettings &settings, const QString &text)

@@ -113,6 +113,12 @@ public:
     // zones (one undo step each; setting the value it has does nothing).
     Q_INVOKABLE void setCheckAerodromeNfz(bool check);
     Q_INVOKABLE void setCheckCustomNfz(bool check);
+    // When the flight is planned to start (kept in UTC); an invalid time clears it: the flight is
+    // checked as starting now. One undo step.
+    Q_INVOKABLE void setPlannedStart(const QDateTime &start);
+    // Records the reference an authority gave for the geographical zone `identifier`; an empty
+    // reference removes the authorisation. One undo step; false (refused) without an identifier.
+    Q_INVOKABLE bool recordAuthorisation(const QString &identifier, const QString &reference);
     // The rows a view's selection covers, sorted.
     Q_INVOKABLE QList<int> rowsOf(const QItemSelectionModel *selection) const;
 

@@ -131,6 +131,20 @@ QVariant RouteModel::data(const QModelIndex &index, int role) const
     }
 }
 
+QStringList RouteModel::authorisedZones() const
+{
+    QStringList zones;
+    for (const auto &entry : m_route.settings.authorisations)
+        zones.append(entry.first);
+    return zones;
+}
+
+QString RouteModel::authorisationFor(const QString &identifier) const
+{
+    const auto it = m_route.settings.authorisations.find(identifier);
+    return it == m_route.settings.authorisations.end() ? QString() : it->second;
+}
+
 QString RouteModel::segmentLabelFor(int row, const Segment &s)
 {
     return segmentLabel(row, s);

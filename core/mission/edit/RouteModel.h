@@ -25,6 +25,10 @@ class RouteModel : public QAbstractListModel
     // Does the server's processing refuse a route crossing an aerodrome's / a custom no-fly zone?
     Q_PROPERTY(bool checkAerodromeNfz READ checkAerodromeNfz NOTIFY settingsChanged)
     Q_PROPERTY(bool checkCustomNfz READ checkCustomNfz NOTIFY settingsChanged)
+    // The flight's planned start (UTC); invalid when none is planned (the flight starts now).
+    Q_PROPERTY(QDateTime plannedStart READ plannedStart NOTIFY settingsChanged)
+    // The geographical zones the operator recorded an authorisation for (authorisationFor gives it).
+    Q_PROPERTY(QStringList authorisedZones READ authorisedZones NOTIFY settingsChanged)
 
 public:
     enum Roles {
@@ -66,6 +70,9 @@ public:
     double maxSpeed() const { return m_route.settings.maxSpeed; }
     bool checkAerodromeNfz() const { return m_route.settings.checkAerodromeNfz; }
     bool checkCustomNfz() const { return m_route.settings.checkCustomNfz; }
+    QDateTime plannedStart() const { return m_route.settings.plannedStart.value_or(QDateTime()); }
+    QStringList authorisedZones() const;
+    Q_INVOKABLE QString authorisationFor(const QString &identifier) const;
 
     // Primitives for the undo commands. Rows are sorted ascending and valid.
     void insertSegments(int row, std::vector<Segment> segments);

@@ -291,6 +291,14 @@ Json routeJson(const Route &r)
            {"maxSpeed", s.maxSpeed}, {"cornerRadius", s.cornerRadius}, {"takeoffHeight", s.takeoffHeight},
            {"failsafes", std::move(failsafes)}, {"endAction", s.endAction == EndAction::ReturnHome ? "returnHome" : "none"},
            {"checkAerodromeNfz", s.checkAerodromeNfz}, {"checkCustomNfz", s.checkCustomNfz}};
+    if (s.plannedStart)
+        j["plannedStart"] = str(s.plannedStart->toUTC().toString(Qt::ISODateWithMs));
+    if (!s.authorisations.empty()) {
+        Json authorisations = Json::object();
+        for (const auto &[identifier, reference] : s.authorisations)
+            authorisations[identifier.toStdString()] = str(reference);
+        j["authorisations"] = std::move(authorisations);
+    }
     if (s.home)
         j["home"] = {{"latitude", s.home->position.latitude}, {"longitude", s.home->position.longitude}, {"altitudeAmsl", s.home->altitudeAmsl}};
     if (!r.fence.empty())  // a .plan's geofence and rally points, in the .plan's own form
@@ -334,6 +342,22 @@ Route readRoute(const JsonCursor &c)
     // Files written before the flags existed: off, as the server reads an absent flag.
     s.checkAerodromeNfz = c.booleanOr("checkAerodromeNfz", false);
     s.checkCustomNfz = c.booleanOr("checkCustomNfz", false);
+    if (const auto start = c.find("plannedStart")) {
+        const QString text = start->string();
+        QDateTime when = QDateTime::fromString(text, Qt::ISODateWithMs);
+        if (!when.isValid() || !text.contains(QLatin1Char('T')) || when.timeSpec() == Qt::LocalTime)
+            start->fail(QCoreApplication::translate("SortieFormat", "expected a date and time in UTC, e.g. 2026-06-06T18:00:00Z"));
+        s.plannedStart = when.toUTC();
+    }
+    if (const auto a = c.find("authorisations")) {
+        a->requireObject();
+        for (const auto &[identifier, reference] : a->value().items()) {
+            const QString id = QString::fromStdString(identifier).trimmed();
+            if (id.isEmpty())
+                a->fail(QCoreApplication::translate("SortieFormat", "an authorisation needs the zone's identifier"));
+            s.authorisations[id] = a->at(identifier.c_str()).string();
+        }
+    }
     if (const auto h = c.find("home"))
         s.home = HomePosition{{h->number("latitude"), h->number("longitude")}, h->number("altitudeAmsl")};
     if (const auto f = c.find("fence")) {

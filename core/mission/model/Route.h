@@ -4,7 +4,10 @@
 #include "Segment.h"
 #include "ServerOrigin.h"
 
+#include <QDateTime>
 #include <QString>
+
+#include <map>
 
 #include <optional>
 #include <vector>
@@ -64,6 +67,13 @@ struct RouteSettings
     // schema gives them no default, and a server reads an absent flag as false.
     bool checkAerodromeNfz = false;
     bool checkCustomNfz = false;
+    // When the flight is planned to start (UTC); none: whenever it is checked, that is now. UAS
+    // geographical zones count when they apply between this and the route's end by the time model.
+    std::optional<QDateTime> plannedStart;
+    // The authorisations the operator recorded: a geographical zone's identifier -> the reference
+    // the authority gave. They turn a REQ_AUTHORISATION zone from an error into a warning naming
+    // the reference, and the upload review shows them.
+    std::map<QString, QString> authorisations;
     bool operator==(const RouteSettings &) const = default;
 };
 

@@ -1,0 +1,3 @@
+#include "GeotagLog.h"
+
+Q_LOGGING_CATEGORY(lcGeotag, "sortie.geotag", QtInfoMsg)

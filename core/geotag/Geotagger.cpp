@@ -1,0 +1,255 @@
+#include "Geotagger.h"
+
+#include "GeotagLog.h"
+
+#include <QCoreApplication>
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QJsonArray>
+#include <QSaveFile>
+#include <QTimeZone>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace sortie::geotag {
+
+namespace {
+
+QString utc(int64_t ms)
+{
+    return QDateTime::fromMSecsSinceEpoch(ms, QTimeZone::utc()).toString(QStringLiteral("yyyy-MM-dd HH:mm:ss.zzz")) + QStringLiteral(" UTC");
+}
+
+QString seconds(int64_t ms)
+{
+    return QString::number(double(ms) / 1000.0, 'f', 1);
+}
+
+std::optional<double> present(double v)
+{
+    return std::isnan(v) ? std::nullopt : std::optional<double>(v);
+}
+
+std::optional<double> between(double a, double b, double f)
+{
+    if (std::isnan(a) || std::isnan(b))
+        return std::nullopt;
+    return a + f * (b - a);
+}
+
+QString number(double v, int decimals)
+{
+    return QString::number(v, 'f', decimals);
+}
+
+} // namespace
+
+std::optional<TrackPosition> positionAt(const Track &track, int64_t time, int64_t maxGapMs, QString *reason)
+{
+    auto refuse = [&](const QString &why) -> std::optional<TrackPosition> {
+        if (reason)
+            *reason = why;
+        return std::nullopt;
+    };
+    const auto &points = track.points;
+    if (points.empty())
+        return refuse(QCoreApplication::translate("Geotag", "the track holds no positions"));
+    if (time < track.start())
+        return refuse(QCoreApplication::translate("Geotag", "taken at %1, %2 s before the track starts (%3)")
+                          .arg(utc(time), seconds(track.start() - time), utc(track.start())));
+    if (time > track.end())
+        return refuse(QCoreApplication::translate("Geotag", "taken at %1, %2 s after the track ends (%3)")
+                          .arg(utc(time), seconds(time - track.end()), utc(track.end())));
+    const auto after = std::lower_bound(points.begin(), points.end(), time, [](const TrackPoint &p, int64_t t) { return p.time < t; });
+    TrackPosition position;
+    if (after->time == time) {
+        position.latitude = after->latitude;
+        position.longitude = after->longitude;
+        position.altitudeAmsl = present(after->altitudeAmsl);
+        position.heightAboveTakeoff = present(after->heightAboveTakeoff);
+        return position;
+    }
+    const TrackPoint &a = *(after - 1), &b = *after;
+    if (b.time - a.time > maxGapMs)
+        return refuse(QCoreApplication::translate("Geotag", "taken at %1, in a gap of %2 s in the track (from %3 to %4; at most %5 s is bridged)")
+                          .arg(utc(time), seconds(b.time - a.time), utc(a.time), utc(b.time), seconds(maxGapMs)));
+    const double f = double(time - a.time) / double(b.time - a.time);
+    position.latitude = a.latitude + f * (b.latitude - a.latitude);
+    double dLon = b.longitude - a.longitude;
+    if (dLon > 180)
+        dLon -= 360;
+    else if (dLon < -180)
+        dLon += 360;
+    double lon = a.longitude + f * dLon;
+    if (lon > 180)
+        lon -= 360;
+    else if (lon < -180)
+        lon += 360;
+    position.longitude = lon;
+    position.altitudeAmsl = between(a.altitudeAmsl, b.altitudeAmsl, f);
+    position.heightAboveTakeoff = between(a.heightAboveTakeoff, b.heightAboveTakeoff, f);
+    return position;
+}
+
+QStringList photoFiles(const QString &folder)
+{
+    static const QStringList filters{QStringLiteral("*.jpg"), QStringLiteral("*.jpeg"), QStringLiteral("*.tif"),
+                                     QStringLiteral("*.tiff"), QStringLiteral("*.dng")};
+    QDir dir(folder);
+    dir.setNameFilters(filters);
+    dir.setFilter(QDir::Files | QDir::Hidden);
+    dir.setSorting(QDir::Name);
+    QStringList names;
+    for (const QString &name : dir.entryList()) // QDir's name filters ignore case
+        if (!name.startsWith(QLatin1Char('.')))
+            names.append(name);
+    return names;
+}
+
+QJsonObject GeotagReport::toJson() const
+{
+    QJsonArray list;
+    for (const UntaggedPhoto &u : untagged)
+        list.append(QJsonObject{{QStringLiteral("file"), u.file}, {QStringLiteral("reason"), u.reason}});
+    return QJsonObject{{QStringLiteral("photos"), photos},
+                       {QStringLiteral("tagged"), int(tagged.size())},
+                       {QStringLiteral("offset"), offsetSeconds},
+                       {QStringLiteral("untagged"), list}};
+}
+
+GeotagReport matchPhotos(const std::vector<PhotoInfo> &photos, const Track &track, const MatchOptions &options)
+{
+    GeotagReport report;
+    report.photos = int(photos.size());
+    report.offsetSeconds = double(options.offsetMs) / 1000.0;
+    for (const PhotoInfo &photo : photos) {
+        if (!photo.cameraTimeUtc) {
+            report.untagged.push_back({photo.fileName, QCoreApplication::translate("Geotag", "it holds no capture time (EXIF DateTimeOriginal or XMP exif:DateTimeOriginal)")});
+            continue;
+        }
+        const int64_t time = *photo.cameraTimeUtc + options.offsetMs;
+        QString reason;
+        const auto position = positionAt(track, time, options.maxGapMs, &reason);
+        if (!position) {
+            report.untagged.push_back({photo.fileName, reason});
+            continue;
+        }
+        report.tagged.push_back({photo, time, *position, {}});
+    }
+    return report;
+}
+
+bool writeGeotagged(GeotagReport &report, const QString &outFolder, QString *error)
+{
+    const QDir out(outFolder);
+    std::vector<TaggedPhoto> written;
+    written.reserve(report.tagged.size());
+    for (TaggedPhoto &t : report.tagged) {
+        const QString target = out.filePath(t.photo.fileName);
+        const QString temporary = out.filePath(QStringLiteral(".%1.sortie-geotag").arg(t.photo.fileName));
+        QString why;
+        // std::filesystem's copy (the kernel's copy_file_range or sendfile), not QFile::copy, which
+        // syncs every copy to disk: 8 ms a photo instead of 1 on a busy disk (docs/performance.md).
+        std::error_code ec;
+        bool ok = std::filesystem::copy_file(QFile::encodeName(t.photo.path).toStdString(), QFile::encodeName(temporary).toStdString(),
+                                             std::filesystem::copy_options::overwrite_existing, ec);
+        if (!ok) {
+            why = QCoreApplication::translate("Geotag", "its copy cannot be made in %1: %2").arg(outFolder, QString::fromStdString(ec.message()));
+        } else {
+            GeoTag tag;
+            tag.latitude = t.position.latitude;
+            tag.longitude = t.position.longitude;
+            tag.altitudeAmsl = t.position.altitudeAmsl;
+            tag.heightAboveTakeoff = t.position.heightAboveTakeoff;
+            tag.time = t.time;
+            ok = PhotoMetadataFile::writeGeoTag(temporary, tag, &why);
+            if (ok) {
+                std::filesystem::rename(QFile::encodeName(temporary).toStdString(), QFile::encodeName(target).toStdString(), ec);
+                if (ec) {
+                    ok = false;
+                    why = QCoreApplication::translate("Geotag", "its copy cannot be put in place: %1").arg(QString::fromStdString(ec.message()));
+                }
+            }
+        }
+        if (!ok) {
+            QFile::remove(temporary);
+            qCWarning(lcGeotag).noquote() << t.photo.path << "not tagged:" << why;
+            report.untagged.push_back({t.photo.fileName, why});
+            continue;
+        }
+        t.copy = target;
+        written.push_back(std::move(t));
+    }
+    report.tagged = std::move(written);
+    std::sort(report.untagged.begin(), report.untagged.end(), [](const UntaggedPhoto &a, const UntaggedPhoto &b) { return a.file < b.file; });
+
+    // OpenDroneMap's geo.txt: the CRS, then "name x y [z]" (x the longitude); Pix4D and Metashape
+    // read "name,latitude,longitude,altitude" with a '#' comment first.
+    QByteArray geo = "EPSG:4326\n", csv = "#name,latitude,longitude,altitude\n";
+    for (const TaggedPhoto &t : report.tagged) {
+        const QByteArray name = t.photo.fileName.toUtf8();
+        const QByteArray lat = number(t.position.latitude, 8).toLatin1(), lon = number(t.position.longitude, 8).toLatin1();
+        const QByteArray alt = t.position.altitudeAmsl ? number(*t.position.altitudeAmsl, 3).toLatin1() : QByteArray();
+        geo += name + ' ' + lon + ' ' + lat + (alt.isEmpty() ? QByteArray() : ' ' + alt) + '\n';
+        csv += name + ',' + lat + ',' + lon + ',' + alt + '\n';
+    }
+    for (const auto &[name, bytes, path] : {std::tuple{kGeoTxtName, geo, &report.geoTxt}, std::tuple{kCsvName, csv, &report.csv}}) {
+        QSaveFile file(out.filePath(QString::fromLatin1(name)));
+        if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
+            if (error)
+                *error = file.fileName() + QStringLiteral(": ") + file.errorString();
+            return false;
+        }
+        *path = file.fileName();
+    }
+    return true;
+}
+
+std::optional<GeotagReport> geotagFolder(const QString &photoFolder, const Track &track, const GeotagOptions &options, QString *error)
+{
+    auto fail = [&](const QString &message) -> std::optional<GeotagReport> {
+        if (error)
+            *error = message;
+        return std::nullopt;
+    };
+    const QFileInfo folder(photoFolder);
+    if (!folder.isDir() || !folder.isReadable())
+        return fail(QCoreApplication::translate("Geotag", "%1 is not a folder of photos that can be read").arg(photoFolder));
+    const QStringList names = photoFiles(photoFolder);
+    if (names.isEmpty())
+        return fail(QCoreApplication::translate("Geotag", "%1 holds no photos (.jpg, .jpeg, .tif, .tiff, .dng)").arg(photoFolder));
+    if (options.outFolder.isEmpty())
+        return fail(QCoreApplication::translate("Geotag", "no folder given for the geotagged copies"));
+    if (!QDir().mkpath(options.outFolder))
+        return fail(QCoreApplication::translate("Geotag", "%1: the folder for the geotagged copies cannot be made").arg(options.outFolder));
+    if (QFileInfo(options.outFolder).canonicalFilePath() == folder.canonicalFilePath())
+        return fail(QCoreApplication::translate("Geotag", "%1 is the photos' own folder: the copies go elsewhere, the originals are never changed").arg(options.outFolder));
+
+    std::vector<PhotoInfo> photos;
+    std::vector<UntaggedPhoto> unreadable;
+    const QDir dir(photoFolder);
+    for (const QString &name : names) {
+        QString why;
+        auto info = PhotoMetadataFile::read(dir.filePath(name), &why);
+        if (!info) {
+            qCInfo(lcGeotag).noquote() << dir.filePath(name) << "skipped:" << why; // the report names it
+            unreadable.push_back({name, why});
+            continue;
+        }
+        info->fileName = name;
+        photos.push_back(std::move(*info));
+    }
+    GeotagReport report = matchPhotos(photos, track, options.match);
+    report.photos = int(names.size());
+    report.untagged.insert(report.untagged.end(), unreadable.begin(), unreadable.end());
+    if (!writeGeotagged(report, options.outFolder, error))
+        return std::nullopt;
+    qCInfo(lcGeotag).noquote() << photoFolder << ":" << report.tagged.size() << "of" << report.photos << "photos tagged into" << options.outFolder;
+    return report;
+}
+
+} // namespace sortie::geotag
