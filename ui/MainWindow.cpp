@@ -18,6 +18,10 @@ MainWindow::MainWindow(client::ClientGraph &graph, AppSettings &settings, const 
     , m_engine(std::make_unique<QQmlApplicationEngine>())
 {
     addImportPaths(*m_engine);
+    // The theme follows the operator's choice of colours, at once.
+    m_theme.setScheme(Theme::schemeFromName(settings.colourScheme()));
+    QObject::connect(&settings, &AppSettings::colourSchemeChanged, &m_theme,
+                     [this, &settings] { m_theme.setScheme(Theme::schemeFromName(settings.colourScheme())); });
     m_translations = std::make_unique<Translations>(settings, *m_engine, translationsFolder); // before the first word is shown
     QObject::connect(m_engine.get(), &QQmlEngine::warnings, m_engine.get(), [this](const QList<QQmlError> &warnings) {
         if (m_window)
@@ -25,10 +29,12 @@ MainWindow::MainWindow(client::ClientGraph &graph, AppSettings &settings, const 
         for (const QQmlError &warning : warnings)
             m_loadWarnings << warning.toString();
     });
-    // Main.qml's three required properties: everything the views use comes from the graph.
+    // Main.qml's four required properties: everything the views use comes from the graph; how they
+    // look, from the theme.
     m_engine->setInitialProperties({{QStringLiteral("appSettings"), QVariant::fromValue(&settings)},
                                     {QStringLiteral("translations"), QVariant::fromValue(m_translations.get())},
-                                    {QStringLiteral("graph"), QVariant::fromValue(&graph)}});
+                                    {QStringLiteral("graph"), QVariant::fromValue(&graph)},
+                                    {QStringLiteral("theme"), QVariant::fromValue(&m_theme)}});
     m_engine->load(QUrl(QString::fromLatin1(kMainQml)));
     if (!m_engine->rootObjects().isEmpty())
         m_window = qobject_cast<QQuickWindow *>(m_engine->rootObjects().constFirst());

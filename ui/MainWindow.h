@@ -1,6 +1,7 @@
 #pragma once
 
 #include "SettingsWiring.h"
+#include "Theme.h"
 #include "Translations.h"
 
 #include <QStringList>
@@ -19,8 +20,8 @@ namespace sortie::ui {
 class AppSettings;
 
 // The client's main window (Main.qml) in an engine of its own: handed the client graph once, with
-// the operator's settings and the language it is shown in, and the settings the client follows
-// wired (SettingsWiring). The program and every UI fixture open the window through this class, so
+// the operator's settings, the language it is shown in and the theme it is drawn with, and the
+// settings the client follows wired (SettingsWiring). The program and every UI fixture open the window through this class, so
 // they load the same window with the same wiring.
 class MainWindow
 {
@@ -38,6 +39,8 @@ public:
     QQuickWindow *window() const { return m_window; }
     QQmlApplicationEngine &engine() { return *m_engine; }
     Translations &translations() { return *m_translations; }
+    // The colours, spacing and type sizes of every view and painted layer (Main.qml's `theme`).
+    Theme &theme() { return m_theme; }
     // What QML warned of while the window loaded (printed as well); empty for a clean start.
     QStringList loadWarnings() const { return m_loadWarnings; }
     // The graph's wiring and the settings', one line each (ClientGraph::wiring()).
@@ -46,6 +49,7 @@ public:
 private:
     client::ClientGraph &m_graph;
     SettingsWiring m_settingsWiring;
+    Theme m_theme; // before the engine: the window's bindings read it to the end
     std::unique_ptr<QQmlApplicationEngine> m_engine;
     std::unique_ptr<Translations> m_translations;
     QQuickWindow *m_window = nullptr;

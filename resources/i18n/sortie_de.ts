@@ -1078,6 +1078,29 @@
     </message>
 </context>
 <context>
+    <name>GlanceBar</name>
+    <message>
+        <source>The connection to the server</source>
+        <translation>Die Verbindung zum Server</translation>
+    </message>
+    <message>
+        <source>The vehicle chosen in the fly view, else the first</source>
+        <translation>Das in der Flugansicht gewählte Fahrzeug, sonst das erste</translation>
+    </message>
+    <message>
+        <source>Its GPS: the fix and the satellites in view</source>
+        <translation>Sein GPS: die Positionsbestimmung und die sichtbaren Satelliten</translation>
+    </message>
+    <message>
+        <source>Its battery, against the low and critical levels</source>
+        <translation>Sein Akku, gemessen an der niedrigen und der kritischen Schwelle</translation>
+    </message>
+    <message>
+        <source>Its link: how often its position arrives</source>
+        <translation>Seine Verbindung: wie oft seine Position ankommt</translation>
+    </message>
+</context>
+<context>
     <name>HciConnection</name>
     <message>
         <source>type %1</source>
@@ -1765,6 +1788,30 @@
     <message>
         <source>The language of Sortie, applied at once</source>
         <translation>Sprache von Sortie, sofort wirksam</translation>
+    </message>
+    <message>
+        <source>Display…</source>
+        <translation>Anzeige…</translation>
+    </message>
+    <message>
+        <source>Units, language and colours</source>
+        <translation>Einheiten, Sprache und Farben</translation>
+    </message>
+    <message>
+        <source>Units</source>
+        <translation>Einheiten</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>Colours</source>
+        <translation>Farben</translation>
+    </message>
+    <message>
+        <source>The system&apos;s colours, light, dark, or high contrast for sunlight</source>
+        <translation>Die Farben des Systems, hell, dunkel oder hoher Kontrast für Sonnenlicht</translation>
     </message>
 </context>
 <context>
@@ -3262,6 +3309,22 @@ Ereignisse: %1
         <source>camera of %1 changed</source>
         <translation>Kamera von %1 geändert</translation>
     </message>
+    <message>
+        <source>planned start %1</source>
+        <translation>geplanter Start %1</translation>
+    </message>
+    <message>
+        <source>planned start removed: now</source>
+        <translation>geplanter Start entfernt: jetzt</translation>
+    </message>
+    <message>
+        <source>authorisation for %1: %2</source>
+        <translation>Genehmigung für %1: %2</translation>
+    </message>
+    <message>
+        <source>authorisation for %1 removed</source>
+        <translation>Genehmigung für %1 entfernt</translation>
+    </message>
 </context>
 <context>
     <name>RouteEndurance</name>
@@ -4053,6 +4116,14 @@ Ereignisse: %1
     <message>
         <source>written by a newer Sortie (schema %1); this one reads up to schema %2</source>
         <translation>von einer neueren Sortie-Version geschrieben (Schema %1); diese liest bis Schema %2</translation>
+    </message>
+    <message>
+        <source>expected a date and time in UTC, e.g. 2026-06-06T18:00:00Z</source>
+        <translation>Datum und Uhrzeit in UTC erwartet, z. B. 2026-06-06T18:00:00Z</translation>
+    </message>
+    <message>
+        <source>an authorisation needs the zone&apos;s identifier</source>
+        <translation>eine Genehmigung braucht die Kennung der Zone</translation>
     </message>
 </context>
 <context>
@@ -6962,6 +7033,26 @@ Ereignisse: %1
         <source>Set route %1</source>
         <translation>Routeneinstellung %1 setzen</translation>
     </message>
+    <message>
+        <source>Plan the start for %1</source>
+        <translation>Start für %1 planen</translation>
+    </message>
+    <message>
+        <source>Start now</source>
+        <translation>Jetzt starten</translation>
+    </message>
+    <message>
+        <source>An authorisation needs the zone&apos;s identifier.</source>
+        <translation>Eine Genehmigung braucht die Kennung der Zone.</translation>
+    </message>
+    <message>
+        <source>Remove the authorisation for %1</source>
+        <translation>Die Genehmigung für %1 entfernen</translation>
+    </message>
+    <message>
+        <source>Record authorisation %1 for %2</source>
+        <translation>Genehmigung %1 für %2 eintragen</translation>
+    </message>
 </context>
 <context>
     <name>sortie::mission::SegmentEditorModel</name>
@@ -7220,6 +7311,69 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::GlanceStatus</name>
+    <message>
+        <source>No server</source>
+        <translation>Kein Server</translation>
+    </message>
+    <message>
+        <source>No vehicle</source>
+        <translation>Kein Fahrzeug</translation>
+    </message>
+    <message>
+        <source>GPS —</source>
+        <translation>GPS —</translation>
+    </message>
+    <message>
+        <source>No fix</source>
+        <translation>Keine Position</translation>
+    </message>
+    <message>
+        <source>2D fix</source>
+        <translation>2D-Position</translation>
+    </message>
+    <message>
+        <source>3D fix</source>
+        <translation>3D-Position</translation>
+    </message>
+    <message>
+        <source>RTK float</source>
+        <translation>RTK float</translation>
+    </message>
+    <message>
+        <source>RTK fixed</source>
+        <translation>RTK fixed</translation>
+    </message>
+    <message>
+        <source>%1, %2 sats</source>
+        <translation>%1, %2 Sat.</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 V</source>
+        <translation>%1 V</translation>
+    </message>
+    <message>
+        <source>Battery —</source>
+        <translation>Akku —</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Verbindung verloren</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Link —</source>
+        <translation>Verbindung —</translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::MbTilesTileSource</name>
     <message>
         <source>MBTiles</source>
@@ -7326,6 +7480,25 @@ Ereignisse: %1
     <message>
         <source>; some points have no data (tried: %1)</source>
         <translation>; einige Punkte haben keine Daten (versucht: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::Theme</name>
+    <message>
+        <source>System colours</source>
+        <translation>Systemfarben</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Hell</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Dunkel</translation>
+    </message>
+    <message>
+        <source>Sunlight (high contrast)</source>
+        <translation>Sonnenlicht (hoher Kontrast)</translation>
     </message>
 </context>
 <context>

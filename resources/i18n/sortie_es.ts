@@ -1078,6 +1078,29 @@
     </message>
 </context>
 <context>
+    <name>GlanceBar</name>
+    <message>
+        <source>The connection to the server</source>
+        <translation>La conexión con el servidor</translation>
+    </message>
+    <message>
+        <source>The vehicle chosen in the fly view, else the first</source>
+        <translation>El vehículo elegido en la vista de vuelo; si no, el primero</translation>
+    </message>
+    <message>
+        <source>Its GPS: the fix and the satellites in view</source>
+        <translation>Su GPS: el tipo de posición y los satélites a la vista</translation>
+    </message>
+    <message>
+        <source>Its battery, against the low and critical levels</source>
+        <translation>Su batería, frente a los niveles bajo y crítico</translation>
+    </message>
+    <message>
+        <source>Its link: how often its position arrives</source>
+        <translation>Su enlace: con qué frecuencia llega su posición</translation>
+    </message>
+</context>
+<context>
     <name>HciConnection</name>
     <message>
         <source>type %1</source>
@@ -1765,6 +1788,30 @@
     <message>
         <source>The language of Sortie, applied at once</source>
         <translation>Idioma de Sortie; se aplica al instante</translation>
+    </message>
+    <message>
+        <source>Display…</source>
+        <translation>Pantalla…</translation>
+    </message>
+    <message>
+        <source>Units, language and colours</source>
+        <translation>Unidades, idioma y colores</translation>
+    </message>
+    <message>
+        <source>Units</source>
+        <translation>Unidades</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Idioma</translation>
+    </message>
+    <message>
+        <source>Colours</source>
+        <translation>Colores</translation>
+    </message>
+    <message>
+        <source>The system&apos;s colours, light, dark, or high contrast for sunlight</source>
+        <translation>Los colores del sistema, claro, oscuro o alto contraste para la luz del sol</translation>
     </message>
 </context>
 <context>
@@ -3262,6 +3309,22 @@ eventos:   %1
         <source>camera of %1 changed</source>
         <translation>cámara de %1 modificada</translation>
     </message>
+    <message>
+        <source>planned start %1</source>
+        <translation>inicio previsto %1</translation>
+    </message>
+    <message>
+        <source>planned start removed: now</source>
+        <translation>inicio previsto quitado: ahora</translation>
+    </message>
+    <message>
+        <source>authorisation for %1: %2</source>
+        <translation>autorización para %1: %2</translation>
+    </message>
+    <message>
+        <source>authorisation for %1 removed</source>
+        <translation>autorización para %1 quitada</translation>
+    </message>
 </context>
 <context>
     <name>RouteEndurance</name>
@@ -4053,6 +4116,14 @@ eventos:   %1
     <message>
         <source>written by a newer Sortie (schema %1); this one reads up to schema %2</source>
         <translation>escrito por una versión más reciente de Sortie (esquema %1); esta lee hasta el esquema %2</translation>
+    </message>
+    <message>
+        <source>expected a date and time in UTC, e.g. 2026-06-06T18:00:00Z</source>
+        <translation>se esperaba una fecha y hora en UTC, p. ej. 2026-06-06T18:00:00Z</translation>
+    </message>
+    <message>
+        <source>an authorisation needs the zone&apos;s identifier</source>
+        <translation>una autorización necesita el identificador de la zona</translation>
     </message>
 </context>
 <context>
@@ -6962,6 +7033,26 @@ eventos:   %1
         <source>Set route %1</source>
         <translation>Fijar %1 de la ruta</translation>
     </message>
+    <message>
+        <source>Plan the start for %1</source>
+        <translation>Planificar el inicio para %1</translation>
+    </message>
+    <message>
+        <source>Start now</source>
+        <translation>Iniciar ahora</translation>
+    </message>
+    <message>
+        <source>An authorisation needs the zone&apos;s identifier.</source>
+        <translation>Una autorización necesita el identificador de la zona.</translation>
+    </message>
+    <message>
+        <source>Remove the authorisation for %1</source>
+        <translation>Quitar la autorización para %1</translation>
+    </message>
+    <message>
+        <source>Record authorisation %1 for %2</source>
+        <translation>Registrar la autorización %1 para %2</translation>
+    </message>
 </context>
 <context>
     <name>sortie::mission::SegmentEditorModel</name>
@@ -7220,6 +7311,69 @@ eventos:   %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::GlanceStatus</name>
+    <message>
+        <source>No server</source>
+        <translation>Sin servidor</translation>
+    </message>
+    <message>
+        <source>No vehicle</source>
+        <translation>Sin vehículo</translation>
+    </message>
+    <message>
+        <source>GPS —</source>
+        <translation>GPS —</translation>
+    </message>
+    <message>
+        <source>No fix</source>
+        <translation>Sin posición</translation>
+    </message>
+    <message>
+        <source>2D fix</source>
+        <translation>Posición 2D</translation>
+    </message>
+    <message>
+        <source>3D fix</source>
+        <translation>Posición 3D</translation>
+    </message>
+    <message>
+        <source>RTK float</source>
+        <translation>RTK flotante</translation>
+    </message>
+    <message>
+        <source>RTK fixed</source>
+        <translation>RTK fija</translation>
+    </message>
+    <message>
+        <source>%1, %2 sats</source>
+        <translation>%1, %2 sat.</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 V</source>
+        <translation>%1 V</translation>
+    </message>
+    <message>
+        <source>Battery —</source>
+        <translation>Batería —</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Enlace perdido</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Hz</translation>
+    </message>
+    <message>
+        <source>Link —</source>
+        <translation>Enlace —</translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::MbTilesTileSource</name>
     <message>
         <source>MBTiles</source>
@@ -7326,6 +7480,25 @@ eventos:   %1
     <message>
         <source>; some points have no data (tried: %1)</source>
         <translation>; algunos puntos no tienen datos (se probó: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::Theme</name>
+    <message>
+        <source>System colours</source>
+        <translation>Colores del sistema</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Claro</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Oscuro</translation>
+    </message>
+    <message>
+        <source>Sunlight (high contrast)</source>
+        <translation>Luz solar (alto contraste)</translation>
     </message>
 </context>
 <context>

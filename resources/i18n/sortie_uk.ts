@@ -1079,6 +1079,29 @@
     </message>
 </context>
 <context>
+    <name>GlanceBar</name>
+    <message>
+        <source>The connection to the server</source>
+        <translation>З&apos;єднання із сервером</translation>
+    </message>
+    <message>
+        <source>The vehicle chosen in the fly view, else the first</source>
+        <translation>Апарат, вибраний у вікні польоту, інакше перший</translation>
+    </message>
+    <message>
+        <source>Its GPS: the fix and the satellites in view</source>
+        <translation>Його GPS: тип визначення і видимі супутники</translation>
+    </message>
+    <message>
+        <source>Its battery, against the low and critical levels</source>
+        <translation>Його акумулятор відносно низького і критичного рівнів</translation>
+    </message>
+    <message>
+        <source>Its link: how often its position arrives</source>
+        <translation>Його зв&apos;язок: як часто надходить його позиція</translation>
+    </message>
+</context>
+<context>
     <name>HciConnection</name>
     <message>
         <source>type %1</source>
@@ -1766,6 +1789,30 @@
     <message>
         <source>The language of Sortie, applied at once</source>
         <translation>Мова Sortie, застосовується одразу</translation>
+    </message>
+    <message>
+        <source>Display…</source>
+        <translation>Вигляд…</translation>
+    </message>
+    <message>
+        <source>Units, language and colours</source>
+        <translation>Одиниці, мова і кольори</translation>
+    </message>
+    <message>
+        <source>Units</source>
+        <translation>Одиниці</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Мова</translation>
+    </message>
+    <message>
+        <source>Colours</source>
+        <translation>Кольори</translation>
+    </message>
+    <message>
+        <source>The system&apos;s colours, light, dark, or high contrast for sunlight</source>
+        <translation>Кольори системи, світлі, темні або висока контрастність для сонячного світла</translation>
     </message>
 </context>
 <context>
@@ -3270,6 +3317,22 @@ events:   %1
         <source>camera of %1 changed</source>
         <translation>камеру %1 змінено</translation>
     </message>
+    <message>
+        <source>planned start %1</source>
+        <translation>запланований старт %1</translation>
+    </message>
+    <message>
+        <source>planned start removed: now</source>
+        <translation>запланований старт прибрано: зараз</translation>
+    </message>
+    <message>
+        <source>authorisation for %1: %2</source>
+        <translation>дозвіл для %1: %2</translation>
+    </message>
+    <message>
+        <source>authorisation for %1 removed</source>
+        <translation>дозвіл для %1 прибрано</translation>
+    </message>
 </context>
 <context>
     <name>RouteEndurance</name>
@@ -4064,6 +4127,14 @@ events:   %1
     <message>
         <source>written by a newer Sortie (schema %1); this one reads up to schema %2</source>
         <translation>записано новішою версією Sortie (схема %1); ця читає схеми до %2</translation>
+    </message>
+    <message>
+        <source>expected a date and time in UTC, e.g. 2026-06-06T18:00:00Z</source>
+        <translation>очікувалися дата й час в UTC, напр. 2026-06-06T18:00:00Z</translation>
+    </message>
+    <message>
+        <source>an authorisation needs the zone&apos;s identifier</source>
+        <translation>дозвіл потребує ідентифікатора зони</translation>
     </message>
 </context>
 <context>
@@ -6999,6 +7070,26 @@ events:   %1
         <source>Set route %1</source>
         <translation>Задати для маршруту: %1</translation>
     </message>
+    <message>
+        <source>Plan the start for %1</source>
+        <translation>Запланувати старт на %1</translation>
+    </message>
+    <message>
+        <source>Start now</source>
+        <translation>Почати зараз</translation>
+    </message>
+    <message>
+        <source>An authorisation needs the zone&apos;s identifier.</source>
+        <translation>Дозвіл потребує ідентифікатора зони.</translation>
+    </message>
+    <message>
+        <source>Remove the authorisation for %1</source>
+        <translation>Прибрати дозвіл для %1</translation>
+    </message>
+    <message>
+        <source>Record authorisation %1 for %2</source>
+        <translation>Записати дозвіл %1 для %2</translation>
+    </message>
 </context>
 <context>
     <name>sortie::mission::SegmentEditorModel</name>
@@ -7257,6 +7348,69 @@ events:   %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::GlanceStatus</name>
+    <message>
+        <source>No server</source>
+        <translation>Немає сервера</translation>
+    </message>
+    <message>
+        <source>No vehicle</source>
+        <translation>Немає апарата</translation>
+    </message>
+    <message>
+        <source>GPS —</source>
+        <translation>GPS —</translation>
+    </message>
+    <message>
+        <source>No fix</source>
+        <translation>Немає фіксації</translation>
+    </message>
+    <message>
+        <source>2D fix</source>
+        <translation>2D-фіксація</translation>
+    </message>
+    <message>
+        <source>3D fix</source>
+        <translation>3D-фіксація</translation>
+    </message>
+    <message>
+        <source>RTK float</source>
+        <translation>RTK float</translation>
+    </message>
+    <message>
+        <source>RTK fixed</source>
+        <translation>RTK fixed</translation>
+    </message>
+    <message>
+        <source>%1, %2 sats</source>
+        <translation>%1, %2 суп.</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 V</source>
+        <translation>%1 В</translation>
+    </message>
+    <message>
+        <source>Battery —</source>
+        <translation>Акумулятор —</translation>
+    </message>
+    <message>
+        <source>Link lost</source>
+        <translation>Зв&apos;язок втрачено</translation>
+    </message>
+    <message>
+        <source>%1 Hz</source>
+        <translation>%1 Гц</translation>
+    </message>
+    <message>
+        <source>Link —</source>
+        <translation>Зв&apos;язок —</translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::MbTilesTileSource</name>
     <message>
         <source>MBTiles</source>
@@ -7365,6 +7519,25 @@ events:   %1
     <message>
         <source>; some points have no data (tried: %1)</source>
         <translation>; для деяких точок немає даних (спробувано: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::Theme</name>
+    <message>
+        <source>System colours</source>
+        <translation>Кольори системи</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Світлі</translation>
+    </message>
+    <message>
+        <source>Dark</source>
+        <translation>Темні</translation>
+    </message>
+    <message>
+        <source>Sunlight (high contrast)</source>
+        <translation>Сонячне світло (висока контрастність)</translation>
     </message>
 </context>
 <context>

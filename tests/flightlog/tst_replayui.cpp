@@ -42,7 +42,10 @@ namespace {
 const char *const kTelemetryPage = R"(
     import QtQuick
     import Sortie.Ui
-    TelemetryPage { units: DisplayUnits {} }
+    TelemetryPage {
+        units: DisplayUnits {}
+        theme: Theme {}
+    }
 )";
 
 QVariantMap telemetryPageProperties(client::ClientGraph &graph)

@@ -71,6 +71,7 @@ Item {
         routeModel: root.routeModel
         terrain: terrain
         units: units
+        theme: Theme {}
     }
 }
 )";

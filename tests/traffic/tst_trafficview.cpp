@@ -3,6 +3,7 @@
 // and an SBS-1 feed at once (merged: one mark per aircraft), each with its chevron and a label that
 // overlaps no other; and an aircraft not heard for a minute is drawn faded.
 #include "ClientWindow.h"
+#include "MapPalette.h"
 #include "HciClient.h"
 #include "HciSession.h"
 #include "QuickScene.h"
@@ -80,7 +81,7 @@ private slots:
         QVERIFY(test::waitForFrame(app.window()));
         const QImage image = app.window()->grabWindow();
         const QPointF origin = layer->mapToScene(QPointF(0, 0));
-        const QColor colour = ui::TrafficLayer::colour();
+        const QColor colour = ui::MapPalette::light().traffic;
         QStringList callsigns;
         for (int i = 0; i < layer->drawnCount(); ++i) {
             callsigns << layer->labelText(i).section(QLatin1Char(' '), 0, 0);
@@ -148,7 +149,7 @@ Item {
         QCOMPARE(layer->labelText(1), QStringLiteral("NEW2 300 m std climbing"));
         QVERIFY(!layer->labelRect(0).intersects(layer->labelRect(1)));
         const QImage image = scene.grab();
-        const QColor colour = ui::TrafficLayer::colour();
+        const QColor colour = ui::MapPalette::light().traffic;
         QVERIFY(countNear(image, around(layer->aircraftPosition(1), 4), colour) > 5);
         QCOMPARE(countNear(image, around(layer->aircraftPosition(0), 4), colour), 0); // faded: not the full colour
         now += traffic::TrafficPicture::kRemoveAfterMs - traffic::TrafficPicture::kStaleAfterMs;

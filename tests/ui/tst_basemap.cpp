@@ -125,7 +125,7 @@ private slots:
         QImage image = ready.takeFirst().at(1).value<QImage>();
         QCOMPARE(image.pixelColor(pixelIn(tileAt(23, 10, 2), 23, 10)), MapPalette::light().land);
 
-        source.setDark(true);
+        source.setPalette(MapPalette::dark());
         QCOMPARE(invalidated.count(), 1);
         source.requestTile(tileAt(0, -140, 2));
         QVERIFY(ready.wait(5000));

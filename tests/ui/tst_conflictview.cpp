@@ -4,6 +4,7 @@
 // conflict layer's ring, in red, on the open route), the route panel lists the conflict with its
 // time, and pressing Upload refuses it, naming EMU-101; nothing reaches EMU-102.
 #include "ClientWindow.h"
+#include "MapPalette.h"
 #include "ConflictLayer.h"
 #include "FleetRoutes.h"
 #include "MapView.h"
@@ -119,7 +120,7 @@ private slots:
         for (int dy = -12; dy <= 12; ++dy)
             for (int dx = -12; dx <= 12; ++dx) {
                 const QPoint p = (ring + QPointF(dx, dy)).toPoint();
-                red += image.rect().contains(p) && test::colourDistance(image.pixel(p), ui::ConflictLayer::colour().rgb()) < 60;
+                red += image.rect().contains(p) && test::colourDistance(image.pixel(p), ui::MapPalette::light().conflict.rgb()) < 60;
             }
         QVERIFY2(red > 10, qPrintable(QString::number(red)));
 

@@ -3,6 +3,7 @@
 // the route panel, an error in the validation list, and on the map (and in the terrain profile) the
 // battery change it needs and its point of no return, drawn where RouteEndurance puts them.
 #include "ClientWindow.h"
+#include "MapPalette.h"
 #include "ElevationProfileView.h"
 #include "EnduranceLayer.h"
 #include "QuickScene.h"
@@ -119,9 +120,9 @@ private slots:
         QVERIFY(test::waitForFrame(app.window()));
         const QImage image = app.window()->grabWindow();
         const auto inWindow = [layer](int i) { return layer->mapToScene(layer->markPosition(i)); };
-        QVERIFY2(nearColour(image, inWindow(changes), ui::EnduranceLayer::noReturnColour()), "no red diamond at the point of no return");
+        QVERIFY2(nearColour(image, inWindow(changes), ui::MapPalette::light().noReturn), "no red diamond at the point of no return");
         // The battery glyph stands above its point.
-        QVERIFY2(nearColour(image, inWindow(0) + QPointF(0, -21), ui::EnduranceLayer::unplannedColour()), "no amber battery at the change");
+        QVERIFY2(nearColour(image, inWindow(0) + QPointF(0, -21), ui::MapPalette::light().unplanned), "no amber battery at the change");
 
         // In the terrain profile too, at the same places along the path.
         auto *profileView = app.find<ui::ElevationProfileView>(QStringLiteral("elevationProfile"));

@@ -259,7 +259,7 @@ private slots:
         QTemporaryDir clientDir;
         QSettings clientStorage(QDir(clientDir.path()).filePath(QStringLiteral("client.ini")), QSettings::IniFormat);
         sortie::client::ClientGraph client(&clientStorage, {});
-        sortie::test::QuickScene scene("import Sortie.Ui\nLoginPage {}", QSize(800, 600),
+        sortie::test::QuickScene scene("import Sortie.Ui\nLoginPage { theme: Theme {} }", QSize(800, 600),
                                        {{QStringLiteral("appSettings"), QVariant::fromValue(&restarted.settings)},
                                         {QStringLiteral("graph"), QVariant::fromValue(&client)}});
         QVERIFY2(scene.isReady(), qPrintable(scene.errors()));

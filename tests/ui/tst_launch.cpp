@@ -300,8 +300,9 @@ private slots:
             switch (property.metaType().id()) {
             case QMetaType::QString:
                 // A value each getter keeps as written (the map source knows three).
-                value = QLatin1String(property.name()) == QLatin1String("mapSource") ? QStringLiteral("xyz")
-                                                                                       : QStringLiteral("new-%1").arg(QLatin1String(property.name()));
+                value = QLatin1String(property.name()) == QLatin1String("mapSource")      ? QStringLiteral("xyz")
+                        : QLatin1String(property.name()) == QLatin1String("colourScheme") ? QStringLiteral("sunlight")
+                                                                                           : QStringLiteral("new-%1").arg(QLatin1String(property.name()));
                 break;
             case QMetaType::Double: value = 0.25; break;
             case QMetaType::Bool: value = !before.toBool(); break;
@@ -320,7 +321,7 @@ private slots:
             }
             ++written;
         }
-        QCOMPARE(written, 14); // the two read-only ones follow the keyring
+        QCOMPARE(written, 15); // the two read-only ones follow the keyring
     }
 
     // Without a keyring nothing is remembered, the login view is told why, and the file never

@@ -4,6 +4,7 @@
 #include "MapScaleBar.h"
 #include "MapView.h"
 #include "QuickScene.h"
+#include "Theme.h"
 #include "TileHttpServer.h"
 #include "XyzTileSource.h"
 
@@ -105,9 +106,17 @@ private slots:
         const QImage image = m_scene->grab();
         QVERIFY(sortie::test::distinctColours(image) > 4); // land, sea, coast, graticule, labels
 
-        m_map->setDark(true);
+        // The theme's scheme changes the map's palette, and the map draws again in it.
+        Theme theme;
+        theme.setScheme(Theme::Scheme::Dark);
+        m_map->setTheme(&theme);
         QTRY_COMPARE(colourAt(QGeoCoordinate(23, 10)), MapPalette::dark().land);
         QCOMPARE(colourAt(QGeoCoordinate(25, -40)), MapPalette::dark().sea);
+        theme.setScheme(Theme::Scheme::Sunlight);
+        QTRY_COMPARE(colourAt(QGeoCoordinate(23, 10)), MapPalette::sunlight().land);
+        QCOMPARE(colourAt(QGeoCoordinate(25, -40)), MapPalette::sunlight().sea);
+        m_map->setTheme(nullptr);
+        QTRY_COMPARE(colourAt(QGeoCoordinate(23, 10)), MapPalette::light().land);
     }
 
     void dragPans()

@@ -5,6 +5,7 @@
 // is one undo step. And the zone layer's own drawing: hatch where a zone is, green where an inclusion
 // zone's edge is, labels that never overlap, a tooltip with source and limits.
 #include "Airspace.h"
+#include "MapPalette.h"
 #include "ClientWindow.h"
 #include "FleetRoutes.h"
 #include "LabelPlacer.h"
@@ -222,14 +223,14 @@ private slots:
         const QImage image = client.window()->grabWindow();
         image.save(QDir(screenshotDir()).filePath(QStringLiteral("zones.png")));
         const QPointF inside = onMap(origin.atDistanceAndAzimuth(350, 90).atDistanceAndAzimuth(25, 180));
-        QVERIFY2(countNear(image, inside, 10, ui::ZoneLayer::exclusionColour()) > 4, "no red hatch inside the zone");
+        QVERIFY2(countNear(image, inside, 10, ui::MapPalette::light().exclusion) > 4, "no red hatch inside the zone");
         // The leg red where it is inside (its line's own pixels, which the route draws over the hatch),
         // and not where it is not.
-        QVERIFY2(countNear(image, onMap(origin.atDistanceAndAzimuth(340, 90)), 1, ui::ZoneCrossingLayer::colour()) >= 5, "the leg is not red in the zone");
-        QCOMPARE(countNear(image, onMap(origin.atDistanceAndAzimuth(260, 90)), 1, ui::ZoneCrossingLayer::colour()), 0);
+        QVERIFY2(countNear(image, onMap(origin.atDistanceAndAzimuth(340, 90)), 1, ui::MapPalette::light().crossing) >= 5, "the leg is not red in the zone");
+        QCOMPARE(countNear(image, onMap(origin.atDistanceAndAzimuth(260, 90)), 1, ui::MapPalette::light().crossing), 0);
         QCOMPARE(profile->bandCount(), 1);
         const QRectF band = profile->bandRect(0);
-        QVERIFY2(countNear(image, profile->mapToScene(band.center()), 6, ui::ZoneLayer::exclusionColour()) > 2, "no red band on the profile");
+        QVERIFY2(countNear(image, profile->mapToScene(band.center()), 6, ui::MapPalette::light().exclusion) > 2, "no red band on the profile");
 
         // Hovered: the tooltip says where it comes from and its limits.
         zones->hoverAt(zones->mapFromScene(onMap(origin.atDistanceAndAzimuth(350, 90).atDistanceAndAzimuth(30, 0))));
@@ -387,12 +388,12 @@ private slots:
 
         // Hatched red where an exclusion zone is (off its label), green on the inclusion zone's edge.
         const QPointF south = layer->mapToScene(scene.find<ui::MapView>(QStringLiteral("map"))->fromCoordinate(centre.atDistanceAndAzimuth(100, 200)));
-        QVERIFY2(countNear(image, south, 8, ui::ZoneLayer::exclusionColour()) > 4, "no hatch in the zone");
+        QVERIFY2(countNear(image, south, 8, ui::MapPalette::light().exclusion) > 4, "no hatch in the zone");
         const QPointF edge = layer->mapToScene(scene.find<ui::MapView>(QStringLiteral("map"))->fromCoordinate(west.atDistanceAndAzimuth(141, 180)));
-        QVERIFY2(countNear(image, edge, 4, ui::ZoneLayer::inclusionColour()) > 2, "no green outline on the inclusion zone's edge");
+        QVERIFY2(countNear(image, edge, 4, ui::MapPalette::light().inclusion) > 2, "no green outline on the inclusion zone's edge");
         // Nothing red in the inclusion zone's middle (outlined, not hatched), away from its label.
         const QPointF westInside = layer->mapToScene(scene.find<ui::MapView>(QStringLiteral("map"))->fromCoordinate(west.atDistanceAndAzimuth(80, 200)));
-        QCOMPARE(countNear(image, westInside, 6, ui::ZoneLayer::exclusionColour()), 0);
+        QCOMPARE(countNear(image, westInside, 6, ui::MapPalette::light().exclusion), 0);
 
         // No two labels overlap; the inclusion zone's says its limits.
         for (int i = 0; i < layer->labelCount(); ++i)
@@ -423,7 +424,7 @@ private slots:
         store.setActive(3, false);
         QTest::qWait(50);
         const QImage off = scene.grab();
-        QCOMPARE(countNear(off, south, 8, ui::ZoneLayer::exclusionColour()), 0);
+        QCOMPARE(countNear(off, south, 8, ui::MapPalette::light().exclusion), 0);
     }
 };
 

@@ -10,10 +10,6 @@
 namespace sortie::ui {
 
 namespace {
-const QColor kSky(0x3f, 0x8f, 0xd8);
-const QColor kGround(0x8a, 0x5a, 0x2b);
-const QColor kSymbol(0xff, 0xd6, 0x00);
-
 bool same(double a, double b)
 {
     return a == b || (std::isnan(a) && std::isnan(b));
@@ -46,18 +42,27 @@ void AttitudeIndicator::setPitch(double degrees)
     emit attitudeChanged();
 }
 
-void AttitudeIndicator::setTextColor(const QColor &color)
+void AttitudeIndicator::setTheme(Theme *theme)
 {
-    if (color == m_text)
+    if (theme == m_theme)
         return;
-    m_text = color;
+    if (m_theme)
+        disconnect(m_theme, nullptr, this, nullptr);
+    m_theme = theme;
+    if (m_theme)
+        connect(m_theme, &Theme::coloursChanged, this, [this] { update(); });
     update();
-    emit textColorChanged();
+    emit themeChanged();
 }
 
 void AttitudeIndicator::paint(QPainter *painter)
 {
     painter->setRenderHint(QPainter::Antialiasing);
+    const ThemeColours &colours = coloursOf(m_theme);
+    const QColor text = colours.windowText;
+    const QColor sky = colours.map.sky, ground = colours.map.ground, dial = colours.map.dial, symbol = colours.map.attention;
+    QColor blank = colours.mid;
+    blank.setAlpha(90);
     const double side = std::min(width(), height());
     if (side < 20)
         return;
@@ -67,8 +72,8 @@ void AttitudeIndicator::paint(QPainter *painter)
     face.addEllipse(centre, r, r);
 
     if (!hasAttitude()) {
-        painter->setPen(QPen(m_text, 1.5));
-        painter->setBrush(QColor(0x80, 0x80, 0x80, 90));
+        painter->setPen(QPen(text, 1.5));
+        painter->setBrush(blank);
         painter->drawPath(face);
         QFont font = painter->font();
         font.setPixelSize(std::max(9, int(side / 12)));
@@ -86,15 +91,15 @@ void AttitudeIndicator::paint(QPainter *painter)
     painter->rotate(-m_roll);
     painter->translate(0, pitchDeg * pixelsPerDegree);
     const double big = side * 3;
-    painter->fillRect(QRectF(-big, -big, 2 * big, big), kSky);
-    painter->fillRect(QRectF(-big, 0, 2 * big, big), kGround);
-    painter->setPen(QPen(Qt::white, 2));
+    painter->fillRect(QRectF(-big, -big, 2 * big, big), sky);
+    painter->fillRect(QRectF(-big, 0, 2 * big, big), ground);
+    painter->setPen(QPen(dial, 2));
     painter->drawLine(QPointF(-big, 0), QPointF(big, 0));
     // The pitch ladder, every 10° (short marks at 5°).
     QFont font = painter->font();
     font.setPixelSize(std::max(8, int(side / 16)));
     painter->setFont(font);
-    painter->setPen(QPen(Qt::white, 1.2));
+    painter->setPen(QPen(dial, 1.2));
     for (int deg = -60; deg <= 60; deg += 5) {
         if (deg == 0)
             continue;
@@ -112,7 +117,7 @@ void AttitudeIndicator::paint(QPainter *painter)
     // The roll scale (fixed) and its pointer (turns with the roll).
     painter->save();
     painter->translate(centre);
-    painter->setPen(QPen(Qt::white, 1.5));
+    painter->setPen(QPen(dial, 1.5));
     for (int deg : {-60, -45, -30, -20, -10, 0, 10, 20, 30, 45, 60}) {
         painter->save();
         painter->rotate(deg);
@@ -127,21 +132,21 @@ void AttitudeIndicator::paint(QPainter *painter)
     pointer.lineTo(6, -r + 23);
     pointer.closeSubpath();
     painter->setPen(Qt::NoPen);
-    painter->setBrush(kSymbol);
+    painter->setBrush(symbol);
     painter->drawPath(pointer);
     painter->restore();
 
     // The aircraft: fixed wings and a centre dot.
-    painter->setPen(QPen(kSymbol, 4, Qt::SolidLine, Qt::RoundCap));
+    painter->setPen(QPen(symbol, 4, Qt::SolidLine, Qt::RoundCap));
     painter->drawLine(centre + QPointF(-r * 0.55, 0), centre + QPointF(-r * 0.18, 0));
     painter->drawLine(centre + QPointF(-r * 0.18, 0), centre + QPointF(-r * 0.10, r * 0.08));
     painter->drawLine(centre + QPointF(r * 0.55, 0), centre + QPointF(r * 0.18, 0));
     painter->drawLine(centre + QPointF(r * 0.18, 0), centre + QPointF(r * 0.10, r * 0.08));
-    painter->setBrush(kSymbol);
+    painter->setBrush(symbol);
     painter->drawEllipse(centre, 2.5, 2.5);
 
     painter->setBrush(Qt::NoBrush);
-    painter->setPen(QPen(m_text, 1.5));
+    painter->setPen(QPen(text, 1.5));
     painter->drawPath(face);
 }
 

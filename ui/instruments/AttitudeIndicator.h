@@ -1,6 +1,9 @@
 #pragma once
 
+#include "Theme.h"
+
 #include <QColor>
+#include <QPointer>
 #include <QQuickPaintedItem>
 #include <QtQml/qqmlregistration.h>
 
@@ -17,7 +20,8 @@ class AttitudeIndicator : public QQuickPaintedItem
     QML_ELEMENT
     Q_PROPERTY(double roll READ roll WRITE setRoll NOTIFY attitudeChanged)   // deg, right wing down positive
     Q_PROPERTY(double pitch READ pitch WRITE setPitch NOTIFY attitudeChanged) // deg, nose up positive
-    Q_PROPERTY(QColor textColor READ textColor WRITE setTextColor NOTIFY textColorChanged)
+    // Its words and the face come from the theme (the light scheme without one).
+    Q_PROPERTY(sortie::ui::Theme *theme READ theme WRITE setTheme NOTIFY themeChanged)
 
 public:
     explicit AttitudeIndicator(QQuickItem *parent = nullptr);
@@ -26,20 +30,20 @@ public:
     void setRoll(double degrees);
     double pitch() const { return m_pitch; }
     void setPitch(double degrees);
-    QColor textColor() const { return m_text; }
-    void setTextColor(const QColor &color);
+    Theme *theme() const { return m_theme; }
+    void setTheme(Theme *theme);
     bool hasAttitude() const { return std::isfinite(m_roll) && std::isfinite(m_pitch); }
 
     void paint(QPainter *painter) override;
 
 signals:
     void attitudeChanged();
-    void textColorChanged();
+    void themeChanged();
 
 private:
     double m_roll = qQNaN();
     double m_pitch = qQNaN();
-    QColor m_text = Qt::black;
+    QPointer<Theme> m_theme;
 };
 
 } // namespace sortie::ui

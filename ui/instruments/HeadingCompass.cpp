@@ -28,11 +28,15 @@ void HeadingCompass::setHeading(double degrees) { set(m_heading, degrees); }
 void HeadingCompass::setBearingToHome(double degrees) { set(m_home, degrees); }
 void HeadingCompass::setBearingToNext(double degrees) { set(m_next, degrees); }
 
-void HeadingCompass::setTextColor(const QColor &color)
+void HeadingCompass::setTheme(Theme *theme)
 {
-    if (color == m_text)
+    if (theme == m_theme)
         return;
-    m_text = color;
+    if (m_theme)
+        disconnect(m_theme, nullptr, this, nullptr);
+    m_theme = theme;
+    if (m_theme)
+        connect(m_theme, &Theme::coloursChanged, this, [this] { update(); });
     update();
     emit changed();
 }
@@ -58,9 +62,11 @@ void HeadingCompass::paint(QPainter *painter)
     const QPointF centre(width() / 2, height() / 2);
     const double up = std::isfinite(m_heading) ? m_heading : 0.0;
 
-    QColor face = m_text;
+    const ThemeColours &colours = coloursOf(m_theme);
+    const QColor text = colours.windowText;
+    QColor face = text;
     face.setAlpha(18);
-    painter->setPen(QPen(m_text, 1.5));
+    painter->setPen(QPen(text, 1.5));
     painter->setBrush(face);
     painter->drawEllipse(centre, r, r);
 
@@ -77,7 +83,7 @@ void HeadingCompass::paint(QPainter *painter)
         painter->save();
         painter->rotate(deg);
         const bool major = deg % 30 == 0;
-        painter->setPen(QPen(deg == 0 ? QColor(0xe5, 0x39, 0x35) : m_text, major ? 2 : 1));
+        painter->setPen(QPen(deg == 0 ? colours.map.noReturn : text, major ? 2 : 1));
         painter->drawLine(QPointF(0, -r + 1), QPointF(0, -r + (major ? 10 : 6)));
         if (major) {
             const QString label = deg % 90 == 0 ? QString::fromLatin1(kCardinal[deg / 90]) : QString::number(deg / 10);
@@ -100,27 +106,27 @@ void HeadingCompass::paint(QPainter *painter)
         triangle.lineTo(6, 5);
         triangle.lineTo(-6, 5);
         triangle.closeSubpath();
-        painter->setPen(QPen(Qt::white, 1));
-        painter->setBrush(m_nextColor);
+        painter->setPen(QPen(colours.map.outline, 1));
+        painter->setBrush(colours.map.unplanned);
         painter->drawPath(triangle);
         painter->restore();
     }
     if (std::isfinite(m_home)) {
         const QPointF at = markAt(m_home);
         const QRectF box(at - QPointF(7, 7), QSizeF(14, 14));
-        painter->setPen(QPen(Qt::white, 1));
-        painter->setBrush(m_homeColor);
+        painter->setPen(QPen(colours.map.outline, 1));
+        painter->setBrush(colours.map.planned);
         painter->drawRect(box);
         QFont small = font;
         small.setPixelSize(10);
         painter->setFont(small);
-        painter->setPen(Qt::white);
+        painter->setPen(colours.map.markText);
         painter->drawText(box, Qt::AlignCenter, QStringLiteral("H"));
         painter->setFont(font);
     }
 
     // The lubber line and the vehicle in the middle, pointing up; the heading in figures.
-    painter->setPen(QPen(QColor(0xff, 0xd6, 0x00), 3, Qt::SolidLine, Qt::RoundCap));
+    painter->setPen(QPen(colours.map.attention, 3, Qt::SolidLine, Qt::RoundCap));
     painter->drawLine(centre + QPointF(0, -r - 1), centre + QPointF(0, -r + 12));
     QPainterPath arrow;
     arrow.moveTo(0, -r * 0.32);
@@ -128,10 +134,10 @@ void HeadingCompass::paint(QPainter *painter)
     arrow.lineTo(0, r * 0.1);
     arrow.lineTo(-r * 0.16, r * 0.2);
     arrow.closeSubpath();
-    painter->setPen(QPen(m_text, 1));
-    painter->setBrush(QColor(0xff, 0xd6, 0x00));
+    painter->setPen(QPen(text, 1));
+    painter->setBrush(colours.map.attention);
     painter->drawPath(arrow.translated(centre));
-    painter->setPen(m_text);
+    painter->setPen(text);
     painter->setFont(font);
     const QString figures = std::isfinite(m_heading)
                                 ? QStringLiteral("%1°").arg((int(std::lround(m_heading)) % 360 + 360) % 360, 3, 10, QLatin1Char('0'))

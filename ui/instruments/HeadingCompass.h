@@ -1,6 +1,9 @@
 #pragma once
 
+#include "Theme.h"
+
 #include <QColor>
+#include <QPointer>
 #include <QQuickPaintedItem>
 #include <QtQml/qqmlregistration.h>
 
@@ -16,9 +19,8 @@ class HeadingCompass : public QQuickPaintedItem
     Q_PROPERTY(double heading READ heading WRITE setHeading NOTIFY changed)             // deg from north, clockwise (bearings too)
     Q_PROPERTY(double bearingToHome READ bearingToHome WRITE setBearingToHome NOTIFY changed)
     Q_PROPERTY(double bearingToNext READ bearingToNext WRITE setBearingToNext NOTIFY changed)
-    Q_PROPERTY(QColor textColor READ textColor WRITE setTextColor NOTIFY changed)
-    Q_PROPERTY(QColor homeColor MEMBER m_homeColor NOTIFY changed)
-    Q_PROPERTY(QColor nextColor MEMBER m_nextColor NOTIFY changed)
+    // The card's words, home's and the next waypoint's marks come from the theme (light without one).
+    Q_PROPERTY(sortie::ui::Theme *theme READ theme WRITE setTheme NOTIFY changed)
 
 public:
     explicit HeadingCompass(QQuickItem *parent = nullptr);
@@ -29,8 +31,8 @@ public:
     void setBearingToHome(double degrees);
     double bearingToNext() const { return m_next; }
     void setBearingToNext(double degrees);
-    QColor textColor() const { return m_text; }
-    void setTextColor(const QColor &color);
+    Theme *theme() const { return m_theme; }
+    void setTheme(Theme *theme);
 
     // Where a bearing's mark sits on the rim, in item pixels (a null point when not shown).
     Q_INVOKABLE QPointF markPosition(double bearing) const;
@@ -45,9 +47,7 @@ private:
     double m_heading = qQNaN();
     double m_home = qQNaN();
     double m_next = qQNaN();
-    QColor m_text = Qt::black;
-    QColor m_homeColor = QColor(0x43, 0xa0, 0x47);
-    QColor m_nextColor = QColor(0xff, 0x8f, 0x00);
+    QPointer<Theme> m_theme;
 };
 
 } // namespace sortie::ui

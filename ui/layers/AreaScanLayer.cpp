@@ -174,7 +174,7 @@ void AreaScanLayer::paint(QPainter *painter)
         painter->setPen(QPen(m_color, 2.0, Qt::DashLine));
         painter->setBrush(fill);
         painter->drawEllipse(m_drawnPolygon.front(), r, r);
-        painter->setPen(QPen(Qt::white, 1.5));
+        painter->setPen(QPen(colours().outline, 1.5));
         painter->setBrush(m_color.darker(120));
         painter->drawEllipse(handle, 6, 6);
     }
@@ -193,13 +193,13 @@ void AreaScanLayer::paint(QPainter *painter)
         painter->drawPolyline(m_drawnPolygon);
     }
     if (m_drawnTransects.size() >= 2) {
-        painter->setPen(QPen(QColor(255, 255, 255, 180), 3.5));
+        painter->setPen(QPen(colours().halo, 3.5));
         painter->setBrush(Qt::NoBrush);
         painter->drawPolyline(m_drawnTransects);
         painter->setPen(QPen(m_color.darker(140), 1.8));
         painter->drawPolyline(m_drawnTransects);
     }
-    painter->setPen(QPen(Qt::white, 1.5));
+    painter->setPen(QPen(colours().outline, 1.5));
     painter->setBrush(m_color.darker(120));
     for (const QPointF &vertex : std::as_const(m_drawnPolygon))
         painter->drawRect(QRectF(vertex - QPointF(5, 5), QSizeF(10, 10)));

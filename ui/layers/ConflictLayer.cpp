@@ -71,13 +71,13 @@ void ConflictLayer::paint(QPainter *painter)
     const QFontMetricsF metrics(font);
     for (const Mark &mark : m_marks) {
         const QPointF a = viewport.geoToScreen(mark.own), b = viewport.geoToScreen(mark.other);
-        p.setPen(QPen(colour(), 2, Qt::DashLine));
+        p.setPen(QPen(colours().conflict, 2, Qt::DashLine));
         p.drawLine(a, b);
-        p.setPen(QPen(colour(), 3));
+        p.setPen(QPen(colours().conflict, 3));
         p.setBrush(Qt::NoBrush);
         p.drawEllipse(a, 10, 10);
-        p.setPen(QPen(Qt::white, 1.5));
-        p.setBrush(colour());
+        p.setPen(QPen(colours().outline, 1.5));
+        p.setBrush(colours().conflict);
         p.drawEllipse(b, 6, 6);
         // The label below the ring, moved left where it would run past the map's right edge.
         QPointF at = a + QPointF(14, 18);
@@ -86,11 +86,11 @@ void ConflictLayer::paint(QPainter *painter)
             at.setX(a.x() - 14 - w);
         QPainterPath path;
         path.addText(at, font, mark.label);
-        p.setPen(QPen(QColor(255, 255, 255, 220), 3.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.setPen(QPen(colours().halo, 3.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         p.setBrush(Qt::NoBrush);
         p.drawPath(path);
         p.setPen(Qt::NoPen);
-        p.setBrush(colour().darker(120));
+        p.setBrush(colours().conflict.darker(120));
         p.drawPath(path);
     }
 }

@@ -34,8 +34,6 @@ public:
 
     void paint(QPainter *painter) override;
 
-    static QColor colour() { return QColor(0xd5, 0x00, 0x00); }
-
 signals:
     void deconflictionChanged();
     void conflictsChanged();

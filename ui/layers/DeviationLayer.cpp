@@ -38,12 +38,12 @@ void DeviationLayer::readLevels()
         m_levels[size_t(row)] = model->index(row, 0).data(role).toInt();
 }
 
-QColor DeviationLayer::levelColour(int level)
+QColor DeviationLayer::levelColour(const MapPalette &colours, int level)
 {
     switch (level) {
-    case 0: return QColor(0x43, 0xa0, 0x47); // green
-    case 1: return QColor(0xfb, 0x8c, 0x00); // amber
-    default: return QColor(0xe5, 0x39, 0x35); // red
+    case 0: return colours.planned;   // green
+    case 1: return colours.unplanned; // amber
+    default: return colours.noReturn; // red
     }
 }
 
@@ -61,7 +61,7 @@ void DeviationLayer::paint(QPainter *painter)
             continue;
         }
         const QPointF p = viewport.toScreenUnwrapped(points[i]);
-        painter->setPen(QPen(levelColour(m_levels[i]), 4, Qt::SolidLine, Qt::RoundCap));
+        painter->setPen(QPen(levelColour(colours(), m_levels[i]), 4, Qt::SolidLine, Qt::RoundCap));
         painter->drawLine(previous, p);
         previous = p;
     }

@@ -22,7 +22,8 @@ public:
     void setModel(QAbstractItemModel *model);
     int count() const { return m_points.count(); }
     // The colour a level is drawn in.
-    static QColor levelColour(int level);
+    // On time, a little off, far off: the map palette's planned, unplanned and no-return colours.
+    static QColor levelColour(const MapPalette &colours, int level);
 
     void paint(QPainter *painter) override;
 

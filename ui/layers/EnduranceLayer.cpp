@@ -19,7 +19,7 @@ QGeoCoordinate positionOf(const endurance::RoutePlace &place)
 
 // The label right of `at`, or left of `leftEnd` where it would run under the map's zoom buttons or
 // past its edge (`right`).
-void drawLabel(QPainter &p, QPointF at, double leftEnd, double right, const QString &text, const QColor &colour)
+void drawLabel(QPainter &p, QPointF at, double leftEnd, double right, const QString &text, const QColor &colour, const QColor &halo)
 {
     QPainterPath path;
     QFont font = p.font();
@@ -28,7 +28,7 @@ void drawLabel(QPainter &p, QPointF at, double leftEnd, double right, const QStr
     if (at.x() + width > right - 56)
         at.setX(leftEnd - width);
     path.addText(at, font, text);
-    p.setPen(QPen(QColor(255, 255, 255, 220), 3.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    p.setPen(QPen(halo, 3.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
     p.setBrush(Qt::NoBrush);
     p.drawPath(path);
     p.setPen(Qt::NoPen);
@@ -87,28 +87,29 @@ void EnduranceLayer::paint(QPainter *painter)
     p.setRenderHint(QPainter::Antialiasing);
     const MapViewport &viewport = paintViewport();
     const double right = width() - paintOrigin().x(); // the map's right edge in picture pixels
+    const MapPalette &colour = colours();
     for (const Mark &mark : m_marks) {
         const QPointF c = viewport.geoToScreen(mark.position);
         if (mark.kind == Kind::NoReturn) {
             // A diamond, the shape of a warning sign, in red.
             const QPolygonF diamond{c + QPointF(0, -9), c + QPointF(9, 0), c + QPointF(0, 9), c + QPointF(-9, 0)};
-            p.setPen(QPen(Qt::white, 2));
-            p.setBrush(noReturnColour());
+            p.setPen(QPen(colour.outline, 2));
+            p.setBrush(colour.noReturn);
             p.drawPolygon(diamond);
-            drawLabel(p, c + QPointF(13, 5), c.x() - 13, right, mark.label, noReturnColour());
+            drawLabel(p, c + QPointF(13, 5), c.x() - 13, right, mark.label, colour.noReturn, colour.halo);
             continue;
         }
         // A battery: its body and terminal, above the point so the waypoint's number stays visible.
-        const QColor colour = mark.kind == Kind::PlannedChange ? plannedColour() : unplannedColour();
+        const QColor fill = mark.kind == Kind::PlannedChange ? colour.planned : colour.unplanned;
         const QRectF body(c.x() - 8, c.y() - 26, 16, 10);
-        p.setPen(QPen(Qt::white, 2));
-        p.setBrush(colour);
+        p.setPen(QPen(colour.outline, 2));
+        p.setBrush(fill);
         p.drawRoundedRect(body, 2, 2);
         p.setPen(Qt::NoPen);
         p.drawRect(QRectF(body.right(), body.center().y() - 2.5, 3, 5));
-        p.setPen(QPen(colour, 2));
+        p.setPen(QPen(fill, 2));
         p.drawLine(c + QPointF(0, -16), c + QPointF(0, -4));
-        drawLabel(p, QPointF(body.right() + 7, body.bottom()), body.left() - 5, right, mark.label, colour);
+        drawLabel(p, QPointF(body.right() + 7, body.bottom()), body.left() - 5, right, mark.label, fill, colour.halo);
     }
 }
 

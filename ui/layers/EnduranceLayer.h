@@ -34,10 +34,6 @@ public:
 
     void paint(QPainter *painter) override;
 
-    static QColor plannedColour() { return QColor(0x43, 0xa0, 0x47); }
-    static QColor unplannedColour() { return QColor(0xfb, 0x8c, 0x00); }
-    static QColor noReturnColour() { return QColor(0xe5, 0x39, 0x35); }
-
 signals:
     void enduranceChanged();
     void marksChanged();

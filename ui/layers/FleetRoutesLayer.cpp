@@ -149,8 +149,7 @@ void FleetRoutesLayer::paint(QPainter *painter)
         points.reserve(route->path.size());
         for (const QPointF &p : route->path)
             points.append(view.geoToScreen(QGeoCoordinate(p.y(), p.x())));
-        PlanPicture::Look look;
-        look.color = route->color;
+        PlanPicture::Look look = PlanPicture::Look::in(colours(), route->color);
         look.current = m_current >= 0 && route->vehicleRow == m_current;
         look.complete = route->state == QLatin1String("flown");
         if (route->state == QLatin1String("planned"))

@@ -150,10 +150,10 @@ void FlightPlanLayer::paint(QPainter *painter)
         if (!takeoff.isValid())
             continue;
         const QRectF box(view.geoToScreen(takeoff) - QPointF(7, 7), QSizeF(14, 14));
-        painter->setPen(QPen(Qt::white, 1.5));
+        painter->setPen(QPen(colours().outline, 1.5));
         painter->setBrush(client::vehicleColor(row).darker(120));
         painter->drawRect(box);
-        painter->setPen(Qt::white);
+        painter->setPen(colours().markText);
         painter->drawText(box, Qt::AlignCenter, QStringLiteral("H"));
     }
     const QRectF clip(QPointF(0, 0), view.size());
@@ -170,12 +170,11 @@ void FlightPlanLayer::paint(QPainter *painter)
                 points.append(view.geoToScreen(vehicle::coordinateOf(item)));
             plan.layOut(std::move(points));
         }
-        PlanPicture::Look look;
+        PlanPicture::Look look = PlanPicture::Look::in(colours(), client::vehicleColor(row));
         look.current = row == m_current;
         look.numbered = look.current || m_current < 0;
         look.active = activeWaypoint(row);
         look.complete = v->missionState() == QLatin1String("complete");
-        look.color = client::vehicleColor(row);
         if (!look.current && m_current >= 0)
             look.color.setAlpha(150);
         // From the vehicle to where it flies now: it moves every frame, so it is not in the

@@ -52,11 +52,19 @@ void MapLayer::setMap(MapView *map)
     if (m_map)
         disconnect(m_map, nullptr, this, nullptr);
     m_map = map;
-    if (m_map)
+    if (m_map) {
         connect(m_map, &MapView::viewportChanged, this, &MapLayer::followViewport);
+        connect(m_map, &MapView::coloursChanged, this, &MapLayer::relayout);
+    }
     m_paintViewport = MapViewport();
     followViewport();
     emit mapChanged();
+}
+
+const MapPalette &MapLayer::colours() const
+{
+    static const MapPalette light = MapPalette::light();
+    return m_map ? m_map->colours() : light;
 }
 
 MapViewport MapLayer::viewport() const

@@ -49,6 +49,9 @@ public:
     // How far the picture reaches beyond the map now: the pan margin, or 0 just after a zoom.
     int pictureMargin() const { return m_pictureMargin; }
 
+    // The colours to draw with: the map's theme (MapView::colours), the light scheme's without a map.
+    const MapPalette &colours() const;
+
     // Draws the layer in paintViewport's pixels.
     virtual void paint(QPainter *painter) = 0;
     // The labels this layer drew, in this item's coordinates (labelsPlaced() when they change).

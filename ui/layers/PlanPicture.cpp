@@ -94,7 +94,7 @@ std::optional<QLineF> PlanPicture::clipped(const QLineF &line, const QRectF &rec
 void PlanPicture::draw(QPainter &painter, const QPolygonF &points, const Look &look, const QRectF &clip)
 {
     painter.setRenderHint(QPainter::Antialiasing, true);
-    const QColor done(0x9e, 0x9e, 0x9e);
+    const QColor done = look.done;
     // A waypoint is behind once the vehicle flies to a later one (or the mission is complete).
     auto behind = [&](int index) { return look.complete || (look.active >= 0 && index < look.active); };
     // Numbers for the chosen vehicle's waypoints only (text is the costly part); the others get
@@ -114,16 +114,16 @@ void PlanPicture::draw(QPainter &painter, const QPolygonF &points, const Look &l
         const bool isActive = i == look.active;
         const double radius = isActive ? 10 : look.numbered ? 8 : 4;
         if (isActive) {
-            painter.setPen(QPen(QColor(0xff, 0xd6, 0x00), 3));
+            painter.setPen(QPen(look.attention, 3));
             painter.setBrush(Qt::NoBrush);
             painter.drawEllipse(points[i], radius + 4, radius + 4);
         }
-        painter.setPen(QPen(Qt::white, 1.5));
+        painter.setPen(QPen(look.outline, 1.5));
         painter.setBrush(behind(i) ? done : look.color);
         painter.drawEllipse(points[i], radius, radius);
         if (!look.numbered && !isActive)
             continue;
-        painter.setPen(Qt::white);
+        painter.setPen(look.outline);
         painter.drawText(QRectF(points[i] - QPointF(radius, radius), QSizeF(2 * radius, 2 * radius)), Qt::AlignCenter,
                          QString::number(i + 1));
     }

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "MapPalette.h"
+
 #include <QColor>
 #include <QImage>
 #include <QLineF>
@@ -22,11 +24,24 @@ public:
     struct Look
     {
         QColor color;
+        QColor outline;   // the map palette's: a waypoint's edge and number
+        QColor done;      // legs and waypoints behind the vehicle
+        QColor attention; // the ring round the active waypoint
         bool current = false;  // the chosen vehicle's plan: bolder legs
         bool numbered = false; // its waypoints carry their numbers
         int active = -1;       // the waypoint flown to; -1: none
         bool complete = false; // every leg flown
         bool operator==(const Look &) const = default;
+        // A look in the palette's colours (outline, done, attention), for `color`.
+        static Look in(const MapPalette &colours, const QColor &color)
+        {
+            Look look;
+            look.color = color;
+            look.outline = colours.outline;
+            look.done = colours.terrain;
+            look.attention = colours.attention;
+            return look;
+        }
     };
 
     // The waypoints in picture pixels; a new layout or new waypoints forget the image.

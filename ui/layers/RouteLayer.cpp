@@ -195,6 +195,9 @@ void RouteLayer::placeOverlay()
 
 void RouteLayer::paint(QPainter *painter)
 {
+    // The halo and the numbers follow the theme; the legs are the colour the view gives.
+    m_style.halo = colours().halo;
+    m_style.text = colours().markText;
     m_painter.paintStill(*painter, m_frame, m_style);
 }
 

@@ -187,7 +187,7 @@ void TrafficLayer::paint(QPainter *painter)
     QPainter &p = *painter;
     p.setRenderHint(QPainter::Antialiasing);
     static const QPainterPath shape = chevron();
-    const QColor colour = TrafficLayer::colour();
+    const QColor colour = colours().traffic;
     const QFont font = labelFont();
     const QFontMetricsF metrics(font);
     p.setFont(font);
@@ -202,7 +202,7 @@ void TrafficLayer::paint(QPainter *painter)
         }
         p.save();
         p.translate(m.at);
-        p.setPen(QPen(Qt::white, 1.5));
+        p.setPen(QPen(colours().outline, 1.5));
         p.setBrush(colour);
         if (m.trackDeg) {
             p.rotate(*m.trackDeg);
@@ -216,7 +216,7 @@ void TrafficLayer::paint(QPainter *painter)
             p.drawLine(m.at, QPointF(m.label.left(), m.label.center().y()));
         }
         p.setPen(QPen(colour, 1));
-        p.setBrush(QColor(255, 255, 255, 225));
+        p.setBrush(colours().labelBox);
         p.drawRoundedRect(m.label, 3, 3);
         p.setPen(colour.darker(160));
         const QRectF first(m.label.left() + 4, m.label.top() + 2, m.label.width() - 8, metrics.height());

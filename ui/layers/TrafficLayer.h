@@ -47,8 +47,6 @@ public:
 
     void paint(QPainter *painter) override;
 
-    static QColor colour() { return QColor(0x00, 0x83, 0x8f); }
-
 signals:
     void trafficChanged();
     void drawn();

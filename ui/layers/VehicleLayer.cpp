@@ -107,6 +107,7 @@ void VehicleLayer::reloadRows(int first, int last)
     for (int row = std::max(0, first); row <= last && row < int(m_vehicles.size()); ++row) {
         VehicleMark &vehicle = m_vehicles[size_t(row)];
         VehicleMark next = m_reader.read(*m_model, row);
+        next.staleColor = colours().stale;
         if (next == vehicle)
             continue; // the row changed in something this layer does not draw
         changed = true;
@@ -220,7 +221,7 @@ void VehicleLayer::paint(QPainter *painter)
 {
     painter->setRenderHint(QPainter::Antialiasing, true);
     m_trails.paint(*painter);
-    VehiclePainter vehicles(*painter);
+    VehiclePainter vehicles(*painter, colours());
     const size_t rows = std::min(m_drawn.size(), m_vehicles.size());
     for (size_t row = 0; row < rows; ++row)
         if (m_drawn[row].hasHome)

@@ -18,11 +18,12 @@ struct VehicleMark
     double heading = 0;
     bool stale = false;
     QColor color; // the row's colour (VehiclePalette)
+    QColor staleColor; // the map palette's `stale`, set by the layer that draws it
 
     bool hasPosition() const { return !std::isnan(position.x()); }
     bool hasHome() const { return !std::isnan(home.x()); }
     // What it is drawn in: grey while its data is stale.
-    QColor shownColor() const { return stale ? QColor(0x90, 0x90, 0x90) : color; }
+    QColor shownColor() const { return stale ? staleColor : color; }
 
     // Drawn the same: a row read again with nothing new in it (no position equals no position).
     friend bool operator==(const VehicleMark &a, const VehicleMark &b)

@@ -8,8 +8,6 @@ namespace sortie::ui {
 
 namespace {
 
-const QColor kCurrentRing(0xff, 0xd6, 0x00);
-
 QPainterPath arrowShape()
 {
     QPainterPath path;
@@ -37,8 +35,9 @@ QSizeF VehiclePainter::labelSize(const QString &label)
     return QSizeF(metrics.horizontalAdvance(label) + 8, metrics.height() + 2);
 }
 
-VehiclePainter::VehiclePainter(QPainter &painter)
+VehiclePainter::VehiclePainter(QPainter &painter, const MapPalette &colours)
     : m_painter(painter)
+    , m_colours(colours)
 {
     m_painter.setRenderHint(QPainter::Antialiasing, true);
 }
@@ -51,10 +50,10 @@ void VehiclePainter::paintHome(const VehicleMark &vehicle, QPointF home)
     font.setBold(true);
     m_painter.setFont(font);
     const QRectF square(home - QPointF(7, 7), QSizeF(14, 14));
-    m_painter.setPen(QPen(Qt::white, 1.5));
+    m_painter.setPen(QPen(m_colours.outline, 1.5));
     m_painter.setBrush(vehicle.shownColor().darker(120));
     m_painter.drawRect(square);
-    m_painter.setPen(Qt::white);
+    m_painter.setPen(m_colours.markText);
     m_painter.drawText(square, Qt::AlignCenter, QStringLiteral("H"));
 }
 
@@ -64,13 +63,15 @@ void VehiclePainter::paintArrow(const VehicleMark &vehicle, QPointF at, bool cur
     m_painter.save();
     m_painter.translate(at);
     if (current) {
-        m_painter.setPen(QPen(kCurrentRing, 3));
-        m_painter.setBrush(QColor(0xff, 0xd6, 0x00, 60));
+        QColor glow = m_colours.attention;
+        glow.setAlpha(60);
+        m_painter.setPen(QPen(m_colours.attention, 3));
+        m_painter.setBrush(glow);
         m_painter.drawEllipse(QPointF(0, 0), 20, 20);
         m_painter.scale(1.2, 1.2);
     }
     m_painter.rotate(vehicle.heading);
-    m_painter.setPen(QPen(Qt::white, 2.0));
+    m_painter.setPen(QPen(m_colours.outline, 2.0));
     m_painter.setBrush(vehicle.shownColor());
     m_painter.drawPath(arrow);
     m_painter.restore();
@@ -84,10 +85,10 @@ void VehiclePainter::paintLabel(const VehicleMark &vehicle, QPointF at, const QR
         m_painter.setPen(QPen(color, 1));
         m_painter.drawLine(at, QPointF(label.left(), label.center().y()));
     }
-    m_painter.setPen(current ? QPen(kCurrentRing, 2) : QPen(color, 1));
-    m_painter.setBrush(current ? color : QColor(255, 255, 255, 225));
+    m_painter.setPen(current ? QPen(m_colours.attention, 2) : QPen(color, 1));
+    m_painter.setBrush(current ? color : m_colours.labelBox);
     m_painter.drawRoundedRect(label, 3, 3);
-    m_painter.setPen(current ? QColor(Qt::white) : color.darker(160));
+    m_painter.setPen(current ? m_colours.markText : color.darker(160));
     m_painter.drawText(label, Qt::AlignCenter, vehicle.label);
 }
 

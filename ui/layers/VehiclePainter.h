@@ -1,5 +1,6 @@
 #pragma once
 
+#include "MapPalette.h"
 #include "VehicleMark.h"
 
 #include <QFont>
@@ -20,7 +21,7 @@ public:
     // A label's tag around its text.
     static QSizeF labelSize(const QString &label);
 
-    explicit VehiclePainter(QPainter &painter);
+    VehiclePainter(QPainter &painter, const MapPalette &colours);
 
     void paintHome(const VehicleMark &vehicle, QPointF home);
     void paintArrow(const VehicleMark &vehicle, QPointF at, bool current);
@@ -28,6 +29,7 @@ public:
 
 private:
     QPainter &m_painter;
+    const MapPalette &m_colours;
 };
 
 } // namespace sortie::ui

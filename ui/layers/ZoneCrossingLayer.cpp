@@ -61,9 +61,9 @@ void ZoneCrossingLayer::paint(QPainter *painter)
         QPolygonF line;
         for (const QGeoCoordinate &c : stretch)
             line << view.geoToScreen(c);
-        p.setPen(QPen(QColor(255, 255, 255, 230), 9, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.setPen(QPen(colours().halo, 9, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         p.drawPolyline(line);
-        p.setPen(QPen(colour(), 5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        p.setPen(QPen(colours().crossing, 5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
         p.drawPolyline(line);
     }
 }

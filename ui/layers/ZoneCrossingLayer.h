@@ -36,7 +36,6 @@ public:
 
     void paint(QPainter *painter) override;
 
-    static QColor colour() { return QColor(0xe5, 0x39, 0x35); }
 
 signals:
     void airspaceChanged();

@@ -285,15 +285,15 @@ void ZoneLayer::paint(QPainter *painter)
         paths[row] = pathOf(m_outlines[row], view);
         const QPainterPath &path = paths[row];
         if (int(row) == selected) {
-            p.setPen(QPen(QColor(0x1e, 0x88, 0xe5, 150), 8, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+            p.setPen(QPen(colours().selection, 8, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
             p.setBrush(Qt::NoBrush);
             p.drawPath(path);
         }
         if (!z.active) {
-            p.setPen(QPen(QColor(0x75, 0x75, 0x75), 1.5, Qt::DashLine));
+            p.setPen(QPen(colours().inactiveEdge, 1.5, Qt::DashLine));
             p.setBrush(Qt::NoBrush);
         } else if (z.kind == airspace::ZoneKind::Exclusion) {
-            QColor wash = exclusionColour();
+            QColor wash = colours().exclusion;
             wash.setAlpha(28);
             // A hatch needs room to show: a zone a few pixels wide is its wash and outline, drawn at once.
             const QRectF box = path.boundingRect();
@@ -301,13 +301,13 @@ void ZoneLayer::paint(QPainter *painter)
                 p.setPen(Qt::NoPen);
                 p.setBrush(wash);
                 p.drawPath(path);
-                p.setBrush(QBrush(exclusionColour(), Qt::BDiagPattern));
+                p.setBrush(QBrush(colours().exclusion, Qt::BDiagPattern));
             } else {
                 p.setBrush(wash);
             }
-            p.setPen(QPen(exclusionColour(), 2));
+            p.setPen(QPen(colours().exclusion, 2));
         } else {
-            p.setPen(QPen(inclusionColour(), 3));
+            p.setPen(QPen(colours().inclusion, 3));
             p.setBrush(Qt::NoBrush);
         }
         p.drawPath(path);
@@ -347,15 +347,15 @@ void ZoneLayer::paint(QPainter *painter)
             continue;
         m_labels.push_back({row, rect});
         const Zone &z = m_airspace->zoneAt(row);
-        const QColor ink = !z.active ? QColor(0x61, 0x61, 0x61) : z.kind == airspace::ZoneKind::Exclusion ? exclusionColour().darker(130)
-                                                                                                         : inclusionColour().darker(120);
+        const QColor ink = !z.active ? colours().inactive : z.kind == airspace::ZoneKind::Exclusion ? colours().exclusion.darker(130)
+                                                                                                         : colours().inclusion.darker(120);
         if (placement.moved) {
             const QRectF box = paths[size_t(row)].boundingRect();
             p.setPen(QPen(ink, 1, Qt::DotLine));
             p.drawLine(QPointF(rect.left(), rect.center().y()), QPointF(box.left(), box.top()));
         }
         p.setPen(QPen(ink, 1));
-        p.setBrush(QColor(255, 255, 255, 215));
+        p.setBrush(colours().labelBox);
         p.drawRoundedRect(rect, 3, 3);
         p.setFont(nameFont);
         p.drawText(QPointF(rect.left() + kLabelPadding, rect.top() + kLabelPadding + nameMetrics.ascent()), lines[0]);

@@ -57,10 +57,6 @@ public:
 protected:
     void onViewportChanged() override;
 
-public:
-    static QColor exclusionColour() { return QColor(0xd3, 0x2f, 0x2f); }
-    static QColor inclusionColour() { return QColor(0x2e, 0x7d, 0x32); }
-
 signals:
     void airspaceChanged();
     void hoverChanged();

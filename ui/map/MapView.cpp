@@ -76,12 +76,27 @@ void MapView::setTileSource(TileSource *source)
     emit tileStatusChanged();
 }
 
-void MapView::setDark(bool dark)
+void MapView::setTheme(Theme *theme)
 {
-    if (dark == isDark())
+    if (theme == m_theme)
         return;
-    m_tiles.baseMap().setDark(dark);
-    emit darkChanged();
+    if (m_theme)
+        disconnect(m_theme, nullptr, this, nullptr);
+    m_theme = theme;
+    if (m_theme)
+        connect(m_theme, &Theme::coloursChanged, this, &MapView::takeColours);
+    emit themeChanged();
+    takeColours();
+}
+
+void MapView::takeColours()
+{
+    const MapPalette colours = m_theme ? m_theme->mapPalette() : MapPalette::light();
+    if (colours == m_colours)
+        return;
+    m_colours = colours;
+    m_tiles.baseMap().setPalette(colours);
+    emit coloursChanged();
     redraw();
 }
 
@@ -235,7 +250,7 @@ void MapView::paint(QPainter *painter)
     m_tilePainter.paint(*painter, m_viewport, m_tiles);
     if (m_graticule) {
         painter->setRenderHint(QPainter::Antialiasing, false);
-        Graticule::paint(*painter, m_viewport, m_tiles.baseMap().palette());
+        Graticule::paint(*painter, m_viewport, m_colours);
     }
 }
 

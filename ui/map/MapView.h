@@ -1,6 +1,8 @@
 #pragma once
 
 #include "MapGestures.h"
+#include "MapPalette.h"
+#include "Theme.h"
 #include "MapViewport.h"
 #include "TileManager.h"
 #include "TilePainter.h"
@@ -28,7 +30,8 @@ class MapView : public QQuickPaintedItem
     Q_PROPERTY(double maximumZoomLevel READ maximumZoomLevel WRITE setMaximumZoomLevel NOTIFY zoomRangeChanged)
     Q_PROPERTY(double metersPerPixel READ metersPerPixel NOTIFY viewportChanged)
     Q_PROPERTY(sortie::ui::TileSource *tileSource READ tileSource WRITE setTileSource NOTIFY tileSourceChanged)
-    Q_PROPERTY(bool dark READ isDark WRITE setDark NOTIFY darkChanged)
+    // The colours of the base map, the grid and every layer on it (null: the light scheme's).
+    Q_PROPERTY(sortie::ui::Theme *theme READ theme WRITE setTheme NOTIFY themeChanged)
     Q_PROPERTY(bool graticuleVisible READ isGraticuleVisible WRITE setGraticuleVisible NOTIFY graticuleVisibleChanged)
     // The bands along the top and left edges where the graticule's labels go (0 when it is hidden):
     // map controls laid out clear of them never cover a label.
@@ -62,8 +65,10 @@ public:
     double metersPerPixel() const { return m_viewport.metersPerPixel(); }
     TileSource *tileSource() const { return m_tiles.source(); }
     void setTileSource(TileSource *source);
-    bool isDark() const { return m_tiles.baseMap().isDark(); }
-    void setDark(bool dark);
+    Theme *theme() const { return m_theme; }
+    void setTheme(Theme *theme);
+    // What the map and its layers paint with: the theme's MapPalette.
+    const MapPalette &colours() const { return m_colours; }
     bool isGraticuleVisible() const { return m_graticule; }
     void setGraticuleVisible(bool visible);
     qreal labelBandTop() const;
@@ -98,7 +103,9 @@ signals:
     void viewportChanged();
     void zoomRangeChanged();
     void tileSourceChanged();
-    void darkChanged();
+    void themeChanged();
+    // The theme's colours changed (another scheme): layers draw again.
+    void coloursChanged();
     void graticuleVisibleChanged();
     void interactiveChanged();
     void cursorChanged();
@@ -127,8 +134,11 @@ protected:
 private:
     void changeViewport(const MapViewport &viewport);
     void redraw(); // lay out and draw again, while shown
+    void takeColours();
 
     MapViewport m_viewport;
+    QPointer<Theme> m_theme;
+    MapPalette m_colours = MapPalette::light();
     TileManager m_tiles;
     TilePainter m_tilePainter;
     MapGestures m_gestures{*this};

@@ -35,12 +35,11 @@ OfflineTileSource::~OfflineTileSource()
     m_pool.waitForDone();
 }
 
-void OfflineTileSource::setDark(bool dark)
+void OfflineTileSource::setPalette(const MapPalette &palette)
 {
-    if (dark == m_dark)
-        return;
-    m_dark = dark;
-    m_palette = dark ? MapPalette::dark() : MapPalette::light();
+    if (palette.sea == m_palette.sea && palette.land == m_palette.land && palette.coast == m_palette.coast)
+        return; // the tiles hold these three only
+    m_palette = palette;
     ++m_generation;
     m_pool.clear();
     m_inFlight.clear();

@@ -17,14 +17,13 @@ class OfflineTileSource : public TileSource
 {
     Q_OBJECT
     QML_ELEMENT
-    Q_PROPERTY(bool dark READ isDark WRITE setDark NOTIFY paletteChanged)
 
 public:
     explicit OfflineTileSource(QObject *parent = nullptr);
     ~OfflineTileSource() override;
 
-    bool isDark() const { return m_dark; }
-    void setDark(bool dark);
+    // The map's colours (the theme's MapPalette): tiles drawn in another palette are drawn again.
+    void setPalette(const MapPalette &palette);
     // Its name and attribution in the current language (TileManager calls it on a language change).
     void reword();
     MapPalette palette() const { return m_palette; }
@@ -40,7 +39,6 @@ private:
 
     std::shared_ptr<const LandOutlines> m_outlines;
     MapPalette m_palette = MapPalette::light();
-    bool m_dark = false;
     quint64 m_generation = 0; // results from an older palette are dropped
     QSet<TileKey> m_inFlight;
     QThreadPool m_pool;

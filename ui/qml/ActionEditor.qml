@@ -7,6 +7,7 @@ import Sortie.Ui
 // add, remove one. Every change is a call on the model, which checks it and makes it one undo step.
 GroupBox {
     id: box
+    required property Theme theme
     required property WaypointActionsModel actions
     visible: actions.valid
     title: actions.title
@@ -148,7 +149,7 @@ GroupBox {
             objectName: "actionProblem"
             visible: text.length > 0
             text: box.actions ? box.actions.problem : ""
-            color: "#e53935"
+            color: box.theme.problemText
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }

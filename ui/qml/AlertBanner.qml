@@ -10,6 +10,7 @@ import Sortie.Ui
 // the vehicle home).
 ColumnLayout {
     id: banner
+    required property Theme theme
     // The monitors, in the order their rows are shown; a null entry (no fleet yet) shows nothing.
     property list<AlertModel> monitors
     property bool hidden: false             // a replayed flight has no live alerts to show
@@ -36,7 +37,7 @@ ColumnLayout {
                 readonly property int subject: monitorRows.modelData.subject
                 Layout.fillWidth: true
                 implicitHeight: rowLayout.implicitHeight + 8
-                color: model.warning ? "#fb8c00" : "#b71c1c"
+                color: model.warning ? banner.theme.warning : banner.theme.problem
                 RowLayout {
                     id: rowLayout
                     anchors.fill: parent
@@ -50,7 +51,7 @@ ColumnLayout {
                         text: row.subject === AlertModel.Proximity ? qsTr("Too close: %1").arg(row.model.text)
                             : row.subject === AlertModel.Airspace ? qsTr("Airspace: %1").arg(row.model.text)
                             : row.model.text
-                        color: row.model.warning ? "black" : "white"
+                        color: row.model.warning ? banner.theme.onWarning : banner.theme.onProblem
                         font.bold: true
                         wrapMode: Text.Wrap
                     }

@@ -7,6 +7,7 @@ import Sortie.Ui
 // command, result. The fleet's CommandLog holds it; this only lists it.
 ColumnLayout {
     id: view
+    required property Theme theme
     objectName: "commandLogView"
     required property CommandLog log
     spacing: 2
@@ -27,7 +28,7 @@ ColumnLayout {
             wrapMode: Text.Wrap
             font.pixelSize: 12
             text: model.text
-            color: model.failed ? "#c62828" : palette.windowText
+            color: model.failed ? view.theme.problemText : palette.windowText
         }
     }
 }

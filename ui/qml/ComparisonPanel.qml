@@ -9,6 +9,7 @@ import Sortie.Ui
 // row coloured like the track on the map. The ComparisonController computes everything.
 ColumnLayout {
     id: panel
+    required property Theme theme
     required property ComparisonController comparison
     property int vehicleIndex: -1
     spacing: 2
@@ -29,7 +30,7 @@ ColumnLayout {
             objectName: "comparisonSummary"
             Layout.fillWidth: true
             text: panel.comparison.errorString.length > 0 ? panel.comparison.errorString : panel.comparison.summary
-            color: panel.comparison.errorString.length > 0 ? "#e53935" : palette.windowText
+            color: panel.comparison.errorString.length > 0 ? panel.theme.problemText : palette.windowText
             elide: Text.ElideRight
         }
         Button {
@@ -62,7 +63,7 @@ ColumnLayout {
             required property string reached
             required property int level
             width: ListView.view.width
-            Rectangle { width: 8; height: 8; radius: 4; color: ["#43a047", "#fb8c00", "#e53935"][level] }
+            Rectangle { width: 8; height: 8; radius: 4; color: [panel.theme.ok, panel.theme.warning, panel.theme.problem][level] }
             Label { text: leg; Layout.fillWidth: true }
             Label { text: samples; Layout.fillWidth: true }
             Label { text: qsTr("%1 m").arg(maxCrossTrack); Layout.fillWidth: true }

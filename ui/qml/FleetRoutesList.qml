@@ -8,6 +8,7 @@ import Sortie.Ui
 // times. Only binds to the model's roles; times are formatted by DisplayUnits ("—" when unknown).
 ColumnLayout {
     id: list
+    required property Theme theme
     required property FleetRoutes routes
     required property DisplayUnits units
     // The chosen vehicle's row in the fleet (-1: none): its routes are highlighted.
@@ -64,7 +65,7 @@ ColumnLayout {
                     implicitHeight: 12
                     radius: 6
                     color: row.color
-                    border.color: "white"
+                    border.color: list.theme.base
                 }
                 ColumnLayout {
                     id: lines

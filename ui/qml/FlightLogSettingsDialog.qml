@@ -8,6 +8,8 @@ import Sortie.Ui
 // oldest logs are deleted beyond it). RecordingSettings checks, saves and applies; this is a view.
 Dialog {
     id: dialog
+    // Its colours; the window hands its own (a dialog shown alone follows the system's).
+    property Theme theme: Theme {}
     required property RecordingSettings settings
 
     objectName: "flightLogSettingsDialog"
@@ -90,7 +92,7 @@ Dialog {
             visible: text.length > 0
             Layout.fillWidth: true
             wrapMode: Text.Wrap
-            color: "#e53935"
+            color: dialog.theme.problemText
             text: dialog.settings.errorString
         }
         RowLayout {

@@ -9,6 +9,7 @@ import Sortie.Ui
 // this view only lays them out.
 GroupBox {
     id: panel
+    required property Theme theme
     required property Vehicle vehicle      // null: none chosen
     required property DisplayUnits units
     required property EnduranceAdvisory advisory   // for the same vehicle: battery at the end, energy home
@@ -23,8 +24,8 @@ GroupBox {
 
     // Reading the vehicle's properties ties the binding to its notifications.
     function stale(field) { return !panel.vehicle || (panel.vehicle.stale, panel.vehicle.altitudeAgl, panel.vehicle.isFieldStale(field)) }
-    readonly property color batteryColor: status.batteryState === FlightStatus.Critical ? "#e53935"
-                                        : status.batteryState === FlightStatus.Low ? "#fb8c00" : palette.windowText
+    readonly property color batteryColor: status.batteryState === FlightStatus.Critical ? panel.theme.problemText
+                                        : status.batteryState === FlightStatus.Low ? panel.theme.warningText : palette.windowText
 
     component Instrument: RowLayout {
         property string caption
@@ -60,7 +61,7 @@ GroupBox {
                 Layout.maximumHeight: 160
                 roll: status.roll
                 pitch: status.pitch
-                textColor: panel.palette.windowText
+                theme: panel.theme
             }
             HeadingCompass {
                 objectName: "headingCompass"
@@ -70,7 +71,7 @@ GroupBox {
                 heading: panel.vehicle ? panel.vehicle.heading : NaN
                 bearingToHome: status.bearingToHome
                 bearingToNext: status.bearingToNext
-                textColor: panel.palette.windowText
+                theme: panel.theme
             }
         }
         Instrument { caption: qsTr("Altitude AGL"); field: "altitudeAgl"; value: panel.vehicle ? panel.units.formatAltitude(panel.vehicle.altitudeAgl) : "—" }
@@ -106,8 +107,8 @@ GroupBox {
             text: panel.advisory.summary
             wrapMode: Text.Wrap
             font.bold: panel.advisory.level === EnduranceAdvisory.Amber || panel.advisory.level === EnduranceAdvisory.Red
-            color: panel.advisory.level === EnduranceAdvisory.Red ? "#e53935"
-                 : panel.advisory.level === EnduranceAdvisory.Amber ? "#fb8c00" : panel.palette.windowText
+            color: panel.advisory.level === EnduranceAdvisory.Red ? panel.theme.problemText
+                 : panel.advisory.level === EnduranceAdvisory.Amber ? panel.theme.warningText : panel.palette.windowText
             ToolTip.visible: hoverArea.hovered && panel.advisory.problem.length > 0
             ToolTip.text: panel.advisory.problem
             HoverHandler { id: hoverArea }

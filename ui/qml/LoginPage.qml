@@ -9,6 +9,7 @@ Page {
     id: page
     required property AppSettings appSettings
     required property ClientGraph graph   // the client's services: this page uses the connection
+    required property Theme theme
     readonly property ConnectionController connection: graph.connection
     property alias serverField: server
     property alias userField: user
@@ -215,7 +216,7 @@ Page {
                 Layout.preferredWidth: 1 // a sentence wraps in the width the fields make; it does not widen the frame
                 Layout.fillWidth: true
                 wrapMode: Text.Wrap
-                color: "#e53935"
+                color: page.theme.problemText
                 text: page.connection.errorString
                 visible: text.length > 0
             }

@@ -13,6 +13,8 @@ ApplicationWindow {
     // Each page takes what it uses from it; `graph.recovery` is null in a program or fixture that
     // keeps no autosave folder, the fleet's alerts are null in one without vehicles.
     required property ClientGraph graph
+    // The colours, spacing and type sizes (ui/theme): made by ui::MainWindow, following the setting.
+    required property Theme theme
     property string connectionState: graph.connection.state
     property string connectionStateText: graph.connection.stateText  // the state in the operator's words
     property string connectionDetail: graph.connection.statusDetail
@@ -23,7 +25,7 @@ ApplicationWindow {
     property alias telemetryPage: telemetryPage
     property alias helpOverlay: help
     property alias restoreDialog: restoreDialog
-    readonly property bool dark: palette.window.hslLightness < 0.5
+    readonly property bool dark: theme.darkGround
     readonly property MapView activeMap: tabs.currentIndex === 2 ? telemetryPage.map : missionPage.map
 
     width: 1280
@@ -31,6 +33,27 @@ ApplicationWindow {
     minimumWidth: 800
     minimumHeight: 500
     title: qsTr("Sortie")
+
+    // The controls' palette is the theme's (every page and dialog inherits it).
+    palette.window: theme.window
+    palette.windowText: theme.windowText
+    palette.base: theme.base
+    palette.alternateBase: theme.alternateBase
+    palette.text: theme.text
+    palette.button: theme.button
+    palette.buttonText: theme.buttonText
+    palette.brightText: theme.windowText
+    palette.highlight: theme.highlight
+    palette.highlightedText: theme.highlightedText
+    palette.placeholderText: theme.placeholderText
+    palette.toolTipBase: theme.toolTipBase
+    palette.toolTipText: theme.toolTipText
+    palette.link: theme.link
+    palette.light: theme.light
+    palette.midlight: theme.midlight
+    palette.mid: theme.mid
+    palette.dark: theme.dark
+    palette.shadow: theme.shadow
 
     function showPage(index) { tabs.currentIndex = index }
     function toggleHelp() { help.opened ? help.close() : help.open() }
@@ -54,79 +77,147 @@ ApplicationWindow {
         language: window.translations.active   // numbers in the language's format
     }
 
+    GlanceStatus {
+        id: glance
+        connection: window.graph.connection
+        fleet: window.graph.fleet
+        chosen: telemetryPage.current
+    }
+
     header: ToolBar {
         RowLayout {
             anchors.fill: parent
-            TabBar {
-                id: tabs
-                objectName: "pageTabs"
+            spacing: 0
+            RowLayout {
                 Layout.fillWidth: true
-                TabButton { text: qsTr("Login"); objectName: "loginTab" }
-                TabButton { text: qsTr("Mission"); objectName: "missionTab" }
-                TabButton { text: qsTr("Live telemetry"); objectName: "telemetryTab" }
-            }
-            ToolButton {
-                text: qsTr("Map…")
-                onClicked: window.openMapSource()
-                ToolTip.visible: hovered
-                ToolTip.text: qsTr("Choose the map source (Ctrl+M)")
-            }
-            ToolButton {
-                objectName: "offlineMapsButton"
-                text: qsTr("Offline…")
-                onClicked: { offlineMapsDialog.active = true; offlineMapsDialog.item.open() }
-                ToolTip.visible: hovered
-                ToolTip.text: qsTr("Download the web map of an area for work without a network")
-                Loader { // made when first opened
-                    id: offlineMapsDialog
-                    active: false
-                    sourceComponent: OfflineMapsDialog {
-                        offlineMaps: window.graph.offlineMaps
-                        routeModel: window.graph.missions.document.model
-                        map: window.activeMap
-                        // Drawn on the mission map (its zones' polygon tool); the dialog comes back after.
-                        onDrawRequested: { window.showPage(1); missionPage.drawArea() }
+                TabBar {
+                    id: tabs
+                    objectName: "pageTabs"
+                    // As wide as its three tabs' words, whatever room the glance leaves.
+                    Layout.preferredWidth: loginTab.implicitWidth + missionTab.implicitWidth + telemetryTab.implicitWidth + 2 * spacing
+                    Layout.minimumWidth: Layout.preferredWidth
+                    TabButton { id: loginTab; text: qsTr("Login"); objectName: "loginTab"; width: implicitWidth }
+                    TabButton { id: missionTab; text: qsTr("Mission"); objectName: "missionTab"; width: implicitWidth }
+                    TabButton { id: telemetryTab; text: qsTr("Live telemetry"); objectName: "telemetryTab"; width: implicitWidth }
+                }
+                // The connection, the vehicle, its GPS, battery and link at a glance, in the room
+                // the tabs and the buttons leave (words elide first).
+                GlanceBar {
+                    objectName: "glanceBar"
+                    Layout.fillWidth: true
+                    Layout.minimumWidth: 0
+                    Layout.leftMargin: window.theme.spacing
+                    status: glance
+                    theme: window.theme
+                }
+                Item { Layout.fillWidth: true } // the buttons keep to the right
+                ToolButton {
+                    text: qsTr("Map…")
+                    onClicked: window.openMapSource()
+                    ToolTip.visible: hovered
+                    ToolTip.text: qsTr("Choose the map source (Ctrl+M)")
+                }
+                ToolButton {
+                    objectName: "offlineMapsButton"
+                    text: qsTr("Offline…")
+                    onClicked: { offlineMapsDialog.active = true; offlineMapsDialog.item.open() }
+                    ToolTip.visible: hovered
+                    ToolTip.text: qsTr("Download the web map of an area for work without a network")
+                    Loader { // made when first opened
+                        id: offlineMapsDialog
+                        active: false
+                        sourceComponent: OfflineMapsDialog {
+                            theme: window.theme
+                            offlineMaps: window.graph.offlineMaps
+                            routeModel: window.graph.missions.document.model
+                            map: window.activeMap
+                            // Drawn on the mission map (its zones' polygon tool); the dialog comes back after.
+                            onDrawRequested: { window.showPage(1); missionPage.drawArea() }
+                        }
                     }
                 }
-            }
-            ToolButton {
-                objectName: "logSettingsButton"
-                text: qsTr("Logs…")
-                onClicked: { logSettingsDialog.active = true; logSettingsDialog.item.open() }
-                ToolTip.visible: hovered
-                ToolTip.text: qsTr("Where flight logs are recorded, and how much they may take")
-                Loader { // made when first opened: the start-up does not pay for it
-                    id: logSettingsDialog
-                    active: false
-                    sourceComponent: FlightLogSettingsDialog { settings: window.graph.recordingSettings }
+                ToolButton {
+                    objectName: "logSettingsButton"
+                    text: qsTr("Logs…")
+                    onClicked: { logSettingsDialog.active = true; logSettingsDialog.item.open() }
+                    ToolTip.visible: hovered
+                    ToolTip.text: qsTr("Where flight logs are recorded, and how much they may take")
+                    Loader { // made when first opened: the start-up does not pay for it
+                        id: logSettingsDialog
+                        active: false
+                        sourceComponent: FlightLogSettingsDialog { settings: window.graph.recordingSettings; theme: window.theme }
+                    }
                 }
-            }
-            ToolButton {
-                objectName: "unitsButton"
-                text: units.imperial ? qsTr("ft, mph") : qsTr("m, m/s")
-                onClicked: window.appSettings.units = units.imperial ? "metric" : "imperial"
-                ToolTip.visible: hovered
-                ToolTip.text: qsTr("Switch between metric and imperial units")
-            }
-            ComboBox {
-                id: languageBox
-                objectName: "languageBox"
-                model: window.translations.languages
-                textRole: "name"
-                valueRole: "code"
-                // The list is made anew in each language: the choice is found again in it.
-                onModelChanged: currentIndex = Qt.binding(() => Math.max(0, indexOfValue(window.appSettings.language)))
-                // Wide enough for the longest name in the list, not more.
-                implicitContentWidthPolicy: ComboBox.WidestText
-                onActivated: window.appSettings.language = currentValue
-                ToolTip.visible: hovered
-                ToolTip.text: qsTr("The language of Sortie, applied at once")
-            }
-            ToolButton {
-                text: "?"
-                onClicked: window.toggleHelp()
-                ToolTip.visible: hovered
-                ToolTip.text: qsTr("Keyboard shortcuts (F1)")
+                ToolButton {
+                    // How Sortie shows things: units, language and colours, each applied at once.
+                    id: displayButton
+                    objectName: "displayButton"
+                    text: qsTr("Display…")
+                    onClicked: displaySettings.opened ? displaySettings.close() : displaySettings.open()
+                    ToolTip.visible: hovered && !displaySettings.opened
+                    ToolTip.text: qsTr("Units, language and colours")
+                    Popup {
+                        id: displaySettings
+                        objectName: "displaySettings"
+                        y: displayButton.height
+                        x: displayButton.width - width
+                        padding: window.theme.spacing
+                        GridLayout {
+                            columns: 2
+                            columnSpacing: window.theme.spacing
+                            rowSpacing: window.theme.smallSpacing
+                            Label { text: qsTr("Units") }
+                            Button {
+                                objectName: "unitsButton"
+                                Layout.fillWidth: true
+                                Layout.preferredHeight: window.theme.controlHeight
+                                text: units.imperial ? qsTr("ft, mph") : qsTr("m, m/s")
+                                onClicked: window.appSettings.units = units.imperial ? "metric" : "imperial"
+                                ToolTip.visible: hovered
+                                ToolTip.text: qsTr("Switch between metric and imperial units")
+                            }
+                            Label { text: qsTr("Language") }
+                            ComboBox {
+                                id: languageBox
+                                objectName: "languageBox"
+                                Layout.fillWidth: true
+                                Layout.preferredHeight: window.theme.controlHeight
+                                model: window.translations.languages
+                                textRole: "name"
+                                valueRole: "code"
+                                // The list is made anew in each language: the choice is found again in it.
+                                onModelChanged: currentIndex = Qt.binding(() => Math.max(0, indexOfValue(window.appSettings.language)))
+                                // Wide enough for the longest name in the list, not more.
+                                implicitContentWidthPolicy: ComboBox.WidestText
+                                onActivated: window.appSettings.language = currentValue
+                                ToolTip.visible: hovered
+                                ToolTip.text: qsTr("The language of Sortie, applied at once")
+                            }
+                            Label { text: qsTr("Colours") }
+                            ComboBox {
+                                id: schemeBox
+                                objectName: "colourSchemeBox"
+                                Layout.fillWidth: true
+                                Layout.preferredHeight: window.theme.controlHeight
+                                model: window.theme.schemes
+                                textRole: "name"
+                                valueRole: "code"
+                                // The names are made anew in each language: the choice is found again in the list.
+                                onModelChanged: currentIndex = Qt.binding(() => Math.max(0, indexOfValue(window.appSettings.colourScheme)))
+                                implicitContentWidthPolicy: ComboBox.WidestText
+                                onActivated: window.appSettings.colourScheme = currentValue
+                                ToolTip.visible: hovered
+                                ToolTip.text: qsTr("The system's colours, light, dark, or high contrast for sunlight")
+                            }
+                        }
+                    }
+                }
+                ToolButton {
+                    text: "?"
+                    onClicked: window.toggleHelp()
+                    ToolTip.visible: hovered
+                    ToolTip.text: qsTr("Keyboard shortcuts (F1)")
+                }
             }
         }
     }
@@ -140,13 +231,14 @@ ApplicationWindow {
             objectName: "loginPage"
             appSettings: window.appSettings
             graph: window.graph
+            theme: window.theme
         }
         MissionPage {
             id: missionPage
             objectName: "missionPage"
             graph: window.graph
             units: units
-            dark: window.dark
+            theme: window.theme
             mapSource: window.appSettings.mapSource
             tileUrlTemplate: window.appSettings.tileUrlTemplate
             mbtilesFile: window.appSettings.mbtilesFile
@@ -164,7 +256,7 @@ ApplicationWindow {
             objectName: "telemetryPage"
             graph: window.graph
             units: units
-            dark: window.dark
+            theme: window.theme
             mapSource: window.appSettings.mapSource
             tileUrlTemplate: window.appSettings.tileUrlTemplate
             mbtilesFile: window.appSettings.mbtilesFile
@@ -182,6 +274,7 @@ ApplicationWindow {
         connectionDetail: window.connectionDetail
         map: window.activeMap
         units: units
+        theme: window.theme
     }
 
     Shortcuts {
@@ -206,6 +299,7 @@ ApplicationWindow {
         id: restoreDialog
         objectName: "restoreDialog"
         recovery: window.graph.recovery
+        theme: window.theme
         // Also alone, to say what went wrong with an autosave (a file kept aside) until read.
         visible: window.graph.recovery !== null && (window.graph.recovery.available || window.graph.recovery.message.length > 0)
         onRestored: {
@@ -222,5 +316,6 @@ ApplicationWindow {
         id: mapSourceDialog
         objectName: "mapSourceDialog"
         appSettings: window.appSettings
+        theme: window.theme
     }
 }

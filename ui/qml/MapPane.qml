@@ -18,7 +18,8 @@ Item {
     property bool tilesCacheOnly: false // the web source never uses the network
     property string orthophotoFile: ""  // the operator's orthophoto over the base map (empty: none)
     property real orthophotoOpacity: 0.8
-    property bool dark: false
+    // The map's colours and the furniture's; the page hands its own (a pane shown alone follows the system's).
+    property Theme theme: Theme {}
     default property alias layers: overlay.data
     readonly property real controlsTop: mapView.labelBandTop + 6
     readonly property real controlsLeft: mapView.labelBandLeft + 6
@@ -38,7 +39,7 @@ Item {
         id: mapView
         objectName: "mapView"
         anchors.fill: parent
-        dark: pane.dark
+        theme: pane.theme
         tileSource: pane.mapSource === "xyz" ? webTiles : pane.mapSource === "mbtiles" ? fileTiles : null
     }
 
@@ -65,8 +66,8 @@ Item {
         y: mapView.selectionRect.y
         width: mapView.selectionRect.width
         height: mapView.selectionRect.height
-        color: Qt.rgba(0.12, 0.53, 0.9, 0.15)
-        border.color: "#1e88e5"
+        color: Qt.rgba(pane.theme.accent.r, pane.theme.accent.g, pane.theme.accent.b, 0.15)
+        border.color: pane.theme.accent
     }
 
     Column {
@@ -103,7 +104,7 @@ Item {
         width: scaleBar.width + 8
         height: scaleBar.height + 4
         radius: 3
-        color: pane.dark ? Qt.rgba(0, 0, 0, 0.45) : Qt.rgba(1, 1, 1, 0.6)
+        color: pane.theme.overlay
         MapScaleBar {
             id: scaleBar
             objectName: "scaleBar"
@@ -112,7 +113,7 @@ Item {
             height: 26
             map: mapView
             imperial: pane.units.imperial
-            color: pane.dark ? "white" : "black"
+            color: pane.theme.overlayText
         }
     }
 
@@ -124,6 +125,7 @@ Item {
         text: mapView.attribution
         font.pixelSize: 10
         padding: 2
-        background: Rectangle { color: pane.dark ? Qt.rgba(0, 0, 0, 0.45) : Qt.rgba(1, 1, 1, 0.6) }
+        color: pane.theme.overlayText
+        background: Rectangle { color: pane.theme.overlay }
     }
 }

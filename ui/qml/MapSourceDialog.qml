@@ -11,6 +11,8 @@ import Sortie.Ui
 // Each raster path can be typed or picked (a file dialog; for the DEM a file or a folder).
 Dialog {
     id: dialog
+    // Its colours; the window hands its own (a dialog shown alone follows the system's).
+    property Theme theme: Theme {}
     required property AppSettings appSettings
     title: qsTr("Map source")
     modal: true
@@ -135,7 +137,7 @@ Dialog {
             Layout.fillWidth: true
             visible: text.length > 0
             text: dialog.orthophotoProblem
-            color: "#c62828"
+            color: dialog.theme.problemText
             wrapMode: Text.Wrap
         }
         RowLayout {
@@ -180,7 +182,7 @@ Dialog {
             Layout.fillWidth: true
             visible: text.length > 0
             text: dialog.demProblem
-            color: "#c62828"
+            color: dialog.theme.problemText
             wrapMode: Text.Wrap
         }
         Label {
@@ -189,7 +191,7 @@ Dialog {
             Layout.fillWidth: true
             visible: text.length > 0
             text: dialog.demCheck.leftOut
-            color: "#a15c00"
+            color: dialog.theme.warningText
             wrapMode: Text.Wrap
         }
     }

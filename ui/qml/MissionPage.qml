@@ -31,7 +31,7 @@ Page {
     property real orthophotoOpacity: 0.8
     property string tilePackFile: ""    // the web source's offline pack (OfflineMaps.packFile)
     property bool tilesCacheOnly: false // the web source never uses the network
-    property bool dark: false
+    required property Theme theme
     readonly property ElevationService elevation: graph.elevation   // the terrain, for the profile
     readonly property RouteEndurance endurance: graph.endurance     // will the battery last: figures, changes, point of no return
     readonly property Traffic traffic: graph.traffic                // manned traffic around (ADS-B)
@@ -106,7 +106,7 @@ Page {
             orthophotoOpacity: page.orthophotoOpacity
             tilePackFile: page.tilePackFile
             tilesCacheOnly: page.tilesCacheOnly
-            dark: page.dark
+            theme: page.theme
             ZoneLayer {
                 // Zones under everything else: exclusion hatched red, inclusion outlined green.
                 id: zoneLayer
@@ -157,7 +157,7 @@ Page {
                 map: pane.map
                 polygonModel: scanDraft
                 closed: !page.currentTool || page.currentTool.figure !== "polyline"
-                color: "#ef6c00"
+                color: page.theme.mapDraft
                 editable: page.tool === "scan"
                 onVertexMoved: (index, coordinate, step) => scanDraft.setCoordinate(index, coordinate.latitude, coordinate.longitude)
             }
@@ -169,7 +169,7 @@ Page {
                 map: pane.map
                 visible: page.missions.conflict
                 model: page.missions.conflictDetails.theirs
-                color: "#8d8d8d"
+                color: page.theme.mapGhost
                 opacity: 0.75
                 editable: false
             }
@@ -218,7 +218,7 @@ Page {
                 map: pane.map
                 visible: page.offlineArea.length > 0 && page.tool !== "offlineArea"
                 enabled: false // clicks are for the route
-                color: "#1e88e5"
+                color: page.theme.mapRoute
                 polygon: page.offlineArea
             }
             AreaScanLayer {
@@ -228,7 +228,7 @@ Page {
                 objectName: "zoneEditLayer"
                 anchors.fill: parent
                 map: pane.map
-                color: page.tool === "offlineArea" ? "#1e88e5" : "#d32f2f"
+                color: page.tool === "offlineArea" ? page.theme.mapRoute : page.theme.mapExclusion
                 polygonModel: page.drawingPolygon ? polygonDraft : null
                 polygon: page.drawingPolygon ? [] : page.airspace.editor.figure
                 radius: page.drawingPolygon ? 0 : page.airspace.editor.radius
@@ -293,9 +293,10 @@ Page {
                 checkable: true
                 checked: zonePanel.visible
                 onToggled: zonePanel.visible = checked
-                background: Rectangle { color: page.dark ? Qt.rgba(0, 0, 0, 0.55) : Qt.rgba(1, 1, 1, 0.8); radius: 3 }
+                background: Rectangle { color: page.theme.overlay; radius: 3 }
             }
             ZonePanel {
+                theme: page.theme
                 id: zonePanel
                 objectName: "zonePanel"
                 visible: false
@@ -376,6 +377,7 @@ Page {
             elevation: page.elevation
             airspace: page.airspace
             endurance: page.endurance
+            theme: page.theme
         }
         }
         Pane {
@@ -384,6 +386,7 @@ Page {
             SplitView.preferredWidth: 230
             SplitView.minimumWidth: 170
             FleetRoutesList {
+                theme: page.theme
                 objectName: "missionFleetRoutes"
                 anchors.fill: parent
                 routes: page.fleetRoutes
@@ -391,6 +394,7 @@ Page {
             }
         }
         RoutePanel {
+            theme: page.theme
             id: panel
             SplitView.preferredWidth: Math.max(460, panel.neededWidth)
             SplitView.minimumWidth: 320

@@ -8,6 +8,7 @@ import Sortie.Ui
 // nothing is taken from it; `numberEntered` carries an accepted number.
 TextField {
     id: field
+    required property Theme theme
     required property DisplayUnits units
     property var value               // the number shown; undefined or NaN: empty
     property int decimals: -1        // places shown; -1: the shortest exact text
@@ -25,7 +26,7 @@ TextField {
         : plainDot ? Number(value).toFixed(decimals < 0 ? 6 : decimals)
         : (units.language, units.formatNumber(value, decimals))
     selectByMouse: true
-    color: refused ? "#e53935" : palette.text  // the segment editor's problem red: readable on light and dark fields
+    color: refused ? field.theme.problemText : palette.text  // the theme's problem words: readable on every scheme's fields
     onTextEdited: refused = false
     onEditingFinished: {
         if (readOnly || allowEmpty && text.trim() === "") {

@@ -12,6 +12,8 @@ Dialog {
     required property OfflineMaps offlineMaps
     required property AbstractItemModel routeModel   // the open route (latitude/longitude, polygon roles)
     required property MapView map                    // the map whose view can be the area
+    // Its colours; the window hands its own (a dialog shown alone follows the system's).
+    property Theme theme: Theme {}
     signal drawRequested()                           // the operator wants to draw the area on the map
 
     objectName: "offlineMapsDialog"
@@ -144,7 +146,7 @@ Dialog {
             objectName: "problemLabel"
             Layout.fillWidth: true
             wrapMode: Text.Wrap
-            color: "#c62828"
+            color: dialog.theme.problemText
             visible: text.length > 0
             text: dialog.offlineMaps.problem
         }

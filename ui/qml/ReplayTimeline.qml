@@ -9,6 +9,7 @@ import Sortie.Ui
 // vehicles are never taken for live ones. The ReplayController decides everything; this is a view.
 ToolBar {
     id: bar
+    required property Theme theme
     required property ReplayController replay
     // The connected server's history, replayed in the same controller.
     required property ServerHistoryRequest serverHistory
@@ -47,20 +48,20 @@ ToolBar {
                 Loader { // made when first opened: the start-up does not pay for it
                     id: historyDialog
                     active: false
-                    sourceComponent: ServerHistoryDialog { request: bar.serverHistory }
+                    sourceComponent: ServerHistoryDialog { theme: bar.theme; request: bar.serverHistory }
                 }
             }
             Rectangle {
                 objectName: "replayBanner"
                 visible: bar.replay.active
-                color: "#8e24aa"
+                color: bar.theme.replay
                 radius: 3
                 implicitWidth: bannerText.implicitWidth + 12
                 implicitHeight: bannerText.implicitHeight + 4
                 Label {
                     id: bannerText
                     anchors.centerIn: parent
-                    color: "white"
+                    color: bar.theme.onReplay
                     font.bold: true
                     text: qsTr("REPLAY — %1").arg(bar.replay.spanText)
                 }
@@ -181,7 +182,7 @@ ToolBar {
                     y: 2
                     width: 2
                     height: 6
-                    color: failed ? "#e53935" : "#8e24aa"
+                    color: failed ? bar.theme.problem : bar.theme.replay
                 }
             }
         }
@@ -190,7 +191,7 @@ ToolBar {
             objectName: "replayMessage"
             visible: text.length > 0
             text: [bar.replay.errorString, bar.replay.warning, bar.exportMessage].filter(t => t.length > 0).join("\n")
-            color: bar.replay.errorString.length > 0 || bar.replay.warning.length > 0 ? "#e53935" : palette.windowText
+            color: bar.replay.errorString.length > 0 || bar.replay.warning.length > 0 ? bar.theme.problemText : palette.windowText
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }

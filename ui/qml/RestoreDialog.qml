@@ -11,6 +11,7 @@ import Sortie.Ui
 // autosave (`message`: an unreadable file kept aside) is shown too, alone when nothing is offered.
 Dialog {
     id: dialog
+    required property Theme theme
     required property AutosaveRecovery recovery
     signal restored()
     readonly property int count: recovery ? recovery.count : 0
@@ -94,7 +95,7 @@ Dialog {
             objectName: "restoreBlocker"
             visible: text.length > 0
             text: dialog.recovery ? dialog.recovery.restoreBlocker : ""
-            color: "#c62828"
+            color: dialog.theme.problemText
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }
@@ -102,7 +103,7 @@ Dialog {
             objectName: "recoveryMessage"
             visible: text.length > 0
             text: dialog.recovery ? dialog.recovery.message : ""
-            color: "#c62828"
+            color: dialog.theme.problemText
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }

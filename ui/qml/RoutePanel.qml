@@ -8,6 +8,7 @@ import Sortie.Ui
 // scan), how it stands (progress, messages, statistics, validation) and its table.
 Pane {
     id: panel
+    required property Theme theme
     required property MissionController missions
     readonly property RoutePreparation preparation: missions.preparation
     readonly property bool uploading: preparation.uploader.busy && !preparation.uploader.asking
@@ -138,15 +139,15 @@ Pane {
             objectName: "conflictBanner"
             visible: panel.missions.conflict
             Layout.fillWidth: true
-            background: Rectangle { color: "#fff3e0"; border.color: "#fb8c00"; radius: 3 }
+            background: Rectangle { color: panel.theme.noticeBackground; border.color: panel.theme.noticeBorder; radius: 3 }
             ColumnLayout {
                 anchors.fill: parent
-                Label { text: panel.missions.conflictText; wrapMode: Text.Wrap; Layout.fillWidth: true; color: "#5d4037" }
+                Label { text: panel.missions.conflictText; wrapMode: Text.Wrap; Layout.fillWidth: true; color: panel.theme.noticeText }
                 Label {
                     text: qsTr("Yours (version %1, edited) against theirs (version %2, grey on the map):")
                           .arg(panel.missions.conflictDetails.yourVersion)
                           .arg(panel.missions.conflictDetails.theirVersion)
-                    wrapMode: Text.Wrap; Layout.fillWidth: true; color: "#5d4037"; font.bold: true
+                    wrapMode: Text.Wrap; Layout.fillWidth: true; color: panel.theme.noticeText; font.bold: true
                 }
                 ListView {
                     objectName: "conflictChanges"
@@ -154,12 +155,12 @@ Pane {
                     Layout.preferredHeight: Math.min(contentHeight, 110)
                     clip: true
                     model: panel.missions.conflictDetails.changes
-                    delegate: Label { required property string modelData; text: "• " + modelData; color: "#5d4037"; wrapMode: Text.Wrap; width: ListView.view.width }
+                    delegate: Label { required property string modelData; text: "• " + modelData; color: panel.theme.noticeText; wrapMode: Text.Wrap; width: ListView.view.width }
                 }
                 Label {
                     visible: panel.missions.conflictDetails.theirEdits.length > 0
                     text: qsTr("They changed: %1").arg(panel.missions.conflictDetails.theirEdits.join(", "))
-                    wrapMode: Text.Wrap; Layout.fillWidth: true; color: "#5d4037"; font.pointSize: 8
+                    wrapMode: Text.Wrap; Layout.fillWidth: true; color: panel.theme.noticeText; font.pointSize: 8
                 }
                 RowLayout {
                     Button { objectName: "keepMineButton"; text: qsTr("Keep mine (overwrite theirs)"); onClicked: panel.missions.keepMine() }
@@ -220,7 +221,7 @@ Pane {
             visible: panel.deconfliction !== null && panel.deconfliction.count > 0
             Layout.fillWidth: true
             spacing: 0
-            Label { text: qsTr("Conflicts with other vehicles"); font.bold: true; color: "#d50000" }
+            Label { text: qsTr("Conflicts with other vehicles"); font.bold: true; color: panel.theme.problemText }
             Repeater {
                 model: panel.deconfliction
                 delegate: Label {
@@ -252,7 +253,7 @@ Pane {
                 visible: !parent.e.missing
                 Label { objectName: "enduranceEnergy"; text: parent.parent.e.missing ? "" : qsTr("%1 Wh").arg(Number(parent.parent.e.energyWh).toFixed(0)) }
                 Label { objectName: "enduranceAtEnd"
-                        color: parent.parent.e.batteriesNeeded > 1 ? "#e53935" : palette.windowText
+                        color: parent.parent.e.batteriesNeeded > 1 ? panel.theme.problemText : palette.windowText
                         text: parent.parent.e.missing ? "" : parent.parent.e.batteriesNeeded > 1
                               ? qsTr("%n batteries", "", parent.parent.e.batteriesNeeded)
                               : qsTr("%1 % left").arg(Math.round(parent.parent.e.batteryAtEnd * 100)) }
@@ -281,12 +282,12 @@ Pane {
                 Button { objectName: "energyProfileButton"; text: qsTr("Load…"); onClicked: profileDialog.open()
                          ToolTip.visible: hovered; ToolTip.text: qsTr("The vehicle's energy profile: a JSON file, e.g. from sortie-log fit") }
                 Label { text: qsTr("Wind"); opacity: 0.7; leftPadding: 4 }
-                NumberField { objectName: "windSpeedField"; Layout.preferredWidth: 44; units: panel.units; from: 0; to: 60
+                NumberField { theme: panel.theme; objectName: "windSpeedField"; Layout.preferredWidth: 44; units: panel.units; from: 0; to: 60
                               value: parent.parent.e.windSpeed
                               onNumberEntered: typed => parent.parent.e.windSpeed = typed
                               hint: qsTr("Wind speed, m/s") }
                 Label { text: qsTr("m/s from") }
-                NumberField { objectName: "windFromField"; Layout.preferredWidth: 44; units: panel.units; from: 0; to: 360
+                NumberField { theme: panel.theme; objectName: "windFromField"; Layout.preferredWidth: 44; units: panel.units; from: 0; to: 360
                               value: parent.parent.e.windFrom
                               onNumberEntered: typed => parent.parent.e.windFrom = typed
                               hint: qsTr("The direction the wind blows from, degrees clockwise from north") }
@@ -295,12 +296,14 @@ Pane {
         }
 
         SegmentEditor {
+            theme: panel.theme
             Layout.fillWidth: true
             units: panel.units
             editor: panel.doc.segmentEditor
         }
 
         ActionEditor {
+            theme: panel.theme
             objectName: "actionEditor"
             Layout.fillWidth: true
             actions: panel.doc.actionEditor
@@ -325,7 +328,7 @@ Pane {
                     spacing: 6
                     Rectangle {
                         implicitWidth: 10; implicitHeight: 10; radius: 5
-                        color: issue.severity === "error" ? "#e53935" : "#fb8c00"
+                        color: issue.severity === "error" ? panel.theme.problem : panel.theme.warning
                     }
                     Label { text: issue.message; wrapMode: Text.Wrap; Layout.fillWidth: true }
                 }
@@ -351,6 +354,7 @@ Pane {
         }
 
         WaypointTable {
+            theme: panel.theme
             id: waypointTable
             units: panel.units
             Layout.fillWidth: true

@@ -9,6 +9,7 @@ import Sortie.Ui
 // knowledge adds the angle dial, the camera picker and the live survey figures.
 GroupBox {
     id: box
+    required property Theme theme
     required property SegmentEditorModel editor
     required property DisplayUnits units // numbers as the operator's language writes them
     property bool showAdvanced: false
@@ -23,6 +24,7 @@ GroupBox {
             visible: !isNaN(box.editor.radius)
             Label { text: qsTr("Radius"); Layout.preferredWidth: 150 }
             NumberField {
+                theme: box.theme
                 objectName: "segment_radius"
                 units: box.units
                 from: 0
@@ -60,7 +62,7 @@ GroupBox {
 
                 Label {
                     text: field.known ? field.label : field.label + " ⋯"
-                    color: field.problem.length > 0 ? "#e53935" : palette.windowText
+                    color: field.problem.length > 0 ? box.theme.problemText : palette.windowText
                     elide: Text.ElideRight
                     Layout.preferredWidth: 150
                 }
@@ -138,7 +140,7 @@ GroupBox {
             objectName: "segment_problem"
             visible: text.length > 0
             text: box.editor.problem
-            color: "#e53935"
+            color: box.theme.problemText
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }

@@ -8,6 +8,7 @@ import Sortie.Ui
 // ServerHistoryRequest decides what is valid and does the work; this is a view of it.
 Dialog {
     id: dialog
+    required property Theme theme
     required property ServerHistoryRequest request
 
     objectName: "serverHistoryDialog"
@@ -72,7 +73,7 @@ Dialog {
             objectName: "historyProblem"
             visible: text.length > 0
             text: dialog.request.problem
-            color: "#ef6c00"
+            color: dialog.theme.warningText
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }
@@ -86,7 +87,7 @@ Dialog {
             objectName: "historyError"
             visible: text.length > 0
             text: dialog.request.errorString
-            color: "#e53935"
+            color: dialog.theme.problemText
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }

@@ -12,10 +12,11 @@ ToolBar {
     property string connectionDetail: ""
     required property MapView map
     required property DisplayUnits units
+    required property Theme theme
 
-    readonly property color stateColor: connectionState === "Ready" ? "#43a047"
-                                      : connectionState === "Disconnected" ? "#9e9e9e"
-                                      : connectionState === "Reconnecting" ? "#fb8c00" : "#1e88e5"
+    readonly property color stateColor: connectionState === "Ready" ? theme.ok
+                                      : connectionState === "Disconnected" ? theme.missing
+                                      : connectionState === "Reconnecting" ? theme.warning : theme.info
     RowLayout {
         anchors.fill: parent
         anchors.leftMargin: 8

@@ -7,6 +7,7 @@ import Sortie.Ui
 // with its trail and home; the chosen one's instruments, plot and command bar.
 Page {
     id: page
+    required property Theme theme
     property alias map: pane.map
     property alias vehicleLayer: vehicleLayer
     property alias pane: pane
@@ -41,7 +42,6 @@ Page {
     property real orthophotoOpacity: 0.8
     property string tilePackFile: ""    // the web source's offline pack (OfflineMaps.packFile)
     property bool tilesCacheOnly: false // the web source never uses the network
-    property bool dark: false
     readonly property alias advisory: advisory
 
     // Will the chosen vehicle's battery bring it home? Not for a replayed flight: nothing to send.
@@ -121,11 +121,12 @@ Page {
                 Label {
                     visible: page.fleet.message.length > 0
                     text: page.fleet.message
-                    color: "#e53935"
+                    color: page.theme.problemText
                     wrapMode: Text.Wrap
                     Layout.fillWidth: true
                 }
                 FleetRoutesList {
+                    theme: page.theme
                     objectName: "flyFleetRoutes"
                     visible: page.fleetRoutes.count > 0 && !page.replaying
                     Layout.fillWidth: true
@@ -155,7 +156,7 @@ Page {
                 orthophotoOpacity: page.orthophotoOpacity
                 tilePackFile: page.tilePackFile
                 tilesCacheOnly: page.tilesCacheOnly
-                dark: page.dark
+                theme: page.theme
                 ZoneLayer {
                     id: zoneLayer
                     objectName: "flyZoneLayer"
@@ -259,6 +260,7 @@ Page {
             // one of ours and an aircraft predicted to come too close, a vehicle predicted to enter
             // a zone or leave its fence. Each also went into the command log as it rose.
             AlertBanner {
+                theme: page.theme
                 objectName: "alertBanner"
                 Layout.fillWidth: true
                 monitors: [advisory, page.proximity, page.zoneAlerts]
@@ -276,6 +278,7 @@ Page {
                 fleet: page.fleet
             }
             ReplayTimeline {
+                theme: page.theme
                 objectName: "replayTimeline"
                 Layout.fillWidth: true
                 replay: page.replay
@@ -286,6 +289,7 @@ Page {
                 Layout.fillWidth: true
                 active: page.replaying
                 sourceComponent: ComparisonPanel {
+                    theme: page.theme
                     comparison: page.comparison
                     vehicleIndex: vehicleLayer.currentIndex
                 }
@@ -296,6 +300,7 @@ Page {
             SplitView.minimumWidth: 240
             spacing: 4
             InstrumentPanel {
+                theme: page.theme
                 objectName: "instrumentPanel"
                 Layout.fillWidth: true
                 vehicle: page.visible ? page.current : null // hidden, its texts would still cost frames
@@ -379,6 +384,7 @@ Page {
                 textColor: page.palette.windowText
             }
             CommandLogView {
+                theme: page.theme
                 Layout.fillWidth: true
                 Layout.preferredHeight: 150
                 log: page.fleet.commandLog

@@ -11,6 +11,7 @@ Item {
     required property ElevationService elevation
     property Airspace airspace: null          // where the route crosses zones, drawn with their limits
     property RouteEndurance endurance: null   // its battery changes and point of no return, marked
+    property Theme theme: null                // its colours (null: the light scheme's, for a panel shown alone)
     property alias view: view
     property alias profile: profile
     implicitHeight: 170
@@ -27,8 +28,7 @@ Item {
         model: profile
         selectionModel: panel.selectionModel
         endurance: panel.endurance
-        textColor: palette.windowText
-        backgroundColor: palette.base
+        theme: panel.theme
     }
     ZoneProfileOverlay {
         objectName: "zoneProfile"

@@ -8,6 +8,7 @@ import Sortie.Ui
 // Every edit is one call of the document's RouteEditor (one undo step).
 ColumnLayout {
     id: table
+    required property Theme theme
     required property RouteDocument doc
     required property AbstractItemModel routeModel
     required property TerrainProfileModel terrain  // ground and converted heights per row
@@ -21,6 +22,7 @@ ColumnLayout {
     // A cell: coordinates always with a dot (as DisplayUnits shows them), other numbers in the
     // language's format; what is typed is read either way, and text that is no number is refused.
     component Cell: NumberField {
+        theme: table.theme
         property string role
         property var rowModel               // the delegate's row: its roles as a JS object
         signal edited(real value)
@@ -38,14 +40,14 @@ ColumnLayout {
         Layout.fillWidth: true
         spacing: 5
         Label { text: qsTr("%n selected:", "", table.selected.length); height: bulkAltitude.height; verticalAlignment: Text.AlignVCenter }
-        NumberField { id: bulkAltitude; objectName: "bulkAltitude"; units: table.units; allowEmpty: true; placeholderText: qsTr("alt m"); width: 60 }
+        NumberField { theme: table.theme; id: bulkAltitude; objectName: "bulkAltitude"; units: table.units; allowEmpty: true; placeholderText: qsTr("alt m"); width: 60 }
         Button {
             objectName: "bulkAltitudeButton"
             text: qsTr("Set")
             enabled: table.selected.length > 0 && bulkAltitude.number !== undefined
             onClicked: table.doc.editor.setAltitude(table.selected, bulkAltitude.number)
         }
-        NumberField { id: bulkSpeed; objectName: "bulkSpeed"; units: table.units; allowEmpty: true; from: 0; placeholderText: qsTr("m/s"); width: 50 }
+        NumberField { theme: table.theme; id: bulkSpeed; objectName: "bulkSpeed"; units: table.units; allowEmpty: true; from: 0; placeholderText: qsTr("m/s"); width: 50 }
         Button {
             objectName: "bulkSpeedButton"
             text: qsTr("Set")
@@ -130,7 +132,7 @@ ColumnLayout {
             readonly property bool isSelected: table.selected.indexOf(index) >= 0
             width: ListView.view.width
             height: 28
-            color: isSelected ? Qt.rgba(1.0, 0.56, 0.0, 0.25) : index % 2 ? Qt.rgba(0.5, 0.5, 0.5, 0.08) : "transparent"
+            color: isSelected ? table.theme.rowSelected : index % 2 ? table.theme.rowStripe : "transparent"
             MouseArea {
                 anchors.fill: parent
                 onClicked: mouse => { if (table.doc) table.doc.clickRow(row.index, mouse.modifiers) }

@@ -9,6 +9,7 @@ import Sortie.Ui
 // and ceiling. Every edit is the zone editor's (one undo step each); the rules are in C++.
 Frame {
     id: panel
+    required property Theme theme
     required property Airspace airspace
     required property ZoneSharing sharing  // send a drawn zone; edit or delete a server custom zone
     required property string tool          // the page's drawing tool ("zonePolygon", "zoneCircle" or another)
@@ -67,7 +68,7 @@ Frame {
             id: refusal
             objectName: "zoneRefusal"
             visible: text.length > 0
-            color: "#e53935"
+            color: panel.theme.problemText
             wrapMode: Text.Wrap
             Layout.fillWidth: true
             Connections {
@@ -80,7 +81,7 @@ Frame {
             objectName: "zoneProblems"
             visible: panel.airspace.problems.length > 0
             text: panel.airspace.problems.join("\n")
-            color: "#e53935"
+            color: panel.theme.problemText
             wrapMode: Text.Wrap
             Layout.fillWidth: true
             Layout.maximumHeight: 80
@@ -119,8 +120,8 @@ Frame {
                     }
                     Rectangle {
                         implicitWidth: 10; implicitHeight: 10
-                        color: row.kind === "exclusion" ? "#d32f2f" : "transparent"
-                        border.color: row.kind === "exclusion" ? "#d32f2f" : "#2e7d32"
+                        color: row.kind === "exclusion" ? panel.theme.mapExclusion : "transparent"
+                        border.color: row.kind === "exclusion" ? panel.theme.mapExclusion : panel.theme.mapInclusion
                         border.width: 2
                     }
                     ColumnLayout {
@@ -129,7 +130,7 @@ Frame {
                         Label { text: row.name; font.bold: true; elide: Text.ElideRight; Layout.fillWidth: true }
                         Label {
                             text: row.problem.length > 0 ? row.problem : qsTr("%1 · %2 – %3").arg(row.source).arg(row.floor).arg(row.ceiling)
-                            color: row.problem.length > 0 ? "#e53935" : palette.placeholderText
+                            color: row.problem.length > 0 ? panel.theme.problemText : palette.placeholderText
                             font.pixelSize: 11
                             elide: Text.ElideRight
                             Layout.fillWidth: true
@@ -232,7 +233,7 @@ Frame {
             objectName: "zoneSharingStatus"
             visible: text.length > 0
             text: panel.sharing.busy ? qsTr("Waiting for the server…") : panel.sharing.status
-            color: panel.sharing.failed ? "#e53935" : palette.text
+            color: panel.sharing.failed ? panel.theme.problemText : palette.text
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }

@@ -24,6 +24,7 @@ const QString kOrthophotoOpacity = QStringLiteral("map/orthophotoOpacity");
 const QString kDem = QStringLiteral("terrain/demFolder");  // the key ClientGraph reads at start
 const QString kUnits = QStringLiteral("display/units");
 const QString kLanguage = QStringLiteral("display/language");
+const QString kColourScheme = QStringLiteral("display/colourScheme");
 const QString kGeometry = QStringLiteral("window/geometry");
 const QString kMaximized = QStringLiteral("window/maximized");
 } // namespace
@@ -282,6 +283,17 @@ void AppSettings::setLanguage(const QString &language)
 {
     if (language != this->language())
         write(kLanguage, language, &AppSettings::languageChanged);
+}
+
+QString AppSettings::colourScheme() const
+{
+    return m_storage->value(kColourScheme, QStringLiteral("system")).toString();
+}
+
+void AppSettings::setColourScheme(const QString &scheme)
+{
+    if (scheme != colourScheme())
+        write(kColourScheme, scheme, &AppSettings::colourSchemeChanged);
 }
 
 QRect AppSettings::windowGeometry() const

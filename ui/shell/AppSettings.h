@@ -15,7 +15,7 @@ class PasswordVault;
 namespace sortie::ui {
 
 // What the operator chose last time, kept in QSettings: server, user, "remember the password",
-// window geometry, map source, units and language. The password itself never goes into the settings: it is
+// window geometry, map source, units, language and colour scheme. The password itself never goes into the settings: it is
 // held in memory for the session and, while `rememberPassword` is on, kept in the operating
 // system's keyring by the vault, under the last server and user; turning "remember" off removes it
 // from there. Without a reachable keyring nothing is remembered (`canRememberPassword` is false and
@@ -42,6 +42,8 @@ class AppSettings : public QObject
     Q_PROPERTY(QString demPath READ demPath WRITE setDemPath NOTIFY demPathChanged)
     Q_PROPERTY(QString units READ units WRITE setUnits NOTIFY unitsChanged)
     Q_PROPERTY(QString language READ language WRITE setLanguage NOTIFY languageChanged)
+    // The theme's scheme: "system" (the default), "light", "dark" or "sunlight" (Theme::schemeFromName).
+    Q_PROPERTY(QString colourScheme READ colourScheme WRITE setColourScheme NOTIFY colourSchemeChanged)
     Q_PROPERTY(QRect windowGeometry READ windowGeometry WRITE setWindowGeometry NOTIFY windowGeometryChanged)
     Q_PROPERTY(bool windowMaximized READ windowMaximized WRITE setWindowMaximized NOTIFY windowMaximizedChanged)
 
@@ -83,6 +85,9 @@ public:
     // Translations applies it, without a restart.
     QString language() const;
     void setLanguage(const QString &language);
+    // The colours the window is drawn in, applied at once (ui::MainWindow's Theme follows it).
+    QString colourScheme() const;
+    void setColourScheme(const QString &scheme);
     QRect windowGeometry() const;
     void setWindowGeometry(const QRect &geometry);
     bool windowMaximized() const;
@@ -113,6 +118,7 @@ signals:
     void demPathChanged();
     void unitsChanged();
     void languageChanged();
+    void colourSchemeChanged();
     void windowGeometryChanged();
     void windowMaximizedChanged();
     // The keyring gave back the remembered password (the login view fills an empty field with it).

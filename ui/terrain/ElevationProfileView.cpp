@@ -1,6 +1,5 @@
 #include "ElevationProfileView.h"
 
-#include "EnduranceLayer.h"
 #include "FollowOwner.h"
 #include "LanguageChange.h"
 #include "RouteEndurance.h"
@@ -27,7 +26,6 @@ const QColor kGround(0x8d, 0x6e, 0x63);
 const QColor kGroundFill(0xbc, 0xaa, 0xa4);
 const QColor kBand(0xff, 0xb3, 0x00, 90);
 const QColor kRoute(0x15, 0x65, 0xc0);
-const QColor kLow(0xd3, 0x2f, 0x2f);
 const QColor kSelected(0xff, 0x6f, 0x00);
 
 // Numbers in the language's format, as DisplayUnits writes them ("25,7 m" in German).
@@ -256,14 +254,30 @@ double ElevationProfileView::markerDistance(int index) const
     return std::isfinite(d) ? std::clamp(d, 0.0, m_model->length()) : qQNaN();
 }
 
+void ElevationProfileView::setTheme(Theme *theme)
+{
+    if (theme == m_theme)
+        return;
+    if (m_theme)
+        disconnect(m_theme, nullptr, this, nullptr);
+    m_theme = theme;
+    if (m_theme)
+        connect(m_theme, &Theme::coloursChanged, this, [this] { update(); });
+    update();
+    emit colorsChanged();
+}
+
 void ElevationProfileView::paint(QPainter *painter)
 {
-    painter->fillRect(QRectF(0, 0, width(), height()), m_background);
+    const ThemeColours &colours = coloursOf(m_theme);
+    const QColor background = colours.base, textColour = colours.text;
+    const QColor kLow = colours.map.exclusion;
+    painter->fillRect(QRectF(0, 0, width(), height()), background);
     const QRectF plot = plotRect();
     QFont font = painter->font();
     font.setPixelSize(11);
     painter->setFont(font);
-    painter->setPen(m_textColor);
+    painter->setPen(textColour);
     if (!m_model || m_model->sampleCount() < 2) {
         painter->drawText(plot, Qt::AlignCenter, m_model && m_model->service() ? tr("Add two waypoints to see the terrain profile")
                                                                                : tr("No terrain source"));
@@ -349,7 +363,7 @@ void ElevationProfileView::paint(QPainter *painter)
     // No data: hatched, never drawn as ground at 0 m.
     for (const auto &s : p.noData) {
         const double x0 = xOf(s.fromDistance), x1 = std::max(xOf(s.toDistance), x0 + 2);
-        painter->setBrush(QBrush(QColor(0x75, 0x75, 0x75), Qt::BDiagPattern));
+        painter->setBrush(QBrush(colours.map.inactiveEdge, Qt::BDiagPattern));
         painter->drawRect(QRectF(x0, plot.top(), x1 - x0, plot.height()));
     }
     // Too low: a red wash over the stretch (the altitude line is red there too).
@@ -395,7 +409,7 @@ void ElevationProfileView::paint(QPainter *painter)
         }
         if (std::isfinite(alt)) {
             painter->setPen(QPen(selected ? kSelected : kRoute, 1.5));
-            painter->setBrush(selected ? kSelected : m_background);
+            painter->setBrush(selected ? kSelected : background);
             painter->drawEllipse(QPointF(x, yOf(alt)), selected ? 5.0 : 3.0, selected ? 5.0 : 3.0);
         }
     }
@@ -406,9 +420,9 @@ void ElevationProfileView::paint(QPainter *painter)
             continue;
         // The map's colours for the same marks (EnduranceLayer).
         const MarkerKind kind = m_markers[size_t(i)].kind;
-        const QColor colour = kind == MarkerKind::PlannedChange ? EnduranceLayer::plannedColour()
-                            : kind == MarkerKind::UnplannedChange ? EnduranceLayer::unplannedColour()
-                                                                  : EnduranceLayer::noReturnColour();
+        const QColor colour = kind == MarkerKind::PlannedChange ? colours.map.planned
+                            : kind == MarkerKind::UnplannedChange ? colours.map.unplanned
+                                                                  : colours.map.noReturn;
         const double x = xOf(d);
         painter->setPen(QPen(colour, 2));
         painter->drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
@@ -416,21 +430,21 @@ void ElevationProfileView::paint(QPainter *painter)
         const QFontMetricsF metrics(font);
         const double w = metrics.horizontalAdvance(label) + 6;
         const QRectF box(std::min(x + 3, plot.right() - w), plot.top() + 3 + 15 * (i % 2), w, metrics.height());
-        painter->fillRect(box, m_background);
+        painter->fillRect(box, background);
         painter->drawText(box, Qt::AlignCenter, label);
     }
     // Hover: a cursor line.
     if (m_hoverX >= plot.left() && m_hoverX <= plot.right()) {
-        painter->setPen(QPen(m_textColor, 1, Qt::DotLine));
+        painter->setPen(QPen(textColour, 1, Qt::DotLine));
         painter->drawLine(QPointF(m_hoverX, plot.top()), QPointF(m_hoverX, plot.bottom()));
     }
     painter->restore();
 
     // Frame, axes and labels.
-    painter->setPen(QPen(QColor(0x9e, 0x9e, 0x9e), 1));
+    painter->setPen(QPen(colours.map.terrain, 1));
     painter->setBrush(Qt::NoBrush);
     painter->drawRect(plot);
-    painter->setPen(m_textColor);
+    painter->setPen(textColour);
     const QFontMetricsF fm(font);
     for (double a : {m_low, (m_low + m_high) / 2, m_high}) {
         const QString label = QStringLiteral("%1 m").arg(i18n::formatTypedNumber(a, 0));
@@ -444,7 +458,7 @@ void ElevationProfileView::paint(QPainter *painter)
     const double rightWidth = std::min(fm.horizontalAdvance(right) + 4, width() - kLeft - kRight);
     painter->drawText(QRectF(kLeft, 2, std::max(0.0, width() - kLeft - kRight - rightWidth - 12), kTop - 4),
                       Qt::AlignLeft | Qt::AlignVCenter, fm.elidedText(title, Qt::ElideRight, std::max(0.0, width() - kLeft - kRight - rightWidth - 12)));
-    painter->setPen(m_readout.isEmpty() && p.minClearance && p.minClearance->clearance < safe ? kLow : m_textColor);
+    painter->setPen(m_readout.isEmpty() && p.minClearance && p.minClearance->clearance < safe ? kLow : textColour);
     painter->drawText(QRectF(width() - kRight - rightWidth, 2, rightWidth, kTop - 4), Qt::AlignRight | Qt::AlignVCenter,
                       fm.elidedText(right, Qt::ElideLeft, rightWidth));
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "TerrainProfileModel.h"
+#include "Theme.h"
 
 #include <QColor>
 #include <QItemSelectionModel>
@@ -31,8 +32,8 @@ class ElevationProfileView : public QQuickPaintedItem
     Q_PROPERTY(QItemSelectionModel *selectionModel READ selectionModel WRITE setSelectionModel NOTIFY selectionModelChanged)
     Q_PROPERTY(QString readout READ readout NOTIFY readoutChanged)  // the hovered point, empty when none
     Q_PROPERTY(int hoveredLeg READ hoveredLeg NOTIFY readoutChanged)
-    Q_PROPERTY(QColor textColor MEMBER m_textColor NOTIFY colorsChanged)
-    Q_PROPERTY(QColor backgroundColor MEMBER m_background NOTIFY colorsChanged)
+    // Its ground, words and marks (the light scheme's without one).
+    Q_PROPERTY(sortie::ui::Theme *theme READ theme WRITE setTheme NOTIFY colorsChanged)
     // The route's endurance: its battery changes and point of no return are marked along the
     // profile, each a vertical line at its distance along the flown path, with its name.
     Q_PROPERTY(sortie::endurance::RouteEndurance *endurance READ endurance WRITE setEndurance NOTIFY enduranceChanged)
@@ -42,6 +43,8 @@ class ElevationProfileView : public QQuickPaintedItem
     Q_PROPERTY(QString headline READ headline NOTIFY headlineChanged)
 
 public:
+    Theme *theme() const { return m_theme; }
+    void setTheme(Theme *theme);
     explicit ElevationProfileView(QQuickItem *parent = nullptr);
 
     TerrainProfileModel *model() const { return m_model; }
@@ -108,8 +111,7 @@ private:
     int m_hoveredLeg = -1;
     double m_hoverX = -1;
     double m_low = 0, m_high = 100;  // the altitude axis, metres
-    QColor m_textColor = QColor(0x21, 0x21, 0x21);
-    QColor m_background = QColor(0xfa, 0xfa, 0xfa);
+    QPointer<Theme> m_theme;
 };
 
 } // namespace sortie::ui

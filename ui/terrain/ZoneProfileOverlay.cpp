@@ -125,7 +125,8 @@ void ZoneProfileOverlay::paint(QPainter *painter)
             continue;
         ++m_bands;
         const bool exclusion = c.kind == airspace::ZoneKind::Exclusion;
-        const QColor colour = exclusion ? QColor(0xd3, 0x2f, 0x2f) : QColor(0x2e, 0x7d, 0x32);
+        const MapPalette &palette = coloursOf(m_view ? m_view->theme() : nullptr).map;
+        const QColor colour = exclusion ? palette.exclusion : palette.inclusion;
         QColor wash = colour;
         wash.setAlpha(40);
         p.setPen(Qt::NoPen);
