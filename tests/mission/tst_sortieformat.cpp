@@ -249,9 +249,9 @@ private slots:
         QVERIFY(!readSortie(writeSortie(m))->routes[0].settings.plannedStart);
         m.routes[0].settings.plannedStart = QDateTime(QDate(2026, 6, 6), QTime(18, 30), QTimeZone::utc());
         QByteArray text = writeSortie(m);
-        const QByteArray written = "\"plannedStart\":\"2026-06-06T18:30:00.000Z\"";
+        const QByteArray written = "\"plannedStart\": \"2026-06-06T18:30:00.000Z\"";
         QVERIFY2(text.contains(written), text.constData());
-        text.replace(written, "\"plannedStart\":" + value);
+        text.replace(written, "\"plannedStart\": " + value);
         const Result<Mission> r = readSortie(text);
         QVERIFY(!r.ok());
         QCOMPARE(r.error().jsonPath, QStringLiteral("/mission/routes/0/plannedStart"));
