@@ -22,6 +22,7 @@ GroupBox {
         spacing: 4
 
         Label {
+            textFormat: Text.PlainText
             visible: box.actions.mixed
             text: qsTr("The selected waypoints have different actions: these are the first one's. An edit applies where they match; an added action goes to all.")
             wrapMode: Text.Wrap
@@ -48,6 +49,7 @@ GroupBox {
                     RowLayout {
                         Layout.fillWidth: true
                         Label {
+                            textFormat: Text.PlainText
                             id: summaryLabel
                             text: action.summary
                             font.bold: true
@@ -66,6 +68,7 @@ GroupBox {
                         }
                     }
                     Label {
+                        textFormat: Text.PlainText
                         visible: !action.editable
                         text: qsTr("Sent by the server; kept and sent back unchanged.")
                         opacity: 0.7
@@ -86,6 +89,7 @@ GroupBox {
                             readonly property string type: modelData.type
                             spacing: 6
                             Label {
+                                textFormat: Text.PlainText
                                 text: field.modelData.label
                                 elide: Text.ElideRight
                                 Layout.preferredWidth: 150
@@ -114,7 +118,7 @@ GroupBox {
                                 Layout.preferredWidth: 190
                                 onActivated: box.actions.setField(field.actionIndex, field.name, currentValue)
                             }
-                            Label { text: field.modelData.unit; opacity: 0.7 }
+                            Label { textFormat: Text.PlainText; text: field.modelData.unit; opacity: 0.7 }
                         }
                     }
                 }
@@ -146,6 +150,7 @@ GroupBox {
         }
 
         Label {
+            textFormat: Text.PlainText
             objectName: "actionProblem"
             visible: text.length > 0
             text: box.actions ? box.actions.problem : ""

@@ -45,6 +45,7 @@ ColumnLayout {
                     anchors.rightMargin: 6
                     spacing: 8
                     Label {
+                        textFormat: Text.PlainText
                         objectName: row.subject === AlertModel.Battery ? "enduranceAdvice"
                                   : row.subject === AlertModel.Airspace ? "zoneAlert" : "proximityAlert"
                         Layout.fillWidth: true

@@ -47,7 +47,7 @@ ToolBar {
         anchors.centerIn: parent
         standardButtons: Dialog.Yes | Dialog.No
         width: 420
-        Label { id: question; wrapMode: Text.Wrap; width: confirmDialog.availableWidth }
+        Label { textFormat: Text.PlainText; id: question; wrapMode: Text.Wrap; width: confirmDialog.availableWidth }
         onAccepted: if (bar.pending) { bar.pending(); bar.pending = null }
         onRejected: bar.pending = null
     }
@@ -61,6 +61,7 @@ ToolBar {
         visible: bar.toGroup
         Layout.fillWidth: true
         Label {
+            textFormat: Text.PlainText
             objectName: "groupTargets"
             Layout.fillWidth: true
             elide: Text.ElideRight
@@ -96,6 +97,7 @@ ToolBar {
         }
       }
       Label {
+          textFormat: Text.PlainText
           objectName: "commandResult"
           Layout.fillWidth: true
           elide: Text.ElideRight

@@ -12,7 +12,7 @@ ColumnLayout {
     required property CommandLog log
     spacing: 2
 
-    Label { text: qsTr("Command log"); font.bold: true }
+    Label { textFormat: Text.PlainText; text: qsTr("Command log"); font.bold: true }
     ListView {
         id: list
         objectName: "commandLogList"
@@ -23,6 +23,7 @@ ColumnLayout {
         ScrollBar.vertical: ScrollBar {}
         onCountChanged: positionViewAtEnd()
         delegate: Label {
+            textFormat: Text.PlainText
             required property var model
             width: ListView.view.width
             wrapMode: Text.Wrap

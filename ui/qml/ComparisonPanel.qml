@@ -27,6 +27,7 @@ ColumnLayout {
             onClicked: routeDialog.open()
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "comparisonSummary"
             Layout.fillWidth: true
             text: panel.comparison.errorString.length > 0 ? panel.comparison.errorString : panel.comparison.summary
@@ -50,7 +51,7 @@ ColumnLayout {
             width: ListView.view.width
             Repeater {
                 model: [qsTr("leg"), qsTr("samples"), qsTr("cross-track max"), qsTr("mean"), qsTr("altitude max"), qsTr("mean"), qsTr("reached")]
-                Label { required property string modelData; text: modelData; font.bold: true; Layout.fillWidth: true }
+                Label { textFormat: Text.PlainText; required property string modelData; text: modelData; font.bold: true; Layout.fillWidth: true }
             }
         }
         delegate: RowLayout {
@@ -64,13 +65,13 @@ ColumnLayout {
             required property int level
             width: ListView.view.width
             Rectangle { width: 8; height: 8; radius: 4; color: [panel.theme.ok, panel.theme.warning, panel.theme.problem][level] }
-            Label { text: leg; Layout.fillWidth: true }
-            Label { text: samples; Layout.fillWidth: true }
-            Label { text: qsTr("%1 m").arg(maxCrossTrack); Layout.fillWidth: true }
-            Label { text: qsTr("%1 m").arg(meanCrossTrack); Layout.fillWidth: true }
-            Label { text: qsTr("%1 m").arg(maxAltitude); Layout.fillWidth: true }
-            Label { text: qsTr("%1 m").arg(meanAltitude); Layout.fillWidth: true }
-            Label { text: reached; Layout.fillWidth: true }
+            Label { textFormat: Text.PlainText; text: leg; Layout.fillWidth: true }
+            Label { textFormat: Text.PlainText; text: samples; Layout.fillWidth: true }
+            Label { textFormat: Text.PlainText; text: qsTr("%1 m").arg(maxCrossTrack); Layout.fillWidth: true }
+            Label { textFormat: Text.PlainText; text: qsTr("%1 m").arg(meanCrossTrack); Layout.fillWidth: true }
+            Label { textFormat: Text.PlainText; text: qsTr("%1 m").arg(maxAltitude); Layout.fillWidth: true }
+            Label { textFormat: Text.PlainText; text: qsTr("%1 m").arg(meanAltitude); Layout.fillWidth: true }
+            Label { textFormat: Text.PlainText; text: reached; Layout.fillWidth: true }
         }
     }
 }

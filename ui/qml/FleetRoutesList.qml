@@ -16,6 +16,7 @@ ColumnLayout {
     spacing: 2
 
     Label {
+        textFormat: Text.PlainText
         text: qsTr("Routes")
         font.bold: true
         font.pixelSize: 16
@@ -72,6 +73,7 @@ ColumnLayout {
                     Layout.fillWidth: true
                     spacing: 0
                     Label {
+                        textFormat: Text.PlainText
                         objectName: "routeName"
                         Layout.fillWidth: true
                         text: row.routeName
@@ -85,15 +87,18 @@ ColumnLayout {
                         Layout.fillWidth: true
                         spacing: 0
                         Label {
+                            textFormat: Text.PlainText
                             objectName: "routeVehicle"
                             text: row.vehicleName
                             font.pixelSize: 12
                         }
                         Label {
+                            textFormat: Text.PlainText
                             text: "  ·  "
                             font.pixelSize: 12
                         }
                         Label {
+                            textFormat: Text.PlainText
                             objectName: "routeState"
                             text: row.stateText
                             width: Math.min(implicitWidth, stateLine.width)
@@ -102,6 +107,7 @@ ColumnLayout {
                         }
                     }
                     Label {
+                        textFormat: Text.PlainText
                         objectName: "routeTimes"
                         Layout.fillWidth: true
                         text: isNaN(row.elapsedSeconds)

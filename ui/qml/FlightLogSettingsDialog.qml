@@ -41,7 +41,7 @@ Dialog {
             columnSpacing: 12
             rowSpacing: 6
             Layout.fillWidth: true
-            Label { text: qsTr("Folder") }
+            Label { textFormat: Text.PlainText; text: qsTr("Folder") }
             TextField {
                 objectName: "logFolderField"
                 Layout.fillWidth: true
@@ -49,20 +49,22 @@ Dialog {
                 selectByMouse: true
                 text: dialog.settings.folder
             }
-            Label { text: qsTr("Holds") }
+            Label { textFormat: Text.PlainText; text: qsTr("Holds") }
             Label {
+                textFormat: Text.PlainText
                 objectName: "logFolderSize"
                 Layout.fillWidth: true
                 text: dialog.settings.folderSummary
             }
-            Label { text: qsTr("Recording to") }
+            Label { textFormat: Text.PlainText; text: qsTr("Recording to") }
             Label {
+                textFormat: Text.PlainText
                 objectName: "currentLogLabel"
                 Layout.fillWidth: true
                 elide: Text.ElideMiddle
                 text: dialog.settings.currentLog.length > 0 ? dialog.settings.currentLog : qsTr("not recording")
             }
-            Label { text: qsTr("A log up to (MB)") }
+            Label { textFormat: Text.PlainText; text: qsTr("A log up to (MB)") }
             SpinBox {
                 id: fileBox
                 objectName: "maxFileBox"
@@ -71,7 +73,7 @@ Dialog {
                 editable: true
                 stepSize: 16
             }
-            Label { text: qsTr("The folder up to (MB)") }
+            Label { textFormat: Text.PlainText; text: qsTr("The folder up to (MB)") }
             SpinBox {
                 id: folderBox
                 objectName: "maxFolderBox"
@@ -82,12 +84,14 @@ Dialog {
             }
         }
         Label {
+            textFormat: Text.PlainText
             Layout.fillWidth: true
             wrapMode: Text.Wrap
             opacity: 0.7
             text: qsTr("0: no limit. A log over its size continues in a new part; beyond the folder's size the oldest logs are deleted, never the one being written.")
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "logSettingsError"
             visible: text.length > 0
             Layout.fillWidth: true
@@ -98,6 +102,7 @@ Dialog {
         RowLayout {
             Layout.fillWidth: true
             Label {
+                textFormat: Text.PlainText
                 objectName: "logSettingsInForce"
                 Layout.fillWidth: true
                 elide: Text.ElideRight

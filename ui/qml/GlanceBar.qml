@@ -40,6 +40,7 @@ RowLayout {
             implicitHeight: bar.theme.iconSize
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "glanceText_" + glance.key
             text: glance.text
             color: bar.levelColour(glance.level)

@@ -36,8 +36,9 @@ GroupBox {
         objectName: "instrument_" + field
         opacity: panel.stale(staleField) ? 0.35 : 1
         spacing: 6
-        Label { text: parent.caption; Layout.preferredWidth: 96; elide: Text.ElideRight; opacity: 0.8 }
+        Label { textFormat: Text.PlainText; text: parent.caption; Layout.preferredWidth: 96; elide: Text.ElideRight; opacity: 0.8 }
         Label {
+            textFormat: Text.PlainText
             objectName: "value_" + parent.field
             text: parent.value
             color: parent.valueColor
@@ -102,6 +103,7 @@ GroupBox {
             value: status.missionFlying ? qsTr("%1, %2").arg(panel.units.formatDistance(status.distanceLeft)).arg(panel.units.formatDuration(status.timeLeft)) : "—"
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "enduranceLine"
             Layout.fillWidth: true
             text: panel.advisory.summary

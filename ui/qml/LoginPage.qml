@@ -54,6 +54,7 @@ Page {
             anchors.fill: parent
             spacing: 10
             Label {
+                textFormat: Text.PlainText
                 objectName: "loginTitle"
                 Layout.fillWidth: true
                 wrapMode: Text.Wrap
@@ -61,7 +62,7 @@ Page {
                 font.pixelSize: 20
                 font.bold: true
             }
-            Label { text: qsTr("Server (host:port)") }
+            Label { textFormat: Text.PlainText; text: qsTr("Server (host:port)") }
             TextField {
                 id: server
                 objectName: "serverField"
@@ -89,7 +90,7 @@ Page {
                 ToolTip.visible: hovered
                 ToolTip.text: qsTr("For a server behind a TLS terminator: the password and everything else travel encrypted")
             }
-            Label { text: qsTr("User") }
+            Label { textFormat: Text.PlainText; text: qsTr("User") }
             TextField {
                 id: user
                 objectName: "userField"
@@ -98,7 +99,7 @@ Page {
                 Component.onCompleted: text = page.appSettings.lastUser
                 selectByMouse: true
             }
-            Label { text: qsTr("Password") }
+            Label { textFormat: Text.PlainText; text: qsTr("Password") }
             TextField {
                 id: password
                 objectName: "passwordField"
@@ -120,6 +121,7 @@ Page {
                 ToolTip.text: qsTr("Kept in this computer's keyring for this server and user, never in a file")
             }
             Label {
+                textFormat: Text.PlainText
                 // No keyring (and why), a keyring that refused, a password moved out of the settings file.
                 objectName: "rememberNotice"
                 Layout.preferredWidth: 1 // a sentence wraps in the width the fields make; it does not widen the frame
@@ -162,6 +164,7 @@ Page {
                 Item { Layout.fillWidth: true }
             }
             Label {
+                textFormat: Text.PlainText
                 objectName: "loginStatus"
                 Layout.preferredWidth: 1 // a sentence wraps in the width the fields make; it does not widen the frame
                 Layout.fillWidth: true
@@ -212,6 +215,7 @@ Page {
                 visible: text.length > 0
             }
             Label {
+                textFormat: Text.PlainText
                 objectName: "loginMessage"
                 Layout.preferredWidth: 1 // a sentence wraps in the width the fields make; it does not widen the frame
                 Layout.fillWidth: true

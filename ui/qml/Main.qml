@@ -166,7 +166,7 @@ ApplicationWindow {
                             columns: 2
                             columnSpacing: window.theme.spacing
                             rowSpacing: window.theme.smallSpacing
-                            Label { text: qsTr("Units") }
+                            Label { textFormat: Text.PlainText; text: qsTr("Units") }
                             Button {
                                 objectName: "unitsButton"
                                 Layout.fillWidth: true
@@ -176,7 +176,7 @@ ApplicationWindow {
                                 ToolTip.visible: hovered
                                 ToolTip.text: qsTr("Switch between metric and imperial units")
                             }
-                            Label { text: qsTr("Language") }
+                            Label { textFormat: Text.PlainText; text: qsTr("Language") }
                             ComboBox {
                                 id: languageBox
                                 objectName: "languageBox"
@@ -193,7 +193,7 @@ ApplicationWindow {
                                 ToolTip.visible: hovered
                                 ToolTip.text: qsTr("The language of Sortie, applied at once")
                             }
-                            Label { text: qsTr("Colours") }
+                            Label { textFormat: Text.PlainText; text: qsTr("Colours") }
                             ComboBox {
                                 id: schemeBox
                                 objectName: "colourSchemeBox"

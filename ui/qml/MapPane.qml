@@ -118,6 +118,7 @@ Item {
     }
 
     Label {
+        textFormat: Text.PlainText
         objectName: "attributionLabel"
         anchors.right: parent.right
         anchors.bottom: parent.bottom

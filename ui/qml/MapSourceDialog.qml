@@ -113,6 +113,7 @@ Dialog {
         }
         MenuSeparator { Layout.fillWidth: true }
         Label {
+            textFormat: Text.PlainText
             Layout.fillWidth: true
             wrapMode: Text.Wrap
             text: qsTr("Orthophoto over the base map (GeoTIFF or any raster GDAL reads, any CRS)")
@@ -133,6 +134,7 @@ Dialog {
             }
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "orthophotoProblem"
             Layout.fillWidth: true
             visible: text.length > 0
@@ -141,7 +143,7 @@ Dialog {
             wrapMode: Text.Wrap
         }
         RowLayout {
-            Label { text: qsTr("Opacity") }
+            Label { textFormat: Text.PlainText; text: qsTr("Opacity") }
             Slider {
                 id: opacitySlider
                 objectName: "orthophotoOpacity"
@@ -150,9 +152,10 @@ Dialog {
                 to: 1.0
                 stepSize: 0.05
             }
-            Label { text: qsTr("%1 %").arg(Math.round(opacitySlider.value * 100)) }
+            Label { textFormat: Text.PlainText; text: qsTr("%1 %").arg(Math.round(opacitySlider.value * 100)) }
         }
         Label {
+            textFormat: Text.PlainText
             Layout.fillWidth: true
             wrapMode: Text.Wrap
             text: qsTr("Terrain: a DEM file (GeoTIFF, .hgt, ...) or a folder of them")
@@ -178,6 +181,7 @@ Dialog {
             }
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "demProblem"
             Layout.fillWidth: true
             visible: text.length > 0
@@ -186,6 +190,7 @@ Dialog {
             wrapMode: Text.Wrap
         }
         Label {
+            textFormat: Text.PlainText
             // A folder usable with a few bad files: which, and why (the rest still answers).
             objectName: "demLeftOut"
             Layout.fillWidth: true

@@ -321,7 +321,7 @@ Page {
                 anchors.horizontalCenter: parent.horizontalCenter
                 anchors.topMargin: pane.controlsTop
                 RowLayout {
-                    Label { text: qsTr("Click the corners (%1 so far), or Shift+drag a box").arg(polygonDraft.count) }
+                    Label { textFormat: Text.PlainText; text: qsTr("Click the corners (%1 so far), or Shift+drag a box").arg(polygonDraft.count) }
                     Button {
                         objectName: "finishAreaButton"
                         text: qsTr("Done")
@@ -350,6 +350,7 @@ Page {
                         Layout.preferredWidth: 170
                     }
                     Label {
+                        textFormat: Text.PlainText
                         text: !page.currentTool ? ""
                               : page.currentTool.figure === "polyline" ? qsTr("Click the centre line (%1 so far)").arg(scanDraft.count)
                               : page.currentTool.figure === "polygon" ? qsTr("Click the corners of the area (%1 so far)").arg(scanDraft.count)

@@ -39,6 +39,7 @@ Dialog {
         anchors.fill: parent
         spacing: 6
         Label {
+            textFormat: Text.PlainText
             Layout.fillWidth: true
             wrapMode: Text.Wrap
             text: dialog.offlineMaps.urlTemplate.length > 0
@@ -51,7 +52,7 @@ Dialog {
                 text: qsTr("The open route")
                 onClicked: dialog.offlineMaps.useRouteArea(dialog.routeModel)
             }
-            Label { text: qsTr("and") }
+            Label { textFormat: Text.PlainText; text: qsTr("and") }
             SpinBox {
                 id: margin
                 objectName: "marginBox"
@@ -59,7 +60,7 @@ Dialog {
                 editable: true
                 onValueModified: dialog.offlineMaps.marginMetres = value
             }
-            Label { text: qsTr("m around it") }
+            Label { textFormat: Text.PlainText; text: qsTr("m around it") }
         }
         RowLayout {
             Button {
@@ -77,20 +78,21 @@ Dialog {
             }
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "areaLabel"
             Layout.fillWidth: true
             wrapMode: Text.Wrap
             text: dialog.offlineMaps.areaText
         }
         RowLayout {
-            Label { text: qsTr("Zoom from") }
+            Label { textFormat: Text.PlainText; text: qsTr("Zoom from") }
             SpinBox {
                 id: minZoom
                 objectName: "minZoomBox"
                 from: 0; to: 22
                 onValueModified: dialog.offlineMaps.minimumZoom = value
             }
-            Label { text: qsTr("to") }
+            Label { textFormat: Text.PlainText; text: qsTr("to") }
             SpinBox {
                 id: maxZoom
                 objectName: "maxZoomBox"
@@ -99,6 +101,7 @@ Dialog {
             }
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "estimateLabel"
             Layout.fillWidth: true
             wrapMode: Text.Wrap
@@ -107,7 +110,7 @@ Dialog {
         GridLayout {
             columns: 2
             Layout.fillWidth: true
-            Label { text: qsTr("Pack file") }
+            Label { textFormat: Text.PlainText; text: qsTr("Pack file") }
             TextField {
                 id: packField
                 objectName: "packField"
@@ -115,7 +118,7 @@ Dialog {
                 selectByMouse: true
                 onEditingFinished: dialog.offlineMaps.packFile = text
             }
-            Label { text: qsTr("Attribution") }
+            Label { textFormat: Text.PlainText; text: qsTr("Attribution") }
             TextField {
                 id: attributionField
                 objectName: "attributionField"
@@ -137,12 +140,14 @@ Dialog {
             value: dialog.offlineMaps.progress
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "progressLabel"
             Layout.fillWidth: true
             wrapMode: Text.Wrap
             text: dialog.offlineMaps.progressText
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "problemLabel"
             Layout.fillWidth: true
             wrapMode: Text.Wrap
@@ -156,7 +161,7 @@ Dialog {
             Layout.preferredHeight: Math.min(contentHeight, 80)
             clip: true
             model: dialog.offlineMaps.failures
-            delegate: Label { required property string modelData; text: modelData; font.pixelSize: 11 }
+            delegate: Label { textFormat: Text.PlainText; required property string modelData; text: modelData; font.pixelSize: 11 }
         }
         RowLayout {
             Button {

@@ -59,6 +59,7 @@ ToolBar {
                 implicitWidth: bannerText.implicitWidth + 12
                 implicitHeight: bannerText.implicitHeight + 4
                 Label {
+                    textFormat: Text.PlainText
                     id: bannerText
                     anchors.centerIn: parent
                     color: bar.theme.onReplay
@@ -124,12 +125,14 @@ ToolBar {
                 onActivated: index => bar.replay.jumpToEvent(index)
             }
             Label {
+                textFormat: Text.PlainText
                 objectName: "historyLoadingLabel"
                 visible: bar.replay.active && !bar.replay.historyLoaded
                 text: qsTr("Loading plots…")
                 opacity: 0.7
             }
             Label {
+                textFormat: Text.PlainText
                 objectName: "positionLabel"
                 visible: bar.replay.active
                 text: bar.replay.positionText
@@ -187,6 +190,7 @@ ToolBar {
             }
         }
         Label {
+            textFormat: Text.PlainText
             id: exportResult
             objectName: "replayMessage"
             visible: text.length > 0

@@ -27,6 +27,7 @@ Dialog {
         anchors.fill: parent
         spacing: 8
         Label {
+            textFormat: Text.PlainText
             objectName: "restoreIntro"
             visible: dialog.offering
             text: !dialog.recovery ? ""
@@ -60,12 +61,14 @@ Dialog {
                 contentItem: ColumnLayout {
                     spacing: 2
                     Label {
+                        textFormat: Text.PlainText
                         text: qsTr("%1 — saved %2").arg(routeName).arg(Qt.formatDateTime(savedAt, Qt.DefaultLocaleShortDate))
                         font.bold: true
                         elide: Text.ElideRight
                         Layout.fillWidth: true
                     }
                     Label {
+                        textFormat: Text.PlainText
                         text: (origin.length > 0 ? origin + " · " : "") + summary
                         elide: Text.ElideRight
                         opacity: restoreBlocker.length > 0 ? 0.55 : 0.8
@@ -75,13 +78,14 @@ Dialog {
             }
         }
         Label {
+            textFormat: Text.PlainText
             visible: text.length > 0
             text: dialog.recovery && dialog.recovery.origin.length > 0 ? qsTr("It belongs to %1.").arg(dialog.recovery.origin) : ""
             wrapMode: Text.Wrap
             opacity: 0.7
             Layout.fillWidth: true
         }
-        Label { visible: dialog.offering; text: qsTr("Changes since the last save:"); font.bold: true }
+        Label { textFormat: Text.PlainText; visible: dialog.offering; text: qsTr("Changes since the last save:"); font.bold: true }
         ListView {
             objectName: "restoreChanges"
             visible: dialog.offering
@@ -89,9 +93,10 @@ Dialog {
             Layout.preferredHeight: Math.min(contentHeight, 180)
             clip: true
             model: dialog.recovery ? dialog.recovery.changes : []
-            delegate: Label { required property string modelData; text: "• " + modelData; wrapMode: Text.Wrap; width: ListView.view.width }
+            delegate: Label { textFormat: Text.PlainText; required property string modelData; text: "• " + modelData; wrapMode: Text.Wrap; width: ListView.view.width }
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "restoreBlocker"
             visible: text.length > 0
             text: dialog.recovery ? dialog.recovery.restoreBlocker : ""
@@ -100,6 +105,7 @@ Dialog {
             Layout.fillWidth: true
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "recoveryMessage"
             visible: text.length > 0
             text: dialog.recovery ? dialog.recovery.message : ""

@@ -142,8 +142,9 @@ Pane {
             background: Rectangle { color: panel.theme.noticeBackground; border.color: panel.theme.noticeBorder; radius: 3 }
             ColumnLayout {
                 anchors.fill: parent
-                Label { text: panel.missions.conflictText; wrapMode: Text.Wrap; Layout.fillWidth: true; color: panel.theme.noticeText }
+                Label { textFormat: Text.PlainText; text: panel.missions.conflictText; wrapMode: Text.Wrap; Layout.fillWidth: true; color: panel.theme.noticeText }
                 Label {
+                    textFormat: Text.PlainText
                     text: qsTr("Yours (version %1, edited) against theirs (version %2, grey on the map):")
                           .arg(panel.missions.conflictDetails.yourVersion)
                           .arg(panel.missions.conflictDetails.theirVersion)
@@ -155,9 +156,10 @@ Pane {
                     Layout.preferredHeight: Math.min(contentHeight, 110)
                     clip: true
                     model: panel.missions.conflictDetails.changes
-                    delegate: Label { required property string modelData; text: "• " + modelData; color: panel.theme.noticeText; wrapMode: Text.Wrap; width: ListView.view.width }
+                    delegate: Label { textFormat: Text.PlainText; required property string modelData; text: "• " + modelData; color: panel.theme.noticeText; wrapMode: Text.Wrap; width: ListView.view.width }
                 }
                 Label {
+                    textFormat: Text.PlainText
                     visible: panel.missions.conflictDetails.theirEdits.length > 0
                     text: qsTr("They changed: %1").arg(panel.missions.conflictDetails.theirEdits.join(", "))
                     wrapMode: Text.Wrap; Layout.fillWidth: true; color: panel.theme.noticeText; font.pointSize: 8
@@ -174,7 +176,7 @@ Pane {
             readonly property QtObject source: panel.uploading ? panel.preparation.uploader : panel.missions
             visible: panel.missions.busy || panel.uploading
             Layout.fillWidth: true
-            Label { text: parent.source.activity + "…" }
+            Label { textFormat: Text.PlainText; text: parent.source.activity + "…" }
             ProgressBar {
                 objectName: "progressBar"
                 Layout.fillWidth: true
@@ -186,6 +188,7 @@ Pane {
         }
 
         Label {
+            textFormat: Text.PlainText
             objectName: "preparationMessage"
             visible: text.length > 0
             text: panel.preparation.message
@@ -194,6 +197,7 @@ Pane {
         }
 
         Label {
+            textFormat: Text.PlainText
             objectName: "missionMessage"
             visible: text.length > 0
             text: [panel.missions.message, panel.doc.message].filter(m => m.length > 0).join("\n")
@@ -205,14 +209,14 @@ Pane {
             objectName: "statistics"
             columns: 4
             Layout.fillWidth: true
-            Label { text: qsTr("Length") ; opacity: 0.7 }
-            Label { text: panel.units.formatDistance(panel.doc.analyzer.lengthMeters) }
-            Label { text: qsTr("Time"); opacity: 0.7 }
-            Label { text: panel.units.formatDuration(panel.doc.analyzer.flightTimeSeconds) }
-            Label { text: qsTr("Waypoints"); opacity: 0.7 }
-            Label { text: panel.doc.analyzer.waypointCount }
-            Label { text: qsTr("Photos"); opacity: 0.7 }
-            Label { text: panel.doc.analyzer.photoCount }
+            Label { textFormat: Text.PlainText; text: qsTr("Length") ; opacity: 0.7 }
+            Label { textFormat: Text.PlainText; text: panel.units.formatDistance(panel.doc.analyzer.lengthMeters) }
+            Label { textFormat: Text.PlainText; text: qsTr("Time"); opacity: 0.7 }
+            Label { textFormat: Text.PlainText; text: panel.units.formatDuration(panel.doc.analyzer.flightTimeSeconds) }
+            Label { textFormat: Text.PlainText; text: qsTr("Waypoints"); opacity: 0.7 }
+            Label { textFormat: Text.PlainText; text: panel.doc.analyzer.waypointCount }
+            Label { textFormat: Text.PlainText; text: qsTr("Photos"); opacity: 0.7 }
+            Label { textFormat: Text.PlainText; text: panel.doc.analyzer.photoCount }
         }
 
         ColumnLayout {
@@ -221,10 +225,11 @@ Pane {
             visible: panel.deconfliction !== null && panel.deconfliction.count > 0
             Layout.fillWidth: true
             spacing: 0
-            Label { text: qsTr("Conflicts with other vehicles"); font.bold: true; color: panel.theme.problemText }
+            Label { textFormat: Text.PlainText; text: qsTr("Conflicts with other vehicles"); font.bold: true; color: panel.theme.problemText }
             Repeater {
                 model: panel.deconfliction
                 delegate: Label {
+                    textFormat: Text.PlainText
                     required property var model  // RouteDeconfliction's roles
                     objectName: "conflictRow"
                     Layout.fillWidth: true
@@ -248,50 +253,50 @@ Pane {
             columnSpacing: 8
             Layout.fillWidth: true
             readonly property RouteEndurance e: panel.endurance
-            Label { text: qsTr("Energy"); opacity: 0.7; visible: !parent.e.missing }
+            Label { textFormat: Text.PlainText; text: qsTr("Energy"); opacity: 0.7; visible: !parent.e.missing }
             RowLayout {
                 visible: !parent.e.missing
-                Label { objectName: "enduranceEnergy"; text: parent.parent.e.missing ? "" : qsTr("%1 Wh").arg(Number(parent.parent.e.energyWh).toFixed(0)) }
-                Label { objectName: "enduranceAtEnd"
+                Label { textFormat: Text.PlainText; objectName: "enduranceEnergy"; text: parent.parent.e.missing ? "" : qsTr("%1 Wh").arg(Number(parent.parent.e.energyWh).toFixed(0)) }
+                Label { textFormat: Text.PlainText; objectName: "enduranceAtEnd"
                         color: parent.parent.e.batteriesNeeded > 1 ? panel.theme.problemText : palette.windowText
                         text: parent.parent.e.missing ? "" : parent.parent.e.batteriesNeeded > 1
                               ? qsTr("%n batteries", "", parent.parent.e.batteriesNeeded)
                               : qsTr("%1 % left").arg(Math.round(parent.parent.e.batteryAtEnd * 100)) }
             }
-            Label { text: qsTr("No return"); opacity: 0.7; visible: !parent.e.missing }
-            Label { objectName: "enduranceNoReturn"; visible: !parent.e.missing; Layout.fillWidth: true; elide: Text.ElideRight
+            Label { textFormat: Text.PlainText; text: qsTr("No return"); opacity: 0.7; visible: !parent.e.missing }
+            Label { textFormat: Text.PlainText; objectName: "enduranceNoReturn"; visible: !parent.e.missing; Layout.fillWidth: true; elide: Text.ElideRight
                     text: parent.e.missing ? "" : !parent.e.homeKnown ? qsTr("unknown: no home")
                           : parent.e.noReturnDistance !== undefined ? qsTr("after %1 (leg %2)").arg(panel.units.formatDistance(parent.e.noReturnDistance)).arg(parent.e.noReturnLeg)
                           : qsTr("none: home in reach")
                     ToolTip.visible: noReturnHover.hovered; ToolTip.text: qsTr("Beyond this point of the route, flying straight home no longer lands with the reserve")
                     HoverHandler { id: noReturnHover } }
-            Label { objectName: "enduranceProblem"; visible: parent.e.missing; Layout.columnSpan: 4; Layout.fillWidth: true
+            Label { textFormat: Text.PlainText; objectName: "enduranceProblem"; visible: parent.e.missing; Layout.columnSpan: 4; Layout.fillWidth: true
                     elide: Text.ElideRight; opacity: 0.8
                     text: parent.e.problem.length > 0 ? parent.e.problem : qsTr("Load an energy profile to see whether the battery lasts.")
                     ToolTip.visible: problemHover.hovered && truncated; ToolTip.text: text
                     HoverHandler { id: problemHover } }
-            Label { text: qsTr("Profile"); opacity: 0.7 }
+            Label { textFormat: Text.PlainText; text: qsTr("Profile"); opacity: 0.7 }
             RowLayout {
                 Layout.columnSpan: 3
                 Layout.fillWidth: true
                 spacing: 4
-                Label { objectName: "enduranceProfile"; Layout.fillWidth: true; elide: Text.ElideMiddle
+                Label { textFormat: Text.PlainText; objectName: "enduranceProfile"; Layout.fillWidth: true; elide: Text.ElideMiddle
                         text: parent.parent.e.profileName.length > 0 || parent.parent.e.profileSource.length > 0
                               ? qsTr("%1 (%2)").arg(parent.parent.e.profileName.length > 0 ? parent.parent.e.profileName : qsTr("unnamed")).arg(parent.parent.e.profileSource)
                               : qsTr("none") }
                 Button { objectName: "energyProfileButton"; text: qsTr("Load…"); onClicked: profileDialog.open()
                          ToolTip.visible: hovered; ToolTip.text: qsTr("The vehicle's energy profile: a JSON file, e.g. from sortie-log fit") }
-                Label { text: qsTr("Wind"); opacity: 0.7; leftPadding: 4 }
+                Label { textFormat: Text.PlainText; text: qsTr("Wind"); opacity: 0.7; leftPadding: 4 }
                 NumberField { theme: panel.theme; objectName: "windSpeedField"; Layout.preferredWidth: 44; units: panel.units; from: 0; to: 60
                               value: parent.parent.e.windSpeed
                               onNumberEntered: typed => parent.parent.e.windSpeed = typed
                               hint: qsTr("Wind speed, m/s") }
-                Label { text: qsTr("m/s from") }
+                Label { textFormat: Text.PlainText; text: qsTr("m/s from") }
                 NumberField { theme: panel.theme; objectName: "windFromField"; Layout.preferredWidth: 44; units: panel.units; from: 0; to: 360
                               value: parent.parent.e.windFrom
                               onNumberEntered: typed => parent.parent.e.windFrom = typed
                               hint: qsTr("The direction the wind blows from, degrees clockwise from north") }
-                Label { text: "°" }
+                Label { textFormat: Text.PlainText; text: "°" }
             }
         }
 
@@ -330,7 +335,7 @@ Pane {
                         implicitWidth: 10; implicitHeight: 10; radius: 5
                         color: issue.severity === "error" ? panel.theme.problem : panel.theme.warning
                     }
-                    Label { text: issue.message; wrapMode: Text.Wrap; Layout.fillWidth: true }
+                    Label { textFormat: Text.PlainText; text: issue.message; wrapMode: Text.Wrap; Layout.fillWidth: true }
                 }
                 onClicked: {
                     if (segment >= 0)
@@ -350,7 +355,7 @@ Pane {
             Layout.preferredHeight: Math.min(contentHeight, 70)
             clip: true
             model: panel.preparation.notices
-            delegate: Label { required property string modelData; text: modelData; wrapMode: Text.Wrap; width: ListView.view.width }
+            delegate: Label { textFormat: Text.PlainText; required property string modelData; text: modelData; wrapMode: Text.Wrap; width: ListView.view.width }
         }
 
         WaypointTable {

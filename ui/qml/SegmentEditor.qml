@@ -22,7 +22,7 @@ GroupBox {
 
         RowLayout {
             visible: !isNaN(box.editor.radius)
-            Label { text: qsTr("Radius"); Layout.preferredWidth: 150 }
+            Label { textFormat: Text.PlainText; text: qsTr("Radius"); Layout.preferredWidth: 150 }
             NumberField {
                 theme: box.theme
                 objectName: "segment_radius"
@@ -33,7 +33,7 @@ GroupBox {
                 Layout.preferredWidth: 80
                 onNumberEntered: typed => { if (Math.abs(typed - box.editor.radius) >= 0.05) box.editor.setRadius(typed) }
             }
-            Label { text: qsTr("m"); opacity: 0.7 }
+            Label { textFormat: Text.PlainText; text: qsTr("m"); opacity: 0.7 }
         }
 
         Repeater {
@@ -61,6 +61,7 @@ GroupBox {
                 HoverHandler { id: hover }
 
                 Label {
+                    textFormat: Text.PlainText
                     text: field.known ? field.label : field.label + " ⋯"
                     color: field.problem.length > 0 ? box.theme.problemText : palette.windowText
                     elide: Text.ElideRight
@@ -111,7 +112,7 @@ GroupBox {
                     selectByMouse: true
                     onEditingFinished: box.editor.set(field.index, text)
                 }
-                Label { text: field.unit; opacity: 0.7 }
+                Label { textFormat: Text.PlainText; text: field.unit; opacity: 0.7 }
             }
         }
 
@@ -123,6 +124,7 @@ GroupBox {
         }
 
         Label {
+            textFormat: Text.PlainText
             // What the survey gives, as the operator types.
             objectName: "segment_figures"
             readonly property var f: box.editor.figures
@@ -137,6 +139,7 @@ GroupBox {
             Layout.fillWidth: true
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "segment_problem"
             visible: text.length > 0
             text: box.editor.problem

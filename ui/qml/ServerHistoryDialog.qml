@@ -34,7 +34,7 @@ Dialog {
             columnSpacing: 8
             rowSpacing: 6
             Layout.fillWidth: true
-            Label { text: qsTr("Vehicle") }
+            Label { textFormat: Text.PlainText; text: qsTr("Vehicle") }
             ComboBox {
                 objectName: "historyVehicleBox"
                 Layout.fillWidth: true
@@ -43,7 +43,7 @@ Dialog {
                 currentIndex: dialog.request.vehicleIndex
                 onActivated: index => dialog.request.vehicleIndex = index
             }
-            Label { text: qsTr("From (UTC)") }
+            Label { textFormat: Text.PlainText; text: qsTr("From (UTC)") }
             TextField {
                 objectName: "historyFromField"
                 Layout.fillWidth: true
@@ -51,7 +51,7 @@ Dialog {
                 text: dialog.request.fromText
                 onTextEdited: dialog.request.fromText = text
             }
-            Label { text: qsTr("To (UTC)") }
+            Label { textFormat: Text.PlainText; text: qsTr("To (UTC)") }
             RowLayout {
                 Layout.fillWidth: true
                 TextField {
@@ -70,6 +70,7 @@ Dialog {
             }
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "historyProblem"
             visible: text.length > 0
             text: dialog.request.problem
@@ -84,6 +85,7 @@ Dialog {
             Layout.fillWidth: true
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "historyError"
             visible: text.length > 0
             text: dialog.request.errorString

@@ -25,6 +25,7 @@ Popup {
         Repeater {
             model: list.entries
             delegate: Label {
+                textFormat: Text.PlainText
                 required property var modelData
                 required property int index
                 Layout.row: index
@@ -37,6 +38,7 @@ Popup {
         Repeater {
             model: list.entries
             delegate: Label {
+                textFormat: Text.PlainText
                 required property var modelData
                 required property int index
                 Layout.row: index
@@ -52,6 +54,7 @@ Popup {
     contentItem: ColumnLayout {
         spacing: 12
         Label {
+            textFormat: Text.PlainText
             text: qsTr("Keyboard shortcuts")
             font.bold: true
             font.pixelSize: 18
@@ -73,6 +76,7 @@ Popup {
                 Layout.alignment: Qt.AlignTop
                 spacing: 8
                 Label {
+                    textFormat: Text.PlainText
                     text: qsTr("On the map")
                     font.bold: true
                 }
@@ -85,6 +89,7 @@ Popup {
             }
         }
         Label {
+            textFormat: Text.PlainText
             text: qsTr("Esc closes this help.")
             opacity: 0.7
         }

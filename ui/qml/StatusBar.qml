@@ -27,6 +27,7 @@ ToolBar {
             color: bar.stateColor
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "connectionStateLabel"
             text: bar.connectionDetail.length > 0 ? bar.connectionStateText + " — " + bar.connectionDetail : bar.connectionStateText
             elide: Text.ElideRight
@@ -34,17 +35,20 @@ ToolBar {
         }
         ToolSeparator {}
         Label {
+            textFormat: Text.PlainText
             objectName: "tileStatusLabel"
             text: bar.map.tileStatus
             elide: Text.ElideRight
             Layout.fillWidth: true
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "cursorLabel"
             text: bar.map.cursorInside ? bar.units.formatCoordinate(bar.map.cursorCoordinate) : ""
             font.family: "monospace"
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "zoomLabel"
             text: qsTr("zoom %1").arg(bar.map.zoomLevel.toFixed(1))
         }

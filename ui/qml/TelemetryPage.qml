@@ -60,8 +60,9 @@ Page {
             contentWidth: availableWidth
             ColumnLayout {
                 anchors.fill: parent
-                Label { text: qsTr("Vehicles"); font.bold: true; font.pixelSize: 16 }
+                Label { textFormat: Text.PlainText; text: qsTr("Vehicles"); font.bold: true; font.pixelSize: 16 }
                 Label {
+                    textFormat: Text.PlainText
                     objectName: "vehicleSummary"
                     visible: vehicleLayer.count === 0
                     text: qsTr("No vehicles. Log in to a server or connect a VCI vehicle.")
@@ -119,6 +120,7 @@ Page {
                     }
                 }
                 Label {
+                    textFormat: Text.PlainText
                     visible: page.fleet.message.length > 0
                     text: page.fleet.message
                     color: page.theme.problemText

@@ -33,6 +33,7 @@ Dialog {
         anchors.fill: parent
         implicitHeight: Math.min(question.implicitHeight, 320)
         Label {
+            textFormat: Text.PlainText
             id: question
             objectName: "uploadQuestionText"
             width: dialog.availableWidth

@@ -39,7 +39,7 @@ ColumnLayout {
     Flow {
         Layout.fillWidth: true
         spacing: 5
-        Label { text: qsTr("%n selected:", "", table.selected.length); height: bulkAltitude.height; verticalAlignment: Text.AlignVCenter }
+        Label { textFormat: Text.PlainText; text: qsTr("%n selected:", "", table.selected.length); height: bulkAltitude.height; verticalAlignment: Text.AlignVCenter }
         NumberField { theme: table.theme; id: bulkAltitude; objectName: "bulkAltitude"; units: table.units; allowEmpty: true; placeholderText: qsTr("alt m"); width: 60 }
         Button {
             objectName: "bulkAltitudeButton"
@@ -66,7 +66,7 @@ ColumnLayout {
 
     RowLayout {
         Layout.fillWidth: true
-        Label { text: qsTr("Heights:") }
+        Label { textFormat: Text.PlainText; text: qsTr("Heights:") }
         ComboBox {
             id: heightsPicker
             objectName: "heightsShown"
@@ -76,6 +76,7 @@ ColumnLayout {
             ToolTip.text: qsTr("AMSL and AGL are converted through the ground under each waypoint")
         }
         Label {
+            textFormat: Text.PlainText
             text: qsTr("ground: %1").arg(table.terrain.sourceText)
             elide: Text.ElideRight
             opacity: 0.7
@@ -97,7 +98,7 @@ ColumnLayout {
     readonly property var columnWidths: cellWidths.map((w, column) => Math.max(w, headerWidth(column)))
     readonly property real neededWidth: columnWidths.reduce((sum, w) => sum + w, 0)
                                          + headerWidth(headers.length - 1) + columnSpacing * (headers.length - 1)
-    Label { id: headerProbe; visible: false; font.bold: true }
+    Label { textFormat: Text.PlainText; id: headerProbe; visible: false; font.bold: true }
     FontMetrics { id: headerMetrics; font: headerProbe.font }
     RowLayout {
         Layout.fillWidth: true
@@ -105,6 +106,7 @@ ColumnLayout {
         Repeater {
             model: table.headers.length  // a count: a new language or height frame rewords the labels, never remakes them
             Label {
+                textFormat: Text.PlainText
                 required property int index
                 objectName: "waypointHeader_" + index
                 text: table.headers[index]
@@ -140,7 +142,7 @@ ColumnLayout {
             RowLayout {
                 anchors.fill: parent
                 spacing: table.columnSpacing
-                Label { text: row.index + 1; Layout.preferredWidth: table.columnWidths[0]; horizontalAlignment: Text.AlignHCenter }
+                Label { textFormat: Text.PlainText; text: row.index + 1; Layout.preferredWidth: table.columnWidths[0]; horizontalAlignment: Text.AlignHCenter }
                 Cell { role: "latitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[1]
                        onEdited: value => table.doc.editor.setLatitude(row.index, value) }
                 Cell { role: "longitude"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[2]
@@ -156,8 +158,9 @@ ColumnLayout {
                     onEdited: typed => table.heightsShown === 0 ? table.doc.editor.setAltitude([row.index], typed)
                                                                  : table.doc.editor.setAltitudeIn([row.index], typed, table.heightsFrame)
                 }
-                Label { text: row.model.altitudeType !== undefined ? row.model.altitudeType : ""; Layout.preferredWidth: table.columnWidths[4] }
+                Label { textFormat: Text.PlainText; text: row.model.altitudeType !== undefined ? row.model.altitudeType : ""; Layout.preferredWidth: table.columnWidths[4] }
                 Label {
+                    textFormat: Text.PlainText
                     id: ground
                     objectName: "groundCell_" + row.index
                     text: (table.terrain.revision, table.units.language, table.terrain.groundTextOfRow(row.index))
@@ -170,6 +173,7 @@ ColumnLayout {
                 Cell { role: "speed"; rowModel: row.model; Layout.preferredWidth: table.columnWidths[6]
                        onEdited: value => table.doc.editor.setSpeed([row.index], value) }
                 Label {
+                    textFormat: Text.PlainText
                     text: row.model.kind === "areaScan" ? qsTr("Area scan") : row.model.actionsSummary !== undefined ? row.model.actionsSummary : ""
                     elide: Text.ElideRight
                     Layout.fillWidth: true

@@ -32,7 +32,7 @@ Frame {
         spacing: 4
         RowLayout {
             Layout.fillWidth: true
-            Label { text: qsTr("Zones (%1)").arg(panel.airspace.count); font.bold: true; Layout.fillWidth: true }
+            Label { textFormat: Text.PlainText; text: qsTr("Zones (%1)").arg(panel.airspace.count); font.bold: true; Layout.fillWidth: true }
             ToolButton { objectName: "zoneUndo"; text: qsTr("Undo"); enabled: panel.editor.canUndo; onClicked: panel.editor.undo() }
             ToolButton { objectName: "zoneRedo"; text: qsTr("Redo"); enabled: panel.editor.canRedo; onClicked: panel.editor.redo() }
         }
@@ -61,10 +61,11 @@ Frame {
         RowLayout {
             visible: panel.tool === "zonePolygon"
             Layout.fillWidth: true
-            Label { text: qsTr("%1 corners").arg(panel.draftCount); Layout.fillWidth: true }
+            Label { textFormat: Text.PlainText; text: qsTr("%1 corners").arg(panel.draftCount); Layout.fillWidth: true }
             Button { objectName: "finishZoneButton"; text: qsTr("Create"); enabled: panel.draftCount >= 3; onClicked: panel.finishRequested() }
         }
         Label {
+            textFormat: Text.PlainText
             id: refusal
             objectName: "zoneRefusal"
             visible: text.length > 0
@@ -78,6 +79,7 @@ Frame {
             }
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "zoneProblems"
             visible: panel.airspace.problems.length > 0
             text: panel.airspace.problems.join("\n")
@@ -127,8 +129,9 @@ Frame {
                     ColumnLayout {
                         spacing: 0
                         Layout.fillWidth: true
-                        Label { text: row.name; font.bold: true; elide: Text.ElideRight; Layout.fillWidth: true }
+                        Label { textFormat: Text.PlainText; text: row.name; font.bold: true; elide: Text.ElideRight; Layout.fillWidth: true }
                         Label {
+                            textFormat: Text.PlainText
                             text: row.problem.length > 0 ? row.problem : qsTr("%1 · %2 – %3").arg(row.source).arg(row.floor).arg(row.ceiling)
                             color: row.problem.length > 0 ? panel.theme.problemText : palette.placeholderText
                             font.pixelSize: 11
@@ -145,14 +148,14 @@ Frame {
             visible: panel.chosen >= 0
             columns: 2
             Layout.fillWidth: true
-            Label { text: qsTr("Name") }
+            Label { textFormat: Text.PlainText; text: qsTr("Name") }
             TextField {
                 objectName: "zoneName"
                 Layout.fillWidth: true
                 text: panel.editor.fields.name || ""
                 onEditingFinished: if (text !== panel.editor.fields.name) panel.editor.setName(panel.chosen, text)
             }
-            Label { text: qsTr("Kind") }
+            Label { textFormat: Text.PlainText; text: qsTr("Kind") }
             ComboBox {
                 objectName: "zoneKind"
                 Layout.fillWidth: true
@@ -162,7 +165,7 @@ Frame {
                 currentIndex: panel.editor.fields.kind === "inclusion" ? 1 : 0
                 onActivated: index => panel.editor.setKind(panel.chosen, model[index].value)
             }
-            Label { text: qsTr("Floor (m)") }
+            Label { textFormat: Text.PlainText; text: qsTr("Floor (m)") }
             TextField {
                 id: floorField
                 objectName: "zoneFloor"
@@ -171,7 +174,7 @@ Frame {
                 text: panel.editor.fields.floor === null || panel.editor.fields.floor === undefined ? "" : String(panel.editor.fields.floor)
                 onEditingFinished: panel.setLimits()
             }
-            Label { text: qsTr("Ceiling (m)") }
+            Label { textFormat: Text.PlainText; text: qsTr("Ceiling (m)") }
             TextField {
                 id: ceilingField
                 objectName: "zoneCeiling"
@@ -180,7 +183,7 @@ Frame {
                 text: panel.editor.fields.ceiling === null || panel.editor.fields.ceiling === undefined ? "" : String(panel.editor.fields.ceiling)
                 onEditingFinished: panel.setLimits()
             }
-            Label { text: qsTr("Above") }
+            Label { textFormat: Text.PlainText; text: qsTr("Above") }
             ComboBox {
                 id: referenceBox
                 objectName: "zoneReference"
@@ -230,6 +233,7 @@ Frame {
             }
         }
         Label {
+            textFormat: Text.PlainText
             objectName: "zoneSharingStatus"
             visible: text.length > 0
             text: panel.sharing.busy ? qsTr("Waiting for the server…") : panel.sharing.status
@@ -239,7 +243,7 @@ Frame {
         }
         RowLayout {
             Layout.fillWidth: true
-            Label { text: qsTr("Warn within (m)"); Layout.fillWidth: true }
+            Label { textFormat: Text.PlainText; text: qsTr("Warn within (m)"); Layout.fillWidth: true }
             SpinBox {
                 objectName: "zoneBuffer"
                 from: 0
@@ -265,6 +269,7 @@ Frame {
         onAboutToShow: row = panel.airspace.selectedZone
         width: 380
         Label {
+            textFormat: Text.PlainText
             width: deleteQuestion.availableWidth
             wrapMode: Text.Wrap
             text: qsTr("Delete '%1' on the server, for every operator?").arg(panel.airspace.zoneName(deleteQuestion.row))

@@ -1,0 +1,114 @@
+// Text from outside is shown as text (issue 36): a zone file whose zone is named
+// `<img src="http://127.0.0.1:PORT/b.png">Pier <font color=green>OK</font>` is loaded into the real
+// client. The zone list shows the name literally and nothing asks the port for the image. A control
+// in the same engine (a Text left at Qt's default, AutoText) does fetch it, which proves a rendered
+// name would have; the zone list was drawn in the same frames, so its silence is its own.
+#include "Airspace.h"
+#include "ClientWindow.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QQmlApplicationEngine>
+#include <QQmlComponent>
+#include <QQmlEngine>
+#include <QQuickItem>
+#include <QTcpServer>
+#include <QTcpSocket>
+#include <QtTest>
+
+using namespace sortie;
+
+namespace {
+
+// Counts connections and the paths asked for; answers 404 so nothing is drawn from it.
+class ImageTrap : public QObject
+{
+public:
+    ImageTrap()
+    {
+        connect(&m_server, &QTcpServer::newConnection, this, [this] {
+            while (QTcpSocket *socket = m_server.nextPendingConnection()) {
+                connect(socket, &QTcpSocket::readyRead, socket, [this, socket] {
+                    const QByteArray request = socket->readAll();
+                    m_paths << QString::fromLatin1(request.split(' ').value(1));
+                    socket->write("HTTP/1.1 404 Not Found\r\nContent-Length: 0\r\nConnection: close\r\n\r\n");
+                    socket->disconnectFromHost();
+                });
+            }
+        });
+    }
+    bool listen() { return m_server.listen(QHostAddress::LocalHost); }
+    quint16 port() const { return m_server.serverPort(); }
+    QStringList paths() const { return m_paths; }
+
+private:
+    QTcpServer m_server;
+    QStringList m_paths;
+};
+
+void collectTexts(QQuickItem *item, const QString &text, QList<QQuickItem *> &found)
+{
+    if (item->inherits("QQuickText") && item->property("text").toString() == text)
+        found << item;
+    for (QQuickItem *child : item->childItems())
+        collectTexts(child, text, found);
+}
+
+} // namespace
+
+class TestOutsideText : public QObject
+{
+    Q_OBJECT
+
+private slots:
+    void aZoneNamedInHtmlIsShownAsTextAndFetchesNothing()
+    {
+        ImageTrap trap;
+        QVERIFY(trap.listen());
+        const QString name = QStringLiteral("<img src=\"http://127.0.0.1:%1/zone.png\">Pier <font color=green>OK</font>").arg(trap.port());
+        test::ClientWindow client;
+        QVERIFY2(client.isReady(), qPrintable(client.error()));
+        QVERIFY(client.logIn());
+        QTemporaryDir dir;
+        QFile file(dir.filePath(QStringLiteral("zones.geojson")));
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        QJsonObject properties{{QStringLiteral("name"), name}};
+        const QJsonArray ring{QJsonArray{24.10, 56.95}, QJsonArray{24.11, 56.95}, QJsonArray{24.11, 56.96}, QJsonArray{24.10, 56.95}};
+        const QJsonObject feature{{QStringLiteral("type"), QStringLiteral("Feature")}, {QStringLiteral("properties"), properties},
+                                  {QStringLiteral("geometry"), QJsonObject{{QStringLiteral("type"), QStringLiteral("Polygon")},
+                                                                           {QStringLiteral("coordinates"), QJsonArray{ring}}}}};
+        file.write(QJsonDocument(QJsonObject{{QStringLiteral("type"), QStringLiteral("FeatureCollection")},
+                                             {QStringLiteral("features"), QJsonArray{feature}}}).toJson());
+        file.close();
+        QVERIFY(client.graph().airspace().loadFile(file.fileName()));
+        client.showPage(1);
+        QQuickItem *panel = client.find(QStringLiteral("zonePanel"));
+        QVERIFY(panel);
+        panel->setVisible(true); // as the "Zones" button opens it
+
+        // The control: a Text at Qt's default in the same engine and window asks for the image.
+        QQmlComponent component(&client.mainWindow().engine());
+        component.setData("import QtQuick\nText { property string shown; text: shown }", QUrl());
+        std::unique_ptr<QObject> control(component.createWithInitialProperties({{QStringLiteral("shown"), name}}));
+        QVERIFY2(control, qPrintable(component.errorString()));
+        qobject_cast<QQuickItem *>(control.get())->setParentItem(client.window()->contentItem());
+        QTRY_VERIFY_WITH_TIMEOUT(trap.paths().contains(QStringLiteral("/zone.png")), 10000);
+        const int asked = int(trap.paths().size());
+        QVERIFY(test::waitForFrame(client.window()));
+
+        // The zone list's label holds the name as it is, in plain text, and asked for nothing.
+        QList<QQuickItem *> labels;
+        collectTexts(client.window()->contentItem(), name, labels);
+        labels.removeAll(qobject_cast<QQuickItem *>(control.get()));
+        QVERIFY2(!labels.isEmpty(), "the zone's name is not shown anywhere");
+        for (QQuickItem *label : labels) {
+            QCOMPARE(label->property("textFormat").toInt(), 0); // Text.PlainText
+            QVERIFY(label->isVisible());
+        }
+        QCOMPARE(int(trap.paths().size()), asked); // only the control's request
+    }
+};
+
+QTEST_MAIN(TestOutsideText)
+#include "tst_outsidetext.moc"
