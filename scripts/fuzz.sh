@@ -27,6 +27,7 @@ start=$SECONDS
 cmake --build "$build" --target $targets
 echo "fuzz.sh: build done in $((SECONDS - start))s"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:external_symbolizer_path=$ASAN_SYMBOLIZER_PATH" UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0"  # as sanitize.sh: leaks inside system libraries, each with why
 mkdir -p "$build/artifacts"
 results=$(mktemp -d)
 trap 'rm -rf "$results"' EXIT

@@ -138,7 +138,8 @@ private slots:
         std::get<Waypoint>(r.segments[0]).altitude = 150;
         std::get<Waypoint>(r.segments[1]).altitude = 250;
         r.settings.home = HomePosition{{56.9, 24.1}, 120.0};
-        const ValidationIssue *issue = find(validateRoute(r), QStringLiteral("altitude-above-max"));
+        const ValidationReport report = validateRoute(r); // held: find() points into it
+        const ValidationIssue *issue = find(report, QStringLiteral("altitude-above-max"));
         QVERIFY(issue);
         QCOMPARE(issue->message, QStringLiteral("Waypoint 2: 130.0 m above the take-off point (altitude 250 m AMSL); the route's limit is 120 m above it."));
     }
