@@ -75,10 +75,15 @@ public:
     bool message(const char *&p, const char *end, const pb::Descriptor *type, int depth, uint32_t groupNumber)
     {
         while (p != end) {
-            uint64_t tag = 0;
-            if (!readVarint(p, end, tag) || (tag >> 3) == 0 || (tag >> 3) > 0x1fffffff)
+            // A tag is at most five bytes, of which protobuf keeps the low 32 bits (as it does here).
+            const char *tagStart = p;
+            uint64_t wideTag = 0;
+            if (!readVarint(p, end, wideTag) || p - tagStart > 5)
                 return false;
-            const auto number = uint32_t(tag >> 3);
+            const auto tag = uint32_t(wideTag);
+            const uint32_t number = tag >> 3;
+            if (number == 0)
+                return false;
             const auto wire = WireType(tag & 7);
             if (wire == EndGroup)
                 return number == groupNumber;
