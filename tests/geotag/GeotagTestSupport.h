@@ -135,8 +135,12 @@ inline ReadBack readGps(const QString &path)
                           .arg(it->toRational(1).first, 2, 10, QLatin1Char('0')).arg(s, 6, 'f', 3, QLatin1Char('0'));
     }
     const Exiv2::XmpData &xmp = image->xmpData();
-    if (auto it = xmp.findKey(Exiv2::XmpKey("Xmp.sortie.RelativeAltitude")); it != xmp.end())
-        r.relativeAltitude = QString::fromStdString(it->toString()).toDouble();
+    if (auto it = xmp.findKey(Exiv2::XmpKey("Xmp.sortie.RelativeAltitude")); it != xmp.end()) {
+        bool ok = false; // a value that is no number stays missing, and the comparison fails
+        const double value = QString::fromStdString(it->toString()).toDouble(&ok);
+        if (ok)
+            r.relativeAltitude = value;
+    }
     return r;
 }
 
