@@ -288,13 +288,35 @@ bool PhotoMetadataFile::writeGeoTag(const QString &path, const GeoTag &tag, QStr
         if (tag.heightAboveTakeoff && std::isfinite(*tag.heightAboveTakeoff))
             xmp[relative] = QString::number(*tag.heightAboveTakeoff, 'f', 3).toStdString();
         image->writeMetadata();
-        return true;
     } catch (const Exiv2::AnyError &e) {
         if (error)
             *error = QCoreApplication::translate("Geotag", "exiv2 cannot write its tags (%1)").arg(QString::fromUtf8(e.what()).trimmed());
+        return false;
     } catch (const std::exception &e) {
         if (error)
             *error = QCoreApplication::translate("Geotag", "exiv2 cannot write its tags (%1)").arg(QString::fromUtf8(e.what()));
+        return false;
+    }
+    // exiv2 can write a file it then refuses (a JPEG with two damaged EXIF segments came back as "no
+    // TIFF image", found by fuzz_photo_metadata): a copy is only called tagged once it reads back
+    // with the position in it.
+    try {
+        Exiv2::Image::AutoPtr copy = Exiv2::ImageFactory::open(localPath(path));
+        if (!copy.get())
+            throw Exiv2::Error(Exiv2::kerFileContainsUnknownImageType);
+        copy->readMetadata();
+        const Exiv2::ExifData &written = copy->exifData();
+        if (written.findKey(Exiv2::ExifKey("Exif.GPSInfo.GPSLatitude")) != written.end() &&
+            written.findKey(Exiv2::ExifKey("Exif.GPSInfo.GPSLongitude")) != written.end())
+            return true;
+        if (error)
+            *error = QCoreApplication::translate("Geotag", "exiv2 wrote its tags but they do not read back");
+    } catch (const Exiv2::AnyError &e) {
+        if (error)
+            *error = QCoreApplication::translate("Geotag", "exiv2 wrote a copy it cannot read back (%1)").arg(QString::fromUtf8(e.what()).trimmed());
+    } catch (const std::exception &e) {
+        if (error)
+            *error = QCoreApplication::translate("Geotag", "exiv2 wrote a copy it cannot read back (%1)").arg(QString::fromUtf8(e.what()));
     }
     return false;
 }

@@ -8,6 +8,7 @@
 #include <QDir>
 #include <QFile>
 
+#include <cstdio>
 #include <cstdlib>
 #include <unistd.h>
 
@@ -32,7 +33,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if ((info->width && *info->width <= 0) || (info->height && *info->height <= 0) || (info->focalLengthMm && !(*info->focalLengthMm > 0)))
         std::abort();
     GeoTag tag{56.95, 24.1, 40.0, 20.0, info->cameraTimeUtc.value_or(0)};
-    if (PhotoMetadataFile::writeGeoTag(path, tag, &error) && !PhotoMetadataFile::read(path, &error))
+    if (PhotoMetadataFile::writeGeoTag(path, tag, &error) && !PhotoMetadataFile::read(path, &error)) {
+        fprintf(stderr, "written, then not read: %s\n", qPrintable(error));
         std::abort(); // what exiv2 wrote, it reads
+    }
     return 0;
 }

@@ -7,6 +7,7 @@
 #include "GeotagTestSupport.h"
 #include "Geotagger.h"
 #include "PhotoMetadata.h"
+#include "TestData.h"
 #include "Track.h"
 
 #include <QTemporaryDir>
@@ -276,6 +277,23 @@ private slots:
         QCOMPARE(got.relativeAltitude, std::optional<double>(12.5));
         QCOMPARE(got.timeStamp, QStringLiteral("23:59:59.999"));
         QCOMPARE(got.dateStamp, QStringLiteral("1970:01:01"));
+    }
+
+    // A JPEG with two damaged EXIF segments (found by fuzz_photo_metadata): exiv2 reads it, writes
+    // the tags, and then refuses its own copy ("This does not look like a TIFF image"). The copy is
+    // not called tagged; the reason says so.
+    void aCopyThatDoesNotReadBackIsNoTaggedPhoto()
+    {
+        const QString damaged = QString::fromUtf8(sortieTestData()) + QStringLiteral("/photos/two-damaged-exif-segments.jpg");
+        QVERIFY2(QFile::exists(damaged), qPrintable(damaged + QStringLiteral(" is missing")));
+        QString reason;
+        QVERIFY2(PhotoMetadataFile::read(damaged, &reason), qPrintable(reason));
+        QTemporaryDir dir;
+        const QString copy = dir.filePath(QStringLiteral("copy.jpg"));
+        QVERIFY(QFile::copy(damaged, copy));
+        QVERIFY(QFile::setPermissions(copy, QFile::ReadOwner | QFile::WriteOwner));
+        QVERIFY(!PhotoMetadataFile::writeGeoTag(copy, {56.95, 24.1, 40.0, 20.0, 0}, &reason));
+        QVERIFY2(reason.contains(QStringLiteral("cannot read back")), qPrintable(reason));
     }
 
     void badGpxNamesItsLine()
