@@ -21,6 +21,13 @@ packages=(
   gdal-bin  # gdal_translate, gdaladdo: tests/fuzz/make-raster-seeds.sh writes fuzz_raster's seeds
   libgdal-dev  # GDAL: DEM rasters (GeoTIFF, COG, Copernicus, .hgt...) and orthophotos in any CRS (core/raster)
   libexiv2-dev  # exiv2: photos' EXIF and XMP read and their geotagged copies written (core/geotag, sortie-log geotag)
+  libgstreamer1.0-dev libgstreamer-plugins-base1.0-dev  # GStreamer: the vehicles' video (core/video), frames from an appsink
+  gstreamer1.0-plugins-base gstreamer1.0-plugins-good gstreamer1.0-plugins-bad gstreamer1.0-libav  # RTSP, RTP, MPEG-TS, H.264/H.265 decoders
+  gstreamer1.0-plugins-ugly libgstrtspserver-1.0-dev  # x264enc and the RTSP server: sortie-sim's camera streams
+  gstreamer1.0-tools  # gst-launch-1.0: the video latency benchmark's reference receiver
+  libsdl2-dev  # SDL2: gamepads (core/gamepad), tested with SDL's virtual joysticks
+  qt6-quick3d-dev qml6-module-quick3d qml6-module-quick3d-helpers  # Qt Quick 3D: the 3D view (ui/view3d)
+  libgl1-mesa-dri  # Mesa's llvmpipe: the 3D view's tests render with OpenGL under Xvfb
   qtkeychain-qt6-dev libsecret-1-0  # the remembered password in the OS keyring (QtKeychain loads libsecret)
   dbus-daemon gnome-keyring libglib2.0-bin libsecret-tools  # tst_keyring: a session bus, a keyring, gdbus, secret-tool
   clang libclang-rt-14-dev
