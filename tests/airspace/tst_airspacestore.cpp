@@ -352,7 +352,7 @@ private slots:
         QVERIFY(editor->setLimits(0, 20.0, 80.0, QStringLiteral("AMSL")));
         QCOMPARE(stack->count(), 6);
         QCOMPARE(f.store->zones()->index(0).data(ZoneListModel::FloorRole).toString(), QStringLiteral("20 m AMSL"));
-        QCOMPARE(editor->fields().value(QStringLiteral("name")).toString(), QStringLiteral("Works"));
+        QCOMPARE(editor->fields().name, QStringLiteral("Works"));
 
         // A circle: its centre is vertex 0; a radius drag merges.
         editor->addCircle(at(3000, 0), 100);

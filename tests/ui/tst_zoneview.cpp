@@ -172,6 +172,23 @@ private slots:
         QCOMPARE(doc->model()->rowCount(), 5); // the clicks drew the zone, not waypoints
         QCOMPARE(airspace.editor()->undoStack()->count(), 1);
 
+        // Its fields as they are: no floor and no ceiling are empty fields ("ground", "unlimited"),
+        // never "0"; limits set show as typed, in their reference. Undone, so the steps below count
+        // as before.
+        QQuickItem *floorField = client.find(QStringLiteral("zoneFloor"));
+        QQuickItem *ceilingField = client.find(QStringLiteral("zoneCeiling"));
+        QTRY_VERIFY(floorField->isVisible());
+        QCOMPARE(client.find(QStringLiteral("zoneName"))->property("text").toString(), QStringLiteral("Zone 1"));
+        QCOMPARE(floorField->property("text").toString(), QString());
+        QCOMPARE(ceilingField->property("text").toString(), QString());
+        QCOMPARE(client.find(QStringLiteral("zoneKind"))->property("currentIndex").toInt(), 0);
+        QVERIFY(airspace.editor()->setLimits(0, 30, 120.5, QStringLiteral("AGL")));
+        QTRY_COMPARE(floorField->property("text").toString(), QStringLiteral("30"));
+        QCOMPARE(ceilingField->property("text").toString(), QStringLiteral("120.5"));
+        QCOMPARE(client.find(QStringLiteral("zoneReference"))->property("currentText").toString(), QStringLiteral("AGL"));
+        airspace.editor()->undo();
+        QTRY_COMPARE(floorField->property("text").toString(), QString());
+
         // The error, listed, naming the zone and where along the route.
         QTRY_VERIFY_WITH_TIMEOUT(doc->analyzer()->validation().errorCount() > 0, 5000);
         QQuickItem *issues = client.find(QStringLiteral("validationList"));

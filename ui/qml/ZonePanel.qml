@@ -152,7 +152,7 @@ Frame {
             TextField {
                 objectName: "zoneName"
                 Layout.fillWidth: true
-                text: panel.editor.fields.name || ""
+                text: panel.editor.fields.name
                 onEditingFinished: if (text !== panel.editor.fields.name) panel.editor.setName(panel.chosen, text)
             }
             Label { textFormat: Text.PlainText; text: qsTr("Kind") }
@@ -162,7 +162,7 @@ Frame {
                 textRole: "text"
                 valueRole: "value"
                 model: [{value: "exclusion", text: qsTr("exclusion")}, {value: "inclusion", text: qsTr("inclusion")}]
-                currentIndex: panel.editor.fields.kind === "inclusion" ? 1 : 0
+                currentIndex: panel.editor.fields.inclusion ? 1 : 0
                 onActivated: index => panel.editor.setKind(panel.chosen, model[index].value)
             }
             Label { textFormat: Text.PlainText; text: qsTr("Floor (m)") }
@@ -171,7 +171,7 @@ Frame {
                 objectName: "zoneFloor"
                 Layout.fillWidth: true
                 placeholderText: qsTr("ground")
-                text: panel.editor.fields.floor === null || panel.editor.fields.floor === undefined ? "" : String(panel.editor.fields.floor)
+                text: panel.editor.fields.floor
                 onEditingFinished: panel.setLimits()
             }
             Label { textFormat: Text.PlainText; text: qsTr("Ceiling (m)") }
@@ -180,7 +180,7 @@ Frame {
                 objectName: "zoneCeiling"
                 Layout.fillWidth: true
                 placeholderText: qsTr("unlimited")
-                text: panel.editor.fields.ceiling === null || panel.editor.fields.ceiling === undefined ? "" : String(panel.editor.fields.ceiling)
+                text: panel.editor.fields.ceiling
                 onEditingFinished: panel.setLimits()
             }
             Label { textFormat: Text.PlainText; text: qsTr("Above") }
@@ -192,7 +192,7 @@ Frame {
                 valueRole: "value"
                 // AMSL and AGL are aviation abbreviations, the same in every language; "above home" is not
                 model: [{value: "AMSL", text: "AMSL"}, {value: "AGL", text: "AGL"}, {value: "HOME", text: qsTr("HOME")}] // i18n: not text (AMSL, AGL)
-                currentIndex: Math.max(0, indexOfValue(panel.editor.fields.reference || "AMSL"))
+                currentIndex: Math.max(0, indexOfValue(panel.editor.fields.reference))
                 onActivated: panel.setLimits()
             }
             RowLayout {

@@ -80,21 +80,23 @@ double ZoneEditor::radius() const
     return circle ? circle->radius : 0.0;
 }
 
-QVariantMap ZoneEditor::fields() const
+ZoneFields ZoneEditor::fields() const
 {
     const int i = m_store->selectedCustom();
     if (i < 0)
         return {};
     const Zone &z = m_store->customZones()[size_t(i)];
-    const auto number = [](const std::optional<HeightLimit> &l) { return l ? QVariant(l->metres) : QVariant::fromValue(nullptr); };
+    const auto metres = [](const std::optional<HeightLimit> &l) { return l ? QString::number(l->metres, 'g', 10) : QString(); };
     const std::optional<HeightLimit> &limit = z.floor ? z.floor : z.ceiling;
     const HeightReference r = limit ? limit->reference : HeightReference::Amsl;
-    return {{QStringLiteral("name"), z.name},
-            {QStringLiteral("kind"), kindName(z.kind)},
-            {QStringLiteral("floor"), number(z.floor)},
-            {QStringLiteral("ceiling"), number(z.ceiling)},
-            {QStringLiteral("reference"), r == HeightReference::Amsl ? QStringLiteral("AMSL")
-                                          : r == HeightReference::AboveTerrain ? QStringLiteral("AGL") : QStringLiteral("HOME")}};
+    ZoneFields f;
+    f.chosen = true;
+    f.name = z.name;
+    f.inclusion = z.kind == ZoneKind::Inclusion;
+    f.floor = metres(z.floor);
+    f.ceiling = metres(z.ceiling);
+    f.reference = r == HeightReference::Amsl ? QStringLiteral("AMSL") : r == HeightReference::AboveTerrain ? QStringLiteral("AGL") : QStringLiteral("HOME");
+    return f;
 }
 
 int ZoneEditor::addPolygon(const QList<QGeoCoordinate> &corners)

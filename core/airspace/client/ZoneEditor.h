@@ -14,6 +14,28 @@ namespace sortie::airspace {
 
 class Airspace;
 
+// The chosen drawn zone's fields as the zone panel shows and edits them; `chosen` is false (and the
+// rest empty) when no drawn zone is chosen. Heights are the metres as the operator would type them,
+// empty for "from the ground" and "unlimited": a missing limit is never shown as 0.
+struct ZoneFields
+{
+    Q_GADGET
+    Q_PROPERTY(bool chosen MEMBER chosen)
+    Q_PROPERTY(QString name MEMBER name)
+    Q_PROPERTY(bool inclusion MEMBER inclusion)
+    Q_PROPERTY(QString floor MEMBER floor)
+    Q_PROPERTY(QString ceiling MEMBER ceiling)
+    Q_PROPERTY(QString reference MEMBER reference)  // "AMSL", "AGL", "HOME"
+
+public:
+    bool chosen = false;
+    QString name;
+    bool inclusion = false;
+    QString floor, ceiling;
+    QString reference = QStringLiteral("AMSL");
+    bool operator==(const ZoneFields &) const = default;
+};
+
 // The one way to edit the zones the operator draws (the store's drawn zones, by their index there,
 // which is also their row: they come first). Each call is one undo step on this editor's own
 // stack: a zone is not part of the route, so editing one neither marks the route changed nor
@@ -33,7 +55,7 @@ class ZoneEditor : public QObject
     // centre), its radius in metres (0 for a polygon), and its fields; empty when no drawn zone is chosen.
     Q_PROPERTY(QVariantList figure READ figure NOTIFY figureChanged)
     Q_PROPERTY(double radius READ radius NOTIFY figureChanged)
-    Q_PROPERTY(QVariantMap fields READ fields NOTIFY figureChanged)
+    Q_PROPERTY(sortie::airspace::ZoneFields fields READ fields NOTIFY figureChanged)
 
 public:
     explicit ZoneEditor(Airspace *store);
@@ -43,8 +65,7 @@ public:
     bool canRedo() const { return m_stack.canRedo(); }
     QVariantList figure() const;
     double radius() const;
-    // {name, kind, floor, ceiling (numbers or null), reference ("AMSL", "AGL", "HOME")}
-    QVariantMap fields() const;
+    ZoneFields fields() const;
 
     // New zones: an exclusion zone from the ground up, unlimited, named "Zone N". Return its index or -1.
     Q_INVOKABLE int addPolygon(const QList<QGeoCoordinate> &corners);
