@@ -13,6 +13,7 @@
 #include "MapView.h"
 #include "MissionFiles.h"
 #include "QuickScene.h"
+#include "RouteEditor.h"
 #include "RouteLayer.h"
 #include "RouteModel.h"
 
@@ -157,15 +158,17 @@ class TestFigureFlows : public QObject
         QQuickItem *picker = find("segmentToolPicker");
         QVERIFY(picker);
         QTRY_VERIFY(picker->isVisible());
-        const QVariantList tools = picker->property("model").toList();
+        // The tool by its algorithm, from the editor the picker lists.
+        const mission::RouteEditor &editor = *doc()->editor();
         int wanted = -1;
-        QString figure;
-        for (int i = 0; i < tools.size(); ++i) {
-            if (tools[i].toMap().value(QStringLiteral("algorithm")).toString().endsWith(QLatin1String(algorithm))) {
+        mission::DrawingTool tool;
+        for (int i = 0; i < editor.drawingToolNames().size(); ++i) {
+            if (editor.drawingTool(i).algorithm.endsWith(QLatin1String(algorithm))) {
                 wanted = i;
-                figure = tools[i].toMap().value(QStringLiteral("figure")).toString();
+                tool = editor.drawingTool(i);
             }
         }
+        QCOMPARE(picker->property("model").toStringList(), editor.drawingToolNames());
         QVERIFY2(wanted >= 0, algorithm);
         picker->forceActiveFocus(Qt::TabFocusReason);
         QTRY_VERIFY(picker->hasActiveFocus());
@@ -177,13 +180,13 @@ class TestFigureFlows : public QObject
             QVERIFY(routeLayer()->waypointAt(base() + p) < 0 && routeLayer()->legAt(base() + p) < 0);
             QTest::mouseClick(window(), Qt::LeftButton, {}, onMap(base() + p));
         }
-        if (figure == QLatin1String("polygon") || figure == QLatin1String("polyline")) {
+        if (!tool.oneClick) {
             QTRY_COMPARE(find("scanDraftLayer")->property("vertexCount").toInt(), int(points.size()));
             click("finishScanButton");
         }
         QTRY_COMPARE(routeLayer()->count(), kRow + 1);
         QCOMPARE(doc()->currentRow(), kRow);
-        QTRY_COMPARE(areaLayer()->vertexCount(), figure == QLatin1String("circle") ? 1 : int(points.size()));
+        QTRY_COMPARE(areaLayer()->vertexCount(), tool.figure == mission::FigureType::Circle ? 1 : int(points.size()));
         QTRY_VERIFY(areaLayer()->isEditable());
         QVERIFY2(doc()->scanProblem().isEmpty(), qPrintable(doc()->scanProblem()));
         STEP(pathCaughtUp());

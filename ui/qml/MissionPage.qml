@@ -62,13 +62,11 @@ Page {
     function cancelArea() { polygonDraft.clear(); page.tool = ""; page.areaDrawingCancelled() }
 
     // The segment being drawn ("scan" draws the first of the editor's tools, the area scan).
-    // `var`: the editor's tools are plain JS objects (name, algorithm, figure, minimumPoints).
-    readonly property var drawingTools: doc.editor.drawingTools()
     property int drawingTool: 0
-    readonly property var currentTool: drawingTools.length > drawingTool ? drawingTools[drawingTool] : null
+    readonly property drawingTool currentTool: doc.editor.drawingTool(drawingTool)
 
     function finishScan() {
-        if (page.currentTool && scanDraft.count >= page.currentTool.minimumPoints)
+        if (page.currentTool.valid && scanDraft.count >= page.currentTool.minimumPoints)
             page.doc.editor.addSegment(page.currentTool.algorithm, scanDraft.coordinates())
         scanDraft.clear()
         page.tool = ""
@@ -156,7 +154,7 @@ Page {
                 anchors.fill: parent
                 map: pane.map
                 polygonModel: scanDraft
-                closed: !page.currentTool || page.currentTool.figure !== "polyline"
+                closed: page.currentTool.closed
                 color: page.theme.mapDraft
                 editable: page.tool === "scan"
                 onVertexMoved: (index, coordinate, step) => scanDraft.setCoordinate(index, coordinate.latitude, coordinate.longitude)
@@ -267,7 +265,7 @@ Page {
                         page.tool = ""
                     } else if (page.tool === "scan") {
                         scanDraft.append(coordinate.latitude, coordinate.longitude)
-                        if (page.currentTool && (page.currentTool.figure === "point" || page.currentTool.figure === "circle"))
+                        if (page.currentTool.oneClick)
                             page.finishScan() // one click places it
                     } else
                         page.doc.editor.addWaypoint(coordinate)
@@ -343,23 +341,19 @@ Page {
                 RowLayout {
                     ComboBox {
                         objectName: "segmentToolPicker"
-                        model: page.drawingTools
-                        textRole: "name"
+                        model: page.doc.editor.drawingToolNames
                         currentIndex: page.drawingTool
                         onActivated: index => { page.drawingTool = index; scanDraft.clear() }
                         Layout.preferredWidth: 170
                     }
                     Label {
                         textFormat: Text.PlainText
-                        text: !page.currentTool ? ""
-                              : page.currentTool.figure === "polyline" ? qsTr("Click the centre line (%1 so far)").arg(scanDraft.count)
-                              : page.currentTool.figure === "polygon" ? qsTr("Click the corners of the area (%1 so far)").arg(scanDraft.count)
-                              : qsTr("Click where it goes")
+                        text: page.currentTool.hint(scanDraft.count)
                     }
                     Button {
                         objectName: "finishScanButton"
                         text: qsTr("Create")
-                        enabled: page.currentTool !== null && scanDraft.count >= page.currentTool.minimumPoints
+                        enabled: page.currentTool.valid && scanDraft.count >= page.currentTool.minimumPoints
                         onClicked: page.finishScan()
                     }
                     Button {

@@ -219,6 +219,19 @@ struct ZoneEditorForeign
     QML_NAMED_ELEMENT(ZoneEditor)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
+// Values the views hold by type (`property drawingTool currentTool`), read by property, never by key.
+struct ZoneFieldsForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::airspace::ZoneFields)
+    QML_VALUE_TYPE(zoneFields)
+};
+struct DrawingToolForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::mission::DrawingTool)
+    QML_VALUE_TYPE(drawingTool)
+};
 struct ZoneSharingForeign
 {
     Q_GADGET

@@ -1,27 +1,40 @@
-// The map's drawing tools, read from the algorithm catalog.
 #include "DrawingTools.h"
 
-#include <QVariantMap>
+#include <QCoreApplication>
 
 #include <algorithm>
 
 namespace sortie::mission {
 
-QVariantList drawingToolsOf(const AlgorithmCatalog &catalog)
+QString DrawingTool::hint(int clicks) const
 {
-    QVariantList tools;
+    if (!valid)
+        return {};
+    if (figure == FigureType::Polyline)
+        return QCoreApplication::translate("MissionPage", "Click the centre line (%1 so far)").arg(clicks);
+    if (figure == FigureType::Polygon)
+        return QCoreApplication::translate("MissionPage", "Click the corners of the area (%1 so far)").arg(clicks);
+    return QCoreApplication::translate("MissionPage", "Click where it goes");
+}
+
+std::vector<DrawingTool> drawingToolsOf(const AlgorithmCatalog &catalog)
+{
+    std::vector<DrawingTool> tools;
     for (const AlgorithmDefinition &d : catalog.algorithms()) {
         if (d.kind == AlgorithmKind::Waypoint || d.kind == AlgorithmKind::TakeOff || d.kind == AlgorithmKind::Landing)
             continue;  // a click on the map adds those
-        const QString figure = d.figure == FigureType::Polygon ? QStringLiteral("polygon")
-                             : d.figure == FigureType::Polyline ? QStringLiteral("polyline")
-                             : d.figure == FigureType::Circle ? QStringLiteral("circle") : QStringLiteral("point");
-        const QVariantMap tool{{QStringLiteral("algorithm"), d.className}, {QStringLiteral("name"), d.displayName},
-                               {QStringLiteral("figure"), figure}, {QStringLiteral("minimumPoints"), std::max(1, d.minimumPoints)}};
+        DrawingTool tool;
+        tool.valid = true;
+        tool.algorithm = d.className;
+        tool.name = d.displayName;
+        tool.figure = d.figure;
+        tool.oneClick = d.figure != FigureType::Polygon && d.figure != FigureType::Polyline;
+        tool.closed = d.figure != FigureType::Polyline;
+        tool.minimumPoints = std::max(1, d.minimumPoints);
         if (d.kind == AlgorithmKind::AreaScan)
-            tools.prepend(tool);
+            tools.insert(tools.begin(), std::move(tool));
         else
-            tools.append(tool);
+            tools.push_back(std::move(tool));
     }
     return tools;
 }

@@ -422,9 +422,18 @@ bool RouteEditor::setRadius(int row, double meters, EditStep step)
     }, tr("Set the radius of segment %1 to %2 m").arg(row + 1).arg(meters), QStringLiteral("radius"), step);
 }
 
-QVariantList RouteEditor::drawingTools() const
+QStringList RouteEditor::drawingToolNames() const
 {
-    return drawingToolsOf(catalog());
+    QStringList names;
+    for (const DrawingTool &t : drawingToolsOf(catalog()))
+        names << t.name;
+    return names;
+}
+
+DrawingTool RouteEditor::drawingTool(int index) const
+{
+    const std::vector<DrawingTool> tools = drawingToolsOf(catalog());
+    return index >= 0 && size_t(index) < tools.size() ? tools[size_t(index)] : DrawingTool{};
 }
 
 void RouteEditor::setCatalog(const AlgorithmCatalog *catalog)

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "AlgorithmCatalog.h"
+#include "DrawingTools.h"
 #include "MissionEnums.h"
 #include "Route.h"
 
@@ -8,6 +9,7 @@
 #include <QItemSelectionModel>
 #include <QList>
 #include <QObject>
+#include <QStringList>
 #include <QUndoStack>
 #include <QVariantMap>
 
@@ -34,6 +36,7 @@ class RouteEditor : public QObject
 {
     Q_OBJECT
     Q_PROPERTY(QUndoStack *undoStack READ undoStack CONSTANT)
+    Q_PROPERTY(QStringList drawingToolNames READ drawingToolNames NOTIFY catalogChanged)
 
 public:
     RouteEditor(RouteModel *model, QUndoStack *stack, QObject *parent = nullptr);
@@ -91,9 +94,10 @@ public:
     // parameters start at the definition's defaults, its height and speed at the route's.
     // Returns the new row or -1.
     Q_INVOKABLE int addSegment(const QString &algorithm, const QList<QGeoCoordinate> &points);
-    // The tools an operator draws on the map, from the catalog: [{algorithm (class name), name,
-    // figure ("polygon", "polyline", "point", "circle"), minimumPoints}], area scan first.
-    Q_INVOKABLE QVariantList drawingTools() const;
+    // The tools an operator draws on the map, from the catalog (DrawingTools.h), area scan first:
+    // their names for a picker, and one by its index there (an invalid tool past the end).
+    QStringList drawingToolNames() const;
+    Q_INVOKABLE sortie::mission::DrawingTool drawingTool(int index) const;
     // The figure's points (area corners, corridor line, circle centre) by index.
     Q_INVOKABLE bool moveVertex(int row, int vertex, const QGeoCoordinate &to,
                                 sortie::mission::MissionEnums::EditStep step = EditStep::Done);
