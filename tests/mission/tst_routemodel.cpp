@@ -146,15 +146,17 @@ private slots:
                                               QGeoCoordinate(56.905, 24.11), QGeoCoordinate(56.905, 24.10)});
         QCOMPARE(row, 1);
         QCOMPARE(f.stack.count(), 1);
-        const QVariantMap planBefore = f.model.index(row).data(RouteModel::ScanPlanRole).toMap();
+        const auto planBefore = f.model.scanPlan(row);
+        QVERIFY(planBefore && planBefore->ok());
         for (int i = 1; i <= 10; ++i)  // the corner is dragged outwards; the plan follows every step
             QVERIFY(f.editor.moveVertex(row, 2, QGeoCoordinate(56.905 + i * 2e-4, 24.11 + i * 2e-4),
                                         i < 10 ? EditStep::Continuing : EditStep::Done));
         QCOMPARE(f.stack.count(), 2);
         const auto &scan = std::get<AreaScan>(f.model.segment(row));
         QCOMPARE(scan.polygon[2].latitude, 56.905 + 10 * 2e-4);
-        const QVariantMap planAfter = f.model.index(row).data(RouteModel::ScanPlanRole).toMap();
-        QVERIFY(planAfter.value("areaSquareMeters").toDouble() > planBefore.value("areaSquareMeters").toDouble());
+        const auto planAfter = f.model.scanPlan(row);
+        QVERIFY(planAfter && planAfter->ok());
+        QVERIFY(planAfter->plan->areaSquareMeters > planBefore->plan->areaSquareMeters);
         QVERIFY(f.editor.insertVertex(row, 2, QGeoCoordinate(56.902, 24.113)));
         QCOMPARE(std::get<AreaScan>(f.model.segment(row)).polygon.size(), size_t(5));
         QVERIFY(f.editor.removeVertex(row, 0));
@@ -206,19 +208,20 @@ private slots:
         const QModelIndex i = f.model.index(row);
         QCOMPARE(i.data(RouteModel::KindRole).toString(), QStringLiteral("areaScan"));
         QCOMPARE(i.data(RouteModel::PolygonRole).toList().size(), 3);
-        QVariantMap plan = i.data(RouteModel::ScanPlanRole).toMap();
-        QVERIFY(plan.value("ok").toBool());
-        const int photosBefore = plan.value("photoCount").toInt();
+        auto plan = f.model.scanPlan(row);
+        QVERIFY(plan && plan->ok());
+        const int photosBefore = plan->plan->photoCount;
         QVERIFY(photosBefore > 0);
-        QCOMPARE(plan.value("path").toList().size(), 4 * plan.value("transects").toInt());
+        QCOMPARE(plan->plan->path.size(), 4 * plan->plan->transects.size());
+        QVERIFY(!f.model.scanPlan(0));  // a waypoint has no plan
 
         QVERIFY(f.editor.setParameter({row}, QStringLiteral("groundSampleDistance"), 1.0));
         QVERIFY(f.editor.setParameter({row}, QStringLiteral("overlapForward"), 80));
         const QVariantMap params = i.data(RouteModel::ScanParametersRole).toMap();
         QCOMPARE(params.value("groundSampleDistance").toDouble(), 1.0);
         QVERIFY(params.value("height").toDouble() < 40);  // 1 cm/px needs to fly lower than 60 m
-        plan = i.data(RouteModel::ScanPlanRole).toMap();
-        QVERIFY(plan.value("photoCount").toInt() > photosBefore);
+        plan = f.model.scanPlan(row);
+        QVERIFY(plan->plan->photoCount > photosBefore);
         QSignalSpy refused(&f.editor, &RouteEditor::refused);
         QVERIFY(!f.editor.setParameter({row}, QStringLiteral("overlapSide"), QStringLiteral("lots")));
         QVERIFY(!f.editor.setParameter({row}, QStringLiteral("overlapSide"), 100));
@@ -232,12 +235,12 @@ private slots:
         QCOMPARE(std::get<AreaScan>(f.model.segment(row)).parameters.speed, 6.5);
         // sideDistance sets the spacing directly.
         QVERIFY(f.editor.setParameter({row}, QStringLiteral("sideDistance"), 25.0));
-        QCOMPARE(i.data(RouteModel::ScanPlanRole).toMap().value("transectSpacingMeters").toDouble(), 25.0);
+        QCOMPARE(f.model.scanPlan(row)->plan->transectSpacing, 25.0);
         f.stack.undo();
         f.stack.undo();
         f.stack.undo();
         f.stack.undo();
-        QCOMPARE(i.data(RouteModel::ScanPlanRole).toMap().value("photoCount").toInt(), photosBefore);
+        QCOMPARE(f.model.scanPlan(row)->plan->photoCount, photosBefore);
     }
 
     void parameterReaderTakesTypedAndWireValues()

@@ -207,17 +207,24 @@ private slots:
         const int row = f.editor.addSegment(QStringLiteral("PhotogrammetryAlgorithm"), kSquare);
         f.fields.setRow(row);
         QVERIFY(f.fields.set(f.fields.indexOf(QStringLiteral("camera")), builtInCameras().front().name));
-        QVariantMap before = f.fields.figures();
-        QVERIFY2(before.contains(QStringLiteral("photoCount")), qPrintable(before.value(QStringLiteral("message")).toString()));
+        const auto before = f.fields.figures();
+        QVERIFY(before);
+        QVERIFY2(before->plan, qPrintable(before->message));
+        QVERIFY2(f.fields.figuresText().contains(QStringLiteral("%1 photos").arg(before->plan->photoCount)), qPrintable(f.fields.figuresText()));
         QSignalSpy changed(&f.fields, &SegmentEditorModel::valuesChanged);
         QVERIFY(f.fields.set(f.fields.indexOf(QStringLiteral("groundSampleDistance")), 1.0));
         QVERIFY(changed.count() >= 1);
-        const QVariantMap after = f.fields.figures();
-        QVERIFY(after.value(QStringLiteral("height")).toDouble() < before.value(QStringLiteral("height")).toDouble());
-        QVERIFY(after.value(QStringLiteral("photoCount")).toInt() > before.value(QStringLiteral("photoCount")).toInt());
+        const auto after = f.fields.figures();
+        QVERIFY(after && after->plan);
+        QVERIFY(after->height < before->height);
+        QVERIFY(after->plan->photoCount > before->plan->photoCount);
+        QVERIFY2(f.fields.figuresText().startsWith(QStringLiteral("%1 m high · 1.00 cm/px").arg(after->height, 0, 'f', 1)), qPrintable(f.fields.figuresText()));
         QVERIFY(f.fields.set(f.fields.indexOf(QStringLiteral("overlapSide")), 60));
-        QVERIFY(f.fields.figures().value(QStringLiteral("passSpacing")).toDouble()
-                < after.value(QStringLiteral("passSpacing")).toDouble());
+        QVERIFY(f.fields.figures()->plan->transectSpacing < after->plan->transectSpacing);
+        // A waypoint has no survey figures: no line at all, not a line of zeros.
+        f.fields.setRow(0);
+        QVERIFY(!f.fields.figures());
+        QCOMPARE(f.fields.figuresText(), QString());
     }
 
     void profileCamerasLeadThePicker()
@@ -239,13 +246,13 @@ private slots:
         QCOMPARE(choices.first().toMap().value(QStringLiteral("value")).toString(), QStringLiteral("7"));
         QCOMPARE(choices.first().toMap().value(QStringLiteral("text")).toString(), QStringLiteral("Profile wide (vehicle profile)"));
         QVERIFY(f.fields.set(camera, builtInCameras().front().name));
-        const double builtInHeight = f.fields.figures().value(QStringLiteral("height")).toDouble();
+        const double builtInHeight = f.fields.figures()->height;
         QVERIFY(f.fields.set(camera, QStringLiteral("7")));
-        const QVariantMap withProfile = f.fields.figures();
-        QVERIFY2(withProfile.contains(QStringLiteral("photoCount")), qPrintable(withProfile.value(QStringLiteral("message")).toString()));
+        const auto withProfile = f.fields.figures();
+        QVERIFY(withProfile);
+        QVERIFY2(withProfile->plan, qPrintable(withProfile->message));
         // The same GSD from half the focal length: half the height.
-        QVERIFY2(std::abs(withProfile.value(QStringLiteral("height")).toDouble() - builtInHeight / 2) < 0.01,
-                 qPrintable(QStringLiteral("%1 vs %2").arg(withProfile.value(QStringLiteral("height")).toDouble()).arg(builtInHeight)));
+        QVERIFY2(std::abs(withProfile->height - builtInHeight / 2) < 0.01, qPrintable(QStringLiteral("%1 vs %2").arg(withProfile->height).arg(builtInHeight)));
     }
 
     void previewPlansOncePerFrame()

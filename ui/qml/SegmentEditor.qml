@@ -127,14 +127,8 @@ GroupBox {
             textFormat: Text.PlainText
             // What the survey gives, as the operator types.
             objectName: "segment_figures"
-            readonly property var f: box.editor.figures
-            visible: f.height !== undefined
-            text: f.height === undefined ? "" : f.message !== undefined
-                  ? f.message
-                  : qsTr("%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos")
-                    .arg(Number(f.height).toFixed(1)).arg(Number(f.gsdCm).toFixed(2))
-                    .arg(Number(f.footprintAcross).toFixed(1)).arg(Number(f.footprintAlong).toFixed(1))
-                    .arg(Number(f.passSpacing).toFixed(1)).arg(Number(f.triggerDistance).toFixed(1)).arg(f.photoCount)
+            visible: text.length > 0
+            text: box.editor.figuresText
             wrapMode: Text.Wrap
             Layout.fillWidth: true
         }

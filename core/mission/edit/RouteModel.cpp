@@ -15,21 +15,6 @@ namespace {
 // each run: one O(n) pass beats thousands of O(n) erases.
 constexpr size_t kMaxRunsSignalled = 16;
 
-QVariantMap scanPlanToVariant(const AreaScanOutcome &o)
-{
-    if (!o.ok())
-        return {{"ok", false}, {"message", o.message}};
-    const AreaScanPlan &p = *o.plan;
-    QVariantList path;
-    path.reserve(qsizetype(p.path.size()));
-    for (const GeoPoint &g : p.path)
-        path << QVariantMap{{"latitude", g.latitude}, {"longitude", g.longitude}};
-    return {{"ok", true}, {"message", QString()}, {"transects", int(p.transects.size())}, {"cells", p.cells},
-            {"photoCount", p.photoCount}, {"altitude", p.altitude}, {"groundSampleDistanceCm", p.groundSampleDistanceCm},
-            {"transectSpacingMeters", p.transectSpacing}, {"triggerDistanceMeters", p.triggerDistance},
-            {"pathLengthMeters", p.pathLength}, {"areaSquareMeters", p.areaSquareMeters}, {"path", path}};
-}
-
 QVariantMap parametersToVariant(const Segment &s)
 {
     QVariantMap map;
@@ -67,7 +52,7 @@ QHash<int, QByteArray> RouteModel::roleNames() const
         {KindRole, "kind"}, {SequenceRole, "sequence"}, {LatitudeRole, "latitude"}, {LongitudeRole, "longitude"},
         {AltitudeRole, "altitude"}, {AltitudeTypeRole, "altitudeType"}, {SpeedRole, "speed"}, {TurnTypeRole, "turnType"},
         {AcceptanceRadiusRole, "acceptanceRadius"}, {ActionCountRole, "actionCount"}, {ActionsSummaryRole, "actionsSummary"},
-        {ActionsRole, "actions"}, {ActionMarksRole, "actionMarks"}, {PolygonRole, "polygon"}, {ScanParametersRole, "scanParameters"}, {ScanPlanRole, "scanPlan"},
+        {ActionsRole, "actions"}, {ActionMarksRole, "actionMarks"}, {PolygonRole, "polygon"}, {ScanParametersRole, "scanParameters"},
         {LabelRole, "label"},
         {Qt::DisplayRole, "display"},
     };
@@ -123,12 +108,16 @@ QVariant RouteModel::data(const QModelIndex &index, int role) const
         return list;
     }
     case ScanParametersRole: return w ? QVariant() : parametersToVariant(s);
-    case ScanPlanRole: {
-        const std::optional<AreaScan> scan = scanOf(s, m_route.settings.profile.cameras);
-        return scan ? scanPlanToVariant(m_scanPlans.outcome(*scan)) : QVariant();
-    }
     default: return {};
     }
+}
+
+std::optional<AreaScanOutcome> RouteModel::scanPlan(int row) const
+{
+    if (row < 0 || row >= count())
+        return std::nullopt;
+    const std::optional<AreaScan> scan = scanOf(segment(row), m_route.settings.profile.cameras);
+    return scan ? std::optional<AreaScanOutcome>(m_scanPlans.outcome(*scan)) : std::nullopt;
 }
 
 QStringList RouteModel::authorisedZones() const

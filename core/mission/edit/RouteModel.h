@@ -47,7 +47,6 @@ public:
         ActionMarksRole,              // what a map marks: ActionMark flags (camera, other), 0 for none
         PolygonRole,                  // an area's corners, a corridor's line, a circle's centre: list of {latitude, longitude}
         ScanParametersRole,           // a segment's parameters by wire name (SegmentParameters.h); none for a waypoint
-        ScanPlanRole,                 // an area scan's or photogrammetry's plan: {ok, message, transects, photoCount, path, ...}
         LabelRole,                    // "Waypoint 3", "Circle 5"
     };
     Q_ENUM(Roles)
@@ -83,6 +82,10 @@ public:
     void setSettings(const RouteSettings &settings);
     void resetRoute(Route route);
 
+    // An area scan's or photogrammetry's plan (or why it has none), from the cache the map's layer
+    // fills too; none for a segment that is no scan.
+    std::optional<AreaScanOutcome> scanPlan(int row) const;
+
     static QString segmentLabelFor(int row, const Segment &s);  // "Waypoint 12", "Area scan 4", "Circle 5"
 
 signals:
@@ -95,7 +98,7 @@ private:
     void emitChanged(const std::vector<int> &rows, const QList<int> &roles);
 
     Route m_route;
-    mutable ScanPlanCache m_scanPlans;  // plans shown through ScanPlanRole
+    mutable ScanPlanCache m_scanPlans;  // plans given by scanPlan()
 };
 
 // Contiguous runs [first, last] of sorted rows.

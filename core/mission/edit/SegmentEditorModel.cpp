@@ -300,27 +300,36 @@ double SegmentEditorModel::radius() const
     return a && a->figure == FigureType::Circle && !a->figureParameters.empty() ? a->figureParameters[0] : std::nan("");
 }
 
-QVariantMap SegmentEditorModel::figures() const
+std::optional<SegmentEditorModel::SurveyFigures> SegmentEditorModel::figures() const
 {
     const Segment *s = segment();
     const std::optional<AreaScan> scan = s ? scanOf(*s, m_model->settings().profile.cameras) : std::nullopt;
     if (!scan)
-        return {};
-    const QVariantMap plan = m_model->index(m_row).data(RouteModel::ScanPlanRole).toMap();
-    QVariantMap out{{QStringLiteral("height"), scanAltitude(scan->parameters)},
-                    {QStringLiteral("gsdCm"), scanGroundSampleDistanceCm(scan->parameters)},
-                    {QStringLiteral("footprintAcross"), footprintAcrossMeters(scan->parameters)},
-                    {QStringLiteral("footprintAlong"), footprintAlongMeters(scan->parameters)}};
-    if (plan.value(QStringLiteral("ok")).toBool()) {
-        out.insert(QStringLiteral("passSpacing"), plan.value(QStringLiteral("transectSpacingMeters")));
-        out.insert(QStringLiteral("triggerDistance"), plan.value(QStringLiteral("triggerDistanceMeters")));
-        out.insert(QStringLiteral("photoCount"), plan.value(QStringLiteral("photoCount")));
-        out.insert(QStringLiteral("areaSquareMeters"), plan.value(QStringLiteral("areaSquareMeters")));
-        out.insert(QStringLiteral("passes"), plan.value(QStringLiteral("transects")));
-    } else {
-        out.insert(QStringLiteral("message"), plan.value(QStringLiteral("message")));
+        return std::nullopt;
+    SurveyFigures f;
+    f.height = scanAltitude(scan->parameters);
+    f.gsdCm = scanGroundSampleDistanceCm(scan->parameters);
+    f.footprintAcross = footprintAcrossMeters(scan->parameters);
+    f.footprintAlong = footprintAlongMeters(scan->parameters);
+    if (std::optional<AreaScanOutcome> outcome = m_model->scanPlan(m_row)) {
+        f.plan = std::move(outcome->plan);
+        f.message = outcome->message;
     }
-    return out;
+    return f;
+}
+
+QString SegmentEditorModel::figuresText() const
+{
+    const std::optional<SurveyFigures> f = figures();
+    if (!f)
+        return {};
+    if (!f->plan)
+        return f->message;
+    const auto n = [](double v, int decimals) { return QString::number(v, 'f', decimals); };
+    return tr("%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos")
+        .arg(n(f->height, 1), n(f->gsdCm, 2), n(f->footprintAcross, 1), n(f->footprintAlong, 1), n(f->plan->transectSpacing, 1),
+             n(f->plan->triggerDistance, 1))
+        .arg(f->plan->photoCount);
 }
 
 QStringList SegmentEditorModel::cameras() const

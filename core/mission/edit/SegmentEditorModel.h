@@ -2,11 +2,14 @@
 
 #include "AlgorithmCatalog.h"
 #include "MissionEnums.h"
+#include "AreaScanPlanner.h"
 #include "Segment.h"
 
 #include <QAbstractListModel>
 #include <QPointer>
 #include <QVariantMap>
+
+#include <optional>
 
 namespace sortie::mission {
 
@@ -30,9 +33,9 @@ class SegmentEditorModel : public QAbstractListModel
     Q_PROPERTY(bool valid READ isValid NOTIFY rowChanged)
     // A circle's radius in metres, NaN (QML: NaN) for other figures.
     Q_PROPERTY(double radius READ radius NOTIFY valuesChanged)
-    // Live figures of a survey as the operator types: height, gsdCm, footprintAcross,
-    // footprintAlong, passSpacing, triggerDistance, photoCount, areaSquareMeters; empty otherwise.
-    Q_PROPERTY(QVariantMap figures READ figures NOTIFY valuesChanged)
+    // Live figures of a survey as the operator types, in one line ("58.4 m high · 1.60 cm/px · …")
+    // or why it cannot be planned; empty for a segment that is no survey.
+    Q_PROPERTY(QString figuresText READ figuresText NOTIFY valuesChanged)
     Q_PROPERTY(QStringList cameras READ cameras CONSTANT)
     Q_PROPERTY(QString problem READ problem NOTIFY valuesChanged)
 
@@ -68,7 +71,15 @@ public:
     QString kind() const;
     bool isValid() const;
     double radius() const;
-    QVariantMap figures() const;
+    // The survey's figures: from its parameters always, from its plan when it has one (else why not).
+    struct SurveyFigures
+    {
+        double height = 0, gsdCm = 0, footprintAcross = 0, footprintAlong = 0;  // metres, cm/px
+        std::optional<AreaScanPlan> plan;
+        QString message;  // why there is no plan
+    };
+    std::optional<SurveyFigures> figures() const;
+    QString figuresText() const;
     QStringList cameras() const;
     QString problem() const { return m_problem; }
 
