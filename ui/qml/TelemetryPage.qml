@@ -318,18 +318,17 @@ Page {
                     id: fieldPicker
                     objectName: "plotFieldPicker"
                     Layout.fillWidth: true
-                    // Named for the operator, keyed by the field's name (what plotFields holds).
-                    model: plot.fieldChoices
-                    textRole: "name"
-                    valueRole: "key"
+                    // Named for the operator; what plotFields holds is the field's key at the same index.
+                    model: plot.fieldTitles
+                    readonly property string chosenField: currentIndex >= 0 ? plot.availableFields()[currentIndex] : ""
                     // Read with the model, so that a re-worded model (a language change) chooses it again.
                     currentIndex: model.length > 0 ? Math.max(0, plot.availableFields().indexOf("groundSpeed")) : -1
                 }
                 Button {
                     objectName: "plotAddButton"
                     text: qsTr("Add")
-                    enabled: page.plotFields.indexOf(fieldPicker.currentValue) < 0
-                    onClicked: page.plotFields = page.plotFields.concat([fieldPicker.currentValue])
+                    enabled: page.plotFields.indexOf(fieldPicker.chosenField) < 0
+                    onClicked: page.plotFields = page.plotFields.concat([fieldPicker.chosenField])
                     ToolTip.visible: hovered
                     ToolTip.text: qsTr("Plot this field too")
                 }
@@ -342,8 +341,8 @@ Page {
                     model: page.plotFields
                     delegate: Button {
                         required property string modelData
-                        // plot.fieldChoices is read here so that a language change re-words the chip.
-                        text: plot.fieldChoices[plot.availableFields().indexOf(modelData)].name + "  ×"
+                        // plot.fieldTitles is read here so that a language change re-words the chip.
+                        text: plot.fieldTitles[plot.availableFields().indexOf(modelData)] + "  ×"
                         flat: true
                         font.pixelSize: 11
                         padding: 4

@@ -39,7 +39,7 @@ TelemetryPlot::TelemetryPlot(QQuickItem *parent)
     setAntialiasing(true);
     // The legend, the axes' words and the field names are made when laid out: made again.
     i18n::onLanguageChange(this, [this] {
-        emit fieldChoicesChanged();
+        emit fieldTitlesChanged();
         redraw();
     });
 }
@@ -157,15 +157,12 @@ QStringList TelemetryPlot::availableFields()
     return names;
 }
 
-QVariantList TelemetryPlot::fieldChoices()
+QStringList TelemetryPlot::fieldTitles()
 {
-    QVariantList choices;
-    for (size_t i = 0; i < vehicle::kTelemetryFieldCount; ++i) {
-        const std::string_view key = vehicle::fieldName(TelemetryField(i));
-        choices << QVariantMap{{QStringLiteral("key"), QString::fromLatin1(key.data(), qsizetype(key.size()))},
-                               {QStringLiteral("name"), telemetryFieldTitle(TelemetryField(i))}};
-    }
-    return choices;
+    QStringList titles;
+    for (size_t i = 0; i < vehicle::kTelemetryFieldCount; ++i)
+        titles.append(telemetryFieldTitle(TelemetryField(i)));
+    return titles;
 }
 
 QString TelemetryPlot::seriesLabel(int i) const

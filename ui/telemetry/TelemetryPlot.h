@@ -37,7 +37,7 @@ class TelemetryPlot : public QQuickPaintedItem
     Q_PROPERTY(int seriesCount READ seriesCount NOTIFY plotted)
     Q_PROPERTY(int axisCount READ axisCount NOTIFY plotted)
     // Every field a plot can show, named for the operator: [{key, name}] (a language change re-words it).
-    Q_PROPERTY(QVariantList fieldChoices READ fieldChoices NOTIFY fieldChoicesChanged)
+    Q_PROPERTY(QStringList fieldTitles READ fieldTitles NOTIFY fieldTitlesChanged)
     Q_PROPERTY(QColor textColor MEMBER m_textColor NOTIFY fieldsChanged)
 
 public:
@@ -64,7 +64,8 @@ public:
     // Every field a plot can show ("altitudeAgl", "groundSpeed", ...).
     Q_INVOKABLE static QStringList availableFields();
     // The same, as the operator reads them: [{key, name}], the name in the current language.
-    static QVariantList fieldChoices();
+    // The fields' titles for the operator, in availableFields()' order (in the current language).
+    static QStringList fieldTitles();
 
     void paint(QPainter *painter) override;
 
@@ -73,7 +74,7 @@ signals:
     void fieldsChanged();
     void windowSecondsChanged();
     void plotted();
-    void fieldChoicesChanged(); // the language changed
+    void fieldTitlesChanged(); // the language changed
 
 protected:
     void updatePolish() override;
