@@ -42,11 +42,19 @@ def blocks(text):
         yield text.count('\n', 0, m.start()) + 1, ''.join(own)
 
 
+TOOLTIP = re.compile(r'(?<![\w.])ToolTip\s*\{')
+
+
 def problems(path, text):
     text = re.sub(r'//[^\n]*', '', text)
     for line, own in blocks(text):
         if not re.search(r'\btextFormat\s*:', own):
             yield f'{path}:{line}: a Text or Label without textFormat (say Text.PlainText for anything from outside)'
+    # A ToolTip item of its own renders its text at AutoText (the style's content item): PlainToolTip
+    # is the one that does not. The attached ones share the instance Main.qml makes plain.
+    if pathlib.Path(path).name != 'PlainToolTip.qml':
+        for m in TOOLTIP.finditer(text):
+            yield f'{path}:{text.count(chr(10), 0, m.start()) + 1}: a ToolTip item (use PlainToolTip, whose text is plain)'
 
 
 def self_test():
@@ -54,6 +62,9 @@ def self_test():
     good = 'Item {\n  Label { textFormat: Text.PlainText; text: zone.name }\n  Text {\n    textFormat: Text.PlainText\n    text: x\n  }\n  TextField { text: y }\n  Component.onCompleted: console.log("Text {")\n}\n'
     found = list(problems('bad.qml', bad))
     assert len(found) == 2 and ':2:' in found[0] and ':3:' in found[1], found
+    tips = list(problems('tips.qml', 'Item {\n  PlainToolTip { text: a }\n  ToolTip { text: b }\n  Button { ToolTip.text: c }\n}\n'))
+    assert len(tips) == 1 and ':3:' in tips[0], tips
+    assert not list(problems('PlainToolTip.qml', 'ToolTip {\n}\n'))
     assert not list(problems('good.qml', good.replace('console.log("Text {")', 'x()'))), list(problems('good.qml', good))
     print('check_plain_text: self-test passed')
     return 0

@@ -5,6 +5,7 @@
 // fetch, which proves a rendered name would have, and that the port had time to hear it.
 #include "Airspace.h"
 #include "ClientWindow.h"
+#include "MapView.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -12,6 +13,7 @@
 #include <QQmlApplicationEngine>
 #include <QQmlComponent>
 #include <QQmlEngine>
+#include <QQmlExpression>
 #include <QQuickItem>
 #include <QTcpServer>
 #include <QTcpSocket>
@@ -47,12 +49,13 @@ private:
     QStringList m_paths;
 };
 
-void collectTexts(QQuickItem *item, const QString &text, QList<QQuickItem *> &found)
+void collectTexts(QQuickItem *item, const QString &text, QList<QQuickItem *> &found, bool whole = true)
 {
-    if (item->inherits("QQuickText") && item->property("text").toString() == text)
+    const QString shown = item->inherits("QQuickText") ? item->property("text").toString() : QString();
+    if (whole ? shown == text : shown.contains(text))
         found << item;
     for (QQuickItem *child : item->childItems())
-        collectTexts(child, text, found);
+        collectTexts(child, text, found, whole);
 }
 
 } // namespace
@@ -99,6 +102,26 @@ private slots:
             QVERIFY(label->isVisible());
         }
         QVERIFY(test::waitForFrame(client.window()));
+
+        // Under the mouse on the map, the zone's tool tip names it as text too.
+        auto *map = client.page("missionPage")->property("map").value<ui::MapView *>();
+        QVERIFY(map);
+        map->fitBounds(56.95, 24.10, 56.96, 24.11, 80);
+        QVERIFY(test::waitForFrame(client.window()));
+        const QPointF inside = map->mapToScene(map->fromCoordinate(QGeoCoordinate(56.952, 24.108)));
+        QTest::mouseMove(client.window(), inside.toPoint());
+        QList<QQuickItem *> tips;
+        QTRY_VERIFY2_WITH_TIMEOUT((tips.clear(), collectTexts(client.window()->contentItem(), name, tips, false), tips.size() > labels.size()),
+                                  "no tool tip names the zone under the mouse", 10000);
+        for (QQuickItem *tip : tips)
+            QCOMPARE(tip->property("textFormat").toInt(), 0); // Text.PlainText
+        QVERIFY(test::waitForFrame(client.window()));
+
+        // The tool tip every control attaches (`ToolTip.text: …`) is one the engine shares: plain text as well.
+        QQmlExpression shared(qmlContext(client.find(QStringLiteral("zonePanel"))), client.find(QStringLiteral("zonePanel")),
+                              QStringLiteral("ToolTip.toolTip.contentItem.textFormat"));
+        QCOMPARE(shared.evaluate().toInt(), 0);
+        QVERIFY2(!shared.hasError(), qPrintable(shared.error().toString()));
 
         // The control: a Text at Qt's default in the same engine and window asks for its image (its own
         // URL, so that Qt's image cache cannot answer it from a request the zone list made).

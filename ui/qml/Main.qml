@@ -277,6 +277,13 @@ ApplicationWindow {
         theme: window.theme
     }
 
+    // Every attached tool tip (`ToolTip.text: …`) is one ToolTip the engine shares: its text is plain,
+    // so a name from outside in a tool tip (a route's, a vehicle's, a server's message) is shown as it
+    // is, never as HTML (issue 36). Attached to an Item: the window itself is none.
+    Item {
+        Component.onCompleted: ToolTip.toolTip.contentItem.textFormat = Text.PlainText
+    }
+
     Shortcuts {
         id: shortcuts
         onHelpRequested: window.toggleHelp()

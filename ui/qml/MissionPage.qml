@@ -112,8 +112,8 @@ Page {
                 anchors.fill: parent
                 map: pane.map
                 airspace: page.airspace
-                ToolTip {
-                    // Where the mouse is: the zone's source and limits.
+                PlainToolTip {
+                    // Where the mouse is: the zone's name, source and limits.
                     visible: parent.hoverText.length > 0
                     text: parent.hoverText
                     x: parent.hoverPosition.x + 12
