@@ -243,7 +243,7 @@ void TilePrefetch::replyFinished(QNetworkReply *reply)
     } else {
         // No answer: a timeout, a refused or dropped connection. The server may be back soon.
         const bool timedOut = reply->error() == QNetworkReply::OperationCanceledError;
-        retryLater(pending, timedOut ? tr("no answer within %1 s").arg(m_limits.timeoutMs / 1000.0) : reply->errorString(), std::nullopt);
+        retryLater(pending, timedOut ? tr("no answer within %1 s").arg(m_limits.timeoutMs / 1000.0) : m_plan.server.redacted(reply->errorString()), std::nullopt);
     }
     pump();
 }

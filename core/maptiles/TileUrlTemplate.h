@@ -3,6 +3,7 @@
 #include "TileId.h"
 
 #include <QString>
+#include <QStringList>
 #include <QUrl>
 
 namespace sortie::maptiles {
@@ -24,6 +25,13 @@ public:
     QUrl url(const TileId &tile) const;
     // The server's host name (the first subdomain's), for names and file names.
     QString host() const;
+
+    // The secrets in the pattern: the values of its query items named as keys are (apikey, key,
+    // access_token, token, …) and a password in its user part. What is shown or logged about the
+    // server (an error from Qt's network stack quotes the whole URL) goes through redacted().
+    QStringList secrets() const;
+    // `text` with every secret of the pattern, as written or percent-encoded, replaced by "•••".
+    QString redacted(const QString &text) const;
 
     static QString validate(const QString &pattern);
 

@@ -3,6 +3,7 @@
 // margins, and bad areas refused with a reason.
 #include "TileArea.h"
 #include "TileId.h"
+#include "TileUrlTemplate.h"
 
 #include <QTest>
 
@@ -78,6 +79,28 @@ class TestTileArea : public QObject
     Q_OBJECT
 
 private slots:
+    // A template's keys never reach what is shown or logged: each named key's value, as written or
+    // percent-encoded, and a password in the user part become "•••"; placeholders, other query
+    // items and a key too short to be one stay.
+    void secretsInATemplateAreRedacted()
+    {
+        const TileUrlTemplate t(QStringLiteral("https://maps:s3cr%2Ft-pass@{s}.tiles.example/{z}/{x}/{y}.png?style=dark&apikey=Ab12Cd34Ef"
+                                               "&access_token=pk.eyJ1%3D%3D&key={k}&token=x&lang=lv"));
+        QCOMPARE(t.secrets(), (QStringList{QStringLiteral("Ab12Cd34Ef"), QStringLiteral("pk.eyJ1%3D%3D"), QStringLiteral("x"),
+                                           QStringLiteral("s3cr%2Ft-pass")}));
+        const QString error = QStringLiteral("Error transferring https://a.tiles.example/3/4/2.png?style=dark&apikey=Ab12Cd34Ef"
+                                             "&access_token=pk.eyJ1== - server replied: Forbidden (s3cr/t-pass)");
+        const QString shown = t.redacted(error);
+        QCOMPARE(shown, QStringLiteral("Error transferring https://a.tiles.example/3/4/2.png?style=dark&apikey=•••"
+                                       "&access_token=••• - server replied: Forbidden (•••)"));
+        for (const QString &secret : {QStringLiteral("Ab12Cd34Ef"), QStringLiteral("pk.eyJ1"), QStringLiteral("s3cr")})
+            QVERIFY2(!shown.contains(secret), qPrintable(shown));
+        // A template without secrets changes nothing.
+        const TileUrlTemplate plain(QStringLiteral("https://tile.example.org/{z}/{x}/{y}.png?lang=lv"));
+        QVERIFY(plain.secrets().isEmpty());
+        QCOMPARE(plain.redacted(error), error);
+    }
+
     void wholeWorldIsEveryTile()
     {
         const TileArea world = TileArea::rectangle({-85.0511, -180, 85.0511, 180});

@@ -267,7 +267,7 @@ void XyzTileSource::finished(QNetworkReply *reply)
         emit tileFailed(key, isFile ? tr("No tile file %1.").arg(reply->url().toLocalFile())
                                     : tr("The tile server answered HTTP %1 for tile %2.").arg(status.toInt()).arg(key.toString()));
     } else {
-        networkFailed(key, reply->errorString());
+        networkFailed(key, m_template.redacted(reply->errorString()));  // Qt quotes the URL, key and all
     }
     emit loadingCountChanged();
     startNext();
