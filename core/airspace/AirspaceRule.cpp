@@ -205,6 +205,7 @@ void AirspaceRule::check(const mission::Route &route, mission::ScanPlanCache *ca
     m_lastZones = m_zones;
     m_lastPath = {};
     m_lastAuthorisations = route.settings.authorisations;
+    m_lastWindow = {};
     if (!m_zones || m_zones->zones().empty())
         return;
     if (!m_checker)
@@ -229,7 +230,7 @@ void AirspaceRule::check(const mission::Route &route, mission::ScanPlanCache *ca
     // Geographical zones count when they apply during the flight (timed only when there are any).
     const auto &all = m_zones->zones();
     if (std::any_of(all.begin(), all.end(), [](const Zone &z) { return z.geoZone != nullptr; }))
-        m_checker->setWindow(flightWindow(route, route.settings.plannedStart.value_or(QDateTime::currentDateTimeUtc()), cache));
+        m_checker->setWindow(m_lastWindow = flightWindow(route, route.settings.plannedStart.value_or(QDateTime::currentDateTimeUtc()), cache));
     m_lastReport = m_checker->check(path);
     m_lastPath = std::move(path);  // kept (not copied) for the views: where each violation is
     const std::vector<ValidationIssue> found = airspaceIssues(m_lastReport, *m_zones, m_buffer, m_lastAuthorisations);

@@ -64,6 +64,8 @@ public:
     // The flight's window and the authorisations come from the route checked (its plannedStart,
     // or now, to its end by the time model; its authorisations); these are the last check's.
     const Authorisations &lastAuthorisations() const { return m_lastAuthorisations; }
+    // The flight's window of the last check (UTC): which geographical zones applied to it.
+    const ed::TimeWindow &lastWindow() const { return m_lastWindow; }
     // What the last check found, and the zone set its zone indices refer to (none before a check
     // or without zones): the client's views draw where the route crosses which zone.
     const AirspaceReport &lastReport() const { return m_lastReport; }
@@ -76,6 +78,7 @@ private:
     std::shared_ptr<const ZoneSet> m_zones;
     double m_buffer = 20.0;
     Authorisations m_lastAuthorisations;
+    ed::TimeWindow m_lastWindow;
     std::unique_ptr<AirspaceChecker> m_checker;
     std::optional<mission::GeoPoint> m_frameOrigin;
     AirspaceReport m_lastReport;

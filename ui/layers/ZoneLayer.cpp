@@ -3,11 +3,14 @@
 #include "Airspace.h"
 #include "Geodesy.h"
 #include "LabelPlacer.h"
+#include "ZoneColours.h"
 
 #include <QFontMetricsF>
 #include <QGuiApplication>
 #include <QHoverEvent>
 #include <QPainter>
+#include <QRegularExpression>
+#include <QTimeZone>
 
 #include <cmath>
 
@@ -98,6 +101,8 @@ void ZoneLayer::setAirspace(airspace::Airspace *airspace)
     if (m_airspace) {
         connect(m_airspace, &Airspace::changed, this, &ZoneLayer::readZones);
         connect(m_airspace, &Airspace::selectedZoneChanged, this, &ZoneLayer::repaint);
+        // Each check may move the flight's window (a new planned start): which zones apply to it.
+        connect(m_airspace, &Airspace::crossingsChanged, this, &ZoneLayer::repaint);
     }
     readZones();
     emit airspaceChanged();
@@ -213,6 +218,18 @@ QString ZoneLayer::describe(int row) const
     QString text = tr("%1 (%2 zone)\nSource: %3%4\nFloor %5, ceiling %6")
                        .arg(z.name, airspace::kindName(z.kind), source, sayOrigin ? QStringLiteral(" — ") + z.origin : QString(),
                             airspace::limitText(z.floor, false), airspace::limitText(z.ceiling, true));
+    if (const airspace::ed::GeoZone *g = z.geoZone.get()) {
+        text += tr("\n%1 (%2 %3)").arg(airspace::ed::restrictionWords(g->restriction), g->identifier, airspace::ed::restrictionName(g->restriction));
+        if (!g->message.isEmpty())
+            text += QLatin1Char('\n') + g->message;
+        if (!g->reasons.isEmpty() || !g->otherReasonInfo.isEmpty())
+            text += tr("\nReason: %1").arg((g->reasons + QStringList{g->otherReasonInfo}).filter(QRegularExpression(QStringLiteral("\\S"))).join(QStringLiteral(", ")));
+        text += tr("\nWhen: %1").arg(airspace::ed::applicabilityText(g->applicability, QTimeZone::systemTimeZone()));
+        if (!m_airspace->appliesToFlight(row))
+            text += tr("\nNot in force during the planned flight");
+        for (const airspace::ed::Authority &a : g->authorities)
+            text += tr("\nAuthority: %1").arg(airspace::ed::contactText(a));
+    }
     if (const QString problem = m_airspace->problemOf(row); !problem.isEmpty())
         text += tr("\nNot checked: %1").arg(problem);
     else if (!z.active)
@@ -289,25 +306,32 @@ void ZoneLayer::paint(QPainter *painter)
             p.setBrush(Qt::NoBrush);
             p.drawPath(path);
         }
+        const QColor colour = zoneColour(colours(), z);
+        const bool keepOut = keepsOut(z.kind, z.geoZone ? std::optional(z.geoZone->restriction) : std::nullopt);
         if (!z.active) {
             p.setPen(QPen(colours().inactiveEdge, 1.5, Qt::DashLine));
             p.setBrush(Qt::NoBrush);
+        } else if (!m_airspace->appliesToFlight(int(row))) {
+            // In force, but not while the route flies: its colour, dashed, no wash.
+            p.setPen(QPen(colour, 2, Qt::DashLine));
+            p.setBrush(Qt::NoBrush);
         } else if (z.kind == airspace::ZoneKind::Exclusion) {
-            QColor wash = colours().exclusion;
+            QColor wash = colour;
             wash.setAlpha(28);
-            // A hatch needs room to show: a zone a few pixels wide is its wash and outline, drawn at once.
+            // A hatch needs room to show: a zone a few pixels wide is its wash and outline, drawn at
+            // once. Only a zone that keeps the flight out is hatched; one with conditions is washed.
             const QRectF box = path.boundingRect();
-            if (std::max(box.width(), box.height()) >= kHatchedSize) {
+            if (keepOut && std::max(box.width(), box.height()) >= kHatchedSize) {
                 p.setPen(Qt::NoPen);
                 p.setBrush(wash);
                 p.drawPath(path);
-                p.setBrush(QBrush(colours().exclusion, Qt::BDiagPattern));
+                p.setBrush(QBrush(colour, Qt::BDiagPattern));
             } else {
                 p.setBrush(wash);
             }
-            p.setPen(QPen(colours().exclusion, 2));
+            p.setPen(QPen(colour, 2));
         } else {
-            p.setPen(QPen(colours().inclusion, 3));
+            p.setPen(QPen(colour, 3));
             p.setBrush(Qt::NoBrush);
         }
         p.drawPath(path);
@@ -347,8 +371,7 @@ void ZoneLayer::paint(QPainter *painter)
             continue;
         m_labels.push_back({row, rect});
         const Zone &z = m_airspace->zoneAt(row);
-        const QColor ink = !z.active ? colours().inactive : z.kind == airspace::ZoneKind::Exclusion ? colours().exclusion.darker(130)
-                                                                                                         : colours().inclusion.darker(120);
+        const QColor ink = !z.active ? colours().inactive : zoneColour(colours(), z).darker(z.kind == airspace::ZoneKind::Exclusion ? 130 : 120);
         if (placement.moved) {
             const QRectF box = paths[size_t(row)].boundingRect();
             p.setPen(QPen(ink, 1, Qt::DotLine));

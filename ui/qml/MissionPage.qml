@@ -119,6 +119,15 @@ Page {
                     x: parent.hoverPosition.x + 12
                     y: parent.hoverPosition.y + 16
                 }
+                ZoneLegend {
+                    // Above the scale bar.
+                    theme: page.theme
+                    airspace: page.airspace
+                    anchors.left: parent.left
+                    anchors.bottom: parent.bottom
+                    anchors.leftMargin: pane.controlsLeft
+                    anchors.bottomMargin: 44
+                }
             }
             FleetRoutesLayer {
                 // The other vehicles' routes, in their colours; the open one is the editor's (hideOpen).
@@ -295,6 +304,7 @@ Page {
             }
             ZonePanel {
                 theme: page.theme
+                routeEditor: page.doc.editor
                 id: zonePanel
                 objectName: "zonePanel"
                 visible: false

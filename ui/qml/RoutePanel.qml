@@ -314,6 +314,25 @@ Pane {
             actions: panel.doc.actionEditor
         }
 
+        // When the flight is planned to start, in the operator's time zone: geographical zones count
+        // when their schedule meets the flight (empty: it starts now). Parsed and kept by the editor.
+        RowLayout {
+            Layout.fillWidth: true
+            spacing: 4
+            Label { textFormat: Text.PlainText; text: qsTr("Planned start") }
+            TextField {
+                objectName: "plannedStartField"
+                Layout.fillWidth: true
+                text: panel.doc.model.plannedStartText
+                placeholderText: qsTr("now (or e.g. %1)").arg("2026-06-06 18:00") // i18n: not text (a date in the field's format)
+                selectByMouse: true
+                onEditingFinished: if (text !== panel.doc.model.plannedStartText && !panel.doc.editor.setPlannedStartText(text))
+                                       text = Qt.binding(() => panel.doc.model.plannedStartText)
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Year-month-day hours:minutes, your time zone; empty: the flight starts now")
+            }
+        }
+
         ListView {
             objectName: "validationList"
             visible: count > 0

@@ -12,12 +12,14 @@ Frame {
     required property Theme theme
     required property Airspace airspace
     required property ZoneSharing sharing  // send a drawn zone; edit or delete a server custom zone
+    required property RouteEditor routeEditor  // an authorisation for a geographical zone is the route's
     required property string tool          // the page's drawing tool ("zonePolygon", "zoneCircle" or another)
     required property int draftCount       // corners clicked so far while drawing a polygon
     signal toolRequested(string tool)      // "" ends drawing
     signal finishRequested()               // make the polygon drawn so far a zone
     readonly property ZoneEditor editor: airspace.editor
     readonly property int chosen: airspace.selectedCustom
+    readonly property geoZoneDetails geoZone: airspace.selectedGeoZone
     padding: 8
 
     FileDialog {
@@ -139,6 +141,50 @@ Frame {
                             Layout.fillWidth: true
                         }
                     }
+                }
+            }
+        }
+        // The chosen geographical zone (ED-269, ED-318): what it restricts, when, who to ask; the
+        // route's authorisation for it, recorded here (one undo step of the route).
+        ColumnLayout {
+            objectName: "geoZoneDetails"
+            visible: panel.geoZone.valid
+            Layout.fillWidth: true
+            spacing: 2
+            Label {
+                textFormat: Text.PlainText
+                objectName: "geoZoneRestriction"
+                text: qsTr("%1 · %2").arg(panel.geoZone.restriction).arg(panel.geoZone.identifier)
+                font.bold: true
+                wrapMode: Text.Wrap
+                Layout.fillWidth: true
+            }
+            Label {
+                textFormat: Text.PlainText
+                objectName: "geoZoneText"
+                text: panel.geoZone.text
+                wrapMode: Text.Wrap
+                font.pixelSize: panel.theme.smallFontSize
+                Layout.fillWidth: true
+            }
+            RowLayout {
+                visible: panel.geoZone.needsAuthorisation
+                Layout.fillWidth: true
+                TextField {
+                    id: authorisationField
+                    objectName: "authorisationField"
+                    Layout.fillWidth: true
+                    placeholderText: qsTr("Authorisation reference")
+                    text: panel.geoZone.authorisation
+                    selectByMouse: true
+                }
+                Button {
+                    objectName: "recordAuthorisationButton"
+                    text: panel.geoZone.authorisation.length > 0 ? qsTr("Change") : qsTr("Record")
+                    enabled: authorisationField.text !== panel.geoZone.authorisation
+                    onClicked: panel.routeEditor.recordAuthorisation(panel.geoZone.identifier, authorisationField.text)
+                    ToolTip.visible: hovered
+                    ToolTip.text: qsTr("Kept with the route; the check then warns instead of refusing (empty: removed)")
                 }
             }
         }

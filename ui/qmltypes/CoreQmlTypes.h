@@ -226,6 +226,12 @@ struct ZoneFieldsForeign
     QML_FOREIGN(sortie::airspace::ZoneFields)
     QML_VALUE_TYPE(zoneFields)
 };
+struct GeoZoneDetailsForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::airspace::GeoZoneDetails)
+    QML_VALUE_TYPE(geoZoneDetails)
+};
 struct DrawingToolForeign
 {
     Q_GADGET

@@ -3,6 +3,7 @@
 #include "Airspace.h"
 #include "ElevationProfileView.h"
 #include "FollowOwner.h"
+#include "ZoneColours.h"
 
 #include <QFontMetricsF>
 #include <QPainter>
@@ -126,13 +127,13 @@ void ZoneProfileOverlay::paint(QPainter *painter)
         ++m_bands;
         const bool exclusion = c.kind == airspace::ZoneKind::Exclusion;
         const MapPalette &palette = coloursOf(m_view ? m_view->theme() : nullptr).map;
-        const QColor colour = exclusion ? palette.exclusion : palette.inclusion;
+        const QColor colour = zoneColour(palette, c.kind, c.restriction);
         QColor wash = colour;
         wash.setAlpha(40);
         p.setPen(Qt::NoPen);
         p.setBrush(wash);
         p.drawPolygon(band);
-        p.setBrush(QBrush(colour, exclusion ? Qt::BDiagPattern : Qt::FDiagPattern));
+        p.setBrush(keepsOut(c.kind, c.restriction) ? QBrush(colour, Qt::BDiagPattern) : exclusion ? QBrush(Qt::NoBrush) : QBrush(colour, Qt::FDiagPattern));
         p.setPen(QPen(colour, 1.5));
         p.drawPolygon(band);
         // The name over the band, unless the band before took that place.

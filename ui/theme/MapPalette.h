@@ -33,7 +33,10 @@ struct MapPalette
     QColor route;         // the open route's legs; an offline maps area
     QColor draft;         // a figure being drawn (an area scan's corners)
     QColor ghost;         // the server's copy of a route in conflict
-    QColor exclusion;     // no-fly zones
+    QColor exclusion;     // no-fly zones; a geographical zone that prohibits the flight
+    QColor authorisation; // a geographical zone that needs an authorisation (REQ_AUTHORISATION)
+    QColor conditional;   // a geographical zone with conditions (CONDITIONAL)
+    QColor information;   // a geographical zone that only informs (NO_RESTRICTION)
     QColor inclusion;     // geofences (fly only inside)
     QColor crossing;      // a leg inside a zone
     QColor conflict;      // where routes meet

@@ -67,6 +67,9 @@ class Theme : public QObject
     Q_PROPERTY(QColor mapDraft READ mapDraft NOTIFY coloursChanged)
     Q_PROPERTY(QColor mapGhost READ mapGhost NOTIFY coloursChanged)
     Q_PROPERTY(QColor mapExclusion READ mapExclusion NOTIFY coloursChanged)
+    Q_PROPERTY(QColor mapAuthorisation READ mapAuthorisation NOTIFY coloursChanged)
+    Q_PROPERTY(QColor mapConditional READ mapConditional NOTIFY coloursChanged)
+    Q_PROPERTY(QColor mapInformation READ mapInformation NOTIFY coloursChanged)
     Q_PROPERTY(QColor mapInclusion READ mapInclusion NOTIFY coloursChanged)
     // Spacing between controls and around groups; the height of a control a finger can hit; the
     // icons' size; type sizes in pixels (body text, small print, titles, the glance bar's values).
@@ -145,6 +148,9 @@ public:
     QColor mapGhost() const { return m_colours.map.ghost; }
     QColor mapExclusion() const { return m_colours.map.exclusion; }
     QColor mapInclusion() const { return m_colours.map.inclusion; }
+    QColor mapAuthorisation() const { return m_colours.map.authorisation; }
+    QColor mapConditional() const { return m_colours.map.conditional; }
+    QColor mapInformation() const { return m_colours.map.information; }
 
     int spacing() const { return 8; }
     int smallSpacing() const { return 4; }

@@ -10,6 +10,7 @@
 
 #include <QDateTime>
 #include <QFile>
+#include <QTimeZone>
 #include <QFileInfo>
 #include <QGeoCoordinate>
 #include <QLoggingCategory>
@@ -78,6 +79,10 @@ Airspace::Airspace(QSettings *settings, mission::RouteAnalyzer *analyzer, const 
     // The open route's own fence (a .plan's geoFence) follows the route: opened, replaced, undone.
     connect(model, &QAbstractItemModel::modelReset, this, &Airspace::followRouteFence);
     connect(model, &mission::RouteModel::settingsChanged, this, &Airspace::followRouteFence);
+    // The chosen geographical zone's authorisation and whether it is in force follow the route.
+    connect(model, &mission::RouteModel::settingsChanged, this, &Airspace::selectedGeoZoneChanged);
+    connect(this, &Airspace::selectedZoneChanged, this, &Airspace::selectedGeoZoneChanged);
+    connect(this, &Airspace::crossingsChanged, this, &Airspace::selectedGeoZoneChanged);
     connect(model, &mission::RouteModel::countChanged, this, &Airspace::followRouteFence);
 
     loadCustom();
@@ -118,6 +123,51 @@ QString Airspace::groupName(Group group)
 QString Airspace::problemOf(int row) const
 {
     return row >= 0 && row < int(m_shapeProblems.size()) ? m_shapeProblems[size_t(row)] : QString();
+}
+
+bool Airspace::appliesToFlight(int row) const
+{
+    if (row < 0 || row >= count() || !zoneAt(row).geoZone)
+        return true;
+    ed::TimeWindow window = m_rule->lastWindow();
+    if (!window.from.isValid() || !window.to.isValid())
+        window.from = window.to = QDateTime::currentDateTimeUtc();  // no route checked: now
+    return zoneAt(row).geoZone->appliesDuring(window);
+}
+
+GeoZoneDetails Airspace::selectedGeoZone() const
+{
+    if (m_selected < 0 || m_selected >= count() || !zoneAt(m_selected).geoZone)
+        return {};
+    const ed::GeoZone &g = *zoneAt(m_selected).geoZone;
+    GeoZoneDetails d;
+    d.valid = true;
+    d.identifier = g.identifier;
+    d.restriction = ed::restrictionWords(g.restriction);
+    d.needsAuthorisation = g.restriction == ed::Restriction::ReqAuthorisation;
+    d.authorisation = m_route->authorisationFor(g.identifier);
+    d.inForce = appliesToFlight(m_selected);
+    QStringList lines;
+    if (!g.message.isEmpty())
+        lines << g.message;
+    QStringList reasons = g.reasons;
+    if (!g.otherReasonInfo.trimmed().isEmpty())
+        reasons << g.otherReasonInfo.trimmed();
+    if (!reasons.isEmpty())
+        lines << tr("Reason: %1").arg(reasons.join(QStringLiteral(", ")));
+    lines << tr("When: %1").arg(ed::applicabilityText(g.applicability, QTimeZone::systemTimeZone()));
+    if (!d.inForce)
+        lines << tr("Not in force during the planned flight.");
+    for (const ed::Authority &a : g.authorities)
+        lines << tr("Authority: %1").arg(ed::contactText(a));
+    d.text = lines.join(QLatin1Char('\n'));
+    return d;
+}
+
+bool Airspace::hasGeographicalZones() const
+{
+    const auto &zones = m_set->zones();
+    return std::any_of(zones.begin(), zones.end(), [](const Zone &z) { return z.geoZone != nullptr; });
 }
 
 void Airspace::setBuffer(double metres)
@@ -376,7 +426,8 @@ void Airspace::readCrossings()
         for (const AirspaceViolation &v : m_rule->lastReport().violations) {
             const Zone &z = zones->zones()[size_t(v.zone)];
             list.push_back({v.fromDistance, v.toDistance, v.leg, v.zone, z.name, z.kind, z.floor, z.ceiling,
-                            stretchOf(m_rule->lastPath(), v.leg, v.fromDistance, v.toDistance)});
+                            stretchOf(m_rule->lastPath(), v.leg, v.fromDistance, v.toDistance),
+                            z.geoZone ? std::optional<ed::Restriction>(z.geoZone->restriction) : std::nullopt});
         }
     }
     if (list == m_crossings)

@@ -40,7 +40,32 @@ struct ZoneCrossing
     ZoneKind kind = ZoneKind::Exclusion;
     std::optional<HeightLimit> floor, ceiling;  // none: the ground / unlimited
     std::vector<mission::GeoPoint> path;        // the stretch along the flown path, both ends included
+    std::optional<ed::Restriction> restriction; // a geographical zone's; none for any other zone
     bool operator==(const ZoneCrossing &) const = default;
+};
+
+// The chosen zone's geographical zone (ED-269, ED-318) as the zone panel shows it: what it
+// restricts, why, when, who to ask, and the authorisation the route holds for it. `valid` is false
+// when the chosen zone is none.
+struct GeoZoneDetails
+{
+    Q_GADGET
+    Q_PROPERTY(bool valid MEMBER valid)
+    Q_PROPERTY(QString identifier MEMBER identifier)
+    Q_PROPERTY(QString restriction MEMBER restriction)      // in the operator's words
+    Q_PROPERTY(bool needsAuthorisation MEMBER needsAuthorisation)
+    Q_PROPERTY(QString authorisation MEMBER authorisation)  // the route's, empty when none is recorded
+    Q_PROPERTY(bool inForce MEMBER inForce)                 // during the flight's window
+    Q_PROPERTY(QString text MEMBER text)                    // message, reasons, when, authorities
+
+public:
+    bool valid = false;
+    QString identifier, restriction;
+    bool needsAuthorisation = false;
+    QString authorisation;
+    bool inForce = true;
+    QString text;
+    bool operator==(const GeoZoneDetails &) const = default;
 };
 
 // The client's one store of zones, by where they come from: zones the operator drew (custom,
@@ -67,6 +92,8 @@ class Airspace : public QObject
     Q_PROPERTY(int selectedCustom READ selectedCustom NOTIFY selectedZoneChanged)
     // How many stretches of the route cross zones, as the last check found (crossings() has them).
     Q_PROPERTY(int crossingCount READ crossingCount NOTIFY crossingsChanged)
+    Q_PROPERTY(bool hasGeographicalZones READ hasGeographicalZones NOTIFY changed)
+    Q_PROPERTY(sortie::airspace::GeoZoneDetails selectedGeoZone READ selectedGeoZone NOTIFY selectedGeoZoneChanged)
 
 public:
     enum class Group { Custom, Server, File, RouteFence };
@@ -91,6 +118,12 @@ public:
     static QString groupName(Group group);  // "drawn", "server", "file", "route fence"
     // Why a zone is not checked although active (a polygon that crosses itself); empty when it is.
     QString problemOf(int row) const;
+    // Whether a zone applies to the flight as last checked: a geographical zone's schedule against
+    // the flight's window (the route's planned start, or now, to its end); any other zone always.
+    bool appliesToFlight(int row) const;
+    // Whether any zone loaded is a geographical zone (ED-269, ED-318): the map then shows its legend.
+    bool hasGeographicalZones() const;
+    GeoZoneDetails selectedGeoZone() const;
 
     double buffer() const { return m_buffer; }
     void setBuffer(double metres);
@@ -137,6 +170,7 @@ signals:
     void bufferChanged();
     void problemsChanged();
     void selectedZoneChanged();
+    void selectedGeoZoneChanged();  // another zone chosen, its authorisation recorded, the window moved
     void crossingsChanged();
     void areaChanged();
 

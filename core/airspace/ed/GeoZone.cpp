@@ -90,6 +90,17 @@ QString restrictionName(Restriction restriction)
     return {};
 }
 
+QString restrictionWords(Restriction restriction)
+{
+    switch (restriction) {
+    case Restriction::Prohibited: return QCoreApplication::translate("GeoZone", "Prohibited");
+    case Restriction::ReqAuthorisation: return QCoreApplication::translate("GeoZone", "Authorisation needed");
+    case Restriction::Conditional: return QCoreApplication::translate("GeoZone", "Conditions apply");
+    case Restriction::NoRestriction: return QCoreApplication::translate("GeoZone", "Information only");
+    }
+    return {};
+}
+
 std::optional<Restriction> restrictionFromName(const QString &name)
 {
     if (name == QLatin1String("PROHIBITED"))

@@ -23,6 +23,8 @@ using mission::GeoPoint;
 enum class Restriction { Prohibited, ReqAuthorisation, Conditional, NoRestriction };
 // ED-269's spelling ("PROHIBITED", "REQ_AUTHORISATION", "CONDITIONAL", "NO_RESTRICTION").
 QString restrictionName(Restriction restriction);
+// In the operator's words: "Prohibited", "Authorisation needed", "Conditions apply", "Information only".
+QString restrictionWords(Restriction restriction);
 // Either standard's spelling (ED-318's "REQ_AUTHORIZATION" too); nullopt for anything else.
 std::optional<Restriction> restrictionFromName(const QString &name);
 

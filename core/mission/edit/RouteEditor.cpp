@@ -17,6 +17,7 @@
 #include "SetNfzChecksCommand.h"
 #include "SetRouteSettingsCommand.h"
 
+#include <QTimeZone>
 #include <QLocale>
 #include <QUndoStack>
 
@@ -512,6 +513,22 @@ void RouteEditor::setPlannedStart(const QDateTime &start)
     if (s.plannedStart != m_model->settings().plannedStart)
         setSettings(s, s.plannedStart ? tr("Plan the start for %1").arg(QLocale().toString(start.toLocalTime(), QLocale::ShortFormat))
                                       : tr("Start now"));
+}
+
+bool RouteEditor::setPlannedStartText(const QString &localText)
+{
+    const QString text = localText.trimmed();
+    if (text.isEmpty()) {
+        setPlannedStart({});
+        return true;
+    }
+    QDateTime local = QDateTime::fromString(text, QLatin1String(kPlannedStartFormat));
+    if (!local.isValid())
+        return refuse(tr("\"%1\" is no start time: type it as %2, e.g. %3.")
+                          .arg(text, QLatin1String(kPlannedStartFormat), QDateTime::currentDateTime().toString(QLatin1String(kPlannedStartFormat))));
+    local.setTimeZone(QTimeZone::systemTimeZone());
+    setPlannedStart(local);
+    return true;
 }
 
 bool RouteEditor::recordAuthorisation(const QString &identifier, const QString &reference)

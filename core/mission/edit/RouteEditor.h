@@ -120,6 +120,10 @@ public:
     // When the flight is planned to start (kept in UTC); an invalid time clears it: the flight is
     // checked as starting now. One undo step.
     Q_INVOKABLE void setPlannedStart(const QDateTime &start);
+    // The planned start as the operator types it, in their own time zone: "2026-12-05 18:00"
+    // (kPlannedStartFormat); empty text clears it. Anything else is refused (false, refused()).
+    Q_INVOKABLE bool setPlannedStartText(const QString &localText);
+    static constexpr const char *kPlannedStartFormat = "yyyy-MM-dd HH:mm";
     // Records the reference an authority gave for the geographical zone `identifier`; an empty
     // reference removes the authorisation. One undo step; false (refused) without an identifier.
     Q_INVOKABLE bool recordAuthorisation(const QString &identifier, const QString &reference);

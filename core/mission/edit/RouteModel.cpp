@@ -5,6 +5,8 @@
 #include "AreaScanPlanner.h"
 #include "SegmentParameters.h"
 
+#include <QTimeZone>
+
 #include <algorithm>
 #include <cmath>
 
@@ -118,6 +120,12 @@ std::optional<AreaScanOutcome> RouteModel::scanPlan(int row) const
         return std::nullopt;
     const std::optional<AreaScan> scan = scanOf(segment(row), m_route.settings.profile.cameras);
     return scan ? std::optional<AreaScanOutcome>(m_scanPlans.outcome(*scan)) : std::nullopt;
+}
+
+QString RouteModel::plannedStartText() const
+{
+    const std::optional<QDateTime> &start = m_route.settings.plannedStart;
+    return start ? start->toTimeZone(QTimeZone::systemTimeZone()).toString(QStringLiteral("yyyy-MM-dd HH:mm")) : QString();
 }
 
 QStringList RouteModel::authorisedZones() const

@@ -27,6 +27,9 @@ class RouteModel : public QAbstractListModel
     Q_PROPERTY(bool checkCustomNfz READ checkCustomNfz NOTIFY settingsChanged)
     // The flight's planned start (UTC); invalid when none is planned (the flight starts now).
     Q_PROPERTY(QDateTime plannedStart READ plannedStart NOTIFY settingsChanged)
+    // The planned start in the operator's time zone as RouteEditor::setPlannedStartText reads it;
+    // empty when none is planned (the flight is checked as starting now).
+    Q_PROPERTY(QString plannedStartText READ plannedStartText NOTIFY settingsChanged)
     // The geographical zones the operator recorded an authorisation for (authorisationFor gives it).
     Q_PROPERTY(QStringList authorisedZones READ authorisedZones NOTIFY settingsChanged)
 
@@ -70,6 +73,7 @@ public:
     bool checkAerodromeNfz() const { return m_route.settings.checkAerodromeNfz; }
     bool checkCustomNfz() const { return m_route.settings.checkCustomNfz; }
     QDateTime plannedStart() const { return m_route.settings.plannedStart.value_or(QDateTime()); }
+    QString plannedStartText() const;
     QStringList authorisedZones() const;
     Q_INVOKABLE QString authorisationFor(const QString &identifier) const;
 
