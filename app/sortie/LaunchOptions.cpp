@@ -223,6 +223,7 @@ client::ClientGraph::Options LaunchOptions::graphOptions() const
     graph.sbsAddress = sbsAddress;
     graph.autosaveDirectory = autosaveDir.isEmpty() ? dataFolder("SORTIE_AUTOSAVE_DIR", QStringLiteral("autosave"), demo) : autosaveDir;
     graph.flightLogDirectory = dataFolder("SORTIE_FLIGHTLOG_DIR", QStringLiteral("flightlogs"), demo);
+    graph.zoneFeedDirectory = dataFolder("SORTIE_ZONE_FEED_DIR", QStringLiteral("zone-feeds"), demo);
     return graph;
 }
 

@@ -34,6 +34,7 @@
 #include "VciFenceBuilder.h"
 #include "VehicleFleet.h"
 #include "ServerZones.h"
+#include "ZoneFeed.h"
 #include "ZoneSharing.h"
 #include "ZoneAlertMonitor.h"
 
@@ -118,6 +119,9 @@ ClientGraph::ClientGraph(QSettings *storage, Options options, QObject *parent)
     QObject::connect(m_serverZones.get(), &airspace::ServerZones::zonesChanged, m_airspace.get(),
                      [this] { m_airspace->setServerZones(m_serverZones->zones()); });
     m_zoneSharing = std::make_unique<airspace::ZoneSharing>(m_airspace.get(), m_serverZones.get());
+    // Published zone files fetched from a URL: their copies kept for flying offline, read as zone files.
+    m_zoneFeed = std::make_unique<airspace::ZoneFeed>(options.zoneFeedDirectory);
+    QObject::connect(m_zoneFeed.get(), &airspace::ZoneFeed::fetched, m_airspace.get(), &airspace::Airspace::loadFeedCopy);
 
     if (!options.autosaveDirectory.isEmpty()) {
         // Recovery looks first, so the autosave of this run takes a slot of its own.
@@ -169,6 +173,7 @@ ClientGraph::~ClientGraph()
     m_deconfliction.reset();
     m_offlineMaps.reset();
     m_traffic.reset();
+    m_zoneFeed.reset();
     m_zoneSharing.reset();
     m_serverZones.reset();
     m_fleetRoutes.reset();

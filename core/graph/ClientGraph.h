@@ -26,6 +26,7 @@ Q_MOC_INCLUDE("ServerHistoryRequest.h")
 Q_MOC_INCLUDE("Traffic.h")
 Q_MOC_INCLUDE("VehicleFleet.h")
 Q_MOC_INCLUDE("ZoneAlertMonitor.h")
+Q_MOC_INCLUDE("ZoneFeed.h")
 Q_MOC_INCLUDE("ZoneSharing.h")
 
 namespace sortie::hci {
@@ -54,6 +55,7 @@ class RouteEndurance;
 namespace sortie::airspace {
 class Airspace;
 class ServerZones;
+class ZoneFeed;
 class ZoneSharing;
 } // namespace sortie::airspace
 
@@ -107,6 +109,7 @@ class ClientGraph : public QObject
     Q_PROPERTY(sortie::endurance::RouteEndurance *endurance READ enduranceForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::airspace::Airspace *airspace READ airspaceForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::airspace::ZoneSharing *zoneSharing READ zoneSharingForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::airspace::ZoneFeed *zoneFeed READ zoneFeedForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::traffic::Traffic *traffic READ trafficForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::maptiles::OfflineMaps *offlineMaps READ offlineMapsForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::deconfliction::ProximityMonitor *proximity READ proximityForQml CONSTANT FINAL)        // nullable: vehicles
@@ -125,6 +128,7 @@ public:
         QString flightLogDirectory; // empty: the recorder exists (for its settings) but records nothing
         bool vehicles = true;       // false: no fleet (a fault test of the connection alone)
         QString sbsAddress;         // an ADS-B receiver's SBS-1 feed; empty: the setting traffic/sbsAddress
+        QString zoneFeedDirectory;  // where published zone files fetched from a URL are kept; empty: none can be
     };
 
     // `storage` (not owned, required) holds the operator's settings: terrain folder and source order,
@@ -151,6 +155,7 @@ public:
     airspace::ServerZones &serverZones() { return *m_serverZones; }
     // Drawn zones sent to the server; the server's custom zones edited on the map and deleted.
     airspace::ZoneSharing &zoneSharing() { return *m_zoneSharing; }
+    airspace::ZoneFeed &zoneFeed() { return *m_zoneFeed; }
     // Manned traffic: the picture, the receiver's feed and the server's ADS-B list.
     traffic::Traffic &traffic() { return *m_traffic; }
     // Maps taken offline: the area, the download into an MBTiles pack, cache-only (docs/offline-maps.md).
@@ -190,6 +195,7 @@ private:
     endurance::RouteEndurance *enduranceForQml() const { return m_endurance.get(); }
     airspace::Airspace *airspaceForQml() const { return m_airspace.get(); }
     airspace::ZoneSharing *zoneSharingForQml() const { return m_zoneSharing.get(); }
+    airspace::ZoneFeed *zoneFeedForQml() const { return m_zoneFeed.get(); }
     traffic::Traffic *trafficForQml() const { return m_traffic.get(); }
     maptiles::OfflineMaps *offlineMapsForQml() const { return m_offlineMaps.get(); }
     deconfliction::ProximityMonitor *proximityForQml() const { return m_proximity.get(); }
@@ -210,6 +216,7 @@ private:
     std::unique_ptr<VehicleFleet> m_fleet;
     std::unique_ptr<airspace::ServerZones> m_serverZones;
     std::unique_ptr<airspace::ZoneSharing> m_zoneSharing;
+    std::unique_ptr<airspace::ZoneFeed> m_zoneFeed;
     std::unique_ptr<traffic::Traffic> m_traffic;
     std::unique_ptr<maptiles::OfflineMaps> m_offlineMaps;
     std::unique_ptr<FleetRoutes> m_fleetRoutes;

@@ -39,6 +39,7 @@ Page {
     readonly property RouteDeconfliction deconfliction: graph.deconfliction // the open route's conflicts with them; null without vehicles
     readonly property Airspace airspace: graph.airspace             // the zones: on the map, in the zone panel, on the profile
     readonly property ZoneSharing zoneSharing: graph.zoneSharing    // the zone panel's server actions
+    readonly property ZoneFeed zoneFeed: graph.zoneFeed             // published zone files fetched from a URL
     property alias zoneLayer: zoneLayer
     property alias zonePanel: zonePanel
     // Ctrl+Z goes to the zone editor while the zone panel is open (zones are not part of the route).
@@ -316,6 +317,7 @@ Page {
                 height: Math.min(implicitHeight, parent.height - anchors.topMargin - 50)
                 airspace: page.airspace
                 sharing: page.zoneSharing
+                feed: page.zoneFeed
                 tool: page.tool
                 draftCount: polygonDraft.count
                 onToolRequested: tool => { polygonDraft.clear(); page.tool = tool }

@@ -13,6 +13,7 @@ Frame {
     required property Airspace airspace
     required property ZoneSharing sharing  // send a drawn zone; edit or delete a server custom zone
     required property RouteEditor routeEditor  // an authorisation for a geographical zone is the route's
+    required property ZoneFeed feed            // a published zone file fetched from its URL and kept
     required property string tool          // the page's drawing tool ("zonePolygon", "zoneCircle" or another)
     required property int draftCount       // corners clicked so far while drawing a polygon
     signal toolRequested(string tool)      // "" ends drawing
@@ -37,6 +38,54 @@ Frame {
             Label { textFormat: Text.PlainText; text: qsTr("Zones (%1)").arg(panel.airspace.count); font.bold: true; Layout.fillWidth: true }
             ToolButton { objectName: "zoneUndo"; text: qsTr("Undo"); enabled: panel.editor.canUndo; onClicked: panel.editor.undo() }
             ToolButton { objectName: "zoneRedo"; text: qsTr("Redo"); enabled: panel.editor.canRedo; onClicked: panel.editor.redo() }
+        }
+        // A published zone file (a country's ED-269 or ED-318 feed) from its web address; kept for
+        // flying offline and fetched again with Refresh.
+        RowLayout {
+            Layout.fillWidth: true
+            TextField {
+                id: feedUrl
+                objectName: "zoneFeedUrl"
+                Layout.fillWidth: true
+                placeholderText: qsTr("Zone feed URL (https://…)")
+                selectByMouse: true
+                onAccepted: fetchButton.clicked()
+            }
+            Button {
+                id: fetchButton
+                objectName: "fetchZoneFeedButton"
+                text: panel.feed.busy ? qsTr("Fetching…") : qsTr("Fetch")
+                enabled: !panel.feed.busy && feedUrl.text.length > 0
+                onClicked: panel.feed.fetch(feedUrl.text)
+            }
+            Button {
+                objectName: "refreshZoneFeedsButton"
+                text: qsTr("Refresh")
+                visible: panel.airspace.feedUrls.length > 0
+                enabled: !panel.feed.busy
+                onClicked: panel.feed.fetch(panel.airspace.feedUrls[0])
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("Fetch the zone feed again from %1").arg(panel.airspace.feedUrls.length > 0 ? panel.airspace.feedUrls[0].toString() : "")
+            }
+        }
+        Label {
+            textFormat: Text.PlainText
+            objectName: "zoneFeedProblem"
+            visible: text.length > 0
+            text: panel.feed.problem
+            color: panel.theme.problemText
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
+        }
+        Label {
+            textFormat: Text.PlainText
+            objectName: "zoneDataAge"
+            visible: text.length > 0
+            text: panel.airspace.dataAge
+            color: panel.airspace.dataStale ? panel.theme.warningText : palette.placeholderText
+            font.pixelSize: panel.theme.smallFontSize
+            wrapMode: Text.Wrap
+            Layout.fillWidth: true
         }
         RowLayout {
             Layout.fillWidth: true

@@ -37,6 +37,7 @@
 #include "FleetRoutes.h"
 #include "VehicleLink.h"
 #include "ZoneEditor.h"
+#include "ZoneFeed.h"
 #include "ZoneSharing.h"
 #include "ZoneListModel.h"
 
@@ -237,6 +238,13 @@ struct DrawingToolForeign
     Q_GADGET
     QML_FOREIGN(sortie::mission::DrawingTool)
     QML_VALUE_TYPE(drawingTool)
+};
+struct ZoneFeedForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::airspace::ZoneFeed)
+    QML_NAMED_ELEMENT(ZoneFeed)
+    QML_UNCREATABLE("made by the program and handed to the views")
 };
 struct ZoneSharingForeign
 {

@@ -8,16 +8,17 @@
 #include "ZoneFiles.h"
 #include "ZoneListModel.h"
 
+#include <QCoreApplication>
 #include <QDateTime>
 #include <QFile>
-#include <QTimeZone>
 #include <QFileInfo>
 #include <QGeoCoordinate>
 #include <QLoggingCategory>
 #include <QSettings>
+#include <QTimeZone>
 
+#include <algorithm>
 #include <cmath>
-#include <QCoreApplication>
 
 Q_LOGGING_CATEGORY(lcAirspace, "sortie.airspace")
 
@@ -26,6 +27,33 @@ namespace sortie::airspace {
 namespace {
 const QString kBufferKey = QStringLiteral("airspace/buffer");
 const QString kFilesKey = QStringLiteral("airspace/zoneFiles");
+// A feed's copy -> "<fetched, ISO 8601 UTC> <url>".
+const QString kFeedsKey = QStringLiteral("airspace/feeds");
+
+struct FeedRecord
+{
+    QUrl url;
+    QDateTime fetched;
+};
+
+std::optional<FeedRecord> feedRecordOf(const QSettings &settings, const QString &copy)
+{
+    const QString value = settings.value(kFeedsKey).toMap().value(copy).toString();
+    const qsizetype space = value.indexOf(QLatin1Char(' '));
+    if (space <= 0)
+        return std::nullopt;
+    FeedRecord r{QUrl(value.mid(space + 1)), QDateTime::fromString(value.left(space), Qt::ISODate)};
+    return r.url.isValid() && r.fetched.isValid() ? std::optional(r) : std::nullopt;
+}
+
+// "today", "yesterday", "9 days ago".
+QString daysAgo(const QDateTime &then, const QDateTime &now)
+{
+    const qint64 days = then.daysTo(now);
+    return days <= 0 ? QCoreApplication::translate("Airspace", "today")
+         : days == 1 ? QCoreApplication::translate("Airspace", "yesterday")
+                     : QCoreApplication::translate("Airspace", "%n days ago", nullptr, int(days));
+}
 
 // The flown path between two distances from the route's start along one leg: the leg's own points
 // between them and the two ends interpolated (pieces are short and straight).
@@ -260,12 +288,60 @@ bool Airspace::loadFile(const QString &path)
     return true;
 }
 
+bool Airspace::loadFeedCopy(const QString &copy, const QUrl &url, const QDateTime &fetchedAtUtc)
+{
+    QVariantMap feeds = m_settings->value(kFeedsKey).toMap();
+    feeds.insert(copy, QStringLiteral("%1 %2").arg(fetchedAtUtc.toUTC().toString(Qt::ISODate), url.toString(QUrl::FullyEncoded)));
+    m_settings->setValue(kFeedsKey, feeds);
+    return loadFile(copy);
+}
+
+QString Airspace::dataAge() const
+{
+    const QDateTime now = QDateTime::currentDateTimeUtc();
+    QStringList lines;
+    for (const LoadedFile &f : m_files) {
+        const QString name = QFileInfo(f.path).fileName();
+        if (const std::optional<FeedRecord> feed = feedRecordOf(*m_settings, f.path)) {
+            lines << tr("%1: fetched from %2 %3").arg(name, feed->url.host(), daysAgo(feed->fetched, now));
+        } else {
+            const QDateTime changed = QFileInfo(f.path).lastModified().toUTC();
+            lines << (changed.isValid() ? tr("%1: a file changed %2").arg(name, daysAgo(changed, now)) : name);
+        }
+    }
+    if (dataStale())
+        lines << tr("Some zone data is older than a week: fetch it or load it again before you fly.");
+    return lines.join(QLatin1Char('\n'));
+}
+
+bool Airspace::dataStale() const
+{
+    const QDateTime weekAgo = QDateTime::currentDateTimeUtc().addDays(-kStaleDays);
+    return std::any_of(m_files.begin(), m_files.end(), [&](const LoadedFile &f) {
+        const std::optional<FeedRecord> feed = feedRecordOf(*m_settings, f.path);
+        const QDateTime at = feed ? feed->fetched : QFileInfo(f.path).lastModified().toUTC();
+        return at.isValid() && at < weekAgo;
+    });
+}
+
+QList<QUrl> Airspace::feedUrls() const
+{
+    QList<QUrl> urls;
+    for (const LoadedFile &f : m_files)
+        if (const std::optional<FeedRecord> feed = feedRecordOf(*m_settings, f.path))
+            urls << feed->url;
+    return urls;
+}
+
 void Airspace::removeFile(const QString &path)
 {
     const auto before = m_files.size();
     m_files.erase(std::remove_if(m_files.begin(), m_files.end(), [&](const LoadedFile &f) { return f.path == path; }), m_files.end());
     if (m_files.size() == before)
         return;
+    QVariantMap feeds = m_settings->value(kFeedsKey).toMap();
+    if (feeds.remove(path))
+        m_settings->setValue(kFeedsKey, feeds);
     rememberFiles();
     rebuild();
 }

@@ -93,6 +93,11 @@ class Airspace : public QObject
     // How many stretches of the route cross zones, as the last check found (crossings() has them).
     Q_PROPERTY(int crossingCount READ crossingCount NOTIFY crossingsChanged)
     Q_PROPERTY(bool hasGeographicalZones READ hasGeographicalZones NOTIFY changed)
+    // How old the zone data is, a line per file ("swiss.json: fetched from … 2 days ago"), and
+    // whether any of it is older than a week (the zone panel then warns).
+    Q_PROPERTY(QString dataAge READ dataAge NOTIFY changed)
+    Q_PROPERTY(bool dataStale READ dataStale NOTIFY changed)
+    Q_PROPERTY(QList<QUrl> feedUrls READ feedUrls NOTIFY changed)  // the feeds loaded, for fetching them again
     Q_PROPERTY(sortie::airspace::GeoZoneDetails selectedGeoZone READ selectedGeoZone NOTIFY selectedGeoZoneChanged)
 
 public:
@@ -141,6 +146,13 @@ public:
     Q_INVOKABLE bool loadFile(const QString &path);
     Q_INVOKABLE bool loadFileUrl(const QUrl &file) { return loadFile(file.toLocalFile()); }
     Q_INVOKABLE void removeFile(const QString &path);
+    // A feed's copy as ZoneFeed kept it: loaded as a zone file, remembered with its URL and the time
+    // it was fetched (what dataAge says of it, across restarts).
+    bool loadFeedCopy(const QString &copy, const QUrl &url, const QDateTime &fetchedAtUtc);
+    QString dataAge() const;
+    bool dataStale() const;
+    QList<QUrl> feedUrls() const;
+    static constexpr int kStaleDays = 7;
     // The operator's switch: an inactive zone is kept and drawn, not checked.
     Q_INVOKABLE void setActive(int row, bool active);
     // Selects the zone an airspace issue names (its message as the rule wrote it); false when the
