@@ -228,6 +228,7 @@ QStringList ClientGraph::wiring() const
           << QStringLiteral("zone alerts: %1").arg(yesNo(m_zoneAlerts != nullptr, "the fleet against the airspace", "none"))
           << QStringLiteral("uploaded fences: %1").arg(yesNo(m_uploadedFenceAlerts && m_uploadedFenceAlerts->isFollowing(), "each vehicle's own zone alerts", "none"))
           << QStringLiteral("upload fence: %1").arg(yesNo(m_airspaceToVehicles->isFollowing(), "the airspace beyond the route's own fence", "none"))
+          << QStringLiteral("zone feeds: %1").arg(yesNo(!m_zoneFeed->folder().isEmpty(), "kept for flying offline, read into the airspace", "nowhere to keep them"))
           << QStringLiteral("autosave: %1").arg(yesNo(m_autosave && m_autosave->isActive(), "on", "off"))
           << QStringLiteral("recovery: %1").arg(yesNo(m_recovery != nullptr, "on", "off"))
           << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))

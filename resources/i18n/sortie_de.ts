@@ -301,6 +301,21 @@
         <source>server zone %1, edited here</source>
         <translation>Serverzone %1, hier bearbeitet</translation>
     </message>
+    <message>
+        <source>today</source>
+        <translation>heute</translation>
+    </message>
+    <message>
+        <source>yesterday</source>
+        <translation>gestern</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n day(s) ago</source>
+        <translation>
+            <numerusform>vor %n Tag</numerusform>
+            <numerusform>vor %n Tagen</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>AirspaceRule</name>
@@ -965,6 +980,22 @@
         <source>ask %1 before</source>
         <translation>%1 vorher anfragen</translation>
     </message>
+    <message>
+        <source>Prohibited</source>
+        <translation>Verboten</translation>
+    </message>
+    <message>
+        <source>Authorisation needed</source>
+        <translation>Genehmigung nötig</translation>
+    </message>
+    <message>
+        <source>Conditions apply</source>
+        <translation>Mit Auflagen</translation>
+    </message>
+    <message>
+        <source>Information only</source>
+        <translation>Nur Information</translation>
+    </message>
 </context>
 <context>
     <name>Geotag</name>
@@ -1075,6 +1106,14 @@
     <message>
         <source>%1: vehicle %2 reported no position</source>
         <translation>%1: Fahrzeug %2 hat keine Position gemeldet</translation>
+    </message>
+    <message>
+        <source>exiv2 wrote its tags but they do not read back</source>
+        <translation>exiv2 hat die Tags geschrieben, liest sie aber nicht zurück</translation>
+    </message>
+    <message>
+        <source>exiv2 wrote a copy it cannot read back (%1)</source>
+        <translation>exiv2 hat eine Kopie geschrieben, die es nicht zurücklesen kann (%1)</translation>
     </message>
 </context>
 <context>
@@ -3610,6 +3649,18 @@ Ereignisse: %1
         <source>Select the segment</source>
         <translation>Segment auswählen</translation>
     </message>
+    <message>
+        <source>Planned start</source>
+        <translation>Geplanter Start</translation>
+    </message>
+    <message>
+        <source>now (or e.g. %1)</source>
+        <translation>jetzt (oder z. B. %1)</translation>
+    </message>
+    <message>
+        <source>Year-month-day hours:minutes, your time zone; empty: the flight starts now</source>
+        <translation>Jahr-Monat-Tag Stunden:Minuten, Ihre Zeitzone; leer: der Flug beginnt jetzt</translation>
+    </message>
 </context>
 <context>
     <name>RouteValidator</name>
@@ -3692,10 +3743,6 @@ Ereignisse: %1
     <message>
         <source>Advanced parameters</source>
         <translation>Erweiterte Parameter</translation>
-    </message>
-    <message>
-        <source>%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos</source>
-        <translation>%1 m hoch · %2 cm/px · Abdeckung %3 × %4 m · Bahnabstand %5 m · Foto alle %6 m · %7 Fotos</translation>
     </message>
     <message>
         <source>m</source>
@@ -5251,6 +5298,29 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>ZoneLegend</name>
+    <message>
+        <source>Prohibited</source>
+        <translation>Verboten</translation>
+    </message>
+    <message>
+        <source>Authorisation needed</source>
+        <translation>Genehmigung nötig</translation>
+    </message>
+    <message>
+        <source>Conditions apply</source>
+        <translation>Mit Auflagen</translation>
+    </message>
+    <message>
+        <source>Information only</source>
+        <translation>Nur Information</translation>
+    </message>
+    <message>
+        <source>Not in force during the flight</source>
+        <translation>Während des Flugs nicht in Kraft</translation>
+    </message>
+</context>
+<context>
     <name>ZonePanel</name>
     <message>
         <source>Load zones</source>
@@ -5400,6 +5470,46 @@ Ereignisse: %1
         <source>Delete &apos;%1&apos; on the server, for every operator?</source>
         <translation>„%1“ auf dem Server löschen, für alle Bediener?</translation>
     </message>
+    <message>
+        <source>Zone feed URL (https://…)</source>
+        <translation>URL des Zonen-Feeds (https://…)</translation>
+    </message>
+    <message>
+        <source>Fetching…</source>
+        <translation>Wird abgerufen…</translation>
+    </message>
+    <message>
+        <source>Fetch</source>
+        <translation>Abrufen</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Aktualisieren</translation>
+    </message>
+    <message>
+        <source>Fetch the zone feed again from %1</source>
+        <translation>Den Zonen-Feed erneut von %1 abrufen</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>Authorisation reference</source>
+        <translation>Genehmigungsnummer</translation>
+    </message>
+    <message>
+        <source>Change</source>
+        <translation>Ändern</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>Eintragen</translation>
+    </message>
+    <message>
+        <source>Kept with the route; the check then warns instead of refusing (empty: removed)</source>
+        <translation>Wird mit der Route gespeichert; die Prüfung warnt dann, statt abzulehnen (leer: entfernt)</translation>
+    </message>
 </context>
 <context>
     <name>sortie</name>
@@ -5446,6 +5556,37 @@ Ereignisse: %1
     <message>
         <source>Connect a vehicle directly over VCI: tcp://host:port, vci+tls://host:port[?sha256=FINGERPRINT] or serial:///dev/ttyX?baud=57600.</source>
         <translation>Ein Fahrzeug direkt über VCI verbinden: tcp://host:port, vci+tls://host:port[?sha256=FINGERABDRUCK] oder serial:///dev/ttyX?baud=57600.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::Airspace</name>
+    <message>
+        <source>Reason: %1</source>
+        <translation>Grund: %1</translation>
+    </message>
+    <message>
+        <source>When: %1</source>
+        <translation>Wann: %1</translation>
+    </message>
+    <message>
+        <source>Not in force during the planned flight.</source>
+        <translation>Während des geplanten Flugs nicht in Kraft.</translation>
+    </message>
+    <message>
+        <source>Authority: %1</source>
+        <translation>Behörde: %1</translation>
+    </message>
+    <message>
+        <source>%1: fetched from %2 %3</source>
+        <translation>%1: von %2 abgerufen, %3</translation>
+    </message>
+    <message>
+        <source>%1: a file changed %2</source>
+        <translation>%1: eine Datei, geändert %2</translation>
+    </message>
+    <message>
+        <source>Some zone data is older than a week: fetch it or load it again before you fly.</source>
+        <translation>Einige Zonendaten sind älter als eine Woche: rufen Sie sie ab oder laden Sie sie vor dem Flug neu.</translation>
     </message>
 </context>
 <context>
@@ -5635,6 +5776,45 @@ Ereignisse: %1
     <message>
         <source>Zone %1</source>
         <translation>Zone %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ZoneFeed</name>
+    <message>
+        <source>Another zone feed is being fetched.</source>
+        <translation>Ein anderer Zonen-Feed wird gerade abgerufen.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no web address (http:// or https://).</source>
+        <translation>„%1“ ist keine Webadresse (http:// oder https://).</translation>
+    </message>
+    <message>
+        <source>There is no folder to keep the zone feed in (%1).</source>
+        <translation>Es gibt keinen Ordner für den Zonen-Feed (%1).</translation>
+    </message>
+    <message>
+        <source>The zone feed is larger than %1 MiB; it was not kept.</source>
+        <translation>Der Zonen-Feed ist größer als %1 MiB; er wurde nicht gespeichert.</translation>
+    </message>
+    <message>
+        <source>The zone feed&apos;s fetch was stopped (cancelled, or no answer for %1 s).</source>
+        <translation>Der Abruf des Zonen-Feeds wurde beendet (abgebrochen oder %1 s keine Antwort).</translation>
+    </message>
+    <message>
+        <source>The zone feed&apos;s server answered HTTP %1.</source>
+        <translation>Der Server des Zonen-Feeds antwortete mit HTTP %1.</translation>
+    </message>
+    <message>
+        <source>The zone feed cannot be fetched: %1.</source>
+        <translation>Der Zonen-Feed kann nicht abgerufen werden: %1.</translation>
+    </message>
+    <message>
+        <source>The zone feed&apos;s server sent nothing.</source>
+        <translation>Der Server des Zonen-Feeds hat nichts gesendet.</translation>
+    </message>
+    <message>
+        <source>The zone feed cannot be kept in %1: %2.</source>
+        <translation>Der Zonen-Feed kann nicht in %1 gespeichert werden: %2.</translation>
     </message>
 </context>
 <context>
@@ -7053,6 +7233,10 @@ Ereignisse: %1
         <source>Record authorisation %1 for %2</source>
         <translation>Genehmigung %1 für %2 eintragen</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is no start time: type it as %2, e.g. %3.</source>
+        <translation>„%1“ ist keine Startzeit: geben Sie sie als %2 ein, z. B. %3.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::mission::SegmentEditorModel</name>
@@ -7067,6 +7251,10 @@ Ereignisse: %1
     <message>
         <source>%1 needs a number, not &quot;%2&quot;.</source>
         <translation>%1 braucht eine Zahl, nicht „%2“.</translation>
+    </message>
+    <message>
+        <source>%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos</source>
+        <translation>%1 m hoch · %2 cm/px · Bildfläche %3 × %4 m · Bahnen %5 m auseinander · Foto alle %6 m · %7 Fotos</translation>
     </message>
 </context>
 <context>
@@ -7616,6 +7804,36 @@ Nicht geprüft: %1</translation>
 Switched off: not checked</source>
         <translation>
 Ausgeschaltet: nicht geprüft</translation>
+    </message>
+    <message>
+        <source>
+%1 (%2 %3)</source>
+        <translation>
+%1 (%2 %3)</translation>
+    </message>
+    <message>
+        <source>
+Reason: %1</source>
+        <translation>
+Grund: %1</translation>
+    </message>
+    <message>
+        <source>
+When: %1</source>
+        <translation>
+Wann: %1</translation>
+    </message>
+    <message>
+        <source>
+Not in force during the planned flight</source>
+        <translation>
+Während des geplanten Flugs nicht in Kraft</translation>
+    </message>
+    <message>
+        <source>
+Authority: %1</source>
+        <translation>
+Behörde: %1</translation>
     </message>
 </context>
 <context>

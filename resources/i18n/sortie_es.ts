@@ -301,6 +301,21 @@
         <source>server zone %1, edited here</source>
         <translation>zona del servidor %1, editada aquí</translation>
     </message>
+    <message>
+        <source>today</source>
+        <translation>hoy</translation>
+    </message>
+    <message>
+        <source>yesterday</source>
+        <translation>ayer</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n day(s) ago</source>
+        <translation>
+            <numerusform>hace %n día</numerusform>
+            <numerusform>hace %n días</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>AirspaceRule</name>
@@ -965,6 +980,22 @@
         <source>ask %1 before</source>
         <translation>solicitar con %1 de antelación</translation>
     </message>
+    <message>
+        <source>Prohibited</source>
+        <translation>Prohibida</translation>
+    </message>
+    <message>
+        <source>Authorisation needed</source>
+        <translation>Requiere autorización</translation>
+    </message>
+    <message>
+        <source>Conditions apply</source>
+        <translation>Con condiciones</translation>
+    </message>
+    <message>
+        <source>Information only</source>
+        <translation>Solo información</translation>
+    </message>
 </context>
 <context>
     <name>Geotag</name>
@@ -1075,6 +1106,14 @@
     <message>
         <source>%1: vehicle %2 reported no position</source>
         <translation>%1: el vehículo %2 no informó de ninguna posición</translation>
+    </message>
+    <message>
+        <source>exiv2 wrote its tags but they do not read back</source>
+        <translation>exiv2 escribió las etiquetas pero no las vuelve a leer</translation>
+    </message>
+    <message>
+        <source>exiv2 wrote a copy it cannot read back (%1)</source>
+        <translation>exiv2 escribió una copia que no puede volver a leer (%1)</translation>
     </message>
 </context>
 <context>
@@ -3610,6 +3649,18 @@ eventos:   %1
         <source>Select the segment</source>
         <translation>Seleccionar el segmento</translation>
     </message>
+    <message>
+        <source>Planned start</source>
+        <translation>Inicio previsto</translation>
+    </message>
+    <message>
+        <source>now (or e.g. %1)</source>
+        <translation>ahora (o p. ej. %1)</translation>
+    </message>
+    <message>
+        <source>Year-month-day hours:minutes, your time zone; empty: the flight starts now</source>
+        <translation>Año-mes-día horas:minutos, su zona horaria; vacío: el vuelo empieza ahora</translation>
+    </message>
 </context>
 <context>
     <name>RouteValidator</name>
@@ -3692,10 +3743,6 @@ eventos:   %1
     <message>
         <source>Advanced parameters</source>
         <translation>Parámetros avanzados</translation>
-    </message>
-    <message>
-        <source>%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos</source>
-        <translation>%1 m de altura · %2 cm/px · huella %3 × %4 m · pasadas cada %5 m · foto cada %6 m · %7 fotos</translation>
     </message>
     <message>
         <source>m</source>
@@ -5251,6 +5298,29 @@ eventos:   %1
     </message>
 </context>
 <context>
+    <name>ZoneLegend</name>
+    <message>
+        <source>Prohibited</source>
+        <translation>Prohibida</translation>
+    </message>
+    <message>
+        <source>Authorisation needed</source>
+        <translation>Requiere autorización</translation>
+    </message>
+    <message>
+        <source>Conditions apply</source>
+        <translation>Con condiciones</translation>
+    </message>
+    <message>
+        <source>Information only</source>
+        <translation>Solo información</translation>
+    </message>
+    <message>
+        <source>Not in force during the flight</source>
+        <translation>No vigente durante el vuelo</translation>
+    </message>
+</context>
+<context>
     <name>ZonePanel</name>
     <message>
         <source>Load zones</source>
@@ -5400,6 +5470,46 @@ eventos:   %1
         <source>Delete &apos;%1&apos; on the server, for every operator?</source>
         <translation>¿Eliminar «%1» en el servidor, para todos los operadores?</translation>
     </message>
+    <message>
+        <source>Zone feed URL (https://…)</source>
+        <translation>URL del feed de zonas (https://…)</translation>
+    </message>
+    <message>
+        <source>Fetching…</source>
+        <translation>Descargando…</translation>
+    </message>
+    <message>
+        <source>Fetch</source>
+        <translation>Descargar</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Actualizar</translation>
+    </message>
+    <message>
+        <source>Fetch the zone feed again from %1</source>
+        <translation>Descargar de nuevo el feed de zonas de %1</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>Authorisation reference</source>
+        <translation>Referencia de la autorización</translation>
+    </message>
+    <message>
+        <source>Change</source>
+        <translation>Cambiar</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>Registrar</translation>
+    </message>
+    <message>
+        <source>Kept with the route; the check then warns instead of refusing (empty: removed)</source>
+        <translation>Se guarda con la ruta; la comprobación avisa en lugar de rechazar (vacío: se elimina)</translation>
+    </message>
 </context>
 <context>
     <name>sortie</name>
@@ -5446,6 +5556,37 @@ eventos:   %1
     <message>
         <source>Connect a vehicle directly over VCI: tcp://host:port, vci+tls://host:port[?sha256=FINGERPRINT] or serial:///dev/ttyX?baud=57600.</source>
         <translation>Conectar un vehículo directamente por VCI: tcp://host:puerto, vci+tls://host:puerto[?sha256=HUELLA] o serial:///dev/ttyX?baud=57600.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::Airspace</name>
+    <message>
+        <source>Reason: %1</source>
+        <translation>Motivo: %1</translation>
+    </message>
+    <message>
+        <source>When: %1</source>
+        <translation>Cuándo: %1</translation>
+    </message>
+    <message>
+        <source>Not in force during the planned flight.</source>
+        <translation>No vigente durante el vuelo previsto.</translation>
+    </message>
+    <message>
+        <source>Authority: %1</source>
+        <translation>Autoridad: %1</translation>
+    </message>
+    <message>
+        <source>%1: fetched from %2 %3</source>
+        <translation>%1: descargado de %2 %3</translation>
+    </message>
+    <message>
+        <source>%1: a file changed %2</source>
+        <translation>%1: un archivo modificado %2</translation>
+    </message>
+    <message>
+        <source>Some zone data is older than a week: fetch it or load it again before you fly.</source>
+        <translation>Algunos datos de zonas tienen más de una semana: descárguelos o cárguelos de nuevo antes de volar.</translation>
     </message>
 </context>
 <context>
@@ -5635,6 +5776,45 @@ eventos:   %1
     <message>
         <source>Zone %1</source>
         <translation>Zona %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ZoneFeed</name>
+    <message>
+        <source>Another zone feed is being fetched.</source>
+        <translation>Se está descargando otro feed de zonas.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no web address (http:// or https://).</source>
+        <translation>«%1» no es una dirección web (http:// o https://).</translation>
+    </message>
+    <message>
+        <source>There is no folder to keep the zone feed in (%1).</source>
+        <translation>No hay carpeta donde guardar el feed de zonas (%1).</translation>
+    </message>
+    <message>
+        <source>The zone feed is larger than %1 MiB; it was not kept.</source>
+        <translation>El feed de zonas ocupa más de %1 MiB; no se ha guardado.</translation>
+    </message>
+    <message>
+        <source>The zone feed&apos;s fetch was stopped (cancelled, or no answer for %1 s).</source>
+        <translation>La descarga del feed de zonas se detuvo (cancelada, o sin respuesta durante %1 s).</translation>
+    </message>
+    <message>
+        <source>The zone feed&apos;s server answered HTTP %1.</source>
+        <translation>El servidor del feed de zonas respondió HTTP %1.</translation>
+    </message>
+    <message>
+        <source>The zone feed cannot be fetched: %1.</source>
+        <translation>No se puede descargar el feed de zonas: %1.</translation>
+    </message>
+    <message>
+        <source>The zone feed&apos;s server sent nothing.</source>
+        <translation>El servidor del feed de zonas no envió nada.</translation>
+    </message>
+    <message>
+        <source>The zone feed cannot be kept in %1: %2.</source>
+        <translation>No se puede guardar el feed de zonas en %1: %2.</translation>
     </message>
 </context>
 <context>
@@ -7053,6 +7233,10 @@ eventos:   %1
         <source>Record authorisation %1 for %2</source>
         <translation>Registrar la autorización %1 para %2</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is no start time: type it as %2, e.g. %3.</source>
+        <translation>«%1» no es una hora de inicio: escríbala como %2, p. ej. %3.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::mission::SegmentEditorModel</name>
@@ -7067,6 +7251,10 @@ eventos:   %1
     <message>
         <source>%1 needs a number, not &quot;%2&quot;.</source>
         <translation>%1 necesita un número, no «%2».</translation>
+    </message>
+    <message>
+        <source>%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos</source>
+        <translation>%1 m de altura · %2 cm/px · huella %3 × %4 m · pasadas a %5 m · foto cada %6 m · %7 fotos</translation>
     </message>
 </context>
 <context>
@@ -7616,6 +7804,36 @@ No comprobada: %1</translation>
 Switched off: not checked</source>
         <translation>
 Desactivada: no comprobada</translation>
+    </message>
+    <message>
+        <source>
+%1 (%2 %3)</source>
+        <translation>
+%1 (%2 %3)</translation>
+    </message>
+    <message>
+        <source>
+Reason: %1</source>
+        <translation>
+Motivo: %1</translation>
+    </message>
+    <message>
+        <source>
+When: %1</source>
+        <translation>
+Cuándo: %1</translation>
+    </message>
+    <message>
+        <source>
+Not in force during the planned flight</source>
+        <translation>
+No vigente durante el vuelo previsto</translation>
+    </message>
+    <message>
+        <source>
+Authority: %1</source>
+        <translation>
+Autoridad: %1</translation>
     </message>
 </context>
 <context>

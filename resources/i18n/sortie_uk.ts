@@ -301,6 +301,22 @@
         <source>server zone %1, edited here</source>
         <translation>зона сервера %1, редагується тут</translation>
     </message>
+    <message>
+        <source>today</source>
+        <translation>сьогодні</translation>
+    </message>
+    <message>
+        <source>yesterday</source>
+        <translation>вчора</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n day(s) ago</source>
+        <translation>
+            <numerusform>%n день тому</numerusform>
+            <numerusform>%n дні тому</numerusform>
+            <numerusform>%n днів тому</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>AirspaceRule</name>
@@ -966,6 +982,22 @@
         <source>ask %1 before</source>
         <translation>звертатися за %1 до польоту</translation>
     </message>
+    <message>
+        <source>Prohibited</source>
+        <translation>Заборонено</translation>
+    </message>
+    <message>
+        <source>Authorisation needed</source>
+        <translation>Потрібен дозвіл</translation>
+    </message>
+    <message>
+        <source>Conditions apply</source>
+        <translation>Діють умови</translation>
+    </message>
+    <message>
+        <source>Information only</source>
+        <translation>Лише інформація</translation>
+    </message>
 </context>
 <context>
     <name>Geotag</name>
@@ -1076,6 +1108,14 @@
     <message>
         <source>%1: vehicle %2 reported no position</source>
         <translation>%1: апарат %2 не повідомив жодної позиції</translation>
+    </message>
+    <message>
+        <source>exiv2 wrote its tags but they do not read back</source>
+        <translation>exiv2 записав теги, але не читає їх назад</translation>
+    </message>
+    <message>
+        <source>exiv2 wrote a copy it cannot read back (%1)</source>
+        <translation>exiv2 записав копію, яку не може прочитати назад (%1)</translation>
     </message>
 </context>
 <context>
@@ -3619,6 +3659,18 @@ events:   %1
         <source>Select the segment</source>
         <translation>Вибрати сегмент</translation>
     </message>
+    <message>
+        <source>Planned start</source>
+        <translation>Запланований старт</translation>
+    </message>
+    <message>
+        <source>now (or e.g. %1)</source>
+        <translation>зараз (або напр. %1)</translation>
+    </message>
+    <message>
+        <source>Year-month-day hours:minutes, your time zone; empty: the flight starts now</source>
+        <translation>Рік-місяць-день години:хвилини, ваш часовий пояс; порожньо: політ починається зараз</translation>
+    </message>
 </context>
 <context>
     <name>RouteValidator</name>
@@ -3702,10 +3754,6 @@ events:   %1
     <message>
         <source>Advanced parameters</source>
         <translation>Додаткові параметри</translation>
-    </message>
-    <message>
-        <source>%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos</source>
-        <translation>висота %1 m · %2 cm/px · кадр %3 × %4 m · проходи через %5 m · фото кожні %6 m · фото: %7</translation>
     </message>
     <message>
         <source>m</source>
@@ -5267,6 +5315,29 @@ events:   %1
     </message>
 </context>
 <context>
+    <name>ZoneLegend</name>
+    <message>
+        <source>Prohibited</source>
+        <translation>Заборонено</translation>
+    </message>
+    <message>
+        <source>Authorisation needed</source>
+        <translation>Потрібен дозвіл</translation>
+    </message>
+    <message>
+        <source>Conditions apply</source>
+        <translation>Діють умови</translation>
+    </message>
+    <message>
+        <source>Information only</source>
+        <translation>Лише інформація</translation>
+    </message>
+    <message>
+        <source>Not in force during the flight</source>
+        <translation>Не діє під час польоту</translation>
+    </message>
+</context>
+<context>
     <name>ZonePanel</name>
     <message>
         <source>Load zones</source>
@@ -5416,6 +5487,46 @@ events:   %1
         <source>Delete &apos;%1&apos; on the server, for every operator?</source>
         <translation>Видалити «%1» на сервері для всіх операторів?</translation>
     </message>
+    <message>
+        <source>Zone feed URL (https://…)</source>
+        <translation>URL стрічки зон (https://…)</translation>
+    </message>
+    <message>
+        <source>Fetching…</source>
+        <translation>Завантаження…</translation>
+    </message>
+    <message>
+        <source>Fetch</source>
+        <translation>Завантажити</translation>
+    </message>
+    <message>
+        <source>Refresh</source>
+        <translation>Оновити</translation>
+    </message>
+    <message>
+        <source>Fetch the zone feed again from %1</source>
+        <translation>Завантажити стрічку зон знову з %1</translation>
+    </message>
+    <message>
+        <source>%1 · %2</source>
+        <translation>%1 · %2</translation>
+    </message>
+    <message>
+        <source>Authorisation reference</source>
+        <translation>Номер дозволу</translation>
+    </message>
+    <message>
+        <source>Change</source>
+        <translation>Змінити</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>Записати</translation>
+    </message>
+    <message>
+        <source>Kept with the route; the check then warns instead of refusing (empty: removed)</source>
+        <translation>Зберігається з маршрутом; перевірка тоді попереджає замість відмови (порожньо: видалено)</translation>
+    </message>
 </context>
 <context>
     <name>sortie</name>
@@ -5462,6 +5573,37 @@ events:   %1
     <message>
         <source>Connect a vehicle directly over VCI: tcp://host:port, vci+tls://host:port[?sha256=FINGERPRINT] or serial:///dev/ttyX?baud=57600.</source>
         <translation>Підключити апарат напряму через VCI: tcp://вузол:порт, vci+tls://вузол:порт[?sha256=ВІДБИТОК] або serial:///dev/ttyX?baud=57600.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::Airspace</name>
+    <message>
+        <source>Reason: %1</source>
+        <translation>Причина: %1</translation>
+    </message>
+    <message>
+        <source>When: %1</source>
+        <translation>Коли: %1</translation>
+    </message>
+    <message>
+        <source>Not in force during the planned flight.</source>
+        <translation>Не діє під час запланованого польоту.</translation>
+    </message>
+    <message>
+        <source>Authority: %1</source>
+        <translation>Орган: %1</translation>
+    </message>
+    <message>
+        <source>%1: fetched from %2 %3</source>
+        <translation>%1: завантажено з %2 %3</translation>
+    </message>
+    <message>
+        <source>%1: a file changed %2</source>
+        <translation>%1: файл, змінений %2</translation>
+    </message>
+    <message>
+        <source>Some zone data is older than a week: fetch it or load it again before you fly.</source>
+        <translation>Деякі дані зон старші за тиждень: завантажте їх знову перед польотом.</translation>
     </message>
 </context>
 <context>
@@ -5651,6 +5793,45 @@ events:   %1
     <message>
         <source>Zone %1</source>
         <translation>Зона %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::airspace::ZoneFeed</name>
+    <message>
+        <source>Another zone feed is being fetched.</source>
+        <translation>Інша стрічка зон уже завантажується.</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is no web address (http:// or https://).</source>
+        <translation>«%1» — не вебадреса (http:// або https://).</translation>
+    </message>
+    <message>
+        <source>There is no folder to keep the zone feed in (%1).</source>
+        <translation>Немає теки, щоб зберегти стрічку зон (%1).</translation>
+    </message>
+    <message>
+        <source>The zone feed is larger than %1 MiB; it was not kept.</source>
+        <translation>Стрічка зон більша за %1 МіБ; її не збережено.</translation>
+    </message>
+    <message>
+        <source>The zone feed&apos;s fetch was stopped (cancelled, or no answer for %1 s).</source>
+        <translation>Завантаження стрічки зон зупинено (скасовано або немає відповіді %1 с).</translation>
+    </message>
+    <message>
+        <source>The zone feed&apos;s server answered HTTP %1.</source>
+        <translation>Сервер стрічки зон відповів HTTP %1.</translation>
+    </message>
+    <message>
+        <source>The zone feed cannot be fetched: %1.</source>
+        <translation>Стрічку зон не вдається завантажити: %1.</translation>
+    </message>
+    <message>
+        <source>The zone feed&apos;s server sent nothing.</source>
+        <translation>Сервер стрічки зон нічого не надіслав.</translation>
+    </message>
+    <message>
+        <source>The zone feed cannot be kept in %1: %2.</source>
+        <translation>Стрічку зон не вдається зберегти в %1: %2.</translation>
     </message>
 </context>
 <context>
@@ -7090,6 +7271,10 @@ events:   %1
         <source>Record authorisation %1 for %2</source>
         <translation>Записати дозвіл %1 для %2</translation>
     </message>
+    <message>
+        <source>&quot;%1&quot; is no start time: type it as %2, e.g. %3.</source>
+        <translation>«%1» — не час старту: введіть як %2, напр. %3.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::mission::SegmentEditorModel</name>
@@ -7104,6 +7289,10 @@ events:   %1
     <message>
         <source>%1 needs a number, not &quot;%2&quot;.</source>
         <translation>Для %1 потрібне число, а не «%2».</translation>
+    </message>
+    <message>
+        <source>%1 m high · %2 cm/px · footprint %3 × %4 m · passes %5 m apart · photo every %6 m · %7 photos</source>
+        <translation>%1 м висоти · %2 см/пкс · кадр %3 × %4 м · проходи через %5 м · фото кожні %6 м · %7 фото</translation>
     </message>
 </context>
 <context>
@@ -7657,6 +7846,36 @@ Not checked: %1</source>
 Switched off: not checked</source>
         <translation>
 Вимкнено: не перевіряється</translation>
+    </message>
+    <message>
+        <source>
+%1 (%2 %3)</source>
+        <translation>
+%1 (%2 %3)</translation>
+    </message>
+    <message>
+        <source>
+Reason: %1</source>
+        <translation>
+Причина: %1</translation>
+    </message>
+    <message>
+        <source>
+When: %1</source>
+        <translation>
+Коли: %1</translation>
+    </message>
+    <message>
+        <source>
+Not in force during the planned flight</source>
+        <translation>
+Не діє під час запланованого польоту</translation>
+    </message>
+    <message>
+        <source>
+Authority: %1</source>
+        <translation>
+Орган: %1</translation>
     </message>
 </context>
 <context>

@@ -52,7 +52,7 @@ QString daysAgo(const QDateTime &then, const QDateTime &now)
     const qint64 days = then.daysTo(now);
     return days <= 0 ? QCoreApplication::translate("Airspace", "today")
          : days == 1 ? QCoreApplication::translate("Airspace", "yesterday")
-                     : QCoreApplication::translate("Airspace", "%n days ago", nullptr, int(days));
+                     : QCoreApplication::translate("Airspace", "%n day(s) ago", nullptr, int(days));
 }
 
 // The flown path between two distances from the route's start along one leg: the leg's own points
