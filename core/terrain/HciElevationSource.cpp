@@ -4,11 +4,13 @@
 #include "HciReply.h"
 #include "HciSession.h"
 #include "Messages.pb.h"
+#include "ServerProfile.h"
 #include "TerrainLog.h"
 
 #include <QCryptographicHash>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace sortie::terrain {
@@ -160,18 +162,10 @@ void HciElevationSource::requestProfile(const QByteArray &key, const SampledPath
         if (generation != m_generation)
             return;
         m_profileInFlight = false;
-        std::vector<GeoPoint> locations;
-        std::vector<double> elevations;
-        if (reply->isOk()) {
-            const auto &r = reply->response<pb::GetElevationProfileResponse>();
-            for (int i = 0; i < r.locations_size() && i < r.elevations_size(); ++i) {
-                locations.push_back({r.locations(i).latitude() / kRad, r.locations(i).longitude() / kRad});
-                elevations.push_back(r.elevations(i));
-            }
-        } else {
+        if (!reply->isOk())
             qCWarning(lcTerrain).noquote() << "the server did not give an elevation profile:" << reply->error().message();
-        }
-        storeProfile(key, path, locations, elevations);
+        storeProfile(key, reply->isOk() ? profileAlong(path, reply->response<pb::GetElevationProfileResponse>())
+                                        : std::vector<double>(path.points.size(), std::numeric_limits<double>::quiet_NaN()));
         if (m_nextProfile && m_session && m_session->isReady()) {
             const SampledPath next = std::move(*m_nextProfile);
             m_nextProfile.reset();
@@ -183,46 +177,8 @@ void HciElevationSource::requestProfile(const QByteArray &key, const SampledPath
     });
 }
 
-// The server picks its own sample positions: place them along our path by their running distance
-// and interpolate linearly to our samples. A sample between a missing value and anything is missing.
-void HciElevationSource::storeProfile(const QByteArray &key, const SampledPath &path, const std::vector<GeoPoint> &locations,
-                                      const std::vector<double> &elevations)
+void HciElevationSource::storeProfile(const QByteArray &key, std::vector<double> values)
 {
-    std::vector<double> values(path.points.size(), std::numeric_limits<double>::quiet_NaN());
-    // A server that samples the way we do (the simulator does) gives our points: take them as they are.
-    bool same = locations.size() == path.points.size();
-    for (size_t i = 0; same && i < locations.size(); ++i)
-        same = mission::geodesicDistance(locations[i], path.points[i].position) < 0.5;
-    if (same) {
-        for (size_t i = 0; i < values.size(); ++i)
-            values[i] = elevations[i];
-    } else if (!locations.empty()) {
-        std::vector<double> at(locations.size(), 0.0);
-        for (size_t i = 1; i < locations.size(); ++i)
-            at[i] = at[i - 1] + mission::geodesicDistance(locations[i - 1], locations[i]);
-        // Scale the server's running distance onto ours: both walk the same legs.
-        const double scale = at.back() > 0 && path.length() > 0 ? path.length() / at.back() : 1.0;
-        for (double &d : at)
-            d *= scale;
-        size_t j = 0;
-        for (size_t i = 0; i < path.points.size(); ++i) {
-            const double d = path.points[i].distance;
-            while (j + 1 < at.size() && at[j + 1] < d - 1e-6)
-                ++j;
-            if (std::abs(at[j] - d) < 1e-3) {
-                values[i] = elevations[j];
-                continue;
-            }
-            if (j + 1 < at.size() && at[j] <= d && d <= at[j + 1] + 1e-6) {
-                if (std::abs(at[j + 1] - d) < 1e-3) {
-                    values[i] = elevations[j + 1];
-                    continue;
-                }
-                const double f = (d - at[j]) / (at[j + 1] - at[j]);
-                values[i] = elevations[j] + f * (elevations[j + 1] - elevations[j]);  // NaN spreads
-            }
-        }
-    }
     if (m_profiles.size() >= kMaxCachedProfiles) {
         m_profiles.clear();
         m_profilesAsked.clear();

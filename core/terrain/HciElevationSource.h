@@ -47,8 +47,7 @@ private:
     static QByteArray pathKey(const SampledPath &path);
     void flushPoints();
     void requestProfile(const QByteArray &key, const SampledPath &path);
-    void storeProfile(const QByteArray &key, const SampledPath &path, const std::vector<GeoPoint> &locations,
-                      const std::vector<double> &elevations);
+    void storeProfile(const QByteArray &key, std::vector<double> values);
 
     QPointer<hci::HciSession> m_session;
     QHash<quint64, float> m_points;  // NaN: the server has no data there

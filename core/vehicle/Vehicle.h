@@ -53,9 +53,6 @@ class Vehicle : public QObject
     Q_PROPERTY(int missionCount READ missionCount NOTIFY telemetryChanged)
     // Outside its fence now (VCI /fence/status); false when it has no fence or does not say.
     Q_PROPERTY(bool fenceBreached READ fenceBreached NOTIFY telemetryChanged)
-    // The vehicle's parameters as its link reports them (VCI: /parameters; HCI: the vehicle profile's
-    // VPT_* values), read after each connect; empty until then.
-    Q_PROPERTY(QVariantMap parameters READ parameters NOTIFY parametersChanged)
     Q_PROPERTY(int notifyInterval READ notifyInterval WRITE setNotifyInterval NOTIFY notifyIntervalChanged)
 
 public:
@@ -120,6 +117,9 @@ public:
     // built on a worker thread, without stalling the GUI thread.
     void replaceHistory(TelemetryStore history);
 
+    // The vehicle's parameters as its link reports them (VCI: /parameters; HCI: the vehicle profile's
+    // VPT_* values) by the link's own names, read after each connect; empty until then. For the
+    // policies in C++ (CommandPolicy's take-off altitude), not a view's property.
     QVariantMap parameters() const { return m_parameters; }
 
     // Where the commands below are recorded (not owned; none by default).

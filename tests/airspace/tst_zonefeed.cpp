@@ -157,7 +157,7 @@ private slots:
             // Fetched nine days ago (as the record says): older than a week, said so.
             QVERIFY(store.airspace->loadFeedCopy(copy, url, QDateTime::currentDateTimeUtc().addDays(-9)));
             QVERIFY(store.airspace->dataStale());
-            QVERIFY2(store.airspace->dataAge().contains(QStringLiteral("9 days ago"))
+            QVERIFY2(store.airspace->dataAge().contains(QStringLiteral("9 day"))
                          && store.airspace->dataAge().contains(QStringLiteral("older than a week")),
                      qPrintable(store.airspace->dataAge()));
         }

@@ -11,6 +11,7 @@
 #include "MissionController.h"
 #include "MissionFiles.h"
 #include "RouteAutosave.h"
+#include "SegmentParameters.h"
 #include "SimFixture.h"
 #include "SimVehicle.h"
 #include "VehicleFleet.h"
@@ -483,11 +484,11 @@ private slots:
         const int pathBefore = int(doc->scanPath().size());
         QVERIFY2(pathBefore >= 4, qPrintable(QString::number(pathBefore)));
         QVERIFY(doc->scanProblem().isEmpty());
-        QCOMPARE(doc->scanParameters().value(QStringLiteral("overlapSide")).toDouble(), 65.0);
+        QCOMPARE(mission::parameterValue(doc->model()->segment(row), QStringLiteral("overlapSide"), doc->editor()->catalog()).toDouble(), 65.0);
 
         // More side overlap: transects closer together, so more of them.
         QVERIFY(doc->editor()->setParameter({row}, QStringLiteral("overlapSide"), 85.0));
-        QCOMPARE(doc->scanParameters().value(QStringLiteral("overlapSide")).toDouble(), 85.0);
+        QCOMPARE(mission::parameterValue(doc->model()->segment(row), QStringLiteral("overlapSide"), doc->editor()->catalog()).toDouble(), 85.0);
         QVERIFY(doc->scanPath().size() > pathBefore);
         QVERIFY(!doc->editor()->setParameter({row}, QStringLiteral("overlapForward"), 120.0));
         QVERIFY(doc->message().contains(QStringLiteral("overlapForward")));

@@ -36,11 +36,12 @@ struct Fixture
         model.resetRoute(r);
     }
     const std::vector<WaypointAction> &at(int row) const { return std::get<Waypoint>(model.segment(row)).actions; }
-    QVariantMap field(int action, const QString &name) const
+    // The field as the view reads it: through the model's FieldsRole, a list of typed rows.
+    ActionFieldRow field(int action, const QString &name) const
     {
         for (const QVariant &f : actions.index(action).data(WaypointActionsModel::FieldsRole).toList())
-            if (f.toMap().value(QStringLiteral("name")) == name)
-                return f.toMap();
+            if (f.value<ActionFieldRow>().name == name)
+                return f.value<ActionFieldRow>();
         return {};
     }
 };
@@ -63,8 +64,8 @@ private slots:
         QCOMPARE(f.at(2).size(), size_t(1));
         QVERIFY(f.at(1).empty());
         QCOMPARE(f.actions.rowCount(), 1);
-        QCOMPARE(f.field(0, QStringLiteral("intervalMeters")).value(QStringLiteral("value")).toDouble(), 10.0);
-        QCOMPARE(f.field(0, QStringLiteral("intervalMeters")).value(QStringLiteral("unit")).toString(), QStringLiteral("m"));
+        QCOMPARE(f.field(0, QStringLiteral("intervalMeters")).value.toDouble(), 10.0);
+        QCOMPARE(f.field(0, QStringLiteral("intervalMeters")).unit, QStringLiteral("m"));
 
         // A field typed as text, as an editor sends it: both waypoints, one more undo step.
         QVERIFY(f.actions.setField(0, QStringLiteral("intervalMeters"), QStringLiteral("25")));
@@ -83,7 +84,7 @@ private slots:
 
         f.stack.undo();
         QCOMPARE(std::get<CameraSeriesByDistanceAction>(f.at(2)[0]).intervalMeters, 10.0);
-        QCOMPARE(f.field(0, QStringLiteral("intervalMeters")).value(QStringLiteral("value")).toDouble(), 10.0);
+        QCOMPARE(f.field(0, QStringLiteral("intervalMeters")).value.toDouble(), 10.0);
     }
 
     void badValuesAreRefusedWithAReason()
@@ -139,8 +140,9 @@ private slots:
         Fixture f;
         f.actions.setRows({0});
         QVERIFY(f.actions.add(QStringLiteral("cameraControl")));
-        QVERIFY(f.field(0, QStringLiteral("tiltDeg")).value(QStringLiteral("optional")).toBool());
-        QVERIFY(!f.field(0, QStringLiteral("tiltDeg")).value(QStringLiteral("value")).isValid());  // shown empty, not 0
+        QVERIFY(f.field(0, QStringLiteral("tiltDeg")).optional);
+        QVERIFY(!f.field(0, QStringLiteral("tiltDeg")).hasValue());  // shown empty, not 0
+        QCOMPARE(f.field(0, QStringLiteral("tiltDeg")).text, QString());
         QVERIFY(f.actions.setField(0, QStringLiteral("tiltDeg"), QStringLiteral("90")));
         QCOMPARE(std::get<CameraControlAction>(f.at(0)[0]).tiltDeg, std::optional<double>(90));
         QVERIFY(!std::get<CameraControlAction>(f.at(0)[0]).yawDeg);
@@ -154,9 +156,13 @@ private slots:
         Fixture f;
         f.actions.setRows({2});
         QVERIFY(f.actions.add(QStringLiteral("cameraTrigger")));
-        const QVariantMap state = f.field(0, QStringLiteral("state"));
-        QCOMPARE(state.value(QStringLiteral("type")).toString(), QStringLiteral("choice"));
-        QCOMPARE(state.value(QStringLiteral("value")).toString(), QStringLiteral("singleShot"));
+        const ActionFieldRow state = f.field(0, QStringLiteral("state"));
+        QVERIFY(state.isChoice() && !state.isNumber() && !state.isToggle());
+        QCOMPARE(state.value.toString(), QStringLiteral("singleShot"));
+        // The choice shown is the value's, worded for the operator; its value is what setField takes.
+        QVERIFY(state.choiceIndex >= 0);
+        QCOMPARE(state.choiceValues.value(state.choiceIndex).toString(), QStringLiteral("singleShot"));
+        QCOMPARE(state.choiceTexts.size(), state.choiceValues.size());
         QVERIFY(f.actions.setField(0, QStringLiteral("state"), QStringLiteral("startRecording")));
         QCOMPARE(std::get<CameraTriggerAction>(f.at(2)[0]).state, TriggerState::StartRecording);
         QVERIFY(!f.actions.setField(0, QStringLiteral("state"), QStringLiteral("explode")));
@@ -175,8 +181,9 @@ private slots:
         // Every action in the facts Sortie has no type for is offered, with its fields as the schema types them.
         Fixture f;
         QStringList offered;
-        for (const QVariant &k : f.actions.kinds())
-            offered << k.toMap().value(QStringLiteral("kind")).toString();
+        for (const ActionKindChoice &k : f.actions.kindChoices())
+            offered << k.kind;
+        QCOMPARE(f.actions.kindLabels().size(), f.actions.kindChoices().size());
         for (const char *kind : {"setServo", "repeatServo", "transitionFixed", "transitionVtol", "lidarRecordingControl",
                                  "lidarCalibration", "hopAction", "drop"})
             QVERIFY2(offered.contains(QLatin1String(kind)), kind);
@@ -214,9 +221,9 @@ private slots:
         QCOMPARE(f.actions.rowCount(), 1);
         QVERIFY(f.actions.index(0).data(WaypointActionsModel::EditableRole).toBool());
         QCOMPARE(f.actions.index(0).data(WaypointActionsModel::KindRole).toString(), QStringLiteral("repeatServo"));
-        QCOMPARE(f.field(0, QStringLiteral("pwm")).value(QStringLiteral("value")).toInt(), 1900);
+        QCOMPARE(f.field(0, QStringLiteral("pwm")).value.toInt(), 1900);
         // Not sent: shown as missing, never as 0.
-        QVERIFY(!f.field(0, QStringLiteral("count")).value(QStringLiteral("value")).isValid());
+        QVERIFY(!f.field(0, QStringLiteral("count")).hasValue());
 
         QVERIFY(f.actions.setField(0, QStringLiteral("pwm"), QStringLiteral("1100")));
         QVERIFY(f.actions.setField(0, QStringLiteral("count"), QStringLiteral("4")));
@@ -262,7 +269,7 @@ private slots:
         QVERIFY(f.actions.add(QStringLiteral("lidarRecordingControl")));
         QVERIFY(f.actions.add(QStringLiteral("drop")));
         QCOMPARE(f.at(2).size(), size_t(2));
-        QVERIFY(!f.field(0, QStringLiteral("targetState")).value(QStringLiteral("value")).isValid());
+        QVERIFY(!f.field(0, QStringLiteral("targetState")).hasValue());
         QVERIFY(f.actions.setField(0, QStringLiteral("targetState"), QStringLiteral("RS_ON")));
         QVERIFY(!f.actions.setField(0, QStringLiteral("targetState"), QStringLiteral("RS_MAYBE")));
         QCOMPARE(f.actions.index(0).data(WaypointActionsModel::SummaryRole).toString(), QStringLiteral("Lidar recording: recording on"));

@@ -13,6 +13,7 @@
 #include "VciFenceBuilder.h"
 #include "RouteEndurance.h"
 #include "ClientWindow.h"
+#include "ZoneFeed.h"
 #include "ProximityMonitor.h"
 #include "ZoneAlertMonitor.h"
 #include "RouteDeconfliction.h"
@@ -123,7 +124,7 @@ private slots:
             {"traffic", &graph.traffic()}, {"offlineMaps", &graph.offlineMaps()}, {"proximity", graph.proximity()},
             {"zoneAlerts", graph.zoneAlerts()}, {"deconfliction", graph.deconfliction()},
             {"recordingSettings", &graph.recordingSettings()}, {"replay", &graph.replay()},
-            {"comparison", &graph.comparison()}, {"serverHistory", &graph.serverHistory()}};
+            {"comparison", &graph.comparison()}, {"serverHistory", &graph.serverHistory()}, {"zoneFeed", &graph.zoneFeed()}};
         const QMetaObject *meta = graph.metaObject();
         QCOMPARE(meta->propertyCount() - meta->propertyOffset(), int(std::size(services)));
         for (const auto &[name, object] : services) {

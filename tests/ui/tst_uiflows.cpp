@@ -445,10 +445,11 @@ private slots:
         QQuickItem *picker = find("actionKindPicker");
         picker->forceActiveFocus(Qt::TabFocusReason);
         QTRY_VERIFY(picker->hasActiveFocus());
-        const QVariantList kinds = picker->property("model").toList();
+        const QList<mission::ActionKindChoice> kinds = doc->actionEditor()->kindChoices();
+        QCOMPARE(picker->property("model").toStringList(), doc->actionEditor()->kindLabels());
         int wanted = -1;
         for (int i = 0; i < kinds.size(); ++i)
-            if (kinds[i].toMap().value(QStringLiteral("kind")) == QStringLiteral("cameraSeriesByDistance"))
+            if (kinds[i].kind == QStringLiteral("cameraSeriesByDistance"))
                 wanted = i;
         QVERIFY(wanted >= 0);
         while (picker->property("currentIndex").toInt() < wanted)
@@ -488,6 +489,27 @@ private slots:
             QVERIFY2(target == field || field->isAncestorOf(target),
                      qPrintable(QStringLiteral("a click at the centre of %1 reaches %2").arg(field->objectName(), named ? named->objectName() : QStringLiteral("nothing"))));
         }
+        doc->actionEditor()->remove(added);
+        QTRY_COMPARE(actionsOf().size(), before);
+
+        // A choice shows the action's value worded, and a choice made sends that choice's value.
+        QVERIFY(doc->actionEditor()->add(QStringLiteral("cameraTrigger")));
+        QQuickItem *state = nullptr;
+        QTRY_VERIFY((state = find(("action_" + QByteArray::number(added) + "_state_choice").constData())));
+        QVERIFY(state->isVisible());
+        const QStringList texts = state->property("model").toStringList();
+        const int shown = state->property("currentIndex").toInt();
+        QVERIFY2(shown >= 0 && shown < texts.size(), qPrintable(texts.join(QLatin1Char('|'))));
+        QCOMPARE(state->property("currentText").toString(), texts[shown]);
+        int recording = -1;
+        for (const mission::ActionFieldRow &row : doc->actionEditor()->fieldsOf(added))
+            if (row.name == QStringLiteral("state"))
+                recording = int(row.choiceValues.indexOf(QStringLiteral("startRecording")));
+        QVERIFY(recording >= 0 && recording < texts.size());
+        QCOMPARE(texts[recording], QStringLiteral("Start video"));
+        QVERIFY(QMetaObject::invokeMethod(state, "activated", Q_ARG(int, recording)));
+        QTRY_COMPARE(std::get<mission::CameraTriggerAction>(actionsOf()[size_t(added)]).state, mission::TriggerState::StartRecording);
+        QTRY_COMPARE(state->property("currentIndex").toInt(), recording);
         doc->actionEditor()->remove(added);
         QTRY_COMPARE(actionsOf().size(), before);
     }

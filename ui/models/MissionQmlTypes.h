@@ -2,7 +2,7 @@
 
 // The editing types QML views use beside the ones ui/qmltypes registers: the enums the
 // RouteEditor takes (MissionEnums.Amsl, MissionEnums.Continuing) and the generated segment
-// editor's model and the waypoint actions' model.
+// editor's model, the waypoint actions' model and their field rows.
 #include "MissionEnums.h"
 #include "SegmentEditorModel.h"
 #include "WaypointActionsModel.h"
@@ -31,6 +31,14 @@ struct WaypointActionsModelForeign
     QML_FOREIGN(sortie::mission::WaypointActionsModel)
     QML_NAMED_ELEMENT(WaypointActionsModel)
     QML_UNCREATABLE("the document's, handed to the views")
+};
+
+// A field row the action editor holds by type (`property actionFieldRow row`), read by property.
+struct ActionFieldRowForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::mission::ActionFieldRow)
+    QML_VALUE_TYPE(actionFieldRow)
 };
 
 } // namespace sortie::ui

@@ -11,6 +11,8 @@ GroupBox {
     required property WaypointActionsModel actions
     visible: actions.valid
     title: actions.title
+    // What a field row shows while the Repeater's count runs ahead of the list (no field, no value).
+    property actionFieldRow noField
 
     // A layout places new items when the next frame is drawn; until then a freshly added action's
     // fields all stand at the editor's corner, on top of one another, and a click there lands in its
@@ -83,42 +85,38 @@ GroupBox {
                         delegate: RowLayout {
                             id: field
                             required property int index
-                            readonly property var modelData: action.fields[index] ?? ({})
-                            readonly property int actionIndex: modelData.action ?? -1
-                            readonly property string name: modelData.name
-                            readonly property string type: modelData.type
+                            // An ActionFieldRow: what the field is and its value, typed in C++.
+                            readonly property actionFieldRow row: action.fields[index] ?? box.noField
                             spacing: 6
                             Label {
                                 textFormat: Text.PlainText
-                                text: field.modelData.label
+                                text: field.row.label
                                 elide: Text.ElideRight
                                 Layout.preferredWidth: 150
                             }
                             TextField {
-                                objectName: "action_" + field.actionIndex + "_" + field.name
-                                visible: field.type === "number" || field.type === "integer"
-                                text: field.modelData.value === undefined ? "" : String(field.modelData.value)
+                                objectName: "action_" + field.row.action + "_" + field.row.name
+                                visible: field.row.number
+                                text: field.row.text
                                 selectByMouse: true
                                 Layout.preferredWidth: 110
-                                onEditingFinished: if (text !== String(field.modelData.value)) box.actions.setField(field.actionIndex, field.name, text)
+                                onEditingFinished: if (text !== field.row.text) box.actions.setField(field.row.action, field.row.name, text)
                             }
                             Switch {
-                                objectName: "action_" + field.actionIndex + "_" + field.name + "_switch"
-                                visible: field.type === "toggle"
-                                checked: field.modelData.value === true
-                                onToggled: box.actions.setField(field.actionIndex, field.name, checked)
+                                objectName: "action_" + field.row.action + "_" + field.row.name + "_switch"
+                                visible: field.row.toggle
+                                checked: field.row.on
+                                onToggled: box.actions.setField(field.row.action, field.row.name, checked)
                             }
                             ComboBox {
-                                objectName: "action_" + field.actionIndex + "_" + field.name + "_choice"
-                                visible: field.type === "choice"
-                                model: field.modelData.choices
-                                textRole: "text"
-                                valueRole: "value"
-                                currentIndex: visible ? indexOfValue(field.modelData.value) : -1
+                                objectName: "action_" + field.row.action + "_" + field.row.name + "_choice"
+                                visible: field.row.choice
+                                model: field.row.choiceTexts
+                                currentIndex: field.row.choiceIndex
                                 Layout.preferredWidth: 190
-                                onActivated: box.actions.setField(field.actionIndex, field.name, currentValue)
+                                onActivated: index => box.actions.setField(field.row.action, field.row.name, field.row.choiceValues[index])
                             }
-                            Label { textFormat: Text.PlainText; text: field.modelData.unit; opacity: 0.7 }
+                            Label { textFormat: Text.PlainText; text: field.row.unit; opacity: 0.7 }
                         }
                     }
                 }
@@ -130,16 +128,14 @@ GroupBox {
             ComboBox {
                 id: kindPicker
                 objectName: "actionKindPicker"
-                model: box.actions.kinds
-                textRole: "label"
-                valueRole: "kind"
+                model: box.actions.kindLabels
                 Layout.preferredWidth: 190
             }
             Button {
                 objectName: "addActionButton"
                 text: qsTr("Add action")
                 enabled: kindPicker.currentIndex >= 0
-                onClicked: box.actions.add(kindPicker.currentValue)
+                onClicked: box.actions.addKindAt(kindPicker.currentIndex)
             }
             Button {
                 objectName: "clearActionsButton"

@@ -300,18 +300,36 @@ Pane {
             }
         }
 
-        SegmentEditor {
-            theme: panel.theme
+        // The chosen segment's and waypoints' editors share the height with the table: at their full
+        // height while there is room, scrolled when the window is short, so the table keeps its rows.
+        ScrollView {
+            id: editors
+            objectName: "segmentEditors"
             Layout.fillWidth: true
-            units: panel.units
-            editor: panel.doc.segmentEditor
-        }
-
-        ActionEditor {
-            theme: panel.theme
-            objectName: "actionEditor"
-            Layout.fillWidth: true
-            actions: panel.doc.actionEditor
+            Layout.fillHeight: true
+            Layout.preferredHeight: editorColumn.implicitHeight
+            Layout.maximumHeight: editorColumn.implicitHeight
+            Layout.minimumHeight: Math.min(editorColumn.implicitHeight, 120)
+            visible: editorColumn.implicitHeight > 0
+            contentWidth: availableWidth
+            clip: true
+            ColumnLayout {
+                id: editorColumn
+                width: editors.availableWidth
+                spacing: 4
+                SegmentEditor {
+                    theme: panel.theme
+                    Layout.fillWidth: true
+                    units: panel.units
+                    editor: panel.doc.segmentEditor
+                }
+                ActionEditor {
+                    theme: panel.theme
+                    objectName: "actionEditor"
+                    Layout.fillWidth: true
+                    actions: panel.doc.actionEditor
+                }
+            }
         }
 
         // When the flight is planned to start, in the operator's time zone: geographical zones count
@@ -383,6 +401,8 @@ Pane {
             units: panel.units
             Layout.fillWidth: true
             Layout.fillHeight: true
+            Layout.minimumHeight: 140  // a header and four rows, whatever the editors above take
+            Layout.preferredHeight: 1000
             doc: panel.doc
             routeModel: panel.routeModel
             terrain: panel.terrain

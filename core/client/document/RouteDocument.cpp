@@ -94,12 +94,6 @@ QVariantList RouteDocument::scanPath() const
     return m_preview.path();
 }
 
-QVariantMap RouteDocument::scanParameters() const
-{
-    const int row = currentRow();
-    return row >= 0 ? m_model.index(row).data(RouteModel::ScanParametersRole).toMap() : QVariantMap();
-}
-
 QString RouteDocument::scanProblem() const
 {
     return m_preview.problem();

@@ -42,7 +42,6 @@ class RouteDocument : public QObject
     // parameters by wire name; empty otherwise.
     Q_PROPERTY(QVariantList scanPolygon READ scanPolygon NOTIFY previewChanged)
     Q_PROPERTY(QVariantList scanPath READ scanPath NOTIFY previewChanged)
-    Q_PROPERTY(QVariantMap scanParameters READ scanParameters NOTIFY currentChanged)
     Q_PROPERTY(QString scanProblem READ scanProblem NOTIFY previewChanged)
     // The current segment's figure and path, planned at most once per frame while it is edited.
     Q_PROPERTY(sortie::mission::SegmentPreview *preview READ preview CONSTANT)
@@ -73,7 +72,6 @@ public:
     int currentRow() const;
     QVariantList scanPolygon() const;
     QVariantList scanPath() const;
-    QVariantMap scanParameters() const;
     QString scanProblem() const;
 
     // Replaces the whole route (opened from the server or reloaded): not undoable, marks clean.

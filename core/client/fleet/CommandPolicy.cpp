@@ -41,14 +41,6 @@ void CommandPolicy::setDefaultTakeoffAltitude(double metres)
     emit defaultTakeoffAltitudeChanged();
 }
 
-QVariantList CommandPolicy::modes() const
-{
-    QVariantList list;
-    for (const char *name : {"auto", "hold", "guided", "manual", "return_home", "land"})
-        list.append(QVariantMap{{QStringLiteral("name"), QString::fromLatin1(name)}, {QStringLiteral("label"), modeLabel(QString::fromLatin1(name))}});
-    return list;
-}
-
 QString CommandPolicy::modeLabel(const QString &mode) const
 {
     switch (vehicle::modeFromName(mode.toStdString())) {

@@ -3,7 +3,6 @@
 #include "Vehicle.h"
 
 #include <QObject>
-#include <QVariantList>
 
 namespace sortie::client {
 
@@ -16,8 +15,6 @@ class CommandPolicy : public QObject
     Q_OBJECT
     // The take-off altitude when the vehicle does not say, m above home (2..500; 20 by default).
     Q_PROPERTY(double defaultTakeoffAltitude READ defaultTakeoffAltitude WRITE setDefaultTakeoffAltitude NOTIFY defaultTakeoffAltitudeChanged)
-    // [{name: "auto", label: "Auto (fly the mission)"}, ...] in the order a mode picker lists them.
-    Q_PROPERTY(QVariantList modes READ modes CONSTANT)
 
 public:
     // What the command bar sends. Auto, Hold, Guided and Manual switch to that flight mode (Auto
@@ -29,7 +26,6 @@ public:
 
     double defaultTakeoffAltitude() const { return m_defaultTakeoffAltitude; }
     void setDefaultTakeoffAltitude(double metres);
-    QVariantList modes() const;
 
     Q_INVOKABLE double takeoffAltitude(const sortie::vehicle::Vehicle *vehicle) const;
     // Arm, take-off and starting the mission ask; so does disarming unless the vehicle is known to

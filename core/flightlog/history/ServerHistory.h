@@ -17,9 +17,12 @@ class HciClient;
 
 namespace sortie::flightlog {
 
+class HistoryPages;
+
 // The server's telemetry history of one vehicle between two times (GetTelemetryRequest), fetched
 // page by page (the server answers at most `limit` values and says where to go on), with progress,
-// and turned into a FlightLog the replay plays like a recorded one.
+// and turned into a FlightLog the replay plays like a recorded one (HistoryPages: what is done with
+// each page).
 class ServerHistory : public QObject
 {
     Q_OBJECT
@@ -37,7 +40,7 @@ public:
     bool isBusy() const { return m_reply != nullptr; }
     double progress() const { return m_progress; } // 0..1 of the time range
     QString errorString() const { return m_error; }
-    int pages() const { return m_pages; }
+    int pages() const { return m_pageCount; }
     // The log once finished(true); the caller takes it.
     std::unique_ptr<FlightLog> takeLog();
 
@@ -53,13 +56,13 @@ private:
 
     QPointer<hci::HciClient> m_client;
     std::unique_ptr<com::ugcs::ucs::proto::Vehicle> m_vehicle;
-    qint64 m_from = 0, m_to = 0;
+    qint64 m_to = 0;
     int m_limit = 7200;
     QPointer<hci::HciReply> m_reply;
-    vehicle::TelemetryBatch m_updates;
+    std::unique_ptr<HistoryPages> m_pages;  // while fetching
     std::unique_ptr<FlightLog> m_log;
     double m_progress = 0;
-    int m_pages = 0;
+    int m_pageCount = 0;
     QString m_error;
 };
 

@@ -21,14 +21,6 @@ RouteAnalyzer::RouteAnalyzer(const RouteModel *model, QObject *parent)
     recomputeNow();
 }
 
-QVariantMap RouteAnalyzer::boundingBox() const
-{
-    const GeoBox &b = m_statistics.boundingBox;
-    if (b.empty)
-        return {};
-    return {{"south", b.south}, {"west", b.west}, {"north", b.north}, {"east", b.east}};
-}
-
 void RouteAnalyzer::addRule(RouteRule *rule)
 {
     m_rules.emplace_back(rule);

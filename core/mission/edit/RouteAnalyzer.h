@@ -9,7 +9,6 @@
 #include <QObject>
 #include <QPointer>
 #include <QTimer>
-#include <QVariantMap>
 
 namespace sortie::mission {
 
@@ -29,7 +28,6 @@ class RouteAnalyzer : public QObject
     Q_PROPERTY(double climbMeters READ climbMeters NOTIFY statisticsChanged)
     Q_PROPERTY(double descentMeters READ descentMeters NOTIFY statisticsChanged)
     // {south, west, north, east} in degrees (west > east across the antimeridian); empty without points.
-    Q_PROPERTY(QVariantMap boundingBox READ boundingBox NOTIFY statisticsChanged)
     Q_PROPERTY(int errorCount READ errorCount NOTIFY validationChanged)
     Q_PROPERTY(int warningCount READ warningCount NOTIFY validationChanged)
     Q_PROPERTY(sortie::mission::ValidationIssueModel *issues READ issues CONSTANT)
@@ -54,7 +52,6 @@ public:
     int areaScanCount() const { return m_statistics.areaScanCount; }
     double climbMeters() const { return m_statistics.climbMeters; }
     double descentMeters() const { return m_statistics.descentMeters; }
-    QVariantMap boundingBox() const;
     int errorCount() const { return m_validation.errorCount(); }
     int warningCount() const { return m_validation.warningCount(); }
     bool isPending() const { return m_timer.isActive(); }

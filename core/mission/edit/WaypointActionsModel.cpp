@@ -10,15 +10,15 @@
 namespace sortie::mission {
 
 namespace {
-QString typeName(ActionField::Type t)
+ActionFieldRow::Kind rowKind(ActionField::Type t)
 {
     switch (t) {
-    case ActionField::Type::Number: return QStringLiteral("number");
-    case ActionField::Type::Integer: return QStringLiteral("integer");
-    case ActionField::Type::Toggle: return QStringLiteral("toggle");
-    case ActionField::Type::Choice: return QStringLiteral("choice");
+    case ActionField::Type::Number: return ActionFieldRow::Kind::Number;
+    case ActionField::Type::Integer: return ActionFieldRow::Kind::Integer;
+    case ActionField::Type::Toggle: return ActionFieldRow::Kind::Toggle;
+    case ActionField::Type::Choice: return ActionFieldRow::Kind::Choice;
     }
-    return QStringLiteral("number");
+    return ActionFieldRow::Kind::Number;
 }
 
 const std::vector<WaypointAction> *actionsAt(const RouteModel &model, int row)
@@ -110,12 +110,53 @@ bool WaypointActionsModel::isMixed() const
     return false;
 }
 
-QVariantList WaypointActionsModel::kinds() const
+QList<ActionKindChoice> WaypointActionsModel::kindChoices() const
 {
-    QVariantList list;
+    QList<ActionKindChoice> list;
     for (const ActionKindDescription &k : editableActionKinds())
-        list << QVariantMap{{QStringLiteral("kind"), k.kind}, {QStringLiteral("label"), actionText(k.label)}};
+        list << ActionKindChoice{k.kind, actionText(k.label)};
     return list;
+}
+
+QStringList WaypointActionsModel::kindLabels() const
+{
+    QStringList labels;
+    for (const ActionKindChoice &k : kindChoices())
+        labels << k.label;
+    return labels;
+}
+
+QList<ActionFieldRow> WaypointActionsModel::fieldsOf(int row) const
+{
+    QList<ActionFieldRow> fields;
+    const auto *actions = shown();
+    if (!actions || row < 0 || row >= int(actions->size()))
+        return fields;
+    const WaypointAction &action = (*actions)[size_t(row)];
+    const ActionKindDescription *description = actionKindDescription(actionKindName(action));
+    if (!description)
+        return fields;
+    const QVariantMap values = actionToVariant(action);
+    for (const ActionField &f : description->fields) {
+        ActionFieldRow field;
+        field.action = row;
+        field.name = f.name;
+        field.label = actionText(f.label);
+        field.unit = actionText(f.unit);
+        field.kind = rowKind(f.type);
+        field.value = values.value(f.name);
+        field.optional = f.optional;
+        if (field.hasValue() && field.isNumber())
+            field.text = field.value.toString();
+        for (const auto &[value, label] : f.choices) {
+            if (field.hasValue() && field.value.toString() == value)
+                field.choiceIndex = int(field.choiceTexts.size());
+            field.choiceTexts << actionText(label);
+            field.choiceValues << value;
+        }
+        fields << field;
+    }
+    return fields;
 }
 
 int WaypointActionsModel::rowCount(const QModelIndex &parent) const
@@ -143,18 +184,8 @@ QVariant WaypointActionsModel::data(const QModelIndex &index, int role) const
     case EditableRole: return description != nullptr;  // a server's action Sortie does not model is kept, not edited
     case FieldsRole: {
         QVariantList fields;
-        if (!description)
-            return fields;
-        const QVariantMap values = actionToVariant(action);
-        for (const ActionField &f : description->fields) {
-            QVariantList choices;
-            for (const auto &[value, label] : f.choices)
-                choices << QVariantMap{{QStringLiteral("value"), value}, {QStringLiteral("text"), actionText(label)}};
-            fields << QVariantMap{{QStringLiteral("action"), index.row()}, {QStringLiteral("name"), f.name}, {QStringLiteral("label"), actionText(f.label)},
-                                  {QStringLiteral("type"), typeName(f.type)}, {QStringLiteral("unit"), actionText(f.unit)},
-                                  {QStringLiteral("value"), values.value(f.name)}, {QStringLiteral("choices"), choices},
-                                  {QStringLiteral("optional"), f.optional}};
-        }
+        for (const ActionFieldRow &f : fieldsOf(index.row()))
+            fields << QVariant::fromValue(f);
         return fields;
     }
     default: return {};
@@ -182,6 +213,16 @@ bool WaypointActionsModel::add(const QString &kind)
     }
     setProblem({});
     return m_editor->addAction(m_waypoints, {{QStringLiteral("kind"), kind}});
+}
+
+bool WaypointActionsModel::addKindAt(int index)
+{
+    const QList<ActionKindChoice> kinds = kindChoices();
+    if (index < 0 || index >= kinds.size()) {
+        setProblem(tr("Choose an action to add."));
+        return false;
+    }
+    return add(kinds[index].kind);
 }
 
 bool WaypointActionsModel::setField(int action, const QString &name, const QVariant &value)

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "ActionFieldRow.h"
 #include "ActionVariants.h"
 
 #include <QAbstractListModel>
@@ -24,10 +25,10 @@ class WaypointActionsModel : public QAbstractListModel
     Q_PROPERTY(bool mixed READ isMixed NOTIFY actionsChanged) // the selected waypoints' actions differ
     Q_PROPERTY(int count READ count NOTIFY actionsChanged)
     Q_PROPERTY(QString problem READ problem NOTIFY problemChanged)
-    Q_PROPERTY(QVariantList kinds READ kinds CONSTANT)         // [{kind, label}] for an "add" menu
+    Q_PROPERTY(QStringList kindLabels READ kindLabels CONSTANT)  // the "add" menu, in kindChoices() order
 
 public:
-    // FieldsRole: [{action (its row), name, label, type ("number", "integer", "toggle", "choice"), unit, value, choices}]
+    // FieldsRole: the action's fields as ActionFieldRow values (fieldsOf).
     enum Roles { KindRole = Qt::UserRole + 1, LabelRole, SummaryRole, FieldsRole, EditableRole };
     Q_ENUM(Roles)
 
@@ -40,13 +41,16 @@ public:
     bool isMixed() const;
     QString problem() const { return m_problem; }
     int count() const { return rowCount(); }
-    QVariantList kinds() const;
+    QList<ActionKindChoice> kindChoices() const;
+    QStringList kindLabels() const;
+    QList<ActionFieldRow> fieldsOf(int action) const;
 
     int rowCount(const QModelIndex &parent = {}) const override;
     QVariant data(const QModelIndex &index, int role) const override;
     QHash<int, QByteArray> roleNames() const override;
 
     Q_INVOKABLE bool add(const QString &kind);
+    Q_INVOKABLE bool addKindAt(int index);  // the kindChoices() entry, as the "add" menu offers it
     // `value` checked against the field's type and range; a refusal sets problem.
     Q_INVOKABLE bool setField(int action, const QString &name, const QVariant &value);
     Q_INVOKABLE void remove(int action);
