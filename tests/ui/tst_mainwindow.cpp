@@ -312,19 +312,20 @@ private slots:
         QVERIFY(!m_window->property("dark").toBool());
         auto *box = find<QObject>("colourSchemeBox");
         QVERIFY(box);
-        QCOMPARE(box->property("currentValue").toString(), QStringLiteral("system"));
+        const QStringList codes = theme.schemeCodes();
+        QCOMPARE(box->property("model").toStringList(), theme.schemeNames());
+        QCOMPARE(codes.value(box->property("currentIndex").toInt()), QStringLiteral("system"));
 
         m_settings->setColourScheme(QStringLiteral("sunlight"));
         QCOMPARE(theme.scheme(), sortie::ui::Theme::Scheme::Sunlight);
         QTRY_VERIFY(m_window->property("dark").toBool());
-        QTRY_COMPARE(box->property("currentValue").toString(), QStringLiteral("sunlight"));
+        QTRY_COMPARE(codes.value(box->property("currentIndex").toInt()), QStringLiteral("sunlight"));
         QCOMPARE(m_window->property("color").value<QColor>(), QColor(Qt::black)); // the window's ground
         auto *map = page("missionPage")->property("map").value<MapView *>();
         QTRY_COMPARE(map->colours(), sortie::ui::MapPalette::sunlight());
 
         // The operator picks Light in the selector.
-        int light = -1;
-        QVERIFY(QMetaObject::invokeMethod(box, "indexOfValue", Q_RETURN_ARG(int, light), Q_ARG(QVariant, QVariant(QStringLiteral("light")))));
+        const int light = int(codes.indexOf(QStringLiteral("light")));
         QCOMPARE(light, 1);
         box->setProperty("currentIndex", light);
         QVERIFY(QMetaObject::invokeMethod(box, "activated", Q_ARG(int, light)));
@@ -333,6 +334,10 @@ private slots:
         QCOMPARE(theme.scheme(), sortie::ui::Theme::Scheme::Light);
         QTRY_VERIFY(!m_window->property("dark").toBool());
         QTRY_COMPARE(map->colours(), sortie::ui::MapPalette::light());
+        // A choice made in the box does not unhook it from the setting.
+        m_settings->setColourScheme(QStringLiteral("dark"));
+        QTRY_COMPARE(codes.value(box->property("currentIndex").toInt()), QStringLiteral("dark"));
+        m_settings->setColourScheme(QStringLiteral("light"));
     }
 
     void followsADarkPalette()

@@ -150,10 +150,12 @@ private slots:
         QCOMPARE(Theme::schemeFromName(QStringLiteral("no such scheme")), Theme::Scheme::System);
         QCOMPARE(Theme::schemeFromName(QString()), Theme::Scheme::System);
         Theme theme;
-        const QVariantList schemes = theme.schemes();
-        QCOMPARE(schemes.size(), 4);
-        QCOMPARE(schemes.at(3).toMap().value(QStringLiteral("code")).toString(), QStringLiteral("sunlight"));
-        QVERIFY(!schemes.at(3).toMap().value(QStringLiteral("name")).toString().isEmpty());
+        QCOMPARE(theme.schemeCodes(), (QStringList{"system", "light", "dark", "sunlight"}));
+        QCOMPARE(theme.schemeNames().size(), 4);
+        QVERIFY(!theme.schemeNames().at(3).isEmpty());
+        QCOMPARE(theme.schemeIndex(), 0);
+        theme.setScheme(Theme::Scheme::Sunlight);
+        QCOMPARE(theme.schemeIndex(), 3);
     }
 
     void changesItsColoursWithTheScheme()

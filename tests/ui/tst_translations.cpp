@@ -58,13 +58,6 @@ QString standardButtonText(QObject *dialog, const char *button)
     return expression.hasError() ? expression.error().toString() : text.toString();
 }
 
-QStringList codesOf(const QVariantList &languages)
-{
-    QStringList codes;
-    for (const QVariant &l : languages)
-        codes << l.toMap().value(QStringLiteral("code")).toString();
-    return codes;
-}
 
 } // namespace
 
@@ -106,13 +99,14 @@ private slots:
     // System, English and each compiled translation, named in its own language.
     void theSelectorListsTheLanguages()
     {
-        const QVariantList languages = m_client->translations().languages();
-        QCOMPARE(codesOf(languages), (QStringList{QString(), QStringLiteral("en"), QStringLiteral("de")}));
-        QCOMPARE(languages.at(1).toMap().value(QStringLiteral("name")).toString(), QStringLiteral("English"));
-        QCOMPARE(languages.at(2).toMap().value(QStringLiteral("name")).toString(), QStringLiteral("Deutsch"));
+        const ui::Translations &translations = m_client->translations();
+        QCOMPARE(translations.languageCodes(), (QStringList{QString(), QStringLiteral("en"), QStringLiteral("de")}));
+        QCOMPARE(translations.languageNames().at(1), QStringLiteral("English"));
+        QCOMPARE(translations.languageNames().at(2), QStringLiteral("Deutsch"));
         auto *box = m_client->find<QObject>(QStringLiteral("languageBox"));
         QVERIFY(box);
         QCOMPARE(box->property("count").toInt(), 3);
+        QCOMPARE(box->property("currentIndex").toInt(), translations.chosenLanguage());
     }
 
     // Chosen in the selector: the tabs are German at once, the altitude has a decimal comma; back to
@@ -127,7 +121,7 @@ private slots:
 
         auto *box = m_client->find<QObject>(QStringLiteral("languageBox"));
         QVERIFY(box);
-        const int german = codesOf(m_client->translations().languages()).indexOf(QStringLiteral("de"));
+        const int german = int(m_client->translations().languageCodes().indexOf(QStringLiteral("de")));
         box->setProperty("currentIndex", german);
         QMetaObject::invokeMethod(box, "activated", Q_ARG(int, german)); // as a click on "Deutsch" does
         QCOMPARE(m_client->settings().language(), QStringLiteral("de"));
@@ -138,7 +132,7 @@ private slots:
         QTRY_VERIFY2(germanAltitude.match(textOf(*m_client, "value_altitudeAmsl")).hasMatch(), qPrintable(textOf(*m_client, "value_altitudeAmsl")));
         // The selector still shows the choice, in a list now made in German.
         QTRY_COMPARE(box->property("displayText").toString(), QStringLiteral("Deutsch"));
-        QCOMPARE(m_client->translations().languages().at(0).toMap().value(QStringLiteral("name")).toString(),
+        QCOMPARE(m_client->translations().languageNames().at(0),
                  QStringLiteral("Sprache des Systems"));
         // Numbers anywhere DisplayUnits formats them, dates by the default locale.
         ui::DisplayUnits units;
@@ -274,7 +268,7 @@ private slots:
         QVERIFY2(!login.isEmpty() && login != QLatin1String("Login"), qPrintable(login));
         test::ClientWindow client; // the program's own translations
         QVERIFY2(client.isReady(), qPrintable(client.error()));
-        QVERIFY(codesOf(client.translations().languages()).contains(QStringLiteral("de")));
+        QVERIFY(client.translations().languageCodes().contains(QStringLiteral("de")));
         client.settings().setLanguage(QStringLiteral("de"));
         QTRY_COMPARE(textOf(client, "loginTab"), login);
         QCOMPARE(ui::DisplayUnits().formatAltitude(12.5), QStringLiteral("12,5 m"));
@@ -284,7 +278,7 @@ private slots:
         const char *context = "sortie::maptiles::OfflineMaps";
         QCOMPARE(QCoreApplication::translate(context, "A drawn area (%n corner(s))", nullptr, 5), QStringLiteral("A drawn area (5 corners)"));
         QCOMPARE(QCoreApplication::translate("sortie::mission::RouteEditor", "Move %n segment(s)", nullptr, 1), QStringLiteral("Move 1 segment"));
-        QCOMPARE(codesOf(client.translations().languages()).count(QStringLiteral("en")), 1);
+        QCOMPARE(client.translations().languageCodes().count(QStringLiteral("en")), 1);
         // In German the German forms, not the English ones.
         client.settings().setLanguage(QStringLiteral("de"));
         QTRY_COMPARE(textOf(client, "loginTab"), login);

@@ -182,14 +182,16 @@ ApplicationWindow {
                                 objectName: "languageBox"
                                 Layout.fillWidth: true
                                 Layout.preferredHeight: window.theme.controlHeight
-                                model: window.translations.languages
-                                textRole: "name"
-                                valueRole: "code"
-                                // The list is made anew in each language: the choice is found again in it.
-                                onModelChanged: currentIndex = Qt.binding(() => Math.max(0, indexOfValue(window.appSettings.language)))
+                                model: window.translations.languageNames
+                                // The list is made anew in each language, and a choice made sets the index
+                                // itself: each time the box goes back to showing the settings' language.
+                                onModelChanged: currentIndex = Qt.binding(() => window.translations.chosenLanguage)
                                 // Wide enough for the longest name in the list, not more.
                                 implicitContentWidthPolicy: ComboBox.WidestText
-                                onActivated: window.appSettings.language = currentValue
+                                onActivated: index => {
+                                    window.translations.chooseLanguage(index)
+                                    currentIndex = Qt.binding(() => window.translations.chosenLanguage)
+                                }
                                 ToolTip.visible: hovered
                                 ToolTip.text: qsTr("The language of Sortie, applied at once")
                             }
@@ -199,13 +201,14 @@ ApplicationWindow {
                                 objectName: "colourSchemeBox"
                                 Layout.fillWidth: true
                                 Layout.preferredHeight: window.theme.controlHeight
-                                model: window.theme.schemes
-                                textRole: "name"
-                                valueRole: "code"
-                                // The names are made anew in each language: the choice is found again in the list.
-                                onModelChanged: currentIndex = Qt.binding(() => Math.max(0, indexOfValue(window.appSettings.colourScheme)))
+                                model: window.theme.schemeNames
+                                // As the language box: the theme's scheme (it follows the setting) is shown.
+                                onModelChanged: currentIndex = Qt.binding(() => window.theme.schemeIndex)
                                 implicitContentWidthPolicy: ComboBox.WidestText
-                                onActivated: window.appSettings.colourScheme = currentValue
+                                onActivated: index => {
+                                    window.appSettings.colourScheme = window.theme.schemeCodes[index]
+                                    currentIndex = Qt.binding(() => window.theme.schemeIndex)
+                                }
                                 ToolTip.visible: hovered
                                 ToolTip.text: qsTr("The system's colours, light, dark, or high contrast for sunlight")
                             }

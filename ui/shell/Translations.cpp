@@ -1,5 +1,7 @@
 #include "Translations.h"
 
+#include <algorithm>
+
 #include "AppSettings.h"
 #include "StandardButtonWords.h"
 
@@ -64,14 +66,33 @@ QStringList Translations::translated() const
     return codes;
 }
 
-QVariantList Translations::languages() const
+QStringList Translations::languageCodes() const
 {
-    QVariantList list{QVariantMap{{QStringLiteral("code"), QString()}, {QStringLiteral("name"), tr("System language")}},
-                      QVariantMap{{QStringLiteral("code"), QStringLiteral("en")}, {QStringLiteral("name"), nativeName(QStringLiteral("en"))}}};
+    QStringList codes{QString(), QStringLiteral("en")};
     for (const QString &code : translated())
         if (code != QLatin1String("en"))
-            list << QVariantMap{{QStringLiteral("code"), code}, {QStringLiteral("name"), nativeName(code)}};
-    return list;
+            codes << code;
+    return codes;
+}
+
+QStringList Translations::languageNames() const
+{
+    QStringList names;
+    for (const QString &code : languageCodes())
+        names << (code.isEmpty() ? tr("System language") : nativeName(code));
+    return names;
+}
+
+int Translations::chosenLanguage() const
+{
+    return std::max(0, int(languageCodes().indexOf(m_settings.language())));
+}
+
+void Translations::chooseLanguage(int index)
+{
+    const QStringList codes = languageCodes();
+    if (index >= 0 && index < codes.size())
+        m_settings.setLanguage(codes[index]);
 }
 
 QLocale Translations::localeFor(const QString &code)

@@ -3,7 +3,7 @@
 #include <QLocale>
 #include <QObject>
 #include <QTranslator>
-#include <QVariantList>
+#include <QStringList>
 #include <QtQml/qqmlregistration.h>
 
 #include <memory>
@@ -26,9 +26,12 @@ class Translations : public QObject
     Q_OBJECT
     QML_ELEMENT
     QML_UNCREATABLE("Translations is created by the application")
-    // What the language selector offers: [{code, name}], "" (the system's) first, then English and
-    // every compiled translation, each named in its own language ("Deutsch", "Українська").
-    Q_PROPERTY(QVariantList languages READ languages NOTIFY changed)
+    // What the language selector offers, in one order: the codes ("" for the system's first, then
+    // English and every compiled translation) and their names, each in its own language ("Deutsch",
+    // "Українська"); the one the settings ask for; chooseLanguage(index) asks for another.
+    Q_PROPERTY(QStringList languageCodes READ languageCodes NOTIFY changed)
+    Q_PROPERTY(QStringList languageNames READ languageNames NOTIFY changed)
+    Q_PROPERTY(int chosenLanguage READ chosenLanguage NOTIFY changed)
     // The language in use: what the settings ask for ("" for the system's), resolved ("de", "en").
     Q_PROPERTY(QString active READ active NOTIFY changed)
 
@@ -41,7 +44,10 @@ public:
                  QObject *parent = nullptr);
     ~Translations() override;
 
-    QVariantList languages() const;
+    QStringList languageCodes() const;
+    QStringList languageNames() const;
+    int chosenLanguage() const;  // its index in languageCodes; the system's when it asks for none there
+    Q_INVOKABLE void chooseLanguage(int index);
     QString active() const { return m_active; }
     // The language codes with a compiled translation in the folder ("de", "es", "uk").
     QStringList translated() const;

@@ -98,13 +98,25 @@ QString Theme::nameOf(Scheme scheme)
     return QStringLiteral("system");
 }
 
-QVariantList Theme::schemes() const
+QStringList Theme::schemeCodes() const
 {
-    QVariantList list;
+    QStringList codes;
     for (const SchemeName &s : kSchemes)
-        list << QVariantMap{{QStringLiteral("code"), QString::fromLatin1(s.code)},
-                            {QStringLiteral("name"), QCoreApplication::translate("sortie::ui::Theme", s.name)}};
-    return list;
+        codes << QString::fromLatin1(s.code);
+    return codes;
+}
+
+QStringList Theme::schemeNames() const
+{
+    QStringList names;
+    for (const SchemeName &s : kSchemes)
+        names << QCoreApplication::translate("sortie::ui::Theme", s.name);
+    return names;
+}
+
+int Theme::schemeIndex() const
+{
+    return std::max(0, int(schemeCodes().indexOf(nameOf(scheme()))));
 }
 
 const ThemeColours &coloursOf(const Theme *theme)

@@ -3,7 +3,7 @@
 #include "ThemeColours.h"
 
 #include <QObject>
-#include <QVariantList>
+#include <QStringList>
 
 namespace sortie::ui {
 
@@ -18,8 +18,11 @@ class Theme : public QObject
 {
     Q_OBJECT
     Q_PROPERTY(Scheme scheme READ scheme WRITE setScheme NOTIFY schemeChanged)
-    // The schemes for a selector: [{code, name}], the names in the operator's language.
-    Q_PROPERTY(QVariantList schemes READ schemes NOTIFY schemesChanged)
+    // The schemes for a selector, in one order: their settings' codes ("system", "light", …), their
+    // names in the operator's language, and the index of the scheme in use.
+    Q_PROPERTY(QStringList schemeCodes READ schemeCodes CONSTANT)
+    Q_PROPERTY(QStringList schemeNames READ schemeNames NOTIFY schemesChanged)
+    Q_PROPERTY(int schemeIndex READ schemeIndex NOTIFY schemeChanged)
     // True when the window's ground is dark (Dark, Sunlight, a dark platform palette).
     Q_PROPERTY(bool darkGround READ darkGround NOTIFY coloursChanged)
     Q_PROPERTY(QColor window READ window NOTIFY coloursChanged)
@@ -100,7 +103,9 @@ public:
     const MapPalette &mapPalette() const { return m_colours.map; }
     // The colours of `scheme` (System: the platform palette given).
     static ThemeColours coloursOf(Scheme scheme, const QPalette &platform);
-    QVariantList schemes() const;
+    QStringList schemeCodes() const;
+    QStringList schemeNames() const;
+    int schemeIndex() const;
     bool darkGround() const { return m_colours.isDark(); }
 
     QColor window() const { return m_colours.window; }
