@@ -30,32 +30,38 @@ bool bit(int block, quint64 value)
 
 int blockSize(int width)
 {
-    const int size = width / kBlocks;
+    const int size = width / kColumns;
     return size >= 4 ? size : 0;
+}
+
+int height(int width)
+{
+    return 2 * blockSize(width);
 }
 
 void write(uchar *luma, int stride, int width, int height, quint64 value)
 {
     const int size = blockSize(width);
-    if (size == 0 || height < size)
+    if (size == 0 || height < 2 * size)
         return;
-    for (int y = 0; y < size; ++y) {
+    for (int y = 0; y < 2 * size; ++y) {
         uchar *row = luma + qsizetype(y) * stride;
         std::memset(row, kBlack, size_t(width));
-        for (int b = 0; b < kBlocks; ++b)
-            if (bit(b, value))
-                std::memset(row + b * size, kWhite, size_t(size));
+        const int first = (y / size) * kColumns;
+        for (int c = 0; c < kColumns; ++c)
+            if (bit(first + c, value))
+                std::memset(row + c * size, kWhite, size_t(size));
     }
 }
 
 std::optional<quint64> read(const QImage &image)
 {
     const int size = blockSize(image.width());
-    if (size == 0 || image.height() < size)
+    if (size == 0 || image.height() < 2 * size)
         return std::nullopt;
     // The mean of the block's inner half, away from the edges the encoder blurs.
     const auto blockBit = [&](int b) {
-        const int x0 = b * size + size / 4, y0 = size / 4;
+        const int x0 = (b % kColumns) * size + size / 4, y0 = (b / kColumns) * size + size / 4;
         int sum = 0, n = 0;
         for (int y = y0; y < y0 + size / 2; ++y)
             for (int x = x0; x < x0 + size / 2; ++x, ++n)

@@ -1,6 +1,7 @@
 #include "VideoReceiver.h"
 
 #include "FrameStamp.h"
+#include "RtpSanity.h"
 #include "VideoLog.h"
 #include "VideoPackages.h"
 #include "VideoRuntime.h"
@@ -11,6 +12,7 @@
 #include <gst/app/gstappsink.h>
 #include <gst/gst.h>
 #include <gst/pbutils/missing-plugins.h>
+#include <gst/rtp/gstrtpbuffer.h>
 #include <gst/video/video.h>
 
 namespace sortie::video {
@@ -54,6 +56,14 @@ bool hasDecoderFor(const char *capsText)
     return found;
 }
 
+// libav's decoders show the broken pictures of a stream joined between key frames unless told not to.
+void onElementAdded(GstBin *, GstBin *, GstElement *element, gpointer)
+{
+    GstElementFactory *factory = gst_element_get_factory(element);
+    if (factory && g_str_has_prefix(GST_OBJECT_NAME(factory), "avdec_") && g_object_class_find_property(G_OBJECT_GET_CLASS(element), "output-corrupt"))
+        g_object_set(element, "output-corrupt", FALSE, nullptr);
+}
+
 gboolean selectVideoStream(GstElement *, guint, GstCaps *caps, gpointer chosen)
 {
     auto *videoChosen = static_cast<bool *>(chosen);
@@ -74,6 +84,7 @@ struct VideoReceiver::Pipeline
     GstElement *pipeline = nullptr;
     GstBus *bus = nullptr;
     bool videoChosen = false;  // RTSP: the first video stream only
+    bool h265 = false;
 
     ~Pipeline()
     {
@@ -84,6 +95,25 @@ struct VideoReceiver::Pipeline
         }
         if (bus)
             gst_object_unref(bus);
+    }
+
+    // Before the depayloader: a payload it could crash on is dropped (RtpSanity.h).
+    static GstPadProbeReturn screenRtp(GstPad *, GstPadProbeInfo *info, gpointer data)
+    {
+        auto *self = static_cast<Pipeline *>(data);
+        GstBuffer *buffer = GST_PAD_PROBE_INFO_BUFFER(info);
+        GstRTPBuffer rtp = GST_RTP_BUFFER_INIT;
+        bool plausible = false;
+        if (buffer && gst_rtp_buffer_map(buffer, GST_MAP_READ, &rtp)) {
+            const auto *payload = static_cast<const uchar *>(gst_rtp_buffer_get_payload(&rtp));
+            const int size = int(gst_rtp_buffer_get_payload_len(&rtp));
+            plausible = self->h265 ? plausibleH265Payload(payload, size) : plausibleH264Payload(payload, size);
+            gst_rtp_buffer_unmap(&rtp);
+        }
+        if (plausible)
+            return GST_PAD_PROBE_OK;
+        ++self->receiver->m_refused;
+        return GST_PAD_PROBE_DROP;
     }
 
     static GstFlowReturn onNewSample(GstAppSink *sink, gpointer data)
@@ -251,7 +281,7 @@ void VideoReceiver::build()
         elements = {QStringLiteral("udpsrc"), QStringLiteral("rtpjitterbuffer"),
                     h265 ? QStringLiteral("rtph265depay") : QStringLiteral("rtph264depay"),
                     h265 ? QStringLiteral("h265parse") : QStringLiteral("h264parse"), QStringLiteral("decodebin")};
-        description = QStringLiteral("udpsrc name=src ! rtpjitterbuffer name=jitter ! %1 ! %2 ! decodebin").arg(elements[2], elements[3]);
+        description = QStringLiteral("udpsrc name=src ! rtpjitterbuffer name=jitter ! %1 name=depay ! %2 ! decodebin").arg(elements[2], elements[3]);
         break;
     case VideoTransport::MpegTsUdp:
         elements = {QStringLiteral("udpsrc"), QStringLiteral("tsdemux"), QStringLiteral("decodebin")};
@@ -289,6 +319,7 @@ void VideoReceiver::build()
     pipeline->pipeline = element;
     pipeline->bus = gst_element_get_bus(element);
 
+    g_signal_connect(element, "deep-element-added", G_CALLBACK(onElementAdded), nullptr);
     GstElement *src = gst_bin_get_by_name(GST_BIN(element), "src");
     if (source.transport == VideoTransport::Rtsp) {
         g_object_set(src, "location", source.location.toUtf8().constData(), "latency", guint(source.latencyMs), "drop-on-latency", TRUE,
@@ -306,6 +337,13 @@ void VideoReceiver::build()
         if (GstElement *jitter = gst_bin_get_by_name(GST_BIN(element), "jitter")) {
             g_object_set(jitter, "latency", guint(source.latencyMs), "drop-on-latency", TRUE, nullptr);
             gst_object_unref(jitter);
+        }
+        if (GstElement *depay = gst_bin_get_by_name(GST_BIN(element), "depay")) {
+            pipeline->h265 = h265;
+            GstPad *pad = gst_element_get_static_pad(depay, "sink");
+            gst_pad_add_probe(pad, GST_PAD_PROBE_TYPE_BUFFER, &Pipeline::screenRtp, pipeline.get(), nullptr);
+            gst_object_unref(pad);
+            gst_object_unref(depay);
         }
     }
     gst_object_unref(src);

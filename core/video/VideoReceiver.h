@@ -91,6 +91,8 @@ public:
     // Frames replaced before anyone took them (the view drew slower than the stream came).
     quint64 framesDropped() const { return m_dropped.load(); }
     int attempts() const { return m_attempts; }
+    // RTP packets dropped before the depayloader as cut short or malformed (RtpSanity.h).
+    quint64 packetsRefused() const { return m_refused.load(); }
 
     // "Connecting…", "No video since 14:02:07 (00:07)", "Install gstreamer1.0-libav: …".
     Q_INVOKABLE QString statusText() const;
@@ -146,6 +148,7 @@ private:
     std::atomic<bool> m_notifyPending{false};
     std::atomic<quint64> m_received{0};
     std::atomic<quint64> m_dropped{0};
+    std::atomic<quint64> m_refused{0};
 };
 
 } // namespace sortie::video
