@@ -34,8 +34,9 @@ void SimCameraPicture::draw(uchar *i420, const CameraPose &pose) const
     const double east0 = (pose.longitude - kOriginLongitude) * kMetresPerDegree * std::cos(pose.latitude * kPi / 180);
     const double north0 = (pose.latitude - kOriginLatitude) * kMetresPerDegree;
     const double heading = pose.heading * kPi / 180;
-    // A 60° lens: the picture's width covers 1.15 × the height above the ground.
-    const double metresPerPixel = std::max(5.0, pose.altitudeAgl) * 1.15 / w;
+    // A 60° lens: the picture's width covers 1.15 × the height above the ground (40 m at least, so
+    // a parked vehicle sees a few fields, as a camera on a mast would).
+    const double metresPerPixel = std::max(40.0, pose.altitudeAgl) * 1.15 / w;
     const double c = std::cos(heading), s = std::sin(heading);
     // Right of the picture: (cos h, -sin h) in (east, north); up: (sin h, cos h).
     const auto ground = [&](double px, double py, double *east, double *north) {
