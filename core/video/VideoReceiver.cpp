@@ -269,6 +269,7 @@ void VideoReceiver::build()
         return;
     }
     const VideoSource &source = *m_source;
+    // i18n: not text below (GStreamer pipeline descriptions and caps)
     const bool h265 = source.codec == VideoCodec::H265;
     QStringList elements;
     QString description;
@@ -302,6 +303,7 @@ void VideoReceiver::build()
         return;
     }
     description += QStringLiteral(" ! videoconvert ! video/x-raw,format=BGRx ! appsink name=sink");
+    // i18n: text again
 
     GError *error = nullptr;
     GstElement *element = gst_parse_launch(description.toLatin1().constData(), &error);
@@ -331,7 +333,7 @@ void VideoReceiver::build()
     } else {
         const QByteArray address = source.address.isEmpty() ? QByteArrayLiteral("0.0.0.0") : source.address.toLatin1();
         GstCaps *caps = gst_caps_from_string(source.transport == VideoTransport::RtpUdp ? source.rtpCaps().toLatin1().constData()
-                                                                                         : "video/mpegts, systemstream=(boolean)true");
+                                                                                         : "video/mpegts, systemstream=(boolean)true"); // i18n: not text (caps)
         g_object_set(src, "port", gint(source.port), "address", address.constData(), "caps", caps, "buffer-size", gint(4 << 20), nullptr);
         gst_caps_unref(caps);
         if (GstElement *jitter = gst_bin_get_by_name(GST_BIN(element), "jitter")) {

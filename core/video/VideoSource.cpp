@@ -104,11 +104,13 @@ QString VideoSource::codecName(VideoCodec codec)
 
 QString VideoSource::rtpCaps() const
 {
+    // i18n: not text below (GStreamer caps)
     return QStringLiteral("application/x-rtp, media=(string)video, clock-rate=(int)90000, encoding-name=(string)%1, payload=(int)%2")
         .arg(codec == VideoCodec::H265 ? QStringLiteral("H265") : QStringLiteral("H264"))
         .arg(payloadType);
 }
 
+// i18n: text again
 QString VideoSource::describe() const
 {
     switch (transport) {
