@@ -19,6 +19,8 @@ QString debianPackageOfElement(const QString &element)
         {QStringLiteral("h265parse"), QStringLiteral("gstreamer1.0-plugins-bad")},
         {QStringLiteral("tsdemux"), QStringLiteral("gstreamer1.0-plugins-bad")},
         {QStringLiteral("decodebin"), QStringLiteral("gstreamer1.0-plugins-base")},
+        {QStringLiteral("parsebin"), QStringLiteral("gstreamer1.0-plugins-base")},
+        {QStringLiteral("filesink"), QStringLiteral("libgstreamer1.0-0")},
         {QStringLiteral("videoconvert"), QStringLiteral("gstreamer1.0-plugins-base")},
         {QStringLiteral("appsink"), QStringLiteral("gstreamer1.0-plugins-base")},
         {QStringLiteral("appsrc"), QStringLiteral("gstreamer1.0-plugins-base")},

@@ -6,6 +6,8 @@
 #include "VideoPackages.h"
 #include "VideoRuntime.h"
 
+#include <QDir>
+#include <QFile>
 #include <QMutexLocker>
 #include <QTime>
 
@@ -211,6 +213,22 @@ void VideoReceiver::setSource(const VideoSource &source)
     build();
 }
 
+void VideoReceiver::setRecordingFolder(const QString &folder)
+{
+    if (folder == m_recordingFolder)
+        return;
+    m_recordingFolder = folder;
+    const bool running = m_pipeline != nullptr;
+    teardown();  // closes the file being written
+    if (folder.isEmpty() && !m_recordingFile.isEmpty()) {
+        m_recordingFile.clear();
+        emit recordingChanged();
+    }
+    if (running)
+        build();
+    emit recordingChanged();
+}
+
 void VideoReceiver::stop()
 {
     teardown();
@@ -271,25 +289,29 @@ void VideoReceiver::build()
     const VideoSource &source = *m_source;
     // i18n: not text below (GStreamer pipeline descriptions and caps)
     const bool h265 = source.codec == VideoCodec::H265;
+    const bool recording = !m_recordingFolder.isEmpty();
     QStringList elements;
     QString description;
     switch (source.transport) {
     case VideoTransport::Rtsp:
         elements = {QStringLiteral("rtspsrc"), QStringLiteral("decodebin")};
-        description = QStringLiteral("rtspsrc name=src ! decodebin");
+        description = QStringLiteral("rtspsrc name=src ! %1decodebin").arg(recording ? QStringLiteral("parsebin ! tee name=rec ! ") : QString());
         break;
     case VideoTransport::RtpUdp:
         elements = {QStringLiteral("udpsrc"), QStringLiteral("rtpjitterbuffer"),
                     h265 ? QStringLiteral("rtph265depay") : QStringLiteral("rtph264depay"),
                     h265 ? QStringLiteral("h265parse") : QStringLiteral("h264parse"), QStringLiteral("decodebin")};
-        description = QStringLiteral("udpsrc name=src ! rtpjitterbuffer name=jitter ! %1 name=depay ! %2 ! decodebin").arg(elements[2], elements[3]);
+        description = QStringLiteral("udpsrc name=src ! rtpjitterbuffer name=jitter ! %1 name=depay ! %2 ! %3decodebin")
+                          .arg(elements[2], elements[3], recording ? QStringLiteral("tee name=rec ! ") : QString());
         break;
     case VideoTransport::MpegTsUdp:
         elements = {QStringLiteral("udpsrc"), QStringLiteral("tsdemux"), QStringLiteral("decodebin")};
-        description = QStringLiteral("udpsrc name=src ! decodebin");
+        description = QStringLiteral("udpsrc name=src ! %1decodebin").arg(recording ? QStringLiteral("parsebin ! tee name=rec ! ") : QString());
         break;
     }
     elements << QStringLiteral("videoconvert") << QStringLiteral("appsink");
+    if (recording)
+        elements << QStringLiteral("parsebin") << QStringLiteral("matroskamux") << QStringLiteral("filesink");
     for (const QString &element : std::as_const(elements)) {
         if (!hasElement(element.toLatin1().constData())) {
             const QString package = debianPackageOfElement(element);
@@ -303,6 +325,17 @@ void VideoReceiver::build()
         return;
     }
     description += QStringLiteral(" ! videoconvert ! video/x-raw,format=BGRx ! appsink name=sink");
+    // Recording: the parsed stream as it came, muxed without re-encoding; streamable, so a file cut
+    // short (the pipeline rebuilt, the program killed) still plays.
+    QString file;
+    if (recording) {
+        description += QStringLiteral(" rec. ! queue max-size-buffers=0 max-size-bytes=0 max-size-time=2000000000 leaky=downstream"
+                                      " ! matroskamux streamable=true ! filesink name=file async=false");
+        QDir().mkpath(m_recordingFolder);
+        file = QDir(m_recordingFolder).filePath(QStringLiteral("%1-%2.mkv")
+                                                    .arg(objectName().isEmpty() ? QStringLiteral("video") : objectName(),
+                                                         QDateTime::currentDateTimeUtc().toString(QStringLiteral("yyyyMMdd-HHmmss.zzz'Z'"))));
+    }
     // i18n: text again
 
     GError *error = nullptr;
@@ -350,6 +383,14 @@ void VideoReceiver::build()
     }
     gst_object_unref(src);
 
+    if (GstElement *fileSink = gst_bin_get_by_name(GST_BIN(element), "file")) {
+        g_object_set(fileSink, "location", QFile::encodeName(file).constData(), nullptr);
+        gst_object_unref(fileSink);
+    }
+    if (file != m_recordingFile) {
+        m_recordingFile = file;
+        emit recordingChanged();
+    }
     GstElement *sink = gst_bin_get_by_name(GST_BIN(element), "sink");
     g_object_set(sink, "drop", TRUE, "max-buffers", guint(1), "sync", FALSE, "emit-signals", FALSE, "enable-last-sample", FALSE, nullptr);
     GstAppSinkCallbacks callbacks{};

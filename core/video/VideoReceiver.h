@@ -51,6 +51,8 @@ class VideoReceiver : public QObject
     Q_PROPERTY(QString decoderName READ decoderName NOTIFY decoderChanged FINAL)
     Q_PROPERTY(bool hardwareDecoding READ hardwareDecoding NOTIFY decoderChanged FINAL)
     Q_PROPERTY(QSize frameSize READ frameSize NOTIFY decoderChanged FINAL)
+    Q_PROPERTY(bool recording READ isRecording NOTIFY recordingChanged FINAL)
+    Q_PROPERTY(QString recordingFile READ recordingFile NOTIFY recordingChanged FINAL)
 
 public:
     enum class State { Idle, Connecting, Playing, Stalled, Error };
@@ -72,6 +74,12 @@ public:
     void setUrl(const QString &url);
     void setSource(const VideoSource &source);
     void stop();
+    // Records the stream as received (no re-encoding) into this folder, a Matroska file per pipeline
+    // built: <objectName>-<UTC start>.mkv. Empty: no recording. Starting or stopping rebuilds the
+    // pipeline (the picture resumes at the next key frame).
+    void setRecordingFolder(const QString &folder);
+    bool isRecording() const { return !m_recordingFolder.isEmpty(); }
+    QString recordingFile() const { return m_recordingFile; }
 
     QString url() const { return m_url; }
     QString sourceDescription() const;
@@ -102,6 +110,7 @@ signals:
     void stateChanged();
     void sourceChanged();
     void decoderChanged();
+    void recordingChanged();
 
 private:
     struct Pipeline;
@@ -141,6 +150,8 @@ private:
     QString m_decoderName;
     bool m_hardware = false;
     QSize m_frameSize;
+    QString m_recordingFolder;
+    QString m_recordingFile;
 
     mutable QMutex m_frameMutex;
     VideoFrame m_frame;          // guarded by m_frameMutex

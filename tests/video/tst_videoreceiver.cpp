@@ -10,12 +10,16 @@
 #include "VideoRuntime.h"
 #include "VideoTestSupport.h"
 
+#include <QFileInfo>
 #include <QRandomGenerator>
+#include <QTemporaryDir>
 #include <QSignalSpy>
 #include <QTest>
 #include <QUdpSocket>
 
+#include <gst/app/gstappsink.h>
 #include <gst/gst.h>
+#include <gst/video/video.h>
 
 using namespace sortie;
 using namespace sortie::video;
@@ -210,6 +214,55 @@ private slots:
             QVERIFY(qint64(*stamp) <= receiver.latestFrame().receivedUs);
             QVERIFY(receiver.sourceDescription().startsWith(QLatin1String("RTSP")));
         }
+    }
+
+    void recordsAsReceived()
+    {
+        const quint16 port = test::freeUdpPort();
+        sim::SimCamera camera(QStringLiteral("vehicle/1"), smallFormat(), nullptr);
+        QString error;
+        QVERIFY2(camera.startUdp(QHostAddress::LocalHost, port, &error), qPrintable(error));
+        QTemporaryDir dir;
+        VideoReceiver receiver(m_runtime, quickOptions());
+        receiver.setObjectName(QStringLiteral("EMU-101"));
+        receiver.setUrl(QStringLiteral("udp://127.0.0.1:%1").arg(port));
+        QVERIFY(waitForFrames(receiver, 3));
+        receiver.setRecordingFolder(dir.filePath(QStringLiteral("video")));
+        QVERIFY(receiver.isRecording());
+        const QString file = receiver.recordingFile();
+        QVERIFY2(QFileInfo(file).fileName().startsWith(QLatin1String("EMU-101-")) && file.endsWith(QLatin1String("Z.mkv")), qPrintable(file));
+        QVERIFY2(waitForFrames(receiver, 60), qPrintable(receiver.statusText()));  // two seconds of it, and it still plays
+        receiver.setRecordingFolder(QString());
+        QVERIFY(!receiver.isRecording());
+        QVERIFY(QFileInfo(file).size() > 10000);
+
+        // The file holds the camera's H.264 as it came: demuxed and decoded, its frames carry the stamps.
+        GError *gerror = nullptr;
+        const QByteArray launch = QStringLiteral("filesrc location=\"%1\" ! matroskademux ! video/x-h264 ! h264parse ! avdec_h264 "
+                                                 "! videoconvert ! video/x-raw,format=BGRx ! appsink name=sink sync=false").arg(file).toUtf8();
+        GstElement *player = gst_parse_launch(launch.constData(), &gerror);
+        QVERIFY2(player && !gerror, gerror ? gerror->message : "no pipeline");
+        GstElement *sink = gst_bin_get_by_name(GST_BIN(player), "sink");
+        gst_element_set_state(player, GST_STATE_PLAYING);
+        int stamped = 0, frames = 0;
+        while (GstSample *sample = gst_app_sink_try_pull_sample(GST_APP_SINK(sink), 5 * GST_SECOND)) {
+            GstVideoInfo info;
+            GstVideoFrame frame;
+            if (gst_video_info_from_caps(&info, gst_sample_get_caps(sample))
+                && gst_video_frame_map(&frame, &info, gst_sample_get_buffer(sample), GST_MAP_READ)) {
+                const QImage image(static_cast<const uchar *>(GST_VIDEO_FRAME_PLANE_DATA(&frame, 0)), GST_VIDEO_FRAME_WIDTH(&frame),
+                                   GST_VIDEO_FRAME_HEIGHT(&frame), GST_VIDEO_FRAME_PLANE_STRIDE(&frame, 0), QImage::Format_RGB32);
+                stamped += FrameStamp::read(image).has_value();
+                ++frames;
+                gst_video_frame_unmap(&frame);
+            }
+            gst_sample_unref(sample);
+        }
+        gst_object_unref(sink);
+        gst_element_set_state(player, GST_STATE_NULL);
+        gst_object_unref(player);
+        QVERIFY2(frames >= 30, qPrintable(QString::number(frames)));
+        QVERIFY2(stamped >= frames * 9 / 10, qPrintable(QStringLiteral("%1 of %2").arg(stamped).arg(frames)));
     }
 
     void mpegTsOverUdp()
