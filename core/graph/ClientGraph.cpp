@@ -101,8 +101,10 @@ ClientGraph::ClientGraph(QSettings *storage, Options options, QObject *parent)
     m_traffic = std::make_unique<traffic::Traffic>(storage, m_hciClient.get(), options.sbsAddress);
     m_offlineMaps = std::make_unique<maptiles::OfflineMaps>(storage);
     // Each vehicle's video: a receiver per vehicle a view shows (GStreamer started with the first).
+    // Its recordings beside the flight logs, in their folder's video/.
     if (m_fleet)
-        m_video = std::make_unique<video::VehicleVideo>(storage);
+        m_video = std::make_unique<video::VehicleVideo>(
+            storage, options.flightLogDirectory.isEmpty() ? QString() : options.flightLogDirectory + QStringLiteral("/video"));
     // Closest-approach alerts: into the fleet's command log, which the flight recorder follows.
     if (m_fleet)
         m_proximity = std::make_unique<deconfliction::ProximityMonitor>(m_fleet.get(), m_traffic->picture());

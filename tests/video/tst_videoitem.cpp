@@ -18,6 +18,7 @@
 #include "VideoTestSupport.h"
 
 #include <QDir>
+#include <QFileInfo>
 #include <QTest>
 #include <QtQml/qqmlextensionplugin.h>
 
@@ -66,9 +67,16 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(item->framesShown() >= 10 && receiver.state() == State::Playing, kWait);
 
         // Drawn one to one: the camera's stamp reads back from the scene's own pixels.
-        const QImage drawn = scene.grab().convertToFormat(QImage::Format_RGB32);
+        // (A frame the encoder starved may not read back whole: the next ones are tried, up to ten.)
+        QImage drawn;
+        std::optional<quint64> stamp;
+        for (int attempt = 0; attempt < 10 && !stamp; ++attempt) {
+            const quint64 shown = item->framesShown();
+            QTRY_VERIFY_WITH_TIMEOUT(item->framesShown() > shown, kWait);
+            drawn = scene.grab().convertToFormat(QImage::Format_RGB32);
+            stamp = video::FrameStamp::read(drawn);
+        }
         drawn.save(screenshotDir() + QStringLiteral("/video-item.png"));
-        const auto stamp = video::FrameStamp::read(drawn);
         QVERIFY2(stamp, "the drawn picture carries no stamp");
         QVERIFY(qint64(*stamp) <= video::FrameStamp::nowMicros());
         QVERIFY(test::distinctColours(drawn) > 16);  // the fields, not a blank rectangle
@@ -141,6 +149,20 @@ private slots:
         // The operator's URL for this vehicle overrides the vehicle's own, and is remembered.
         video::VehicleVideo *videos = app.graph().video();
         QVERIFY(videos);
+        // Recorded beside the flight logs, as received (Record in the panel).
+        QVERIFY(videos->canRecord());
+        QObject *record = app.find<QObject>(QStringLiteral("videoRecordButton"));
+        QVERIFY(record && record->property("visible").toBool());
+        videos->setRecording(first, true);
+        QVERIFY(item->receiver()->isRecording());
+        QVERIFY(record->property("checked").toBool());
+        const QString recording = item->receiver()->recordingFile();
+        QVERIFY2(recording.contains(QLatin1String("/flightlogs/video/")), qPrintable(recording));
+        const quint64 before = item->framesShown();
+        QTRY_VERIFY_WITH_TIMEOUT(item->framesShown() > before + 15, kWait);
+        videos->setRecording(first, false);
+        QVERIFY(!record->property("checked").toBool());
+        QVERIFY(QFileInfo(recording).size() > 1000);
         const QString manual = cameras.rtspUrl(2);
         videos->setManualUrl(first, manual);
         QCOMPARE(item->receiver()->url(), manual);

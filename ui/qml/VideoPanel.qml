@@ -60,6 +60,19 @@ Rectangle {
                 ToolTip.text: qsTr("This vehicle's video: empty plays the stream the vehicle publishes; a URL typed here overrides it and is remembered.")
             }
             Button {
+                objectName: "videoRecordButton"
+                text: qsTr("Record")
+                checkable: true
+                visible: panel.video !== null && panel.video.canRecord
+                enabled: panel.receiver !== null
+                checked: panel.receiver !== null && panel.receiver.recording
+                onToggled: panel.video.setRecording(panel.vehicle, checked)
+                ToolTip.visible: hovered
+                ToolTip.delay: 600
+                ToolTip.text: panel.receiver && panel.receiver.recording ? qsTr("Recording to %1").arg(panel.receiver.recordingFile)
+                                                                         : qsTr("Record this video as received, beside the flight log")
+            }
+            Button {
                 objectName: "videoSwapButton"
                 text: panel.swapped ? qsTr("Map") : qsTr("Swap")
                 onClicked: panel.swapped = !panel.swapped

@@ -8,10 +8,17 @@
 
 namespace sortie::video {
 
-VehicleVideo::VehicleVideo(QSettings *storage, QObject *parent)
+VehicleVideo::VehicleVideo(QSettings *storage, QString recordingFolder, QObject *parent)
     : QObject(parent)
     , m_storage(storage)
+    , m_recordingFolder(std::move(recordingFolder))
 {
+}
+
+void VehicleVideo::setRecording(vehicle::Vehicle *vehicle, bool on)
+{
+    if (VideoReceiver *receiver = vehicle ? receiverFor(vehicle) : nullptr)
+        receiver->setRecordingFolder(on ? m_recordingFolder : QString());
 }
 
 VehicleVideo::~VehicleVideo()

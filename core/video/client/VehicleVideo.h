@@ -25,10 +25,12 @@ class VideoRuntime;
 class VehicleVideo : public QObject
 {
     Q_OBJECT
+    Q_PROPERTY(bool canRecord READ canRecord CONSTANT FINAL)
 
 public:
-    // `storage` (not owned) keeps the operator's URLs; null: none kept.
-    explicit VehicleVideo(QSettings *storage, QObject *parent = nullptr);
+    // `storage` (not owned) keeps the operator's URLs; null: none kept. `recordingFolder`: where the
+    // streams are recorded as received (beside the flight logs); empty: no recording.
+    explicit VehicleVideo(QSettings *storage, QString recordingFolder = {}, QObject *parent = nullptr);
     ~VehicleVideo() override;
 
     // The vehicle's receiver, playing; owned here (null for a null vehicle).
@@ -41,6 +43,10 @@ public:
     // What the vehicle's receiver plays: the manual URL, else video_stream_uri.
     Q_INVOKABLE QString urlFor(sortie::vehicle::Vehicle *vehicle) const;
     int receivers() const { return int(m_receivers.size()); }
+    bool canRecord() const { return !m_recordingFolder.isEmpty(); }
+    // Records the vehicle's stream as received (Matroska, no re-encoding) into the recording folder:
+    // <vehicle id>-<UTC start>.mkv, its name the clock that lines it up with the flight log.
+    Q_INVOKABLE void setRecording(sortie::vehicle::Vehicle *vehicle, bool on);
 
 signals:
     void manualUrlChanged();
@@ -55,6 +61,7 @@ private:
     static QString key(const vehicle::Vehicle *vehicle);
 
     QSettings *m_storage;
+    QString m_recordingFolder;
     std::unique_ptr<VideoRuntime> m_runtime;
     QHash<QString, Entry> m_receivers;  // by vehicle id
 };
