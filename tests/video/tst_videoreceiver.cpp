@@ -48,8 +48,10 @@ std::optional<quint64> waitForFrames(VideoReceiver &receiver, int n)
     const quint64 target = receiver.framesReceived() + quint64(n);
     if (!QTest::qWaitFor([&] { return receiver.framesReceived() >= target && receiver.state() == State::Playing; }, kWait))
         return std::nullopt;
-    // A frame the encoder starved may not read back whole (never wrongly): the next ones are tried, up to ten.
-    for (int attempt = 0; attempt < 10; ++attempt) {
+    // A receiver that joined in the middle of a key frame decodes a partial picture until the next
+    // one (a second: the camera's key-frame interval), and such a picture has no stamp (never a wrong
+    // one): the next frames are tried, up to a second and a half of them.
+    for (int attempt = 0; attempt < 45; ++attempt) {
         if (const auto stamp = FrameStamp::read(receiver.latestFrame().image))
             return stamp;
         const quint64 next = receiver.framesReceived() + 1;
