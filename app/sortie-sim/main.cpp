@@ -1,16 +1,20 @@
 // sortie-sim: the simulated UgCS server as a program. Wiring only: options -> world -> servers.
 #include "HciServer.h"
+#include "SimCameraFleet.h"
 #include "HciSimOptions.h"
 #include "SimSbsOptions.h"
 #include "SimSbsServer.h"
 #include "SimVciFleet.h"
+#include "SimVehicle.h"
 #include "SimWorld.h"
+#include "VideoRuntime.h"
 
 #include <QCommandLineParser>
 #include <QCoreApplication>
 #include <QSocketNotifier>
 
 #include <csignal>
+#include <memory>
 #include <cstdio>
 #include <sys/socket.h>
 #include <unistd.h>
@@ -49,10 +53,12 @@ int main(int argc, char **argv)
     vci.addTo(parser);
     sortie::sim::SimSbsOptions sbs;
     sbs.addTo(parser);
+    sortie::sim::SimCameraOptions cameras;
+    cameras.addTo(parser);
     parser.process(app);
 
     QString error;
-    if (!hci.read(parser, &error) || !vci.read(parser, &error) || !sbs.read(parser, &error)) {
+    if (!hci.read(parser, &error) || !vci.read(parser, &error) || !sbs.read(parser, &error) || !cameras.read(parser, &error)) {
         std::fprintf(stderr, "sortie-sim: %s\n", qPrintable(error));
         return 2;
     }
@@ -75,6 +81,23 @@ int main(int argc, char **argv)
             return 1;
         }
         std::printf("sortie-sim: SBS-1 traffic on %s:%u\n", qPrintable(hci.address.toString()), unsigned(sbsServer.port()));
+    }
+    // The cameras (GStreamer started here, only when asked for): one per server vehicle.
+    std::unique_ptr<sortie::video::VideoRuntime> gstreamer;
+    std::unique_ptr<sortie::sim::SimCameraFleet> cameraFleet;
+    if (cameras.enabled()) {
+        gstreamer = std::make_unique<sortie::video::VideoRuntime>();
+        cameraFleet = std::make_unique<sortie::sim::SimCameraFleet>(*gstreamer, cameras, hci.address);
+        for (size_t i = 0; i < world.vehicles().size(); ++i)
+            cameraFleet->addCamera(int(i) + 1, sortie::sim::poseOf(world.vehicles()[i]->model()));
+        if (!cameraFleet->start(&error)) {
+            std::fprintf(stderr, "sortie-sim: %s\n", qPrintable(error));
+            return 1;
+        }
+        for (size_t i = 0; i < world.vehicles().size(); ++i)
+            world.vehicles()[i]->setVideoStreamUri(cameraFleet->streamUri(int(i) + 1));
+        for (const QString &line : cameraFleet->describe())
+            std::printf("sortie-sim: %s\n", qPrintable(line));
     }
     vci.vehicle.terrain = &world.terrain();  // one ground for every simulated vehicle
     vci.vehicle.energy = hci.world.energy;   // and one energy profile

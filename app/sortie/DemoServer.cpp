@@ -5,7 +5,9 @@
 #include "SimVciFleet.h"
 #include "SimVciListener.h"
 #include "SimVehicle.h"
+#include "SimCameraFleet.h"
 #include "SimWorld.h"
+#include "VideoRuntime.h"
 
 #include "Messages.pb.h"
 
@@ -78,7 +80,22 @@ bool DemoServer::start(QString *error, Scene scene)
         m_flyingVehicle = QString::fromStdString(first.vehicle().name());
     }
     if (scene != Scene::Full)
-        return true; // no VCI vehicle: it would be a fourth one on the map
+        return true; // no VCI vehicle: it would be a fourth one on the map, and no camera (the idle benchmark)
+    // Each server vehicle's camera over RTSP, published as its video_stream_uri; encoded only while
+    // the client watches it. 640x360: the demo shares its machine with the client's decoder.
+    if (!m_world->start(error))
+        return false;
+    m_gstreamer = std::make_unique<video::VideoRuntime>();
+    sim::SimCameraOptions cameras;
+    cameras.rtspPort = 0;
+    cameras.format = sim::SimCameraFormat{640, 360, 30, 1500};
+    m_cameras = std::make_unique<sim::SimCameraFleet>(*m_gstreamer, cameras, QHostAddress(QHostAddress::LocalHost));
+    for (size_t i = 0; i < m_world->vehicles().size(); ++i)
+        m_cameras->addCamera(int(i) + 1, sim::poseOf(m_world->vehicles()[i]->model()));
+    if (!m_cameras->start(error))
+        return false;
+    for (size_t i = 0; i < m_world->vehicles().size(); ++i)
+        m_world->vehicles()[i]->setVideoStreamUri(m_cameras->streamUri(int(i) + 1));
     sim::SimVciFleetOptions vci;
     vci.count = 1;
     vci.firstPort = 0; // any free port

@@ -5,8 +5,13 @@
 
 #include <memory>
 
+namespace sortie::video {
+class VideoRuntime;
+}
+
 namespace sortie::sim {
 class HciServer;
+class SimCameraFleet;
 class SimSbsServer;
 class SimVciFleet;
 class SimWorld;
@@ -41,6 +46,9 @@ private:
     std::unique_ptr<sim::HciServer> m_server;
     std::unique_ptr<sim::SimVciFleet> m_vci;
     std::unique_ptr<sim::SimSbsServer> m_sbs;
+    // The vehicles' cameras (the full scene only): GStreamer started for them, their RTSP server.
+    std::unique_ptr<video::VideoRuntime> m_gstreamer;
+    std::unique_ptr<sim::SimCameraFleet> m_cameras;
     QString m_flyingVehicle;
 };
 

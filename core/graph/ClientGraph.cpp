@@ -29,6 +29,7 @@
 #include "SbsFeed.h"
 #include "ServerHistoryRequest.h"
 #include "Traffic.h"
+#include "VehicleVideo.h"
 #include "UploadedFenceAlerts.h"
 #include "OfflineMaps.h"
 #include "VciFenceBuilder.h"
@@ -99,6 +100,11 @@ ClientGraph::ClientGraph(QSettings *storage, Options options, QObject *parent)
     // Manned traffic: the receiver's feed (the option, else the setting) and the server's list.
     m_traffic = std::make_unique<traffic::Traffic>(storage, m_hciClient.get(), options.sbsAddress);
     m_offlineMaps = std::make_unique<maptiles::OfflineMaps>(storage);
+    // Each vehicle's video: a receiver per vehicle a view shows (GStreamer started with the first).
+    // Its recordings beside the flight logs, in their folder's video/.
+    if (m_fleet)
+        m_video = std::make_unique<video::VehicleVideo>(
+            storage, options.flightLogDirectory.isEmpty() ? QString() : options.flightLogDirectory + QStringLiteral("/video"));
     // Closest-approach alerts: into the fleet's command log, which the flight recorder follows.
     if (m_fleet)
         m_proximity = std::make_unique<deconfliction::ProximityMonitor>(m_fleet.get(), m_traffic->picture());
@@ -172,6 +178,7 @@ ClientGraph::~ClientGraph()
     m_proximity.reset();
     m_deconfliction.reset();
     m_offlineMaps.reset();
+    m_video.reset();
     m_traffic.reset();
     m_zoneFeed.reset();
     m_zoneSharing.reset();
@@ -224,6 +231,7 @@ QStringList ClientGraph::wiring() const
           << QStringLiteral("traffic: the server's ADS-B list; receiver %1").arg(m_traffic->receiverAddress().isEmpty() ? QStringLiteral("off") : m_traffic->receiverAddress())
           << QStringLiteral("fleet routes: %1").arg(yesNo(m_fleetRoutes != nullptr, "the open route's vehicle and every upload", "none"))
           << QStringLiteral("route deconfliction: %1").arg(yesNo(m_deconfliction && std::any_of(rules.begin(), rules.end(), [&](const auto &r) { return r == m_deconfliction->rule(); }), "against the fleet's routes", "none"))
+          << QStringLiteral("video: %1").arg(yesNo(m_video != nullptr, "a receiver per vehicle shown, its URL or video_stream_uri", "none"))
           << QStringLiteral("proximity alerts: %1").arg(yesNo(m_proximity != nullptr, "the fleet and the traffic", "none"))
           << QStringLiteral("zone alerts: %1").arg(yesNo(m_zoneAlerts != nullptr, "the fleet against the airspace", "none"))
           << QStringLiteral("uploaded fences: %1").arg(yesNo(m_uploadedFenceAlerts && m_uploadedFenceAlerts->isFollowing(), "each vehicle's own zone alerts", "none"))

@@ -25,6 +25,7 @@ Q_MOC_INCLUDE("RouteEndurance.h")
 Q_MOC_INCLUDE("ServerHistoryRequest.h")
 Q_MOC_INCLUDE("Traffic.h")
 Q_MOC_INCLUDE("VehicleFleet.h")
+Q_MOC_INCLUDE("VehicleVideo.h")
 Q_MOC_INCLUDE("ZoneAlertMonitor.h")
 Q_MOC_INCLUDE("ZoneFeed.h")
 Q_MOC_INCLUDE("ZoneSharing.h")
@@ -62,6 +63,10 @@ class ZoneSharing;
 namespace sortie::traffic {
 class Traffic;
 } // namespace sortie::traffic
+
+namespace sortie::video {
+class VehicleVideo;
+} // namespace sortie::video
 namespace sortie::maptiles {
 class OfflineMaps;
 } // namespace sortie::maptiles
@@ -111,6 +116,7 @@ class ClientGraph : public QObject
     Q_PROPERTY(sortie::airspace::ZoneSharing *zoneSharing READ zoneSharingForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::airspace::ZoneFeed *zoneFeed READ zoneFeedForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::traffic::Traffic *traffic READ trafficForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::video::VehicleVideo *video READ videoForQml CONSTANT FINAL)                           // nullable: vehicles
     Q_PROPERTY(sortie::maptiles::OfflineMaps *offlineMaps READ offlineMapsForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::deconfliction::ProximityMonitor *proximity READ proximityForQml CONSTANT FINAL)        // nullable: vehicles
     Q_PROPERTY(sortie::airspace::ZoneAlertMonitor *zoneAlerts READ zoneAlertsForQml CONSTANT FINAL)           // nullable: vehicles
@@ -158,6 +164,8 @@ public:
     airspace::ZoneFeed &zoneFeed() { return *m_zoneFeed; }
     // Manned traffic: the picture, the receiver's feed and the server's ADS-B list.
     traffic::Traffic &traffic() { return *m_traffic; }
+    // Each vehicle's live video; null in a graph without vehicles.
+    video::VehicleVideo *video() const { return m_video.get(); }
     // Maps taken offline: the area, the download into an MBTiles pack, cache-only (docs/offline-maps.md).
     maptiles::OfflineMaps &offlineMaps() { return *m_offlineMaps; }
     // In-flight closest-approach alerts between the fleet's vehicles and against the traffic;
@@ -197,6 +205,7 @@ private:
     airspace::ZoneSharing *zoneSharingForQml() const { return m_zoneSharing.get(); }
     airspace::ZoneFeed *zoneFeedForQml() const { return m_zoneFeed.get(); }
     traffic::Traffic *trafficForQml() const { return m_traffic.get(); }
+    video::VehicleVideo *videoForQml() const { return m_video.get(); }
     maptiles::OfflineMaps *offlineMapsForQml() const { return m_offlineMaps.get(); }
     deconfliction::ProximityMonitor *proximityForQml() const { return m_proximity.get(); }
     airspace::ZoneAlertMonitor *zoneAlertsForQml() const { return m_zoneAlerts.get(); }
@@ -218,6 +227,7 @@ private:
     std::unique_ptr<airspace::ZoneSharing> m_zoneSharing;
     std::unique_ptr<airspace::ZoneFeed> m_zoneFeed;
     std::unique_ptr<traffic::Traffic> m_traffic;
+    std::unique_ptr<video::VehicleVideo> m_video;
     std::unique_ptr<maptiles::OfflineMaps> m_offlineMaps;
     std::unique_ptr<FleetRoutes> m_fleetRoutes;
     std::unique_ptr<deconfliction::RouteDeconfliction> m_deconfliction;

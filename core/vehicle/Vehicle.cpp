@@ -54,6 +54,12 @@ Vehicle::Vehicle(VehicleLink *link, QObject *parent, size_t historyCapacity)
         emit lastErrorChanged();
     });
     // What the vehicle reports on its own (a fence breach) goes beside the commands, as an alert.
+    connect(link, &VehicleLink::videoStreamUriReported, this, [this](const QString &uri) {
+        if (uri == m_videoStreamUri)
+            return;
+        m_videoStreamUri = uri;
+        emit videoStreamUriChanged();
+    });
     connect(link, &VehicleLink::alertReported, this, [this](const QString &text) {
         if (m_commandLog)
             m_commandLog->alert(name(), text);

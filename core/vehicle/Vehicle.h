@@ -35,6 +35,8 @@ class Vehicle : public QObject
     Q_PROPERTY(bool connected READ isConnected NOTIFY linkStateChanged)
     Q_PROPERTY(bool stale READ isStale NOTIFY staleChanged)
     Q_PROPERTY(QString lastError READ lastError NOTIFY lastErrorChanged)
+    // The camera's stream as the vehicle publishes it (video_stream_uri); empty: none said.
+    Q_PROPERTY(QString videoStreamUri READ videoStreamUri NOTIFY videoStreamUriChanged)
     Q_PROPERTY(QGeoCoordinate position READ position NOTIFY telemetryChanged)
     Q_PROPERTY(QGeoCoordinate home READ home NOTIFY telemetryChanged)
     Q_PROPERTY(double altitudeAmsl READ altitudeAmsl NOTIFY telemetryChanged)
@@ -69,6 +71,7 @@ public:
     bool isConnected() const { return linkState() == VehicleLink::State::Connected; }
     // The link's last problem, for the operator; cleared when the link connects.
     QString lastError() const { return m_lastError; }
+    QString videoStreamUri() const { return m_videoStreamUri; }
 
     // The last value of a field with the vehicle's time, or nullopt before the first.
     std::optional<TelemetrySample> last(TelemetryField field) const;
@@ -141,6 +144,7 @@ signals:
     void staleChanged();
     void linkStateChanged();
     void lastErrorChanged();
+    void videoStreamUriChanged();
     void identityChanged();
     void notifyIntervalChanged();
     void commandFinished(const QString &command, bool ok, const QString &message);
@@ -165,6 +169,7 @@ private:
     QString m_protocol;
     VehicleIdentity m_identity;
     QString m_lastError;
+    QString m_videoStreamUri;
     QVariantMap m_parameters;
     std::vector<MissionItem> m_mission;
     TelemetryStore m_history;

@@ -97,6 +97,8 @@ signals:
     // Something the vehicle itself reports that the operator must see at once (a fence breach, with
     // what it did about it). The Vehicle puts it into the command log as an alert.
     void alertReported(const QString &text);
+    // Where the vehicle's camera video is (UgCS's video_stream_uri), as the vehicle last said.
+    void videoStreamUriReported(const QString &uri);
 };
 
 } // namespace sortie::vehicle

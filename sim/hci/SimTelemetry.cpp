@@ -46,6 +46,16 @@ void appendSlow(google::protobuf::RepeatedPtrField<pb::Telemetry> *out, qint64 t
     add(out, time, "flight_mode", pb::S_FLIGHT_MODE)->mutable_value()->set_stringvalue(SimTelemetry::flightMode(s.mode));
 }
 
+// The camera's stream (UgCS's video_stream_uri, camera subsystem), with the slow fields.
+void appendCamera(google::protobuf::RepeatedPtrField<pb::Telemetry> *out, qint64 time, const std::string &uri)
+{
+    if (uri.empty())
+        return;
+    auto *t = add(out, time, "video_stream_uri", pb::S_STRING);
+    t->mutable_telemetryfield()->set_subsystem(pb::S_CAMERA);
+    t->mutable_value()->set_stringvalue(uri);
+}
+
 } // namespace
 
 SimTelemetry::SimTelemetry(double rateHz, size_t historyCapacity)
@@ -89,6 +99,7 @@ void SimTelemetry::record(qint64 timeMs, const FlightModel::State &state, pb::Te
                     controlMode(state.mode), state.armed, state.mode};
     if (!(slow == m_lastSlow) || timeMs - m_lastSlowTime >= 1000) {
         appendSlow(event->mutable_telemetry(), timeMs, state);
+        appendCamera(event->mutable_telemetry(), timeMs, m_videoStreamUri);
         m_lastSlow = slow;
         m_lastSlowTime = timeMs;
     }

@@ -6,6 +6,7 @@
 #include <QtGlobal>
 
 #include <deque>
+#include <string>
 
 namespace com::ugcs::ucs::proto {
 class TelemetryEvent;
@@ -32,6 +33,8 @@ public:
     // nextTelemetryTime to the first sample left out, when some were.
     void history(qint64 fromMs, qint64 toMs, int limit, pb::GetTelemetryResponse *out) const;
     size_t samples() const { return m_history.size(); }
+    // The camera's stream, sent with the slow fields as `video_stream_uri` (camera subsystem); empty: none.
+    void setVideoStreamUri(const std::string &uri) { m_videoStreamUri = uri; }
 
     static int controlMode(FlightModel::Mode mode);   // 0 manual, 1 automatic, 2 click & go
     static const char *flightMode(FlightModel::Mode mode);
@@ -57,6 +60,7 @@ private:
     std::deque<Sample> m_history;
     Slow m_lastSlow;
     qint64 m_lastSlowTime = 0;
+    std::string m_videoStreamUri;
 };
 
 } // namespace sortie::sim

@@ -34,6 +34,8 @@ public:
     // The Vehicle object changed in the store (renamed, new profile...).
     void setVehicle(const pb::Vehicle &vehicle);
     const SimTelemetry &telemetry() const { return m_telemetry; }
+    // Where its camera's video is (sortie-sim --rtsp-port), sent as video_stream_uri.
+    void setVideoStreamUri(const QString &uri) { m_telemetry.setVideoStreamUri(uri.toStdString()); }
     // The ground under the vehicle (not owned): telemetry's altitude_agl is above it. Without one,
     // above the home ground.
     // The flight model lands on that ground and keeps above it.

@@ -31,6 +31,8 @@
 #include "HgtWriter.h"
 #include "SimProcess.h"
 #include "Traffic.h"
+#include "VehicleVideo.h"
+#include "ZoneFeed.h"
 
 #include <QMetaProperty>
 #include <QProcess>
@@ -120,8 +122,8 @@ private slots:
         const std::pair<const char *, QObject *> services[] = {
             {"connection", &graph.connection()}, {"missions", &graph.missions()}, {"elevation", graph.elevation()},
             {"fleet", graph.fleet()}, {"fleetRoutes", graph.fleetRoutes()}, {"recovery", graph.recovery()},
-            {"endurance", &graph.endurance()}, {"airspace", &graph.airspace()}, {"zoneSharing", &graph.zoneSharing()},
-            {"traffic", &graph.traffic()}, {"offlineMaps", &graph.offlineMaps()}, {"proximity", graph.proximity()},
+            {"endurance", &graph.endurance()}, {"airspace", &graph.airspace()}, {"zoneSharing", &graph.zoneSharing()}, {"zoneFeed", &graph.zoneFeed()},
+            {"traffic", &graph.traffic()}, {"video", graph.video()}, {"offlineMaps", &graph.offlineMaps()}, {"proximity", graph.proximity()},
             {"zoneAlerts", graph.zoneAlerts()}, {"deconfliction", graph.deconfliction()},
             {"recordingSettings", &graph.recordingSettings()}, {"replay", &graph.replay()},
             {"comparison", &graph.comparison()}, {"serverHistory", &graph.serverHistory()}, {"zoneFeed", &graph.zoneFeed()}};

@@ -23,6 +23,8 @@ Page {
     // The energy profile and wind the in-flight advice prices with (the mission page chooses them).
     readonly property RouteEndurance endurance: graph.endurance
     readonly property Traffic traffic: graph.traffic   // manned traffic around (ADS-B)
+    readonly property VehicleVideo video: graph.video  // each vehicle's live video; null without vehicles
+    property alias videoPanel: videoPanel
     // Every route given to a vehicle: drawn under the flight plans, listed under the vehicles.
     readonly property FleetRoutes fleetRoutes: graph.fleetRoutes
     readonly property ProximityMonitor proximity: graph.proximity   // closest-approach alerts (the fleet and the traffic); null without vehicles
@@ -146,10 +148,20 @@ Page {
         ColumnLayout {
             SplitView.fillWidth: true
             spacing: 0
-            MapPane {
-                id: pane
+            // The map and the chosen vehicle's video: the video in a corner of the map, or swapped,
+            // the video in the map's place and the map in the corner (picture in picture).
+            Item {
+                id: mapArea
                 Layout.fillWidth: true
                 Layout.fillHeight: true
+            MapPane {
+                id: pane
+                readonly property bool small: videoPanel.visible && videoPanel.swapped
+                x: small ? 8 : 0
+                y: small ? mapArea.height - height - 40 : 0  // above the video's URL bar
+                width: small ? Math.min(360, mapArea.width / 2) : mapArea.width
+                height: small ? Math.min(240, mapArea.height / 2) : mapArea.height
+                z: small ? 2 : 0
                 units: page.units
                 mapSource: page.mapSource
                 tileUrlTemplate: page.tileUrlTemplate
@@ -242,6 +254,17 @@ Page {
                         ToolTip.visible: hovered
                         ToolTip.text: qsTr("Keep the chosen vehicle in the middle of the map")
                     }
+                    Button {
+                        objectName: "videoButton"
+                        text: qsTr("Video")
+                        checkable: true
+                        checked: true
+                        focusPolicy: Qt.NoFocus
+                        visible: page.video !== null
+                        onToggled: videoPanel.shownByOperator = checked
+                        ToolTip.visible: hovered
+                        ToolTip.text: qsTr("Show the chosen vehicle's video over the map")
+                    }
                 }
                 Connections {
                     target: page.replay
@@ -256,6 +279,20 @@ Page {
                                              () => { page.fleet.goTo(vehicleLayer.currentIndex, coordinate.latitude, coordinate.longitude); commands.goMode = false })
                     }
                 }
+            }
+            VideoPanel {
+                id: videoPanel
+                property bool shownByOperator: true
+                theme: page.theme
+                video: page.video
+                vehicle: visible ? page.current : null
+                visible: page.video !== null && page.current !== null && !page.replaying && shownByOperator
+                x: swapped ? 0 : mapArea.width - width - 8
+                y: swapped ? 0 : mapArea.height - height - 26  // above the map's attribution
+                width: swapped ? mapArea.width : Math.min(implicitWidth, mapArea.width / 2)
+                height: swapped ? mapArea.height : Math.min(implicitHeight, mapArea.height / 2)
+                z: 1
+            }
             }
             // Every in-flight alert, most urgent first within each: the battery's advice (amber,
             // then red, with Return home behind the command bar's confirmation), two of ours or

@@ -33,6 +33,8 @@
 #include "ValidationIssueModel.h"
 #include "Vehicle.h"
 #include "VehicleFleet.h"
+#include "VehicleVideo.h"
+#include "VideoReceiver.h"
 #include "VehicleGroup.h"
 #include "FleetRoutes.h"
 #include "VehicleLink.h"
@@ -189,6 +191,22 @@ struct TrafficForeign
     Q_GADGET
     QML_FOREIGN(sortie::traffic::Traffic)
     QML_NAMED_ELEMENT(Traffic)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+// Live video (core/video): a vehicle's receiver (its state for the views) and the service that
+// makes one per vehicle, both made in C++.
+struct VideoReceiverForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::video::VideoReceiver)
+    QML_NAMED_ELEMENT(VideoReceiver)
+    QML_UNCREATABLE("made by the vehicles' video service")
+};
+struct VehicleVideoForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::video::VehicleVideo)
+    QML_NAMED_ELEMENT(VehicleVideo)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 // Maps taken offline (core/maptiles): the Offline maps dialog's controller, made by the client graph.

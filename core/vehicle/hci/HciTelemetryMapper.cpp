@@ -79,6 +79,15 @@ void appendHciTelemetry(const pb::Telemetry &t, int64_t now, TelemetryBatch &out
     out.push_back({*field, *value, time});
 }
 
+std::optional<std::string> hciVideoStreamUri(const pb::TelemetryEvent &event)
+{
+    std::optional<std::string> uri;
+    for (const pb::Telemetry &t : event.telemetry())
+        if (t.telemetryfield().code() == "video_stream_uri" && t.value().has_stringvalue())
+            uri = t.value().stringvalue();
+    return uri;
+}
+
 TelemetryBatch hciTelemetry(const pb::TelemetryEvent &event, int64_t now)
 {
     TelemetryBatch out;

@@ -2,6 +2,9 @@
 
 #include "TelemetrySample.h"
 
+#include <optional>
+#include <string>
+
 namespace com::ugcs::ucs::proto {
 class Telemetry;
 class TelemetryEvent;
@@ -18,5 +21,8 @@ namespace sortie::vehicle {
 // gets `now` (ms since the epoch).
 TelemetryBatch hciTelemetry(const com::ugcs::ucs::proto::TelemetryEvent &event, int64_t now);
 void appendHciTelemetry(const com::ugcs::ucs::proto::Telemetry &telemetry, int64_t now, TelemetryBatch &out);
+// The camera's `video_stream_uri` (a string field, UgCS's camera subsystem) when the event carries
+// one (the last, if several); nullopt otherwise. docs/video.md.
+std::optional<std::string> hciVideoStreamUri(const com::ugcs::ucs::proto::TelemetryEvent &event);
 
 } // namespace sortie::vehicle

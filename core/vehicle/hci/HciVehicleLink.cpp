@@ -101,6 +101,8 @@ void HciVehicleLink::onEvent(const pb::EventWrapper &event)
     TelemetryBatch batch = hciTelemetry(event.telemetryevent(), QDateTime::currentMSecsSinceEpoch());
     if (!batch.empty())
         emit telemetryReceived(batch);
+    if (const auto uri = hciVideoStreamUri(event.telemetryevent()))
+        emit videoStreamUriReported(QString::fromStdString(*uri));
 }
 
 template<class F>

@@ -1,0 +1,3 @@
+#include "VideoLog.h"
+
+Q_LOGGING_CATEGORY(lcVideo, "sortie.video")
