@@ -32,7 +32,6 @@
 #include "SimProcess.h"
 #include "Traffic.h"
 #include "VehicleVideo.h"
-#include "ZoneFeed.h"
 
 #include <QMetaProperty>
 #include <QProcess>
@@ -126,7 +125,7 @@ private slots:
             {"traffic", &graph.traffic()}, {"video", graph.video()}, {"offlineMaps", &graph.offlineMaps()}, {"proximity", graph.proximity()},
             {"zoneAlerts", graph.zoneAlerts()}, {"deconfliction", graph.deconfliction()},
             {"recordingSettings", &graph.recordingSettings()}, {"replay", &graph.replay()},
-            {"comparison", &graph.comparison()}, {"serverHistory", &graph.serverHistory()}, {"zoneFeed", &graph.zoneFeed()}};
+            {"comparison", &graph.comparison()}, {"serverHistory", &graph.serverHistory()}};
         const QMetaObject *meta = graph.metaObject();
         QCOMPARE(meta->propertyCount() - meta->propertyOffset(), int(std::size(services)));
         for (const auto &[name, object] : services) {
