@@ -1,0 +1,78 @@
+#include "SceneBuilder.h"
+
+#include <QElapsedTimer>
+#include <QFutureWatcher>
+#include <QtConcurrent/QtConcurrentRun>
+
+namespace sortie::scene3d {
+
+SceneMeshes buildScene(const SceneInput &input)
+{
+    QElapsedTimer clock;
+    clock.start();
+    SceneMeshes out;
+    out.frame = input.frame;
+    out.builtOn = QThread::currentThread();
+    static const HeightGrid none;
+    const HeightGrid &grid = input.grid ? *input.grid : none;
+    out.terrain = buildTerrain(grid, input.frame, input.terrain);
+    for (const RouteInput &r : input.routes) {
+        RouteMesh m = buildRoute(r.path, input.frame, grid, r.style);
+        out.routes.append(m.path);
+        out.curtains.append(m.curtain);
+        out.waypoints.push_back(std::move(m.waypoints));
+        out.paths.push_back(std::move(m.points));
+    }
+    for (const ZoneInput &z : input.zones)
+        out.zones.append(buildZone(z.zone, input.frame, grid, z.style).mesh);
+    out.buildMs = double(clock.nsecsElapsed()) / 1e6;
+    return out;
+}
+
+struct SceneBuilder::Running
+{
+    QFutureWatcher<SceneMeshes> watcher;
+};
+
+SceneBuilder::SceneBuilder(QObject *parent) : QObject(parent), m_job(std::make_unique<Running>())
+{
+    connect(&m_job->watcher, &QFutureWatcher<SceneMeshes>::finished, this, [this] {
+        m_running = false;
+        if (m_next) {
+            // a newer request came while this one was building: this result is stale
+            std::unique_ptr<SceneInput> next = std::move(m_next);
+            start(std::move(*next));
+            return;
+        }
+        m_latest = std::make_shared<const SceneMeshes>(m_job->watcher.result());
+        emit built();
+    });
+}
+
+SceneBuilder::~SceneBuilder()
+{
+    waitForIdle();
+}
+
+void SceneBuilder::waitForIdle()
+{
+    m_next.reset();
+    m_job->watcher.waitForFinished();
+}
+
+void SceneBuilder::build(SceneInput input)
+{
+    if (m_running) {
+        m_next = std::make_unique<SceneInput>(std::move(input));
+        return;
+    }
+    start(std::move(input));
+}
+
+void SceneBuilder::start(SceneInput input)
+{
+    m_running = true;
+    m_job->watcher.setFuture(QtConcurrent::run([in = std::move(input)] { return buildScene(in); }));
+}
+
+} // namespace sortie::scene3d
