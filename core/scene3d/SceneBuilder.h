@@ -34,6 +34,7 @@ struct SceneInput
     TerrainOptions terrain;
     std::vector<RouteInput> routes;
     std::vector<ZoneInput> zones;
+    bool withTerrain = true;  // false: routes and zones only (the terrain kept from an earlier build)
 };
 
 struct SceneMeshes
@@ -65,7 +66,7 @@ public:
     void build(SceneInput input);
     bool busy() const { return m_running; }
     std::shared_ptr<const SceneMeshes> latest() const { return m_latest; }
-    // Blocks until nothing is building (for the destructor and tests).
+    // Blocks until the newest request is built (`built` emitted from here then).
     void waitForIdle();
 
 signals:
@@ -73,6 +74,7 @@ signals:
 
 private:
     void start(SceneInput input);
+    void finish();
     struct Running;
     std::unique_ptr<Running> m_job;
     std::unique_ptr<SceneInput> m_next;

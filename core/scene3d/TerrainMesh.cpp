@@ -21,14 +21,14 @@ QColor heightColour(double height, double lowest, double highest)
     const double span = highest - lowest;
     const double t = span > 0.0 ? std::clamp((height - lowest) / span, 0.0, 1.0) : 0.3;
     struct Stop { double at; int r, g, b; };
-    static constexpr Stop stops[] = {{0.0, 86, 140, 70}, {0.35, 150, 170, 90}, {0.65, 170, 140, 90}, {0.9, 140, 115, 95}, {1.0, 200, 200, 200}};
+    static constexpr Stop stops[] = {{0.0, 86, 140, 70}, {0.35, 150, 170, 90}, {0.65, 170, 140, 90}, {0.9, 140, 115, 95}, {1.0, 125, 110, 100}};
     for (std::size_t i = 1; i < std::size(stops); ++i)
         if (t <= stops[i].at) {
             const Stop &a = stops[i - 1], &b = stops[i];
             const double f = (t - a.at) / (b.at - a.at);
             return QColor(int(a.r + (b.r - a.r) * f), int(a.g + (b.g - a.g) * f), int(a.b + (b.b - a.b) * f));
         }
-    return QColor(200, 200, 200);
+    return QColor(125, 110, 100);
 }
 
 namespace {

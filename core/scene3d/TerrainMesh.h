@@ -47,7 +47,8 @@ int strideFor(double distance, const TerrainOptions &options);
 // level of detail its distance from the focus asks for, with skirts hanging below every edge so two
 // tiles of different detail leave no crack between them.
 TerrainMesh buildTerrain(const HeightGrid &grid, const SceneFrame &frame, const TerrainOptions &options = {});
-// The colour of the ground by height between the grid's lowest and highest (green, ochre, brown, grey).
+// The colour of the ground by height between the grid's lowest and highest (green, ochre, brown, dark
+// rock: never the sky's pale blue-grey).
 QColor heightColour(double height, double lowest, double highest);
 
 } // namespace sortie::scene3d
