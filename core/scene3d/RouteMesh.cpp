@@ -29,11 +29,9 @@ void addTube(Mesh &mesh, const std::vector<QVector3D> &points, float width, cons
             const std::uint32_t v1 = mesh.addVertex(a + q, n, colour);
             const std::uint32_t v2 = mesh.addVertex(b + q, n, colour);
             const std::uint32_t v3 = mesh.addVertex(b + p, n, colour);
-            // both windings: thin tubes are seen end-on too
+            // one winding: the views draw these meshes without back-face culling
             mesh.addTriangle(v0, v1, v2);
             mesh.addTriangle(v0, v2, v3);
-            mesh.addTriangle(v0, v2, v1);
-            mesh.addTriangle(v0, v3, v2);
         }
     }
 }
@@ -50,9 +48,7 @@ void addOctahedron(Mesh &mesh, const QVector3D &c, float w, float h, const QVect
             if (!outward)
                 n = -n;
             const std::uint32_t a = mesh.addVertex(p, n, colour), b = mesh.addVertex(q, n, colour), t = mesh.addVertex(apex, n, colour);
-            // both windings: the lighting takes the outward normal, a camera inside still sees it
             mesh.addTriangle(a, b, t);
-            mesh.addTriangle(a, t, b);
         }
     }
 }
@@ -122,8 +118,6 @@ RouteMesh buildRoute(const airspace::FlownPath &path, const SceneFrame &frame, c
             if (k > 0) {
                 out.curtain.addTriangle(prevTop, prevFoot, g);
                 out.curtain.addTriangle(prevTop, g, t);
-                out.curtain.addTriangle(prevTop, g, prevFoot);
-                out.curtain.addTriangle(prevTop, t, g);
             }
             prevTop = t;
             prevFoot = g;

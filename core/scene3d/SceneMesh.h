@@ -10,7 +10,8 @@
 namespace sortie::scene3d {
 
 // Triangles in the scene's frame (SceneFrame): a position, a normal and an RGBA colour per vertex,
-// three indices per triangle (counter-clockwise seen from the front).
+// three indices per triangle. Walls, skirts, tubes and curtains are seen from both sides: the
+// views draw them without back-face culling (one winding each, not two).
 struct Mesh
 {
     std::vector<QVector3D> positions;

@@ -125,11 +125,9 @@ TerrainMesh buildTerrain(const HeightGrid &grid, const SceneFrame &frame, const 
                     lower.push_back(m.addVertex(p, m.normals[v], m.colours[v]));
                 }
                 for (std::size_t k = 0; k + 1 < edge.size(); ++k) {
-                    // both windings: a skirt is seen from either side
+                    // one winding: the view draws the ground without back-face culling
                     m.addTriangle(edge[k], edge[k + 1], lower[k + 1]);
                     m.addTriangle(edge[k], lower[k + 1], lower[k]);
-                    m.addTriangle(edge[k], lower[k + 1], edge[k + 1]);
-                    m.addTriangle(edge[k], lower[k], lower[k + 1]);
                 }
             };
             std::vector<std::uint32_t> south, north, west, east;

@@ -128,8 +128,6 @@ ZoneMesh buildZone(const airspace::Zone &zone, const SceneFrame &frame, const He
             const std::uint32_t d = out.mesh.addVertex(frame.toScene(pt.x, pt.y, ceilingAt(p)), normal, colour);
             out.mesh.addTriangle(a, b, c);
             out.mesh.addTriangle(a, c, d);
-            out.mesh.addTriangle(a, c, b);
-            out.mesh.addTriangle(a, d, c);
         }
     };
     const auto cap = [&](const std::vector<PlanePoint> &ring, bool lid) {
@@ -140,7 +138,6 @@ ZoneMesh buildZone(const airspace::Zone &zone, const SceneFrame &frame, const He
             out.mesh.addVertex(frame.toScene(p.x, p.y, lid ? ceilingAt(p) : floorAt(p)), normal, colour);
         for (std::size_t k = 0; k + 2 < tris.size(); k += 3) {
             out.mesh.addTriangle(first + tris[k], first + tris[k + 1], first + tris[k + 2]);
-            out.mesh.addTriangle(first + tris[k], first + tris[k + 2], first + tris[k + 1]);
         }
     };
     const auto ccw = [](std::vector<PlanePoint> ring) {

@@ -17,7 +17,9 @@ Item {
     required property ElevationService elevation
     required property Theme theme
     property alias scene: scene
-    property alias view: view
+    // Qt Quick 3D draws through the RHI (OpenGL here): the software scene graph, which the client
+    // picks on a machine without a GPU device, cannot draw it (docs/view3d.md).
+    readonly property bool canDraw: GraphicsInfo.api !== GraphicsInfo.Software
     property alias exaggeration: scene.exaggeration
     focus: true
 
@@ -31,9 +33,9 @@ Item {
     }
 
     View3D {
-        id: view
         objectName: "scene3dView"
         anchors.fill: parent
+        visible: root.canDraw
         camera: camera
         environment: SceneEnvironment {
             backgroundMode: SceneEnvironment.Color
@@ -57,12 +59,12 @@ Item {
         Model {
             objectName: "terrainModel"
             geometry: scene.terrain
-            materials: DefaultMaterial { vertexColorsEnabled: true; specularAmount: 0 }
+            materials: DefaultMaterial { vertexColorsEnabled: true; specularAmount: 0; cullMode: Material.NoCulling }
         }
         Model {
             objectName: "routesModel"
             geometry: scene.routes
-            materials: DefaultMaterial { vertexColorsEnabled: true; lighting: DefaultMaterial.NoLighting }
+            materials: DefaultMaterial { vertexColorsEnabled: true; lighting: DefaultMaterial.NoLighting; cullMode: Material.NoCulling }
         }
         Model {
             objectName: "curtainsModel"
@@ -104,6 +106,11 @@ Item {
         anchors.bottom: parent.bottom
         anchors.margins: 8
         spacing: 4
+        Label {
+            visible: !root.canDraw
+            text: qsTr("The 3D view needs OpenGL: start Sortie with QSG_RHI_BACKEND=opengl.")
+            color: root.theme.windowText
+        }
         Label {
             visible: !scene.hasScene
             text: qsTr("Open a route to see it in 3D.")
