@@ -27,6 +27,7 @@ packages=(
   gstreamer1.0-tools  # gst-launch-1.0: the video latency benchmark's reference receiver
   libsdl2-dev  # SDL2: gamepads (core/gamepad), tested with SDL's virtual joysticks
   qt6-quick3d-dev qml6-module-quick3d qml6-module-quick3d-helpers  # Qt Quick 3D: the 3D view (ui/view3d)
+  qt6-shadertools-dev  # qt6-quick3d-dev's CMake package asks for Qt6ShaderTools without depending on it
   libgl1-mesa-dri  # Mesa's llvmpipe: the 3D view's tests render with OpenGL under Xvfb
   qtkeychain-qt6-dev libsecret-1-0  # the remembered password in the OS keyring (QtKeychain loads libsecret)
   dbus-daemon gnome-keyring libglib2.0-bin libsecret-tools  # tst_keyring: a session bus, a keyring, gdbus, secret-tool

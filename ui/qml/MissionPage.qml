@@ -31,6 +31,14 @@ Page {
     property real orthophotoOpacity: 0.8
     property string tilePackFile: ""    // the web source's offline pack (OfflineMaps.packFile)
     property bool tilesCacheOnly: false // the web source never uses the network
+    property bool show3d: false          // the map's place taken by the 3D view
+    onShow3dChanged: {
+        if (show3d)
+            view3d.setSource("Scene3DView.qml", { document: page.doc, fleetRoutes: page.fleetRoutes, airspace: page.airspace,
+                                                  elevation: page.elevation, theme: page.theme })
+        else
+            view3d.source = ""
+    }
     required property Theme theme
     readonly property ElevationService elevation: graph.elevation   // the terrain, for the profile
     readonly property RouteEndurance endurance: graph.endurance     // will the battery last: figures, changes, point of no return
@@ -373,6 +381,32 @@ Page {
                         onClicked: { scanDraft.clear(); page.tool = "" }
                     }
                 }
+            }
+            Loader {
+                // The same route, selection and zones in 3D (ui/view3d, docs/view3d.md), over the map
+                // while the operator wants it; loaded only then (Qt Quick 3D needs OpenGL).
+                id: view3d
+                objectName: "missionView3dLoader"
+                anchors.fill: parent
+                z: 50
+                visible: page.show3d
+                focus: page.show3d
+            }
+            RoundButton {
+                // The 2D/3D switch, under the zoom buttons.
+                objectName: "view3dSwitch"
+                anchors.right: parent.right
+                anchors.top: parent.top
+                anchors.rightMargin: 10
+                anchors.topMargin: pane.controlsTop + 100
+                z: 51
+                checkable: true
+                checked: page.show3d
+                text: page.show3d ? qsTr("2D") : qsTr("3D")
+                focusPolicy: Qt.NoFocus
+                onToggled: page.show3d = checked
+                ToolTip.visible: hovered
+                ToolTip.text: page.show3d ? qsTr("Back to the map") : qsTr("The route, the ground and the zones in 3D")
             }
         }
         TerrainProfilePanel {
