@@ -2244,6 +2244,22 @@
         <source>Done</source>
         <translation>Fertig</translation>
     </message>
+    <message>
+        <source>2D</source>
+        <translation>2D</translation>
+    </message>
+    <message>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <source>Back to the map</source>
+        <translation>Zurück zur Karte</translation>
+    </message>
+    <message>
+        <source>The route, the ground and the zones in 3D</source>
+        <translation>Route, Gelände und Zonen in 3D</translation>
+    </message>
 </context>
 <context>
     <name>NfzConversion</name>
@@ -3735,6 +3751,29 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>Scene3DView</name>
+    <message>
+        <source>The 3D view needs OpenGL: start Sortie with QSG_RHI_BACKEND=opengl.</source>
+        <translation>Die 3D-Ansicht braucht OpenGL: starten Sie Sortie mit QSG_RHI_BACKEND=opengl.</translation>
+    </message>
+    <message>
+        <source>Open a route to see it in 3D.</source>
+        <translation>Öffnen Sie eine Route, um sie in 3D zu sehen.</translation>
+    </message>
+    <message>
+        <source>Purple ground: no elevation data there.</source>
+        <translation>Violetter Boden: dort keine Höhendaten.</translation>
+    </message>
+    <message>
+        <source>Vertical exaggeration</source>
+        <translation>Überhöhung</translation>
+    </message>
+    <message>
+        <source>Fit route</source>
+        <translation>Route einpassen</translation>
+    </message>
+</context>
+<context>
     <name>SegmentEditor</name>
     <message>
         <source>Radius</source>
@@ -4369,6 +4408,14 @@ Ereignisse: %1
         <source>Compare these fields across every vehicle</source>
         <translation>Diese Felder über alle Fahrzeuge vergleichen</translation>
     </message>
+    <message>
+        <source>Video</source>
+        <translation>Video</translation>
+    </message>
+    <message>
+        <source>Show the chosen vehicle&apos;s video over the map</source>
+        <translation>Das Video des gewählten Fahrzeugs über der Karte zeigen</translation>
+    </message>
 </context>
 <context>
     <name>TerrainFollow</name>
@@ -4908,6 +4955,132 @@ Ereignisse: %1
     <message>
         <source>not stated</source>
         <translation>nicht angegeben</translation>
+    </message>
+</context>
+<context>
+    <name>VideoPanel</name>
+    <message>
+        <source>rtsp://, udp://:5600 or an .sdp file</source>
+        <translation>rtsp://, udp://:5600 oder eine .sdp-Datei</translation>
+    </message>
+    <message>
+        <source>This vehicle&apos;s video: empty plays the stream the vehicle publishes; a URL typed here overrides it and is remembered.</source>
+        <translation>Das Video dieses Fahrzeugs: leer spielt den Stream, den das Fahrzeug meldet; eine hier eingegebene URL ersetzt ihn und wird gemerkt.</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>Aufnehmen</translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation>Aufnahme nach %1</translation>
+    </message>
+    <message>
+        <source>Record this video as received, beside the flight log</source>
+        <translation>Dieses Video wie empfangen aufnehmen, neben dem Flugprotokoll</translation>
+    </message>
+    <message>
+        <source>Map</source>
+        <translation>Karte</translation>
+    </message>
+    <message>
+        <source>Swap</source>
+        <translation>Tauschen</translation>
+    </message>
+</context>
+<context>
+    <name>VideoSource</name>
+    <message>
+        <source>latency &apos;%1&apos;: expected milliseconds from 0 to 10000</source>
+        <translation>Latenz „%1“: erwartet Millisekunden von 0 bis 10000</translation>
+    </message>
+    <message>
+        <source>codec &apos;%1&apos;: expected h264 or h265</source>
+        <translation>Codec „%1“: erwartet h264 oder h265</translation>
+    </message>
+    <message>
+        <source>payload &apos;%1&apos;: expected a dynamic RTP payload type from 96 to 127</source>
+        <translation>Payload „%1“: erwartet ein dynamischer RTP-Payload-Typ von 96 bis 127</translation>
+    </message>
+    <message>
+        <source>unknown option &apos;%1&apos;</source>
+        <translation>unbekannte Option „%1“</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not an IP address to listen on</source>
+        <translation>„%1“ ist keine IP-Adresse zum Empfangen</translation>
+    </message>
+    <message>
+        <source>port %1 is out of range</source>
+        <translation>Port %1 liegt außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <source>an RTSP URL needs a host: rtsp://host:8554/path</source>
+        <translation>eine RTSP-URL braucht einen Host: rtsp://host:8554/pfad</translation>
+    </message>
+    <message>
+        <source>port 0 is out of range</source>
+        <translation>Port 0 liegt außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <source>SDP file %1: %2</source>
+        <translation>SDP-Datei %1: %2</translation>
+    </message>
+    <message>
+        <source>RTSP over TCP %1</source>
+        <translation>RTSP über TCP %1</translation>
+    </message>
+    <message>
+        <source>RTSP %1</source>
+        <translation>RTSP %1</translation>
+    </message>
+    <message>
+        <source>RTP/UDP %1 port %2</source>
+        <translation>RTP/UDP %1 Port %2</translation>
+    </message>
+    <message>
+        <source>MPEG-TS/UDP port %1</source>
+        <translation>MPEG-TS/UDP Port %1</translation>
+    </message>
+    <message>
+        <source>no video URL</source>
+        <translation>keine Video-URL</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a URL</source>
+        <translation>„%1“ ist keine URL</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a video URL Sortie plays: use rtsp://, rtspt://, udp://, udp+ts:// or an .sdp file</source>
+        <translation>„%1“ ist keine Video-URL, die Sortie abspielt: verwenden Sie rtsp://, rtspt://, udp://, udp+ts:// oder eine .sdp-Datei</translation>
+    </message>
+    <message>
+        <source>SDP file %1 cannot be read as SDP</source>
+        <translation>SDP-Datei %1 kann nicht als SDP gelesen werden</translation>
+    </message>
+    <message>
+        <source>SDP file %1: port %2 is out of range</source>
+        <translation>SDP-Datei %1: Port %2 liegt außerhalb des Bereichs</translation>
+    </message>
+    <message>
+        <source>SDP file %1: the video has no payload type</source>
+        <translation>SDP-Datei %1: das Video hat keinen Payload-Typ</translation>
+    </message>
+    <message>
+        <source>SDP file %1: payload type %2 is not a dynamic one (96 to 127)</source>
+        <translation>SDP-Datei %1: Payload-Typ %2 ist nicht dynamisch (96 bis 127)</translation>
+    </message>
+    <message>
+        <source>SDP file %1: no rtpmap for payload %2</source>
+        <translation>SDP-Datei %1: kein rtpmap für Payload %2</translation>
+    </message>
+    <message>
+        <source>SDP file %1: the video is %2, not H.264 or H.265</source>
+        <translation>SDP-Datei %1: das Video ist %2, nicht H.264 oder H.265</translation>
+    </message>
+    <message>
+        <source>SDP file %1 describes no video</source>
+        <translation>SDP-Datei %1 beschreibt kein Video</translation>
     </message>
 </context>
 <context>
@@ -7282,6 +7455,10 @@ Ereignisse: %1
         <source>This action has no field &quot;%1&quot;.</source>
         <translation>Diese Aktion hat kein Feld „%1“.</translation>
     </message>
+    <message>
+        <source>Choose an action to add.</source>
+        <translation>Wählen Sie eine Aktion zum Hinzufügen.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::secrets::PasswordVault</name>
@@ -7745,6 +7922,21 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::VideoItem</name>
+    <message>
+        <source>No video for this vehicle</source>
+        <translation>Kein Video für dieses Fahrzeug</translation>
+    </message>
+    <message>
+        <source>hardware decoding (%1)</source>
+        <translation>Hardware-Dekodierung (%1)</translation>
+    </message>
+    <message>
+        <source>software decoding (%1)</source>
+        <translation>Software-Dekodierung (%1)</translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::XyzTileSource</name>
     <message>
         <source>Web tiles</source>
@@ -7865,6 +8057,88 @@ Behörde: %1</translation>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::video::VideoReceiver</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>GStreamer&apos;s %1 is missing: install %2</source>
+        <translation>GStreamers %1 fehlt: installieren Sie %2</translation>
+    </message>
+    <message>
+        <source>No %1 decoder: install %2</source>
+        <translation>Kein %1-Decoder: installieren Sie %2</translation>
+    </message>
+    <message>
+        <source>The video pipeline could not be built: %1</source>
+        <translation>Die Video-Pipeline konnte nicht gebaut werden: %1</translation>
+    </message>
+    <message>
+        <source>No %1: install %2</source>
+        <translation>Kein %1: installieren Sie %2</translation>
+    </message>
+    <message>
+        <source>A GStreamer plugin is missing: %1</source>
+        <translation>Ein GStreamer-Plugin fehlt: %1</translation>
+    </message>
+    <message>
+        <source>the stream ended</source>
+        <translation>der Stream endete</translation>
+    </message>
+    <message>
+        <source>no frame for %1 s</source>
+        <translation>%1 s kein Bild</translation>
+    </message>
+    <message>
+        <source>no frame since the last attempt</source>
+        <translation>kein Bild seit dem letzten Versuch</translation>
+    </message>
+    <message>
+        <source>nothing received yet</source>
+        <translation>noch nichts empfangen</translation>
+    </message>
+    <message>
+        <source>No video URL</source>
+        <translation>Keine Video-URL</translation>
+    </message>
+    <message>
+        <source>Video stopped</source>
+        <translation>Video angehalten</translation>
+    </message>
+    <message>
+        <source>Connecting to %1…</source>
+        <translation>Verbinde mit %1…</translation>
+    </message>
+    <message>
+        <source>Connecting to %1… (%2)</source>
+        <translation>Verbinde mit %1… (%2)</translation>
+    </message>
+    <message>
+        <source>%1, %2×%3, %4 decoding (%5)</source>
+        <translation>%1, %2×%3, %4-Dekodierung (%5)</translation>
+    </message>
+    <message>
+        <source>hardware</source>
+        <translation>Hardware</translation>
+    </message>
+    <message>
+        <source>software</source>
+        <translation>Software</translation>
+    </message>
+    <message>
+        <source>No video since %1 (%2); reconnecting</source>
+        <translation>Kein Video seit %1 (%2); verbinde neu</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::video::VideoRuntime</name>
+    <message>
+        <source>GStreamer did not start: %1</source>
+        <translation>GStreamer ist nicht gestartet: %1</translation>
     </message>
 </context>
 </TS>

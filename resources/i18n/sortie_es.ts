@@ -2244,6 +2244,22 @@
         <source>Done</source>
         <translation>Hecho</translation>
     </message>
+    <message>
+        <source>2D</source>
+        <translation>2D</translation>
+    </message>
+    <message>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <source>Back to the map</source>
+        <translation>Volver al mapa</translation>
+    </message>
+    <message>
+        <source>The route, the ground and the zones in 3D</source>
+        <translation>La ruta, el terreno y las zonas en 3D</translation>
+    </message>
 </context>
 <context>
     <name>NfzConversion</name>
@@ -3735,6 +3751,29 @@ eventos:   %1
     </message>
 </context>
 <context>
+    <name>Scene3DView</name>
+    <message>
+        <source>The 3D view needs OpenGL: start Sortie with QSG_RHI_BACKEND=opengl.</source>
+        <translation>La vista 3D necesita OpenGL: inicie Sortie con QSG_RHI_BACKEND=opengl.</translation>
+    </message>
+    <message>
+        <source>Open a route to see it in 3D.</source>
+        <translation>Abra una ruta para verla en 3D.</translation>
+    </message>
+    <message>
+        <source>Purple ground: no elevation data there.</source>
+        <translation>Terreno morado: sin datos de elevación.</translation>
+    </message>
+    <message>
+        <source>Vertical exaggeration</source>
+        <translation>Exageración vertical</translation>
+    </message>
+    <message>
+        <source>Fit route</source>
+        <translation>Encuadrar ruta</translation>
+    </message>
+</context>
+<context>
     <name>SegmentEditor</name>
     <message>
         <source>Radius</source>
@@ -4369,6 +4408,14 @@ eventos:   %1
         <source>Compare these fields across every vehicle</source>
         <translation>Comparar estos campos entre todos los vehículos</translation>
     </message>
+    <message>
+        <source>Video</source>
+        <translation>Vídeo</translation>
+    </message>
+    <message>
+        <source>Show the chosen vehicle&apos;s video over the map</source>
+        <translation>Mostrar el vídeo del vehículo elegido sobre el mapa</translation>
+    </message>
 </context>
 <context>
     <name>TerrainFollow</name>
@@ -4908,6 +4955,132 @@ eventos:   %1
     <message>
         <source>not stated</source>
         <translation>no indicada</translation>
+    </message>
+</context>
+<context>
+    <name>VideoPanel</name>
+    <message>
+        <source>rtsp://, udp://:5600 or an .sdp file</source>
+        <translation>rtsp://, udp://:5600 o un archivo .sdp</translation>
+    </message>
+    <message>
+        <source>This vehicle&apos;s video: empty plays the stream the vehicle publishes; a URL typed here overrides it and is remembered.</source>
+        <translation>El vídeo de este vehículo: vacío reproduce el flujo que publica el vehículo; una URL escrita aquí lo sustituye y se recuerda.</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>Grabar</translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation>Grabando en %1</translation>
+    </message>
+    <message>
+        <source>Record this video as received, beside the flight log</source>
+        <translation>Grabar este vídeo tal como llega, junto al registro de vuelo</translation>
+    </message>
+    <message>
+        <source>Map</source>
+        <translation>Mapa</translation>
+    </message>
+    <message>
+        <source>Swap</source>
+        <translation>Intercambiar</translation>
+    </message>
+</context>
+<context>
+    <name>VideoSource</name>
+    <message>
+        <source>latency &apos;%1&apos;: expected milliseconds from 0 to 10000</source>
+        <translation>latencia «%1»: se esperan milisegundos de 0 a 10000</translation>
+    </message>
+    <message>
+        <source>codec &apos;%1&apos;: expected h264 or h265</source>
+        <translation>códec «%1»: se espera h264 o h265</translation>
+    </message>
+    <message>
+        <source>payload &apos;%1&apos;: expected a dynamic RTP payload type from 96 to 127</source>
+        <translation>payload «%1»: se espera un tipo de payload RTP dinámico de 96 a 127</translation>
+    </message>
+    <message>
+        <source>unknown option &apos;%1&apos;</source>
+        <translation>opción desconocida «%1»</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not an IP address to listen on</source>
+        <translation>«%1» no es una dirección IP en la que escuchar</translation>
+    </message>
+    <message>
+        <source>port %1 is out of range</source>
+        <translation>el puerto %1 está fuera de rango</translation>
+    </message>
+    <message>
+        <source>an RTSP URL needs a host: rtsp://host:8554/path</source>
+        <translation>una URL RTSP necesita un host: rtsp://host:8554/ruta</translation>
+    </message>
+    <message>
+        <source>port 0 is out of range</source>
+        <translation>el puerto 0 está fuera de rango</translation>
+    </message>
+    <message>
+        <source>SDP file %1: %2</source>
+        <translation>Archivo SDP %1: %2</translation>
+    </message>
+    <message>
+        <source>RTSP over TCP %1</source>
+        <translation>RTSP sobre TCP %1</translation>
+    </message>
+    <message>
+        <source>RTSP %1</source>
+        <translation>RTSP %1</translation>
+    </message>
+    <message>
+        <source>RTP/UDP %1 port %2</source>
+        <translation>RTP/UDP %1 puerto %2</translation>
+    </message>
+    <message>
+        <source>MPEG-TS/UDP port %1</source>
+        <translation>MPEG-TS/UDP puerto %1</translation>
+    </message>
+    <message>
+        <source>no video URL</source>
+        <translation>sin URL de vídeo</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a URL</source>
+        <translation>«%1» no es una URL</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a video URL Sortie plays: use rtsp://, rtspt://, udp://, udp+ts:// or an .sdp file</source>
+        <translation>«%1» no es una URL de vídeo que Sortie reproduzca: use rtsp://, rtspt://, udp://, udp+ts:// o un archivo .sdp</translation>
+    </message>
+    <message>
+        <source>SDP file %1 cannot be read as SDP</source>
+        <translation>El archivo SDP %1 no se puede leer como SDP</translation>
+    </message>
+    <message>
+        <source>SDP file %1: port %2 is out of range</source>
+        <translation>Archivo SDP %1: el puerto %2 está fuera de rango</translation>
+    </message>
+    <message>
+        <source>SDP file %1: the video has no payload type</source>
+        <translation>Archivo SDP %1: el vídeo no tiene tipo de payload</translation>
+    </message>
+    <message>
+        <source>SDP file %1: payload type %2 is not a dynamic one (96 to 127)</source>
+        <translation>Archivo SDP %1: el tipo de payload %2 no es dinámico (96 a 127)</translation>
+    </message>
+    <message>
+        <source>SDP file %1: no rtpmap for payload %2</source>
+        <translation>Archivo SDP %1: sin rtpmap para el payload %2</translation>
+    </message>
+    <message>
+        <source>SDP file %1: the video is %2, not H.264 or H.265</source>
+        <translation>Archivo SDP %1: el vídeo es %2, no H.264 ni H.265</translation>
+    </message>
+    <message>
+        <source>SDP file %1 describes no video</source>
+        <translation>El archivo SDP %1 no describe ningún vídeo</translation>
     </message>
 </context>
 <context>
@@ -7282,6 +7455,10 @@ eventos:   %1
         <source>This action has no field &quot;%1&quot;.</source>
         <translation>Esta acción no tiene ningún campo «%1».</translation>
     </message>
+    <message>
+        <source>Choose an action to add.</source>
+        <translation>Elija una acción para añadir.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::secrets::PasswordVault</name>
@@ -7745,6 +7922,21 @@ eventos:   %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::VideoItem</name>
+    <message>
+        <source>No video for this vehicle</source>
+        <translation>No hay vídeo para este vehículo</translation>
+    </message>
+    <message>
+        <source>hardware decoding (%1)</source>
+        <translation>decodificación por hardware (%1)</translation>
+    </message>
+    <message>
+        <source>software decoding (%1)</source>
+        <translation>decodificación por software (%1)</translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::XyzTileSource</name>
     <message>
         <source>Web tiles</source>
@@ -7865,6 +8057,88 @@ Autoridad: %1</translation>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::video::VideoReceiver</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>GStreamer&apos;s %1 is missing: install %2</source>
+        <translation>Falta %1 de GStreamer: instale %2</translation>
+    </message>
+    <message>
+        <source>No %1 decoder: install %2</source>
+        <translation>No hay decodificador %1: instale %2</translation>
+    </message>
+    <message>
+        <source>The video pipeline could not be built: %1</source>
+        <translation>No se pudo construir la cadena de vídeo: %1</translation>
+    </message>
+    <message>
+        <source>No %1: install %2</source>
+        <translation>No hay %1: instale %2</translation>
+    </message>
+    <message>
+        <source>A GStreamer plugin is missing: %1</source>
+        <translation>Falta un plugin de GStreamer: %1</translation>
+    </message>
+    <message>
+        <source>the stream ended</source>
+        <translation>el flujo terminó</translation>
+    </message>
+    <message>
+        <source>no frame for %1 s</source>
+        <translation>sin imagen durante %1 s</translation>
+    </message>
+    <message>
+        <source>no frame since the last attempt</source>
+        <translation>sin imagen desde el último intento</translation>
+    </message>
+    <message>
+        <source>nothing received yet</source>
+        <translation>aún no se ha recibido nada</translation>
+    </message>
+    <message>
+        <source>No video URL</source>
+        <translation>Sin URL de vídeo</translation>
+    </message>
+    <message>
+        <source>Video stopped</source>
+        <translation>Vídeo detenido</translation>
+    </message>
+    <message>
+        <source>Connecting to %1…</source>
+        <translation>Conectando con %1…</translation>
+    </message>
+    <message>
+        <source>Connecting to %1… (%2)</source>
+        <translation>Conectando con %1… (%2)</translation>
+    </message>
+    <message>
+        <source>%1, %2×%3, %4 decoding (%5)</source>
+        <translation>%1, %2×%3, decodificación por %4 (%5)</translation>
+    </message>
+    <message>
+        <source>hardware</source>
+        <translation>hardware</translation>
+    </message>
+    <message>
+        <source>software</source>
+        <translation>software</translation>
+    </message>
+    <message>
+        <source>No video since %1 (%2); reconnecting</source>
+        <translation>Sin vídeo desde %1 (%2); reconectando</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::video::VideoRuntime</name>
+    <message>
+        <source>GStreamer did not start: %1</source>
+        <translation>GStreamer no arrancó: %1</translation>
     </message>
 </context>
 </TS>

@@ -2248,6 +2248,22 @@
         <source>Done</source>
         <translation>Готово</translation>
     </message>
+    <message>
+        <source>2D</source>
+        <translation>2D</translation>
+    </message>
+    <message>
+        <source>3D</source>
+        <translation>3D</translation>
+    </message>
+    <message>
+        <source>Back to the map</source>
+        <translation>Назад до карти</translation>
+    </message>
+    <message>
+        <source>The route, the ground and the zones in 3D</source>
+        <translation>Маршрут, рельєф і зони в 3D</translation>
+    </message>
 </context>
 <context>
     <name>NfzConversion</name>
@@ -3746,6 +3762,29 @@ events:   %1
     </message>
 </context>
 <context>
+    <name>Scene3DView</name>
+    <message>
+        <source>The 3D view needs OpenGL: start Sortie with QSG_RHI_BACKEND=opengl.</source>
+        <translation>3D-вигляду потрібен OpenGL: запустіть Sortie з QSG_RHI_BACKEND=opengl.</translation>
+    </message>
+    <message>
+        <source>Open a route to see it in 3D.</source>
+        <translation>Відкрийте маршрут, щоб побачити його в 3D.</translation>
+    </message>
+    <message>
+        <source>Purple ground: no elevation data there.</source>
+        <translation>Фіолетова земля: там немає даних висот.</translation>
+    </message>
+    <message>
+        <source>Vertical exaggeration</source>
+        <translation>Вертикальне перебільшення</translation>
+    </message>
+    <message>
+        <source>Fit route</source>
+        <translation>Показати маршрут</translation>
+    </message>
+</context>
+<context>
     <name>SegmentEditor</name>
     <message>
         <source>Radius</source>
@@ -4381,6 +4420,14 @@ events:   %1
         <source>Compare these fields across every vehicle</source>
         <translation>Порівняти ці поля для всіх апаратів</translation>
     </message>
+    <message>
+        <source>Video</source>
+        <translation>Відео</translation>
+    </message>
+    <message>
+        <source>Show the chosen vehicle&apos;s video over the map</source>
+        <translation>Показати відео вибраного апарата над картою</translation>
+    </message>
 </context>
 <context>
     <name>TerrainFollow</name>
@@ -4924,6 +4971,132 @@ events:   %1
     <message>
         <source>not stated</source>
         <translation>не вказано</translation>
+    </message>
+</context>
+<context>
+    <name>VideoPanel</name>
+    <message>
+        <source>rtsp://, udp://:5600 or an .sdp file</source>
+        <translation>rtsp://, udp://:5600 або файл .sdp</translation>
+    </message>
+    <message>
+        <source>This vehicle&apos;s video: empty plays the stream the vehicle publishes; a URL typed here overrides it and is remembered.</source>
+        <translation>Відео цього апарата: порожньо — потік, який публікує апарат; URL, введена тут, замінює його й запам’ятовується.</translation>
+    </message>
+    <message>
+        <source>Record</source>
+        <translation>Записати</translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation>Запис у %1</translation>
+    </message>
+    <message>
+        <source>Record this video as received, beside the flight log</source>
+        <translation>Записати це відео як отримано, поруч із журналом польоту</translation>
+    </message>
+    <message>
+        <source>Map</source>
+        <translation>Карта</translation>
+    </message>
+    <message>
+        <source>Swap</source>
+        <translation>Поміняти</translation>
+    </message>
+</context>
+<context>
+    <name>VideoSource</name>
+    <message>
+        <source>latency &apos;%1&apos;: expected milliseconds from 0 to 10000</source>
+        <translation>затримка «%1»: очікуються мілісекунди від 0 до 10000</translation>
+    </message>
+    <message>
+        <source>codec &apos;%1&apos;: expected h264 or h265</source>
+        <translation>кодек «%1»: очікується h264 або h265</translation>
+    </message>
+    <message>
+        <source>payload &apos;%1&apos;: expected a dynamic RTP payload type from 96 to 127</source>
+        <translation>payload «%1»: очікується динамічний тип RTP від 96 до 127</translation>
+    </message>
+    <message>
+        <source>unknown option &apos;%1&apos;</source>
+        <translation>невідомий параметр «%1»</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not an IP address to listen on</source>
+        <translation>«%1» — не IP-адреса для прослуховування</translation>
+    </message>
+    <message>
+        <source>port %1 is out of range</source>
+        <translation>порт %1 поза діапазоном</translation>
+    </message>
+    <message>
+        <source>an RTSP URL needs a host: rtsp://host:8554/path</source>
+        <translation>RTSP-URL потрібен хост: rtsp://host:8554/path</translation>
+    </message>
+    <message>
+        <source>port 0 is out of range</source>
+        <translation>порт 0 поза діапазоном</translation>
+    </message>
+    <message>
+        <source>SDP file %1: %2</source>
+        <translation>Файл SDP %1: %2</translation>
+    </message>
+    <message>
+        <source>RTSP over TCP %1</source>
+        <translation>RTSP через TCP %1</translation>
+    </message>
+    <message>
+        <source>RTSP %1</source>
+        <translation>RTSP %1</translation>
+    </message>
+    <message>
+        <source>RTP/UDP %1 port %2</source>
+        <translation>RTP/UDP %1 порт %2</translation>
+    </message>
+    <message>
+        <source>MPEG-TS/UDP port %1</source>
+        <translation>MPEG-TS/UDP порт %1</translation>
+    </message>
+    <message>
+        <source>no video URL</source>
+        <translation>немає URL відео</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a URL</source>
+        <translation>«%1» — не URL</translation>
+    </message>
+    <message>
+        <source>&apos;%1&apos; is not a video URL Sortie plays: use rtsp://, rtspt://, udp://, udp+ts:// or an .sdp file</source>
+        <translation>«%1» — не URL відео, яку відтворює Sortie: використовуйте rtsp://, rtspt://, udp://, udp+ts:// або файл .sdp</translation>
+    </message>
+    <message>
+        <source>SDP file %1 cannot be read as SDP</source>
+        <translation>Файл SDP %1 не читається як SDP</translation>
+    </message>
+    <message>
+        <source>SDP file %1: port %2 is out of range</source>
+        <translation>Файл SDP %1: порт %2 поза діапазоном</translation>
+    </message>
+    <message>
+        <source>SDP file %1: the video has no payload type</source>
+        <translation>Файл SDP %1: відео не має типу payload</translation>
+    </message>
+    <message>
+        <source>SDP file %1: payload type %2 is not a dynamic one (96 to 127)</source>
+        <translation>Файл SDP %1: тип payload %2 не динамічний (96–127)</translation>
+    </message>
+    <message>
+        <source>SDP file %1: no rtpmap for payload %2</source>
+        <translation>Файл SDP %1: немає rtpmap для payload %2</translation>
+    </message>
+    <message>
+        <source>SDP file %1: the video is %2, not H.264 or H.265</source>
+        <translation>Файл SDP %1: відео — %2, а не H.264 чи H.265</translation>
+    </message>
+    <message>
+        <source>SDP file %1 describes no video</source>
+        <translation>Файл SDP %1 не описує відео</translation>
     </message>
 </context>
 <context>
@@ -7320,6 +7493,10 @@ events:   %1
         <source>This action has no field &quot;%1&quot;.</source>
         <translation>Ця дія не має поля «%1».</translation>
     </message>
+    <message>
+        <source>Choose an action to add.</source>
+        <translation>Виберіть дію, щоб додати.</translation>
+    </message>
 </context>
 <context>
     <name>sortie::secrets::PasswordVault</name>
@@ -7787,6 +7964,21 @@ events:   %1
     </message>
 </context>
 <context>
+    <name>sortie::ui::VideoItem</name>
+    <message>
+        <source>No video for this vehicle</source>
+        <translation>Немає відео для цього апарата</translation>
+    </message>
+    <message>
+        <source>hardware decoding (%1)</source>
+        <translation>апаратне декодування (%1)</translation>
+    </message>
+    <message>
+        <source>software decoding (%1)</source>
+        <translation>програмне декодування (%1)</translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::XyzTileSource</name>
     <message>
         <source>Web tiles</source>
@@ -7907,6 +8099,88 @@ Authority: %1</source>
     <message>
         <source>%1 %2: %3 %4: %5</source>
         <translation>%1 %2: %3 %4: %5</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::video::VideoReceiver</name>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>GStreamer&apos;s %1 is missing: install %2</source>
+        <translation>Бракує %1 з GStreamer: встановіть %2</translation>
+    </message>
+    <message>
+        <source>No %1 decoder: install %2</source>
+        <translation>Немає декодера %1: встановіть %2</translation>
+    </message>
+    <message>
+        <source>The video pipeline could not be built: %1</source>
+        <translation>Не вдалося побудувати відеоконвеєр: %1</translation>
+    </message>
+    <message>
+        <source>No %1: install %2</source>
+        <translation>Немає %1: встановіть %2</translation>
+    </message>
+    <message>
+        <source>A GStreamer plugin is missing: %1</source>
+        <translation>Бракує плагіна GStreamer: %1</translation>
+    </message>
+    <message>
+        <source>the stream ended</source>
+        <translation>потік завершився</translation>
+    </message>
+    <message>
+        <source>no frame for %1 s</source>
+        <translation>немає кадру %1 с</translation>
+    </message>
+    <message>
+        <source>no frame since the last attempt</source>
+        <translation>немає кадру від останньої спроби</translation>
+    </message>
+    <message>
+        <source>nothing received yet</source>
+        <translation>ще нічого не отримано</translation>
+    </message>
+    <message>
+        <source>No video URL</source>
+        <translation>Немає URL відео</translation>
+    </message>
+    <message>
+        <source>Video stopped</source>
+        <translation>Відео зупинено</translation>
+    </message>
+    <message>
+        <source>Connecting to %1…</source>
+        <translation>Підключення до %1…</translation>
+    </message>
+    <message>
+        <source>Connecting to %1… (%2)</source>
+        <translation>Підключення до %1… (%2)</translation>
+    </message>
+    <message>
+        <source>%1, %2×%3, %4 decoding (%5)</source>
+        <translation>%1, %2×%3, декодування: %4 (%5)</translation>
+    </message>
+    <message>
+        <source>hardware</source>
+        <translation>апаратне</translation>
+    </message>
+    <message>
+        <source>software</source>
+        <translation>програмне</translation>
+    </message>
+    <message>
+        <source>No video since %1 (%2); reconnecting</source>
+        <translation>Немає відео з %1 (%2); перепідключення</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::video::VideoRuntime</name>
+    <message>
+        <source>GStreamer did not start: %1</source>
+        <translation>GStreamer не запустився: %1</translation>
     </message>
 </context>
 </TS>
