@@ -20,12 +20,17 @@ for f in usr/bin/sortie usr/bin/sortie-sim usr/bin/sortie-plan usr/bin/sortie-du
   [ -e "$root/install/$f" ] || { echo "check-package: $f is missing from the package" >&2; exit 1; }
 done
 bin="$root/install/usr/bin"
-"$bin/sortie" --version | grep -q '^sortie [0-9]' || { echo "check-package: sortie --version failed" >&2; exit 1; }
-"$bin/sortie-sim" --help | grep -q -i 'usage' || { echo "check-package: sortie-sim --help failed" >&2; exit 1; }
+# Each program's output is read whole before it is searched: `prog | grep -q` under pipefail fails
+# when grep has its match and leaves before prog has written the rest (SIGPIPE), as sortie-sim's
+# help, longer than one pipe write, did.
+out=$("$bin/sortie" --version) && grep -q '^sortie [0-9]' <<<"$out" \
+  || { echo "check-package: sortie --version failed: $out" >&2; exit 1; }
+out=$("$bin/sortie-sim" --help) && grep -q -i 'usage' <<<"$out" \
+  || { echo "check-package: sortie-sim --help failed (exit $?): $out" >&2; exit 1; }
 "$bin/sortie-plan" stats tests/data/samples/qgc/SectionTest.plan >/dev/null \
   || { echo "check-package: sortie-plan stats failed" >&2; exit 1; }
-"$bin/sortie-log" info tests/fuzz/sortielog-corpus/session-4-vehicles.sortielog | grep -q '^vehicles: 4' \
-  || { echo "check-package: sortie-log info failed" >&2; exit 1; }
+out=$("$bin/sortie-log" info tests/fuzz/sortielog-corpus/session-4-vehicles.sortielog) && grep -q '^vehicles: 4' <<<"$out" \
+  || { echo "check-package: sortie-log info failed: $out" >&2; exit 1; }
 # A home of its own: the launch writes settings and autosaves, never into the caller's.
 mkdir -p "$root/home"
 HOME="$root/home" XDG_CONFIG_HOME="$root/home/.config" XDG_DATA_HOME="$root/home/.local/share" \
