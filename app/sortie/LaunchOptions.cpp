@@ -224,6 +224,11 @@ client::ClientGraph::Options LaunchOptions::graphOptions() const
     graph.autosaveDirectory = autosaveDir.isEmpty() ? dataFolder("SORTIE_AUTOSAVE_DIR", QStringLiteral("autosave"), demo) : autosaveDir;
     graph.flightLogDirectory = dataFolder("SORTIE_FLIGHTLOG_DIR", QStringLiteral("flightlogs"), demo);
     graph.zoneFeedDirectory = dataFolder("SORTIE_ZONE_FEED_DIR", QStringLiteral("zone-feeds"), demo);
+    // The checklists are the operator's to edit: beside the settings, not the data.
+    const QString checklists = qEnvironmentVariable("SORTIE_CHECKLIST_DIR");
+    graph.checklistDirectory = !checklists.isEmpty()           ? checklists
+                               : demo && !demoFolder().isEmpty() ? QDir(demoFolder()).filePath(QStringLiteral("checklists"))
+                                                                 : QDir(QStandardPaths::writableLocation(QStandardPaths::AppConfigLocation)).filePath(QStringLiteral("checklists"));
     return graph;
 }
 

@@ -30,6 +30,7 @@
 #include "ServerHistoryRequest.h"
 #include "Traffic.h"
 #include "VehicleVideo.h"
+#include "PreflightChecklists.h"
 #include "UploadedFenceAlerts.h"
 #include "OfflineMaps.h"
 #include "VciFenceBuilder.h"
@@ -105,6 +106,11 @@ ClientGraph::ClientGraph(QSettings *storage, Options options, QObject *parent)
     if (m_fleet)
         m_video = std::make_unique<video::VehicleVideo>(
             storage, options.flightLogDirectory.isEmpty() ? QString() : options.flightLogDirectory + QStringLiteral("/video"));
+    // The pre-flight checklists: the gate on the fleet's Arm, take-off and Auto, over the vehicles,
+    // their routes and the open route's check.
+    if (m_fleet)
+        m_preflight = std::make_unique<preflight::PreflightChecklists>(m_fleet.get(), m_fleetRoutes.get(), document,
+                                                                       m_missions->preparation(), options.checklistDirectory);
     // Closest-approach alerts: into the fleet's command log, which the flight recorder follows.
     if (m_fleet)
         m_proximity = std::make_unique<deconfliction::ProximityMonitor>(m_fleet.get(), m_traffic->picture());
@@ -179,6 +185,7 @@ ClientGraph::~ClientGraph()
     m_deconfliction.reset();
     m_offlineMaps.reset();
     m_video.reset();
+    m_preflight.reset();
     m_traffic.reset();
     m_zoneFeed.reset();
     m_zoneSharing.reset();
@@ -232,6 +239,7 @@ QStringList ClientGraph::wiring() const
           << QStringLiteral("fleet routes: %1").arg(yesNo(m_fleetRoutes != nullptr, "the open route's vehicle and every upload", "none"))
           << QStringLiteral("route deconfliction: %1").arg(yesNo(m_deconfliction && std::any_of(rules.begin(), rules.end(), [&](const auto &r) { return r == m_deconfliction->rule(); }), "against the fleet's routes", "none"))
           << QStringLiteral("video: %1").arg(yesNo(m_video != nullptr, "a receiver per vehicle shown, its URL or video_stream_uri", "none"))
+          << QStringLiteral("preflight: %1").arg(yesNo(m_preflight && m_fleet->commands()->gate() == m_preflight.get(), "a checklist per vehicle type, the gate on arm, take-off and auto", "none"))
           << QStringLiteral("proximity alerts: %1").arg(yesNo(m_proximity != nullptr, "the fleet and the traffic", "none"))
           << QStringLiteral("zone alerts: %1").arg(yesNo(m_zoneAlerts != nullptr, "the fleet against the airspace", "none"))
           << QStringLiteral("uploaded fences: %1").arg(yesNo(m_uploadedFenceAlerts && m_uploadedFenceAlerts->isFollowing(), "each vehicle's own zone alerts", "none"))

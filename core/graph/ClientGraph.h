@@ -26,6 +26,7 @@ Q_MOC_INCLUDE("ServerHistoryRequest.h")
 Q_MOC_INCLUDE("Traffic.h")
 Q_MOC_INCLUDE("VehicleFleet.h")
 Q_MOC_INCLUDE("VehicleVideo.h")
+Q_MOC_INCLUDE("PreflightChecklists.h")
 Q_MOC_INCLUDE("ZoneAlertMonitor.h")
 Q_MOC_INCLUDE("ZoneFeed.h")
 Q_MOC_INCLUDE("ZoneSharing.h")
@@ -67,6 +68,9 @@ class Traffic;
 namespace sortie::video {
 class VehicleVideo;
 } // namespace sortie::video
+namespace sortie::preflight {
+class PreflightChecklists;
+} // namespace sortie::preflight
 namespace sortie::maptiles {
 class OfflineMaps;
 } // namespace sortie::maptiles
@@ -117,6 +121,7 @@ class ClientGraph : public QObject
     Q_PROPERTY(sortie::airspace::ZoneFeed *zoneFeed READ zoneFeedForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::traffic::Traffic *traffic READ trafficForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::video::VehicleVideo *video READ videoForQml CONSTANT FINAL)                           // nullable: vehicles
+    Q_PROPERTY(sortie::preflight::PreflightChecklists *preflight READ preflightForQml CONSTANT FINAL)        // nullable: vehicles
     Q_PROPERTY(sortie::maptiles::OfflineMaps *offlineMaps READ offlineMapsForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::deconfliction::ProximityMonitor *proximity READ proximityForQml CONSTANT FINAL)        // nullable: vehicles
     Q_PROPERTY(sortie::airspace::ZoneAlertMonitor *zoneAlerts READ zoneAlertsForQml CONSTANT FINAL)           // nullable: vehicles
@@ -135,6 +140,7 @@ public:
         bool vehicles = true;       // false: no fleet (a fault test of the connection alone)
         QString sbsAddress;         // an ADS-B receiver's SBS-1 feed; empty: the setting traffic/sbsAddress
         QString zoneFeedDirectory;  // where published zone files fetched from a URL are kept; empty: none can be
+        QString checklistDirectory; // the operator's pre-flight checklists (<vehicle type>.json, default.json); empty: Sortie's own
     };
 
     // `storage` (not owned, required) holds the operator's settings: terrain folder and source order,
@@ -166,6 +172,8 @@ public:
     traffic::Traffic &traffic() { return *m_traffic; }
     // Each vehicle's live video; null in a graph without vehicles.
     video::VehicleVideo *video() const { return m_video.get(); }
+    // Each vehicle's pre-flight checklist, the gate on its Arm, take-off and Auto; null without vehicles.
+    preflight::PreflightChecklists *preflight() const { return m_preflight.get(); }
     // Maps taken offline: the area, the download into an MBTiles pack, cache-only (docs/offline-maps.md).
     maptiles::OfflineMaps &offlineMaps() { return *m_offlineMaps; }
     // In-flight closest-approach alerts between the fleet's vehicles and against the traffic;
@@ -206,6 +214,7 @@ private:
     airspace::ZoneFeed *zoneFeedForQml() const { return m_zoneFeed.get(); }
     traffic::Traffic *trafficForQml() const { return m_traffic.get(); }
     video::VehicleVideo *videoForQml() const { return m_video.get(); }
+    preflight::PreflightChecklists *preflightForQml() const { return m_preflight.get(); }
     maptiles::OfflineMaps *offlineMapsForQml() const { return m_offlineMaps.get(); }
     deconfliction::ProximityMonitor *proximityForQml() const { return m_proximity.get(); }
     airspace::ZoneAlertMonitor *zoneAlertsForQml() const { return m_zoneAlerts.get(); }
@@ -228,6 +237,7 @@ private:
     std::unique_ptr<airspace::ZoneFeed> m_zoneFeed;
     std::unique_ptr<traffic::Traffic> m_traffic;
     std::unique_ptr<video::VehicleVideo> m_video;
+    std::unique_ptr<preflight::PreflightChecklists> m_preflight;
     std::unique_ptr<maptiles::OfflineMaps> m_offlineMaps;
     std::unique_ptr<FleetRoutes> m_fleetRoutes;
     std::unique_ptr<deconfliction::RouteDeconfliction> m_deconfliction;

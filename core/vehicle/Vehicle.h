@@ -66,6 +66,8 @@ public:
     QString id() const { return m_identity.id; }
     QString name() const { return m_identity.name.isEmpty() ? m_identity.id : m_identity.name; }
     QString protocol() const { return m_protocol; }
+    // "HCI:7", "VCI:vci-1": unique in a fleet, where the ids of two protocols may meet.
+    QString fleetId() const { return m_protocol + QLatin1Char(':') + id(); }
     VehicleIdentity identity() const { return m_identity; }
     VehicleLink::State linkState() const { return m_link ? m_link->state() : VehicleLink::State::Disconnected; }
     bool isConnected() const { return linkState() == VehicleLink::State::Connected; }

@@ -161,7 +161,7 @@ private slots:
         QCOMPARE(state.value.toString(), QStringLiteral("singleShot"));
         // The choice shown is the value's, worded for the operator; its value is what setField takes.
         QVERIFY(state.choiceIndex >= 0);
-        QCOMPARE(state.choiceValues.value(state.choiceIndex).toString(), QStringLiteral("singleShot"));
+        QCOMPARE(state.choiceValues.value(state.choiceIndex), QStringLiteral("singleShot"));
         QCOMPARE(state.choiceTexts.size(), state.choiceValues.size());
         QVERIFY(f.actions.setField(0, QStringLiteral("state"), QStringLiteral("startRecording")));
         QCOMPARE(std::get<CameraTriggerAction>(f.at(2)[0]).state, TriggerState::StartRecording);

@@ -46,6 +46,7 @@ ClientWindow::ClientWindow(Options options)
                                                                    : options.autosaveDirectory;
     graph.flightLogDirectory = m_dir.filePath(QStringLiteral("flightlogs"));
     graph.zoneFeedDirectory = m_dir.filePath(QStringLiteral("zone-feeds"));
+    graph.checklistDirectory = options.checklistDirectory.isEmpty() ? m_dir.filePath(QStringLiteral("checklists")) : options.checklistDirectory;
     m_graph = std::make_unique<client::ClientGraph>(m_storage.get(), graph);
     // The program's window and settings wiring (ui::MainWindow), with the fixture's translations if it has its own.
     m_mainWindow = std::make_unique<ui::MainWindow>(*m_graph, *m_settings,

@@ -50,6 +50,7 @@ public:
         std::function<void(ClientWindow &)> beforeClient;
         // Where the translations (sortie_<code>.qm) are: empty, the program's own resources.
         QString translationsFolder;
+        QString checklistDirectory; // empty: a folder of the fixture's own, empty (Sortie's default checklist)
         // The simulated server's TLS identity (tls::loadServerIdentity); nullopt: plain HCI.
         std::optional<QSslConfiguration> hciTls;
     };

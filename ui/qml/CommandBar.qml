@@ -6,11 +6,18 @@ import Sortie.Ui
 // Commands to the chosen vehicle, or to the group when vehicles are ticked in the list. The ones
 // where a mistake is dangerous ask first (the policy says which; a group command always asks, once,
 // naming every vehicle); each one's result shows beside the bar. `goMode` is on while the operator
-// picks a point on the map.
+// picks a point on the map. What the vehicle's pre-flight checklist holds back (the policy's
+// blockers) is not sent: the operator sees why, and may send it anyway, which the command log and
+// the flight log keep.
 ToolBar {
     id: bar
+    required property Theme theme
     required property Vehicle vehicle      // null: none chosen
     required property VehicleFleet fleet
+    required property PreflightChecklists preflight   // null without vehicles
+    // The chosen vehicle's checklist (made on first use; asked again after the files are re-read).
+    readonly property VehicleChecklist checklist: bar.preflight && bar.vehicle && bar.preflight.revision >= 0
+                                                  ? bar.preflight.checklistFor(bar.vehicle) : null
     property bool goMode: false
     property var pending: null
 
@@ -25,6 +32,14 @@ ToolBar {
         }
         if (!bar.vehicle)
             return
+        const held = bar.policy.blockers(which, bar.vehicle)
+        if (held.length > 0) {
+            overrideDialog.command = which
+            overrideDialog.vehicle = bar.vehicle
+            overrideDialog.reasons = held
+            overrideDialog.open()
+            return
+        }
         if (bar.policy.needsConfirmation(which, bar.vehicle))
             bar.confirm(bar.policy.confirmation(which, bar.vehicle), () => bar.policy.send(which, bar.vehicle))
         else
@@ -52,6 +67,76 @@ ToolBar {
         onRejected: bar.pending = null
     }
 
+    // A command the checklist holds back: why, and the operator's choice to send it anyway.
+    Dialog {
+        id: overrideDialog
+        objectName: "checklistOverrideDialog"
+        property int command: CommandPolicy.Arm
+        property Vehicle vehicle: null
+        property list<string> reasons: []
+        title: qsTr("The checklist does not pass")
+        modal: true
+        parent: Overlay.overlay
+        anchors.centerIn: parent
+        width: 460
+        ColumnLayout {
+            width: overrideDialog.availableWidth
+            Label {
+                textFormat: Text.PlainText
+                Layout.fillWidth: true
+                wrapMode: Text.Wrap
+                text: qsTr("%1 is held back on %2 by:").arg(bar.policy.commandLabel(overrideDialog.command))
+                                                         .arg(overrideDialog.vehicle ? overrideDialog.vehicle.name : "")
+            }
+            Label {
+                textFormat: Text.PlainText
+                objectName: "checklistOverrideReasons"
+                Layout.fillWidth: true
+                Layout.leftMargin: 12
+                wrapMode: Text.Wrap
+                color: bar.theme.problemText
+                text: overrideDialog.reasons.map(r => "• " + r).join("\n")
+            }
+            Label {
+                textFormat: Text.PlainText
+                Layout.fillWidth: true
+                wrapMode: Text.Wrap
+                text: qsTr("Send it anyway? The override and these reasons go into the command log and the flight log.")
+            }
+        }
+        footer: DialogButtonBox {
+            Button {
+                objectName: "checklistOverrideButton"
+                text: qsTr("Send anyway")
+                DialogButtonBox.buttonRole: DialogButtonBox.AcceptRole
+            }
+            Button {
+                objectName: "checklistOverrideCancel"
+                text: qsTr("Cancel")
+                DialogButtonBox.buttonRole: DialogButtonBox.RejectRole
+            }
+        }
+        onAccepted: if (overrideDialog.vehicle) bar.policy.sendOverriding(overrideDialog.command, overrideDialog.vehicle)
+    }
+
+    Popup {
+        id: checklistPopup
+        objectName: "checklistPopup"
+        parent: Overlay.overlay
+        x: Math.round((parent.width - width) / 2)
+        y: Math.round((parent.height - height) / 2)
+        width: Math.min(520, parent.width - 40)
+        height: Math.min(460, parent.height - 40)
+        modal: false
+        closePolicy: Popup.CloseOnEscape | Popup.CloseOnPressOutside
+        ChecklistPanel {
+            anchors.fill: parent
+            theme: bar.theme
+            preflight: bar.preflight
+            checklist: bar.checklist
+        }
+    }
+
     ColumnLayout {
       anchors.left: parent.left
       anchors.right: parent.right
@@ -74,6 +159,17 @@ ToolBar {
         Layout.fillWidth: true
         spacing: 4
         enabled: bar.vehicle !== null || bar.toGroup
+        Button {
+            objectName: "checklistButton"
+            visible: bar.checklist !== null
+            text: !bar.checklist ? "" : qsTr("Checklist %1/%2").arg(bar.checklist.passedCount).arg(bar.checklist.count)
+            checkable: true
+            checked: checklistPopup.opened
+            onClicked: checklistPopup.opened ? checklistPopup.close() : checklistPopup.open()
+            palette.buttonText: bar.checklist && bar.checklist.readyToArm ? bar.theme.okText : bar.theme.problemText
+            ToolTip.visible: hovered
+            ToolTip.text: qsTr("The pre-flight checklist: Arm and Auto wait for its required items")
+        }
         Button { objectName: "armButton"; text: qsTr("Arm"); onClicked: bar.command(CommandPolicy.Arm) }
         Button { objectName: "disarmButton"; text: qsTr("Disarm"); onClicked: bar.command(CommandPolicy.Disarm) }
         Button { objectName: "takeoffButton"; text: qsTr("Take off"); onClicked: bar.command(CommandPolicy.TakeOff)

@@ -25,6 +25,8 @@ Page {
     readonly property Traffic traffic: graph.traffic   // manned traffic around (ADS-B)
     readonly property VehicleVideo video: graph.video  // each vehicle's live video; null without vehicles
     property alias videoPanel: videoPanel
+    // Each vehicle's pre-flight checklist, the gate on Arm and Auto; null without vehicles.
+    readonly property PreflightChecklists preflight: graph.preflight
     // Every route given to a vehicle: drawn under the flight plans, listed under the vehicles.
     readonly property FleetRoutes fleetRoutes: graph.fleetRoutes
     readonly property ProximityMonitor proximity: graph.proximity   // closest-approach alerts (the fleet and the traffic); null without vehicles
@@ -313,8 +315,10 @@ Page {
             CommandBar {
                 id: commands
                 Layout.fillWidth: true
+                theme: page.theme
                 vehicle: page.current
                 fleet: page.fleet
+                preflight: page.replaying ? null : page.preflight
             }
             ReplayTimeline {
                 theme: page.theme

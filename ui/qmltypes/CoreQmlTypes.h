@@ -34,6 +34,8 @@
 #include "Vehicle.h"
 #include "VehicleFleet.h"
 #include "VehicleVideo.h"
+#include "PreflightChecklists.h"
+#include "VehicleChecklist.h"
 #include "VideoReceiver.h"
 #include "VehicleGroup.h"
 #include "FleetRoutes.h"
@@ -208,6 +210,22 @@ struct VehicleVideoForeign
     QML_FOREIGN(sortie::video::VehicleVideo)
     QML_NAMED_ELEMENT(VehicleVideo)
     QML_UNCREATABLE("made by the program and handed to the views")
+};
+// The pre-flight checklists (core/preflight/client): the fleet's, made by the client graph, and
+// one vehicle's list, made by them.
+struct PreflightChecklistsForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::preflight::PreflightChecklists)
+    QML_NAMED_ELEMENT(PreflightChecklists)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct VehicleChecklistForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::preflight::VehicleChecklist)
+    QML_NAMED_ELEMENT(VehicleChecklist)
+    QML_UNCREATABLE("made by the pre-flight checklists, one per vehicle")
 };
 // Maps taken offline (core/maptiles): the Offline maps dialog's controller, made by the client graph.
 struct OfflineMapsForeign

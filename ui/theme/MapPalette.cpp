@@ -33,6 +33,7 @@ MapPalette withMarks(MapPalette p)
     p.sky = QColor(0x3f, 0x8f, 0xd8);
     p.ground = QColor(0x8a, 0x5a, 0x2b);
     p.dial = QColor(0xff, 0xff, 0xff);
+    p.sceneAmbient = QColor(0x80, 0x80, 0x80);
     return p;
 }
 } // namespace
@@ -41,6 +42,7 @@ MapPalette MapPalette::light()
 {
     MapPalette p;
     p.sea = QColor(0xa9, 0xcf, 0xe3);
+    p.sceneSky = QColor(0xc9, 0xdc, 0xee);
     p.land = QColor(0xef, 0xeb, 0xe0);
     p.coast = QColor(0x7c, 0x94, 0xa6);
     p.graticule = QColor(40, 60, 90, 70);
@@ -52,6 +54,7 @@ MapPalette MapPalette::dark()
 {
     MapPalette p;
     p.sea = QColor(0x16, 0x26, 0x36);
+    p.sceneSky = QColor(0x1d, 0x27, 0x33);
     p.land = QColor(0x3a, 0x40, 0x45);
     p.coast = QColor(0x6a, 0x7d, 0x8c);
     p.graticule = QColor(200, 220, 240, 60);
@@ -63,6 +66,7 @@ MapPalette MapPalette::sunlight()
 {
     MapPalette p;
     p.sea = QColor(0x00, 0x00, 0x00);
+    p.sceneSky = QColor(0x00, 0x00, 0x00);
     p.land = QColor(0x4a, 0x4a, 0x4a);
     p.coast = QColor(0xff, 0xff, 0xff);
     p.graticule = QColor(255, 255, 255, 120);

@@ -13,6 +13,8 @@ struct MapPalette
 {
     // The base map and the grid.
     QColor sea;
+    QColor sceneSky;      // behind the 3D view's ground
+    QColor sceneAmbient;  // the 3D view's ambient light (the sun's shade)
     QColor land;
     QColor coast;
     QColor graticule;

@@ -67,6 +67,8 @@ class Theme : public QObject
     Q_PROPERTY(QColor rowStripe READ rowStripe NOTIFY coloursChanged)
     // The map's marks, for the layers a view colours (MapPalette: route, draft, ghost, zones).
     Q_PROPERTY(QColor mapRoute READ mapRoute NOTIFY coloursChanged)
+    Q_PROPERTY(QColor mapSky READ mapSky NOTIFY coloursChanged)         // the 3D view's background
+    Q_PROPERTY(QColor mapAmbient READ mapAmbient NOTIFY coloursChanged) // the 3D view's ambient light
     Q_PROPERTY(QColor mapDraft READ mapDraft NOTIFY coloursChanged)
     Q_PROPERTY(QColor mapGhost READ mapGhost NOTIFY coloursChanged)
     Q_PROPERTY(QColor mapExclusion READ mapExclusion NOTIFY coloursChanged)
@@ -149,6 +151,8 @@ public:
     QColor rowSelected() const { return m_colours.rowSelected; }
     QColor rowStripe() const { return m_colours.rowStripe; }
     QColor mapRoute() const { return m_colours.map.route; }
+    QColor mapSky() const { return m_colours.map.sceneSky; }
+    QColor mapAmbient() const { return m_colours.map.sceneAmbient; }
     QColor mapDraft() const { return m_colours.map.draft; }
     QColor mapGhost() const { return m_colours.map.ghost; }
     QColor mapExclusion() const { return m_colours.map.exclusion; }

@@ -39,7 +39,7 @@ Item {
         camera: camera
         environment: SceneEnvironment {
             backgroundMode: SceneEnvironment.Color
-            clearColor: root.theme.darkGround ? "#1d2733" : "#c9dcee"
+            clearColor: root.theme.mapSky
             antialiasingMode: SceneEnvironment.NoAA
         }
         PerspectiveCamera {
@@ -54,7 +54,7 @@ Item {
             eulerRotation.x: -55
             eulerRotation.y: -35
             brightness: 1.0
-            ambientColor: Qt.rgba(0.5, 0.5, 0.5, 1.0)
+            ambientColor: root.theme.mapAmbient
         }
         Model {
             objectName: "terrainModel"

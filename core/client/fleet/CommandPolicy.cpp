@@ -102,10 +102,47 @@ QString CommandPolicy::confirmation(Command command, const vehicle::Vehicle *veh
                      : tr("Start the mission on %1? Sortie has not seen its mission.").arg(name);
 }
 
+QStringList CommandPolicy::blockers(Command command, const vehicle::Vehicle *vehicle) const
+{
+    return m_gate && vehicle ? m_gate->blockers(command, vehicle) : QStringList{};
+}
+
+QString CommandPolicy::commandLabel(Command command) const
+{
+    switch (command) {
+    case Command::Arm: return tr("Arm");
+    case Command::Disarm: return tr("Disarm");
+    case Command::TakeOff: return tr("Take off");
+    case Command::Auto: return tr("Auto");
+    case Command::Hold: return tr("Pause");
+    case Command::Guided: return tr("Guided");
+    case Command::Manual: return tr("Manual");
+    case Command::Land: return tr("Land");
+    case Command::ReturnHome: return tr("Return home");
+    }
+    return {};
+}
+
 bool CommandPolicy::send(Command command, vehicle::Vehicle *vehicle) const
+{
+    if (!vehicle || !blockers(command, vehicle).isEmpty())
+        return false;
+    return dispatch(command, vehicle);
+}
+
+bool CommandPolicy::sendOverriding(Command command, vehicle::Vehicle *vehicle) const
 {
     if (!vehicle)
         return false;
+    const QStringList reasons = blockers(command, vehicle);
+    if (!reasons.isEmpty() && vehicle->commandLog())
+        vehicle->commandLog()->alert(vehicle->name(), tr("%1 sent despite the checklist (the operator overrode it): %2")
+                                                          .arg(commandLabel(command), reasons.join(QStringLiteral("; "))));
+    return dispatch(command, vehicle);
+}
+
+bool CommandPolicy::dispatch(Command command, vehicle::Vehicle *vehicle) const
+{
     // The modes go by the names the vehicle layer knows them by (VCI's /state/mode).
     const auto switchTo = [vehicle](vehicle::FlightMode mode) {
         const std::string_view name = vehicle::modeName(mode);

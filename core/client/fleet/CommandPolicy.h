@@ -3,13 +3,19 @@
 #include "Vehicle.h"
 
 #include <QObject>
+#include <QStringList>
 
 namespace sortie::client {
+
+class CommandGate;
 
 // The rules for commanding a vehicle, in one place the views bind to: which commands ask first
 // (and what they ask), the take-off altitude (the vehicle's own `takeoff_altitude` parameter when
 // it reports one, else the operator's setting), and the flight modes with the names the operator
-// reads. Commands are a Command, in C++ and in QML (`CommandPolicy.Arm`).
+// reads. Commands are a Command, in C++ and in QML (`CommandPolicy.Arm`). A gate handed in (the
+// pre-flight checklist) holds commands back: send() refuses what it holds back, and only
+// sendOverriding() sends it, writing the override to the vehicle's command log (and so the flight
+// log).
 class CommandPolicy : public QObject
 {
     Q_OBJECT
@@ -39,6 +45,18 @@ public:
     Q_INVOKABLE bool send(sortie::client::CommandPolicy::Command command, sortie::vehicle::Vehicle *vehicle) const;
     Q_INVOKABLE QString modeLabel(const QString &mode) const;
 
+    // The gate asked before every command (not owned; nullptr: none). The graph hands in the
+    // pre-flight checklists.
+    void setGate(CommandGate *gate) { m_gate = gate; }
+    CommandGate *gate() const { return m_gate; }
+    // What holds the command back on the vehicle, one line per reason; empty when it may go.
+    Q_INVOKABLE QStringList blockers(sortie::client::CommandPolicy::Command command, const sortie::vehicle::Vehicle *vehicle) const;
+    // Sends a command the gate holds back, after the operator said so: the override and its reasons
+    // go to the command log first. The same as send() when nothing holds it back.
+    Q_INVOKABLE bool sendOverriding(sortie::client::CommandPolicy::Command command, sortie::vehicle::Vehicle *vehicle) const;
+    // "Arm", "Take off", "Pause": the command as the group's result and the command log name it.
+    Q_INVOKABLE QString commandLabel(sortie::client::CommandPolicy::Command command) const;
+
     static constexpr double kMinTakeoffAltitude = 2;
     static constexpr double kMaxTakeoffAltitude = 500;
 
@@ -46,7 +64,20 @@ signals:
     void defaultTakeoffAltitudeChanged();
 
 private:
+    bool dispatch(Command command, vehicle::Vehicle *vehicle) const;
+
     double m_defaultTakeoffAltitude = 20;
+    CommandGate *m_gate = nullptr;
+};
+
+// What may hold a command back before it goes to a vehicle. Implemented above the client, by the
+// pre-flight checklists (core/preflight/client), and handed to CommandPolicy::setGate.
+class CommandGate
+{
+public:
+    virtual ~CommandGate() = default;
+    // One line per reason the command may not go to the vehicle now; empty when it may.
+    virtual QStringList blockers(CommandPolicy::Command command, const vehicle::Vehicle *vehicle) = 0;
 };
 
 } // namespace sortie::client

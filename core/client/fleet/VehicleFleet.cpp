@@ -83,7 +83,7 @@ QVariant VehicleFleet::data(const QModelIndex &index, int role) const
     const Vehicle &v = *m_entries[size_t(index.row())].vehicle;
     auto finite = [](double value) { return std::isfinite(value) ? QVariant(value) : QVariant(); };
     switch (role) {
-    case VehicleIdRole: return v.protocol() + QLatin1Char(':') + v.id();
+    case VehicleIdRole: return v.fleetId();
     case NameRole:
     case Qt::DisplayRole: return v.name();
     case ProtocolRole: return v.protocol();
@@ -100,7 +100,7 @@ QVariant VehicleFleet::data(const QModelIndex &index, int role) const
     case ArmedRole: return v.armed();
     case BatteryRole: return finite(v.batteryRemaining());
     case VehicleRole: return QVariant::fromValue(static_cast<QObject *>(m_entries[size_t(index.row())].vehicle.get()));
-    case ChosenRole: return m_group.contains(v.protocol() + QLatin1Char(':') + v.id());
+    case ChosenRole: return m_group.contains(v.fleetId());
     default: return {};
     }
 }
@@ -113,7 +113,7 @@ Vehicle *VehicleFleet::vehicleAt(int row) const
 Vehicle *VehicleFleet::vehicle(const QString &id) const
 {
     for (const Entry &entry : m_entries) {
-        if (entry.vehicle->protocol() + QLatin1Char(':') + entry.vehicle->id() == id)
+        if (entry.vehicle->fleetId() == id)
             return entry.vehicle.get();
     }
     return nullptr;

@@ -6,24 +6,6 @@ namespace sortie::client {
 
 using vehicle::Vehicle;
 
-namespace {
-QString commandLabel(CommandPolicy::Command command)
-{
-    switch (command) {
-    case CommandPolicy::Command::Arm: return QObject::tr("Arm");
-    case CommandPolicy::Command::Disarm: return QObject::tr("Disarm");
-    case CommandPolicy::Command::TakeOff: return QObject::tr("Take off");
-    case CommandPolicy::Command::Auto: return QObject::tr("Auto");
-    case CommandPolicy::Command::Hold: return QObject::tr("Pause");
-    case CommandPolicy::Command::Guided: return QObject::tr("Guided");
-    case CommandPolicy::Command::Manual: return QObject::tr("Manual");
-    case CommandPolicy::Command::Land: return QObject::tr("Land");
-    case CommandPolicy::Command::ReturnHome: return QObject::tr("Return home");
-    }
-    return {};
-}
-} // namespace
-
 VehicleGroup::VehicleGroup(VehicleFleet *fleet, const CommandPolicy *policy, QObject *parent)
     : QObject(parent)
     , m_fleet(fleet)
@@ -106,6 +88,17 @@ QString VehicleGroup::confirmation(CommandPolicy::Command command) const
             listed.append(v->name());
     }
     const QString who = listed.join(QStringLiteral(", "));
+    QStringList held;
+    for (const Vehicle *v : vehicles)
+        if (!m_policy->blockers(command, v).isEmpty())
+            held.append(v->name());
+    // The question, and which vehicles the checklist will hold back (each one's reasons in the result).
+    const QString question = groupQuestion(command, n, who);
+    return held.isEmpty() ? question : question + QLatin1Char('\n') + tr("Held back by their checklist, not sent: %1.").arg(held.join(QStringLiteral(", ")));
+}
+
+QString VehicleGroup::groupQuestion(CommandPolicy::Command command, int n, const QString &who) const
+{
     switch (command) {
     case CommandPolicy::Command::Arm: return tr("Arm %n vehicle(s): %1? Their motors may start.", nullptr, n).arg(who);
     case CommandPolicy::Command::Disarm: return tr("Disarm %n vehicle(s): %1? One in the air would fall.", nullptr, n).arg(who);
@@ -115,7 +108,7 @@ QString VehicleGroup::confirmation(CommandPolicy::Command command) const
     case CommandPolicy::Command::Land: return tr("Land %n vehicle(s) where they are: %1?", nullptr, n).arg(who);
     case CommandPolicy::Command::ReturnHome: return tr("Send %n vehicle(s) home: %1?", nullptr, n).arg(who);
     case CommandPolicy::Command::Guided:
-    case CommandPolicy::Command::Manual: return tr("Switch %n vehicle(s) to %2: %1?", nullptr, n).arg(who, commandLabel(command));
+    case CommandPolicy::Command::Manual: return tr("Switch %n vehicle(s) to %2: %1?", nullptr, n).arg(who, m_policy->commandLabel(command));
     }
     return {};
 }
@@ -126,7 +119,7 @@ int VehicleGroup::send(CommandPolicy::Command command)
         disconnect(c);
     m_waiting.clear();
     m_answers.clear();
-    m_commandLabel = commandLabel(command);
+    m_commandLabel = m_policy->commandLabel(command);
 
     const std::vector<Vehicle *> vehicles = chosenVehicles();
     m_answers.resize(vehicles.size());
@@ -147,7 +140,8 @@ int VehicleGroup::send(CommandPolicy::Command command)
         m_waiting.push_back(*connection);
         if (!m_policy->send(command, v)) {
             disconnect(*connection);
-            m_answers[i] = {v->name(), true, false, tr("not sent")};
+            const QStringList held = m_policy->blockers(command, v);
+            m_answers[i] = {v->name(), true, false, held.isEmpty() ? tr("not sent") : tr("held back by its checklist (%1)").arg(held.join(QStringLiteral("; ")))};
         }
     }
     updateResult();

@@ -52,6 +52,8 @@ signals:
     void resultChanged();
 
 private:
+    QString groupQuestion(CommandPolicy::Command command, int n, const QString &who) const;
+
     struct Answer
     {
         QString vehicle;

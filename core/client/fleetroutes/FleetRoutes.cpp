@@ -25,11 +25,6 @@ using vehicle::Vehicle;
 
 namespace {
 
-QString vehicleIdOf(const Vehicle *v)
-{
-    return v->protocol() + QLatin1Char(':') + v->id();
-}
-
 // Whole seconds for "did what is shown change", -1 for unknown.
 qint64 shownSeconds(double seconds)
 {
@@ -134,6 +129,15 @@ std::vector<FleetRoute> FleetRoutes::routes() const
     return all;
 }
 
+std::vector<FleetRouteState> FleetRoutes::statesOf(const QString &vehicleId) const
+{
+    std::vector<FleetRouteState> states;
+    for (const Row &row : m_rows)
+        if (row.value.vehicleId == vehicleId)
+            states.push_back(row.value.state);
+    return states;
+}
+
 QPolygonF FleetRoutes::pathAt(int row) const
 {
     return row >= 0 && row < count() ? m_rows[size_t(row)].path : QPolygonF();
@@ -218,7 +222,7 @@ void FleetRoutes::uploaded(MissionUploader *uploader, Vehicle *v)
     if (fleetRow(v) < 0)
         return; // not one of the fleet's vehicles
     Row fresh;
-    fresh.value.vehicleId = vehicleIdOf(v);
+    fresh.value.vehicleId = v->fleetId();
     fresh.value.route = uploader->route();
     fresh.value.state = FleetRouteState::Uploaded;
     fresh.value.uploadedAt = QDateTime::currentDateTimeUtc();
@@ -333,7 +337,7 @@ void FleetRoutes::refreshPlanned()
         Row planned;
         planned.planned = true;
         planned.vehicle = v;
-        planned.value.vehicleId = vehicleIdOf(v);
+        planned.value.vehicleId = v->fleetId();
         planned.value.route = m_document->route();
         describe(planned);
         track(planned);

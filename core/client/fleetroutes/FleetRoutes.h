@@ -67,6 +67,9 @@ public:
 
     // Every row as a value, in row order (see the class comment).
     std::vector<FleetRoute> routes() const;
+    // The states of the vehicle's rows (its fleet id), in row order: at most one on board and one
+    // planned. Cheap: no route is copied (the pre-flight check asks at every change).
+    std::vector<FleetRouteState> statesOf(const QString &vehicleId) const;
     // The flown path of a row, longitude/latitude (what the `path` role holds).
     QPolygonF pathAt(int row) const;
 

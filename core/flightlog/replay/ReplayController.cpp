@@ -61,7 +61,7 @@ QVariant ReplayFleet::data(const QModelIndex &index, int role) const
         return {};
     auto finite = [](double value) { return std::isfinite(value) ? QVariant(value) : QVariant(); };
     switch (role) {
-    case VehicleIdRole: return v->protocol() + QLatin1Char(':') + v->id();
+    case VehicleIdRole: return v->fleetId();
     case NameRole:
     case Qt::DisplayRole: return v->name();
     case ProtocolRole: return v->protocol();

@@ -26,7 +26,7 @@ struct ActionFieldRow
     Q_PROPERTY(QString text MEMBER text)        // a number as typed, "" when unset
     Q_PROPERTY(bool on READ isOn)               // a toggle's state
     Q_PROPERTY(QStringList choiceTexts MEMBER choiceTexts)
-    Q_PROPERTY(QVariantList choiceValues MEMBER choiceValues)
+    Q_PROPERTY(QStringList choiceValues MEMBER choiceValues)
     Q_PROPERTY(int choiceIndex MEMBER choiceIndex)  // -1: none chosen
     Q_PROPERTY(bool optional MEMBER optional)
 
@@ -39,7 +39,7 @@ public:
     QVariant value;
     QString text;
     QStringList choiceTexts;
-    QVariantList choiceValues;
+    QStringList choiceValues;
     int choiceIndex = -1;
     bool optional = false;
 
