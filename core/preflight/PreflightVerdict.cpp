@@ -37,7 +37,10 @@ ItemVerdict judge(const ChecklistItem &item, const PreflightFacts &facts, bool t
     case Check::GpsFix: return atLeast(facts.gpsFix, item.minimum);
     case Check::Satellites: return atLeast(facts.satellites, item.minimum);
     case Check::Battery: return atLeast(facts.batteryPercent, item.minimum);
-    case Check::Home: return yes(facts.homeSet);
+    case Check::Home:
+        if (!facts.homeReportable)
+            return {Outcome::NotReported, std::nullopt};
+        return yes(facts.homeSet);
     case Check::Camera: return yes(facts.cameraPresent);
     default: return {Outcome::Missing, std::nullopt};
     }
@@ -47,7 +50,7 @@ bool holdsBack(const ChecklistItem &item, const ItemVerdict &verdict, Gate gate)
 {
     if (!item.required || (item.gates & gate) == 0)
         return false;
-    return verdict.outcome != Outcome::Pass && verdict.outcome != Outcome::Ticked;
+    return verdict.outcome != Outcome::Pass && verdict.outcome != Outcome::Ticked && verdict.outcome != Outcome::NotReported;
 }
 
 } // namespace sortie::preflight

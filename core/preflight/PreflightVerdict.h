@@ -16,6 +16,7 @@ struct PreflightFacts
     std::optional<double> satellites;
     std::optional<double> batteryPercent;     // 0..100
     std::optional<bool> homeSet;
+    bool homeReportable = true;               // false: the vehicle's link never reports a home (HCI)
     std::optional<bool> routeOnBoard;         // nullopt: Sortie has given the vehicle no route
     std::optional<int> routeErrors;           // nullopt: the vehicle's route is not the open one
     std::optional<bool> cameraPresent;
@@ -27,6 +28,7 @@ enum class Outcome {
     Missing,  // the program cannot tell: the value is not known
     Ticked,   // the operator ticked it
     Unticked, // the operator has not (yet)
+    NotReported, // the vehicle's link never reports it: shown, never holding a command back
 };
 
 struct ItemVerdict
@@ -39,7 +41,8 @@ struct ItemVerdict
 // they are missing.
 ItemVerdict judge(const ChecklistItem &item, const PreflightFacts &facts, bool ticked);
 
-// Whether the item holds back a command of `gate`: required, for that gate, and not passed.
+// Whether the item holds back a command of `gate`: required, for that gate, and not passed (what
+// the link never reports cannot be checked, and holds nothing back).
 bool holdsBack(const ChecklistItem &item, const ItemVerdict &verdict, Gate gate);
 
 } // namespace sortie::preflight

@@ -33,6 +33,7 @@ public:
         Parameters = 1 << 1,
         GoTo = 1 << 2,
         Fence = 1 << 3, // the vehicle keeps a fence sent with the mission and reports its breaches (VCI)
+        HomePosition = 1 << 4, // the vehicle reports its home position (VCI's home; HCI's telemetry has none)
     };
     Q_DECLARE_FLAGS(Capabilities, Capability)
 

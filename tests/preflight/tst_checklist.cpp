@@ -139,6 +139,19 @@ private slots:
         QCOMPARE(judge(home, noHome, true).outcome, Outcome::Fail); // a tick does not pass a checked item
     }
 
+    // A link that never reports a home (HCI) cannot be checked for one: shown, holding nothing back.
+    void whatTheLinkNeverReportsHoldsNothingBack()
+    {
+        const ChecklistItem home{Check::Home, {}, std::nullopt, true, GateArm | GateAuto};
+        PreflightFacts facts;
+        facts.linkUp = true;
+        QCOMPARE(judge(home, facts, false).outcome, Outcome::Missing); // reportable, not reported yet
+        QVERIFY(holdsBack(home, judge(home, facts, false), GateArm));
+        facts.homeReportable = false;
+        QCOMPARE(judge(home, facts, false).outcome, Outcome::NotReported);
+        QVERIFY(!holdsBack(home, judge(home, facts, false), GateArm));
+    }
+
     void theRouteCheckCountsErrors()
     {
         const ChecklistItem check{Check::RouteCheck, {}, std::nullopt, true, GateAuto};

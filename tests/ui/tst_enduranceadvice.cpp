@@ -136,6 +136,8 @@ private slots:
         QVERIFY(!m_client->find(QStringLiteral("alertBanner"))->isVisible());
 
         // Arm and take off through the command bar, then fly 3 km east at 5 m/s.
+        // The pre-flight checklist passes once the vehicle's slower telemetry (GPS, battery) is in.
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->fleet().commands()->blockers(client::CommandPolicy::Command::Arm, v).isEmpty(), 10000);
         click("armButton");
         confirm(v->name());
         QTRY_VERIFY_WITH_TIMEOUT(v->armed(), 10000);

@@ -143,6 +143,8 @@ class TestFlight : public QObject
 
     void armAndTakeOff(vehicle::Vehicle *v, ui::FlightStatus *status)
     {
+        // The pre-flight checklist passes once the vehicle's slower telemetry (GPS, battery) is in.
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->fleet().commands()->blockers(client::CommandPolicy::Command::Arm, v).isEmpty(), 10000);
         click("armButton");
         confirm(v->name());
         QTRY_VERIFY_WITH_TIMEOUT(v->armed(), 10000);
@@ -283,6 +285,9 @@ private slots:
         QCOMPARE(text("groupTargets"), QStringLiteral("To 2 ticked vehicles: %1, %2").arg(first->name(), third->name()));
         for (int r = 0; r < 3; ++r)
             QTRY_COMPARE_WITH_TIMEOUT(m_client->fleet().vehicleAt(r)->linkState(), vehicle::VehicleLink::State::Connected, 10000);
+        // The pre-flight checklist passes once the vehicle's slower telemetry (GPS, battery) is in.
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->fleet().commands()->blockers(client::CommandPolicy::Command::Arm, first).isEmpty(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(m_client->fleet().commands()->blockers(client::CommandPolicy::Command::Arm, third).isEmpty(), 10000);
         click("armButton");
         confirm(QStringLiteral("Arm 2 vehicles: %1, %2?").arg(first->name(), third->name()));
         QTRY_VERIFY_WITH_TIMEOUT(first->armed() && third->armed(), 10000);

@@ -546,6 +546,8 @@ private slots:
             QTRY_VERIFY(dialog->property("opened").toBool());
             QMetaObject::invokeMethod(dialog, "accept");
         };
+        // The pre-flight checklist passes once the vehicle's slower telemetry (GPS, battery) is in.
+        QTRY_VERIFY_WITH_TIMEOUT(m_app->fleet().commands()->blockers(client::CommandPolicy::Command::Arm, m_app->fleet().vehicleAt(0)).isEmpty(), 10000);
         click("armButton");
         QObject *dialog = find<QObject>("commandConfirmDialog");
         QTRY_VERIFY(dialog->property("opened").toBool());

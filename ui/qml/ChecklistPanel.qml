@@ -90,7 +90,8 @@ ColumnLayout {
                 Layout.preferredWidth: 18
                 horizontalAlignment: Text.AlignHCenter
                 font.bold: true
-                text: row.passed ? "✓" : row.outcome === VehicleChecklist.Missing ? "?" : "✗"
+                text: row.passed ? "✓" : row.outcome === VehicleChecklist.NotReported ? "–"
+                      : row.outcome === VehicleChecklist.Missing ? "?" : "✗"
                 color: row.passed ? panel.theme.okText : row.holdsBack ? panel.theme.problemText : panel.theme.warningText
             }
             Label {

@@ -166,7 +166,6 @@ ToolBar {
             checkable: true
             checked: checklistPopup.opened
             onClicked: checklistPopup.opened ? checklistPopup.close() : checklistPopup.open()
-            palette.buttonText: bar.checklist && bar.checklist.readyToArm ? bar.theme.okText : bar.theme.problemText
             ToolTip.visible: hovered
             ToolTip.text: qsTr("The pre-flight checklist: Arm and Auto wait for its required items")
         }

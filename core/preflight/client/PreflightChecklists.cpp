@@ -146,7 +146,10 @@ QStringList PreflightChecklists::blockers(CommandPolicy::Command command, const 
     }
     VehicleChecklist *list = checklistFor(const_cast<Vehicle *>(vehicle));
     list->refresh();
-    return list->blockers(gate);
+    const QStringList held = list->blockers(gate);
+    if (!held.isEmpty())
+        qCDebug(lcPreflight).noquote() << vehicle->name() << (gate == GateArm ? "arm" : "auto") << "held back:" << held.join(QStringLiteral("; "));
+    return held;
 }
 
 PreflightFacts PreflightChecklists::factsOf(const Vehicle *v) const
@@ -157,6 +160,7 @@ PreflightFacts PreflightChecklists::factsOf(const Vehicle *v) const
     facts.satellites = reported(v, TelemetryField::Satellites);
     if (const auto remaining = reported(v, TelemetryField::BatteryRemaining))
         facts.batteryPercent = *remaining * 100;
+    facts.homeReportable = v->link() && v->link()->capabilities().testFlag(vehicle::VehicleLink::HomePosition);
     facts.homeSet = v->home().isValid();
     facts.cameraPresent = !v->videoStreamUri().isEmpty();
 

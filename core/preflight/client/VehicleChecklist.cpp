@@ -154,6 +154,7 @@ QString VehicleChecklist::detailOf(const ChecklistItem &item, const ItemVerdict 
     const bool pass = verdict.outcome == Outcome::Pass;
     switch (verdict.outcome) {
     case Outcome::Ticked: return tr("ticked");
+    case Outcome::NotReported: return tr("not reported over this vehicle's link");
     case Outcome::Unticked: return tr("to tick");
     case Outcome::Missing:
         switch (item.check) {

@@ -36,7 +36,7 @@ public:
     enum Roles { TitleRole = Qt::UserRole + 1, DetailRole, OutcomeRole, RequiredRole, ManualRole, TickedRole, HoldsBackRole };
     // The outcome role, in QML: VehicleChecklist.Pass, … (preflight::Outcome's values).
     enum Shown { Pass = int(Outcome::Pass), Fail = int(Outcome::Fail), Missing = int(Outcome::Missing),
-                 Ticked = int(Outcome::Ticked), Unticked = int(Outcome::Unticked) };
+                 Ticked = int(Outcome::Ticked), Unticked = int(Outcome::Unticked), NotReported = int(Outcome::NotReported) };
     Q_ENUM(Shown)
 
     using FactsFunction = std::function<PreflightFacts(const vehicle::Vehicle *)>;

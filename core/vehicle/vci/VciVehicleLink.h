@@ -42,7 +42,7 @@ public:
     QString protocol() const override { return QStringLiteral("VCI"); }
     VehicleIdentity identity() const override { return m_identity; }
     State state() const override { return m_state; }
-    Capabilities capabilities() const override { return MissionDownload | Parameters | GoTo | Fence; }
+    Capabilities capabilities() const override { return MissionDownload | Parameters | GoTo | Fence | HomePosition; }
 
     void start() override;
     void stop() override;
