@@ -98,8 +98,8 @@ private slots:
             return;
         vehicle::Vehicle *v = m_client->fleet().vehicleAt(0);
         QTRY_VERIFY_WITH_TIMEOUT(v->position().isValid() && v->home().isValid(), 10000);
-        // The button says how far the list is: the link, the fix and home pass; the tick does not.
-        QTRY_COMPARE_WITH_TIMEOUT(text("checklistButton"), QStringLiteral("Checklist 3/5"), 10000);
+        // The button says what is left to do: the tick (Arm) and the route (Auto).
+        QTRY_COMPARE_WITH_TIMEOUT(text("checklistButton"), QStringLiteral("Checklist: 2 to do"), 10000);
 
         // Arm: held back, and why; cancelled, nothing was asked of the vehicle.
         click(QStringLiteral("armButton"));
@@ -119,10 +119,10 @@ private slots:
         QTRY_VERIFY(opened("checklistPopup"));
         QCOMPARE(text("checklistName"), QStringLiteral("Field list"));
         QCOMPARE(text("checklistSource"), m_checklists.filePath(QStringLiteral("default.json")));
-        QCOMPARE(text("checklistReadiness"), QStringLiteral("Not ready: 3 of 5 pass"));
+        QCOMPARE(text("checklistReadiness"), QStringLiteral("Not ready to arm: 3 of 5 pass"));
         click(QStringLiteral("checklistTick3"));
-        QTRY_COMPARE(text("checklistReadiness"), QStringLiteral("Ready to arm"));
-        QCOMPARE(text("checklistButton"), QStringLiteral("Checklist 4/5"));
+        QTRY_COMPARE(text("checklistReadiness"), QStringLiteral("Ready to arm; Auto waits"));
+        QCOMPARE(text("checklistButton"), QStringLiteral("Checklist: 1 to do"));
         QTest::keyClick(m_client->window(), Qt::Key_Escape);
         QTRY_VERIFY(!opened("checklistPopup"));
         click(QStringLiteral("armButton"));
@@ -166,7 +166,7 @@ private slots:
         // Disarmed after having been armed: the ticks are cleared, the next flight is checked again.
         QVERIFY(m_client->fleet().commands()->send(client::CommandPolicy::Command::Disarm, v));
         QTRY_VERIFY_WITH_TIMEOUT(!v->armed(), 10000);
-        QTRY_COMPARE(text("checklistButton"), QStringLiteral("Checklist 3/5"));
+        QTRY_COMPARE(text("checklistButton"), QStringLiteral("Checklist: 2 to do"));
         QVERIFY(!m_client->fleet().commands()->send(client::CommandPolicy::Command::Arm, v));
     }
 

@@ -29,9 +29,11 @@ ColumnLayout {
             objectName: "checklistReadiness"
             visible: panel.checklist !== null
             text: !panel.checklist ? ""
-                  : panel.checklist.readyToArm ? qsTr("Ready to arm")
-                  : qsTr("Not ready: %1 of %2 pass").arg(panel.checklist.passedCount).arg(panel.checklist.count)
-            color: panel.checklist && panel.checklist.readyToArm ? panel.theme.okText : panel.theme.problemText
+                  : panel.checklist.readyToArm && panel.checklist.readyForAuto ? qsTr("Ready to arm and fly the mission")
+                  : panel.checklist.readyToArm ? qsTr("Ready to arm; Auto waits")
+                  : qsTr("Not ready to arm: %1 of %2 pass").arg(panel.checklist.passedCount).arg(panel.checklist.count)
+            color: !panel.checklist || !panel.checklist.readyToArm ? panel.theme.problemText
+                   : panel.checklist.readyForAuto ? panel.theme.okText : panel.theme.warningText
         }
     }
     Label {
@@ -59,7 +61,7 @@ ColumnLayout {
         objectName: "checklistItems"
         Layout.fillWidth: true
         Layout.fillHeight: true
-        Layout.minimumHeight: 120
+        Layout.preferredHeight: contentHeight   // the popup fits the list; a long one scrolls
         clip: true
         model: panel.checklist
         ScrollBar.vertical: ScrollBar {}

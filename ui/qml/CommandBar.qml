@@ -126,10 +126,11 @@ ToolBar {
         x: Math.round((parent.width - width) / 2)
         y: Math.round((parent.height - height) / 2)
         width: Math.min(520, parent.width - 40)
-        height: Math.min(460, parent.height - 40)
+        height: Math.min(checklistPanel.implicitHeight + topPadding + bottomPadding, parent.height - 40)
         modal: false
         closePolicy: Popup.CloseOnEscape | Popup.CloseOnPressOutside
         ChecklistPanel {
+            id: checklistPanel
             anchors.fill: parent
             theme: bar.theme
             preflight: bar.preflight
@@ -162,7 +163,8 @@ ToolBar {
         Button {
             objectName: "checklistButton"
             visible: bar.checklist !== null
-            text: !bar.checklist ? "" : qsTr("Checklist %1/%2").arg(bar.checklist.passedCount).arg(bar.checklist.count)
+            text: !bar.checklist ? "" : bar.checklist.holdingCount === 0 ? qsTr("Checklist ✓")
+                                                                       : qsTr("Checklist: %n to do", "", bar.checklist.holdingCount)
             checkable: true
             checked: checklistPopup.opened
             onClicked: checklistPopup.opened ? checklistPopup.close() : checklistPopup.open()

@@ -80,6 +80,14 @@ int VehicleChecklist::passedCount() const
     return passed;
 }
 
+int VehicleChecklist::holdingCount() const
+{
+    int holding = 0;
+    for (size_t i = 0; i < m_checklist.items.size(); ++i)
+        holding += holdsBack(m_checklist.items[i], m_verdicts[i], GateArm) || holdsBack(m_checklist.items[i], m_verdicts[i], GateAuto) ? 1 : 0;
+    return holding;
+}
+
 bool VehicleChecklist::setTicked(int row, bool ticked)
 {
     if (row < 0 || row >= count() || m_checklist.items[size_t(row)].check != Check::Manual)

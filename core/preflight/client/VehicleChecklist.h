@@ -31,6 +31,8 @@ class VehicleChecklist : public QAbstractListModel
     Q_PROPERTY(bool readyToArm READ readyToArm NOTIFY verdictsChanged)
     Q_PROPERTY(bool readyForAuto READ readyForAuto NOTIFY verdictsChanged)
     Q_PROPERTY(int passedCount READ passedCount NOTIFY verdictsChanged)
+    // Items that hold back Arm or Auto now: what the operator still has to do.
+    Q_PROPERTY(int holdingCount READ holdingCount NOTIFY verdictsChanged)
 
 public:
     enum Roles { TitleRole = Qt::UserRole + 1, DetailRole, OutcomeRole, RequiredRole, ManualRole, TickedRole, HoldsBackRole };
@@ -55,6 +57,7 @@ public:
     bool readyToArm() const { return blockers(GateArm).isEmpty(); }
     bool readyForAuto() const { return blockers(GateAuto).isEmpty(); }
     int passedCount() const;
+    int holdingCount() const;
     vehicle::Vehicle *vehicle() const { return m_vehicle; }
 
     // An item to tick ticked or not; false for a row that is not one.
