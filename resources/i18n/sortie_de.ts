@@ -564,6 +564,100 @@
     </message>
 </context>
 <context>
+    <name>Checklist</name>
+    <message>
+        <source>unknown key &quot;%1&quot;</source>
+        <translation>unbekannter Schlüssel „%1“</translation>
+    </message>
+    <message>
+        <source>an item the operator ticks has no &quot;check&quot;; leave it out</source>
+        <translation>ein abzuhakender Punkt hat kein „check“; lassen Sie es weg</translation>
+    </message>
+    <message>
+        <source>an item to tick needs a &quot;title&quot;</source>
+        <translation>ein abzuhakender Punkt braucht einen „title“</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; takes no minimum</source>
+        <translation>„%1“ hat kein Minimum</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2..%3</source>
+        <translation>%1 liegt außerhalb von %2..%3</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; needs a &quot;minimum&quot;</source>
+        <translation>„%1“ braucht ein „minimum“</translation>
+    </message>
+    <message>
+        <source>an empty list holds nothing back; say &quot;required&quot;: false instead</source>
+        <translation>eine leere Liste hält nichts zurück; schreiben Sie stattdessen &quot;required&quot;: false</translation>
+    </message>
+    <message>
+        <source>Sortie&apos;s default checklist</source>
+        <translation>Sorties Standard-Checkliste</translation>
+    </message>
+    <message>
+        <source>Propellers fitted and tight</source>
+        <translation>Propeller montiert und fest</translation>
+    </message>
+    <message>
+        <source>Take-off area clear of people</source>
+        <translation>Startbereich frei von Personen</translation>
+    </message>
+    <message>
+        <source>Payload and battery secured</source>
+        <translation>Nutzlast und Akku gesichert</translation>
+    </message>
+    <message>
+        <source>a checklist needs at least one item</source>
+        <translation>eine Checkliste braucht mindestens einen Punkt</translation>
+    </message>
+</context>
+<context>
+    <name>ChecklistPanel</name>
+    <message>
+        <source>Pre-flight checklist</source>
+        <translation>Vorflug-Checkliste</translation>
+    </message>
+    <message>
+        <source>Ready to arm and fly the mission</source>
+        <translation>Bereit zum Scharfschalten und für die Mission</translation>
+    </message>
+    <message>
+        <source>Ready to arm; Auto waits</source>
+        <translation>Bereit zum Scharfschalten; Auto wartet</translation>
+    </message>
+    <message>
+        <source>Not ready to arm: %1 of %2 pass</source>
+        <translation>Nicht bereit zum Scharfschalten: %1 von %2 erfüllt</translation>
+    </message>
+    <message>
+        <source>Not used, Sortie&apos;s default instead: %1</source>
+        <translation>Nicht verwendet, stattdessen Sorties Standard: %1</translation>
+    </message>
+    <message>
+        <source>Sortie&apos;s default; write your own in %1</source>
+        <translation>Sorties Standard; eine eigene schreiben Sie in %1</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle to see its checklist.</source>
+        <translation>Wählen Sie ein Fahrzeug, um seine Checkliste zu sehen.</translation>
+    </message>
+    <message>
+        <source>%1 (advisory)</source>
+        <translation>%1 (Hinweis)</translation>
+    </message>
+    <message>
+        <source>Read again</source>
+        <translation>Neu einlesen</translation>
+    </message>
+    <message>
+        <source>Read the checklist files again after editing them (the ticks are cleared)</source>
+        <translation>Die Checklisten-Dateien nach dem Bearbeiten neu einlesen (die Haken werden gelöscht)</translation>
+    </message>
+</context>
+<context>
     <name>CommandBar</name>
     <message>
         <source>Are you sure?</source>
@@ -631,6 +725,41 @@
     <message>
         <source>Choose a vehicle on the map or in the list; tick several to command them together.</source>
         <translation>Wählen Sie ein Fahrzeug auf der Karte oder in der Liste; markieren Sie mehrere, um sie gemeinsam zu steuern.</translation>
+    </message>
+    <message>
+        <source>The checklist does not pass</source>
+        <translation>Die Checkliste ist nicht erfüllt</translation>
+    </message>
+    <message>
+        <source>%1 is held back on %2 by:</source>
+        <translation>%1 wird bei %2 zurückgehalten durch:</translation>
+    </message>
+    <message>
+        <source>Send it anyway? The override and these reasons go into the command log and the flight log.</source>
+        <translation>Trotzdem senden? Die Übergehung und diese Gründe kommen ins Befehlsprotokoll und ins Flugprotokoll.</translation>
+    </message>
+    <message>
+        <source>Send anyway</source>
+        <translation>Trotzdem senden</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Checklist ✓</source>
+        <translation>Checkliste ✓</translation>
+    </message>
+    <message numerus="yes">
+        <source>Checklist: %n to do</source>
+        <translation>
+            <numerusform>Checkliste: %n offen</numerusform>
+            <numerusform>Checkliste: %n offen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The pre-flight checklist: Arm and Auto wait for its required items</source>
+        <translation>Die Vorflug-Checkliste: Scharfschalten und Auto warten auf ihre Pflichtpunkte</translation>
     </message>
 </context>
 <context>
@@ -2559,42 +2688,6 @@
     <message>
         <source> in %1 s</source>
         <translation> in %1 s</translation>
-    </message>
-    <message>
-        <source>Arm</source>
-        <translation>Scharf schalten</translation>
-    </message>
-    <message>
-        <source>Disarm</source>
-        <translation>Entschärfen</translation>
-    </message>
-    <message>
-        <source>Take off</source>
-        <translation>Starten</translation>
-    </message>
-    <message>
-        <source>Auto</source>
-        <translation>Auto</translation>
-    </message>
-    <message>
-        <source>Pause</source>
-        <translation>Pause</translation>
-    </message>
-    <message>
-        <source>Guided</source>
-        <translation>Geführt</translation>
-    </message>
-    <message>
-        <source>Manual</source>
-        <translation>Manuell</translation>
-    </message>
-    <message>
-        <source>Land</source>
-        <translation>Landen</translation>
-    </message>
-    <message>
-        <source>Return home</source>
-        <translation>Rückkehr</translation>
     </message>
     <message>
         <source>%1 min %2 s</source>
@@ -6153,6 +6246,30 @@ Ereignisse: %1
         <source>Start the mission on %1? Sortie has not seen its mission.</source>
         <translation>Mission auf %1 starten? Sortie kennt die Mission an Bord nicht.</translation>
     </message>
+    <message>
+        <source>Arm</source>
+        <translation>Scharf schalten</translation>
+    </message>
+    <message>
+        <source>Disarm</source>
+        <translation>Entschärfen</translation>
+    </message>
+    <message>
+        <source>Take off</source>
+        <translation>Starten</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>%1 sent despite the checklist (the operator overrode it): %2</source>
+        <translation>%1 trotz der Checkliste gesendet (vom Bediener übergangen): %2</translation>
+    </message>
 </context>
 <context>
     <name>sortie::client::ConnectionController</name>
@@ -6745,6 +6862,14 @@ Ereignisse: %1
             <numerusform>%1: %2 von %n Fahrzeug hat geantwortet — %3.</numerusform>
             <numerusform>%1: %2 von %n Fahrzeugen haben geantwortet — %3.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Held back by their checklist, not sent: %1.</source>
+        <translation>Von ihrer Checkliste zurückgehalten, nicht gesendet: %1.</translation>
+    </message>
+    <message>
+        <source>held back by its checklist (%1)</source>
+        <translation>von seiner Checkliste zurückgehalten (%1)</translation>
     </message>
 </context>
 <context>
@@ -7458,6 +7583,151 @@ Ereignisse: %1
     <message>
         <source>Choose an action to add.</source>
         <translation>Wählen Sie eine Aktion zum Hinzufügen.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::preflight::PreflightChecklists</name>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>%1 kann nicht gelesen werden: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::preflight::VehicleChecklist</name>
+    <message>
+        <source>2D fix</source>
+        <translation>2D-Fix</translation>
+    </message>
+    <message>
+        <source>3D fix</source>
+        <translation>3D-Fix</translation>
+    </message>
+    <message>
+        <source>RTK float</source>
+        <translation>RTK Float</translation>
+    </message>
+    <message>
+        <source>RTK fixed</source>
+        <translation>RTK Fixed</translation>
+    </message>
+    <message>
+        <source>no fix</source>
+        <translation>kein Fix</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Link to the vehicle</source>
+        <translation>Verbindung zum Fahrzeug</translation>
+    </message>
+    <message>
+        <source>GPS fix</source>
+        <translation>GPS-Fix</translation>
+    </message>
+    <message>
+        <source>Satellites</source>
+        <translation>Satelliten</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Akku</translation>
+    </message>
+    <message>
+        <source>Home position</source>
+        <translation>Heimatposition</translation>
+    </message>
+    <message>
+        <source>Route on board</source>
+        <translation>Route an Bord</translation>
+    </message>
+    <message>
+        <source>Route check</source>
+        <translation>Routenprüfung</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>ticked</source>
+        <translation>abgehakt</translation>
+    </message>
+    <message>
+        <source>not reported over this vehicle&apos;s link</source>
+        <translation>über die Verbindung dieses Fahrzeugs nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>to tick</source>
+        <translation>abzuhaken</translation>
+    </message>
+    <message>
+        <source>Sortie has uploaded no route to it</source>
+        <translation>Sortie hat ihm keine Route hochgeladen</translation>
+    </message>
+    <message>
+        <source>its route is not the one open</source>
+        <translation>seine Route ist nicht die geöffnete</translation>
+    </message>
+    <message>
+        <source>not known: no fresh telemetry</source>
+        <translation>unbekannt: keine aktuelle Telemetrie</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>verbunden</translation>
+    </message>
+    <message>
+        <source>no fresh telemetry</source>
+        <translation>keine aktuelle Telemetrie</translation>
+    </message>
+    <message>
+        <source>%1 (%2 needed)</source>
+        <translation>%1 (%2 nötig)</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 % (%2 % needed)</source>
+        <translation>%1 % (%2 % nötig)</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>gesetzt</translation>
+    </message>
+    <message>
+        <source>not set</source>
+        <translation>nicht gesetzt</translation>
+    </message>
+    <message>
+        <source>the planned route</source>
+        <translation>die geplante Route</translation>
+    </message>
+    <message>
+        <source>differs from the planned route: upload it</source>
+        <translation>weicht von der geplanten Route ab: hochladen</translation>
+    </message>
+    <message>
+        <source>no errors</source>
+        <translation>keine Fehler</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n Fehler</numerusform>
+            <numerusform>%n Fehler</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>stream reported</source>
+        <translation>Stream gemeldet</translation>
+    </message>
+    <message>
+        <source>no stream reported</source>
+        <translation>kein Stream gemeldet</translation>
     </message>
 </context>
 <context>

@@ -564,6 +564,100 @@
     </message>
 </context>
 <context>
+    <name>Checklist</name>
+    <message>
+        <source>unknown key &quot;%1&quot;</source>
+        <translation>clave desconocida «%1»</translation>
+    </message>
+    <message>
+        <source>an item the operator ticks has no &quot;check&quot;; leave it out</source>
+        <translation>un elemento que marca el operador no lleva «check»; quítelo</translation>
+    </message>
+    <message>
+        <source>an item to tick needs a &quot;title&quot;</source>
+        <translation>un elemento para marcar necesita un «title»</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; takes no minimum</source>
+        <translation>«%1» no admite mínimo</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2..%3</source>
+        <translation>%1 está fuera de %2..%3</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; needs a &quot;minimum&quot;</source>
+        <translation>«%1» necesita un «minimum»</translation>
+    </message>
+    <message>
+        <source>an empty list holds nothing back; say &quot;required&quot;: false instead</source>
+        <translation>una lista vacía no retiene nada; escriba &quot;required&quot;: false en su lugar</translation>
+    </message>
+    <message>
+        <source>Sortie&apos;s default checklist</source>
+        <translation>Lista de comprobación predeterminada de Sortie</translation>
+    </message>
+    <message>
+        <source>Propellers fitted and tight</source>
+        <translation>Hélices montadas y apretadas</translation>
+    </message>
+    <message>
+        <source>Take-off area clear of people</source>
+        <translation>Zona de despegue libre de personas</translation>
+    </message>
+    <message>
+        <source>Payload and battery secured</source>
+        <translation>Carga útil y batería aseguradas</translation>
+    </message>
+    <message>
+        <source>a checklist needs at least one item</source>
+        <translation>una lista de comprobación necesita al menos un elemento</translation>
+    </message>
+</context>
+<context>
+    <name>ChecklistPanel</name>
+    <message>
+        <source>Pre-flight checklist</source>
+        <translation>Lista de comprobación previa al vuelo</translation>
+    </message>
+    <message>
+        <source>Ready to arm and fly the mission</source>
+        <translation>Listo para armar y volar la misión</translation>
+    </message>
+    <message>
+        <source>Ready to arm; Auto waits</source>
+        <translation>Listo para armar; Auto espera</translation>
+    </message>
+    <message>
+        <source>Not ready to arm: %1 of %2 pass</source>
+        <translation>No está listo para armar: se cumplen %1 de %2</translation>
+    </message>
+    <message>
+        <source>Not used, Sortie&apos;s default instead: %1</source>
+        <translation>No se usa; en su lugar, la predeterminada de Sortie: %1</translation>
+    </message>
+    <message>
+        <source>Sortie&apos;s default; write your own in %1</source>
+        <translation>La predeterminada de Sortie; escriba la suya en %1</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle to see its checklist.</source>
+        <translation>Elija un vehículo para ver su lista de comprobación.</translation>
+    </message>
+    <message>
+        <source>%1 (advisory)</source>
+        <translation>%1 (orientativo)</translation>
+    </message>
+    <message>
+        <source>Read again</source>
+        <translation>Volver a leer</translation>
+    </message>
+    <message>
+        <source>Read the checklist files again after editing them (the ticks are cleared)</source>
+        <translation>Volver a leer los archivos de listas tras editarlos (las marcas se borran)</translation>
+    </message>
+</context>
+<context>
     <name>CommandBar</name>
     <message>
         <source>Are you sure?</source>
@@ -631,6 +725,41 @@
     <message>
         <source>Choose a vehicle on the map or in the list; tick several to command them together.</source>
         <translation>Elija un vehículo en el mapa o en la lista; marque varios para darles órdenes a la vez.</translation>
+    </message>
+    <message>
+        <source>The checklist does not pass</source>
+        <translation>La lista de comprobación no se cumple</translation>
+    </message>
+    <message>
+        <source>%1 is held back on %2 by:</source>
+        <translation>%1 queda retenido en %2 por:</translation>
+    </message>
+    <message>
+        <source>Send it anyway? The override and these reasons go into the command log and the flight log.</source>
+        <translation>¿Enviarlo de todos modos? La anulación y estos motivos quedan en el registro de órdenes y en el registro de vuelo.</translation>
+    </message>
+    <message>
+        <source>Send anyway</source>
+        <translation>Enviar de todos modos</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Checklist ✓</source>
+        <translation>Lista ✓</translation>
+    </message>
+    <message numerus="yes">
+        <source>Checklist: %n to do</source>
+        <translation>
+            <numerusform>Lista: %n pendiente</numerusform>
+            <numerusform>Lista: %n pendientes</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The pre-flight checklist: Arm and Auto wait for its required items</source>
+        <translation>La lista de comprobación previa al vuelo: Armar y Auto esperan a sus elementos obligatorios</translation>
     </message>
 </context>
 <context>
@@ -2559,42 +2688,6 @@
     <message>
         <source> in %1 s</source>
         <translation> en %1 s</translation>
-    </message>
-    <message>
-        <source>Arm</source>
-        <translation>Armar</translation>
-    </message>
-    <message>
-        <source>Disarm</source>
-        <translation>Desarmar</translation>
-    </message>
-    <message>
-        <source>Take off</source>
-        <translation>Despegar</translation>
-    </message>
-    <message>
-        <source>Auto</source>
-        <translation>Auto</translation>
-    </message>
-    <message>
-        <source>Pause</source>
-        <translation>Pausa</translation>
-    </message>
-    <message>
-        <source>Guided</source>
-        <translation>Guiado</translation>
-    </message>
-    <message>
-        <source>Manual</source>
-        <translation>Manual</translation>
-    </message>
-    <message>
-        <source>Land</source>
-        <translation>Aterrizar</translation>
-    </message>
-    <message>
-        <source>Return home</source>
-        <translation>Volver al origen</translation>
     </message>
     <message>
         <source>%1 min %2 s</source>
@@ -6153,6 +6246,30 @@ eventos:   %1
         <source>Start the mission on %1? Sortie has not seen its mission.</source>
         <translation>¿Iniciar la misión en %1? Sortie no ha visto su misión.</translation>
     </message>
+    <message>
+        <source>Arm</source>
+        <translation>Armar</translation>
+    </message>
+    <message>
+        <source>Disarm</source>
+        <translation>Desarmar</translation>
+    </message>
+    <message>
+        <source>Take off</source>
+        <translation>Despegar</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Auto</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pausa</translation>
+    </message>
+    <message>
+        <source>%1 sent despite the checklist (the operator overrode it): %2</source>
+        <translation>%1 enviado pese a la lista de comprobación (el operador la anuló): %2</translation>
+    </message>
 </context>
 <context>
     <name>sortie::client::ConnectionController</name>
@@ -6745,6 +6862,14 @@ eventos:   %1
             <numerusform>%1: respondió %2 de %n vehículo — %3.</numerusform>
             <numerusform>%1: respondieron %2 de %n vehículos — %3.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Held back by their checklist, not sent: %1.</source>
+        <translation>Retenidos por su lista de comprobación, no enviados: %1.</translation>
+    </message>
+    <message>
+        <source>held back by its checklist (%1)</source>
+        <translation>retenido por su lista de comprobación (%1)</translation>
     </message>
 </context>
 <context>
@@ -7458,6 +7583,151 @@ eventos:   %1
     <message>
         <source>Choose an action to add.</source>
         <translation>Elija una acción para añadir.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::preflight::PreflightChecklists</name>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>No se puede leer %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::preflight::VehicleChecklist</name>
+    <message>
+        <source>2D fix</source>
+        <translation>posición 2D</translation>
+    </message>
+    <message>
+        <source>3D fix</source>
+        <translation>posición 3D</translation>
+    </message>
+    <message>
+        <source>RTK float</source>
+        <translation>RTK flotante</translation>
+    </message>
+    <message>
+        <source>RTK fixed</source>
+        <translation>RTK fijo</translation>
+    </message>
+    <message>
+        <source>no fix</source>
+        <translation>sin posición</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Link to the vehicle</source>
+        <translation>Enlace con el vehículo</translation>
+    </message>
+    <message>
+        <source>GPS fix</source>
+        <translation>Posición GPS</translation>
+    </message>
+    <message>
+        <source>Satellites</source>
+        <translation>Satélites</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Batería</translation>
+    </message>
+    <message>
+        <source>Home position</source>
+        <translation>Posición de casa</translation>
+    </message>
+    <message>
+        <source>Route on board</source>
+        <translation>Ruta a bordo</translation>
+    </message>
+    <message>
+        <source>Route check</source>
+        <translation>Comprobación de la ruta</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Cámara</translation>
+    </message>
+    <message>
+        <source>ticked</source>
+        <translation>marcado</translation>
+    </message>
+    <message>
+        <source>not reported over this vehicle&apos;s link</source>
+        <translation>no se informa por el enlace de este vehículo</translation>
+    </message>
+    <message>
+        <source>to tick</source>
+        <translation>por marcar</translation>
+    </message>
+    <message>
+        <source>Sortie has uploaded no route to it</source>
+        <translation>Sortie no le ha cargado ninguna ruta</translation>
+    </message>
+    <message>
+        <source>its route is not the one open</source>
+        <translation>su ruta no es la abierta</translation>
+    </message>
+    <message>
+        <source>not known: no fresh telemetry</source>
+        <translation>desconocido: sin telemetría reciente</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>conectado</translation>
+    </message>
+    <message>
+        <source>no fresh telemetry</source>
+        <translation>sin telemetría reciente</translation>
+    </message>
+    <message>
+        <source>%1 (%2 needed)</source>
+        <translation>%1 (se necesita %2)</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 % (%2 % needed)</source>
+        <translation>%1 % (se necesita %2 %)</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>fijada</translation>
+    </message>
+    <message>
+        <source>not set</source>
+        <translation>sin fijar</translation>
+    </message>
+    <message>
+        <source>the planned route</source>
+        <translation>la ruta planificada</translation>
+    </message>
+    <message>
+        <source>differs from the planned route: upload it</source>
+        <translation>difiere de la ruta planificada: cárguela</translation>
+    </message>
+    <message>
+        <source>no errors</source>
+        <translation>sin errores</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n error</numerusform>
+            <numerusform>%n errores</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>stream reported</source>
+        <translation>flujo anunciado</translation>
+    </message>
+    <message>
+        <source>no stream reported</source>
+        <translation>ningún flujo anunciado</translation>
     </message>
 </context>
 <context>

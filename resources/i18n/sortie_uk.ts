@@ -565,6 +565,100 @@
     </message>
 </context>
 <context>
+    <name>Checklist</name>
+    <message>
+        <source>unknown key &quot;%1&quot;</source>
+        <translation>невідомий ключ «%1»</translation>
+    </message>
+    <message>
+        <source>an item the operator ticks has no &quot;check&quot;; leave it out</source>
+        <translation>пункт, який позначає оператор, не має «check»; приберіть його</translation>
+    </message>
+    <message>
+        <source>an item to tick needs a &quot;title&quot;</source>
+        <translation>пункту для позначення потрібен «title»</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; takes no minimum</source>
+        <translation>«%1» не має мінімуму</translation>
+    </message>
+    <message>
+        <source>%1 is outside %2..%3</source>
+        <translation>%1 поза межами %2..%3</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; needs a &quot;minimum&quot;</source>
+        <translation>«%1» потребує «minimum»</translation>
+    </message>
+    <message>
+        <source>an empty list holds nothing back; say &quot;required&quot;: false instead</source>
+        <translation>порожній список нічого не затримує; напишіть натомість &quot;required&quot;: false</translation>
+    </message>
+    <message>
+        <source>Sortie&apos;s default checklist</source>
+        <translation>Типовий контрольний список Sortie</translation>
+    </message>
+    <message>
+        <source>Propellers fitted and tight</source>
+        <translation>Пропелери встановлені й затягнуті</translation>
+    </message>
+    <message>
+        <source>Take-off area clear of people</source>
+        <translation>У зоні зльоту немає людей</translation>
+    </message>
+    <message>
+        <source>Payload and battery secured</source>
+        <translation>Корисне навантаження й батарею закріплено</translation>
+    </message>
+    <message>
+        <source>a checklist needs at least one item</source>
+        <translation>контрольному списку потрібен хоча б один пункт</translation>
+    </message>
+</context>
+<context>
+    <name>ChecklistPanel</name>
+    <message>
+        <source>Pre-flight checklist</source>
+        <translation>Передпольотний контрольний список</translation>
+    </message>
+    <message>
+        <source>Ready to arm and fly the mission</source>
+        <translation>Готовий до ввімкнення й польоту за місією</translation>
+    </message>
+    <message>
+        <source>Ready to arm; Auto waits</source>
+        <translation>Готовий до ввімкнення; Авто чекає</translation>
+    </message>
+    <message>
+        <source>Not ready to arm: %1 of %2 pass</source>
+        <translation>Не готовий до ввімкнення: виконано %1 з %2</translation>
+    </message>
+    <message>
+        <source>Not used, Sortie&apos;s default instead: %1</source>
+        <translation>Не використано, натомість типовий список Sortie: %1</translation>
+    </message>
+    <message>
+        <source>Sortie&apos;s default; write your own in %1</source>
+        <translation>Типовий список Sortie; власний напишіть у %1</translation>
+    </message>
+    <message>
+        <source>Choose a vehicle to see its checklist.</source>
+        <translation>Виберіть апарат, щоб побачити його контрольний список.</translation>
+    </message>
+    <message>
+        <source>%1 (advisory)</source>
+        <translation>%1 (рекомендація)</translation>
+    </message>
+    <message>
+        <source>Read again</source>
+        <translation>Прочитати знову</translation>
+    </message>
+    <message>
+        <source>Read the checklist files again after editing them (the ticks are cleared)</source>
+        <translation>Прочитати файли контрольних списків знову після редагування (позначки скидаються)</translation>
+    </message>
+</context>
+<context>
     <name>CommandBar</name>
     <message>
         <source>Are you sure?</source>
@@ -633,6 +727,42 @@
     <message>
         <source>Choose a vehicle on the map or in the list; tick several to command them together.</source>
         <translation>Виберіть апарат на карті або в списку; позначте кілька, щоб керувати ними разом.</translation>
+    </message>
+    <message>
+        <source>The checklist does not pass</source>
+        <translation>Контрольний список не виконано</translation>
+    </message>
+    <message>
+        <source>%1 is held back on %2 by:</source>
+        <translation>%1 для %2 затримано через:</translation>
+    </message>
+    <message>
+        <source>Send it anyway? The override and these reasons go into the command log and the flight log.</source>
+        <translation>Надіслати все одно? Обхід і ці причини буде записано в журнал команд і журнал польоту.</translation>
+    </message>
+    <message>
+        <source>Send anyway</source>
+        <translation>Надіслати все одно</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Скасувати</translation>
+    </message>
+    <message>
+        <source>Checklist ✓</source>
+        <translation>Список ✓</translation>
+    </message>
+    <message numerus="yes">
+        <source>Checklist: %n to do</source>
+        <translation>
+            <numerusform>Список: %n пункт</numerusform>
+            <numerusform>Список: %n пункти</numerusform>
+            <numerusform>Список: %n пунктів</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The pre-flight checklist: Arm and Auto wait for its required items</source>
+        <translation>Передпольотний контрольний список: увімкнення двигунів і Авто чекають на його обов’язкові пункти</translation>
     </message>
 </context>
 <context>
@@ -2567,42 +2697,6 @@
     <message>
         <source> in %1 s</source>
         <translation> через %1 s</translation>
-    </message>
-    <message>
-        <source>Arm</source>
-        <translation>Розблокувати</translation>
-    </message>
-    <message>
-        <source>Disarm</source>
-        <translation>Заблокувати</translation>
-    </message>
-    <message>
-        <source>Take off</source>
-        <translation>Зліт</translation>
-    </message>
-    <message>
-        <source>Auto</source>
-        <translation>Авто</translation>
-    </message>
-    <message>
-        <source>Pause</source>
-        <translation>Пауза</translation>
-    </message>
-    <message>
-        <source>Guided</source>
-        <translation>Керований</translation>
-    </message>
-    <message>
-        <source>Manual</source>
-        <translation>Ручний</translation>
-    </message>
-    <message>
-        <source>Land</source>
-        <translation>Посадка</translation>
-    </message>
-    <message>
-        <source>Return home</source>
-        <translation>Повернення додому</translation>
     </message>
     <message>
         <source>%1 min %2 s</source>
@@ -6171,6 +6265,30 @@ events:   %1
         <source>Start the mission on %1? Sortie has not seen its mission.</source>
         <translation>Почати місію на %1? Sortie не бачив його місії.</translation>
     </message>
+    <message>
+        <source>Arm</source>
+        <translation>Увімкнути двигуни</translation>
+    </message>
+    <message>
+        <source>Disarm</source>
+        <translation>Вимкнути двигуни</translation>
+    </message>
+    <message>
+        <source>Take off</source>
+        <translation>Зліт</translation>
+    </message>
+    <message>
+        <source>Auto</source>
+        <translation>Авто</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Пауза</translation>
+    </message>
+    <message>
+        <source>%1 sent despite the checklist (the operator overrode it): %2</source>
+        <translation>%1 надіслано попри контрольний список (оператор його обійшов): %2</translation>
+    </message>
 </context>
 <context>
     <name>sortie::client::ConnectionController</name>
@@ -6777,6 +6895,14 @@ events:   %1
             <numerusform>%1: відповіли %2 з %n апаратів — %3.</numerusform>
             <numerusform>%1: відповіли %2 з %n апаратів — %3.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Held back by their checklist, not sent: %1.</source>
+        <translation>Затримано їхнім контрольним списком, не надіслано: %1.</translation>
+    </message>
+    <message>
+        <source>held back by its checklist (%1)</source>
+        <translation>затримано його контрольним списком (%1)</translation>
     </message>
 </context>
 <context>
@@ -7496,6 +7622,152 @@ events:   %1
     <message>
         <source>Choose an action to add.</source>
         <translation>Виберіть дію, щоб додати.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::preflight::PreflightChecklists</name>
+    <message>
+        <source>%1 cannot be read: %2</source>
+        <translation>Не вдається прочитати %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::preflight::VehicleChecklist</name>
+    <message>
+        <source>2D fix</source>
+        <translation>2D-фіксація</translation>
+    </message>
+    <message>
+        <source>3D fix</source>
+        <translation>3D-фіксація</translation>
+    </message>
+    <message>
+        <source>RTK float</source>
+        <translation>RTK float</translation>
+    </message>
+    <message>
+        <source>RTK fixed</source>
+        <translation>RTK fixed</translation>
+    </message>
+    <message>
+        <source>no fix</source>
+        <translation>немає фіксації</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Link to the vehicle</source>
+        <translation>Зв’язок з апаратом</translation>
+    </message>
+    <message>
+        <source>GPS fix</source>
+        <translation>GPS-фіксація</translation>
+    </message>
+    <message>
+        <source>Satellites</source>
+        <translation>Супутники</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Батарея</translation>
+    </message>
+    <message>
+        <source>Home position</source>
+        <translation>Домашня точка</translation>
+    </message>
+    <message>
+        <source>Route on board</source>
+        <translation>Маршрут на борту</translation>
+    </message>
+    <message>
+        <source>Route check</source>
+        <translation>Перевірка маршруту</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Камера</translation>
+    </message>
+    <message>
+        <source>ticked</source>
+        <translation>позначено</translation>
+    </message>
+    <message>
+        <source>not reported over this vehicle&apos;s link</source>
+        <translation>не передається зв’язком цього апарата</translation>
+    </message>
+    <message>
+        <source>to tick</source>
+        <translation>треба позначити</translation>
+    </message>
+    <message>
+        <source>Sortie has uploaded no route to it</source>
+        <translation>Sortie не завантажував йому маршрут</translation>
+    </message>
+    <message>
+        <source>its route is not the one open</source>
+        <translation>його маршрут не той, що відкритий</translation>
+    </message>
+    <message>
+        <source>not known: no fresh telemetry</source>
+        <translation>невідомо: немає свіжої телеметрії</translation>
+    </message>
+    <message>
+        <source>connected</source>
+        <translation>підключено</translation>
+    </message>
+    <message>
+        <source>no fresh telemetry</source>
+        <translation>немає свіжої телеметрії</translation>
+    </message>
+    <message>
+        <source>%1 (%2 needed)</source>
+        <translation>%1 (потрібно %2)</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>%1 % (%2 % needed)</source>
+        <translation>%1 % (потрібно %2 %)</translation>
+    </message>
+    <message>
+        <source>set</source>
+        <translation>задано</translation>
+    </message>
+    <message>
+        <source>not set</source>
+        <translation>не задано</translation>
+    </message>
+    <message>
+        <source>the planned route</source>
+        <translation>запланований маршрут</translation>
+    </message>
+    <message>
+        <source>differs from the planned route: upload it</source>
+        <translation>відрізняється від запланованого маршруту: завантажте його</translation>
+    </message>
+    <message>
+        <source>no errors</source>
+        <translation>без помилок</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n error(s)</source>
+        <translation>
+            <numerusform>%n помилка</numerusform>
+            <numerusform>%n помилки</numerusform>
+            <numerusform>%n помилок</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>stream reported</source>
+        <translation>потік повідомлено</translation>
+    </message>
+    <message>
+        <source>no stream reported</source>
+        <translation>потік не повідомлено</translation>
     </message>
 </context>
 <context>
