@@ -413,6 +413,14 @@ void VideoReceiver::build()
 void VideoReceiver::teardown()
 {
     m_busTimer.stop();
+    // A recording ends with an end of stream through its muxer: what its queue still holds (up to
+    // 2 s) is written and the file closed, rather than dropped by the stop. Bounded, so a stalled
+    // pipeline cannot hold the GUI thread.
+    if (m_pipeline && !m_recordingFile.isEmpty()) {
+        gst_element_send_event(m_pipeline->pipeline, gst_event_new_eos());
+        if (GstMessage *end = gst_bus_timed_pop_filtered(m_pipeline->bus, GST_SECOND, GstMessageType(GST_MESSAGE_EOS | GST_MESSAGE_ERROR)))
+            gst_message_unref(end);
+    }
     m_pipeline.reset();
 }
 
