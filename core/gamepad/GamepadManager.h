@@ -18,8 +18,8 @@ namespace sortie::gamepad {
 // the destructor calls SDL_Quit. One manager lives at a time: a second one while the first lives
 // is not available (errorString says why) and leaves SDL alone.
 //
-// SDL's events are pumped from a QTimer in this object's thread: every activePollMs (16 ms) while a
-// gamepad is attached, else every idleCheckMs (1 s) to see new devices, so an idle client does not
+// SDL's events are pumped from a QTimer in this object's thread: every kActivePollMs (16 ms) while a
+// gamepad is attached, else every kIdleCheckMs (1 s) to see new devices, so an idle client does not
 // wake 60 times a second for nothing (pollIntervalMs() tells which; tst_gamepad checks both).
 //
 // A list model of the attached gamepads (roles name, guid, gamepad), in the order they came. A

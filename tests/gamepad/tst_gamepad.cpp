@@ -134,8 +134,14 @@ private:
         while (m_manager->count() == 0 && waited.elapsed() < 3000)
             QTest::qWait(10);
         for (Gamepad *pad : m_manager->gamepads()) {
-            if (pad->instanceId() == m_pad->instanceId())
-                return pad;
+            if (pad->instanceId() != m_pad->instanceId())
+                continue;
+            // SDL reads the virtual device's state at the pump after it was opened: until then its
+            // triggers read half pulled (0 on a full-range axis). At rest when both read released.
+            waited.restart();
+            while ((pad->rawAxis(Axis::TriggerLeft) != 0 || pad->rawAxis(Axis::TriggerRight) != 0) && waited.elapsed() < 1000)
+                QTest::qWait(5);
+            return pad;
         }
         return nullptr;
     }
@@ -189,6 +195,7 @@ private slots:
         // At rest.
         QCOMPARE(pad->axis(Axis::LeftX), 0.0);
         QCOMPARE(pad->axis(Axis::TriggerLeft), 0.0);
+        QCOMPARE(pad->axis(Axis::TriggerRight), 0.0);
     }
 
     void axisReadsBackShaped()
@@ -254,13 +261,14 @@ private slots:
         // What a listener reads when it hears the gamepad go.
         double leftYHeard = 9, rightXHeard = 9;
         bool attachedHeard = true;
-        connect(m_manager.get(), &GamepadManager::gamepadRemoved, this, [&](Gamepad *gone) {
+        const auto listener = connect(m_manager.get(), &GamepadManager::gamepadRemoved, this, [&](Gamepad *gone) {
             leftYHeard = gone->axis(Axis::LeftY);
             rightXHeard = gone->axis(Axis::RightX);
             attachedHeard = gone->isAttached();
         });
         m_pad->detach();
         QTRY_COMPARE(removed.count(), 1);
+        disconnect(listener);
         QCOMPARE(removed.at(0).at(0).value<Gamepad *>(), pad);
         QCOMPARE(detached.count(), 1);
         QCOMPARE(leftYHeard, 0.0);
