@@ -244,7 +244,10 @@ private slots:
         QVERIFY(!pad->button(Button::A));
     }
 
-    // The rule "sticks centred when the gamepad disappears".
+    // The rule "sticks centred when the gamepad disappears". SDL itself recentres a removed
+    // joystick (axes to rest, buttons up) before it reports it gone, so what a listener reads here
+    // is the whole chain; that a Gamepad reads 0 whatever its last raw value once detached is
+    // tst_stickshaping's gamepadShapesAndCentresWhenDetached.
     void detachingCentresTheSticks()
     {
         Gamepad *pad = attachPad();
