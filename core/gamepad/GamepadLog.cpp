@@ -1,0 +1,3 @@
+#include "GamepadLog.h"
+
+Q_LOGGING_CATEGORY(lcGamepad, "sortie.gamepad")
