@@ -31,6 +31,7 @@
 #include "Traffic.h"
 #include "VehicleVideo.h"
 #include "PreflightChecklists.h"
+#include "GamepadCommands.h"
 #include "UploadedFenceAlerts.h"
 #include "OfflineMaps.h"
 #include "VciFenceBuilder.h"
@@ -111,6 +112,9 @@ ClientGraph::ClientGraph(QSettings *storage, Options options, QObject *parent)
     if (m_fleet)
         m_preflight = std::make_unique<preflight::PreflightChecklists>(m_fleet.get(), m_fleetRoutes.get(), document,
                                                                        m_missions->preparation(), options.checklistDirectory);
+    // The gamepads' buttons, for the command bar (through the checklist and the confirmation).
+    if (m_fleet)
+        m_gamepads = std::make_unique<gamepad::GamepadCommands>(storage);
     // Closest-approach alerts: into the fleet's command log, which the flight recorder follows.
     if (m_fleet)
         m_proximity = std::make_unique<deconfliction::ProximityMonitor>(m_fleet.get(), m_traffic->picture());
@@ -185,6 +189,7 @@ ClientGraph::~ClientGraph()
     m_deconfliction.reset();
     m_offlineMaps.reset();
     m_video.reset();
+    m_gamepads.reset();
     m_preflight.reset();
     m_traffic.reset();
     m_zoneFeed.reset();
@@ -240,6 +245,7 @@ QStringList ClientGraph::wiring() const
           << QStringLiteral("route deconfliction: %1").arg(yesNo(m_deconfliction && std::any_of(rules.begin(), rules.end(), [&](const auto &r) { return r == m_deconfliction->rule(); }), "against the fleet's routes", "none"))
           << QStringLiteral("video: %1").arg(yesNo(m_video != nullptr, "a receiver per vehicle shown, its URL or video_stream_uri", "none"))
           << QStringLiteral("preflight: %1").arg(yesNo(m_preflight && m_fleet->commands()->gate() == m_preflight.get(), "a checklist per vehicle type, the gate on arm, take-off and auto", "none"))
+          << QStringLiteral("gamepads: %1").arg(yesNo(m_gamepads != nullptr, "buttons to the command bar, SDL started when the operator enables them", "none"))
           << QStringLiteral("proximity alerts: %1").arg(yesNo(m_proximity != nullptr, "the fleet and the traffic", "none"))
           << QStringLiteral("zone alerts: %1").arg(yesNo(m_zoneAlerts != nullptr, "the fleet against the airspace", "none"))
           << QStringLiteral("uploaded fences: %1").arg(yesNo(m_uploadedFenceAlerts && m_uploadedFenceAlerts->isFollowing(), "each vehicle's own zone alerts", "none"))

@@ -27,6 +27,7 @@ Q_MOC_INCLUDE("Traffic.h")
 Q_MOC_INCLUDE("VehicleFleet.h")
 Q_MOC_INCLUDE("VehicleVideo.h")
 Q_MOC_INCLUDE("PreflightChecklists.h")
+Q_MOC_INCLUDE("GamepadCommands.h")
 Q_MOC_INCLUDE("ZoneAlertMonitor.h")
 Q_MOC_INCLUDE("ZoneFeed.h")
 Q_MOC_INCLUDE("ZoneSharing.h")
@@ -71,6 +72,9 @@ class VehicleVideo;
 namespace sortie::preflight {
 class PreflightChecklists;
 } // namespace sortie::preflight
+namespace sortie::gamepad {
+class GamepadCommands;
+} // namespace sortie::gamepad
 namespace sortie::maptiles {
 class OfflineMaps;
 } // namespace sortie::maptiles
@@ -122,6 +126,7 @@ class ClientGraph : public QObject
     Q_PROPERTY(sortie::traffic::Traffic *traffic READ trafficForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::video::VehicleVideo *video READ videoForQml CONSTANT FINAL)                           // nullable: vehicles
     Q_PROPERTY(sortie::preflight::PreflightChecklists *preflight READ preflightForQml CONSTANT FINAL)        // nullable: vehicles
+    Q_PROPERTY(sortie::gamepad::GamepadCommands *gamepads READ gamepadsForQml CONSTANT FINAL)                // nullable: vehicles
     Q_PROPERTY(sortie::maptiles::OfflineMaps *offlineMaps READ offlineMapsForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::deconfliction::ProximityMonitor *proximity READ proximityForQml CONSTANT FINAL)        // nullable: vehicles
     Q_PROPERTY(sortie::airspace::ZoneAlertMonitor *zoneAlerts READ zoneAlertsForQml CONSTANT FINAL)           // nullable: vehicles
@@ -174,6 +179,8 @@ public:
     video::VehicleVideo *video() const { return m_video.get(); }
     // Each vehicle's pre-flight checklist, the gate on its Arm, take-off and Auto; null without vehicles.
     preflight::PreflightChecklists *preflight() const { return m_preflight.get(); }
+    // The gamepads' buttons as commands (SDL started only while enabled); null without vehicles.
+    gamepad::GamepadCommands *gamepads() const { return m_gamepads.get(); }
     // Maps taken offline: the area, the download into an MBTiles pack, cache-only (docs/offline-maps.md).
     maptiles::OfflineMaps &offlineMaps() { return *m_offlineMaps; }
     // In-flight closest-approach alerts between the fleet's vehicles and against the traffic;
@@ -215,6 +222,7 @@ private:
     traffic::Traffic *trafficForQml() const { return m_traffic.get(); }
     video::VehicleVideo *videoForQml() const { return m_video.get(); }
     preflight::PreflightChecklists *preflightForQml() const { return m_preflight.get(); }
+    gamepad::GamepadCommands *gamepadsForQml() const { return m_gamepads.get(); }
     maptiles::OfflineMaps *offlineMapsForQml() const { return m_offlineMaps.get(); }
     deconfliction::ProximityMonitor *proximityForQml() const { return m_proximity.get(); }
     airspace::ZoneAlertMonitor *zoneAlertsForQml() const { return m_zoneAlerts.get(); }
@@ -238,6 +246,7 @@ private:
     std::unique_ptr<traffic::Traffic> m_traffic;
     std::unique_ptr<video::VehicleVideo> m_video;
     std::unique_ptr<preflight::PreflightChecklists> m_preflight;
+    std::unique_ptr<gamepad::GamepadCommands> m_gamepads;
     std::unique_ptr<maptiles::OfflineMaps> m_offlineMaps;
     std::unique_ptr<FleetRoutes> m_fleetRoutes;
     std::unique_ptr<deconfliction::RouteDeconfliction> m_deconfliction;

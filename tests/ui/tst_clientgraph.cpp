@@ -20,6 +20,7 @@
 #include "ElevationService.h"
 #include "FleetRoutes.h"
 #include "PreflightChecklists.h"
+#include "GamepadCommands.h"
 #include "LaunchOptions.h"
 #include "QuickScene.h"
 #include "ComparisonController.h"
@@ -123,7 +124,7 @@ private slots:
             {"connection", &graph.connection()}, {"missions", &graph.missions()}, {"elevation", graph.elevation()},
             {"fleet", graph.fleet()}, {"fleetRoutes", graph.fleetRoutes()}, {"recovery", graph.recovery()},
             {"endurance", &graph.endurance()}, {"airspace", &graph.airspace()}, {"zoneSharing", &graph.zoneSharing()}, {"zoneFeed", &graph.zoneFeed()},
-            {"traffic", &graph.traffic()}, {"video", graph.video()}, {"preflight", graph.preflight()}, {"offlineMaps", &graph.offlineMaps()}, {"proximity", graph.proximity()},
+            {"traffic", &graph.traffic()}, {"video", graph.video()}, {"preflight", graph.preflight()}, {"gamepads", graph.gamepads()}, {"offlineMaps", &graph.offlineMaps()}, {"proximity", graph.proximity()},
             {"zoneAlerts", graph.zoneAlerts()}, {"deconfliction", graph.deconfliction()},
             {"recordingSettings", &graph.recordingSettings()}, {"replay", &graph.replay()},
             {"comparison", &graph.comparison()}, {"serverHistory", &graph.serverHistory()}};
@@ -140,7 +141,7 @@ private slots:
             {"loginPage", {"connection"}},
             {"missionPage", {"missions", "elevation", "endurance", "traffic", "fleetRoutes", "deconfliction", "airspace", "zoneSharing"}},
             {"telemetryPage", {"fleet", "replay", "serverHistory", "comparison", "endurance", "traffic", "fleetRoutes",
-                               "proximity", "zoneAlerts", "airspace", "preflight"}}};
+                               "proximity", "zoneAlerts", "airspace", "preflight", "gamepads"}}};
         for (const auto &[pageName, names] : pages) {
             QObject *page = fixture.page(pageName);
             QVERIFY2(page, pageName);

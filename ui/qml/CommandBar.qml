@@ -15,6 +15,7 @@ ToolBar {
     required property Vehicle vehicle      // null: none chosen
     required property VehicleFleet fleet
     required property PreflightChecklists preflight   // null without vehicles
+    required property GamepadCommands gamepads        // null without vehicles
     // The chosen vehicle's checklist (made on first use; asked again after the files are re-read).
     readonly property VehicleChecklist checklist: bar.preflight && bar.vehicle && bar.preflight.revision >= 0
                                                   ? bar.preflight.checklistFor(bar.vehicle) : null
@@ -65,6 +66,12 @@ ToolBar {
         Label { textFormat: Text.PlainText; id: question; wrapMode: Text.Wrap; width: confirmDialog.availableWidth }
         onAccepted: if (bar.pending) { bar.pending(); bar.pending = null }
         onRejected: bar.pending = null
+    }
+
+    // A gamepad's button asks as the bar's own button would: the checklist and the question first.
+    Connections {
+        target: bar.gamepads
+        function onCommandRequested(command) { bar.command(command) }
     }
 
     // A command the checklist holds back: why, and the operator's choice to send it anyway.
@@ -182,6 +189,16 @@ ToolBar {
         Button { objectName: "resumeButton"; text: qsTr("Resume"); onClicked: bar.command(CommandPolicy.Auto) }
         Button { objectName: "landButton"; text: qsTr("Land"); onClicked: bar.command(CommandPolicy.Land) }
         Button { objectName: "homeButton"; text: qsTr("Return home"); onClicked: bar.command(CommandPolicy.ReturnHome) }
+        Button {
+            objectName: "gamepadButton"
+            visible: bar.gamepads !== null
+            text: qsTr("Gamepad")
+            checkable: true
+            checked: bar.gamepads !== null && bar.gamepads.enabled
+            onToggled: { bar.gamepads.enabled = checked; checked = Qt.binding(() => bar.gamepads !== null && bar.gamepads.enabled) }
+            ToolTip.visible: hovered
+            ToolTip.text: bar.gamepads ? qsTr("Gamepad buttons as commands, each asking first (by default Start arms, X pauses, Y lands, B returns home). %1").arg(bar.gamepads.status) : ""
+        }
         Button {
             objectName: "goButton"
             text: qsTr("Go here…")

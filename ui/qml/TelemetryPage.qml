@@ -27,6 +27,7 @@ Page {
     property alias videoPanel: videoPanel
     // Each vehicle's pre-flight checklist, the gate on Arm and Auto; null without vehicles.
     readonly property PreflightChecklists preflight: graph.preflight
+    readonly property GamepadCommands gamepads: graph.gamepads   // buttons as commands; null without vehicles
     // Every route given to a vehicle: drawn under the flight plans, listed under the vehicles.
     readonly property FleetRoutes fleetRoutes: graph.fleetRoutes
     readonly property ProximityMonitor proximity: graph.proximity   // closest-approach alerts (the fleet and the traffic); null without vehicles
@@ -319,6 +320,7 @@ Page {
                 vehicle: page.current
                 fleet: page.fleet
                 preflight: page.replaying ? null : page.preflight
+                gamepads: page.replaying ? null : page.gamepads
             }
             ReplayTimeline {
                 theme: page.theme

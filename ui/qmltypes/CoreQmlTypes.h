@@ -35,6 +35,7 @@
 #include "VehicleFleet.h"
 #include "VehicleVideo.h"
 #include "PreflightChecklists.h"
+#include "GamepadCommands.h"
 #include "VehicleChecklist.h"
 #include "VideoReceiver.h"
 #include "VehicleGroup.h"
@@ -218,6 +219,13 @@ struct PreflightChecklistsForeign
     Q_GADGET
     QML_FOREIGN(sortie::preflight::PreflightChecklists)
     QML_NAMED_ELEMENT(PreflightChecklists)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+struct GamepadCommandsForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::gamepad::GamepadCommands)
+    QML_NAMED_ELEMENT(GamepadCommands)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 struct VehicleChecklistForeign
