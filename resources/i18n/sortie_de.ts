@@ -761,6 +761,14 @@
         <source>The pre-flight checklist: Arm and Auto wait for its required items</source>
         <translation>Die Vorflug-Checkliste: Scharfschalten und Auto warten auf ihre Pflichtpunkte</translation>
     </message>
+    <message>
+        <source>Gamepad</source>
+        <translation>Gamepad</translation>
+    </message>
+    <message>
+        <source>Gamepad buttons as commands, each asking first (by default Start arms, X pauses, Y lands, B returns home). %1</source>
+        <translation>Gamepad-Tasten als Befehle, jeder fragt zuerst (standardmäßig: Start schaltet scharf, X pausiert, Y landet, B kehrt heim). %1</translation>
+    </message>
 </context>
 <context>
     <name>CommandLogView</name>
@@ -7190,6 +7198,32 @@ Ereignisse: %1
     <message>
         <source>%1 is not this computer and the connection is not secured: the password would cross the network in clear. Record over TLS (--server tls://%1), or pass --allow-cleartext to send it in clear.</source>
         <translation>%1 ist nicht dieser Computer und die Verbindung ist nicht gesichert: Das Passwort ginge im Klartext über das Netz. Zeichnen Sie über TLS auf (--server tls://%1) oder geben Sie --allow-cleartext an, um es im Klartext zu senden.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::gamepad::GamepadCommands</name>
+    <message>
+        <source>Gamepads off</source>
+        <translation>Gamepads aus</translation>
+    </message>
+    <message>
+        <source>Gamepads unavailable: %1</source>
+        <translation>Gamepads nicht verfügbar: %1</translation>
+    </message>
+    <message>
+        <source>No gamepad attached</source>
+        <translation>Kein Gamepad angeschlossen</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::gamepad::GamepadManager</name>
+    <message>
+        <source>Another gamepad manager already owns SDL in this program.</source>
+        <translation>Eine andere Gamepad-Verwaltung besitzt SDL in diesem Programm bereits.</translation>
+    </message>
+    <message>
+        <source>Gamepads are not available: %1</source>
+        <translation>Gamepads sind nicht verfügbar: %1</translation>
     </message>
 </context>
 <context>

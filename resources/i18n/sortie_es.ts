@@ -761,6 +761,14 @@
         <source>The pre-flight checklist: Arm and Auto wait for its required items</source>
         <translation>La lista de comprobación previa al vuelo: Armar y Auto esperan a sus elementos obligatorios</translation>
     </message>
+    <message>
+        <source>Gamepad</source>
+        <translation>Mando</translation>
+    </message>
+    <message>
+        <source>Gamepad buttons as commands, each asking first (by default Start arms, X pauses, Y lands, B returns home). %1</source>
+        <translation>Botones del mando como órdenes, cada una pregunta antes (por defecto Start arma, X pausa, Y aterriza, B vuelve a casa). %1</translation>
+    </message>
 </context>
 <context>
     <name>CommandLogView</name>
@@ -7190,6 +7198,32 @@ eventos:   %1
     <message>
         <source>%1 is not this computer and the connection is not secured: the password would cross the network in clear. Record over TLS (--server tls://%1), or pass --allow-cleartext to send it in clear.</source>
         <translation>%1 no es este ordenador y la conexión no está protegida: la contraseña cruzaría la red en claro. Grabe por TLS (--server tls://%1) o indique --allow-cleartext para enviarla en claro.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::gamepad::GamepadCommands</name>
+    <message>
+        <source>Gamepads off</source>
+        <translation>Mandos desactivados</translation>
+    </message>
+    <message>
+        <source>Gamepads unavailable: %1</source>
+        <translation>Mandos no disponibles: %1</translation>
+    </message>
+    <message>
+        <source>No gamepad attached</source>
+        <translation>Ningún mando conectado</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::gamepad::GamepadManager</name>
+    <message>
+        <source>Another gamepad manager already owns SDL in this program.</source>
+        <translation>Otro gestor de mandos ya tiene SDL en este programa.</translation>
+    </message>
+    <message>
+        <source>Gamepads are not available: %1</source>
+        <translation>Los mandos no están disponibles: %1</translation>
     </message>
 </context>
 <context>

@@ -764,6 +764,14 @@
         <source>The pre-flight checklist: Arm and Auto wait for its required items</source>
         <translation>Передпольотний контрольний список: увімкнення двигунів і Авто чекають на його обов’язкові пункти</translation>
     </message>
+    <message>
+        <source>Gamepad</source>
+        <translation>Геймпад</translation>
+    </message>
+    <message>
+        <source>Gamepad buttons as commands, each asking first (by default Start arms, X pauses, Y lands, B returns home). %1</source>
+        <translation>Кнопки геймпада як команди, кожна спершу питає (типово Start вмикає двигуни, X — пауза, Y — посадка, B — повернення додому). %1</translation>
+    </message>
 </context>
 <context>
     <name>CommandLogView</name>
@@ -7224,6 +7232,32 @@ events:   %1
     <message>
         <source>%1 is not this computer and the connection is not secured: the password would cross the network in clear. Record over TLS (--server tls://%1), or pass --allow-cleartext to send it in clear.</source>
         <translation>%1 — не цей комп’ютер, і з’єднання не захищене: пароль пройшов би мережею відкритим текстом. Записуйте через TLS (--server tls://%1) або вкажіть --allow-cleartext, щоб надіслати його відкритим текстом.</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::gamepad::GamepadCommands</name>
+    <message>
+        <source>Gamepads off</source>
+        <translation>Геймпади вимкнено</translation>
+    </message>
+    <message>
+        <source>Gamepads unavailable: %1</source>
+        <translation>Геймпади недоступні: %1</translation>
+    </message>
+    <message>
+        <source>No gamepad attached</source>
+        <translation>Геймпад не під’єднано</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::gamepad::GamepadManager</name>
+    <message>
+        <source>Another gamepad manager already owns SDL in this program.</source>
+        <translation>Інший диспетчер геймпадів уже володіє SDL у цій програмі.</translation>
+    </message>
+    <message>
+        <source>Gamepads are not available: %1</source>
+        <translation>Геймпади недоступні: %1</translation>
     </message>
 </context>
 <context>
