@@ -56,7 +56,7 @@ std::vector<double> profileAlong(const SampledPath &path, std::vector<GeoPoint> 
                     continue;
                 }
                 const double f = (d - at[j]) / (at[j + 1] - at[j]);
-                values[i] = elevations[j] + f * (elevations[j + 1] - elevations[j]);  // NaN spreads
+                values[i] = std::lerp(elevations[j], elevations[j + 1], f);  // NaN spreads; no overflow between finite values
             }
         }
     }

@@ -3,6 +3,7 @@
 #include "Domain.pb.h"
 #include "HciRouteMapper.h"
 
+#include <cstdio>
 #include <cstdlib>
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -13,7 +14,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     const auto imported = sortie::mission::routeFromHci(route);
     if (!imported.ok())
         return 0;
-    if (sortie::mission::routeToHci(imported->route).SerializeAsString() != route.SerializeAsString())
+    const auto exported = sortie::mission::routeToHci(imported->route);
+    if (exported.SerializeAsString() != route.SerializeAsString()) {
+        std::fprintf(stderr, "fuzz_hci_route: the route read differs from the route written\nread:    %s\nwritten: %s\n",
+                     route.ShortDebugString().c_str(), exported.ShortDebugString().c_str());
         std::abort();
+    }
     return 0;
 }

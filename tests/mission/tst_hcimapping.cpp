@@ -199,7 +199,13 @@ private slots:
         twice->set_type(pb::VPT_MAX_CLIMB_RATE);
         twice->set_value(std::numeric_limits<double>::quiet_NaN());
         odd.mutable_segments(0)->mutable_figure()->mutable_points(0)->set_aglaltitude(std::numeric_limits<double>::quiet_NaN());
-        for (const pb::Route &original : {storedRoute(), savedRoute(), odd}) {
+        // And a waypoint that is no place (a NaN longitude), kept as the server sent it, whose point
+        // has no altitude type (found by fuzz_hci_route: NaN != NaN rewrote the point).
+        pb::Route nowhere = savedRoute();
+        pb::FigurePoint *lost = nowhere.mutable_segments(0)->mutable_figure()->mutable_points(0);
+        lost->set_longitude(std::numeric_limits<double>::quiet_NaN());
+        lost->clear_altitudetype();
+        for (const pb::Route &original : {storedRoute(), savedRoute(), odd, nowhere}) {
             const pb::Route back = routeToHci(imported(original));
             QCOMPARE(back.SerializeAsString(), original.SerializeAsString());
         }

@@ -8,6 +8,7 @@
 #include "HciText.h"
 #include "SegmentParameters.h"
 
+#include <algorithm>
 #include <numbers>
 #include <QCoreApplication>
 
@@ -196,6 +197,16 @@ AlgorithmSegment algorithmSegmentFromHci(const pb::SegmentDefinition &s)
     return a;
 }
 
+// Unchanged since read, bit for bit: a NaN the server sent (a segment kept because it did not read
+// as its kind) is the same NaN, so an unedited segment goes back exactly as it came.
+bool samePoints(const std::vector<FigurePoint> &a, const std::vector<FigurePoint> &b)
+{
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const FigurePoint &x, const FigurePoint &y) {
+        return !differs(x.position.latitude, y.position.latitude) && !differs(x.position.longitude, y.position.longitude)
+            && !differs(x.altitude, y.altitude) && x.altitudeType == y.altitudeType;
+    });
+}
+
 void algorithmSegmentToHci(const AlgorithmSegment &a, const AlgorithmSegment *before, pb::SegmentDefinition &s)
 {
     const bool fresh = !before;
@@ -203,7 +214,7 @@ void algorithmSegmentToHci(const AlgorithmSegment &a, const AlgorithmSegment *be
         s.set_algorithmclassname(a.algorithm.toStdString());
     if (fresh || before->figure != a.figure)
         s.mutable_figure()->set_type(pb::FigureType(int(a.figure)));
-    if (fresh || before->points != a.points) {
+    if (fresh || !samePoints(before->points, a.points)) {
         const bool closed = a.figure == FigureType::Polygon && !a.points.empty();
         const size_t n = a.points.size() + (closed ? 1 : 0);
         auto *points = s.mutable_figure()->mutable_points();
