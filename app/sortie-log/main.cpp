@@ -1,7 +1,10 @@
 // sortie-log: record a UgCS server's vehicles into a flight log, describe a log, export its tracks,
 // compare a flight with its plan, fit a vehicle's energy profile to its flights, geotag a flight's
-// photos. The work is in core/flightlog, core/endurance/fit and core/geotag; this file reads arguments.
+// photos and judge their coverage. The work is in core/flightlog, core/endurance/fit, core/geotag and
+// core/coverage; this file reads arguments.
+#include "Camera.h"
 #include "CertificateFingerprint.h"
+#include "CoverageMap.h"
 #include "EnergyProfile.h"
 #include "FlightLog.h"
 #include "FlightLogExport.h"
@@ -9,6 +12,7 @@
 #include "Geotagger.h"
 #include "LogFit.h"
 #include "MissionFiles.h"
+#include "PhotoShots.h"
 #include "RouteComparison.h"
 #include "ServerRecording.h"
 
@@ -16,6 +20,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
+#include <QJsonObject>
 #include <QLoggingCategory>
 #include <QSaveFile>
 #include <QSettings>
@@ -54,8 +59,14 @@ const char *const kUsage =
     "      plus --offset. Writes geotagged copies into DIR (the originals are never changed), and\n"
     "      OpenDroneMap's geo.txt and geotags.csv (Pix4D, Metashape). --vehicle when the log holds\n"
     "      several. Its exit status: 0 every photo tagged, 2 some were not (named), 1 bad usage or input.\n"
+    "  coverage PHOTO_DIR --track LOG_OR_GPX --camera NAME --out OVERLAP.tif [--offset SECONDS]\n"
+    "           [--vehicle ID] [--ground-amsl M] [--min-images N] [--cell M] [--json]\n"
+    "      The ground the photos cover, each placed on the track as geotag places it, looking straight\n"
+    "      down from its height above the take-off (or above flat ground at --ground-amsl): images per\n"
+    "      cell as a GeoTIFF, forward and side overlap, the ground sample distance, and the holes seen\n"
+    "      by fewer than N images (default 5). Exit status: 0 no hole, 2 holes (listed), 1 bad usage or input.\n"
     "\n"
-    "Exit status: 0 done, 1 failed, 2 bad usage (geotag: see above).\n";
+    "Exit status: 0 done, 1 failed, 2 bad usage (geotag, coverage: see above).\n";
 
 enum Exit { Ok = 0, Failed = 1, Usage = 2 };
 
@@ -234,6 +245,66 @@ int fit(const QStringList &in, QTextStream &out, QTextStream &err)
     return code;
 }
 
+// The track --track names: a flight log (its one vehicle, or --vehicle's) or a GPX file. nullopt
+// after saying what is wrong on err.
+std::optional<geotag::Track> trackOf(const Args &a, QTextStream &err)
+{
+    const QString trackPath = a.options.value(QStringLiteral("--track"));
+    if (!QFileInfo(trackPath).isFile()) {
+        err << "sortie-log: --track " << trackPath << ": no such file\n";
+        return std::nullopt;
+    }
+    std::optional<geotag::Track> track;
+    QString error;
+    if (geotag::looksLikeFlightLog(trackPath)) {
+        const auto log = openLog(trackPath, err);
+        if (!log)
+            return std::nullopt;
+        int vehicle = -1;
+        if (a.options.contains(QStringLiteral("--vehicle"))) {
+            vehicle = log->vehicleIndex(a.options.value(QStringLiteral("--vehicle")));
+            if (vehicle < 0) {
+                err << "sortie-log: no vehicle \"" << a.options.value(QStringLiteral("--vehicle")) << "\" in " << log->path() << "\n";
+                return std::nullopt;
+            }
+        } else if (log->vehicles().size() == 1) {
+            vehicle = 0;
+        } else {
+            QStringList names;
+            for (const auto &v : log->vehicles())
+                names.append(v.name());
+            err << "sortie-log: " << log->path() << " holds " << log->vehicles().size() << " vehicles (" << names.join(QStringLiteral(", "))
+                << "): choose one with --vehicle\n";
+            return std::nullopt;
+        }
+        track = geotag::flightLogTrack(*log, vehicle, &error);
+    } else {
+        if (a.options.contains(QStringLiteral("--vehicle"))) {
+            err << "sortie-log: --vehicle chooses a vehicle of a flight log; " << trackPath << " is a GPX file\n";
+            return std::nullopt;
+        }
+        track = geotag::readGpxTrack(trackPath, &error);
+    }
+    if (!track)
+        err << "sortie-log: " << error << "\n";
+    return track;
+}
+
+// --offset: seconds added to the camera's clock. false after saying what is wrong.
+bool readOffset(const Args &a, geotag::MatchOptions *match, QTextStream &err)
+{
+    if (!a.options.contains(QStringLiteral("--offset")))
+        return true;
+    bool ok = false;
+    const double offset = a.options.value(QStringLiteral("--offset")).toDouble(&ok);
+    if (!ok || !std::isfinite(offset) || std::fabs(offset) > 366.0 * 86400) {
+        err << "sortie-log: --offset takes seconds added to the camera's clock (e.g. -3.5), not \"" << a.options.value(QStringLiteral("--offset")) << "\"\n";
+        return false;
+    }
+    match->offsetMs = std::llround(offset * 1000);
+    return true;
+}
+
 // geotag's own exit status, as issue 34 gives it: 0 every photo tagged, 2 some not, 1 bad usage.
 enum GeotagExit { AllTagged = 0, GeotagFailed = 1, SomeUntagged = 2 };
 
@@ -255,56 +326,13 @@ int geotagPhotos(const QStringList &in, QTextStream &out, QTextStream &err)
     }
     geotag::GeotagOptions options;
     options.outFolder = a->options.value(QStringLiteral("--out"));
-    if (a->options.contains(QStringLiteral("--offset"))) {
-        bool ok = false;
-        const double offset = a->options.value(QStringLiteral("--offset")).toDouble(&ok);
-        if (!ok || !std::isfinite(offset) || std::fabs(offset) > 366.0 * 86400) {
-            err << "sortie-log: --offset takes seconds added to the camera's clock (e.g. -3.5), not \"" << a->options.value(QStringLiteral("--offset")) << "\"\n";
-            return GeotagFailed;
-        }
-        options.match.offsetMs = std::llround(offset * 1000);
-    }
+    if (!readOffset(*a, &options.match, err))
+        return GeotagFailed;
 
-    const QString trackPath = a->options.value(QStringLiteral("--track"));
-    if (!QFileInfo(trackPath).isFile()) {
-        err << "sortie-log: --track " << trackPath << ": no such file\n";
+    const auto track = trackOf(*a, err);
+    if (!track)
         return GeotagFailed;
-    }
-    std::optional<geotag::Track> track;
     QString error;
-    if (geotag::looksLikeFlightLog(trackPath)) {
-        const auto log = openLog(trackPath, err);
-        if (!log)
-            return GeotagFailed;
-        int vehicle = -1;
-        if (a->options.contains(QStringLiteral("--vehicle"))) {
-            vehicle = log->vehicleIndex(a->options.value(QStringLiteral("--vehicle")));
-            if (vehicle < 0) {
-                err << "sortie-log: no vehicle \"" << a->options.value(QStringLiteral("--vehicle")) << "\" in " << log->path() << "\n";
-                return GeotagFailed;
-            }
-        } else if (log->vehicles().size() == 1) {
-            vehicle = 0;
-        } else {
-            QStringList names;
-            for (const auto &v : log->vehicles())
-                names.append(v.name());
-            err << "sortie-log: " << log->path() << " holds " << log->vehicles().size() << " vehicles (" << names.join(QStringLiteral(", "))
-                << "): choose one with --vehicle\n";
-            return GeotagFailed;
-        }
-        track = geotag::flightLogTrack(*log, vehicle, &error);
-    } else {
-        if (a->options.contains(QStringLiteral("--vehicle"))) {
-            err << "sortie-log: --vehicle chooses a vehicle of a flight log; " << trackPath << " is a GPX file\n";
-            return GeotagFailed;
-        }
-        track = geotag::readGpxTrack(trackPath, &error);
-    }
-    if (!track) {
-        err << "sortie-log: " << error << "\n";
-        return GeotagFailed;
-    }
     const auto report = geotag::geotagFolder(a->positional.first(), *track, options, &error);
     if (!report) {
         err << "sortie-log: " << error << "\n";
@@ -319,6 +347,122 @@ int geotagPhotos(const QStringList &in, QTextStream &out, QTextStream &err)
             << geotag::kGeoTxtName << " and " << geotag::kCsvName << " in " << options.outFolder << "\n";
     }
     return report->untagged.empty() ? AllTagged : SomeUntagged;
+}
+
+// coverage's exit status, like geotag's: 0 no hole, 2 holes (listed), 1 bad usage or input.
+enum CoverageExit { NoHole = 0, CoverageFailed = 1, Holes = 2 };
+
+bool readNumber(const Args &a, const char *option, double low, double high, double *value, QTextStream &err)
+{
+    const QString name = QLatin1String(option);
+    if (!a.options.contains(name))
+        return true;
+    bool ok = false;
+    const double v = a.options.value(name).toDouble(&ok);
+    if (!ok || !std::isfinite(v) || v < low || v > high) {
+        err << "sortie-log: " << name << " takes a number from " << low << " to " << high << ", not \"" << a.options.value(name) << "\"\n";
+        return false;
+    }
+    *value = v;
+    return true;
+}
+
+int coveragePhotos(const QStringList &in, QTextStream &out, QTextStream &err)
+{
+    const auto a = parse(in, {QStringLiteral("--track"), QStringLiteral("--camera"), QStringLiteral("--out"), QStringLiteral("--offset"),
+                              QStringLiteral("--vehicle"), QStringLiteral("--ground-amsl"), QStringLiteral("--min-images"), QStringLiteral("--cell")},
+                         {QStringLiteral("--json")}, err);
+    if (!a)
+        return CoverageFailed;
+    if (a->positional.size() != 1) {
+        err << "sortie-log: coverage takes one photo folder (PHOTO_DIR), " << a->positional.size() << " given\n";
+        return CoverageFailed;
+    }
+    for (const char *required : {"--track", "--camera", "--out"}) {
+        if (!a->options.contains(QLatin1String(required))) {
+            err << "sortie-log: coverage needs " << required << "\n";
+            return CoverageFailed;
+        }
+    }
+    coverage::CoverageOptions options;
+    const QString cameraName = a->options.value(QStringLiteral("--camera"));
+    const auto camera = mission::builtInCamera(cameraName);
+    if (!camera) {
+        err << "sortie-log: no camera \"" << cameraName << "\"; the cameras Sortie knows:\n";
+        for (const mission::Camera &c : mission::builtInCameras())
+            err << "  " << c.name << "\n";
+        return CoverageFailed;
+    }
+    options.camera = *camera;
+    geotag::MatchOptions match;
+    double minImages = options.minImages, ground = 0;
+    if (!readOffset(*a, &match, err) || !readNumber(*a, "--cell", 0.01, 100, &options.cellMeters, err)
+        || !readNumber(*a, "--min-images", 1, 1000, &minImages, err) || !readNumber(*a, "--ground-amsl", -500, 9000, &ground, err))
+        return CoverageFailed;
+    options.minImages = int(minImages);
+    coverage::ShotOptions shotOptions;
+    if (a->options.contains(QStringLiteral("--ground-amsl")))
+        shotOptions.groundAmsl = ground;
+
+    const auto track = trackOf(*a, err);
+    if (!track)
+        return CoverageFailed;
+    QString error;
+    const auto folder = geotag::readPhotoFolder(a->positional.first(), &error);
+    if (!folder) {
+        err << "sortie-log: " << error << "\n";
+        return CoverageFailed;
+    }
+    const geotag::GeotagReport matched = geotag::matchPhotos(folder->photos, *track, match);
+    coverage::CoverageRaster raster;
+    auto report = coverage::computeCoverage(coverage::shotsFromPhotos(matched.tagged, *track, shotOptions, match), options, &raster, &error);
+    if (!report) {
+        // Why: the photos the track could not place, each with its reason, then what that left.
+        for (const auto &u : folder->unreadable)
+            err << u.file << ": not placed: " << u.reason << "\n";
+        for (const auto &u : matched.untagged)
+            err << u.file << ": not placed: " << u.reason << "\n";
+        err << "sortie-log: " << error << "\n";
+        return CoverageFailed;
+    }
+    // Every photo of the folder is counted, and the ones not on the track or not read named first.
+    report->photos = folder->files;
+    std::vector<coverage::Unplaced> unplaced;
+    for (const auto &u : folder->unreadable)
+        unplaced.push_back({u.file, u.reason});
+    for (const auto &u : matched.untagged)
+        unplaced.push_back({u.file, u.reason});
+    report->unplaced.insert(report->unplaced.begin(), unplaced.begin(), unplaced.end());
+    const QString rasterPath = a->options.value(QStringLiteral("--out"));
+    if (!coverage::writeCoverageGeoTiff(raster, rasterPath, &error)) {
+        err << "sortie-log: " << error << "\n";
+        return CoverageFailed;
+    }
+    if (a->flags.contains(QStringLiteral("--json"))) {
+        QJsonObject json = report->toJson();
+        json.insert(QStringLiteral("camera"), options.camera.name);
+        json.insert(QStringLiteral("ground"), shotOptions.groundAmsl ? QStringLiteral("flat at %1 m AMSL").arg(*shotOptions.groundAmsl)
+                                                                     : QStringLiteral("flat at the take-off point"));
+        json.insert(QStringLiteral("raster"), rasterPath);
+        out << QJsonDocument(json).toJson(QJsonDocument::Indented);
+    } else {
+        for (const auto &u : report->unplaced)
+            out << u.file << ": not placed: " << u.reason << "\n";
+        out << report->placed << " of " << report->photos << " photos placed; " << std::lround(report->coveredFraction * 100) << " % of "
+            << std::lround(report->areaSquareMeters) << " m² seen by at least " << report->minImages << " images";
+        if (report->forwardOverlap && report->forwardOverlap->count)
+            out << "; forward overlap " << std::lround(report->forwardOverlap->p50) << " %";
+        if (report->sideOverlap && report->sideOverlap->count)
+            out << ", side " << std::lround(report->sideOverlap->p50) << " %";
+        if (report->gsdCm && report->gsdCm->count)
+            out << "; " << QString::number(report->gsdCm->p50, 'f', 2) << " cm per pixel";
+        out << "\n";
+        for (const auto &h : report->holes)
+            out << "hole of " << std::lround(h.areaSquareMeters) << " m² at " << QString::number(h.centreLatitude, 'f', 6) << ", "
+                << QString::number(h.centreLongitude, 'f', 6) << "\n";
+        out << "images per cell in " << rasterPath << " (" << report->crs << ", " << report->cellMeters << " m)\n";
+    }
+    return report->holes.empty() ? NoHole : Holes;
 }
 
 int signalPipe[2] = {-1, -1};
@@ -429,6 +573,8 @@ int main(int argc, char **argv)
         return fit(args, out, err);
     if (command == QLatin1String("geotag"))
         return geotagPhotos(args, out, err);
+    if (command == QLatin1String("coverage"))
+        return coveragePhotos(args, out, err);
     err << "sortie-log: unknown command \"" << command << "\"\n\n" << kUsage;
     return Usage;
 }

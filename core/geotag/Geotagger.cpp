@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 
 namespace sortie::geotag {
 
@@ -71,6 +72,7 @@ std::optional<TrackPosition> positionAt(const Track &track, int64_t time, int64_
         position.longitude = after->longitude;
         position.altitudeAmsl = present(after->altitudeAmsl);
         position.heightAboveTakeoff = present(after->heightAboveTakeoff);
+        position.heading = present(after->heading);
         return position;
     }
     const TrackPoint &a = *(after - 1), &b = *after;
@@ -92,7 +94,30 @@ std::optional<TrackPosition> positionAt(const Track &track, int64_t time, int64_
     position.longitude = lon;
     position.altitudeAmsl = between(a.altitudeAmsl, b.altitudeAmsl, f);
     position.heightAboveTakeoff = between(a.heightAboveTakeoff, b.heightAboveTakeoff, f);
+    if (!std::isnan(a.heading) && !std::isnan(b.heading)) {
+        const double h = std::fmod(a.heading + f * std::remainder(b.heading - a.heading, 360.0), 360.0);
+        position.heading = h < 0 ? h + 360 : h;
+    }
     return position;
+}
+
+std::optional<double> courseAt(const Track &track, int64_t time, int64_t maxGapMs)
+{
+    if (track.points.empty())
+        return std::nullopt;
+    const auto from = positionAt(track, std::max(track.start(), time - 1000), maxGapMs, nullptr);
+    const auto to = positionAt(track, std::min(track.end(), time + 1000), maxGapMs, nullptr);
+    if (!from || !to)
+        return std::nullopt;
+    // Metres east and north on the sphere: enough for a bearing over two seconds of flight.
+    constexpr double kMetresPerDegree = 111'195.0;
+    const double north = (to->latitude - from->latitude) * kMetresPerDegree;
+    const double east = std::remainder(to->longitude - from->longitude, 360.0) * kMetresPerDegree
+                      * std::cos(0.5 * (from->latitude + to->latitude) * std::numbers::pi / 180.0);
+    if (std::hypot(east, north) < 1.0)
+        return std::nullopt;
+    const double bearing = std::atan2(east, north) * 180.0 / std::numbers::pi;
+    return bearing < 0 ? bearing + 360 : bearing;
 }
 
 QStringList photoFiles(const QString &folder)
@@ -209,9 +234,9 @@ bool writeGeotagged(GeotagReport &report, const QString &outFolder, QString *err
     return true;
 }
 
-std::optional<GeotagReport> geotagFolder(const QString &photoFolder, const Track &track, const GeotagOptions &options, QString *error)
+std::optional<PhotoFolder> readPhotoFolder(const QString &photoFolder, QString *error)
 {
-    auto fail = [&](const QString &message) -> std::optional<GeotagReport> {
+    auto fail = [&](const QString &message) -> std::optional<PhotoFolder> {
         if (error)
             *error = message;
         return std::nullopt;
@@ -222,6 +247,34 @@ std::optional<GeotagReport> geotagFolder(const QString &photoFolder, const Track
     const QStringList names = photoFiles(photoFolder);
     if (names.isEmpty())
         return fail(QCoreApplication::translate("Geotag", "%1 holds no photos (.jpg, .jpeg, .tif, .tiff, .dng)").arg(photoFolder));
+    PhotoFolder read;
+    read.files = int(names.size());
+    const QDir dir(photoFolder);
+    for (const QString &name : names) {
+        QString why;
+        auto info = PhotoMetadataFile::read(dir.filePath(name), &why);
+        if (!info) {
+            qCInfo(lcGeotag).noquote() << dir.filePath(name) << "skipped:" << why; // the report names it
+            read.unreadable.push_back({name, why});
+            continue;
+        }
+        info->fileName = name;
+        read.photos.push_back(std::move(*info));
+    }
+    return read;
+}
+
+std::optional<GeotagReport> geotagFolder(const QString &photoFolder, const Track &track, const GeotagOptions &options, QString *error)
+{
+    auto fail = [&](const QString &message) -> std::optional<GeotagReport> {
+        if (error)
+            *error = message;
+        return std::nullopt;
+    };
+    const QFileInfo folder(photoFolder);
+    auto folderRead = readPhotoFolder(photoFolder, error);
+    if (!folderRead)
+        return std::nullopt;
     if (options.outFolder.isEmpty())
         return fail(QCoreApplication::translate("Geotag", "no folder given for the geotagged copies"));
     if (!QDir().mkpath(options.outFolder))
@@ -229,23 +282,9 @@ std::optional<GeotagReport> geotagFolder(const QString &photoFolder, const Track
     if (QFileInfo(options.outFolder).canonicalFilePath() == folder.canonicalFilePath())
         return fail(QCoreApplication::translate("Geotag", "%1 is the photos' own folder: the copies go elsewhere, the originals are never changed").arg(options.outFolder));
 
-    std::vector<PhotoInfo> photos;
-    std::vector<UntaggedPhoto> unreadable;
-    const QDir dir(photoFolder);
-    for (const QString &name : names) {
-        QString why;
-        auto info = PhotoMetadataFile::read(dir.filePath(name), &why);
-        if (!info) {
-            qCInfo(lcGeotag).noquote() << dir.filePath(name) << "skipped:" << why; // the report names it
-            unreadable.push_back({name, why});
-            continue;
-        }
-        info->fileName = name;
-        photos.push_back(std::move(*info));
-    }
-    GeotagReport report = matchPhotos(photos, track, options.match);
-    report.photos = int(names.size());
-    report.untagged.insert(report.untagged.end(), unreadable.begin(), unreadable.end());
+    GeotagReport report = matchPhotos(folderRead->photos, track, options.match);
+    report.photos = folderRead->files;
+    report.untagged.insert(report.untagged.end(), folderRead->unreadable.begin(), folderRead->unreadable.end());
     if (!writeGeotagged(report, options.outFolder, error))
         return std::nullopt;
     qCInfo(lcGeotag).noquote() << photoFolder << ":" << report.tagged.size() << "of" << report.photos << "photos tagged into" << options.outFolder;

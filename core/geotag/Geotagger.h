@@ -19,6 +19,7 @@ struct TrackPosition
 {
     double latitude = 0, longitude = 0;
     std::optional<double> altitudeAmsl, heightAboveTakeoff;
+    std::optional<double> heading; // degrees from north, where the nose points, when the track has it
 };
 
 struct MatchOptions
@@ -29,6 +30,11 @@ struct MatchOptions
 
 // The position at `time`, or why there is none (outside the track's span, in a gap), translated.
 std::optional<TrackPosition> positionAt(const Track &track, int64_t time, int64_t maxGapMs, QString *reason);
+
+// The direction of travel at `time`: the bearing from where the track is a second before to where it
+// is a second after (within its span), in degrees from north. Absent when either is not on the
+// track or the vehicle moved less than a metre (hovering has no course).
+std::optional<double> courseAt(const Track &track, int64_t time, int64_t maxGapMs);
 
 // The image files a photo folder holds, by name (.jpg, .jpeg, .tif, .tiff, .dng in any case; not
 // its sub-folders).
@@ -58,6 +64,17 @@ struct GeotagReport
     // {"photos": N, "tagged": N, "offset": S, "untagged": [{"file": NAME, "reason": "…"}]}
     QJsonObject toJson() const;
 };
+
+// What a photo folder holds, read: the photos exiv2 reads (each with its file name), and the ones
+// it cannot with the reason.
+struct PhotoFolder
+{
+    int files = 0;
+    std::vector<PhotoInfo> photos;
+    std::vector<UntaggedPhoto> unreadable;
+};
+// nullopt with *error when the folder cannot be read or holds no photo.
+std::optional<PhotoFolder> readPhotoFolder(const QString &folder, QString *error);
 
 struct GeotagOptions
 {

@@ -91,6 +91,23 @@ double valueAt(const std::vector<TelemetrySample> &series, int64_t t, int64_t ma
     return before->value + f * (after->value - before->value);
 }
 
+// A heading at t, between the samples around it the short way round (359° and 1° meet at 0°).
+double headingAt(const std::vector<TelemetrySample> &series, int64_t t, int64_t maxGap)
+{
+    const auto after = std::lower_bound(series.begin(), series.end(), t, [](const TelemetrySample &s, int64_t time) { return s.time < time; });
+    if (after != series.end() && after->time == t)
+        return after->value;
+    if (after == series.begin() || after == series.end())
+        return std::nan("");
+    const auto before = after - 1;
+    if (after->time - before->time > maxGap || std::isnan(before->value) || std::isnan(after->value))
+        return std::nan("");
+    const double f = double(t - before->time) / double(after->time - before->time);
+    const double turn = std::remainder(after->value - before->value, 360.0);
+    const double h = std::fmod(before->value + f * turn, 360.0);
+    return h < 0 ? h + 360 : h;
+}
+
 // The last value at or before t (the home's altitude holds until it is reported again).
 double lastAt(const std::vector<TelemetrySample> &series, int64_t t)
 {
@@ -197,6 +214,7 @@ std::optional<Track> flightLogTrack(const flightlog::FlightLog &log, int vehicle
     const auto amsl = log.series(vehicle, TelemetryField::AltitudeAmsl);
     const auto agl = log.series(vehicle, TelemetryField::AltitudeAgl);
     const auto home = log.series(vehicle, TelemetryField::HomeAltitudeAmsl);
+    const auto heading = log.series(vehicle, TelemetryField::Heading);
     Track track;
     track.source = log.path();
     track.points.reserve(lat.size());
@@ -210,6 +228,7 @@ std::optional<Track> flightLogTrack(const flightlog::FlightLog &log, int vehicle
         p.longitude = longitude;
         p.altitudeAmsl = valueAt(amsl, s.time, maxGapMs);
         p.heightAboveTakeoff = valueAt(agl, s.time, maxGapMs);
+        p.heading = headingAt(heading, s.time, maxGapMs);
         if (std::isnan(p.heightAboveTakeoff) && !std::isnan(p.altitudeAmsl))
             p.heightAboveTakeoff = p.altitudeAmsl - lastAt(home, s.time); // NaN while no home is known
         track.points.push_back(p);

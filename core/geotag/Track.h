@@ -22,6 +22,7 @@ struct TrackPoint
     double longitude = 0;       // degrees
     double altitudeAmsl = std::numeric_limits<double>::quiet_NaN();       // m above mean sea level; NaN when unknown
     double heightAboveTakeoff = std::numeric_limits<double>::quiet_NaN(); // m above the take-off point; NaN when unknown
+    double heading = std::numeric_limits<double>::quiet_NaN(); // degrees from north, where the nose points; NaN when unknown
 };
 
 // Positions in time order, one per time, from one source.
@@ -41,7 +42,8 @@ struct Track
 // with a bad or missing lat, lon or time, a bad <ele>; and for a GPX without track points.
 std::optional<Track> readGpxTrack(const QString &path, QString *error);
 
-// One vehicle of a Sortie flight log as a track: every position it reported, its altitude AMSL
+// One vehicle of a Sortie flight log as a track: every position it reported, its altitude AMSL,
+// its heading (the short way round between samples)
 // and its height above take-off (AltitudeAgl, the height above the home point's ground, else the
 // altitude AMSL less the home's) interpolated to the position's time from samples at most
 // `maxGapMs` apart. nullopt with *error when the vehicle reported no position.

@@ -1,0 +1,199 @@
+// sortie-log coverage as the operator runs it after landing, a separate process: a survey's photos
+// (JPEGs whose camera times the test sets) placed on the flight log the vehicle's telemetry made,
+// the overlap it flew measured, a hole where photos are missing, the GeoTIFF written, and each
+// mistake in the command named.
+#include "GeotagTestSupport.h"
+#include "LocalTangentPlane.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+using namespace sortie;
+
+namespace {
+
+struct Run
+{
+    int exitCode = -1;
+    QByteArray out, err;
+};
+
+Run sortieLog(const QStringList &arguments)
+{
+    QProcess p;
+    p.start(QStringLiteral(SORTIE_LOG_PROGRAM), arguments);
+    Run r;
+    if (!p.waitForFinished(60000))
+        return r;
+    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+    r.out = p.readAllStandardOutput();
+    r.err = p.readAllStandardError();
+    return r;
+}
+
+QString describe(const Run &r)
+{
+    return QStringLiteral("exit %1\nstdout: %2\nstderr: %3").arg(r.exitCode).arg(QString::fromUtf8(r.out), QString::fromUtf8(r.err));
+}
+
+const QString kCamera = QStringLiteral("DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)"); // 90 × 60 m from 60 m
+
+// Five legs of 200 m, 27 m apart (70 % side overlap), flown at 6 m/s 60 m above a take-off at
+// 40 m AMSL, a photo every 2 s (12 m: 80 % forward); 4.5 s to cross to the next leg.
+struct SurveyFlight
+{
+    std::vector<std::array<double, 5>> samples; // ms, lat, lon, amsl, agl
+    std::vector<std::pair<int64_t, int>> photos; // ms after the track's start, leg
+};
+
+SurveyFlight flySurvey()
+{
+    const mission::LocalTangentPlane plane({56.95, 24.10});
+    SurveyFlight f;
+    const double speed = 6, legLength = 200, spacing = 27, crossing = spacing / speed;
+    const double legTime = legLength / speed;
+    auto where = [&](double t, int *legOut) -> mission::PlanePoint {
+        const double period = legTime + crossing;
+        const int leg = std::min(4, int(t / period));
+        const double in = t - leg * period;
+        *legOut = leg;
+        const bool north = leg % 2 == 0;
+        if (in <= legTime || leg == 4) {
+            const double along = std::min(in, legTime) * speed;
+            return {leg * spacing, north ? along : legLength - along};
+        }
+        return {leg * spacing + (in - legTime) * speed, north ? legLength : 0}; // crossing east
+    };
+    const double end = 5 * legTime + 4 * crossing;
+    for (double t = 0; t <= end + 1e-9; t += 0.5) {
+        int leg = 0;
+        const mission::GeoPoint p = plane.unproject(where(t, &leg));
+        f.samples.push_back({t * 1000, p.latitude, p.longitude, 100, 60});
+    }
+    for (int leg = 0; leg < 5; ++leg)
+        for (int j = 0; j <= 16; ++j)
+            f.photos.push_back({int64_t(std::llround((leg * (legTime + crossing) + 2.0 * j) * 1000)), leg});
+    return f;
+}
+
+} // namespace
+
+class TestCoverageCli : public QObject
+{
+    Q_OBJECT
+
+    QTemporaryDir m_dir;
+    QString m_photos, m_gappy, m_log, m_gpx;
+
+private slots:
+    void initTestCase()
+    {
+        QVERIFY(m_dir.isValid());
+        const SurveyFlight flight = flySurvey();
+        m_log = m_dir.filePath(QStringLiteral("survey.sortielog"));
+        QCOMPARE(test::writeFlightLog(m_log, {{QStringLiteral("VCI:emu"), QStringLiteral("EMU-101"), flight.samples}}), QString());
+        std::vector<test::GpxPoint> gpx;
+        for (const auto &s : flight.samples)
+            gpx.push_back({int64_t(s[0]), s[1], s[2], s[3]});
+        m_gpx = m_dir.filePath(QStringLiteral("survey.gpx"));
+        test::writeGpx(m_gpx, gpx);
+        m_photos = m_dir.filePath(QStringLiteral("card"));
+        m_gappy = m_dir.filePath(QStringLiteral("card-with-a-gap"));
+        QVERIFY(QDir().mkpath(m_photos) && QDir().mkpath(m_gappy));
+        for (size_t i = 0; i < flight.photos.size(); ++i) {
+            const QString name = QStringLiteral("DJI_%1.JPG").arg(i, 4, 10, QLatin1Char('0'));
+            const QString path = QDir(m_photos).filePath(name);
+            test::writeJpeg(path, int(i));
+            test::setCameraTags(path, test::takenAt(flight.photos[i].first));
+            // The middle three legs' photos 6 to 10 (72 to 120 m along) missing from the second card.
+            const int along = int(i % 17);
+            const int leg = flight.photos[i].second;
+            if (!(leg >= 1 && leg <= 3 && along >= 6 && along <= 10))
+                QVERIFY(QFile::copy(path, QDir(m_gappy).filePath(name)));
+        }
+    }
+
+    void aSurveyFlownAsPlannedHasNoHole()
+    {
+        const QString tif = m_dir.filePath(QStringLiteral("overlap.tif"));
+        const Run r = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+                                 QStringLiteral("--out"), tif, QStringLiteral("--json")});
+        QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
+        const QJsonObject json = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(json.value(QStringLiteral("photos")).toInt(), 85);
+        QCOMPARE(json.value(QStringLiteral("placed")).toInt(), 85);
+        QCOMPARE(json.value(QStringLiteral("camera")).toString(), kCamera);
+        QCOMPARE(json.value(QStringLiteral("ground")).toString(), QStringLiteral("flat at the take-off point"));
+        QCOMPARE(json.value(QStringLiteral("crs")).toString(), QStringLiteral("EPSG:32635"));
+        QCOMPARE(json.value(QStringLiteral("raster")).toString(), tif);
+        // The heading is the course flown (the log holds none): the legs' overlaps come out as flown.
+        const double forward = json.value(QStringLiteral("forwardOverlap")).toObject().value(QStringLiteral("p50")).toDouble();
+        const double side = json.value(QStringLiteral("sideOverlap")).toObject().value(QStringLiteral("p50")).toDouble();
+        QVERIFY2(std::fabs(forward - 80) < 1, qPrintable(describe(r)));
+        QVERIFY2(std::fabs(side - 70) < 1, qPrintable(describe(r)));
+        // 60 m × 13.2 mm / (8.8 mm × 5472 px) = 1.64 cm
+        QVERIFY2(std::fabs(json.value(QStringLiteral("gsdCm")).toObject().value(QStringLiteral("p50")).toDouble() - 1.64) < 0.01, qPrintable(describe(r)));
+        QCOMPARE(json.value(QStringLiteral("holes")).toArray().size(), 0);
+        QCOMPARE(json.value(QStringLiteral("covered")).toDouble(), 1.0);
+        QFile file(tif);
+        QVERIFY(file.open(QIODevice::ReadOnly));
+        QCOMPARE(file.read(4), QByteArray("II*\0", 4)); // a little-endian TIFF
+    }
+
+    void missingPhotosAreAHoleNamedWithItsPlace()
+    {
+        const Run r = sortieLog({QStringLiteral("coverage"), m_gappy, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+                                 QStringLiteral("--out"), m_dir.filePath(QStringLiteral("gap.tif"))});
+        QVERIFY2(r.exitCode == 2, qPrintable(describe(r)));
+        QVERIFY2(r.out.contains("70 of 70 photos placed") && r.out.contains("hole of ") && r.out.contains("images per cell in"), qPrintable(describe(r)));
+        const Run json = sortieLog({QStringLiteral("coverage"), m_gappy, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+                                    QStringLiteral("--out"), m_dir.filePath(QStringLiteral("gap.tif")), QStringLiteral("--json")});
+        QVERIFY2(json.exitCode == 2, qPrintable(describe(json)));
+        const QJsonArray holes = QJsonDocument::fromJson(json.out).object().value(QStringLiteral("holes")).toArray();
+        QVERIFY(!holes.isEmpty());
+        // Around the middle leg (54 m east) at 96 m along.
+        const QJsonArray centre = holes.first().toObject().value(QStringLiteral("centre")).toArray();
+        const mission::LocalTangentPlane plane({56.95, 24.10});
+        const auto at = plane.project({centre.at(1).toDouble(), centre.at(0).toDouble()});
+        QVERIFY2(std::fabs(at.x - 54) < 10 && std::fabs(at.y - 96) < 15, qPrintable(QStringLiteral("%1, %2").arg(at.x).arg(at.y)));
+    }
+
+    void aGpxTrackNeedsTheGroundsHeight()
+    {
+        // A GPX gives AMSL only: without the ground's height no photo has a height above it.
+        const Run none = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_gpx, QStringLiteral("--camera"), kCamera,
+                                    QStringLiteral("--out"), m_dir.filePath(QStringLiteral("gpx.tif"))});
+        QVERIFY2(none.exitCode == 1 && none.err.contains("no photo has a position, a height above the ground and a heading"), qPrintable(describe(none)));
+        const Run flat = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_gpx, QStringLiteral("--camera"), kCamera,
+                                    QStringLiteral("--out"), m_dir.filePath(QStringLiteral("gpx.tif")), QStringLiteral("--ground-amsl"),
+                                    QStringLiteral("40"), QStringLiteral("--json")});
+        QVERIFY2(flat.exitCode == 0, qPrintable(describe(flat)));
+        const QJsonObject json = QJsonDocument::fromJson(flat.out).object();
+        QCOMPARE(json.value(QStringLiteral("ground")).toString(), QStringLiteral("flat at 40 m AMSL"));
+        QVERIFY(std::fabs(json.value(QStringLiteral("gsdCm")).toObject().value(QStringLiteral("p50")).toDouble() - 1.64) < 0.01);
+    }
+
+    void mistakesAreNamed()
+    {
+        const QString tif = m_dir.filePath(QStringLiteral("x.tif"));
+        const Run camera = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"),
+                                      QStringLiteral("Brownie"), QStringLiteral("--out"), tif});
+        QVERIFY2(camera.exitCode == 1 && camera.err.contains("no camera \"Brownie\"") && camera.err.contains(kCamera.toUtf8()), qPrintable(describe(camera)));
+        const Run out = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera});
+        QVERIFY2(out.exitCode == 1 && out.err.contains("coverage needs --out"), qPrintable(describe(out)));
+        const Run cell = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+                                    QStringLiteral("--out"), tif, QStringLiteral("--cell"), QStringLiteral("-1")});
+        QVERIFY2(cell.exitCode == 1 && cell.err.contains("--cell takes a number from 0.01 to 100"), qPrintable(describe(cell)));
+        const Run late = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+                                    QStringLiteral("--out"), tif, QStringLiteral("--offset"), QStringLiteral("3600"), QStringLiteral("--json")});
+        QVERIFY2(late.exitCode == 1 && late.err.contains("no photo has a position"), qPrintable(describe(late)));
+        QVERIFY(!QFile::exists(tif));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestCoverageCli)
+#include "tst_coveragecli.moc"
