@@ -29,7 +29,6 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kMaxCells = 64.0 * 1024 * 1024; // 128 MB of counts: a 1 km² survey at 0.125 m
 
-QString tr(const char *text) { return QCoreApplication::translate("Coverage", text); }
 
 QString gdalError(const QString &what)
 {
@@ -186,9 +185,9 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
     };
     const mission::Camera &camera = options.camera;
     if (!camera.isValid())
-        return fail(tr("the camera %1 has no sensor size, focal length or resolution").arg(camera.name));
+        return fail(QCoreApplication::translate("Coverage", "the camera %1 has no sensor size, focal length or resolution").arg(camera.name));
     if (options.minImages < 1 || options.cellMeters < 0 || !std::isfinite(options.cellMeters))
-        return fail(tr("the minimum number of images and the cell must be positive"));
+        return fail(QCoreApplication::translate("Coverage", "the minimum number of images and the cell must be positive"));
     registerGdal();
 
     CoverageReport report;
@@ -197,18 +196,18 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
     std::vector<const Shot *> usable;
     for (const Shot &s : shots) {
         if (!std::isfinite(s.latitude) || !std::isfinite(s.longitude) || std::fabs(s.latitude) > 90 || std::fabs(s.longitude) > 180)
-            report.unplaced.push_back({s.name, tr("its position is not a place")});
+            report.unplaced.push_back({s.name, QCoreApplication::translate("Coverage", "its position is not a place")});
         else if (!std::isfinite(s.heightAboveGround))
-            report.unplaced.push_back({s.name, tr("its height above the ground is not known")});
+            report.unplaced.push_back({s.name, QCoreApplication::translate("Coverage", "its height above the ground is not known")});
         else if (s.heightAboveGround < 1)
-            report.unplaced.push_back({s.name, tr("taken %1 m above the ground: on the ground, not surveying").arg(s.heightAboveGround, 0, 'f', 1)});
+            report.unplaced.push_back({s.name, QCoreApplication::translate("Coverage", "taken %1 m above the ground: on the ground, not surveying").arg(s.heightAboveGround, 0, 'f', 1)});
         else if (!std::isfinite(s.headingDegrees))
-            report.unplaced.push_back({s.name, tr("its heading is not known")});
+            report.unplaced.push_back({s.name, QCoreApplication::translate("Coverage", "its heading is not known")});
         else
             usable.push_back(&s);
     }
     if (usable.empty())
-        return fail(tr("no photo has a position, a height above the ground and a heading"));
+        return fail(QCoreApplication::translate("Coverage", "no photo has a position, a height above the ground and a heading"));
 
     // The raster's CRS: the UTM zone of the photos' middle, so cells are square metres.
     double latSum = 0, lonSum = 0;
@@ -221,12 +220,12 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
     wgs84.SetWellKnownGeogCS("WGS84");
     wgs84.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     if (utm.importFromEPSG(epsg) != OGRERR_NONE)
-        return fail(gdalError(tr("PROJ does not know EPSG:%1 (is proj-data installed?)").arg(epsg)));
+        return fail(gdalError(QCoreApplication::translate("Coverage", "PROJ does not know EPSG:%1 (is proj-data installed?)").arg(epsg)));
     utm.SetAxisMappingStrategy(OAMS_TRADITIONAL_GIS_ORDER);
     const Transform toUtm(OGRCreateCoordinateTransformation(&wgs84, &utm));
     const Transform toWgs84(OGRCreateCoordinateTransformation(&utm, &wgs84));
     if (!toUtm || !toWgs84)
-        return fail(gdalError(tr("no transformation between WGS-84 and EPSG:%1").arg(epsg)));
+        return fail(gdalError(QCoreApplication::translate("Coverage", "no transformation between WGS-84 and EPSG:%1").arg(epsg)));
 
     std::vector<Footprint> footprints;
     footprints.reserve(usable.size());
@@ -238,7 +237,7 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
         // The heading in the grid: true north turned by the meridian's convergence at the photo.
         double x[2] = {s->longitude, s->longitude}, y[2] = {s->latitude, std::min(89.999, s->latitude + 0.001)};
         if (!toUtm->Transform(2, x, y)) {
-            report.unplaced.push_back({s->name, tr("it cannot be placed in EPSG:%1").arg(epsg)});
+            report.unplaced.push_back({s->name, QCoreApplication::translate("Coverage", "it cannot be placed in EPSG:%1").arg(epsg)});
             continue;
         }
         const double convergence = std::atan2(x[1] - x[0], y[1] - y[0]) / kDeg;
@@ -255,7 +254,7 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
         footprints.push_back(f);
     }
     if (footprints.empty())
-        return fail(tr("no photo could be placed in EPSG:%1").arg(epsg));
+        return fail(QCoreApplication::translate("Coverage", "no photo could be placed in EPSG:%1").arg(epsg));
     report.placed = int(footprints.size());
     report.crs = QStringLiteral("EPSG:%1").arg(epsg);
     report.gsdCm = spreadOf(gsd);
@@ -273,7 +272,7 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
         }
     const double cells = std::ceil((maxE - minE) / raster.cellMeters + 2) * std::ceil((maxN - minN) / raster.cellMeters + 2);
     if (cells > kMaxCells)
-        return fail(tr("the photos span %1 × %2 m: %3 m cells would make %4 million, more than the %5 million a raster may hold; choose a larger cell")
+        return fail(QCoreApplication::translate("Coverage", "the photos span %1 × %2 m: %3 m cells would make %4 million, more than the %5 million a raster may hold; choose a larger cell")
                         .arg(std::lround(maxE - minE)).arg(std::lround(maxN - minN)).arg(raster.cellMeters).arg(std::lround(cells / 1e6)).arg(std::lround(kMaxCells / 1e6)));
     raster.originEast = std::floor(minE / raster.cellMeters - 1) * raster.cellMeters;
     raster.originNorth = std::ceil(maxN / raster.cellMeters + 1) * raster.cellMeters;
@@ -286,7 +285,7 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
     const Dataset counts = memoryRaster(raster, GDT_UInt16);
     const Dataset area = memoryRaster(raster, GDT_Byte);
     if (!counts || !area)
-        return fail(gdalError(tr("GDAL cannot make a %1 × %2 raster in memory").arg(raster.width).arg(raster.height)));
+        return fail(gdalError(QCoreApplication::translate("Coverage", "GDAL cannot make a %1 × %2 raster in memory").arg(raster.width).arg(raster.height)));
     std::vector<OGRPolygon> polygons;
     polygons.reserve(footprints.size());
     for (const Footprint &f : footprints)
@@ -296,7 +295,7 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
         handles.push_back(OGRGeometry::ToHandle(&p));
     std::vector<double> ones(handles.size(), 1.0);
     if (!burn(*counts, handles, ones, true))
-        return fail(gdalError(tr("GDAL cannot rasterise the footprints")));
+        return fail(gdalError(QCoreApplication::translate("Coverage", "GDAL cannot rasterise the footprints")));
 
     // The ground judged: the convex hull of the photos' centres (a survey's outer legs and leg ends
     // are seen by fewer images than its middle, and its margins beyond them by fewer still). Photos
@@ -312,17 +311,17 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
     if (hull && thin)
         hull.reset(hull->Buffer(0.25 * meanWidth));
     if (!hull || hull->getGeometryType() != wkbPolygon)
-        return fail(tr("the photos cover no area"));
+        return fail(QCoreApplication::translate("Coverage", "the photos cover no area"));
     std::vector<OGRGeometryH> hullHandle{OGRGeometry::ToHandle(hull.get())};
     std::vector<double> one{1.0};
     if (!burn(*area, hullHandle, one, false))
-        return fail(gdalError(tr("GDAL cannot rasterise the surveyed area")));
+        return fail(gdalError(QCoreApplication::translate("Coverage", "GDAL cannot rasterise the surveyed area")));
 
     raster.images.resize(size_t(raster.width) * size_t(raster.height));
     std::vector<uint8_t> inside(raster.images.size());
     if (counts->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, raster.width, raster.height, raster.images.data(), raster.width, raster.height, GDT_UInt16, 0, 0) != CE_None
         || area->GetRasterBand(1)->RasterIO(GF_Read, 0, 0, raster.width, raster.height, inside.data(), raster.width, raster.height, GDT_Byte, 0, 0) != CE_None)
-        return fail(gdalError(tr("GDAL cannot read its raster back")));
+        return fail(gdalError(QCoreApplication::translate("Coverage", "GDAL cannot read its raster back")));
 
     std::vector<double> perPoint;
     perPoint.reserve(inside.size());
@@ -353,13 +352,13 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
     const Dataset vectors(memoryVectors ? memoryVectors->Create("", 0, 0, 0, GDT_Unknown, nullptr) : nullptr);
     OGRLayer *layer = vectors ? vectors->CreateLayer("holes", &utm, wkbPolygon, nullptr) : nullptr;
     if (!holeRaster || !layer)
-        return fail(gdalError(tr("GDAL cannot make the holes' layer")));
+        return fail(gdalError(QCoreApplication::translate("Coverage", "GDAL cannot make the holes' layer")));
     OGRFieldDefn value("value", OFTInteger);
     layer->CreateField(&value);
     GDALRasterBand *holeBand = holeRaster->GetRasterBand(1);
     if (holeBand->RasterIO(GF_Write, 0, 0, raster.width, raster.height, holeMask.data(), raster.width, raster.height, GDT_Byte, 0, 0) != CE_None
         || GDALPolygonize(GDALRasterBand::ToHandle(holeBand), GDALRasterBand::ToHandle(holeBand), OGRLayer::ToHandle(layer), 0, nullptr, nullptr, nullptr) != CE_None)
-        return fail(gdalError(tr("GDAL cannot trace the holes")));
+        return fail(gdalError(QCoreApplication::translate("Coverage", "GDAL cannot trace the holes")));
     layer->ResetReading();
     while (OGRFeature *feature = layer->GetNextFeature()) {
         std::unique_ptr<OGRFeature> owned(feature);
@@ -374,7 +373,10 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
         toWgs84->Transform(1, &cx, &cy);
         hole.centreLongitude = cx;
         hole.centreLatitude = cy;
-        const OGRLinearRing *ring = polygon->getExteriorRing();
+        // The ring follows the cells' edges: simplified to within a cell, it says the same in fewer points.
+        std::unique_ptr<OGRGeometry> simple(polygon->SimplifyPreserveTopology(raster.cellMeters));
+        const OGRPolygon *outline = simple && simple->getGeometryType() == wkbPolygon ? simple->toPolygon() : polygon;
+        const OGRLinearRing *ring = outline->getExteriorRing();
         for (int i = 0; ring && i < ring->getNumPoints(); ++i) {
             double px = ring->getX(i), py = ring->getY(i);
             toWgs84->Transform(1, &px, &py);
@@ -399,17 +401,17 @@ bool writeCoverageGeoTiff(const CoverageRaster &raster, const QString &path, QSt
     };
     registerGdal();
     if (raster.width <= 0 || raster.height <= 0 || raster.images.size() != size_t(raster.width) * size_t(raster.height))
-        return fail(tr("no raster to write"));
+        return fail(QCoreApplication::translate("Coverage", "no raster to write"));
     GDALDriver *gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
     if (!gtiff)
-        return fail(tr("GDAL has no GeoTIFF driver"));
+        return fail(QCoreApplication::translate("Coverage", "GDAL has no GeoTIFF driver"));
     const QFileInfo target(path);
     const QString partial = target.dir().filePath(QStringLiteral(".%1.sortie-coverage").arg(target.fileName()));
     char *options[] = {const_cast<char *>("COMPRESS=DEFLATE"), const_cast<char *>("TILED=YES"), nullptr};
     {
         Dataset out(gtiff->Create(QFile::encodeName(partial).constData(), raster.width, raster.height, 1, GDT_UInt16, options));
         if (!out)
-            return fail(gdalError(tr("%1 cannot be written").arg(path)));
+            return fail(gdalError(QCoreApplication::translate("Coverage", "%1 cannot be written").arg(path)));
         double transform[6] = {raster.originEast, raster.cellMeters, 0, raster.originNorth, 0, -raster.cellMeters};
         out->SetGeoTransform(transform);
         OGRSpatialReference crs;
@@ -421,13 +423,13 @@ bool writeCoverageGeoTiff(const CoverageRaster &raster, const QString &path, QSt
                            raster.height, GDT_UInt16, 0, 0) != CE_None) {
             out.reset();
             QFile::remove(partial);
-            return fail(gdalError(tr("%1 cannot be written").arg(path)));
+            return fail(gdalError(QCoreApplication::translate("Coverage", "%1 cannot be written").arg(path)));
         }
     } // closed: the file is complete
     QFile::remove(path);
     if (!QFile::rename(partial, path)) {
         QFile::remove(partial);
-        return fail(tr("%1 cannot be put in place").arg(path));
+        return fail(QCoreApplication::translate("Coverage", "%1 cannot be put in place").arg(path));
     }
     return true;
 }
@@ -451,7 +453,7 @@ QJsonObject CoverageReport::toJson() const
         {QStringLiteral("placed"), placed},
         {QStringLiteral("unplaced"), unplacedList},
         {QStringLiteral("crs"), crs},
-        {QStringLiteral("cell"), cellMeters},
+        {QStringLiteral("cell"), std::round(cellMeters * 1000) / 1000},
         {QStringLiteral("minImages"), minImages},
         {QStringLiteral("area"), std::round(areaSquareMeters)},
         {QStringLiteral("covered"), std::round(coveredFraction * 10000) / 10000},

@@ -829,6 +829,101 @@
     </message>
 </context>
 <context>
+    <name>Coverage</name>
+    <message>
+        <source>the camera %1 has no sensor size, focal length or resolution</source>
+        <translation>die Kamera %1 hat keine Sensorgröße, Brennweite oder Auflösung</translation>
+    </message>
+    <message>
+        <source>the minimum number of images and the cell must be positive</source>
+        <translation>die Mindestzahl der Bilder und die Zelle müssen positiv sein</translation>
+    </message>
+    <message>
+        <source>its position is not a place</source>
+        <translation>seine Position ist kein Ort</translation>
+    </message>
+    <message>
+        <source>its height above the ground is not known</source>
+        <translation>seine Höhe über dem Boden ist nicht bekannt</translation>
+    </message>
+    <message>
+        <source>taken %1 m above the ground: on the ground, not surveying</source>
+        <translation>aufgenommen %1 m über dem Boden: am Boden, nicht bei der Vermessung</translation>
+    </message>
+    <message>
+        <source>its heading is not known</source>
+        <translation>seine Ausrichtung ist nicht bekannt</translation>
+    </message>
+    <message>
+        <source>no photo has a position, a height above the ground and a heading</source>
+        <translation>kein Foto hat eine Position, eine Höhe über dem Boden und eine Ausrichtung</translation>
+    </message>
+    <message>
+        <source>PROJ does not know EPSG:%1 (is proj-data installed?)</source>
+        <translation>PROJ kennt EPSG:%1 nicht (ist proj-data installiert?)</translation>
+    </message>
+    <message>
+        <source>no transformation between WGS-84 and EPSG:%1</source>
+        <translation>keine Transformation zwischen WGS-84 und EPSG:%1</translation>
+    </message>
+    <message>
+        <source>it cannot be placed in EPSG:%1</source>
+        <translation>es kann nicht in EPSG:%1 verortet werden</translation>
+    </message>
+    <message>
+        <source>no photo could be placed in EPSG:%1</source>
+        <translation>kein Foto konnte in EPSG:%1 verortet werden</translation>
+    </message>
+    <message>
+        <source>the photos span %1 × %2 m: %3 m cells would make %4 million, more than the %5 million a raster may hold; choose a larger cell</source>
+        <translation>die Fotos überspannen %1 × %2 m: Zellen von %3 m ergäben %4 Millionen, mehr als die %5 Millionen, die ein Raster fassen darf; wählen Sie eine größere Zelle</translation>
+    </message>
+    <message>
+        <source>GDAL cannot make a %1 × %2 raster in memory</source>
+        <translation>GDAL kann kein Raster von %1 × %2 im Speicher anlegen</translation>
+    </message>
+    <message>
+        <source>GDAL cannot rasterise the footprints</source>
+        <translation>GDAL kann die Bildabdrücke nicht rastern</translation>
+    </message>
+    <message>
+        <source>the photos cover no area</source>
+        <translation>die Fotos decken keine Fläche ab</translation>
+    </message>
+    <message>
+        <source>GDAL cannot rasterise the surveyed area</source>
+        <translation>GDAL kann das vermessene Gebiet nicht rastern</translation>
+    </message>
+    <message>
+        <source>GDAL cannot read its raster back</source>
+        <translation>GDAL kann sein Raster nicht zurücklesen</translation>
+    </message>
+    <message>
+        <source>GDAL cannot make the holes&apos; layer</source>
+        <translation>GDAL kann die Ebene der Lücken nicht anlegen</translation>
+    </message>
+    <message>
+        <source>GDAL cannot trace the holes</source>
+        <translation>GDAL kann die Lücken nicht nachzeichnen</translation>
+    </message>
+    <message>
+        <source>no raster to write</source>
+        <translation>kein Raster zum Schreiben</translation>
+    </message>
+    <message>
+        <source>GDAL has no GeoTIFF driver</source>
+        <translation>GDAL hat keinen GeoTIFF-Treiber</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written</source>
+        <translation>%1 kann nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>%1 cannot be put in place</source>
+        <translation>%1 kann nicht an seinen Platz gelegt werden</translation>
+    </message>
+</context>
+<context>
     <name>CoverageSweep</name>
     <message>
         <source>An area scan needs a polygon of at least 3 vertices.</source>

@@ -829,6 +829,101 @@
     </message>
 </context>
 <context>
+    <name>Coverage</name>
+    <message>
+        <source>the camera %1 has no sensor size, focal length or resolution</source>
+        <translation>la cámara %1 no tiene tamaño de sensor, distancia focal ni resolución</translation>
+    </message>
+    <message>
+        <source>the minimum number of images and the cell must be positive</source>
+        <translation>el número mínimo de imágenes y la celda deben ser positivos</translation>
+    </message>
+    <message>
+        <source>its position is not a place</source>
+        <translation>su posición no es un lugar</translation>
+    </message>
+    <message>
+        <source>its height above the ground is not known</source>
+        <translation>no se conoce su altura sobre el suelo</translation>
+    </message>
+    <message>
+        <source>taken %1 m above the ground: on the ground, not surveying</source>
+        <translation>tomada a %1 m sobre el suelo: en tierra, no durante el levantamiento</translation>
+    </message>
+    <message>
+        <source>its heading is not known</source>
+        <translation>no se conoce su rumbo</translation>
+    </message>
+    <message>
+        <source>no photo has a position, a height above the ground and a heading</source>
+        <translation>ninguna foto tiene posición, altura sobre el suelo y rumbo</translation>
+    </message>
+    <message>
+        <source>PROJ does not know EPSG:%1 (is proj-data installed?)</source>
+        <translation>PROJ no conoce EPSG:%1 (¿está instalado proj-data?)</translation>
+    </message>
+    <message>
+        <source>no transformation between WGS-84 and EPSG:%1</source>
+        <translation>no hay transformación entre WGS-84 y EPSG:%1</translation>
+    </message>
+    <message>
+        <source>it cannot be placed in EPSG:%1</source>
+        <translation>no se puede situar en EPSG:%1</translation>
+    </message>
+    <message>
+        <source>no photo could be placed in EPSG:%1</source>
+        <translation>ninguna foto se pudo situar en EPSG:%1</translation>
+    </message>
+    <message>
+        <source>the photos span %1 × %2 m: %3 m cells would make %4 million, more than the %5 million a raster may hold; choose a larger cell</source>
+        <translation>las fotos abarcan %1 × %2 m: celdas de %3 m darían %4 millones, más que los %5 millones que admite un ráster; elija una celda mayor</translation>
+    </message>
+    <message>
+        <source>GDAL cannot make a %1 × %2 raster in memory</source>
+        <translation>GDAL no puede crear un ráster de %1 × %2 en memoria</translation>
+    </message>
+    <message>
+        <source>GDAL cannot rasterise the footprints</source>
+        <translation>GDAL no puede rasterizar las huellas</translation>
+    </message>
+    <message>
+        <source>the photos cover no area</source>
+        <translation>las fotos no cubren ningún área</translation>
+    </message>
+    <message>
+        <source>GDAL cannot rasterise the surveyed area</source>
+        <translation>GDAL no puede rasterizar el área levantada</translation>
+    </message>
+    <message>
+        <source>GDAL cannot read its raster back</source>
+        <translation>GDAL no puede volver a leer su ráster</translation>
+    </message>
+    <message>
+        <source>GDAL cannot make the holes&apos; layer</source>
+        <translation>GDAL no puede crear la capa de huecos</translation>
+    </message>
+    <message>
+        <source>GDAL cannot trace the holes</source>
+        <translation>GDAL no puede trazar los huecos</translation>
+    </message>
+    <message>
+        <source>no raster to write</source>
+        <translation>no hay ráster que escribir</translation>
+    </message>
+    <message>
+        <source>GDAL has no GeoTIFF driver</source>
+        <translation>GDAL no tiene controlador GeoTIFF</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written</source>
+        <translation>%1 no se puede escribir</translation>
+    </message>
+    <message>
+        <source>%1 cannot be put in place</source>
+        <translation>%1 no se puede poner en su sitio</translation>
+    </message>
+</context>
+<context>
     <name>CoverageSweep</name>
     <message>
         <source>An area scan needs a polygon of at least 3 vertices.</source>

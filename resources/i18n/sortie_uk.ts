@@ -832,6 +832,101 @@
     </message>
 </context>
 <context>
+    <name>Coverage</name>
+    <message>
+        <source>the camera %1 has no sensor size, focal length or resolution</source>
+        <translation>камера %1 не має розміру сенсора, фокусної відстані чи роздільності</translation>
+    </message>
+    <message>
+        <source>the minimum number of images and the cell must be positive</source>
+        <translation>мінімальна кількість знімків і клітинка мають бути додатними</translation>
+    </message>
+    <message>
+        <source>its position is not a place</source>
+        <translation>його положення — не місце на Землі</translation>
+    </message>
+    <message>
+        <source>its height above the ground is not known</source>
+        <translation>його висота над землею невідома</translation>
+    </message>
+    <message>
+        <source>taken %1 m above the ground: on the ground, not surveying</source>
+        <translation>знято на висоті %1 м над землею: на землі, а не під час зйомки</translation>
+    </message>
+    <message>
+        <source>its heading is not known</source>
+        <translation>його курс невідомий</translation>
+    </message>
+    <message>
+        <source>no photo has a position, a height above the ground and a heading</source>
+        <translation>жоден знімок не має положення, висоти над землею та курсу</translation>
+    </message>
+    <message>
+        <source>PROJ does not know EPSG:%1 (is proj-data installed?)</source>
+        <translation>PROJ не знає EPSG:%1 (чи встановлено proj-data?)</translation>
+    </message>
+    <message>
+        <source>no transformation between WGS-84 and EPSG:%1</source>
+        <translation>немає перетворення між WGS-84 і EPSG:%1</translation>
+    </message>
+    <message>
+        <source>it cannot be placed in EPSG:%1</source>
+        <translation>його не можна розмістити в EPSG:%1</translation>
+    </message>
+    <message>
+        <source>no photo could be placed in EPSG:%1</source>
+        <translation>жоден знімок не вдалося розмістити в EPSG:%1</translation>
+    </message>
+    <message>
+        <source>the photos span %1 × %2 m: %3 m cells would make %4 million, more than the %5 million a raster may hold; choose a larger cell</source>
+        <translation>знімки охоплюють %1 × %2 м: клітинки по %3 м дали б %4 млн, більше ніж %5 млн, які може вмістити растр; оберіть більшу клітинку</translation>
+    </message>
+    <message>
+        <source>GDAL cannot make a %1 × %2 raster in memory</source>
+        <translation>GDAL не може створити растр %1 × %2 у пам&apos;яті</translation>
+    </message>
+    <message>
+        <source>GDAL cannot rasterise the footprints</source>
+        <translation>GDAL не може растеризувати відбитки знімків</translation>
+    </message>
+    <message>
+        <source>the photos cover no area</source>
+        <translation>знімки не покривають жодної площі</translation>
+    </message>
+    <message>
+        <source>GDAL cannot rasterise the surveyed area</source>
+        <translation>GDAL не може растеризувати зняту ділянку</translation>
+    </message>
+    <message>
+        <source>GDAL cannot read its raster back</source>
+        <translation>GDAL не може прочитати свій растр назад</translation>
+    </message>
+    <message>
+        <source>GDAL cannot make the holes&apos; layer</source>
+        <translation>GDAL не може створити шар прогалин</translation>
+    </message>
+    <message>
+        <source>GDAL cannot trace the holes</source>
+        <translation>GDAL не може окреслити прогалини</translation>
+    </message>
+    <message>
+        <source>no raster to write</source>
+        <translation>немає растра для запису</translation>
+    </message>
+    <message>
+        <source>GDAL has no GeoTIFF driver</source>
+        <translation>GDAL не має драйвера GeoTIFF</translation>
+    </message>
+    <message>
+        <source>%1 cannot be written</source>
+        <translation>%1 не вдається записати</translation>
+    </message>
+    <message>
+        <source>%1 cannot be put in place</source>
+        <translation>%1 не вдається поставити на місце</translation>
+    </message>
+</context>
+<context>
     <name>CoverageSweep</name>
     <message>
         <source>An area scan needs a polygon of at least 3 vertices.</source>

@@ -174,6 +174,7 @@ struct LoggedVehicle
 {
     QString key, name;
     std::vector<std::array<double, 5>> samples; // ms, lat, lon, amsl, agl (NaN: not sent)
+    std::vector<std::pair<double, double>> headings = {}; // ms, degrees (Heading), when the test sends them
 };
 
 inline QString writeFlightLog(const QString &path, const std::vector<LoggedVehicle> &vehicles)
@@ -203,7 +204,10 @@ inline QString writeFlightLog(const QString &path, const std::vector<LoggedVehic
         for (const auto &v : vehicles) {
             flightlog::RecordedSamples rs;
             rs.vehicleKey = v.key;
-            flightlog::FieldSamples lat{F::Latitude, {}}, lon{F::Longitude, {}}, amsl{F::AltitudeAmsl, {}}, agl{F::AltitudeAgl, {}};
+            flightlog::FieldSamples lat{F::Latitude, {}}, lon{F::Longitude, {}}, amsl{F::AltitudeAmsl, {}}, agl{F::AltitudeAgl, {}}, heading{F::Heading, {}};
+            for (const auto &[ms, degrees] : v.headings)
+                if (ms >= double(from) && ms < double(from + 1000))
+                    heading.samples.push_back({kTrackStart + int64_t(ms), degrees});
             for (const auto &s : v.samples) {
                 if (s[0] < double(from) || s[0] >= double(from + 1000))
                     continue;
@@ -215,7 +219,7 @@ inline QString writeFlightLog(const QString &path, const std::vector<LoggedVehic
                 if (!std::isnan(s[4]))
                     agl.samples.push_back({t, s[4]});
             }
-            for (auto *f : {&lat, &lon, &amsl, &agl})
+            for (auto *f : {&lat, &lon, &amsl, &agl, &heading})
                 if (!f->samples.empty())
                     rs.fields.push_back(std::move(*f));
             if (!rs.fields.empty())

@@ -13,6 +13,8 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <numbers>
+
 #include <cmath>
 
 using namespace sortie;
@@ -386,6 +388,48 @@ private slots:
             QVERIFY2(got.relativeAltitude && std::fabs(*got.relativeAltitude - wantAgl) < 0.1,
                      qPrintable(QStringLiteral("%1: relative altitude %2, expected %3").arg(name).arg(got.relativeAltitude.value_or(-1)).arg(wantAgl)));
         }
+    }
+
+    // The heading a log holds, between its samples the short way round; else the course flown.
+    void headingFromTheLogElseTheCourse()
+    {
+        QTemporaryDir dir;
+        const QString log = dir.filePath(QStringLiteral("turning.sortielog"));
+        // 20 s east at 5 m/s, then 20 s hovering; the nose swings from 350° through north to 10°.
+        test::LoggedVehicle a{QStringLiteral("VCI:a"), QStringLiteral("EMU-101"), {}};
+        for (int i = 0; i <= 400; ++i) {
+            const double t = i * 100.0, east = std::min(t, 20'000.0) / 1000.0 * 5.0;
+            a.samples.push_back({t, 56.95, 24.10 + east / (111'195.0 * std::cos(56.95 * std::numbers::pi / 180)), 60, 20});
+        }
+        a.headings = {{0, 350}, {10'000, 10}, {30'000, 10}};
+        QCOMPARE(test::writeFlightLog(log, {a}), QString());
+        QString error;
+        const auto opened = flightlog::FlightLog::open(log, &error);
+        QVERIFY2(opened, qPrintable(error));
+        // The log's samples are 10 s apart: bridged when the track is read with a 10 s gap.
+        const auto track = flightLogTrack(*opened, 0, &error, 10'000);
+        QVERIFY2(track, qPrintable(error));
+        const auto at5 = positionAt(*track, test::kTrackStart + 5'000, 5000, &error);
+        QVERIFY2(at5 && at5->heading, qPrintable(error));
+        QVERIFY2(std::fabs(*at5->heading - 0) < 0.01 || std::fabs(*at5->heading - 360) < 0.01, qPrintable(QString::number(*at5->heading)));
+        const auto at2 = positionAt(*track, test::kTrackStart + 2'500, 5000, &error);
+        QVERIFY(at2 && at2->heading && std::fabs(*at2->heading - 355) < 0.01);
+        // The course: east while flying, none while hovering, none off the track.
+        const auto course = courseAt(*track, test::kTrackStart + 10'000, 5000);
+        QVERIFY(course);
+        QVERIFY2(std::fabs(*course - 90) < 0.5, qPrintable(QString::number(*course)));
+        QVERIFY(!courseAt(*track, test::kTrackStart + 30'000, 5000));
+        QVERIFY(!courseAt(*track, test::kTrackStart + 60'000, 5000));
+        // Without a heading in the log the position has none (missing, never 0).
+        test::LoggedVehicle b{QStringLiteral("VCI:b"), QStringLiteral("EMU-102"), a.samples};
+        const QString plain = dir.filePath(QStringLiteral("plain.sortielog"));
+        QCOMPARE(test::writeFlightLog(plain, {b}), QString());
+        const auto plainLog = flightlog::FlightLog::open(plain, &error);
+        QVERIFY2(plainLog, qPrintable(error));
+        const auto plainTrack = flightLogTrack(*plainLog, 0, &error);
+        QVERIFY(plainTrack);
+        const auto p = positionAt(*plainTrack, test::kTrackStart + 5'000, 5000, &error);
+        QVERIFY(p && !p->heading);
     }
 };
 
