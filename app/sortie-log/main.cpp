@@ -13,12 +13,14 @@
 #include "LogFit.h"
 #include "MissionFiles.h"
 #include "PhotoShots.h"
+#include "ReflyRoute.h"
 #include "RouteComparison.h"
 #include "ServerRecording.h"
 
 #include <QCoreApplication>
 #include <QFile>
 #include <QFileInfo>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLoggingCategory>
@@ -60,11 +62,13 @@ const char *const kUsage =
     "      OpenDroneMap's geo.txt and geotags.csv (Pix4D, Metashape). --vehicle when the log holds\n"
     "      several. Its exit status: 0 every photo tagged, 2 some were not (named), 1 bad usage or input.\n"
     "  coverage PHOTO_DIR --track LOG_OR_GPX --camera NAME --out OVERLAP.tif [--offset SECONDS]\n"
-    "           [--vehicle ID] [--ground-amsl M] [--min-images N] [--cell M] [--json]\n"
+    "           [--vehicle ID] [--ground-amsl M] [--min-images N] [--cell M] [--refly ROUTE] [--json]\n"
     "      The ground the photos cover, each placed on the track as geotag places it, looking straight\n"
     "      down from its height above the take-off (or above flat ground at --ground-amsl): images per\n"
     "      cell as a GeoTIFF, forward and side overlap, the ground sample distance, and the holes seen\n"
-    "      by fewer than N images (default 5). Exit status: 0 no hole, 2 holes (listed), 1 bad usage or input.\n"
+    "      by fewer than N images (default 5). --refly writes a route of an area scan per hole (the\n"
+    "      survey's camera, height, overlap and legs; .sortie, .plan, ...), checked as sortie-plan checks\n"
+    "      a route. Exit status: 0 no hole, 2 holes (listed), 1 bad usage or input.\n"
     "\n"
     "Exit status: 0 done, 1 failed, 2 bad usage (geotag, coverage: see above).\n";
 
@@ -370,7 +374,8 @@ bool readNumber(const Args &a, const char *option, double low, double high, doub
 int coveragePhotos(const QStringList &in, QTextStream &out, QTextStream &err)
 {
     const auto a = parse(in, {QStringLiteral("--track"), QStringLiteral("--camera"), QStringLiteral("--out"), QStringLiteral("--offset"),
-                              QStringLiteral("--vehicle"), QStringLiteral("--ground-amsl"), QStringLiteral("--min-images"), QStringLiteral("--cell")},
+                              QStringLiteral("--vehicle"), QStringLiteral("--ground-amsl"), QStringLiteral("--min-images"), QStringLiteral("--cell"),
+                              QStringLiteral("--refly")},
                          {QStringLiteral("--json")}, err);
     if (!a)
         return CoverageFailed;
@@ -438,8 +443,49 @@ int coveragePhotos(const QStringList &in, QTextStream &out, QTextStream &err)
         err << "sortie-log: " << error << "\n";
         return CoverageFailed;
     }
+    // The route that re-flies the holes: the survey's camera, height, overlap and legs.
+    QJsonValue refly;
+    QString reflyText;
+    if (a->options.contains(QStringLiteral("--refly"))) {
+        const QString reflyPath = a->options.value(QStringLiteral("--refly"));
+        if (report->holes.empty()) {
+            reflyText = QStringLiteral("no hole: nothing to re-fly, %1 not written\n").arg(reflyPath);
+        } else {
+            coverage::ReflyOptions r;
+            r.camera = options.camera;
+            r.heightAboveGround = std::round(report->heightAboveGround->p50);
+            if (report->forwardOverlap && report->forwardOverlap->count)
+                r.frontOverlapPercent = std::clamp(std::round(report->forwardOverlap->p50), 50.0, 95.0);
+            if (report->sideOverlap && report->sideOverlap->count)
+                r.sideOverlapPercent = std::clamp(std::round(report->sideOverlap->p50), 30.0, 95.0);
+            r.legBearing = report->legBearing;
+            QStringList notes;
+            const auto route = coverage::reflyRoute(report->holes, r, &notes);
+            for (const QString &n : notes)
+                err << "sortie-log: " << n << "\n";
+            if (!route) {
+                err << "sortie-log: no hole could be planned as an area scan; " << reflyPath << " not written\n";
+                return CoverageFailed;
+            }
+            mission::Mission mission;
+            mission.name = QFileInfo(reflyPath).completeBaseName();
+            mission.routes.push_back(*route);
+            const auto saved = mission::formats::saveMission(mission, reflyPath);
+            if (!saved) {
+                err << "sortie-log: " << saved.error().toString() << "\n";
+                return CoverageFailed;
+            }
+            for (const QString &n : *saved)
+                err << "sortie-log: " << n << "\n";
+            refly = QJsonObject{{QStringLiteral("file"), reflyPath}, {QStringLiteral("scans"), int(route->segments.size())},
+                                {QStringLiteral("notes"), QJsonArray::fromStringList(notes)}};
+            reflyText = QStringLiteral("re-fly route of %1 area scan(s) at %2 m, %3/%4 %, written to %5\n")
+                            .arg(route->segments.size()).arg(r.heightAboveGround).arg(r.frontOverlapPercent).arg(r.sideOverlapPercent).arg(reflyPath);
+        }
+    }
     if (a->flags.contains(QStringLiteral("--json"))) {
         QJsonObject json = report->toJson();
+        json.insert(QStringLiteral("refly"), refly);
         json.insert(QStringLiteral("camera"), options.camera.name);
         json.insert(QStringLiteral("ground"), shotOptions.groundAmsl ? QStringLiteral("flat at %1 m AMSL").arg(*shotOptions.groundAmsl)
                                                                      : QStringLiteral("flat at the take-off point"));
@@ -460,7 +506,7 @@ int coveragePhotos(const QStringList &in, QTextStream &out, QTextStream &err)
         for (const auto &h : report->holes)
             out << "hole of " << std::lround(h.areaSquareMeters) << " m² at " << QString::number(h.centreLatitude, 'f', 6) << ", "
                 << QString::number(h.centreLongitude, 'f', 6) << "\n";
-        out << "images per cell in " << rasterPath << " (" << report->crs << ", " << report->cellMeters << " m)\n";
+        out << "images per cell in " << rasterPath << " (" << report->crs << ", " << report->cellMeters << " m)\n" << reflyText;
     }
     return report->holes.empty() ? NoHole : Holes;
 }

@@ -111,8 +111,9 @@ double headingDifference(double a, double b)
 
 // Forward overlap with the next photo of the same leg; side overlap with the nearest photo of a
 // parallel leg beside it. Both from the footprints' geometry (flat ground, nadir), in percent.
-void neighbourOverlaps(const std::vector<Footprint> &f, std::vector<double> *forward, std::vector<double> *side)
+void neighbourOverlaps(const std::vector<Footprint> &f, std::vector<double> *forward, std::vector<double> *side, std::optional<double> *bearing)
 {
+    double sin2 = 0, cos2 = 0; // the legs' axis: headings doubled, so 0° and 180° agree
     for (size_t i = 0; i < f.size(); ++i) {
         const Footprint &a = f[i];
         auto offsets = [&](const Footprint &b, double *along, double *across) {
@@ -123,8 +124,11 @@ void neighbourOverlaps(const std::vector<Footprint> &f, std::vector<double> *for
         if (i + 1 < f.size() && headingDifference(a.heading, f[i + 1].heading) < 20) {
             double along = 0, across = 0;
             offsets(f[i + 1], &along, &across);
-            if (along > 0 && std::fabs(across) < 0.25 * a.halfAcross * 2)
+            if (along > 0 && std::fabs(across) < 0.25 * a.halfAcross * 2) {
                 forward->push_back(100.0 * std::max(0.0, 1.0 - along / (2 * a.halfAlong)));
+                sin2 += std::sin(2 * a.heading * kDeg);
+                cos2 += std::cos(2 * a.heading * kDeg);
+            }
         }
         double nearest = std::numeric_limits<double>::infinity();
         for (size_t j = 0; j < f.size(); ++j) {
@@ -138,6 +142,10 @@ void neighbourOverlaps(const std::vector<Footprint> &f, std::vector<double> *for
         }
         if (std::isfinite(nearest))
             side->push_back(100.0 * std::max(0.0, 1.0 - nearest / (2 * a.halfAcross)));
+    }
+    if (!forward->empty()) {
+        const double axis = std::atan2(sin2, cos2) / 2 / kDeg;
+        *bearing = axis < 0 ? axis + 180 : axis;
     }
 }
 
@@ -230,7 +238,7 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
     std::vector<Footprint> footprints;
     footprints.reserve(usable.size());
     double widthSum = 0;
-    std::vector<double> gsd;
+    std::vector<double> gsd, heights;
     const double gsdPerMetre = std::max(camera.sensorWidthMm / (camera.focalLengthMm * camera.imageWidthPx),
                                         camera.sensorHeightMm / (camera.focalLengthMm * camera.imageHeightPx));
     for (const Shot *s : usable) {
@@ -251,6 +259,7 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
         f.halfAcross = 0.5 * s->heightAboveGround * camera.sensorWidthMm / camera.focalLengthMm;
         widthSum += 2 * f.halfAcross;
         gsd.push_back(s->heightAboveGround * gsdPerMetre * 100.0);
+        heights.push_back(s->heightAboveGround);
         footprints.push_back(f);
     }
     if (footprints.empty())
@@ -258,6 +267,7 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
     report.placed = int(footprints.size());
     report.crs = QStringLiteral("EPSG:%1").arg(epsg);
     report.gsdCm = spreadOf(gsd);
+    report.heightAboveGround = spreadOf(heights);
 
     CoverageRaster raster;
     raster.epsg = epsg;
@@ -342,7 +352,16 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
     report.imagesPerPoint = spreadOf(std::move(perPoint));
 
     std::vector<double> forward, side;
-    neighbourOverlaps(footprints, &forward, &side);
+    std::optional<double> gridBearing;
+    neighbourOverlaps(footprints, &forward, &side, &gridBearing);
+    if (gridBearing) {
+        // Back from the grid to true north, by the convergence at the survey's middle.
+        double x[2] = {lonSum / double(usable.size()), lonSum / double(usable.size())};
+        double y[2] = {latSum / double(usable.size()), latSum / double(usable.size()) + 0.001};
+        const double convergence = toUtm->Transform(2, x, y) ? std::atan2(x[1] - x[0], y[1] - y[0]) / kDeg : 0.0;
+        const double bearing = std::fmod(*gridBearing - convergence + 360.0, 180.0);
+        report.legBearing = bearing;
+    }
     report.forwardOverlap = spreadOf(std::move(forward));
     report.sideOverlap = spreadOf(std::move(side));
 
@@ -381,6 +400,16 @@ std::optional<CoverageReport> computeCoverage(const std::vector<Shot> &shots, co
             double px = ring->getX(i), py = ring->getY(i);
             toWgs84->Transform(1, &px, &py);
             hole.ring.emplace_back(px, py);
+        }
+        std::unique_ptr<OGRGeometry> grown(polygon->Buffer(0.25 * meanWidth));
+        std::unique_ptr<OGRGeometry> scan(grown ? grown->ConvexHull() : nullptr);
+        if (scan && scan->getGeometryType() == wkbPolygon) {
+            const OGRLinearRing *outer = scan->toPolygon()->getExteriorRing();
+            for (int i = 0; outer && i < outer->getNumPoints(); ++i) {
+                double px = outer->getX(i), py = outer->getY(i);
+                toWgs84->Transform(1, &px, &py);
+                hole.scanRing.emplace_back(px, py);
+            }
         }
         report.holes.push_back(std::move(hole));
     }
@@ -461,6 +490,8 @@ QJsonObject CoverageReport::toJson() const
         {QStringLiteral("forwardOverlap"), spreadJson(forwardOverlap, 1)},
         {QStringLiteral("sideOverlap"), spreadJson(sideOverlap, 1)},
         {QStringLiteral("gsdCm"), spreadJson(gsdCm, 2)},
+        {QStringLiteral("heightAboveGround"), spreadJson(heightAboveGround, 1)},
+        {QStringLiteral("legBearing"), legBearing ? QJsonValue(std::round(*legBearing * 10) / 10) : QJsonValue(QJsonValue::Null)},
         {QStringLiteral("holes"), holeList},
     };
 }

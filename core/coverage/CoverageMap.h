@@ -44,6 +44,9 @@ struct Hole
     double areaSquareMeters = 0;
     double centreLatitude = 0, centreLongitude = 0;
     std::vector<std::pair<double, double>> ring; // (longitude, latitude), closed, outer boundary
+    // What to fly to fill it: the hole's convex hull grown by a quarter footprint's width (the
+    // margin a scan's own edge sees poorly), (longitude, latitude), closed.
+    std::vector<std::pair<double, double>> scanRing;
 };
 
 struct Unplaced
@@ -70,6 +73,8 @@ struct CoverageReport
     std::optional<Spread> forwardOverlap;  // % between successive photos of a leg
     std::optional<Spread> sideOverlap;     // % with the nearest photo of the neighbouring leg
     std::optional<Spread> gsdCm;           // ground sample distance, the coarser axis
+    std::optional<Spread> heightAboveGround; // m, of the photos placed
+    std::optional<double> legBearing;      // the legs' direction, 0 to 180° from north, from the forward pairs
     std::vector<Hole> holes;               // largest first
     QJsonObject toJson() const;
 };

@@ -922,6 +922,14 @@
         <source>%1 cannot be put in place</source>
         <translation>%1 kann nicht an seinen Platz gelegt werden</translation>
     </message>
+    <message>
+        <source>Re-fly the gaps</source>
+        <translation>Lücken nachfliegen</translation>
+    </message>
+    <message>
+        <source>The hole of %1 m² at %2, %3 is not in the route: %4</source>
+        <translation>Die Lücke von %1 m² bei %2, %3 ist nicht in der Route: %4</translation>
+    </message>
 </context>
 <context>
     <name>CoverageSweep</name>

@@ -922,6 +922,14 @@
         <source>%1 cannot be put in place</source>
         <translation>%1 no se puede poner en su sitio</translation>
     </message>
+    <message>
+        <source>Re-fly the gaps</source>
+        <translation>Volver a volar los huecos</translation>
+    </message>
+    <message>
+        <source>The hole of %1 m² at %2, %3 is not in the route: %4</source>
+        <translation>El hueco de %1 m² en %2, %3 no está en la ruta: %4</translation>
+    </message>
 </context>
 <context>
     <name>CoverageSweep</name>

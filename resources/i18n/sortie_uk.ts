@@ -925,6 +925,14 @@
         <source>%1 cannot be put in place</source>
         <translation>%1 не вдається поставити на місце</translation>
     </message>
+    <message>
+        <source>Re-fly the gaps</source>
+        <translation>Перелетіти прогалини</translation>
+    </message>
+    <message>
+        <source>The hole of %1 m² at %2, %3 is not in the route: %4</source>
+        <translation>Прогалини площею %1 м² у %2, %3 немає в маршруті: %4</translation>
+    </message>
 </context>
 <context>
     <name>CoverageSweep</name>

@@ -1,7 +1,9 @@
 // What a flight's photos cover (core/coverage): the overlap a lawnmower survey was flown with is
 // what the report measures; photos taken out of it leave a hole where they were; the raster GDAL
 // reads back is the one judged; a photo without a height is named, never placed at 0.
+#include "AreaScanPlanner.h"
 #include "CoverageTestSurvey.h"
+#include "ReflyRoute.h"
 
 #include <QJsonArray>
 #include <QJsonObject>
@@ -94,6 +96,66 @@ private slots:
         const QJsonObject first = json.value(QStringLiteral("holes")).toArray().first().toObject();
         QCOMPARE(first.value(QStringLiteral("polygon")).toArray().size(), int(hole.ring.size()));
         QVERIFY(std::fabs(first.value(QStringLiteral("centre")).toArray().at(0).toDouble() - hole.centreLongitude) < 1e-6);
+    }
+
+    // The gaps re-flown: the route of an area scan per hole, flown as its plan says (a photo every
+    // trigger distance along each transect), fills the hole.
+    void theGapsReflownLeaveNoHole()
+    {
+        auto shots = test::flySurvey(test::Survey{}, test::surveyCamera());
+        std::vector<coverage::Shot> kept;
+        for (size_t i = 0; i < shots.size(); ++i) {
+            const size_t leg = i / 21, n = i % 21, along = leg % 2 == 0 ? n : 20 - n;
+            if (!(leg >= 3 && leg <= 5 && along >= 7 && along <= 13))
+                kept.push_back(shots[i]);
+        }
+        const auto gappy = judge(kept);
+        QVERIFY(gappy && !gappy->holes.empty());
+        QVERIFY(gappy->legBearing);
+        QVERIFY2(std::fabs(std::remainder(*gappy->legBearing, 180.0)) < 1, qPrintable(QString::number(*gappy->legBearing)));
+        QVERIFY(gappy->heightAboveGround && gappy->heightAboveGround->p50 == 100);
+        const coverage::Hole &hole = gappy->holes.front();
+        QVERIFY(hole.scanRing.size() >= 4 && hole.scanRing.front() == hole.scanRing.back());
+
+        coverage::ReflyOptions options;
+        options.camera = test::surveyCamera();
+        options.heightAboveGround = gappy->heightAboveGround->p50;
+        options.legBearing = gappy->legBearing;
+        QStringList notes;
+        const auto route = coverage::reflyRoute(gappy->holes, options, &notes);
+        QVERIFY2(route, qPrintable(notes.join(QLatin1Char('\n'))));
+        QCOMPARE(route->segments.size(), gappy->holes.size());
+        const auto &scan = std::get<mission::AreaScan>(route->segments.front());
+        QCOMPARE(scan.parameters.altitude, 100.0);
+        QCOMPARE(scan.parameters.frontOverlapPercent, 80.0);
+        QCOMPARE(scan.parameters.directionDeg, *gappy->legBearing);
+        QCOMPARE(scan.polygon.size(), hole.scanRing.size() - 1); // open, as a scan's polygon is
+
+        // Fly it: every trigger distance along each transect, heading along it.
+        const mission::AreaScanOutcome planned = mission::planAreaScan(scan);
+        QVERIFY2(planned.ok(), qPrintable(planned.message));
+        std::vector<coverage::Shot> both = kept;
+        for (const mission::Transect &t : planned.plan->transects) {
+            const mission::LocalTangentPlane plane(t.start);
+            const auto end = plane.project(t.end);
+            const double length = std::hypot(end.x, end.y);
+            const double heading = std::atan2(end.x, end.y) * 180 / 3.14159265358979;
+            for (double d = 0; d <= length + 1e-6; d += planned.plan->triggerDistance) {
+                const mission::GeoPoint p = plane.unproject({end.x * d / length, end.y * d / length});
+                coverage::Shot shot;
+                shot.name = QStringLiteral("REFLY_%1.JPG").arg(both.size());
+                shot.latitude = p.latitude;
+                shot.longitude = p.longitude;
+                shot.heightAboveGround = 100;
+                shot.headingDegrees = heading;
+                both.push_back(shot);
+            }
+        }
+        QVERIFY(both.size() > kept.size());
+        const auto filled = judge(both);
+        QVERIFY(filled);
+        QVERIFY2(filled->holes.empty(), qPrintable(QStringLiteral("%1 holes, the first %2 m²").arg(filled->holes.size()).arg(filled->holes.empty() ? 0 : filled->holes.front().areaSquareMeters)));
+        QCOMPARE(filled->coveredFraction, 1.0);
     }
 
     void thinOverlapIsAHoleEverywhere()

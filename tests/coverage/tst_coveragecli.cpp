@@ -4,6 +4,7 @@
 // mistake in the command named.
 #include "GeotagTestSupport.h"
 #include "LocalTangentPlane.h"
+#include "MissionFiles.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -139,6 +140,12 @@ private slots:
         QVERIFY2(std::fabs(json.value(QStringLiteral("gsdCm")).toObject().value(QStringLiteral("p50")).toDouble() - 1.64) < 0.01, qPrintable(describe(r)));
         QCOMPARE(json.value(QStringLiteral("holes")).toArray().size(), 0);
         QCOMPARE(json.value(QStringLiteral("covered")).toDouble(), 1.0);
+        // No hole, nothing to re-fly: no route is written.
+        const QString reflyPath = m_dir.filePath(QStringLiteral("nothing.sortie"));
+        const Run refly = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+                                     QStringLiteral("--out"), tif, QStringLiteral("--refly"), reflyPath});
+        QVERIFY2(refly.exitCode == 0 && refly.out.contains("no hole: nothing to re-fly"), qPrintable(describe(refly)));
+        QVERIFY(!QFile::exists(reflyPath));
         QFile file(tif);
         QVERIFY(file.open(QIODevice::ReadOnly));
         QCOMPARE(file.read(4), QByteArray("II*\0", 4)); // a little-endian TIFF
@@ -154,12 +161,45 @@ private slots:
                                     QStringLiteral("--out"), m_dir.filePath(QStringLiteral("gap.tif")), QStringLiteral("--json")});
         QVERIFY2(json.exitCode == 2, qPrintable(describe(json)));
         const QJsonArray holes = QJsonDocument::fromJson(json.out).object().value(QStringLiteral("holes")).toArray();
+        QCOMPARE(QJsonDocument::fromJson(json.out).object().value(QStringLiteral("refly")), QJsonValue(QJsonValue::Null)); // not asked
         QVERIFY(!holes.isEmpty());
         // Around the middle leg (54 m east) at 96 m along.
         const QJsonArray centre = holes.first().toObject().value(QStringLiteral("centre")).toArray();
         const mission::LocalTangentPlane plane({56.95, 24.10});
         const auto at = plane.project({centre.at(1).toDouble(), centre.at(0).toDouble()});
         QVERIFY2(std::fabs(at.x - 54) < 10 && std::fabs(at.y - 96) < 15, qPrintable(QStringLiteral("%1, %2").arg(at.x).arg(at.y)));
+
+        // Re-fly the gaps: a route of one area scan per hole, with the survey's camera, height,
+        // overlap and legs, that the mission files read back.
+        const QString reflyPath = m_dir.filePath(QStringLiteral("refly.sortie"));
+        const Run refly = sortieLog({QStringLiteral("coverage"), m_gappy, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+                                     QStringLiteral("--out"), m_dir.filePath(QStringLiteral("gap.tif")), QStringLiteral("--refly"), reflyPath,
+                                     QStringLiteral("--json")});
+        QVERIFY2(refly.exitCode == 2, qPrintable(describe(refly)));
+        const QJsonObject written = QJsonDocument::fromJson(refly.out).object().value(QStringLiteral("refly")).toObject();
+        QCOMPARE(written.value(QStringLiteral("file")).toString(), reflyPath);
+        QCOMPARE(written.value(QStringLiteral("scans")).toInt(), int(holes.size()));
+        const auto loaded = mission::formats::loadMission(reflyPath);
+        QVERIFY2(loaded, qPrintable(loaded ? QString() : loaded.error().toString()));
+        QCOMPARE(loaded->mission.routes.size(), size_t(1));
+        const mission::Route &route = loaded->mission.routes.front();
+        QCOMPARE(route.segments.size(), size_t(holes.size()));
+        const auto *scan = std::get_if<mission::AreaScan>(&route.segments.front());
+        QVERIFY(scan);
+        QCOMPARE(scan->parameters.camera.name, kCamera);
+        QCOMPARE(scan->parameters.altitude, 60.0);
+        QCOMPARE(scan->parameters.altitudeType, mission::AltitudeType::Agl);
+        QCOMPARE(scan->parameters.frontOverlapPercent, 80.0);
+        QCOMPARE(scan->parameters.sideOverlapPercent, 70.0);
+        QVERIFY2(std::fabs(std::remainder(scan->parameters.directionDeg, 180.0)) < 2, qPrintable(QString::number(scan->parameters.directionDeg)));
+        // The scan's polygon holds the hole's centre.
+        double minLat = 90, maxLat = -90, minLon = 180, maxLon = -180;
+        for (const auto &p : scan->polygon) {
+            minLat = std::min(minLat, p.latitude), maxLat = std::max(maxLat, p.latitude);
+            minLon = std::min(minLon, p.longitude), maxLon = std::max(maxLon, p.longitude);
+        }
+        QVERIFY(centre.at(1).toDouble() > minLat && centre.at(1).toDouble() < maxLat);
+        QVERIFY(centre.at(0).toDouble() > minLon && centre.at(0).toDouble() < maxLon);
     }
 
     void aGpxTrackNeedsTheGroundsHeight()
