@@ -33,6 +33,7 @@ packages=(
   dbus-daemon gnome-keyring libglib2.0-bin libsecret-tools  # tst_keyring: a session bus, a keyring, gdbus, secret-tool
   clang libclang-rt-14-dev
   llvm-14  # llvm-symbolizer: the sanitizer scripts need it to match the leak suppressions
+  lld  # LLVM's linker: every build links with it (CMakeLists.txt, SORTIE_LLD), 3-4 times faster than GNU ld
   xvfb xauth  # scripts/bench-idle.sh: the client on a virtual X display (a benchmark, not a test)
   qt6-translations-l10n  # Qt's own words (qtbase_<lang>.qm: a dialog's "Cancel") in the operator's language; tst_translations checks them
   qt6-l10n-tools  # lupdate and lrelease: the translations (resources/i18n) compiled into the program
