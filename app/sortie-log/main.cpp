@@ -5,6 +5,7 @@
 #include "Camera.h"
 #include "CertificateFingerprint.h"
 #include "CoverageMap.h"
+#include "DemOpener.h"
 #include "EnergyProfile.h"
 #include "FlightLog.h"
 #include "FlightLogExport.h"
@@ -62,11 +63,12 @@ const char *const kUsage =
     "      OpenDroneMap's geo.txt and geotags.csv (Pix4D, Metashape). --vehicle when the log holds\n"
     "      several. Its exit status: 0 every photo tagged, 2 some were not (named), 1 bad usage or input.\n"
     "  coverage PHOTO_DIR --track LOG_OR_GPX --camera NAME --out OVERLAP.tif [--offset SECONDS]\n"
-    "           [--vehicle ID] [--ground-amsl M] [--min-images N] [--cell M] [--refly ROUTE] [--json]\n"
+    "           [--vehicle ID] [--dem PATH | --ground-amsl M] [--min-images N] [--cell M] [--refly ROUTE] [--json]\n"
     "      The ground the photos cover, each placed on the track as geotag places it, looking straight\n"
-    "      down from its height above the take-off (or above flat ground at --ground-amsl): images per\n"
-    "      cell as a GeoTIFF, forward and side overlap, the ground sample distance, and the holes seen\n"
-    "      by fewer than N images (default 5). --refly writes a route of an area scan per hole (the\n"
+    "      down from its height above the ground under it (a DEM), above flat ground at --ground-amsl,\n"
+    "      or else above the take-off point: images per cell as a GeoTIFF, forward and side overlap,\n"
+    "      the ground sample distance, and the holes seen by fewer than N images (default 5).\n"
+    "      --refly writes a route of an area scan per hole (the\n"
     "      survey's camera, height, overlap and legs; .sortie, .plan, ...), checked as sortie-plan checks\n"
     "      a route. Exit status: 0 no hole, 2 holes (listed), 1 bad usage or input.\n"
     "\n"
@@ -375,7 +377,7 @@ int coveragePhotos(const QStringList &in, QTextStream &out, QTextStream &err)
 {
     const auto a = parse(in, {QStringLiteral("--track"), QStringLiteral("--camera"), QStringLiteral("--out"), QStringLiteral("--offset"),
                               QStringLiteral("--vehicle"), QStringLiteral("--ground-amsl"), QStringLiteral("--min-images"), QStringLiteral("--cell"),
-                              QStringLiteral("--refly")},
+                              QStringLiteral("--refly"), QStringLiteral("--dem")},
                          {QStringLiteral("--json")}, err);
     if (!a)
         return CoverageFailed;
@@ -408,6 +410,23 @@ int coveragePhotos(const QStringList &in, QTextStream &out, QTextStream &err)
     coverage::ShotOptions shotOptions;
     if (a->options.contains(QStringLiteral("--ground-amsl")))
         shotOptions.groundAmsl = ground;
+    std::unique_ptr<terrain::ElevationSource> dem;
+    if (a->options.contains(QStringLiteral("--dem"))) {
+        if (shotOptions.groundAmsl) {
+            err << "sortie-log: --dem and --ground-amsl both say where the ground is: give one\n";
+            return CoverageFailed;
+        }
+        QString demError;
+        dem = raster::openDem(a->options.value(QStringLiteral("--dem")), &demError);
+        if (!dem) {
+            err << "sortie-log: " << demError << "\n";
+            return CoverageFailed;
+        }
+        shotOptions.groundAmslAt = [&dem](double latitude, double longitude) -> std::optional<double> {
+            const terrain::ElevationSample s = dem->sample({latitude, longitude});
+            return s.hasValue() ? std::optional<double>(s.ground) : std::nullopt;
+        };
+    }
 
     const auto track = trackOf(*a, err);
     if (!track)
@@ -487,8 +506,9 @@ int coveragePhotos(const QStringList &in, QTextStream &out, QTextStream &err)
         QJsonObject json = report->toJson();
         json.insert(QStringLiteral("refly"), refly);
         json.insert(QStringLiteral("camera"), options.camera.name);
-        json.insert(QStringLiteral("ground"), shotOptions.groundAmsl ? QStringLiteral("flat at %1 m AMSL").arg(*shotOptions.groundAmsl)
-                                                                     : QStringLiteral("flat at the take-off point"));
+        json.insert(QStringLiteral("ground"), dem                     ? QStringLiteral("the DEM %1 under each photo").arg(dem->name())
+                                              : shotOptions.groundAmsl ? QStringLiteral("flat at %1 m AMSL").arg(*shotOptions.groundAmsl)
+                                                                       : QStringLiteral("flat at the take-off point"));
         json.insert(QStringLiteral("raster"), rasterPath);
         out << QJsonDocument(json).toJson(QJsonDocument::Indented);
     } else {

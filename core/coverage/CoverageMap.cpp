@@ -447,7 +447,7 @@ bool writeCoverageGeoTiff(const CoverageRaster &raster, const QString &path, QSt
         if (crs.importFromEPSG(raster.epsg) == OGRERR_NONE)
             out->SetSpatialRef(&crs);
         GDALRasterBand *band = out->GetRasterBand(1);
-        band->SetDescription("images per cell");
+        band->SetDescription("images per cell"); // i18n: not text (the file's band name, read by GIS tools in any language)
         if (band->RasterIO(GF_Write, 0, 0, raster.width, raster.height, const_cast<uint16_t *>(raster.images.data()), raster.width,
                            raster.height, GDT_UInt16, 0, 0) != CE_None) {
             out.reset();

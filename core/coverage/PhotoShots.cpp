@@ -12,7 +12,11 @@ std::vector<Shot> shotsFromPhotos(const std::vector<geotag::TaggedPhoto> &photos
         s.name = p.photo.fileName;
         s.latitude = p.position.latitude;
         s.longitude = p.position.longitude;
-        if (options.groundAmsl) {
+        if (options.groundAmslAt) {
+            const auto ground = options.groundAmslAt(s.latitude, s.longitude);
+            if (ground && p.position.altitudeAmsl)
+                s.heightAboveGround = *p.position.altitudeAmsl - *ground;
+        } else if (options.groundAmsl) {
             if (p.position.altitudeAmsl)
                 s.heightAboveGround = *p.position.altitudeAmsl - *options.groundAmsl;
         } else if (p.position.heightAboveTakeoff) {

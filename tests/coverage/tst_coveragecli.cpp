@@ -13,6 +13,9 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <gdal_priv.h>
+#include <ogr_spatialref.h>
+
 using namespace sortie;
 
 namespace {
@@ -215,6 +218,57 @@ private slots:
         const QJsonObject json = QJsonDocument::fromJson(flat.out).object();
         QCOMPARE(json.value(QStringLiteral("ground")).toString(), QStringLiteral("flat at 40 m AMSL"));
         QVERIFY(std::fabs(json.value(QStringLiteral("gsdCm")).toObject().value(QStringLiteral("p50")).toDouble() - 1.64) < 0.01);
+    }
+
+    // The ground from a DEM: a slope rising 0.1 m a metre to the east from the take-off's 40 m, so
+    // the legs further east fly lower above it (60 m over the first, 49.2 m over the fifth).
+    void aDemGivesEachPhotoItsOwnHeight()
+    {
+        const QString demPath = m_dir.filePath(QStringLiteral("slope.tif"));
+        {
+            GDALAllRegister();
+            GDALDriver *gtiff = GetGDALDriverManager()->GetDriverByName("GTiff");
+            QVERIFY(gtiff);
+            const int w = 400, h = 400;
+            const double west = 24.0980, north = 56.9540, step = 0.00002; // about 1.2 m east, 2.2 m north
+            std::unique_ptr<GDALDataset> d(gtiff->Create(demPath.toUtf8().constData(), w, h, 1, GDT_Float32, nullptr));
+            QVERIFY(d);
+            double transform[6] = {west, step, 0, north, 0, -step};
+            d->SetGeoTransform(transform);
+            OGRSpatialReference wgs84;
+            wgs84.importFromEPSG(4326);
+            d->SetSpatialRef(&wgs84);
+            const mission::LocalTangentPlane plane({56.95, 24.10});
+            std::vector<float> ground(size_t(w) * h);
+            for (int row = 0; row < h; ++row)
+                for (int col = 0; col < w; ++col) {
+                    const auto at = plane.project({north - (row + 0.5) * step, west + (col + 0.5) * step});
+                    ground[size_t(row) * w + col] = float(40 + 0.1 * at.x);
+                }
+            QCOMPARE(d->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, w, h, ground.data(), w, h, GDT_Float32, 0, 0), CE_None);
+        }
+        const Run r = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+                                 QStringLiteral("--out"), m_dir.filePath(QStringLiteral("dem.tif")), QStringLiteral("--dem"), demPath,
+                                 QStringLiteral("--json")});
+        QVERIFY2(r.exitCode == 0 || r.exitCode == 2, qPrintable(describe(r)));
+        const QJsonObject json = QJsonDocument::fromJson(r.out).object();
+        QCOMPARE(json.value(QStringLiteral("placed")).toInt(), 85);
+        QVERIFY2(json.value(QStringLiteral("ground")).toString().startsWith(QStringLiteral("the DEM ")), qPrintable(describe(r)));
+        const QJsonObject height = json.value(QStringLiteral("heightAboveGround")).toObject();
+        QVERIFY2(std::fabs(height.value(QStringLiteral("max")).toDouble() - 60) < 0.3, qPrintable(describe(r)));
+        QVERIFY2(std::fabs(height.value(QStringLiteral("min")).toDouble() - 49.2) < 0.3, qPrintable(describe(r)));
+        // Lower over the eastern legs: finer pixels there (49.2 m: 1.35 cm against 60 m: 1.64 cm).
+        QVERIFY2(std::fabs(json.value(QStringLiteral("gsdCm")).toObject().value(QStringLiteral("min")).toDouble() - 1.35) < 0.01, qPrintable(describe(r)));
+
+        // Where the DEM has no ground the photo is named; both grounds at once is refused.
+        const Run both = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+                                    QStringLiteral("--out"), m_dir.filePath(QStringLiteral("dem.tif")), QStringLiteral("--dem"), demPath,
+                                    QStringLiteral("--ground-amsl"), QStringLiteral("40")});
+        QVERIFY2(both.exitCode == 1 && both.err.contains("give one"), qPrintable(describe(both)));
+        const Run missing = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+                                       QStringLiteral("--out"), m_dir.filePath(QStringLiteral("dem.tif")), QStringLiteral("--dem"),
+                                       m_dir.filePath(QStringLiteral("no-such.tif"))});
+        QVERIFY2(missing.exitCode == 1 && missing.err.contains("no-such.tif"), qPrintable(describe(missing)));
     }
 
     void mistakesAreNamed()
