@@ -12,6 +12,8 @@ SINGULAR = {
     "%n batteries": "%n battery",
     "%n AMSL altitude(s), the first at %1, were not checked against the route's limits: the take-off elevation is unknown.":
         "%n AMSL altitude, at %1, was not checked against the route's limits: the take-off elevation is unknown.",
+    "%n geotagged copies, geo.txt and geotags.csv written to %1.": "%n geotagged copy, geo.txt and geotags.csv written to %1.",
+    "%1 of %n photos placed on %2's track (camera clock %3 s).": "%1 of %n photo placed on %2's track (camera clock %3 s).",
 }
 
 

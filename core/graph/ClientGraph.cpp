@@ -19,6 +19,7 @@
 #include "ProximityMonitor.h"
 #include "RouteDeconfliction.h"
 #include "RecordingSettings.h"
+#include "PhotoSurvey.h"
 #include "ReplayController.h"
 #include "RouteAnalyzer.h"
 #include "RouteAutosave.h"
@@ -167,6 +168,7 @@ ClientGraph::ClientGraph(QSettings *storage, Options options, QObject *parent)
     m_comparison = std::make_unique<flightlog::ComparisonController>(m_replay.get());
     m_serverHistory = std::make_unique<flightlog::ServerHistoryRequest>(m_hciClient.get(), m_replay.get());
     m_serverHistory->setFleet(m_fleet.get());
+    m_photos = std::make_unique<coverage::PhotoSurvey>(m_replay.get());
 
     qCInfo(lcClientGraph).noquote() << "wired:" << wiring().join(QStringLiteral("; "));
 }
@@ -176,6 +178,7 @@ ClientGraph::~ClientGraph()
 {
     m_airspaceToVehicles.reset();
     m_uploadedFenceAlerts.reset();
+    m_photos.reset();
     m_serverHistory.reset();
     m_comparison.reset();
     m_replay.reset();
@@ -255,7 +258,8 @@ QStringList ClientGraph::wiring() const
           << QStringLiteral("recovery: %1").arg(yesNo(m_recovery != nullptr, "on", "off"))
           << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))
           << QStringLiteral("fleet recording: %1").arg(yesNo(m_fleetRecording != nullptr, "on", "off"))
-          << QStringLiteral("server history: %1").arg(yesNo(m_fleet && m_serverHistory->fleet() == m_fleet.get(), "from the fleet", "no fleet"));
+          << QStringLiteral("server history: %1").arg(yesNo(m_fleet && m_serverHistory->fleet() == m_fleet.get(), "from the fleet", "no fleet"))
+          << QStringLiteral("photos: %1").arg(yesNo(m_photos != nullptr, "the replayed log's, placed and their coverage judged", "none"));
     return lines;
 }
 

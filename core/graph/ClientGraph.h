@@ -20,6 +20,7 @@ Q_MOC_INCLUDE("OfflineMaps.h")
 Q_MOC_INCLUDE("ProximityMonitor.h")
 Q_MOC_INCLUDE("RecordingSettings.h")
 Q_MOC_INCLUDE("ReplayController.h")
+Q_MOC_INCLUDE("PhotoSurvey.h")
 Q_MOC_INCLUDE("RouteDeconfliction.h")
 Q_MOC_INCLUDE("RouteEndurance.h")
 Q_MOC_INCLUDE("ServerHistoryRequest.h")
@@ -50,6 +51,10 @@ class RecordingSettings;
 class ReplayController;
 class ServerHistoryRequest;
 } // namespace sortie::flightlog
+
+namespace sortie::coverage {
+class PhotoSurvey;
+} // namespace sortie::coverage
 
 namespace sortie::endurance {
 class RouteEndurance;
@@ -135,6 +140,7 @@ class ClientGraph : public QObject
     Q_PROPERTY(sortie::flightlog::ReplayController *replay READ replayForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::flightlog::ComparisonController *comparison READ comparisonForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::flightlog::ServerHistoryRequest *serverHistory READ serverHistoryForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::coverage::PhotoSurvey *photos READ photosForQml CONSTANT FINAL)
 
 public:
     struct Options
@@ -195,6 +201,8 @@ public:
     flightlog::ReplayController &replay() { return *m_replay; }
     flightlog::ComparisonController &comparison() { return *m_comparison; }
     flightlog::ServerHistoryRequest &serverHistory() { return *m_serverHistory; }
+    // The replayed flight's photos: placed on its log, their coverage judged, their copies written.
+    coverage::PhotoSurvey &photos() { return *m_photos; }
     // The terrain reads this DEM file or folder from now on (empty: none), in the source order the
     // settings give: the operator chose another in the map source dialog.
     void useDem(const QString &path);
@@ -231,6 +239,7 @@ private:
     flightlog::ReplayController *replayForQml() const { return m_replay.get(); }
     flightlog::ComparisonController *comparisonForQml() const { return m_comparison.get(); }
     flightlog::ServerHistoryRequest *serverHistoryForQml() const { return m_serverHistory.get(); }
+    coverage::PhotoSurvey *photosForQml() const { return m_photos.get(); }
 
     std::unique_ptr<hci::HciSession> m_session;
     std::unique_ptr<hci::HciClient> m_hciClient;
@@ -262,6 +271,7 @@ private:
     std::unique_ptr<flightlog::ReplayController> m_replay;
     std::unique_ptr<flightlog::ComparisonController> m_comparison;
     std::unique_ptr<flightlog::ServerHistoryRequest> m_serverHistory;
+    std::unique_ptr<coverage::PhotoSurvey> m_photos;
     QSettings *m_storage;
     QString m_recorderError;
 };

@@ -2772,6 +2772,61 @@
     </message>
 </context>
 <context>
+    <name>PhotosDialog</name>
+    <message>
+        <source>Photos of the flight</source>
+        <translation>Fotos des Flugs</translation>
+    </message>
+    <message>
+        <source>The folder of the flight&apos;s photos</source>
+        <translation>Der Ordner mit den Fotos des Flugs</translation>
+    </message>
+    <message>
+        <source>Where the geotagged copies go</source>
+        <translation>Wohin die georeferenzierten Kopien kommen</translation>
+    </message>
+    <message>
+        <source>Photos</source>
+        <translation>Fotos</translation>
+    </message>
+    <message>
+        <source>a folder of JPEG, TIFF or DNG photos</source>
+        <translation>ein Ordner mit JPEG-, TIFF- oder DNG-Fotos</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Wählen…</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>Camera clock behind the log (s)</source>
+        <translation>Kamerauhr hinter dem Log (s)</translation>
+    </message>
+    <message>
+        <source>Seconds added to each photo&apos;s time: how far the camera&apos;s clock is behind the log&apos;s (GNSS) time</source>
+        <translation>Sekunden, die zur Zeit jedes Fotos addiert werden: wie weit die Kamerauhr hinter der (GNSS-)Zeit des Logs liegt</translation>
+    </message>
+    <message>
+        <source>Place photos</source>
+        <translation>Fotos verorten</translation>
+    </message>
+    <message>
+        <source>Holes, largest first (shaded on the map):</source>
+        <translation>Lücken, die größte zuerst (auf der Karte schattiert):</translation>
+    </message>
+    <message>
+        <source>Not placed:</source>
+        <translation>Nicht verortet:</translation>
+    </message>
+    <message>
+        <source>Write geotagged copies…</source>
+        <translation>Georeferenzierte Kopien schreiben…</translation>
+    </message>
+</context>
+<context>
     <name>PrivateFiles</name>
     <message>
         <source>Cannot create the folder %1: %2 is not a folder</source>
@@ -3261,6 +3316,10 @@ Ereignisse: %1
     <message>
         <source>Back to live</source>
         <translation>Zurück zu live</translation>
+    </message>
+    <message>
+        <source>Photos…</source>
+        <translation>Fotos…</translation>
     </message>
 </context>
 <context>
@@ -6984,6 +7043,78 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>sortie::coverage::PhotoSurvey</name>
+    <message>
+        <source>Choose the vehicle that took the photos.</source>
+        <translation>Wählen Sie das Fahrzeug, das die Fotos aufgenommen hat.</translation>
+    </message>
+    <message>
+        <source>choose the camera that took them</source>
+        <translation>wählen Sie die Kamera, die sie aufgenommen hat</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>nicht gemessen</translation>
+    </message>
+    <message>
+        <source>Open the flight&apos;s log first.</source>
+        <translation>Öffnen Sie zuerst das Log des Flugs.</translation>
+    </message>
+    <message>
+        <source>Choose the folder of the flight&apos;s photos.</source>
+        <translation>Wählen Sie den Ordner mit den Fotos des Flugs.</translation>
+    </message>
+    <message>
+        <source>No photo is placed: nothing to write.</source>
+        <translation>Kein Foto ist verortet: nichts zu schreiben.</translation>
+    </message>
+    <message>
+        <source>%1 is the photos&apos; own folder: the copies go elsewhere, the originals are never changed.</source>
+        <translation>%1 ist der Ordner der Fotos selbst: die Kopien kommen woandershin, die Originale werden nie verändert.</translation>
+    </message>
+    <message>
+        <source>%1: the folder cannot be made.</source>
+        <translation>%1: der Ordner kann nicht angelegt werden.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n geotagged copies, geo.txt and geotags.csv written to %1.</source>
+        <translation>
+            <numerusform>%n georeferenzierte Kopie, geo.txt und geotags.csv nach %1 geschrieben.</numerusform>
+            <numerusform>%n georeferenzierte Kopien, geo.txt und geotags.csv nach %1 geschrieben.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 not written: %2.</source>
+        <translation>%1 nicht geschrieben: %2.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n photos placed on %2&apos;s track (camera clock %3 s).</source>
+        <translation>
+            <numerusform>%1 von %n Foto auf der Spur von %2 verortet (Kamerauhr %3 s).</numerusform>
+            <numerusform>%1 von %n Fotos auf der Spur von %2 verortet (Kamerauhr %3 s).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Coverage not judged: %1.</source>
+        <translation>Abdeckung nicht beurteilt: %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 % of %2 m² seen by at least %3 images; forward overlap %4, side %5; %6 per pixel; %n hole(s).</source>
+        <translation>
+            <numerusform>%1 % von %2 m² von mindestens %3 Bildern gesehen; Längsüberlappung %4, Querüberlappung %5; %6 pro Pixel; %n Lücke.</numerusform>
+            <numerusform>%1 % von %2 m² von mindestens %3 Bildern gesehen; Längsüberlappung %4, Querüberlappung %5; %6 pro Pixel; %n Lücken.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 m² at %2, %3</source>
+        <translation>%1 m² bei %2, %3</translation>
+    </message>
+</context>
+<context>
     <name>sortie::deconfliction::FleetConflictRule</name>
     <message>
         <source>%1, flying &quot;%2&quot; (its leg %3)</source>
@@ -8177,6 +8308,13 @@ Ereignisse: %1
     <message>
         <source>The built-in land outlines could not be read: %1</source>
         <translation>Die eingebauten Landumrisse konnten nicht gelesen werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::PhotoLayer</name>
+    <message>
+        <source>Hole %1 m²</source>
+        <translation>Lücke %1 m²</translation>
     </message>
 </context>
 <context>

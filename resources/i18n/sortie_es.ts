@@ -2772,6 +2772,61 @@
     </message>
 </context>
 <context>
+    <name>PhotosDialog</name>
+    <message>
+        <source>Photos of the flight</source>
+        <translation>Fotos del vuelo</translation>
+    </message>
+    <message>
+        <source>The folder of the flight&apos;s photos</source>
+        <translation>La carpeta de las fotos del vuelo</translation>
+    </message>
+    <message>
+        <source>Where the geotagged copies go</source>
+        <translation>Dónde van las copias georreferenciadas</translation>
+    </message>
+    <message>
+        <source>Photos</source>
+        <translation>Fotos</translation>
+    </message>
+    <message>
+        <source>a folder of JPEG, TIFF or DNG photos</source>
+        <translation>una carpeta de fotos JPEG, TIFF o DNG</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Elegir…</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Cámara</translation>
+    </message>
+    <message>
+        <source>Camera clock behind the log (s)</source>
+        <translation>Reloj de la cámara tras el registro (s)</translation>
+    </message>
+    <message>
+        <source>Seconds added to each photo&apos;s time: how far the camera&apos;s clock is behind the log&apos;s (GNSS) time</source>
+        <translation>Segundos sumados a la hora de cada foto: cuánto va el reloj de la cámara por detrás de la hora (GNSS) del registro</translation>
+    </message>
+    <message>
+        <source>Place photos</source>
+        <translation>Situar las fotos</translation>
+    </message>
+    <message>
+        <source>Holes, largest first (shaded on the map):</source>
+        <translation>Huecos, el mayor primero (sombreados en el mapa):</translation>
+    </message>
+    <message>
+        <source>Not placed:</source>
+        <translation>Sin situar:</translation>
+    </message>
+    <message>
+        <source>Write geotagged copies…</source>
+        <translation>Escribir copias georreferenciadas…</translation>
+    </message>
+</context>
+<context>
     <name>PrivateFiles</name>
     <message>
         <source>Cannot create the folder %1: %2 is not a folder</source>
@@ -3261,6 +3316,10 @@ eventos:   %1
     <message>
         <source>Back to live</source>
         <translation>Volver a en vivo</translation>
+    </message>
+    <message>
+        <source>Photos…</source>
+        <translation>Fotos…</translation>
     </message>
 </context>
 <context>
@@ -6984,6 +7043,78 @@ eventos:   %1
     </message>
 </context>
 <context>
+    <name>sortie::coverage::PhotoSurvey</name>
+    <message>
+        <source>Choose the vehicle that took the photos.</source>
+        <translation>Elija el vehículo que tomó las fotos.</translation>
+    </message>
+    <message>
+        <source>choose the camera that took them</source>
+        <translation>elija la cámara que las tomó</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>no medido</translation>
+    </message>
+    <message>
+        <source>Open the flight&apos;s log first.</source>
+        <translation>Abra primero el registro del vuelo.</translation>
+    </message>
+    <message>
+        <source>Choose the folder of the flight&apos;s photos.</source>
+        <translation>Elija la carpeta de las fotos del vuelo.</translation>
+    </message>
+    <message>
+        <source>No photo is placed: nothing to write.</source>
+        <translation>Ninguna foto está situada: nada que escribir.</translation>
+    </message>
+    <message>
+        <source>%1 is the photos&apos; own folder: the copies go elsewhere, the originals are never changed.</source>
+        <translation>%1 es la carpeta de las propias fotos: las copias van a otro sitio, los originales nunca se cambian.</translation>
+    </message>
+    <message>
+        <source>%1: the folder cannot be made.</source>
+        <translation>%1: no se puede crear la carpeta.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n geotagged copies, geo.txt and geotags.csv written to %1.</source>
+        <translation>
+            <numerusform>%n copia georreferenciada, geo.txt y geotags.csv escritos en %1.</numerusform>
+            <numerusform>%n copias georreferenciadas, geo.txt y geotags.csv escritos en %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 not written: %2.</source>
+        <translation>%1 no escrita: %2.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n photos placed on %2&apos;s track (camera clock %3 s).</source>
+        <translation>
+            <numerusform>%1 de %n foto situada en la traza de %2 (reloj de la cámara %3 s).</numerusform>
+            <numerusform>%1 de %n fotos situadas en la traza de %2 (reloj de la cámara %3 s).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Coverage not judged: %1.</source>
+        <translation>Cobertura no evaluada: %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 % of %2 m² seen by at least %3 images; forward overlap %4, side %5; %6 per pixel; %n hole(s).</source>
+        <translation>
+            <numerusform>%1 % de %2 m² visto por al menos %3 imágenes; solape frontal %4, lateral %5; %6 por píxel; %n hueco.</numerusform>
+            <numerusform>%1 % de %2 m² visto por al menos %3 imágenes; solape frontal %4, lateral %5; %6 por píxel; %n huecos.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 m² at %2, %3</source>
+        <translation>%1 m² en %2, %3</translation>
+    </message>
+</context>
+<context>
     <name>sortie::deconfliction::FleetConflictRule</name>
     <message>
         <source>%1, flying &quot;%2&quot; (its leg %3)</source>
@@ -8177,6 +8308,13 @@ eventos:   %1
     <message>
         <source>The built-in land outlines could not be read: %1</source>
         <translation>No se pudieron leer los contornos de tierra integrados: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::PhotoLayer</name>
+    <message>
+        <source>Hole %1 m²</source>
+        <translation>Hueco %1 m²</translation>
     </message>
 </context>
 <context>

@@ -2781,6 +2781,61 @@
     </message>
 </context>
 <context>
+    <name>PhotosDialog</name>
+    <message>
+        <source>Photos of the flight</source>
+        <translation>Знімки польоту</translation>
+    </message>
+    <message>
+        <source>The folder of the flight&apos;s photos</source>
+        <translation>Тека зі знімками польоту</translation>
+    </message>
+    <message>
+        <source>Where the geotagged copies go</source>
+        <translation>Куди покласти копії з геопозицією</translation>
+    </message>
+    <message>
+        <source>Photos</source>
+        <translation>Знімки</translation>
+    </message>
+    <message>
+        <source>a folder of JPEG, TIFF or DNG photos</source>
+        <translation>тека зі знімками JPEG, TIFF або DNG</translation>
+    </message>
+    <message>
+        <source>Choose…</source>
+        <translation>Вибрати…</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Камера</translation>
+    </message>
+    <message>
+        <source>Camera clock behind the log (s)</source>
+        <translation>Годинник камери позаду журналу (с)</translation>
+    </message>
+    <message>
+        <source>Seconds added to each photo&apos;s time: how far the camera&apos;s clock is behind the log&apos;s (GNSS) time</source>
+        <translation>Секунди, що додаються до часу кожного знімка: наскільки годинник камери відстає від часу журналу (GNSS)</translation>
+    </message>
+    <message>
+        <source>Place photos</source>
+        <translation>Розмістити знімки</translation>
+    </message>
+    <message>
+        <source>Holes, largest first (shaded on the map):</source>
+        <translation>Прогалини, найбільша перша (заштриховані на мапі):</translation>
+    </message>
+    <message>
+        <source>Not placed:</source>
+        <translation>Не розміщено:</translation>
+    </message>
+    <message>
+        <source>Write geotagged copies…</source>
+        <translation>Записати копії з геопозицією…</translation>
+    </message>
+</context>
+<context>
     <name>PrivateFiles</name>
     <message>
         <source>Cannot create the folder %1: %2 is not a folder</source>
@@ -3271,6 +3326,10 @@ events:   %1
     <message>
         <source>Back to live</source>
         <translation>До реального часу</translation>
+    </message>
+    <message>
+        <source>Photos…</source>
+        <translation>Знімки…</translation>
     </message>
 </context>
 <context>
@@ -7017,6 +7076,81 @@ events:   %1
     </message>
 </context>
 <context>
+    <name>sortie::coverage::PhotoSurvey</name>
+    <message>
+        <source>Choose the vehicle that took the photos.</source>
+        <translation>Оберіть апарат, що зробив знімки.</translation>
+    </message>
+    <message>
+        <source>choose the camera that took them</source>
+        <translation>оберіть камеру, що їх зробила</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>не виміряно</translation>
+    </message>
+    <message>
+        <source>Open the flight&apos;s log first.</source>
+        <translation>Спершу відкрийте журнал польоту.</translation>
+    </message>
+    <message>
+        <source>Choose the folder of the flight&apos;s photos.</source>
+        <translation>Оберіть теку зі знімками польоту.</translation>
+    </message>
+    <message>
+        <source>No photo is placed: nothing to write.</source>
+        <translation>Жоден знімок не розміщено: нічого записувати.</translation>
+    </message>
+    <message>
+        <source>%1 is the photos&apos; own folder: the copies go elsewhere, the originals are never changed.</source>
+        <translation>%1 — власна тека знімків: копії йдуть деінде, оригінали ніколи не змінюються.</translation>
+    </message>
+    <message>
+        <source>%1: the folder cannot be made.</source>
+        <translation>%1: теку не вдається створити.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n geotagged copies, geo.txt and geotags.csv written to %1.</source>
+        <translation>
+            <numerusform>%n копію з геопозицією, geo.txt і geotags.csv записано в %1.</numerusform>
+            <numerusform>%n копії з геопозицією, geo.txt і geotags.csv записано в %1.</numerusform>
+            <numerusform>%n копій з геопозицією, geo.txt і geotags.csv записано в %1.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 not written: %2.</source>
+        <translation>%1 не записано: %2.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n photos placed on %2&apos;s track (camera clock %3 s).</source>
+        <translation>
+            <numerusform>%1 з %n знімка розміщено на треку %2 (годинник камери %3 с).</numerusform>
+            <numerusform>%1 з %n знімків розміщено на треку %2 (годинник камери %3 с).</numerusform>
+            <numerusform>%1 з %n знімків розміщено на треку %2 (годинник камери %3 с).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Coverage not judged: %1.</source>
+        <translation>Покриття не оцінено: %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 % of %2 m² seen by at least %3 images; forward overlap %4, side %5; %6 per pixel; %n hole(s).</source>
+        <translation>
+            <numerusform>%1 % з %2 м² бачать щонайменше %3 знімків; поздовжнє перекриття %4, поперечне %5; %6 на піксель; %n прогалина.</numerusform>
+            <numerusform>%1 % з %2 м² бачать щонайменше %3 знімків; поздовжнє перекриття %4, поперечне %5; %6 на піксель; %n прогалини.</numerusform>
+            <numerusform>%1 % з %2 м² бачать щонайменше %3 знімків; поздовжнє перекриття %4, поперечне %5; %6 на піксель; %n прогалин.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1 m² at %2, %3</source>
+        <translation>%1 м² у %2, %3</translation>
+    </message>
+</context>
+<context>
     <name>sortie::deconfliction::FleetConflictRule</name>
     <message>
         <source>%1, flying &quot;%2&quot; (its leg %3)</source>
@@ -8217,6 +8351,13 @@ events:   %1
     <message>
         <source>The built-in land outlines could not be read: %1</source>
         <translation>Не вдалося прочитати вбудовані контури суходолу: %1</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::ui::PhotoLayer</name>
+    <message>
+        <source>Hole %1 m²</source>
+        <translation>Прогалина %1 м²</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 // mistake in the command named.
 #include "GeotagTestSupport.h"
 #include "LocalTangentPlane.h"
+#include "SurveyFlightTestSupport.h"
 #include "MissionFiles.h"
 
 #include <QJsonArray>
@@ -44,46 +45,6 @@ QString describe(const Run &r)
     return QStringLiteral("exit %1\nstdout: %2\nstderr: %3").arg(r.exitCode).arg(QString::fromUtf8(r.out), QString::fromUtf8(r.err));
 }
 
-const QString kCamera = QStringLiteral("DJI Phantom 4 Pro / Phantom 4 RTK (FC6310)"); // 90 × 60 m from 60 m
-
-// Five legs of 200 m, 27 m apart (70 % side overlap), flown at 6 m/s 60 m above a take-off at
-// 40 m AMSL, a photo every 2 s (12 m: 80 % forward); 4.5 s to cross to the next leg.
-struct SurveyFlight
-{
-    std::vector<std::array<double, 5>> samples; // ms, lat, lon, amsl, agl
-    std::vector<std::pair<int64_t, int>> photos; // ms after the track's start, leg
-};
-
-SurveyFlight flySurvey()
-{
-    const mission::LocalTangentPlane plane({56.95, 24.10});
-    SurveyFlight f;
-    const double speed = 6, legLength = 200, spacing = 27, crossing = spacing / speed;
-    const double legTime = legLength / speed;
-    auto where = [&](double t, int *legOut) -> mission::PlanePoint {
-        const double period = legTime + crossing;
-        const int leg = std::min(4, int(t / period));
-        const double in = t - leg * period;
-        *legOut = leg;
-        const bool north = leg % 2 == 0;
-        if (in <= legTime || leg == 4) {
-            const double along = std::min(in, legTime) * speed;
-            return {leg * spacing, north ? along : legLength - along};
-        }
-        return {leg * spacing + (in - legTime) * speed, north ? legLength : 0}; // crossing east
-    };
-    const double end = 5 * legTime + 4 * crossing;
-    for (double t = 0; t <= end + 1e-9; t += 0.5) {
-        int leg = 0;
-        const mission::GeoPoint p = plane.unproject(where(t, &leg));
-        f.samples.push_back({t * 1000, p.latitude, p.longitude, 100, 60});
-    }
-    for (int leg = 0; leg < 5; ++leg)
-        for (int j = 0; j <= 16; ++j)
-            f.photos.push_back({int64_t(std::llround((leg * (legTime + crossing) + 2.0 * j) * 1000)), leg});
-    return f;
-}
-
 } // namespace
 
 class TestCoverageCli : public QObject
@@ -97,7 +58,7 @@ private slots:
     void initTestCase()
     {
         QVERIFY(m_dir.isValid());
-        const SurveyFlight flight = flySurvey();
+        const test::SurveyFlight flight = test::flySurvey();
         m_log = m_dir.filePath(QStringLiteral("survey.sortielog"));
         QCOMPARE(test::writeFlightLog(m_log, {{QStringLiteral("VCI:emu"), QStringLiteral("EMU-101"), flight.samples}}), QString());
         std::vector<test::GpxPoint> gpx;
@@ -124,13 +85,13 @@ private slots:
     void aSurveyFlownAsPlannedHasNoHole()
     {
         const QString tif = m_dir.filePath(QStringLiteral("overlap.tif"));
-        const Run r = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+        const Run r = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), test::kSurveyCamera,
                                  QStringLiteral("--out"), tif, QStringLiteral("--json")});
         QVERIFY2(r.exitCode == 0, qPrintable(describe(r)));
         const QJsonObject json = QJsonDocument::fromJson(r.out).object();
         QCOMPARE(json.value(QStringLiteral("photos")).toInt(), 85);
         QCOMPARE(json.value(QStringLiteral("placed")).toInt(), 85);
-        QCOMPARE(json.value(QStringLiteral("camera")).toString(), kCamera);
+        QCOMPARE(json.value(QStringLiteral("camera")).toString(), test::kSurveyCamera);
         QCOMPARE(json.value(QStringLiteral("ground")).toString(), QStringLiteral("flat at the take-off point"));
         QCOMPARE(json.value(QStringLiteral("crs")).toString(), QStringLiteral("EPSG:32635"));
         QCOMPARE(json.value(QStringLiteral("raster")).toString(), tif);
@@ -145,7 +106,7 @@ private slots:
         QCOMPARE(json.value(QStringLiteral("covered")).toDouble(), 1.0);
         // No hole, nothing to re-fly: no route is written.
         const QString reflyPath = m_dir.filePath(QStringLiteral("nothing.sortie"));
-        const Run refly = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+        const Run refly = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), test::kSurveyCamera,
                                      QStringLiteral("--out"), tif, QStringLiteral("--refly"), reflyPath});
         QVERIFY2(refly.exitCode == 0 && refly.out.contains("no hole: nothing to re-fly"), qPrintable(describe(refly)));
         QVERIFY(!QFile::exists(reflyPath));
@@ -156,11 +117,11 @@ private slots:
 
     void missingPhotosAreAHoleNamedWithItsPlace()
     {
-        const Run r = sortieLog({QStringLiteral("coverage"), m_gappy, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+        const Run r = sortieLog({QStringLiteral("coverage"), m_gappy, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), test::kSurveyCamera,
                                  QStringLiteral("--out"), m_dir.filePath(QStringLiteral("gap.tif"))});
         QVERIFY2(r.exitCode == 2, qPrintable(describe(r)));
         QVERIFY2(r.out.contains("70 of 70 photos placed") && r.out.contains("hole of ") && r.out.contains("images per cell in"), qPrintable(describe(r)));
-        const Run json = sortieLog({QStringLiteral("coverage"), m_gappy, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+        const Run json = sortieLog({QStringLiteral("coverage"), m_gappy, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), test::kSurveyCamera,
                                     QStringLiteral("--out"), m_dir.filePath(QStringLiteral("gap.tif")), QStringLiteral("--json")});
         QVERIFY2(json.exitCode == 2, qPrintable(describe(json)));
         const QJsonArray holes = QJsonDocument::fromJson(json.out).object().value(QStringLiteral("holes")).toArray();
@@ -175,7 +136,7 @@ private slots:
         // Re-fly the gaps: a route of one area scan per hole, with the survey's camera, height,
         // overlap and legs, that the mission files read back.
         const QString reflyPath = m_dir.filePath(QStringLiteral("refly.sortie"));
-        const Run refly = sortieLog({QStringLiteral("coverage"), m_gappy, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+        const Run refly = sortieLog({QStringLiteral("coverage"), m_gappy, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), test::kSurveyCamera,
                                      QStringLiteral("--out"), m_dir.filePath(QStringLiteral("gap.tif")), QStringLiteral("--refly"), reflyPath,
                                      QStringLiteral("--json")});
         QVERIFY2(refly.exitCode == 2, qPrintable(describe(refly)));
@@ -189,7 +150,7 @@ private slots:
         QCOMPARE(route.segments.size(), size_t(holes.size()));
         const auto *scan = std::get_if<mission::AreaScan>(&route.segments.front());
         QVERIFY(scan);
-        QCOMPARE(scan->parameters.camera.name, kCamera);
+        QCOMPARE(scan->parameters.camera.name, test::kSurveyCamera);
         QCOMPARE(scan->parameters.altitude, 60.0);
         QCOMPARE(scan->parameters.altitudeType, mission::AltitudeType::Agl);
         QCOMPARE(scan->parameters.frontOverlapPercent, 80.0);
@@ -208,10 +169,10 @@ private slots:
     void aGpxTrackNeedsTheGroundsHeight()
     {
         // A GPX gives AMSL only: without the ground's height no photo has a height above it.
-        const Run none = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_gpx, QStringLiteral("--camera"), kCamera,
+        const Run none = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_gpx, QStringLiteral("--camera"), test::kSurveyCamera,
                                     QStringLiteral("--out"), m_dir.filePath(QStringLiteral("gpx.tif"))});
         QVERIFY2(none.exitCode == 1 && none.err.contains("no photo has a position, a height above the ground and a heading"), qPrintable(describe(none)));
-        const Run flat = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_gpx, QStringLiteral("--camera"), kCamera,
+        const Run flat = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_gpx, QStringLiteral("--camera"), test::kSurveyCamera,
                                     QStringLiteral("--out"), m_dir.filePath(QStringLiteral("gpx.tif")), QStringLiteral("--ground-amsl"),
                                     QStringLiteral("40"), QStringLiteral("--json")});
         QVERIFY2(flat.exitCode == 0, qPrintable(describe(flat)));
@@ -247,7 +208,7 @@ private slots:
                 }
             QCOMPARE(d->GetRasterBand(1)->RasterIO(GF_Write, 0, 0, w, h, ground.data(), w, h, GDT_Float32, 0, 0), CE_None);
         }
-        const Run r = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+        const Run r = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), test::kSurveyCamera,
                                  QStringLiteral("--out"), m_dir.filePath(QStringLiteral("dem.tif")), QStringLiteral("--dem"), demPath,
                                  QStringLiteral("--json")});
         QVERIFY2(r.exitCode == 0 || r.exitCode == 2, qPrintable(describe(r)));
@@ -261,11 +222,11 @@ private slots:
         QVERIFY2(std::fabs(json.value(QStringLiteral("gsdCm")).toObject().value(QStringLiteral("min")).toDouble() - 1.35) < 0.01, qPrintable(describe(r)));
 
         // Where the DEM has no ground the photo is named; both grounds at once is refused.
-        const Run both = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+        const Run both = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), test::kSurveyCamera,
                                     QStringLiteral("--out"), m_dir.filePath(QStringLiteral("dem.tif")), QStringLiteral("--dem"), demPath,
                                     QStringLiteral("--ground-amsl"), QStringLiteral("40")});
         QVERIFY2(both.exitCode == 1 && both.err.contains("give one"), qPrintable(describe(both)));
-        const Run missing = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+        const Run missing = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), test::kSurveyCamera,
                                        QStringLiteral("--out"), m_dir.filePath(QStringLiteral("dem.tif")), QStringLiteral("--dem"),
                                        m_dir.filePath(QStringLiteral("no-such.tif"))});
         QVERIFY2(missing.exitCode == 1 && missing.err.contains("no-such.tif"), qPrintable(describe(missing)));
@@ -276,13 +237,13 @@ private slots:
         const QString tif = m_dir.filePath(QStringLiteral("x.tif"));
         const Run camera = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"),
                                       QStringLiteral("Brownie"), QStringLiteral("--out"), tif});
-        QVERIFY2(camera.exitCode == 1 && camera.err.contains("no camera \"Brownie\"") && camera.err.contains(kCamera.toUtf8()), qPrintable(describe(camera)));
-        const Run out = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera});
+        QVERIFY2(camera.exitCode == 1 && camera.err.contains("no camera \"Brownie\"") && camera.err.contains(test::kSurveyCamera.toUtf8()), qPrintable(describe(camera)));
+        const Run out = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), test::kSurveyCamera});
         QVERIFY2(out.exitCode == 1 && out.err.contains("coverage needs --out"), qPrintable(describe(out)));
-        const Run cell = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+        const Run cell = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), test::kSurveyCamera,
                                     QStringLiteral("--out"), tif, QStringLiteral("--cell"), QStringLiteral("-1")});
         QVERIFY2(cell.exitCode == 1 && cell.err.contains("--cell takes a number from 0.01 to 100"), qPrintable(describe(cell)));
-        const Run late = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), kCamera,
+        const Run late = sortieLog({QStringLiteral("coverage"), m_photos, QStringLiteral("--track"), m_log, QStringLiteral("--camera"), test::kSurveyCamera,
                                     QStringLiteral("--out"), tif, QStringLiteral("--offset"), QStringLiteral("3600"), QStringLiteral("--json")});
         QVERIFY2(late.exitCode == 1 && late.err.contains("no photo has a position"), qPrintable(describe(late)));
         QVERIFY(!QFile::exists(tif));

@@ -13,6 +13,10 @@ ToolBar {
     required property ReplayController replay
     // The connected server's history, replayed in the same controller.
     required property ServerHistoryRequest serverHistory
+    // The flight's photos, placed on the log of the vehicle chosen in the fly view (vehicleIndex).
+    required property PhotoSurvey photos
+    required property DisplayUnits units
+    property int vehicleIndex: -1
     property string exportMessage
 
     FileDialog {
@@ -76,7 +80,14 @@ ToolBar {
             ToolButton {
                 objectName: "previousEventButton"
                 visible: bar.replay.active
-                text: "⏮"
+                // An icon: the fonts Debian ships by default have no glyph for ⏮.
+                Accessible.name: ToolTip.text
+                contentItem: TintedIcon {
+                    name: "media-skip-backward"
+                    color: parent.palette.buttonText
+                    implicitWidth: bar.theme.iconSize
+                    implicitHeight: bar.theme.iconSize
+                }
                 ToolTip.visible: hovered
                 ToolTip.text: qsTr("Previous event")
                 onClicked: bar.replay.previousEvent()
@@ -84,7 +95,14 @@ ToolBar {
             ToolButton {
                 objectName: "nextEventButton"
                 visible: bar.replay.active
-                text: "⏭"
+                // An icon: the fonts Debian ships by default have no glyph for ⏭.
+                Accessible.name: ToolTip.text
+                contentItem: TintedIcon {
+                    name: "media-skip-forward"
+                    color: parent.palette.buttonText
+                    implicitWidth: bar.theme.iconSize
+                    implicitHeight: bar.theme.iconSize
+                }
                 ToolTip.visible: hovered
                 ToolTip.text: qsTr("Next event")
                 onClicked: bar.replay.nextEvent()
@@ -154,6 +172,17 @@ ToolBar {
                             onTriggered: { exportDialog.format = modelData; exportDialog.open() }
                         }
                     }
+                }
+            }
+            Button {
+                objectName: "photosButton"
+                visible: bar.replay.active
+                text: qsTr("Photos…")
+                onClicked: { photosDialog.active = true; photosDialog.item.open() }
+                Loader { // made when first opened
+                    id: photosDialog
+                    active: false
+                    sourceComponent: PhotosDialog { theme: bar.theme; units: bar.units; survey: bar.photos; vehicleIndex: bar.vehicleIndex }
                 }
             }
             Button {

@@ -20,6 +20,8 @@ Page {
     // The server's history for the replay (the timeline's Server history… dialog).
     readonly property ServerHistoryRequest serverHistory: graph.serverHistory
     readonly property ComparisonController comparison: graph.comparison
+    // The replayed flight's photos (the timeline's Photos… dialog), drawn where they were taken.
+    readonly property PhotoSurvey photos: graph.photos
     // The energy profile and wind the in-flight advice prices with (the mission page chooses them).
     readonly property RouteEndurance endurance: graph.endurance
     readonly property Traffic traffic: graph.traffic   // manned traffic around (ADS-B)
@@ -212,6 +214,13 @@ Page {
                     visible: page.replaying
                     model: page.comparison.track
                 }
+                PhotoLayer {
+                    objectName: "photoLayer"
+                    anchors.fill: parent
+                    map: pane.map
+                    visible: page.replaying
+                    survey: page.photos
+                }
                 TrafficLayer {
                     objectName: "trafficLayer"
                     anchors.fill: parent
@@ -328,6 +337,9 @@ Page {
                 Layout.fillWidth: true
                 replay: page.replay
                 serverHistory: page.serverHistory
+                photos: page.photos
+                units: page.units
+                vehicleIndex: vehicleLayer.currentIndex
             }
             Loader {
                 objectName: "comparisonPanelLoader"

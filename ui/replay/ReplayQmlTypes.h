@@ -1,6 +1,7 @@
 #pragma once
 
 #include "ComparisonController.h"
+#include "PhotoSurvey.h"
 #include "RecordingSettings.h"
 #include "ReplayController.h"
 #include "ServerHistoryRequest.h"
@@ -49,6 +50,14 @@ struct ServerHistoryRequestForeign
     QML_FOREIGN(sortie::flightlog::ServerHistoryRequest)
     QML_NAMED_ELEMENT(ServerHistoryRequest)
     QML_UNCREATABLE("The application provides the server history request.")
+};
+
+struct PhotoSurveyForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::coverage::PhotoSurvey)
+    QML_NAMED_ELEMENT(PhotoSurvey)
+    QML_UNCREATABLE("The application provides the photo survey.")
 };
 
 struct RecordingSettingsForeign
