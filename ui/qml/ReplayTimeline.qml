@@ -82,6 +82,7 @@ ToolBar {
                 visible: bar.replay.active
                 // An icon: the fonts Debian ships by default have no glyph for ⏮.
                 Accessible.name: ToolTip.text
+                padding: 6
                 contentItem: TintedIcon {
                     name: "media-skip-backward"
                     color: parent.palette.buttonText
@@ -97,6 +98,7 @@ ToolBar {
                 visible: bar.replay.active
                 // An icon: the fonts Debian ships by default have no glyph for ⏭.
                 Accessible.name: ToolTip.text
+                padding: 6
                 contentItem: TintedIcon {
                     name: "media-skip-forward"
                     color: parent.palette.buttonText
@@ -110,6 +112,7 @@ ToolBar {
             ComboBox {
                 objectName: "speedBox"
                 visible: bar.replay.active
+                Layout.preferredWidth: 96 // "16×" fits; the implicit width is the style's 140
                 model: bar.replay.speeds
                 displayText: bar.replay.speed + "×"
                 delegate: ItemDelegate {
