@@ -169,6 +169,7 @@ ClientGraph::ClientGraph(QSettings *storage, Options options, QObject *parent)
     m_serverHistory = std::make_unique<flightlog::ServerHistoryRequest>(m_hciClient.get(), m_replay.get());
     m_serverHistory->setFleet(m_fleet.get());
     m_photos = std::make_unique<coverage::PhotoSurvey>(m_replay.get());
+    m_photos->setRouteOpener([document = m_missions->document()](mission::Route route, const QString &text) { document->open(std::move(route), text); });
 
     qCInfo(lcClientGraph).noquote() << "wired:" << wiring().join(QStringLiteral("; "));
 }
@@ -259,7 +260,7 @@ QStringList ClientGraph::wiring() const
           << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))
           << QStringLiteral("fleet recording: %1").arg(yesNo(m_fleetRecording != nullptr, "on", "off"))
           << QStringLiteral("server history: %1").arg(yesNo(m_fleet && m_serverHistory->fleet() == m_fleet.get(), "from the fleet", "no fleet"))
-          << QStringLiteral("photos: %1").arg(yesNo(m_photos != nullptr, "the replayed log's, placed and their coverage judged", "none"));
+          << QStringLiteral("photos: %1").arg(yesNo(m_photos != nullptr, "the replayed log's, placed and their coverage judged; the gaps re-flown in the mission editor", "none"));
     return lines;
 }
 

@@ -2825,6 +2825,14 @@
         <source>Write geotagged copies…</source>
         <translation>Georeferenzierte Kopien schreiben…</translation>
     </message>
+    <message>
+        <source>Re-fly the gaps</source>
+        <translation>Lücken nachfliegen</translation>
+    </message>
+    <message>
+        <source>A route of an area scan per hole, with the survey&apos;s camera, height and overlap, opened in the mission editor</source>
+        <translation>Eine Route mit einem Flächenscan pro Lücke, mit Kamera, Höhe und Überlappung der Vermessung, im Missionseditor geöffnet</translation>
+    </message>
 </context>
 <context>
     <name>PrivateFiles</name>
@@ -7112,6 +7120,21 @@ Ereignisse: %1
     <message>
         <source>%1 m² at %2, %3</source>
         <translation>%1 m² bei %2, %3</translation>
+    </message>
+    <message>
+        <source>No hole could be planned as an area scan: %1</source>
+        <translation>Keine Lücke ließ sich als Flächenscan planen: %1</translation>
+    </message>
+    <message>
+        <source>Re-fly the gaps</source>
+        <translation>Lücken nachfliegen</translation>
+    </message>
+    <message numerus="yes">
+        <source>&quot;Re-fly the gaps&quot; is open in the mission editor: %n area scan(s) at %1 m, %2/%3 % overlap.</source>
+        <translation>
+            <numerusform>„Lücken nachfliegen“ ist im Missionseditor geöffnet: %n Flächenscan auf %1 m, %2/%3 % Überlappung.</numerusform>
+            <numerusform>„Lücken nachfliegen“ ist im Missionseditor geöffnet: %n Flächenscans auf %1 m, %2/%3 % Überlappung.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -309,6 +309,13 @@
             <numerusform>%1 % of %2 m² seen by at least %3 images; forward overlap %4, side %5; %6 per pixel; %n holes.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>&quot;Re-fly the gaps&quot; is open in the mission editor: %n area scan(s) at %1 m, %2/%3 % overlap.</source>
+        <translation>
+            <numerusform>&quot;Re-fly the gaps&quot; is open in the mission editor: %n area scan at %1 m, %2/%3 % overlap.</numerusform>
+            <numerusform>&quot;Re-fly the gaps&quot; is open in the mission editor: %n area scans at %1 m, %2/%3 % overlap.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>sortie::flightlog::FlightLogWriter</name>

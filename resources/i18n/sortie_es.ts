@@ -2825,6 +2825,14 @@
         <source>Write geotagged copies…</source>
         <translation>Escribir copias georreferenciadas…</translation>
     </message>
+    <message>
+        <source>Re-fly the gaps</source>
+        <translation>Volver a volar los huecos</translation>
+    </message>
+    <message>
+        <source>A route of an area scan per hole, with the survey&apos;s camera, height and overlap, opened in the mission editor</source>
+        <translation>Una ruta con un barrido de área por hueco, con la cámara, la altura y el solape del levantamiento, abierta en el editor de misiones</translation>
+    </message>
 </context>
 <context>
     <name>PrivateFiles</name>
@@ -7112,6 +7120,21 @@ eventos:   %1
     <message>
         <source>%1 m² at %2, %3</source>
         <translation>%1 m² en %2, %3</translation>
+    </message>
+    <message>
+        <source>No hole could be planned as an area scan: %1</source>
+        <translation>Ningún hueco se pudo planificar como barrido de área: %1</translation>
+    </message>
+    <message>
+        <source>Re-fly the gaps</source>
+        <translation>Volver a volar los huecos</translation>
+    </message>
+    <message numerus="yes">
+        <source>&quot;Re-fly the gaps&quot; is open in the mission editor: %n area scan(s) at %1 m, %2/%3 % overlap.</source>
+        <translation>
+            <numerusform>«Volver a volar los huecos» está abierta en el editor de misiones: %n barrido de área a %1 m, solape %2/%3 %.</numerusform>
+            <numerusform>«Volver a volar los huecos» está abierta en el editor de misiones: %n barridos de área a %1 m, solape %2/%3 %.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

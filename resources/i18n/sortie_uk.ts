@@ -2834,6 +2834,14 @@
         <source>Write geotagged copies…</source>
         <translation>Записати копії з геопозицією…</translation>
     </message>
+    <message>
+        <source>Re-fly the gaps</source>
+        <translation>Перелетіти прогалини</translation>
+    </message>
+    <message>
+        <source>A route of an area scan per hole, with the survey&apos;s camera, height and overlap, opened in the mission editor</source>
+        <translation>Маршрут зі зйомкою площі на кожну прогалину, з камерою, висотою й перекриттям зйомки, відкритий у редакторі місій</translation>
+    </message>
 </context>
 <context>
     <name>PrivateFiles</name>
@@ -7148,6 +7156,22 @@ events:   %1
     <message>
         <source>%1 m² at %2, %3</source>
         <translation>%1 м² у %2, %3</translation>
+    </message>
+    <message>
+        <source>No hole could be planned as an area scan: %1</source>
+        <translation>Жодну прогалину не вдалося спланувати як зйомку площі: %1</translation>
+    </message>
+    <message>
+        <source>Re-fly the gaps</source>
+        <translation>Перелетіти прогалини</translation>
+    </message>
+    <message numerus="yes">
+        <source>&quot;Re-fly the gaps&quot; is open in the mission editor: %n area scan(s) at %1 m, %2/%3 % overlap.</source>
+        <translation>
+            <numerusform>«Перелетіти прогалини» відкрито в редакторі місій: %n зйомка площі на %1 м, перекриття %2/%3 %.</numerusform>
+            <numerusform>«Перелетіти прогалини» відкрито в редакторі місій: %n зйомки площі на %1 м, перекриття %2/%3 %.</numerusform>
+            <numerusform>«Перелетіти прогалини» відкрито в редакторі місій: %n зйомок площі на %1 м, перекриття %2/%3 %.</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,8 @@
 // photo layer draws each photo where the log had the vehicle, a card with a gap shows its hole on
 // the map, and the geotagged copies are written where asked.
 #include "ClientGraph.h"
+#include "MissionController.h"
+#include "RouteDocument.h"
 #include "GeotagTestSupport.h"
 #include "PhotoSurvey.h"
 #include "QuickScene.h"
@@ -166,6 +168,26 @@ private slots:
                                   Q_ARG(QGeoCoordinate, QGeoCoordinate(hole.centreLatitude, hole.centreLongitude)));
         QMetaObject::invokeMethod(layer, "holePosition", Q_RETURN_ARG(QPointF, drawn), Q_ARG(int, 0));
         QVERIFY(QLineF(expected, drawn).length() < 1.5);
+
+        // Re-fly the gaps: a route of an area scan per hole, open in the mission editor.
+        auto *refly = test::findItem(scene.view().contentItem(), QStringLiteral("reflyButton"));
+        QVERIFY(refly);
+        QTRY_VERIFY(refly->isVisible() && refly->isEnabled());
+        scene.grab();
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(refly).toPoint());
+        QTRY_VERIFY(!survey.reflyText().isEmpty());
+        const mission::Route &opened = graph.missions().document()->route();
+        QCOMPARE(opened.settings.name, QStringLiteral("Re-fly the gaps"));
+        QCOMPARE(int(opened.segments.size()), survey.holeCount());
+        const auto *scan = std::get_if<mission::AreaScan>(&opened.segments.front());
+        QVERIFY(scan);
+        QCOMPARE(scan->parameters.camera.name, test::kSurveyCamera);
+        QCOMPARE(scan->parameters.altitude, 60.0);
+        QCOMPARE(scan->parameters.frontOverlapPercent, 80.0);
+        auto *reflyText = test::findItem(scene.view().contentItem(), QStringLiteral("reflyText"));
+        QVERIFY(reflyText);
+        QTRY_VERIFY2(reflyText->property("text").toString().startsWith(QStringLiteral("\"Re-fly the gaps\" is open in the mission editor: 1 area scan(s) at 60 m, 80/70 % overlap.")),
+                     qPrintable(reflyText->property("text").toString()));
 
         // Back to live: the replay's photos go with it.
         graph.replay().close();

@@ -122,10 +122,30 @@ Dialog {
             color: dialog.survey.holeCount > 0 ? dialog.theme.problemText : dialog.theme.okText
             text: dialog.survey.coverageSummary
         }
+        RowLayout {
+            Layout.fillWidth: true
+            visible: dialog.survey.holeCount > 0
+            Label {
+                textFormat: Text.PlainText
+                Layout.fillWidth: true
+                text: qsTr("Holes, largest first (shaded on the map):")
+            }
+            Button {
+                objectName: "reflyButton"
+                text: qsTr("Re-fly the gaps")
+                enabled: dialog.survey.canRefly && !dialog.survey.busy
+                ToolTip.visible: hovered
+                ToolTip.text: qsTr("A route of an area scan per hole, with the survey's camera, height and overlap, opened in the mission editor")
+                onClicked: dialog.survey.reflyGaps()
+            }
+        }
         Label {
             textFormat: Text.PlainText
-            visible: dialog.survey.holeCount > 0
-            text: qsTr("Holes, largest first (shaded on the map):")
+            objectName: "reflyText"
+            visible: text.length > 0
+            Layout.fillWidth: true
+            wrapMode: Text.Wrap
+            text: dialog.survey.reflyText
         }
         ListView {
             objectName: "holeList"

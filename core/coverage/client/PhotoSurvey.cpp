@@ -3,6 +3,7 @@
 #include "Camera.h"
 #include "FlightLog.h"
 #include "PhotoShots.h"
+#include "ReflyRoute.h"
 #include "ReplayController.h"
 #include "Track.h"
 
@@ -12,6 +13,7 @@
 #include <QUrl>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <algorithm>
 #include <cmath>
 
 Q_LOGGING_CATEGORY(lcPhotoSurvey, "sortie.coverage.survey")
@@ -147,6 +149,8 @@ void PhotoSurvey::match(int vehicleIndex)
     m_coverage.reset();
     m_coverageError.clear();
     m_written.clear();
+    m_reflyText.clear();
+    emit reflyTextChanged();
     if (log.isEmpty() || m_folder.isEmpty()) {
         m_error = log.isEmpty() ? tr("Open the flight's log first.") : tr("Choose the folder of the flight's photos.");
         emit resultChanged();
@@ -213,8 +217,43 @@ void PhotoSurvey::clear()
     m_coverageError.clear();
     m_error.clear();
     m_written.clear();
+    m_reflyText.clear();
     emit resultChanged();
     emit writtenChanged();
+    emit reflyTextChanged();
+}
+
+void PhotoSurvey::reflyGaps()
+{
+    if (!m_coverage || m_coverage->holes.empty() || !m_openRoute)
+        return;
+    const auto camera = mission::builtInCamera(m_camera);
+    if (!camera)
+        return;
+    ReflyOptions options;
+    options.camera = *camera;
+    if (m_coverage->heightAboveGround && m_coverage->heightAboveGround->count)
+        options.heightAboveGround = std::round(m_coverage->heightAboveGround->p50);
+    if (m_coverage->forwardOverlap && m_coverage->forwardOverlap->count)
+        options.frontOverlapPercent = std::clamp(std::round(m_coverage->forwardOverlap->p50), 50.0, 95.0);
+    if (m_coverage->sideOverlap && m_coverage->sideOverlap->count)
+        options.sideOverlapPercent = std::clamp(std::round(m_coverage->sideOverlap->p50), 30.0, 95.0);
+    options.legBearing = m_coverage->legBearing;
+    QStringList notes;
+    auto route = reflyRoute(m_coverage->holes, options, &notes);
+    if (!route) {
+        m_reflyText = tr("No hole could be planned as an area scan: %1").arg(notes.join(QLatin1Char(' ')));
+    } else {
+        const int scans = int(route->segments.size());
+        m_openRoute(std::move(*route), tr("Re-fly the gaps"));
+        m_reflyText = tr("\"Re-fly the gaps\" is open in the mission editor: %n area scan(s) at %1 m, %2/%3 % overlap.", nullptr, scans)
+                          .arg(options.heightAboveGround)
+                          .arg(options.frontOverlapPercent)
+                          .arg(options.sideOverlapPercent);
+        if (!notes.isEmpty())
+            m_reflyText += QLatin1Char(' ') + notes.join(QLatin1Char(' '));
+    }
+    emit reflyTextChanged();
 }
 
 QString PhotoSurvey::summary() const

@@ -2,12 +2,14 @@
 
 #include "CoverageMap.h"
 #include "Geotagger.h"
+#include "Route.h"
 
 #include <QFutureWatcher>
 #include <QObject>
 #include <QPointer>
 #include <QStringList>
 
+#include <functional>
 #include <optional>
 
 namespace sortie::flightlog {
@@ -39,6 +41,8 @@ class PhotoSurvey : public QObject
     Q_PROPERTY(int placedCount READ placedCount NOTIFY resultChanged)
     Q_PROPERTY(int holeCount READ holeCount NOTIFY resultChanged)
     Q_PROPERTY(QString written READ written NOTIFY writtenChanged)
+    Q_PROPERTY(bool canRefly READ canRefly NOTIFY resultChanged)
+    Q_PROPERTY(QString reflyText READ reflyText NOTIFY reflyTextChanged)
 
 public:
     explicit PhotoSurvey(flightlog::ReplayController *replay, QObject *parent = nullptr);
@@ -62,6 +66,13 @@ public:
     int placedCount() const { return m_placed ? int(m_placed->tagged.size()) : 0; }
     int holeCount() const { return m_coverage ? int(m_coverage->holes.size()) : 0; }
     QString written() const { return m_written; }
+    bool canRefly() const { return holeCount() > 0 && bool(m_openRoute); }
+    QString reflyText() const { return m_reflyText; }
+
+    // Where a route made here goes: the mission editor's document (the graph hands it in, so this
+    // room reaches no client). Without one, nothing is re-flown.
+    using RouteOpener = std::function<void(mission::Route route, const QString &undoText)>;
+    void setRouteOpener(RouteOpener opener) { m_openRoute = std::move(opener); emit resultChanged(); }
 
     // For the photo layer: where each placed photo was taken, and the holes.
     const std::vector<geotag::TaggedPhoto> &placedPhotos() const;
@@ -75,6 +86,10 @@ public:
     Q_INVOKABLE void writeCopies(const QString &folderOrUrl);
     // Forgets the outcome (the replay closed, another log opened).
     Q_INVOKABLE void clear();
+    // "Re-fly the gaps": a route of an area scan per hole (reflyRoute: the camera, the photos'
+    // median height, the measured overlap, the legs' bearing) opened in the mission editor, where
+    // every rule checks it before it can be uploaded. `reflyText` says what was opened, or why not.
+    Q_INVOKABLE void reflyGaps();
 
     struct Outcome
     {
@@ -91,6 +106,7 @@ signals:
     void busyChanged();
     void resultChanged();
     void writtenChanged();
+    void reflyTextChanged();
 
 private:
     void setBusy(bool busy);
@@ -105,6 +121,8 @@ private:
     std::optional<geotag::GeotagReport> m_placed;
     std::optional<CoverageReport> m_coverage;
     QString m_coverageError;
+    RouteOpener m_openRoute;
+    QString m_reflyText;
     QFutureWatcher<Outcome> m_matching;
     QFutureWatcher<QString> m_writing;
 };
