@@ -470,14 +470,7 @@ int coveragePhotos(const QStringList &in, QTextStream &out, QTextStream &err)
         if (report->holes.empty()) {
             reflyText = QStringLiteral("no hole: nothing to re-fly, %1 not written\n").arg(reflyPath);
         } else {
-            coverage::ReflyOptions r;
-            r.camera = options.camera;
-            r.heightAboveGround = std::round(report->heightAboveGround->p50);
-            if (report->forwardOverlap && report->forwardOverlap->count)
-                r.frontOverlapPercent = std::clamp(std::round(report->forwardOverlap->p50), 50.0, 95.0);
-            if (report->sideOverlap && report->sideOverlap->count)
-                r.sideOverlapPercent = std::clamp(std::round(report->sideOverlap->p50), 30.0, 95.0);
-            r.legBearing = report->legBearing;
+            const coverage::ReflyOptions r = coverage::reflyOptionsFor(*report, options.camera);
             QStringList notes;
             const auto route = coverage::reflyRoute(report->holes, r, &notes);
             for (const QString &n : notes)

@@ -9,6 +9,21 @@
 
 namespace sortie::coverage {
 
+ReflyOptions reflyOptionsFor(const CoverageReport &report, const mission::Camera &camera)
+{
+    ReflyOptions options;
+    options.camera = camera;
+    auto measured = [](const std::optional<Spread> &s) { return s && s->count > 0; };
+    if (measured(report.heightAboveGround))
+        options.heightAboveGround = std::round(report.heightAboveGround->p50);
+    if (measured(report.forwardOverlap))
+        options.frontOverlapPercent = std::clamp(std::round(report.forwardOverlap->p50), 50.0, 95.0);
+    if (measured(report.sideOverlap))
+        options.sideOverlapPercent = std::clamp(std::round(report.sideOverlap->p50), 30.0, 95.0);
+    options.legBearing = report.legBearing;
+    return options;
+}
+
 std::optional<mission::Route> reflyRoute(const std::vector<Hole> &holes, const ReflyOptions &options, QStringList *notes)
 {
     mission::Route route;

@@ -25,6 +25,11 @@ struct ReflyOptions
     std::optional<double> legBearing; // degrees; absent: each scan's own best
 };
 
+// What the survey the report judged was flown with: its camera, the photos' median height above the
+// ground, the measured forward and side overlap (kept within 50-95 % and 30-95 %), the legs' bearing;
+// the defaults where the report measured nothing.
+ReflyOptions reflyOptionsFor(const CoverageReport &report, const mission::Camera &camera);
+
 // "Re-fly the gaps": a route of one area scan per hole (its scan ring, largest hole first), each
 // planned as the vehicle will fly it. A hole whose scan cannot be planned is left out with the
 // planner's reason in *notes. nullopt when no hole is left to fly.

@@ -75,9 +75,10 @@ std::optional<double> coordinate(const QStringView text, double limit)
     return v;
 }
 
-// The value of a sampled field at `t`, linear between the samples around it when they are at most
-// maxGap apart (the sample itself when one is at t); NaN otherwise.
-double valueAt(const std::vector<TelemetrySample> &series, int64_t t, int64_t maxGap)
+// The value of a sampled field at `t`, between the samples around it when they are at most maxGap
+// apart (the sample itself when one is at t), by `mix(before, after, fraction)`; NaN otherwise.
+template<class Mix>
+double sampledAt(const std::vector<TelemetrySample> &series, int64_t t, int64_t maxGap, Mix mix)
 {
     const auto after = std::lower_bound(series.begin(), series.end(), t, [](const TelemetrySample &s, int64_t time) { return s.time < time; });
     if (after != series.end() && after->time == t)
@@ -87,25 +88,22 @@ double valueAt(const std::vector<TelemetrySample> &series, int64_t t, int64_t ma
     const auto before = after - 1;
     if (after->time - before->time > maxGap || std::isnan(before->value) || std::isnan(after->value))
         return std::nan("");
-    const double f = double(t - before->time) / double(after->time - before->time);
-    return before->value + f * (after->value - before->value);
+    return mix(before->value, after->value, double(t - before->time) / double(after->time - before->time));
 }
 
-// A heading at t, between the samples around it the short way round (359° and 1° meet at 0°).
+// Linear.
+double valueAt(const std::vector<TelemetrySample> &series, int64_t t, int64_t maxGap)
+{
+    return sampledAt(series, t, maxGap, [](double a, double b, double f) { return a + f * (b - a); });
+}
+
+// A heading, the short way round (359° and 1° meet at 0°).
 double headingAt(const std::vector<TelemetrySample> &series, int64_t t, int64_t maxGap)
 {
-    const auto after = std::lower_bound(series.begin(), series.end(), t, [](const TelemetrySample &s, int64_t time) { return s.time < time; });
-    if (after != series.end() && after->time == t)
-        return after->value;
-    if (after == series.begin() || after == series.end())
-        return std::nan("");
-    const auto before = after - 1;
-    if (after->time - before->time > maxGap || std::isnan(before->value) || std::isnan(after->value))
-        return std::nan("");
-    const double f = double(t - before->time) / double(after->time - before->time);
-    const double turn = std::remainder(after->value - before->value, 360.0);
-    const double h = std::fmod(before->value + f * turn, 360.0);
-    return h < 0 ? h + 360 : h;
+    return sampledAt(series, t, maxGap, [](double a, double b, double f) {
+        const double h = std::fmod(a + f * std::remainder(b - a, 360.0), 360.0);
+        return h < 0 ? h + 360 : h;
+    });
 }
 
 // The last value at or before t (the home's altitude holds until it is reported again).

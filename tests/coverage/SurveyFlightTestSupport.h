@@ -1,6 +1,7 @@
 #pragma once
 // The survey a vehicle flies in the coverage tests' heads (tst_coveragecli, tst_photosurvey), as
 // its flight log and its camera's photos will hold it.
+#include "GeotagTestSupport.h"
 #include "LocalTangentPlane.h"
 
 #include <QString>
@@ -51,5 +52,28 @@ inline SurveyFlight flySurvey()
     return f;
 }
 
+
+// The survey's log (`folder`/survey.sortielog, vehicle EMU-101) and its photos on two cards:
+// `folder`/card with every photo, `folder`/card-with-a-gap without the middle three legs' photos 6
+// to 10 (72 to 120 m along). Empty, or what went wrong.
+inline QString writeSurvey(const QString &folder, const SurveyFlight &flight)
+{
+    const QDir dir(folder);
+    const QString error = writeFlightLog(dir.filePath(QStringLiteral("survey.sortielog")), {{QStringLiteral("VCI:emu"), QStringLiteral("EMU-101"), flight.samples}});
+    if (!error.isEmpty())
+        return error;
+    const QDir card(dir.filePath(QStringLiteral("card"))), gappy(dir.filePath(QStringLiteral("card-with-a-gap")));
+    if (!QDir().mkpath(card.path()) || !QDir().mkpath(gappy.path()))
+        return QStringLiteral("cannot make the cards' folders in ") + folder;
+    for (size_t i = 0; i < flight.photos.size(); ++i) {
+        const QString name = QStringLiteral("DJI_%1.JPG").arg(i, 4, 10, QLatin1Char('0'));
+        writeJpeg(card.filePath(name), int(i));
+        setCameraTags(card.filePath(name), takenAt(flight.photos[i].first));
+        const int along = int(i % 17), leg = flight.photos[i].second;
+        if (!(leg >= 1 && leg <= 3 && along >= 6 && along <= 10) && !QFile::copy(card.filePath(name), gappy.filePath(name)))
+            return QStringLiteral("cannot copy ") + name;
+    }
+    return {};
+}
 
 } // namespace sortie::test

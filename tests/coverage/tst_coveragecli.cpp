@@ -3,6 +3,7 @@
 // the overlap it flew measured, a hole where photos are missing, the GeoTIFF written, and each
 // mistake in the command named.
 #include "GeotagTestSupport.h"
+#include "SortieLogRun.h"
 #include "LocalTangentPlane.h"
 #include "SurveyFlightTestSupport.h"
 #include "MissionFiles.h"
@@ -18,34 +19,9 @@
 #include <ogr_spatialref.h>
 
 using namespace sortie;
-
-namespace {
-
-struct Run
-{
-    int exitCode = -1;
-    QByteArray out, err;
-};
-
-Run sortieLog(const QStringList &arguments)
-{
-    QProcess p;
-    p.start(QStringLiteral(SORTIE_LOG_PROGRAM), arguments);
-    Run r;
-    if (!p.waitForFinished(60000))
-        return r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
-
-QString describe(const Run &r)
-{
-    return QStringLiteral("exit %1\nstdout: %2\nstderr: %3").arg(r.exitCode).arg(QString::fromUtf8(r.out), QString::fromUtf8(r.err));
-}
-
-} // namespace
+using sortie::test::describe;
+using sortie::test::Run;
+using sortie::test::sortieLog;
 
 class TestCoverageCli : public QObject
 {
@@ -59,27 +35,15 @@ private slots:
     {
         QVERIFY(m_dir.isValid());
         const test::SurveyFlight flight = test::flySurvey();
+        QCOMPARE(test::writeSurvey(m_dir.path(), flight), QString());
         m_log = m_dir.filePath(QStringLiteral("survey.sortielog"));
-        QCOMPARE(test::writeFlightLog(m_log, {{QStringLiteral("VCI:emu"), QStringLiteral("EMU-101"), flight.samples}}), QString());
+        m_photos = m_dir.filePath(QStringLiteral("card"));
+        m_gappy = m_dir.filePath(QStringLiteral("card-with-a-gap"));
         std::vector<test::GpxPoint> gpx;
         for (const auto &s : flight.samples)
             gpx.push_back({int64_t(s[0]), s[1], s[2], s[3]});
         m_gpx = m_dir.filePath(QStringLiteral("survey.gpx"));
         test::writeGpx(m_gpx, gpx);
-        m_photos = m_dir.filePath(QStringLiteral("card"));
-        m_gappy = m_dir.filePath(QStringLiteral("card-with-a-gap"));
-        QVERIFY(QDir().mkpath(m_photos) && QDir().mkpath(m_gappy));
-        for (size_t i = 0; i < flight.photos.size(); ++i) {
-            const QString name = QStringLiteral("DJI_%1.JPG").arg(i, 4, 10, QLatin1Char('0'));
-            const QString path = QDir(m_photos).filePath(name);
-            test::writeJpeg(path, int(i));
-            test::setCameraTags(path, test::takenAt(flight.photos[i].first));
-            // The middle three legs' photos 6 to 10 (72 to 120 m along) missing from the second card.
-            const int along = int(i % 17);
-            const int leg = flight.photos[i].second;
-            if (!(leg >= 1 && leg <= 3 && along >= 6 && along <= 10))
-                QVERIFY(QFile::copy(path, QDir(m_gappy).filePath(name)));
-        }
     }
 
     void aSurveyFlownAsPlannedHasNoHole()

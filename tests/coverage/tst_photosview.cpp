@@ -22,24 +22,6 @@ Q_IMPORT_QML_PLUGIN(Sortie_UiPlugin)
 
 using namespace sortie;
 
-namespace {
-
-const char *const kTelemetryPage = R"(
-    import QtQuick
-    import Sortie.Ui
-    TelemetryPage {
-        units: DisplayUnits {}
-        theme: Theme {}
-    }
-)";
-
-QPointF centre(QQuickItem *item)
-{
-    return item->mapToScene(QPointF(item->width() / 2, item->height() / 2));
-}
-
-} // namespace
-
 class TestPhotosView : public QObject
 {
     Q_OBJECT
@@ -53,20 +35,10 @@ private slots:
         test::useSoftwareRendering();
         QVERIFY(m_dir.isValid());
         const test::SurveyFlight flight = test::flySurvey();
+        QCOMPARE(test::writeSurvey(m_dir.path(), flight), QString());
         m_log = m_dir.filePath(QStringLiteral("survey.sortielog"));
-        QCOMPARE(test::writeFlightLog(m_log, {{QStringLiteral("VCI:emu"), QStringLiteral("EMU-101"), flight.samples}}), QString());
         m_photos = m_dir.filePath(QStringLiteral("card"));
         m_gappy = m_dir.filePath(QStringLiteral("card-with-a-gap"));
-        QVERIFY(QDir().mkpath(m_photos) && QDir().mkpath(m_gappy));
-        for (size_t i = 0; i < flight.photos.size(); ++i) {
-            const QString name = QStringLiteral("DJI_%1.JPG").arg(i, 4, 10, QLatin1Char('0'));
-            const QString path = QDir(m_photos).filePath(name);
-            test::writeJpeg(path, int(i));
-            test::setCameraTags(path, test::takenAt(flight.photos[i].first));
-            const int along = int(i % 17), leg = flight.photos[i].second;
-            if (!(leg >= 1 && leg <= 3 && along >= 6 && along <= 10))
-                QVERIFY(QFile::copy(path, QDir(m_gappy).filePath(name)));
-        }
     }
 
     void placeJudgeAndWrite()
@@ -74,7 +46,7 @@ private slots:
         QSettings storage(m_dir.filePath(QStringLiteral("settings.ini")), QSettings::IniFormat);
         client::ClientGraph graph(&storage, {});
         coverage::PhotoSurvey &survey = graph.photos();
-        test::QuickScene scene(kTelemetryPage, QSize(1280, 800), {{QStringLiteral("graph"), QVariant::fromValue(&graph)}});
+        test::QuickScene scene(test::kTelemetryPageQml, QSize(1280, 800), {{QStringLiteral("graph"), QVariant::fromValue(&graph)}});
         QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
         auto *photosButton = scene.find<QQuickItem>(QStringLiteral("photosButton"));
         QVERIFY(photosButton && !photosButton->isVisible()); // nothing replayed, no photos to place
@@ -90,7 +62,7 @@ private slots:
 
         // The operator's click on Photos… opens the dialog.
         scene.grab();
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(photosButton).toPoint());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(photosButton).toPoint());
         QQuickItem *dialogItem = nullptr;
         QTRY_VERIFY((dialogItem = test::findItem(scene.view().contentItem(), QStringLiteral("placePhotosButton"))) != nullptr);
         auto *folderField = test::findItem(scene.view().contentItem(), QStringLiteral("photoFolderField"));
@@ -107,7 +79,7 @@ private slots:
         auto *place = test::findItem(scene.view().contentItem(), QStringLiteral("placePhotosButton"));
         QTRY_VERIFY(place->isEnabled());
         scene.grab();
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(place).toPoint());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(place).toPoint());
         QTRY_VERIFY(survey.isBusy() || survey.isMatched());
         QTRY_VERIFY_WITH_TIMEOUT(!survey.isBusy(), 30000);
         QVERIFY2(survey.errorString().isEmpty(), qPrintable(survey.errorString()));
@@ -154,7 +126,7 @@ private slots:
         folderField->setProperty("text", m_gappy);
         QMetaObject::invokeMethod(folderField, "editingFinished");
         scene.grab();
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(place).toPoint());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(place).toPoint());
         QTRY_VERIFY_WITH_TIMEOUT(survey.isMatched() && !survey.isBusy(), 30000);
         QCOMPARE(survey.placedCount(), 70);
         QVERIFY(survey.holeCount() >= 1);
@@ -174,7 +146,7 @@ private slots:
         QVERIFY(refly);
         QTRY_VERIFY(refly->isVisible() && refly->isEnabled());
         scene.grab();
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(refly).toPoint());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(refly).toPoint());
         QTRY_VERIFY(!survey.reflyText().isEmpty());
         const mission::Route &opened = graph.missions().document()->route();
         QCOMPARE(opened.settings.name, QStringLiteral("Re-fly the gaps"));

@@ -38,24 +38,10 @@ using namespace sortie;
 
 namespace {
 
-// The telemetry page with the client graph's controllers, as Main.qml hands them over.
-const char *const kTelemetryPage = R"(
-    import QtQuick
-    import Sortie.Ui
-    TelemetryPage {
-        units: DisplayUnits {}
-        theme: Theme {}
-    }
-)";
-
+// The telemetry page's properties: the client graph, as Main.qml hands it over.
 QVariantMap telemetryPageProperties(client::ClientGraph &graph)
 {
     return {{QStringLiteral("graph"), QVariant::fromValue(&graph)}};
-}
-
-QPointF centre(QQuickItem *item)
-{
-    return item->mapToScene(QPointF(item->width() / 2, item->height() / 2));
 }
 
 } // namespace
@@ -75,7 +61,7 @@ private slots:
         client::ClientGraph graph(&storage, {});
         flightlog::ReplayController &replay = graph.replay();
         flightlog::ComparisonController &comparison = graph.comparison();
-        test::QuickScene scene(kTelemetryPage, QSize(1280, 800), telemetryPageProperties(graph));
+        test::QuickScene scene(test::kTelemetryPageQml, QSize(1280, 800), telemetryPageProperties(graph));
         QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
         QVERIFY(scene.find<QQuickItem>(QStringLiteral("openLogButton")));
         auto *banner = scene.find<QQuickItem>(QStringLiteral("replayBanner"));
@@ -122,12 +108,12 @@ private slots:
         QVERIFY(play && play->isVisible());
         const qint64 before = replay.position();
         scene.grab(); // lays the timeline out (polish) before finding where its buttons are
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(play).toPoint());
-        QVERIFY2(replay.isPlaying(), qPrintable(QStringLiteral("play at %1,%2 in %3x%4; picked: %5").arg(centre(play).x()).arg(centre(play).y())
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(play).toPoint());
+        QVERIFY2(replay.isPlaying(), qPrintable(QStringLiteral("play at %1,%2 in %3x%4; picked: %5").arg(test::sceneCentre(play).x()).arg(test::sceneCentre(play).y())
                                                   .arg(scene.view().width()).arg(scene.view().height())
-                                                  .arg(scene.root()->childAt(centre(play).x(), centre(play).y()) ? scene.root()->childAt(centre(play).x(), centre(play).y())->metaObject()->className() : "none")));
+                                                  .arg(scene.root()->childAt(test::sceneCentre(play).x(), test::sceneCentre(play).y()) ? scene.root()->childAt(test::sceneCentre(play).x(), test::sceneCentre(play).y())->metaObject()->className() : "none")));
         QTRY_VERIFY(replay.position() > before + 200);
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(play).toPoint());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(play).toPoint());
         QVERIFY(!replay.isPlaying());
         QTRY_VERIFY(expectOnMap(replay.position()) < 1.5);
 
@@ -145,7 +131,7 @@ private slots:
         replay.seek(replay.start());
         auto *next = scene.find<QQuickItem>(QStringLiteral("nextEventButton"));
         QVERIFY(next && next->isVisible());
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(next).toPoint());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(next).toPoint());
         const int first = replay.events()->nextAfter(replay.start());
         QVERIFY(first >= 0);
         QTRY_COMPARE(replay.position(), replay.events()->eventAt(first)->time);
@@ -182,7 +168,7 @@ private slots:
 
         // Back to live: the banner goes, the replayed vehicles with it.
         auto *close = scene.find<QQuickItem>(QStringLiteral("closeLogButton"));
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(close).toPoint());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(close).toPoint());
         QTRY_VERIFY(!banner->isVisible());
         QVERIFY(!replay.isActive());
     }
@@ -231,14 +217,14 @@ private slots:
         fileBox->setProperty("value", 100);
         folderBox->setProperty("value", 50);
         scene.grab();
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(apply).toPoint());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(apply).toPoint());
         QTRY_VERIFY(error->isVisible());
         QVERIFY2(error->property("text").toString().contains(QStringLiteral("at least one whole log")), qPrintable(error->property("text").toString()));
         QVERIFY(!storage.contains(QStringLiteral("flightlog/maxFileMB")));
         QCOMPARE(recorder.limits().maxFileBytes, qint64(256) << 20);
         // A good change: in force at once, saved, the error gone.
         folderBox->setProperty("value", 0);
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(apply).toPoint());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(apply).toPoint());
         QTRY_VERIFY(!error->isVisible());
         QCOMPARE(recorder.limits().maxFileBytes, qint64(100) << 20);
         QCOMPARE(recorder.limits().maxFolderBytes, qint64(0));
@@ -291,12 +277,12 @@ private slots:
         live->takeoff(10);
         QTRY_VERIFY_WITH_TIMEOUT(live->altitudeAgl() > 4, 15000);
 
-        test::QuickScene scene(kTelemetryPage, QSize(1280, 800), telemetryPageProperties(graph));
+        test::QuickScene scene(test::kTelemetryPageQml, QSize(1280, 800), telemetryPageProperties(graph));
         QVERIFY2(scene.isReady(), qPrintable(scene.errors()));
         scene.grab();
         auto *button = scene.find<QQuickItem>(QStringLiteral("serverHistoryButton"));
         QVERIFY(button && button->isVisible());
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(button).toPoint());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(button).toPoint());
         auto *dialog = scene.find<QObject>(QStringLiteral("serverHistoryDialog"));
         QVERIFY(dialog);
         QTRY_VERIFY(dialog->property("opened").toBool());
@@ -330,7 +316,7 @@ private slots:
         QSignalSpy progress(&history, &flightlog::ServerHistoryRequest::progressChanged);
         QSignalSpy opened(&history, &flightlog::ServerHistoryRequest::opened);
         scene.grab();
-        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, centre(fetch).toPoint());
+        QTest::mouseClick(&scene.view(), Qt::LeftButton, {}, test::sceneCentre(fetch).toPoint());
         QVERIFY(history.isBusy());
         QVERIFY2(opened.wait(15000), qPrintable(history.errorString()));
         QVERIFY(progress.count() >= 1);

@@ -9,6 +9,7 @@
 #include "FlightLogWriter.h"
 #include "FlightRecorder.h"
 #include "FlightLogTestSupport.h"
+#include "SortieLogRun.h"
 #include "HciClient.h"
 #include "HciServer.h"
 #include "HciSession.h"
@@ -38,6 +39,8 @@
 using namespace sortie;
 using flightlog::FlightLog;
 using vehicle::Vehicle;
+using test::Run;
+using test::sortieLog;
 
 namespace {
 
@@ -62,32 +65,6 @@ struct Sim
     sim::SimWorld world;
     sim::HciServer server;
 };
-
-struct Run
-{
-    int exitCode = -1;
-    QByteArray out, err;
-};
-
-// A sortie-log command that ends by itself. `configHome`: where it keeps its settings (the
-// certificates it remembers), a test's own folder rather than the user's.
-Run sortieLog(const QStringList &arguments, const QString &configHome = {})
-{
-    QProcess p;
-    if (!configHome.isEmpty()) {
-        QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-        env.insert(QStringLiteral("XDG_CONFIG_HOME"), configHome);
-        p.setProcessEnvironment(env);
-    }
-    p.start(QStringLiteral(SORTIE_LOG_PROGRAM), arguments);
-    Run r;
-    if (!p.waitForFinished(60000))
-        return r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
 
 // A route of four waypoints around a start point, 12 m above home: 20 m north, 30 m east, 20 m south.
 std::vector<mission::GeoPoint> boxFrom(const QGeoCoordinate &home)

@@ -2,6 +2,7 @@
 // its exit status (0 every photo tagged, 2 some not, 1 bad usage or input), its JSON, its messages
 // naming what is wrong, the copies it writes, and the originals it leaves alone.
 #include "GeotagTestSupport.h"
+#include "SortieLogRun.h"
 
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -11,34 +12,9 @@
 #include <QTest>
 
 using namespace sortie;
-
-namespace {
-
-struct Run
-{
-    int exitCode = -1;
-    QByteArray out, err;
-};
-
-Run sortieLog(const QStringList &arguments)
-{
-    QProcess p;
-    p.start(QStringLiteral(SORTIE_LOG_PROGRAM), arguments);
-    Run r;
-    if (!p.waitForFinished(60000))
-        return r;
-    r.exitCode = p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-    r.out = p.readAllStandardOutput();
-    r.err = p.readAllStandardError();
-    return r;
-}
-
-QString describe(const Run &r)
-{
-    return QStringLiteral("exit %1\nstdout: %2\nstderr: %3").arg(r.exitCode).arg(QString::fromUtf8(r.out), QString::fromUtf8(r.err));
-}
-
-} // namespace
+using sortie::test::describe;
+using sortie::test::Run;
+using sortie::test::sortieLog;
 
 class TestGeotagCli : public QObject
 {

@@ -64,6 +64,20 @@ QPalette darkPalette()
     return dark;
 }
 
+QPointF sceneCentre(QQuickItem *item)
+{
+    return item->mapToScene(QPointF(item->width() / 2, item->height() / 2));
+}
+
+const char *const kTelemetryPageQml = R"(
+    import QtQuick
+    import Sortie.Ui
+    TelemetryPage {
+        units: DisplayUnits {}
+        theme: Theme {}
+    }
+)";
+
 QQuickItem *findItem(QQuickItem *root, const QString &name)
 {
     if (!root || root->objectName() == name)

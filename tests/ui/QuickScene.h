@@ -47,6 +47,13 @@ private:
 // items of the Repeater's parent, not QObject children, so findChild misses them. Null when none.
 QQuickItem *findItem(QQuickItem *root, const QString &name);
 
+// Where an item's middle is in its scene: where a test clicks it.
+QPointF sceneCentre(QQuickItem *item);
+
+// The fly view (TelemetryPage) alone, as Main.qml makes it: its initial property "graph" is the
+// ClientGraph the test made (tst_replayui, tst_photosview).
+extern const char *const kTelemetryPageQml;
+
 // How far two colours are apart (largest channel difference).
 int colourDistance(QRgb a, QRgb b);
 // Number of distinct colours in an image (up to `limit`): a blank image has one.

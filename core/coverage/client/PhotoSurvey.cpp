@@ -13,7 +13,6 @@
 #include <QUrl>
 #include <QtConcurrent/QtConcurrentRun>
 
-#include <algorithm>
 #include <cmath>
 
 Q_LOGGING_CATEGORY(lcPhotoSurvey, "sortie.coverage.survey")
@@ -230,15 +229,7 @@ void PhotoSurvey::reflyGaps()
     const auto camera = mission::builtInCamera(m_camera);
     if (!camera)
         return;
-    ReflyOptions options;
-    options.camera = *camera;
-    if (m_coverage->heightAboveGround && m_coverage->heightAboveGround->count)
-        options.heightAboveGround = std::round(m_coverage->heightAboveGround->p50);
-    if (m_coverage->forwardOverlap && m_coverage->forwardOverlap->count)
-        options.frontOverlapPercent = std::clamp(std::round(m_coverage->forwardOverlap->p50), 50.0, 95.0);
-    if (m_coverage->sideOverlap && m_coverage->sideOverlap->count)
-        options.sideOverlapPercent = std::clamp(std::round(m_coverage->sideOverlap->p50), 30.0, 95.0);
-    options.legBearing = m_coverage->legBearing;
+    const ReflyOptions options = reflyOptionsFor(*m_coverage, *camera);
     QStringList notes;
     auto route = reflyRoute(m_coverage->holes, options, &notes);
     if (!route) {
