@@ -194,6 +194,14 @@ private slots:
         QVERIFY2(survey.coverageSummary().startsWith(QStringLiteral("Coverage not judged: no photo has")), qPrintable(survey.coverageSummary()));
         survey.writeCopies(m_dir.filePath(QStringLiteral("none")));
         QCOMPARE(survey.written(), QStringLiteral("No photo is placed: nothing to write."));
+        // Back to live while photos are being placed: what arrives afterwards is not shown.
+        survey.setOffsetSeconds(0);
+        survey.match(0);
+        QVERIFY(survey.isBusy());
+        graph.replay().close();
+        QTRY_VERIFY_WITH_TIMEOUT(!survey.isBusy(), 30000);
+        QVERIFY(!survey.isMatched());
+        QCOMPARE(survey.placedCount(), 0);
     }
 };
 

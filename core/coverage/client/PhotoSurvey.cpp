@@ -161,12 +161,18 @@ void PhotoSurvey::match(int vehicleIndex)
     emit writtenChanged();
     setBusy(true);
     qCInfo(lcPhotoSurvey).noquote() << "placing" << m_folder << "on" << log << "vehicle" << vehicleIndex;
+    m_matchedLog = log;
     m_matching.setFuture(QtConcurrent::run(survey, log, vehicleIndex, m_folder, m_camera, m_offsetSeconds));
 }
 
 void PhotoSurvey::finished()
 {
     Outcome o = m_matching.result();
+    if (!m_replay || m_replay->path() != m_matchedLog) { // the log closed or changed meanwhile: not this flight's
+        setBusy(false);
+        clear();
+        return;
+    }
     m_error = o.error;
     m_vehicle = o.vehicle;
     m_files = o.files;

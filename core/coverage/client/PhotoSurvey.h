@@ -117,6 +117,7 @@ private:
     double m_offsetSeconds = 0;
     bool m_busy = false;
     QString m_error, m_vehicle, m_written;
+    QString m_matchedLog; // the log a running match reads
     int m_files = 0;
     std::optional<geotag::GeotagReport> m_placed;
     std::optional<CoverageReport> m_coverage;
