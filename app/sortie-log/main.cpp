@@ -56,13 +56,15 @@ const char *const kUsage =
     "  compare LOG ROUTE_FILE --vehicle NAME [--route N] [--json]\n"
     "      The flown track against the planned route (.sortie, .plan, .waypoints): per leg the\n"
     "      largest and mean cross-track and altitude deviation, when each waypoint was reached.\n"
-    "  geotag PHOTO_DIR --track LOG_OR_GPX --out DIR [--offset SECONDS] [--vehicle ID] [--json]\n"
-    "      Places each photo on the track (a flight log, or a GPX file) by its time: EXIF\n"
-    "      DateTimeOriginal, the camera's clock taken as UTC unless OffsetTimeOriginal says otherwise,\n"
-    "      plus --offset. Writes geotagged copies into DIR (the originals are never changed), and\n"
+    "  geotag PHOTO_DIR --track LOG_OR_GPX --out DIR [--offset SECONDS] [--by-time] [--vehicle ID] [--json]\n"
+    "      Places each photo on the track (a flight log, or a GPX file). A log that holds the\n"
+    "      vehicle's photo events pairs the photos with them (the camera clock's offset found and said,\n"
+    "      each event without a photo listed as missing, each photo without an event named); else, or\n"
+    "      with --by-time, by its time: EXIF DateTimeOriginal, the camera's clock taken as UTC unless\n"
+    "      OffsetTimeOriginal says otherwise, plus --offset. Writes geotagged copies into DIR (the originals are never changed), and\n"
     "      OpenDroneMap's geo.txt and geotags.csv (Pix4D, Metashape). --vehicle when the log holds\n"
     "      several. Its exit status: 0 every photo tagged, 2 some were not (named), 1 bad usage or input.\n"
-    "  coverage PHOTO_DIR --track LOG_OR_GPX --camera NAME --out OVERLAP.tif [--offset SECONDS]\n"
+    "  coverage PHOTO_DIR --track LOG_OR_GPX --camera NAME --out OVERLAP.tif [--offset SECONDS] [--by-time]\n"
     "           [--vehicle ID] [--dem PATH | --ground-amsl M] [--min-images N] [--cell M] [--refly ROUTE] [--json]\n"
     "      The ground the photos cover, each placed on the track as geotag places it, looking straight\n"
     "      down from its height above the ground under it (a DEM), above flat ground at --ground-amsl,\n"
@@ -296,9 +298,11 @@ std::optional<geotag::Track> trackOf(const Args &a, QTextStream &err)
     return track;
 }
 
-// --offset: seconds added to the camera's clock. false after saying what is wrong.
+// --offset: seconds added to the camera's clock; --by-time: by it even when the log has photo
+// events. false after saying what is wrong.
 bool readOffset(const Args &a, geotag::MatchOptions *match, QTextStream &err)
 {
+    match->byEvents = !a.flags.contains(QStringLiteral("--by-time"));
     if (!a.options.contains(QStringLiteral("--offset")))
         return true;
     bool ok = false;
@@ -317,7 +321,7 @@ enum GeotagExit { AllTagged = 0, GeotagFailed = 1, SomeUntagged = 2 };
 int geotagPhotos(const QStringList &in, QTextStream &out, QTextStream &err)
 {
     const auto a = parse(in, {QStringLiteral("--track"), QStringLiteral("--out"), QStringLiteral("--offset"), QStringLiteral("--vehicle")},
-                         {QStringLiteral("--json")}, err);
+                         {QStringLiteral("--json"), QStringLiteral("--by-time")}, err);
     if (!a)
         return GeotagFailed;
     if (a->positional.size() != 1) {
@@ -349,6 +353,11 @@ int geotagPhotos(const QStringList &in, QTextStream &out, QTextStream &err)
     } else {
         for (const auto &u : report->untagged)
             out << u.file << ": not tagged: " << u.reason << "\n";
+        if (report->byEvents) {
+            out << "paired with the vehicle's photo events: the camera's clock is " << report->offsetSeconds << " s off the vehicle's\n";
+            for (int64_t sequence : report->missing)
+                out << "photo " << sequence << " of the vehicle: no photo in the folder\n";
+        }
         out << report->tagged.size() << " of " << report->photos << " photos tagged (offset " << report->offsetSeconds << " s); copies, "
             << geotag::kGeoTxtName << " and " << geotag::kCsvName << " in " << options.outFolder << "\n";
     }
@@ -378,7 +387,7 @@ int coveragePhotos(const QStringList &in, QTextStream &out, QTextStream &err)
     const auto a = parse(in, {QStringLiteral("--track"), QStringLiteral("--camera"), QStringLiteral("--out"), QStringLiteral("--offset"),
                               QStringLiteral("--vehicle"), QStringLiteral("--ground-amsl"), QStringLiteral("--min-images"), QStringLiteral("--cell"),
                               QStringLiteral("--refly"), QStringLiteral("--dem")},
-                         {QStringLiteral("--json")}, err);
+                         {QStringLiteral("--json"), QStringLiteral("--by-time")}, err);
     if (!a)
         return CoverageFailed;
     if (a->positional.size() != 1) {

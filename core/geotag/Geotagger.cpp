@@ -1,5 +1,6 @@
 #include "Geotagger.h"
 
+#include "EventPairing.h"
 #include "GeotagLog.h"
 
 #include <QCoreApplication>
@@ -140,14 +141,76 @@ QJsonObject GeotagReport::toJson() const
     QJsonArray list;
     for (const UntaggedPhoto &u : untagged)
         list.append(QJsonObject{{QStringLiteral("file"), u.file}, {QStringLiteral("reason"), u.reason}});
+    QJsonArray missingList;
+    for (int64_t sequence : missing)
+        missingList.append(qint64(sequence));
     return QJsonObject{{QStringLiteral("photos"), photos},
                        {QStringLiteral("tagged"), int(tagged.size())},
                        {QStringLiteral("offset"), offsetSeconds},
+                       {QStringLiteral("matchedBy"), byEvents ? QStringLiteral("events") : QStringLiteral("time")},
+                       {QStringLiteral("missing"), missingList},
                        {QStringLiteral("untagged"), list}};
 }
 
+namespace {
+
+// The photos paired with the track's photo events; nullopt when they do not pair.
+std::optional<GeotagReport> matchByEvents(const std::vector<PhotoInfo> &photos, const Track &track, const MatchOptions &options)
+{
+    std::vector<size_t> timed; // photos with a time, in time order
+    for (size_t i = 0; i < photos.size(); ++i)
+        if (photos[i].cameraTimeUtc)
+            timed.push_back(i);
+    std::stable_sort(timed.begin(), timed.end(), [&](size_t a, size_t b) { return *photos[a].cameraTimeUtc < *photos[b].cameraTimeUtc; });
+    std::vector<int64_t> cameraTimes, eventTimes;
+    for (size_t i : timed)
+        cameraTimes.push_back(*photos[i].cameraTimeUtc);
+    for (const TrackPhoto &p : track.photos)
+        eventTimes.push_back(p.time);
+    const auto pairing = pairWithEvents(cameraTimes, eventTimes);
+    if (!pairing)
+        return std::nullopt;
+    GeotagReport report;
+    report.photos = int(photos.size());
+    report.byEvents = true;
+    report.offsetSeconds = double(pairing->offsetMs) / 1000.0;
+    std::vector<int> eventOf(photos.size(), -1);
+    for (const auto &[photo, event] : pairing->pairs)
+        eventOf[timed[photo]] = int(event);
+    for (size_t e : pairing->unpairedEvents)
+        report.missing.push_back(track.photos[e].sequence);
+    for (size_t i = 0; i < photos.size(); ++i) {
+        const PhotoInfo &photo = photos[i];
+        if (!photo.cameraTimeUtc) {
+            report.untagged.push_back({photo.fileName, QCoreApplication::translate("Geotag", "it holds no capture time (EXIF DateTimeOriginal or XMP exif:DateTimeOriginal)")});
+            continue;
+        }
+        if (eventOf[i] < 0) {
+            report.untagged.push_back({photo.fileName, QCoreApplication::translate("Geotag", "no photo the vehicle reported taking matches its time (a shot before or after the flight, or another camera's)")});
+            continue;
+        }
+        const TrackPhoto &event = track.photos[size_t(eventOf[i])];
+        // Where the vehicle said; the height above take-off from the track at that moment.
+        QString reason;
+        TrackPosition position = positionAt(track, event.time, options.maxGapMs, &reason).value_or(TrackPosition{});
+        position.latitude = event.latitude;
+        position.longitude = event.longitude;
+        if (std::isfinite(event.altitudeAmsl))
+            position.altitudeAmsl = event.altitudeAmsl;
+        if (std::isfinite(event.heading))
+            position.heading = event.heading;
+        report.tagged.push_back({photo, event.time, position, {}});
+    }
+    return report;
+}
+
+} // namespace
+
 GeotagReport matchPhotos(const std::vector<PhotoInfo> &photos, const Track &track, const MatchOptions &options)
 {
+    if (options.byEvents && !track.photos.empty())
+        if (auto byEvents = matchByEvents(photos, track, options))
+            return std::move(*byEvents);
     GeotagReport report;
     report.photos = int(photos.size());
     report.offsetSeconds = double(options.offsetMs) / 1000.0;

@@ -24,8 +24,11 @@ struct TrackPosition
 
 struct MatchOptions
 {
-    int64_t offsetMs = 0;      // added to the camera's clock (UTC) to give the track's time
+    int64_t offsetMs = 0;      // added to the camera's clock (UTC) to give the track's time (by time)
     int64_t maxGapMs = 5000;   // a photo between track points further apart than this is not placed
+    // With the track's photo events (a flight log's), pair the photos with them and find the offset
+    // (EventPairing.h); false: by time along the track with `offsetMs`, as with no events.
+    bool byEvents = true;
 };
 
 // The position at `time`, or why there is none (outside the track's span, in a gap), translated.
@@ -59,9 +62,12 @@ struct GeotagReport
     int photos = 0;
     std::vector<TaggedPhoto> tagged;
     std::vector<UntaggedPhoto> untagged;
-    double offsetSeconds = 0;
+    double offsetSeconds = 0;      // the one given, or (by events) the one found
+    bool byEvents = false;         // paired with the flight's photo events rather than placed by time
+    std::vector<int64_t> missing;  // by events: the sequence numbers of photo events no photo matched
     QString geoTxt, csv; // the files written beside the copies
-    // {"photos": N, "tagged": N, "offset": S, "untagged": [{"file": NAME, "reason": "…"}]}
+    // {"photos": N, "tagged": N, "offset": S, "matchedBy": "events"|"time", "missing": [SEQUENCE, …],
+    //  "untagged": [{"file": NAME, "reason": "…"}]}
     QJsonObject toJson() const;
 };
 
@@ -89,7 +95,11 @@ struct GeotagOptions
 // folder cannot be read or holds no photo, the out folder is the photo folder or cannot be made.
 std::optional<GeotagReport> geotagFolder(const QString &photoFolder, const Track &track, const GeotagOptions &options, QString *error);
 
-// The same for photos already read (the benchmark times the steps apart).
+// The same for photos already read (the benchmark times the steps apart). With the track's photo
+// events (and `byEvents`), each photo paired with one is placed where the vehicle said it took it
+// (its height above take-off from the track at that time), a photo no event matches is named
+// unplaced, and the events without a photo are listed as missing; when the pattern does not match
+// (too few pairs), by time as without events.
 GeotagReport matchPhotos(const std::vector<PhotoInfo> &photos, const Track &track, const MatchOptions &options);
 // Writes the copies of the matched photos and the two lists; a copy that cannot be written moves
 // its photo to the untagged ones with the reason. false with *error when a list cannot be written.

@@ -2,6 +2,7 @@
 
 #include "FlightLog.h"
 #include "GeotagLog.h"
+#include "PhotoEvents.h"
 
 #include <QCoreApplication>
 #include <QDateTime>
@@ -236,8 +237,12 @@ std::optional<Track> flightLogTrack(const flightlog::FlightLog &log, int vehicle
             *error = QCoreApplication::translate("Geotag", "%1: vehicle %2 reported no position").arg(log.path(), log.vehicles()[size_t(vehicle)].name());
         return std::nullopt;
     }
+    for (const vehicle::CameraPhoto &photo : flightlog::photosOf(log, vehicle))
+        track.photos.push_back({photo.time, photo.sequence, photo.latitude, photo.longitude, photo.altitudeAmsl, photo.yaw, photo.gimbalTilt});
+    std::stable_sort(track.photos.begin(), track.photos.end(), [](const TrackPhoto &a, const TrackPhoto &b) { return a.time < b.time; });
     track.normalise();
-    qCInfo(lcGeotag).noquote() << log.path() << log.vehicles()[size_t(vehicle)].name() << ":" << track.points.size() << "positions";
+    qCInfo(lcGeotag).noquote() << log.path() << log.vehicles()[size_t(vehicle)].name() << ":" << track.points.size() << "positions,"
+                               << track.photos.size() << "photo events";
     return track;
 }
 

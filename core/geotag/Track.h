@@ -25,11 +25,24 @@ struct TrackPoint
     double heading = std::numeric_limits<double>::quiet_NaN(); // degrees from north, where the nose points; NaN when unknown
 };
 
+// A photo the vehicle reported taking (a flight log's photo event): when on the vehicle's clock,
+// where, and how it stood. A value it did not report is NaN.
+struct TrackPhoto
+{
+    int64_t time = 0;       // UTC, ms since the epoch
+    int64_t sequence = 0;   // as the vehicle counted
+    double latitude = 0, longitude = 0;
+    double altitudeAmsl = std::numeric_limits<double>::quiet_NaN();
+    double heading = std::numeric_limits<double>::quiet_NaN();    // degrees, the vehicle's yaw
+    double gimbalTilt = std::numeric_limits<double>::quiet_NaN(); // degrees: 90 looks down
+};
+
 // Positions in time order, one per time, from one source.
 struct Track
 {
     QString source; // the file, for messages
     std::vector<TrackPoint> points;
+    std::vector<TrackPhoto> photos; // in time order; none from a GPX file or a log without photo events
     int64_t start() const { return points.empty() ? 0 : points.front().time; }
     int64_t end() const { return points.empty() ? 0 : points.back().time; }
     // Sorts by time and keeps the last point of each time.
@@ -42,7 +55,8 @@ struct Track
 // with a bad or missing lat, lon or time, a bad <ele>; and for a GPX without track points.
 std::optional<Track> readGpxTrack(const QString &path, QString *error);
 
-// One vehicle of a Sortie flight log as a track: every position it reported, its altitude AMSL,
+// One vehicle of a Sortie flight log as a track: every position it reported (and every photo it
+// reported taking, its photo events), its altitude AMSL,
 // its heading (the short way round between samples)
 // and its height above take-off (AltitudeAgl, the height above the home point's ground, else the
 // altitude AMSL less the home's) interpolated to the position's time from samples at most

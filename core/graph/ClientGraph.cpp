@@ -19,6 +19,7 @@
 #include "ProximityMonitor.h"
 #include "RouteDeconfliction.h"
 #include "RecordingSettings.h"
+#include "MissionResume.h"
 #include "PhotoSurvey.h"
 #include "ReplayController.h"
 #include "RouteAnalyzer.h"
@@ -170,6 +171,16 @@ ClientGraph::ClientGraph(QSettings *storage, Options options, QObject *parent)
     m_serverHistory->setFleet(m_fleet.get());
     m_photos = std::make_unique<coverage::PhotoSurvey>(m_replay.get());
     m_photos->setRouteOpener([document = m_missions->document()](mission::Route route, const QString &text) { document->open(std::move(route), text); });
+    // A mission stopped half-way: the rest opened in the editor, chosen for its vehicle, so every rule
+    // checks it and it goes up through the same gate.
+    if (m_fleet) {
+        m_resume = std::make_unique<resume::MissionResume>(m_fleet.get(), m_fleetRoutes.get());
+        m_resume->setRouteOpener([document = m_missions->document(), preparation = m_missions->preparation()](
+                                     mission::Route route, const QString &text, const QString &vehicleId) {
+            document->open(std::move(route), text);
+            preparation->setVehicleId(vehicleId);
+        });
+    }
 
     qCInfo(lcClientGraph).noquote() << "wired:" << wiring().join(QStringLiteral("; "));
 }
@@ -179,6 +190,7 @@ ClientGraph::~ClientGraph()
 {
     m_airspaceToVehicles.reset();
     m_uploadedFenceAlerts.reset();
+    m_resume.reset();
     m_photos.reset();
     m_serverHistory.reset();
     m_comparison.reset();
@@ -260,7 +272,8 @@ QStringList ClientGraph::wiring() const
           << QStringLiteral("flight recorder: %1").arg(yesNo(m_recorder->isRecording(), "recording", "off"))
           << QStringLiteral("fleet recording: %1").arg(yesNo(m_fleetRecording != nullptr, "on", "off"))
           << QStringLiteral("server history: %1").arg(yesNo(m_fleet && m_serverHistory->fleet() == m_fleet.get(), "from the fleet", "no fleet"))
-          << QStringLiteral("photos: %1").arg(yesNo(m_photos != nullptr, "the replayed log's, placed and their coverage judged; the gaps re-flown in the mission editor", "none"));
+          << QStringLiteral("photos: %1").arg(yesNo(m_photos != nullptr, "the replayed log's, placed and their coverage judged; the gaps re-flown in the mission editor", "none"))
+          << QStringLiteral("resume: %1").arg(yesNo(m_resume != nullptr, "a mission stopped half-way finished from its last photo or waypoint, in the mission editor", "none"));
     return lines;
 }
 

@@ -21,6 +21,7 @@ Q_MOC_INCLUDE("ProximityMonitor.h")
 Q_MOC_INCLUDE("RecordingSettings.h")
 Q_MOC_INCLUDE("ReplayController.h")
 Q_MOC_INCLUDE("PhotoSurvey.h")
+Q_MOC_INCLUDE("MissionResume.h")
 Q_MOC_INCLUDE("RouteDeconfliction.h")
 Q_MOC_INCLUDE("RouteEndurance.h")
 Q_MOC_INCLUDE("ServerHistoryRequest.h")
@@ -55,6 +56,10 @@ class ServerHistoryRequest;
 namespace sortie::coverage {
 class PhotoSurvey;
 } // namespace sortie::coverage
+
+namespace sortie::resume {
+class MissionResume;
+} // namespace sortie::resume
 
 namespace sortie::endurance {
 class RouteEndurance;
@@ -141,6 +146,7 @@ class ClientGraph : public QObject
     Q_PROPERTY(sortie::flightlog::ComparisonController *comparison READ comparisonForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::flightlog::ServerHistoryRequest *serverHistory READ serverHistoryForQml CONSTANT FINAL)
     Q_PROPERTY(sortie::coverage::PhotoSurvey *photos READ photosForQml CONSTANT FINAL)
+    Q_PROPERTY(sortie::resume::MissionResume *resume READ resumeForQml CONSTANT FINAL)                       // nullable: vehicles
 
 public:
     struct Options
@@ -203,6 +209,8 @@ public:
     flightlog::ServerHistoryRequest &serverHistory() { return *m_serverHistory; }
     // The replayed flight's photos: placed on its log, their coverage judged, their copies written.
     coverage::PhotoSurvey &photos() { return *m_photos; }
+    // A mission a vehicle stopped half-way, offered to be finished (nullptr without vehicles).
+    resume::MissionResume *resume() const { return m_resume.get(); }
     // The terrain reads this DEM file or folder from now on (empty: none), in the source order the
     // settings give: the operator chose another in the map source dialog.
     void useDem(const QString &path);
@@ -240,6 +248,7 @@ private:
     flightlog::ComparisonController *comparisonForQml() const { return m_comparison.get(); }
     flightlog::ServerHistoryRequest *serverHistoryForQml() const { return m_serverHistory.get(); }
     coverage::PhotoSurvey *photosForQml() const { return m_photos.get(); }
+    resume::MissionResume *resumeForQml() const { return m_resume.get(); }
 
     std::unique_ptr<hci::HciSession> m_session;
     std::unique_ptr<hci::HciClient> m_hciClient;
@@ -272,6 +281,7 @@ private:
     std::unique_ptr<flightlog::ComparisonController> m_comparison;
     std::unique_ptr<flightlog::ServerHistoryRequest> m_serverHistory;
     std::unique_ptr<coverage::PhotoSurvey> m_photos;
+    std::unique_ptr<resume::MissionResume> m_resume;
     QSettings *m_storage;
     QString m_recorderError;
 };

@@ -32,11 +32,12 @@ inline constexpr std::string_view kParameters = "/parameters";
 inline constexpr std::string_view kParameterPrefix = "/parameters/";
 inline constexpr std::string_view kFence = "/fence";              // VciFence.h
 inline constexpr std::string_view kFenceStatus = "/fence/status"; // is the vehicle inside its fence
+inline constexpr std::string_view kCameraPhoto = "/camera/photo"; // the last photo taken (VciPhoto.h)
 
 // Sent at the vehicle's telemetry rate while subscribed.
 inline constexpr std::array<std::string_view, 6> kTelemetry = {kPosition, kAttitude, kSpeed, kBattery, kGps, kHome};
 // Sent when they change while subscribed (and once right after SUBSCRIBE).
-inline constexpr std::array<std::string_view, 6> kState = {kArmed, kMode, kMission, kMissionProgress, kFence, kFenceStatus};
+inline constexpr std::array<std::string_view, 7> kState = {kArmed, kMode, kMission, kMissionProgress, kFence, kFenceStatus, kCameraPhoto};
 // Of those, the ones also repeated at least every kStatusRepeatMs, so a silent vehicle shows as stale.
 inline constexpr std::array<std::string_view, 4> kStatus = {kArmed, kMode, kMissionProgress, kFenceStatus};
 inline constexpr int kStatusRepeatMs = 1000;

@@ -60,6 +60,11 @@ Vehicle::Vehicle(VehicleLink *link, QObject *parent, size_t historyCapacity)
         m_videoStreamUri = uri;
         emit videoStreamUriChanged();
     });
+    connect(link, &VehicleLink::photoTaken, this, [this](const CameraPhoto &photo) {
+        m_lastPhoto = photo;
+        ++m_photoCount;
+        emit photoTaken(photo);
+    });
     connect(link, &VehicleLink::alertReported, this, [this](const QString &text) {
         if (m_commandLog)
             m_commandLog->alert(name(), text);

@@ -37,6 +37,7 @@ class Vehicle : public QObject
     Q_PROPERTY(QString lastError READ lastError NOTIFY lastErrorChanged)
     // The camera's stream as the vehicle publishes it (video_stream_uri); empty: none said.
     Q_PROPERTY(QString videoStreamUri READ videoStreamUri NOTIFY videoStreamUriChanged)
+    Q_PROPERTY(int photoCount READ photoCount NOTIFY photoTaken)
     Q_PROPERTY(QGeoCoordinate position READ position NOTIFY telemetryChanged)
     Q_PROPERTY(QGeoCoordinate home READ home NOTIFY telemetryChanged)
     Q_PROPERTY(double altitudeAmsl READ altitudeAmsl NOTIFY telemetryChanged)
@@ -74,6 +75,10 @@ public:
     // The link's last problem, for the operator; cleared when the link connects.
     QString lastError() const { return m_lastError; }
     QString videoStreamUri() const { return m_videoStreamUri; }
+    // The photos its camera reported taking since it connected, and the last of them (none: NaN
+    // position, sequence 0).
+    int photoCount() const { return m_photoCount; }
+    const CameraPhoto &lastPhoto() const { return m_lastPhoto; }
 
     // The last value of a field with the vehicle's time, or nullopt before the first.
     std::optional<TelemetrySample> last(TelemetryField field) const;
@@ -147,6 +152,7 @@ signals:
     void linkStateChanged();
     void lastErrorChanged();
     void videoStreamUriChanged();
+    void photoTaken(const sortie::vehicle::CameraPhoto &photo);
     void identityChanged();
     void notifyIntervalChanged();
     void commandFinished(const QString &command, bool ok, const QString &message);
@@ -172,6 +178,8 @@ private:
     VehicleIdentity m_identity;
     QString m_lastError;
     QString m_videoStreamUri;
+    CameraPhoto m_lastPhoto;
+    int m_photoCount = 0;
     QVariantMap m_parameters;
     std::vector<MissionItem> m_mission;
     TelemetryStore m_history;

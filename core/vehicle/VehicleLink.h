@@ -100,6 +100,8 @@ signals:
     void alertReported(const QString &text);
     // Where the vehicle's camera video is (UgCS's video_stream_uri), as the vehicle last said.
     void videoStreamUriReported(const QString &uri);
+    // The vehicle's camera took a photo (Sortie's VCI profile reports each on /camera/photo).
+    void photoTaken(const sortie::vehicle::CameraPhoto &photo);
 };
 
 } // namespace sortie::vehicle

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <QMetaType>
+#include <QtNumeric>
 #include <QString>
 #include <QStringList>
 #include <QVariantMap>
@@ -97,6 +98,19 @@ struct FenceSettings
     FenceBreachAction breachAction = FenceBreachAction::Return;
 };
 
+// A photo the vehicle's camera took, as its link reports it: when (the vehicle's clock), where and
+// how it stood. A value the vehicle did not report is NaN, never 0.
+struct CameraPhoto
+{
+    qint64 sequence = 0;   // 1, 2, 3 ... as the vehicle counts them: a gap says photos were not heard of
+    qint64 time = 0;       // ms since the epoch, the vehicle's clock
+    double latitude = qQNaN(), longitude = qQNaN(); // degrees
+    double altitudeAmsl = qQNaN();
+    double altitudeAgl = qQNaN();  // m above the ground under it
+    double roll = qQNaN(), pitch = qQNaN(), yaw = qQNaN(); // degrees, yaw = heading
+    double gimbalTilt = qQNaN();   // degrees: 90 looks straight down, 0 ahead (UgCS's convention)
+};
+
 // The stages of an upload inside a link, for progress.
 enum class UploadStep { Locking, Sending, Releasing };
 
@@ -104,3 +118,4 @@ enum class UploadStep { Locking, Sending, Releasing };
 
 Q_DECLARE_METATYPE(sortie::vehicle::VehicleIdentity)
 Q_DECLARE_METATYPE(sortie::vehicle::CommandResult)
+Q_DECLARE_METATYPE(sortie::vehicle::CameraPhoto)

@@ -1355,6 +1355,10 @@
         <source>exiv2 wrote a copy it cannot read back (%1)</source>
         <translation>exiv2 hat eine Kopie geschrieben, die es nicht zurücklesen kann (%1)</translation>
     </message>
+    <message>
+        <source>no photo the vehicle reported taking matches its time (a shot before or after the flight, or another camera&apos;s)</source>
+        <translation>kein vom Fahrzeug gemeldetes Foto passt zu seiner Zeit (eine Aufnahme vor oder nach dem Flug oder von einer anderen Kamera)</translation>
+    </message>
 </context>
 <context>
     <name>GlanceBar</name>
@@ -3390,6 +3394,88 @@ Ereignisse: %1
     </message>
 </context>
 <context>
+    <name>ResumePanel</name>
+    <message>
+        <source>Resume from the last photo</source>
+        <translation>Ab dem letzten Foto fortsetzen</translation>
+    </message>
+    <message>
+        <source>Resume from the last waypoint</source>
+        <translation>Ab dem letzten Wegpunkt fortsetzen</translation>
+    </message>
+</context>
+<context>
+    <name>ResumeRoute</name>
+    <message>
+        <source>%1 cannot be resumed here: %2</source>
+        <translation>%1 kann hier nicht fortgesetzt werden: %2</translation>
+    </message>
+    <message>
+        <source>the take-off point is not known</source>
+        <translation>der Startpunkt ist nicht bekannt</translation>
+    </message>
+    <message>
+        <source>the route has nothing to fly</source>
+        <translation>die Route hat nichts zu fliegen</translation>
+    </message>
+    <message>
+        <source>none of the waypoints the vehicle reached is on this route&apos;s path: not this route&apos;s flight</source>
+        <translation>keiner der erreichten Wegpunkte liegt auf dem Pfad dieser Route: kein Flug dieser Route</translation>
+    </message>
+    <message>
+        <source>The last waypoint the vehicle reached is not one of the route&apos;s own: the rest starts at the route&apos;s point before it.</source>
+        <translation>Der zuletzt erreichte Wegpunkt gehört nicht zur Route: der Rest beginnt am Punkt der Route davor.</translation>
+    </message>
+    <message>
+        <source>where the last photo was taken is not known</source>
+        <translation>wo das letzte Foto aufgenommen wurde, ist nicht bekannt</translation>
+    </message>
+    <message>
+        <source>the last photo was taken %1 m from the route&apos;s path, more than the %2 m a flight of it strays: not this route&apos;s flight</source>
+        <translation>das letzte Foto wurde %1 m vom Pfad der Route aufgenommen, mehr als die %2 m, die ein Flug abweicht: kein Flug dieser Route</translation>
+    </message>
+    <message>
+        <source>The photos were taken every %1 s: the next one is taken as due %2 m on at the leg&apos;s speed.</source>
+        <translation>Die Fotos wurden alle %1 s aufgenommen: das nächste gilt bei der Geschwindigkeit des Abschnitts %2 m weiter als fällig.</translation>
+    </message>
+    <message>
+        <source>No photo series was running at the last photo: the rest starts where it was taken.</source>
+        <translation>Beim letzten Foto lief keine Fotoserie: der Rest beginnt dort, wo es aufgenommen wurde.</translation>
+    </message>
+    <message>
+        <source>the last photo was the route&apos;s last: nothing is left to fly</source>
+        <translation>das letzte Foto war das letzte der Route: es bleibt nichts zu fliegen</translation>
+    </message>
+    <message>
+        <source>the route was flown to its last point: nothing is left to fly</source>
+        <translation>die Route wurde bis zu ihrem letzten Punkt geflogen: es bleibt nichts zu fliegen</translation>
+    </message>
+    <message>
+        <source>%1 (resumed)</source>
+        <translation>%1 (fortgesetzt)</translation>
+    </message>
+    <message>
+        <source>Route</source>
+        <translation>Route</translation>
+    </message>
+    <message>
+        <source>Resumes %1, %2 m into the flight (%3 m left), after a take-off and a flight over at %4 m.</source>
+        <translation>Setzt %1 fort, %2 m nach Flugbeginn (%3 m übrig), nach einem Start und einem Überflug in %4 m.</translation>
+    </message>
+    <message>
+        <source>The photo series every %1 m starts again at the resume point.</source>
+        <translation>Die Fotoserie alle %1 m beginnt am Fortsetzungspunkt erneut.</translation>
+    </message>
+    <message>
+        <source>The photo series every %1 s starts again at the resume point.</source>
+        <translation>Die Fotoserie alle %1 s beginnt am Fortsetzungspunkt erneut.</translation>
+    </message>
+    <message>
+        <source>The gimbal is tilted to %1° there, as it was.</source>
+        <translation>Der Gimbal wird dort wie zuvor auf %1° geneigt.</translation>
+    </message>
+</context>
+<context>
     <name>RouteDiff</name>
     <message>
         <source>WP %1</source>
@@ -4197,6 +4283,21 @@ Ereignisse: %1
     <message>
         <source>No planner knows the algorithm &apos;%1&apos;</source>
         <translation>Kein Planer kennt den Algorithmus „%1“</translation>
+    </message>
+</context>
+<context>
+    <name>SegmentWaypoints</name>
+    <message>
+        <source>cannot be planned</source>
+        <translation>lässt sich nicht planen</translation>
+    </message>
+    <message>
+        <source>only a UgCS server that knows %1 can plan it</source>
+        <translation>nur ein UgCS-Server, der %1 kennt, kann es planen</translation>
+    </message>
+    <message>
+        <source>no such segment</source>
+        <translation>kein solches Segment</translation>
     </message>
 </context>
 <context>
@@ -5192,6 +5293,10 @@ Ereignisse: %1
     <message>
         <source>%1: first secure connection; its certificate is now trusted and remembered. Compare its SHA-256 fingerprint with the vehicle&apos;s: %2</source>
         <translation>%1: erste sichere Verbindung; seinem Zertifikat wird nun vertraut, und es ist gespeichert. Vergleichen Sie seinen SHA-256-Fingerabdruck mit dem des Fahrzeugs: %2</translation>
+    </message>
+    <message>
+        <source>a photo report was not understood: %1</source>
+        <translation>eine Fotomeldung war unverständlich: %1</translation>
     </message>
 </context>
 <context>
@@ -8019,6 +8124,40 @@ Ereignisse: %1
     <message>
         <source>no stream reported</source>
         <translation>kein Stream gemeldet</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::resume::MissionResume</name>
+    <message>
+        <source>The route</source>
+        <translation>Die Route</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 stopped flying to waypoint %2 of %3, after %n photo(s).</source>
+        <translation>
+            <numerusform>%1 stoppte im Flug zu Wegpunkt %2 von %3, nach %n Foto.</numerusform>
+            <numerusform>%1 stoppte im Flug zu Wegpunkt %2 von %3, nach %n Fotos.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 stopped flying to waypoint %2 of %3.</source>
+        <translation>%1 stoppte im Flug zu Wegpunkt %2 von %3.</translation>
+    </message>
+    <message>
+        <source>There is nothing to resume: no vehicle stands with a route flown part of the way.</source>
+        <translation>Es gibt nichts fortzusetzen: kein Fahrzeug steht mit einer teilweise geflogenen Route bereit.</translation>
+    </message>
+    <message>
+        <source>The vehicle took no photo on this route.</source>
+        <translation>Das Fahrzeug hat auf dieser Route kein Foto aufgenommen.</translation>
+    </message>
+    <message>
+        <source>The vehicle reached no waypoint of this route.</source>
+        <translation>Das Fahrzeug hat keinen Wegpunkt dieser Route erreicht.</translation>
+    </message>
+    <message>
+        <source>Resume the mission</source>
+        <translation>Mission fortsetzen</translation>
     </message>
 </context>
 <context>

@@ -379,6 +379,16 @@
     </message>
 </context>
 <context>
+    <name>sortie::resume::MissionResume</name>
+    <message numerus="yes">
+        <source>%1 stopped flying to waypoint %2 of %3, after %n photo(s).</source>
+        <translation>
+            <numerusform>%1 stopped flying to waypoint %2 of %3, after %n photo.</numerusform>
+            <numerusform>%1 stopped flying to waypoint %2 of %3, after %n photos.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>sortie::ui::RasterFileCheck</name>
     <message numerus="yes">
         <source>%n file(s) left out, the others are used:</source>

@@ -1355,6 +1355,10 @@
         <source>exiv2 wrote a copy it cannot read back (%1)</source>
         <translation>exiv2 escribió una copia que no puede volver a leer (%1)</translation>
     </message>
+    <message>
+        <source>no photo the vehicle reported taking matches its time (a shot before or after the flight, or another camera&apos;s)</source>
+        <translation>ninguna foto que el vehículo dijo tomar coincide con su hora (una toma antes o después del vuelo, o de otra cámara)</translation>
+    </message>
 </context>
 <context>
     <name>GlanceBar</name>
@@ -3390,6 +3394,88 @@ eventos:   %1
     </message>
 </context>
 <context>
+    <name>ResumePanel</name>
+    <message>
+        <source>Resume from the last photo</source>
+        <translation>Reanudar desde la última foto</translation>
+    </message>
+    <message>
+        <source>Resume from the last waypoint</source>
+        <translation>Reanudar desde el último punto de ruta</translation>
+    </message>
+</context>
+<context>
+    <name>ResumeRoute</name>
+    <message>
+        <source>%1 cannot be resumed here: %2</source>
+        <translation>%1 no se puede reanudar aquí: %2</translation>
+    </message>
+    <message>
+        <source>the take-off point is not known</source>
+        <translation>no se conoce el punto de despegue</translation>
+    </message>
+    <message>
+        <source>the route has nothing to fly</source>
+        <translation>la ruta no tiene nada que volar</translation>
+    </message>
+    <message>
+        <source>none of the waypoints the vehicle reached is on this route&apos;s path: not this route&apos;s flight</source>
+        <translation>ninguno de los puntos que alcanzó el vehículo está en la trayectoria de esta ruta: no es un vuelo de esta ruta</translation>
+    </message>
+    <message>
+        <source>The last waypoint the vehicle reached is not one of the route&apos;s own: the rest starts at the route&apos;s point before it.</source>
+        <translation>El último punto que alcanzó el vehículo no es de la ruta: el resto empieza en el punto de la ruta anterior.</translation>
+    </message>
+    <message>
+        <source>where the last photo was taken is not known</source>
+        <translation>no se sabe dónde se tomó la última foto</translation>
+    </message>
+    <message>
+        <source>the last photo was taken %1 m from the route&apos;s path, more than the %2 m a flight of it strays: not this route&apos;s flight</source>
+        <translation>la última foto se tomó a %1 m de la trayectoria de la ruta, más de los %2 m que se desvía un vuelo: no es un vuelo de esta ruta</translation>
+    </message>
+    <message>
+        <source>The photos were taken every %1 s: the next one is taken as due %2 m on at the leg&apos;s speed.</source>
+        <translation>Las fotos se tomaban cada %1 s: la siguiente se considera debida %2 m más adelante a la velocidad del tramo.</translation>
+    </message>
+    <message>
+        <source>No photo series was running at the last photo: the rest starts where it was taken.</source>
+        <translation>No había ninguna serie de fotos en curso en la última foto: el resto empieza donde se tomó.</translation>
+    </message>
+    <message>
+        <source>the last photo was the route&apos;s last: nothing is left to fly</source>
+        <translation>la última foto fue la última de la ruta: no queda nada que volar</translation>
+    </message>
+    <message>
+        <source>the route was flown to its last point: nothing is left to fly</source>
+        <translation>la ruta se voló hasta su último punto: no queda nada que volar</translation>
+    </message>
+    <message>
+        <source>%1 (resumed)</source>
+        <translation>%1 (reanudada)</translation>
+    </message>
+    <message>
+        <source>Route</source>
+        <translation>Ruta</translation>
+    </message>
+    <message>
+        <source>Resumes %1, %2 m into the flight (%3 m left), after a take-off and a flight over at %4 m.</source>
+        <translation>Reanuda %1, a %2 m del inicio del vuelo (quedan %3 m), tras un despegue y un vuelo de aproximación a %4 m.</translation>
+    </message>
+    <message>
+        <source>The photo series every %1 m starts again at the resume point.</source>
+        <translation>La serie de fotos cada %1 m empieza de nuevo en el punto de reanudación.</translation>
+    </message>
+    <message>
+        <source>The photo series every %1 s starts again at the resume point.</source>
+        <translation>La serie de fotos cada %1 s empieza de nuevo en el punto de reanudación.</translation>
+    </message>
+    <message>
+        <source>The gimbal is tilted to %1° there, as it was.</source>
+        <translation>El gimbal se inclina allí a %1°, como estaba.</translation>
+    </message>
+</context>
+<context>
     <name>RouteDiff</name>
     <message>
         <source>WP %1</source>
@@ -4197,6 +4283,21 @@ eventos:   %1
     <message>
         <source>No planner knows the algorithm &apos;%1&apos;</source>
         <translation>Ningún planificador conoce el algoritmo «%1»</translation>
+    </message>
+</context>
+<context>
+    <name>SegmentWaypoints</name>
+    <message>
+        <source>cannot be planned</source>
+        <translation>no se puede planificar</translation>
+    </message>
+    <message>
+        <source>only a UgCS server that knows %1 can plan it</source>
+        <translation>solo un servidor UgCS que conozca %1 puede planificarlo</translation>
+    </message>
+    <message>
+        <source>no such segment</source>
+        <translation>no existe ese segmento</translation>
     </message>
 </context>
 <context>
@@ -5192,6 +5293,10 @@ eventos:   %1
     <message>
         <source>%1: first secure connection; its certificate is now trusted and remembered. Compare its SHA-256 fingerprint with the vehicle&apos;s: %2</source>
         <translation>%1: primera conexión segura; su certificado es ahora de confianza y queda recordado. Compare su huella SHA-256 con la del vehículo: %2</translation>
+    </message>
+    <message>
+        <source>a photo report was not understood: %1</source>
+        <translation>no se entendió un informe de foto: %1</translation>
     </message>
 </context>
 <context>
@@ -8019,6 +8124,40 @@ eventos:   %1
     <message>
         <source>no stream reported</source>
         <translation>ningún flujo anunciado</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::resume::MissionResume</name>
+    <message>
+        <source>The route</source>
+        <translation>La ruta</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 stopped flying to waypoint %2 of %3, after %n photo(s).</source>
+        <translation>
+            <numerusform>%1 se detuvo volando al punto %2 de %3, tras %n foto.</numerusform>
+            <numerusform>%1 se detuvo volando al punto %2 de %3, tras %n fotos.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 stopped flying to waypoint %2 of %3.</source>
+        <translation>%1 se detuvo volando al punto %2 de %3.</translation>
+    </message>
+    <message>
+        <source>There is nothing to resume: no vehicle stands with a route flown part of the way.</source>
+        <translation>No hay nada que reanudar: ningún vehículo está parado con una ruta volada en parte.</translation>
+    </message>
+    <message>
+        <source>The vehicle took no photo on this route.</source>
+        <translation>El vehículo no tomó ninguna foto en esta ruta.</translation>
+    </message>
+    <message>
+        <source>The vehicle reached no waypoint of this route.</source>
+        <translation>El vehículo no alcanzó ningún punto de esta ruta.</translation>
+    </message>
+    <message>
+        <source>Resume the mission</source>
+        <translation>Reanudar la misión</translation>
     </message>
 </context>
 <context>

@@ -1358,6 +1358,10 @@
         <source>exiv2 wrote a copy it cannot read back (%1)</source>
         <translation>exiv2 записав копію, яку не може прочитати назад (%1)</translation>
     </message>
+    <message>
+        <source>no photo the vehicle reported taking matches its time (a shot before or after the flight, or another camera&apos;s)</source>
+        <translation>жодне фото, про яке повідомив апарат, не відповідає його часу (знімок до чи після польоту або з іншої камери)</translation>
+    </message>
 </context>
 <context>
     <name>GlanceBar</name>
@@ -3400,6 +3404,88 @@ events:   %1
     </message>
 </context>
 <context>
+    <name>ResumePanel</name>
+    <message>
+        <source>Resume from the last photo</source>
+        <translation>Продовжити з останнього фото</translation>
+    </message>
+    <message>
+        <source>Resume from the last waypoint</source>
+        <translation>Продовжити з останньої точки</translation>
+    </message>
+</context>
+<context>
+    <name>ResumeRoute</name>
+    <message>
+        <source>%1 cannot be resumed here: %2</source>
+        <translation>%1 не можна продовжити тут: %2</translation>
+    </message>
+    <message>
+        <source>the take-off point is not known</source>
+        <translation>точка зльоту невідома</translation>
+    </message>
+    <message>
+        <source>the route has nothing to fly</source>
+        <translation>у маршруті немає чого летіти</translation>
+    </message>
+    <message>
+        <source>none of the waypoints the vehicle reached is on this route&apos;s path: not this route&apos;s flight</source>
+        <translation>жодна з досягнутих точок не лежить на шляху цього маршруту: це не політ цього маршруту</translation>
+    </message>
+    <message>
+        <source>The last waypoint the vehicle reached is not one of the route&apos;s own: the rest starts at the route&apos;s point before it.</source>
+        <translation>Остання досягнута точка не належить маршруту: решта починається з точки маршруту перед нею.</translation>
+    </message>
+    <message>
+        <source>where the last photo was taken is not known</source>
+        <translation>невідомо, де зроблено останнє фото</translation>
+    </message>
+    <message>
+        <source>the last photo was taken %1 m from the route&apos;s path, more than the %2 m a flight of it strays: not this route&apos;s flight</source>
+        <translation>останнє фото зроблено за %1 м від шляху маршруту, більше ніж %2 м відхилення польоту: це не політ цього маршруту</translation>
+    </message>
+    <message>
+        <source>The photos were taken every %1 s: the next one is taken as due %2 m on at the leg&apos;s speed.</source>
+        <translation>Фото робилися кожні %1 с: наступне вважається належним через %2 м на швидкості відрізка.</translation>
+    </message>
+    <message>
+        <source>No photo series was running at the last photo: the rest starts where it was taken.</source>
+        <translation>На останньому фото серія не йшла: решта починається там, де його зроблено.</translation>
+    </message>
+    <message>
+        <source>the last photo was the route&apos;s last: nothing is left to fly</source>
+        <translation>останнє фото було останнім у маршруті: летіти більше нічого</translation>
+    </message>
+    <message>
+        <source>the route was flown to its last point: nothing is left to fly</source>
+        <translation>маршрут пройдено до останньої точки: летіти більше нічого</translation>
+    </message>
+    <message>
+        <source>%1 (resumed)</source>
+        <translation>%1 (продовження)</translation>
+    </message>
+    <message>
+        <source>Route</source>
+        <translation>Маршрут</translation>
+    </message>
+    <message>
+        <source>Resumes %1, %2 m into the flight (%3 m left), after a take-off and a flight over at %4 m.</source>
+        <translation>Продовжує %1 через %2 м від початку польоту (лишилося %3 м), після зльоту й перельоту на %4 м.</translation>
+    </message>
+    <message>
+        <source>The photo series every %1 m starts again at the resume point.</source>
+        <translation>Серія фото кожні %1 м починається знову в точці продовження.</translation>
+    </message>
+    <message>
+        <source>The photo series every %1 s starts again at the resume point.</source>
+        <translation>Серія фото кожні %1 с починається знову в точці продовження.</translation>
+    </message>
+    <message>
+        <source>The gimbal is tilted to %1° there, as it was.</source>
+        <translation>Підвіс там нахилено на %1°, як було.</translation>
+    </message>
+</context>
+<context>
     <name>RouteDiff</name>
     <message>
         <source>WP %1</source>
@@ -4210,6 +4296,21 @@ events:   %1
     <message>
         <source>No planner knows the algorithm &apos;%1&apos;</source>
         <translation>Жоден планувальник не знає алгоритму «%1»</translation>
+    </message>
+</context>
+<context>
+    <name>SegmentWaypoints</name>
+    <message>
+        <source>cannot be planned</source>
+        <translation>не вдається спланувати</translation>
+    </message>
+    <message>
+        <source>only a UgCS server that knows %1 can plan it</source>
+        <translation>спланувати це може лише сервер UgCS, що знає %1</translation>
+    </message>
+    <message>
+        <source>no such segment</source>
+        <translation>такого сегмента немає</translation>
     </message>
 </context>
 <context>
@@ -5209,6 +5310,10 @@ events:   %1
     <message>
         <source>%1: first secure connection; its certificate is now trusted and remembered. Compare its SHA-256 fingerprint with the vehicle&apos;s: %2</source>
         <translation>%1: перше захищене з’єднання; його сертифікату тепер довіряють, і його збережено. Порівняйте його відбиток SHA-256 з відбитком апарата: %2</translation>
+    </message>
+    <message>
+        <source>a photo report was not understood: %1</source>
+        <translation>повідомлення про фото незрозуміле: %1</translation>
     </message>
 </context>
 <context>
@@ -8063,6 +8168,41 @@ events:   %1
     <message>
         <source>no stream reported</source>
         <translation>потік не повідомлено</translation>
+    </message>
+</context>
+<context>
+    <name>sortie::resume::MissionResume</name>
+    <message>
+        <source>The route</source>
+        <translation>Маршрут</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 stopped flying to waypoint %2 of %3, after %n photo(s).</source>
+        <translation>
+            <numerusform>%1 зупинився дорогою до точки %2 з %3 після %n фото.</numerusform>
+            <numerusform>%1 зупинився дорогою до точки %2 з %3 після %n фото.</numerusform>
+            <numerusform>%1 зупинився дорогою до точки %2 з %3 після %n фото.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 stopped flying to waypoint %2 of %3.</source>
+        <translation>%1 зупинився дорогою до точки %2 з %3.</translation>
+    </message>
+    <message>
+        <source>There is nothing to resume: no vehicle stands with a route flown part of the way.</source>
+        <translation>Нічого продовжувати: жоден апарат не стоїть з частково пройденим маршрутом.</translation>
+    </message>
+    <message>
+        <source>The vehicle took no photo on this route.</source>
+        <translation>Апарат не зробив жодного фото на цьому маршруті.</translation>
+    </message>
+    <message>
+        <source>The vehicle reached no waypoint of this route.</source>
+        <translation>Апарат не досяг жодної точки цього маршруту.</translation>
+    </message>
+    <message>
+        <source>Resume the mission</source>
+        <translation>Продовжити місію</translation>
     </message>
 </context>
 <context>

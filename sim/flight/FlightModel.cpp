@@ -305,6 +305,8 @@ void FlightModel::tick(double dt)
             m_climbingOut = false;
         }
         if (flyTowards(wp.latitude, wp.longitude, wp.altitudeAgl, wp.speed, dt, wp.acceptanceRadius)) {
+            if (m_holdLeft < 0 && m_waypointReached)
+                m_waypointReached(s.currentWaypoint);
             if (m_holdLeft < 0 && wp.holdSeconds > 0)
                 m_holdLeft = wp.holdSeconds; // arrived: start waiting
             if (m_holdLeft > 0) {

@@ -82,6 +82,10 @@ public:
     // home's; with it the vehicle lands on the ground under it and does not fly below it.
     using GroundFunction = std::function<std::optional<double>(double latitude, double longitude)>;
     void setGround(GroundFunction ground) { m_ground = std::move(ground); }
+    // Called inside tick() when the mission's waypoint `index` is reached, once, before its wait:
+    // where a vehicle runs the waypoint's actions (its camera's, for the simulator's shutter).
+    using WaypointReached = std::function<void(int index)>;
+    void setWaypointReached(WaypointReached reached) { m_waypointReached = std::move(reached); }
 
     const State &state() const { return m_state; }
     const Limits &limits() const { return m_limits; }
@@ -118,6 +122,7 @@ private:
 
     Limits m_limits;
     GroundFunction m_ground;
+    WaypointReached m_waypointReached;
     SimBattery m_battery;
     State m_state;
     std::vector<Waypoint> m_mission;

@@ -2,10 +2,12 @@
 
 #include "SimTerrain.h"
 
+#include "VciPhoto.h"
 #include "VciProfile.h"
 
 #include <QDateTime>
 
+#include <algorithm>
 #include <cmath>
 
 namespace sortie::sim {
@@ -16,6 +18,7 @@ using nlohmann::json;
 
 constexpr double kRad = 3.14159265358979323846 / 180.0;
 constexpr int kTickMs = 20;
+constexpr double kMaxStepSeconds = 0.1;
 
 bool is(const std::string &uri, std::string_view name) { return uri == name; }
 
@@ -32,6 +35,7 @@ SimVciVehicle::SimVciVehicle(const SimVciOptions &options, QObject *parent)
 {
     if (options.terrain)
         m_model.setGround([terrain = options.terrain](double lat, double lon) { return terrain->groundAt(lat, lon); });
+    m_model.setWaypointReached([this](int index) { runCameraActions(index); });
     m_parameters["telemetry_rate"] = options.telemetryRate;
     m_parameters["takeoff_altitude"] = m_model.limits().takeoffAltitude;
     m_parameters["mission_speed"] = m_model.limits().cruiseSpeed;
@@ -46,9 +50,18 @@ SimVciVehicle::SimVciVehicle(const SimVciOptions &options, QObject *parent)
 
 void SimVciVehicle::tick()
 {
+    // In steps of at most kMaxStepSeconds of simulated time, however late the timer fired and fast
+    // the clock runs, so a busy machine flies the same path and takes its photos where they fall.
     const double dt = double(m_clock.restart()) / 1000.0 * m_options.timeScale;
-    m_model.tick(dt);
-    m_simulatedSeconds += dt;
+    const int steps = std::max(1, int(std::ceil(dt / kMaxStepSeconds)));
+    for (int i = 0; i < steps; ++i) {
+        m_simulatedSeconds += dt / steps;
+        m_model.tick(dt / steps);
+        const size_t photos = m_shutter.photos().size();
+        m_shutter.tick(m_model.state(), shutterClock());
+        if (m_shutter.photos().size() != photos && i + 1 < steps)
+            checkChanges(); // each photo is notified, not only the tick's last
+    }
     enforceFence();
     checkChanges();
 }
@@ -168,6 +181,19 @@ std::optional<json> SimVciVehicle::resource(const std::string &uri) const
     }
     if (is(uri, profile::kFenceStatus))
         return profile::encodeFenceStatus(m_fence.status(now()));
+    if (is(uri, profile::kCameraPhoto)) {
+        if (m_shutter.photos().empty())
+            return json(nullptr);
+        const SimPhoto &p = m_shutter.photos().back();
+        vci::profile::Photo photo{p.sequence, p.time, p.latitude * kRad, p.longitude * kRad};
+        photo.altitudeAmsl = p.altitudeAmsl;
+        photo.altitudeAgl = p.altitudeAgl;
+        photo.roll = p.roll * kRad;
+        photo.pitch = p.pitch * kRad;
+        photo.yaw = p.heading * kRad;
+        photo.gimbalTilt = p.gimbalTilt * kRad;
+        return vci::profile::encodePhoto(photo);
+    }
     if (is(uri, profile::kParameters))
         return parameters();
     if (uri.rfind(profile::kParameterPrefix, 0) == 0) {
@@ -254,8 +280,9 @@ SimVciReply SimVciVehicle::put(const std::string &uri, const vci::VciMessage &re
         for (const auto &w : *waypoints) {
             FlightModel::Waypoint p{w.latitude / kRad, w.longitude / kRad, w.altitude, w.speed > 0 ? w.speed : m_parameters["mission_speed"]};
             p.acceptanceRadius = w.acceptanceRadius;
-            // The simulated vehicle flies waits and landings; it has no camera or gimbal, so the
-            // other actions are kept (and read back) but change nothing in its flight.
+            // The simulated vehicle flies waits and landings, and its shutter runs the camera
+            // actions (runCameraActions); the other actions are kept (and read back) but change
+            // nothing in its flight.
             for (const auto &a : w.actions) {
                 if (a.type == "wait")
                     p.holdSeconds += a.fields.value("seconds", 0.0);
@@ -276,6 +303,23 @@ SimVciReply SimVciVehicle::put(const std::string &uri, const vci::VciMessage &re
     if (resource(uri))
         return SimVciReply::error(501, uri + " is read-only");
     return SimVciReply::error(501, "this vehicle has no resource " + uri);
+}
+
+void SimVciVehicle::runCameraActions(int waypoint)
+{
+    if (waypoint < 0 || size_t(waypoint) >= m_missionAsSent.size())
+        return;
+    for (const vci::profile::Action &a : m_missionAsSent[size_t(waypoint)].actions) {
+        const auto number = [&a](const char *key, double fallback) { return profile::number(a.fields, key).value_or(fallback); };
+        if (a.type == "camera" && a.fields.value("state", std::string()) == "single")
+            m_shutter.single(m_model.state(), shutterClock());
+        else if (a.type == "camera_by_distance")
+            m_shutter.startByDistance(number("interval", 0), int(number("shots", 0)), number("delay", 0), shutterClock());
+        else if (a.type == "camera_by_time")
+            m_shutter.startByTime(number("interval", 0), int(number("shots", 0)), number("delay", 0), shutterClock());
+        else if (a.type == "gimbal" && profile::number(a.fields, "tilt"))
+            m_shutter.setGimbalTilt(number("tilt", 0) / kRad);
+    }
 }
 
 SimVciReply SimVciVehicle::putFence(const json &body)

@@ -4,6 +4,7 @@
 
 #include "FlightModel.h"
 #include "SimFence.h"
+#include "SimShutter.h"
 #include "SimVciOptions.h"
 #include "SimVciReply.h"
 #include "VciMessage.h"
@@ -30,6 +31,7 @@ public:
     SimVciOptions &knobs() { return m_options; } // tests change the knobs while it runs
     const FlightModel &model() const { return m_model; }
     const SimFence &fence() const { return m_fence; }
+    const SimShutter &shutter() const { return m_shutter; } // every photo taken, for tests
 
     // Answers a GET or PUT on one of the profile's URIs.
     SimVciReply handle(const vci::VciMessage &request);
@@ -55,10 +57,13 @@ private:
     nlohmann::json progress() const;
     nlohmann::json parameters() const;
     static SimVciReply refusedOrOk(const FlightModel::Refusal &refusal, nlohmann::json value);
+    void runCameraActions(int waypoint); // the camera and gimbal actions of a waypoint reached
+    SimShutter::Clock shutterClock() const { return {m_simulatedSeconds, now()}; }
 
     SimVciOptions m_options;
     FlightModel m_model;
     SimFence m_fence;
+    SimShutter m_shutter;
     QTimer m_tick;
     QElapsedTimer m_clock;
     int64_t m_startMs = 0;          // wall clock when the vehicle started

@@ -1,12 +1,14 @@
 // Flight log reader (.sortielog, an SQLite file): any bytes, written to a file, are opened and read
 // through, or refused with a reason; a log read gives every series and its thinned form without a
-// crash, whatever its blocks, events and routes hold.
+// crash, whatever its blocks, events and routes hold; a photo event is a photo on the globe or none.
 #include "FlightLog.h"
+#include "PhotoEvents.h"
 
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
 
+#include <cmath>
 #include <cstdlib>
 #include <unistd.h>
 
@@ -37,6 +39,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             log->series(v, sortie::vehicle::TelemetryField(f));
         log->thinnedSeries(v, 50);
         log->stateAt(v, log->end());
+        for (const sortie::vehicle::CameraPhoto &p : photosOf(*log, v))
+            if (p.sequence < 1 || !(std::abs(p.latitude) <= 90) || !(std::abs(p.longitude) <= 180))
+                std::abort();
     }
     return 0;
 }

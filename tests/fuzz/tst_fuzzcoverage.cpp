@@ -35,6 +35,7 @@ const std::map<QString, QString> kOtherReaders{
     {QStringLiteral("HCI telemetry events (protobuf to telemetry)"), QStringLiteral("fuzz_hci_telemetry")},
     {QStringLiteral("VCI messages"), QStringLiteral("fuzz_vci")},
     {QStringLiteral("VCI fences (JSON)"), QStringLiteral("fuzz_vci_fence")},
+    {QStringLiteral("VCI photo reports (JSON)"), QStringLiteral("fuzz_vci_photo")},
     {QStringLiteral("VCI telemetry, state and mission progress (JSON to telemetry)"), QStringLiteral("fuzz_vci_telemetry")},
     {QStringLiteral("SRTM .hgt tiles"), QStringLiteral("fuzz_hgt_tile")},
     {QStringLiteral("the server's elevation profiles (protobuf to heights along a path)"), QStringLiteral("fuzz_hci_elevation")},

@@ -3,6 +3,7 @@
 // itself and compared with the position the test interpolates on its own; the originals stay byte
 // for byte as they were; photos outside the track, in its gaps, without a time and files that are
 // no photo are named with their reason.
+#include "EventPairing.h"
 #include "FlightLog.h"
 #include "GeotagTestSupport.h"
 #include "Geotagger.h"
@@ -10,6 +11,7 @@
 #include "TestData.h"
 #include "Track.h"
 
+#include <QJsonArray>
 #include <QTemporaryDir>
 #include <QTest>
 
@@ -430,6 +432,92 @@ private slots:
         QVERIFY(plainTrack);
         const auto p = positionAt(*plainTrack, test::kTrackStart + 5'000, 5000, &error);
         QVERIFY(p && !p->heading);
+    }
+
+    // A survey's shutter events and the card's photos: the camera's clock an hour and some off, its
+    // times in whole hundredths; two events without a photo (frames lost), three test shots on the
+    // ground before take-off and one stray photo between two events.
+    void pairsPhotosWithTheFlightsPhotoEvents()
+    {
+        std::vector<int64_t> events, photos;
+        const int64_t offset = 3'723'400; // the vehicle's clock minus the camera's
+        for (int i = 0; i < 100; ++i)
+            events.push_back(kTrackStart + i * 2000 + (i * 7919) % 300 - 150); // 2 s apart, ±150 ms
+        for (int64_t t : {kTrackStart - 60'000, kTrackStart - 50'000, kTrackStart - 40'000})
+            photos.push_back(t - offset);
+        for (int i = 0; i < 100; ++i)
+            if (i != 10 && i != 55)
+                photos.push_back((events[size_t(i)] - offset + 40) / 10 * 10); // the shutter's latency, hundredths
+        photos.push_back(events[70] + 1000 - offset);
+        std::sort(photos.begin(), photos.end());
+        const auto pairing = pairWithEvents(photos, events);
+        QVERIFY(pairing);
+        QVERIFY2(std::llabs(pairing->offsetMs + 40 - offset) <= 10, qPrintable(QString::number(pairing->offsetMs)));
+        QCOMPARE(pairing->pairs.size(), size_t(98));
+        QCOMPARE(pairing->unpairedEvents, (std::vector<size_t>{10, 55}));
+        QCOMPARE(pairing->unpairedPhotos.size(), size_t(4));
+        for (const auto &[photo, event] : pairing->pairs)
+            QVERIFY(std::llabs(photos[photo] + pairing->offsetMs - events[event]) <= pairing->toleranceMs);
+        // One photo is no pattern; none, nothing to pair.
+        QVERIFY(!pairWithEvents({photos[5]}, events));
+        QVERIFY(!pairWithEvents({}, events));
+    }
+
+    // With the track's photo events, each photo goes where the vehicle said it took it; an event
+    // without a photo is listed, a photo without one named. By time when asked.
+    void placesPhotosByTheirEvents()
+    {
+        Track track;
+        track.source = QStringLiteral("flight.sortielog");
+        for (int s = 0; s <= 40; ++s)
+            track.points.push_back({kTrackStart + s * 1000, 56.95 + 1e-5 * s, 24.10, 100, 60, 90});
+        for (int i = 0; i < 10; ++i)
+            track.photos.push_back({kTrackStart + 5000 + i * 3000, i + 1, 56.95 + 1e-5 * (5 + 3 * i) + 2e-7, 24.10 + 3e-7, 100.5, 91, 90});
+        std::vector<PhotoInfo> photos;
+        const int64_t cameraBehind = 7'200'000 + 250; // two hours and a quarter second
+        for (int i = 0; i < 10; ++i) {
+            if (i == 4)
+                continue; // frame lost
+            PhotoInfo p;
+            p.fileName = QStringLiteral("DSC_%1.JPG").arg(i + 1);
+            p.cameraTimeUtc = track.photos[size_t(i)].time - cameraBehind;
+            photos.push_back(p);
+        }
+        PhotoInfo ground;
+        ground.fileName = QStringLiteral("TEST.JPG");
+        ground.cameraTimeUtc = kTrackStart - 120'000 - cameraBehind;
+        photos.insert(photos.begin(), ground);
+
+        const GeotagReport report = matchPhotos(photos, track, {});
+        QVERIFY(report.byEvents);
+        QCOMPARE(report.offsetSeconds, 7200.25);
+        QCOMPARE(report.missing, (std::vector<int64_t>{5}));
+        QCOMPARE(report.tagged.size(), size_t(9));
+        QCOMPARE(report.untagged.size(), size_t(1));
+        QCOMPARE(report.untagged.front().file, QStringLiteral("TEST.JPG"));
+        QVERIFY(report.untagged.front().reason.contains(QLatin1String("no photo the vehicle reported")));
+        for (const TaggedPhoto &t : report.tagged) {
+            const int n = t.photo.fileName.mid(4, t.photo.fileName.indexOf(u'.') - 4).toInt();
+            const TrackPhoto &event = track.photos[size_t(n - 1)];
+            QCOMPARE(t.time, event.time);
+            QCOMPARE(t.position.latitude, event.latitude);  // the vehicle's own, not the track's
+            QCOMPARE(t.position.longitude, event.longitude);
+            QCOMPARE(t.position.altitudeAmsl, std::optional(100.5));
+            QCOMPARE(t.position.heading, std::optional(91.0));
+            QCOMPARE(t.position.heightAboveTakeoff, std::optional(60.0)); // from the track at that moment
+        }
+        const QJsonObject json = report.toJson();
+        QCOMPARE(json.value(QStringLiteral("matchedBy")).toString(), QStringLiteral("events"));
+        QCOMPARE(json.value(QStringLiteral("missing")).toArray().size(), 1);
+
+        // By time, as asked: the camera's clock is two hours behind the track, so nothing is on it.
+        MatchOptions byTime;
+        byTime.byEvents = false;
+        const GeotagReport timed = matchPhotos(photos, track, byTime);
+        QVERIFY(!timed.byEvents);
+        QCOMPARE(timed.tagged.size(), size_t(0));
+        byTime.offsetMs = cameraBehind;
+        QCOMPARE(matchPhotos(photos, track, byTime).tagged.size(), size_t(9));
     }
 };
 

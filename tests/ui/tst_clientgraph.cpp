@@ -5,6 +5,7 @@
 #include "Airspace.h"
 #include "ClientGraph.h"
 #include "PhotoSurvey.h"
+#include "MissionResume.h"
 #include "ServerZones.h"
 #include "ServerZoneReply.h"
 #include "MissionController.h"
@@ -128,7 +129,8 @@ private slots:
             {"traffic", &graph.traffic()}, {"video", graph.video()}, {"preflight", graph.preflight()}, {"gamepads", graph.gamepads()}, {"offlineMaps", &graph.offlineMaps()}, {"proximity", graph.proximity()},
             {"zoneAlerts", graph.zoneAlerts()}, {"deconfliction", graph.deconfliction()},
             {"recordingSettings", &graph.recordingSettings()}, {"replay", &graph.replay()},
-            {"comparison", &graph.comparison()}, {"serverHistory", &graph.serverHistory()}, {"photos", &graph.photos()}};
+            {"comparison", &graph.comparison()}, {"serverHistory", &graph.serverHistory()}, {"photos", &graph.photos()},
+            {"resume", graph.resume()}};
         const QMetaObject *meta = graph.metaObject();
         QCOMPARE(meta->propertyCount() - meta->propertyOffset(), int(std::size(services)));
         for (const auto &[name, object] : services) {
@@ -142,7 +144,7 @@ private slots:
             {"loginPage", {"connection"}},
             {"missionPage", {"missions", "elevation", "endurance", "traffic", "fleetRoutes", "deconfliction", "airspace", "zoneSharing"}},
             {"telemetryPage", {"fleet", "replay", "serverHistory", "comparison", "endurance", "traffic", "fleetRoutes",
-                               "proximity", "zoneAlerts", "airspace", "preflight", "gamepads", "photos"}}};
+                               "proximity", "zoneAlerts", "airspace", "preflight", "gamepads", "photos", "resume"}}};
         for (const auto &[pageName, names] : pages) {
             QObject *page = fixture.page(pageName);
             QVERIFY2(page, pageName);

@@ -70,6 +70,11 @@ ApplicationWindow {
         target: window.graph.connection
         function onReady() { tabs.currentIndex = 1 }
     }
+    // A resumed mission opens in the mission editor: the operator goes there to check and upload it.
+    Connections {
+        target: window.graph.resume
+        function onOpened() { tabs.currentIndex = 1 }
+    }
 
     DisplayUnits {
         id: units

@@ -119,6 +119,17 @@ Pane {
                 textRole: "name"
                 valueRole: "vehicleId"
                 onCurrentValueChanged: panel.preparation.vehicleId = currentIndex >= 0 ? currentValue : ""
+                // A vehicle chosen elsewhere (a resumed mission opened for its vehicle) shows here.
+                function follow() {
+                    const at = indexOfValue(panel.preparation.vehicleId)
+                    if (at !== currentIndex && (at >= 0 || panel.preparation.vehicleId === ""))
+                        currentIndex = at
+                }
+                Connections {
+                    target: panel.preparation
+                    function onVehicleIdChanged() { vehiclePicker.follow() }
+                }
+                onCountChanged: follow()
             }
             Button { objectName: "uploadButton"; text: qsTr("Upload"); enabled: vehiclePicker.currentIndex >= 0 && !panel.preparation.uploader.busy
                      onClicked: panel.preparation.upload() }

@@ -22,6 +22,8 @@ Page {
     readonly property ComparisonController comparison: graph.comparison
     // The replayed flight's photos (the timeline's Photos… dialog), drawn where they were taken.
     readonly property PhotoSurvey photos: graph.photos
+    // A mission the chosen vehicle stopped half-way, offered to be finished; null without vehicles.
+    readonly property MissionResume resume: graph.resume
     // The energy profile and wind the in-flight advice prices with (the mission page chooses them).
     readonly property RouteEndurance endurance: graph.endurance
     readonly property Traffic traffic: graph.traffic   // manned traffic around (ADS-B)
@@ -321,6 +323,18 @@ Page {
                     const v = page.current
                     commands.confirm(advisory.returnHomeQuestion, () => page.fleet.commands.send(CommandPolicy.ReturnHome, v))
                 }
+            }
+            ResumePanel {
+                objectName: "resumePanel"
+                Layout.fillWidth: true
+                theme: page.theme
+                resume: page.resume
+            }
+            Binding {
+                target: page.resume
+                when: page.resume !== null
+                property: "vehicle"
+                value: page.replaying ? null : page.current
             }
             CommandBar {
                 id: commands

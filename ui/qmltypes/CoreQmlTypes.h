@@ -35,6 +35,7 @@
 #include "VehicleFleet.h"
 #include "VehicleVideo.h"
 #include "PreflightChecklists.h"
+#include "MissionResume.h"
 #include "GamepadCommands.h"
 #include "VehicleChecklist.h"
 #include "VideoReceiver.h"
@@ -219,6 +220,14 @@ struct PreflightChecklistsForeign
     Q_GADGET
     QML_FOREIGN(sortie::preflight::PreflightChecklists)
     QML_NAMED_ELEMENT(PreflightChecklists)
+    QML_UNCREATABLE("made by the program and handed to the views")
+};
+// The offer to finish a mission a vehicle stopped half-way (core/resume/client), made by the client graph.
+struct MissionResumeForeign
+{
+    Q_GADGET
+    QML_FOREIGN(sortie::resume::MissionResume)
+    QML_NAMED_ELEMENT(MissionResume)
     QML_UNCREATABLE("made by the program and handed to the views")
 };
 struct GamepadCommandsForeign

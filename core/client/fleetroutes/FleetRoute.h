@@ -43,6 +43,9 @@ struct FleetRoute
     QDateTime startedAt;
     double flightSeconds = qQNaN(); // the time model's total (timeRoute, timingOf); NaN: cannot be timed
     std::optional<FleetRouteProgress> progress; // Flying and Flown only
+    // Uploaded after flying part of it (landed, sent home, disarmed): the progress when it stopped,
+    // what a resume starts from. Cleared when it flies again.
+    std::optional<FleetRouteProgress> stoppedShort;
 };
 
 } // namespace sortie::client

@@ -138,6 +138,14 @@ std::vector<FleetRouteState> FleetRoutes::statesOf(const QString &vehicleId) con
     return states;
 }
 
+const FleetRoute *FleetRoutes::onBoard(const QString &vehicleId) const
+{
+    for (const Row &row : m_rows)
+        if (row.value.vehicleId == vehicleId && !row.planned)
+            return &row.value;
+    return nullptr;
+}
+
 QPolygonF FleetRoutes::pathAt(int row) const
 {
     return row >= 0 && row < count() ? m_rows[size_t(row)].path : QPolygonF();
@@ -277,6 +285,7 @@ bool FleetRoutes::track(Row &row)
             if (r.state != FleetRouteState::Flying) {
                 r.state = FleetRouteState::Flying;
                 r.startedAt = now;
+                r.stoppedShort.reset();
             }
             FleetRouteProgress p;
             p.count = int(v->mission().size());
@@ -293,6 +302,7 @@ bool FleetRoutes::track(Row &row)
         } else if (r.state == FleetRouteState::Flying) {
             r.state = FleetRouteState::Uploaded; // stopped short: still on board, no longer flown
             r.startedAt = {};
+            r.stoppedShort = r.progress;
             r.progress.reset();
         }
     }

@@ -70,6 +70,9 @@ public:
     // The states of the vehicle's rows (its fleet id), in row order: at most one on board and one
     // planned. Cheap: no route is copied (the pre-flight check asks at every change).
     std::vector<FleetRouteState> statesOf(const QString &vehicleId) const;
+    // The route the vehicle (its fleet id) holds, as uploaded, with its state and progress; nullptr
+    // when it holds none. Valid until the rows next change.
+    const FleetRoute *onBoard(const QString &vehicleId) const;
     // The flown path of a row, longitude/latitude (what the `path` role holds).
     QPolygonF pathAt(int row) const;
 

@@ -2,6 +2,7 @@
 
 #include "FlightLogLog.h"
 #include "FlightLogSchema.h"
+#include "PhotoEvents.h"
 #include "PrivateFiles.h"
 
 #include <QDateTime>
@@ -183,6 +184,9 @@ void FlightRecorder::addVehicle(Vehicle *vehicle)
         m_chunk.missions.push_back({r.key, vehicleTime(r), r.vehicle->mission()});
         const size_t n = r.vehicle->mission().size();
         writeEvent(r, QStringLiteral("upload"), n == 1 ? tr("Route of 1 waypoint") : tr("Route of %1 waypoints").arg(n));
+    }));
+    r.connections.push_back(connect(vehicle, &Vehicle::photoTaken, this, [this, &r](const vehicle::CameraPhoto &photo) {
+        m_chunk.events.push_back({r.key, photo.time > 0 ? photo.time : vehicleTime(r), QString::fromLatin1(kPhotoEventKind), photoEventText(photo), -1});
     }));
     r.connections.push_back(connect(vehicle, &QObject::destroyed, this, [this, raw = vehicle] {
         for (auto it = m_recorded.begin(); it != m_recorded.end(); ++it) {

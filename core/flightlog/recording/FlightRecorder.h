@@ -16,7 +16,8 @@
 namespace sortie::flightlog {
 
 // Records vehicles into a flight log while they fly: every telemetry batch their links deliver,
-// their link changes, arming and mode changes, uploaded routes and identities; and the results of the
+// their link changes, arming and mode changes, uploaded routes and identities, the photos their
+// cameras took (PhotoEvents.h); and the results of the
 // commands a command log (the fleet's) saw sent to them.
 // This object only gathers (a vector append per value) on the thread the vehicles live on; every
 // flushInterval the gathered chunk goes to a FlightLogWriter on a thread of its own, which encodes

@@ -1,5 +1,7 @@
 #include "ReplayEventModel.h"
 
+#include "PhotoEvents.h"
+
 #include <QDateTime>
 
 #include <algorithm>
@@ -13,7 +15,9 @@ void ReplayEventModel::reset(const FlightLog *log)
     m_events.clear();
     if (log) {
         for (const FlightLog::Event &e : log->events()) {
-            if (e.kind != QLatin1String("session")) // the recorder's own start and stop
+            // Not the recorder's own start and stop, nor photos: a survey takes hundreds, and the
+            // Photos… step places them.
+            if (e.kind != QLatin1String("session") && e.kind != QLatin1String(kPhotoEventKind))
                 m_events.push_back(&e);
         }
     }

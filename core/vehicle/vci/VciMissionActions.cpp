@@ -1,7 +1,5 @@
 #include "VciMissionActions.h"
 
-#include "SegmentPlanner.h"
-
 #include <numbers>
 
 namespace sortie::vehicle {
@@ -97,33 +95,6 @@ Result<MissionAction> vciAction(const WaypointAction &action)
         }
     };
     return std::visit(Visitor{}, action);
-}
-
-MissionAction seriesByDistance(double interval)
-{
-    return {QStringLiteral("camera_by_distance"), {{QStringLiteral("interval"), interval}, {QStringLiteral("shots"), 0}, {QStringLiteral("delay"), 0.0}}};
-}
-
-// The camera commands of a planned point, as sortie-sim's ProcessRoute turns them into actions.
-std::vector<MissionAction> cameraActions(const PlannedPoint &p)
-{
-    std::vector<MissionAction> out;
-    for (const CameraCommand &c : p.camera) {
-        switch (c.kind) {
-        case CameraCommand::Kind::FaceDown:
-            out.push_back({QStringLiteral("gimbal"), {{QStringLiteral("tilt"), 90 * kRad}, {QStringLiteral("roll"), 0.0}, {QStringLiteral("yaw"), 0.0}}});
-            break;
-        case CameraCommand::Kind::FaceHeading:
-            out.push_back({QStringLiteral("heading"), {{QStringLiteral("heading"), c.value * kRad}, {QStringLiteral("relativeToNext"), false}}});
-            out.push_back({QStringLiteral("gimbal"), {{QStringLiteral("tilt"), 0.0}}});
-            break;
-        case CameraCommand::Kind::StartSeries:
-        case CameraCommand::Kind::StopSeries:
-            out.push_back(seriesByDistance(c.value));
-            break;
-        }
-    }
-    return out;
 }
 
 } // namespace sortie::vehicle

@@ -3,6 +3,7 @@
 #include "ElevationService.h"
 #include "VciFence.h"
 #include "VciMissionPlanner.h"
+#include "VciPhoto.h"
 #include "Route.h"
 #include "VciProfile.h"
 #include "VciTelemetryMapper.h"
@@ -203,6 +204,10 @@ void VciVehicleLink::onNotified(const QString &uri, const nlohmann::json &body)
     }
     if (u == profile::kFenceStatus)
         onFenceStatus(body);
+    if (u == profile::kCameraPhoto) {
+        onPhoto(body);
+        return;
+    }
     TelemetryBatch batch = vciTelemetry(u, body, QDateTime::currentMSecsSinceEpoch());
     if (!batch.empty())
         emit telemetryReceived(batch);
@@ -280,6 +285,38 @@ void VciVehicleLink::onFenceStatus(const nlohmann::json &body)
         //: After a fence breach, the vehicle named no action: "fence breach: left its fence 'A'; action unknown".
         action = QCoreApplication::translate("VciVehicleLink", "action unknown");
     emit alertReported(QCoreApplication::translate("VciVehicleLink", "fence breach: %1; %2").arg(where.arg(QString::fromStdString(status->name)), action));
+}
+
+void VciVehicleLink::onPhoto(const nlohmann::json &body)
+{
+    std::string error;
+    const auto photo = profile::decodePhoto(body, &error);
+    if (!photo) {
+        if (!error.empty())
+            emit errorOccurred(QCoreApplication::translate("VciVehicleLink", "a photo report was not understood: %1").arg(QString::fromStdString(error)));
+        else
+            m_photoSequence = 0;  // null: none taken yet, so the first one is new
+        return;
+    }
+    // The first report after subscribing is the last photo taken before: known, not new. After
+    // that, each later sequence is a new photo; a lower one, a vehicle that started counting again.
+    const bool known = m_photoSequence < 0 || photo->sequence == m_photoSequence;
+    m_photoSequence = photo->sequence;
+    if (known)
+        return;
+    const auto degrees = [](const std::optional<double> &radians) { return radians ? degreesFromRadians(*radians) : qQNaN(); };
+    CameraPhoto p;
+    p.sequence = photo->sequence;
+    p.time = photo->time;
+    p.latitude = degreesFromRadians(photo->latitude);
+    p.longitude = degreesFromRadians(photo->longitude);
+    p.altitudeAmsl = photo->altitudeAmsl.value_or(qQNaN());
+    p.altitudeAgl = photo->altitudeAgl.value_or(qQNaN());
+    p.roll = degrees(photo->roll);
+    p.pitch = degrees(photo->pitch);
+    p.yaw = degrees(photo->yaw);
+    p.gimbalTilt = degrees(photo->gimbalTilt);
+    emit photoTaken(p);
 }
 
 void VciVehicleLink::prepareMission(const mission::Route &route, PrepareDone done)

@@ -72,6 +72,7 @@ private:
                      QDeadlineTimer deadline);
     void sendFence(const PreparedMission &mission, Done next);
     void onFenceStatus(const nlohmann::json &body);
+    void onPhoto(const nlohmann::json &body);
     static CommandResult toCommandResult(const vci::VciResult &result);
 
     // How long an upload waits for terrain data a source is still fetching.
@@ -86,6 +87,7 @@ private:
     State m_state = State::Disconnected;
     bool m_stopping = false;
     int m_fenceBreaches = -1; // as /fence/status last said; -1 before the first
+    qint64 m_photoSequence = -1; // the last photo heard of on /camera/photo; -1 before the first
 };
 
 } // namespace sortie::vehicle
