@@ -14,6 +14,9 @@ SINGULAR = {
         "%n AMSL altitude, at %1, was not checked against the route's limits: the take-off elevation is unknown.",
     "%n geotagged copies, geo.txt and geotags.csv written to %1.": "%n geotagged copy, geo.txt and geotags.csv written to %1.",
     "%1 of %n photos placed on %2's track (camera clock %3 s).": "%1 of %n photo placed on %2's track (camera clock %3 s).",
+    "%1 of %n photos placed where %2 took them, paired with its photo events (camera clock %3 s off).":
+        "%1 of %n photo placed where %2 took it, paired with its photo events (camera clock %3 s off).",
+    "%n photo(s) the vehicle took are not in the folder.": "%n photo the vehicle took is not in the folder.",
 }
 
 

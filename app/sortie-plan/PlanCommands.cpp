@@ -10,6 +10,7 @@
 #include "DemOpener.h"
 #include "MissionFiles.h"
 #include "ReportJson.h"
+#include "ResumeRoute.h"
 #include "RouteStatistics.h"
 #include "RouteValidator.h"
 #include "ScanPlanCache.h"
@@ -407,6 +408,139 @@ int runScan(const QStringList &args, Streams io)
                << "trigger every " << QString::number(plan.triggerDistance, 'f', 1) << " m, " << plan.photoCount << " photos, path "
                << QString::number(plan.pathLength, 'f', 0) << " m\n"
                << "wrote " << p.positionalArguments().at(1) << "\n";
+    }
+    return Ok;
+}
+
+namespace {
+
+// "LAT,LON" in degrees; nullopt when it is not.
+std::optional<GeoPoint> readPoint(const QString &text)
+{
+    const QStringList parts = text.split(QLatin1Char(','));
+    bool a = false, b = false;
+    const GeoPoint p{parts.size() == 2 ? parts[0].trimmed().toDouble(&a) : 0.0, parts.size() == 2 ? parts[1].trimmed().toDouble(&b) : 0.0};
+    return a && b && p.isValid() ? std::optional(p) : std::nullopt;
+}
+
+} // namespace
+
+int runResume(const QStringList &args, Streams io)
+{
+    QCommandLineParser p;
+    p.addOption({QStringLiteral("takeoff"), QStringLiteral("Where the vehicle takes off for the rest (degrees)."), QStringLiteral("LAT,LON")});
+    p.addOption({QStringLiteral("photo"), QStringLiteral("Where the last photo was taken: the rest starts where the next was due."), QStringLiteral("LAT,LON")});
+    p.addOption({QStringLiteral("battery-change"), QStringLiteral("The rest from the N-th battery change the endurance model places (with --vehicle)."), QStringLiteral("N")});
+    p.addOption({QStringLiteral("vehicle"), QStringLiteral("Energy profile (JSON), for --battery-change."), QStringLiteral("PROFILE")});
+    p.addOption({QStringLiteral("wind"), QStringLiteral("With --vehicle: wind speed (m/s) and the direction it blows from (degrees)."), QStringLiteral("SPEED,FROM_DEG")});
+    p.addOption({QStringLiteral("turns"), QStringLiteral("With --vehicle: coordinated (default) or stop."), QStringLiteral("MODE")});
+    p.addOption({QStringLiteral("transit"), QStringLiteral("Height of the flight over to the resume point (m, in its altitude frame)."), QStringLiteral("M")});
+    p.addOption({QStringLiteral("route"), QStringLiteral("The route (1-based) of a file that holds several."), QStringLiteral("N")});
+    p.addOption({QStringLiteral("force"), QStringLiteral("Write the rest even with validation errors.")});
+    p.addOption({QStringLiteral("json"), QStringLiteral("Machine-readable summary.")});
+    if (!parse(p, args, 2, io))
+        return Failure;
+    const auto takeoff = readPoint(p.value(QStringLiteral("takeoff")));
+    if (!takeoff) {
+        io.err << "sortie-plan: resume needs --takeoff LAT,LON (degrees), where the vehicle stands\n";
+        return Failure;
+    }
+    if (p.isSet(QStringLiteral("photo")) == p.isSet(QStringLiteral("battery-change"))) {
+        io.err << "sortie-plan: resume needs one of --photo LAT,LON and --battery-change N\n";
+        return Failure;
+    }
+    const Result<LoadedMission> loaded = loadMission(p.positionalArguments().at(0));
+    if (!loaded) {
+        io.err << "sortie-plan: " << loaded.error().toString() << "\n";
+        return Failure;
+    }
+    const auto &routes = loaded->mission.routes;
+    int index = 0;
+    if (p.isSet(QStringLiteral("route"))) {
+        bool ok = false;
+        index = p.value(QStringLiteral("route")).toInt(&ok) - 1;
+        if (!ok || index < 0 || size_t(index) >= routes.size()) {
+            io.err << "sortie-plan: --route takes 1 to " << routes.size() << "\n";
+            return Failure;
+        }
+    } else if (routes.size() != 1) {
+        io.err << "sortie-plan: " << p.positionalArguments().at(0) << " holds " << routes.size() << " routes: choose one with --route N\n";
+        return Failure;
+    }
+    const Route &route = routes[size_t(index)];
+
+    resume::ResumeRequest request;
+    request.takeoff = *takeoff;
+    if (p.isSet(QStringLiteral("transit"))) {
+        bool ok = false;
+        request.transitAltitude = p.value(QStringLiteral("transit")).toDouble(&ok);
+        if (!ok || !std::isfinite(*request.transitAltitude)) {
+            io.err << "sortie-plan: --transit takes metres\n";
+            return Failure;
+        }
+    }
+    if (p.isSet(QStringLiteral("photo"))) {
+        const auto photo = readPoint(p.value(QStringLiteral("photo")));
+        if (!photo) {
+            io.err << "sortie-plan: --photo takes LAT,LON in degrees\n";
+            return Failure;
+        }
+        request.lastPhoto = *photo;
+    } else {
+        if (!p.isSet(QStringLiteral("vehicle"))) {
+            io.err << "sortie-plan: --battery-change needs --vehicle PROFILE.json: the changes are the endurance model's\n";
+            return Failure;
+        }
+        QString error;
+        const auto endurance = readEnduranceInput(p.value(QStringLiteral("vehicle")), p.value(QStringLiteral("wind")), p.value(QStringLiteral("turns")), &error);
+        if (!endurance) {
+            io.err << "sortie-plan: " << error << "\n";
+            return Failure;
+        }
+        const auto estimate = endurance::estimateEndurance(route, endurance->profile, endurance->conditions);
+        if (!estimate) {
+            io.err << "sortie-plan: " << estimate.error().toString() << "\n";
+            return Failure;
+        }
+        bool ok = false;
+        const int n = p.value(QStringLiteral("battery-change")).toInt(&ok);
+        if (!ok || n < 1 || size_t(n) > estimate->changes.size()) {
+            io.err << "sortie-plan: the route has " << estimate->changes.size() << " battery change(s) with this profile; --battery-change takes 1 to "
+                   << estimate->changes.size() << "\n";
+            return Failure;
+        }
+        const endurance::BatteryChange &change = estimate->changes[size_t(n - 1)];
+        request.from = resume::ResumeRequest::From::Place;
+        request.place = change.at.position;
+        request.placeDistance = change.at.distance;
+    }
+    const auto plan = resume::resumeRoute(route, request);
+    if (!plan) {
+        io.err << "sortie-plan: " << plan.error().toString() << "\n";
+        return Failure;
+    }
+    Mission rest;
+    rest.name = plan->route.settings.name;
+    rest.routes.push_back(plan->route);
+    const int rc = saveWithGate(rest, p.positionalArguments().at(1), 0, p.isSet(QStringLiteral("force")), io);
+    if (rc != Ok)
+        return rc;
+    if (p.isSet(QStringLiteral("json"))) {
+        Json notes = Json::array();
+        for (const QString &n : plan->notes)
+            notes.push_back(n.toStdString());
+        const Json summary{{"name", plan->route.settings.name.toStdString()},
+                           {"resumedRow", plan->resumedRow + 1},
+                           {"resumeAt", {{"latitude", plan->resumeAt.latitude}, {"longitude", plan->resumeAt.longitude}}},
+                           {"flown", plan->flownMetres},
+                           {"remaining", plan->remainingMetres},
+                           {"segments", plan->route.segments.size()},
+                           {"notes", notes}};
+        io.out << QString::fromStdString(summary.dump(2)) << "\n";
+    } else {
+        for (const QString &n : plan->notes)
+            io.out << n << "\n";
+        io.out << "wrote " << p.positionalArguments().at(1) << "\n";
     }
     return Ok;
 }

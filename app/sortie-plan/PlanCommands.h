@@ -19,5 +19,7 @@ struct Streams
 int runConvert(const QStringList &args, Streams io);
 int runStats(const QStringList &args, Streams io);
 int runScan(const QStringList &args, Streams io);
+// The rest of a route stopped half-way (docs/resume.md), from the last photo or a battery change.
+int runResume(const QStringList &args, Streams io);
 
 } // namespace sortie::plan

@@ -47,6 +47,13 @@ const char *const kUsage =
     "       [--turnaround M] [--speed M/S] [--amsl] [--camera NAME,SENSOR_W_MM,SENSOR_H_MM,FOCAL_MM,IMAGE_W_PX,IMAGE_H_PX]\n"
     "       [--json] [--force]\n"
     "      Generate an area scan over a KML polygon and save it as a route.\n"
+    "  resume FILE OUT --takeoff LAT,LON (--photo LAT,LON | --battery-change N --vehicle PROFILE.json\n"
+    "         [--wind SPEED,FROM_DEG] [--turns coordinated|stop]) [--transit M] [--route N] [--force] [--json]\n"
+    "      The rest of a route stopped half-way, as a route of its own: a take-off at --takeoff, the\n"
+    "      flight over at the transit height, then the rest with the camera as it was there, from where\n"
+    "      the next photo was due after the last one (--photo), or from the N-th battery change the\n"
+    "      endurance model places with that profile. Saved through the validation gate (exit 2 when the\n"
+    "      rest has errors, unless --force).\n"
     "\n"
     "scan --force writes a route even when it has validation errors.\n";
 }
@@ -77,6 +84,8 @@ int main(int argc, char **argv)
         return sortie::plan::runConflicts(args, io);
     if (command == QLatin1String("scan"))
         return sortie::plan::runScan(args, io);
+    if (command == QLatin1String("resume"))
+        return sortie::plan::runResume(args, io);
     err << "sortie-plan: unknown command \"" << command << "\"\n\n" << kUsage;
     return sortie::plan::Failure;
 }

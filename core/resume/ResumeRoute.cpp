@@ -246,6 +246,14 @@ Result<ResumePlan> resumeRoute(const Route &flown, const ResumeRequest &request,
         plan.offPath = geodesicDistance(path[size_t(reached)].waypoint.position, request.reached.back());
         if (request.reached.back().isValid() && plan.offPath > request.waypointTolerance)
             plan.notes << QCoreApplication::translate("ResumeRoute", "The last waypoint the vehicle reached is not one of the route's own: the rest starts at the route's point before it.");
+    } else if (request.from == ResumeRequest::From::Place) {
+        const auto at = request.placeDistance >= 0 ? advance(path, {}, request.placeDistance) : std::nullopt;
+        if (!at || !request.place.isValid())
+            return failure(QCoreApplication::translate("ResumeRoute", "the place to resume from is not on the route's path"));
+        place = *at;
+        plan.offPath = geodesicDistance(positionOf(path, place), request.place);
+        if (plan.offPath > request.waypointTolerance)
+            return failure(QCoreApplication::translate("ResumeRoute", "the place to resume from is %1 m from where the route's path is that far along").arg(metres(plan.offPath)));
     } else {
         if (!request.lastPhoto.isValid())
             return failure(QCoreApplication::translate("ResumeRoute", "where the last photo was taken is not known"));

@@ -20,9 +20,15 @@ struct ResumeRequest
     enum class From {
         LastPhoto,    // the next photo is due a series interval after the last one: the rest starts there
         LastWaypoint, // the rest starts at the last waypoint the vehicle reached
+        Place,        // the rest starts at a place on the path: a battery change the endurance model placed
     };
     From from = From::LastPhoto;
     mission::GeoPoint lastPhoto;  // LastPhoto: where the last photo was taken
+    // Place: how far along the path, metres of horizontal flight from the route's start, and where
+    // that is (endurance::BatteryChange::at's distance and position): the distance says which pass
+    // of a place the path makes twice (home), the position checks it.
+    double placeDistance = 0.0;
+    mission::GeoPoint place;
     // LastWaypoint: the positions of the mission's waypoints the vehicle reached, in order (what it
     // holds may have more points than the route's path, such as terrain following's: those are
     // passed over). In order, because a path may come back to where it was (a landing at home).

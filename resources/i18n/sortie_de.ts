@@ -3474,6 +3474,14 @@ Ereignisse: %1
         <source>The gimbal is tilted to %1° there, as it was.</source>
         <translation>Der Gimbal wird dort wie zuvor auf %1° geneigt.</translation>
     </message>
+    <message>
+        <source>the place to resume from is not on the route&apos;s path</source>
+        <translation>der Ort, an dem fortgesetzt werden soll, liegt nicht auf dem Pfad der Route</translation>
+    </message>
+    <message>
+        <source>the place to resume from is %1 m from where the route&apos;s path is that far along</source>
+        <translation>der Ort, an dem fortgesetzt werden soll, liegt %1 m von der Stelle entfernt, an der der Pfad der Route so weit ist</translation>
+    </message>
 </context>
 <context>
     <name>RouteDiff</name>
@@ -7239,6 +7247,20 @@ Ereignisse: %1
         <translation>
             <numerusform>„Lücken nachfliegen“ ist im Missionseditor geöffnet: %n Flächenscan auf %1 m, %2/%3 % Überlappung.</numerusform>
             <numerusform>„Lücken nachfliegen“ ist im Missionseditor geöffnet: %n Flächenscans auf %1 m, %2/%3 % Überlappung.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n photos placed where %2 took them, paired with its photo events (camera clock %3 s off).</source>
+        <translation>
+            <numerusform>%1 von %n Foto dort platziert, wo %2 es aufnahm, gepaart mit seinen Fotoereignissen (Kamerauhr %3 s daneben).</numerusform>
+            <numerusform>%1 von %n Fotos dort platziert, wo %2 sie aufnahm, gepaart mit seinen Fotoereignissen (Kamerauhr %3 s daneben).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n photo(s) the vehicle took are not in the folder.</source>
+        <translation>
+            <numerusform>%n Foto, das das Fahrzeug aufnahm, fehlt im Ordner.</numerusform>
+            <numerusform>%n Fotos, die das Fahrzeug aufnahm, fehlen im Ordner.</numerusform>
         </translation>
     </message>
 </context>

@@ -316,6 +316,20 @@
             <numerusform>&quot;Re-fly the gaps&quot; is open in the mission editor: %n area scans at %1 m, %2/%3 % overlap.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>%1 of %n photos placed where %2 took them, paired with its photo events (camera clock %3 s off).</source>
+        <translation>
+            <numerusform>%1 of %n photo placed where %2 took it, paired with its photo events (camera clock %3 s off).</numerusform>
+            <numerusform>%1 of %n photos placed where %2 took them, paired with its photo events (camera clock %3 s off).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n photo(s) the vehicle took are not in the folder.</source>
+        <translation>
+            <numerusform>%n photo the vehicle took is not in the folder.</numerusform>
+            <numerusform>%n photos the vehicle took are not in the folder.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>sortie::flightlog::FlightLogWriter</name>

@@ -3474,6 +3474,14 @@ eventos:   %1
         <source>The gimbal is tilted to %1° there, as it was.</source>
         <translation>El gimbal se inclina allí a %1°, como estaba.</translation>
     </message>
+    <message>
+        <source>the place to resume from is not on the route&apos;s path</source>
+        <translation>el lugar desde el que reanudar no está en la trayectoria de la ruta</translation>
+    </message>
+    <message>
+        <source>the place to resume from is %1 m from where the route&apos;s path is that far along</source>
+        <translation>el lugar desde el que reanudar está a %1 m de donde la trayectoria de la ruta llega a esa distancia</translation>
+    </message>
 </context>
 <context>
     <name>RouteDiff</name>
@@ -7239,6 +7247,20 @@ eventos:   %1
         <translation>
             <numerusform>«Volver a volar los huecos» está abierta en el editor de misiones: %n barrido de área a %1 m, solape %2/%3 %.</numerusform>
             <numerusform>«Volver a volar los huecos» está abierta en el editor de misiones: %n barridos de área a %1 m, solape %2/%3 %.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n photos placed where %2 took them, paired with its photo events (camera clock %3 s off).</source>
+        <translation>
+            <numerusform>%1 de %n foto colocada donde %2 la tomó, emparejada con sus eventos de foto (reloj de la cámara desfasado %3 s).</numerusform>
+            <numerusform>%1 de %n fotos colocadas donde %2 las tomó, emparejadas con sus eventos de foto (reloj de la cámara desfasado %3 s).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n photo(s) the vehicle took are not in the folder.</source>
+        <translation>
+            <numerusform>%n foto que tomó el vehículo no está en la carpeta.</numerusform>
+            <numerusform>%n fotos que tomó el vehículo no están en la carpeta.</numerusform>
         </translation>
     </message>
 </context>

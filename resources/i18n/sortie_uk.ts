@@ -3484,6 +3484,14 @@ events:   %1
         <source>The gimbal is tilted to %1° there, as it was.</source>
         <translation>Підвіс там нахилено на %1°, як було.</translation>
     </message>
+    <message>
+        <source>the place to resume from is not on the route&apos;s path</source>
+        <translation>місце продовження не лежить на шляху маршруту</translation>
+    </message>
+    <message>
+        <source>the place to resume from is %1 m from where the route&apos;s path is that far along</source>
+        <translation>місце продовження за %1 м від точки, де шлях маршруту сягає такої відстані</translation>
+    </message>
 </context>
 <context>
     <name>RouteDiff</name>
@@ -7276,6 +7284,22 @@ events:   %1
             <numerusform>«Перелетіти прогалини» відкрито в редакторі місій: %n зйомка площі на %1 м, перекриття %2/%3 %.</numerusform>
             <numerusform>«Перелетіти прогалини» відкрито в редакторі місій: %n зйомки площі на %1 м, перекриття %2/%3 %.</numerusform>
             <numerusform>«Перелетіти прогалини» відкрито в редакторі місій: %n зйомок площі на %1 м, перекриття %2/%3 %.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1 of %n photos placed where %2 took them, paired with its photo events (camera clock %3 s off).</source>
+        <translation>
+            <numerusform>%1 з %n фото розміщено там, де %2 його зробив, за його подіями фото (годинник камери зсунуто на %3 с).</numerusform>
+            <numerusform>%1 з %n фото розміщено там, де %2 їх зробив, за його подіями фото (годинник камери зсунуто на %3 с).</numerusform>
+            <numerusform>%1 з %n фото розміщено там, де %2 їх зробив, за його подіями фото (годинник камери зсунуто на %3 с).</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n photo(s) the vehicle took are not in the folder.</source>
+        <translation>
+            <numerusform>%n фото, зроблене апаратом, відсутнє в теці.</numerusform>
+            <numerusform>%n фото, зроблені апаратом, відсутні в теці.</numerusform>
+            <numerusform>%n фото, зроблених апаратом, немає в теці.</numerusform>
         </translation>
     </message>
 </context>

@@ -95,6 +95,35 @@ int main(int argc, char **argv)
     if (int(report.tagged.size()) != kPhotos)
         qFatal("only %zu of %d photos matched", report.tagged.size(), kPhotos);
 
+    // By photo events: the same photos paired with the shutter's events (the camera's clock 61.3 s
+    // behind, every 50th event not heard, two extra shots), the offset found.
+    {
+        geotag::Track withEvents = *track;
+        for (int i = 0; i < kPhotos; ++i) {
+            if (i % 50 == 7)
+                continue;
+            const auto p = geotag::positionAt(*track, *infos[size_t(i)].cameraTimeUtc, 5000, &error);
+            if (!p)
+                qFatal("%s", qPrintable(error));
+            withEvents.photos.push_back({*infos[size_t(i)].cameraTimeUtc + 61'300 + (i * 37) % 90, i + 1, p->latitude, p->longitude});
+        }
+        std::vector<geotag::PhotoInfo> card = infos;
+        for (int k = 0; k < 2; ++k) {
+            geotag::PhotoInfo extra = infos.front();
+            extra.fileName = QStringLiteral("EXTRA_%1.JPG").arg(k);
+            *extra.cameraTimeUtc -= 30'000 * (k + 1);
+            card.push_back(extra);
+        }
+        t.restart();
+        c0 = test::threadCpuMs();
+        const geotag::GeotagReport paired = geotag::matchPhotos(card, withEvents, {});
+        std::printf("geotag: %zu photos paired with %zu photo events (offset %.2f s found, %zu missing, %zu extra): %.1f ms wall, %.1f ms CPU\n",
+                    paired.tagged.size(), withEvents.photos.size(), paired.offsetSeconds, paired.missing.size(), paired.untagged.size(),
+                    elapsedMs(t), test::threadCpuMs() - c0);
+        if (!paired.byEvents || !paired.missing.empty() || paired.untagged.size() != size_t(kPhotos / 50 + 2))
+            qFatal("the pairing is wrong: by events %d, %zu missing, %zu extra", int(paired.byEvents), paired.missing.size(), paired.untagged.size());
+    }
+
     const QString steps = dir.filePath(QStringLiteral("out-steps"));
     QDir().mkpath(steps);
     t.restart();

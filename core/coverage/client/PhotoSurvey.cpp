@@ -257,6 +257,16 @@ QString PhotoSurvey::summary() const
 {
     if (!m_placed)
         return {};
+    if (m_placed->byEvents) {
+        // Paired with the shutter as the vehicle reported it: the clock's offset was found, not given.
+        QString text = tr("%1 of %n photos placed where %2 took them, paired with its photo events (camera clock %3 s off).", nullptr, m_files)
+                           .arg(m_placed->tagged.size())
+                           .arg(m_vehicle)
+                           .arg(m_placed->offsetSeconds, 0, 'f', 1);
+        if (!m_placed->missing.empty())
+            text += QLatin1Char(' ') + tr("%n photo(s) the vehicle took are not in the folder.", nullptr, int(m_placed->missing.size()));
+        return text;
+    }
     return tr("%1 of %n photos placed on %2's track (camera clock %3 s).", nullptr, m_files)
         .arg(m_placed->tagged.size())
         .arg(m_vehicle)
