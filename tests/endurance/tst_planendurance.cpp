@@ -5,6 +5,7 @@
 
 #include <QProcess>
 #include <QTemporaryDir>
+#include "LineQuad.h"
 #include "PlanRun.h"
 
 #include <QtTest>
@@ -16,30 +17,9 @@ namespace {
 using Run = sortie::test::PlanRun;
 Run run(const QStringList &args) { return sortie::test::runPlan(args); }
 
-const GeoPoint kOrigin{56.95, 24.1};
-
-// `legs` legs of 1000 m east at 10 m/s, 30 m up, home at the start.
-Mission lineMission(int legs)
-{
-    Route r;
-    r.settings.name = QStringLiteral("line");
-    r.settings.home = HomePosition{kOrigin, 0};
-    for (int i = 0; i <= legs; ++i) {
-        Waypoint w;
-        w.position = geodesicDirect(kOrigin, 90, 1000.0 * i).point;
-        w.altitude = 30;
-        w.speed = 10;
-        r.segments.push_back(w);
-    }
-    Mission m;
-    m.name = QStringLiteral("line");
-    m.routes.push_back(r);
-    return m;
-}
-
-// 288 W at 10 m/s: 8 Wh per 1000 m leg. 22.5 Wh with a 20 % reserve: 18 Wh usable.
-const QByteArray kProfile = R"({"name": "Line quad", "batteryWh": 22.5, "reserve": 0.2, "cruiseSpeed": 10,
-  "climbRate": 2, "descentRate": 1, "hoverPowerW": 360, "cruisePowerW": 288, "climbPowerW": 540, "descentPowerW": 180})";
+const GeoPoint kOrigin = sortie::test::kLineOrigin;
+using sortie::test::lineMission;
+const QByteArray kProfile = sortie::test::kLineQuadProfile;
 } // namespace
 
 class TstPlanEndurance : public QObject

@@ -4,6 +4,7 @@
 #include "Geodesy.h"
 #include "JsonCursor.h"
 #include "MissionFiles.h"
+#include "LineQuad.h"
 #include "PlanRun.h"
 
 #include <QTemporaryDir>
@@ -14,35 +15,20 @@ using Json = sortie::mission::formats::Json;
 
 namespace {
 
-const GeoPoint kOrigin{56.95, 24.1};
+const GeoPoint kOrigin = sortie::test::kLineOrigin;
 
-// Four legs of 1000 m east at 10 m/s, 30 m up, from a take-off at home, the camera every 50 m from the first.
+// Four legs of the line quad's route, the camera every 50 m from the first waypoint; its profile
+// changes the battery after two.
 Mission lineMission()
 {
-    Route r;
-    r.settings.name = QStringLiteral("line");
-    r.settings.home = HomePosition{kOrigin, 0};
-    for (int i = 0; i <= 4; ++i) {
-        Waypoint w;
-        w.position = geodesicDirect(kOrigin, 90, 1000.0 * i).point;
-        w.altitude = 30;
-        w.speed = 10;
-        if (i == 0) {
-            CameraSeriesByDistanceAction every50;
-            every50.intervalMeters = 50;
-            w.actions.push_back(every50);
-        }
-        r.segments.push_back(w);
-    }
-    Mission m;
-    m.name = QStringLiteral("line");
-    m.routes.push_back(r);
+    Mission m = sortie::test::lineMission(4);
+    CameraSeriesByDistanceAction every50;
+    every50.intervalMeters = 50;
+    std::get<Waypoint>(m.routes[0].segments[0]).actions.push_back(every50);
     return m;
 }
 
-// 288 W at 10 m/s: 8 Wh per 1000 m leg. 22.5 Wh with a 20 % reserve: 18 Wh usable, a change after two legs.
-const QByteArray kProfile = R"({"name": "Line quad", "batteryWh": 22.5, "reserve": 0.2, "cruiseSpeed": 10,
-  "climbRate": 2, "descentRate": 1, "hoverPowerW": 360, "cruisePowerW": 288, "climbPowerW": 540, "descentPowerW": 180})";
+const QByteArray kProfile = sortie::test::kLineQuadProfile;
 
 sortie::test::PlanRun run(const QStringList &args) { return sortie::test::runPlan(args); }
 

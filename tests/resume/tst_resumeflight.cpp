@@ -2,6 +2,7 @@
 // half-way, resumed from its last photo (core/resume), finished. The photos of both flights, as
 // the client heard them on /camera/photo, cover the field with the planned overlap, none is taken
 // twice at the same place, and each is in the flight log the client recorded.
+#include "CommandCatcher.h"
 #include "CoverageMap.h"
 #include "ResumeRoute.h"
 #include "ResumeTestRoute.h"
@@ -24,18 +25,7 @@ using namespace sortie;
 
 namespace {
 
-struct Outcome
-{
-    bool done = false;
-    vehicle::CommandResult result;
-    vehicle::VehicleLink::Done callback()
-    {
-        return [this](const vehicle::CommandResult &r) {
-            done = true;
-            result = r;
-        };
-    }
-};
+using Outcome = test::CommandCatcher;
 
 coverage::Shot shotOf(const vehicle::CameraPhoto &p)
 {
