@@ -199,6 +199,8 @@ std::optional<GeotagReport> matchByEvents(const std::vector<PhotoInfo> &photos, 
             position.altitudeAmsl = event.altitudeAmsl;
         if (std::isfinite(event.heading))
             position.heading = event.heading;
+        if (std::isfinite(event.gimbalTilt))
+            position.gimbalTilt = event.gimbalTilt;
         report.tagged.push_back({photo, event.time, position, {}});
     }
     return report;
@@ -253,6 +255,8 @@ bool writeGeotagged(GeotagReport &report, const QString &outFolder, QString *err
             tag.longitude = t.position.longitude;
             tag.altitudeAmsl = t.position.altitudeAmsl;
             tag.heightAboveTakeoff = t.position.heightAboveTakeoff;
+            if (t.position.gimbalTilt)
+                tag.gimbalPitch = -*t.position.gimbalTilt; // tilt 90 (down) is pitch -90
             tag.time = t.time;
             ok = PhotoMetadataFile::writeGeoTag(temporary, tag, &why);
             if (ok) {

@@ -20,6 +20,7 @@ struct TrackPosition
     double latitude = 0, longitude = 0;
     std::optional<double> altitudeAmsl, heightAboveTakeoff;
     std::optional<double> heading; // degrees from north, where the nose points, when the track has it
+    std::optional<double> gimbalTilt; // degrees, 90 down (UgCS's): from the vehicle's photo event
 };
 
 struct MatchOptions

@@ -287,6 +287,11 @@ bool PhotoMetadataFile::writeGeoTag(const QString &path, const GeoTag &tag, QStr
             xmp.erase(old);
         if (tag.heightAboveTakeoff && std::isfinite(*tag.heightAboveTakeoff))
             xmp[relative] = QString::number(*tag.heightAboveTakeoff, 'f', 3).toStdString();
+        const std::string pitch = std::string("Xmp.") + kSortieXmpPrefix + ".GimbalPitch";
+        if (const auto oldPitch = xmp.findKey(Exiv2::XmpKey(pitch)); oldPitch != xmp.end())
+            xmp.erase(oldPitch);
+        if (tag.gimbalPitch && std::isfinite(*tag.gimbalPitch))
+            xmp[pitch] = QString::number(*tag.gimbalPitch, 'f', 2).toStdString();
         image->writeMetadata();
     } catch (const Exiv2::AnyError &e) {
         if (error)

@@ -32,10 +32,14 @@ struct GeoTag
     std::optional<double> altitudeAmsl;       // m above mean sea level
     std::optional<double> heightAboveTakeoff; // m above the take-off point
     int64_t time = 0;                         // UTC, ms since the epoch: GPSDateStamp and GPSTimeStamp
+    // The camera's pitch, degrees from the horizon, -90 straight down (the photogrammetry tools'
+    // convention: UgCS's tilt negated), when the vehicle reported its gimbal.
+    std::optional<double> gimbalPitch;
 };
 
-// The XMP namespace of the height above take-off (docs/geotag.md): Xmp.sortie.RelativeAltitude,
-// metres above the take-off point as decimal text.
+// The XMP namespace of the height above take-off and the gimbal (docs/geotag.md):
+// Xmp.sortie.RelativeAltitude, metres above the take-off point, and Xmp.sortie.GimbalPitch, degrees
+// (-90 down), as decimal text.
 inline constexpr char kSortieXmpNamespace[] = "http://ns.sortie.invalid/geotag/1.0/";
 inline constexpr char kSortieXmpPrefix[] = "sortie";
 

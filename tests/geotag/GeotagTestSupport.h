@@ -87,7 +87,7 @@ inline QByteArray sha256(const QString &path)
 // The GPS tags of a geotagged copy, read back with exiv2.
 struct ReadBack
 {
-    std::optional<double> latitude, longitude, altitude, relativeAltitude;
+    std::optional<double> latitude, longitude, altitude, relativeAltitude, gimbalPitch;
     QString latitudeRef, longitudeRef, datum, version, dateStamp, timeStamp;
     int altitudeRef = -1;
 };
@@ -140,6 +140,12 @@ inline ReadBack readGps(const QString &path)
         const double value = QString::fromStdString(it->toString()).toDouble(&ok);
         if (ok)
             r.relativeAltitude = value;
+    }
+    if (auto it = xmp.findKey(Exiv2::XmpKey("Xmp.sortie.GimbalPitch")); it != xmp.end()) {
+        bool ok = false;
+        const double value = QString::fromStdString(it->toString()).toDouble(&ok);
+        if (ok)
+            r.gimbalPitch = value;
     }
     return r;
 }

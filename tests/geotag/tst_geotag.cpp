@@ -508,6 +508,22 @@ private slots:
         }
         const QJsonObject json = report.toJson();
         QCOMPARE(json.value(QStringLiteral("matchedBy")).toString(), QStringLiteral("events"));
+        // The copies carry the vehicle's position and the gimbal's pitch (tilt 90: -90, down).
+        QTemporaryDir dir;
+        GeotagReport written = report;
+        written.tagged.resize(2);
+        for (TaggedPhoto &t : written.tagged) {
+            t.photo.path = dir.filePath(t.photo.fileName);
+            test::writeJpeg(t.photo.path, 1);
+        }
+        QVERIFY(QDir().mkpath(dir.filePath(QStringLiteral("out"))));
+        QString error;
+        QVERIFY2(writeGeotagged(written, dir.filePath(QStringLiteral("out")), &error), qPrintable(error));
+        QCOMPARE(written.tagged.size(), size_t(2));
+        const auto back = test::readGps(dir.filePath(QStringLiteral("out/")) + written.tagged[0].photo.fileName);
+        QVERIFY(back.latitude && std::fabs(*back.latitude - written.tagged[0].position.latitude) < 1e-7);
+        QCOMPARE(back.gimbalPitch, std::optional(-90.0));
+        QCOMPARE(back.relativeAltitude, std::optional(60.0));
         QCOMPARE(json.value(QStringLiteral("missing")).toArray().size(), 1);
 
         // By time, as asked: the camera's clock is two hours behind the track, so nothing is on it.
