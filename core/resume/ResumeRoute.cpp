@@ -294,8 +294,9 @@ Result<ResumePlan> resumeRoute(const Route &flown, const ResumeRequest &request,
     size_t firstAfter = 0;
     if (at >= 0) {
         resume = path[size_t(at)].waypoint;
-        if (resume.role == WaypointRole::Takeoff)
-            resume.role = WaypointRole::Pass;  // the new mission took off already
+        // The new mission took off already; and a landing there (a planned battery change) is the
+        // one that ended the last flight: flown through, the rest goes on.
+        resume.role = WaypointRole::Pass;
         std::vector<WaypointAction> actions = stateBefore(path, size_t(at)).restore();
         actions.insert(actions.end(), resume.actions.begin(), resume.actions.end());
         resume.actions = std::move(actions);

@@ -214,6 +214,30 @@ private slots:
                 != again->actions.end());
     }
 
+    // Landed at a planned battery change (a landing waypoint), it goes on through that point.
+    void goesOnThroughTheLandingThatEndedTheFlight()
+    {
+        const LocalTangentPlane plane(test::kResumeHome);
+        Route route;
+        for (int i = 0; i < 5; ++i) {
+            Waypoint w;
+            w.position = plane.unproject({200.0 * i, 0});
+            w.altitude = 40;
+            w.role = i == 0 ? WaypointRole::Takeoff : i == 2 || i == 4 ? WaypointRole::Land : WaypointRole::Pass;
+            route.segments.emplace_back(w);
+        }
+        resume::ResumeRequest request;
+        request.from = resume::ResumeRequest::From::LastWaypoint;
+        request.takeoff = asWaypoint(route.segments[2])->position;
+        request.reached = {anchorOf(route.segments[0]), anchorOf(route.segments[1]), anchorOf(route.segments[2])};
+        const auto plan = resume::resumeRoute(route, request);
+        QVERIFY2(plan, qPrintable(plan ? QString() : plan.error().message));
+        QCOMPARE(plan->resumedRow, 2);
+        QCOMPARE(plan->route.segments.size(), size_t(4)); // take-off there, waypoint 3 flown through, 4, the landing at 5
+        QCOMPARE(asWaypoint(plan->route.segments[1])->role, WaypointRole::Pass);
+        QCOMPARE(asWaypoint(plan->route.segments.back())->role, WaypointRole::Land);
+    }
+
     void refusesWhatItCannotResume()
     {
         const Route route = test::resumeTestRoute();
